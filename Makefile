@@ -1,0 +1,47 @@
+# Panta Rhei: `make demo` runs the main job, `make test` runs every test.
+# Both set up first; `make setup` is idempotent and works as root on a fresh
+# Debian machine with Python 3.11.
+
+PYTHON ?= python3
+VENV   := .venv
+PY     := $(VENV)/bin/python
+STAMP  := $(VENV)/.installed
+PLUNIT := $(wildcard theory/*.plt theory/*/*.plt)
+
+.PHONY: setup system demo test test-python test-prolog bench clean
+
+setup: system $(STAMP)
+
+# SWI-Prolog from Debian's packages (pyswip needs its shared library), and
+# the venv module for Debian's own Python.
+system:
+	@command -v swipl >/dev/null 2>&1 || { apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq swi-prolog-nox >/dev/null; }
+	@$(PYTHON) -c "import ensurepip, venv" 2>/dev/null || { apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq python3-venv >/dev/null; }
+
+$(STAMP): pyproject.toml requirements.lock
+	@test -x $(PY) || $(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install -q --upgrade pip==25.3
+	$(PY) -m pip install -q -r requirements.lock
+	$(PY) -m pip install -q --no-deps -e .
+	@touch $@
+
+demo: setup
+	$(VENV)/bin/pantarhei demo
+
+test: setup test-python test-prolog
+
+test-python:
+	$(PY) -m pytest -q
+
+test-prolog:
+	@for t in $(PLUNIT); do \
+	  swipl -q -g "load_test_files([]), (run_tests -> halt(0) ; halt(1))" $${t%.plt}.pl || exit 1; \
+	done; echo "plunit: $(words $(PLUNIT)) test files passed"
+
+bench: setup
+	$(PY) -m benchmarks
+
+clean:
+	rm -rf $(VENV) build *.egg-info

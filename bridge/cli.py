@@ -1,0 +1,52 @@
+"""The `pantarhei` command: one subcommand per module of bridge/commands/.
+
+Each module has `register(subparsers)`, which adds its subcommands with
+`set_defaults(run=function)`; `run(args)` returns the exit code.
+"""
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+from typing import Sequence
+
+from .errors import UserError
+
+#: Modules of pantarhei.bridge.commands, in the order `--help` lists them.
+COMMANDS = ("vocabulary",)
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message: str) -> None:  # one line, exit 2
+        self.exit(2, f"{self.prog}: {message}\n")
+
+
+def parser() -> argparse.ArgumentParser:
+    p = _Parser(prog="pantarhei",
+                description="Learn a defeasible theory of pouring by curious exploration "
+                            "of a simulation, and ask it questions.")
+    sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    sub.required = True
+    for name in COMMANDS:
+        importlib.import_module(f"pantarhei.bridge.commands.{name}").register(sub)
+    return p
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = parser().parse_args(argv)
+    try:
+        code = args.run(args)
+    except UserError as e:
+        print(f"pantarhei {args.command}: {e}", file=sys.stderr)
+        code = e.exit_code
+    except KeyboardInterrupt:
+        print(f"pantarhei {args.command}: interrupted", file=sys.stderr)
+        code = 130
+    except BrokenPipeError:
+        code = 0
+    sys.stdout.flush()
+    return code
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,1 @@
+"""Subcommands of `pantarhei`, one module per group (see bridge/cli.py)."""

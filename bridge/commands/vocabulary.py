@@ -1,0 +1,88 @@
+"""`pantarhei vocab`, `check`, `count`: the qualitative vocabulary."""
+from __future__ import annotations
+
+import argparse
+import json
+
+from pantarhei.oracle.vocabulary import load_vocabulary
+
+from .. import validity
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("vocab", help="list the parameters, propositions and expectations")
+    p.add_argument("--json", action="store_true", help="print JSON")
+    p.set_defaults(run=vocab)
+
+    p = sub.add_parser("check", help="is an antecedent (a set of propositions) valid?")
+    p.add_argument("--engine", choices=validity.ENGINES, default="prolog")
+    p.add_argument("props", nargs="+", metavar="PROP")
+    p.set_defaults(run=check)
+
+    p = sub.add_parser("count", help="count the valid antecedents")
+    p.set_defaults(run=count)
+
+
+def vocabulary_json() -> dict:
+    v = load_vocabulary()
+    return {
+        "parameters": [{"name": p.name, "group": p.group, "unit": p.unit, "low": p.low,
+                        "high": p.high, "prior": p.prior, "gloss": p.gloss} for p in v.parameters],
+        "propositions": [{"name": p.name, "dimension": p.dimension, "rank": p.rank,
+                          "aspect": v.dimensions[p.dimension].aspect,
+                          "image_schema": v.dimensions[p.dimension].schema,
+                          "role": v.dimensions[p.dimension].role, "gloss": p.gloss,
+                          "model": _model_json(p.model)} for p in v.propositions.values()],
+        "expectations": [{"name": e.name, "stage": e.stage, "gloss": e.gloss} for e in v.expectations],
+        "constraints": [{"name": c, "gloss": g} for c, g in v.constraints.items()],
+    }
+
+
+def _model_json(m) -> dict:
+    d = {"kind": m.kind, "parameter": m.param, "low": m.low, "high": m.high}
+    if m.base:
+        d["base"] = m.base
+    return d
+
+
+def model_words(m) -> str:
+    unit = load_vocabulary().parameter(m.param).unit
+    if m.kind == "uniform":
+        return f"{m.param} ~ U[{m.low}, {m.high}] {unit}"
+    return f"{m.param} = {m.base} + U[{m.low}, {m.high}] {unit}"
+
+
+def vocab(args: argparse.Namespace) -> int:
+    if args.json:
+        print(json.dumps(vocabulary_json(), indent=1))
+        return 0
+    v = load_vocabulary()
+    print(f"{len(v.parameters)} parameters")
+    for p in v.parameters:
+        print(f"  {p.name:24} {p.unit:9} [{p.low}, {p.high}]  {p.gloss}")
+    print(f"\n{len(v.propositions)} propositions in {len(v.dimensions)} dimensions")
+    for d in v.dimensions.values():
+        print(f"  {d.name} ({d.aspect}, {d.schema.upper()}, {d.role}): {d.gloss}")
+        for name in d.values:
+            p = v.propositions[name]
+            print(f"    {p.rank}. {p.name:26} \"{p.gloss}\"  {model_words(p.model)}")
+    print(f"\n{len(v.expectations)} expectations")
+    for e in v.expectations:
+        print(f"  {e.name:30} ({e.stage}) {e.gloss}")
+    return 0
+
+
+def check(args: argparse.Namespace) -> int:
+    bad = validity.violations(args.props, args.engine)
+    if not bad:
+        print("valid")
+        return 0
+    print("invalid")
+    for b in bad:
+        print(f"  {b.words()}")
+    return 1
+
+
+def count(args: argparse.Namespace) -> int:
+    print(validity.count_valid())
+    return 0

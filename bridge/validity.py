@@ -1,0 +1,70 @@
+"""Is an antecedent valid? Asked of SWI-Prolog or of clingo, same answer."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Iterable
+
+from pantarhei.oracle.vocabulary import UnknownProposition, load_vocabulary
+
+from .errors import UserError
+
+ENGINES = ("prolog", "asp")
+
+
+@dataclass(frozen=True, order=True)
+class Violation:
+    constraint: str
+    first: str
+    second: str
+
+    def words(self) -> str:
+        gloss = load_vocabulary().constraints[self.constraint]
+        return f"{self.first} and {self.second}: {gloss} ({self.constraint})"
+
+
+def known(props: Iterable[str]) -> list[str]:
+    """The names as a sorted set; UserError naming the closest known ones
+    for the first unknown name."""
+    props = sorted(set(props))
+    try:
+        load_vocabulary().check_names(props)
+    except UnknownProposition as e:
+        raise UserError(str(e)) from None
+    return props
+
+
+def violations(props: Iterable[str], engine: str = "prolog") -> list[Violation]:
+    """The constraints that the antecedent breaks, sorted."""
+    props = known(props)
+    if engine == "prolog":
+        from .prolog import engine as prolog
+
+        found = [Violation(s["C"], s["P1"], s["P2"])
+                 for s in prolog().query("validity:violation(Ps, C, P1, P2)", Ps=props)]
+    elif engine == "asp":
+        from .asp import solve
+
+        facts = "".join(f"in({p})." for p in props)
+        (model,) = solve(["validity.lp"], facts)
+        found = [Violation(*(a.name for a in s.arguments)) for s in model if s.name == "violated"]
+    else:
+        raise UserError(f"unknown engine '{engine}' (choose prolog or asp)")
+    return sorted(set(found))
+
+
+def require_valid(props: Iterable[str]) -> list[str]:
+    """The antecedent as a sorted list; UserError naming the first violated
+    constraint if it is not valid."""
+    props = known(props)
+    bad = violations(props)
+    if bad:
+        more = f" (and {len(bad) - 1} more)" if len(bad) > 1 else ""
+        raise UserError(f"invalid antecedent: {bad[0].words()}{more}")
+    return props
+
+
+def count_valid() -> int:
+    """The number of valid antecedents, counted by Prolog per component."""
+    from .prolog import engine as prolog
+
+    return int(prolog().once("validity:count_valid(N)")["N"])

@@ -1,0 +1,97 @@
+"""The theory files (Prolog and ASP), shipped as package data.
+
+The fact files are written in the common subset of Prolog and ASP, so Python
+reads them with clingo's own parser: one reader for ASP and Python, and the
+same files that SWI-Prolog consults.
+"""
+from __future__ import annotations
+
+from collections import defaultdict
+from pathlib import Path
+from typing import Iterable, Union
+
+#: The folder that holds the theory files.
+THEORY_DIR = Path(__file__).resolve().parent
+#: The vocabulary fact files, read by SWI-Prolog and by clingo alike.
+VOCABULARY_FILES = tuple(THEORY_DIR / "vocabulary" / f"{name}.pl"
+                         for name in ("parameters", "propositions", "expectations", "constraints"))
+
+Value = Union[int, str, tuple]
+
+
+class TheoryFileError(ValueError):
+    """A theory file that is not in the common subset; str() is `file:line: what`."""
+
+
+def read_facts(paths: Iterable[Path | str]) -> dict[str, list[tuple]]:
+    """Read ground facts with clingo's parser: predicate name -> argument tuples.
+
+    Atoms and quoted text both come back as `str`, integers as `int`, and
+    compound terms as tuples `(name, arg, ...)`. Facts keep file order.
+    Anything but a ground fact raises TheoryFileError naming file and line.
+    """
+    from clingo import ast
+
+    facts: dict[str, list[tuple]] = defaultdict(list)
+    messages: list[str] = []
+
+    def logger(_code, message: str) -> None:
+        messages.append(message)
+
+    def on_statement(stm) -> None:
+        if stm.ast_type in (ast.ASTType.Program, ast.ASTType.Comment):
+            return
+        line = f"{stm.location.begin.filename}:{stm.location.begin.line}"
+        head = getattr(stm, "head", None)
+        if (stm.ast_type != ast.ASTType.Rule or stm.body or head is None
+                or head.ast_type != ast.ASTType.Literal or head.sign != ast.Sign.NoSign
+                or head.atom.ast_type != ast.ASTType.SymbolicAtom):
+            raise TheoryFileError(f"{line}: expected a ground fact such as name(arg, 1).")
+        term = _term(head.atom.symbol, line)
+        if isinstance(term, str):
+            facts[term].append(())
+        else:
+            facts[term[0]].append(term[1:])
+
+    for path in paths:
+        path = Path(path)
+        if not path.is_file():
+            raise TheoryFileError(f"{path}: no such file")
+        try:
+            ast.parse_files([str(path)], on_statement, logger=logger, message_limit=1)
+        except RuntimeError:
+            first = messages[0].splitlines()[0] if messages else f"{path}: cannot parse"
+            raise TheoryFileError(_clean_clingo_message(first)) from None
+    return dict(facts)
+
+
+def _term(t, line: str) -> Value:
+    from clingo import SymbolType, ast
+
+    kind = t.ast_type
+    if kind == ast.ASTType.SymbolicTerm:
+        sym = t.symbol
+        if sym.type == SymbolType.Number:
+            return sym.number
+        if sym.type == SymbolType.String:
+            return sym.string
+        if sym.type == SymbolType.Function and not sym.arguments and not sym.negative:
+            return sym.name
+    elif kind == ast.ASTType.UnaryOperation and t.operator_type == ast.UnaryOperator.Minus:
+        inner = _term(t.argument, line)
+        if isinstance(inner, int):
+            return -inner
+    elif kind == ast.ASTType.Function and not t.external and t.name:
+        args = tuple(_term(a, line) for a in t.arguments)
+        return (t.name, *args) if args else t.name
+    raise TheoryFileError(f"{line}: expected an atom, an integer, quoted text or a term of those")
+
+
+def _clean_clingo_message(message: str) -> str:
+    # "file:12:5-9: error: syntax error, unexpected ." -> "file:12: syntax error, unexpected ."
+    import re
+
+    m = re.match(r"^(.*?):(\d+):\d+(?:-\d+(?::\d+)?)?: (?:error|info): (.*)$", message)
+    if not m:
+        return message
+    return f"{m.group(1)}:{m.group(2)}: {m.group(3)}"
