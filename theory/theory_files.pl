@@ -52,12 +52,12 @@ read_facts(In, File, Facts) :-
     (   Term == end_of_file
     ->  Facts = []
     ;   stream_position_data(line_count, Pos, Line),
-        (   Vs == [], catch(check_fact(Term), bad_fact(Expected), true)
-        ->  (   var(Expected)
-            ->  Facts = [Term|Rest]
-            ;   throw(theory_error(File, Line, Expected))
-            )
-        ;   throw(theory_error(File, Line, "a ground fact (no variables)"))
+        catch((check_fact(Term), Expected = none), bad_fact(Expected), true),
+        (   Expected \== none
+        ->  throw(theory_error(File, Line, Expected))
+        ;   Vs \== []
+        ->  throw(theory_error(File, Line, "a ground fact (no variables)"))
+        ;   Facts = [Term|Rest]
         ),
         read_facts(In, File, Rest)
     ).
@@ -92,6 +92,8 @@ check_fact(Term) :-
     Term =.. [_|Args],
     maplist(check_arg, Args).
 
+check_arg(A) :- var(A), !,
+    throw(bad_fact("a ground fact (no variables)")).
 check_arg(A) :- integer(A), !.
 check_arg(A) :- string(A), !.
 check_arg(A) :- float(A), !,
