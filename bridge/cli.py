@@ -10,7 +10,7 @@ import importlib
 import sys
 from typing import Sequence
 
-from .errors import UserError
+from .errors import MissingEngine, TheoryFileError, UserError
 
 #: Modules of pantarhei.bridge.commands, in the order `--help` lists them.
 COMMANDS = ("vocabulary",)
@@ -39,6 +39,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     except UserError as e:
         print(f"pantarhei {args.command}: {e}", file=sys.stderr)
         code = e.exit_code
+    except (MissingEngine, TheoryFileError) as e:
+        print(f"pantarhei {args.command}: {e}", file=sys.stderr)
+        code = 2
     except KeyboardInterrupt:
         print(f"pantarhei {args.command}: interrupted", file=sys.stderr)
         code = 130

@@ -1,6 +1,8 @@
 """Errors for users: one clear line and a non-zero exit, never a traceback."""
 from __future__ import annotations
 
+from pantarhei.theory import CLINGO_MISSING, MissingEngine, TheoryFileError  # noqa: F401  (re-exported)
+
 
 class UserError(Exception):
     """Bad input or a missing engine. `str()` is the one line to print."""
@@ -12,4 +14,3 @@ class UserError(Exception):
 
 SWIPL_MISSING = ("SWI-Prolog is not installed (or pyswip cannot find libswipl): "
                  "run `make setup`, or `apt-get install swi-prolog-nox`")
-CLINGO_MISSING = "clingo is not installed: run `make setup`, or `pip install clingo==5.8.3`"

@@ -11,7 +11,7 @@ from typing import Any, Iterator
 
 from pantarhei.theory import THEORY_DIR
 
-from .errors import SWIPL_MISSING, UserError
+from .errors import SWIPL_MISSING, MissingEngine, UserError
 
 #: The Prolog modules of theory/ loaded into every engine.
 MODULES = ("theory_files", "vocabulary", "validity")
@@ -25,7 +25,7 @@ class Engine:
         try:
             from pyswip import Prolog
         except Exception:  # ImportError, or pyswip's own "SWI-Prolog not found"
-            raise UserError(SWIPL_MISSING) from None
+            raise MissingEngine(SWIPL_MISSING) from None
         self._prolog = Prolog()
         self._thread = threading.get_ident()
         for m in MODULES:

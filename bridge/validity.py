@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Iterable
 
 from pantarhei.oracle.vocabulary import UnknownProposition, load_vocabulary
@@ -42,14 +43,18 @@ def violations(props: Iterable[str], engine: str = "prolog") -> list[Violation]:
         found = [Violation(s["C"], s["P1"], s["P2"])
                  for s in prolog().query("validity:violation(Ps, C, P1, P2)", Ps=props)]
     elif engine == "asp":
-        from .asp import solve
-
-        facts = "".join(f"in({p})." for p in props)
-        (model,) = solve(["validity.lp"], facts)
-        found = [Violation(*(a.name for a in s.arguments)) for s in model if s.name == "violated"]
+        found = [Violation(*(a.name for a in s.arguments))
+                 for s in _asp_checker().shown(props) if s.name == "violated"]
     else:
         raise UserError(f"unknown engine '{engine}' (choose prolog or asp)")
     return sorted(set(found))
+
+
+@lru_cache(maxsize=1)
+def _asp_checker():
+    from .asp import Checker
+
+    return Checker(["validity.lp"], "in")
 
 
 def require_valid(props: Iterable[str]) -> list[str]:

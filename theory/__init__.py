@@ -23,6 +23,23 @@ class TheoryFileError(ValueError):
     """A theory file that is not in the common subset; str() is `file:line: what`."""
 
 
+class MissingEngine(RuntimeError):
+    """clingo or SWI-Prolog is not installed; str() says how to install it."""
+
+
+CLINGO_MISSING = "clingo is not installed: run `make setup`, or `pip install clingo==5.8.3`"
+
+
+def clingo_module():
+    """The clingo module, or MissingEngine saying how to install it."""
+    try:
+        import clingo
+        import clingo.ast  # noqa: F401  (loads the submodule)
+    except ImportError:
+        raise MissingEngine(CLINGO_MISSING) from None
+    return clingo
+
+
 def read_facts(paths: Iterable[Path | str]) -> dict[str, list[tuple]]:
     """Read ground facts with clingo's parser: predicate name -> argument tuples.
 
@@ -30,8 +47,7 @@ def read_facts(paths: Iterable[Path | str]) -> dict[str, list[tuple]]:
     compound terms as tuples `(name, arg, ...)`. Facts keep file order.
     Anything but a ground fact raises TheoryFileError naming file and line.
     """
-    from clingo import ast
-
+    ast = clingo_module().ast
     facts: dict[str, list[tuple]] = defaultdict(list)
     messages: list[str] = []
 
@@ -66,7 +82,8 @@ def read_facts(paths: Iterable[Path | str]) -> dict[str, list[tuple]]:
 
 
 def _term(t, line: str) -> Value:
-    from clingo import SymbolType, ast
+    clingo = clingo_module()
+    SymbolType, ast = clingo.SymbolType, clingo.ast
 
     kind = t.ast_type
     if kind == ast.ASTType.SymbolicTerm:
