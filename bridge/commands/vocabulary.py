@@ -11,7 +11,9 @@ from .. import validity
 
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("vocab", help="list the parameters, propositions and expectations")
-    p.add_argument("--json", action="store_true", help="print JSON")
+    form = p.add_mutually_exclusive_group()
+    form.add_argument("--json", action="store_true", help="print JSON")
+    form.add_argument("--markdown", action="store_true", help="print Markdown tables (as in README)")
     p.set_defaults(run=vocab)
 
     p = sub.add_parser("check", help="is an antecedent (a set of propositions) valid?")
@@ -56,6 +58,9 @@ def vocab(args: argparse.Namespace) -> int:
     if args.json:
         print(json.dumps(vocabulary_json(), indent=1))
         return 0
+    if args.markdown:
+        print(markdown_tables(), end="")
+        return 0
     v = load_vocabulary()
     print(f"{len(v.parameters)} parameters")
     for p in v.parameters:
@@ -86,3 +91,27 @@ def check(args: argparse.Namespace) -> int:
 def count(args: argparse.Namespace) -> int:
     print(validity.count_valid())
     return 0
+
+
+def markdown_tables() -> str:
+    """The vocabulary as the Markdown tables of README (kept equal by a test)."""
+    v = load_vocabulary()
+    out = [f"#### The {len(v.parameters)} scene parameters", "",
+           "| # | parameter | unit | bounds | prior | meaning |", "|---|---|---|---|---|---|"]
+    for p in v.parameters:
+        out.append(f"| {p.index + 1} | `{p.name}` | {p.unit} | [{p.low}, {p.high}] | {p.prior} | {p.gloss} |")
+    out += ["", f"#### The {len(v.propositions)} scene propositions, in {len(v.dimensions)} dimensions", "",
+            "| dimension | aspect | image schema | role | rank | proposition | gloss | generative model |",
+            "|---|---|---|---|---|---|---|---|"]
+    for d in v.dimensions.values():
+        for name in d.values:
+            p = v.propositions[name]
+            first = p.rank == 1
+            out.append(f"| {d.name if first else ''} | {d.aspect if first else ''} | "
+                       f"{d.schema.upper() if first else ''} | {d.role if first else ''} | {p.rank} | "
+                       f"`{p.name}` | {p.gloss} | {model_words(p.model)} |")
+    out += ["", f"#### The {len(v.expectations)} expectations", "",
+            "| expectation | stage | gloss |", "|---|---|---|"]
+    for e in v.expectations:
+        out.append(f"| `{e.name}` | {e.stage} | {e.gloss} |")
+    return "\n".join(out) + "\n"

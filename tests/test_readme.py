@@ -1,0 +1,23 @@
+"""README stays true: its tables and figures are the vocabulary's."""
+from pathlib import Path
+
+from pantarhei.bridge.commands.vocabulary import markdown_tables
+from pantarhei.bridge.validity import count_valid
+
+README = (Path(__file__).resolve().parents[1] / "README.md").read_text()
+
+
+def test_readme_tables_are_the_vocabulary():
+    begin, end = "<!-- vocabulary:begin -->\n", "<!-- vocabulary:end -->"
+    section = README[README.index(begin) + len(begin):README.index(end)]
+    assert section == markdown_tables()
+
+
+def test_readme_count_is_the_count():
+    assert f"**{count_valid():,}**" in README
+
+
+def test_quick_start_is_two_commands():
+    start = README.index("## Quick start")
+    block = README[README.index("```sh", start) + 5:README.index("```", README.index("```sh", start) + 5)]
+    assert [line.split("#")[0].strip() for line in block.strip().splitlines()] == ["make demo", "make test"]
