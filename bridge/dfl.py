@@ -1,0 +1,230 @@
+"""DFL, the theory format of SPINdle and silkie, read and written.
+
+    r1: bird(tweety), -penguin(tweety) => flies(tweety)   % defeasible
+    r2: penguin(X) -> bird(X)        strict (with silkie's ?x variables)
+    r3: broken_wing ~> -flies(tweety)                      defeater
+    r3 > r1                                                superiority
+    >> bird(tweety)                                        a fact
+    -> bird(tweety)  /  => bird(tweety)                    silkie's facts
+
+`-` (or `¬`) negates a literal; comments start with `#`, `%` or `//`.
+Rules with variables (`?x`, or a name starting with an upper-case letter
+inside an argument list) are grounded over the facts: every instance whose
+body literals all occur among the facts or the heads of other instances.
+Rules without a label get `r<line>`.
+"""
+from __future__ import annotations
+
+import itertools
+import re
+from pathlib import Path
+
+from pantarhei.theory import TheoryFileError
+
+from .theories import Rule, Theory, complement
+
+_ARROWS = (("->", "strict"), ("=>", "defeasible"), ("~>", "defeater"))
+_TERM = re.compile(r"^[a-z][A-Za-z0-9_]*(\((.*)\))?$")
+_ARG = re.compile(r"^(\?[A-Za-z_][A-Za-z0-9_]*|[A-Z][A-Za-z0-9_]*|[a-z][A-Za-z0-9_]*|-?[0-9]+)$")
+
+
+def is_dfl(path: Path | str) -> bool:
+    return str(path).lower().endswith(".dfl")
+
+
+def read_dfl(path: Path | str) -> Theory:
+    path = Path(path)
+    if not path.is_file():
+        raise TheoryFileError(f"{path}: no such file")
+    return parse_dfl(path.read_text(encoding="utf-8", errors="replace"), str(path))
+
+
+def parse_dfl(text: str, source: str = "<dfl>") -> Theory:
+    """A theory from DFL text; TheoryFileError names source and line."""
+    t = Theory(source=source)
+    schemas: list[tuple[Rule, int]] = []
+    sups: list[tuple[str, str, int]] = []
+    for n, raw in enumerate(text.splitlines(), start=1):
+        line = re.split(r"#|%|//", raw, maxsplit=1)[0].strip()
+        if not line:
+            continue
+        where = f"{source}:{n}"
+        if line.startswith(">>"):
+            t.facts.append(_literal(line[2:].strip(), where, ground=True))
+            continue
+        arrow = next(((a, k) for a, k in _ARROWS if a in line), None)
+        if arrow is None:
+            m = re.fullmatch(r"([A-Za-z0-9_]+)\s*>\s*([A-Za-z0-9_]+)", line)
+            if not m:
+                raise TheoryFileError(f"{where}: expected a rule 'label: a, b => c', "
+                                      f"a superiority 'r1 > r2' or a fact '>> a'")
+            sups.append((m.group(1), m.group(2), n))
+            continue
+        label, rest = None, line
+        m = re.match(r"^([A-Za-z0-9_]+)\s*:(?!-)\s*(.*)$", line)
+        if m:
+            label, rest = m.group(1), m.group(2)
+        body_text, head_text = rest.split(arrow[0], 1)
+        body = tuple(_literal(b, where) for b in _split(body_text, where))
+        head = _literal(head_text.strip(), where)
+        if not body and label is None and arrow[1] != "defeater":
+            if _variables(head):
+                raise TheoryFileError(f"{where}: a fact without variables, not {head_text.strip()}")
+            t.facts.append(head)
+            continue
+        rid = label if label is not None else f"r{n}"
+        if not re.fullmatch(r"[a-z][A-Za-z0-9_]*", rid):
+            raise TheoryFileError(f"{where}: a rule label in lower case letters, digits and _, not '{rid}'")
+        schemas.append((Rule(rid, arrow[1], head, body), n))
+    t.rules, origin = _ground(schemas, t.facts, source)
+    ids = {r.id for r in t.rules} | {r.id for r, _ in schemas}
+    for a, b, n in sups:
+        for x in (a, b):
+            if x not in ids:
+                raise TheoryFileError(f"{source}:{n}: {a} > {b} names {x}, which is not a rule")
+        for ga in (r.id for r in t.rules if origin[r.id] == a):
+            for gb in (r.id for r in t.rules if origin[r.id] == b):
+                t.sup.append((ga, gb))
+    seen: dict[str, int] = {}
+    for r, n in schemas:
+        if r.id in seen:
+            raise TheoryFileError(f"{source}:{n}: a second rule labelled {r.id} (line {seen[r.id]})")
+        seen[r.id] = n
+    return t
+
+
+def _split(text: str, where: str) -> list[str]:
+    parts, depth, cur = [], 0, ""
+    for c in text:
+        if c == "(":
+            depth += 1
+        elif c == ")":
+            depth -= 1
+        if c == "," and depth == 0:
+            parts.append(cur.strip())
+            cur = ""
+        else:
+            cur += c
+    if cur.strip():
+        parts.append(cur.strip())
+    if any(not p for p in parts):
+        raise TheoryFileError(f"{where}: expected literals separated by commas")
+    return parts
+
+
+def _literal(text: str, where: str, ground: bool = False) -> str:
+    """DFL literal text -> native text (variables kept as `?x`)."""
+    s = text.strip()
+    negated = False
+    if s[:1] in ("-", "¬", "~"):
+        negated, s = True, s[1:].strip()
+    m = _TERM.match(s.replace(" ", ""))
+    if not m:
+        raise TheoryFileError(f"{where}: expected a literal such as p, -p or bird(tweety), not '{text.strip()}'")
+    s = s.replace(" ", "")
+    if m.group(1):
+        args = _split(m.group(2), where)
+        for a in args:
+            if not _ARG.match(a):
+                raise TheoryFileError(f"{where}: expected a constant or a variable ?x as argument, not '{a}'")
+            if ground and _is_var(a):
+                raise TheoryFileError(f"{where}: a fact without variables, not '{text.strip()}'")
+        s = f"{s.split('(', 1)[0]}({','.join('?' + a.lstrip('?') if _is_var(a) else a for a in args)})"
+    return f"neg({s})" if negated else s
+
+
+def _is_var(arg: str) -> bool:
+    return arg.startswith("?") or arg[:1].isupper()
+
+
+def _variables(lit: str) -> set[str]:
+    return set(re.findall(r"\?[A-Za-z0-9_]+", lit))
+
+
+def _args(lit: str) -> tuple[str, tuple[str, ...]]:
+    core = complement(lit) if lit.startswith("neg(") else lit
+    sign = "-" if lit.startswith("neg(") else "+"
+    if "(" not in core:
+        return f"{sign}{core}", ()
+    name, inner = core.split("(", 1)
+    return f"{sign}{name}/{inner.count(',') + 1}", tuple(inner[:-1].split(","))
+
+
+def _subst(lit: str, binding: dict[str, str]) -> str:
+    return re.sub(r"\?[A-Za-z0-9_]+", lambda m: binding[m.group(0)], lit)
+
+
+def _ground(schemas: list[tuple[Rule, int]], facts: list[str],
+            source: str) -> tuple[list[Rule], dict[str, str]]:
+    """Ground rules with variables: instances whose body literals are all
+    known (facts, or heads of instances found so far), up to a fixpoint."""
+    rules: list[Rule] = []
+    origin: dict[str, str] = {}
+    open_rules = []
+    for r, n in schemas:
+        vars_ = set().union(*(_variables(x) for x in (r.head, *r.body)))
+        if not vars_:
+            rules.append(r)
+            origin[r.id] = r.id
+            continue
+        if not _variables(r.head) <= set().union(*(_variables(b) for b in r.body), set()):
+            raise TheoryFileError(f"{source}:{n}: every variable of the head must occur in the body")
+        open_rules.append(r)
+    known = set(facts) | {r.head for r in rules}
+    done: set[str] = set()
+    changed = True
+    while changed and open_rules:
+        changed = False
+        index: dict[str, list[tuple[str, ...]]] = {}
+        for lit in known:
+            key, args = _args(lit)
+            index.setdefault(key, []).append(args)
+        for r in open_rules:
+            for binding in _matches(r.body, index):
+                inst = Rule(f"{r.id}_{'_'.join(binding[v] for v in sorted(binding))}".replace("-", "m"),
+                            r.kind, _subst(r.head, binding), tuple(_subst(b, binding) for b in r.body))
+                if inst.id not in done:
+                    done.add(inst.id)
+                    origin[inst.id] = r.id
+                    rules.append(inst)
+                    if inst.head not in known:
+                        known.add(inst.head)
+                        changed = True
+    return rules, origin
+
+
+def _matches(body: tuple[str, ...], index: dict[str, list[tuple[str, ...]]]):
+    def go(i: int, binding: dict[str, str]):
+        if i == len(body):
+            yield dict(binding)
+            return
+        key, pattern = _args(body[i])
+        for args in index.get(key, ()):
+            b = dict(binding)
+            if all(_bind(p, a, b) for p, a in zip(pattern, args)):
+                yield from go(i + 1, b)
+    yield from go(0, {})
+
+
+def _bind(p: str, a: str, b: dict[str, str]) -> bool:
+    if p.startswith("?"):
+        if b.setdefault(p, a) != a:
+            return False
+        return True
+    return p == a
+
+
+def dfl_literal(lit: str) -> str:
+    """Native literal text -> DFL (`neg(p(a))` -> `-p(a)`)."""
+    return f"-{complement(lit)}" if lit.startswith("neg(") else lit
+
+
+def write_dfl(theory: Theory) -> str:
+    """The theory in DFL: facts, rules, then superiority."""
+    arrows = {k: a for a, k in _ARROWS}
+    lines = [f">> {dfl_literal(f)}" for f in theory.facts]
+    for r in theory.rules:
+        body = ", ".join(dfl_literal(b) for b in r.body)
+        lines.append(f"{r.id}: {body}{' ' if body else ''}{arrows[r.kind]} {dfl_literal(r.head)}")
+    lines.extend(f"{a} > {b}" for a, b in theory.sup)
+    return "\n".join(lines) + "\n"

@@ -1,0 +1,148 @@
+"""Defeasible reasoning over a theory, by SWI-Prolog or by clingo.
+
+`load(path)` reads a theory (native or DFL; without a path, the shipped
+learned theory). `conclusions(theory, semantics, engine)` gives the four
+kinds of conclusion. The Prolog side is theory/defeasible.pl (tabling
+under the well-founded semantics); the ASP side is theory/defeasible.lp.
+"""
+from __future__ import annotations
+
+import hashlib
+import os
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+from pantarhei.theory import THEORY_DIR, TheoryFileError
+
+from .dfl import is_dfl, read_dfl
+from .errors import UserError
+from .theories import Theory, read_native
+
+TAGS = ("+D", "-D", "+d", "-d")
+ENGINES = ("prolog", "asp")
+#: The theory the exploration writes, used when no --theory is given.
+DEFAULT_THEORY = THEORY_DIR / "learned" / "pouring.pl"
+NO_THEORY = (f"no learned theory yet ({DEFAULT_THEORY} does not exist): run the exploration "
+             f"(`pantarhei explore`) to learn one, or give a theory file with --theory FILE "
+             f"(native facts or .dfl, e.g. examples/extend_by_hand/pouring.pl)")
+
+
+@dataclass(frozen=True)
+class Semantics:
+    """The switches of the logic; the defaults are the usual ones."""
+    ambiguity: str = "blocking"          # or "propagation"
+    team_defeat: bool = True
+    well_founded: bool = True
+
+    def __post_init__(self) -> None:
+        if self.ambiguity not in ("blocking", "propagation"):
+            raise ValueError(f"ambiguity must be blocking or propagation, not {self.ambiguity}")
+
+    def prolog(self) -> str:
+        return (f"sem({self.ambiguity}, {str(self.team_defeat).lower()}, "
+                f"{str(self.well_founded).lower()})")
+
+    def asp_constants(self) -> dict[str, str]:
+        return {"ambiguity": self.ambiguity, "team_defeat": str(self.team_defeat).lower(),
+                "well_founded": str(self.well_founded).lower()}
+
+
+ALL_SEMANTICS = tuple(Semantics(a, t, w) for a in ("blocking", "propagation")
+                      for t in (True, False) for w in (True, False))
+
+
+def read_theory(path: Path | str) -> Theory:
+    """A theory file, native or DFL; UserError with `file:line: what`."""
+    try:
+        return read_dfl(path) if is_dfl(path) else read_native(path)
+    except TheoryFileError as e:
+        raise UserError(str(e)) from None
+
+
+def load(path: Path | str | None = None) -> Theory:
+    """The theory at `path`, or the shipped learned theory."""
+    if path is None:
+        if not DEFAULT_THEORY.is_file():
+            raise UserError(NO_THEORY)
+        path = DEFAULT_THEORY
+    if not Path(path).is_file():
+        raise UserError(f"{path}: no such theory file")
+    return read_theory(path)
+
+
+# -- Prolog -----------------------------------------------------------------
+
+_loaded_digest: list[str] = [""]
+
+
+def prolog_load(theory: Theory):
+    """Make `theory` the current theory of the Prolog engine (once per text)."""
+    from .prolog import engine
+
+    e = engine()
+    e.use_module("defeasible")
+    text = theory.native()
+    digest = hashlib.sha1(text.encode()).hexdigest()
+    if _loaded_digest[0] != digest:
+        fd, name = tempfile.mkstemp(suffix=".pl", prefix="pantarhei-theory-")
+        try:
+            with os.fdopen(fd, "w") as f:
+                f.write(text)
+            r = e.once("catch((defeasible:load_theory(F), R = ok), E, "
+                       "(catch(theory_files:theory_error_message(E, M), _, fail) -> R = M "
+                       "; message_to_codes(E, R)))", F=name)
+        finally:
+            os.unlink(name)
+        if _text(r["R"]) != "ok":
+            raise UserError(f"{theory.source}: {_text(r['R']).split(': ', 1)[-1]}")
+        _loaded_digest[0] = digest
+    return e
+
+
+def prolog_conclusions(theory: Theory, semantics: Semantics = Semantics()) -> dict[str, list[str]]:
+    e = prolog_load(theory)
+    out = {}
+    for tag in TAGS:
+        r = e.once(f"findall(S, (defeasible:conclusion({semantics.prolog()}, T, L), "
+                   "format(string(S), '~q', [L])), Ss)", T=tag)
+        out[tag] = sorted(_text(s) for s in r["Ss"])
+    return out
+
+
+# -- ASP --------------------------------------------------------------------
+
+def asp_conclusions(theory: Theory, semantics: Semantics = Semantics(),
+                    steps: int = 8) -> dict[str, list[str]]:
+    """Solve defeasible.lp, doubling the alternation steps until they suffice."""
+    from .asp import solve
+
+    text = theory.native()
+    while True:
+        consts = {**semantics.asp_constants(), "steps": str(steps)}
+        (model,) = solve(["defeasible.lp"], text, files=(),
+                         args=[f"-c{k}={v}" for k, v in consts.items()])
+        if not any(s.name == "changed" for s in model):
+            break
+        steps *= 2
+    out: dict[str, list[str]] = {t: [] for t in TAGS}
+    for s in model:
+        if s.name == "concl":
+            out[s.arguments[0].string].append(str(s.arguments[1]))
+    return {t: sorted(v) for t, v in out.items()}
+
+
+def conclusions(theory: Theory, semantics: Semantics = Semantics(),
+                engine: str = "prolog") -> dict[str, list[str]]:
+    """The four kinds of conclusion, each a sorted list of native literals."""
+    if engine == "prolog":
+        return prolog_conclusions(theory, semantics)
+    if engine == "asp":
+        return asp_conclusions(theory, semantics)
+    raise UserError(f"unknown engine '{engine}' (choose prolog or asp)")
+
+
+def _text(value) -> str:
+    from .prolog import text
+
+    return text(value)

@@ -1,0 +1,158 @@
+"""Defeasible theories as Python values: read and write the native format.
+
+The native format is ground facts that SWI-Prolog and clingo both read:
+
+    fact(L).  rule(Id, Kind, Head).  body(Id, L).  sup(R1, R2).  learned(Id).
+
+Literals are kept as their native text (`bird(tweety)`, `neg(flies(tweety))`),
+which is also how both engines print them. Facts of other predicates
+(provenance, settings) are kept aside and written back unchanged.
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Iterable
+
+from pantarhei.theory import TheoryFileError, read_facts
+
+KINDS = ("strict", "defeasible", "defeater")
+_NAME = re.compile(r"^[a-z][A-Za-z0-9_]*$")
+
+
+@dataclass(frozen=True)
+class Rule:
+    id: str
+    kind: str
+    head: str
+    body: tuple[str, ...] = ()
+
+
+@dataclass
+class Theory:
+    """A defeasible theory. `source` names the file it came from."""
+    facts: list[str] = field(default_factory=list)
+    rules: list[Rule] = field(default_factory=list)
+    sup: list[tuple[str, str]] = field(default_factory=list)
+    learned: set[str] = field(default_factory=set)
+    extra: list[str] = field(default_factory=list)
+    source: str = "<theory>"
+
+    def rule(self, rule_id: str) -> Rule:
+        for r in self.rules:
+            if r.id == rule_id:
+                return r
+        raise KeyError(rule_id)
+
+    def literals(self) -> set[str]:
+        """The literals of facts, heads and bodies."""
+        out = set(self.facts)
+        for r in self.rules:
+            out.add(r.head)
+            out.update(r.body)
+        return out
+
+    def with_facts(self, facts: Iterable[str]) -> "Theory":
+        """A copy with more facts."""
+        extra = [f for f in facts if f not in self.facts]
+        return Theory(self.facts + extra, list(self.rules), list(self.sup), set(self.learned),
+                      list(self.extra), self.source)
+
+    def native(self) -> str:
+        """The theory in the native format."""
+        lines = [f"fact({f})." for f in self.facts]
+        for r in self.rules:
+            lines.append(f"rule({r.id}, {r.kind}, {r.head}).")
+            lines.extend(f"body({r.id}, {b})." for b in r.body)
+            if r.id in self.learned:
+                lines.append(f"learned({r.id}).")
+        lines.extend(f"sup({a}, {b})." for a, b in self.sup)
+        lines.extend(self.extra)
+        return "\n".join(lines) + "\n"
+
+    def validate(self) -> None:
+        """Raise TheoryFileError (`file:line: what`) for what the engines
+        cannot read: unknown kinds, dangling bodies, double negation..."""
+        text = _text_of(self.source)
+        ids: dict[str, Rule] = {}
+        for r in self.rules:
+            where = _line(text, rf"rule\(\s*{re.escape(r.id)}\s*,", self.source)
+            if not _NAME.match(r.id):
+                raise TheoryFileError(f"{where}: a rule name in lower case letters, digits and _, not '{r.id}'")
+            if r.kind not in KINDS:
+                raise TheoryFileError(f"{where}: rule {r.id}: kind strict, defeasible or defeater, not {r.kind}")
+            if r.id in ids:
+                raise TheoryFileError(f"{where}: a second rule named {r.id}")
+            ids[r.id] = r
+            for lit in (r.head, *r.body):
+                _check_literal(lit, where)
+        for f in self.facts:
+            _check_literal(f, _line(text, rf"fact\(\s*{re.escape(f)}", self.source))
+        for a, b in self.sup:
+            for x in (a, b):
+                if x not in ids:
+                    where = _line(text, rf"sup\(\s*{re.escape(a)}\s*,\s*{re.escape(b)}", self.source)
+                    raise TheoryFileError(f"{where}: sup({a}, {b}) names {x}, which is not a rule")
+
+
+def literal_text(value) -> str:
+    """A value of `read_facts` (str, int or tuple) as native text."""
+    if isinstance(value, tuple):
+        return f"{value[0]}({','.join(literal_text(v) for v in value[1:])})"
+    return str(value)
+
+
+def complement(lit: str) -> str:
+    return lit[4:-1] if lit.startswith("neg(") and lit.endswith(")") else f"neg({lit})"
+
+
+def _check_literal(lit: str, where: str) -> None:
+    inner = complement(lit) if lit.startswith("neg(") else lit
+    if inner.startswith("neg("):
+        raise TheoryFileError(f"{where}: a literal or its negation neg(L), not a double negation {lit}")
+    name = inner.split("(", 1)[0]
+    if not _NAME.match(name):
+        raise TheoryFileError(f"{where}: a literal such as p or bird(tweety), not {lit}")
+
+
+def _text_of(source: str) -> str:
+    try:
+        return Path(source).read_text(encoding="utf-8", errors="replace")
+    except OSError:
+        return ""
+
+
+def _line(text: str, pattern: str, source: str) -> str:
+    m = re.search(pattern, text)
+    line = text.count("\n", 0, m.start()) + 1 if m else 0
+    return f"{source}:{line}"
+
+
+def read_native(path: Path | str) -> Theory:
+    """Read a native theory file; TheoryFileError names file and line."""
+    path = Path(path)
+    facts = read_facts([path])
+    t = Theory(source=str(path))
+    t.facts = [literal_text(f[0]) for f in facts.get("fact", []) if len(f) == 1]
+    bodies: dict[str, list[str]] = {}
+    for args in facts.get("body", []):
+        if len(args) == 2:
+            bodies.setdefault(literal_text(args[0]), []).append(literal_text(args[1]))
+    rule_ids = set()
+    for args in facts.get("rule", []):
+        if len(args) != 3:
+            continue
+        rid, kind, head = (literal_text(a) for a in args)
+        rule_ids.add(rid)
+        t.rules.append(Rule(rid, kind, head, tuple(dict.fromkeys(bodies.get(rid, ())))))
+    text = _text_of(str(path))
+    for rid in bodies:
+        if rid not in rule_ids:
+            where = _line(text, rf"body\(\s*{re.escape(rid)}\s*,", str(path))
+            raise TheoryFileError(f"{where}: body({rid}, _) of a rule {rid} that has no rule({rid}, Kind, Head) fact")
+    t.sup = [(literal_text(a), literal_text(b)) for a, b in
+             (x for x in facts.get("sup", []) if len(x) == 2)]
+    t.learned = {literal_text(x[0]) for x in facts.get("learned", []) if len(x) == 1}
+    t.validate()
+    return t

@@ -1,0 +1,318 @@
+:- module(defeasible,
+          [ load_theory/1,          % +File
+            clear_theory/0,
+            add_theory_fact/1,      % +Fact
+            theory_loaded/0,
+            semantics/2,            % +Options, -Sem
+            truth/3,                % +Sem, +Goal, -Value
+            conclusion/3,           % +Sem, ?Tag, ?Literal
+            conclusions/3,          % +Sem, +Tag, -Literals
+            theory_literal/1,       % ?Literal
+            complement/2,           % ?Literal, ?Complement
+            superior/2,             % ?R1, ?R2
+            rule_body/2,            % ?Rule, ?Body
+            with_scene/2,           % +Facts, :Goal
+            definitely/2,           % +Sem, +Literal
+            defeasibly/2,           % +Sem, +Literal
+            supported/2,            % +Sem, +Literal
+            applicable/3            % +Sem, +Rule, ?Value
+          ]).
+/** <module> Defeasible logic over the native theory files
+
+A theory is a set of ground facts (see theory_files.pl):
+
+    fact(L).  rule(Id, Kind, Head).  body(Id, L).  sup(R1, R2).  learned(Id).
+
+Kind is =strict=, =defeasible= or =defeater=; a literal is an atom or a
+term with constant arguments, or its negation =|neg(L)|=. Among learned
+rules, a rule whose body strictly contains the body of a rule with the
+complementary head is superior to it (specificity), unless sup/2 says the
+opposite.
+
+The logic is the defeasible logic of Antoniou, Billington, Governatori
+and Maher, given by its meta-program (Antoniou et al., "Embedding
+defeasible logic into logic programming", TPLP 2006) and evaluated with
+SWI-Prolog's tabling under the well-founded semantics. Three switches
+select the variant, as a term =|sem(Ambiguity, TeamDefeat, WellFounded)|=:
+
+  - Ambiguity: =blocking= (default) or =propagation= (attackers need
+    only be supported, +Sigma, to block a conclusion).
+  - TeamDefeat: =true= (default: the rules for a literal together beat the
+    attackers) or =false= (one rule must beat every attacker).
+  - WellFounded: =true= (default: literals whose proofs only loop fail) or
+    =false= (Kunen semantics of the meta-program: loops stay undecided).
+    The second is obtained by routing every positive dependency through a
+    double tabled negation, which turns the well-founded model into the
+    Fitting (Kunen) model.
+
+A literal L then has the conclusions +D (definitely provable: the meta
+atom definitely(L) is true), -D (definitely(L) is false), +d and -d
+(likewise for defeasibly(L)). Undecided literals have neither.
+theory/defeasible.lp computes the same conclusions with clingo.
+*/
+
+:- use_module(theory_files).
+:- use_module(library(lists)).
+:- use_module(library(ordsets)).
+:- use_module(library(apply)).
+
+:- dynamic fact/1, rule/3, body/2, sup/2, learned/1,
+   scene_fact/1, rule_body/2, superior/2, theory_literal/1, loaded/0.
+
+:- table definitely/2, defeasibly/2, supported/2, overruled/2,
+   overruled_by/3, defeated/3, support_beaten/3, nott/1.
+
+                 /*******************************
+                 *        LOADING A THEORY      *
+                 *******************************/
+
+%!  load_theory(+File) is det.
+%
+%   Replace the current theory by the facts of File (native format).
+%   Facts of other predicates (provenance, settings) are ignored.
+%
+%   @error theory_error(File, Line, Expected) for a malformed file.
+load_theory(File) :-
+    Scratch = defeasible_input,
+    forall(current_predicate(Scratch:P/A),
+           ( functor(H, P, A), retractall(Scratch:H) )),
+    load_facts(File, Scratch),
+    clear_theory,
+    forall(theory_predicate(P, A),
+           ( functor(H, P, A),
+             (   current_predicate(Scratch:P/A)
+             ->  forall(Scratch:H, add_theory_fact(H))
+             ;   true
+             ) )),
+    forall(current_predicate(Scratch:P/A),
+           ( functor(H, P, A), retractall(Scratch:H) )),
+    check_theory(File),
+    prepare.
+
+theory_predicate(fact, 1).
+theory_predicate(rule, 3).
+theory_predicate(body, 2).
+theory_predicate(sup, 2).
+theory_predicate(learned, 1).
+
+check_theory(File) :-
+    (   rule(R, K, _), \+ memberchk(K, [strict, defeasible, defeater])
+    ->  format(string(M), "rule ~w: kind strict, defeasible or defeater, not ~w", [R, K]),
+        throw(theory_error(File, 0, M))
+    ;   body(R, _), \+ rule(R, _, _)
+    ->  format(string(M), "body(~w, _) of a rule ~w that has no rule(~w, Kind, Head) fact", [R, R, R]),
+        throw(theory_error(File, 0, M))
+    ;   rule(R, K1, H1), rule(R, K2, H2), (K1-H1) \== (K2-H2)
+    ->  format(string(M), "two rules named ~w", [R]),
+        throw(theory_error(File, 0, M))
+    ;   true
+    ).
+
+%!  clear_theory is det.
+%
+%   Forget the current theory.
+clear_theory :-
+    retractall(fact(_)), retractall(rule(_, _, _)), retractall(body(_, _)),
+    retractall(sup(_, _)), retractall(learned(_)), retractall(scene_fact(_)),
+    retractall(rule_body(_, _)), retractall(superior(_, _)),
+    retractall(theory_literal(_)), retractall(loaded),
+    abolish_all_tables.
+
+%!  add_theory_fact(+Fact) is det.
+%
+%   Add one fact (fact/1, rule/3, body/2, sup/2 or learned/1) to the
+%   current theory. Call load_theory/1, or add facts and then query:
+%   derived tables are rebuilt on the next query.
+add_theory_fact(F) :-
+    F =.. [P|Args], length(Args, A),
+    (   theory_predicate(P, A)
+    ->  (   call(F) -> true ; assertz(F) ),
+        retractall(loaded)
+    ;   true
+    ).
+
+%!  theory_loaded is semidet.
+%
+%   A theory is loaded (possibly empty).
+theory_loaded :-
+    (   loaded -> true ; prepare ).
+
+prepare :-
+    retractall(rule_body(_, _)), retractall(superior(_, _)),
+    retractall(theory_literal(_)),
+    forall(rule(R, _, _),
+           ( findall(B, body(R, B), Bs0), sort(Bs0, Bs),
+             assertz(rule_body(R, Bs)) )),
+    forall(distinct(R-S, derived_superior(R, S)), assertz(superior(R, S))),
+    findall(L, mentioned(L), Ls0), sort(Ls0, Ls),
+    forall(member(L, Ls), assertz(theory_literal(L))),
+    abolish_all_tables,
+    assertz(loaded).
+
+derived_superior(R, S) :- sup(R, S).
+derived_superior(R, S) :-
+    learned(R), rule(R, _, H), complement(H, NH),
+    rule(S, _, NH), learned(S),
+    \+ sup(S, R),
+    rule_body(R, BR), rule_body(S, BS),
+    ord_subset(BS, BR), BS \== BR.
+
+mentioned(L) :- ( fact(L0) ; rule(_, _, L0) ; body(_, L0) ), ( L = L0 ; complement(L0, L) ).
+
+%!  complement(?Literal, ?Complement) is det.
+%
+%   neg(A) and A are each other's complement.
+complement(L, C) :-
+    (   nonvar(L)
+    ->  ( L = neg(A) -> C = A ; C = neg(L) )
+    ;   ( C = neg(A) -> L = A ; L = neg(C) )
+    ).
+
+%!  with_scene(+Facts:list, :Goal) is semidet.
+%
+%   Call Goal with Facts added to the theory's facts (the literals of a
+%   scene), and remove them afterwards.
+:- meta_predicate with_scene(+, 0).
+with_scene(Facts, Goal) :-
+    theory_loaded,
+    setup_call_cleanup(
+        ( forall(member(F, Facts), assertz(scene_fact(F))), abolish_all_tables ),
+        once(Goal),
+        ( retractall(scene_fact(_)), abolish_all_tables )).
+
+given(X) :- fact(X).
+given(X) :- scene_fact(X).
+
+                 /*******************************
+                 *          SEMANTICS           *
+                 *******************************/
+
+%!  semantics(+Options:list, -Sem) is det.
+%
+%   The semantics term for Options: ambiguity(blocking|propagation),
+%   team_defeat(Bool), well_founded(Bool); defaults blocking, true, true.
+semantics(Options, sem(A, T, W)) :-
+    option_value(ambiguity(A), Options, blocking, [blocking, propagation]),
+    option_value(team_defeat(T), Options, true, [true, false]),
+    option_value(well_founded(W), Options, true, [true, false]).
+
+option_value(Opt, Options, Default, Allowed) :-
+    functor(Opt, Name, 1), arg(1, Opt, V),
+    functor(Q, Name, 1),
+    (   memberchk(Q, Options) -> arg(1, Q, V0) ; V0 = Default ),
+    (   memberchk(V0, Allowed) -> V = V0
+    ;   domain_error(Allowed, V0)
+    ).
+
+% pos(+Sem, +Goal): a positive dependency on a tabled meta atom. Under the
+% Kunen variant it goes through two tabled negations.
+pos(sem(_, _, true), G) :- call(G).
+pos(sem(_, _, false), G) :- tnot(nott(G)).
+
+nott(G) :- tnot(G).
+
+all_pos([], _, _).
+all_pos([B|Bs], S, P) :-
+    G =.. [P, S, B],
+    pos(S, G),
+    all_pos(Bs, S, P).
+
+supportive(R, X) :- rule(R, K, X), K \== defeater.
+
+%!  definitely(+Sem, +Literal) is nondet.
+%
+%   The meta atom of +D (tabled; true, false or undefined).
+definitely(_, X) :- given(X).
+definitely(S, X) :- rule(R, strict, X), rule_body(R, Bs), all_pos(Bs, S, definitely).
+
+%!  defeasibly(+Sem, +Literal) is nondet.
+%
+%   The meta atom of +d (tabled; true, false or undefined).
+defeasibly(S, X) :- pos(S, definitely(S, X)).
+defeasibly(S, X) :-
+    complement(X, NX),
+    supportive(R, X), rule_body(R, Bs), all_pos(Bs, S, defeasibly),
+    tnot(definitely(S, NX)),
+    not_overruled(S, R, X).
+
+not_overruled(S, _, X) :- S = sem(_, true, _), tnot(overruled(S, X)).
+not_overruled(S, R, X) :- S = sem(_, false, _), tnot(overruled_by(S, R, X)).
+
+% an attacker A of X is applicable: its body is provable (ambiguity
+% blocking) or merely supported (ambiguity propagation).
+attacks(S, A) :- S = sem(blocking, _, _), rule_body(A, Bs), all_pos(Bs, S, defeasibly).
+attacks(S, A) :- S = sem(propagation, _, _), rule_body(A, Bs), all_pos(Bs, S, supported).
+
+% team defeat: some applicable attacker is not beaten by any applicable
+% rule for X.
+overruled(S, X) :-
+    complement(X, NX), rule(A, _, NX), attacks(S, A), tnot(defeated(S, A, X)).
+
+defeated(S, A, X) :-
+    superior(T, A), supportive(T, X), rule_body(T, Bs), all_pos(Bs, S, defeasibly).
+
+% no team defeat: rule R must itself be superior to every applicable attacker.
+overruled_by(S, R, X) :-
+    complement(X, NX), rule(A, _, NX), \+ superior(R, A), attacks(S, A).
+
+%!  supported(+Sem, +Literal) is nondet.
+%
+%   The meta atom of +Sigma (support), used by ambiguity propagation.
+supported(S, X) :- pos(S, definitely(S, X)).
+supported(S, X) :-
+    supportive(R, X), rule_body(R, Bs), all_pos(Bs, S, supported),
+    tnot(support_beaten(S, R, X)).
+
+support_beaten(S, R, X) :-
+    complement(X, NX), rule(A, _, NX), superior(A, R),
+    rule_body(A, Bs), all_pos(Bs, S, defeasibly).
+
+                 /*******************************
+                 *          CONCLUSIONS         *
+                 *******************************/
+
+%!  truth(+Sem, +Goal, -Value) is det.
+%
+%   Value is =true=, =false= or =undefined=: the well-founded value of
+%   a meta atom Goal (definitely(Sem, L), defeasibly(Sem, L), ...).
+truth(_, G, V) :-
+    theory_loaded,
+    (   call_delays(G, D)
+    ->  ( D == true -> V = true ; V = undefined )
+    ;   V = false
+    ).
+
+%!  applicable(+Sem, +Rule, -Value) is det.
+%
+%   Value is the truth of "every body literal of Rule is defeasibly
+%   provable": true, false or undefined.
+applicable(S, R, V) :-
+    rule_body(R, Bs),
+    foldl(and_body(S), Bs, true, V).
+
+and_body(_, _, false, false) :- !.
+and_body(S, B, V0, V) :-
+    truth(S, defeasibly(S, B), VB),
+    (   VB == false -> V = false
+    ;   VB == undefined -> V = undefined
+    ;   V = V0
+    ).
+
+%!  conclusion(+Sem, ?Tag, ?Literal) is nondet.
+%
+%   Literal (of the theory, or the complement of one) has the conclusion
+%   Tag: '+D', '-D', '+d' or '-d'.
+conclusion(S, Tag, L) :-
+    theory_loaded,
+    theory_literal(L),
+    member(Tag-Meta-Want, ['+D'-definitely-true, '-D'-definitely-false,
+                           '+d'-defeasibly-true, '-d'-defeasibly-false]),
+    G =.. [Meta, S, L],
+    truth(S, G, Want).
+
+%!  conclusions(+Sem, +Tag, -Literals:list) is det.
+%
+%   The sorted literals with conclusion Tag.
+conclusions(S, Tag, Ls) :-
+    findall(L, conclusion(S, Tag, L), Ls0),
+    sort(Ls0, Ls).
