@@ -18,6 +18,7 @@ import numpy as np
 ORACLES = {
     "pybullet": "pantarhei.oracle.physics:PouringOracle",
     "synthetic": "pantarhei.oracle.synthetic:SyntheticOracle",
+    "faulty": "pantarhei.oracle.faults:FaultyOracle",   # test-only: really crashes or hangs
 }
 
 
