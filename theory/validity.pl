@@ -4,7 +4,8 @@
             violation/4,            % +Props, ?Constraint, ?P1, ?P2
             count_valid/1,          % -Count
             count_valid/2,          % +Dims, -Count
-            brute_force_count/2     % +Dims, -Count
+            brute_force_count/2,    % +Dims, -Count
+            random_antecedents/3    % +Seed, +N, -Antecedents
           ]).
 /** <module> Which antecedents make sense
 
@@ -20,6 +21,7 @@ checks for clingo from the same facts.
 :- use_module(library(lists)).
 :- use_module(library(aggregate)).
 :- use_module(library(ugraphs)).
+:- use_module(library(random)).
 
 %!  valid_antecedent(+Props:list) is semidet.
 %
@@ -76,11 +78,14 @@ count_valid(Count) :-
 %   components of that graph, of the valid choices within the component
 %   (each dimension contributing one of its values, or none).
 count_valid(Dims, Count) :-
+    dimension_components(Dims, Components),
+    foldl(multiply_component, Components, 1, Count).
+
+dimension_components(Dims, Components) :-
     sort(Dims, Vs),
     findall(D1-D2, ( member(D1, Vs), member(D2, Vs), D1 \== D2, linked(D1, D2) ), Es),
     vertices_edges_to_ugraph(Vs, Es, G),
-    components(G, Components),
-    foldl(multiply_component, Components, 1, Count).
+    components(G, Components).
 
 linked(D1, D2) :-
     proposition(P1, D1, _, _), proposition(P2, D2, _, _),
@@ -121,3 +126,35 @@ subset_of([], []).
 subset_of([X|Xs], S) :-
     subset_of(Xs, S0),
     ( S = S0 ; S = [X|S0] ).
+
+%!  random_antecedents(+Seed:integer, +N:integer, -Antecedents:list) is det.
+%
+%   N antecedents drawn uniformly at random from all valid antecedents of
+%   the whole vocabulary (independently, with replacement), each a sorted
+%   list of propositions. Uniform without enumerating: each connected
+%   component of dimensions contributes one of its valid choices, drawn
+%   uniformly, and the components are independent. The same Seed gives the
+%   same antecedents.
+random_antecedents(Seed, N, Antecedents) :-
+    findall(D, dimension(D, _, _, _), Dims),
+    dimension_components(Dims, Components),
+    findall(Choices,
+            ( member(C, Components),
+              findall(Ps, ( choose(C, Ps), valid_antecedent(Ps) ), Choices) ),
+            PerComponent),
+    setup_call_cleanup(
+        ( random_property(state(Saved)), set_random(seed(Seed)) ),
+        length_draws(N, PerComponent, Antecedents),
+        set_random(state(Saved))).
+
+length_draws(N, PerComponent, Antecedents) :-
+    length(Antecedents, N),
+    maplist(draw_antecedent(PerComponent), Antecedents).
+
+draw_antecedent(PerComponent, Antecedent) :-
+    foldl(draw_choice, PerComponent, [], Props),
+    sort(Props, Antecedent).
+
+draw_choice(Choices, Acc, Props) :-
+    random_member(Choice, Choices),
+    append(Choice, Acc, Props).

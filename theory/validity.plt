@@ -43,4 +43,18 @@ test(count_agrees_with_brute_force, forall(member(Dims,
 test(count_of_independent_dimensions_is_a_product, N == 15) :-
     count_valid([liquid_amount, source_weight], N).
 
+test(random_antecedents_are_valid_and_repeatable, [A1 == A2, A1 \== A3]) :-
+    random_antecedents(7, 50, A1),
+    random_antecedents(7, 50, A2),
+    random_antecedents(8, 50, A3),
+    forall(member(A, A1), valid_antecedent(A)).
+
+% Uniform over valid antecedents: a dimension with k values, unlinked to
+% others, is left out in 1/(k+1) of draws.
+test(random_antecedents_are_uniform_over_a_free_dimension) :-
+    random_antecedents(1, 2000, As),
+    aggregate_all(count, ( member(A, As), \+ ( member(P, A), proposition(P, liquid_amount, _, _) ) ), None),
+    Share is None / 2000,
+    abs(Share - 0.2) < 0.03.
+
 :- end_tests(validity).
