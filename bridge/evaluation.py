@@ -1,0 +1,108 @@
+"""Measuring a theory against the oracle: held-out scenes, a decision tree
+baseline, and the distinct behaviours a set of consequents shows.
+
+Everything here takes the oracle's scores and a theory's predictions as
+arrays, so the same measures serve the learned theory, the decision tree and
+the theory built from random exploration.
+
+Predictions are integer arrays (scenes x 9 expectations): 1 where the theory
+concludes the expectation holds, 0 where it concludes its negation, -1 where
+it decides neither. Verdicts are the oracle's scores against one half.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Sequence
+
+import numpy as np
+
+from pantarhei.oracle.vocabulary import load_vocabulary
+
+HOLDS, FAILS, UNKNOWN = 1, 0, -1
+
+
+def verdicts(scores: np.ndarray) -> np.ndarray:
+    """The qualitative verdicts of scores: True where a score exceeds 1/2."""
+    return np.asarray(scores, dtype=float) > 0.5
+
+
+@dataclass(frozen=True)
+class Accuracy:
+    """Per expectation: how often the predictions decide (coverage), and how
+    often a decided prediction is the simulation's verdict (accuracy)."""
+    expectations: tuple[str, ...]
+    decided: np.ndarray      # (9,) counts of decided predictions
+    correct: np.ndarray      # (9,) counts of decided and right
+    scenes: int
+
+    @property
+    def coverage(self) -> np.ndarray:
+        return self.decided / max(self.scenes, 1)
+
+    @property
+    def accuracy(self) -> np.ndarray:
+        with np.errstate(invalid="ignore", divide="ignore"):
+            return np.where(self.decided > 0, self.correct / np.maximum(self.decided, 1), np.nan)
+
+    @property
+    def overall_coverage(self) -> float:
+        return float(self.decided.sum() / max(self.scenes * len(self.expectations), 1))
+
+    @property
+    def overall_accuracy(self) -> float:
+        return float(self.correct.sum() / self.decided.sum()) if self.decided.sum() else float("nan")
+
+    def as_dict(self) -> dict:
+        return {"scenes": self.scenes, "coverage": self.overall_coverage,
+                "accuracy": self.overall_accuracy,
+                "per_expectation": {e: {"coverage": float(c), "accuracy": float(a)}
+                                    for e, c, a in zip(self.expectations, self.coverage, self.accuracy)}}
+
+
+def accuracy(predictions: np.ndarray, truth: np.ndarray) -> Accuracy:
+    """Score predictions (HOLDS/FAILS/UNKNOWN) against verdicts (booleans)."""
+    predictions = np.asarray(predictions)
+    truth = np.asarray(truth, dtype=bool)
+    if predictions.shape != truth.shape:
+        raise ValueError(f"predictions {predictions.shape} and verdicts {truth.shape} differ in shape")
+    decided = predictions != UNKNOWN
+    correct = decided & ((predictions == HOLDS) == truth)
+    return Accuracy(load_vocabulary().expectation_names, decided.sum(axis=0), correct.sum(axis=0),
+                    len(truth))
+
+
+def one_hot(antecedents: Sequence[Sequence[str]]) -> np.ndarray:
+    """The qualitative features of scenes: one column per proposition, 1 where
+    the scene's antecedent holds it."""
+    names = sorted(load_vocabulary().propositions)
+    column = {n: i for i, n in enumerate(names)}
+    X = np.zeros((len(antecedents), len(names)), dtype=np.int8)
+    for i, a in enumerate(antecedents):
+        for p in a:
+            X[i, column[p]] = 1
+    return X
+
+
+def tree_predictions(train: Sequence[Sequence[str]], train_verdicts: np.ndarray,
+                     test: Sequence[Sequence[str]], seed: int) -> np.ndarray:
+    """A scikit-learn decision tree trained on the same simulations, from the
+    same qualitative features (one-hot antecedents), predicting the verdicts
+    of the test scenes. It always decides."""
+    from sklearn.tree import DecisionTreeClassifier
+
+    y = np.asarray(train_verdicts, dtype=bool)
+    out = np.empty((len(test), y.shape[1]), dtype=int)
+    X, T = one_hot(train), one_hot(test)
+    for k in range(y.shape[1]):
+        if y[:, k].all() or not y[:, k].any():      # one class: nothing to split
+            out[:, k] = int(y[0, k])
+            continue
+        tree = DecisionTreeClassifier(random_state=seed, min_samples_leaf=3)
+        out[:, k] = tree.fit(X, y[:, k]).predict(T).astype(int)
+    return out
+
+
+def distinct_behaviours(consequents: np.ndarray) -> int:
+    """How many distinct qualitative behaviours (distinct rows of verdicts)."""
+    rows = np.asarray(consequents, dtype=bool)
+    return len({tuple(r) for r in rows})
