@@ -135,7 +135,8 @@ class _Worker:
         up_r, up_w = os.pipe()
         self.process = subprocess.Popen(
             [sys.executable, "-m", "pantarhei.oracle.worker", str(down_r), str(up_w)],
-            pass_fds=(down_r, up_w), stdin=subprocess.DEVNULL, start_new_session=True)
+            pass_fds=(down_r, up_w), stdin=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+            start_new_session=True)
         os.close(down_r)
         os.close(up_w)
         self.send = Connection(down_w, readable=False)

@@ -11,9 +11,12 @@ source at its start pose. Then everything settles.
 from __future__ import annotations
 
 import math
+import os
+import sys
 import time
+from contextlib import contextmanager
 from dataclasses import asdict, dataclass, field, replace
-from typing import Any, Callable, Optional
+from typing import Any, Callable, Iterator, Optional
 
 import numpy as np
 
@@ -143,12 +146,28 @@ class World:
             pass
 
 
+@contextmanager
+def quiet() -> Iterator[None]:
+    """Silence what the physics engine prints on the standard output."""
+    sys.stdout.flush()
+    saved = os.dup(1)
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(devnull, 1)
+    try:
+        yield
+    finally:
+        os.dup2(saved, 1)
+        os.close(saved)
+        os.close(devnull)
+
+
 def build(pour: Pour, fidelity: Fidelity, *, visual: bool = False) -> World:
     """A fresh headless world with the scene of `pour` at its start."""
-    import pybullet as pb
-    from pybullet_utils.bullet_client import BulletClient
+    with quiet():
+        import pybullet as pb
+        from pybullet_utils.bullet_client import BulletClient
 
-    c = BulletClient(connection_mode=pb.DIRECT)
+        c = BulletClient(connection_mode=pb.DIRECT)
     c.setPhysicsEngineParameter(fixedTimeStep=1.0 / fidelity.rate_hz,
                                 numSolverIterations=fidelity.solver_iterations,
                                 deterministicOverlappingPairs=1,
@@ -158,7 +177,9 @@ def build(pour: Pour, fidelity: Fidelity, *, visual: bool = False) -> World:
     p = pour.p
     ground_z = g.ground_z * MM
     plane = c.createMultiBody(0, c.createCollisionShape(c.GEOM_PLANE),
-                              c.createVisualShape(c.GEOM_PLANE, rgbaColor=[0.55, 0.6, 0.55, 1])
+                              c.createVisualShape(c.GEOM_BOX, halfExtents=[1, 1, 0.001],
+                                                   visualFramePosition=[0, 0, -0.001],
+                                                   rgbaColor=[0.55, 0.6, 0.55, 1])
                               if visual else -1, [0, 0, ground_z], useMaximalCoordinates=True)
     c.changeDynamics(plane, -1, lateralFriction=1.0, restitution=1.0)
 

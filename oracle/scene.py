@@ -22,8 +22,9 @@ from .vocabulary import load_vocabulary
 
 #: metres per millimetre
 MM = 0.001
-#: wall segments per bowl
-SEGMENTS = 16
+#: wall segments per bowl (with the base, 16 shapes: PyBullet's most in one
+#: compound visual shape)
+SEGMENTS = 15
 
 
 @dataclass(frozen=True)
@@ -96,6 +97,7 @@ def bowl_shape(client: Any, bowl: Bowl, *, visual: bool = False,
     if visual:
         return client.createVisualShapeArray(
             shapeTypes=types, radii=radii, lengths=lengths, halfExtents=halves,
+            fileNames=[""] * len(types), meshScales=[[1, 1, 1]] * len(types),
             visualFramePositions=positions, visualFrameOrientations=orientations,
             rgbaColors=[list(rgba)] * len(types))
     return client.createCollisionShapeArray(

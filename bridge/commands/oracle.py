@@ -1,0 +1,235 @@
+"""`pantarhei simulate` and `pantarhei render`: pours sampled from a
+qualitative description (or given), simulated and scored, or rendered."""
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+from pathlib import Path
+from typing import Any, Optional
+
+import numpy as np
+
+from pantarhei.oracle import generative
+from pantarhei.oracle.vocabulary import load_vocabulary
+
+from .. import validity
+from ..errors import UserError
+
+DEFAULT_STORE = "pantarhei.sqlite"
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("simulate", help="simulate pours sampled from an antecedent (or given) "
+                                        "and print their scores")
+    source = p.add_mutually_exclusive_group(required=True)
+    source.add_argument("--antecedent", "-a", metavar="P1,P2,...",
+                        help="propositions describing the pour, comma-separated ('' for none)")
+    source.add_argument("--params", metavar="FILE.json",
+                        help="simulate the parameterizations in FILE (a list of objects with "
+                             "'params': name to value)")
+    p.add_argument("-n", type=int, default=10, help="parameterizations to sample (default 10)")
+    p.add_argument("--seed", type=int, default=0, help="seed of the sampling (default 0)")
+    p.add_argument("--json", action="store_true", help="print JSON")
+    _simulation_options(p)
+    p.set_defaults(run=simulate)
+
+    p = sub.add_parser("render", help="render a pour as an animated GIF (headless)")
+    source = p.add_mutually_exclusive_group(required=True)
+    source.add_argument("--antecedent", "-a", metavar="P1,P2,...",
+                        help="propositions describing the pour, comma-separated ('' for none)")
+    source.add_argument("--params", metavar="FILE.json",
+                        help="render the first parameterization in FILE")
+    p.add_argument("--seed", type=int, default=0, help="seed of the sampling (default 0)")
+    p.add_argument("--out", default="pour.gif", help="the GIF to write (default pour.gif)")
+    p.add_argument("--frames", metavar="DIR", help="also write each frame as a PNG into DIR")
+    p.add_argument("--fps", type=int, default=15, help="frames per simulated second (default 15)")
+    p.add_argument("--size", default="480x360", help="image size WxH (default 480x360)")
+    p.add_argument("--fidelity", choices=("chosen", "default"), default="chosen",
+                   help="simulation settings (default: the chosen fast ones)")
+    p.set_defaults(run=render)
+
+
+def _simulation_options(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--store", default=DEFAULT_STORE,
+                   help=f"SQLite file of results (default {DEFAULT_STORE})")
+    p.add_argument("--no-store", action="store_true", help="neither read nor write the store")
+    p.add_argument("--executor", choices=("local", "ray", "inline"), default="local",
+                   help="worker processes here (default), a Ray cluster, or this process")
+    p.add_argument("--ray-address", metavar="ADDR",
+                   help="Ray cluster to join (with --executor ray; default: start a local Ray)")
+    p.add_argument("--workers", type=int, help="worker processes (default: one per core)")
+    p.add_argument("--timeout", type=float, default=120.0,
+                   help="seconds before a simulation counts as hung (default 120)")
+    p.add_argument("--fidelity", choices=("chosen", "default"), default="chosen",
+                   help="simulation settings: the chosen fast ones (default) or PyBullet's defaults")
+    p.add_argument("--no-progress", action="store_true", help="no progress bar")
+
+
+# ----------------------------------------------------------------------------
+# input
+
+def parse_antecedent(text: str) -> list[str]:
+    """The propositions of 'P1,P2,...', known and valid together (UserError
+    otherwise)."""
+    props = [t.strip() for t in text.split(",") if t.strip()]
+    props = validity.require_valid(props)
+    try:
+        generative.plan(props)
+    except generative.InvalidAntecedent as e:
+        raise UserError(f"invalid antecedent: {e}") from None
+    return props
+
+
+def read_params(path: str) -> np.ndarray:
+    """The parameterizations of a JSON file: a list of objects, each with
+    'params' (name to value) or itself name to value; one such object alone
+    is accepted too."""
+    try:
+        text = Path(path).read_text()
+    except OSError as e:
+        raise UserError(f"cannot read {path}: {e.strerror or e}") from None
+    try:
+        data = json.loads(text)
+    except json.JSONDecodeError as e:
+        raise UserError(f"{path}: malformed JSON at line {e.lineno} column {e.colno}: {e.msg}") from None
+    if isinstance(data, dict):
+        data = [data]
+    if not isinstance(data, list) or not data:
+        raise UserError(f"{path}: expected a non-empty list of objects with 'params'")
+    rows = []
+    for k, item in enumerate(data, 1):
+        if not isinstance(item, dict):
+            raise UserError(f"{path}: item {k} is not an object")
+        params = item.get("params", item)
+        if not isinstance(params, dict):
+            raise UserError(f"{path}: item {k}: 'params' is not an object")
+        try:
+            rows.append(generative.from_dict(params))
+        except ValueError as e:
+            raise UserError(f"{path}: item {k}: {e}") from None
+    return np.array(rows)
+
+
+def _parameterizations(args: argparse.Namespace, n: int) -> tuple[np.ndarray, Optional[list[str]]]:
+    if args.params is not None:
+        return read_params(args.params), None
+    if n < 1:
+        raise UserError(f"-n must be at least 1, not {n}")
+    props = parse_antecedent(args.antecedent)
+    return generative.sample(props, n, args.seed), props
+
+
+# ----------------------------------------------------------------------------
+# output
+
+def _jsonable(x: Any) -> Any:
+    if isinstance(x, float) and not math.isfinite(x):
+        return None
+    if isinstance(x, dict):
+        return {k: _jsonable(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_jsonable(v) for v in x]
+    if isinstance(x, np.generic):
+        return _jsonable(x.item())
+    return x
+
+
+def results_json(P: np.ndarray, S: np.ndarray, records: list, errors: list) -> list[dict[str, Any]]:
+    names = load_vocabulary().expectation_names
+    out = []
+    for p, s, rec, err in zip(P, S, records, errors):
+        item: dict[str, Any] = {"params": generative.to_dict(p),
+                                "scores": None if np.isnan(s).any() else
+                                {n: round(float(v), 4) for n, v in zip(names, s)}}
+        if rec is not None:
+            item["record"] = {k: v for k, v in rec.items() if k not in ("step_seconds", "seconds")}
+        if err:
+            item["error"] = err
+        out.append(item)
+    return _jsonable(out)
+
+
+def _fmt(v: float) -> str:
+    return str(int(v)) if float(v).is_integer() else f"{v:.1f}"
+
+
+def print_results(P: np.ndarray, S: np.ndarray, records: list, errors: list,
+                  props: Optional[list[str]]) -> None:
+    vocab = load_vocabulary()
+    if props is not None:
+        print(f"antecedent: {', '.join(props) if props else '(none)'}")
+    for k, (p, s, rec, err) in enumerate(zip(P, S, records, errors), 1):
+        print(f"\npour {k}")
+        groups: dict[str, list[str]] = {}
+        for par, v in zip(vocab.parameters, p):
+            groups.setdefault(par.group, []).append(f"{par.name}={_fmt(v)}")
+        for g, items in groups.items():
+            print(f"  {g + ':':<12} {' '.join(items)}")
+        if np.isnan(s).any():
+            print(f"  FAILED: {err}")
+            continue
+        for e, v in zip(vocab.expectation_names, s):
+            print(f"  {e:<32} {v:5.2f}  {'holds' if v > 0.5 else 'fails'}")
+        if rec is not None and "fractions" in rec:
+            f = rec["fractions"]
+            print(f"  {'liquid at the end:':<32} {f['source']:.0%} in the source, "
+                  f"{f['destination']:.0%} in the destination, {f['elsewhere']:.0%} elsewhere")
+
+
+# ----------------------------------------------------------------------------
+# commands
+
+def simulate(args: argparse.Namespace) -> int:
+    from pantarhei.oracle.simulator import make_simulator
+
+    P, props = _parameterizations(args, args.n)
+    if args.workers is not None and args.workers < 1:
+        raise UserError(f"--workers must be at least 1, not {args.workers}")
+    if args.ray_address and args.executor != "ray":
+        raise UserError("--ray-address needs --executor ray")
+    try:
+        sim = make_simulator("pybullet", executor=args.executor, workers=args.workers,
+                             store=None if args.no_store else args.store,
+                             ray_address=args.ray_address, timeout=args.timeout,
+                             fidelity=args.fidelity)
+    except Exception as e:  # a store that cannot be opened, a cluster that cannot be reached
+        raise UserError(f"cannot start the simulator: {e}") from None
+    with sim:
+        S = sim.simulate(P, progress=not args.no_progress and sys.stderr.isatty())
+        records, errors = sim.last_records, sim.last_errors
+    if args.json:
+        print(json.dumps(results_json(P, S, records, errors), indent=1))
+    else:
+        print_results(P, S, records, errors, props)
+    failed = int(np.isnan(S).any(axis=1).sum())
+    if failed:
+        print(f"pantarhei simulate: {failed} of {len(P)} simulations failed twice", file=sys.stderr)
+        return 1
+    return 0
+
+
+def render(args: argparse.Namespace) -> int:
+    from pantarhei.oracle.physics import FIDELITIES
+    from pantarhei.oracle.render import render as draw
+
+    try:
+        width, height = (int(v) for v in args.size.lower().split("x"))
+        if width < 16 or height < 16:
+            raise ValueError
+    except ValueError:
+        raise UserError(f"--size must be WxH with both at least 16, not '{args.size}'") from None
+    if args.fps < 1:
+        raise UserError(f"--fps must be at least 1, not {args.fps}")
+    P, props = _parameterizations(args, 1)
+    if not str(args.out).lower().endswith(".gif"):
+        raise UserError(f"--out must name a .gif file, not '{args.out}'")
+    frames, outcome = draw(P[0], args.out, args.frames, fps=args.fps, width=width, height=height,
+                           fidelity=FIDELITIES[args.fidelity])
+    names = load_vocabulary().expectation_names
+    print(f"wrote {args.out} ({frames} frames)" + (f" and {frames} PNGs in {args.frames}"
+                                                   if args.frames else ""))
+    for e, v in zip(names, outcome.scores):
+        print(f"  {e:<32} {v:5.2f}  {'holds' if v > 0.5 else 'fails'}")
+    return 0
