@@ -13,7 +13,7 @@ from typing import Sequence
 from .errors import MissingEngine, TheoryFileError, UserError
 
 #: Modules of pantarhei.bridge.commands, in the order `--help` lists them.
-COMMANDS = ("vocabulary", "demo")
+COMMANDS = ("vocabulary", "demo", "oracle")
 
 
 class _Parser(argparse.ArgumentParser):
