@@ -1,0 +1,177 @@
+"""The exploration's state, kept in the oracle's SQLite store file.
+
+Tables of their own (prefixed `exploration_`), written through a connection
+of their own in WAL mode, beside the simulator's results:
+
+* `exploration_runs`: one row per run, keyed by a hash of the settings that
+  decide its course (oracle, seed, samples, threshold, initial antecedent,
+  breadth of modify), with those settings as JSON;
+* `exploration_checkpoints`: after every explored antecedent, the state of
+  the loop (the explored antecedents and A_new, as Prolog term text) and
+  that iteration's trace line;
+* `exploration_simulations`: the simulations of every iteration
+  (parameterizations and scores as float64 arrays).
+
+An iteration's simulations and its checkpoint are committed in one
+transaction, so a run killed at any moment resumes from a consistent state.
+"""
+from __future__ import annotations
+
+import hashlib
+import json
+import sqlite3
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Mapping
+
+import numpy as np
+
+SCHEMA = """
+CREATE TABLE IF NOT EXISTS exploration_runs (
+    run TEXT PRIMARY KEY,
+    settings TEXT NOT NULL,
+    started REAL NOT NULL,
+    updated REAL NOT NULL,
+    iterations INTEGER NOT NULL DEFAULT 0,
+    finished INTEGER NOT NULL DEFAULT 0
+);
+CREATE TABLE IF NOT EXISTS exploration_checkpoints (
+    run TEXT NOT NULL,
+    iteration INTEGER NOT NULL,
+    state TEXT NOT NULL,
+    trace TEXT NOT NULL,
+    PRIMARY KEY (run, iteration)
+);
+CREATE TABLE IF NOT EXISTS exploration_simulations (
+    run TEXT NOT NULL,
+    iteration INTEGER NOT NULL,
+    rows INTEGER NOT NULL,
+    params BLOB NOT NULL,
+    scores BLOB NOT NULL,
+    PRIMARY KEY (run, iteration)
+);
+"""
+
+
+def run_key(settings: Mapping[str, Any]) -> str:
+    """The run's key: a hash of its course-deciding settings."""
+    text = json.dumps(settings, sort_keys=True, separators=(",", ":"))
+    return hashlib.sha256(text.encode()).hexdigest()[:16]
+
+
+@dataclass
+class Checkpoint:
+    """The latest saved state of a run."""
+    iteration: int
+    state: str
+    params: np.ndarray          # (n, 30), every simulation so far, in order
+    scores: np.ndarray          # (n, 9)
+    batches: list[int]          # the number of simulations of each iteration
+    trace: list[dict]
+    finished: bool
+
+
+class ExplorationStore:
+    """The exploration tables of one SQLite file."""
+
+    def __init__(self, path: str | Path):
+        self.path = Path(path)
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        self._db = sqlite3.connect(str(self.path), timeout=60, isolation_level=None)
+        self._db.execute("PRAGMA journal_mode=WAL")
+        self._db.execute("PRAGMA synchronous=NORMAL")
+        self._db.executescript(SCHEMA)
+
+    def close(self) -> None:
+        self._db.close()
+
+    def __enter__(self) -> "ExplorationStore":
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        self.close()
+
+    def start(self, run: str, settings: Mapping[str, Any]) -> None:
+        """Begin the run afresh, forgetting any saved state of it."""
+        with self._transaction():
+            self._forget(run)
+            now = time.time()
+            self._db.execute("INSERT INTO exploration_runs (run, settings, started, updated) "
+                             "VALUES (?, ?, ?, ?)",
+                             (run, json.dumps(settings, sort_keys=True), now, now))
+
+    def forget(self, run: str) -> None:
+        with self._transaction():
+            self._forget(run)
+
+    def _forget(self, run: str) -> None:
+        for table in ("exploration_runs", "exploration_checkpoints", "exploration_simulations"):
+            self._db.execute(f"DELETE FROM {table} WHERE run = ?", (run,))
+
+    def save(self, run: str, iteration: int, params: np.ndarray, scores: np.ndarray,
+             state: str, trace: Mapping[str, Any]) -> None:
+        """Commit one iteration: its simulations, the loop's state after it,
+        and its trace line."""
+        params = np.ascontiguousarray(params, dtype=np.float64)
+        scores = np.ascontiguousarray(scores, dtype=np.float64)
+        with self._transaction():
+            self._db.execute("INSERT OR REPLACE INTO exploration_simulations VALUES (?, ?, ?, ?, ?)",
+                             (run, iteration, len(params), params.tobytes(), scores.tobytes()))
+            self._db.execute("INSERT OR REPLACE INTO exploration_checkpoints VALUES (?, ?, ?, ?)",
+                             (run, iteration, state, json.dumps(trace, sort_keys=True)))
+            self._db.execute("UPDATE exploration_runs SET iterations = ?, updated = ? WHERE run = ?",
+                             (iteration, time.time(), run))
+
+    def finish(self, run: str) -> None:
+        with self._transaction():
+            self._db.execute("UPDATE exploration_runs SET finished = 1, updated = ? WHERE run = ?",
+                             (time.time(), run))
+
+    def exists(self, run: str) -> bool:
+        return self._db.execute("SELECT 1 FROM exploration_runs WHERE run = ?",
+                                (run,)).fetchone() is not None
+
+    def iterations(self, run: str) -> int:
+        """How many iterations of the run are saved (0 if none)."""
+        row = self._db.execute("SELECT iterations FROM exploration_runs WHERE run = ?",
+                               (run,)).fetchone()
+        return int(row[0]) if row else 0
+
+    def latest(self, run: str, n_params: int, n_scores: int) -> Checkpoint | None:
+        """The run's latest checkpoint with every simulation up to it, or
+        None when nothing of it is saved."""
+        row = self._db.execute("SELECT iterations, finished FROM exploration_runs WHERE run = ?",
+                               (run,)).fetchone()
+        if row is None or row[0] == 0:
+            return None
+        last, finished = int(row[0]), bool(row[1])
+        (state,) = self._db.execute("SELECT state FROM exploration_checkpoints "
+                                    "WHERE run = ? AND iteration = ?", (run, last)).fetchone()
+        trace = [json.loads(t) for (t,) in self._db.execute(
+            "SELECT trace FROM exploration_checkpoints WHERE run = ? AND iteration <= ? "
+            "ORDER BY iteration", (run, last))]
+        P, S, batches = [], [], []
+        for rows, p, s in self._db.execute(
+                "SELECT rows, params, scores FROM exploration_simulations "
+                "WHERE run = ? AND iteration <= ? ORDER BY iteration", (run, last)):
+            P.append(np.frombuffer(p, dtype=np.float64).reshape(rows, n_params))
+            S.append(np.frombuffer(s, dtype=np.float64).reshape(rows, n_scores))
+            batches.append(rows)
+        params = np.vstack(P) if P else np.empty((0, n_params))
+        scores = np.vstack(S) if S else np.empty((0, n_scores))
+        return Checkpoint(last, state, params, scores, batches, trace, finished)
+
+    def _transaction(self) -> "_Transaction":
+        return _Transaction(self._db)
+
+
+class _Transaction:
+    def __init__(self, db: sqlite3.Connection):
+        self._db = db
+
+    def __enter__(self) -> None:
+        self._db.execute("BEGIN IMMEDIATE")
+
+    def __exit__(self, exc_type: Any, *rest: Any) -> None:
+        self._db.execute("COMMIT" if exc_type is None else "ROLLBACK")

@@ -1,0 +1,499 @@
+:- module(explore,
+          [ explore/1,                % +Options
+            explore_result/2,         % +Options, -Result
+            default_initial/1,        % -Props
+            direction/3,              % +Gradient, +MeanScore, -Direction
+            modify/5,                 % +Props, +Direction, +Breadth, +Exclude, -New
+            parameter_mean/3,         % +Props, +Param, -Mean
+            rule_facts/3,             % +Learned, +Qualified, -Facts
+            write_theory/3            % +File, +Settings, +Facts
+          ]).
+/** <module> Curiosity-driven exploration: Algorithm 1 of the paper
+
+The control flow of Algorithm 1 lives here: the queue A_new, the explored
+antecedents, choosing the steepest plane, modify, the stopping rule,
+qualify, and writing the learned rules. The numeric work (sampling and
+simulating, the weights of equation (1), the weighted plane fits, the
+outcome of an antecedent's simulations) is done in Python behind foreign
+predicates of the module =bridge=, which `pantarhei explore` and
+`pantarhei prolog` register:
+
+  - bridge:exploration_begin(+Settings, -Begun)
+  - bridge:exploration_simulate(+Request, -Reply)
+  - bridge:exploration_best_plane(+Request, -Reply)
+  - bridge:exploration_qualify(+Request, -Reply)
+  - bridge:exploration_checkpoint(+Request, -Reply)
+  - bridge:exploration_end(+Request, -Reply)
+
+Requests and replies are JSON text; a reply =|{"error": Text}|= raises
+=|exploration_error(Text)|=.
+
+The loop's state is the term st(Iteration, Explored, ANew): Explored lists
+ant(Id, Props, Parent, Via) in the order of exploration, ANew lists
+cand(Props, Parent, Via) in the order they were added (A_new is a queue:
+pop takes the oldest). Via is `initial`, or via(Expectation, Param, Sign)
+for the plane, parameter and sign (up or down) that produced it. The state
+is saved after every explored antecedent, so an exploration can resume.
+*/
+
+:- use_module(library(apply)).
+:- use_module(library(lists)).
+:- use_module(library(option)).
+:- use_module(library(pairs)).
+:- use_module(library(http/json)).
+:- use_module(vocabulary).
+:- use_module(validity).
+
+%!  default_initial(-Props:list) is det.
+%
+%   The initial antecedent a_0 when none is given: an ordinary pour, the
+%   source held near the destination's rim, low above it, steeply tilted.
+default_initial([pour_low, pour_near_rim, pour_steeply_tilted]).
+
+%!  explore(+Options:list) is det.
+%
+%   Run Algorithm 1 and write the learned theory. Options:
+%
+%     - oracle(+Name): pybullet (default) or synthetic
+%     - max_rules(+N): stop after N explored antecedents (default 25)
+%     - samples(+N): simulations per explored antecedent (default: the
+%       number of parameters plus one)
+%     - threshold(+X): the slope below which nothing new is explored
+%       (default 0.1)
+%     - seed(+S): seed of every random choice (default 1)
+%     - initial(+Props): a_0 (default default_initial/1)
+%     - breadth(+K): modify uses the K largest gradient components (3)
+%     - ridge(+X): L2 penalty of the plane fits (1.0; 0 is plain least
+%       squares)
+%     - qualify(+Mode): weighted (default) or argmax (the paper's rule)
+%     - out(+File): the learned theory (default theory/learned/pouring.pl)
+%     - store(+File): the SQLite store of simulations and state
+%     - resume(+Bool): continue the saved exploration with these settings
+%     - executor(+E), workers(+N), ray_address(+A): where to simulate
+%     - progress(+Bool): show a progress bar (default true)
+%
+%   @error exploration_error(Text) for bad options or a failing oracle.
+explore(Options) :-
+    settings(Options, Settings),
+    call_bridge(exploration_begin, Settings, Begun),
+    explore_loop(Settings, Begun).
+
+explore_loop(Settings, Begun) :-
+    initial_state(Begun, Settings, S0),
+    catch(loop(S0, Settings, S, Stop), E,
+          ( catch(call_bridge(exploration_end, _{aborted:true}, _), _, true),
+            throw(E) )),
+    S = st(_, Explored, ANew),
+    length(ANew, Left),
+    learned(Explored, Settings, Stop, Left, Facts),
+    write_theory(Settings.out, Settings, Facts),
+    length(Explored, N),
+    call_bridge(exploration_end, _{out:Settings.out, stopped:Stop, explored:N,
+                                   a_new:Left}, _).
+
+%!  explore_result(+Options:list, -Result) is det.
+%
+%   Like explore/1, but never throws: Result is ok, or error(Text) with one
+%   line saying what went wrong. For hosts that want a value, not an
+%   exception.
+explore_result(Options, Result) :-
+    catch(( explore(Options), Result = ok ), E, error_result(E, Result)).
+
+error_result(exploration_error(Text), error(Text)) :- !.
+error_result(E, error(Text)) :-
+    message_to_codes(E, Codes),
+    string_codes(Text, Codes).
+
+message_to_codes(E, Codes) :-
+    (   catch(message_to_codes(E, [], Codes0), _, fail)
+    ->  Codes = Codes0
+    ;   format(codes(Codes), "~q", [E])
+    ).
+
+message_to_codes(E, _, Codes) :-
+    message_to_lines(E, Lines),
+    with_output_to(codes(Codes), print_message_lines(current_output, '', Lines)).
+
+message_to_lines(E, Lines) :-
+    translate_message(E, Lines, []).
+
+% ----------------------------------------------------------------------
+% Settings
+
+settings(Options, S) :-
+    must_be(list, Options),
+    aggregate_all(count, parameter(_, _, _, _, _), NParams),
+    DefaultSamples is NParams + 1,
+    default_initial(DefaultInitial),
+    option(oracle(Oracle), Options, pybullet),
+    option(max_rules(Max), Options, 25),
+    option(samples(Samples), Options, DefaultSamples),
+    option(threshold(Threshold0), Options, 0.1),
+    option(seed(Seed), Options, 1),
+    option(initial(Initial0), Options, DefaultInitial),
+    option(breadth(Breadth), Options, 3),
+    option(ridge(Ridge0), Options, 1.0),
+    option(qualify(Qualify), Options, weighted),
+    option(resume(Resume), Options, false),
+    option(executor(Executor), Options, local),
+    option(progress(Progress), Options, true),
+    default_out(DefaultOut),
+    option(out(Out0), Options, DefaultOut),
+    check_positive(max_rules, Max),
+    check_positive(samples, Samples),
+    check_positive(breadth, Breadth),
+    (   integer(Seed) -> true ; throw(exploration_error("seed: expected an integer")) ),
+    (   number(Threshold0), Threshold0 >= 0
+    ->  Threshold is float(Threshold0)
+    ;   throw(exploration_error("threshold: expected a number >= 0"))
+    ),
+    (   memberchk(Qualify, [weighted, argmax])
+    ->  true
+    ;   throw(exploration_error("qualify: expected weighted or argmax"))
+    ),
+    (   number(Ridge0), Ridge0 >= 0
+    ->  Ridge is float(Ridge0)
+    ;   throw(exploration_error("ridge: expected a number >= 0"))
+    ),
+    check_initial(Initial0, Initial),
+    absolute_file_name(Out0, Out),
+    S0 = _{oracle:Oracle, max_rules:Max, samples:Samples, threshold:Threshold,
+           seed:Seed, initial:Initial, breadth:Breadth, ridge:Ridge, qualify:Qualify,
+           resume:Resume, executor:Executor, progress:Progress, out:Out},
+    optional(store, Options, S0, S1),
+    optional(workers, Options, S1, S2),
+    optional(ray_address, Options, S2, S).
+
+optional(Key, Options, S0, S) :-
+    Opt =.. [Key, V],
+    (   option(Opt, Options)
+    ->  (   Key == store
+        ->  absolute_file_name(V, Value)
+        ;   Value = V
+        ),
+        put_dict(Key, S0, Value, S)
+    ;   S = S0
+    ).
+
+default_out(File) :-
+    module_property(explore, file(Here)),
+    file_directory_name(Here, Dir),
+    atomic_list_concat([Dir, '/learned/pouring.pl'], File).
+
+check_positive(_, N) :- integer(N), N > 0, !.
+check_positive(Name, _) :-
+    format(string(M), "~w: expected a whole number above 0", [Name]),
+    throw(exploration_error(M)).
+
+check_initial(Props, Set) :-
+    (   is_list(Props) -> true
+    ;   throw(exploration_error("initial: expected a list of propositions"))
+    ),
+    sort(Props, Set),
+    violations(Set, Why),
+    (   Why = [] -> true
+    ;   Why = [unknown(_, W)|_]
+    ->  format(string(M), "initial antecedent: ~s", [W]),
+        throw(exploration_error(M))
+    ;   Why = [violation(_, _, _, W)|_],
+        format(string(M), "initial antecedent is invalid: ~s", [W]),
+        throw(exploration_error(M))
+    ).
+
+initial_state(Begun, Settings, S) :-
+    (   get_dict(state, Begun, Text), Text \== '', Text \== ""
+    ->  term_string(S, Text)
+    ;   S = st(0, [], [cand(Settings.initial, none, initial)])
+    ).
+
+% ----------------------------------------------------------------------
+% The loop
+
+%!  loop(+S0, +Settings, -S, -Stop) is det.
+%
+%   Explore antecedents from A_new until it is empty (Stop = a_new_empty)
+%   or max_rules antecedents are explored (Stop = max_rules).
+loop(S0, Settings, S, Stop) :-
+    S0 = st(_, Explored, ANew),
+    length(Explored, N),
+    (   ANew == []
+    ->  S = S0, Stop = a_new_empty
+    ;   N >= Settings.max_rules
+    ->  S = S0, Stop = max_rules
+    ;   step(S0, Settings, S1),
+        loop(S1, Settings, S, Stop)
+    ).
+
+%   One iteration of Algorithm 1: pop a_c, explore it, fit the planes of
+%   every explored antecedent, and modify the one with the steepest plane.
+step(st(I, Explored, [cand(Props, Parent, Via)|Rest]), Settings, st(I1, Explored1, ANew)) :-
+    I1 is I + 1,
+    format(atom(Id), "a~w", [I1]),
+    append(Explored, [ant(Id, Props, Parent, Via)], Explored1),
+    call_bridge(exploration_simulate, _{id:Id, antecedent:Props, iteration:I1}, Sim),
+    maplist(entry, Explored1, Entries),
+    call_bridge(exploration_best_plane, _{antecedents:Entries}, Best),
+    (   Best.slope > Settings.threshold
+    ->  memberchk(ant(Best.antecedent, MProps, _, _), Explored1),
+        dict_pairs(Best.gradient, _, Gradient),
+        direction(Gradient, Best.mean, Direction),
+        findall(P, ( member(ant(_, P, _, _), Explored1) ; member(cand(P, _, _), Rest) ), Exclude),
+        modify(MProps, Direction, Settings.breadth, Exclude, Mods),
+        findall(cand(P, Best.antecedent, via(Best.expectation, X, Sign)),
+                member(mod(P, X, Sign), Mods), Added)
+    ;   Added = []
+    ),
+    append(Rest, Added, ANew),
+    S1 = st(I1, Explored1, ANew),
+    format(string(State), "~k", [S1]),
+    length(ANew, Left),
+    findall(P, member(cand(P, _, _), Added), AddedProps),
+    findall(_{parameter:X, component:G},
+            ( Best.slope > Settings.threshold,
+              direction(Gradient, Best.mean, D), top(D, 5, Top), member(X-G, Top) ),
+            Dir),
+    format(string(ViaText), "~w", [Via]),
+    Trace = _{iteration:I1, id:Id, antecedent:Props, parent:Parent, via:ViaText,
+              simulations:Sim.simulations, failed:Sim.failed,
+              best:_{antecedent:Best.antecedent, expectation:Best.expectation,
+                     slope:Best.slope, mean:Best.mean, direction:Dir},
+              added:AddedProps, a_new:Left},
+    call_bridge(exploration_checkpoint, _{iteration:I1, state:State, trace:Trace,
+                                          explored:I1, a_new:Left}, _).
+
+entry(ant(Id, Props, _, _), _{id:Id, antecedent:Props}).
+
+% ----------------------------------------------------------------------
+% Direction and modify
+
+%!  direction(+Gradient:list, +MeanScore:number, -Direction:list) is det.
+%
+%   Gradient is a list Param-Component of a plane (score per normalised
+%   unit). Direction is the same line, signed towards the other verdict:
+%   where the antecedent's weighted mean score is above one half (the
+%   expectation mostly holds), against the gradient, else along it.
+direction(Gradient, Mean, Direction) :-
+    (   Mean > 0.5 -> Sign = -1 ; Sign = 1 ),
+    findall(X-D, ( member(X-G, Gradient), D is Sign * G ), Direction).
+
+%!  modify(+Props:list, +Direction:list, +Breadth:integer, +Exclude:list, -New:list) is det.
+%
+%   New lists mod(Props1, Param, Sign) for antecedents Props1 (sorted)
+%   obtained from Props by moving along Direction: for each of the Breadth
+%   parameters with the largest components |D| of Direction (Sign is up for
+%   D > 0, down for D < 0),
+%
+%     - if a proposition of Props draws the parameter, it is replaced by its
+%       neighbour in its dimension (one rank up or down) that moves the
+%       parameter's mean in the direction's sign;
+%     - otherwise each proposition that draws the parameter, of a dimension
+%       Props does not use, and that moves the parameter's mean in the
+%       direction's sign from its prior mean, is added.
+%
+%   Only valid antecedents are kept, none that is in Exclude (a list of
+%   sorted antecedents: those explored and those already in A_new), each
+%   once, in the order of the parameters, then of the vocabulary.
+modify(Props0, Direction, Breadth, Exclude, New) :-
+    sort(Props0, Props),
+    top(Direction, Breadth, Top),
+    foldl(param_mods(Props), Top, [], RevMods),
+    reverse(RevMods, Mods0),
+    exclude(excluded(Exclude), Mods0, New).
+
+excluded(Exclude, mod(P, _, _)) :- memberchk(P, Exclude).
+
+param_mods(Props, X-D, Acc0, Acc) :-
+    (   D > 0 -> Sign = up ; Sign = down ),
+    findall(P1, candidate(Props, X, D, P1), Cands),
+    foldl(add_new(X, Sign), Cands, Acc0, Acc).
+
+add_new(X, Sign, P, Acc0, Acc) :-
+    (   memberchk(mod(P, _, _), Acc0) -> Acc = Acc0 ; Acc = [mod(P, X, Sign)|Acc0] ).
+
+%   top(+Direction, +K, -Top): the K pairs with the largest |component|
+%   above zero, largest first (ties in parameter order). top/4 keeps only
+%   those of at least Share times the largest.
+top(Direction, K, Top) :-
+    top(Direction, K, 0, Top).
+
+top(Direction, K, Share, Top) :-
+    findall(N-(X-D), ( nth1(I, Direction, X-D), D =\= 0, N0 is -abs(D), N = N0-I ), Keyed),
+    keysort(Keyed, Sorted),
+    pairs_values(Sorted, All0),
+    (   All0 = [_-D0|_]
+    ->  Min is abs(D0) * Share,
+        include(large(Min), All0, All)
+    ;   All = []
+    ),
+    length(All, Len),
+    Take is min(K, Len),
+    length(Top, Take),
+    append(Top, _, All).
+
+large(Min, _-D) :- abs(D) >= Min.
+
+candidate(Props, X, D, Props1) :-
+    (   member(P, Props), model(P, X, _)
+    ->  proposition(P, Dim, R, _),
+        ( R1 is R + 1 ; R1 is R - 1 ),
+        proposition(P1, Dim, R1, _),
+        selectchk(P, Props, Rest),
+        sort([P1|Rest], Props1)
+    ;   findall(Dim, ( member(P, Props), proposition(P, Dim, _, _) ), Dims),
+        proposition(P1, Dim1, _, _),
+        model(P1, X, _),
+        \+ memberchk(Dim1, Dims),
+        sort([P1|Props], Props1)
+    ),
+    parameter_mean(Props, X, M0),
+    parameter_mean(Props1, X, M1),
+    (M1 - M0) * D > 0,
+    valid_antecedent(Props1).
+
+%!  parameter_mean(+Props:list, +Param, -Mean:number) is det.
+%
+%   The mean of Param under the antecedent's generative models (its
+%   prior's mean if no proposition of Props draws it), clipped to its
+%   bounds; a relative model adds its offset's mean to its base's mean.
+parameter_mean(Props, X, Mean) :-
+    parameter(X, _, _, Lo, Hi),
+    (   member(P, Props), model(P, X, Model)
+    ->  model_mean(Model, Props, Lo, Hi, Mean)
+    ;   Mean is (Lo + Hi) / 2
+    ).
+
+model_mean(uniform(L, H), _, Lo, Hi, Mean) :-
+    Mean is (max(L, Lo) + min(H, Hi)) / 2.
+model_mean(relative(Base, L, H), Props, Lo, Hi, Mean) :-
+    parameter_mean(Props, Base, MB),
+    Mean is max(Lo, min(Hi, MB + (L + H) / 2)).
+
+% ----------------------------------------------------------------------
+% Qualify and the learned theory
+
+learned(Explored, Settings, Stop, Left, Facts) :-
+    maplist(entry, Explored, Entries),
+    call_bridge(exploration_qualify, _{antecedents:Entries, mode:Settings.qualify}, Reply),
+    setting_facts(Settings, Reply, Stop, Explored, Left, SettingFacts),
+    rule_facts(Explored, Reply.antecedents, RuleFacts),
+    append(SettingFacts, RuleFacts, Facts).
+
+setting_facts(Settings, Reply, Stop, Explored, Left, Facts) :-
+    length(Explored, N),
+    Permille is round(Settings.threshold * 1000),
+    RidgePermille is round(Settings.ridge * 1000),
+    string_value(Reply.oracle_version, Version),
+    Facts0 = [ setting(oracle, Settings.oracle),
+               setting(oracle_version, Version),
+               setting(seed, Settings.seed),
+               setting(samples, Settings.samples),
+               setting(max_rules, Settings.max_rules),
+               setting(threshold_permille, Permille),
+               setting(breadth, Settings.breadth),
+               setting(ridge_permille, RidgePermille),
+               setting(qualify, Settings.qualify),
+               setting(explored, N),
+               setting(simulations, Reply.simulations),
+               setting(failed_simulations, Reply.failed),
+               setting(stopped, Stop),
+               setting(a_new_left, Left) ],
+    findall(setting(initial, P), member(P, Settings.initial), Initial),
+    append(Facts0, Initial, Facts).
+
+string_value(V, S) :- ( string(V) -> S = V ; atom_string(V, S) ).
+
+%!  rule_facts(+Explored:list, +Qualified:list, -Facts:list) is det.
+%
+%   The facts of the learned rules: for each explored antecedent
+%   ant(Id, Props, Parent, Via) and its qualified outcome (a dict with
+%   `outcomes`, a list of dicts with expectation, holds, confidence_permille
+%   and score_permille, and the antecedent's `simulations` and
+%   `weight_mass_permille`), one defeasible rule per outcome literal, its
+%   body facts, learned/1 and its provenance.
+rule_facts(Explored, Qualified, Facts) :-
+    foldl(antecedent_facts(Qualified), Explored, Fs, []),
+    Facts = Fs.
+
+antecedent_facts(Qualified, ant(Id, Props, Parent, Via), Facts, Tail) :-
+    member(Q, Qualified), Q.id == Id, !,
+    foldl(outcome_facts(Id, Props, Parent, Via, Q), Q.outcomes, Facts, Tail).
+
+outcome_facts(AId, Props, Parent, Via, Q, O, Facts, Tail) :-
+    sub_atom(AId, 1, _, 0, Num),
+    atomic_list_concat([r, Num, '_', O.expectation], Id),
+    (   O.holds == true -> Head = O.expectation ; Head = neg(O.expectation) ),
+    findall(body(Id, P), member(P, Props), Bodies),
+    via_facts(Id, Via, ViaFacts),
+    Prov = [ provenance(Id, antecedent, AId),
+             provenance(Id, parent, Parent),
+             provenance(Id, simulations, Q.simulations),
+             provenance(Id, weight_mass_permille, Q.weight_mass_permille),
+             provenance(Id, confidence_permille, O.confidence_permille),
+             provenance(Id, score_permille, O.score_permille)
+           | ViaFacts ],
+    append([[rule(Id, defeasible, Head)], Bodies, [learned(Id)], Prov], Fs),
+    append(Fs, Tail, Facts).
+
+via_facts(_, initial, []).
+via_facts(Id, via(E, X, Sign), [ provenance(Id, followed, E),
+                                 provenance(Id, direction, X),
+                                 provenance(Id, sign, Sign) ]).
+
+%!  write_theory(+File, +Settings:dict, +Facts:list) is det.
+%
+%   Write Facts to File, in the common subset of Prolog and ASP, with a
+%   header saying what the file is. The file is written beside under a
+%   temporary name and renamed, so File is never half-written.
+write_theory(File, Settings, Facts) :-
+    file_directory_name(File, Dir),
+    make_directory_path(Dir),
+    current_prolog_flag(pid, Pid),
+    format(atom(Tmp), "~w.~w.tmp", [File, Pid]),
+    setup_call_cleanup(
+        open(Tmp, write, Out, [encoding(utf8)]),
+        write_facts(Out, Settings, Facts),
+        close(Out)),
+    rename_file(Tmp, File).
+
+write_facts(Out, Settings, Facts) :-
+    format(Out, "% A theory of pouring learned by curiosity-driven exploration~n", []),
+    format(Out, "% (pantarhei explore, oracle ~w, seed ~w).~n", [Settings.oracle, Settings.seed]),
+    format(Out, "%~n", []),
+    format(Out, "% Ground facts, read by SWI-Prolog and clingo alike:~n", []),
+    format(Out, "%   rule(Id, defeasible, Head): Head is an expectation, or neg(E) when it fails;~n", []),
+    format(Out, "%   body(Id, Prop): a scene proposition of the rule's antecedent;~n", []),
+    format(Out, "%   learned(Id): a learned rule (superiority from specificity);~n", []),
+    format(Out, "%   provenance(Id, Key, Value): where the rule comes from (antecedent,~n", []),
+    format(Out, "%   parent antecedent, simulations with a weight, their weight mass and the~n", []),
+    format(Out, "%   verdict's confidence in permille, and the plane, parameter and sign~n", []),
+    format(Out, "%   that produced the antecedent);~n", []),
+    format(Out, "%   setting(Key, Value): how the exploration ran.~n~n", []),
+    forall(member(F, Facts),
+           (   ( F = rule(_, _, _) -> nl(Out) ; true ),
+               write_term(Out, F, [quoted(true), spacing(next_argument)]),
+               write(Out, '.\n')
+           )).
+
+% ----------------------------------------------------------------------
+% The bridge
+
+%   call_bridge(+Name, +Request:dict, -Reply:dict): call the foreign
+%   predicate bridge:Name with the request as JSON text.
+call_bridge(Name, Request, Reply) :-
+    (   current_predicate(bridge:Name/2)
+    ->  true
+    ;   throw(exploration_error("the oracle is not loaded: start Prolog with `pantarhei prolog`"))
+    ),
+    atom_json_dict(Text, Request, [width(0)]),
+    Goal =.. [Name, Text, ReplyText],
+    (   call(bridge:Goal)
+    ->  true
+    ;   format(string(M), "~w failed", [Name]),
+        throw(exploration_error(M))
+    ),
+    atom_json_dict(ReplyText, Reply0, [value_string_as(atom)]),
+    (   get_dict(error, Reply0, Message)
+    ->  string_value(Message, M),
+        throw(exploration_error(M))
+    ;   Reply = Reply0
+    ).
