@@ -45,7 +45,7 @@ from .weights import weights
 #: Where the learned theory goes unless told otherwise.
 DEFAULT_OUT = THEORY_DIR / "learned" / "pouring.pl"
 #: The store of simulations and exploration state unless told otherwise.
-DEFAULT_STORE = Path(os.environ.get("PANTARHEI_STORE", Path.home() / ".cache" / "pantarhei" / "store.sqlite"))
+DEFAULT_STORE = Path("pantarhei.sqlite")
 #: Qualify modes: the weighted vote (default) and the paper's rule.
 QUALIFY = ("weighted", "argmax")
 #: Bumped when the course of an exploration may change for the same settings.
@@ -69,34 +69,12 @@ def plot_path(out: Path) -> Path:
 # Simulation
 
 
-class _OracleLoop:
-    """Scores parameterizations one by one with the oracle, in this process."""
-
-    def __init__(self, name: str):
-        from pantarhei.oracle.base import make_oracle
-
-        self._oracle = make_oracle(name)
-
-    def simulate(self, P: np.ndarray, progress: bool = False) -> np.ndarray:
-        out = np.full((len(P), 9), np.nan)
-        for i, p in enumerate(np.asarray(P, dtype=float)):
-            try:
-                out[i] = self._oracle.score(p).scores
-            except Exception:  # a failed simulation is a NaN row
-                pass
-        return out
-
-    def close(self) -> None:
-        pass
-
-
 def open_simulator(oracle: str, executor: str = "local", workers: int | None = None,
                    store: str | Path | None = None, ray_address: str | None = None) -> Any:
-    """The simulator: `simulate(P) -> scores` with NaN rows for failures."""
-    try:
-        from pantarhei.oracle.simulator import make_simulator
-    except ImportError:
-        return _OracleLoop(oracle)
+    """The simulator: `simulate(P) -> scores` with NaN rows for failures,
+    every result kept in the store and never simulated twice."""
+    from pantarhei.oracle.simulator import make_simulator
+
     return make_simulator(oracle, executor=executor, workers=workers, store=str(store),
                           ray_address=ray_address)
 
