@@ -19,6 +19,7 @@ import pickle
 import signal
 import subprocess
 import sys
+import threading
 import time
 from abc import ABC, abstractmethod
 from collections import deque
@@ -103,11 +104,25 @@ class InlineExecutor(Executor):
 # ----------------------------------------------------------------------------
 # worker processes on this machine
 
+def _exit_with_parent() -> None:
+    """End this process as soon as its parent is gone (killed, say), even in
+    the middle of a simulation."""
+    parent = os.getppid()
+
+    def watch() -> None:
+        while os.getppid() == parent:
+            time.sleep(0.5)
+        os._exit(3)
+
+    threading.Thread(target=watch, daemon=True).start()
+
+
 def worker_main(conn: Connection) -> None:
     """A worker: receive the oracle, then score what it is sent until it is
     sent None (run by `python -m pantarhei.oracle.worker`)."""
     devnull = os.open(os.devnull, os.O_WRONLY)
     os.dup2(devnull, 1)     # the physics engine's chatter must not reach the terminal
+    _exit_with_parent()
     oracle: Oracle = pickle.loads(conn.recv_bytes())
     while True:
         try:
