@@ -1,0 +1,93 @@
+"""Never lose work: a real exploration killed with SIGKILL mid-run resumes
+and ends with the same theory as an uninterrupted run with the same seed."""
+from __future__ import annotations
+
+import json
+import os
+import signal
+import sqlite3
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+from tests.conftest import run_cli
+
+ARGS = ["explore", "--oracle", "synthetic", "--executor", "inline", "--max-rules", "10",
+        "--seed", "3", "--no-progress"]
+
+
+def saved_iterations(store: Path) -> int:
+    if not store.exists():
+        return 0
+    try:
+        with sqlite3.connect(store, timeout=5) as db:
+            row = db.execute("SELECT max(iterations) FROM exploration_runs").fetchone()
+    except sqlite3.OperationalError:      # the tables are not there yet
+        return 0
+    return int(row[0] or 0)
+
+
+def test_killed_exploration_resumes_to_the_same_theory(tmp_path):
+    whole = run_cli(*ARGS, "--out", str(tmp_path / "whole.pl"),
+                    "--store", str(tmp_path / "whole.sqlite"))
+    assert whole.code == 0, whole.err
+    expected = (tmp_path / "whole.pl").read_text()
+
+    store, out = tmp_path / "killed.sqlite", tmp_path / "killed.pl"
+    env = {**os.environ, "PANTARHEI_SYNTHETIC_DELAY": "0.01"}
+    proc = subprocess.Popen([sys.executable, "-m", "pantarhei.bridge", *ARGS, "--out", str(out),
+                             "--store", str(store)], env=env, stdin=subprocess.DEVNULL,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        deadline = time.monotonic() + 120
+        while saved_iterations(store) < 3 and proc.poll() is None and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert proc.poll() is None, "the exploration ended before it could be killed"
+        proc.send_signal(signal.SIGKILL)
+        proc.wait(timeout=30)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+    done = saved_iterations(store)
+    assert 3 <= done < 10
+    assert not out.exists()
+
+    resumed = run_cli(*ARGS, "--resume", "--out", str(out), "--store", str(store))
+    assert resumed.code == 0, resumed.err
+    assert out.read_text() == expected
+    trace = without_time(tmp_path / "killed.trace.jsonl")
+    assert len(trace) == 10
+    assert trace == without_time(tmp_path / "whole.trace.jsonl")
+
+
+def without_time(path: Path) -> list[dict]:
+    lines = [json.loads(line) for line in path.read_text().splitlines()]
+    for line in lines:
+        del line["elapsed_s"]
+    return lines
+
+
+def test_resume_of_a_finished_run_and_a_longer_one(tmp_path):
+    common = ["--out", str(tmp_path / "t.pl"), "--store", str(tmp_path / "s.sqlite")]
+    short = ["explore", "--oracle", "synthetic", "--executor", "inline", "--no-progress",
+             "--seed", "4"]
+    assert run_cli(*short, "--max-rules", "4", *common).code == 0
+    # resuming with a larger budget continues where it stopped ...
+    longer = run_cli(*short, "--max-rules", "7", "--resume", *common)
+    assert longer.code == 0, longer.err
+    continued = (tmp_path / "t.pl").read_text()
+    # ... and ends where a run with that budget from scratch ends
+    fresh = run_cli(*short, "--max-rules", "7", "--out", str(tmp_path / "f.pl"),
+                    "--store", str(tmp_path / "f.sqlite"))
+    assert fresh.code == 0
+    assert continued == (tmp_path / "f.pl").read_text()
+
+
+def test_resume_with_nothing_saved_starts_afresh(tmp_path):
+    r = run_cli("explore", "--oracle", "synthetic", "--executor", "inline", "--no-progress",
+                "--max-rules", "2", "--resume", "--out", str(tmp_path / "t.pl"),
+                "--store", str(tmp_path / "s.sqlite"))
+    assert r.code == 0
+    assert "starting afresh" in r.err
+    assert (tmp_path / "t.pl").exists()
