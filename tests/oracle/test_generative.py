@@ -1,0 +1,147 @@
+"""The generative models: samples lie in their propositions' support and
+follow the density that `log_density` gives, for every proposition."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy import stats
+
+from pantarhei.oracle import generative as G
+from pantarhei.oracle.vocabulary import load_vocabulary
+
+V = load_vocabulary()
+PROPS = sorted(V.propositions)
+N = 400
+GRID = 801
+ALPHA = 1e-3
+
+
+def _index(name: str) -> int:
+    return V.parameter(name).index
+
+
+def _tested(prop: str) -> list[int]:
+    """The parameters a proposition draws (and its base), plus one it leaves
+    to the prior."""
+    m = V.proposition(prop).model
+    out = [_index(m.param)]
+    if m.base:
+        out.append(_index(m.base))
+    free = next(p.index for p in V.parameters if p.index not in out and not p.discrete)
+    return out + [free]
+
+
+def test_there_are_86_propositions():
+    assert len(PROPS) == 86
+
+
+@pytest.mark.parametrize("prop", PROPS)
+def test_samples_lie_in_the_support(prop):
+    P = G.sample([prop], 300, seed=1)
+    m = V.proposition(prop).model
+    i = _index(m.param)
+    lo = np.array([p.low for p in V.parameters])
+    hi = np.array([p.high for p in V.parameters])
+    assert np.all((P >= lo) & (P <= hi))
+    if m.kind == "uniform":
+        assert np.all((P[:, i] >= m.low) & (P[:, i] <= m.high))
+    else:
+        d = P[:, i] - P[:, _index(m.base)]
+        assert np.all((d >= m.low - 1e-9) & (d <= m.high + 1e-9))
+    assert np.all(np.isfinite(G.log_density(P, [prop])))
+    assert np.all(G.in_support(P, [prop]))
+    assert np.all(P[:, V.parameter("particle_count").index] % 1 == 0)
+
+
+@pytest.mark.parametrize("prop", [p for p in PROPS if V.proposition(p).model.kind == "uniform"])
+def test_outside_the_range_the_density_is_zero(prop):
+    m = V.proposition(prop).model
+    i = _index(m.param)
+    p = V.parameter(m.param)
+    P = G.sample([prop], 5, seed=2)
+    for v in (m.low - 1, m.high + 1):
+        if p.low <= v <= p.high:
+            Q = P.copy()
+            Q[:, i] = v
+            assert np.all(G.log_density(Q, [prop]) == -np.inf)
+
+
+def _conditional_cdf(P: np.ndarray, i: int, prop: str) -> np.ndarray:
+    """F(x_i | the other parameters) of each row, by integrating exp(log_density)
+    along parameter i (with the trapezoid rule on a fine grid)."""
+    lo, hi = V.parameters[i].low, V.parameters[i].high
+    grid = np.linspace(lo, hi, GRID)
+    Q = np.repeat(P, GRID, axis=0)
+    Q[:, i] = np.tile(grid, len(P))
+    dens = np.exp(G.log_density(Q, [prop])).reshape(len(P), GRID)
+    cum = np.concatenate([np.zeros((len(P), 1)),
+                          np.cumsum((dens[:, 1:] + dens[:, :-1]) / 2 * np.diff(grid), axis=1)], axis=1)
+    total = cum[:, -1]
+    assert np.all(total > 0)
+    at = np.array([np.interp(x, grid, c) for x, c in zip(P[:, i], cum)])
+    return at / total
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("prop", PROPS)
+def test_samples_follow_the_density(prop):
+    """Goodness of fit: the conditional CDF from log_density, applied to the
+    samples, is uniform (Kolmogorov-Smirnov); counts, chi-square."""
+    P = G.sample([prop], N, seed=11)
+    for i in _tested(prop):
+        if V.parameters[i].discrete:
+            continue
+        u = _conditional_cdf(P, i, prop)
+        assert stats.kstest(u, "uniform").pvalue > ALPHA, V.parameters[i].name
+    k = V.parameter("particle_count").index
+    values = np.arange(V.parameters[k].low, V.parameters[k].high + 1)
+    Q = np.repeat(P[:1], len(values), axis=0)
+    Q[:, k] = values
+    pmf = np.exp(G.log_density(Q, [prop]) - G.log_density(P[:1], [prop]))
+    pmf = pmf / pmf.sum()
+    support = pmf > 0
+    P2 = G.sample([prop], 4000, seed=12)
+    counts = np.array([(P2[:, k] == v).sum() for v in values[support]])
+    assert counts.sum() == len(P2)                       # nothing outside the support
+    assert stats.chisquare(counts, pmf[support] * len(P2)).pvalue > ALPHA
+
+
+def test_a_wrong_sampler_would_fail_the_fit():
+    """The goodness-of-fit test has teeth: samples squeezed towards the low
+    end of a range are rejected."""
+    P = G.sample(["pour_high"], N, seed=11)
+    i = _index("pour_z")
+    P[:, i] = 140 + (P[:, i] - 140) ** 2 / 110
+    assert stats.kstest(_conditional_cdf(P, i, "pour_high"), "uniform").pvalue < ALPHA
+
+
+def test_log_density_is_the_product_of_the_uniform_widths():
+    ants = [["pour_high", "heavy_liquid"], ["approach_raising", "pour_low"],
+            ["retreat_moving_away", "end_high"], []]
+    for a in ants:
+        P = G.sample(a, 50, seed=3)
+        logp = G.log_density(P, a)
+        expect = np.zeros(len(P))
+        setters = {V.proposition(n).model.param: V.proposition(n).model for n in a}
+        bases = {s.base for s in setters.values() if s.base}
+        for p in V.parameters:
+            m = setters.get(p.name)
+            if p.name in bases:
+                # uniform on its range, narrowed so that its dependant has room
+                pl = G.plan(a)
+                expect -= np.log(pl.high[p.index] - pl.low[p.index])
+            elif m is None:
+                expect -= np.log(p.high - p.low + (1 if p.discrete else 0))
+            elif m.kind == "uniform":
+                expect -= np.log(min(p.high, m.high) - max(p.low, m.low))
+            else:
+                b = P[:, _index(m.base)]
+                expect -= np.log(np.minimum(p.high, b + m.high) - np.maximum(p.low, b + m.low))
+        assert np.allclose(logp, expect)
+
+
+def test_same_seed_same_samples_and_order_does_not_matter():
+    a = G.sample(["pour_low", "heavy_liquid"], 20, seed=5)
+    b = G.sample(["heavy_liquid", "pour_low"], 20, seed=5)
+    assert np.array_equal(a, b)
+    assert not np.array_equal(a, G.sample(["pour_low", "heavy_liquid"], 20, seed=6))
