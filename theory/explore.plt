@@ -1,0 +1,75 @@
+:- begin_tests(explore).
+
+:- use_module(explore).
+:- use_module(validity).
+
+test(default_initial_is_valid) :-
+    default_initial(A),
+    valid_antecedent(A).
+
+test(direction_towards_other_verdict) :-
+    direction([a-1.0, b-(-2.0)], 0.9, D1),
+    D1 == [a-(-1.0), b-2.0],
+    direction([a-1.0, b-(-2.0)], 0.1, D2),
+    D2 == [a-1.0, b-(-2.0)].
+
+test(parameter_mean_uniform_prior_relative) :-
+    parameter_mean([pour_low], pour_z, M1), M1 =:= 30,
+    parameter_mean([], pour_z, M2), M2 =:= 180,
+    parameter_mean([pour_low, approach_lowering], start_z, M3), M3 =:= 30 + 85.
+
+test(step_up_and_down) :-
+    modify([pour_low, pour_steeply_tilted], [pour_z-1.0], 1, [], Up),
+    Up == [mod([pour_mid_height, pour_steeply_tilted], pour_z, up)],
+    modify([pour_low, pour_steeply_tilted], [pour_z-(-1.0)], 1, [], Down),
+    Down == [mod([pour_below_rim, pour_steeply_tilted], pour_z, down)].
+
+test(add_for_free_parameter) :-
+    modify([pour_low], [particle_mass-(-1.0)], 1, [], New),
+    findall(P, member(mod(P, _, _), New), Ps),
+    Ps == [[light_liquid, pour_low], [medium_liquid, pour_low]].
+
+test(excluded_and_invalid_are_left_out) :-
+    modify([pour_low], [particle_mass-(-1.0)], 1, [[light_liquid, pour_low]], New),
+    New == [mod([medium_liquid, pour_low], particle_mass, down)],
+    modify([pour_low, pour_near_rim], [pour_z-(-1.0)], 1, [], None),
+    None == [].
+
+test(breadth_limits_parameters) :-
+    Dir = [pour_z-1.0, particle_mass-0.5, pour_pitch-0.1],
+    modify([pour_low, pour_half_tilted], Dir, 1, [], One),
+    forall(member(mod(_, X, _), One), X == pour_z),
+    modify([pour_low, pour_half_tilted], Dir, 3, [], Three),
+    findall(X, member(mod(_, X, _), Three), Xs0), sort(Xs0, Xs),
+    Xs == [particle_mass, pour_pitch, pour_z].
+
+test(every_modification_valid_and_new, [forall(member(A, [[], [pour_low], [pour_to_side, light_liquid], [approach_raising, pour_high, end_upright]]))]) :-
+    findall(X-1.0, parameter(X, _, _, _, _), Up),
+    findall(X-(-1.0), parameter(X, _, _, _, _), Down),
+    forall(member(D, [Up, Down]),
+           ( modify(A, D, 30, [A], New),
+             forall(member(mod(P, _, _), New),
+                    ( valid_antecedent(P), msort(P, P), P \== A ))
+           )).
+
+test(rule_facts_and_theory_file, [setup(tmp_file(theory, F)), cleanup(delete_file(F))]) :-
+    Q = _{id:a2, simulations:31, weight_mass_permille:900,
+          outcomes:[_{expectation:no_spill, holds:false, confidence_permille:800, score_permille:300}]},
+    rule_facts([ant(a2, [pour_to_side], a1, via(no_spill, pour_x, up))], [Q], Facts),
+    memberchk(rule(r2_no_spill, defeasible, neg(no_spill)), Facts),
+    memberchk(body(r2_no_spill, pour_to_side), Facts),
+    memberchk(learned(r2_no_spill), Facts),
+    memberchk(provenance(r2_no_spill, direction, pour_x), Facts),
+    memberchk(provenance(r2_no_spill, parent, a1), Facts),
+    write_theory(F, _{oracle:synthetic, seed:1}, [setting(oracle_version, "1")|Facts]),
+    theory_files:load_facts(F, explore_plt_theory),
+    explore_plt_theory:rule(r2_no_spill, defeasible, neg(no_spill)),
+    explore_plt_theory:setting(oracle_version, "1").
+
+test(explore_without_the_bridge_says_so, [throws(exploration_error(_))]) :-
+    explore([oracle(synthetic), max_rules(1)]).
+
+test(bad_option, [true(R = error(_))]) :-
+    explore_result([max_rules(0)], R).
+
+:- end_tests(explore).
