@@ -1,0 +1,58 @@
+"""`pantarhei explore` and `pantarhei prolog` as a user runs them."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from tests.conftest import run_cli
+
+FAST = ["--oracle", "synthetic", "--executor", "inline", "--no-progress"]
+
+
+@pytest.mark.parametrize("args, words", [
+    (["--initial", "pour_sideways"], "unknown proposition 'pour_sideways'"),
+    (["--initial", "pour_low,pour_high"], "invalid antecedent"),
+    (["--max-rules", "0"], "--max-rules must be at least 1"),
+    (["--threshold", "-1"], "must not be negative"),
+    (["--oracle", "nope"], "invalid choice"),
+])
+def test_bad_input_is_one_line_and_nonzero(tmp_path, args, words):
+    r = run_cli("explore", *FAST, *args, "--out", str(tmp_path / "t.pl"),
+                "--store", str(tmp_path / "s.sqlite"))
+    assert r.code != 0
+    assert words in r.err
+    assert len(r.err.strip().splitlines()) == 1 and "Traceback" not in r.err
+    assert not (tmp_path / "t.pl").exists()
+
+
+def test_explore_command_reports_what_it_wrote(tmp_path):
+    out = tmp_path / "sub" / "learned.pl"
+    r = run_cli("explore", *FAST, "--max-rules", "3", "--samples", "12", "--out", str(out),
+                "--store", str(tmp_path / "s.sqlite"))
+    assert r.code == 0, r.err
+    assert "explored 3 antecedents with 36 simulations" in r.out
+    assert out.is_file() and out.with_suffix(".trace.jsonl").is_file()
+    assert out.with_suffix(".trace.png").is_file()
+    assert "setting(samples, 12)." in out.read_text()
+
+
+def test_prolog_command_drives_exploration(tmp_path):
+    out = tmp_path / "p.pl"
+    goal = (f"explore([oracle(synthetic), max_rules(2), executor(inline), progress(false), "
+            f"out('{out}'), store('{tmp_path / 's.sqlite'}')]), "
+            f"theory_files:load_facts('{out}', m), aggregate_all(count, m:rule(_, _, _), N), "
+            f"format('rules: ~w~n', [N])")
+    r = run_cli("prolog", "-g", goal)
+    assert r.code == 0, r.err
+    assert "rules: 18" in r.out
+
+
+def test_prolog_command_interactive_prompt(tmp_path):
+    import subprocess
+    import sys
+
+    p = subprocess.run([sys.executable, "-m", "pantarhei.bridge", "prolog"],
+                       input="X is 6*7, format('answer ~w~n', [X]).\nhalt.\n",
+                       capture_output=True, text=True, timeout=120)
+    assert "answer 42" in p.stdout
