@@ -148,17 +148,20 @@ class World:
 
 @contextmanager
 def quiet() -> Iterator[None]:
-    """Silence what the physics engine prints on the standard output."""
+    """Silence what the physics engine prints when it loads and connects."""
     sys.stdout.flush()
-    saved = os.dup(1)
+    sys.stderr.flush()
+    saved = [os.dup(1), os.dup(2)]
     devnull = os.open(os.devnull, os.O_WRONLY)
     os.dup2(devnull, 1)
+    os.dup2(devnull, 2)
     try:
         yield
     finally:
-        os.dup2(saved, 1)
-        os.close(saved)
-        os.close(devnull)
+        os.dup2(saved[0], 1)
+        os.dup2(saved[1], 2)
+        for fd in (*saved, devnull):
+            os.close(fd)
 
 
 def build(pour: Pour, fidelity: Fidelity, *, visual: bool = False) -> World:
@@ -330,7 +333,7 @@ def _simulate(w: World, on_frame: Optional[Frame], frame_hz: float,
             rest_samples = rest_samples + 1 if still else 0
             if rest_samples >= 3:
                 break
-    if on_frame and frame_every:
+    if on_frame and frame_every and steps_done % frame_every:
         on_frame(w, steps_done * dt)
 
     pts = positions()

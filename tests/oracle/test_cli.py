@@ -1,0 +1,114 @@
+"""`pantarhei simulate` and `pantarhei render`, run as a user would."""
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from pantarhei.oracle.generative import to_dict
+from pantarhei.oracle.store import Store
+from pantarhei.oracle.vocabulary import load_vocabulary
+
+from ..conftest import assert_one_line_error
+from .pours import BASE, CENTRED_LOW_TIPPED, pour
+
+EXPECTATIONS = load_vocabulary().expectation_names
+
+
+@pytest.mark.slow
+def test_simulate_samples_simulates_and_stores(cli, tmp_path):
+    db = tmp_path / "s.sqlite"
+    args = ("simulate", "--antecedent", "pour_centred,pour_low,little_liquid", "-n", "2",
+            "--seed", "4", "--json", "--store", str(db), "--workers", "2")
+    r = cli(*args)
+    assert r.code == 0, r.err
+    out = json.loads(r.out)
+    assert len(out) == 2
+    for item in out:
+        assert set(item["scores"]) == set(EXPECTATIONS)
+        assert all(0 <= v <= 1 for v in item["scores"].values())
+        assert -20 <= item["params"]["pour_x"] <= 20 and 0 <= item["params"]["pour_z"] <= 60
+        assert 10 <= item["params"]["particle_count"] <= 30
+        f = item["record"]["fractions"]
+        assert f["source"] + f["destination"] + f["elsewhere"] == pytest.approx(1)
+    with Store(db) as st:
+        assert st.count("ok") == 2
+    again = cli(*args)
+    assert again.code == 0 and json.loads(again.out) == out     # same seed, same result
+
+
+@pytest.mark.slow
+def test_simulate_given_parameterizations_and_print_them(cli, tmp_path):
+    f = tmp_path / "pours.json"
+    f.write_text(json.dumps([{"params": to_dict(pour(**CENTRED_LOW_TIPPED))}, {"params": BASE}]))
+    r = cli("simulate", "--params", str(f), "--no-store", "--executor", "inline")
+    assert r.code == 0, r.err
+    assert r.out.count("pour ") == 2
+    for e in EXPECTATIONS:
+        assert r.out.count(e) == 2
+    assert "holds" in r.out and "in the destination" in r.out
+    assert "argv" not in r.out
+
+
+@pytest.mark.slow
+def test_render_writes_a_gif_and_frames(cli, tmp_path):
+    out = tmp_path / "pour.gif"
+    r = cli("render", "--antecedent", "pour_centred,pour_low,pour_steeply_tilted,little_liquid",
+            "--seed", "1", "--out", str(out), "--frames", str(tmp_path / "frames"), "--fps", "5",
+            "--size", "160x120")
+    assert r.code == 0, r.err
+    from PIL import Image
+    with Image.open(out) as im:
+        assert im.size == (160, 120) and im.n_frames > 3
+        n = im.n_frames
+    pngs = sorted((tmp_path / "frames").glob("*.png"))
+    assert len(pngs) >= n       # a GIF merges identical frames (everything at rest)
+    with Image.open(pngs[0]) as a, Image.open(pngs[-1]) as b:
+        assert a.tobytes() != b.tobytes()       # something moved
+
+
+BAD = [
+    (("simulate", "--antecedent", "pour_centred,pour_lo"), "unknown proposition 'pour_lo'"),
+    (("simulate", "--antecedent", "pour_centred,pour_far_away"), "one_value_per_dimension"),
+    (("render", "--antecedent", "pour_low,pour_high", "--out", "x.gif"), "invalid antecedent"),
+    (("simulate", "--antecedent", "pour_low", "-n", "0"), "-n must be at least 1"),
+    (("simulate", "--antecedent", "pour_low", "--workers", "0"), "--workers"),
+    (("simulate", "--antecedent", "pour_low", "--ray-address", "1.2.3.4:6379"), "--executor ray"),
+    (("render", "--antecedent", "pour_low", "--out", "x.png"), ".gif"),
+    (("render", "--antecedent", "pour_low", "--size", "big"), "--size"),
+]
+
+
+@pytest.mark.parametrize("args,words", BAD)
+def test_bad_input_is_one_line(cli, tmp_path, args, words):
+    line = assert_one_line_error(cli(*args, "--store", str(tmp_path / "s.sqlite"))
+                                 if args[0] == "simulate" else cli(*args))
+    assert words in line
+    assert not (tmp_path / "s.sqlite").exists()
+
+
+def _params_file(tmp_path, content):
+    f = tmp_path / "p.json"
+    f.write_text(content if isinstance(content, str) else json.dumps(content))
+    return str(f)
+
+
+@pytest.mark.parametrize("content,words", [
+    ('[{"params": {"start_x": 1,}}]', "malformed JSON at line 1"),
+    ([{"params": {k: v for k, v in BASE.items() if k != "pour_pitch"}}], "'pour_pitch' is missing"),
+    ([{"params": {**BASE, "pour_pitch": 500}}], "'pour_pitch' = 500 is outside its bounds"),
+    ([{"params": {**BASE, "particle_count": 12.5}}], "whole number"),
+    ([{"params": {**BASE, "pour_wobble": 1}}], "unknown parameter 'pour_wobble'"),
+    ([{"params": {**BASE, "pour_x": "near"}}], "must be a number"),
+    ([{"params": BASE}, 3], "item 2 is not an object"),
+    ([], "non-empty list"),
+])
+def test_bad_parameter_files_are_one_line(cli, tmp_path, content, words):
+    line = assert_one_line_error(cli("simulate", "--params", _params_file(tmp_path, content),
+                                     "--no-store"))
+    assert words in line
+
+
+def test_missing_parameter_file(cli, tmp_path):
+    line = assert_one_line_error(cli("simulate", "--params", str(tmp_path / "nope.json")))
+    assert "cannot read" in line
