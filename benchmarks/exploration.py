@@ -1,0 +1,133 @@
+"""Exploration: the share of wall time that is not simulation.
+
+Runs Algorithm 1 on the synthetic oracle (whose scores cost nothing) at
+growing budgets, so that everything measured besides the oracle is the
+exploration's own work: Prolog, sampling, weights, plane fits, modify,
+checkpoints, the theory, trace and plot. That overhead is set against the
+simulation time the same number of PyBullet pours takes on 2 workers (the
+cost of a pour measured here, on a few pours of a_0), giving the share of
+a paper-scale run that is not simulation (target: at most 5%).
+
+Also measured side by side: the qualify rules (held-out verdict accuracy
+of the learned rules on the synthetic oracle) and the plane fits (how often
+the steepest direction from a_0 is one the synthetic oracle really has,
+with plain least squares and with the ridge penalty).
+"""
+from __future__ import annotations
+
+import statistics
+import tempfile
+import time
+from collections import defaultdict
+from pathlib import Path
+
+import numpy as np
+
+WORKERS = 2
+BUDGETS = (5, 10, 25, 50)
+REPEATS = 3
+
+
+def overhead(max_rules: int, tmp: Path, seed: int = 1) -> tuple[float, int, dict]:
+    from pantarhei.bridge.exploration import Options, explore
+
+    t = time.perf_counter()
+    r = explore(Options(oracle="synthetic", max_rules=max_rules, seed=seed, out=tmp / "t.pl",
+                        store=tmp / f"s{max_rules}-{seed}-{time.time_ns()}.sqlite",
+                        progress=False, executor="inline", threshold=0.0))
+    wall = time.perf_counter() - t
+    return wall - r["timings"].get("oracle", 0.0), r["simulations"], r["timings"]
+
+
+def pour_seconds(n: int = 3) -> float:
+    """Median seconds of one PyBullet pour of a_0 (one worker)."""
+    from pantarhei.oracle.base import make_oracle
+    from pantarhei.oracle.generative import sample
+
+    oracle = make_oracle("pybullet")
+    times = []
+    for p in sample(["pour_low", "pour_near_rim", "pour_steeply_tilted"], n, seed=11):
+        t = time.perf_counter()
+        oracle.score(p)
+        times.append(time.perf_counter() - t)
+    return statistics.median(times)
+
+
+def qualify_accuracy(tmp: Path, seeds=(1, 2, 3)) -> dict[str, float]:
+    from pantarhei.bridge.exploration import Options, explore
+    from pantarhei.oracle.generative import sample
+    from pantarhei.oracle.synthetic import scores
+    from pantarhei.oracle.vocabulary import load_vocabulary
+    from pantarhei.theory import read_facts
+
+    v = load_vocabulary()
+    names, expectations = v.parameter_names, list(v.expectation_names)
+    out = {}
+    for mode in ("weighted", "argmax"):
+        ok = total = 0
+        for seed in seeds:
+            path = tmp / f"q-{mode}-{seed}.pl"
+            explore(Options(oracle="synthetic", seed=seed, qualify=mode, out=path,
+                            store=tmp / "q.sqlite", progress=False, executor="inline"))
+            f = read_facts([path])
+            body = defaultdict(list)
+            for rid, p in f["body"]:
+                body[rid].append(p)
+            for rid, _, head in f["rule"]:
+                neg = isinstance(head, tuple)
+                k = expectations.index(head[1] if neg else head)
+                for p in sample(body[rid], 100, seed=12345):
+                    ok += (scores(dict(zip(names, p)))[k] > 0.5) != neg
+                    total += 1
+        out[mode] = ok / total
+    return out
+
+
+def direction_hits(ridge: float, trials: int = 30) -> float:
+    from pantarhei.bridge.planes import best_abs_slope, plane_fit
+    from pantarhei.oracle.generative import normalise, sample
+    from pantarhei.oracle.synthetic import DEPENDS, scores
+    from pantarhei.oracle.vocabulary import load_vocabulary
+
+    v = load_vocabulary()
+    names, expectations = v.parameter_names, v.expectation_names
+    hits = 0
+    for seed in range(trials):
+        P = sample(["pour_low", "pour_near_rim", "pour_steeply_tilted"], 31, seed=seed)
+        S = np.array([scores(dict(zip(names, p))) for p in P])
+        best = best_abs_slope(plane_fit(normalise(P), S, np.ones(len(P)), ridge))
+        top = names[int(np.argmax(np.abs(best.gradient)))]
+        hits += top in DEPENDS[expectations[best.expectation]]
+    return hits / trials
+
+
+def main() -> None:
+    with tempfile.TemporaryDirectory() as d:
+        tmp = Path(d)
+        overhead(2, tmp)                      # start Prolog and warm the caches
+        pour = pour_seconds()
+        print(f"one PyBullet pour of a_0: {pour:.2f} s (median of 3, one worker); "
+              f"{WORKERS} workers simulate {WORKERS / pour * 60:.0f} pours per minute")
+        print(f"{'rules':>5} {'sims':>5} {'overhead s':>11} {'per sim ms':>11} "
+              f"{'sim s (2 workers)':>18} {'non-sim share':>14}")
+        for budget in BUDGETS:
+            runs = [overhead(budget, tmp, seed) for seed in range(1, REPEATS + 1)]
+            over = statistics.median(r[0] for r in runs)
+            sims = runs[0][1]
+            sim = sims * pour / WORKERS
+            print(f"{budget:>5} {sims:>5} {over:>11.2f} {1000 * over / sims:>11.2f} "
+                  f"{sim:>18.0f} {100 * over / (over + sim):>13.2f}%")
+        _, _, timings = overhead(25, tmp)
+        parts = ", ".join(f"{k} {v:.2f} s" for k, v in sorted(timings.items()) if k != "oracle")
+        print(f"where the overhead of 25 rules goes (besides Prolog itself): {parts}")
+        acc = qualify_accuracy(tmp)
+        print(f"qualify, held-out verdict accuracy on the synthetic oracle (seeds 1-3): "
+              f"weighted {100 * acc['weighted']:.1f}%, argmax {100 * acc['argmax']:.1f}% "
+              f"(ratio {acc['weighted'] / acc['argmax']:.3f})")
+        plain, ridged = direction_hits(0.0), direction_hits(1.0)
+        print(f"steepest direction from a_0 on a known dependency (30 seeds): "
+              f"least squares {100 * plain:.0f}%, ridge 1.0 {100 * ridged:.0f}%")
+
+
+if __name__ == "__main__":
+    main()
