@@ -190,6 +190,8 @@ def begin(request: dict) -> dict:
     out = Path(str(request["out"]))
     out.parent.mkdir(parents=True, exist_ok=True)
     trace_path(out).unlink(missing_ok=True)
+    if saved is not None:
+        write_trace(trace_path(out), saved.trace)
     workers = request.get("workers")
     simulator = open_simulator(oracle, str(request.get("executor", "local")),
                                int(workers) if workers not in (None, "") else None,

@@ -71,7 +71,11 @@ def explore(args: argparse.Namespace) -> int:
         ridge=args.ridge, qualify=args.qualify, out=Path(args.out), store=Path(args.store),
         resume=args.resume, executor=args.executor, workers=args.workers,
         ray_address=args.ray_address, progress=not args.no_progress)
-    result = exploration.explore(options)
+    try:
+        result = exploration.explore(options)
+    except KeyboardInterrupt:
+        raise UserError("interrupted: the state is saved after every explored antecedent; "
+                        "the same command with --resume continues", exit_code=130) from None
     why = {"a_new_empty": "A_new is empty", "max_rules": f"{args.max_rules} rules"}.get(
         result.get("stopped", ""), result.get("stopped", ""))
     print(f"explored {result['explored']} antecedents with {result['simulations']} simulations "
