@@ -55,6 +55,20 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(run=prolog)
 
 
+def theory_modules() -> list[str]:
+    """The Prolog modules of theory/ (files that start with a module
+    declaration), by name."""
+    from pantarhei.theory import THEORY_DIR
+
+    names = []
+    for path in sorted(THEORY_DIR.glob("*.pl")):
+        with open(path, encoding="utf-8") as f:
+            head = f.read(200)
+        if head.lstrip().startswith(":- module("):
+            names.append(path.stem)
+    return names
+
+
 def explore(args: argparse.Namespace) -> int:
     for name in ("max_rules", "samples", "breadth", "workers"):
         v = getattr(args, name)
@@ -89,6 +103,11 @@ def explore(args: argparse.Namespace) -> int:
 
 def prolog(args: argparse.Namespace) -> int:
     eng = exploration.load()
+    for name in theory_modules():
+        try:
+            eng.use_module(name)
+        except UserError as e:  # one module that does not load does not stop the others
+            print(f"pantarhei prolog: {name} not loaded: {e}", file=sys.stderr)
     if args.goal:
         ok = eng.succeeds(f"catch(({args.goal}), E, (print_message(error, E), fail))")
         sys.stdout.flush()
