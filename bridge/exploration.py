@@ -424,6 +424,37 @@ def plot_trace(path: Path, trace: Sequence[dict], settings: dict | None = None) 
 
 
 # ----------------------------------------------------------------------
+# The oracle at the Prolog prompt (explore:sample/4, explore:simulate/3)
+
+
+def oracle_sample(request: dict) -> dict:
+    props = [str(p) for p in request["antecedent"]]
+    try:
+        P = sample(props, int(request["n"]), int(request["seed"]))
+    except (InvalidAntecedent, ValueError) as e:
+        raise UserError(str(e)) from None
+    return {"rows": P.tolist()}
+
+
+def oracle_simulate(request: dict) -> dict:
+    oracle = str(request.get("oracle", "pybullet"))
+    oracle_identity(oracle)
+    P = np.asarray(request["rows"], dtype=float)
+    n = len(load_vocabulary().parameters)
+    if P.ndim != 2 or P.shape[1] != n:
+        raise UserError(f"expected rows of {n} numbers")
+    workers = request.get("workers")
+    sim = open_simulator(oracle, str(request.get("executor", "local")),
+                         int(workers) if workers is not None else None,
+                         Path(str(request.get("store") or DEFAULT_STORE)).absolute())
+    try:
+        S = np.asarray(sim.simulate(P, progress=False), dtype=float)
+    finally:
+        sim.close()
+    return {"scores": [[float(x) if np.isfinite(x) else "nan" for x in row] for row in S]}
+
+
+# ----------------------------------------------------------------------
 # Hosting
 
 
@@ -434,6 +465,8 @@ _HANDLERS: dict[str, Callable[[dict], dict]] = {
     "exploration_qualify": qualify,
     "exploration_checkpoint": checkpoint,
     "exploration_end": end,
+    "oracle_sample": oracle_sample,
+    "oracle_simulate": oracle_simulate,
 }
 
 

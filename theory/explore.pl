@@ -1,6 +1,8 @@
 :- module(explore,
           [ explore/1,                % +Options
             explore_result/2,         % +Options, -Result
+            sample/4,                 % +Props, +N, +Seed, -Rows
+            simulate/3,               % +Rows, +Options, -Scores
             default_initial/1,        % -Props
             direction/3,              % +Gradient, +MeanScore, -Direction
             modify/5,                 % +Props, +Direction, +Breadth, +Exclude, -New
@@ -24,6 +26,8 @@ predicates of the module =bridge=, which `pantarhei explore` and
   - bridge:exploration_qualify(+Request, -Reply)
   - bridge:exploration_checkpoint(+Request, -Reply)
   - bridge:exploration_end(+Request, -Reply)
+  - bridge:oracle_sample(+Request, -Reply), bridge:oracle_simulate(+Request, -Reply):
+    sample/4 and simulate/3, the oracle at the Prolog prompt
 
 Requests and replies are JSON text; a reply =|{"error": Text}|= raises
 =|exploration_error(Text)|=.
@@ -475,7 +479,43 @@ write_facts(Out, Settings, Facts) :-
            )).
 
 % ----------------------------------------------------------------------
+% The oracle at the prompt
+
+%!  sample(+Props:list, +N:integer, +Seed:integer, -Rows:list) is det.
+%
+%   Rows are N parameterizations drawn from P(p|Props): lists of 30 numbers
+%   in the vocabulary's parameter order (theory units).
+sample(Props, N, Seed, Rows) :-
+    call_bridge(oracle_sample, _{antecedent:Props, n:N, seed:Seed}, Reply),
+    Rows = Reply.rows.
+
+%!  simulate(+Rows:list, +Options:list, -Scores:list) is det.
+%
+%   Scores are the 9 expectation scores of each row (a list of
+%   Expectation-Score pairs per row; a failed simulation scores nan).
+%   Options: oracle(Name) (default pybullet), store(File), executor(E),
+%   workers(N). Results are kept in the store, and stored ones are not
+%   simulated again.
+simulate(Rows, Options, Scores) :-
+    option(oracle(Oracle), Options, pybullet),
+    option(executor(Executor), Options, local),
+    Request0 = _{rows:Rows, oracle:Oracle, executor:Executor},
+    (   option(store(Store), Options)
+    ->  absolute_file_name(Store, Abs), put_dict(store, Request0, Abs, Request1)
+    ;   Request1 = Request0
+    ),
+    (   option(workers(W), Options) -> put_dict(workers, Request1, W, Request) ; Request = Request1 ),
+    call_bridge(oracle_simulate, Request, Reply),
+    findall(E, expectation(E, _, _), Es),
+    findall(Row, ( member(S, Reply.scores), pairs_keys_values(Row, Es, S) ), Scores).
+
+% ----------------------------------------------------------------------
 % The bridge
+
+:- multifile prolog:message//1.
+
+prolog:message(exploration_error(Text)) -->
+    [ '~w'-[Text] ].
 
 %   call_bridge(+Name, +Request:dict, -Reply:dict): call the foreign
 %   predicate bridge:Name with the request as JSON text.

@@ -94,6 +94,10 @@ def explore(args: argparse.Namespace) -> int:
         result.get("stopped", ""), result.get("stopped", ""))
     print(f"explored {result['explored']} antecedents with {result['simulations']} simulations "
           f"({result['failed']} failed); stopped: {why}")
+    wall, sim = result.get("wall", 0.0), result.get("timings", {}).get("oracle", 0.0)
+    if wall > 0:
+        print(f"time: {wall:.1f} s, simulating {sim:.1f} s, everything else {wall - sim:.1f} s "
+              f"({100 * (wall - sim) / wall:.1f}%)")
     print(f"theory: {result['out']}")
     for key in ("trace", "plot"):
         if key in result:
@@ -114,6 +118,7 @@ def prolog(args: argparse.Namespace) -> int:
         return 0 if ok else 1
     print("Panta Rhei: the theory and the oracle are loaded. Try\n"
           "  ?- explore([oracle(synthetic), max_rules(5), out('/tmp/learned.pl')]).\n"
+          "  ?- sample([pour_to_side], 3, 1, Rows), simulate(Rows, [oracle(synthetic)], Scores).\n"
           "  ?- validity:valid_antecedent([pour_to_side, pour_low]).\n"
           "End with halt. or Ctrl-D.", file=sys.stderr)
     eng.succeeds("prolog")

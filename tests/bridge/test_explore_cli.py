@@ -56,3 +56,16 @@ def test_prolog_command_interactive_prompt(tmp_path):
                        input="X is 6*7, format('answer ~w~n', [X]).\nhalt.\n",
                        capture_output=True, text=True, timeout=120)
     assert "answer 42" in p.stdout
+
+
+def test_prolog_command_samples_and_simulates(tmp_path):
+    goal = (f"sample([pour_to_side, pour_steeply_tilted, pour_low], 3, 1, Rows), length(Rows, 3), "
+            f"simulate(Rows, [oracle(synthetic), executor(inline), store('{tmp_path / 's.sqlite'}')], "
+            f"Scores), forall(member(S, Scores), (memberchk(no_spill-X, S), X < 0.5)), "
+            f"format('spills ~w~n', [3])")
+    r = run_cli("prolog", "-g", goal)
+    assert r.code == 0, r.err
+    assert "spills 3" in r.out
+    bad = run_cli("prolog", "-g", "sample([pour_sideways], 1, 1, _)")
+    assert bad.code == 1
+    assert "unknown proposition 'pour_sideways'" in bad.err
