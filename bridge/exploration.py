@@ -70,23 +70,24 @@ def plot_path(out: Path) -> Path:
 
 
 def open_simulator(oracle: str, executor: str = "local", workers: int | None = None,
-                   store: str | Path | None = None, ray_address: str | None = None) -> Any:
+                   store: str | Path | None = None, ray_address: str | None = None,
+                   oracle_options: dict | None = None) -> Any:
     """The simulator: `simulate(P) -> scores` with NaN rows for failures,
     every result kept in the store and never simulated twice."""
     from pantarhei.oracle.simulator import make_simulator
 
     return make_simulator(oracle, executor=executor, workers=workers, store=str(store),
-                          ray_address=ray_address)
+                          ray_address=ray_address, **(oracle_options or {}))
 
 
-def oracle_identity(name: str) -> tuple[str, dict]:
+def oracle_identity(name: str, options: dict | None = None) -> tuple[str, dict]:
     """The oracle's version and settings (UserError for an unknown name)."""
     from pantarhei.oracle.base import ORACLES, make_oracle
 
     if name not in ORACLES:
         raise UserError(f"unknown oracle '{name}' (choose {' or '.join(ORACLES)})")
     try:
-        o = make_oracle(name)
+        o = make_oracle(name, **(options or {}))
     except ImportError as e:
         raise UserError(f"the {name} oracle cannot be loaded: {e}") from None
     return str(o.version), dict(o.settings())
@@ -165,7 +166,8 @@ def begin(request: dict) -> dict:
     if _session is not None:
         end({"aborted": True})
     oracle = str(request["oracle"])
-    version, oracle_settings = oracle_identity(oracle)
+    oracle_options = dict(request.get("oracle_options") or {})
+    version, oracle_settings = oracle_identity(oracle, oracle_options)
     initial = sorted(str(p) for p in request["initial"])
     course = {"algorithm": ALGORITHM_VERSION, "oracle": oracle, "oracle_version": version,
               "oracle_settings": oracle_settings, "seed": int(request["seed"]),
@@ -195,7 +197,7 @@ def begin(request: dict) -> dict:
     workers = request.get("workers")
     simulator = open_simulator(oracle, str(request.get("executor", "local")),
                                int(workers) if workers not in (None, "") else None,
-                               store_path, request.get("ray_address") or None)
+                               store_path, request.get("ray_address") or None, oracle_options)
     _session = Session(
         settings=dict(request, store=str(store_path)), run=run, store=store,
         simulator=simulator, oracle_version=version,
@@ -528,6 +530,8 @@ class Options:
     workers: int | None = None
     ray_address: str | None = None
     progress: bool = True
+    #: Keyword arguments of the oracle's constructor (JSON values).
+    oracle_options: dict | None = None
 
     def prolog(self) -> str:
         from .prolog import _term
@@ -547,6 +551,8 @@ class Options:
             items.append(f"workers({int(self.workers)})")
         if self.ray_address:
             items.append(f"ray_address({_term(self.ray_address)})")
+        if self.oracle_options:
+            items.append(f"oracle_options({_term(json.dumps(self.oracle_options))})")
         return "[" + ", ".join(items) + "]"
 
 

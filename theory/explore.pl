@@ -74,6 +74,7 @@ default_initial([pour_low, pour_near_rim, pour_steeply_tilted]).
 %     - store(+File): the SQLite store of simulations and state
 %     - resume(+Bool): continue the saved exploration with these settings
 %     - executor(+E), workers(+N), ray_address(+A): where to simulate
+%     - oracle_options(+Dict): arguments of the oracle (a dict or JSON text)
 %     - progress(+Bool): show a progress bar (default true)
 %
 %   @error exploration_error(Text) for bad options or a failing oracle.
@@ -166,7 +167,12 @@ settings(Options, S) :-
            resume:Resume, executor:Executor, progress:Progress, out:Out},
     optional(store, Options, S0, S1),
     optional(workers, Options, S1, S2),
-    optional(ray_address, Options, S2, S).
+    optional(ray_address, Options, S2, S3),
+    (   option(oracle_options(OO), Options)
+    ->  (   is_dict(OO) -> OracleOptions = OO ; atom_json_dict(OO, OracleOptions, []) ),
+        put_dict(oracle_options, S3, OracleOptions, S)
+    ;   S = S3
+    ).
 
 optional(Key, Options, S0, S) :-
     Opt =.. [Key, V],

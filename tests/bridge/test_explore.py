@@ -159,3 +159,20 @@ def test_bad_options_are_user_errors(tmp_path):
     with pytest.raises(UserError, match="invalid"):
         run(tmp_path, initial=["pour_low", "pour_high"])
     assert not (tmp_path / "t.pl").exists()
+
+
+def test_failed_simulations_are_left_out_and_counted(tmp_path):
+    """With an oracle whose simulations really crash (a segfault in the
+    worker) for some particle counts, the exploration goes on, leaves the
+    failed ones out of weights and fits, and says how many failed."""
+    crash = list(range(10, 40))            # about a sixth of the prior's counts
+    r = exploration.explore(Options(
+        oracle="faulty", oracle_options={"crash": crash}, max_rules=2, samples=16,
+        out=tmp_path / "f.pl", store=tmp_path / "f.sqlite", progress=False,
+        executor="local", workers=2, initial=["pour_low"]))
+    assert r["explored"] == 2 and 0 < r["failed"] < r["simulations"]
+    f = read_facts([Path(r["out"])])
+    settings = dict(f["setting"])
+    assert settings["failed_simulations"] == r["failed"]
+    used = {v for rid, k, v in f["provenance"] if k == "simulations"}
+    assert max(used) <= r["simulations"] - r["failed"]
