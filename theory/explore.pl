@@ -81,13 +81,13 @@ default_initial([pour_low, pour_near_rim, pour_steeply_tilted]).
 explore(Options) :-
     settings(Options, Settings),
     call_bridge(exploration_begin, Settings, Begun),
-    explore_loop(Settings, Begun).
+    catch(explore_loop(Settings, Begun), E,
+          ( catch(call_bridge(exploration_end, _{aborted:true}, _), _, true),
+            throw(E) )).
 
 explore_loop(Settings, Begun) :-
     initial_state(Begun, Settings, S0),
-    catch(loop(S0, Settings, S, Stop), E,
-          ( catch(call_bridge(exploration_end, _{aborted:true}, _), _, true),
-            throw(E) )),
+    loop(S0, Settings, S, Stop),
     S = st(_, Explored, ANew),
     length(ANew, Left),
     learned(Explored, Settings, Stop, Left, Facts),
@@ -106,21 +106,14 @@ explore_result(Options, Result) :-
 
 error_result(exploration_error(Text), error(Text)) :- !.
 error_result(E, error(Text)) :-
-    message_to_codes(E, Codes),
-    string_codes(Text, Codes).
-
-message_to_codes(E, Codes) :-
-    (   catch(message_to_codes(E, [], Codes0), _, fail)
-    ->  Codes = Codes0
-    ;   format(codes(Codes), "~q", [E])
+    (   catch(message_lines(E, Lines), _, fail)
+    ->  with_output_to(string(Text0), print_message_lines(current_output, '', Lines)),
+        split_string(Text0, "\n", " ", [Text|_])
+    ;   format(string(Text), "~q", [E])
     ).
 
-message_to_codes(E, _, Codes) :-
-    message_to_lines(E, Lines),
-    with_output_to(codes(Codes), print_message_lines(current_output, '', Lines)).
-
-message_to_lines(E, Lines) :-
-    translate_message(E, Lines, []).
+message_lines(E, Lines) :-
+    '$messages':translate_message(E, Lines, []).
 
 % ----------------------------------------------------------------------
 % Settings
