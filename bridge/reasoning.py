@@ -89,7 +89,7 @@ def prolog_load(theory: Theory):
         try:
             with os.fdopen(fd, "w") as f:
                 f.write(text)
-            r = e.once("catch((defeasible:load_theory(F), R = ok), E, "
+            r = prolog_once(e, "catch((defeasible:load_theory(F), R = ok), E, "
                        "(catch(theory_files:theory_error_message(E, M), _, fail) -> R = M "
                        "; message_to_codes(E, R)))", F=name)
         finally:
@@ -104,10 +104,48 @@ def prolog_conclusions(theory: Theory, semantics: Semantics = Semantics()) -> di
     e = prolog_load(theory)
     out = {}
     for tag in TAGS:
-        r = e.once(f"findall(S, (defeasible:conclusion({semantics.prolog()}, T, L), "
+        r = prolog_once(e, f"findall(S, (defeasible:conclusion({semantics.prolog()}, T, L), "
                    "format(string(S), '~q', [L])), Ss)", T=tag)
         out[tag] = sorted(_text(s) for s in r["Ss"])
     return out
+
+
+def prolog_conclusions_batch(jobs: list[tuple[Theory, Semantics]]) -> list[dict[str, list[str]]]:
+    """The conclusions of many theories, computed by one `swipl` process
+    (for many theories at once, a separate process keeps the host's engine
+    out of the way)."""
+    import shutil
+    import subprocess
+
+    swipl = shutil.which("swipl")
+    if swipl is None:
+        from .errors import SWIPL_MISSING
+
+        raise UserError(SWIPL_MISSING)
+    with tempfile.TemporaryDirectory(prefix="pantarhei-batch-") as tmp:
+        goals = [f":- use_module({_quote(str(THEORY_DIR / 'defeasible'))})."]
+        for i, (theory, sem) in enumerate(jobs):
+            f = Path(tmp) / f"t{i}.pl"
+            f.write_text(theory.native())
+            goals.append(f"job({i}, {_quote(str(f))}, {sem.prolog()}).")
+        goals.append("main :- forall(job(I, F, S), (load_theory(F), "
+                     "forall((member(T, ['+D', '-D', '+d', '-d']), conclusion(S, T, L)), "
+                     "format('~w\\t~w\\t~q~n', [I, T, L])))).")
+        script = Path(tmp) / "batch.pl"
+        script.write_text("\n".join(goals) + "\n")
+        p = subprocess.run([swipl, "-q", "-g", "main", "-t", "halt", str(script)],
+                           capture_output=True, text=True)
+        if p.returncode != 0:
+            raise RuntimeError(f"swipl failed: {p.stderr.strip()}")
+    out: list[dict[str, list[str]]] = [{t: [] for t in TAGS} for _ in jobs]
+    for line in p.stdout.splitlines():
+        i, tag, lit = line.split("\t")
+        out[int(i)][tag].append(lit)
+    return [{t: sorted(v) for t, v in d.items()} for d in out]
+
+
+def _quote(s: str) -> str:
+    return "'" + s.replace("\\", "\\\\").replace("'", "\\'") + "'"
 
 
 # -- ASP --------------------------------------------------------------------
@@ -140,6 +178,15 @@ def conclusions(theory: Theory, semantics: Semantics = Semantics(),
     if engine == "asp":
         return asp_conclusions(theory, semantics)
     raise UserError(f"unknown engine '{engine}' (choose prolog or asp)")
+
+
+def prolog_once(e, goal: str, **bindings) -> dict:
+    """The first solution of a deterministic goal, with the query closed
+    before returning (a query left open while others run corrupts pyswip)."""
+    solutions = list(e.query(goal, **bindings))
+    if not solutions:
+        raise RuntimeError(f"goal failed: {goal}")
+    return solutions[0]
 
 
 def _text(value) -> str:

@@ -56,11 +56,31 @@ theory/defeasible.lp computes the same conclusions with clingo.
 :- use_module(library(ordsets)).
 :- use_module(library(apply)).
 
+% SWI-Prolog 9.0 can reclaim an atom that a table's trie still holds
+% (pl-trie.c: unify_key assertion) when theories are loaded over and over;
+% theories have few atoms, so keep them.
+:- set_prolog_flag(agc_margin, 0).
+
 :- dynamic fact/1, rule/3, body/2, sup/2, learned/1,
-   scene_fact/1, rule_body/2, superior/2, theory_literal/1, loaded/0.
+   scene_fact/1, rule_body/2, superior/2, theory_literal/1, loaded/0,
+   generation/1.
+
+% Tables are keyed by a generation number that changes with the theory
+% (and with the facts of a scene), instead of being abolished: abolishing
+% tables between queries from a host language proved fragile in
+% SWI-Prolog 9.0. Old generations are dropped when many have piled up.
+generation(0).
+
+next_generation :-
+    retract(generation(G0)), G is G0 + 1, assertz(generation(G)),
+    (   G mod 200 =:= 0 -> abolish_all_tables ; true ).
+
+internal(sem(A, T, W), sem(A, T, W, G)) :- !, generation(G).
+internal(S, S).
 
 :- table definitely/2, defeasibly/2, supported/2, overruled/2,
-   overruled_by/3, defeated/3, support_beaten/3, nott/1.
+   overruled_by/3, defeated/3, support_beaten/3,
+   not_definitely/2, not_defeasibly/2, not_supported/2.
 
                  /*******************************
                  *        LOADING A THEORY      *
@@ -116,7 +136,7 @@ clear_theory :-
     retractall(sup(_, _)), retractall(learned(_)), retractall(scene_fact(_)),
     retractall(rule_body(_, _)), retractall(superior(_, _)),
     retractall(theory_literal(_)), retractall(loaded),
-    abolish_all_tables.
+    next_generation.
 
 %!  add_theory_fact(+Fact) is det.
 %
@@ -146,7 +166,7 @@ prepare :-
     forall(distinct(R-S, derived_superior(R, S)), assertz(superior(R, S))),
     findall(L, mentioned(L), Ls0), sort(Ls0, Ls),
     forall(member(L, Ls), assertz(theory_literal(L))),
-    abolish_all_tables,
+    next_generation,
     assertz(loaded).
 
 derived_superior(R, S) :- sup(R, S).
@@ -176,9 +196,9 @@ complement(L, C) :-
 with_scene(Facts, Goal) :-
     theory_loaded,
     setup_call_cleanup(
-        ( forall(member(F, Facts), assertz(scene_fact(F))), abolish_all_tables ),
+        ( forall(member(F, Facts), assertz(scene_fact(F))), next_generation ),
         once(Goal),
-        ( retractall(scene_fact(_)), abolish_all_tables )).
+        ( retractall(scene_fact(_)), next_generation )).
 
 given(X) :- fact(X).
 given(X) :- scene_fact(X).
@@ -206,10 +226,16 @@ option_value(Opt, Options, Default, Allowed) :-
 
 % pos(+Sem, +Goal): a positive dependency on a tabled meta atom. Under the
 % Kunen variant it goes through two tabled negations.
-pos(sem(_, _, true), G) :- call(G).
-pos(sem(_, _, false), G) :- tnot(nott(G)).
+pos(sem(_, _, true, _), G) :- call(G).
+pos(sem(_, _, false, _), G) :- G =.. [P, S, X], not_(P, S, X).
 
-nott(G) :- tnot(G).
+not_(definitely, S, X) :- tnot(not_definitely(S, X)).
+not_(defeasibly, S, X) :- tnot(not_defeasibly(S, X)).
+not_(supported, S, X) :- tnot(not_supported(S, X)).
+
+not_definitely(S, X) :- tnot(definitely(S, X)).
+not_defeasibly(S, X) :- tnot(defeasibly(S, X)).
+not_supported(S, X) :- tnot(supported(S, X)).
 
 all_pos([], _, _).
 all_pos([B|Bs], S, P) :-
@@ -235,13 +261,13 @@ defeasibly(S, X) :-
     tnot(definitely(S, NX)),
     not_overruled(S, R, X).
 
-not_overruled(S, _, X) :- S = sem(_, true, _), tnot(overruled(S, X)).
-not_overruled(S, R, X) :- S = sem(_, false, _), tnot(overruled_by(S, R, X)).
+not_overruled(S, _, X) :- S = sem(_, true, _, _), tnot(overruled(S, X)).
+not_overruled(S, R, X) :- S = sem(_, false, _, _), tnot(overruled_by(S, R, X)).
 
 % an attacker A of X is applicable: its body is provable (ambiguity
 % blocking) or merely supported (ambiguity propagation).
-attacks(S, A) :- S = sem(blocking, _, _), rule_body(A, Bs), all_pos(Bs, S, defeasibly).
-attacks(S, A) :- S = sem(propagation, _, _), rule_body(A, Bs), all_pos(Bs, S, supported).
+attacks(S, A) :- S = sem(blocking, _, _, _), rule_body(A, Bs), all_pos(Bs, S, defeasibly).
+attacks(S, A) :- S = sem(propagation, _, _, _), rule_body(A, Bs), all_pos(Bs, S, supported).
 
 % team defeat: some applicable attacker is not beaten by any applicable
 % rule for X.
@@ -274,9 +300,11 @@ support_beaten(S, R, X) :-
 %!  truth(+Sem, +Goal, -Value) is det.
 %
 %   Value is =true=, =false= or =undefined=: the well-founded value of
-%   a meta atom Goal (definitely(Sem, L), defeasibly(Sem, L), ...).
-truth(_, G, V) :-
+%   a meta atom Goal (definitely(Sem, L), defeasibly(Sem, L), ...) of the
+%   current theory.
+truth(_, G0, V) :-
     theory_loaded,
+    G0 =.. [P, S0|Args], internal(S0, S), G =.. [P, S|Args],
     (   call_delays(G, D)
     ->  ( D == true -> V = true ; V = undefined )
     ;   V = false
