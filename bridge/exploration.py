@@ -109,6 +109,7 @@ class Session:
     trace: list[dict]
     pending: dict[int, tuple[np.ndarray, np.ndarray]] = field(default_factory=dict)
     log_dens: dict[str, np.ndarray] = field(default_factory=dict)
+    plane_cache: dict[str, tuple[np.ndarray, Planes | None]] = field(default_factory=dict)
     started: float = field(default_factory=time.monotonic)
     bar: Any = None
     timings: dict[str, float] = field(default_factory=dict)
@@ -129,6 +130,20 @@ class Session:
             have = np.concatenate([have, log_density(self.params[len(have):], props)])
         self.log_dens[aid] = have
         return have
+
+    def planes_of(self, aid: str, X: np.ndarray, S: np.ndarray, w: np.ndarray) -> Planes | None:
+        """The antecedent's planes, fitted again only when its weights
+        changed: an antecedent whose support holds none of the new
+        simulations, and none that a new antecedent shares, keeps its planes."""
+        cached = self.plane_cache.get(aid)
+        if cached is not None:
+            w0, planes = cached
+            k = len(w0)
+            if k <= len(w) and np.array_equal(w0, w[:k]) and not w[k:].any():
+                return planes
+        planes = plane_fit(X, S, w, float(self.settings.get("ridge", 0.0)))
+        self.plane_cache[aid] = (w.copy(), planes)
+        return planes
 
     def weight_matrix(self, entries: Sequence[dict]) -> np.ndarray:
         """Equation (1) for the explored antecedents over the simulations
@@ -246,8 +261,8 @@ def best_plane(request: dict) -> dict:
     X = normalise(s.params[valid])
     S = s.scores[valid]
     best: tuple[float, int, int, Planes, np.ndarray] | None = None
-    for i, _ in enumerate(entries):
-        planes = plane_fit(X, S, W[i], float(s.settings.get("ridge", 0.0)))
+    for i, e in enumerate(entries):
+        planes = s.planes_of(str(e["id"]), X, S, W[i])
         if planes is None:
             continue
         slope = best_abs_slope(planes)

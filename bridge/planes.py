@@ -17,6 +17,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from sklearn import config_context
 from sklearn.linear_model import LinearRegression, Ridge
 
 #: Simulations with a weight below this take no part in a fit.
@@ -52,7 +53,8 @@ def plane_fit(X: np.ndarray, S: np.ndarray, w: np.ndarray, ridge: float = 0.0) -
         return None
     X, S, w = X[keep], S[keep], w[keep]
     model = Ridge(alpha=ridge) if ridge > 0 else LinearRegression()
-    model.fit(X, S, sample_weight=w)
+    with config_context(assume_finite=True):    # checked above: skip sklearn's own checks
+        model.fit(X, S, sample_weight=w)
     mean = (w[:, None] * S).sum(axis=0) / w.sum()
     return Planes(np.asarray(model.intercept_, float), np.atleast_2d(model.coef_).astype(float),
                   int(keep.sum()), float(w.sum()), mean)
