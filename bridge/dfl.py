@@ -80,11 +80,12 @@ def parse_dfl(text: str, source: str = "<dfl>") -> Theory:
     ids = {r.id for r in t.rules} | {r.id for r, _ in schemas}
     for a, b, n in sups:
         for x in (a, b):
-            if x not in ids:
-                raise TheoryFileError(f"{source}:{n}: {a} > {b} names {x}, which is not a rule")
-        for ga in (r.id for r in t.rules if origin[r.id] == a):
-            for gb in (r.id for r in t.rules if origin[r.id] == b):
-                t.sup.append((ga, gb))
+            if not re.fullmatch(r"[a-z][A-Za-z0-9_]*", x):
+                raise TheoryFileError(f"{source}:{n}: a rule label in lower case letters, digits and _, not '{x}'")
+        # a label not defined here may name a rule of another file (merge)
+        left = [r.id for r in t.rules if origin[r.id] == a] or ([] if a in ids else [a])
+        right = [r.id for r in t.rules if origin[r.id] == b] or ([] if b in ids else [b])
+        t.sup.extend((x, y) for x in left for y in right)
     seen: dict[str, int] = {}
     for r, n in schemas:
         if r.id in seen:

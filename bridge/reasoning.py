@@ -17,7 +17,7 @@ from pantarhei.theory import THEORY_DIR, TheoryFileError
 
 from .dfl import is_dfl, read_dfl
 from .errors import UserError
-from .theories import Theory, read_native
+from .theories import Theory, merge, read_native
 
 TAGS = ("+D", "-D", "+d", "-d")
 ENGINES = ("prolog", "asp")
@@ -60,15 +60,24 @@ def read_theory(path: Path | str) -> Theory:
         raise UserError(str(e)) from None
 
 
-def load(path: Path | str | None = None) -> Theory:
-    """The theory at `path`, or the shipped learned theory."""
-    if path is None:
+def load(paths: Path | str | list | tuple | None = None) -> Theory:
+    """The theory of one or more files (merged: a learned theory and rules
+    added by hand), or the shipped learned theory when none is given."""
+    if paths is None or (isinstance(paths, (list, tuple)) and not paths):
         if not DEFAULT_THEORY.is_file():
             raise UserError(NO_THEORY)
-        path = DEFAULT_THEORY
-    if not Path(path).is_file():
-        raise UserError(f"{path}: no such theory file")
-    return read_theory(path)
+        paths = [DEFAULT_THEORY]
+    if not isinstance(paths, (list, tuple)):
+        paths = [paths]
+    for p in paths:
+        if not Path(p).is_file():
+            raise UserError(f"{p}: no such theory file")
+    try:
+        theory = merge([read_theory(p) for p in paths])
+        theory.check_superiority()
+    except TheoryFileError as e:
+        raise UserError(str(e)) from None
+    return theory
 
 
 # -- Prolog -----------------------------------------------------------------
@@ -158,7 +167,7 @@ def asp_conclusions(theory: Theory, semantics: Semantics = Semantics(),
     text = theory.native()
     while True:
         consts = {**semantics.asp_constants(), "steps": str(steps)}
-        (model,) = solve(["defeasible.lp"], text, files=(),
+        (model,) = solve(["defeasible.lp", "conclusions.lp"], text, files=(),
                          args=[f"-c{k}={v}" for k, v in consts.items()])
         if not any(s.name == "changed" for s in model):
             break
@@ -193,3 +202,49 @@ def _text(value) -> str:
     from .prolog import text
 
     return text(value)
+
+
+# -- Questions about pouring --------------------------------------------------
+
+@dataclass(frozen=True)
+class Outcome:
+    """What the theory says about one expectation in a scene."""
+    expectation: str
+    value: str          # "holds", "fails" or "unknown"
+    rule: str           # the deciding rule, "fact", or "none"
+    reason: str         # in words
+
+
+def _prolog_list(items) -> str:
+    return "[" + ", ".join(items) + "]"
+
+
+def what_happens(theory: Theory, props: list[str],
+                 semantics: Semantics = Semantics()) -> list[Outcome]:
+    """The prediction for a scene: one Outcome per expectation, with reasons."""
+    e = prolog_load(theory)
+    e.use_module("queries")
+    scene = _prolog_list(props)
+    sem = f"[ambiguity({semantics.ambiguity}), team_defeat({str(semantics.team_defeat).lower()}), " \
+          f"well_founded({str(semantics.well_founded).lower()})]"
+    goal = (f"queries:what_happens({scene}, {sem}, Os), "
+            f"findall(S, (member(outcome(E, V, R), Os), "
+            f"(V == fails -> L = neg(E) ; L = E), queries:explain({scene}, L, {sem}, T), "
+            f"format(string(S), '~w\\t~w\\t~w\\t~s', [E, V, R, T])), Ss)")
+    r = prolog_once(e, goal)
+    out = []
+    for line in r["Ss"]:
+        exp, value, rule, reason = _text(line).split("\t", 3)
+        out.append(Outcome(exp, value, rule, reason))
+    return out
+
+
+def explain(theory: Theory, props: list[str], literal: str,
+            semantics: Semantics = Semantics()) -> str:
+    """Why (or why not) the theory concludes `literal` in the scene, in words."""
+    e = prolog_load(theory)
+    e.use_module("queries")
+    sem = f"[ambiguity({semantics.ambiguity}), team_defeat({str(semantics.team_defeat).lower()}), " \
+          f"well_founded({str(semantics.well_founded).lower()})]"
+    r = prolog_once(e, f"queries:explain({_prolog_list(props)}, {literal}, {sem}, T)")
+    return _text(r["T"])

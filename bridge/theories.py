@@ -89,6 +89,11 @@ class Theory:
                 _check_literal(lit, where)
         for f in self.facts:
             _check_literal(f, _line(text, rf"fact\(\s*{re.escape(f)}", self.source))
+
+    def check_superiority(self) -> None:
+        """Raise TheoryFileError if sup/2 names a rule that does not exist."""
+        text = _text_of(self.source)
+        ids = {r.id for r in self.rules}
         for a, b in self.sup:
             for x in (a, b):
                 if x not in ids:
@@ -156,3 +161,25 @@ def read_native(path: Path | str) -> Theory:
     t.learned = {literal_text(x[0]) for x in facts.get("learned", []) if len(x) == 1}
     t.validate()
     return t
+
+
+def merge(theories: list[Theory]) -> Theory:
+    """One theory from several files (a learned theory and rules added by
+    hand); rule names must be distinct, sup/2 may cross files."""
+    if len(theories) == 1:
+        return theories[0]
+    out = Theory(source=" + ".join(t.source for t in theories))
+    owner: dict[str, str] = {}
+    for t in theories:
+        for f in t.facts:
+            if f not in out.facts:
+                out.facts.append(f)
+        for r in t.rules:
+            if r.id in owner:
+                where = _line(_text_of(t.source), rf"{re.escape(r.id)}\b", t.source)
+                raise TheoryFileError(f"{where}: rule {r.id} is already defined in {owner[r.id]}")
+            owner[r.id] = t.source
+            out.rules.append(r)
+        out.sup.extend(t.sup)
+        out.learned |= t.learned
+    return out
