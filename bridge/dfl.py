@@ -120,7 +120,7 @@ def _literal(text: str, where: str, ground: bool = False) -> str:
     if s[:1] in ("-", "¬", "~"):
         negated, s = True, s[1:].strip()
     m = _TERM.match(s.replace(" ", ""))
-    if not m:
+    if not m or re.search(r"[A-Za-z0-9_)]\s+[A-Za-z0-9_(?]", s):
         raise TheoryFileError(f"{where}: expected a literal such as p, -p or bird(tweety), not '{text.strip()}'")
     s = s.replace(" ", "")
     if m.group(1):

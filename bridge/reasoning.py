@@ -25,7 +25,7 @@ ENGINES = ("prolog", "asp")
 DEFAULT_THEORY = THEORY_DIR / "learned" / "pouring.pl"
 NO_THEORY = (f"no learned theory yet ({DEFAULT_THEORY} does not exist): run the exploration "
              f"(`pantarhei explore`) to learn one, or give a theory file with --theory FILE "
-             f"(native facts or .dfl, e.g. examples/extend_by_hand/pouring.pl)")
+             f"(native facts or .dfl, e.g. examples/extend_by_hand/learned.pl)")
 
 
 @dataclass(frozen=True)

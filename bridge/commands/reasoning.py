@@ -1,0 +1,179 @@
+"""`pantarhei ask`, `plan`, `conclusions`: questions to a defeasible theory."""
+from __future__ import annotations
+
+import argparse
+import json
+
+from .. import reasoning
+from ..dfl import dfl_literal
+from ..errors import UserError
+from ..validity import known, require_valid
+
+THEORY_HELP = ("theory file, native facts or .dfl (repeat to add hand-written rules to a learned "
+               "theory; default: the shipped learned theory theory/learned/pouring.pl)")
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("ask", help="what happens when pouring like this? (Prolog)")
+    p.add_argument("question", nargs="?", help='the scene in words, e.g. "pour from the side"')
+    p.add_argument("--props", help="the scene as propositions P1,P2 (instead of words)")
+    p.add_argument("--theory", action="append", metavar="FILE", help=THEORY_HELP)
+    p.add_argument("--json", action="store_true", help="print JSON")
+    p.set_defaults(run=ask)
+
+    p = sub.add_parser("plan", help="how to pour to reach a goal? (clingo)")
+    p.add_argument("--goal", required=True,
+                   help="goal literals G1,G2: expectations, negated as neg(E) or -E")
+    p.add_argument("--given", default="", help="context propositions P1,P2 (liquid, amount, bowls...)")
+    p.add_argument("--theory", action="append", metavar="FILE", help=THEORY_HELP)
+    p.add_argument("--alternatives", type=int, default=4, metavar="K",
+                   help="list up to K plans after the best (default 4)")
+    p.add_argument("--verify", type=int, default=0, metavar="N",
+                   help="sample each plan N times, simulate, and report how often the goals were met")
+    p.add_argument("--seed", type=int, default=0, help="seed for --verify (default 0)")
+    p.add_argument("--json", action="store_true", help="print JSON")
+    p.set_defaults(run=plan)
+
+    p = sub.add_parser("conclusions", help="all conclusions (+D, -D, +d, -d) of a theory file")
+    p.add_argument("file", nargs="+", metavar="FILE", help="theory file(s), native facts or .dfl")
+    p.add_argument("--ambiguity", choices=("blocking", "propagation"), default="blocking")
+    p.add_argument("--no-team-defeat", action="store_true", help="a single rule must beat every attacker")
+    p.add_argument("--no-well-founded", action="store_true",
+                   help="Kunen semantics: literals whose proofs loop stay undecided")
+    p.add_argument("--engine", choices=reasoning.ENGINES, default="prolog")
+    p.add_argument("--json", action="store_true", help="print JSON")
+    p.set_defaults(run=conclusions)
+
+
+def _split(text: str | None) -> list[str]:
+    return [x.strip() for x in (text or "").split(",") if x.strip()]
+
+
+# -- ask ----------------------------------------------------------------------
+
+def ask(args: argparse.Namespace) -> int:
+    if args.props is not None and args.question:
+        raise UserError("give the scene in words or with --props, not both")
+    if args.props is not None:
+        props = known(_split(args.props))
+        if not props:
+            raise UserError("--props: no propositions given (see `pantarhei vocab`)")
+    elif args.question:
+        from ..understanding import understand
+
+        props = understand(args.question)
+        if not props:
+            raise UserError(f"understood none of \"{args.question}\": describe the scene with the "
+                            f"words of `pantarhei vocab`, or give --props P1,P2")
+    else:
+        raise UserError("give a scene: a question in words, or --props P1,P2")
+    props = require_valid(props)
+    theory = reasoning.load(args.theory)
+    outcomes = reasoning.what_happens(theory, props)
+    if args.json:
+        print(json.dumps({"understood": props,
+                          "outcomes": {o.expectation: o.value for o in outcomes},
+                          "reasons": {o.expectation: {"rule": o.rule, "why": o.reason}
+                                      for o in outcomes}}, indent=1))
+        return 0
+    from pantarhei.oracle.vocabulary import load_vocabulary
+
+    vocab = load_vocabulary()
+    print(f"understood: {', '.join(props)}")
+    for p in props:
+        print(f"  {p}: {vocab.propositions[p].gloss}")
+    print(f"theory: {theory.source}")
+    glosses = {e.name: e.gloss for e in vocab.expectations}
+    for o in outcomes:
+        mark = {"holds": "yes", "fails": "no ", "unknown": " ? "}[o.value]
+        print(f"  [{mark}] {o.expectation:30} {glosses[o.expectation]}")
+        if o.value != "unknown":
+            print(f"        because {o.reason}")
+    return 0
+
+
+# -- plan ---------------------------------------------------------------------
+
+def plan(args: argparse.Namespace) -> int:
+    from ..planning import plan as make_plans
+
+    goals = _split(args.goal)
+    if not goals:
+        raise UserError("--goal: give at least one goal literal")
+    if args.alternatives < 0 or args.verify < 0:
+        raise UserError("--alternatives and --verify take a number >= 0")
+    given = known(_split(args.given))
+    theory = reasoning.load(args.theory)
+    plans = make_plans(theory, goals, given, args.alternatives)
+    verified = [_verify(p.antecedent, args.goal, args.verify, args.seed + i)
+                for i, p in enumerate(plans)] if args.verify else [None] * len(plans)
+    from ..planning import check_goals
+
+    goal_lits = check_goals(goals, theory)
+    if args.json:
+        print(json.dumps({"goals": goal_lits, "given": given,
+                          "plans": [{"chosen": list(p.chosen), "antecedent": list(p.antecedent),
+                                     **({"verified": v} if v is not None else {})}
+                                    for p, v in zip(plans, verified)]}, indent=1))
+        return 0
+    from pantarhei.oracle.vocabulary import load_vocabulary
+
+    vocab = load_vocabulary()
+    print(f"goals: {', '.join(goal_lits)}" + (f"  given: {', '.join(given)}" if given else ""))
+    for i, (p, v) in enumerate(zip(plans, verified)):
+        title = "best plan" if i == 0 else f"alternative {i}"
+        n = len(p.chosen)
+        print(f"{title} ({n} proposition{'s' if n != 1 else ''}):")
+        if not p.chosen:
+            print("  nothing to choose: the given context already reaches the goals")
+        for c in p.chosen:
+            print(f"  {c:26} {vocab.propositions[c].gloss}")
+        if v is not None:
+            print(f"  verified: goals met in {v['met']} of {v['simulated']} simulations "
+                  f"({v['rate']:.0%})" + (f", {v['failed']} failed" if v["failed"] else ""))
+    return 0
+
+
+def _verify(antecedent: tuple[str, ...], goal_text: str, n: int, seed: int) -> dict:
+    """Sample the antecedent n times, simulate, count the runs that met every goal."""
+    try:
+        from pantarhei.oracle.simulator import make_simulator
+    except ImportError:
+        raise UserError("--verify needs the simulator (pantarhei.oracle.simulator), "
+                        "which is not installed") from None
+    import numpy as np
+
+    from pantarhei.oracle.generative import sample
+    from pantarhei.oracle.vocabulary import load_vocabulary
+
+    from ..planning import parse_goal
+
+    names = load_vocabulary().expectation_names
+    params = sample(list(antecedent), n, seed)
+    scores = np.asarray(make_simulator("pybullet").simulate(params), dtype=float)
+    ok = ~np.isnan(scores).any(axis=1)
+    met = ok.copy()
+    for g in _split(goal_text):
+        lit = parse_goal(g)
+        negated = lit.startswith("neg(")
+        col = names.index(lit[4:-1] if negated else lit)
+        met &= (scores[:, col] < 0.5) if negated else (scores[:, col] >= 0.5)
+    simulated = int(ok.sum())
+    return {"simulated": simulated, "met": int(met.sum()), "failed": int(n - simulated),
+            "rate": float(met.sum() / simulated) if simulated else 0.0}
+
+
+# -- conclusions --------------------------------------------------------------
+
+def conclusions(args: argparse.Namespace) -> int:
+    theory = reasoning.load(args.file)
+    sem = reasoning.Semantics(args.ambiguity, not args.no_team_defeat, not args.no_well_founded)
+    result = reasoning.conclusions(theory, sem, args.engine)
+    dfl = {tag: [dfl_literal(x) for x in lits] for tag, lits in result.items()}
+    if args.json:
+        print(json.dumps(dfl, indent=1))
+        return 0
+    for tag in reasoning.TAGS:
+        for lit in dfl[tag]:
+            print(f"{tag} {lit}")
+    return 0

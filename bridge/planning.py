@@ -1,0 +1,118 @@
+"""Plan a pour: manners that make the theory conclude the goals (clingo).
+
+theory/plan.lp chooses manner propositions (poses, tilts, speeds) that,
+with the given context, form a valid antecedent from which the theory
+defeasibly concludes every goal literal. Plans come cheapest first (fewest
+chosen propositions); each further plan is the cheapest one that does not
+merely add propositions to a plan already found.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from pantarhei.oracle.vocabulary import load_vocabulary
+from pantarhei.theory import THEORY_DIR, VOCABULARY_FILES
+
+from .errors import UserError
+from .theories import Theory, complement
+from .validity import require_valid
+
+ENCODINGS = ("defeasible.lp", "validity.lp", "valid.lp", "plan.lp")
+MAX_STEPS = 64
+
+
+@dataclass(frozen=True)
+class Plan:
+    chosen: tuple[str, ...]      # the manner propositions the plan adds
+    antecedent: tuple[str, ...]  # given + chosen, sorted
+
+
+def parse_goal(goal: str) -> str:
+    """`spill`, `-spill`, `neg(spill)`, `not spill` -> native literal text."""
+    g = goal.strip()
+    for prefix in ("-", "~", "not "):
+        if g.startswith(prefix):
+            return f"neg({g[len(prefix):].strip()})"
+    return g
+
+
+def check_goals(goals: list[str], theory: Theory) -> list[str]:
+    """The goal literals; UserError for an unknown expectation, or for a
+    goal literal that no rule of the theory can conclude."""
+    vocab = load_vocabulary()
+    known = vocab.expectation_names
+    out = []
+    for g in goals:
+        lit = parse_goal(g)
+        name = complement(lit) if lit.startswith("neg(") else lit
+        if name not in known:
+            import difflib
+
+            close = difflib.get_close_matches(name, known, n=3, cutoff=0.5)
+            hint = f" (did you mean {', '.join(close)}?)" if close else ""
+            raise UserError(f"unknown expectation '{name}' in goal '{g}'{hint}")
+        if lit not in theory.facts and not any(r.head == lit and r.kind != "defeater"
+                                               for r in theory.rules):
+            raise UserError(f"unreachable goal: no rule of {theory.source} concludes {lit}")
+        out.append(lit)
+    return out
+
+
+def plan(theory: Theory, goals: list[str], given: list[str] = (), alternatives: int = 5) -> list[Plan]:
+    """Plans for the goals, cheapest first (at most 1 + alternatives).
+    UserError if no valid choice of manners reaches them, naming the goal."""
+    goals = check_goals(list(goals), theory)
+    given = require_valid(given) if given else []
+    plans = _solve(theory, goals, given, 1 + alternatives)
+    if plans:
+        return plans
+    for g in goals:    # which goal cannot be reached even alone?
+        if not _solve(theory, [g], given, 1):
+            ctx = f" given {', '.join(given)}" if given else ""
+            raise UserError(f"unreachable goal: no valid choice of manners makes the theory "
+                            f"conclude {g}{ctx}")
+    ctx = f" given {', '.join(given)}" if given else ""
+    raise UserError(f"unreachable goals: each of {', '.join(goals)} can be reached, but no valid "
+                    f"choice of manners reaches them together{ctx}")
+
+
+def _solve(theory: Theory, goals: list[str], given: list[str], count: int,
+           steps: int = 4) -> list[Plan]:
+    """Up to `count` plans; the alternation steps double until the models
+    found have converged (more steps only make more goals provable)."""
+    import clingo
+
+    while True:
+        ctl = clingo.Control(["--warn=none", f"-csteps={steps}", "--opt-mode=opt"])
+        for f in VOCABULARY_FILES:
+            ctl.load(str(f))
+        for e in ENCODINGS:
+            ctl.load(str(THEORY_DIR / e))
+        facts = theory.native() + "".join(f"goal({g})." for g in goals) \
+            + "".join(f"context({p})." for p in given)
+        ctl.add("base", [], facts)
+        ctl.ground([("base", [])])
+        plans: list[Plan] = []
+        unconverged = False
+        for i in range(count):
+            best: list | None = None
+            with ctl.solve(yield_=True) as handle:
+                for model in handle:
+                    best = list(model.symbols(shown=True))
+            if best is None:
+                break
+            if any(s.name == "changed" for s in best):
+                unconverged = True
+                break
+            chosen = tuple(sorted(str(s.arguments[0]) for s in best if s.name == "chosen"))
+            antecedent = tuple(sorted(str(s.arguments[0]) for s in best if s.name == "in"))
+            plans.append(Plan(chosen, antecedent))
+            # next: no plan that only adds to this one
+            name = f"forbid{i}"
+            body = ", ".join(f"chosen({p})" for p in chosen)
+            ctl.add(name, [], f":- {body}." if chosen else ":- #true.")
+            ctl.ground([(name, [])])
+        if (unconverged or not plans) and steps < MAX_STEPS:
+            steps *= 2
+            continue
+        return plans
