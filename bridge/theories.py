@@ -97,7 +97,8 @@ class Theory:
         for a, b in self.sup:
             for x in (a, b):
                 if x not in ids:
-                    where = _line(text, rf"sup\(\s*{re.escape(a)}\s*,\s*{re.escape(b)}", self.source)
+                    where = _line(text, rf"sup\(\s*{re.escape(a)}\s*,\s*{re.escape(b)}\b"
+                                        rf"|\b{re.escape(a)}\s*>\s*{re.escape(b)}\b", self.source)
                     raise TheoryFileError(f"{where}: sup({a}, {b}) names {x}, which is not a rule")
 
 

@@ -150,14 +150,15 @@ def _verify(antecedent: tuple[str, ...], goal_text: str, n: int, seed: int) -> d
 
     names = load_vocabulary().expectation_names
     params = sample(list(antecedent), n, seed)
-    scores = np.asarray(make_simulator("pybullet").simulate(params), dtype=float)
+    with make_simulator("pybullet") as sim:
+        scores = np.asarray(sim.simulate(params), dtype=float)
     ok = ~np.isnan(scores).any(axis=1)
     met = ok.copy()
     for g in _split(goal_text):
         lit = parse_goal(g)
         negated = lit.startswith("neg(")
         col = names.index(lit[4:-1] if negated else lit)
-        met &= (scores[:, col] < 0.5) if negated else (scores[:, col] >= 0.5)
+        met &= (scores[:, col] <= 0.5) if negated else (scores[:, col] > 0.5)
     simulated = int(ok.sum())
     return {"simulated": simulated, "met": int(met.sum()), "failed": int(n - simulated),
             "rate": float(met.sum() / simulated) if simulated else 0.0}
