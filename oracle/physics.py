@@ -368,7 +368,7 @@ TIMING_FIELDS = ("step_seconds", "seconds")
 class PouringOracle(Oracle):
     """Scores a parameterization by simulating the pour in PyBullet."""
     name = "pybullet"
-    version = "1"
+    version = "2"
 
     def __init__(self, fidelity: str | Fidelity = "chosen", **overrides: Any):
         if isinstance(fidelity, str):

@@ -15,6 +15,9 @@ one half. The record (see `physics.PouringOracle`) holds what was observed:
 * ``fractions``: of the particles, those in the source, in the destination
   and elsewhere at the end, and ``entered_destination``: those that were
   inside the destination at some time.
+
+The scores are continuous in what was observed: no score jumps when one
+particle more or less ends up somewhere.
 """
 from __future__ import annotations
 
@@ -30,6 +33,10 @@ STILL_DEG = 20.0
 UPRIGHT_DEG = 45.0
 #: A gap this wide (mm) between source and destination scores 1 for source_clear.
 CLEAR_MM = 10.0
+#: Of the liquid that entered the destination, the share that left it again
+#: is taken relative to at least this fraction of all the liquid (so that the
+#: score does not jump when a particle or two enter and leave).
+REMAINS_FLOOR = 0.1
 #: A contact impulse that would change the destination's speed by this much
 #: (m/s) scores 0 for source_clear.
 BUMP_SPEED = 0.1
@@ -58,7 +65,8 @@ def scores(record: Mapping[str, Any]) -> np.ndarray:
     """The 9 scores, in the vocabulary's expectation order."""
     f = record["fractions"]
     entered = f["entered_destination"]
-    remains = f["destination"] / entered if entered > 0 else 0.0
+    left = max(0.0, entered - f["destination"])
+    remains = 1.0 - left / max(entered, REMAINS_FLOOR)
     out = [still(record["displacement_mm"][s], record["tilt_deg"][s]) for s in STAGES]
     out += [
         1.0 - _clip(record["final_tilt_deg"] / UPRIGHT_DEG),
@@ -86,7 +94,8 @@ EXPLANATIONS = {
     "liquid_leaves_source": "the fraction of the particles that are out of the source at the end.",
     "liquid_enters_destination": "the fraction of the particles that were inside the destination "
                                  "at some time.",
-    "liquid_remains_in_destination": "the fraction of those that entered the destination that are "
-                                     "still in it at the end (0 if none entered).",
+    "liquid_remains_in_destination": "1 minus the fraction of the particles that entered the "
+                                     "destination and left it again, over the fraction that "
+                                     f"entered (but at least {REMAINS_FLOOR:g}), clipped.",
     "no_spill": "1 minus the fraction of the particles that end in neither bowl.",
 }
