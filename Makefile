@@ -39,8 +39,8 @@ test-python:
 
 # Every plunit file (a .plt beside its module), loaded and run in one swipl.
 test-prolog:
-	swipl -q -g "maplist(use_module, [$(subst $(space),$(comma),$(PLUNIT:.plt=))]), \
-	  load_test_files([]), (run_tests -> halt(0) ; halt(1))"
+	swipl --on-error=status -q -g "maplist(use_module, [$(subst $(space),$(comma),$(PLUNIT:.plt=))]), \
+	  load_test_files([]), (run_tests -> halt ; halt(1))"
 
 bench: setup
 	$(PY) -m benchmarks

@@ -43,7 +43,7 @@ test(count_agrees_with_brute_force, forall(member(Dims,
 test(count_of_independent_dimensions_is_a_product, N == 15) :-
     count_valid([liquid_amount, source_weight], N).
 
-test(random_antecedents_are_valid_and_repeatable, [A1 == A2, A1 \== A3]) :-
+test(random_antecedents_are_valid_and_repeatable, true((A1 == A2, A1 \== A3))) :-
     random_antecedents(7, 50, A1),
     random_antecedents(7, 50, A2),
     random_antecedents(8, 50, A3),
