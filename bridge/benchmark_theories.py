@@ -138,3 +138,25 @@ def _teams_rules(depth: int) -> int:
     inner = (4 ** depth - 1) // 3
     total = (4 ** (depth + 1) - 1) // 3
     return 4 * inner + (total - inner)
+
+
+def pouring(rules: int, seed: int = 0) -> Theory:
+    """A random learned theory of pouring with `rules` rules: bodies of 1-4
+    propositions from distinct dimensions, heads expectations or their
+    negations; superiority by specificity (all rules learned)."""
+    import random
+
+    from pantarhei.oracle.vocabulary import load_vocabulary
+
+    rng = random.Random(seed)
+    vocab = load_vocabulary()
+    dims = sorted(vocab.dimensions)
+    expectations = vocab.expectation_names
+    t = Theory(source=f"pouring({rules}, seed={seed})")
+    for i in range(rules):
+        chosen = rng.sample(dims, rng.randint(1, 4))
+        body = tuple(sorted(rng.choice(vocab.dimensions[d].values) for d in chosen))
+        e = rng.choice(expectations)
+        t.rules.append(Rule(f"r{i}", "defeasible", e if rng.random() < 0.5 else f"neg({e})", body))
+        t.learned.add(f"r{i}")
+    return t

@@ -76,12 +76,35 @@ def plan(theory: Theory, goals: list[str], given: list[str] = (), alternatives: 
                     f"choice of manners reaches them together{ctx}")
 
 
+def relevant(theory: Theory, goals: list[str]) -> Theory:
+    """The part of the theory the goals depend on: the rules for each goal
+    literal and its complement, and so on for their bodies. Conclusions
+    about the goals are the same as in the whole theory."""
+    wanted, todo = set(), list(goals)
+    by_head: dict[str, list] = {}
+    for r in theory.rules:
+        by_head.setdefault(r.head, []).append(r)
+    while todo:
+        lit = todo.pop()
+        if lit in wanted:
+            continue
+        wanted.update((lit, complement(lit)))
+        for head in (lit, complement(lit)):
+            for r in by_head.get(head, ()):
+                todo.extend(b for b in r.body if b not in wanted)
+    rules = [r for r in theory.rules if r.head in wanted]
+    ids = {r.id for r in rules}
+    return Theory(list(theory.facts), rules, [(a, b) for a, b in theory.sup if a in ids and b in ids],
+                  theory.learned & ids, source=theory.source)
+
+
 def _solve(theory: Theory, goals: list[str], given: list[str], count: int,
            steps: int = 4) -> list[Plan]:
     """Up to `count` plans; the alternation steps double until the models
     found have converged (more steps only make more goals provable)."""
     import clingo
 
+    theory = relevant(theory, goals)
     while True:
         ctl = clingo.Control(["--warn=none", f"-csteps={steps}", "--opt-mode=opt"])
         for f in VOCABULARY_FILES:
