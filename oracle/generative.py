@@ -5,8 +5,9 @@ is log P(p|a) for the very same distribution, exactly:
 
 * a parameter that a proposition of `a` draws uniformly is uniform on the
   proposition's range (within the parameter's bounds);
-* a parameter that no proposition draws follows its prior (uniform over its
-  bounds); counts are uniform over the whole numbers in range;
+* a parameter that no proposition draws follows its prior (uniform over the
+  prior's range, within the bounds); counts are uniform over the whole
+  numbers in range;
 * a parameter drawn relative to a base (the start and end poses move relative
   to the pouring pose) is uniform on [base + low, base + high] clipped to its
   bounds; the base is then restricted to the values for which that clipped
@@ -57,7 +58,8 @@ def _plan(antecedent: tuple[str, ...]) -> Plan:
     n = len(vocab.parameters)
     bl = np.array([p.low for p in vocab.parameters], dtype=float)
     bh = np.array([p.high for p in vocab.parameters], dtype=float)
-    low, high = bl.copy(), bh.copy()
+    low = np.array([p.prior_low for p in vocab.parameters], dtype=float)
+    high = np.array([p.prior_high for p in vocab.parameters], dtype=float)
     base = np.full(n, -1)
     setter: dict[str, str] = {}
     for name in antecedent:

@@ -54,7 +54,7 @@ def scores(v: Mapping[str, float]) -> np.ndarray:
     """The 9 scores of the parameterization v (name -> value, theory units),
     in the vocabulary's expectation order."""
     leaves = min(ramp(v["pour_pitch"], 40, 100), ramp(v["particle_mass"], 200, 1000))
-    no_spill = min(ramp(v["pour_x"], 140, 80), ramp(v["pour_z"], 300, 150),
+    no_spill = min(ramp(v["pour_x"], 120, 80), ramp(v["pour_z"], 300, 150),
                    ramp(v["pour_y"], 60, 20))
     enters = min(leaves, no_spill)
     remains = min(enters, max(ramp(v["particle_mass"], 300, 1200), ramp(v["end_z"], 20, 120)))
@@ -79,7 +79,7 @@ class SyntheticOracle(Oracle):
     """Analytic scores of the parameters (see the module's documentation)."""
 
     name = "synthetic"
-    version = "1"
+    version = "2"
 
     def score(self, p: np.ndarray) -> Outcome:
         delay = os.environ.get(DELAY_VARIABLE)

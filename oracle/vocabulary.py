@@ -20,7 +20,8 @@ class Parameter:
     unit: str
     low: int
     high: int
-    prior: str
+    prior_low: int
+    prior_high: int
     gloss: str
 
     @property
@@ -115,10 +116,10 @@ class Vocabulary:
 def load_vocabulary() -> Vocabulary:
     """The vocabulary of `theory/vocabulary/`, read once per process."""
     f = read_facts(VOCABULARY_FILES)
-    priors = dict(f["prior"])
+    priors = {name: (lo, hi) for name, (_uniform, lo, hi) in f["prior"]}
     glosses = dict(f["parameter_gloss"])
     parameters = tuple(
-        Parameter(name, i, group, unit, lo, hi, priors[name], glosses[name])
+        Parameter(name, i, group, unit, lo, hi, *priors[name], glosses[name])
         for i, (name, group, unit, lo, hi) in enumerate(f["parameter"]))
     models = {}
     for prop, param, m in f["model"]:

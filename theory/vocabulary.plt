@@ -12,9 +12,10 @@ test(eighty_six_propositions, N == 86) :-
 test(nine_expectations, N == 9) :-
     aggregate_all(count, expectation(_, _, _), N).
 
-test(every_parameter_has_a_prior_and_a_gloss, Missing == []) :-
+test(every_parameter_has_a_prior_within_bounds_and_a_gloss, Missing == []) :-
     findall(P, ( parameter(P, _, _, Lo, Hi),
-                 \+ ( prior(P, _), parameter_gloss(P, _), Lo < Hi ) ), Missing).
+                 \+ ( prior(P, uniform(PL, PH)), parameter_gloss(P, _),
+                      Lo =< PL, PL < PH, PH =< Hi ) ), Missing).
 
 test(ranks_run_from_one_without_gaps, Bad == []) :-
     findall(D, ( dimension(D, _, _, _),

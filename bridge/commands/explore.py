@@ -20,7 +20,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="the plane slope below which nothing new is explored (default 0.1)")
     p.add_argument("--seed", type=int, default=1, help="seed of every random choice (default 1)")
     p.add_argument("--initial", metavar="P1,P2,...",
-                   help="the initial antecedent a_0 (default: pour_low,pour_near_rim,"
+                   help="the initial antecedent a_0 (default: pour_mid_height,pour_near_rim,"
                         "pour_steeply_tilted)")
     p.add_argument("--breadth", type=int, default=3,
                    help="modify steps the parameters of this many largest gradient "

@@ -29,7 +29,8 @@ def vocabulary_json() -> dict:
     v = load_vocabulary()
     return {
         "parameters": [{"name": p.name, "group": p.group, "unit": p.unit, "low": p.low,
-                        "high": p.high, "prior": p.prior, "gloss": p.gloss} for p in v.parameters],
+                        "high": p.high, "prior": {"kind": "uniform", "low": p.prior_low, "high": p.prior_high},
+                        "gloss": p.gloss} for p in v.parameters],
         "propositions": [{"name": p.name, "dimension": p.dimension, "rank": p.rank,
                           "aspect": v.dimensions[p.dimension].aspect,
                           "image_schema": v.dimensions[p.dimension].schema,
@@ -99,7 +100,7 @@ def markdown_tables() -> str:
     out = [f"#### The {len(v.parameters)} scene parameters", "",
            "| # | parameter | unit | bounds | prior | meaning |", "|---|---|---|---|---|---|"]
     for p in v.parameters:
-        out.append(f"| {p.index + 1} | `{p.name}` | {p.unit} | [{p.low}, {p.high}] | {p.prior} | {p.gloss} |")
+        out.append(f"| {p.index + 1} | `{p.name}` | {p.unit} | [{p.low}, {p.high}] | U[{p.prior_low}, {p.prior_high}] | {p.gloss} |")
     out += ["", f"#### The {len(v.propositions)} scene propositions, in {len(v.dimensions)} dimensions", "",
             "| dimension | aspect | image schema | role | rank | proposition | gloss | generative model |",
             "|---|---|---|---|---|---|---|---|"]

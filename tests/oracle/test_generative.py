@@ -131,7 +131,7 @@ def test_log_density_is_the_product_of_the_uniform_widths():
                 pl = G.plan(a)
                 expect -= np.log(pl.high[p.index] - pl.low[p.index])
             elif m is None:
-                expect -= np.log(p.high - p.low + (1 if p.discrete else 0))
+                expect -= np.log(p.prior_high - p.prior_low + (1 if p.discrete else 0))
             elif m.kind == "uniform":
                 expect -= np.log(min(p.high, m.high) - max(p.low, m.low))
             else:

@@ -5,8 +5,12 @@
 % count) so that no float appears.
 %
 % parameter(Name, Group, Unit, Low, High): the parameter's bounds.
-% prior(Name, uniform): the distribution of a parameter that no proposition
-%   of an antecedent constrains (uniform over its bounds).
+% prior(Name, uniform(Low, High)): the distribution of a parameter that no
+%   proposition of an antecedent draws: uniform over [Low, High], within the
+%   bounds. The priors describe an ordinary scene when nothing is said: the
+%   source starts and ends upright and level, beside and above the
+%   destination, in line with it; the pouring pose, the timing, the
+%   materials and the amount of liquid range over their bounds.
 % parameter_gloss(Name, Text).
 %
 % Frame: positions are those of the centre of the source bowl's base,
@@ -46,36 +50,36 @@ parameter(particle_restitution, liquid, permille, 0, 950).
 parameter(particle_friction, liquid, permille, 0, 1500).
 parameter(particle_count, liquid, count, 10, 200).
 
-prior(start_x, uniform).
-prior(start_y, uniform).
-prior(start_z, uniform).
-prior(start_roll, uniform).
-prior(start_pitch, uniform).
-prior(start_yaw, uniform).
-prior(pour_x, uniform).
-prior(pour_y, uniform).
-prior(pour_z, uniform).
-prior(pour_roll, uniform).
-prior(pour_pitch, uniform).
-prior(pour_yaw, uniform).
-prior(end_x, uniform).
-prior(end_y, uniform).
-prior(end_z, uniform).
-prior(end_roll, uniform).
-prior(end_pitch, uniform).
-prior(end_yaw, uniform).
-prior(approach_duration, uniform).
-prior(retreat_duration, uniform).
-prior(source_mass, uniform).
-prior(source_restitution, uniform).
-prior(source_friction, uniform).
-prior(destination_mass, uniform).
-prior(destination_restitution, uniform).
-prior(destination_friction, uniform).
-prior(particle_mass, uniform).
-prior(particle_restitution, uniform).
-prior(particle_friction, uniform).
-prior(particle_count, uniform).
+prior(start_x, uniform(100, 250)).
+prior(start_y, uniform(-20, 20)).
+prior(start_z, uniform(100, 300)).
+prior(start_roll, uniform(-5, 5)).
+prior(start_pitch, uniform(-5, 5)).
+prior(start_yaw, uniform(-180, 180)).
+prior(pour_x, uniform(-250, 250)).
+prior(pour_y, uniform(-60, 60)).
+prior(pour_z, uniform(-40, 400)).
+prior(pour_roll, uniform(-5, 5)).
+prior(pour_pitch, uniform(-30, 180)).
+prior(pour_yaw, uniform(-180, 180)).
+prior(end_x, uniform(100, 250)).
+prior(end_y, uniform(-20, 20)).
+prior(end_z, uniform(100, 300)).
+prior(end_roll, uniform(-5, 5)).
+prior(end_pitch, uniform(-5, 5)).
+prior(end_yaw, uniform(-180, 180)).
+prior(approach_duration, uniform(300, 4000)).
+prior(retreat_duration, uniform(300, 4000)).
+prior(source_mass, uniform(100, 2000)).
+prior(source_restitution, uniform(0, 950)).
+prior(source_friction, uniform(0, 1500)).
+prior(destination_mass, uniform(20, 3000)).
+prior(destination_restitution, uniform(0, 950)).
+prior(destination_friction, uniform(0, 1500)).
+prior(particle_mass, uniform(100, 10000)).
+prior(particle_restitution, uniform(0, 950)).
+prior(particle_friction, uniform(0, 1500)).
+prior(particle_count, uniform(10, 200)).
 
 parameter_gloss(start_x, "distance of the source from the destination's axis, towards the side it comes from, at the start").
 parameter_gloss(start_y, "sideways offset of the source at the start").
