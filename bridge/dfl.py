@@ -221,11 +221,17 @@ def dfl_literal(lit: str) -> str:
 
 
 def write_dfl(theory: Theory) -> str:
-    """The theory in DFL: facts, rules, then superiority."""
+    """The theory in DFL: facts, rules, then superiority, including the
+    superiority that specificity gives learned rules (DFL has no
+    `learned`), so that the DFL theory has the same conclusions."""
     arrows = {k: a for a, k in _ARROWS}
     lines = [f">> {dfl_literal(f)}" for f in theory.facts]
     for r in theory.rules:
         body = ", ".join(dfl_literal(b) for b in r.body)
         lines.append(f"{r.id}: {body}{' ' if body else ''}{arrows[r.kind]} {dfl_literal(r.head)}")
     lines.extend(f"{a} > {b}" for a, b in theory.sup)
+    derived = theory.specificity()
+    if derived:
+        lines.append("# superiority of learned rules by specificity")
+        lines.extend(f"{a} > {b}" for a, b in derived)
     return "\n".join(lines) + "\n"

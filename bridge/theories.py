@@ -71,6 +71,23 @@ class Theory:
         lines.extend(self.extra)
         return "\n".join(lines) + "\n"
 
+    def specificity(self) -> list[tuple[str, str]]:
+        """The superiority that specificity gives among learned rules: R
+        beats S when their heads conflict, S's body is strictly inside R's,
+        and sup/2 does not say S beats R (as theory/defeasible.pl)."""
+        explicit = set(self.sup)
+        learned = [r for r in self.rules if r.id in self.learned]
+        by_head: dict[str, list[Rule]] = {}
+        for r in learned:
+            by_head.setdefault(r.head, []).append(r)
+        out = []
+        for r in learned:
+            rb = set(r.body)
+            for s in by_head.get(complement(r.head), ()):
+                if set(s.body) < rb and (s.id, r.id) not in explicit and (r.id, s.id) not in explicit:
+                    out.append((r.id, s.id))
+        return out
+
     def validate(self) -> None:
         """Raise TheoryFileError (`file:line: what`) for what the engines
         cannot read: unknown kinds, dangling bodies, double negation..."""

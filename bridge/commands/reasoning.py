@@ -44,6 +44,12 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--json", action="store_true", help="print JSON")
     p.set_defaults(run=conclusions)
 
+    p = sub.add_parser("convert", help="write a theory in DFL (SPINdle, silkie) or in the native format")
+    p.add_argument("file", nargs="+", metavar="FILE", help="theory file(s), native facts or .dfl")
+    p.add_argument("--to", choices=("dfl", "native"), default="dfl", help="output format (default dfl)")
+    p.add_argument("-o", "--output", metavar="OUT", help="write to OUT instead of printing")
+    p.set_defaults(run=convert)
+
 
 def _split(text: str | None) -> list[str]:
     return [x.strip() for x in (text or "").split(",") if x.strip()]
@@ -89,6 +95,8 @@ def ask(args: argparse.Namespace) -> int:
         print(f"  [{mark}] {o.expectation:30} {glosses[o.expectation]}")
         if o.value != "unknown":
             print(f"        because {o.reason}")
+        elif "no rule concludes" not in o.reason:
+            print(f"        why not: {o.reason.split('; ', 1)[-1]}")
     return 0
 
 
@@ -177,4 +185,29 @@ def conclusions(args: argparse.Namespace) -> int:
     for tag in reasoning.TAGS:
         for lit in dfl[tag]:
             print(f"{tag} {lit}")
+    return 0
+
+
+# -- convert ------------------------------------------------------------------
+
+def convert(args: argparse.Namespace) -> int:
+    import os
+    import tempfile
+    from pathlib import Path
+
+    from ..dfl import write_dfl
+
+    theory = reasoning.load(args.file, check=False)
+    text = write_dfl(theory) if args.to == "dfl" else theory.native()
+    if not args.output:
+        print(text, end="")
+        return 0
+    out = Path(args.output)
+    if not out.parent.is_dir():
+        raise UserError(f"{out}: no such directory {out.parent}")
+    fd, tmp = tempfile.mkstemp(dir=out.parent, prefix=f".{out.name}.")
+    with os.fdopen(fd, "w") as f:
+        f.write(text)
+    os.replace(tmp, out)
+    print(f"wrote {len(theory.rules)} rules, {len(theory.facts)} facts to {out}")
     return 0

@@ -95,3 +95,24 @@ def test_malformed_native_files_name_file_and_line(tmp_path: Path, text: str, li
     with pytest.raises(UserError) as e:
         load(f)
     assert str(e.value).startswith(f"{f}:{line}: ") and what in str(e.value), str(e.value)
+
+
+@pytest.mark.parametrize("engine", ["prolog", "asp"])
+def test_dfl_of_a_learned_theory_keeps_specificity_as_superiority(engine: str) -> None:
+    learned = load(EXAMPLES / "learned.pl")
+    as_dfl = parse_dfl(write_dfl(learned))
+    assert not as_dfl.learned and ("r4", "r3") in as_dfl.sup
+    for scene in (["pour_steeply_tilted", "light_liquid"], ["pour_to_side", "end_low"]):
+        assert conclusions(as_dfl.with_facts(scene), Semantics(), engine) == \
+            conclusions(learned.with_facts(scene), Semantics(), engine)
+
+
+def test_convert_command_writes_whole_files(cli, tmp_path: Path) -> None:
+    out = tmp_path / "learned.dfl"
+    r = cli("convert", str(EXAMPLES / "learned.pl"), "-o", str(out))
+    assert r.code == 0, r.err
+    back = tmp_path / "back.pl"
+    assert cli("convert", str(out), "--to", "native", "-o", str(back)).code == 0
+    assert conclusions(load(back)) == conclusions(load(EXAMPLES / "learned.pl"))
+    assert "rule(h1, defeasible, liquid_leaves_source)." in cli("convert", str(EXAMPLES / "hand.dfl"),
+                                                              "--to", "native").out
