@@ -14,6 +14,7 @@
 from __future__ import annotations
 
 import argparse
+import os
 import statistics
 import time
 from dataclasses import replace
@@ -112,7 +113,8 @@ def _peak_rss_mb(pid: int) -> Optional[float]:
 def parallel(P: np.ndarray) -> None:
     from pantarhei.oracle.simulator import make_simulator
 
-    print(f"parallel: {len(P)} pours at the chosen settings, worker processes, no store")
+    print(f"parallel: {len(P)} pours at the chosen settings, worker processes, no store "
+          f"({os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f} before)")
     walls, peaks, steps, inside = {}, [], 0.0, 0.0
     for workers in (1, 2):
         with make_simulator("pybullet", executor="local", workers=workers, store=None) as sim:
@@ -128,7 +130,8 @@ def parallel(P: np.ndarray) -> None:
             peaks += [m for w in sim.executor._pool if (m := _peak_rss_mb(w.process.pid))]
         print(f"  {workers} worker{'s' if workers > 1 else ' '}: {walls[workers]:7.1f} s wall, "
               f"{len(P) / walls[workers] * 60:6.0f} simulations per minute")
-    print(f"  parallel speed-up on 2 workers: {walls[1] / walls[2]:.2f}x")
+    print(f"  parallel speed-up on 2 workers: {walls[1] / walls[2]:.2f}x "
+          f"(load average {os.getloadavg()[0]:.1f} after: other work on the machine lowers it)")
     print(f"  peak memory per worker: {max(peaks):.0f} MB (median {statistics.median(peaks):.0f} MB)")
     print(f"  wall time on 1 worker: {steps / walls[1]:.0%} stepping the physics, "
           f"{(inside - steps) / walls[1]:.0%} building and observing the scene, "

@@ -380,6 +380,14 @@ class PouringOracle(Oracle):
     def settings(self) -> dict[str, Any]:
         return asdict(self.fidelity)
 
+    def cost(self, p: np.ndarray) -> float:
+        """A rough relative cost of simulating p (for scheduling): particles
+        times simulated seconds."""
+        v = load_vocabulary()
+        count = p[v.parameter("particle_count").index]
+        ms = p[v.parameter("approach_duration").index] + p[v.parameter("retreat_duration").index]
+        return float(count * (ms + self.fidelity.settle_ms / 4))
+
     def score(self, p: np.ndarray) -> Outcome:
         record = run(np.asarray(p, dtype=float), self.fidelity)
         return Outcome(scoring.scores(record), record)

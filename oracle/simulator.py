@@ -69,6 +69,11 @@ class Simulator:
             else:
                 todo.append((rows[0], P[rows[0]]))
 
+        cost = getattr(self.oracle, "cost", None)
+        if cost is not None:
+            # longest first, so that no long simulation is left running alone at the end
+            todo.sort(key=lambda t: -float(cost(t[1])))
+
         bar = None
         if progress:
             from tqdm import tqdm
