@@ -105,8 +105,12 @@ def _solve(theory: Theory, goals: list[str], given: list[str], count: int,
     import clingo
 
     theory = relevant(theory, goals)
+    acyclic = theory.acyclic()
+    if acyclic:
+        steps = 0
     while True:
-        ctl = clingo.Control(["--warn=none", f"-csteps={steps}", "--opt-mode=opt"])
+        ctl = clingo.Control(["--warn=none", f"-csteps={steps}", f"-cacyclic={str(acyclic).lower()}",
+                              "--opt-mode=opt"])
         for f in VOCABULARY_FILES:
             ctl.load(str(f))
         for e in ENCODINGS:
@@ -135,7 +139,7 @@ def _solve(theory: Theory, goals: list[str], given: list[str], count: int,
             body = ", ".join(f"chosen({p})" for p in chosen)
             ctl.add(name, [], f":- {body}." if chosen else ":- #true.")
             ctl.ground([(name, [])])
-        if (unconverged or not plans) and steps < MAX_STEPS:
+        if not acyclic and (unconverged or not plans) and steps < MAX_STEPS:
             steps *= 2
             continue
         return plans

@@ -163,12 +163,16 @@ def _quote(s: str) -> str:
 
 def asp_conclusions(theory: Theory, semantics: Semantics = Semantics(),
                     steps: int = 8) -> dict[str, list[str]]:
-    """Solve defeasible.lp, doubling the alternation steps until they suffice."""
+    """Solve defeasible.lp: in one layer for an acyclic theory, else
+    doubling the alternation steps until they suffice."""
     from .asp import solve
 
     text = theory.native()
+    acyclic = theory.acyclic()
+    if acyclic:
+        steps = 0
     while True:
-        consts = {**semantics.asp_constants(), "steps": str(steps)}
+        consts = {**semantics.asp_constants(), "steps": str(steps), "acyclic": str(acyclic).lower()}
         (model,) = solve(["defeasible.lp", "conclusions.lp"], text, files=(),
                          args=[f"-c{k}={v}" for k, v in consts.items()])
         if not any(s.name == "changed" for s in model):

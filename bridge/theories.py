@@ -88,6 +88,33 @@ class Theory:
                     out.append((r.id, s.id))
         return out
 
+    def acyclic(self) -> bool:
+        """No literal depends on itself through the rules for it or for
+        its complement (literals and their negations count as one)."""
+        def atom(lit: str) -> str:
+            return complement(lit) if lit.startswith("neg(") else lit
+        edges: dict[str, set[str]] = {}
+        for r in self.rules:
+            edges.setdefault(atom(r.head), set()).update(atom(b) for b in r.body)
+        state: dict[str, int] = {}
+        for start in edges:
+            if state.get(start):
+                continue
+            stack = [(start, iter(edges.get(start, ())))]
+            state[start] = 1
+            while stack:
+                node, it = stack[-1]
+                nxt = next(it, None)
+                if nxt is None:
+                    state[node] = 2
+                    stack.pop()
+                elif state.get(nxt) == 1:
+                    return False
+                elif not state.get(nxt):
+                    state[nxt] = 1
+                    stack.append((nxt, iter(edges.get(nxt, ()))))
+        return True
+
     def validate(self) -> None:
         """Raise TheoryFileError (`file:line: what`) for what the engines
         cannot read: unknown kinds, dangling bodies, double negation..."""
