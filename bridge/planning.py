@@ -36,7 +36,7 @@ def parse_goal(goal: str) -> str:
     return g
 
 
-def check_goals(goals: list[str], theory: Theory) -> list[str]:
+def check_goals(goals: list[str], theory: Theory, reachable: bool = True) -> list[str]:
     """The goal literals; UserError for an unknown expectation, or for a
     goal literal that no rule of the theory can conclude."""
     vocab = load_vocabulary()
@@ -50,8 +50,9 @@ def check_goals(goals: list[str], theory: Theory) -> list[str]:
 
             close = difflib.get_close_matches(name, known, n=3, cutoff=0.5)
             hint = f" (did you mean {', '.join(close)}?)" if close else ""
-            raise UserError(f"unknown expectation '{name}' in goal '{g}'{hint}")
-        if lit not in theory.facts and not any(r.head == lit and r.kind != "defeater"
+            where = f" in '{g}'" if g.strip() != name else ""
+            raise UserError(f"unknown expectation '{name}'{where}{hint}")
+        if reachable and lit not in theory.facts and not any(r.head == lit and r.kind != "defeater"
                                                for r in theory.rules):
             raise UserError(f"unreachable goal: no rule of {theory.source} concludes {lit}")
         out.append(lit)

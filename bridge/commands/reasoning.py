@@ -18,6 +18,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("question", nargs="?", help='the scene in words, e.g. "pour from the side"')
     p.add_argument("--props", help="the scene as propositions P1,P2 (instead of words)")
     p.add_argument("--theory", action="append", metavar="FILE", help=THEORY_HELP)
+    p.add_argument("--why", metavar="LITERAL",
+                   help="explain why the theory concludes LITERAL in the scene, or why not "
+                        "(an expectation, or neg(E))")
     p.add_argument("--json", action="store_true", help="print JSON")
     p.set_defaults(run=ask)
 
@@ -75,6 +78,17 @@ def ask(args: argparse.Namespace) -> int:
         raise UserError("give a scene: a question in words, or --props P1,P2")
     props = require_valid(props)
     theory = reasoning.load(args.theory)
+    if args.why:
+        from ..planning import check_goals
+
+        (lit,) = check_goals([args.why], theory, reachable=False)
+        words = reasoning.explain(theory, props, lit)
+        if args.json:
+            print(json.dumps({"understood": props, "literal": lit, "why": words}, indent=1))
+        else:
+            print(f"understood: {', '.join(props)}")
+            print(words.replace("; ", "\n  "))
+        return 0
     outcomes = reasoning.what_happens(theory, props)
     if args.json:
         print(json.dumps({"understood": props,

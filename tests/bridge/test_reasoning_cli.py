@@ -35,6 +35,17 @@ def test_ask_json_before_and_after_a_rule_added_by_hand(cli) -> None:
     assert before["outcomes"]["no_spill"] == after["outcomes"]["no_spill"] == "holds"
 
 
+def test_ask_why_and_why_not(cli) -> None:
+    why = cli("ask", "--props", "light_liquid,pour_steeply_tilted", "--theory", LEARNED,
+              "--why", "neg(liquid_leaves_source)")
+    assert why.code == 0, why.err
+    assert "by rule r4" in why.out and "r3 is overridden by r4" in why.out
+    why_not = json.loads(cli("ask", "--props", "pour_to_side", "--theory", LEARNED,
+                             "--why", "no_spill", "--json").out)
+    assert why_not["literal"] == "no_spill"
+    assert "rule r2 (pour_centred => no_spill) does not apply" in why_not["why"]
+
+
 def test_plan_best_first_then_alternatives(cli) -> None:
     args = ("plan", "--goal", "liquid_leaves_source,no_spill", "--given", "light_liquid", "--json")
     before = json.loads(cli(*args, "--theory", LEARNED).out)
