@@ -247,7 +247,8 @@ supportive(R, X) :- rule(R, K, X), K \== defeater.
 
 %!  definitely(+Sem, +Literal) is nondet.
 %
-%   The meta atom of +D (tabled; true, false or undefined).
+%   The meta atom of +D (tabled; true, false or undefined). Ask for it
+%   through truth/3, which gives Sem the theory's current generation.
 definitely(_, X) :- given(X).
 definitely(S, X) :- rule(R, strict, X), rule_body(R, Bs), all_pos(Bs, S, definitely).
 
