@@ -115,7 +115,7 @@ def parallel(P: np.ndarray) -> None:
 
     print(f"parallel: {len(P)} pours at the chosen settings, worker processes, no store "
           f"({os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f} before)")
-    walls, peaks, steps, inside = {}, [], 0.0, 0.0
+    walls, peaks, steps, inside, busy, per = {}, [], 0.0, 0.0, {}, {}
     for workers in (1, 2):
         with make_simulator("pybullet", executor="local", workers=workers, store=None) as sim:
             sim.simulate(P[:workers])                      # start the workers
@@ -124,6 +124,8 @@ def parallel(P: np.ndarray) -> None:
             walls[workers] = time.perf_counter() - t
             assert not np.isnan(S).any()
             recs = [r for r in sim.last_records if r]
+            busy[workers] = sum(r["seconds"] for r in recs) / (workers * walls[workers])
+            per[workers] = statistics.median(r["seconds"] for r in recs)
             if workers == 1:
                 steps = sum(r["step_seconds"] for r in recs)
                 inside = sum(r["seconds"] for r in recs)
@@ -132,6 +134,9 @@ def parallel(P: np.ndarray) -> None:
               f"{len(P) / walls[workers] * 60:6.0f} simulations per minute")
     print(f"  parallel speed-up on 2 workers: {walls[1] / walls[2]:.2f}x "
           f"(load average {os.getloadavg()[0]:.1f} after: other work on the machine lowers it)")
+    print(f"  workers busy {busy[1]:.0%} (1) and {busy[2]:.0%} (2) of the wall time; a simulation "
+          f"took {per[1]:.2f} s (1) and {per[2]:.2f} s (2), median: with 2 the cores are shared "
+          "with everything else")
     print(f"  peak memory per worker: {max(peaks):.0f} MB (median {statistics.median(peaks):.0f} MB)")
     print(f"  wall time on 1 worker: {steps / walls[1]:.0%} stepping the physics, "
           f"{(inside - steps) / walls[1]:.0%} building and observing the scene, "
