@@ -49,7 +49,11 @@ class Fidelity:
 #: PyBullet's defaults: 240 Hz, 50 solver iterations, the full duration.
 DEFAULT_FIDELITY = Fidelity()
 #: The settings chosen by measurement (`python -m benchmarks.oracle`).
-CHOSEN_FIDELITY = Fidelity(rate_hz=120, solver_iterations=10, settle_ms=2000, early_stop=True,
+#: Measured on 40 pours (two seeds of the benchmark's set) against the
+#: defaults: 180 Hz agrees on 346 of 360 verdicts at 4.4-5.1x the speed,
+#: 120 Hz on 342 at 6-7x; 180 Hz keeps a margin over 95%. 10 solver
+#: iterations, a 2 mm contact threshold and the early stop cost no agreement.
+CHOSEN_FIDELITY = Fidelity(rate_hz=180, solver_iterations=10, settle_ms=2000, early_stop=True,
                            sample_hz=30, contact_mm=2.0)
 FIDELITIES = {"default": DEFAULT_FIDELITY, "chosen": CHOSEN_FIDELITY}
 
