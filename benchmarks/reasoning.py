@@ -19,7 +19,8 @@ from pantarhei.oracle.vocabulary import load_vocabulary
 
 #: Largest benchmark theory (rules); PANTARHEI_BENCH_MAX_RULES=10000 for a quick run.
 MAX_RULES = int(os.environ.get("PANTARHEI_BENCH_MAX_RULES", "100000"))
-ASP_MAX_RULES = min(MAX_RULES, 10000)
+#: Largest benchmark theory for clingo (PANTARHEI_BENCH_ASP_MAX_RULES).
+ASP_MAX_RULES = min(MAX_RULES, int(os.environ.get("PANTARHEI_BENCH_ASP_MAX_RULES", "100000")))
 
 
 def _median(f, repeat: int) -> float:

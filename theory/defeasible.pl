@@ -63,7 +63,7 @@ theory/defeasible.lp computes the same conclusions with clingo.
 
 :- dynamic fact/1, rule/3, body/2, sup/2, learned/1,
    scene_fact/1, rule_body/2, superior/2, theory_literal/1, loaded/0,
-   generation/1.
+   generation/1, head_key/3, fact_key/2.
 
 % Tables are keyed by a generation number that changes with the theory
 % (and with the facts of a scene), instead of being abolished: abolishing
@@ -146,7 +146,7 @@ clear_theory :-
 add_theory_fact(F) :-
     F =.. [P|Args], length(Args, A),
     (   theory_predicate(P, A)
-    ->  (   call(F) -> true ; assertz(F) ),
+    ->  (   P \== fact, call(F) -> true ; assertz(F) ),
         retractall(loaded)
     ;   true
     ).
@@ -159,23 +159,58 @@ theory_loaded :-
 
 prepare :-
     retractall(rule_body(_, _)), retractall(superior(_, _)),
-    retractall(theory_literal(_)),
+    retractall(theory_literal(_)), retractall(head_key(_, _, _)),
+    retractall(fact_key(_, _)),
+    % literals such as neg(a) all share a functor, so clause indexing on
+    % them degenerates: look rules and facts up by a hash of the literal
+    forall(rule(R, _, H), ( term_hash(H, K), assertz(head_key(K, H, R)) )),
+    forall(fact(F), ( term_hash(F, K), assertz(fact_key(K, F)) )),
     forall(rule(R, _, _),
            ( findall(B, body(R, B), Bs0), sort(Bs0, Bs),
              assertz(rule_body(R, Bs)) )),
     forall(distinct(R-S, derived_superior(R, S)), assertz(superior(R, S))),
     findall(L, mentioned(L), Ls0), sort(Ls0, Ls),
-    forall(member(L, Ls), assertz(theory_literal(L))),
+    dependency_order(Ls, Ordered),
+    forall(member(L, Ordered), assertz(theory_literal(L))),
     next_generation,
     assertz(loaded).
 
 derived_superior(R, S) :- sup(R, S).
 derived_superior(R, S) :-
     learned(R), rule(R, _, H), complement(H, NH),
-    rule(S, _, NH), learned(S),
+    rule_for(NH, S, _), learned(S),
     \+ sup(S, R),
     rule_body(R, BR), rule_body(S, BS),
     ord_subset(BS, BR), BS \== BR.
+
+% dependency_order(+Literals, -Ordered): the literals with those they
+% depend on (through the rules for them and their complements) first, so
+% that asking for each in turn finds its dependencies' tables complete
+% instead of nesting one tabled call in the next.
+:- dynamic seen/1.
+dependency_order(Ls, Ordered) :-
+    retractall(seen(_)),
+    foldl(visit, Ls, [], Rev),
+    retractall(seen(_)),
+    reverse(Rev, Atoms),
+    findall(L, ( member(A, Atoms), ( L = A ; L = neg(A) ) ), Ordered).
+
+visit(L, Acc0, Acc) :-
+    literal_atom(L, A),
+    (   seen(A)
+    ->  Acc = Acc0
+    ;   assertz(seen(A)),
+        findall(B, depends_on(A, B), Bs),
+        foldl(visit, Bs, Acc0, Acc1),
+        Acc = [A|Acc1]
+    ).
+
+depends_on(A, B) :-
+    ( H = A ; H = neg(A) ),
+    term_hash(H, K), head_key(K, H, R), body(R, B).
+
+literal_atom(neg(A), A) :- !.
+literal_atom(A, A).
 
 mentioned(L) :- ( fact(L0) ; rule(_, _, L0) ; body(_, L0) ), ( L = L0 ; complement(L0, L) ).
 
@@ -200,8 +235,11 @@ with_scene(Facts, Goal) :-
         once(Goal),
         ( retractall(scene_fact(_)), next_generation )).
 
-given(X) :- fact(X).
+given(X) :- term_hash(X, K), fact_key(K, X).
 given(X) :- scene_fact(X).
+
+% rule_for(+Head, -Rule, -Kind): the rules with head Head.
+rule_for(H, R, K) :- term_hash(H, Key), head_key(Key, H, R), rule(R, K, H).
 
                  /*******************************
                  *          SEMANTICS           *
@@ -243,14 +281,14 @@ all_pos([B|Bs], S, P) :-
     pos(S, G),
     all_pos(Bs, S, P).
 
-supportive(R, X) :- rule(R, K, X), K \== defeater.
+supportive(R, X) :- rule_for(X, R, K), K \== defeater.
 
 %!  definitely(+Sem, +Literal) is nondet.
 %
 %   The meta atom of +D (tabled; true, false or undefined). Ask for it
 %   through truth/3, which gives Sem the theory's current generation.
 definitely(_, X) :- given(X).
-definitely(S, X) :- rule(R, strict, X), rule_body(R, Bs), all_pos(Bs, S, definitely).
+definitely(S, X) :- rule_for(X, R, strict), rule_body(R, Bs), all_pos(Bs, S, definitely).
 
 %!  defeasibly(+Sem, +Literal) is nondet.
 %
@@ -273,14 +311,14 @@ attacks(S, A) :- S = sem(propagation, _, _, _), rule_body(A, Bs), all_pos(Bs, S,
 % team defeat: some applicable attacker is not beaten by any applicable
 % rule for X.
 overruled(S, X) :-
-    complement(X, NX), rule(A, _, NX), attacks(S, A), tnot(defeated(S, A, X)).
+    complement(X, NX), rule_for(NX, A, _), attacks(S, A), tnot(defeated(S, A, X)).
 
 defeated(S, A, X) :-
     superior(T, A), supportive(T, X), rule_body(T, Bs), all_pos(Bs, S, defeasibly).
 
 % no team defeat: rule R must itself be superior to every applicable attacker.
 overruled_by(S, R, X) :-
-    complement(X, NX), rule(A, _, NX), \+ superior(R, A), attacks(S, A).
+    complement(X, NX), rule_for(NX, A, _), \+ superior(R, A), attacks(S, A).
 
 %!  supported(+Sem, +Literal) is nondet.
 %
@@ -291,7 +329,7 @@ supported(S, X) :-
     tnot(support_beaten(S, R, X)).
 
 support_beaten(S, R, X) :-
-    complement(X, NX), rule(A, _, NX), superior(A, R),
+    complement(X, NX), rule_for(NX, A, _), superior(A, R),
     rule_body(A, Bs), all_pos(Bs, S, defeasibly).
 
                  /*******************************
