@@ -60,7 +60,7 @@ def test_one_rule_per_outcome_literal_with_provenance(explored):
     assert settings["oracle"] == ["synthetic"] and settings["seed"] == [1]
     assert settings["samples"] == [31] and settings["explored"] == [result["explored"]]
     assert settings["simulations"] == [31 * result["explored"]]
-    assert sorted(settings["initial"]) == ["pour_low", "pour_near_rim", "pour_steeply_tilted"]
+    assert sorted(settings["initial"]) == ["pour_mid_height", "pour_near_rim", "pour_steeply_tilted"]
     bodies = defaultdict(set)
     for rid, prop in f["body"]:
         bodies[rid].add(prop)
@@ -90,7 +90,7 @@ def test_trace_and_plot(explored):
     tmp, result = explored
     lines = [json.loads(l) for l in (tmp / "t.trace.jsonl").read_text().splitlines()]
     assert [t["iteration"] for t in lines] == list(range(1, result["explored"] + 1))
-    assert lines[0]["antecedent"] == ["pour_low", "pour_near_rim", "pour_steeply_tilted"]
+    assert lines[0]["antecedent"] == ["pour_mid_height", "pour_near_rim", "pour_steeply_tilted"]
     size = 1
     for t in lines:
         size += len(t["added"]) - 1
