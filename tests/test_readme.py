@@ -21,3 +21,12 @@ def test_quick_start_is_two_commands():
     start = README.index("## Quick start")
     block = README[README.index("```sh", start) + 5:README.index("```", README.index("```sh", start) + 5)]
     assert [line.split("#")[0].strip() for line in block.strip().splitlines()] == ["make demo", "make test"]
+
+
+def test_readme_says_how_each_score_is_computed():
+    from pantarhei.oracle.scoring import EXPLANATIONS
+
+    begin, end = "<!-- scores:begin -->\n", "<!-- scores:end -->"
+    section = README[README.index(begin):README.index(end)]
+    for name, words in EXPLANATIONS.items():
+        assert f"| `{name}` | {words} |" in section
