@@ -51,13 +51,23 @@ class Engine:
         yield from self._prolog.query(full)
 
     def once(self, goal: str, **bindings: Any) -> dict:
-        """The first solution of goal (RuntimeError if it fails)."""
-        for sol in self.query(goal, **bindings):
-            return sol
+        """The first solution of goal (RuntimeError if it fails). The query
+        is closed before returning: pyswip must not have two open at once."""
+        solutions = self.query(goal, **bindings)
+        try:
+            for sol in solutions:
+                return sol
+        finally:
+            solutions.close()
         raise RuntimeError(f"goal failed: {goal}")
 
     def succeeds(self, goal: str, **bindings: Any) -> bool:
-        return any(True for _ in self.query(goal, **bindings))
+        """Whether goal has a solution (the query closed before returning)."""
+        try:
+            self.once(goal, **bindings)
+        except RuntimeError:
+            return False
+        return True
 
 
 def _text(value: Any) -> str:
