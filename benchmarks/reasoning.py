@@ -14,7 +14,7 @@ import time
 
 from pantarhei.bridge import benchmark_theories as bench
 from pantarhei.bridge.planning import plan
-from pantarhei.bridge.reasoning import Semantics, asp_conclusions, prolog_load, prolog_once, what_happens
+from pantarhei.bridge.reasoning import Semantics, asp_conclusions, prolog_load, what_happens
 from pantarhei.oracle.vocabulary import load_vocabulary
 
 #: Largest benchmark theory (rules); PANTARHEI_BENCH_MAX_RULES=10000 for a quick run.
@@ -55,7 +55,7 @@ def prediction() -> None:
     times_prolog, times_full = [], []
     for s in scenes:
         scene = "[" + ", ".join(s) + "]"
-        r = prolog_once(e, f"statistics(cputime, T0), queries:what_happens({scene}, Os), "
+        r = e.once(f"statistics(cputime, T0), queries:what_happens({scene}, Os), "
                            f"statistics(cputime, T1), T is T1 - T0, length(Os, 9)")
         times_prolog.append(float(r["T"]))
         times_full.append(_median(lambda: what_happens(theory, s), 1))

@@ -17,6 +17,7 @@ from pantarhei.theory import THEORY_DIR, TheoryFileError
 
 from .dfl import is_dfl, read_dfl
 from .errors import UserError
+from .prolog import text as prolog_text
 from .theories import Theory, merge, read_native
 
 TAGS = ("+D", "-D", "+d", "-d")
@@ -100,13 +101,13 @@ def prolog_load(theory: Theory):
         try:
             with os.fdopen(fd, "w") as f:
                 f.write(text)
-            r = prolog_once(e, "catch((defeasible:load_theory(F), R = ok), E, "
+            r = e.once("catch((defeasible:load_theory(F), R = ok), E, "
                        "(catch(theory_files:theory_error_message(E, M), _, fail) -> R = M "
                        "; message_to_codes(E, R)))", F=name)
         finally:
             os.unlink(name)
-        if _text(r["R"]) != "ok":
-            raise UserError(f"{theory.source}: {_text(r['R']).split(': ', 1)[-1]}")
+        if prolog_text(r["R"]) != "ok":
+            raise UserError(f"{theory.source}: {prolog_text(r['R']).split(': ', 1)[-1]}")
         _loaded_digest[0] = digest
     return e
 
@@ -115,9 +116,9 @@ def prolog_conclusions(theory: Theory, semantics: Semantics = Semantics()) -> di
     e = prolog_load(theory)
     out = {}
     for tag in TAGS:
-        r = prolog_once(e, f"findall(S, (defeasible:conclusion({semantics.prolog()}, T, L), "
+        r = e.once(f"findall(S, (defeasible:conclusion({semantics.prolog()}, T, L), "
                    "format(string(S), '~q', [L])), Ss)", T=tag)
-        out[tag] = sorted(_text(s) for s in r["Ss"])
+        out[tag] = sorted(prolog_text(s) for s in r["Ss"])
     return out
 
 
@@ -195,21 +196,6 @@ def conclusions(theory: Theory, semantics: Semantics = Semantics(),
     raise UserError(f"unknown engine '{engine}' (choose prolog or asp)")
 
 
-def prolog_once(e, goal: str, **bindings) -> dict:
-    """The first solution of a deterministic goal, with the query closed
-    before returning (a query left open while others run corrupts pyswip)."""
-    solutions = list(e.query(goal, **bindings))
-    if not solutions:
-        raise RuntimeError(f"goal failed: {goal}")
-    return solutions[0]
-
-
-def _text(value) -> str:
-    from .prolog import text
-
-    return text(value)
-
-
 # -- Questions about pouring --------------------------------------------------
 
 @dataclass(frozen=True)
@@ -237,10 +223,10 @@ def what_happens(theory: Theory, props: list[str],
             f"findall(S, (member(outcome(E, V, R), Os), "
             f"(V == fails -> L = neg(E) ; L = E), queries:explain({scene}, L, {sem}, T), "
             f"format(string(S), '~w\\t~w\\t~w\\t~s', [E, V, R, T])), Ss)")
-    r = prolog_once(e, goal)
+    r = e.once(goal)
     out = []
     for line in r["Ss"]:
-        exp, value, rule, reason = _text(line).split("\t", 3)
+        exp, value, rule, reason = prolog_text(line).split("\t", 3)
         out.append(Outcome(exp, value, rule, reason))
     return out
 
@@ -252,5 +238,5 @@ def explain(theory: Theory, props: list[str], literal: str,
     e.use_module("queries")
     sem = f"[ambiguity({semantics.ambiguity}), team_defeat({str(semantics.team_defeat).lower()}), " \
           f"well_founded({str(semantics.well_founded).lower()})]"
-    r = prolog_once(e, f"queries:explain({_prolog_list(props)}, {literal}, {sem}, T)")
-    return _text(r["T"])
+    r = e.once(f"queries:explain({_prolog_list(props)}, {literal}, {sem}, T)")
+    return prolog_text(r["T"])
