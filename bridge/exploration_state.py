@@ -27,6 +27,8 @@ from typing import Any, Mapping
 
 import numpy as np
 
+from pantarhei.oracle.store import connect
+
 SCHEMA = """
 CREATE TABLE IF NOT EXISTS exploration_runs (
     run TEXT PRIMARY KEY,
@@ -77,10 +79,7 @@ class ExplorationStore:
 
     def __init__(self, path: str | Path):
         self.path = Path(path)
-        self.path.parent.mkdir(parents=True, exist_ok=True)
-        self._db = sqlite3.connect(str(self.path), timeout=60, isolation_level=None)
-        self._db.execute("PRAGMA journal_mode=WAL")
-        self._db.execute("PRAGMA synchronous=NORMAL")
+        self._db = connect(self.path)
         self._db.executescript(SCHEMA)
 
     def close(self) -> None:

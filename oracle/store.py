@@ -91,16 +91,24 @@ def _nan_json(x: Any) -> Any:
     return x
 
 
+def connect(path: str | Path, timeout: float = 60.0) -> sqlite3.Connection:
+    """A connection to the store file (made with its folder if need be) in
+    WAL mode, autocommitting: the one way every table of the file is opened."""
+    path = str(path)
+    if path != ":memory:":
+        Path(path).parent.mkdir(parents=True, exist_ok=True)
+    db = sqlite3.connect(path, timeout=timeout, isolation_level=None)
+    db.execute("PRAGMA journal_mode=WAL")
+    db.execute("PRAGMA synchronous=NORMAL")
+    return db
+
+
 class Store:
     """Results of simulations in one SQLite file (or in memory for ':memory:')."""
 
     def __init__(self, path: str | Path, timeout: float = 60.0):
         self.path = str(path)
-        if self.path != ":memory:":
-            Path(self.path).parent.mkdir(parents=True, exist_ok=True)
-        self.db = sqlite3.connect(self.path, timeout=timeout, isolation_level=None)
-        self.db.execute("PRAGMA journal_mode=WAL")
-        self.db.execute("PRAGMA synchronous=NORMAL")
+        self.db = connect(self.path, timeout)
         self.db.executescript(SCHEMA)
 
     def get_many(self, keys: Iterable[str]) -> dict[str, Result]:
