@@ -3,8 +3,10 @@
             what_happens/3,         % +SceneProps, +Options, -Outcomes
             why/3,                  % +SceneProps, +Literal, -Proof
             why/4,                  % +SceneProps, +Literal, +Options, -Proof
+            why_brief/4,            % +SceneProps, +Literal, +Options, -Proof
             proof_text/2,           % +Proof, -Text
-            explain/4               % +SceneProps, +Literal, +Options, -Text
+            explain/4,              % +SceneProps, +Literal, +Options, -Text
+            explain_brief/4         % +SceneProps, +Literal, +Options, -Text
           ]).
 /** <module> Questions to a defeasible theory of pouring
 
@@ -12,13 +14,16 @@ The scene propositions of a question become facts of the current theory
 (defeasible:load_theory/1); the 9 expectations of the vocabulary are the
 literals asked about. what_happens/2 predicts, why/3 explains a
 conclusion, or why a literal is not concluded (why-not), as a proof term
-that proof_text/2 puts into words.
+that proof_text/2 puts into words. why_brief/4 gives a short why-not for
+large theories: the rules that come nearest to deciding the literal.
 */
 
 :- use_module(defeasible).
 :- use_module(vocabulary).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
+:- use_module(library(aggregate)).
+:- use_module(library(pairs)).
 
 %!  what_happens(+SceneProps:list, -Outcomes:list) is det.
 %!  what_happens(+SceneProps:list, +Options:list, -Outcomes:list) is det.
@@ -152,6 +157,101 @@ rule_reason(S, _, NL, R, Acc, [attacked(R, A)|Acc]) :-
     rule(A, _, NL), \+ superior(R, A), applicable(S, A, true), !.
 rule_reason(_, L, _, _, Acc, [looping(L)|Acc]).
 
+%!  why_brief(+SceneProps:list, +Literal, +Options, -Proof) is det.
+%
+%   As why/4 when Literal is concluded. Otherwise a short why-not,
+%   =|not_concluded(L, Reasons)|=, that names few rules however large the
+%   theory is, looking at the rules for Literal and for its complement
+%   (defeaters aside):
+%
+%     - [complement_definite(NL)] as why/4;
+%     - [complement_concluded(NL, R)]: rule R concludes the complement;
+%     - [conflict(A, B)]: rules A and B for opposite heads both apply and
+%       neither is superior to the other;
+%     - [attacked(A, B)]: A applies, and the rule B for the opposite head
+%       applies too and is not overridden by A;
+%     - [overridden(A, B)]: A applies and is overridden by B (a defeater,
+%       say), which applies;
+%     - [no_rule_either(L, NL)]: no rule concludes L or NL;
+%     - none_applies(L, NL) followed by up to three nearest(R, Missing):
+%       no rule for L or NL applies, and R are the rules that miss the
+%       fewest body literals in the scene (then the fewest that the scene
+%       contradicts, then in theory order); Missing lists each body literal
+%       that is not concluded as missing(B, V, Instead), V =false= or
+%       =undefined=, Instead the scene's proposition of B's dimension (or
+%       =none=);
+%     - [looping(L)] otherwise (a rule applies, yet nothing opposes it:
+%       ambiguity propagation or a loop).
+why_brief(Scene, L, Options, Proof) :-
+    semantics(Options, S),
+    with_scene(Scene, brief_proof(S, Scene, L, Proof)).
+
+brief_proof(S, Scene, L, Proof) :-
+    truth(S, defeasibly(S, L), V),
+    (   V == true
+    ->  positive_proof(S, L, [L], Proof)
+    ;   Proof = not_concluded(L, Reasons),
+        brief_reasons(S, Scene, L, Reasons)
+    ).
+
+brief_reasons(S, Scene, L, Reasons) :-
+    complement(L, NL),
+    findall(R, ( member(H, [L, NL]), rule(R, K, H), K \== defeater ), Rs),
+    (   truth(S, definitely(S, NL), true)
+    ->  Reasons = [complement_definite(NL)]
+    ;   truth(S, defeasibly(S, NL), true)
+    ->  deciding_rule(S, NL, R),
+        Reasons = [complement_concluded(NL, R)]
+    ;   Rs == []
+    ->  Reasons = [no_rule_either(L, NL)]
+    ;   findall(A, ( member(A, Rs), applicable(S, A, true) ), As),
+        As \== []
+    ->  (   member(A, As), opponent(S, A, B), \+ superior(A, B), \+ superior(B, A)
+        ->  Reasons = [conflict(A, B)]
+        ;   member(A, As), opponent(S, A, B), \+ superior(A, B)
+        ->  Reasons = [attacked(A, B)]
+        ;   member(A, As), opponent(S, A, B)
+        ->  Reasons = [overridden(A, B)]
+        ;   Reasons = [looping(L)]
+        )
+    ;   findall(key(N, C, I)-nearest(R, Ms),
+                ( nth1(I, Rs, R),
+                  missing(S, Scene, R, Ms), Ms \== [],
+                  length(Ms, N),
+                  aggregate_all(count, ( member(missing(_, _, P), Ms), P \== none ), C) ),
+                Keyed),
+        Keyed \== []
+    ->  keysort(Keyed, Sorted),
+        pairs_values(Sorted, Nearest),
+        (   length(Firsts, 3), append(Firsts, _, Nearest)
+        ->  true
+        ;   Firsts = Nearest
+        ),
+        Reasons = [none_applies(L, NL)|Firsts]
+    ;   Reasons = [looping(L)]
+    ).
+
+% opponent(+S, +A, -B): B is an applicable rule (or defeater) for the
+% complement of A's head.
+opponent(S, A, B) :-
+    rule(A, _, H), complement(H, NH),
+    rule(B, _, NH), applicable(S, B, true).
+
+% missing(+S, +Scene, +R, -Missing): the body literals of R not concluded.
+missing(S, Scene, R, Ms) :-
+    rule_body(R, Bs),
+    findall(missing(B, V, P),
+            ( member(B, Bs), truth(S, defeasibly(S, B), V), V \== true,
+              instead(Scene, B, P) ),
+            Ms).
+
+% instead(+Scene, +B, -P): the scene's proposition P of B's dimension, or none.
+instead(Scene, B, P) :-
+    (   proposition(B, D, _, _), member(P, Scene), P \== B, proposition(P, D, _, _)
+    ->  true
+    ;   P = none
+    ).
+
 %!  proof_text(+Proof, -Text:string) is det.
 %
 %   Proof in words, one sentence per step, separated by "; ".
@@ -213,12 +313,50 @@ reason_text(undecided_body(R, B), T) :-
 reason_text(attacked(R, A), T) :-
     rule_words(A, W),
     format(atom(T), "rule ~w is opposed by rule ~w, which it does not override", [R, W]).
+reason_text(conflict(A, B), T) :-
+    rule_words(A, WA), rule_words(B, WB),
+    format(atom(T), "rules ~w and ~w both apply and neither overrides the other", [WA, WB]).
+reason_text(no_rule_either(L, NL), T) :-
+    format(atom(T), "no rule concludes ~w or ~w", [L, NL]).
+reason_text(complement_concluded(NL, R), T) :-
+    (   R == fact
+    ->  format(atom(T), "its complement ~w is given", [NL])
+    ;   rule_words(R, W)
+    ->  format(atom(T), "its complement ~w is concluded by rule ~w", [NL, W])
+    ;   format(atom(T), "its complement ~w is concluded", [NL])
+    ).
+reason_text(overridden(A, B), T) :-
+    rule_words(A, WA), rule_words(B, WB),
+    format(atom(T), "rule ~w applies but is overridden by ~w", [WA, WB]).
+reason_text(none_applies(L, NL), T) :-
+    format(atom(T), "no rule for ~w or ~w applies", [L, NL]).
+reason_text(nearest(R, Ms), T) :-
+    rule_words(R, W),
+    maplist(missing_text, Ms, MTs),
+    atomic_list_concat(MTs, ', ', MT),
+    format(atom(T), "rule ~w also needs ~w", [W, MT]).
 reason_text(looping(L), T) :-
     format(atom(T), "the support for ~w is ambiguous or circular", [L]).
+
+missing_text(missing(B, V, P), T) :-
+    (   V == undefined
+    ->  format(atom(T), "~w (undecided)", [B])
+    ;   P == none
+    ->  T = B
+    ;   format(atom(T), "~w (instead of ~w)", [B, P])
+    ).
 
 %!  explain(+SceneProps:list, +Literal, +Options, -Text:string) is det.
 %
 %   why/4 in words.
 explain(Scene, L, Options, Text) :-
     why(Scene, L, Options, Proof),
+    proof_text(Proof, Text).
+
+%!  explain_brief(+SceneProps:list, +Literal, +Options, -Text:string) is det.
+%
+%   why_brief/4 in words: the same as explain/4 when Literal is
+%   concluded, a why-not of at most five sentences when it is not.
+explain_brief(Scene, L, Options, Text) :-
+    why_brief(Scene, L, Options, Proof),
     proof_text(Proof, Text).

@@ -44,4 +44,56 @@ test(scene_does_not_stay, [setup(setup), true(V == false)]) :-
     semantics([], S),
     truth(S, defeasibly(S, neg(no_spill)), V).
 
+test(brief_is_why_when_concluded, [setup(setup), true(Brief == Full)]) :-
+    explain_brief([pour_to_side], neg(no_spill), [], Brief),
+    explain([pour_to_side], neg(no_spill), [], Full).
+
+test(brief_complement_concluded, [setup(setup),
+                                  true(Reasons == [complement_concluded(neg(no_spill), r1)])]) :-
+    why_brief([pour_to_side], no_spill, [], not_concluded(no_spill, Reasons)).
+
+test(brief_conflict, [setup(setup), true(Reasons == [conflict(r2, r1)])]) :-
+    why_brief([pour_to_side, pour_centred], no_spill, [], not_concluded(_, Reasons)).
+
+test(brief_no_rule_either, [setup(setup),
+                            true(Reasons == [no_rule_either(source_clear_ever,
+                                                            neg(source_clear_ever))])]) :-
+    why_brief([], source_clear_ever, [], not_concluded(_, Reasons)).
+
+test(brief_nearest_first, [setup(setup),
+                           true(Reasons == [ none_applies(liquid_remains_in_destination,
+                                                          neg(liquid_remains_in_destination)),
+                                             nearest(r8, [missing(pour_centred, false, pour_to_side)]),
+                                             nearest(r7, [missing(end_low, false, none),
+                                                          missing(end_upright, false, none),
+                                                          missing(light_liquid, false, none)]) ])]) :-
+    why_brief([pour_to_side], liquid_remains_in_destination, [], not_concluded(_, Reasons)).
+
+test(brief_words, [setup(setup)]) :-
+    explain_brief([pour_to_side], liquid_remains_in_destination, [], Text),
+    once(sub_string(Text, _, _, _,
+                    "rule r8 (pour_centred => liquid_remains_in_destination) also needs \c
+                     pour_centred (instead of pour_to_side)")).
+
+% A theory of 40 rules for one literal, rule rI needing p0, ..., pI. In the
+% scene p0 none applies: the brief why-not names the three nearest, why/4
+% every rule.
+many_rules(File) :-
+    tmp_file_stream(text, File, Out),
+    forall(between(1, 40, I),
+           ( format(Out, "rule(r~w, defeasible, no_spill).~n", [I]),
+             forall(between(0, I, J), format(Out, "body(r~w, p~w).~n", [I, J])) )),
+    close(Out).
+
+test(brief_names_three_rules,
+     [ setup((many_rules(F), load_theory(F))), cleanup(delete_file(F)),
+       true(Reasons == [none_applies(no_spill, neg(no_spill)),
+                        nearest(r1, [missing(p1, false, none)]),
+                        nearest(r2, [missing(p1, false, none), missing(p2, false, none)]),
+                        nearest(r3, [missing(p1, false, none), missing(p2, false, none),
+                                     missing(p3, false, none)])]) ]) :-
+    why_brief([p0], no_spill, [], not_concluded(_, Reasons)),
+    why([p0], no_spill, [], not_concluded(_, Full)),
+    length(Full, 40).
+
 :- end_tests(queries).
