@@ -4,16 +4,20 @@
 learned theory). `conclusions(theory, semantics, engine)` gives the four
 kinds of conclusion. The Prolog side is theory/defeasible.pl (tabling
 under the well-founded semantics); the ASP side is theory/defeasible.lp.
+`assumptions(theory, props)` completes a question with the theory's
+ordinary pour; `what_happens` and `explain` answer it.
 """
 from __future__ import annotations
 
 import hashlib
 import os
+import re
 import tempfile
 from dataclasses import dataclass
+from functools import lru_cache
 from pathlib import Path
 
-from pantarhei.theory import THEORY_DIR, TheoryFileError
+from pantarhei.theory import THEORY_DIR, TheoryFileError, read_facts
 
 from .dfl import is_dfl, read_dfl
 from .errors import UserError
@@ -198,6 +202,75 @@ def conclusions(theory: Theory, semantics: Semantics = Semantics(),
 
 # -- Questions about pouring --------------------------------------------------
 
+_SETTING_INITIAL = re.compile(r"^\s*setting\(\s*initial\s*,\s*([a-z][A-Za-z0-9_]*)\s*\)\s*\.")
+
+
+def initial_antecedent(theory: Theory) -> list[str]:
+    """The theory's `setting(initial, P)` propositions, in file order: the
+    antecedent a_0 its exploration started from (and which every learned
+    rule body therefore contains, or a neighbour of). Read from the facts
+    the Theory keeps aside (`extra`) and from its native source file(s);
+    none for DFL files, theories built in Python, or hand-written ones
+    without such facts."""
+    found = [m.group(1) for m in map(_SETTING_INITIAL.match, theory.extra) if m]
+    for path in _source_paths(theory.source):
+        found.extend(_initial_of_file(str(path), *_stamp(path)))
+    return list(dict.fromkeys(found))
+
+
+def _source_paths(source: str) -> list[Path]:
+    """The files a Theory came from (`merge` joins their names with " + ")."""
+    if Path(source).is_file():
+        return [] if is_dfl(source) else [Path(source)]
+    return [Path(s) for s in source.split(" + ") if Path(s).is_file() and not is_dfl(s)]
+
+
+def _stamp(path: Path) -> tuple[int, int]:
+    st = path.stat()
+    return st.st_mtime_ns, st.st_size
+
+
+@lru_cache(maxsize=16)
+def _initial_of_file(path: str, _mtime: int, _size: int) -> tuple[str, ...]:
+    try:
+        facts = read_facts([path])
+    except TheoryFileError:
+        return ()
+    return tuple(str(args[1]) for args in facts.get("setting", ())
+                 if len(args) == 2 and args[0] == "initial" and isinstance(args[1], str))
+
+
+def assumptions(theory: Theory, props: list[str] | tuple[str, ...]) -> list[str]:
+    """The propositions to add to the question `props`, in order: the
+    theory's initial antecedent (`initial_antecedent`) for each dimension
+    the question leaves open, added one at a time in the theory's order and
+    skipped when it would make the antecedent invalid (bridge/validity.py).
+    `props` should be a valid antecedent; if it is not, nothing is added.
+    The scene to reason about is then `props + assumptions(theory, props)`."""
+    from pantarhei.oracle.vocabulary import load_vocabulary
+
+    from .validity import violations
+
+    initial = initial_antecedent(theory)
+    if not initial:
+        return []
+    vocab = load_vocabulary()
+    scene = list(props)
+    if violations(scene):
+        return []
+    taken = {vocab.propositions[p].dimension for p in scene if p in vocab.propositions}
+    added: list[str] = []
+    for p in initial:
+        prop = vocab.propositions.get(p)
+        if prop is None or prop.dimension in taken:
+            continue
+        if violations(scene + added + [p]):
+            continue
+        added.append(p)
+        taken.add(prop.dimension)
+    return added
+
+
 @dataclass(frozen=True)
 class Outcome:
     """What the theory says about one expectation in a scene."""
@@ -211,17 +284,22 @@ def _prolog_list(items) -> str:
     return "[" + ", ".join(items) + "]"
 
 
+def _prolog_options(semantics: Semantics) -> str:
+    return (f"[ambiguity({semantics.ambiguity}), team_defeat({str(semantics.team_defeat).lower()}), "
+            f"well_founded({str(semantics.well_founded).lower()})]")
+
+
 def what_happens(theory: Theory, props: list[str],
                  semantics: Semantics = Semantics()) -> list[Outcome]:
-    """The prediction for a scene: one Outcome per expectation, with reasons."""
+    """The prediction for a scene: one Outcome per expectation, with reasons
+    (for an undecided one, the brief why-not of queries:explain_brief/4)."""
     e = prolog_load(theory)
     e.use_module("queries")
     scene = _prolog_list(props)
-    sem = f"[ambiguity({semantics.ambiguity}), team_defeat({str(semantics.team_defeat).lower()}), " \
-          f"well_founded({str(semantics.well_founded).lower()})]"
+    sem = _prolog_options(semantics)
     goal = (f"queries:what_happens({scene}, {sem}, Os), "
             f"findall(S, (member(outcome(E, V, R), Os), "
-            f"(V == fails -> L = neg(E) ; L = E), queries:explain({scene}, L, {sem}, T), "
+            f"(V == fails -> L = neg(E) ; L = E), queries:explain_brief({scene}, L, {sem}, T), "
             f"format(string(S), '~w\\t~w\\t~w\\t~s', [E, V, R, T])), Ss)")
     r = e.once(goal)
     out = []
@@ -232,11 +310,13 @@ def what_happens(theory: Theory, props: list[str],
 
 
 def explain(theory: Theory, props: list[str], literal: str,
-            semantics: Semantics = Semantics()) -> str:
-    """Why (or why not) the theory concludes `literal` in the scene, in words."""
+            semantics: Semantics = Semantics(), brief: bool = False) -> str:
+    """Why (or why not) the theory concludes `literal` in the scene, in
+    words, sentences separated by "; ". A why-not names every rule for the
+    literal (queries:explain/4), or with `brief` at most three
+    (queries:explain_brief/4)."""
     e = prolog_load(theory)
     e.use_module("queries")
-    sem = f"[ambiguity({semantics.ambiguity}), team_defeat({str(semantics.team_defeat).lower()}), " \
-          f"well_founded({str(semantics.well_founded).lower()})]"
-    r = e.once(f"queries:explain({_prolog_list(props)}, {literal}, {sem}, T)")
+    pred = "explain_brief" if brief else "explain"
+    r = e.once(f"queries:{pred}({_prolog_list(props)}, {literal}, {_prolog_options(semantics)}, T)")
     return prolog_text(r["T"])
