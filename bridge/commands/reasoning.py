@@ -21,6 +21,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--why", metavar="LITERAL",
                    help="explain why the theory concludes LITERAL in the scene, or why not "
                         "(an expectation, or neg(E))")
+    p.add_argument("--no-assume", action="store_true",
+                   help="do not complete the scene with the theory's ordinary pour (its initial "
+                        "antecedent) in the dimensions the question leaves open")
     p.add_argument("--json", action="store_true", help="print JSON")
     p.set_defaults(run=ask)
 
@@ -78,20 +81,23 @@ def ask(args: argparse.Namespace) -> int:
         raise UserError("give a scene: a question in words, or --props P1,P2")
     props = require_valid(props)
     theory = reasoning.load(args.theory)
+    assumed = [] if args.no_assume else reasoning.assumptions(theory, props)
+    scene = props + assumed
     if args.why:
         from ..planning import check_goals
 
         (lit,) = check_goals([args.why], theory, reachable=False)
-        words = reasoning.explain(theory, props, lit)
+        words = reasoning.explain(theory, scene, lit)
         if args.json:
-            print(json.dumps({"understood": props, "literal": lit, "why": words}, indent=1))
+            print(json.dumps({"understood": props, "assumed": assumed, "literal": lit, "why": words},
+                             indent=1))
         else:
-            print(f"understood: {', '.join(props)}")
+            _print_scene(props, assumed, glosses=False)
             print(words.replace("; ", "\n  "))
         return 0
-    outcomes = reasoning.what_happens(theory, props)
+    outcomes = reasoning.what_happens(theory, scene)
     if args.json:
-        print(json.dumps({"understood": props,
+        print(json.dumps({"understood": props, "assumed": assumed,
                           "outcomes": {o.expectation: o.value for o in outcomes},
                           "reasons": {o.expectation: {"rule": o.rule, "why": o.reason}
                                       for o in outcomes}}, indent=1))
@@ -99,19 +105,41 @@ def ask(args: argparse.Namespace) -> int:
     from pantarhei.oracle.vocabulary import load_vocabulary
 
     vocab = load_vocabulary()
-    print(f"understood: {', '.join(props)}")
-    for p in props:
-        print(f"  {p}: {vocab.propositions[p].gloss}")
+    _print_scene(props, assumed, glosses=True)
     print(f"theory: {theory.source}")
     glosses = {e.name: e.gloss for e in vocab.expectations}
+    why_not = False
     for o in outcomes:
         mark = {"holds": "yes", "fails": "no ", "unknown": " ? "}[o.value]
         print(f"  [{mark}] {o.expectation:30} {glosses[o.expectation]}")
         if o.value != "unknown":
             print(f"        because {o.reason}")
         elif "no rule concludes" not in o.reason:
-            print(f"        why not: {o.reason.split('; ', 1)[-1]}")
+            first, *more = o.reason.split("; ")[1:] or [o.reason]
+            print(f"        why not: {first}")
+            for line in more:
+                print(f"          {line}")
+            why_not = True
+    if why_not:
+        print("(ask again with --why E to see every rule for the expectation E)")
     return 0
+
+
+def _print_scene(props: list[str], assumed: list[str], glosses: bool) -> None:
+    """The propositions understood from the question, then those assumed."""
+    from pantarhei.oracle.vocabulary import load_vocabulary
+
+    vocab = load_vocabulary()
+    print(f"understood: {', '.join(props)}")
+    if glosses:
+        for p in props:
+            print(f"  {p}: {vocab.propositions[p].gloss}")
+    if assumed:
+        print("assumed (the theory's ordinary pour, where the question says nothing; "
+              f"--no-assume to drop): {', '.join(assumed)}")
+        if glosses:
+            for p in assumed:
+                print(f"  {p}: {vocab.propositions[p].gloss}")
 
 
 # -- plan ---------------------------------------------------------------------

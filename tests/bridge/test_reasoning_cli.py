@@ -1,6 +1,7 @@
 """`pantarhei ask`, `plan` and `conclusions`, run as a user runs them."""
 from __future__ import annotations
 
+import itertools
 import json
 from pathlib import Path
 
@@ -114,3 +115,117 @@ def test_without_a_theory_the_commands_say_how_to_get_one(cli, tmp_path: Path) -
         pytest.skip("a learned theory is installed")
     line = assert_one_line_error(cli("ask", "pour from the side"))
     assert "no learned theory yet" in line and "--theory" in line
+
+
+# -- the theory's ordinary pour, assumed where the question says nothing -------
+
+# a_0 of the exploration in file order; r1 needs all of it, r2 the side instead
+# of the centre, r3 a pour below the rim (where the centre would be invalid).
+ORDINARY = """\
+setting(seed, 1).
+setting(initial, pour_mid_height).
+setting(initial, pour_centred).
+setting(initial, pour_steeply_tilted).
+rule(r1, defeasible, no_spill).
+body(r1, light_liquid).
+body(r1, pour_mid_height).
+body(r1, pour_centred).
+body(r1, pour_steeply_tilted).
+rule(r2, defeasible, neg(no_spill)).
+body(r2, pour_to_side).
+body(r2, pour_mid_height).
+body(r2, pour_steeply_tilted).
+rule(r3, defeasible, liquid_leaves_source).
+body(r3, pour_below_rim).
+body(r3, pour_steeply_tilted).
+"""
+
+
+@pytest.fixture
+def ordinary(tmp_path: Path) -> str:
+    f = tmp_path / "ordinary.pl"
+    f.write_text(ORDINARY)
+    return str(f)
+
+
+def test_ask_assumes_the_ordinary_pour_where_the_question_says_nothing(cli, ordinary: str) -> None:
+    r = cli("ask", "--props", "light_liquid", "--theory", ordinary)
+    assert r.code == 0, r.err
+    lines = r.out.splitlines()
+    assert lines[0] == "understood: light_liquid"
+    assumed = next(line for line in lines if line.startswith("assumed"))
+    assert assumed.endswith(": pour_mid_height, pour_centred, pour_steeply_tilted")
+    assert "--no-assume" in assumed
+    assert "[yes] no_spill" in r.out and "rule r1" in r.out
+    out = json.loads(cli("ask", "--props", "light_liquid", "--theory", ordinary, "--json").out)
+    assert out["understood"] == ["light_liquid"]
+    assert out["assumed"] == ["pour_mid_height", "pour_centred", "pour_steeply_tilted"]
+    assert out["outcomes"]["no_spill"] == "holds"
+
+
+def test_ask_in_words_assumes_only_the_open_dimensions(cli, ordinary: str) -> None:
+    out = json.loads(cli("ask", "pour from the side", "--theory", ordinary, "--json").out)
+    assert out["understood"] == ["pour_to_side"]
+    assert out["assumed"] == ["pour_mid_height", "pour_steeply_tilted"]
+    assert out["outcomes"]["no_spill"] == "fails"
+    assert out["reasons"]["no_spill"]["rule"] == "r2"
+
+
+def test_no_assume_asks_the_bare_question(cli, ordinary: str) -> None:
+    r = cli("ask", "--props", "light_liquid", "--theory", ordinary, "--no-assume")
+    assert r.code == 0, r.err
+    assert "assumed" not in r.out
+    assert "[ ? ] no_spill" in r.out
+    out = json.loads(cli("ask", "--props", "light_liquid", "--theory", ordinary, "--no-assume",
+                         "--json").out)
+    assert out["assumed"] == []
+    assert out["outcomes"]["no_spill"] == "unknown"
+
+
+def test_an_assumption_that_breaks_validity_is_skipped(cli, ordinary: str) -> None:
+    # pour_mid_height: the height is given; pour_centred below the rim: inside_destination
+    out = json.loads(cli("ask", "--props", "pour_below_rim", "--theory", ordinary, "--json").out)
+    assert out["assumed"] == ["pour_steeply_tilted"]
+    assert out["outcomes"]["liquid_leaves_source"] == "holds"
+
+
+def test_ask_why_uses_the_same_assumptions(cli, ordinary: str) -> None:
+    r = cli("ask", "--props", "light_liquid", "--theory", ordinary, "--why", "no_spill")
+    assert r.code == 0, r.err
+    assert "assumed" in r.out and "no_spill by rule r1" in r.out
+    out = json.loads(cli("ask", "--props", "light_liquid", "--theory", ordinary, "--why", "no_spill",
+                         "--no-assume", "--json").out)
+    assert out["assumed"] == [] and "no_spill is not concluded" in out["why"]
+
+
+def test_a_theory_without_settings_assumes_nothing(cli) -> None:
+    for theory in (["--theory", LEARNED], ["--theory", LEARNED, "--theory", HAND]):
+        r = cli("ask", "--props", "pour_to_side", *theory, "--json")
+        assert r.code == 0, r.err
+        assert json.loads(r.out)["assumed"] == []
+
+
+# -- a short why-not on a large theory --------------------------------------------
+
+def test_why_not_names_few_rules_however_many_there_are(cli, tmp_path: Path) -> None:
+    # r0 misses one proposition of the scene, r1..r150 two each
+    lines = ["rule(r0, defeasible, no_spill).", "body(r0, pour_mid_height).", "body(r0, pour_near_rim)."]
+    for i in range(1, 151):
+        head = "no_spill" if i % 2 else "neg(no_spill)"
+        lines += [f"rule(r{i}, defeasible, {head}).", f"body(r{i}, pour_near_rim).",
+                  f"body(r{i}, pour_mid_height).", f"body(r{i}, other{i})."]
+    f = tmp_path / "many.pl"
+    f.write_text("\n".join(lines) + "\n")
+    r = cli("ask", "--props", "pour_to_side,pour_mid_height", "--theory", str(f))
+    assert r.code == 0, r.err
+    out = r.out.splitlines()
+    at = out.index(next(line for line in out if "[ ? ] no_spill" in line))
+    block = list(itertools.takewhile(lambda line: line.startswith(" " * 8), out[at + 1:]))
+    assert block[0] == "        why not: no rule for no_spill or neg(no_spill) applies"
+    assert block[1].startswith("          rule r0 (pour_mid_height, pour_near_rim => no_spill) "
+                               "also needs pour_near_rim (instead of pour_to_side)")
+    assert len(block) <= 4 and len(r.out) < 3000, r.out
+    # ... and --why still lists every rule for the literal
+    why = cli("ask", "--props", "pour_to_side,pour_mid_height", "--theory", str(f), "--why", "no_spill")
+    assert why.code == 0, why.err
+    assert sum("does not apply" in line for line in why.out.splitlines()) == 76
