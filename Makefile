@@ -10,7 +10,7 @@ PLUNIT := $(wildcard theory/*.plt theory/*/*.plt)
 comma  := ,
 space  := $(subst ,, )
 
-.PHONY: setup system demo test test-python test-prolog bench clean
+.PHONY: setup system demo evaluate test test-python test-prolog bench clean
 
 setup: system $(STAMP)
 
@@ -31,6 +31,10 @@ $(STAMP): pyproject.toml requirements.lock
 
 demo: setup
 	$(VENV)/bin/pantarhei demo
+
+# Measure the learned theory against the oracle and write report/.
+evaluate: setup
+	$(VENV)/bin/pantarhei evaluate
 
 test: setup test-python test-prolog
 

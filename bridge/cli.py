@@ -13,7 +13,7 @@ from typing import Sequence
 from .errors import MissingEngine, TheoryFileError, UserError
 
 #: Modules of pantarhei.bridge.commands, in the order `--help` lists them.
-COMMANDS = ("vocabulary", "demo", "oracle", "explore", "reasoning")
+COMMANDS = ("vocabulary", "demo", "oracle", "explore", "reasoning", "evaluate")
 
 
 class _Parser(argparse.ArgumentParser):

@@ -53,9 +53,13 @@ class Accuracy:
         return float(self.correct.sum() / self.decided.sum()) if self.decided.sum() else float("nan")
 
     def as_dict(self) -> dict:
+        """JSON-ready: an accuracy with nothing decided is None."""
+        def num(x: float) -> float | None:
+            return None if np.isnan(x) else float(x)
+
         return {"scenes": self.scenes, "coverage": self.overall_coverage,
-                "accuracy": self.overall_accuracy,
-                "per_expectation": {e: {"coverage": float(c), "accuracy": float(a)}
+                "accuracy": num(self.overall_accuracy),
+                "per_expectation": {e: {"coverage": float(c), "accuracy": num(a)}
                                     for e, c, a in zip(self.expectations, self.coverage, self.accuracy)}}
 
 

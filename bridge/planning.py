@@ -36,6 +36,22 @@ def parse_goal(goal: str) -> str:
     return g
 
 
+def goals_met(scores, goals: list[str]):
+    """Per row of oracle scores (n x 9): whether every goal literal was met
+    (an expectation's score above 1/2, or for neg(E) at most 1/2)."""
+    import numpy as np
+
+    names = load_vocabulary().expectation_names
+    scores = np.atleast_2d(np.asarray(scores, dtype=float))
+    met = np.all(np.isfinite(scores), axis=1)
+    for g in goals:
+        lit = parse_goal(g)
+        negated = lit.startswith("neg(")
+        col = names.index(complement(lit) if negated else lit)
+        met &= (scores[:, col] <= 0.5) if negated else (scores[:, col] > 0.5)
+    return met
+
+
 def check_goals(goals: list[str], theory: Theory, reachable: bool = True) -> list[str]:
     """The goal literals; UserError for an unknown expectation, or for a
     goal literal that no rule of the theory can conclude."""

@@ -1,0 +1,58 @@
+"""`pantarhei evaluate`: measure a learned theory against its oracle and
+write the report."""
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from .. import exploration
+from ..errors import UserError
+
+DEFAULT_REPORT = Path("report")
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("evaluate", help="measure a learned theory against its oracle: held-out "
+                                        "scenes, a decision tree, random exploration, plans")
+    p.add_argument("--theory", default=str(exploration.DEFAULT_OUT),
+                   help="the learned theory (default theory/learned/pouring.pl)")
+    p.add_argument("--store", default=str(exploration.DEFAULT_STORE),
+                   help=f"SQLite file of simulations (default {exploration.DEFAULT_STORE})")
+    p.add_argument("--out", default=str(DEFAULT_REPORT),
+                   help=f"directory of the report (default {DEFAULT_REPORT}/)")
+    p.add_argument("--scenes", type=int, default=150,
+                   help="held-out scenes per set, one pour each (default 150)")
+    p.add_argument("--verify", type=int, default=10,
+                   help="pours simulated per plan (default 10)")
+    p.add_argument("--paper-samples", type=int, default=20,
+                   help="pours simulated per example rule of the paper (default 20)")
+    p.add_argument("--seed", type=int, default=1, help="seed of every random choice (default 1)")
+    p.add_argument("--no-gifs", action="store_true", help="do not render pours as GIFs")
+    p.add_argument("--executor", choices=("local", "ray", "inline"), default="local")
+    p.add_argument("--workers", type=int, help="worker processes (default: one per core)")
+    p.add_argument("--ray-address", metavar="ADDR")
+    p.add_argument("--no-progress", action="store_true", help="no progress bars")
+    p.set_defaults(run=evaluate)
+
+
+def evaluate(args: argparse.Namespace) -> int:
+    from ..evaluate import Options, evaluate as run
+    from ..report import headline, write
+
+    theory = Path(args.theory)
+    if not theory.is_file():
+        raise UserError(f"{theory}: no such theory (learn one with `pantarhei explore`)")
+    if args.workers is not None and args.workers < 1:
+        raise UserError("--workers must be at least 1")
+    out = Path(args.out)
+    if out.exists() and not out.is_dir():
+        raise UserError(f"{out}: not a directory")
+    ev = run(Options(theory=theory, store=Path(args.store), scenes=args.scenes, seed=args.seed,
+                     verify=args.verify, paper_samples=args.paper_samples,
+                     executor=args.executor, workers=args.workers,
+                     ray_address=args.ray_address, progress=not args.no_progress))
+    report = write(ev, out, gifs=not args.no_gifs)
+    for measure, value, target, met in headline(ev):
+        print(f"{'  ' if met else '! '}{measure}: {value} (target {target})")
+    print(f"report: {report}")
+    return 0

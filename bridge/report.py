@@ -1,0 +1,283 @@
+"""The evaluation report: Markdown with PNG plots and GIFs of pours.
+
+`write(evaluation, out_dir)` writes `README.md` (headline figures against
+their targets, the curves, the held-out tables, the paper's three rules, the
+plans, the learned rules in words), `evaluation.json`, the plots, the
+exploration trace plot and, for the PyBullet oracle, GIFs of the pours
+behind three rules.
+"""
+from __future__ import annotations
+
+import json
+import os
+import shutil
+from pathlib import Path
+from typing import Any, Sequence
+
+import numpy as np
+
+from pantarhei.oracle.vocabulary import load_vocabulary
+
+from .evaluate import Evaluation
+
+#: The issue's targets, as fractions.
+TARGETS = {"behaviours_ratio": 2.0, "accuracy": 0.90, "coverage": 0.90, "tree_gap": 0.05,
+           "plans": 0.90}
+
+
+def _pct(x: float | None) -> str:
+    return "n/a" if x is None or (isinstance(x, float) and np.isnan(x)) else f"{100 * x:.1f}%"
+
+
+def _atomic_write(path: Path, text: str) -> None:
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    tmp.write_text(text, encoding="utf-8")
+    os.replace(tmp, path)
+
+
+def headline(ev: Evaluation) -> list[tuple[str, str, str, bool]]:
+    """(measure, measured, target, met) rows."""
+    rows = []
+    cur, rnd = ev.behaviours.get("curiosity", 0), ev.behaviours.get("random", 0)
+    ratio = cur / rnd if rnd else float("inf")
+    rows.append((f"distinct behaviours at {ev.budget} pours: curiosity / random",
+                 f"{cur} / {rnd} = {ratio:.2f}x", "at least 2x", ratio >= TARGETS["behaviours_ratio"]))
+    for name in ("near", "uniform"):
+        h = ev.heldout.get(name)
+        if not h:
+            continue
+        th, tree = h["curiosity_theory"], h["curiosity_tree"]
+        what = {"near": "near explored scenes", "uniform": "uniformly random scenes"}[name]
+        acc, cov, tacc = th["accuracy"], th["coverage"], tree["accuracy"]
+        acc = float("nan") if acc is None else acc
+        tacc = float("nan") if tacc is None else tacc
+        rows.append((f"held-out accuracy where the theory decides ({what}, {h['scenes']} scenes)",
+                     _pct(acc), "at least 90%", bool(acc == acc and acc >= TARGETS["accuracy"])))
+        rows.append((f"held-out coverage ({what})", _pct(cov), "at least 90%",
+                     cov >= TARGETS["coverage"]))
+        gap = tacc - acc if acc == acc else float("nan")
+        rows.append((f"decision tree accuracy, same simulations ({what})",
+                     f"{_pct(tacc)} ({'+' if gap >= 0 else ''}{100 * gap:.1f} points)"
+                     if gap == gap else _pct(tacc),
+                     "theory within 5 points", bool(gap == gap and gap <= TARGETS["tree_gap"])))
+    done = sum(p.get("simulated", 0) for p in ev.plans)
+    rows.append((f"verified plans reach their goals ({len(ev.plans)} plans, {done} pours)",
+                 _pct(ev.plan_rate), "at least 90%",
+                 bool(ev.plan_rate == ev.plan_rate and ev.plan_rate >= TARGETS["plans"])))
+    return rows
+
+
+# -- plots ---------------------------------------------------------------------
+
+def _plt():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def _save(fig, path: Path) -> None:
+    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
+    fig.savefig(tmp, format="png")
+    _plt().close(fig)
+    os.replace(tmp, path)
+
+
+def plot_behaviours(ev: Evaluation, path: Path) -> None:
+    plt = _plt()
+    c = ev.curves
+    fig, ax = plt.subplots(figsize=(6.4, 3.6), dpi=120)
+    ax.plot(c["budget"], c["curiosity"]["behaviours"], marker="o", markersize=3,
+            label="curiosity (Algorithm 1)", color="#c0392b")
+    ax.plot(c["budget"], c["random"]["behaviours"], marker="s", markersize=3,
+            label="random valid antecedents", color="#2c7fb8")
+    ax.set_xlabel("simulation budget (pours)")
+    ax.set_ylabel("distinct behaviours")
+    ax.set_title("Distinct consequents discovered")
+    ax.grid(alpha=0.3)
+    ax.legend()
+    fig.tight_layout()
+    _save(fig, path)
+
+
+def plot_heldout(ev: Evaluation, path: Path) -> None:
+    plt = _plt()
+    c = ev.curves
+    sets = [k for k in ("near", "uniform") if k in ev.heldout]
+    fig, axes = plt.subplots(1, len(sets), figsize=(5.2 * len(sets), 3.8), dpi=120, squeeze=False)
+    for ax, name in zip(axes[0], sets):
+        for method, colour in (("curiosity", "#c0392b"), ("random", "#2c7fb8")):
+            acc = [np.nan if a is None else a for a in c[method]["accuracy"][name]]
+            ax.plot(c["budget"], acc, color=colour, label=f"{method}: accuracy where decided")
+            ax.plot(c["budget"], c[method]["coverage"][name], color=colour, linestyle="--",
+                    label=f"{method}: coverage")
+        ax.set_ylim(-0.02, 1.02)
+        ax.set_xlabel("simulation budget (pours)")
+        ax.set_title(f"held-out, {name} ({ev.heldout[name]['scenes']} scenes)")
+        ax.grid(alpha=0.3)
+    axes[0][0].legend(fontsize=7, loc="lower right")
+    fig.tight_layout()
+    _save(fig, path)
+
+
+def plot_expectations(ev: Evaluation, path: Path, name: str = "near") -> None:
+    plt = _plt()
+    h = ev.heldout[name]
+    exps = list(h["curiosity_theory"]["per_expectation"])
+    x = np.arange(len(exps))
+    th = h["curiosity_theory"]["per_expectation"]
+    tree = h["curiosity_tree"]["per_expectation"]
+    fig, ax = plt.subplots(figsize=(8, 3.8), dpi=120)
+    ax.bar(x - 0.27, [np.nan if th[e]["accuracy"] is None else th[e]["accuracy"] for e in exps], 0.27, label="theory: accuracy where decided",
+           color="#c0392b")
+    ax.bar(x, [th[e]["coverage"] for e in exps], 0.27, label="theory: coverage", color="#f4a582")
+    ax.bar(x + 0.27, [np.nan if tree[e]["accuracy"] is None else tree[e]["accuracy"] for e in exps], 0.27, label="decision tree: accuracy",
+           color="#2c7fb8")
+    ax.set_xticks(x, [e.replace("_", " ") for e in exps], rotation=35, ha="right", fontsize=7)
+    ax.set_ylim(0, 1.05)
+    ax.set_title(f"per expectation, held-out {name} scenes")
+    ax.legend(fontsize=7, loc="lower left")
+    fig.tight_layout()
+    _save(fig, path)
+
+
+# -- words ---------------------------------------------------------------------
+
+def antecedent_words(props: Sequence[str]) -> str:
+    v = load_vocabulary()
+    return "; ".join(v.propositions[p].gloss for p in props)
+
+
+def consequent_words(row: Sequence[bool]) -> str:
+    v = load_vocabulary()
+    failing = [e.name.replace("_", " ") for e, holds in zip(v.expectations, row) if not holds]
+    if not failing:
+        return "everything as expected"
+    return "not: " + ", ".join(failing)
+
+
+def rules_table(ev: Evaluation) -> list[str]:
+    lines = ["| antecedent | when (in words) | then |", "|---|---|---|"]
+    rows = ev.explored_consequents if ev.explored_consequents is not None else []
+    for i, (a, row) in enumerate(zip(ev.explored, rows), start=1):
+        lines.append(f"| a{i} | {antecedent_words(a)} | {consequent_words(row)} |")
+    return lines
+
+
+def gif_choices(ev: Evaluation, k: int = 3) -> list[int]:
+    """Indices of explored antecedents whose pours to draw: the first of
+    each distinct behaviour, then the earliest others."""
+    rows = ev.explored_consequents
+    if rows is None or not len(rows):
+        return []
+    picked, seen = [], set()
+    for i, r in enumerate(rows):
+        if tuple(r) not in seen:
+            seen.add(tuple(r))
+            picked.append(i)
+    picked += [i for i in range(len(rows)) if i not in picked]
+    return picked[:k]
+
+
+def render_gifs(ev: Evaluation, out: Path, k: int = 3) -> list[tuple[int, Path]]:
+    from pantarhei.oracle.render import render
+
+    done = []
+    for i in gif_choices(ev, k):
+        path = out / f"pour_a{i + 1}.gif"
+        render(ev.best_samples[i], path, fps=10, width=320, height=240)
+        done.append((i, path))
+    return done
+
+
+# -- the report ----------------------------------------------------------------
+
+def write(ev: Evaluation, out: Path, gifs: bool = True, command: str = "make evaluate") -> Path:
+    out.mkdir(parents=True, exist_ok=True)
+    _atomic_write(out / "evaluation.json", json.dumps(ev.as_dict(), indent=1) + "\n")
+    plot_behaviours(ev, out / "behaviours.png")
+    plot_heldout(ev, out / "heldout.png")
+    if "near" in ev.heldout and ev.heldout["near"]["scenes"]:
+        plot_expectations(ev, out / "expectations.png")
+    trace = Path(ev.theory).with_suffix(".trace.png")
+    if trace.exists():
+        shutil.copyfile(trace, out / "exploration.png")
+    drawn = render_gifs(ev, out) if gifs and ev.oracle == "pybullet" else []
+
+    s = ev.settings
+    L = [f"# Evaluation of `{ev.theory}`", "",
+         f"Measured by `{command}` with the {ev.oracle} oracle (version "
+         f"{s.get('oracle_version', '?')}). The theory was learned with seed {s.get('seed')}, "
+         f"{s.get('explored')} explored antecedents of {s.get('samples')} pours each "
+         f"({ev.budget} pours), qualify `{s.get('qualify')}`. All numbers below are in "
+         "`evaluation.json`.", "",
+         "## Headline", "", "| measure | measured | target | met |", "|---|---|---|---|"]
+    for measure, value, target, met in headline(ev):
+        L.append(f"| {measure} | {value} | {target} | {'yes' if met else '**no**'} |")
+    L += ["", "## Curiosity against random exploration", "",
+          f"Random exploration spends the same budget ({ev.budget} pours) on "
+          f"{len(ev.explored)} uniformly random valid antecedents, and builds rules the same way "
+          "(equation (1), then qualify). A behaviour is a distinct consequent: the vector of "
+          "the nine verdicts.", "", "![distinct behaviours](behaviours.png)", ""]
+    L += ["## Held-out scenes", "",
+          "Each held-out scene is a valid antecedent that neither exploration explored, "
+          "sampled once and simulated. *uniform*: drawn uniformly from all valid antecedents. "
+          "*near*: an explored antecedent with one or two propositions added. The theory "
+          "decides an expectation when SWI-Prolog concludes it or its negation; the decision "
+          "tree (scikit-learn, trained on the same simulations, one-hot antecedents as "
+          "features) always decides.", ""]
+    L += ["| scenes | propositions per scene | theory: accuracy | theory: coverage | "
+          "tree: accuracy | random theory: accuracy | random theory: coverage | random tree: accuracy |",
+          "|---|---|---|---|---|---|---|---|"]
+    for name, h in ev.heldout.items():
+        L.append(f"| {name} ({h['scenes']}) | {h['mean_propositions']:.1f} | "
+                 f"{_pct(h['curiosity_theory']['accuracy'])} | {_pct(h['curiosity_theory']['coverage'])} | "
+                 f"{_pct(h['curiosity_tree']['accuracy'])} | {_pct(h['random_theory']['accuracy'])} | "
+                 f"{_pct(h['random_theory']['coverage'])} | {_pct(h['random_tree']['accuracy'])} |")
+    L += ["", "![held-out accuracy and coverage over the budget](heldout.png)", ""]
+    if (out / "expectations.png").exists():
+        L += ["![per expectation](expectations.png)", ""]
+    L += ["## The paper's three example rules", "",
+          "Each scene is asked of the theory as `pantarhei ask` reads it (open dimensions filled "
+          "with the theory's ordinary pour, shown as assumed), and simulated.", "",
+          "| the paper | learned rule | the theory says | the oracle: share of pours where the paper's rule holds |",
+          "|---|---|---|---|"]
+    for r in ev.paper_rules:
+        scene = ", ".join(f"`{p}`" for p in r["scene"])
+        assumed = f" (assumed {', '.join(r['assumed'])})" if r["assumed"] else ""
+        learned = ", ".join(f"`{x}`" for x in r["learned"]) or "not learned"
+        share = (f"{_pct(r['oracle_share'])} of {r['simulated']}"
+                 if r.get("oracle_share") is not None else "not simulated")
+        L.append(f"| {r['paper']}: {scene} → `{r['literal']}` | {learned} | "
+                 f"`{r['theory_says']}`{assumed} | {share} |")
+    L += ["", "## Plans", "",
+          "For each goal the theory can reach (each expectation, its negation, and all nine "
+          "together), the best plan from `pantarhei plan`, sampled and simulated.", "",
+          "| goals | plan (manners chosen) | pours meeting the goals |", "|---|---|---|"]
+    for p in ev.plans:
+        goals = "all nine expectations" if len(p["goals"]) > 1 else f"`{p['goals'][0]}`"
+        met = f"{p['met']} of {p['simulated']}" if "simulated" in p else "not simulated"
+        L.append(f"| {goals} | {', '.join(p['plan']) or '(nothing to choose)'} | {met} |")
+    if not ev.plans:
+        L.append("| (no goal reachable) | | |")
+    L += ["", "## The learned rules", "",
+          "One row per explored antecedent (its nine rules): what fails, in words.", ""]
+    L += rules_table(ev)
+    if (out / "exploration.png").exists():
+        L += ["", "## The exploration", "", "![exploration trace](exploration.png)"]
+    if drawn:
+        L += ["", "## Pours behind three rules", "",
+              "The simulation with the largest weight for each antecedent, rendered by "
+              "PyBullet's software renderer.", ""]
+        for i, path in drawn:
+            L += [f"**a{i + 1}**: {antecedent_words(ev.explored[i])}. Then: "
+                  f"{consequent_words(ev.explored_consequents[i])}.", "",
+                  f"![pour a{i + 1}]({path.name})", ""]
+    L += ["", "## Time and simulations", "", "| stage | pours simulated (not in the store) | seconds |",
+          "|---|---|---|"]
+    for k, sec in ev.seconds.items():
+        L.append(f"| {k} | {ev.simulations.get(k, '')} | {sec} |")
+    _atomic_write(out / "README.md", "\n".join(L) + "\n")
+    return out / "README.md"

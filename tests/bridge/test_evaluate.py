@@ -1,0 +1,159 @@
+"""`pantarhei evaluate` on theories learned from the synthetic oracle: the
+whole evaluation runs in seconds, against analytic scores."""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pantarhei.bridge import evaluate as E
+from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.evaluation import distinct_behaviours
+from pantarhei.bridge.validity import violations
+from pantarhei.oracle.vocabulary import load_vocabulary
+from tests.conftest import assert_one_line_error, run_cli
+
+FAST = ["--oracle", "synthetic", "--executor", "inline", "--no-progress"]
+
+
+@pytest.fixture(scope="module")
+def learned(tmp_path_factory) -> tuple[Path, Path]:
+    d = tmp_path_factory.mktemp("learned")
+    r = run_cli("explore", *FAST, "--max-rules", "6", "--samples", "12", "--out",
+                str(d / "t.pl"), "--store", str(d / "s.sqlite"))
+    assert r.code == 0, r.err
+    return d / "t.pl", d / "s.sqlite"
+
+
+@pytest.fixture(scope="module")
+def evaluated(learned, tmp_path_factory) -> tuple[E.Evaluation, Path]:
+    theory, store = learned
+    opts = E.Options(theory=theory, store=store, scenes=25, seed=3, verify=4, paper_samples=5,
+                     executor="inline", progress=False)
+    return E.evaluate(opts), store
+
+
+def test_read_learned_finds_the_explored_antecedents_in_order(learned):
+    theory, _ = learned
+    L = E.read_learned(theory)
+    assert len(L.antecedents) == 6
+    trace = [json.loads(line) for line in theory.with_suffix(".trace.jsonl").read_text().splitlines()]
+    assert [tuple(sorted(t["antecedent"])) for t in trace] == L.antecedents
+    assert L.setting("oracle") == "synthetic" and L.setting("samples") == 12
+
+
+def test_rules_rebuilt_from_the_store_are_the_theory_prolog_wrote(evaluated, learned):
+    ev, _ = evaluated
+    L = E.read_learned(learned[0])
+    names = load_vocabulary().expectation_names
+    for i, row in enumerate(ev.explored_consequents, start=1):
+        for e, holds in zip(names, row):
+            assert L.theory.rule(f"r{i}_{e}").head == (e if holds else f"neg({e})")
+    assert ev.behaviours["curiosity"] == distinct_behaviours(ev.explored_consequents)
+    assert ev.curves["curiosity"]["behaviours"][-1] == ev.behaviours["curiosity"]
+
+
+def test_curves_cover_the_budget_and_never_lose_behaviours_of_random_exploration(evaluated):
+    ev, _ = evaluated
+    c = ev.curves
+    assert c["budget"] == [12 * k for k in range(1, 7)]
+    for method in ("curiosity", "random"):
+        assert len(c[method]["behaviours"]) == 6
+        for name in ("uniform", "near"):
+            assert all(0 <= x <= 1 for x in c[method]["coverage"][name])
+    assert ev.simulations["exploration"] == 0          # all of them came from the store
+    assert ev.simulations["random exploration"] == 6 * 12
+
+
+def test_held_out_scenes_are_valid_and_never_explored(evaluated):
+    ev, _ = evaluated
+    near = E.near_antecedents(ev.explored, 20, 5, set(ev.explored))
+    assert len(near) == 20 and len(set(near)) == 20
+    for a in near:
+        assert a not in ev.explored and not violations(a)
+        assert any(set(x) < set(a) and 1 <= len(a) - len(x) <= 2 for x in ev.explored)
+    h = ev.heldout
+    assert h["uniform"]["scenes"] == 25 and h["near"]["scenes"] == 25
+    # the theory decides in every near scene unless rules conflict; never in a scene it has no rule for
+    assert h["near"]["curiosity_theory"]["coverage"] > h["uniform"]["curiosity_theory"]["coverage"]
+    assert h["near"]["curiosity_tree"]["coverage"] == 1.0
+
+
+def test_predict_is_what_swi_prolog_concludes():
+    names = load_vocabulary().expectation_names
+    ants = [("pour_low",), ("pour_low", "light_liquid")]
+    heads = np.ones((2, 9), dtype=bool)
+    heads[1, 0] = False
+    th = E.theory_of(ants, heads, "two rules")
+    p = E.predict(th, [["pour_low"], ["pour_low", "light_liquid"], ["light_liquid"]])
+    assert (p[0] == 1).all()
+    assert p[1, 0] == 0 and (p[1, 1:] == 1).all()      # the more specific rule wins
+    assert (p[2] == -1).all()
+    assert len(names) == p.shape[1]
+
+
+def test_a_second_run_simulates_nothing_and_gives_the_same_figures(evaluated, learned, tmp_path):
+    ev, store = evaluated
+    again = E.evaluate(E.Options(theory=learned[0], store=store, scenes=25, seed=3, verify=4,
+                                 paper_samples=5, executor="inline", progress=False))
+    assert sum(again.simulations.values()) == 0
+    a, b = ev.as_dict(), again.as_dict()
+    a.pop("seconds"), b.pop("seconds"), a.pop("simulations"), b.pop("simulations")
+    assert a == b
+
+
+def test_plans_and_paper_rules_are_checked_in_simulation(evaluated):
+    ev, _ = evaluated
+    assert ev.plans, "the synthetic theory reaches some goal"
+    for p in ev.plans:
+        assert not violations(p["antecedent"])
+        assert 0 <= p["met"] <= p["simulated"] <= 4
+    assert len(ev.paper_rules) == 3
+    for r in ev.paper_rules:
+        assert r["theory_says"] in (r["literal"], "unknown", r["literal"][4:-1])
+        assert r["simulated"] == 5 and 0 <= r["oracle_share"] <= 1
+
+
+def test_the_report_and_its_figures(evaluated, tmp_path):
+    from pantarhei.bridge.report import headline, write
+
+    ev, _ = evaluated
+    path = write(ev, tmp_path / "rep", gifs=False)
+    text = path.read_text()
+    assert "## Headline" in text and "| a6 |" in text
+    for name in ("behaviours.png", "heldout.png", "expectations.png", "evaluation.json"):
+        assert (tmp_path / "rep" / name).stat().st_size > 0
+    assert json.loads((tmp_path / "rep" / "evaluation.json").read_text())["budget"] == 72
+    for measure, value, target, met in headline(ev):
+        assert f"| {measure} | {value} |" in text
+
+
+def test_evaluate_command_end_to_end(learned, tmp_path):
+    theory, store = learned
+    r = run_cli("evaluate", "--theory", str(theory), "--store", str(store), "--out",
+                str(tmp_path / "r"), "--scenes", "10", "--verify", "2", "--paper-samples", "2",
+                "--executor", "inline", "--no-progress")
+    assert r.code == 0, r.err
+    assert "distinct behaviours" in r.out and f"report: {tmp_path / 'r' / 'README.md'}" in r.out
+
+
+@pytest.mark.parametrize("make, words", [
+    (lambda d: d / "missing.pl", "no such theory"),
+    (lambda d: (d / "hand.pl").write_text("rule(r1, defeasible, no_spill).\n") and d / "hand.pl",
+     "not a theory written by `pantarhei explore`"),
+    (lambda d: (d / "bad.pl").write_text("rule(r1, defeasible\n") and d / "bad.pl", "bad.pl:"),
+])
+def test_bad_theories_get_one_line(tmp_path, make, words):
+    r = run_cli("evaluate", "--theory", str(make(tmp_path)), "--store", str(tmp_path / "s.sqlite"),
+                "--out", str(tmp_path / "r"), "--no-progress")
+    assert words in assert_one_line_error(r, code=r.code if r.code else 2)
+    assert r.code != 0
+
+
+def test_read_learned_refuses_a_hand_written_theory(tmp_path):
+    p = tmp_path / "hand.pl"
+    p.write_text("rule(r1, defeasible, no_spill).\nbody(r1, pour_low).\n")
+    with pytest.raises(UserError, match="not a theory written by"):
+        E.read_learned(p)
