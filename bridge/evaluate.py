@@ -6,9 +6,10 @@ second run simulates nothing:
 
 * the exploration's own simulations, drawn again with the seeds the
   exploration used (all found in the store when it is the same store);
-* held-out scenes: random valid antecedents, one pour each, in two sets:
-  `uniform` (uniformly random valid antecedents) and `near` (an explored
-  antecedent with one or two propositions added: where the theory speaks);
+* held-out scenes: random valid antecedents, one pour each, in three sets:
+  `uniform` (uniformly random valid antecedents), `near` (an explored
+  antecedent with one or two propositions added: where the theory speaks)
+  and `near_random` (the same around the random exploration's antecedents);
 * random exploration: the same budget spent on uniformly random valid
   antecedents, and the same rule building (equation (1) and qualify);
 * the paper's three example rules, asked of the theory and simulated;
@@ -72,10 +73,7 @@ def read_learned(path: Path | str) -> Learned:
     path = Path(path)
     theory = reasoning.load([path])
     facts = read_facts([path])
-    settings: dict[str, list[Any]] = {}
-    for args in facts.get("setting", []):
-        if len(args) == 2:
-            settings.setdefault(literal_text(args[0]), []).append(args[1])
+    settings = reasoning.settings(theory)
     of_rule = {literal_text(a[0]): literal_text(a[2]) for a in facts.get("provenance", [])
                if len(a) == 3 and literal_text(a[1]) == "antecedent"}
     if not settings.get("seed") or not settings.get("samples") or not of_rule:
@@ -278,7 +276,9 @@ def evaluate(opts: Options) -> Evaluation:
         uniform = [a for a in random_antecedents(opts.seed, 2 * opts.scenes) if a not in known]
         uniform = list(dict.fromkeys(uniform))[:opts.scenes]
         near = near_antecedents(explored, opts.scenes, opts.seed, known | set(uniform))
-        sets = {"uniform": uniform, "near": near}
+        near_random = near_antecedents(random_ants, opts.scenes, opts.seed + 1,
+                                       known | set(uniform) | set(near))
+        sets = {"uniform": uniform, "near": near, "near_random": near_random}
         P_held = {k: np.vstack([sample(list(a), 1, iteration_seed(opts.seed, 100_000 + j))
                                 for j, a in enumerate(v)]) if v else np.empty((0, 30))
                   for k, v in sets.items()}

@@ -202,20 +202,35 @@ def conclusions(theory: Theory, semantics: Semantics = Semantics(),
 
 # -- Questions about pouring --------------------------------------------------
 
-_SETTING_INITIAL = re.compile(r"^\s*setting\(\s*initial\s*,\s*([a-z][A-Za-z0-9_]*)\s*\)\s*\.")
+_SETTING = re.compile(r"^\s*setting\(\s*([a-z][A-Za-z0-9_]*)\s*,\s*(.+?)\s*\)\s*\.\s*$")
+
+
+def settings(theory: Theory) -> dict[str, list]:
+    """The theory's `setting(Key, Value)` facts, values in file order: what
+    `pantarhei explore` records of the exploration behind a learned theory
+    (oracle, oracle_version, seed, samples, initial, ...). Read from the
+    facts the Theory keeps aside (`extra`) and from its native source
+    file(s); none for DFL files, theories built in Python, or hand-written
+    ones without such facts. Values are str or int."""
+    out: dict[str, list] = {}
+    pairs: list[tuple[str, object]] = []
+    for m in map(_SETTING.match, theory.extra):
+        if m:
+            v = m.group(2).strip('"')
+            pairs.append((m.group(1), int(v) if v.lstrip("-").isdigit() else v))
+    for path in _source_paths(theory.source):
+        pairs.extend(_settings_of_file(str(path), *_stamp(path)))
+    for k, v in pairs:
+        if v not in out.setdefault(k, []):
+            out[k].append(v)
+    return out
 
 
 def initial_antecedent(theory: Theory) -> list[str]:
     """The theory's `setting(initial, P)` propositions, in file order: the
     antecedent a_0 its exploration started from (and which every learned
-    rule body therefore contains, or a neighbour of). Read from the facts
-    the Theory keeps aside (`extra`) and from its native source file(s);
-    none for DFL files, theories built in Python, or hand-written ones
-    without such facts."""
-    found = [m.group(1) for m in map(_SETTING_INITIAL.match, theory.extra) if m]
-    for path in _source_paths(theory.source):
-        found.extend(_initial_of_file(str(path), *_stamp(path)))
-    return list(dict.fromkeys(found))
+    rule body therefore contains, or a neighbour of)."""
+    return [p for p in settings(theory).get("initial", []) if isinstance(p, str)]
 
 
 def _source_paths(source: str) -> list[Path]:
@@ -231,13 +246,14 @@ def _stamp(path: Path) -> tuple[int, int]:
 
 
 @lru_cache(maxsize=16)
-def _initial_of_file(path: str, _mtime: int, _size: int) -> tuple[str, ...]:
+def _settings_of_file(path: str, _mtime: int, _size: int) -> tuple[tuple[str, object], ...]:
     try:
         facts = read_facts([path])
     except TheoryFileError:
         return ()
-    return tuple(str(args[1]) for args in facts.get("setting", ())
-                 if len(args) == 2 and args[0] == "initial" and isinstance(args[1], str))
+    return tuple((str(args[0]), args[1]) for args in facts.get("setting", ())
+                 if len(args) == 2 and isinstance(args[0], str)
+                 and isinstance(args[1], (str, int)))
 
 
 def assumptions(theory: Theory, props: list[str] | tuple[str, ...]) -> list[str]:

@@ -20,7 +20,10 @@ from pantarhei.oracle.vocabulary import load_vocabulary
 
 from .evaluate import Evaluation
 
-#: The issue's targets, as fractions.
+#: The held-out sets, in words.
+SET_NAMES = {"near": "near curiosity's antecedents", "near_random": "near random's antecedents",
+             "uniform": "uniformly random"}
+#: The targets, as fractions.
 TARGETS = {"behaviours_ratio": 2.0, "accuracy": 0.90, "coverage": 0.90, "tree_gap": 0.05,
            "plans": 0.90}
 
@@ -105,8 +108,8 @@ def plot_behaviours(ev: Evaluation, path: Path) -> None:
 def plot_heldout(ev: Evaluation, path: Path) -> None:
     plt = _plt()
     c = ev.curves
-    sets = [k for k in ("near", "uniform") if k in ev.heldout]
-    fig, axes = plt.subplots(1, len(sets), figsize=(5.2 * len(sets), 3.8), dpi=120, squeeze=False)
+    sets = [k for k in ("near", "near_random", "uniform") if k in ev.heldout]
+    fig, axes = plt.subplots(1, len(sets), figsize=(4.4 * len(sets), 3.8), dpi=120, squeeze=False)
     for ax, name in zip(axes[0], sets):
         for method, colour in (("curiosity", "#c0392b"), ("random", "#2c7fb8")):
             acc = [np.nan if a is None else a for a in c[method]["accuracy"][name]]
@@ -115,7 +118,7 @@ def plot_heldout(ev: Evaluation, path: Path) -> None:
                     label=f"{method}: coverage")
         ax.set_ylim(-0.02, 1.02)
         ax.set_xlabel("simulation budget (pours)")
-        ax.set_title(f"held-out, {name} ({ev.heldout[name]['scenes']} scenes)")
+        ax.set_title(f"held-out, {SET_NAMES[name]} ({ev.heldout[name]['scenes']})", fontsize=9)
         ax.grid(alpha=0.3)
     axes[0][0].legend(fontsize=7, loc="lower right")
     fig.tight_layout()
@@ -224,7 +227,8 @@ def write(ev: Evaluation, out: Path, gifs: bool = True, command: str = "make eva
     L += ["## Held-out scenes", "",
           "Each held-out scene is a valid antecedent that neither exploration explored, "
           "sampled once and simulated. *uniform*: drawn uniformly from all valid antecedents. "
-          "*near*: an explored antecedent with one or two propositions added. The theory "
+          "*near*: an antecedent explored by curiosity with one or two propositions added; "
+          "*near_random*: the same around random exploration's antecedents. The theory "
           "decides an expectation when SWI-Prolog concludes it or its negation; the decision "
           "tree (scikit-learn, trained on the same simulations, one-hot antecedents as "
           "features) always decides.", ""]

@@ -37,6 +37,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--verify", type=int, default=0, metavar="N",
                    help="sample each plan N times, simulate, and report how often the goals were met")
     p.add_argument("--seed", type=int, default=0, help="seed for --verify (default 0)")
+    p.add_argument("--store", default="pantarhei.sqlite",
+                   help="SQLite file of simulations for --verify (default pantarhei.sqlite)")
     p.add_argument("--json", action="store_true", help="print JSON")
     p.set_defaults(run=plan)
 
@@ -155,7 +157,8 @@ def plan(args: argparse.Namespace) -> int:
     given = known(_split(args.given))
     theory = reasoning.load(args.theory)
     plans = make_plans(theory, goals, given, args.alternatives)
-    verified = [_verify(p.antecedent, args.goal, args.verify, args.seed + i)
+    oracle = str((reasoning.settings(theory).get("oracle") or ["pybullet"])[0])
+    verified = [_verify(p.antecedent, goals, args.verify, args.seed + i, oracle, args.store)
                 for i, p in enumerate(plans)] if args.verify else [None] * len(plans)
     from ..planning import check_goals
 
@@ -184,34 +187,25 @@ def plan(args: argparse.Namespace) -> int:
     return 0
 
 
-def _verify(antecedent: tuple[str, ...], goal_text: str, n: int, seed: int) -> dict:
-    """Sample the antecedent n times, simulate, count the runs that met every goal."""
-    try:
-        from pantarhei.oracle.simulator import make_simulator
-    except ImportError:
-        raise UserError("--verify needs the simulator (pantarhei.oracle.simulator), "
-                        "which is not installed") from None
+def _verify(antecedent: tuple[str, ...], goals: list[str], n: int, seed: int,
+            oracle: str = "pybullet", store: str | None = None) -> dict:
+    """Sample the antecedent n times, simulate with the oracle the theory was
+    learned from (stored), and count the runs that met every goal."""
     import numpy as np
 
     from pantarhei.oracle.generative import sample
-    from pantarhei.oracle.vocabulary import load_vocabulary
 
-    from ..planning import parse_goal
+    from ..exploration import open_simulator, oracle_identity
+    from ..planning import goals_met
 
-    names = load_vocabulary().expectation_names
+    oracle_identity(oracle)     # UserError for an oracle that is unknown or cannot load
     params = sample(list(antecedent), n, seed)
-    with make_simulator("pybullet") as sim:
+    with open_simulator(oracle, store=store) as sim:
         scores = np.asarray(sim.simulate(params), dtype=float)
-    ok = ~np.isnan(scores).any(axis=1)
-    met = ok.copy()
-    for g in _split(goal_text):
-        lit = parse_goal(g)
-        negated = lit.startswith("neg(")
-        col = names.index(lit[4:-1] if negated else lit)
-        met &= (scores[:, col] <= 0.5) if negated else (scores[:, col] > 0.5)
-    simulated = int(ok.sum())
-    return {"simulated": simulated, "met": int(met.sum()), "failed": int(n - simulated),
-            "rate": float(met.sum() / simulated) if simulated else 0.0}
+    simulated = int(np.all(np.isfinite(scores), axis=1).sum())
+    met = int(goals_met(scores, goals).sum())
+    return {"simulated": simulated, "met": met, "failed": int(n - simulated),
+            "rate": float(met / simulated) if simulated else 0.0}
 
 
 # -- conclusions --------------------------------------------------------------

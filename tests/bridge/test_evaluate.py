@@ -61,7 +61,7 @@ def test_curves_cover_the_budget_and_never_lose_behaviours_of_random_exploration
     assert c["budget"] == [12 * k for k in range(1, 7)]
     for method in ("curiosity", "random"):
         assert len(c[method]["behaviours"]) == 6
-        for name in ("uniform", "near"):
+        for name in ("uniform", "near", "near_random"):
             assert all(0 <= x <= 1 for x in c[method]["coverage"][name])
     assert ev.simulations["exploration"] == 0          # all of them came from the store
     assert ev.simulations["random exploration"] == 6 * 12
@@ -79,6 +79,8 @@ def test_held_out_scenes_are_valid_and_never_explored(evaluated):
     # the theory decides in every near scene unless rules conflict; never in a scene it has no rule for
     assert h["near"]["curiosity_theory"]["coverage"] > h["uniform"]["curiosity_theory"]["coverage"]
     assert h["near"]["curiosity_tree"]["coverage"] == 1.0
+    assert h["near_random"]["scenes"] == 25
+    assert h["near_random"]["random_theory"]["coverage"] > h["uniform"]["random_theory"]["coverage"]
 
 
 def test_predict_is_what_swi_prolog_concludes():
