@@ -1,39 +1,95 @@
-"""`pantarhei demo`: the main job on the embedded defaults."""
+"""`pantarhei demo`: the main job on the embedded defaults.
+
+Learn the theory of pouring by curious exploration of the PyBullet
+simulation (25 rules, the paper's scale), write it natively and in DFL, then
+ask it the paper's three questions and one goal query. Simulations are
+stored, so a second run simulates nothing.
+"""
 from __future__ import annotations
 
 import argparse
+import time
+from pathlib import Path
 
-from pantarhei.oracle.vocabulary import load_vocabulary
+from .. import exploration
+from ..errors import UserError
 
-from .. import validity
+#: The paper's three questions (section 3.2), as words and propositions.
+QUESTIONS = (
+    ("What happens if I pour from the side?", ["pour_to_side"]),
+    ("What happens if the liquid is very light?", ["light_liquid"]),
+    ("What happens if I pour a light liquid and right the source up low above the destination?",
+     ["light_liquid", "end_upright", "end_low"]),
+)
+#: The goal query: a clean pour, in which the liquid ends up in the destination.
+GOAL = "liquid_leaves_source,liquid_remains_in_destination,no_spill"
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser("demo", help="run the main job on the embedded defaults")
+    p = sub.add_parser("demo", help="the main job: learn the theory of pouring (PyBullet, 25 "
+                                    "rules), write it, ask it the paper's questions and plan")
+    p.add_argument("--oracle", choices=("pybullet", "synthetic"), default="pybullet",
+                   help="the simulation (default pybullet) or analytic test scores")
+    p.add_argument("--max-rules", type=int, default=25, help="explored antecedents (default 25)")
+    p.add_argument("--seed", type=int, default=1, help="seed of every random choice (default 1)")
+    p.add_argument("--out", default=str(exploration.DEFAULT_OUT),
+                   help="the learned theory (default theory/learned/pouring.pl; "
+                        "the DFL version goes beside it as .dfl)")
+    p.add_argument("--store", default=str(exploration.DEFAULT_STORE),
+                   help=f"SQLite file of simulations (default {exploration.DEFAULT_STORE})")
+    p.add_argument("--verify", type=int, default=10,
+                   help="pours simulated to check the plan (default 10; 0: none)")
+    p.add_argument("--workers", type=int, help="worker processes (default: one per core)")
+    p.add_argument("--no-progress", action="store_true", help="no progress bar")
     p.set_defaults(run=demo)
 
 
-#: A few antecedents, and what the constraints say of them.
-EXAMPLES = (
-    ("an ordinary pour", ["pour_near_rim", "pour_low", "pour_half_tilted", "slow_approach"]),
-    ("pouring from the side, steeply", ["pour_to_side", "pour_steeply_tilted"]),
-    ("centred below the rim", ["pour_centred", "pour_below_rim"]),
-    ("high, then lowered before pouring", ["start_high", "approach_lowering"]),
-)
+def _heading(text: str) -> None:
+    print(f"\n== {text}", flush=True)
 
 
 def demo(args: argparse.Namespace) -> int:
-    v = load_vocabulary()
-    print(f"The vocabulary of pouring: {len(v.parameters)} parameters, "
-          f"{len(v.propositions)} propositions in {len(v.dimensions)} dimensions, "
-          f"{len(v.expectations)} expectations.")
-    print(f"Valid antecedents: {validity.count_valid():,}\n")
-    for words, props in EXAMPLES:
-        by_prolog = validity.violations(props, "prolog")
-        by_asp = validity.violations(props, "asp")
-        verdict = "valid" if not by_prolog else "invalid"
-        agree = "Prolog and clingo agree" if by_prolog == by_asp else "Prolog and clingo DISAGREE"
-        print(f"{words}: {', '.join(props)}\n  {verdict} ({agree})")
-        for b in by_prolog:
-            print(f"  - {b.words()}")
+    from ..dfl import write_dfl
+    from .. import reasoning
+    from .reasoning import ask, plan
+
+    if args.max_rules < 1 or args.verify < 0 or (args.workers is not None and args.workers < 1):
+        raise UserError("--max-rules and --workers must be at least 1, --verify at least 0")
+    out = Path(args.out)
+    if not out.parent.is_dir():
+        raise UserError(f"{out}: no such directory {out.parent}")
+    started = time.monotonic()
+    _heading(f"Learning the theory of pouring: curious exploration of the {args.oracle} "
+             f"simulation, {args.max_rules} rules (Algorithm 1)")
+    result = exploration.explore(exploration.Options(
+        oracle=args.oracle, max_rules=args.max_rules, seed=args.seed, out=out,
+        store=Path(args.store), workers=args.workers, progress=not args.no_progress))
+    theory = reasoning.load([out])
+    dfl = out.with_suffix(".dfl")
+    tmp = dfl.with_name(f".{dfl.name}.tmp")
+    tmp.write_text(write_dfl(theory), encoding="utf-8")
+    tmp.replace(dfl)
+    why = {"a_new_empty": "A_new is empty", "max_rules": f"{args.max_rules} rules"}.get(
+        result.get("stopped", ""), result.get("stopped", ""))
+    print(f"explored {result['explored']} antecedents with {result['simulations']} simulations "
+          f"({result['failed']} failed) in {result.get('wall', 0.0):.0f} s; stopped: {why}")
+    print(f"theory: {out} ({len(theory.rules)} rules), in DFL: {dfl}")
+    if "plot" in result:
+        print(f"exploration trace: {result['trace']}, plot: {result['plot']}")
+
+    for question, props in QUESTIONS:
+        _heading(question)
+        ask(argparse.Namespace(question=None, props=",".join(props), theory=[str(out)], why=None,
+                               json=False, no_assume=False))
+
+    _heading(f"How should I pour so that {GOAL.replace(',', ', ')}?")
+    try:
+        plan(argparse.Namespace(goal=GOAL, given="", theory=[str(out)], alternatives=2,
+                                verify=args.verify, seed=args.seed, json=False,
+                                oracle=args.oracle, store=args.store))
+    except UserError as e:     # a theory that cannot reach the goal: say so, and finish
+        print(f"no plan: {e}")
+    print(f"\ndone in {time.monotonic() - started:.0f} s. Ask more: pantarhei ask \"pour high "
+          f"above the destination\"; plan: pantarhei plan --goal no_spill; "
+          f"measure it: make evaluate")
     return 0
