@@ -56,8 +56,8 @@ def demo(args: argparse.Namespace) -> int:
     if args.max_rules < 1 or args.verify < 0 or (args.workers is not None and args.workers < 1):
         raise UserError("--max-rules and --workers must be at least 1, --verify at least 0")
     out = Path(args.out)
-    if not out.parent.is_dir():
-        raise UserError(f"{out}: no such directory {out.parent}")
+    if out.is_dir():
+        raise UserError(f"{out}: a directory, not a theory file")
     started = time.monotonic()
     _heading(f"Learning the theory of pouring: curious exploration of the {args.oracle} "
              f"simulation, {args.max_rules} rules (Algorithm 1)")

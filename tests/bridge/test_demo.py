@@ -9,8 +9,7 @@ from tests.conftest import assert_one_line_error, run_cli
 
 
 def test_demo_learns_writes_asks_and_plans(tmp_path):
-    out = tmp_path / "learned" / "pouring.pl"
-    out.parent.mkdir()
+    out = tmp_path / "learned" / "pouring.pl"           # the directory is made
     args = ["demo", "--oracle", "synthetic", "--max-rules", "5", "--out", str(out),
             "--store", str(tmp_path / "s.sqlite"), "--verify", "3", "--no-progress"]
     r = run_cli(*args)
@@ -36,5 +35,5 @@ def test_demo_learns_writes_asks_and_plans(tmp_path):
 def test_demo_refuses_bad_options_in_one_line(tmp_path):
     r = run_cli("demo", "--max-rules", "0", "--out", str(tmp_path / "t.pl"))
     assert "--max-rules" in assert_one_line_error(r)
-    r = run_cli("demo", "--oracle", "synthetic", "--out", str(tmp_path / "no" / "dir" / "t.pl"))
-    assert "no such directory" in assert_one_line_error(r)
+    r = run_cli("demo", "--oracle", "synthetic", "--out", str(tmp_path))
+    assert "a directory, not a theory file" in assert_one_line_error(r)
