@@ -70,6 +70,19 @@ def headline(ev: Evaluation) -> list[tuple[str, str, str, bool]]:
     return rows
 
 
+def headline_markdown(ev: Evaluation) -> str:
+    """The headline figures as a Markdown table (the report's, and README's)."""
+    lines = ["| measure | measured | target | met |", "|---|---|---|---|"]
+    for measure, value, target, met in headline(ev):
+        lines.append(f"| {measure} | {value} | {target} | {'yes' if met else '**no**'} |")
+    return "\n".join(lines) + "\n"
+
+
+def load(path: Path | str) -> Evaluation:
+    """An evaluation as `write` saved it (evaluation.json)."""
+    return Evaluation(**json.loads(Path(path).read_text(encoding="utf-8")))
+
+
 # -- plots ---------------------------------------------------------------------
 
 def _plt():
@@ -216,9 +229,7 @@ def write(ev: Evaluation, out: Path, gifs: bool = True, command: str = "make eva
          f"{s.get('explored')} explored antecedents of {s.get('samples')} pours each "
          f"({ev.budget} pours), qualify `{s.get('qualify')}`. All numbers below are in "
          "`evaluation.json`.", "",
-         "## Headline", "", "| measure | measured | target | met |", "|---|---|---|---|"]
-    for measure, value, target, met in headline(ev):
-        L.append(f"| {measure} | {value} | {target} | {'yes' if met else '**no**'} |")
+         "## Headline", "", headline_markdown(ev).rstrip("\n")]
     L += ["", "## Curiosity against random exploration", "",
           f"Random exploration spends the same budget ({ev.budget} pours) on "
           f"{len(ev.explored)} uniformly random valid antecedents, and builds rules the same way "

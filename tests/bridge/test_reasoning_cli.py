@@ -108,13 +108,30 @@ def test_malformed_files_name_the_line(cli, tmp_path: Path) -> None:
     assert f"{g}:2:" in assert_one_line_error(cli("ask", "--props", "pour_centred", "--theory", str(g)))
 
 
-def test_without_a_theory_the_commands_say_how_to_get_one(cli, tmp_path: Path) -> None:
-    from pantarhei.bridge.reasoning import DEFAULT_THEORY
+def test_without_a_theory_the_commands_say_how_to_get_one(monkeypatch, tmp_path: Path) -> None:
+    from pantarhei.bridge import reasoning
+    from pantarhei.bridge.errors import UserError
 
-    if DEFAULT_THEORY.exists():
-        pytest.skip("a learned theory is installed")
-    line = assert_one_line_error(cli("ask", "pour from the side"))
-    assert "no learned theory yet" in line and "--theory" in line
+    monkeypatch.setattr(reasoning, "DEFAULT_THEORY", tmp_path / "learned" / "pouring.pl")
+    with pytest.raises(UserError, match="no learned theory yet") as e:
+        reasoning.load()
+    assert "--theory" in str(e.value)
+
+
+def test_the_shipped_theory_answers_without_a_theory_option(cli) -> None:
+    from pantarhei.bridge.reasoning import DEFAULT_THEORY, settings, load
+
+    shipped = load()
+    assert shipped.source == str(DEFAULT_THEORY)
+    s = settings(shipped)
+    assert s["oracle"] == ["pybullet"] and s["explored"] == [25] and s["simulations"] == [775]
+    r = cli("ask", "--props", "light_liquid", "--json")
+    assert r.code == 0, r.err
+    import json
+
+    answer = json.loads(r.out)
+    assert answer["assumed"] == s["initial"]
+    assert set(answer["outcomes"].values()) <= {"holds", "fails"}     # a_0 decides everything
 
 
 # -- the theory's ordinary pour, assumed where the question says nothing -------
@@ -229,3 +246,19 @@ def test_why_not_names_few_rules_however_many_there_are(cli, tmp_path: Path) -> 
     why = cli("ask", "--props", "pour_to_side,pour_mid_height", "--theory", str(f), "--why", "no_spill")
     assert why.code == 0, why.err
     assert sum("does not apply" in line for line in why.out.splitlines()) == 76
+
+
+def test_the_shipped_theory_is_current_and_its_dfl_twin_agrees() -> None:
+    """The shipped theory was learned with today's oracle and settings, and
+    its DFL version (written by make demo) holds the same rules."""
+    from pantarhei.bridge.exploration import ALGORITHM_VERSION, oracle_identity
+    from pantarhei.bridge.reasoning import DEFAULT_THEORY, load, settings
+
+    native = load()
+    s = settings(native)
+    assert [str(v) for v in s["oracle_version"]] == [oracle_identity("pybullet")[0]], \
+        "the oracle changed: learn the shipped theory again with make demo"
+    assert ALGORITHM_VERSION == "1"
+    dfl = load([DEFAULT_THEORY.with_suffix(".dfl")])
+    assert {(r.id, r.head, frozenset(r.body)) for r in dfl.rules} == \
+           {(r.id, r.head, frozenset(r.body)) for r in native.rules}
