@@ -220,6 +220,14 @@ class Evaluation:
         return met / done if done else float("nan")
 
 
+def _shown(path: Path) -> str:
+    """A path as the report shows it: relative to here when inside it."""
+    try:
+        return str(Path(path).resolve().relative_to(Path.cwd().resolve()))
+    except ValueError:
+        return str(path)
+
+
 def _say(text: str) -> None:
     print(f"pantarhei evaluate: {text}", file=sys.stderr, flush=True)
 
@@ -234,7 +242,7 @@ def evaluate(opts: Options) -> Evaluation:
     R = len(explored)
     if opts.scenes < 1 or opts.verify < 0 or opts.paper_samples < 0:
         raise UserError("--scenes must be at least 1, --verify and --paper-samples at least 0")
-    ev = Evaluation(theory=str(opts.theory), oracle=oracle,
+    ev = Evaluation(theory=_shown(opts.theory), oracle=oracle,
                     settings={k: (v if len(v) > 1 else v[0]) for k, v in learned.settings.items()},
                     budget=R * samples, explored=list(explored))
     from .exploration import open_simulator, oracle_identity
@@ -343,7 +351,10 @@ def _paper_rules(theory: Theory, run, opts: Options) -> list[dict[str, Any]]:
     names = load_vocabulary().expectation_names
     out, scenes = [], []
     for props, literal, words in PAPER_RULES:
-        rules = [r.id for r in theory.rules if r.id in theory.learned and r.head == literal
+        # learned rules for the literal whose antecedent holds the scene's propositions
+        # (and perhaps more: what else each needs is kept)
+        rules = [{"rule": r.id, "also_needs": sorted(set(r.body) - set(props))}
+                 for r in theory.rules if r.id in theory.learned and r.head == literal
                  and set(props) <= set(r.body)]
         assumed = reasoning.assumptions(theory, list(props))
         scene = sorted(set(props) | set(assumed))

@@ -257,12 +257,15 @@ def write(ev: Evaluation, out: Path, gifs: bool = True, command: str = "make eva
     L += ["## The paper's three example rules", "",
           "Each scene is asked of the theory as `pantarhei ask` reads it (open dimensions filled "
           "with the theory's ordinary pour, shown as assumed), and simulated.", "",
-          "| the paper | learned rule | the theory says | the oracle: share of pours where the paper's rule holds |",
+          "A learned rule matches when it concludes the paper's literal from an antecedent that "
+          "holds the paper's propositions; what else it needs is listed.", "",
+          "| the paper | learned rules for it | the theory says | the oracle: share of pours where the paper's rule holds |",
           "|---|---|---|---|"]
     for r in ev.paper_rules:
         scene = ", ".join(f"`{p}`" for p in r["scene"])
         assumed = f" (assumed {', '.join(r['assumed'])})" if r["assumed"] else ""
-        learned = ", ".join(f"`{x}`" for x in r["learned"]) or "not learned"
+        learned = "; ".join(f"`{x['rule']}` (with {', '.join(x['also_needs']) or 'nothing else'})"
+                            for x in r["learned"]) or "no rule"
         share = (f"{_pct(r['oracle_share'])} of {r['simulated']}"
                  if r.get("oracle_share") is not None else "not simulated")
         L.append(f"| {r['paper']}: {scene} → `{r['literal']}` | {learned} | "

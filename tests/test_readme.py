@@ -30,3 +30,15 @@ def test_readme_says_how_each_score_is_computed():
     section = README[README.index(begin):README.index(end)]
     for name, words in EXPLANATIONS.items():
         assert f"| `{name}` | {words} |" in section
+
+
+def test_readme_headline_figures_are_the_shipped_evaluation():
+    """README's evaluation table is the one `make evaluate` wrote to report/."""
+    from pantarhei.bridge.report import headline_markdown, load
+
+    root = Path(__file__).resolve().parents[1]
+    ev = load(root / "report" / "evaluation.json")
+    begin, end = "<!-- evaluation:begin -->\n", "<!-- evaluation:end -->"
+    section = README[README.index(begin) + len(begin):README.index(end)]
+    assert section == headline_markdown(ev)
+    assert ev.theory.endswith("theory/learned/pouring.pl")
