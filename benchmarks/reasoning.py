@@ -89,8 +89,8 @@ def planning() -> None:
 
 def scaling() -> None:
     sizes = [s for s in (1000, 10000, 100000) if s <= MAX_RULES]
-    print(f"benchmark theories: seconds for all conclusions (load included); "
-          f"ratio = time per rule relative to the smallest size")
+    print("benchmark theories: seconds for all conclusions (load included); "
+          "ratio = time per rule relative to the smallest size")
     print(f"  {'theory':8} {'rules':>7} {'prolog s':>9} {'ratio':>6} {'asp s':>8} {'ratio':>6}  known answers")
     for name in bench.NAMES:
         base_p = base_a = None

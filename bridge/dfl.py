@@ -15,7 +15,6 @@ Rules without a label get `r<line>`.
 """
 from __future__ import annotations
 
-import itertools
 import re
 from pathlib import Path
 

@@ -296,7 +296,6 @@ def evaluate(opts: Options) -> Evaluation:
         _say("predicting the held-out scenes with every theory along the budget")
         truth = {k: verdicts(S_held[k]) for k in sets}
         keep = {k: np.all(np.isfinite(S_held[k]), axis=1) for k in sets}
-        cur_runs = [list(explored[:k]) for k in range(1, R + 1)]
         curves: dict[str, Any] = {"budget": [k * samples for k in range(1, R + 1)]}
         for method, ants, P, S in (("curiosity", explored, P_cur, S_cur),
                                    ("random", random_ants, P_rnd, S_rnd)):
@@ -313,7 +312,6 @@ def evaluate(opts: Options) -> Evaluation:
             curves[method] = {"behaviours": beh, "coverage": cov, "accuracy": acc}
             ev.behaviours[method] = beh[-1]
         ev.curves = curves
-        del cur_runs
 
         # the final theories and the decision trees, per held-out set
         final = {"curiosity": learned.theory,

@@ -1,7 +1,6 @@
 """`pantarhei explore` and `pantarhei prolog` as a user runs them."""
 from __future__ import annotations
 
-from pathlib import Path
 
 import pytest
 

@@ -10,7 +10,6 @@ import textwrap
 import time
 
 import numpy as np
-import pytest
 
 from pantarhei.oracle.faults import COUNT, FaultyOracle
 from pantarhei.oracle.generative import sample
