@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import re
 from pathlib import Path
+from typing import Sequence
 
 from pantarhei.theory import TheoryFileError
 
@@ -219,12 +220,14 @@ def dfl_literal(lit: str) -> str:
     return f"-{complement(lit)}" if lit.startswith("neg(") else lit
 
 
-def write_dfl(theory: Theory) -> str:
+def write_dfl(theory: Theory, header: Sequence[str] = ()) -> str:
     """The theory in DFL: facts, rules, then superiority, including the
     superiority that specificity gives learned rules (DFL has no
-    `learned`), so that the DFL theory has the same conclusions."""
+    `learned`), so that the DFL theory has the same conclusions. `header`
+    lines go first, as comments."""
     arrows = {k: a for a, k in _ARROWS}
-    lines = [f">> {dfl_literal(f)}" for f in theory.facts]
+    lines = [f"# {h}" for h in header]
+    lines += [f">> {dfl_literal(f)}" for f in theory.facts]
     for r in theory.rules:
         body = ", ".join(dfl_literal(b) for b in r.body)
         lines.append(f"{r.id}: {body}{' ' if body else ''}{arrows[r.kind]} {dfl_literal(r.head)}")

@@ -226,6 +226,16 @@ def settings(theory: Theory) -> dict[str, list]:
     return out
 
 
+def provenance_lines(theory: Theory) -> list[str]:
+    """Where a learned theory comes from, one `key: values` line per
+    setting (for formats without facts for it, as comments in DFL)."""
+    s = settings(theory)
+    if not s:
+        return []
+    return ["learned by pantarhei explore; settings of the exploration:"] + \
+        [f"  {k}: {', '.join(str(v) for v in vs)}" for k, vs in s.items()]
+
+
 def initial_antecedent(theory: Theory) -> list[str]:
     """The theory's `setting(initial, P)` propositions, in file order: the
     antecedent a_0 its exploration started from (and which every learned

@@ -67,7 +67,7 @@ def demo(args: argparse.Namespace) -> int:
     theory = reasoning.load([out])
     dfl = out.with_suffix(".dfl")
     tmp = dfl.with_name(f".{dfl.name}.tmp")
-    tmp.write_text(write_dfl(theory), encoding="utf-8")
+    tmp.write_text(write_dfl(theory, reasoning.provenance_lines(theory)), encoding="utf-8")
     tmp.replace(dfl)
     why = {"a_new_empty": "A_new is empty", "max_rules": f"{args.max_rules} rules"}.get(
         result.get("stopped", ""), result.get("stopped", ""))

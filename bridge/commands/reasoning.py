@@ -234,7 +234,8 @@ def convert(args: argparse.Namespace) -> int:
     from ..dfl import write_dfl
 
     theory = reasoning.load(args.file, check=False)
-    text = write_dfl(theory) if args.to == "dfl" else theory.native()
+    text = (write_dfl(theory, reasoning.provenance_lines(theory)) if args.to == "dfl"
+            else theory.native())
     if not args.output:
         print(text, end="")
         return 0

@@ -20,6 +20,9 @@ def test_demo_learns_writes_asks_and_plans(tmp_path):
     dfl = reasoning.load([out.with_suffix(".dfl")])         # the DFL twin reads back the same rules
     assert {(x.id, x.head, frozenset(x.body)) for x in dfl.rules} == \
            {(x.id, x.head, frozenset(x.body)) for x in theory.rules}
+    header = out.with_suffix(".dfl").read_text().splitlines()[:3]
+    assert header == ["# learned by pantarhei explore; settings of the exploration:",
+                      "#   oracle: synthetic", f"#   oracle_version: {theory_version()}"]
     # the paper's three questions, each answered for all nine expectations, then a plan
     assert r.out.count("understood:") == 3
     assert len(re.findall(r"^  \[(yes|no |\s\?\s)\] ", r.out, re.M)) == 27
@@ -30,6 +33,12 @@ def test_demo_learns_writes_asks_and_plans(tmp_path):
     again = run_cli(*args)
     assert again.code == 0, again.err
     assert out.read_text() == first
+
+
+def theory_version() -> str:
+    from pantarhei.bridge.exploration import oracle_identity
+
+    return oracle_identity("synthetic")[0]
 
 
 def test_demo_refuses_bad_options_in_one_line(tmp_path):
