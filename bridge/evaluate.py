@@ -196,6 +196,8 @@ class Evaluation:
     oracle: str
     settings: dict[str, Any]
     budget: int
+    #: Whether the exploration's pours, simulated here, give the theory's rules.
+    reproduced: bool = True
     heldout: dict[str, Any] = field(default_factory=dict)
     curves: dict[str, Any] = field(default_factory=dict)
     behaviours: dict[str, int] = field(default_factory=dict)
@@ -210,7 +212,7 @@ class Evaluation:
 
     def as_dict(self) -> dict[str, Any]:
         return {k: getattr(self, k) for k in
-                ("theory", "oracle", "settings", "budget", "heldout", "curves", "behaviours",
+                ("theory", "oracle", "settings", "budget", "reproduced", "heldout", "curves", "behaviours",
                  "paper_rules", "plans", "simulations", "seconds")}
 
     @property
@@ -272,6 +274,11 @@ def evaluate(opts: Options) -> Evaluation:
         ok = np.all(np.isfinite(S_cur), axis=1)
         W = weights(log_densities(P_cur[ok], [list(a) for a in explored]))
         ev.best_samples = [P_cur[ok][int(np.argmax(W[i]))] for i in range(R)]
+        differ = _differing_rules(learned.theory, ev.explored_consequents)
+        ev.reproduced = not differ
+        if differ:
+            _say(f"{len(differ)} rules of the theory differ from those its own pours give here "
+                 f"(first: {differ[0]}): another oracle build, or a theory edited by hand")
 
         # 2. random exploration with the same budget
         random_ants = random_antecedents(opts.seed + 7919, R)
@@ -343,6 +350,20 @@ def evaluate(opts: Options) -> Evaluation:
     finally:
         sim.close()
     return ev
+
+
+def _differing_rules(theory: Theory, heads: np.ndarray) -> list[str]:
+    """The learned rules rI_E whose head is not the consequent rebuilt from
+    the exploration's pours (none when the theory is reproduced)."""
+    names = load_vocabulary().expectation_names
+    have = {r.id: r.head for r in theory.rules}
+    out = []
+    for i, row in enumerate(heads, start=1):
+        for e, holds in zip(names, row):
+            rid = f"r{i}_{e}"
+            if have.get(rid) != (e if holds else f"neg({e})"):
+                out.append(rid)
+    return out
 
 
 def _paper_rules(theory: Theory, run, opts: Options) -> list[dict[str, Any]]:

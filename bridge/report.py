@@ -229,6 +229,11 @@ def write(ev: Evaluation, out: Path, gifs: bool = True, command: str = "make eva
          f"{s.get('explored')} explored antecedents of {s.get('samples')} pours each "
          f"({ev.budget} pours), qualify `{s.get('qualify')}`. All numbers below are in "
          "`evaluation.json`.", "",
+         ("The exploration's own pours, simulated here, give exactly the theory's rules."
+          if ev.reproduced else
+          "**The exploration's own pours, simulated here, do not give all of the theory's "
+          "rules**: the oracle here differs from the one that learned it, or the theory was "
+          "edited."), "",
          "## Headline", "", headline_markdown(ev).rstrip("\n")]
     L += ["", "## Curiosity against random exploration", "",
           f"Random exploration spends the same budget ({ev.budget} pours) on "

@@ -159,3 +159,17 @@ def test_read_learned_refuses_a_hand_written_theory(tmp_path):
     p.write_text("rule(r1, defeasible, no_spill).\nbody(r1, pour_low).\n")
     with pytest.raises(UserError, match="not a theory written by"):
         E.read_learned(p)
+
+
+def test_the_theory_is_reproduced_from_its_pours_or_the_report_says_not(evaluated, learned, tmp_path):
+    ev, store = evaluated
+    assert ev.reproduced
+    text = learned[0].read_text()
+    edited = tmp_path / "edited.pl"
+    head = next(line for line in text.splitlines() if line.startswith("rule(r2_no_spill,"))
+    flipped = (head.replace("neg(no_spill)", "no_spill") if "neg(" in head
+               else head.replace(", no_spill)", ", neg(no_spill))"))
+    edited.write_text(text.replace(head, flipped))
+    again = E.evaluate(E.Options(theory=edited, store=store, scenes=5, seed=3, verify=0,
+                                 paper_samples=0, executor="inline", progress=False))
+    assert not again.reproduced
