@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import re
 
 from .. import reasoning
 from ..dfl import dfl_literal
@@ -111,12 +112,18 @@ def ask(args: argparse.Namespace) -> int:
     print(f"theory: {theory.source}")
     glosses = {e.name: e.gloss for e in vocab.expectations}
     why_not = False
+    said: dict[str, str] = {}     # a why-not already printed, with its expectation as E
     for o in outcomes:
         mark = {"holds": "yes", "fails": "no ", "unknown": " ? "}[o.value]
         print(f"  [{mark}] {o.expectation:30} {glosses[o.expectation]}")
         if o.value != "unknown":
             print(f"        because {o.reason}")
         elif "no rule concludes" not in o.reason:
+            general = re.sub(rf"(?<![a-z]){re.escape(o.expectation)}(?![a-z_])", "E", o.reason)
+            if general in said:   # the same reasons as for an expectation above
+                print(f"        why not: as for {said[general]}")
+                continue
+            said[general] = o.expectation
             first, *more = o.reason.split("; ")[1:] or [o.reason]
             print(f"        why not: {first}")
             for line in more:

@@ -262,3 +262,14 @@ def test_the_shipped_theory_is_current_and_its_dfl_twin_agrees() -> None:
     dfl = load([DEFAULT_THEORY.with_suffix(".dfl")])
     assert {(r.id, r.head, frozenset(r.body)) for r in dfl.rules} == \
            {(r.id, r.head, frozenset(r.body)) for r in native.rules}
+
+
+def test_the_same_why_not_is_said_once(cli) -> None:
+    """On the shipped theory, pouring from the side is never explored: the
+    nine "?" share one why-not, printed once with the rules it names."""
+    r = cli("ask", "pour from the side")
+    assert r.code == 0, r.err
+    assert r.out.count("[ ? ]") == 9
+    assert r.out.count("why not: as for destination_still_approach") == 8
+    assert "also needs pour_near_rim (instead of pour_to_side)" in r.out
+    assert len(r.out.splitlines()) < 40
