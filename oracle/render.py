@@ -13,8 +13,8 @@ from .base import Outcome
 
 def _camera(client: Any, width: int, height: int) -> tuple[list[float], list[float]]:
     # from the side (-y), a little above the rim, looking at the space between the bowls
-    view = client.computeViewMatrix(cameraEyePosition=[0.07, -0.45, 0.16],
-                                    cameraTargetPosition=[0.07, 0.0, 0.0],
+    view = client.computeViewMatrix(cameraEyePosition=[0.08, -0.62, 0.24],
+                                    cameraTargetPosition=[0.08, 0.0, 0.1],
                                     cameraUpVector=[0, 0, 1])
     proj = client.computeProjectionMatrixFOV(fov=45, aspect=width / height, nearVal=0.02, farVal=3.0)
     return view, proj
