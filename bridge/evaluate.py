@@ -198,6 +198,8 @@ class Evaluation:
     budget: int
     #: Whether the exploration's pours, simulated here, give the theory's rules.
     reproduced: bool = True
+    #: Per explored antecedent: the share of its own pours that kept every expectation.
+    kept_all: list[float | None] = field(default_factory=list)
     heldout: dict[str, Any] = field(default_factory=dict)
     curves: dict[str, Any] = field(default_factory=dict)
     behaviours: dict[str, int] = field(default_factory=dict)
@@ -212,7 +214,7 @@ class Evaluation:
 
     def as_dict(self) -> dict[str, Any]:
         return {k: getattr(self, k) for k in
-                ("theory", "oracle", "settings", "budget", "reproduced", "heldout", "curves", "behaviours",
+                ("theory", "oracle", "settings", "budget", "reproduced", "kept_all", "heldout", "curves", "behaviours",
                  "paper_rules", "plans", "simulations", "seconds")}
 
     @property
@@ -274,6 +276,11 @@ def evaluate(opts: Options) -> Evaluation:
         ok = np.all(np.isfinite(S_cur), axis=1)
         W = weights(log_densities(P_cur[ok], [list(a) for a in explored]))
         ev.best_samples = [P_cur[ok][int(np.argmax(W[i]))] for i in range(R)]
+        ev.kept_all = []
+        for i in range(R):      # of the pours sampled for a_i: the share that kept every expectation
+            rows = S_cur[i * samples:(i + 1) * samples]
+            rows = rows[np.all(np.isfinite(rows), axis=1)]
+            ev.kept_all.append(float((rows > 0.5).all(axis=1).mean()) if len(rows) else None)
         differ = _differing_rules(learned.theory, ev.explored_consequents)
         ev.reproduced = not differ
         if differ:

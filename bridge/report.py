@@ -175,10 +175,12 @@ def consequent_words(row: Sequence[bool]) -> str:
 
 
 def rules_table(ev: Evaluation) -> list[str]:
-    lines = ["| antecedent | when (in words) | then |", "|---|---|---|"]
+    lines = ["| antecedent | when (in words) | then | its pours that kept every expectation |",
+             "|---|---|---|---|"]
     rows = ev.explored_consequents if ev.explored_consequents is not None else []
-    for i, (a, row) in enumerate(zip(ev.explored, rows), start=1):
-        lines.append(f"| a{i} | {antecedent_words(a)} | {consequent_words(row)} |")
+    kept = list(ev.kept_all) + [None] * (len(ev.explored) - len(ev.kept_all))
+    for i, (a, row, k) in enumerate(zip(ev.explored, rows, kept), start=1):
+        lines.append(f"| a{i} | {antecedent_words(a)} | {consequent_words(row)} | {_pct(k)} |")
     return lines
 
 
@@ -286,7 +288,9 @@ def write(ev: Evaluation, out: Path, gifs: bool = True, command: str = "make eva
     if not ev.plans:
         L.append("| (no goal reachable) | | |")
     L += ["", "## The learned rules", "",
-          "One row per explored antecedent (its nine rules): what fails, in words.", ""]
+          "One row per explored antecedent (its nine rules): what fails, in words, and the share "
+          "of the pours sampled for it in which every expectation held (a rule states the "
+          "majority; the share shows how firmly).", ""]
     L += rules_table(ev)
     if (out / "exploration.png").exists():
         L += ["", "## The exploration", "", "![exploration trace](exploration.png)"]

@@ -125,6 +125,7 @@ def test_the_report_and_its_figures(evaluated, tmp_path):
     path = write(ev, tmp_path / "rep", gifs=False)
     text = path.read_text()
     assert "## Headline" in text and "| a6 |" in text
+    assert len(ev.kept_all) == 6 and all(0 <= k <= 1 for k in ev.kept_all)
     for name in ("behaviours.png", "heldout.png", "expectations.png", "evaluation.json"):
         assert (tmp_path / "rep" / name).stat().st_size > 0
     assert json.loads((tmp_path / "rep" / "evaluation.json").read_text())["budget"] == 72
