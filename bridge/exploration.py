@@ -23,7 +23,6 @@ Prolog goal returns. All Prolog calls stay on the main thread.
 from __future__ import annotations
 
 import json
-import os
 import sys
 import time
 from dataclasses import dataclass, field
@@ -37,6 +36,7 @@ from pantarhei.oracle.vocabulary import load_vocabulary
 from pantarhei.theory import THEORY_DIR
 
 from .errors import UserError
+from .files import save_figure, write_text
 from .exploration_state import ExplorationStore, run_key
 from .planes import MIN_WEIGHT, Planes, best_abs_slope, plane_fit
 from .prolog import Engine, engine as prolog_engine
@@ -405,11 +405,7 @@ def _append_trace(out: Path, entry: dict) -> None:
 
 def write_trace(path: Path, trace: Sequence[dict]) -> None:
     """The whole trace as JSON lines, written atomically."""
-    tmp = path.with_name(path.name + f".{os.getpid()}.tmp")
-    with open(tmp, "w", encoding="utf-8") as f:
-        for entry in trace:
-            f.write(json.dumps(entry, sort_keys=True) + "\n")
-    os.replace(tmp, path)
+    write_text(path, "".join(json.dumps(entry, sort_keys=True) + "\n" for entry in trace))
 
 
 def plot_trace(path: Path, trace: Sequence[dict], settings: dict | None = None) -> None:
@@ -434,10 +430,7 @@ def plot_trace(path: Path, trace: Sequence[dict], settings: dict | None = None) 
     ax.legend(loc="upper right")
     ax.grid(axis="y", alpha=0.3)
     fig.tight_layout()
-    tmp = path.with_name(path.name + f".{os.getpid()}.tmp")
-    fig.savefig(tmp, format="png")
-    plt.close(fig)
-    os.replace(tmp, path)
+    save_figure(fig, path)
 
 
 # ----------------------------------------------------------------------

@@ -9,7 +9,6 @@ behind three rules.
 from __future__ import annotations
 
 import json
-import os
 import shutil
 from pathlib import Path
 from typing import Sequence
@@ -19,6 +18,7 @@ import numpy as np
 from pantarhei.oracle.vocabulary import load_vocabulary
 
 from .evaluate import Evaluation
+from .files import save_figure, write_text
 
 #: The held-out sets, in words.
 SET_NAMES = {"near": "near curiosity's antecedents", "near_random": "near random's antecedents",
@@ -30,12 +30,6 @@ TARGETS = {"behaviours_ratio": 2.0, "accuracy": 0.90, "coverage": 0.90, "tree_ga
 
 def _pct(x: float | None) -> str:
     return "n/a" if x is None or (isinstance(x, float) and np.isnan(x)) else f"{100 * x:.1f}%"
-
-
-def _atomic_write(path: Path, text: str) -> None:
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    tmp.write_text(text, encoding="utf-8")
-    os.replace(tmp, path)
 
 
 def headline(ev: Evaluation) -> list[tuple[str, str, str, bool]]:
@@ -94,13 +88,6 @@ def _plt():
     return plt
 
 
-def _save(fig, path: Path) -> None:
-    tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
-    fig.savefig(tmp, format="png")
-    _plt().close(fig)
-    os.replace(tmp, path)
-
-
 def plot_behaviours(ev: Evaluation, path: Path) -> None:
     plt = _plt()
     c = ev.curves
@@ -115,7 +102,7 @@ def plot_behaviours(ev: Evaluation, path: Path) -> None:
     ax.grid(alpha=0.3)
     ax.legend()
     fig.tight_layout()
-    _save(fig, path)
+    save_figure(fig, path)
 
 
 def plot_heldout(ev: Evaluation, path: Path) -> None:
@@ -135,7 +122,7 @@ def plot_heldout(ev: Evaluation, path: Path) -> None:
         ax.grid(alpha=0.3)
     axes[0][0].legend(fontsize=7, loc="lower right")
     fig.tight_layout()
-    _save(fig, path)
+    save_figure(fig, path)
 
 
 def plot_expectations(ev: Evaluation, path: Path, name: str = "near") -> None:
@@ -156,7 +143,7 @@ def plot_expectations(ev: Evaluation, path: Path, name: str = "near") -> None:
     ax.set_title(f"per expectation, held-out {name} scenes")
     ax.legend(fontsize=7, loc="lower left")
     fig.tight_layout()
-    _save(fig, path)
+    save_figure(fig, path)
 
 
 # -- words ---------------------------------------------------------------------
@@ -214,7 +201,7 @@ def render_gifs(ev: Evaluation, out: Path, k: int = 3) -> list[tuple[int, Path]]
 
 def write(ev: Evaluation, out: Path, gifs: bool = True, command: str = "make evaluate") -> Path:
     out.mkdir(parents=True, exist_ok=True)
-    _atomic_write(out / "evaluation.json", json.dumps(ev.as_dict(), indent=1) + "\n")
+    write_text(out / "evaluation.json", json.dumps(ev.as_dict(), indent=1) + "\n")
     plot_behaviours(ev, out / "behaviours.png")
     plot_heldout(ev, out / "heldout.png")
     if "near" in ev.heldout and ev.heldout["near"]["scenes"]:
@@ -306,5 +293,5 @@ def write(ev: Evaluation, out: Path, gifs: bool = True, command: str = "make eva
           "|---|---|---|"]
     for k, sec in ev.seconds.items():
         L.append(f"| {k} | {ev.simulations.get(k, '')} | {sec} |")
-    _atomic_write(out / "README.md", "\n".join(L) + "\n")
+    write_text(out / "README.md", "\n".join(L) + "\n")
     return out / "README.md"

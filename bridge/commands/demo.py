@@ -50,6 +50,7 @@ def _heading(text: str) -> None:
 
 def demo(args: argparse.Namespace) -> int:
     from ..dfl import write_dfl
+    from ..files import write_text
     from .. import reasoning
     from .reasoning import ask, plan
 
@@ -66,9 +67,7 @@ def demo(args: argparse.Namespace) -> int:
         store=Path(args.store), workers=args.workers, progress=not args.no_progress))
     theory = reasoning.load([out])
     dfl = out.with_suffix(".dfl")
-    tmp = dfl.with_name(f".{dfl.name}.tmp")
-    tmp.write_text(write_dfl(theory, reasoning.provenance_lines(theory)), encoding="utf-8")
-    tmp.replace(dfl)
+    write_text(dfl, write_dfl(theory, reasoning.provenance_lines(theory)))
     why = {"a_new_empty": "A_new is empty", "max_rules": f"{args.max_rules} rules"}.get(
         result.get("stopped", ""), result.get("stopped", ""))
     print(f"explored {result['explored']} antecedents with {result['simulations']} simulations "

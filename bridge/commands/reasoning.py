@@ -234,11 +234,10 @@ def conclusions(args: argparse.Namespace) -> int:
 # -- convert ------------------------------------------------------------------
 
 def convert(args: argparse.Namespace) -> int:
-    import os
-    import tempfile
     from pathlib import Path
 
     from ..dfl import write_dfl
+    from ..files import write_text
 
     theory = reasoning.load(args.file, check=False)
     text = (write_dfl(theory, reasoning.provenance_lines(theory)) if args.to == "dfl"
@@ -249,9 +248,6 @@ def convert(args: argparse.Namespace) -> int:
     out = Path(args.output)
     if not out.parent.is_dir():
         raise UserError(f"{out}: no such directory {out.parent}")
-    fd, tmp = tempfile.mkstemp(dir=out.parent, prefix=f".{out.name}.")
-    with os.fdopen(fd, "w") as f:
-        f.write(text)
-    os.replace(tmp, out)
+    write_text(out, text)
     print(f"wrote {len(theory.rules)} rules, {len(theory.facts)} facts to {out}")
     return 0

@@ -1,0 +1,39 @@
+"""Files written whole or not at all: into a temporary file beside the
+target, then renamed over it, so that a reader, or a crash half-way, never
+sees part of one."""
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+from typing import Callable
+
+
+def replace_with(path: Path | str, write: Callable[[Path], None]) -> None:
+    """Call `write(tmp)` to write a temporary file beside `path`, then
+    rename it over `path`; the temporary file goes if `write` fails."""
+    path = Path(path)
+    fd, name = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    os.close(fd)
+    tmp = Path(name)
+    try:
+        write(tmp)
+        os.replace(tmp, path)
+    except BaseException:
+        tmp.unlink(missing_ok=True)
+        raise
+
+
+def write_text(path: Path | str, text: str) -> None:
+    """Write `text` (UTF-8) to `path` whole or not at all."""
+    replace_with(path, lambda tmp: tmp.write_text(text, encoding="utf-8"))
+
+
+def save_figure(fig, path: Path | str) -> None:
+    """Save a matplotlib figure as PNG whole or not at all, and close it."""
+    import matplotlib.pyplot as plt
+
+    try:
+        replace_with(path, lambda tmp: fig.savefig(tmp, format="png"))
+    finally:
+        plt.close(fig)
