@@ -14,10 +14,9 @@ import os
 import re
 import tempfile
 from dataclasses import dataclass
-from functools import lru_cache
 from pathlib import Path
 
-from pantarhei.theory import THEORY_DIR, TheoryFileError, read_facts
+from pantarhei.theory import THEORY_DIR, TheoryFileError
 
 from .dfl import is_dfl, read_dfl
 from .errors import UserError
@@ -208,21 +207,18 @@ _SETTING = re.compile(r"^\s*setting\(\s*([a-z][A-Za-z0-9_]*)\s*,\s*(.+?)\s*\)\s*
 def settings(theory: Theory) -> dict[str, list]:
     """The theory's `setting(Key, Value)` facts, values in file order: what
     `pantarhei explore` records of the exploration behind a learned theory
-    (oracle, oracle_version, seed, samples, initial, ...). Read from the
-    facts the Theory keeps aside (`extra`) and from its native source
-    file(s); none for DFL files, theories built in Python, or hand-written
-    ones without such facts. Values are str or int."""
-    out: dict[str, list] = {}
-    pairs: list[tuple[str, object]] = []
+    (oracle, oracle_version, seed, samples, initial, ...). Those read from
+    its native file(s) (`Theory.settings`), then any among the lines it keeps
+    aside (`extra`); none for DFL files or hand-written theories without
+    such facts. Values are str or int."""
+    out = {k: list(v) for k, v in theory.settings.items()}
     for m in map(_SETTING.match, theory.extra):
         if m:
             v = m.group(2).strip('"')
-            pairs.append((m.group(1), int(v) if v.lstrip("-").isdigit() else v))
-    for path in _source_paths(theory.source):
-        pairs.extend(_settings_of_file(str(path), *_stamp(path)))
-    for k, v in pairs:
-        if v not in out.setdefault(k, []):
-            out[k].append(v)
+            have = out.setdefault(m.group(1), [])
+            value = int(v) if v.lstrip("-").isdigit() else v
+            if value not in have:
+                have.append(value)
     return out
 
 
@@ -241,29 +237,6 @@ def initial_antecedent(theory: Theory) -> list[str]:
     antecedent a_0 its exploration started from (and which every learned
     rule body therefore contains, or a neighbour of)."""
     return [p for p in settings(theory).get("initial", []) if isinstance(p, str)]
-
-
-def _source_paths(source: str) -> list[Path]:
-    """The files a Theory came from (`merge` joins their names with " + ")."""
-    if Path(source).is_file():
-        return [] if is_dfl(source) else [Path(source)]
-    return [Path(s) for s in source.split(" + ") if Path(s).is_file() and not is_dfl(s)]
-
-
-def _stamp(path: Path) -> tuple[int, int]:
-    st = path.stat()
-    return st.st_mtime_ns, st.st_size
-
-
-@lru_cache(maxsize=16)
-def _settings_of_file(path: str, _mtime: int, _size: int) -> tuple[tuple[str, object], ...]:
-    try:
-        facts = read_facts([path])
-    except TheoryFileError:
-        return ()
-    return tuple((str(args[0]), args[1]) for args in facts.get("setting", ())
-                 if len(args) == 2 and isinstance(args[0], str)
-                 and isinstance(args[1], (str, int)))
 
 
 def assumptions(theory: Theory, props: list[str] | tuple[str, ...]) -> list[str]:

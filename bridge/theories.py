@@ -38,6 +38,9 @@ class Theory:
     learned: set[str] = field(default_factory=set)
     extra: list[str] = field(default_factory=list)
     source: str = "<theory>"
+    #: `setting(Key, Value)` facts of a learned theory (what its exploration
+    #: was run with), values in file order; str or int.
+    settings: dict[str, list] = field(default_factory=dict)
 
     def rule(self, rule_id: str) -> Rule:
         for r in self.rules:
@@ -57,7 +60,8 @@ class Theory:
         """A copy with more facts."""
         extra = [f for f in facts if f not in self.facts]
         return Theory(self.facts + extra, list(self.rules), list(self.sup), set(self.learned),
-                      list(self.extra), self.source)
+                      list(self.extra), self.source,
+                      {k: list(v) for k, v in self.settings.items()})
 
     def native(self) -> str:
         """The theory in the native format."""
@@ -204,6 +208,10 @@ def read_native(path: Path | str) -> Theory:
     t.sup = [(literal_text(a), literal_text(b)) for a, b in
              (x for x in facts.get("sup", []) if len(x) == 2)]
     t.learned = {literal_text(x[0]) for x in facts.get("learned", []) if len(x) == 1}
+    for args in facts.get("setting", []):
+        if len(args) == 2:
+            value = args[1] if isinstance(args[1], (str, int)) else literal_text(args[1])
+            t.settings.setdefault(literal_text(args[0]), []).append(value)
     t.validate()
     return t
 
@@ -227,4 +235,7 @@ def merge(theories: list[Theory]) -> Theory:
             out.rules.append(r)
         out.sup.extend(t.sup)
         out.learned |= t.learned
+        for k, values in t.settings.items():
+            have = out.settings.setdefault(k, [])
+            have.extend(v for v in values if v not in have)
     return out
