@@ -47,6 +47,11 @@ class Semantics:
         return (f"sem({self.ambiguity}, {str(self.team_defeat).lower()}, "
                 f"{str(self.well_founded).lower()})")
 
+    def options(self) -> str:
+        """As the option list of theory/queries.pl."""
+        return (f"[ambiguity({self.ambiguity}), team_defeat({str(self.team_defeat).lower()}), "
+                f"well_founded({str(self.well_founded).lower()})]")
+
     def asp_constants(self) -> dict[str, str]:
         return {"ambiguity": self.ambiguity, "team_defeat": str(self.team_defeat).lower(),
                 "well_founded": str(self.well_founded).lower()}
@@ -283,11 +288,6 @@ def _prolog_list(items) -> str:
     return "[" + ", ".join(items) + "]"
 
 
-def _prolog_options(semantics: Semantics) -> str:
-    return (f"[ambiguity({semantics.ambiguity}), team_defeat({str(semantics.team_defeat).lower()}), "
-            f"well_founded({str(semantics.well_founded).lower()})]")
-
-
 def what_happens(theory: Theory, props: list[str],
                  semantics: Semantics = Semantics()) -> list[Outcome]:
     """The prediction for a scene: one Outcome per expectation, with reasons
@@ -295,7 +295,7 @@ def what_happens(theory: Theory, props: list[str],
     e = prolog_load(theory)
     e.use_module("queries")
     scene = _prolog_list(props)
-    sem = _prolog_options(semantics)
+    sem = semantics.options()
     goal = (f"queries:what_happens({scene}, {sem}, Os), "
             f"findall(S, (member(outcome(E, V, R), Os), "
             f"(V == fails -> L = neg(E) ; L = E), queries:explain_brief({scene}, L, {sem}, T), "
@@ -317,5 +317,5 @@ def explain(theory: Theory, props: list[str], literal: str,
     e = prolog_load(theory)
     e.use_module("queries")
     pred = "explain_brief" if brief else "explain"
-    r = e.once(f"queries:{pred}({_prolog_list(props)}, {literal}, {_prolog_options(semantics)}, T)")
+    r = e.once(f"queries:{pred}({_prolog_list(props)}, {literal}, {semantics.options()}, T)")
     return prolog_text(r["T"])

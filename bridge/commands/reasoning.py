@@ -164,9 +164,11 @@ def plan(args: argparse.Namespace) -> int:
     given = known(_split(args.given))
     theory = reasoning.load(args.theory)
     plans = make_plans(theory, goals, given, args.alternatives)
-    oracle = str((reasoning.settings(theory).get("oracle") or ["pybullet"])[0])
-    verified = [_verify(p.antecedent, goals, args.verify, args.seed + i, oracle, args.store)
-                for i, p in enumerate(plans)] if args.verify else [None] * len(plans)
+    verified: list[dict | None] = [None] * len(plans)
+    if args.verify:
+        oracle = str((reasoning.settings(theory).get("oracle") or ["pybullet"])[0])
+        verified = [_verify(p.antecedent, goals, args.verify, args.seed + i, oracle, args.store)
+                    for i, p in enumerate(plans)]
     from ..planning import check_goals
 
     goal_lits = check_goals(goals, theory)
