@@ -36,7 +36,7 @@ from .errors import UserError
 from .evaluation import (FAILS, HOLDS, UNKNOWN, accuracy, distinct_behaviours,
                          tree_predictions, verdicts)
 from .exploration import iteration_seed, outcome
-from .theories import Rule, Theory, literal_text
+from .theories import Rule, Theory, complement, literal_text
 from .weights import log_densities, weights
 
 #: The paper's three example rules (section 3.2): the scene, the literal it
@@ -302,14 +302,16 @@ def evaluate(opts: Options) -> Evaluation:
                                        known | set(uniform) | set(near))
         sets = {"uniform": uniform, "near": near, "near_random": near_random}
         P_held = {k: np.vstack([sample(list(a), 1, iteration_seed(opts.seed, 100_000 + j))
-                                for j, a in enumerate(v)]) if v else np.empty((0, 30))
+                                for j, a in enumerate(v)]) if v else np.empty((0, len(P_cur[0])))
                   for k, v in sets.items()}
         S_held = {k: run(f"held-out ({k})", P_held[k]) for k in sets}
 
         t = time.monotonic()
         _say("predicting the held-out scenes with every theory along the budget")
-        truth = {k: verdicts(S_held[k]) for k in sets}
-        keep = {k: np.all(np.isfinite(S_held[k]), axis=1) for k in sets}
+        held = {}    # per set: the scenes whose pour did not fail, and their verdicts
+        for name, scenes in sets.items():
+            ok = np.all(np.isfinite(S_held[name]), axis=1)
+            held[name] = ([s for s, kept in zip(scenes, ok) if kept], verdicts(S_held[name][ok]))
         curves: dict[str, Any] = {"budget": [k * samples for k in range(1, R + 1)]}
         for method, ants, P, S in (("curiosity", explored, P_cur, S_cur),
                                    ("random", random_ants, P_rnd, S_rnd)):
@@ -318,9 +320,8 @@ def evaluate(opts: Options) -> Evaluation:
                 heads = consequents(ants[:k], P[:k * samples], S[:k * samples], mode)
                 beh.append(distinct_behaviours(heads))
                 th = theory_of(ants[:k], heads, f"{method}@{k}")
-                for name, scenes in sets.items():
-                    sel = [s for s, kept in zip(scenes, keep[name]) if kept]
-                    a = accuracy(predict(th, sel), truth[name][keep[name]])
+                for name, (sel, y) in held.items():
+                    a = accuracy(predict(th, sel), y)
                     cov[name].append(a.overall_coverage)
                     acc[name].append(None if np.isnan(a.overall_accuracy) else a.overall_accuracy)
             curves[method] = {"behaviours": beh, "coverage": cov, "accuracy": acc}
@@ -333,9 +334,7 @@ def evaluate(opts: Options) -> Evaluation:
                                      consequents(random_ants, P_rnd, S_rnd, mode), "random")}
         train = {"curiosity": ([a for a in explored for _ in range(samples)], S_cur),
                  "random": ([a for a in random_ants for _ in range(samples)], S_rnd)}
-        for name, scenes in sets.items():
-            sel = [s for s, kept in zip(scenes, keep[name]) if kept]
-            y = truth[name][keep[name]]
+        for name, (sel, y) in held.items():
             out: dict[str, Any] = {"scenes": len(sel),
                                    "mean_propositions": float(np.mean([len(s) for s in sel]))
                                    if sel else 0.0}
@@ -374,7 +373,8 @@ def _differing_rules(theory: Theory, heads: np.ndarray) -> list[str]:
 
 
 def _paper_rules(theory: Theory, run, opts: Options) -> list[dict[str, Any]]:
-    names = load_vocabulary().expectation_names
+    from .planning import goals_met
+
     out, scenes = [], []
     for props, literal, words in PAPER_RULES:
         # learned rules for the literal whose antecedent holds the scene's propositions
@@ -385,7 +385,7 @@ def _paper_rules(theory: Theory, run, opts: Options) -> list[dict[str, Any]]:
         assumed = reasoning.assumptions(theory, list(props))
         scene = sorted(set(props) | set(assumed))
         said = {o.expectation: o for o in reasoning.what_happens(theory, scene)}
-        expectation = literal[4:-1] if literal.startswith("neg(") else literal
+        expectation = complement(literal) if literal.startswith("neg(") else literal
         o = said[expectation]
         says = {"holds": expectation, "fails": f"neg({expectation})"}.get(o.value, "unknown")
         out.append({"scene": list(props), "assumed": assumed, "literal": literal, "paper": words,
@@ -398,10 +398,7 @@ def _paper_rules(theory: Theory, run, opts: Options) -> list[dict[str, Any]]:
         for i, entry in enumerate(out):
             rows = S[i * opts.paper_samples:(i + 1) * opts.paper_samples]
             rows = rows[np.all(np.isfinite(rows), axis=1)]
-            lit = entry["literal"]
-            e = lit[4:-1] if lit.startswith("neg(") else lit
-            holds = rows[:, names.index(e)] > 0.5
-            share = float((~holds if lit.startswith("neg(") else holds).mean()) if len(rows) else None
+            share = float(goals_met(rows, [entry["literal"]]).mean()) if len(rows) else None
             entry.update(simulated=int(len(rows)), oracle_share=share)
     return out
 
