@@ -218,10 +218,11 @@ class Evaluation:
                  "paper_rules", "plans", "simulations", "seconds")}
 
     @property
-    def plan_rate(self) -> float:
+    def plan_rate(self) -> float | None:
+        """The share of the plans' pours that met their goals (None: none simulated)."""
         met = sum(p["met"] for p in self.plans if "met" in p)
         done = sum(p["simulated"] for p in self.plans if "simulated" in p)
-        return met / done if done else float("nan")
+        return met / done if done else None
 
 
 def _shown(path: Path) -> str:
