@@ -6,9 +6,6 @@ PYTHON ?= python3
 VENV   := .venv
 PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
-PLUNIT := $(wildcard theory/*.plt theory/*/*.plt)
-comma  := ,
-space  := $(subst ,, )
 
 .PHONY: setup system demo evaluate test test-python test-prolog bench clean
 
@@ -41,10 +38,10 @@ test: setup test-python test-prolog
 test-python:
 	$(PY) -m pytest -q
 
-# Every plunit file (a .plt beside its module), loaded and run in one swipl.
+# Every plunit file (a .plt beside its module), loaded and run in one swipl:
+# theory/pantarhei.pl loads every module of the theory.
 test-prolog:
-	swipl --on-error=status -q -g "maplist(use_module, [$(subst $(space),$(comma),$(PLUNIT:.plt=))]), \
-	  load_test_files([]), (run_tests -> halt ; halt(1))"
+	swipl --on-error=status -q -g "load_test_files([]), (run_tests -> halt ; halt(1))" theory/pantarhei.pl
 
 bench: setup
 	$(PY) -m benchmarks

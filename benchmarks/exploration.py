@@ -31,7 +31,7 @@ REPEATS = 3
 
 
 def overhead(max_rules: int, tmp: Path, seed: int = 1, breadth: int = 3) -> tuple[float, int, dict]:
-    from pantarhei.bridge.exploration import Options, explore
+    from pantarhei.bridge.exploration.loop import Options, explore
 
     t = time.perf_counter()
     r = explore(Options(oracle="synthetic", max_rules=max_rules, seed=seed, out=tmp / "t.pl",
@@ -56,10 +56,10 @@ def pour_seconds(n: int = 3) -> float:
 
 
 def qualify_accuracy(tmp: Path, seeds=(1, 2, 3)) -> dict[str, float]:
-    from pantarhei.bridge.exploration import Options, explore
+    from pantarhei.bridge.exploration.loop import Options, explore
     from pantarhei.oracle.generative import sample
     from pantarhei.oracle.synthetic import scores
-    from pantarhei.oracle.vocabulary import load_vocabulary
+    from pantarhei.theory.lexicon import load_vocabulary
     from pantarhei.theory import read_facts
 
     v = load_vocabulary()
@@ -86,10 +86,10 @@ def qualify_accuracy(tmp: Path, seeds=(1, 2, 3)) -> dict[str, float]:
 
 
 def direction_hits(ridge: float, trials: int = 30) -> float:
-    from pantarhei.bridge.planes import best_abs_slope, plane_fit
+    from pantarhei.bridge.exploration.planes import best_abs_slope, plane_fit
     from pantarhei.oracle.generative import normalise, sample
     from pantarhei.oracle.synthetic import DEPENDS, scores
-    from pantarhei.oracle.vocabulary import load_vocabulary
+    from pantarhei.theory.lexicon import load_vocabulary
 
     v = load_vocabulary()
     names, expectations = v.parameter_names, v.expectation_names

@@ -61,7 +61,7 @@ NUDGE_MM = 0.01
 
 def fidelity(P: np.ndarray) -> None:
     from pantarhei.oracle import physics
-    from pantarhei.oracle.vocabulary import load_vocabulary
+    from pantarhei.theory.lexicon import load_vocabulary
 
     n = P.size // P.shape[1] * 9
     print(f"fidelity: {len(P)} parameterizations, {n} verdicts (score > 0.5)")

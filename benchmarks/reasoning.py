@@ -12,10 +12,11 @@ import random
 import statistics
 import time
 
-from pantarhei.bridge import benchmark_theories as bench
-from pantarhei.bridge.planning import plan
-from pantarhei.bridge.reasoning import Semantics, asp_conclusions, prolog_load, what_happens
-from pantarhei.oracle.vocabulary import load_vocabulary
+from pantarhei.bridge.theories import families as bench
+from pantarhei.bridge.reasoning.planning import plan
+from pantarhei.bridge.reasoning.answers import what_happens
+from pantarhei.bridge.reasoning.logic import Semantics, asp_conclusions, prolog_load
+from pantarhei.theory.lexicon import load_vocabulary
 
 #: Largest benchmark theory (rules); PANTARHEI_BENCH_MAX_RULES=10000 for a quick run.
 MAX_RULES = int(os.environ.get("PANTARHEI_BENCH_MAX_RULES", "100000"))
@@ -34,7 +35,7 @@ def _median(f, repeat: int) -> float:
 
 def _scenes(n: int, seed: int) -> list[list[str]]:
     """Random valid scenes: one proposition from each of 6 random dimensions."""
-    from pantarhei.bridge.validity import violations
+    from pantarhei.bridge.reasoning.scenes import violations
 
     vocab = load_vocabulary()
     rng = random.Random(seed)
@@ -97,7 +98,7 @@ def scaling() -> None:
         for size in sizes:
             b = bench.of_size(name, size)
             t = time.perf_counter()
-            from pantarhei.bridge.reasoning import prolog_conclusions_batch
+            from pantarhei.bridge.reasoning.logic import prolog_conclusions_batch
 
             (c,) = prolog_conclusions_batch([(b.theory, Semantics())])
             tp = time.perf_counter() - t

@@ -10,10 +10,10 @@ import importlib
 import sys
 from typing import Sequence
 
-from .errors import MissingEngine, TheoryFileError, UserError
+from pantarhei.bridge.errors import MissingEngine, TheoryFileError, UserError
 
 #: Modules of pantarhei.bridge.commands, in the order `--help` lists them.
-COMMANDS = ("vocabulary", "demo", "oracle", "explore", "reasoning", "evaluate")
+COMMANDS = ("vocab", "demo", "simulate", "explore", "querying", "evaluate")
 
 
 class _Parser(argparse.ArgumentParser):

@@ -29,6 +29,16 @@ def write_text(path: Path | str, text: str) -> None:
     replace_with(path, lambda tmp: tmp.write_text(text, encoding="utf-8"))
 
 
+def pyplot():
+    """matplotlib.pyplot, drawing off screen (the Agg backend)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
 def save_figure(fig, path: Path | str) -> None:
     """Save a matplotlib figure as PNG whole or not at all, and close it."""
     import matplotlib.pyplot as plt

@@ -29,7 +29,7 @@ from typing import Any, Callable, Optional, Sequence
 
 import numpy as np
 
-from .base import Oracle
+from pantarhei.oracle.base import Oracle
 
 #: Attempts per simulation: the first and one retry.
 ATTEMPTS = 2

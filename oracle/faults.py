@@ -15,10 +15,10 @@ from typing import Any, Iterable, Optional
 
 import numpy as np
 
-from .base import Oracle, Outcome
-from .generative import normalise
+from pantarhei.oracle.base import Oracle, Outcome
+from pantarhei.oracle.generative import normalise
+from pantarhei.theory.lexicon import load_vocabulary
 
-COUNT = 29   # index of particle_count
 
 
 def segfault() -> None:
@@ -41,7 +41,7 @@ class FaultyOracle(Oracle):
         return {"crash": self.crash, "hang": self.hang, "flaky": self.flaky}
 
     def score(self, p: np.ndarray) -> Outcome:
-        count = int(round(float(p[COUNT])))
+        count = int(round(float(p[load_vocabulary().parameter('particle_count').index])))
         if count in self.crash:
             segfault()
         if count in self.hang:

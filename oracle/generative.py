@@ -24,7 +24,7 @@ from typing import Iterable, Mapping, Sequence
 
 import numpy as np
 
-from .vocabulary import Vocabulary, load_vocabulary
+from pantarhei.theory.lexicon import Vocabulary, load_vocabulary
 
 
 class InvalidAntecedent(ValueError):
@@ -32,7 +32,7 @@ class InvalidAntecedent(ValueError):
 
 
 @dataclass(frozen=True)
-class Plan:
+class Distribution:
     """The compiled distribution of one antecedent.
 
     `low`/`high` hold each parameter's interval (for relative parameters, the
@@ -52,7 +52,7 @@ def canonical(antecedent: Iterable[str]) -> tuple[str, ...]:
 
 
 @lru_cache(maxsize=4096)
-def _plan(antecedent: tuple[str, ...]) -> Plan:
+def _distribution(antecedent: tuple[str, ...]) -> Distribution:
     vocab = load_vocabulary()
     vocab.check_names(antecedent)
     n = len(vocab.parameters)
@@ -87,17 +87,17 @@ def _plan(antecedent: tuple[str, ...]) -> Plan:
     discrete = np.array([p.discrete for p in vocab.parameters])
     low = np.where(discrete, np.ceil(low), low)
     high = np.where(discrete, np.floor(high), high)
-    return Plan(low, high, base, discrete, bl, bh)
+    return Distribution(low, high, base, discrete, bl, bh)
 
 
-def plan(antecedent: Iterable[str]) -> Plan:
+def distribution(antecedent: Iterable[str]) -> Distribution:
     """The compiled distribution of an antecedent (cached)."""
-    return _plan(canonical(antecedent))
+    return _distribution(canonical(antecedent))
 
 
 def sample(antecedent: Iterable[str], n: int, seed: int) -> np.ndarray:
     """n parameterizations drawn from P(p|antecedent), shape (n, 30)."""
-    pl = plan(antecedent)
+    pl = distribution(antecedent)
     rng = np.random.default_rng(seed)
     k = len(pl.low)
     out = np.empty((n, k))
@@ -115,7 +115,7 @@ def sample(antecedent: Iterable[str], n: int, seed: int) -> np.ndarray:
     return out
 
 
-def _relative_range(pl: Plan, i: int, base_values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _relative_range(pl: Distribution, i: int, base_values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     lo = np.maximum(pl.bound_low[i], base_values + pl.low[i])
     hi = np.minimum(pl.bound_high[i], base_values + pl.high[i])
     return lo, hi
@@ -123,7 +123,7 @@ def _relative_range(pl: Plan, i: int, base_values: np.ndarray) -> tuple[np.ndarr
 
 def log_density(P: np.ndarray, antecedent: Iterable[str]) -> np.ndarray:
     """log P(p|antecedent) for each row p of P (-inf outside the support)."""
-    pl = plan(antecedent)
+    pl = distribution(antecedent)
     P = np.atleast_2d(np.asarray(P, dtype=float))
     out = np.zeros(len(P))
     for i in range(len(pl.low)):

@@ -21,9 +21,9 @@ from typing import Any, Callable, Iterator, Optional
 import numpy as np
 
 from . import scoring
-from .base import Oracle, Outcome
-from .scene import MM, Geometry, bowl_shape, geometry, packing
-from .vocabulary import load_vocabulary
+from pantarhei.oracle.base import Oracle, Outcome
+from pantarhei.oracle.scene import MM, Geometry, bowl_shape, geometry, packing
+from pantarhei.theory.lexicon import load_vocabulary
 
 GRAVITY = 9.81
 

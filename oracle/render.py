@@ -8,7 +8,7 @@ from typing import Any, Optional
 import numpy as np
 
 from . import physics, scoring
-from .base import Outcome
+from pantarhei.oracle.base import Outcome
 
 
 def _camera(client: Any, width: int, height: int) -> tuple[list[float], list[float]]:

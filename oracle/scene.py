@@ -18,7 +18,7 @@ from typing import Any
 
 import numpy as np
 
-from .vocabulary import load_vocabulary
+from pantarhei.theory.lexicon import load_vocabulary
 
 #: metres per millimetre
 MM = 0.001

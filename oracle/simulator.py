@@ -16,13 +16,13 @@ from typing import Any, Optional
 
 import numpy as np
 
-from .base import Oracle, make_oracle
-from .executors import Done, Executor, make_executor
-from .store import Store, key, oracle_tag
+from pantarhei.oracle.base import Oracle, make_oracle
+from pantarhei.oracle.executors import Done, Executor, make_executor
+from pantarhei.oracle.store import Store, key, oracle_tag
+from pantarhei.theory.lexicon import load_vocabulary
 
 #: Seconds a single simulation may take before it counts as hung.
 DEFAULT_TIMEOUT = 120.0
-N_EXPECTATIONS = 9
 
 
 class Simulator:
@@ -52,7 +52,7 @@ class Simulator:
         P = np.atleast_2d(np.asarray(P, dtype=float))
         n = len(P)
         keys = self.keys(P)
-        scores = np.full((n, N_EXPECTATIONS), np.nan)
+        scores = np.full((n, len(load_vocabulary().expectations)), np.nan)
         records: list[Optional[dict[str, Any]]] = [None] * n
         errors: list[Optional[str]] = [None] * n
         cached = [False] * n

@@ -19,7 +19,13 @@ from typing import Any, Iterable, Optional
 
 import numpy as np
 
-from .base import Oracle
+from pantarhei.oracle.base import Oracle
+from pantarhei.theory import defaults
+from pantarhei.theory.lexicon import load_vocabulary
+
+#: The store of simulations (and exploration state) unless told otherwise,
+#: relative to the working directory (theory/defaults.pl).
+DEFAULT_STORE = Path(str(defaults()["store"]))
 
 #: Decimal places a parameter value keeps in the key (theory units).
 DECIMALS = 6
@@ -122,7 +128,7 @@ class Store:
                 f"WHERE key IN ({','.join('?' * len(chunk))})", chunk)
             for k, status, scores, record, error, attempts in rows:
                 s = np.array([np.nan if v is None else v for v in json.loads(scores)], dtype=float) \
-                    if scores else np.full(9, np.nan)
+                    if scores else np.full(len(load_vocabulary().expectations), np.nan)
                 found[k] = Result(k, status, s, json.loads(record) if record else None, error, attempts)
         return found
 

@@ -23,8 +23,8 @@ from typing import Any, Mapping
 
 import numpy as np
 
-from .base import Oracle, Outcome
-from .vocabulary import load_vocabulary
+from pantarhei.oracle.base import Oracle, Outcome
+from pantarhei.theory.lexicon import load_vocabulary
 
 #: Expectation -> {parameter: +1 if the score rises with it, -1 if it falls}.
 DEPENDS: dict[str, dict[str, int]] = {

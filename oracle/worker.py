@@ -5,7 +5,7 @@ from __future__ import annotations
 import sys
 from multiprocessing.connection import Connection
 
-from .executors import worker_main
+from pantarhei.oracle.executors import worker_main
 
 if __name__ == "__main__":
     down, up = int(sys.argv[1]), int(sys.argv[2])

@@ -1,8 +1,8 @@
 """README stays true: its tables and figures are the vocabulary's."""
 from pathlib import Path
 
-from pantarhei.bridge.commands.vocabulary import markdown_tables
-from pantarhei.bridge.validity import count_valid
+from pantarhei.bridge.commands.vocab import markdown_tables
+from pantarhei.bridge.reasoning.scenes import count_valid
 
 README = (Path(__file__).resolve().parents[1] / "README.md").read_text()
 
@@ -34,7 +34,7 @@ def test_readme_says_how_each_score_is_computed():
 
 def test_readme_headline_figures_are_the_shipped_evaluation():
     """README's evaluation table is the one `make evaluate` wrote to report/."""
-    from pantarhei.bridge.report import headline_markdown, load
+    from pantarhei.bridge.evaluation.report import headline_markdown, load
 
     root = Path(__file__).resolve().parents[1]
     ev = load(root / "report" / "evaluation.json")

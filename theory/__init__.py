@@ -16,7 +16,40 @@ THEORY_DIR = Path(__file__).resolve().parent
 VOCABULARY_FILES = tuple(THEORY_DIR / "vocabulary" / f"{name}.pl"
                          for name in ("parameters", "propositions", "expectations", "constraints"))
 
+#: The file that loads every Prolog module of the theory (and the shipped
+#: theory) into a plain SWI-Prolog: the one list of the Prolog modules.
+PROLOG_ENTRY = THEORY_DIR / "pantarhei.pl"
+
 Value = Union[int, str, tuple]
+
+
+#: The project's defaults (exploration settings, a_0, where the learned
+#: theory and the store go), read by Prolog and Python alike.
+DEFAULTS_FILE = THEORY_DIR / "defaults.pl"
+
+
+def defaults() -> dict[str, object]:
+    """theory/defaults.pl as a dict: `default(Key, V)` facts by key (a
+    `Key_permille` value becomes `Key` as a float), and `initial`, the tuple
+    of default_initial/1 propositions in file order."""
+    facts = read_facts([DEFAULTS_FILE])
+    out: dict[str, object] = {}
+    for key, value in facts.get("default", []):
+        if key.endswith("_permille"):
+            out[key[: -len("_permille")]] = value / 1000
+        else:
+            out[key] = value
+    out["initial"] = tuple(p for (p,) in facts.get("default_initial", []))
+    return out
+
+
+def prolog_modules() -> tuple[str, ...]:
+    """The Prolog modules of theory/, in load order, as pantarhei.pl lists
+    them (`:- use_module(Name).` lines)."""
+    import re
+
+    text = PROLOG_ENTRY.read_text(encoding="utf-8")
+    return tuple(re.findall(r"^:- use_module\(([a-z_]+)\)\.", text, flags=re.M))
 
 
 class TheoryFileError(ValueError):

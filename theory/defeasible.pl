@@ -3,6 +3,7 @@
             clear_theory/0,
             add_theory_fact/1,      % +Fact
             theory_loaded/0,
+            theory_given/0,
             semantics/2,            % +Options, -Sem
             truth/3,                % +Sem, +Goal, -Value
             conclusion/3,           % +Sem, ?Tag, ?Literal
@@ -61,7 +62,7 @@ theory/defeasible.lp computes the same conclusions with clingo.
 % theories have few atoms, so keep them.
 :- set_prolog_flag(agc_margin, 0).
 
-:- dynamic fact/1, rule/3, body/2, sup/2, learned/1,
+:- dynamic fact/1, rule/3, body/2, sup/2, learned/1, given_theory/1,
    scene_fact/1, rule_body/2, superior/2, theory_literal/1, loaded/0,
    generation/1, head_key/3, fact_key/2.
 
@@ -107,6 +108,7 @@ load_theory(File) :-
     forall(current_predicate(Scratch:P/A),
            ( functor(H, P, A), retractall(Scratch:H) )),
     check_theory(File),
+    assertz(given_theory(File)),
     prepare.
 
 theory_predicate(fact, 1).
@@ -136,6 +138,7 @@ clear_theory :-
     retractall(sup(_, _)), retractall(learned(_)), retractall(scene_fact(_)),
     retractall(rule_body(_, _)), retractall(superior(_, _)),
     retractall(theory_literal(_)), retractall(loaded),
+    retractall(given_theory(_)),
     next_generation.
 
 %!  add_theory_fact(+Fact) is det.
@@ -147,9 +150,18 @@ add_theory_fact(F) :-
     F =.. [P|Args], length(Args, A),
     (   theory_predicate(P, A)
     ->  (   P \== fact, call(F) -> true ; assertz(F) ),
+        (   given_theory(_) -> true ; assertz(given_theory(added)) ),
         retractall(loaded)
     ;   true
     ).
+
+%!  theory_given is semidet.
+%
+%   A theory was given: loaded by load_theory/1 or added fact by fact by
+%   add_theory_fact/1 since the last clear_theory/0.
+theory_given :-
+    given_theory(_),
+    !.
 
 %!  theory_loaded is semidet.
 %

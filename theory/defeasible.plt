@@ -1,11 +1,10 @@
 :- begin_tests(defeasible).
 
 :- use_module(defeasible).
+:- use_module(plunit_helpers).
 
 load_text(Text) :-
-    tmp_file_stream(text, File, S), write(S, Text), close(S),
-    load_theory(File),
-    delete_file(File).
+    load_theory_text(Text).
 
 sem(S) :- semantics([], S).
 

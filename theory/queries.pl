@@ -36,11 +36,20 @@ large theories: the rules that come nearest to deciding the literal.
 what_happens(Scene, Outcomes) :-
     what_happens(Scene, [], Outcomes).
 what_happens(Scene, Options, Outcomes) :-
+    must_have_theory(what_happens/3),
     semantics(Options, S),
     with_scene(Scene,
                findall(outcome(E, V, R),
                        ( expectation(E, _, _), outcome(S, E, V, R) ),
                        Outcomes)).
+
+% must_have_theory(+Where): a question needs a theory to answer it.
+must_have_theory(Where) :-
+    (   theory_given
+    ->  true
+    ;   throw(error(existence_error(theory, learned),
+                    context(Where, "no theory is loaded: call defeasible:load_theory(File), or start with swipl theory/pantarhei.pl, which loads the shipped theory")))
+    ).
 
 outcome(S, E, V, R) :-
     (   truth(S, defeasibly(S, E), true)

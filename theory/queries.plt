@@ -1,5 +1,7 @@
 :- begin_tests(queries).
 
+:- use_module(plunit_helpers).
+
 :- use_module(defeasible).
 :- use_module(queries).
 
@@ -79,11 +81,11 @@ test(brief_words, [setup(setup)]) :-
 % scene p0 none applies: the brief why-not names the three nearest, why/4
 % every rule.
 many_rules(File) :-
-    tmp_file_stream(text, File, Out),
-    forall(between(1, 40, I),
-           ( format(Out, "rule(r~w, defeasible, no_spill).~n", [I]),
-             forall(between(0, I, J), format(Out, "body(r~w, p~w).~n", [I, J])) )),
-    close(Out).
+    with_output_to(string(Text),
+                   forall(between(1, 40, I),
+                          ( format("rule(r~w, defeasible, no_spill).~n", [I]),
+                            forall(between(0, I, J), format("body(r~w, p~w).~n", [I, J])) ))),
+    text_file(Text, File).
 
 test(brief_names_three_rules,
      [ setup((many_rules(F), load_theory(F))), cleanup(delete_file(F)),

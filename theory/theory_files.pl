@@ -1,7 +1,8 @@
 :- module(theory_files,
           [ load_facts/2,              % +File, +Module
             check_fact/1,              % +Term
-            theory_error_message/2     % +Error, -Message
+            theory_error_message/2,    % +Error, -Message
+            error_text/2               % +Error, -Text
           ]).
 /** <module> Reading theory files: the common subset of Prolog and ASP
 
@@ -123,3 +124,21 @@ check_name(Term) :-
 %   The one-line message for a theory_error/3.
 theory_error_message(theory_error(File, Line, Expected), Message) :-
     format(string(Message), "~w:~w: ~w", [File, Line, Expected]).
+
+%!  error_text(+Error, -Text:string) is det.
+%
+%   Any error as one line of text: a theory_error/3 as =|File:Line:
+%   Expected|=, anything else as SWI-Prolog's own message for it, first line.
+error_text(Error, Text) :-
+    theory_error_message(Error, Text),
+    !.
+error_text(Error, Text) :-
+    catch(( '$messages':translate_message(Error, Lines, []),
+            with_output_to(string(All), print_message_lines(current_output, '', Lines))
+          ), _, fail),
+    split_string(All, "\n", "", [First|_]),
+    First \== "",
+    !,
+    Text = First.
+error_text(Error, Text) :-
+    format(string(Text), "~q", [Error]).

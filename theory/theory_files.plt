@@ -1,9 +1,10 @@
 :- use_module(theory_files).
+:- use_module(plunit_helpers).
 
 :- begin_tests(theory_files).
 
 write_tmp(Text, File) :-
-    tmp_file_stream(text, File, S), write(S, Text), close(S).
+    text_file(Text, File).
 
 load_error(Text, Line, Expected) :-
     write_tmp(Text, File),
@@ -36,5 +37,15 @@ test(a_syntax_error_names_its_line, Line == 2) :-
 
 test(message_is_one_line, M == "f.pl:3: a fact, not a rule") :-
     theory_error_message(theory_error('f.pl', 3, "a fact, not a rule"), M).
+
+test(error_text_of_a_theory_error) :-
+    error_text(theory_error('t.pl', 3, "a ground fact"), T),
+    assertion(T == "t.pl:3: a ground fact").
+
+test(error_text_of_any_error_is_one_line) :-
+    catch(atom_length(_, _), E, true),
+    error_text(E, T),
+    assertion(sub_string(T, _, _, _, "atom_length/2")),
+    assertion(\+ sub_string(T, _, _, _, "\n")).
 
 :- end_tests(theory_files).

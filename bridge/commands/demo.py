@@ -11,8 +11,10 @@ import argparse
 import time
 from pathlib import Path
 
-from .. import exploration
-from ..errors import UserError
+from pantarhei.bridge.commands import options
+from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.exploration.loop import Options, explore
+from pantarhei.theory import defaults
 
 #: The paper's three questions (section 3.2), as words and propositions.
 QUESTIONS = (
@@ -28,15 +30,12 @@ GOAL = "liquid_leaves_source,liquid_remains_in_destination,no_spill"
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("demo", help="the main job: learn the theory of pouring (PyBullet, 25 "
                                     "rules), write it, ask it the paper's questions and plan")
-    p.add_argument("--oracle", choices=("pybullet", "synthetic"), default="pybullet",
-                   help="the simulation (default pybullet) or analytic test scores")
-    p.add_argument("--max-rules", type=int, default=25, help="explored antecedents (default 25)")
-    p.add_argument("--seed", type=int, default=1, help="seed of every random choice (default 1)")
-    p.add_argument("--out", default=str(exploration.DEFAULT_OUT),
-                   help="the learned theory (default theory/learned/pouring.pl; "
-                        "the DFL version goes beside it as .dfl)")
-    p.add_argument("--store", default=str(exploration.DEFAULT_STORE),
-                   help=f"SQLite file of simulations (default {exploration.DEFAULT_STORE})")
+    options.add_oracle(p)
+    p.add_argument("--max-rules", type=int, default=defaults()["max_rules"],
+                   help=f"explored antecedents (default {defaults()['max_rules']})")
+    options.add_seed(p)
+    options.add_theory_out(p, extra="; the DFL version goes beside it as .dfl")
+    options.add_store(p)
     p.add_argument("--verify", type=int, default=10,
                    help="pours simulated to check the plan (default 10; 0: none)")
     p.add_argument("--workers", type=int, help="worker processes (default: one per core)")
@@ -49,10 +48,10 @@ def _heading(text: str) -> None:
 
 
 def demo(args: argparse.Namespace) -> int:
-    from ..dfl import write_dfl
-    from ..files import write_text
-    from .. import reasoning
-    from .reasoning import ask, plan
+    from pantarhei.bridge.theories.dfl import write_dfl
+    from pantarhei.bridge.files import write_text
+    from pantarhei.bridge.theories import loading
+    from pantarhei.bridge.commands.querying import ask, plan
 
     if args.max_rules < 1 or args.verify < 0 or (args.workers is not None and args.workers < 1):
         raise UserError("--max-rules and --workers must be at least 1, --verify at least 0")
@@ -62,12 +61,12 @@ def demo(args: argparse.Namespace) -> int:
     started = time.monotonic()
     _heading(f"Learning the theory of pouring: curious exploration of the {args.oracle} "
              f"simulation, {args.max_rules} rules (Algorithm 1)")
-    result = exploration.explore(exploration.Options(
+    result = explore(Options(
         oracle=args.oracle, max_rules=args.max_rules, seed=args.seed, out=out,
         store=Path(args.store), workers=args.workers, progress=not args.no_progress))
-    theory = reasoning.load([out])
+    theory = loading.load([out])
     dfl = out.with_suffix(".dfl")
-    write_text(dfl, write_dfl(theory, reasoning.provenance_lines(theory)))
+    write_text(dfl, write_dfl(theory, loading.provenance_lines(theory)))
     why = {"a_new_empty": "A_new is empty", "max_rules": f"{args.max_rules} rules"}.get(
         result.get("stopped", ""), result.get("stopped", ""))
     print(f"explored {result['explored']} antecedents with {result['simulations']} simulations "

@@ -5,8 +5,8 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from .. import exploration
-from ..errors import UserError
+from pantarhei.bridge.commands import options
+from pantarhei.bridge.errors import UserError
 
 DEFAULT_REPORT = Path("report")
 
@@ -14,10 +14,8 @@ DEFAULT_REPORT = Path("report")
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("evaluate", help="measure a learned theory against its oracle: held-out "
                                         "scenes, a decision tree, random exploration, plans")
-    p.add_argument("--theory", default=str(exploration.DEFAULT_OUT),
-                   help="the learned theory (default theory/learned/pouring.pl)")
-    p.add_argument("--store", default=str(exploration.DEFAULT_STORE),
-                   help=f"SQLite file of simulations (default {exploration.DEFAULT_STORE})")
+    options.add_theory_out(p, "--theory")
+    options.add_store(p)
     p.add_argument("--out", default=str(DEFAULT_REPORT),
                    help=f"directory of the report (default {DEFAULT_REPORT}/)")
     p.add_argument("--scenes", type=int, default=150,
@@ -26,18 +24,15 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="pours simulated per plan (default 10)")
     p.add_argument("--paper-samples", type=int, default=20,
                    help="pours simulated per example rule of the paper (default 20)")
-    p.add_argument("--seed", type=int, default=1, help="seed of every random choice (default 1)")
+    options.add_seed(p)
     p.add_argument("--no-gifs", action="store_true", help="do not render pours as GIFs")
-    p.add_argument("--executor", choices=("local", "ray", "inline"), default="local")
-    p.add_argument("--workers", type=int, help="worker processes (default: one per core)")
-    p.add_argument("--ray-address", metavar="ADDR")
-    p.add_argument("--no-progress", action="store_true", help="no progress bars")
+    options.add_execution(p, progress="no progress bars")
     p.set_defaults(run=evaluate)
 
 
 def evaluate(args: argparse.Namespace) -> int:
-    from ..evaluate import Options, evaluate as run
-    from ..report import headline, write
+    from pantarhei.bridge.evaluation.pipeline import Options, evaluate as run
+    from pantarhei.bridge.evaluation.report import headline, write
 
     theory = Path(args.theory)
     if not theory.is_file():

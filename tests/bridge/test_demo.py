@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import re
 
-from pantarhei.bridge import reasoning
+from pantarhei.bridge.theories import loading
 from tests.conftest import assert_one_line_error, run_cli
 
 
@@ -15,9 +15,9 @@ def test_demo_learns_writes_asks_and_plans(tmp_path):
     r = run_cli(*args)
     assert r.code == 0, r.err
     assert "explored 5 antecedents with 155 simulations" in r.out
-    theory = reasoning.load([out])
+    theory = loading.load([out])
     assert len(theory.rules) == 45
-    dfl = reasoning.load([out.with_suffix(".dfl")])         # the DFL twin reads back the same rules
+    dfl = loading.load([out.with_suffix(".dfl")])         # the DFL twin reads back the same rules
     assert {(x.id, x.head, frozenset(x.body)) for x in dfl.rules} == \
            {(x.id, x.head, frozenset(x.body)) for x in theory.rules}
     header = out.with_suffix(".dfl").read_text().splitlines()[:3]
@@ -36,7 +36,7 @@ def test_demo_learns_writes_asks_and_plans(tmp_path):
 
 
 def theory_version() -> str:
-    from pantarhei.bridge.exploration import oracle_identity
+    from pantarhei.bridge.exploration.simulation import oracle_identity
 
     return oracle_identity("synthetic")[0]
 

@@ -5,9 +5,10 @@ from pathlib import Path
 
 import pytest
 
-from pantarhei.bridge.dfl import parse_dfl, write_dfl
-from pantarhei.bridge.reasoning import Semantics, conclusions, load
-from pantarhei.bridge.theories import read_native
+from pantarhei.bridge.theories.dfl import parse_dfl, write_dfl
+from pantarhei.bridge.reasoning.logic import Semantics, conclusions
+from pantarhei.bridge.theories.loading import load
+from pantarhei.bridge.theories.model import read_native
 from pantarhei.bridge.errors import UserError
 from pantarhei.theory import TheoryFileError
 
@@ -65,6 +66,22 @@ def test_native_text_round_trip(tmp_path: Path) -> None:
     f.write_text(t.native())
     again = read_native(f)
     assert again.rules == t.rules and again.learned == t.learned and again.facts == t.facts
+
+
+def _everything(t) -> tuple:
+    return (t.facts, t.rules, t.sup, t.learned, t.extra, t.settings, t.provenance)
+
+
+def test_convert_to_native_keeps_everything_of_a_learned_theory(tmp_path: Path) -> None:
+    from pantarhei.bridge.theories.loading import DEFAULT_THEORY
+    from tests.conftest import run_cli
+
+    shipped = read_native(DEFAULT_THEORY)
+    assert shipped.settings and shipped.provenance          # what a learned theory records
+    out = tmp_path / "copy.pl"
+    r = run_cli("convert", str(DEFAULT_THEORY), "--to", "native", "-o", str(out))
+    assert r.code == 0, r.err
+    assert _everything(read_native(out)) == _everything(shipped)
 
 
 @pytest.mark.parametrize("text,line,what", [

@@ -8,11 +8,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from pantarhei.bridge import evaluate as E
+from pantarhei.bridge.evaluation import pipeline as E
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.evaluation import distinct_behaviours
-from pantarhei.bridge.validity import violations
-from pantarhei.oracle.vocabulary import load_vocabulary
+from pantarhei.bridge.evaluation.measures import distinct_behaviours
+from pantarhei.bridge.reasoning.scenes import violations
+from pantarhei.theory.lexicon import load_vocabulary
 from tests.conftest import assert_one_line_error, run_cli
 
 FAST = ["--oracle", "synthetic", "--executor", "inline", "--no-progress"]
@@ -119,7 +119,7 @@ def test_plans_and_paper_rules_are_checked_in_simulation(evaluated):
 
 
 def test_the_report_and_its_figures(evaluated, tmp_path):
-    from pantarhei.bridge.report import headline, write
+    from pantarhei.bridge.evaluation.report import headline, write
 
     ev, _ = evaluated
     path = write(ev, tmp_path / "rep", gifs=False)

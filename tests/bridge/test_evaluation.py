@@ -2,7 +2,7 @@
 import numpy as np
 import pytest
 
-from pantarhei.bridge.evaluation import (FAILS, HOLDS, UNKNOWN, accuracy, distinct_behaviours,
+from pantarhei.bridge.evaluation.measures import (FAILS, HOLDS, UNKNOWN, accuracy, distinct_behaviours,
                                          one_hot, tree_predictions, verdicts)
 
 

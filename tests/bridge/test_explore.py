@@ -10,13 +10,13 @@ import clingo
 import numpy as np
 import pytest
 
-from pantarhei.bridge import exploration
+from pantarhei.bridge.exploration import loop as exploration, session
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.exploration import Options
-from pantarhei.bridge.prolog import engine
-from pantarhei.bridge.validity import violations
+from pantarhei.bridge.exploration.loop import Options
+from pantarhei.bridge.engines.swipl import engine
+from pantarhei.bridge.reasoning.scenes import violations
 from pantarhei.oracle.synthetic import DEPENDS
-from pantarhei.oracle.vocabulary import load_vocabulary
+from pantarhei.theory.lexicon import load_vocabulary
 from pantarhei.theory import read_facts
 
 V = load_vocabulary()
@@ -129,9 +129,9 @@ def test_exploration_moves_along_the_known_directions(explored):
         params = {V.propositions[p].model.param for p in changed}
         if top["parameter"] in params:
             moved += 1
-            m0 = float(eng.once(f"explore:parameter_mean({first['antecedent']}, {top['parameter']}, M)"
+            m0 = float(eng.once(f"curiosity:parameter_mean({first['antecedent']}, {top['parameter']}, M)"
                                 .replace("'", ""))["M"])
-            m1 = float(eng.once(f"explore:parameter_mean({a}, {top['parameter']}, M)"
+            m1 = float(eng.once(f"curiosity:parameter_mean({a}, {top['parameter']}, M)"
                                 .replace("'", ""))["M"])
             assert (m1 - m0) * top["component"] > 0
     assert moved >= 1

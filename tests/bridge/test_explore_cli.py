@@ -47,14 +47,58 @@ def test_prolog_command_drives_exploration(tmp_path):
     assert "rules: 18" in r.out
 
 
-def test_prolog_command_interactive_prompt(tmp_path):
+A0_QUESTION = ("what_happens([pour_near_rim, pour_mid_height, pour_steeply_tilted], O), "
+               "forall(member(outcome(E, V, R), O), format('~w ~w ~w~n', [E, V, R])).")
+
+
+def _decided_by_shipped_rules(out: str) -> list[str]:
+    """The rules of the shipped theory that decide an expectation in `out`."""
+    from pantarhei.bridge.theories.loading import DEFAULT_THEORY, load
+
+    ids = {r.id for r in load([DEFAULT_THEORY]).rules}
+    lines = [ln.split() for ln in out.splitlines() if len(ln.split()) == 3]
+    return [r for _e, v, r in lines if v in ("holds", "fails") and r in ids]
+
+
+def test_prolog_command_interactive_prompt_has_the_shipped_theory(tmp_path):
     import subprocess
     import sys
 
     p = subprocess.run([sys.executable, "-m", "pantarhei.bridge", "prolog"],
-                       input="X is 6*7, format('answer ~w~n', [X]).\nhalt.\n",
-                       capture_output=True, text=True, timeout=120)
-    assert "answer 42" in p.stdout
+                       input=A0_QUESTION + "\nhalt.\n", capture_output=True, text=True, timeout=120)
+    assert _decided_by_shipped_rules(p.stdout), p.stdout + p.stderr
+
+
+def test_prolog_command_loads_the_theory_it_is_given(tmp_path):
+    t = tmp_path / "mine.dfl"
+    t.write_text("mine: pour_to_side => neg(no_spill)\n")
+    r = run_cli("prolog", "--theory", str(t), "-g",
+                "what_happens([pour_to_side], O), memberchk(outcome(no_spill, V, R), O), "
+                "format('~w ~w~n', [V, R])")
+    assert r.code == 0, r.err
+    assert r.out.split() == ["fails", "mine"]
+
+
+def test_plain_swipl_answers_with_the_shipped_theory():
+    import subprocess
+
+    from pantarhei.theory import PROLOG_ENTRY
+
+    p = subprocess.run(["swipl", "-q", "-g", A0_QUESTION.rstrip("."), "-t", "halt", str(PROLOG_ENTRY)],
+                       capture_output=True, text=True, timeout=120, cwd="/")
+    assert p.returncode == 0, p.stderr
+    assert _decided_by_shipped_rules(p.stdout), p.stdout + p.stderr
+
+
+def test_what_happens_without_a_theory_says_how_to_load_one():
+    import subprocess
+
+    from pantarhei.theory import PROLOG_ENTRY
+
+    p = subprocess.run(["swipl", "-q", "-g", "clear_theory, what_happens([pour_to_side], _)", "-t", "halt",
+                        str(PROLOG_ENTRY)], capture_output=True, text=True, timeout=120)
+    assert p.returncode != 0
+    assert "no theory is loaded" in p.stderr and "load_theory" in p.stderr
 
 
 def test_prolog_command_samples_and_simulates(tmp_path):

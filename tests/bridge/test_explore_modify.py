@@ -5,11 +5,11 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from pantarhei.bridge import exploration
-from pantarhei.bridge.prolog import text
-from pantarhei.bridge.validity import violations
+from pantarhei.bridge.exploration.session import install
+from pantarhei.bridge.engines.swipl import text
+from pantarhei.bridge.reasoning.scenes import violations
 from pantarhei.oracle.generative import plan
-from pantarhei.oracle.vocabulary import load_vocabulary
+from pantarhei.theory.lexicon import load_vocabulary
 
 V = load_vocabulary()
 NAMES = V.parameter_names
@@ -17,7 +17,7 @@ NAMES = V.parameter_names
 
 @pytest.fixture(scope="module")
 def eng():
-    return exploration.load()
+    return install()
 
 
 
@@ -27,7 +27,7 @@ def parse(eng, props, direction, breadth, exclude):
     ex = "[" + ", ".join("[" + ", ".join(sorted(e)) + "]" for e in exclude) + "]"
     ps = "[" + ", ".join(props) + "]"
     results = []
-    for sol in eng.query(f"explore:modify({ps}, {d}, {breadth}, {ex}, New), "
+    for sol in eng.query(f"curiosity:modify({ps}, {d}, {breadth}, {ex}, New), "
                          "member(mod(P, X, S), New), atomic_list_concat(P, ',', A)"):
         results.append((tuple(text(sol["A"]).split(",")) if text(sol["A"]) else (),
                         text(sol["X"]), text(sol["S"])))
@@ -36,7 +36,7 @@ def parse(eng, props, direction, breadth, exclude):
 
 def mean(eng, props, x):
     ps = "[" + ", ".join(props) + "]"
-    return float(eng.once(f"explore:parameter_mean({ps}, {x}, M)")["M"])
+    return float(eng.once(f"curiosity:parameter_mean({ps}, {x}, M)")["M"])
 
 
 def random_valid_antecedent(rng):
@@ -108,9 +108,9 @@ def test_modify_never_returns_an_invalid_antecedent(eng):
 
 
 def test_direction_points_towards_the_other_verdict(eng):
-    sol = eng.once("explore:direction([a-1.0, b-(-2.0)], 0.8, D), "
+    sol = eng.once("curiosity:direction([a-1.0, b-(-2.0)], 0.8, D), "
                    "findall(G, member(_-G, D), Gs)")
     assert sol["Gs"] == [-1.0, 2.0]
-    sol = eng.once("explore:direction([a-1.0, b-(-2.0)], 0.3, D), "
+    sol = eng.once("curiosity:direction([a-1.0, b-(-2.0)], 0.3, D), "
                    "findall(G, member(_-G, D), Gs)")
     assert sol["Gs"] == [1.0, -2.0]

@@ -4,11 +4,11 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from pantarhei.bridge.planes import best_abs_slope, plane_fit
-from pantarhei.bridge.weights import log_densities, weight, weights
-from pantarhei.bridge.exploration import outcome
+from pantarhei.bridge.exploration.planes import best_abs_slope, plane_fit
+from pantarhei.bridge.exploration.weights import log_densities, weight, weights
+from pantarhei.bridge.exploration.qualify import consequent as outcome
 from pantarhei.oracle.generative import from_dict, normalise, sample, to_dict
-from pantarhei.oracle.vocabulary import load_vocabulary
+from pantarhei.theory.lexicon import load_vocabulary
 
 V = load_vocabulary()
 

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import pytest
 
-from pantarhei.bridge import benchmark_theories as bench
-from pantarhei.bridge.dfl import parse_dfl
-from pantarhei.bridge.reasoning import ENGINES, Semantics, conclusions
-from pantarhei.bridge.theories import Rule, Theory
+from pantarhei.bridge.theories import families as bench
+from pantarhei.bridge.theories.dfl import parse_dfl
+from pantarhei.bridge.reasoning.logic import ENGINES, Semantics, conclusions
+from pantarhei.bridge.theories.model import Rule, Theory
 
 DEFAULT = Semantics()
 
@@ -109,7 +109,8 @@ def test_benchmark_sizes_are_as_asked() -> None:
 
 
 def test_assumptions_follow_the_theory_order_and_keep_the_antecedent_valid(tmp_path) -> None:
-    from pantarhei.bridge.reasoning import assumptions, initial_antecedent, load
+    from pantarhei.bridge.reasoning.answers import assumptions
+    from pantarhei.bridge.theories.loading import initial_antecedent, load
 
     f = tmp_path / "a0.pl"
     f.write_text("% setting(initial, pour_high).\nsetting(initial, pour_below_rim).\n"
@@ -128,7 +129,7 @@ def test_assumptions_follow_the_theory_order_and_keep_the_antecedent_valid(tmp_p
 
 
 def test_theories_without_an_initial_antecedent_get_no_assumptions() -> None:
-    from pantarhei.bridge.reasoning import assumptions
+    from pantarhei.bridge.reasoning.answers import assumptions
 
     assert assumptions(parse_dfl("r1: pour_centred => no_spill\n"), ["light_liquid"]) == []
     kept = Theory(rules=[Rule("r1", "defeasible", "no_spill", ("pour_centred",))],

@@ -8,8 +8,8 @@ from __future__ import annotations
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from pantarhei.bridge.reasoning import ALL_SEMANTICS, asp_conclusions, prolog_conclusions_batch
-from pantarhei.bridge.theories import Rule, Theory
+from pantarhei.bridge.reasoning.logic import ALL_SEMANTICS, asp_conclusions, prolog_conclusions_batch
+from pantarhei.bridge.theories.model import Rule, Theory
 
 ATOMS = ("a", "b", "c", "d", "p(x)")
 literals = st.builds(lambda a, n: f"neg({a})" if n else a, st.sampled_from(ATOMS), st.booleans())

@@ -109,17 +109,17 @@ def test_malformed_files_name_the_line(cli, tmp_path: Path) -> None:
 
 
 def test_without_a_theory_the_commands_say_how_to_get_one(monkeypatch, tmp_path: Path) -> None:
-    from pantarhei.bridge import reasoning
     from pantarhei.bridge.errors import UserError
+    from pantarhei.bridge.theories import loading
 
-    monkeypatch.setattr(reasoning, "DEFAULT_THEORY", tmp_path / "learned" / "pouring.pl")
+    monkeypatch.setattr(loading, "DEFAULT_THEORY", tmp_path / "learned" / "pouring.pl")
     with pytest.raises(UserError, match="no learned theory yet") as e:
-        reasoning.load()
+        loading.load()
     assert "--theory" in str(e.value)
 
 
 def test_the_shipped_theory_answers_without_a_theory_option(cli) -> None:
-    from pantarhei.bridge.reasoning import DEFAULT_THEORY, settings, load
+    from pantarhei.bridge.theories.loading import DEFAULT_THEORY, load, settings
 
     shipped = load()
     assert shipped.source == str(DEFAULT_THEORY)
@@ -251,8 +251,9 @@ def test_why_not_names_few_rules_however_many_there_are(cli, tmp_path: Path) -> 
 def test_the_shipped_theory_is_current_and_its_dfl_twin_agrees() -> None:
     """The shipped theory was learned with today's oracle and settings, and
     its DFL version (written by make demo) holds the same rules."""
-    from pantarhei.bridge.exploration import ALGORITHM_VERSION, oracle_identity
-    from pantarhei.bridge.reasoning import DEFAULT_THEORY, load, settings
+    from pantarhei.bridge.exploration.session import ALGORITHM_VERSION
+    from pantarhei.bridge.exploration.simulation import oracle_identity
+    from pantarhei.bridge.theories.loading import DEFAULT_THEORY, load, settings
 
     native = load()
     s = settings(native)

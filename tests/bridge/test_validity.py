@@ -6,10 +6,10 @@ import json
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from pantarhei.bridge import validity
-from pantarhei.bridge.asp import solve
-from pantarhei.bridge.prolog import engine
-from pantarhei.oracle.vocabulary import load_vocabulary
+from pantarhei.bridge.reasoning import scenes as validity
+from pantarhei.bridge.engines.asp import solve
+from pantarhei.bridge.engines.swipl import engine
+from pantarhei.theory.lexicon import load_vocabulary
 
 from ..conftest import assert_one_line_error
 

@@ -7,7 +7,7 @@ import pytest
 
 from pantarhei.oracle.generative import to_dict
 from pantarhei.oracle.store import Store
-from pantarhei.oracle.vocabulary import load_vocabulary
+from pantarhei.theory.lexicon import load_vocabulary
 
 from ..conftest import assert_one_line_error
 from .pours import BASE, CENTRED_LOW_TIPPED, pour

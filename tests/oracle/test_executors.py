@@ -11,7 +11,10 @@ import time
 
 import numpy as np
 
-from pantarhei.oracle.faults import COUNT, FaultyOracle
+from pantarhei.oracle.faults import FaultyOracle
+from pantarhei.theory.lexicon import load_vocabulary
+
+COUNT = load_vocabulary().parameter("particle_count").index
 from pantarhei.oracle.generative import sample
 from pantarhei.oracle.simulator import make_simulator
 from pantarhei.oracle.store import Store

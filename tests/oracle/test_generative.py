@@ -7,7 +7,7 @@ import pytest
 from scipy import stats
 
 from pantarhei.oracle import generative as G
-from pantarhei.oracle.vocabulary import load_vocabulary
+from pantarhei.theory.lexicon import load_vocabulary
 
 V = load_vocabulary()
 PROPS = sorted(V.propositions)
@@ -128,7 +128,7 @@ def test_log_density_is_the_product_of_the_uniform_widths():
             m = setters.get(p.name)
             if p.name in bases:
                 # uniform on its range, narrowed so that its dependant has room
-                pl = G.plan(a)
+                pl = G.distribution(a)
                 expect -= np.log(pl.high[p.index] - pl.low[p.index])
             elif m is None:
                 expect -= np.log(p.prior_high - p.prior_low + (1 if p.discrete else 0))

@@ -7,7 +7,7 @@ import pytest
 from pantarhei.oracle.base import make_oracle
 from pantarhei.oracle.physics import CHOSEN_FIDELITY, PouringOracle, TIMING_FIELDS
 from pantarhei.oracle.simulator import make_simulator
-from pantarhei.oracle.vocabulary import load_vocabulary
+from pantarhei.theory.lexicon import load_vocabulary
 
 from .pours import CENTRED_LOW_TIPPED, FAR_SIDE_TIPPED, HEAVY_DROP, NEVER_TILTED, pour
 

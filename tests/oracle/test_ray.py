@@ -6,7 +6,10 @@ import numpy as np
 import pytest
 
 from pantarhei.oracle.executors import RayExecutor
-from pantarhei.oracle.faults import COUNT, FaultyOracle
+from pantarhei.oracle.faults import FaultyOracle
+from pantarhei.theory.lexicon import load_vocabulary
+
+COUNT = load_vocabulary().parameter("particle_count").index
 from pantarhei.oracle.generative import sample
 from pantarhei.oracle.physics import PouringOracle
 from pantarhei.oracle.simulator import Simulator

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from pantarhei.oracle import scoring
-from pantarhei.oracle.vocabulary import load_vocabulary
+from pantarhei.theory.lexicon import load_vocabulary
 
 NAMES = load_vocabulary().expectation_names
 

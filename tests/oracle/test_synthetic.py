@@ -9,7 +9,7 @@ import pytest
 from pantarhei.oracle.base import make_oracle
 from pantarhei.oracle.generative import sample
 from pantarhei.oracle.synthetic import DEPENDS, SyntheticOracle, ramp, scores
-from pantarhei.oracle.vocabulary import load_vocabulary
+from pantarhei.theory.lexicon import load_vocabulary
 
 V = load_vocabulary()
 NAMES = V.parameter_names

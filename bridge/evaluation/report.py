@@ -13,16 +13,14 @@ import shutil
 from pathlib import Path
 from typing import Sequence
 
-import numpy as np
 
-from pantarhei.oracle.vocabulary import load_vocabulary
+from pantarhei.theory.lexicon import load_vocabulary
 
-from .evaluate import Evaluation
-from .files import save_figure, write_text
+from pantarhei.bridge.evaluation.pipeline import Evaluation
+from pantarhei.bridge.evaluation.plots import (SET_NAMES, plot_behaviours, plot_expectations,
+                                               plot_heldout)
+from pantarhei.bridge.files import write_text
 
-#: The held-out sets, in words.
-SET_NAMES = {"near": "near curiosity's antecedents", "near_random": "near random's antecedents",
-             "uniform": "uniformly random"}
 #: The targets, as fractions.
 TARGETS = {"behaviours_ratio": 2.0, "accuracy": 0.90, "coverage": 0.90, "tree_gap": 0.05,
            "plans": 0.90}
@@ -30,11 +28,6 @@ TARGETS = {"behaviours_ratio": 2.0, "accuracy": 0.90, "coverage": 0.90, "tree_ga
 
 def _pct(x: float | None) -> str:
     return "n/a" if x is None else f"{100 * x:.1f}%"
-
-
-def _plotted(values) -> list[float]:
-    """Values to plot: a gap (NaN) where there is none."""
-    return [np.nan if v is None else v for v in values]
 
 
 def headline(ev: Evaluation) -> list[tuple[str, str, str, bool]]:
@@ -79,75 +72,6 @@ def headline_markdown(ev: Evaluation) -> str:
 def load(path: Path | str) -> Evaluation:
     """An evaluation as `write` saved it (evaluation.json)."""
     return Evaluation(**json.loads(Path(path).read_text(encoding="utf-8")))
-
-
-# -- plots ---------------------------------------------------------------------
-
-def _plt():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
-
-
-def plot_behaviours(ev: Evaluation, path: Path) -> None:
-    plt = _plt()
-    c = ev.curves
-    fig, ax = plt.subplots(figsize=(6.4, 3.6), dpi=120)
-    ax.plot(c["budget"], c["curiosity"]["behaviours"], marker="o", markersize=3,
-            label="curiosity (Algorithm 1)", color="#c0392b")
-    ax.plot(c["budget"], c["random"]["behaviours"], marker="s", markersize=3,
-            label="random valid antecedents", color="#2c7fb8")
-    ax.set_xlabel("simulation budget (pours)")
-    ax.set_ylabel("distinct behaviours")
-    ax.set_title("Distinct consequents discovered")
-    ax.grid(alpha=0.3)
-    ax.legend()
-    fig.tight_layout()
-    save_figure(fig, path)
-
-
-def plot_heldout(ev: Evaluation, path: Path) -> None:
-    plt = _plt()
-    c = ev.curves
-    sets = [k for k in ("near", "near_random", "uniform") if k in ev.heldout]
-    fig, axes = plt.subplots(1, len(sets), figsize=(4.4 * len(sets), 3.8), dpi=120, squeeze=False)
-    for ax, name in zip(axes[0], sets):
-        for method, colour in (("curiosity", "#c0392b"), ("random", "#2c7fb8")):
-            acc = _plotted(c[method]["accuracy"][name])
-            ax.plot(c["budget"], acc, color=colour, label=f"{method}: accuracy where decided")
-            ax.plot(c["budget"], c[method]["coverage"][name], color=colour, linestyle="--",
-                    label=f"{method}: coverage")
-        ax.set_ylim(-0.02, 1.02)
-        ax.set_xlabel("simulation budget (pours)")
-        ax.set_title(f"held-out, {SET_NAMES[name]} ({ev.heldout[name]['scenes']})", fontsize=9)
-        ax.grid(alpha=0.3)
-    axes[0][0].legend(fontsize=7, loc="lower right")
-    fig.tight_layout()
-    save_figure(fig, path)
-
-
-def plot_expectations(ev: Evaluation, path: Path, name: str = "near") -> None:
-    plt = _plt()
-    h = ev.heldout[name]
-    exps = list(h["curiosity_theory"]["per_expectation"])
-    x = np.arange(len(exps))
-    th = h["curiosity_theory"]["per_expectation"]
-    tree = h["curiosity_tree"]["per_expectation"]
-    fig, ax = plt.subplots(figsize=(8, 3.8), dpi=120)
-    ax.bar(x - 0.27, _plotted(th[e]["accuracy"] for e in exps), 0.27, label="theory: accuracy where decided",
-           color="#c0392b")
-    ax.bar(x, [th[e]["coverage"] for e in exps], 0.27, label="theory: coverage", color="#f4a582")
-    ax.bar(x + 0.27, _plotted(tree[e]["accuracy"] for e in exps), 0.27, label="decision tree: accuracy",
-           color="#2c7fb8")
-    ax.set_xticks(x, [e.replace("_", " ") for e in exps], rotation=35, ha="right", fontsize=7)
-    ax.set_ylim(0, 1.05)
-    ax.set_title(f"per expectation, held-out {name} scenes")
-    ax.legend(fontsize=7, loc="lower left")
-    fig.tight_layout()
-    save_figure(fig, path)
 
 
 # -- words ---------------------------------------------------------------------

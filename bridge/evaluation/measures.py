@@ -16,7 +16,7 @@ from typing import Sequence
 
 import numpy as np
 
-from pantarhei.oracle.vocabulary import load_vocabulary
+from pantarhei.theory.lexicon import load_vocabulary
 
 HOLDS, FAILS, UNKNOWN = 1, 0, -1
 

@@ -4,9 +4,9 @@ from __future__ import annotations
 import argparse
 import json
 
-from pantarhei.oracle.vocabulary import load_vocabulary
+from pantarhei.theory.lexicon import load_vocabulary
 
-from .. import validity
+from pantarhei.bridge.reasoning import scenes as validity
 
 
 def register(sub: argparse._SubParsersAction) -> None:

@@ -10,12 +10,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from pantarhei.oracle.vocabulary import load_vocabulary
+from pantarhei.theory.lexicon import load_vocabulary
 from pantarhei.theory import THEORY_DIR, VOCABULARY_FILES
 
-from .errors import UserError
-from .theories import Theory, complement
-from .validity import require_valid
+from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.theories.model import Theory, complement
+from pantarhei.bridge.reasoning.scenes import require_valid
 
 ENCODINGS = ("defeasible.lp", "validity.lp", "valid.lp", "plan.lp")
 MAX_STEPS = 64

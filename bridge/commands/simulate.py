@@ -12,13 +12,11 @@ from typing import Any, Optional
 import numpy as np
 
 from pantarhei.oracle import generative
-from pantarhei.oracle.vocabulary import load_vocabulary
+from pantarhei.theory.lexicon import load_vocabulary
 
-from .. import validity
-from ..errors import UserError
-
-DEFAULT_STORE = "pantarhei.sqlite"
-
+from pantarhei.bridge.reasoning import scenes as validity
+from pantarhei.bridge.commands import options
+from pantarhei.bridge.errors import UserError
 
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("simulate", help="simulate pours sampled from an antecedent (or given) "
@@ -30,7 +28,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                         help="simulate the parameterizations in FILE (a list of objects with "
                              "'params': name to value)")
     p.add_argument("-n", type=int, default=10, help="parameterizations to sample (default 10)")
-    p.add_argument("--seed", type=int, default=0, help="seed of the sampling (default 0)")
+    options.add_seed(p, 0, "the sampling")
     p.add_argument("--json", action="store_true", help="print JSON")
     _simulation_options(p)
     p.set_defaults(run=simulate)
@@ -41,7 +39,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                         help="propositions describing the pour, comma-separated ('' for none)")
     source.add_argument("--params", metavar="FILE.json",
                         help="render the first parameterization in FILE")
-    p.add_argument("--seed", type=int, default=0, help="seed of the sampling (default 0)")
+    options.add_seed(p, 0, "the sampling")
     p.add_argument("--out", default="pour.gif", help="the GIF to write (default pour.gif)")
     p.add_argument("--frames", metavar="DIR", help="also write each frame as a PNG into DIR")
     p.add_argument("--fps", type=int, default=15, help="frames per simulated second (default 15)")
@@ -52,19 +50,13 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def _simulation_options(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--store", default=DEFAULT_STORE,
-                   help=f"SQLite file of results (default {DEFAULT_STORE})")
+    options.add_store(p, "results")
     p.add_argument("--no-store", action="store_true", help="neither read nor write the store")
-    p.add_argument("--executor", choices=("local", "ray", "inline"), default="local",
-                   help="worker processes here (default), a Ray cluster, or this process")
-    p.add_argument("--ray-address", metavar="ADDR",
-                   help="Ray cluster to join (with --executor ray; default: start a local Ray)")
-    p.add_argument("--workers", type=int, help="worker processes (default: one per core)")
     p.add_argument("--timeout", type=float, default=120.0,
                    help="seconds before a simulation counts as hung (default 120)")
     p.add_argument("--fidelity", choices=("chosen", "default"), default="chosen",
                    help="simulation settings: the chosen fast ones (default) or PyBullet's defaults")
-    p.add_argument("--no-progress", action="store_true", help="no progress bar")
+    options.add_execution(p)
 
 
 # ----------------------------------------------------------------------------
@@ -76,7 +68,7 @@ def parse_antecedent(text: str) -> list[str]:
     props = [t.strip() for t in text.split(",") if t.strip()]
     props = validity.require_valid(props)
     try:
-        generative.plan(props)
+        generative.distribution(props)
     except generative.InvalidAntecedent as e:
         raise UserError(f"invalid antecedent: {e}") from None
     return props

@@ -5,9 +5,9 @@ from dataclasses import dataclass
 from functools import lru_cache
 from typing import Iterable
 
-from pantarhei.oracle.vocabulary import UnknownProposition, load_vocabulary
+from pantarhei.theory.lexicon import UnknownProposition, load_vocabulary
 
-from .errors import UserError
+from pantarhei.bridge.errors import UserError
 
 ENGINES = ("prolog", "asp")
 
@@ -38,7 +38,7 @@ def violations(props: Iterable[str], engine: str = "prolog") -> list[Violation]:
     """The constraints that the antecedent breaks, sorted."""
     props = known(props)
     if engine == "prolog":
-        from .prolog import engine as prolog
+        from pantarhei.bridge.engines.swipl import engine as prolog
 
         found = [Violation(s["C"], s["P1"], s["P2"])
                  for s in prolog().query("validity:violation(Ps, C, P1, P2)", Ps=props)]
@@ -52,7 +52,7 @@ def violations(props: Iterable[str], engine: str = "prolog") -> list[Violation]:
 
 @lru_cache(maxsize=1)
 def _asp_checker():
-    from .asp import Checker
+    from pantarhei.bridge.engines.asp import Checker
 
     return Checker(["validity.lp"], "in")
 
@@ -70,6 +70,6 @@ def require_valid(props: Iterable[str]) -> list[str]:
 
 def count_valid() -> int:
     """The number of valid antecedents, counted by Prolog per component."""
-    from .prolog import engine as prolog
+    from pantarhei.bridge.engines.swipl import engine as prolog
 
     return int(prolog().once("validity:count_valid(N)")["N"])

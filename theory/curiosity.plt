@@ -1,6 +1,6 @@
-:- begin_tests(explore).
+:- begin_tests(curiosity).
 
-:- use_module(explore).
+:- use_module(curiosity).
 :- use_module(validity).
 
 test(default_initial_is_valid) :-
@@ -72,4 +72,4 @@ test(explore_without_the_bridge_says_so, [throws(exploration_error(_))]) :-
 test(bad_option, [true(R = error(_))]) :-
     explore_result([max_rules(0)], R).
 
-:- end_tests(explore).
+:- end_tests(curiosity).

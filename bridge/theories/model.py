@@ -41,6 +41,9 @@ class Theory:
     #: `setting(Key, Value)` facts of a learned theory (what its exploration
     #: was run with), values in file order; str or int.
     settings: dict[str, list] = field(default_factory=dict)
+    #: `provenance(Rule, Key, Value)` facts of a learned theory (where each
+    #: rule comes from), in file order; values str or int.
+    provenance: list[tuple[str, str, str | int]] = field(default_factory=list)
 
     def rule(self, rule_id: str) -> Rule:
         for r in self.rules:
@@ -61,17 +64,24 @@ class Theory:
         extra = [f for f in facts if f not in self.facts]
         return Theory(self.facts + extra, list(self.rules), list(self.sup), set(self.learned),
                       list(self.extra), self.source,
-                      {k: list(v) for k, v in self.settings.items()})
+                      {k: list(v) for k, v in self.settings.items()}, list(self.provenance))
 
     def native(self) -> str:
-        """The theory in the native format."""
-        lines = [f"fact({f})." for f in self.facts]
+        """The theory in the native format: everything it holds (settings
+        first, each rule's provenance after it)."""
+        lines = [f"setting({k}, {_value_text(v)})." for k, vs in self.settings.items() for v in vs]
+        lines += [f"fact({f})." for f in self.facts]
+        of_rule: dict[str, list[tuple[str, str | int]]] = {}
+        for rid, key, value in self.provenance:
+            of_rule.setdefault(rid, []).append((key, value))
         for r in self.rules:
             lines.append(f"rule({r.id}, {r.kind}, {r.head}).")
             lines.extend(f"body({r.id}, {b})." for b in r.body)
             if r.id in self.learned:
                 lines.append(f"learned({r.id}).")
+            lines.extend(f"provenance({r.id}, {k}, {_value_text(v)})." for k, v in of_rule.pop(r.id, ()))
         lines.extend(f"sup({a}, {b})." for a, b in self.sup)
+        lines.extend(f"provenance({rid}, {k}, {_value_text(v)})." for rid, kvs in of_rule.items() for k, v in kvs)
         lines.extend(self.extra)
         return "\n".join(lines) + "\n"
 
@@ -150,6 +160,32 @@ class Theory:
                     raise TheoryFileError(f"{where}: sup({a}, {b}) names {x}, which is not a rule")
 
 
+def rule_id(antecedent: int, expectation: str) -> str:
+    """The id of Algorithm 1's rule for the i-th explored antecedent and an
+    expectation (theory/curiosity.pl makes the same ids): `r<i>_<E>`."""
+    return f"r{int(antecedent)}_{expectation}"
+
+
+def antecedent_id(i: int) -> str:
+    """The id of the i-th explored antecedent in provenance facts: `a<i>`."""
+    return f"a{int(i)}"
+
+
+def antecedent_index(aid: str) -> int | None:
+    """i for an antecedent id `a<i>`, None for anything else (`none`)."""
+    return int(aid[1:]) if len(aid) > 1 and aid[0] == "a" and aid[1:].isdigit() else None
+
+
+def _value_text(value) -> str:
+    """A setting's or provenance's value as native text: integers and atoms
+    as they are, anything else quoted."""
+    if isinstance(value, int) or (isinstance(value, str) and _NAME.match(value)):
+        return str(value)
+    if isinstance(value, str) and re.match(r"^[a-z][A-Za-z0-9_]*\(.*\)$", value):
+        return value
+    return '"' + str(value).replace("\\", "\\\\").replace('"', '\\"') + '"'
+
+
 def literal_text(value) -> str:
     """A value of `read_facts` (str, int or tuple) as native text."""
     if isinstance(value, tuple):
@@ -212,6 +248,10 @@ def read_native(path: Path | str) -> Theory:
         if len(args) == 2:
             value = args[1] if isinstance(args[1], (str, int)) else literal_text(args[1])
             t.settings.setdefault(literal_text(args[0]), []).append(value)
+    for args in facts.get("provenance", []):
+        if len(args) == 3:
+            value = args[2] if isinstance(args[2], (str, int)) else literal_text(args[2])
+            t.provenance.append((literal_text(args[0]), literal_text(args[1]), value))
     t.validate()
     return t
 
@@ -238,4 +278,5 @@ def merge(theories: list[Theory]) -> Theory:
         for k, values in t.settings.items():
             have = out.settings.setdefault(k, [])
             have.extend(v for v in values if v not in have)
+        out.provenance.extend(t.provenance)
     return out

@@ -1,4 +1,4 @@
-:- module(explore,
+:- module(curiosity,
           [ explore/1,                % +Options
             explore_result/2,         % +Options, -Result
             sample/4,                 % +Props, +N, +Seed, -Rows
@@ -45,34 +45,51 @@ is saved after every explored antecedent, so an exploration can resume.
 :- use_module(library(option)).
 :- use_module(library(pairs)).
 :- use_module(library(http/json)).
+:- use_module(theory_files).
 :- use_module(vocabulary).
 :- use_module(validity).
 
 %!  default_initial(-Props:list) is det.
 %
-%   The initial antecedent a_0 when none is given: an ordinary pour, the
-%   source held near the destination's rim, at medium height above it,
-%   steeply tilted (the pour that, of a few tried, keeps every expectation
-%   in simulation most often).
-default_initial([pour_mid_height, pour_near_rim, pour_steeply_tilted]).
+%   The initial antecedent a_0 when none is given, as theory/defaults.pl
+%   says (default_initial/1 facts, in file order).
+default_initial(Props) :-
+    findall(P, defaults:default_initial(P), Props).
+
+%!  default(?Key, ?Value) is nondet.
+%
+%   The defaults of theory/defaults.pl, with permille values as numbers
+%   (threshold, ridge).
+default(Key, Value) :-
+    defaults:default(Key0, Value0),
+    (   atom_concat(Key, '_permille', Key0)
+    ->  Value is Value0 / 1000
+    ;   Key = Key0, Value = Value0
+    ).
+
+load_defaults :-
+    prolog_load_context(directory, Dir),
+    directory_file_path(Dir, 'defaults.pl', File),
+    load_facts(File, defaults).
+
+:- load_defaults.
 
 %!  explore(+Options:list) is det.
 %
-%   Run Algorithm 1 and write the learned theory. Options:
+%   Run Algorithm 1 and write the learned theory. Options (the defaults
+%   of those marked * are in theory/defaults.pl):
 %
-%     - oracle(+Name): pybullet (default) or synthetic
-%     - max_rules(+N): stop after N explored antecedents (default 25)
+%     - oracle(+Name)*: pybullet or synthetic
+%     - max_rules(+N)*: stop after N explored antecedents
 %     - samples(+N): simulations per explored antecedent (default: the
 %       number of parameters plus one)
-%     - threshold(+X): the slope below which nothing new is explored
-%       (default 0.1)
-%     - seed(+S): seed of every random choice (default 1)
-%     - initial(+Props): a_0 (default default_initial/1)
-%     - breadth(+K): modify uses the K largest gradient components (3)
-%     - ridge(+X): L2 penalty of the plane fits (1.0; 0 is plain least
-%       squares)
-%     - qualify(+Mode): weighted (default) or argmax (the paper's rule)
-%     - out(+File): the learned theory (default theory/learned/pouring.pl)
+%     - threshold(+X)*: the slope below which nothing new is explored
+%     - seed(+S)*: seed of every random choice
+%     - initial(+Props)*: a_0 (default_initial/1)
+%     - breadth(+K)*: modify uses the K largest gradient components
+%     - ridge(+X)*: L2 penalty of the plane fits (0 is plain least squares)
+%     - qualify(+Mode)*: weighted or argmax (the paper's rule)
+%     - out(+File)*: the learned theory (relative to theory/)
 %     - store(+File): the SQLite store of simulations and state
 %     - resume(+Bool): continue the saved exploration with these settings
 %     - executor(+E), workers(+N), ray_address(+A): where to simulate
@@ -125,15 +142,18 @@ settings(Options, S) :-
     aggregate_all(count, parameter(_, _, _, _, _), NParams),
     DefaultSamples is NParams + 1,
     default_initial(DefaultInitial),
-    option(oracle(Oracle), Options, pybullet),
-    option(max_rules(Max), Options, 25),
+    default(oracle, DOracle), default(max_rules, DMax), default(threshold, DThreshold),
+    default(seed, DSeed), default(breadth, DBreadth), default(ridge, DRidge),
+    default(qualify, DQualify),
+    option(oracle(Oracle), Options, DOracle),
+    option(max_rules(Max), Options, DMax),
     option(samples(Samples), Options, DefaultSamples),
-    option(threshold(Threshold0), Options, 0.1),
-    option(seed(Seed), Options, 1),
+    option(threshold(Threshold0), Options, DThreshold),
+    option(seed(Seed), Options, DSeed),
     option(initial(Initial0), Options, DefaultInitial),
-    option(breadth(Breadth), Options, 3),
-    option(ridge(Ridge0), Options, 1.0),
-    option(qualify(Qualify), Options, weighted),
+    option(breadth(Breadth), Options, DBreadth),
+    option(ridge(Ridge0), Options, DRidge),
+    option(qualify(Qualify), Options, DQualify),
     option(resume(Resume), Options, false),
     option(executor(Executor), Options, local),
     option(progress(Progress), Options, true),
@@ -181,9 +201,10 @@ optional(Key, Options, S0, S) :-
     ).
 
 default_out(File) :-
-    module_property(explore, file(Here)),
+    module_property(curiosity, file(Here)),
     file_directory_name(Here, Dir),
-    atomic_list_concat([Dir, '/learned/pouring.pl'], File).
+    default(theory, Relative),
+    directory_file_path(Dir, Relative, File).
 
 check_positive(_, N) :- integer(N), N > 0, !.
 check_positive(Name, _) :-

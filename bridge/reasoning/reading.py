@@ -12,7 +12,7 @@ import math
 import re
 from collections import Counter
 
-from pantarhei.oracle.vocabulary import load_vocabulary
+from pantarhei.theory.lexicon import load_vocabulary
 
 _STOP = {"a", "an", "the", "of", "to", "with", "from", "and", "at", "is", "in", "on", "over",
          "that", "does", "not", "it", "its", "when", "what", "if", "happens", "i", "we", "then",

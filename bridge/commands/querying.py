@@ -5,10 +5,11 @@ import argparse
 import json
 import re
 
-from .. import reasoning
-from ..dfl import dfl_literal
-from ..errors import UserError
-from ..validity import known, require_valid
+from pantarhei.bridge.theories import loading
+from pantarhei.bridge.reasoning import answers, logic
+from pantarhei.bridge.theories.dfl import dfl_literal
+from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.reasoning.scenes import known, require_valid
 
 THEORY_HELP = ("theory file, native facts or .dfl (repeat to add hand-written rules to a learned "
                "theory; default: the shipped learned theory theory/learned/pouring.pl)")
@@ -49,7 +50,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--no-team-defeat", action="store_true", help="a single rule must beat every attacker")
     p.add_argument("--no-well-founded", action="store_true",
                    help="Kunen semantics: literals whose proofs loop stay undecided")
-    p.add_argument("--engine", choices=reasoning.ENGINES, default="prolog")
+    p.add_argument("--engine", choices=logic.ENGINES, default="prolog")
     p.add_argument("--json", action="store_true", help="print JSON")
     p.set_defaults(run=conclusions)
 
@@ -74,7 +75,7 @@ def ask(args: argparse.Namespace) -> int:
         if not props:
             raise UserError("--props: no propositions given (see `pantarhei vocab`)")
     elif args.question:
-        from ..understanding import understand
+        from pantarhei.bridge.reasoning.reading import understand
 
         props = understand(args.question)
         if not props:
@@ -83,14 +84,14 @@ def ask(args: argparse.Namespace) -> int:
     else:
         raise UserError("give a scene: a question in words, or --props P1,P2")
     props = require_valid(props)
-    theory = reasoning.load(args.theory)
-    assumed = [] if args.no_assume else reasoning.assumptions(theory, props)
+    theory = loading.load(args.theory)
+    assumed = [] if args.no_assume else answers.assumptions(theory, props)
     scene = props + assumed
     if args.why:
-        from ..planning import check_goals
+        from pantarhei.bridge.reasoning.planning import check_goals
 
         (lit,) = check_goals([args.why], theory, reachable=False)
-        words = reasoning.explain(theory, scene, lit)
+        words = answers.explain(theory, scene, lit)
         if args.json:
             print(json.dumps({"understood": props, "assumed": assumed, "literal": lit, "why": words},
                              indent=1))
@@ -98,14 +99,14 @@ def ask(args: argparse.Namespace) -> int:
             _print_scene(props, assumed, glosses=False)
             print(words.replace("; ", "\n  "))
         return 0
-    outcomes = reasoning.what_happens(theory, scene)
+    outcomes = answers.what_happens(theory, scene)
     if args.json:
         print(json.dumps({"understood": props, "assumed": assumed,
                           "outcomes": {o.expectation: o.value for o in outcomes},
                           "reasons": {o.expectation: {"rule": o.rule, "why": o.reason}
                                       for o in outcomes}}, indent=1))
         return 0
-    from pantarhei.oracle.vocabulary import load_vocabulary
+    from pantarhei.theory.lexicon import load_vocabulary
 
     vocab = load_vocabulary()
     _print_scene(props, assumed, glosses=True)
@@ -136,7 +137,7 @@ def ask(args: argparse.Namespace) -> int:
 
 def _print_scene(props: list[str], assumed: list[str], glosses: bool) -> None:
     """The propositions understood from the question, then those assumed."""
-    from pantarhei.oracle.vocabulary import load_vocabulary
+    from pantarhei.theory.lexicon import load_vocabulary
 
     vocab = load_vocabulary()
     print(f"understood: {', '.join(props)}")
@@ -154,7 +155,7 @@ def _print_scene(props: list[str], assumed: list[str], glosses: bool) -> None:
 # -- plan ---------------------------------------------------------------------
 
 def plan(args: argparse.Namespace) -> int:
-    from ..planning import plan as make_plans
+    from pantarhei.bridge.reasoning.planning import plan as make_plans
 
     goals = _split(args.goal)
     if not goals:
@@ -162,14 +163,14 @@ def plan(args: argparse.Namespace) -> int:
     if args.alternatives < 0 or args.verify < 0:
         raise UserError("--alternatives and --verify take a number >= 0")
     given = known(_split(args.given))
-    theory = reasoning.load(args.theory)
+    theory = loading.load(args.theory)
     plans = make_plans(theory, goals, given, args.alternatives)
     verified: list[dict | None] = [None] * len(plans)
     if args.verify:
-        oracle = str((reasoning.settings(theory).get("oracle") or ["pybullet"])[0])
+        oracle = str((loading.settings(theory).get("oracle") or ["pybullet"])[0])
         verified = [_verify(p.antecedent, goals, args.verify, args.seed + i, oracle, args.store)
                     for i, p in enumerate(plans)]
-    from ..planning import check_goals
+    from pantarhei.bridge.reasoning.planning import check_goals
 
     goal_lits = check_goals(goals, theory)
     if args.json:
@@ -178,7 +179,7 @@ def plan(args: argparse.Namespace) -> int:
                                      **({"verified": v} if v is not None else {})}
                                     for p, v in zip(plans, verified)]}, indent=1))
         return 0
-    from pantarhei.oracle.vocabulary import load_vocabulary
+    from pantarhei.theory.lexicon import load_vocabulary
 
     vocab = load_vocabulary()
     print(f"goals: {', '.join(goal_lits)}" + (f"  given: {', '.join(given)}" if given else ""))
@@ -204,8 +205,8 @@ def _verify(antecedent: tuple[str, ...], goals: list[str], n: int, seed: int,
 
     from pantarhei.oracle.generative import sample
 
-    from ..exploration import open_simulator, oracle_identity
-    from ..planning import goals_met
+    from pantarhei.bridge.exploration.simulation import open_simulator, oracle_identity
+    from pantarhei.bridge.reasoning.planning import goals_met
 
     oracle_identity(oracle)     # UserError for an oracle that is unknown or cannot load
     params = sample(list(antecedent), n, seed)
@@ -220,14 +221,14 @@ def _verify(antecedent: tuple[str, ...], goals: list[str], n: int, seed: int,
 # -- conclusions --------------------------------------------------------------
 
 def conclusions(args: argparse.Namespace) -> int:
-    theory = reasoning.load(args.file)
-    sem = reasoning.Semantics(args.ambiguity, not args.no_team_defeat, not args.no_well_founded)
-    result = reasoning.conclusions(theory, sem, args.engine)
+    theory = loading.load(args.file)
+    sem = logic.Semantics(args.ambiguity, not args.no_team_defeat, not args.no_well_founded)
+    result = logic.conclusions(theory, sem, args.engine)
     dfl = {tag: [dfl_literal(x) for x in lits] for tag, lits in result.items()}
     if args.json:
         print(json.dumps(dfl, indent=1))
         return 0
-    for tag in reasoning.TAGS:
+    for tag in logic.TAGS:
         for lit in dfl[tag]:
             print(f"{tag} {lit}")
     return 0
@@ -238,11 +239,11 @@ def conclusions(args: argparse.Namespace) -> int:
 def convert(args: argparse.Namespace) -> int:
     from pathlib import Path
 
-    from ..dfl import write_dfl
-    from ..files import write_text
+    from pantarhei.bridge.theories.dfl import write_dfl
+    from pantarhei.bridge.files import write_text
 
-    theory = reasoning.load(args.file, check=False)
-    text = (write_dfl(theory, reasoning.provenance_lines(theory)) if args.to == "dfl"
+    theory = loading.load(args.file, check=False)
+    text = (write_dfl(theory, loading.provenance_lines(theory)) if args.to == "dfl"
             else theory.native())
     if not args.output:
         print(text, end="")

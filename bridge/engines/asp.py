@@ -8,7 +8,7 @@ from pantarhei.theory import THEORY_DIR, VOCABULARY_FILES, _clean_clingo_message
 
 from pantarhei.theory import clingo_module
 
-from .errors import UserError
+from pantarhei.bridge.errors import UserError
 
 
 def solve(encodings: Sequence[str | Path], facts: str = "", *, files: Iterable[Path] = VOCABULARY_FILES,

@@ -21,7 +21,7 @@ from typing import Sequence
 
 from pantarhei.theory import TheoryFileError
 
-from .theories import Rule, Theory, complement
+from pantarhei.bridge.theories.model import Rule, Theory, complement
 
 _ARROWS = (("->", "strict"), ("=>", "defeasible"), ("~>", "defeater"))
 _TERM = re.compile(r"^[a-z][A-Za-z0-9_]*(\((.*)\))?$")

@@ -26,7 +26,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from .theories import Rule, Theory
+from pantarhei.bridge.theories.model import Rule, Theory
 
 NAMES = ("chain", "circle", "levels", "teams", "tree", "dag")
 
@@ -146,7 +146,7 @@ def pouring(rules: int, seed: int = 0) -> Theory:
     negations; superiority by specificity (all rules learned)."""
     import random
 
-    from pantarhei.oracle.vocabulary import load_vocabulary
+    from pantarhei.theory.lexicon import load_vocabulary
 
     rng = random.Random(seed)
     vocab = load_vocabulary()

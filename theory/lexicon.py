@@ -1,4 +1,5 @@
-"""The vocabulary as Python objects, read from the theory's fact files.
+"""The vocabulary (parameters, propositions, dimensions, expectations) as
+Python objects, read from the theory's fact files.
 
 The single source is `theory/vocabulary/*.pl`; this module only reads it.
 """

@@ -1,0 +1,400 @@
+"""`pantarhei evaluate`: a learned theory against the oracle it was learned
+from, on scenes exploration never explored.
+
+Everything is simulated by the same oracle, through the same store, so a
+second run simulates nothing:
+
+* the exploration's own simulations, drawn again with the seeds the
+  exploration used (all found in the store when it is the same store);
+* held-out scenes: random valid antecedents, one pour each, in three sets:
+  `uniform` (uniformly random valid antecedents), `near` (an explored
+  antecedent with one or two propositions added: where the theory speaks)
+  and `near_random` (the same around the random exploration's antecedents);
+* random exploration: the same budget spent on uniformly random valid
+  antecedents, and the same rule building (equation (1) and qualify);
+* the paper's three example rules, asked of the theory and simulated;
+* plans for the goals the theory can reach, sampled and simulated.
+
+The numbers go into an `Evaluation` (and JSON); `bridge/evaluation/report.py` writes
+them up.
+"""
+from __future__ import annotations
+
+import sys
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Sequence
+
+import numpy as np
+
+from pantarhei.oracle.generative import sample
+from pantarhei.theory.lexicon import load_vocabulary
+
+from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.evaluation.heldout import near_antecedents, random_antecedents
+from pantarhei.bridge.evaluation.measures import (accuracy, distinct_behaviours, tree_predictions,
+                                                  verdicts)
+from pantarhei.bridge.evaluation.rule_building import consequents, predict, theory_of
+from pantarhei.bridge.exploration.simulation import iteration_seed
+from pantarhei.bridge.exploration.weights import log_densities, weights
+from pantarhei.bridge.reasoning import answers
+from pantarhei.bridge.theories import loading
+from pantarhei.bridge.theories.model import Theory, antecedent_index, complement, literal_text, rule_id
+
+#: The paper's three example rules (section 3.2): the scene, the literal it
+#: concludes, and the paper's words.
+PAPER_RULES = (
+    (("pour_to_side",), "neg(no_spill)", "pouring from the side will result in spillage"),
+    (("light_liquid",), "neg(liquid_leaves_source)",
+     "too light a liquid will not entirely leave the source"),
+    (("light_liquid", "end_upright", "end_low"), "neg(liquid_remains_in_destination)",
+     "when pouring a lightweight liquid and then righting up the source while low above the "
+     "destination, the liquid does not remain in the destination"),
+)
+
+
+@dataclass
+class Learned:
+    """A theory written by `pantarhei explore`, with what it says of the
+    exploration behind it."""
+    path: Path
+    theory: Theory
+    settings: dict[str, list[Any]]
+    antecedents: list[tuple[str, ...]]      # explored, in order: a1, a2, ...
+
+    def setting(self, key: str, default: Any = None) -> Any:
+        values = self.settings.get(key)
+        return values[0] if values else default
+
+
+def read_learned(path: Path | str) -> Learned:
+    """Read a learned theory; UserError if the file lacks the exploration's
+    settings and provenance (a hand-written theory, say)."""
+    from pantarhei.theory import read_facts
+
+    path = Path(path)
+    theory = loading.load([path])
+    facts = read_facts([path])
+    settings = loading.settings(theory)
+    of_rule = {literal_text(a[0]): literal_text(a[2]) for a in facts.get("provenance", [])
+               if len(a) == 3 and literal_text(a[1]) == "antecedent"}
+    if not settings.get("seed") or not settings.get("samples") or not of_rule:
+        raise UserError(f"{path}: not a theory written by `pantarhei explore` "
+                        f"(no setting/2 and provenance/3 facts to evaluate it by)")
+    bodies: dict[int, tuple[str, ...]] = {}
+    for r in theory.rules:
+        a = of_rule.get(r.id)
+        i = antecedent_index(a) if a else None
+        if i is not None:
+            bodies.setdefault(i, tuple(sorted(r.body)))
+    order = sorted(bodies)
+    if order != list(range(1, len(order) + 1)):
+        raise UserError(f"{path}: the explored antecedents are not a1..a{len(order)}")
+    return Learned(path, theory, settings, [bodies[i] for i in order])
+
+
+# -- the run -------------------------------------------------------------------
+
+@dataclass
+class Options:
+    theory: Path
+    store: Path
+    scenes: int = 150
+    seed: int = 1
+    verify: int = 10
+    paper_samples: int = 20
+    executor: str = "local"
+    workers: int | None = None
+    ray_address: str | None = None
+    progress: bool = True
+
+
+@dataclass
+class Evaluation:
+    """Every figure of an evaluation, JSON-ready (`as_dict`)."""
+    theory: str
+    oracle: str
+    settings: dict[str, Any]
+    budget: int
+    #: Whether the exploration's pours, simulated here, give the theory's rules.
+    reproduced: bool = True
+    #: Per explored antecedent: the share of its own pours that kept every expectation.
+    kept_all: list[float | None] = field(default_factory=list)
+    heldout: dict[str, Any] = field(default_factory=dict)
+    curves: dict[str, Any] = field(default_factory=dict)
+    behaviours: dict[str, int] = field(default_factory=dict)
+    paper_rules: list[dict[str, Any]] = field(default_factory=list)
+    plans: list[dict[str, Any]] = field(default_factory=list)
+    simulations: dict[str, int] = field(default_factory=dict)
+    seconds: dict[str, float] = field(default_factory=dict)
+    #: Not in the JSON: what the report draws from.
+    explored: list[tuple[str, ...]] = field(default_factory=list, repr=False)
+    explored_consequents: np.ndarray | None = field(default=None, repr=False)
+    best_samples: list[np.ndarray] = field(default_factory=list, repr=False)
+
+    def as_dict(self) -> dict[str, Any]:
+        return {k: getattr(self, k) for k in
+                ("theory", "oracle", "settings", "budget", "reproduced", "kept_all", "heldout", "curves", "behaviours",
+                 "paper_rules", "plans", "simulations", "seconds")}
+
+    @property
+    def plan_rate(self) -> float | None:
+        """The share of the plans' pours that met their goals (None: none simulated)."""
+        met = sum(p["met"] for p in self.plans if "met" in p)
+        done = sum(p["simulated"] for p in self.plans if "simulated" in p)
+        return met / done if done else None
+
+
+def _shown(path: Path) -> str:
+    """A path as the report shows it: relative to here when inside it."""
+    try:
+        return str(Path(path).resolve().relative_to(Path.cwd().resolve()))
+    except ValueError:
+        return str(path)
+
+
+def _say(text: str) -> None:
+    print(f"pantarhei evaluate: {text}", file=sys.stderr, flush=True)
+
+
+class Simulations:
+    """Every pour of an evaluation goes through one simulator (and so one
+    store); each call is a stage whose pours and seconds are recorded."""
+
+    def __init__(self, sim: Any, ev: Evaluation, progress: bool) -> None:
+        self.sim, self.ev, self.progress = sim, ev, progress
+        self.width = len(load_vocabulary().expectations)
+
+    def __call__(self, label: str, P: np.ndarray) -> np.ndarray:
+        t = time.monotonic()
+        if not len(P):
+            self.ev.simulations[label] = 0
+            self.ev.seconds[label] = 0.0
+            return np.empty((0, self.width))
+        _say(f"{label}: {len(P)} pours")
+        S = np.asarray(self.sim.simulate(P, progress=self.progress), dtype=float)
+        self.ev.simulations[label] = int(self.sim.last_simulated)
+        self.ev.seconds[label] = round(time.monotonic() - t, 1)
+        return S
+
+
+@dataclass
+class Pours:
+    """The pours of one way of choosing antecedents: the antecedents in
+    order, `samples` pours each, and their scores."""
+    antecedents: list[tuple[str, ...]]
+    P: np.ndarray
+    S: np.ndarray
+
+
+def evaluate(opts: Options) -> Evaluation:
+    """Every stage of the evaluation, in order, through one simulator."""
+    learned = read_learned(opts.theory)
+    if opts.scenes < 1 or opts.verify < 0 or opts.paper_samples < 0:
+        raise UserError("--scenes must be at least 1, --verify and --paper-samples at least 0")
+    oracle = str(learned.setting("oracle", "pybullet"))
+    samples = int(learned.setting("samples"))
+    ev = Evaluation(theory=_shown(opts.theory), oracle=oracle,
+                    settings={k: (v if len(v) > 1 else v[0]) for k, v in learned.settings.items()},
+                    budget=len(learned.antecedents) * samples, explored=list(learned.antecedents))
+    from pantarhei.bridge.exploration.simulation import open_simulator, oracle_identity
+
+    version, _ = oracle_identity(oracle)
+    if str(learned.setting("oracle_version", version)) != version:
+        _say(f"the theory was learned with {oracle} version {learned.setting('oracle_version')}, "
+             f"the oracle here is version {version}: its simulations are not reused")
+    sim = open_simulator(oracle, opts.executor, opts.workers, opts.store, opts.ray_address)
+    try:
+        run = Simulations(sim, ev, opts.progress)
+        curiosity = exploration_pours(learned, run, ev)
+        rnd = random_exploration_pours(opts.seed, len(learned.antecedents), samples, run)
+        held = heldout_scenes(opts, curiosity.antecedents, rnd.antecedents, run)
+        t = time.monotonic()
+        _say("predicting the held-out scenes with every theory along the budget")
+        mode = str(learned.setting("qualify", "weighted"))
+        curves(ev, {"curiosity": curiosity, "random": rnd}, held, samples, mode)
+        final_theories(ev, learned.theory, {"curiosity": curiosity, "random": rnd}, held,
+                       samples, mode, opts.seed)
+        ev.seconds["predicting"] = round(time.monotonic() - t, 1)
+        ev.paper_rules = _paper_rules(learned.theory, run, opts)
+        ev.plans = _plans(learned.theory, run, opts)
+    finally:
+        sim.close()
+    return ev
+
+
+def exploration_pours(learned: Learned, run: Simulations, ev: Evaluation) -> Pours:
+    """The exploration's simulations, drawn again with its seeds; whether
+    they give the theory's rules, and per explored antecedent the share of
+    its own pours that kept every expectation."""
+    samples, seed = int(learned.setting("samples")), int(learned.setting("seed"))
+    mode = str(learned.setting("qualify", "weighted"))
+    explored = learned.antecedents
+    P = np.vstack([sample(list(a), samples, iteration_seed(seed, i))
+                   for i, a in enumerate(explored, start=1)])
+    S = run("exploration", P)
+    ev.explored_consequents = consequents(explored, P, S, mode)
+    ok = np.all(np.isfinite(S), axis=1)
+    W = weights(log_densities(P[ok], [list(a) for a in explored]))
+    ev.best_samples = [P[ok][int(np.argmax(W[i]))] for i in range(len(explored))]
+    ev.kept_all = []
+    for i in range(len(explored)):
+        rows = S[i * samples:(i + 1) * samples]
+        rows = rows[np.all(np.isfinite(rows), axis=1)]
+        ev.kept_all.append(float((rows > 0.5).all(axis=1).mean()) if len(rows) else None)
+    differ = _differing_rules(learned.theory, ev.explored_consequents)
+    ev.reproduced = not differ
+    if differ:
+        _say(f"{len(differ)} rules of the theory differ from those its own pours give here "
+             f"(first: {differ[0]}): another oracle build, or a theory edited by hand")
+    return Pours(list(explored), P, S)
+
+
+def random_exploration_pours(seed: int, count: int, samples: int, run: Simulations) -> Pours:
+    """The baseline: the same budget spent on uniformly random valid
+    antecedents, `samples` pours each."""
+    ants = random_antecedents(seed + 7919, count)
+    P = np.vstack([sample(list(a), samples, iteration_seed(seed + 7919, i))
+                   for i, a in enumerate(ants, start=1)])
+    return Pours(ants, P, run("random exploration", P))
+
+
+def heldout_scenes(opts: Options, explored: Sequence[tuple[str, ...]],
+                   random_ants: Sequence[tuple[str, ...]], run: Simulations
+                   ) -> dict[str, tuple[list[tuple[str, ...]], np.ndarray]]:
+    """Three sets of held-out scenes, one pour each, never explored by
+    either method: per set, the scenes whose pour did not fail and their
+    verdicts."""
+    known = set(explored) | set(random_ants)
+    uniform = [a for a in random_antecedents(opts.seed, 2 * opts.scenes) if a not in known]
+    uniform = list(dict.fromkeys(uniform))[:opts.scenes]
+    near = near_antecedents(explored, opts.scenes, opts.seed, known | set(uniform))
+    near_random = near_antecedents(random_ants, opts.scenes, opts.seed + 1,
+                                   known | set(uniform) | set(near))
+    width = len(load_vocabulary().parameters)
+    held = {}
+    for name, scenes in {"uniform": uniform, "near": near, "near_random": near_random}.items():
+        P = np.vstack([sample(list(a), 1, iteration_seed(opts.seed, 100_000 + j))
+                       for j, a in enumerate(scenes)]) if scenes else np.empty((0, width))
+        S = run(f"held-out ({name})", P)
+        ok = np.all(np.isfinite(S), axis=1)
+        held[name] = ([s for s, kept in zip(scenes, ok) if kept], verdicts(S[ok]))
+    return held
+
+
+def curves(ev: Evaluation, methods: dict[str, Pours], held: dict, samples: int, mode: str) -> None:
+    """Behaviours, coverage and accuracy of each method's theory after each
+    explored antecedent (the curves over the budget)."""
+    R = min(len(m.antecedents) for m in methods.values())
+    out: dict[str, Any] = {"budget": [k * samples for k in range(1, R + 1)]}
+    for method, m in methods.items():
+        beh, cov, acc = [], {k: [] for k in held}, {k: [] for k in held}
+        for k in range(1, R + 1):
+            heads = consequents(m.antecedents[:k], m.P[:k * samples], m.S[:k * samples], mode)
+            beh.append(distinct_behaviours(heads))
+            th = theory_of(m.antecedents[:k], heads, f"{method}@{k}")
+            for name, (sel, y) in held.items():
+                a = accuracy(predict(th, sel), y)
+                cov[name].append(a.overall_coverage)
+                acc[name].append(None if np.isnan(a.overall_accuracy) else a.overall_accuracy)
+        out[method] = {"behaviours": beh, "coverage": cov, "accuracy": acc}
+        ev.behaviours[method] = beh[-1]
+    ev.curves = out
+
+
+def final_theories(ev: Evaluation, theory: Theory, methods: dict[str, Pours], held: dict,
+                   samples: int, mode: str, seed: int) -> None:
+    """Per held-out set: the accuracy of the learned theory, of the random
+    exploration's theory, and of a decision tree trained on each method's
+    pours."""
+    rnd = methods["random"]
+    final = {"curiosity": theory,
+             "random": theory_of(rnd.antecedents, consequents(rnd.antecedents, rnd.P, rnd.S, mode),
+                                 "random")}
+    for name, (sel, y) in held.items():
+        out: dict[str, Any] = {"scenes": len(sel),
+                               "mean_propositions": float(np.mean([len(s) for s in sel]))
+                               if sel else 0.0}
+        for label, th in final.items():
+            out[f"{label}_theory"] = accuracy(predict(th, sel), y).as_dict()
+        for label, m in methods.items():
+            X = [a for a in m.antecedents for _ in range(samples)]
+            okr = np.all(np.isfinite(m.S), axis=1)
+            Xk = [x for x, o in zip(X, okr) if o]
+            out[f"{label}_tree"] = accuracy(
+                tree_predictions(Xk, verdicts(m.S[okr]), sel, seed), y).as_dict()
+        ev.heldout[name] = out
+
+
+def _differing_rules(theory: Theory, heads: np.ndarray) -> list[str]:
+    """The learned rules rI_E whose head is not the consequent rebuilt from
+    the exploration's pours (none when the theory is reproduced)."""
+    names = load_vocabulary().expectation_names
+    have = {r.id: r.head for r in theory.rules}
+    out = []
+    for i, row in enumerate(heads, start=1):
+        for e, holds in zip(names, row):
+            rid = rule_id(i, e)
+            if have.get(rid) != (e if holds else f"neg({e})"):
+                out.append(rid)
+    return out
+
+
+def _paper_rules(theory: Theory, run: Simulations, opts: Options) -> list[dict[str, Any]]:
+    from pantarhei.bridge.reasoning.planning import goals_met
+
+    out, scenes = [], []
+    for props, literal, words in PAPER_RULES:
+        # learned rules for the literal whose antecedent holds the scene's propositions
+        # (and perhaps more: what else each needs is kept)
+        rules = [{"rule": r.id, "also_needs": sorted(set(r.body) - set(props))}
+                 for r in theory.rules if r.id in theory.learned and r.head == literal
+                 and set(props) <= set(r.body)]
+        assumed = answers.assumptions(theory, list(props))
+        scene = sorted(set(props) | set(assumed))
+        said = {o.expectation: o for o in answers.what_happens(theory, scene)}
+        expectation = complement(literal) if literal.startswith("neg(") else literal
+        o = said[expectation]
+        says = {"holds": expectation, "fails": f"neg({expectation})"}.get(o.value, "unknown")
+        out.append({"scene": list(props), "assumed": assumed, "literal": literal, "paper": words,
+                    "learned": rules, "theory_says": says, "rule": o.rule, "reason": o.reason})
+        scenes.append(scene)
+    if opts.paper_samples:
+        P = np.vstack([sample(s, opts.paper_samples, iteration_seed(opts.seed, 200_000 + i))
+                       for i, s in enumerate(scenes)])
+        S = run("the paper's rules", P)
+        for i, entry in enumerate(out):
+            rows = S[i * opts.paper_samples:(i + 1) * opts.paper_samples]
+            rows = rows[np.all(np.isfinite(rows), axis=1)]
+            share = float(goals_met(rows, [entry["literal"]]).mean()) if len(rows) else None
+            entry.update(simulated=int(len(rows)), oracle_share=share)
+    return out
+
+
+#: The goals tried for plans: each expectation, its negation, and a clean pour.
+def goal_sets() -> list[list[str]]:
+    names = load_vocabulary().expectation_names
+    return [list(names)] + [[e] for e in names] + [[f"neg({e})"] for e in names]
+
+
+def _plans(theory: Theory, run: Simulations, opts: Options) -> list[dict[str, Any]]:
+    from pantarhei.bridge.reasoning.planning import goals_met, plan
+
+    out = []
+    for goals in goal_sets():
+        try:
+            (p,) = plan(theory, goals, [], 0)
+        except UserError:
+            continue
+        out.append({"goals": goals, "plan": list(p.chosen), "antecedent": list(p.antecedent)})
+    if opts.verify and out:
+        P = np.vstack([sample(e["antecedent"], opts.verify, iteration_seed(opts.seed, 300_000 + i))
+                       for i, e in enumerate(out)])
+        S = run("plans", P)
+        for i, e in enumerate(out):
+            rows = S[i * opts.verify:(i + 1) * opts.verify]
+            rows = rows[np.all(np.isfinite(rows), axis=1)]
+            met = goals_met(rows, e["goals"])
+            e.update(simulated=int(len(rows)), met=int(met.sum()))
+    return out

@@ -1,0 +1,62 @@
+"""Algorithm 1's rule building, applied to any pours: the consequent of
+each antecedent from equation (1)'s weights, the theory of one rule per
+antecedent and expectation, and what such a theory predicts in scenes (by
+SWI-Prolog). The evaluation uses it for curiosity's antecedents and for the
+random-exploration baseline alike."""
+from __future__ import annotations
+
+from typing import Sequence
+
+import numpy as np
+
+from pantarhei.bridge.engines.swipl import text as prolog_text
+from pantarhei.bridge.evaluation.measures import FAILS, HOLDS, UNKNOWN
+from pantarhei.bridge.exploration.qualify import consequent
+from pantarhei.bridge.exploration.weights import log_densities, weights
+from pantarhei.bridge.reasoning import logic
+from pantarhei.bridge.theories.model import Rule, Theory, rule_id
+from pantarhei.theory.lexicon import load_vocabulary
+
+
+def consequents(antecedents: Sequence[Sequence[str]], P: np.ndarray, S: np.ndarray,
+                mode: str = "weighted") -> np.ndarray:
+    """The consequent (verdict per expectation) of each antecedent, from
+    all simulations (P, S) weighted by equation (1) over these antecedents,
+    as Algorithm 1's last loop builds them."""
+    ok = np.all(np.isfinite(S), axis=1)
+    W = weights(log_densities(P[ok], [list(a) for a in antecedents]))
+    return np.array([[o["holds"] for o in consequent(S[ok], W[i], mode)["outcomes"]]
+                     for i in range(len(antecedents))], dtype=bool).reshape(len(antecedents), -1)
+
+
+def theory_of(antecedents: Sequence[Sequence[str]], heads: np.ndarray, source: str) -> Theory:
+    """A learned theory: for each antecedent, one defeasible rule per
+    expectation, concluding it or its negation."""
+    names = load_vocabulary().expectation_names
+    t = Theory(source=source)
+    for i, (a, row) in enumerate(zip(antecedents, heads), start=1):
+        for e, holds in zip(names, row):
+            rid = rule_id(i, e)
+            t.rules.append(Rule(rid, "defeasible", e if holds else f"neg({e})", tuple(sorted(a))))
+            t.learned.add(rid)
+    return t
+
+
+def predict(theory: Theory, scenes: Sequence[Sequence[str]]) -> np.ndarray:
+    """What SWI-Prolog concludes in each scene (scenes x 9): HOLDS, FAILS or
+    UNKNOWN, by `queries:what_happens/3`."""
+    names = load_vocabulary().expectation_names
+    out = np.full((len(scenes), len(names)), UNKNOWN, dtype=int)
+    if not scenes:
+        return out
+    e = logic.prolog_load(theory)
+    e.use_module("queries")
+    code = {"holds": HOLDS, "fails": FAILS}
+    for i, scene in enumerate(scenes):
+        r = e.once("queries:what_happens(Scene, [], Os), "
+                   "findall(S, (member(outcome(E, V, _), Os), format(atom(S), '~w=~w', [E, V])), Ss)",
+                   Scene=list(scene))
+        for pair in r["Ss"]:
+            name, value = prolog_text(pair).split("=", 1)
+            out[i, names.index(name)] = code.get(value, UNKNOWN)
+    return out

@@ -1,0 +1,96 @@
+"""Running Algorithm 1 from Python: the options of one exploration and
+`explore(options)`, which asks theory/curiosity.pl to explore and returns
+what it did. Defaults come from theory/defaults.pl."""
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Sequence
+
+from pantarhei.bridge.engines.swipl import prolog_quote, text
+from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.exploration.session import error_text, install
+from pantarhei.bridge.theories.loading import DEFAULT_THEORY
+from pantarhei.oracle.store import DEFAULT_STORE
+from pantarhei.theory import defaults
+
+
+def _default(key: str) -> Any:
+    return field(default_factory=lambda: defaults()[key])
+
+
+@dataclass
+class Options:
+    """The options of one exploration (see explore/1 in theory/curiosity.pl)."""
+    oracle: str = _default("oracle")
+    max_rules: int = _default("max_rules")
+    samples: int | None = None
+    threshold: float = _default("threshold")
+    ridge: float = _default("ridge")
+    seed: int = _default("seed")
+    initial: Sequence[str] | None = None
+    breadth: int = _default("breadth")
+    qualify: str = _default("qualify")
+    out: Path = DEFAULT_THEORY
+    store: Path = DEFAULT_STORE
+    resume: bool = False
+    executor: str = "local"
+    workers: int | None = None
+    ray_address: str | None = None
+    progress: bool = True
+    #: Keyword arguments of the oracle's constructor (JSON values).
+    oracle_options: dict | None = None
+
+    def prolog(self) -> str:
+        items = [f"oracle({prolog_quote(self.oracle)})", f"max_rules({int(self.max_rules)})",
+                 f"threshold({float(self.threshold)!r})", f"seed({int(self.seed)})",
+                 f"breadth({int(self.breadth)})", f"ridge({float(self.ridge)!r})", f"qualify({prolog_quote(self.qualify)})",
+                 f"out({prolog_quote(str(Path(self.out).absolute()))})",
+                 f"store({prolog_quote(str(Path(self.store).absolute()))})",
+                 f"resume({prolog_quote(bool(self.resume))})", f"executor({prolog_quote(self.executor)})",
+                 f"progress({prolog_quote(bool(self.progress))})"]
+        if self.samples is not None:
+            items.append(f"samples({int(self.samples)})")
+        if self.initial is not None:
+            items.append(f"initial({prolog_quote(list(self.initial))})")
+        if self.workers is not None:
+            items.append(f"workers({int(self.workers)})")
+        if self.ray_address:
+            items.append(f"ray_address({prolog_quote(self.ray_address)})")
+        if self.oracle_options:
+            items.append(f"oracle_options({prolog_quote(json.dumps(self.oracle_options))})")
+        return "[" + ", ".join(items) + "]"
+
+
+def explore(options: Options) -> dict:
+    """Run an exploration to the end and return what it did: the output
+    files, why it stopped, the number of rules and simulations, and where
+    the time went. UserError for bad options; an interruption is raised
+    again as KeyboardInterrupt once the state is saved."""
+    eng = install()
+    host = eng.exploration_host
+    host.take_error()
+    host.result.clear()
+    try:
+        goal = (f"curiosity:explore_result({options.prolog()}, R0), "
+                "(R0 == ok -> R = ok ; R0 = error(T), text_to_string(T, R))")
+        result = eng.once(goal)["R"]
+    finally:
+        if host.session is not None:
+            host.end({"aborted": True})
+    if result not in ("ok", b"ok"):
+        e = host.take_error()
+        if e is not None:
+            if isinstance(e, (UserError, KeyboardInterrupt)):
+                raise e
+            raise UserError(error_text(e)) from e
+        raise UserError(_result_text(result))
+    return dict(host.result)
+
+
+def _result_text(result: Any) -> str:
+    from pantarhei.bridge.engines.swipl import text
+
+    s = text(result)
+    return s.splitlines()[0] if s else "exploration failed"

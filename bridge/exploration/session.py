@@ -1,0 +1,391 @@
+"""The exploration's session, hosted in Python and driven from Prolog.
+
+Algorithm 1's control flow is Prolog (`theory/curiosity.pl`); this module
+registers the foreign predicates it calls for the numeric work, in the
+Prolog module `bridge`:
+
+* `exploration_begin`: open the simulator and the state store, and return a
+  saved state to resume from;
+* `exploration_simulate`: sample(a_c, n) and simulate the batch (in the
+  simulator's worker processes);
+* `exploration_best_plane`: the weights of equation (1) over all
+  simulations, a weighted plane fit per explored antecedent, and the
+  steepest plane of all;
+* `exploration_qualify`: the consequent of each explored antecedent;
+* `exploration_checkpoint`: save the state after an explored antecedent;
+* `exploration_end`: write the trace and its plot, and close everything;
+* `oracle_sample`, `oracle_simulate`: the oracle at the Prolog prompt.
+
+Each takes a JSON request and unifies its second argument with a JSON
+reply. An exception in Python becomes the reply `{"error": ...}` (Prolog
+raises it as `exploration_error/1`) and is raised again, as it was, when the
+Prolog goal returns. All Prolog calls stay on the main thread.
+
+What Python holds while Prolog explores is owned by a `Host`, which the
+engine keeps (`install(engine)`): the running `Session`, the last error and
+the last run's result. Nothing lives at module level.
+"""
+from __future__ import annotations
+
+import json
+import sys
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable, Sequence
+
+import numpy as np
+
+from pantarhei.bridge.engines.swipl import Engine, engine as prolog_engine
+from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.exploration.planes import Planes, best_abs_slope, plane_fit
+from pantarhei.bridge.exploration.qualify import QUALIFY, consequent
+from pantarhei.bridge.exploration.simulation import (iteration_seed, open_simulator,
+                                                     oracle_identity)
+from pantarhei.bridge.exploration.state import ExplorationStore, run_key
+from pantarhei.bridge.exploration.trace import (append_trace, plot_path, plot_trace,
+                                                trace_path, write_trace)
+from pantarhei.bridge.exploration.weights import weights
+from pantarhei.oracle.generative import InvalidAntecedent, log_density, normalise, sample
+from pantarhei.oracle.store import DEFAULT_STORE
+from pantarhei.theory.lexicon import load_vocabulary
+
+#: Bumped when the course of an exploration may change for the same settings.
+ALGORITHM_VERSION = "1"
+
+
+@dataclass
+class Session:
+    settings: dict
+    run: str
+    store: ExplorationStore
+    simulator: Any
+    oracle_version: str
+    params: np.ndarray
+    scores: np.ndarray
+    trace: list[dict]
+    pending: dict[int, tuple[np.ndarray, np.ndarray]] = field(default_factory=dict)
+    log_dens: dict[str, np.ndarray] = field(default_factory=dict)
+    plane_cache: dict[str, tuple[np.ndarray, Planes | None]] = field(default_factory=dict)
+    started: float = field(default_factory=time.monotonic)
+    bar: Any = None
+    timings: dict[str, float] = field(default_factory=dict)
+    #: Seconds since the start after each explored antecedent (kept out of the trace).
+    elapsed: list[float] = field(default_factory=list)
+
+    @property
+    def valid(self) -> np.ndarray:
+        return np.all(np.isfinite(self.scores), axis=1)
+
+    def log_density_of(self, aid: str, props: Sequence[str]) -> np.ndarray:
+        """log P(p|a) over every simulation so far, extended as they come."""
+        have = self.log_dens.get(aid)
+        n = len(self.params)
+        if have is None:
+            have = log_density(self.params, props) if n else np.empty(0)
+        elif len(have) < n:
+            have = np.concatenate([have, log_density(self.params[len(have):], props)])
+        self.log_dens[aid] = have
+        return have
+
+    def planes_of(self, aid: str, X: np.ndarray, S: np.ndarray, w: np.ndarray) -> Planes | None:
+        """The antecedent's planes, fitted again only when its weights
+        changed: an antecedent whose support holds none of the new
+        simulations, and none that a new antecedent shares, keeps its planes."""
+        cached = self.plane_cache.get(aid)
+        if cached is not None:
+            w0, planes = cached
+            k = len(w0)
+            if k <= len(w) and np.array_equal(w0, w[:k]) and not w[k:].any():
+                return planes
+        planes = plane_fit(X, S, w, float(self.settings.get("ridge", 0.0)))
+        self.plane_cache[aid] = (w.copy(), planes)
+        return planes
+
+    def weight_matrix(self, entries: Sequence[dict]) -> np.ndarray:
+        """Equation (1) for the explored antecedents over the simulations
+        that did not fail: (antecedents, valid simulations)."""
+        valid = self.valid
+        ld = np.vstack([self.log_density_of(str(e["id"]), e["antecedent"])[valid] for e in entries])
+        return weights(ld)
+
+
+class Host:
+    """What the foreign predicates act on: at most one running Session, the
+    exception that stopped the last one, and the last run's result."""
+
+    def __init__(self) -> None:
+        self.session: Session | None = None
+        self.error: BaseException | None = None
+        self.result: dict[str, Any] = {}
+        self.handlers: dict[str, Callable[[dict], dict]] = {
+            "exploration_begin": self.begin,
+            "exploration_simulate": self._timed("simulate", self.simulate),
+            "exploration_best_plane": self._timed("planes", self.best_plane),
+            "exploration_qualify": self._timed("qualify", self.qualify),
+            "exploration_checkpoint": self._timed("checkpoint", self.checkpoint),
+            "exploration_end": self.end,
+            "oracle_sample": oracle_sample,
+            "oracle_simulate": oracle_simulate,
+        }
+
+    def _timed(self, name: str, fn: Callable[[dict], dict]) -> Callable[[dict], dict]:
+        def inner(request: dict) -> dict:
+            t = time.perf_counter()
+            try:
+                return fn(request)
+            finally:
+                if self.session is not None:
+                    timings = self.session.timings
+                    timings[name] = timings.get(name, 0.0) + time.perf_counter() - t
+        return inner
+
+    def need_session(self) -> Session:
+        if self.session is None:
+            raise UserError("no exploration is running")
+        return self.session
+
+    def dispatch(self, name: str, request_text: str) -> str:
+        """Run one handler on a JSON request; its JSON reply, or
+        `{"error": ...}` with the exception kept for `take_error`."""
+        try:
+            answer = self.handlers[name](json.loads(request_text))
+        except BaseException as e:  # reported to Prolog, raised again by the caller
+            self.error = e
+            answer = {"error": error_text(e)}
+        return json.dumps(answer)
+
+    def take_error(self) -> BaseException | None:
+        e, self.error = self.error, None
+        return e
+
+    def begin(self, request: dict) -> dict:
+        if self.session is not None:
+            self.end({"aborted": True})
+        oracle = str(request["oracle"])
+        oracle_options = dict(request.get("oracle_options") or {})
+        version, oracle_settings = oracle_identity(oracle, oracle_options)
+        initial = sorted(str(p) for p in request["initial"])
+        course = {"algorithm": ALGORITHM_VERSION, "oracle": oracle, "oracle_version": version,
+                  "oracle_settings": oracle_settings, "seed": int(request["seed"]),
+                  "samples": int(request["samples"]), "threshold": float(request["threshold"]),
+                  "initial": initial, "breadth": int(request["breadth"]),
+                  "ridge": float(request["ridge"])}
+        run = run_key(course)
+        store_path = Path(str(request.get("store") or DEFAULT_STORE))
+        try:
+            store = ExplorationStore(store_path)
+        except Exception as e:
+            raise UserError(f"cannot open the store {store_path}: {e}") from None
+        vocab = load_vocabulary()
+        n_par, n_exp = len(vocab.parameters), len(vocab.expectations)
+        saved = None
+        if _truthy(request.get("resume")):
+            saved = store.latest(run, n_par, n_exp)
+            if saved is None:
+                _note("no saved exploration with these settings: starting afresh")
+        if saved is None:
+            store.start(run, course)
+        out = Path(str(request["out"]))
+        out.parent.mkdir(parents=True, exist_ok=True)
+        trace_path(out).unlink(missing_ok=True)
+        if saved is not None:
+            write_trace(trace_path(out), saved.trace)
+        workers = request.get("workers")
+        simulator = open_simulator(oracle, str(request.get("executor", "local")),
+                                   int(workers) if workers not in (None, "") else None,
+                                   store_path, request.get("ray_address") or None, oracle_options)
+        self.session = Session(
+            settings=dict(request, store=str(store_path)), run=run, store=store,
+            simulator=simulator, oracle_version=version,
+            params=saved.params.copy() if saved else np.empty((0, n_par)),
+            scores=saved.scores.copy() if saved else np.empty((0, n_exp)),
+            trace=list(saved.trace) if saved else [])
+        if _truthy(request.get("progress", True)):
+            from tqdm import tqdm
+
+            done = saved.iteration if saved else 0
+            self.session.bar = tqdm(total=int(request["max_rules"]), initial=done, unit="rule",
+                                desc="exploring", file=sys.stderr, dynamic_ncols=True)
+            self.session.bar.set_postfix_str(_postfix(self.session, done))
+        return {"state": saved.state if saved else "", "run": run,
+                "resumed": bool(saved), "iterations": saved.iteration if saved else 0}
+
+    def simulate(self, request: dict) -> dict:
+        s = self.need_session()
+        props = [str(p) for p in request["antecedent"]]
+        iteration = int(request["iteration"])
+        n = int(s.settings["samples"])
+        try:
+            P = sample(props, n, iteration_seed(int(s.settings["seed"]), iteration))
+        except InvalidAntecedent as e:
+            raise UserError(f"cannot sample {', '.join(props)}: {e}") from None
+        t = time.perf_counter()
+        S = np.asarray(s.simulator.simulate(P, progress=False), dtype=float)
+        s.timings["oracle"] = s.timings.get("oracle", 0.0) + time.perf_counter() - t
+        if S.shape != (n, len(load_vocabulary().expectations)):
+            raise RuntimeError(f"the simulator returned scores of shape {S.shape}")
+        s.params = np.vstack([s.params, P])
+        s.scores = np.vstack([s.scores, S])
+        s.pending[iteration] = (P, S)
+        failed = int((~np.all(np.isfinite(S), axis=1)).sum())
+        return {"simulations": len(s.params), "failed": failed}
+
+    def best_plane(self, request: dict) -> dict:
+        s = self.need_session()
+        entries = request["antecedents"]
+        W = s.weight_matrix(entries)
+        valid = s.valid
+        X = normalise(s.params[valid])
+        S = s.scores[valid]
+        best: tuple[float, int, int, Planes, np.ndarray] | None = None
+        for i, e in enumerate(entries):
+            planes = s.planes_of(str(e["id"]), X, S, W[i])
+            if planes is None:
+                continue
+            slope = best_abs_slope(planes)
+            if best is None or slope.slope > best[0]:
+                best = (slope.slope, i, slope.expectation, planes, slope.gradient)
+        names = load_vocabulary().parameter_names
+        expectations = load_vocabulary().expectation_names
+        if best is None:
+            return {"antecedent": str(entries[-1]["id"]), "expectation": expectations[0],
+                    "slope": 0.0, "mean": 0.5, "gradient": {n: 0.0 for n in names}}
+        slope, i, k, planes, gradient = best
+        return {"antecedent": str(entries[i]["id"]), "expectation": expectations[k],
+                "slope": float(slope), "mean": float(planes.mean[k]),
+                "gradient": {n: float(g) for n, g in zip(names, gradient)}}
+
+    def qualify(self, request: dict) -> dict:
+        s = self.need_session()
+        entries = request["antecedents"]
+        mode = str(request.get("mode", "weighted"))
+        if mode not in QUALIFY:
+            raise UserError(f"unknown qualify mode '{mode}' (choose {' or '.join(QUALIFY)})")
+        W = s.weight_matrix(entries)
+        S = s.scores[s.valid]
+        out = []
+        for i, e in enumerate(entries):
+            out.append({"id": str(e["id"]), **consequent(S, W[i], mode)})
+        failed = int((~s.valid).sum())
+        return {"antecedents": out, "simulations": len(s.params), "failed": failed,
+                "oracle_version": s.oracle_version}
+
+    def checkpoint(self, request: dict) -> dict:
+        s = self.need_session()
+        iteration = int(request["iteration"])
+        P, S = s.pending.pop(iteration)
+        trace = dict(request["trace"])
+        s.store.save(s.run, iteration, P, S, str(request["state"]), trace)
+        s.trace.append(trace)
+        s.elapsed.append(round(time.monotonic() - s.started, 3))
+        append_trace(Path(str(s.settings["out"])), trace)
+        if s.bar is not None:
+            s.bar.update(1)
+            s.bar.set_postfix_str(_postfix(s, iteration, int(request.get("a_new", 0))))
+        return {}
+
+    def end(self, request: dict) -> dict:
+        s = self.session
+        if s is None:
+            return {}
+        self.session = None
+        written: dict[str, str] = {}
+        try:
+            if not _truthy(request.get("aborted")):
+                out = Path(str(request["out"]))
+                write_trace(trace_path(out), s.trace)
+                written["trace"] = str(trace_path(out))
+                try:
+                    plot_trace(plot_path(out), s.trace, s.settings)
+                    written["plot"] = str(plot_path(out))
+                except Exception as e:  # the theory and trace are written: say so and go on
+                    _note(f"could not plot the trace: {e}")
+                s.store.finish(s.run)
+                self.result.update(out=str(out), stopped=str(request.get("stopped")),
+                                    explored=int(request.get("explored", 0)),
+                                    a_new=int(request.get("a_new", 0)),
+                                    simulations=len(s.params),
+                                    failed=int((~s.valid).sum()), timings=dict(s.timings), elapsed=list(s.elapsed),
+                                    wall=time.monotonic() - s.started, **written)
+        finally:
+            if s.bar is not None:
+                s.bar.close()
+            try:
+                s.simulator.close()
+            finally:
+                s.store.close()
+        return written
+
+def _postfix(s: Session, explored: int, a_new: int | None = None) -> str:
+    text = f"{len(s.params)} simulations, {explored} rules"
+    if a_new is not None:
+        text += f", {a_new} in A_new"
+    return text
+
+
+def _note(text: str) -> None:
+    print(f"pantarhei explore: {text}", file=sys.stderr)
+
+
+def _truthy(v: Any) -> bool:
+    return v in (True, "true", 1, "1")
+
+
+def oracle_sample(request: dict) -> dict:
+    props = [str(p) for p in request["antecedent"]]
+    try:
+        P = sample(props, int(request["n"]), int(request["seed"]))
+    except (InvalidAntecedent, ValueError) as e:
+        raise UserError(str(e)) from None
+    return {"rows": P.tolist()}
+
+
+def oracle_simulate(request: dict) -> dict:
+    oracle = str(request.get("oracle", "pybullet"))
+    oracle_identity(oracle)
+    P = np.asarray(request["rows"], dtype=float)
+    n = len(load_vocabulary().parameters)
+    if P.ndim != 2 or P.shape[1] != n:
+        raise UserError(f"expected rows of {n} numbers")
+    workers = request.get("workers")
+    sim = open_simulator(oracle, str(request.get("executor", "local")),
+                         int(workers) if workers is not None else None,
+                         Path(str(request.get("store") or DEFAULT_STORE)).absolute())
+    try:
+        S = np.asarray(sim.simulate(P, progress=False), dtype=float)
+    finally:
+        sim.close()
+    return {"scores": [[float(x) if np.isfinite(x) else "nan" for x in row] for row in S]}
+
+
+def error_text(e: BaseException) -> str:
+    """An exception as the one line Prolog reports."""
+    if isinstance(e, KeyboardInterrupt):
+        return "interrupted"
+    return str(e) or type(e).__name__
+
+
+def install(eng: Engine | None = None) -> Engine:
+    """The process's Prolog with the exploration loaded: a Host owned by
+    the engine, the foreign predicates (module `bridge`) that call it, and
+    theory/curiosity.pl. Registering twice does nothing."""
+    eng = eng or prolog_engine()
+    if eng.exploration_host is None:
+        from pyswip import Prolog
+
+        host = Host()
+        for name in host.handlers:
+            Prolog.register_foreign(_foreign(eng, name), name=name, arity=2, module="bridge")
+        eng.exploration_host = host
+        eng.use_module("curiosity")
+    return eng
+
+
+def _foreign(eng: Engine, name: str) -> Callable[[Any, Any], bool]:
+    def predicate(request: Any, reply: Any) -> bool:
+        text = request.decode() if isinstance(request, bytes) else str(request)
+        reply.unify(eng.exploration_host.dispatch(name, text))
+        return True
+    predicate.__name__ = name
+    return predicate

@@ -1,0 +1,83 @@
+"""Answers to questions about pouring: what happens in a scene (one answer
+per expectation, with the deciding rule), why or why not, and the
+assumptions that complete a question with the theory's ordinary pour."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from pantarhei.bridge.engines.swipl import text as prolog_text
+from pantarhei.bridge.reasoning.logic import Semantics, prolog_load
+from pantarhei.bridge.theories.loading import initial_antecedent
+from pantarhei.bridge.theories.model import Theory
+
+
+def assumptions(theory: Theory, props: list[str] | tuple[str, ...]) -> list[str]:
+    """The propositions to add to the question `props`, in order: the
+    theory's initial antecedent (`initial_antecedent`) for each dimension
+    the question leaves open, added one at a time in the theory's order and
+    skipped when it would make the antecedent invalid (bridge/reasoning/scenes.py).
+    `props` should be a valid antecedent; if it is not, nothing is added.
+    The scene to reason about is then `props + assumptions(theory, props)`."""
+    from pantarhei.theory.lexicon import load_vocabulary
+
+    from pantarhei.bridge.reasoning.scenes import violations
+
+    initial = initial_antecedent(theory)
+    if not initial:
+        return []
+    vocab = load_vocabulary()
+    scene = list(props)
+    if violations(scene):
+        return []
+    taken = {vocab.propositions[p].dimension for p in scene if p in vocab.propositions}
+    added: list[str] = []
+    for p in initial:
+        prop = vocab.propositions.get(p)
+        if prop is None or prop.dimension in taken:
+            continue
+        if violations(scene + added + [p]):
+            continue
+        added.append(p)
+        taken.add(prop.dimension)
+    return added
+
+
+@dataclass(frozen=True)
+class Answer:
+    """What the theory says about one expectation in a scene."""
+    expectation: str
+    value: str          # "holds", "fails" or "unknown"
+    rule: str           # the deciding rule, "fact", or "none"
+    reason: str         # in words
+
+
+def what_happens(theory: Theory, props: list[str],
+                 semantics: Semantics = Semantics()) -> list[Answer]:
+    """The prediction for a scene: one Answer per expectation, with reasons
+    (for an undecided one, the brief why-not of queries:explain_brief/4)."""
+    e = prolog_load(theory)
+    e.use_module("queries")
+    goal = (f"Sem = {semantics.options()}, queries:what_happens(Scene, Sem, Os), "
+            "findall(S, (member(outcome(E, V, R), Os), "
+            "(V == fails -> L = neg(E) ; L = E), queries:explain_brief(Scene, L, Sem, T), "
+            "format(string(S), '~w\\t~w\\t~w\\t~s', [E, V, R, T])), Ss)")
+    r = e.once(goal, Scene=list(props))
+    out = []
+    for line in r["Ss"]:
+        exp, value, rule, reason = prolog_text(line).split("\t", 3)
+        out.append(Answer(exp, value, rule, reason))
+    return out
+
+
+def explain(theory: Theory, props: list[str], literal: str,
+            semantics: Semantics = Semantics(), brief: bool = False) -> str:
+    """Why (or why not) the theory concludes `literal` in the scene, in
+    words, sentences separated by "; ". A why-not names every rule for the
+    literal (queries:explain/4), or with `brief` at most three
+    (queries:explain_brief/4)."""
+    e = prolog_load(theory)
+    e.use_module("queries")
+    pred = "explain_brief" if brief else "explain"
+    r = e.once(f"term_to_atom(L, LText), queries:{pred}(Scene, L, {semantics.options()}, T)",
+               Scene=list(props), LText=literal)
+    return prolog_text(r["T"])

@@ -1,0 +1,86 @@
+"""Reading theories: a file in either format, several files merged, or the
+shipped learned theory when none is named; and what a learned theory says
+of the exploration behind it (its `setting/2` facts)."""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.theories.dfl import is_dfl, read_dfl
+from pantarhei.bridge.theories.model import Theory, merge, read_native
+from pantarhei.theory import THEORY_DIR, TheoryFileError, defaults
+
+#: The theory the exploration writes, used when no theory file is named.
+DEFAULT_THEORY = THEORY_DIR / str(defaults()["theory"])
+NO_THEORY = (f"no learned theory yet ({DEFAULT_THEORY} does not exist): run the exploration "
+             f"(`pantarhei explore`) to learn one, or give a theory file with --theory FILE "
+             f"(native facts or .dfl, e.g. examples/extend_by_hand/learned.pl)")
+
+
+def read_theory(path: Path | str) -> Theory:
+    """A theory file, native or DFL; UserError with `file:line: what`."""
+    try:
+        return read_dfl(path) if is_dfl(path) else read_native(path)
+    except TheoryFileError as e:
+        raise UserError(str(e)) from None
+
+
+def load(paths: Path | str | list | tuple | None = None, check: bool = True) -> Theory:
+    """The theory of one or more files (merged: a learned theory and rules
+    added by hand), or the shipped learned theory when none is given.
+    With `check`, sup/2 must name rules of the theory."""
+    if paths is None or (isinstance(paths, (list, tuple)) and not paths):
+        if not DEFAULT_THEORY.is_file():
+            raise UserError(NO_THEORY)
+        paths = [DEFAULT_THEORY]
+    if not isinstance(paths, (list, tuple)):
+        paths = [paths]
+    for p in paths:
+        if not Path(p).is_file():
+            raise UserError(f"{p}: no such theory file")
+    try:
+        theory = merge([read_theory(p) for p in paths])
+        if check:
+            theory.check_superiority()
+    except TheoryFileError as e:
+        raise UserError(str(e)) from None
+    return theory
+
+
+_SETTING = re.compile(r"^\s*setting\(\s*([a-z][A-Za-z0-9_]*)\s*,\s*(.+?)\s*\)\s*\.\s*$")
+
+
+def settings(theory: Theory) -> dict[str, list]:
+    """The theory's `setting(Key, Value)` facts, values in file order: what
+    `pantarhei explore` records of the exploration behind a learned theory
+    (oracle, oracle_version, seed, samples, initial, ...). Those read from
+    its native file(s) (`Theory.settings`), then any among the lines it keeps
+    aside (`extra`); none for DFL files or hand-written theories without
+    such facts. Values are str or int."""
+    out = {k: list(v) for k, v in theory.settings.items()}
+    for m in map(_SETTING.match, theory.extra):
+        if m:
+            v = m.group(2).strip('"')
+            have = out.setdefault(m.group(1), [])
+            value = int(v) if v.lstrip("-").isdigit() else v
+            if value not in have:
+                have.append(value)
+    return out
+
+
+def provenance_lines(theory: Theory) -> list[str]:
+    """Where a learned theory comes from, one `key: values` line per
+    setting (for formats without facts for it, as comments in DFL)."""
+    s = settings(theory)
+    if not s:
+        return []
+    return ["learned by pantarhei explore; settings of the exploration:"] + \
+        [f"  {k}: {', '.join(str(v) for v in vs)}" for k, vs in s.items()]
+
+
+def initial_antecedent(theory: Theory) -> list[str]:
+    """The theory's `setting(initial, P)` propositions, in file order: the
+    antecedent a_0 its exploration started from (and which every learned
+    rule body therefore contains, or a neighbour of)."""
+    return [p for p in settings(theory).get("initial", []) if isinstance(p, str)]

@@ -1,0 +1,27 @@
+% The defaults of the project, written once and read by SWI-Prolog
+% (theory/curiosity.pl, theory/pantarhei.pl) and by Python
+% (pantarhei.theory.defaults: the command line and its help).
+% Common subset of Prolog and ASP: ground facts, no floats (permille).
+
+% Algorithm 1 (pantarhei explore): the oracle, the number of explored
+% antecedents, the slope below which nothing new is explored, the ridge
+% of the plane fits, the seed, how many ranks modify may move, and how an
+% antecedent's consequent is qualified (weighted vote or the paper's argmax).
+default(oracle, pybullet).
+default(max_rules, 25).
+default(threshold_permille, 100).
+default(ridge_permille, 1000).
+default(seed, 1).
+default(breadth, 3).
+default(qualify, weighted).
+
+% a_0, the initial antecedent: an ordinary pour (from mid height, near the
+% destination's rim, steeply tilted).
+default_initial(pour_mid_height).
+default_initial(pour_near_rim).
+default_initial(pour_steeply_tilted).
+
+% Where the learned theory is written (relative to theory/) and the store
+% of simulations (relative to the working directory).
+default(theory, "learned/pouring.pl").
+default(store, "pantarhei.sqlite").
