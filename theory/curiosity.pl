@@ -516,11 +516,12 @@ sample(Props, N, Seed, Rows) :-
 %
 %   Scores are the 9 expectation scores of each row (a list of
 %   Expectation-Score pairs per row; a failed simulation scores nan).
-%   Options: oracle(Name) (default pybullet), store(File), executor(E),
+%   Options: oracle(Name) (default: theory/defaults.pl), store(File), executor(E),
 %   workers(N). Results are kept in the store, and stored ones are not
 %   simulated again.
 simulate(Rows, Options, Scores) :-
-    option(oracle(Oracle), Options, pybullet),
+    default(oracle, DefaultOracle),
+    option(oracle(Oracle), Options, DefaultOracle),
     option(executor(Executor), Options, local),
     Request0 = _{rows:Rows, oracle:Oracle, executor:Executor},
     (   option(store(Store), Options)
