@@ -36,8 +36,8 @@ class Engine:
         path = name if name.startswith("/") else str(THEORY_DIR / name)
         result = self.once(
             "catch((use_module(Path), R = ok), E, "
-            "(  catch(theory_files:theory_error_message(E, M), _, fail) -> R = M "
-            "; message_to_codes(E, R) ))",
+            "(  catch(theory_files:error_message(E, R), _, fail) -> true "
+            "; format(string(R), '~p', [E]) ))",
             Path=path)
         if result["R"] != "ok":
             raise UserError(_text(result["R"]))

@@ -110,8 +110,7 @@ def prolog_load(theory: Theory):
             with os.fdopen(fd, "w") as f:
                 f.write(text)
             r = e.once("catch((defeasible:load_theory(F), R = ok), E, "
-                       "(catch(theory_files:theory_error_message(E, M), _, fail) -> R = M "
-                       "; message_to_codes(E, R)))", F=name)
+                       "theory_files:error_message(E, R))", F=name)
         finally:
             os.unlink(name)
         if prolog_text(r["R"]) != "ok":

@@ -1,7 +1,8 @@
 :- module(theory_files,
           [ load_facts/2,              % +File, +Module
             check_fact/1,              % +Term
-            theory_error_message/2     % +Error, -Message
+            theory_error_message/2,    % +Error, -Message
+            error_message/2            % +Error, -Message
           ]).
 /** <module> Reading theory files: the common subset of Prolog and ASP
 
@@ -123,3 +124,20 @@ check_name(Term) :-
 %   The one-line message for a theory_error/3.
 theory_error_message(theory_error(File, Line, Expected), Message) :-
     format(string(Message), "~w:~w: ~w", [File, Line, Expected]).
+
+%!  error_message(+Error, -Message:string) is det.
+%
+%   One line for any error: that of theory_error_message/2 for a
+%   theory_error/3, otherwise SWI-Prolog's own message for Error (its
+%   lines joined by spaces), or the error term itself.
+error_message(Error, Message) :-
+    (   theory_error_message(Error, Message0)
+    ->  true
+    ;   catch('$messages':translate_message(Error, Lines, []), _, fail)
+    ->  with_output_to(string(Text), print_message_lines(current_output, '', Lines)),
+        split_string(Text, "\n", " \t", Parts0),
+        exclude(==(""), Parts0, Parts),
+        atomic_list_concat(Parts, ' ', Message0)
+    ;   format(string(Message0), "~p", [Error])
+    ),
+    (   string(Message0) -> Message = Message0 ; atom_string(Message0, Message) ).
