@@ -55,6 +55,11 @@ def test_native_facts(engine: str, text: str, expected: dict, tmp_path: Path) ->
     assert conclusions(load(f), Semantics(), engine) == expected
 
 
+def test_an_unlabelled_fact_keeps_clear_of_labels() -> None:
+    t = parse_dfl("=> a\nr1: a => b\n=> c\n")
+    assert [(r.id, r.head) for r in t.rules] == [("line1", "a"), ("r1", "b"), ("r3", "c")]
+
+
 @pytest.mark.parametrize("engine", ENGINES)
 def test_a_defeasible_fact_is_defeated(engine: str) -> None:
     # f2 beats f1: -a is +d, a is not
