@@ -97,6 +97,9 @@ load_theory(File) :-
     Scratch = defeasible_input,
     forall(current_predicate(Scratch:P/A),
            ( functor(H, P, A), retractall(Scratch:H) )),
+    % defined here, so that a theory without rules does not reach the
+    % built-in rule/3 that the module would otherwise inherit
+    forall(theory_predicate(P, A), dynamic(Scratch:P/A)),
     load_facts(File, Scratch),
     clear_theory,
     forall(theory_predicate(P, A),
@@ -109,7 +112,8 @@ load_theory(File) :-
            ( functor(H, P, A), retractall(Scratch:H) )),
     check_theory(File),
     assertz(given_theory(File)),
-    prepare.
+    prepare,
+    check_superiority(File).
 
 theory_predicate(fact, 1).
 theory_predicate(rule, 3).
@@ -167,7 +171,38 @@ theory_given :-
 %
 %   A theory is loaded (possibly empty).
 theory_loaded :-
-    (   loaded -> true ; prepare ).
+    (   loaded -> true ; prepare, check_superiority('<theory>') ).
+
+% check_superiority(+File): the superiority relation (sup/2 with
+% specificity) must be acyclic, or a rule could beat itself and both a
+% literal and its complement be concluded. A cyclic theory is forgotten.
+check_superiority(File) :-
+    (   superiority_cycle(Cycle)
+    ->  clear_theory,
+        atomic_list_concat(Cycle, ' > ', Text),
+        format(string(M), "the superiority relation has a cycle, ~w: it must be acyclic", [Text]),
+        throw(theory_error(File, 0, M))
+    ;   true
+    ).
+
+% superiority_cycle(-Cycle): a shortest cycle [R, ..., R] of superior/2
+% through the first rule (in standard order) that lies on one.
+superiority_cycle(Cycle) :-
+    findall(R, superior(R, _), Rs0), sort(Rs0, Rs),
+    member(R, Rs),
+    findall([S, R], superior(R, S), Queue),
+    cycle_back(Queue, R, [], Cycle), !.
+
+cycle_back([[N|P]|_], R, _, Cycle) :-
+    N == R, !,
+    reverse([N|P], Cycle).
+cycle_back([[N|P]|Queue], R, Seen, Cycle) :-
+    (   memberchk(N, Seen)
+    ->  Next = Queue
+    ;   findall([M, N|P], superior(N, M), More),
+        append(Queue, More, Next)
+    ),
+    cycle_back(Next, R, [N|Seen], Cycle).
 
 prepare :-
     retractall(rule_body(_, _)), retractall(superior(_, _)),

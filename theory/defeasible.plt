@@ -68,4 +68,67 @@ test(ignores_other_predicates, [true(Cs == [a])]) :-
     load_text("fact(a). provenance(r1, runs, 3). setting(seed, 1)."),
     sem(S), conclusions(S, '+D', Cs).
 
+% A defeasible fact is a defeasible rule without body: +d, never +D, and
+% it can be defeated.
+test(defeasible_fact, [true(Cs == ['+D'-[], '-D'-[a, neg(a)], '+d'-[a], '-d'-[neg(a)]])]) :-
+    load_text("rule(f1, defeasible, a)."),
+    sem(S), findall(T-Ls, (member(T, ['+D', '-D', '+d', '-d']), conclusions(S, T, Ls)), Cs).
+
+test(defeasible_fact_beaten, [true(Cs == [[neg(a)], [a]])]) :-
+    load_text("rule(f1, defeasible, a). rule(f2, defeasible, neg(a)). sup(f2, f1)."),
+    sem(S), conclusions(S, '+d', P), conclusions(S, '-d', M), Cs = [P, M].
+
+test(defeasible_fact_against_strict_fact, [true(Cs == [[neg(a)], [neg(a)], [a]])]) :-
+    load_text("rule(f1, defeasible, a). fact(neg(a))."),
+    sem(S), conclusions(S, '+D', D), conclusions(S, '+d', P), conclusions(S, '-d', M),
+    Cs = [D, P, M].
+
+test(defeasible_fact_and_defeater, [true(Cs == [[b], [a, neg(a), neg(b)]])]) :-
+    load_text("rule(f1, defeasible, a). rule(d1, defeater, neg(a)). body(d1, b). fact(b)."),
+    sem(S), conclusions(S, '+d', P), conclusions(S, '-d', M), Cs = [P, M].
+
+% A theory of facts only, read as in a fresh process: the scratch module
+% of load_theory/1 has no rule/3 of its own yet.
+fresh_input :-
+    forall(member(P/A, [fact/1, rule/3, body/2, sup/2, learned/1]),
+           catch(abolish(defeasible_input:P/A), _, true)).
+
+test(facts_only, [setup(fresh_input), true(Cs == [[a], [a], [neg(a)]])]) :-
+    load_text("fact(a)."),
+    sem(S), conclusions(S, '+D', D), conclusions(S, '+d', P), conclusions(S, '-d', M),
+    Cs = [D, P, M].
+
+test(defeasible_facts_only, [setup(fresh_input), true(Cs == [[], [a]])]) :-
+    load_text("rule(f1, defeasible, a)."),
+    sem(S), conclusions(S, '+D', D), conclusions(S, '+d', P), Cs = [D, P].
+
+% The superiority relation must be acyclic.
+test(cyclic_superiority, [throws(theory_error(_, 0, "the superiority relation has a cycle, r1 > r2 > r1: it must be acyclic"))]) :-
+    load_text("fact(a). rule(r1, defeasible, b). body(r1, a).
+               rule(r2, defeasible, neg(b)). body(r2, a). sup(r1, r2). sup(r2, r1).").
+
+test(rule_superior_to_itself, [throws(theory_error(_, 0, "the superiority relation has a cycle, r1 > r1: it must be acyclic"))]) :-
+    load_text("rule(r1, defeasible, b). sup(r1, r1).").
+
+test(long_superiority_cycle, [throws(theory_error(_, 0, "the superiority relation has a cycle, r1 > r2 > r3 > r1: it must be acyclic"))]) :-
+    load_text("rule(r1, defeasible, b). rule(r2, defeasible, b). rule(r3, defeasible, b).
+               sup(r1, r2). sup(r2, r3). sup(r3, r1).").
+
+% sup(r1, r2) and sup(r3, r1), with r2 beating r3 by specificity.
+test(cycle_through_specificity, [throws(theory_error(_, 0, "the superiority relation has a cycle, r1 > r2 > r3 > r1: it must be acyclic"))]) :-
+    load_text("rule(r1, defeasible, p). body(r1, a).
+               rule(r2, defeasible, p). body(r2, a). body(r2, b). learned(r2).
+               rule(r3, defeasible, neg(p)). body(r3, a). learned(r3).
+               sup(r1, r2). sup(r3, r1).").
+
+test(cyclic_theory_is_forgotten, [true(Cs == [])]) :-
+    catch(load_text("fact(a). rule(r1, defeasible, b). sup(r1, r1)."), theory_error(_, _, _), true),
+    sem(S), conclusions(S, '+D', Cs).
+
+test(acyclic_superiority_chain, [true(Cs == [a, b])]) :-
+    load_text("fact(a). rule(r1, defeasible, b). body(r1, a).
+               rule(r2, defeasible, neg(b)). body(r2, a). rule(r3, defeasible, neg(b)).
+               sup(r1, r2). sup(r1, r3). sup(r2, r3)."),
+    sem(S), conclusions(S, '+d', Cs).
+
 :- end_tests(defeasible).

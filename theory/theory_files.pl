@@ -2,7 +2,7 @@
           [ load_facts/2,              % +File, +Module
             check_fact/1,              % +Term
             theory_error_message/2,    % +Error, -Message
-            error_text/2               % +Error, -Text
+            error_message/2            % +Error, -Message
           ]).
 /** <module> Reading theory files: the common subset of Prolog and ASP
 
@@ -125,20 +125,19 @@ check_name(Term) :-
 theory_error_message(theory_error(File, Line, Expected), Message) :-
     format(string(Message), "~w:~w: ~w", [File, Line, Expected]).
 
-%!  error_text(+Error, -Text:string) is det.
+%!  error_message(+Error, -Message:string) is det.
 %
-%   Any error as one line of text: a theory_error/3 as =|File:Line:
-%   Expected|=, anything else as SWI-Prolog's own message for it, first line.
-error_text(Error, Text) :-
-    theory_error_message(Error, Text),
-    !.
-error_text(Error, Text) :-
-    catch(( '$messages':translate_message(Error, Lines, []),
-            with_output_to(string(All), print_message_lines(current_output, '', Lines))
-          ), _, fail),
-    split_string(All, "\n", "", [First|_]),
-    First \== "",
-    !,
-    Text = First.
-error_text(Error, Text) :-
-    format(string(Text), "~q", [Error]).
+%   One line for any error: that of theory_error_message/2 for a
+%   theory_error/3, otherwise SWI-Prolog's own message for Error (its
+%   lines joined by spaces), or the error term itself.
+error_message(Error, Message) :-
+    (   theory_error_message(Error, Message0)
+    ->  true
+    ;   catch('$messages':translate_message(Error, Lines, []), _, fail)
+    ->  with_output_to(string(Text), print_message_lines(current_output, '', Lines)),
+        split_string(Text, "\n", " \t", Parts0),
+        exclude(==(""), Parts0, Parts),
+        atomic_list_concat(Parts, ' ', Message0)
+    ;   format(string(Message0), "~p", [Error])
+    ),
+    (   string(Message0) -> Message = Message0 ; atom_string(Message0, Message) ).

@@ -56,7 +56,7 @@ class Engine:
             raise UserError(f"{source}: {str(e).split(': ', 1)[-1]}") from None
 
     def _load(self, goal: str, path: str) -> None:
-        result = self.once(f"catch(({goal}, R = ok), E, theory_files:error_text(E, R))", F=path)
+        result = self.once(f"catch(({goal}, R = ok), E, theory_files:error_message(E, R))", F=path)
         if text(result["R"]) != "ok":
             raise UserError(text(result["R"]))
 

@@ -132,6 +132,10 @@ def asp_conclusions(theory: Theory, semantics: Semantics = Semantics(),
         consts = {**semantics.asp_constants(), "steps": str(steps), "acyclic": str(acyclic).lower()}
         (model,) = solve(["defeasible.lp", "conclusions.lp"], text, files=(),
                          args=[f"-c{k}={v}" for k, v in consts.items()])
+        cycle = sorted(str(s.arguments[0]) for s in model if s.name == "sup_cycle")
+        if cycle:
+            raise UserError(f"{theory.source}: the superiority relation has a cycle through "
+                            f"{', '.join(cycle)}: it must be acyclic")
         if not any(s.name == "changed" for s in model):
             break
         steps *= 2

@@ -4,14 +4,27 @@
     r2: penguin(X) -> bird(X)        strict (with silkie's ?x variables)
     r3: broken_wing ~> -flies(tweety)                      defeater
     r3 > r1                                                superiority
-    >> bird(tweety)                                        a fact
-    -> bird(tweety)  /  => bird(tweety)                    silkie's facts
+    >> bird(tweety)                                        a fact (SPINdle)
+    -> bird(tweety)                                        a strict fact
+    => bird(tweety)                                        a defeasible fact
+
+A fact `>> a` or `-> a` is definite (+D a). A defeasible fact `=> a` is a
+defeasible rule with an empty body, as in silkie and in defeasible logic:
+it gives +d a but never +D a, and a rule for -a that beats it, a defeater
+for -a or a definite -a defeats it. It is named like any rule without a
+label. A labelled `f: -> a` / `f: => a` is a strict / defeasible
+rule with an empty body (a strict one proves +D a like a fact).
 
 `-` (or `¬`) negates a literal; comments start with `#`, `%` or `//`.
+The superiority relation (`r1 > r2`, with the specificity of learned
+rules) must be acyclic: a cycle, or a rule superior to itself, is an
+error naming its rules.
+
 Rules with variables (`?x`, or a name starting with an upper-case letter
 inside an argument list) are grounded over the facts: every instance whose
 body literals all occur among the facts or the heads of other instances.
-Rules without a label get `r<line>`.
+Rules without a label get `r<line>` (`line<line>` if another rule is
+labelled `r<line>`).
 """
 from __future__ import annotations
 
@@ -21,7 +34,7 @@ from typing import Sequence
 
 from pantarhei.theory import TheoryFileError
 
-from pantarhei.bridge.theories.model import Rule, Theory, complement
+from pantarhei.bridge.theories.model import Rule, Theory, complement, superiority_cycle
 
 _ARROWS = (("->", "strict"), ("=>", "defeasible"), ("~>", "defeater"))
 _TERM = re.compile(r"^[a-z][A-Za-z0-9_]*(\((.*)\))?$")
@@ -44,8 +57,9 @@ def parse_dfl(text: str, source: str = "<dfl>") -> Theory:
     t = Theory(source=source)
     schemas: list[tuple[Rule, int]] = []
     sups: list[tuple[str, str, int]] = []
-    for n, raw in enumerate(text.splitlines(), start=1):
-        line = re.split(r"#|%|//", raw, maxsplit=1)[0].strip()
+    lines = [re.split(r"#|%|//", raw, maxsplit=1)[0].strip() for raw in text.splitlines()]
+    labels = {m.group(1) for m in (re.match(r"^([A-Za-z0-9_]+)\s*:(?!-)", x) for x in lines) if m}
+    for n, line in enumerate(lines, start=1):
         if not line:
             continue
         where = f"{source}:{n}"
@@ -70,12 +84,18 @@ def parse_dfl(text: str, source: str = "<dfl>") -> Theory:
         if not body and label is None and arrow[1] != "defeater":
             if _variables(head):
                 raise TheoryFileError(f"{where}: a fact without variables, not {head_text.strip()}")
-            t.facts.append(head)
-            continue
-        rid = label if label is not None else f"r{n}"
+            if arrow[1] == "strict":
+                t.facts.append(head)
+                continue
+        rid = label if label is not None else f"r{n}" if f"r{n}" not in labels else f"line{n}"
         if not re.fullmatch(r"[a-z][A-Za-z0-9_]*", rid):
             raise TheoryFileError(f"{where}: a rule label in lower case letters, digits and _, not '{rid}'")
         schemas.append((Rule(rid, arrow[1], head, body), n))
+    cycle = superiority_cycle((a, b) for a, b, _ in sups)
+    if cycle:
+        n = next(n for a, b, n in sups if (a, b) == (cycle[0], cycle[1]))
+        raise TheoryFileError(f"{source}:{n}: the superiority relation has a cycle, "
+                              f"{' > '.join(cycle)}: it must be acyclic")
     t.rules, origin = _ground(schemas, t.facts, source)
     ids = {r.id for r in t.rules} | {r.id for r, _ in schemas}
     for a, b, n in sups:

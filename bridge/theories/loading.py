@@ -37,12 +37,22 @@ def load(paths: Path | str | list | tuple | None = None, check: bool = True) -> 
     if not isinstance(paths, (list, tuple)):
         paths = [paths]
     for p in paths:
-        if not Path(p).is_file():
+        path = Path(p)
+        if not path.exists():
             raise UserError(f"{p}: no such theory file")
+        if path.is_dir():
+            raise UserError(f"{p}: a directory, not a theory file")
+        if not path.is_file():
+            raise UserError(f"{p}: not a regular file (a device or a pipe), not a theory file")
+    theories = [read_theory(p) for p in paths]
+    for t in theories:
+        if not (t.facts or t.rules or t.sup or t.settings or t.extra):
+            raise UserError(f"{t.source}: an empty theory (no facts and no rules)")
     try:
-        theory = merge([read_theory(p) for p in paths])
+        theory = merge(theories)
         if check:
             theory.check_superiority()
+        theory.check_acyclic()
     except TheoryFileError as e:
         raise UserError(str(e)) from None
     return theory

@@ -148,6 +148,18 @@ class Theory:
         for f in self.facts:
             _check_literal(f, _line(text, rf"fact\(\s*{re.escape(f)}", self.source))
 
+    def check_acyclic(self) -> None:
+        """Raise TheoryFileError if the superiority relation (sup/2 with
+        specificity) has a cycle: a rule could then beat itself, and a
+        literal and its complement both be concluded."""
+        cycle = superiority_cycle(self.sup + self.specificity())
+        if cycle:
+            a, b = cycle[0], cycle[1]
+            where = _line(_text_of(self.source), rf"sup\(\s*{re.escape(a)}\s*,\s*{re.escape(b)}\s*\)"
+                                                 rf"|\b{re.escape(a)}\s*>\s*{re.escape(b)}\b", self.source)
+            raise TheoryFileError(f"{where.removesuffix(':0')}: the superiority relation has a cycle, "
+                                  f"{' > '.join(cycle)}: it must be acyclic")
+
     def check_superiority(self) -> None:
         """Raise TheoryFileError if sup/2 names a rule that does not exist."""
         text = _text_of(self.source)
@@ -184,6 +196,26 @@ def _value_text(value) -> str:
     if isinstance(value, str) and re.match(r"^[a-z][A-Za-z0-9_]*\(.*\)$", value):
         return value
     return '"' + str(value).replace("\\", "\\\\").replace('"', '\\"') + '"'
+
+
+def superiority_cycle(pairs: Iterable[tuple[str, str]]) -> list[str] | None:
+    """A shortest cycle [r, ..., r] of the relation `pairs` through the
+    first rule (in sorted order) that lies on one; None if it is acyclic."""
+    succ: dict[str, list[str]] = {}
+    for a, b in pairs:
+        succ.setdefault(a, []).append(b)
+    for start in sorted(succ):
+        paths = {b: [start, b] for b in succ[start]}
+        queue = list(paths)
+        while queue:
+            node = queue.pop(0)
+            if node == start:
+                return paths[node]
+            for nxt in succ.get(node, ()):
+                if nxt not in paths:
+                    paths[nxt] = paths[node] + [nxt]
+                    queue.append(nxt)
+    return None
 
 
 def literal_text(value) -> str:

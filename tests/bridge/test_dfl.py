@@ -8,7 +8,7 @@ import pytest
 from pantarhei.bridge.theories.dfl import parse_dfl, write_dfl
 from pantarhei.bridge.reasoning.logic import Semantics, conclusions
 from pantarhei.bridge.theories.loading import load
-from pantarhei.bridge.theories.model import read_native
+from pantarhei.bridge.theories.model import Rule, read_native
 from pantarhei.bridge.errors import UserError
 from pantarhei.theory import TheoryFileError
 
@@ -28,7 +28,8 @@ r3 > r1
 
 def test_dfl_kinds_facts_and_superiority() -> None:
     t = parse_dfl(TWEETY)
-    assert t.facts == ["bird(tweety)", "penguin(opus)", "bird(polly)"]
+    assert t.facts == ["bird(tweety)", "penguin(opus)"]
+    assert t.rule("r4") == Rule("r4", "defeasible", "bird(polly)")     # a defeasible fact
     kinds = {r.id: r.kind for r in t.rules}
     assert kinds["d1"] == "defeater" and kinds["r2_opus"] == "strict"
     assert ("r3_opus", "r1_opus") in t.sup
