@@ -8,7 +8,7 @@ import pytest
 from pantarhei.bridge.exploration.session import install
 from pantarhei.bridge.engines.swipl import text
 from pantarhei.bridge.reasoning.scenes import violations
-from pantarhei.oracle.generative import plan
+from pantarhei.oracle.generative import distribution
 from pantarhei.theory.lexicon import load_vocabulary
 
 V = load_vocabulary()
@@ -66,7 +66,7 @@ def test_modify_keeps_only_valid_new_antecedents_moving_along_the_direction(eng)
             seen += 1
             assert list(p1) == sorted(p1)
             assert not violations(list(p1)), p1
-            plan(p1)                                  # the generative models can sample it
+            distribution(p1)                          # the generative models can sample it
             assert sorted(p1) not in [sorted(e) for e in exclude]
             assert x in top
             component = g[NAMES.index(x)]
