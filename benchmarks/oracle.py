@@ -8,6 +8,10 @@
 2. Parallelism: the same pours on 1 and on 2 worker processes (target >=
    1.8x), simulations per minute, the peak memory of a worker, and the
    share of wall time spent stepping the physics.
+3. The baseline math: the same pours on one worker started with the
+   baseline math (the default: the same scores on every x86-64 machine)
+   and on one using this CPU's own routines, taking turns; the median
+   simulations per minute of each and their ratio.
 
 `python -m benchmarks oracle` (or `python -m benchmarks.oracle [--quick]`).
 """
@@ -143,9 +147,44 @@ def parallel(P: np.ndarray) -> None:
           f"{(walls[1] - inside) / walls[1]:.0%} outside the simulation (processes, pipes)")
 
 
+#: Rounds of the baseline-math comparison (each: every pour once each way).
+ROUNDS = 3
+
+
+def baseline_math(P: np.ndarray, rounds: int = ROUNDS) -> None:
+    from pantarhei.oracle.physics import PouringOracle
+    from pantarhei.oracle.simulator import Simulator
+    from pantarhei.oracle.executors import LocalExecutor
+
+    print(f"baseline math: {len(P)} pours on 1 worker, {rounds} rounds taking turns "
+          f"(load average {os.getloadavg()[0]:.1f} before)")
+    rates: dict[str, list[float]] = {"baseline": [], "native": []}
+    same = True
+    sims = {m: Simulator(PouringOracle(math=m), LocalExecutor(1), store=None) for m in rates}
+    try:
+        for s in sims.values():
+            s.simulate(P[:1])                       # start the worker
+        for _ in range(rounds):
+            results = {}
+            for m, s in sims.items():
+                t = time.perf_counter()
+                results[m] = s.simulate(P)
+                rates[m].append(len(P) / (time.perf_counter() - t) * 60)
+            same &= bool(np.array_equal(results["baseline"], results["native"]))
+    finally:
+        for s in sims.values():
+            s.close()
+    b, n = statistics.median(rates["baseline"]), statistics.median(rates["native"])
+    print(f"  {'math':<10} {'simulations per minute (median)':>32}")
+    print(f"  {'baseline':<10} {b:32.1f}")
+    print(f"  {'native':<10} {n:32.1f}")
+    print(f"  baseline / native: {b / n:.2f} (scores {'identical' if same else 'differ'} on this CPU)")
+
+
 def main(quick: bool = False) -> None:
     fidelity(parameterizations(2 if quick else PER_ANTECEDENT))
     parallel(_more(quick))
+    baseline_math(_more(True)[:6])
 
 
 def _more(quick: bool) -> np.ndarray:
@@ -159,4 +198,10 @@ def _more(quick: bool) -> np.ndarray:
 if __name__ == "__main__":
     ap = argparse.ArgumentParser(prog="python -m benchmarks.oracle", description=__doc__)
     ap.add_argument("--quick", action="store_true", help="fewer pours (a smoke run)")
-    main(ap.parse_args().quick)
+    ap.add_argument("--math-only", action="store_true",
+                    help="only the baseline-math comparison")
+    args = ap.parse_args()
+    if args.math_only:
+        baseline_math(_more(True)[:6])
+    else:
+        main(args.quick)

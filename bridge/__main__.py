@@ -1,5 +1,3 @@
-import sys
+from pantarhei.bridge.cli import entry
 
-from pantarhei.bridge.cli import main
-
-sys.exit(main())
+entry()

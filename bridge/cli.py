@@ -51,5 +51,15 @@ def main(argv: Sequence[str] | None = None) -> int:
     return code
 
 
-if __name__ == "__main__":
+def entry() -> None:
+    """The `pantarhei` command: this process is started again with the
+    baseline math (oracle/baseline.py) unless it was, so that learning, like
+    simulating, computes the same numbers on every x86-64 machine."""
+    from pantarhei.oracle import baseline
+
+    baseline.restart_with(baseline.ENVIRONMENT)
     sys.exit(main())
+
+
+if __name__ == "__main__":
+    entry()

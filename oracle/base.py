@@ -3,7 +3,8 @@ to the 9 expectation scores.
 
 An oracle is named in ORACLES and built by `make_oracle(name)`. It must be
 picklable (it runs in worker processes) and deterministic: the same
-parameterization gives the same scores in every run and every worker.
+parameterization gives the same scores in every run and every worker, on
+every machine, when computed in a process started with its `environment()`.
 """
 from __future__ import annotations
 
@@ -39,6 +40,12 @@ class Oracle(ABC):
     def settings(self) -> dict[str, Any]:
         """Everything besides the parameterization that the scores depend on
         (JSON-serialisable): part of the key of stored results."""
+        return {}
+
+    def environment(self) -> dict[str, str]:
+        """Environment variables a process must be started with to compute
+        these scores (see `baseline`); executors start their workers with
+        them. An oracle with any includes them in `settings()`."""
         return {}
 
     @abstractmethod

@@ -1,7 +1,8 @@
 """Executors: where simulations run.
 
 * `InlineExecutor`: in this process, one after the other (no protection
-  against crashes or hangs; for debugging and rendering).
+  against crashes or hangs; for debugging and rendering), if it was started
+  with the oracle's environment; otherwise in one worker process that is.
 * `LocalExecutor` (the default): worker processes on this machine, one per
   core. A simulation that kills its worker (a segfault, say) or runs past
   the time limit is recorded as failed and retried once in a fresh worker;
@@ -10,7 +11,9 @@
   with the same failure handling.
 
 Workers only simulate: they get (index, parameterization) and send back
-the outcome; storing results is the caller's business (`on_result`).
+the outcome; storing results is the caller's business (`on_result`). Every
+worker is started with the oracle's `environment()` (the baseline math of
+`baseline`), and checks that it was before it simulates.
 """
 from __future__ import annotations
 
@@ -25,10 +28,12 @@ from abc import ABC, abstractmethod
 from collections import deque
 from dataclasses import dataclass
 from multiprocessing.connection import Connection, wait
+from types import MappingProxyType
 from typing import Any, Callable, Optional, Sequence
 
 import numpy as np
 
+from pantarhei.oracle import baseline
 from pantarhei.oracle.base import Oracle
 
 #: Attempts per simulation: the first and one retry.
@@ -81,11 +86,21 @@ def _died(code: Optional[int]) -> str:
 
 
 class InlineExecutor(Executor):
-    """In this process, one at a time; an exception is retried once."""
+    """In this process, one at a time; an exception is retried once. A
+    process not started with the oracle's environment would compute other
+    numbers: then the simulations run in one worker process that is."""
     name = "inline"
+
+    def __init__(self) -> None:
+        self._worker: Optional[LocalExecutor] = None
 
     def run(self, oracle: Oracle, tasks: Sequence[tuple[int, np.ndarray]], on_result: OnResult,
             timeout: Optional[float]) -> None:
+        if not baseline.started_with(oracle.environment()):
+            if self._worker is None:
+                self._worker = LocalExecutor(1)
+            self._worker.run(oracle, tasks, on_result, timeout)
+            return
         for i, p in tasks:
             err = None
             for attempt in range(1, ATTEMPTS + 1):
@@ -99,6 +114,11 @@ class InlineExecutor(Executor):
                 break
             else:
                 on_result(Done(i, None, None, err, ATTEMPTS, 0.0))
+
+    def close(self) -> None:
+        if self._worker is not None:
+            self._worker.close()
+            self._worker = None
 
 
 # ----------------------------------------------------------------------------
@@ -124,6 +144,7 @@ def worker_main(conn: Connection) -> None:
     os.dup2(devnull, 1)     # the physics engine's chatter must not reach the terminal
     _exit_with_parent()
     oracle: Oracle = pickle.loads(conn.recv_bytes())
+    missing = baseline.unmet(oracle.environment())
     while True:
         try:
             msg = conn.recv()
@@ -134,6 +155,8 @@ def worker_main(conn: Connection) -> None:
         i, p = msg
         t0 = time.perf_counter()
         try:
+            if missing:
+                baseline.require(oracle.environment())
             out = oracle.score(p)
             conn.send((i, out.scores, out.record, None, time.perf_counter() - t0))
         except Exception as e:
@@ -145,13 +168,13 @@ class _Worker:
     so that nothing of the main process is inherited or re-imported; it
     talks over a pair of pipes."""
 
-    def __init__(self, oracle_bytes: bytes):
+    def __init__(self, oracle_bytes: bytes, env: dict[str, str]):
         down_r, down_w = os.pipe()
         up_r, up_w = os.pipe()
         self.process = subprocess.Popen(
             [sys.executable, "-m", "pantarhei.oracle.worker", str(down_r), str(up_w)],
             pass_fds=(down_r, up_w), stdin=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-            start_new_session=True)
+            start_new_session=True, env=baseline.child_environment(env))
         os.close(down_r)
         os.close(up_w)
         self.send = Connection(down_w, readable=False)
@@ -197,6 +220,7 @@ class LocalExecutor(Executor):
         self._workers = max(1, workers or os.cpu_count() or 1)
         self._pool: list[_Worker] = []
         self._oracle_bytes: Optional[bytes] = None
+        self._env: dict[str, str] = {}
 
     @property
     def workers(self) -> int:
@@ -207,8 +231,9 @@ class LocalExecutor(Executor):
         if b != self._oracle_bytes:
             self.close()
             self._oracle_bytes = b
+            self._env = oracle.environment()
         while len(self._pool) < min(self._workers, n):
-            self._pool.append(_Worker(b))
+            self._pool.append(_Worker(b, self._env))
 
     def run(self, oracle: Oracle, tasks: Sequence[tuple[int, np.ndarray]], on_result: OnResult,
             timeout: Optional[float]) -> None:
@@ -273,7 +298,7 @@ class LocalExecutor(Executor):
     def _replace(self, k: int, w: _Worker, oracle: Oracle) -> None:
         """Kill worker k and start an idle one in its place."""
         w.kill()
-        self._pool[k] = _Worker(self._oracle_bytes or pickle.dumps(oracle))
+        self._pool[k] = _Worker(self._oracle_bytes or pickle.dumps(oracle), self._env)
 
     def close(self) -> None:
         for w in self._pool:
@@ -285,6 +310,7 @@ class LocalExecutor(Executor):
 # Ray
 
 def _ray_score(oracle: Oracle, p: np.ndarray) -> tuple[np.ndarray, dict[str, Any], float]:
+    baseline.require(oracle.environment())
     devnull = os.open(os.devnull, os.O_WRONLY)
     saved = os.dup(1)
     os.dup2(devnull, 1)
@@ -298,14 +324,49 @@ def _ray_score(oracle: Oracle, p: np.ndarray) -> tuple[np.ndarray, dict[str, Any
         os.close(devnull)
 
 
+#: Keeps a local Ray on loopback. Ray reads it when it is imported: it then
+#: takes 127.0.0.1 as the node's address (ray.init turns a loopback
+#: `_node_ip_address` into the machine's own), and its servers, the raylet's,
+#: the workers' and the runtime-environment agent's listen there only.
+LOCAL_RAY_ENV = MappingProxyType({"RAY_ENABLE_WINDOWS_OR_OSX_CLUSTER": "0"})
+
+
+def _import_ray_for_local() -> Any:
+    """Ray, imported so that a local instance stays on loopback (RuntimeError
+    if it was imported before without it)."""
+    if "ray" not in sys.modules:
+        saved = {k: os.environ.get(k) for k in LOCAL_RAY_ENV}
+        os.environ.update(LOCAL_RAY_ENV)
+        try:
+            import ray
+            import ray._private.ray_constants  # noqa: F401  (reads the setting)
+        finally:
+            for k, v in saved.items():
+                if v is None:
+                    os.environ.pop(k, None)
+                else:
+                    os.environ[k] = v
+    import ray
+    from ray._private import ray_constants
+
+    if ray_constants.ENABLE_RAY_CLUSTER:
+        raise RuntimeError("a local Ray would listen beyond loopback: ray was imported before "
+                           f"without {', '.join(f'{k}={v}' for k, v in LOCAL_RAY_ENV.items())}")
+    return ray
+
+
 class RayExecutor(Executor):
     """Tasks on a Ray cluster at `address`, or on a local Ray started here
-    with `workers` CPUs (all of them if None)."""
+    with `workers` CPUs (all of them if None), listening on loopback only.
+    Each task runs in a Ray worker started with the oracle's environment
+    (a runtime environment's variables)."""
     name = "ray"
 
     def __init__(self, address: Optional[str] = None, workers: Optional[int] = None):
-        import ray
-
+        if address:
+            import ray
+        else:
+            ray = _import_ray_for_local()
         self._ray = ray
         self._started = False
         if not ray.is_initialized():
@@ -328,6 +389,8 @@ class RayExecutor(Executor):
         if not tasks:
             return
         ref_oracle = ray.put(oracle)
+        env = oracle.environment()
+        remote = self._remote.options(runtime_env={"env_vars": env}) if env else self._remote
         queue: deque[tuple[int, np.ndarray, int]] = deque((i, p, 1) for i, p in tasks)
         flying: dict[Any, tuple[int, np.ndarray, int, float]] = {}
         left = len(tasks)
@@ -345,7 +408,7 @@ class RayExecutor(Executor):
             while left:
                 while queue and len(flying) < self._slots:
                     i, p, attempt = queue.popleft()
-                    flying[self._remote.remote(ref_oracle, p)] = (i, p, attempt, time.perf_counter())
+                    flying[remote.remote(ref_oracle, p)] = (i, p, attempt, time.perf_counter())
                 wait_for = None
                 if timeout is not None:
                     now = time.perf_counter()

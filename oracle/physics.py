@@ -20,7 +20,7 @@ from typing import Any, Callable, Iterator, Optional
 
 import numpy as np
 
-from . import scoring
+from pantarhei.oracle import baseline, scoring
 from pantarhei.oracle.base import Oracle, Outcome
 from pantarhei.oracle.scene import MM, Geometry, bowl_shape, geometry, packing
 from pantarhei.theory.lexicon import load_vocabulary
@@ -369,20 +369,33 @@ def _simulate(w: World, on_frame: Optional[Frame], frame_hz: float,
 TIMING_FIELDS = ("step_seconds", "seconds")
 
 
+#: How the floating-point math of a pour is computed: "baseline", the same
+#: routines on every x86-64 machine (see `baseline`), or "native", the ones
+#: the libraries pick for this CPU (faster, not reproducible elsewhere).
+MATHS = ("baseline", "native")
+
+
 class PouringOracle(Oracle):
     """Scores a parameterization by simulating the pour in PyBullet."""
     name = "pybullet"
-    version = "2"
+    version = "3"
 
-    def __init__(self, fidelity: str | Fidelity = "chosen", **overrides: Any):
+    def __init__(self, fidelity: str | Fidelity = "chosen", math: str = "baseline",
+                 **overrides: Any):
         if isinstance(fidelity, str):
             if fidelity not in FIDELITIES:
                 raise ValueError(f"unknown fidelity '{fidelity}' (choose {', '.join(FIDELITIES)})")
             fidelity = FIDELITIES[fidelity]
+        if math not in MATHS:
+            raise ValueError(f"unknown math '{math}' (choose {', '.join(MATHS)})")
         self.fidelity = replace(fidelity, **overrides)
+        self.math = math
 
     def settings(self) -> dict[str, Any]:
-        return asdict(self.fidelity)
+        return {**asdict(self.fidelity), "environment": self.environment()}
+
+    def environment(self) -> dict[str, str]:
+        return dict(baseline.ENVIRONMENT) if self.math == "baseline" else {}
 
     def cost(self, p: np.ndarray) -> float:
         """A rough relative cost of simulating p (for scheduling): particles

@@ -203,6 +203,7 @@ def simulate(args: argparse.Namespace) -> int:
 
 
 def render(args: argparse.Namespace) -> int:
+    from pantarhei.oracle import baseline
     from pantarhei.oracle.physics import FIDELITIES
     from pantarhei.oracle.render import render as draw
 
@@ -217,6 +218,8 @@ def render(args: argparse.Namespace) -> int:
     P, props = _parameterizations(args, 1)
     if not str(args.out).lower().endswith(".gif"):
         raise UserError(f"--out must name a .gif file, not '{args.out}'")
+    # the pour is simulated here: in a process started with the baseline math
+    baseline.restart_with(baseline.ENVIRONMENT)
     frames, outcome = draw(P[0], args.out, args.frames, fps=args.fps, width=width, height=height,
                            fidelity=FIDELITIES[args.fidelity])
     names = load_vocabulary().expectation_names

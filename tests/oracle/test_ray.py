@@ -1,6 +1,11 @@
 """The Ray executor on a local Ray (2 CPUs, loopback): the same results as
-the local workers, and the same handling of crashes and hangs."""
+the local workers, the same handling of crashes and hangs, and no port open
+beyond loopback."""
 from __future__ import annotations
+
+import ipaddress
+import json
+import os
 
 import numpy as np
 import pytest
@@ -12,7 +17,7 @@ from pantarhei.theory.lexicon import load_vocabulary
 COUNT = load_vocabulary().parameter("particle_count").index
 from pantarhei.oracle.generative import sample
 from pantarhei.oracle.physics import PouringOracle
-from pantarhei.oracle.simulator import Simulator
+from pantarhei.oracle.simulator import Simulator, make_simulator
 
 from .pours import CENTRED_LOW_TIPPED, HEAVY_DROP, pour
 
@@ -29,7 +34,8 @@ def ray_executor():
 
 def test_ray_gives_the_same_scores_as_this_machine(ray_executor, tmp_path):
     P = np.array([pour(**CENTRED_LOW_TIPPED), pour(**HEAVY_DROP)])
-    here = np.array([PouringOracle().score(p).scores for p in P])
+    with make_simulator("pybullet", executor="local", workers=2, store=None) as local:
+        here = local.simulate(P)
     sim = Simulator(PouringOracle(), ray_executor, store=None, timeout=120)
     assert np.array_equal(sim.simulate(P), here)
     assert all(r is not None and "fractions" in r for r in sim.last_records)
@@ -44,3 +50,82 @@ def test_ray_records_a_crash_and_a_hang_as_failed(ray_executor):
     assert "timed out" in sim.last_errors[2]
     good = FaultyOracle()
     assert np.array_equal(S[[0, 3]], np.array([good.score(P[i]).scores for i in (0, 3)]))
+
+
+def _listening() -> dict[int, str]:
+    """Socket inode -> address of every TCP socket listening on this machine."""
+    found = {}
+    for name, v6 in (("tcp", False), ("tcp6", True)):
+        try:
+            with open(f"/proc/net/{name}") as f:
+                lines = f.read().splitlines()[1:]
+        except OSError:
+            continue
+        for line in lines:
+            fields = line.split()
+            if fields[3] != "0A":       # LISTEN
+                continue
+            raw = bytes.fromhex(fields[1].split(":")[0])
+            if v6:      # four little-endian words
+                raw = b"".join(raw[i:i + 4][::-1] for i in range(0, 16, 4))
+            else:
+                raw = raw[::-1]
+            found[int(fields[9])] = str(ipaddress.ip_address(raw))
+    return found
+
+
+def _this_process_and_descendants() -> list[int]:
+    children: dict[int, list[int]] = {}
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            try:
+                with open(f"/proc/{entry}/stat") as f:
+                    ppid = int(f.read().rsplit(")", 1)[1].split()[1])
+            except OSError:
+                continue
+            children.setdefault(ppid, []).append(int(entry))
+    todo, pids = [os.getpid()], []
+    while todo:
+        pid = todo.pop()
+        pids.append(pid)
+        todo += children.get(pid, [])
+    return pids
+
+
+def _loopback(address: str) -> bool:
+    ip = ipaddress.ip_address(address)
+    return ip.is_loopback or bool(getattr(ip, "ipv4_mapped", None) and ip.ipv4_mapped.is_loopback)
+
+
+def test_a_local_ray_listens_on_loopback_only(ray_executor):
+    """Every port opened by the local Ray (the GCS, the raylet, the workers,
+    the runtime-environment agent, this driver) is on loopback."""
+    Simulator(PouringOracle(), ray_executor, store=None, timeout=120).simulate(
+        np.array([pour(**CENTRED_LOW_TIPPED), pour(**HEAVY_DROP)]))
+    sockets = _listening()
+    ports = []
+    for pid in _this_process_and_descendants():
+        try:
+            fds = os.listdir(f"/proc/{pid}/fd")
+        except OSError:
+            continue
+        for fd in fds:
+            try:
+                target = os.readlink(f"/proc/{pid}/fd/{fd}")
+            except OSError:
+                continue
+            if target.startswith("socket:[") and int(target[8:-1]) in sockets:
+                ports.append((pid, sockets[int(target[8:-1])]))
+    assert len({pid for pid, _ in ports}) >= 4      # driver, GCS, raylet, workers: they listen
+    assert [p for p in ports if not _loopback(p[1])] == []
+
+
+def test_the_ray_executor_from_the_command_line(cli):
+    args = ("simulate", "--antecedent", "pour_mid_height,pour_near_rim,pour_steeply_tilted",
+            "-n", "3", "--seed", "1", "--json", "--no-store", "--no-progress", "--workers", "2")
+    ray = cli(*args, "--executor", "ray")
+    assert ray.code == 0, ray.err
+    local = cli(*args, "--executor", "local")
+    assert local.code == 0, local.err
+    assert [r["scores"] for r in json.loads(ray.out)] == [r["scores"] for r in json.loads(local.out)]
+    assert all(r["scores"] is not None for r in json.loads(ray.out))
