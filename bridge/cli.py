@@ -33,7 +33,11 @@ def parser() -> argparse.ArgumentParser:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    args = parser().parse_args(argv)
+    try:        # the help texts read the theory's defaults: that needs clingo's parser
+        args = parser().parse_args(argv)
+    except (MissingEngine, TheoryFileError) as e:
+        print(f"pantarhei: {e}", file=sys.stderr)
+        return 2
     try:
         code = args.run(args)
     except UserError as e:

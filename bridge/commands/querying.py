@@ -118,7 +118,10 @@ def ask(args: argparse.Namespace) -> int:
         mark = {"holds": "yes", "fails": "no ", "unknown": " ? "}[o.value]
         print(f"  [{mark}] {o.expectation:30} {glosses[o.expectation]}")
         if o.value != "unknown":
-            print(f"        because {o.reason}")
+            if o.rule in ("fact", "none"):
+                print(f"        because {o.reason}")
+            else:
+                print(f"        because: {answers.rule_words(theory, o.rule)}")
         elif "no rule concludes" not in o.reason:
             general = re.sub(rf"(?<![a-z]){re.escape(o.expectation)}(?![a-z_])", "E", o.reason)
             if general in said:   # the same reasons as for an expectation above
@@ -130,8 +133,8 @@ def ask(args: argparse.Namespace) -> int:
             for line in more:
                 print(f"          {line}")
             why_not = True
-    if why_not:
-        print("(ask again with --why E to see every rule for the expectation E)")
+    print("(ask again with --why E for the whole argument about the expectation E)"
+          if not why_not else "(ask again with --why E to see every rule for the expectation E)")
     return 0
 
 

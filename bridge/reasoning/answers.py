@@ -81,3 +81,33 @@ def explain(theory: Theory, props: list[str], literal: str,
     r = e.once(f"term_to_atom(L, LText), queries:{pred}(Scene, L, {semantics.options()}, T)",
                Scene=list(props), LText=literal)
     return prolog_text(r["T"])
+
+
+def rule_words(theory: Theory, rule_id: str) -> str:
+    """Why a rule decides, in words: its body's glosses (or "in general"
+    for the empty body), then its evidence and its id, e.g. "pour from the
+    side (41 of 52 such pours; rule g3_no_spill)"."""
+    from pantarhei.theory.lexicon import load_vocabulary
+
+    vocab = load_vocabulary()
+    try:
+        rule = theory.rule(rule_id)
+    except KeyError:
+        return rule_id
+    props = [vocab.propositions[b].gloss if b in vocab.propositions else b for b in rule.body]
+    where = ", ".join(props) if props else "in general"
+    ev = evidence(theory, rule_id)
+    return f"{where} ({ev + '; ' if ev else ''}rule {rule_id})"
+
+
+def evidence(theory: Theory, rule_id: str) -> str:
+    """The pours behind a learned rule, from its provenance facts: "41 of
+    52 such pours" for a general rule, "93% of the weighted pours of a4"
+    for a rule of Algorithm 1; "" when the theory records none."""
+    facts = {k: v for rid, k, v in theory.provenance if rid == rule_id}
+    if "support" in facts and "kept" in facts:
+        return f"{facts['kept']} of {facts['support']} such pours"
+    if "confidence_permille" in facts and "antecedent" in facts:
+        return (f"{int(facts['confidence_permille']) / 10:.0f}% of the weighted pours of "
+                f"{facts['antecedent']}")
+    return ""
