@@ -11,7 +11,7 @@ from pantarhei.bridge.engines.asp import solve
 from pantarhei.bridge.engines.swipl import engine
 from pantarhei.theory.lexicon import load_vocabulary
 
-from ..conftest import assert_one_line_error
+from tests.conftest import assert_one_line_error
 
 VOCAB = load_vocabulary()
 NAMES = sorted(VOCAB.propositions)

@@ -12,7 +12,7 @@ from pantarhei.bridge.theories.model import Rule, read_native
 from pantarhei.bridge.errors import UserError
 from pantarhei.theory import TheoryFileError
 
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "extend_by_hand"
+EXAMPLES = Path(__file__).resolve().parents[3] / "examples" / "extend_by_hand"
 
 TWEETY = """# comment
 >> bird(tweety)

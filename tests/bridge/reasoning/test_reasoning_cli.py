@@ -9,7 +9,7 @@ import pytest
 
 from tests.conftest import assert_one_line_error
 
-EX = Path(__file__).resolve().parents[2] / "examples" / "extend_by_hand"
+EX = Path(__file__).resolve().parents[3] / "examples" / "extend_by_hand"
 LEARNED = str(EX / "learned.pl")
 HAND = str(EX / "hand.dfl")
 SCENE = "light_liquid,pour_steeply_tilted,slow_retreat,pour_centred"
