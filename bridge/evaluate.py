@@ -145,6 +145,30 @@ def random_antecedents(seed: int, n: int) -> list[tuple[str, ...]]:
     return [tuple(str(p) for p in a) for a in r["As"]]
 
 
+def random_exploration(seed: int, count: int, samples: int) -> tuple[list[tuple[str, ...]], np.ndarray]:
+    """The random baseline's exploration at a budget: `count` uniformly random
+    valid antecedents, `samples` pours of each (seeded as exploration seeds its
+    iterations, so the same store serves every reader)."""
+    ants = random_antecedents(seed + 7919, count)
+    P = np.vstack([sample(list(a), samples, iteration_seed(seed + 7919, i))
+                   for i, a in enumerate(ants, start=1)])
+    return ants, P
+
+
+def uniform_scenes(seed: int, n: int, exclude: set[tuple[str, ...]]) -> list[tuple[str, ...]]:
+    """n distinct uniformly random valid antecedents, none in `exclude`."""
+    out = [a for a in random_antecedents(seed, 2 * n) if a not in exclude]
+    return list(dict.fromkeys(out))[:n]
+
+
+def scene_pours(scenes: Sequence[Sequence[str]], seed: int) -> np.ndarray:
+    """One pour of each held-out scene, shape (len(scenes), 30)."""
+    if not scenes:
+        return np.empty((0, len(load_vocabulary().parameters)))
+    return np.vstack([sample(list(a), 1, iteration_seed(seed, 100_000 + j))
+                      for j, a in enumerate(scenes)])
+
+
 def near_antecedents(explored: Sequence[Sequence[str]], n: int, seed: int,
                      exclude: set[tuple[str, ...]]) -> list[tuple[str, ...]]:
     """n valid antecedents, each an explored antecedent with one or two
@@ -289,22 +313,17 @@ def evaluate(opts: Options) -> Evaluation:
                  f"(first: {differ[0]}): another oracle build, or a theory edited by hand")
 
         # 2. random exploration with the same budget
-        random_ants = random_antecedents(opts.seed + 7919, R)
-        P_rnd = np.vstack([sample(list(a), samples, iteration_seed(opts.seed + 7919, i))
-                           for i, a in enumerate(random_ants, start=1)])
+        random_ants, P_rnd = random_exploration(opts.seed, R, samples)
         S_rnd = run("random exploration", P_rnd)
 
         # 3. held-out scenes, one pour each, never explored by either
         known = set(explored) | set(random_ants)
-        uniform = [a for a in random_antecedents(opts.seed, 2 * opts.scenes) if a not in known]
-        uniform = list(dict.fromkeys(uniform))[:opts.scenes]
+        uniform = uniform_scenes(opts.seed, opts.scenes, known)
         near = near_antecedents(explored, opts.scenes, opts.seed, known | set(uniform))
         near_random = near_antecedents(random_ants, opts.scenes, opts.seed + 1,
                                        known | set(uniform) | set(near))
         sets = {"uniform": uniform, "near": near, "near_random": near_random}
-        P_held = {k: np.vstack([sample(list(a), 1, iteration_seed(opts.seed, 100_000 + j))
-                                for j, a in enumerate(v)]) if v else np.empty((0, len(P_cur[0])))
-                  for k, v in sets.items()}
+        P_held = {k: scene_pours(v, opts.seed) for k, v in sets.items()}
         S_held = {k: run(f"held-out ({k})", P_held[k]) for k in sets}
 
         t = time.monotonic()
