@@ -22,15 +22,18 @@ verdict from the 30 parameters, trained on every pour, averaged over
 How rules are found (per expectation, greedy, as a decision list):
 
 1. the default: the empty body, concluding the verdict most pours sampled
-   from the priors would give;
+   from the priors would give (where that is within `margin` of one half,
+   the verdict of most explored pours);
 2. candidates: bodies of one or two propositions (and three, extending a
    chosen body of two) that at least `min_support` pours satisfy, whose
    confidence is at least `margin` from one half; the head is the side the
    confidence is on;
 3. repeatedly, the candidate that sets right the most pours (each pour as the
-   scene of its own description, decided by the rules so far) joins, while
-   it sets right at least `min_gain` more pours than it sets wrong and the
-   expectation has fewer than `max_rules` rules.
+   scene of its own description, decided by the rules so far; among equals
+   the one describing the fewest pours) joins, while it sets right at least
+   `min_gain` more pours than it sets wrong and the expectation has fewer
+   than `max_rules` rules. A candidate joins only if the pours it describes
+   and its confidence (the pours sampled for it) are on the same side.
 
 How a question is decided. A scene (a set of propositions) is decided, for
 each expectation, by the highest ranked rule whose body it holds. Rules rank
@@ -307,6 +310,7 @@ class _Pool:
         self.A = sparse.csc_matrix(A[:, keep].astype(np.float32))
         self.holds = rate[keep] >= 0.5
         self.size = np.array([len(b) for b in self.bodies], dtype=float)
+        self.support = n_b[keep]
         self.alive = np.ones(len(self.bodies), dtype=bool)
 
     def add(self, names, D, y, bodies, s: Settings) -> None:
@@ -317,6 +321,7 @@ class _Pool:
         self.A = sparse.hstack([self.A, more.A]).tocsc()
         self.holds = np.concatenate([self.holds, more.holds])
         self.size = np.concatenate([self.size, more.size])
+        self.support = np.concatenate([self.support, more.support])
         self.alive = np.concatenate([self.alive, more.alive])
 
     def gains(self, y, pred, decider, levels) -> np.ndarray:
@@ -339,9 +344,11 @@ class _Pool:
 
 def _learn(e: str, k: int, names, D, y, bodies, meaning: _Cache, s: Settings) -> list[GeneralRule]:
     n = len(y)
-    c0 = meaning([()])[0, k]
-    default_holds = bool(c0 >= 0.5) if np.isfinite(c0) else bool(y.mean() >= 0.5)
-    c0 = c0 if np.isfinite(c0) else float(y.mean())
+    c0 = float(meaning([()])[0, k])
+    if not np.isfinite(c0) or abs(c0 - 0.5) < s.margin:
+        # the priors leave it open: the default follows the pours
+        c0 = float(y.mean())
+    default_holds = bool(c0 >= 0.5)
     chosen: list[GeneralRule] = [GeneralRule(
         f"g0_{e}", (), e, default_holds, n, int((y == default_holds).sum()),
         float(c0 if default_holds else 1 - c0), 0)]
@@ -350,7 +357,9 @@ def _learn(e: str, k: int, names, D, y, bodies, meaning: _Cache, s: Settings) ->
     pool = _Pool(names, D, y, bodies, s)
     while len(chosen) < s.max_rules and pool.alive.any():
         g = pool.gains(y, pred, decider, [len(r.body) + abs(r.confidence - 0.5) for r in chosen])
-        order = [i for i in np.argsort(-g, kind="stable")[:16] if g[i] >= s.min_gain]
+        # the most pours set right; among equals the narrowest body, which
+        # aims at the errors rather than at pours already right
+        order = [i for i in np.lexsort((pool.support, -g))[:16] if g[i] >= s.min_gain]
         if not order:
             break
         conf = meaning([pool.bodies[i] for i in order])[:, k]
