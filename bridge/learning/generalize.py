@@ -73,12 +73,18 @@ class Settings:
     min_gain: int = 3          # pours a new rule must set right, net
     samples: int = 64          # drawn per body to estimate its confidence
     seed: int = 1
+    #: "prior": a body's confidence is P(e | B) for the pours sampled for B
+    #: (the model of the pours over P(.|B)); "pours": the share of the
+    #: explored pours B describes (what those pours saw, unweighted).
+    meaning: str = "prior"
 
     def __post_init__(self) -> None:
         if self.max_rules < 1 or not 0 <= self.max_body <= 3:
             raise ValueError("max_rules must be at least 1 and max_body 0 to 3")
         if not 0 <= self.margin < 0.5 or self.min_support < 1 or self.samples < 1:
             raise ValueError("margin in [0, 1/2), min_support and samples at least 1")
+        if self.meaning not in ("prior", "pours"):
+            raise ValueError(f"meaning is prior or pours, not {self.meaning!r}")
 
 
 @dataclass(frozen=True)
@@ -245,7 +251,8 @@ def _generalize(P: np.ndarray, S: np.ndarray, settings: Settings) -> General:
         raise ValueError("no pours to generalize from")
     Y = verdicts(S)
     names, D = holds(P)
-    meaning = _Cache(Meaning(P, Y, settings))
+    meaning = _Cache(Meaning(P, Y, settings) if settings.meaning == "prior"
+                     else _Described(names, D, Y))
     bodies = _candidates(names, D, settings)
     out = General()
     for k, e in enumerate(vocab.expectation_names):
@@ -253,6 +260,21 @@ def _generalize(P: np.ndarray, S: np.ndarray, settings: Settings) -> General:
         out.rules.extend(rules)
         out.sup.extend(_superiority(rules))
     return out
+
+
+class _Described:
+    """P(e | B) as the share of the explored pours B describes."""
+
+    def __init__(self, names, D, Y):
+        self.names, self.D, self.Y = names, D, Y
+
+    def __call__(self, bodies: Sequence[tuple[str, ...]]) -> np.ndarray:
+        out = np.full((len(bodies), self.Y.shape[1]), np.nan)
+        for i, b in enumerate(bodies):
+            m = _described(self.names, self.D, b)
+            if m.any():
+                out[i] = self.Y[m].mean(axis=0)
+        return out
 
 
 class _Cache:
