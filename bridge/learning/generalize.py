@@ -254,9 +254,10 @@ def _generalize(P: np.ndarray, S: np.ndarray, settings: Settings) -> General:
     meaning = _Cache(Meaning(P, Y, settings) if settings.meaning == "prior"
                      else _Described(names, D, Y))
     bodies = _candidates(names, D, settings)
+    A = _matrix(names, D, bodies)
     out = General()
     for k, e in enumerate(vocab.expectation_names):
-        rules = _learn(e, k, names, D, Y[:, k], bodies, meaning, settings)
+        rules = _learn(e, k, names, D, Y[:, k], bodies, A, meaning, settings)
         out.rules.extend(rules)
         out.sup.extend(_superiority(rules))
     return out
@@ -315,30 +316,39 @@ def _candidates(names: Sequence[str], D: np.ndarray, s: Settings) -> list[tuple[
     return out
 
 
+def _matrix(names, D, bodies) -> "sparse.csc_matrix":
+    """Which pours (rows) each body (column) describes, as a sparse 0/1 matrix."""
+    from scipy import sparse
+
+    indices = [np.flatnonzero(_described(names, D, b)) for b in bodies]
+    indptr = np.concatenate([[0], np.cumsum([len(i) for i in indices])])
+    data = np.ones(int(indptr[-1]), dtype=np.float32)
+    flat = np.concatenate(indices) if indices else np.empty(0, dtype=int)
+    return sparse.csc_matrix((data, flat, indptr), shape=(len(D), len(bodies)))
+
+
 class _Pool:
     """Candidate bodies with the pours each describes (a sparse matrix) and
     the verdict most of those pours give."""
 
-    def __init__(self, names, D, y, bodies, s: Settings):
-        from scipy import sparse
-
-        cols = [_described(names, D, b) for b in bodies]
-        A = np.column_stack(cols) if cols else np.zeros((len(y), 0), dtype=bool)
-        n_b = A.sum(axis=0)
-        k_b = (A & y[:, None]).sum(axis=0)
+    def __init__(self, bodies, A, y, s: Settings):
+        n_b = np.asarray(A.sum(axis=0)).ravel()
+        k_b = A.T @ y.astype(np.float32)
         rate = np.where(n_b > 0, k_b / np.maximum(n_b, 1), 0.5)
-        keep = (n_b >= s.min_support) & (np.abs(rate - 0.5) >= s.margin)
-        self.bodies = [b for b, k in zip(bodies, keep) if k]
-        self.A = sparse.csc_matrix(A[:, keep].astype(np.float32))
+        keep = np.flatnonzero((n_b >= s.min_support) & (np.abs(rate - 0.5) >= s.margin))
+        self.bodies = [bodies[i] for i in keep]
+        self.A = A[:, keep]
         self.holds = rate[keep] >= 0.5
         self.size = np.array([len(b) for b in self.bodies], dtype=float)
         self.support = n_b[keep]
         self.alive = np.ones(len(self.bodies), dtype=bool)
 
     def add(self, names, D, y, bodies, s: Settings) -> None:
-        more = _Pool(names, D, y, [b for b in bodies if b not in set(self.bodies)], s)
         from scipy import sparse
 
+        have = set(self.bodies)
+        bodies = [b for b in bodies if b not in have]
+        more = _Pool(bodies, _matrix(names, D, bodies), y, s)
         self.bodies += more.bodies
         self.A = sparse.hstack([self.A, more.A]).tocsc()
         self.holds = np.concatenate([self.holds, more.holds])
@@ -351,6 +361,7 @@ class _Pool:
         (ranked by its size: it beats the rules of smaller bodies)."""
         right_now = (pred == y).astype(np.float32)
         g = np.zeros(len(self.bodies))
+        AT = self.A.T.tocsr()
         for j, lv in enumerate(levels):
             on = decider == j
             if not on.any():
@@ -360,11 +371,11 @@ class _Pool:
                 v = np.where(on, (y == h).astype(np.float32) - right_now, 0.0)
                 sel = beats & (self.holds == h)
                 if sel.any():
-                    g[sel] += (self.A.T @ v)[sel]
+                    g[sel] += (AT @ v)[sel]
         return np.where(self.alive, g, -np.inf)
 
 
-def _learn(e: str, k: int, names, D, y, bodies, meaning: _Cache, s: Settings) -> list[GeneralRule]:
+def _learn(e: str, k: int, names, D, y, bodies, A, meaning: _Cache, s: Settings) -> list[GeneralRule]:
     n = len(y)
     c0 = float(meaning([()])[0, k])
     if not np.isfinite(c0) or abs(c0 - 0.5) < s.margin:
@@ -376,7 +387,7 @@ def _learn(e: str, k: int, names, D, y, bodies, meaning: _Cache, s: Settings) ->
         float(c0 if default_holds else 1 - c0), 0)]
     pred = np.full(n, default_holds)
     decider = np.zeros(n, dtype=int)
-    pool = _Pool(names, D, y, bodies, s)
+    pool = _Pool(bodies, A, y, s)
     while len(chosen) < s.max_rules and pool.alive.any():
         g = pool.gains(y, pred, decider, [len(r.body) + abs(r.confidence - 0.5) for r in chosen])
         # the most pours set right; among equals the narrowest body, which
