@@ -192,7 +192,7 @@ def run(oracle: str = "pybullet", store: Path | None = STORE, seed: int = SEED,
             r[f"heldout_{label}"] = {"coverage": a.overall_coverage, "accuracy": a.overall_accuracy}
         r["questions"] = dict(zip(("coverage", "accuracy"),
                                   question_scores(g.predict(qs.antecedents), key, clear)))
-        report[meaning] = r
+        report[f"meaning_{meaning}"] = r
         if meaning == "prior":
             general = g
     for label, scenes in (("antecedent", held_scenes), ("description", describe(ho.P))):

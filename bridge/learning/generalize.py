@@ -33,7 +33,11 @@ How rules are found (per expectation, greedy, as a decision list):
    the one describing the fewest pours) joins, while it sets right at least
    `min_gain` more pours than it sets wrong and the expectation has fewer
    than `max_rules` rules. A candidate joins only if the pours it describes
-   and its confidence (the pours sampled for it) are on the same side.
+   and its confidence (the pours sampled for it) are on the same side;
+4. then each proposition asked alone: where the rules answer otherwise than
+   its confidence, and the pours it describes agree with that confidence,
+   its own rule joins, if it sets no more pours wrong than right (the
+   budget `max_rules` still holds).
 
 How a question is decided. A scene (a set of propositions) is decided, for
 each expectation, by the highest ranked rule whose body it holds. Rules rank
@@ -77,6 +81,10 @@ class Settings:
     #: (the model of the pours over P(.|B)); "pours": the share of the
     #: explored pours B describes (what those pours saw, unweighted).
     meaning: str = "prior"
+    #: each proposition of a body costs this share of the pours in the
+    #: gain: of two bodies setting nearly as many pours right, the shorter
+    #: one, which more questions ask, joins
+    penalty: float = 0.01
 
     def __post_init__(self) -> None:
         if self.max_rules < 1 or not 0 <= self.max_body <= 3:
@@ -390,6 +398,7 @@ def _learn(e: str, k: int, names, D, y, bodies, A, meaning: _Cache, s: Settings)
     pool = _Pool(bodies, A, y, s)
     while len(chosen) < s.max_rules and pool.alive.any():
         g = pool.gains(y, pred, decider, [len(r.body) + abs(r.confidence - 0.5) for r in chosen])
+        g = g - s.penalty * n * pool.size
         # the most pours set right; among equals the narrowest body, which
         # aims at the errors rather than at pours already right
         order = [i for i in np.lexsort((pool.support, -g))[:16] if g[i] >= s.min_gain]
@@ -418,7 +427,42 @@ def _learn(e: str, k: int, names, D, y, bodies, A, meaning: _Cache, s: Settings)
                 decider[p], pred[p] = len(chosen) - 1, r_holds
         if len(body) == 2 and s.max_body >= 3:
             pool.add(names, D, y, _extensions(body, names, D, s), s)
+    _ask_alone(e, k, names, D, y, pool, chosen, pred, decider, meaning, s)
     return chosen
+
+
+def _ask_alone(e, k, names, D, y, pool: _Pool, chosen: list[GeneralRule], pred, decider,
+               meaning: _Cache, s: Settings) -> None:
+    """One proposition asked alone must get the answer of the pours sampled
+    for it: where the rules so far answer otherwise, and the pours it
+    describes agree with its confidence, its own rule joins (if it sets no
+    more pours wrong than right)."""
+    singles = [i for i, b in enumerate(pool.bodies) if len(b) == 1 and pool.alive[i]]
+    if not singles or len(chosen) >= s.max_rules:
+        return
+    conf = meaning([pool.bodies[i] for i in singles])[:, k]
+    order = sorted(range(len(singles)), key=lambda j: (-abs(conf[j] - 0.5), pool.bodies[singles[j]]))
+    for j in order:
+        i, c = singles[j], float(conf[j])
+        if len(chosen) >= s.max_rules:
+            break
+        if not np.isfinite(c) or abs(c - 0.5) < s.margin or (c >= 0.5) != pool.holds[i]:
+            continue
+        body, r_holds = pool.bodies[i], bool(pool.holds[i])
+        said = max((r for r in chosen if set(r.body) <= set(body)), key=lambda r: r.rank)
+        if said.holds == r_holds:
+            continue
+        rule = GeneralRule(f"g{len(chosen)}_{e}", body, e, r_holds, int(pool.support[i]), 0,
+                           c if r_holds else 1 - c, _level(body, r_holds, chosen))
+        m = _described(names, D, body)
+        wins = np.array([rule.rank > chosen[d].rank for d in decider[m]], dtype=bool)
+        idx = np.flatnonzero(m)[wins]
+        if (y[idx] == r_holds).sum() < (y[idx] == pred[idx]).sum():
+            continue
+        rule = GeneralRule(rule.id, body, e, r_holds, rule.support, int((y[m] == r_holds).sum()),
+                           rule.confidence, rule.level)
+        chosen.append(rule)
+        pred[idx], decider[idx] = r_holds, len(chosen) - 1
 
 
 def _extensions(body, names, D, s: Settings) -> list[tuple[str, ...]]:
