@@ -127,3 +127,30 @@ def test_prolog_decides_as_the_learner_claims(which, request):
     assert (ours != -1).all()
     disagree = [(scenes[i], NAMES[j]) for i, j in zip(*np.nonzero(ours != prolog))]
     assert not disagree, disagree[:5]
+
+
+def test_a_proposition_asked_alone_gets_the_answer_of_its_pours():
+    """With no rule gained from the pours, the propositions asked alone still
+    get their own rules where the default would answer them wrongly."""
+    ants = random_antecedents(5, 40) + [("light_liquid",)] * 5
+    P = np.vstack([sample(list(a), 25, 2000 + i) for i, a in enumerate(ants)])
+    g = generalize(P, known_answer(P), Settings(seed=3, min_gain=10**6))
+    rules = {r.body: r for r in g.of(E)}
+    assert rules[()].holds and not rules[("light_liquid",)].holds
+    assert all(len(b) <= 1 for b in rules)
+    assert g.decide(["light_liquid"])[E][0] == 0
+
+
+def test_each_proposition_of_a_body_costs_pours(synthetic):
+    _, P = random_exploration(2, 25, 31)
+    sim = make_simulator("synthetic", executor="inline", store=None)
+    try:
+        S = np.asarray(sim.simulate(P), dtype=float)
+    finally:
+        sim.close()
+    free = generalize(P, S, Settings(seed=2, penalty=0.0))
+
+    def mean_body(g):
+        return np.mean([len(r.body) for r in g.rules if r.body])
+
+    assert mean_body(synthetic) < mean_body(free)
