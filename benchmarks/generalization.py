@@ -195,6 +195,11 @@ def run(oracle: str = "pybullet", store: Path | None = STORE, seed: int = SEED,
         report[f"meaning_{meaning}"] = r
         if meaning == "prior":
             general = g
+            # what the defaults alone would say: how much the exceptions add
+            defaults = type(g)(rules=[x for x in g.rules if not x.body])
+            report["defaults_only"] = {
+                "heldout_antecedent": accuracy(defaults.predict(held_scenes), y_held).overall_accuracy,
+                "questions": question_scores(defaults.predict(qs.antecedents), key, clear)[1]}
     for label, scenes in (("antecedent", held_scenes), ("description", describe(ho.P))):
         for name, pred in baselines(train_desc, Y, scenes, seed).items():
             a = accuracy(pred, y_held)
