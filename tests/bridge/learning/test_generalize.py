@@ -154,3 +154,19 @@ def test_each_proposition_of_a_body_costs_pours(synthetic):
         return np.mean([len(r.body) for r in g.rules if r.body])
 
     assert mean_body(synthetic) < mean_body(free)
+
+
+@pytest.mark.slow
+def test_every_variant_of_the_logic_decides_alike(synthetic):
+    """The rank order leaves nothing to the variant: team defeat or not,
+    ambiguity blocking or propagating, well-founded or not."""
+    from pantarhei.bridge.reasoning import ALL_SEMANTICS, what_happens
+
+    theory = synthetic.theory("synthetic")
+    scenes = [tuple(a[:k]) for k, a in zip([1, 2, 3, 6, 20] * 4, random_antecedents(13, 20))]
+    for scene in scenes:
+        ours = {e: v for e, (v, _) in synthetic.decide(scene).items()}
+        for sem in ALL_SEMANTICS:
+            said = {o.expectation: {"holds": 1, "fails": 0}.get(o.value, -1)
+                    for o in what_happens(theory, list(scene), sem)}
+            assert said == ours, (scene, sem)
