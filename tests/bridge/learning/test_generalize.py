@@ -157,14 +157,27 @@ def test_each_proposition_of_a_body_costs_pours(synthetic):
 
 
 @pytest.mark.slow
-def test_every_variant_of_the_logic_decides_alike(synthetic):
+def test_every_variant_of_the_logic_decides_alike():
     """The rank order leaves nothing to the variant: team defeat or not,
     ambiguity blocking or propagating, well-founded or not."""
     from pantarhei.bridge.reasoning import ALL_SEMANTICS, what_happens
 
+    _, P = random_exploration(2, 25, 31)
+    sim = make_simulator("synthetic", executor="inline", store=None)
+    try:
+        S = np.asarray(sim.simulate(P), dtype=float)
+    finally:
+        sim.close()
+    # free bodies give more rules, and conflicts between incomparable ones
+    synthetic = generalize(P, S, Settings(seed=2, penalty=0.0))
     theory = synthetic.theory("synthetic")
     scenes = [tuple(a[:k]) for k, a in zip([1, 2, 3, 6, 20] * 4, random_antecedents(13, 20))]
-    for scene in scenes:
+    # and where two conflicting rules of incomparable bodies both apply
+    by_id = {r.id: r for r in synthetic.rules}
+    both = [tuple(sorted(set(by_id[s.superior].body) | set(by_id[s.inferior].body)))
+            for s in synthetic.sup if s.reason == "rank"]
+    assert both
+    for scene in scenes + both:
         ours = {e: v for e, (v, _) in synthetic.decide(scene).items()}
         for sem in ALL_SEMANTICS:
             said = {o.expectation: {"holds": 1, "fails": 0}.get(o.value, -1)
