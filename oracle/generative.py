@@ -223,8 +223,10 @@ def judge() -> Judge:
                 base.append(vocab.parameter(m.base).index)
                 low.append(m.low)
                 high.append(m.high)
-    return Judge(tuple(names), tuple(dims), np.array(param), np.array(base),
-                 np.array(low, dtype=float), np.array(high, dtype=float))
+    arrays = [np.array(param), np.array(base), np.array(low, dtype=float), np.array(high, dtype=float)]
+    for a in arrays:
+        a.flags.writeable = False       # cached: shared by every caller
+    return Judge(tuple(names), tuple(dims), *arrays)
 
 
 def holds(P: np.ndarray) -> tuple[tuple[str, ...], np.ndarray]:

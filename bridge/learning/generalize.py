@@ -13,8 +13,9 @@ P(e | B) from every pour as sum w y / sum w with w = P(p|B) / q(p), q the
 mixture of the distributions the pours were drawn from. But the priors are
 narrow where a question is silent (the start and end poses of an ordinary
 pour), and an explored antecedent of 15-20 propositions moves those
-parameters outside them: almost no explored pour lies in the support of
-P(.|B) for a short B, so the weights are all zero. Instead P(e | B) is
+parameters outside them: no explored pour lies in the support of P(.|B)
+for a short B (0 of the 775 pours of 25 random valid antecedents, for the
+empty body as for each short question), so the weights are all zero. Instead P(e | B) is
 estimated by the model of the pours: a gradient-boosted classifier of each
 verdict from the 30 parameters, trained on every pour, averaged over
 `samples` parameterizations drawn from P(.|B).
@@ -25,15 +26,17 @@ How rules are found (per expectation, greedy, as a decision list):
    from the priors would give (where that is within `margin` of one half,
    the verdict of most explored pours);
 2. candidates: bodies of one or two propositions (and three, extending a
-   chosen body of two) that at least `min_support` pours satisfy, whose
-   confidence is at least `margin` from one half; the head is the side the
-   confidence is on;
-3. repeatedly, the candidate that sets right the most pours (each pour as the
-   scene of its own description, decided by the rules so far; among equals
-   the one describing the fewest pours) joins, while it sets right at least
-   `min_gain` more pours than it sets wrong and the expectation has fewer
-   than `max_rules` rules. A candidate joins only if the pours it describes
-   and its confidence (the pours sampled for it) are on the same side;
+   chosen body of two) that are valid antecedents, that at least
+   `min_support` pours satisfy, and whose pours mostly (at least `margin`
+   from one half) give one verdict: the candidate's head;
+3. repeatedly, the candidate that sets right the most pours, net of a cost
+   of `penalty` times the number of pours per proposition of its body (each
+   pour is the scene of its own description, decided by the rules so far;
+   among equals the body describing the fewest pours, which aims at the
+   errors) joins, while that net gain is at least `min_gain` and the
+   expectation has fewer than `max_rules` rules. It joins only if its
+   confidence (the pours sampled for it) is on its pours' side, at least
+   `margin` from one half; otherwise it is dropped;
 4. then each proposition asked alone: where the rules answer otherwise than
    its confidence, and the pours it describes agree with that confidence,
    its own rule joins, if it sets no more pours wrong than right (the
@@ -43,7 +46,7 @@ How a question is decided. A scene (a set of propositions) is decided, for
 each expectation, by the highest ranked rule whose body it holds. Rules rank
 by body size (more specific first), then by the distance of their confidence
 from one half, then by id. This is exactly standard defeasible logic
-(theory/defeasible.pl, team defeat or not, ambiguity blocking) over the
+(theory/defeasible.pl in each of its eight variants) over the
 rules and `sup/2` facts: more specific learned rules beat less specific ones
 with the complementary head (specificity, which the engine derives), and
 every other pair of conflicting rules that can apply together gets an
