@@ -200,6 +200,11 @@ def run(oracle: str = "pybullet", store: Path | None = STORE, seed: int = SEED,
             report["defaults_only"] = {
                 "heldout_antecedent": accuracy(defaults.predict(held_scenes), y_held).overall_accuracy,
                 "questions": question_scores(defaults.predict(qs.antecedents), key, clear)[1]}
+            # the clear verdicts of the questions that the defaults get wrong
+            hard = clear & (defaults.predict(qs.antecedents) != key)
+            report["questions_against_the_default"] = {
+                "cases": int(hard.sum()),
+                "right": int(((g.predict(qs.antecedents) == key) & hard).sum())}
     for label, scenes in (("antecedent", held_scenes), ("description", describe(ho.P))):
         for name, pred in baselines(train_desc, Y, scenes, seed).items():
             a = accuracy(pred, y_held)
