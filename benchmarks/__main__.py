@@ -8,8 +8,8 @@ import sys
 import time
 
 #: The benchmark modules, in the order the loop runs: the world, the
-#: exploration, the reasoning.
-MODULES = ("oracle", "exploration", "reasoning")
+#: exploration, the reasoning, the general theory.
+MODULES = ("oracle", "exploration", "reasoning", "generalization")
 
 
 def main() -> int:

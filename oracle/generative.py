@@ -185,3 +185,74 @@ def from_dict(d: Mapping[str, float]) -> np.ndarray:
             raise ValueError(f"parameter '{p.name}' must be a whole number, not {v}")
         row[p.index] = v
     return row
+
+
+# -- judging: from a parameterization back to propositions -----------------------
+
+@dataclass(frozen=True)
+class Judge:
+    """Every proposition's support as arrays, in `names` order: the
+    proposition holds p when p[param] (or p[param] - p[base] for a relative
+    model) lies in [low, high]; `base` is -1 for uniform models."""
+    names: tuple[str, ...]
+    dimension: tuple[str, ...]
+    param: np.ndarray
+    base: np.ndarray
+    low: np.ndarray
+    high: np.ndarray
+
+
+@lru_cache(maxsize=1)
+def judge() -> Judge:
+    """The supports of the vocabulary's propositions, per dimension in rank
+    order (the first value of a dimension that holds p is the one kept)."""
+    vocab = load_vocabulary()
+    names, dims, param, base, low, high = [], [], [], [], [], []
+    for dim in vocab.dimensions.values():
+        for name in dim.values:
+            m = vocab.proposition(name).model
+            par = vocab.parameter(m.param)
+            names.append(name)
+            dims.append(dim.name)
+            param.append(par.index)
+            if m.kind == "uniform":
+                base.append(-1)
+                low.append(max(par.low, m.low))
+                high.append(min(par.high, m.high))
+            else:
+                base.append(vocab.parameter(m.base).index)
+                low.append(m.low)
+                high.append(m.high)
+    arrays = [np.array(param), np.array(base), np.array(low, dtype=float), np.array(high, dtype=float)]
+    for a in arrays:
+        a.flags.writeable = False       # cached: shared by every caller
+    return Judge(tuple(names), tuple(dims), *arrays)
+
+
+def holds(P: np.ndarray) -> tuple[tuple[str, ...], np.ndarray]:
+    """Which propositions hold each parameterization: the proposition names
+    and a boolean matrix (len(P) x names), at most one True per dimension."""
+    j = judge()
+    P = np.atleast_2d(np.asarray(P, dtype=float))
+    x = P[:, j.param] - np.where(j.base >= 0, P[:, np.maximum(j.base, 0)], 0.0)
+    inside = (x >= j.low) & (x <= j.high)
+    # where two values of a dimension share a boundary point, the lower rank keeps it
+    first = np.zeros_like(inside)
+    dims = np.array(j.dimension)
+    for d in dict.fromkeys(j.dimension):
+        cols = np.flatnonzero(dims == d)
+        block = inside[:, cols]
+        pick = np.argmax(block, axis=1)
+        any_ = block.any(axis=1)
+        first[np.flatnonzero(any_), cols[pick[any_]]] = True
+    return j.names, first
+
+
+def describe(P: np.ndarray) -> list[tuple[str, ...]]:
+    """For each parameterization (row of 30 numbers), the propositions whose
+    generative model holds it, as a canonical sorted tuple: per dimension the
+    value whose support contains it (uniform models on their parameter's
+    range, relative models on the offset from their base), none where it
+    falls between values."""
+    names, M = holds(P)
+    return [canonical(names[k] for k in np.flatnonzero(row)) for row in M]

@@ -8,7 +8,9 @@ from typing import Sequence
 import numpy as np
 
 from pantarhei.bridge.engines.swipl import engine
+from pantarhei.bridge.exploration.simulation import iteration_seed
 from pantarhei.bridge.reasoning.scenes import violations
+from pantarhei.oracle.generative import sample
 from pantarhei.theory.lexicon import load_vocabulary
 
 
@@ -16,6 +18,30 @@ def random_antecedents(seed: int, n: int) -> list[tuple[str, ...]]:
     """n antecedents drawn uniformly from the valid ones (by Prolog)."""
     r = engine().once("validity:random_antecedents(Seed, N, As)", Seed=int(seed), N=int(n))
     return [tuple(str(p) for p in a) for a in r["As"]]
+
+
+def random_exploration(seed: int, count: int, samples: int) -> tuple[list[tuple[str, ...]], np.ndarray]:
+    """The random baseline's exploration at a budget: `count` uniformly random
+    valid antecedents, `samples` pours of each (seeded as exploration seeds its
+    iterations, so the same store serves every reader)."""
+    ants = random_antecedents(seed + 7919, count)
+    P = np.vstack([sample(list(a), samples, iteration_seed(seed + 7919, i))
+                   for i, a in enumerate(ants, start=1)])
+    return ants, P
+
+
+def uniform_scenes(seed: int, n: int, exclude: set[tuple[str, ...]]) -> list[tuple[str, ...]]:
+    """n distinct uniformly random valid antecedents, none in `exclude`."""
+    out = [a for a in random_antecedents(seed, 2 * n) if a not in exclude]
+    return list(dict.fromkeys(out))[:n]
+
+
+def scene_pours(scenes: Sequence[Sequence[str]], seed: int) -> np.ndarray:
+    """One pour of each held-out scene, shape (len(scenes), 30)."""
+    if not scenes:
+        return np.empty((0, len(load_vocabulary().parameters)))
+    return np.vstack([sample(list(a), 1, iteration_seed(seed, 100_000 + j))
+                      for j, a in enumerate(scenes)])
 
 
 def near_antecedents(explored: Sequence[Sequence[str]], n: int, seed: int,

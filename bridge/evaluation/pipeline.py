@@ -32,7 +32,8 @@ from pantarhei.oracle.generative import sample
 from pantarhei.theory.lexicon import load_vocabulary
 
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.evaluation.heldout import near_antecedents, random_antecedents
+from pantarhei.bridge.evaluation.heldout import (near_antecedents, random_exploration,
+                                                 scene_pours, uniform_scenes)
 from pantarhei.bridge.evaluation.measures import (accuracy, distinct_behaviours, tree_predictions,
                                                   verdicts)
 from pantarhei.bridge.evaluation.rule_building import consequents, predict, theory_of
@@ -254,9 +255,7 @@ def exploration_pours(learned: Learned, run: Simulations, ev: Evaluation) -> Pou
 def random_exploration_pours(seed: int, count: int, samples: int, run: Simulations) -> Pours:
     """The baseline: the same budget spent on uniformly random valid
     antecedents, `samples` pours each."""
-    ants = random_antecedents(seed + 7919, count)
-    P = np.vstack([sample(list(a), samples, iteration_seed(seed + 7919, i))
-                   for i, a in enumerate(ants, start=1)])
+    ants, P = random_exploration(seed, count, samples)
     return Pours(ants, P, run("random exploration", P))
 
 
@@ -267,17 +266,13 @@ def heldout_scenes(opts: Options, explored: Sequence[tuple[str, ...]],
     either method: per set, the scenes whose pour did not fail and their
     verdicts."""
     known = set(explored) | set(random_ants)
-    uniform = [a for a in random_antecedents(opts.seed, 2 * opts.scenes) if a not in known]
-    uniform = list(dict.fromkeys(uniform))[:opts.scenes]
+    uniform = uniform_scenes(opts.seed, opts.scenes, known)
     near = near_antecedents(explored, opts.scenes, opts.seed, known | set(uniform))
     near_random = near_antecedents(random_ants, opts.scenes, opts.seed + 1,
                                    known | set(uniform) | set(near))
-    width = len(load_vocabulary().parameters)
     held = {}
     for name, scenes in {"uniform": uniform, "near": near, "near_random": near_random}.items():
-        P = np.vstack([sample(list(a), 1, iteration_seed(opts.seed, 100_000 + j))
-                       for j, a in enumerate(scenes)]) if scenes else np.empty((0, width))
-        S = run(f"held-out ({name})", P)
+        S = run(f"held-out ({name})", scene_pours(scenes, opts.seed))
         ok = np.all(np.isfinite(S), axis=1)
         held[name] = ([s for s, kept in zip(scenes, ok) if kept], verdicts(S[ok]))
     return held
