@@ -38,7 +38,7 @@ def defaults() -> dict[str, object]:
         if key.endswith("_permille"):
             out[key[: -len("_permille")]] = value / 1000
         else:
-            out[key] = value
+            out[key] = {"true": True, "false": False}.get(value, value) if isinstance(value, str) else value
     out["initial"] = tuple(p for (p,) in facts.get("default_initial", []))
     return out
 

@@ -4,6 +4,7 @@
             sample/4,                 % +Props, +N, +Seed, -Rows
             simulate/3,               % +Rows, +Options, -Scores
             default_initial/1,        % -Props
+            describe/2,               % +Row, -Props
             direction/3,              % +Gradient, +MeanScore, -Direction
             modify/5,                 % +Props, +Direction, +Breadth, +Exclude, -New
             parameter_mean/3,         % +Props, +Param, -Mean
@@ -26,8 +27,9 @@ predicates of the module =bridge=, which `pantarhei explore` and
   - bridge:exploration_qualify(+Request, -Reply)
   - bridge:exploration_checkpoint(+Request, -Reply)
   - bridge:exploration_end(+Request, -Reply)
-  - bridge:oracle_sample(+Request, -Reply), bridge:oracle_simulate(+Request, -Reply):
-    sample/4 and simulate/3, the oracle at the Prolog prompt
+  - bridge:oracle_sample(+Request, -Reply), bridge:oracle_simulate(+Request, -Reply),
+    bridge:oracle_describe(+Request, -Reply): sample/4, simulate/3 and
+    describe/2, the oracle at the Prolog prompt
 
 Requests and replies are JSON text; a reply =|{"error": Text}|= raises
 =|exploration_error(Text)|=.
@@ -511,6 +513,18 @@ write_facts(Out, Settings, Facts) :-
 sample(Props, N, Seed, Rows) :-
     call_bridge(oracle_sample, _{antecedent:Props, n:N, seed:Seed}, Reply),
     Rows = Reply.rows.
+
+%!  describe(+Row:list, -Props:list) is det.
+%
+%   Props are the propositions whose generative models hold the
+%   parameterization Row (30 numbers in the vocabulary's parameter order):
+%   per dimension the value whose support contains Row, none where it falls
+%   between values. Every row that sample/4 draws for an antecedent is
+%   described by a superset of it.
+describe(Row, Props) :-
+    call_bridge(oracle_describe, _{rows:[Row]}, Reply),
+    Reply.props = [Props0],
+    maplist([P0, P]>>atom_string(P, P0), Props0, Props).
 
 %!  simulate(+Rows:list, +Options:list, -Scores:list) is det.
 %

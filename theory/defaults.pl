@@ -15,6 +15,10 @@ default(seed, 1).
 default(breadth, 3).
 default(qualify, weighted).
 
+% After Algorithm 1, learn general rules from every pour of the
+% exploration and add them to the theory (bridge/learning/): true or false.
+default(general, true).
+
 % a_0, the initial antecedent: an ordinary pour (from mid height, near the
 % destination's rim, steeply tilted).
 default_initial(pour_mid_height).

@@ -78,7 +78,7 @@ def demo(args: argparse.Namespace) -> int:
     for question, props in QUESTIONS:
         _heading(question)
         ask(argparse.Namespace(question=None, props=",".join(props), theory=[str(out)], why=None,
-                               json=False, no_assume=False))
+                               json=False))
 
     _heading(f"How should I pour so that {GOAL.replace(',', ', ')}?")
     try:

@@ -41,6 +41,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     options.add_theory_out(p, extra="; the trace (.trace.jsonl) and its plot (.trace.png) go beside it")
     p.add_argument("--resume", action="store_true",
                    help="continue the saved exploration with the same settings")
+    p.add_argument("--no-general", action="store_true",
+                   help="write Algorithm 1's rules only, without the general rules learned "
+                        "from every pour")
     options.add_oracle(p)
     options.add_execution(p)
     p.set_defaults(run=explore)
@@ -70,7 +73,8 @@ def explore(args: argparse.Namespace) -> int:
         threshold=args.threshold, seed=args.seed, initial=initial, breadth=args.breadth,
         ridge=args.ridge, qualify=args.qualify, out=Path(args.out), store=Path(args.store),
         resume=args.resume, executor=args.executor, workers=args.workers,
-        ray_address=args.ray_address, progress=not args.no_progress)
+        ray_address=args.ray_address, progress=not args.no_progress,
+        general=bool(defaults()["general"]) and not args.no_general)
     try:
         result = run_exploration(opts)
     except KeyboardInterrupt:

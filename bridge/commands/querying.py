@@ -23,9 +23,6 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--why", metavar="LITERAL",
                    help="explain why the theory concludes LITERAL in the scene, or why not "
                         "(an expectation, or neg(E))")
-    p.add_argument("--no-assume", action="store_true",
-                   help="do not complete the scene with the theory's ordinary pour (its initial "
-                        "antecedent) in the dimensions the question leaves open")
     p.add_argument("--json", action="store_true", help="print JSON")
     p.set_defaults(run=ask)
 
@@ -85,23 +82,21 @@ def ask(args: argparse.Namespace) -> int:
         raise UserError("give a scene: a question in words, or --props P1,P2")
     props = require_valid(props)
     theory = loading.load(args.theory)
-    assumed = [] if args.no_assume else answers.assumptions(theory, props)
-    scene = props + assumed
+    scene = props
     if args.why:
         from pantarhei.bridge.reasoning.planning import check_goals
 
         (lit,) = check_goals([args.why], theory, reachable=False)
         words = answers.explain(theory, scene, lit)
         if args.json:
-            print(json.dumps({"understood": props, "assumed": assumed, "literal": lit, "why": words},
-                             indent=1))
+            print(json.dumps({"understood": props, "literal": lit, "why": words}, indent=1))
         else:
-            _print_scene(props, assumed, glosses=False)
+            _print_scene(props, glosses=False)
             print(words.replace("; ", "\n  "))
         return 0
     outcomes = answers.what_happens(theory, scene)
     if args.json:
-        print(json.dumps({"understood": props, "assumed": assumed,
+        print(json.dumps({"understood": props,
                           "outcomes": {o.expectation: o.value for o in outcomes},
                           "reasons": {o.expectation: {"rule": o.rule, "why": o.reason}
                                       for o in outcomes}}, indent=1))
@@ -109,7 +104,7 @@ def ask(args: argparse.Namespace) -> int:
     from pantarhei.theory.lexicon import load_vocabulary
 
     vocab = load_vocabulary()
-    _print_scene(props, assumed, glosses=True)
+    _print_scene(props, glosses=True)
     print(f"theory: {theory.source}")
     glosses = {e.name: e.gloss for e in vocab.expectations}
     why_not = False
@@ -138,8 +133,8 @@ def ask(args: argparse.Namespace) -> int:
     return 0
 
 
-def _print_scene(props: list[str], assumed: list[str], glosses: bool) -> None:
-    """The propositions understood from the question, then those assumed."""
+def _print_scene(props: list[str], glosses: bool) -> None:
+    """The propositions understood from the question."""
     from pantarhei.theory.lexicon import load_vocabulary
 
     vocab = load_vocabulary()
@@ -147,12 +142,6 @@ def _print_scene(props: list[str], assumed: list[str], glosses: bool) -> None:
     if glosses:
         for p in props:
             print(f"  {p}: {vocab.propositions[p].gloss}")
-    if assumed:
-        print("assumed (the theory's ordinary pour, where the question says nothing; "
-              f"--no-assume to drop): {', '.join(assumed)}")
-        if glosses:
-            for p in assumed:
-                print(f"  {p}: {vocab.propositions[p].gloss}")
 
 
 # -- plan ---------------------------------------------------------------------

@@ -346,13 +346,12 @@ def _paper_rules(theory: Theory, run: Simulations, opts: Options) -> list[dict[s
         rules = [{"rule": r.id, "also_needs": sorted(set(r.body) - set(props))}
                  for r in theory.rules if r.id in theory.learned and r.head == literal
                  and set(props) <= set(r.body)]
-        assumed = answers.assumptions(theory, list(props))
-        scene = sorted(set(props) | set(assumed))
+        scene = sorted(props)
         said = {o.expectation: o for o in answers.what_happens(theory, scene)}
         expectation = complement(literal) if literal.startswith("neg(") else literal
         o = said[expectation]
         says = {"holds": expectation, "fails": f"neg({expectation})"}.get(o.value, "unknown")
-        out.append({"scene": list(props), "assumed": assumed, "literal": literal, "paper": words,
+        out.append({"scene": list(props), "literal": literal, "paper": words,
                     "learned": rules, "theory_says": says, "rule": o.rule, "reason": o.reason})
         scenes.append(scene)
     if opts.paper_samples:

@@ -4,6 +4,7 @@ what it did. Defaults come from theory/defaults.pl."""
 from __future__ import annotations
 
 import json
+import time
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Sequence
@@ -41,6 +42,8 @@ class Options:
     progress: bool = True
     #: Keyword arguments of the oracle's constructor (JSON values).
     oracle_options: dict | None = None
+    #: Learn the general rules from every pour and add them to the theory.
+    general: bool = _default("general")
 
     def prolog(self) -> str:
         items = [f"oracle({prolog_quote(self.oracle)})", f"max_rules({int(self.max_rules)})",
@@ -86,7 +89,16 @@ def explore(options: Options) -> dict:
                 raise e
             raise UserError(error_text(e)) from e
         raise UserError(_result_text(result))
-    return dict(host.result)
+    out = dict(host.result)
+    if options.general:
+        from pantarhei.bridge.learning.layers import add_general_rules
+
+        P, S = out["pours"]
+        t = time.monotonic()
+        general = add_general_rules(options.out, P, S, options.seed)
+        out["general_rules"] = len(general.rules)
+        out.setdefault("timings", {})["generalize"] = time.monotonic() - t
+    return out
 
 
 def _result_text(result: Any) -> str:

@@ -14,7 +14,8 @@ Prolog module `bridge`:
 * `exploration_qualify`: the consequent of each explored antecedent;
 * `exploration_checkpoint`: save the state after an explored antecedent;
 * `exploration_end`: write the trace and its plot, and close everything;
-* `oracle_sample`, `oracle_simulate`: the oracle at the Prolog prompt.
+* `oracle_sample`, `oracle_simulate`, `oracle_describe`: the oracle at the
+  Prolog prompt.
 
 Each takes a JSON request and unifies its second argument with a JSON
 reply. An exception in Python becomes the reply `{"error": ...}` (Prolog
@@ -127,6 +128,7 @@ class Host:
             "exploration_end": self.end,
             "oracle_sample": oracle_sample,
             "oracle_simulate": oracle_simulate,
+            "oracle_describe": oracle_describe,
         }
 
     def _timed(self, name: str, fn: Callable[[dict], dict]) -> Callable[[dict], dict]:
@@ -306,8 +308,9 @@ class Host:
                                     explored=int(request.get("explored", 0)),
                                     a_new=int(request.get("a_new", 0)),
                                     simulations=len(s.params),
-                                    failed=int((~s.valid).sum()), timings=dict(s.timings), elapsed=list(s.elapsed),
-                                    wall=time.monotonic() - s.started, **written)
+                                    failed=int((~s.valid).sum()), timings=dict(s.timings),
+                                    elapsed=list(s.elapsed), wall=time.monotonic() - s.started,
+                                    pours=(s.params.copy(), s.scores.copy()), **written)
         finally:
             if s.bar is not None:
                 s.bar.close()
@@ -357,6 +360,17 @@ def oracle_simulate(request: dict) -> dict:
     finally:
         sim.close()
     return {"scores": [[float(x) if np.isfinite(x) else "nan" for x in row] for row in S]}
+
+
+def oracle_describe(request: dict) -> dict:
+    """The propositions whose generative models hold each row (describe)."""
+    from pantarhei.oracle.generative import describe
+
+    P = np.asarray(request["rows"], dtype=float)
+    n = len(load_vocabulary().parameters)
+    if P.ndim != 2 or P.shape[1] != n or not np.all(np.isfinite(P)):
+        raise UserError(f"expected rows of {n} numbers")
+    return {"props": [list(d) for d in describe(P)]}
 
 
 def error_text(e: BaseException) -> str:

@@ -1,45 +1,18 @@
 """Answers to questions about pouring: what happens in a scene (one answer
-per expectation, with the deciding rule), why or why not, and the
-assumptions that complete a question with the theory's ordinary pour."""
+per expectation, with the deciding rule), why or why not, and the deciding
+rule in words with its evidence.
+
+A question means what `pantarhei simulate --antecedent Q` samples for it:
+whatever it leaves unsaid follows the priors (an ordinary scene). Nothing is
+added to it: the general rules (bridge/learning/) answer questions of any
+length in that meaning."""
 from __future__ import annotations
 
 from dataclasses import dataclass
 
 from pantarhei.bridge.engines.swipl import text as prolog_text
 from pantarhei.bridge.reasoning.logic import Semantics, prolog_load
-from pantarhei.bridge.theories.loading import initial_antecedent
 from pantarhei.bridge.theories.model import Theory
-
-
-def assumptions(theory: Theory, props: list[str] | tuple[str, ...]) -> list[str]:
-    """The propositions to add to the question `props`, in order: the
-    theory's initial antecedent (`initial_antecedent`) for each dimension
-    the question leaves open, added one at a time in the theory's order and
-    skipped when it would make the antecedent invalid (bridge/reasoning/scenes.py).
-    `props` should be a valid antecedent; if it is not, nothing is added.
-    The scene to reason about is then `props + assumptions(theory, props)`."""
-    from pantarhei.theory.lexicon import load_vocabulary
-
-    from pantarhei.bridge.reasoning.scenes import violations
-
-    initial = initial_antecedent(theory)
-    if not initial:
-        return []
-    vocab = load_vocabulary()
-    scene = list(props)
-    if violations(scene):
-        return []
-    taken = {vocab.propositions[p].dimension for p in scene if p in vocab.propositions}
-    added: list[str] = []
-    for p in initial:
-        prop = vocab.propositions.get(p)
-        if prop is None or prop.dimension in taken:
-            continue
-        if violations(scene + added + [p]):
-            continue
-        added.append(p)
-        taken.add(prop.dimension)
-    return added
 
 
 @dataclass(frozen=True)

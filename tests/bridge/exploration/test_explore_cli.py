@@ -112,3 +112,14 @@ def test_prolog_command_samples_and_simulates(tmp_path):
     bad = run_cli("prolog", "-g", "sample([pour_sideways], 1, 1, _)")
     assert bad.code == 1
     assert "unknown proposition 'pour_sideways'" in bad.err
+
+
+def test_prolog_describes_a_pour_as_it_was_sampled():
+    goal = ("sample([pour_to_side, light_liquid], 3, 7, Rows), "
+            "forall(member(R, Rows), (describe(R, Ps), subtract([pour_to_side, light_liquid], Ps, []))), "
+            "Rows = [R0|_], describe(R0, P0), length(P0, N), format('~w~n', [N])")
+    r = run_cli("prolog", "-g", goal)
+    assert r.code == 0, r.err
+    assert int(r.out.split()[-1]) > 2          # the unsaid dimensions are described too
+    bad = run_cli("prolog", "-g", "describe([1, 2, 3], _)")
+    assert bad.code != 0 and "expected rows of 30 numbers" in bad.err

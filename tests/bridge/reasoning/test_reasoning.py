@@ -106,32 +106,3 @@ def test_benchmark_sizes_are_as_asked() -> None:
     for name in bench.NAMES:
         b = bench.of_size(name, 1000)
         assert 250 <= b.size <= 1001, (name, b.size)
-
-
-def test_assumptions_follow_the_theory_order_and_keep_the_antecedent_valid(tmp_path) -> None:
-    from pantarhei.bridge.reasoning.answers import assumptions
-    from pantarhei.bridge.theories.loading import initial_antecedent, load
-
-    f = tmp_path / "a0.pl"
-    f.write_text("% setting(initial, pour_high).\nsetting(initial, pour_below_rim).\n"
-                 "setting(initial, pour_centred).\nsetting(initial, pour_steeply_tilted).\n"
-                 "rule(r1, defeasible, no_spill).\nbody(r1, pour_centred).\n")
-    theory = load(f)
-    assert initial_antecedent(theory) == ["pour_below_rim", "pour_centred", "pour_steeply_tilted"]
-    # pour_below_rim comes first, so pour_centred (inside the destination) is skipped
-    assert assumptions(theory, ["light_liquid"]) == ["pour_below_rim", "pour_steeply_tilted"]
-    # a given height leaves the alignment open
-    assert assumptions(theory, ["pour_high"]) == ["pour_centred", "pour_steeply_tilted"]
-    assert assumptions(theory, ["pour_high", "pour_to_side", "pour_upright"]) == []
-    hand = tmp_path / "hand.dfl"
-    hand.write_text("h1: pour_to_side => -no_spill\n")
-    assert assumptions(load([f, hand]), ["light_liquid"]) == ["pour_below_rim", "pour_steeply_tilted"]
-
-
-def test_theories_without_an_initial_antecedent_get_no_assumptions() -> None:
-    from pantarhei.bridge.reasoning.answers import assumptions
-
-    assert assumptions(parse_dfl("r1: pour_centred => no_spill\n"), ["light_liquid"]) == []
-    kept = Theory(rules=[Rule("r1", "defeasible", "no_spill", ("pour_centred",))],
-                  extra=["setting(initial, pour_centred)."])
-    assert assumptions(kept, ["light_liquid"]) == ["pour_centred"]

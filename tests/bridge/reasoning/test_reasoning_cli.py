@@ -130,11 +130,12 @@ def test_the_shipped_theory_answers_without_a_theory_option(cli) -> None:
     import json
 
     answer = json.loads(r.out)
-    assert answer["assumed"] == s["initial"]
-    assert set(answer["outcomes"].values()) <= {"holds", "fails"}     # a_0 decides everything
+    # the general rules decide a one-phrase question that no explored antecedent speaks of
+    assert set(answer["outcomes"].values()) <= {"holds", "fails"}
+    assert all(answer["reasons"][e]["rule"].startswith("g") for e in answer["outcomes"])
 
 
-# -- the theory's ordinary pour, assumed where the question says nothing -------
+# -- a question is asked as given --------------------------------------------------
 
 # a_0 of the exploration in file order; r1 needs all of it, r2 the side instead
 # of the centre, r3 a pour below the rim (where the centre would be invalid).
@@ -165,61 +166,46 @@ def ordinary(tmp_path: Path) -> str:
     return str(f)
 
 
-def test_ask_assumes_the_ordinary_pour_where_the_question_says_nothing(cli, ordinary: str) -> None:
+def test_ask_asks_the_question_as_given(cli, ordinary: str) -> None:
+    # the ordinary pour's rule r1 needs pour_mid_height, pour_centred, pour_steeply_tilted:
+    # a question that leaves them out is not completed with them
     r = cli("ask", "--props", "light_liquid", "--theory", ordinary)
     assert r.code == 0, r.err
-    lines = r.out.splitlines()
-    assert lines[0] == "understood: light_liquid"
-    assumed = next(line for line in lines if line.startswith("assumed"))
-    assert assumed.endswith(": pour_mid_height, pour_centred, pour_steeply_tilted")
-    assert "--no-assume" in assumed
-    assert "[yes] no_spill" in r.out and "rule r1" in r.out
-    out = json.loads(cli("ask", "--props", "light_liquid", "--theory", ordinary, "--json").out)
-    assert out["understood"] == ["light_liquid"]
-    assert out["assumed"] == ["pour_mid_height", "pour_centred", "pour_steeply_tilted"]
-    assert out["outcomes"]["no_spill"] == "holds"
-
-
-def test_ask_in_words_assumes_only_the_open_dimensions(cli, ordinary: str) -> None:
-    out = json.loads(cli("ask", "pour from the side", "--theory", ordinary, "--json").out)
-    assert out["understood"] == ["pour_to_side"]
-    assert out["assumed"] == ["pour_mid_height", "pour_steeply_tilted"]
-    assert out["outcomes"]["no_spill"] == "fails"
-    assert out["reasons"]["no_spill"]["rule"] == "r2"
-
-
-def test_no_assume_asks_the_bare_question(cli, ordinary: str) -> None:
-    r = cli("ask", "--props", "light_liquid", "--theory", ordinary, "--no-assume")
-    assert r.code == 0, r.err
+    assert r.out.splitlines()[0] == "understood: light_liquid"
     assert "assumed" not in r.out
     assert "[ ? ] no_spill" in r.out
-    out = json.loads(cli("ask", "--props", "light_liquid", "--theory", ordinary, "--no-assume",
-                         "--json").out)
-    assert out["assumed"] == []
+    out = json.loads(cli("ask", "--props", "light_liquid", "--theory", ordinary, "--json").out)
+    assert out["understood"] == ["light_liquid"] and "assumed" not in out
     assert out["outcomes"]["no_spill"] == "unknown"
+    full = json.loads(cli("ask", "--props", "light_liquid,pour_mid_height,pour_centred,"
+                          "pour_steeply_tilted", "--theory", ordinary, "--json").out)
+    assert full["outcomes"]["no_spill"] == "holds" and full["reasons"]["no_spill"]["rule"] == "r1"
 
 
-def test_an_assumption_that_breaks_validity_is_skipped(cli, ordinary: str) -> None:
-    # pour_mid_height: the height is given; pour_centred below the rim: inside_destination
-    out = json.loads(cli("ask", "--props", "pour_below_rim", "--theory", ordinary, "--json").out)
-    assert out["assumed"] == ["pour_steeply_tilted"]
-    assert out["outcomes"]["liquid_leaves_source"] == "holds"
-
-
-def test_ask_why_uses_the_same_assumptions(cli, ordinary: str) -> None:
-    r = cli("ask", "--props", "light_liquid", "--theory", ordinary, "--why", "no_spill")
+def test_ask_says_the_deciding_rule_in_words_with_its_evidence(cli, tmp_path: Path) -> None:
+    f = tmp_path / "general.pl"
+    f.write_text("rule(g0_no_spill, defeasible, no_spill).\nlearned(g0_no_spill).\n"
+                 "provenance(g0_no_spill, support, 60).\nprovenance(g0_no_spill, kept, 50).\n"
+                 "rule(g1_no_spill, defeasible, neg(no_spill)).\nbody(g1_no_spill, pour_to_side).\n"
+                 "learned(g1_no_spill).\nprovenance(g1_no_spill, support, 52).\n"
+                 "provenance(g1_no_spill, kept, 41).\n")
+    r = cli("ask", "pour from the side", "--theory", str(f))
     assert r.code == 0, r.err
-    assert "assumed" in r.out and "no_spill by rule r1" in r.out
+    assert "[no ] no_spill" in r.out
+    assert "because: pour from the side (41 of 52 such pours; rule g1_no_spill)" in r.out
+    light = cli("ask", "--props", "light_liquid", "--theory", str(f))
+    assert "[yes] no_spill" in light.out
+    assert "because: in general (50 of 60 such pours; rule g0_no_spill)" in light.out
+
+
+def test_ask_why_in_words(cli, ordinary: str) -> None:
+    r = cli("ask", "--props", "light_liquid,pour_mid_height,pour_centred,pour_steeply_tilted",
+            "--theory", ordinary, "--why", "no_spill")
+    assert r.code == 0, r.err
+    assert "no_spill by rule r1" in r.out
     out = json.loads(cli("ask", "--props", "light_liquid", "--theory", ordinary, "--why", "no_spill",
-                         "--no-assume", "--json").out)
-    assert out["assumed"] == [] and "no_spill is not concluded" in out["why"]
-
-
-def test_a_theory_without_settings_assumes_nothing(cli) -> None:
-    for theory in (["--theory", LEARNED], ["--theory", LEARNED, "--theory", HAND]):
-        r = cli("ask", "--props", "pour_to_side", *theory, "--json")
-        assert r.code == 0, r.err
-        assert json.loads(r.out)["assumed"] == []
+                         "--json").out)
+    assert "no_spill is not concluded" in out["why"]
 
 
 # -- a short why-not on a large theory --------------------------------------------

@@ -1,0 +1,108 @@
+"""One theory of two layers: Algorithm 1's rules and the general rules.
+
+Algorithm 1 writes one rule per explored antecedent and expectation (its
+body is the antecedent, `r<i>_<E>`); `generalize` learns general rules from
+every pour of the exploration (`g<i>_<E>`). Both are learned rules, and a
+scene that both speak of is decided as within one layer: the most specific
+applicable rule wins (a body that holds another's), and between rules whose
+bodies do not hold each other, the higher ranked one: the larger body, then
+the surer verdict (confidence further from one half), then the id. The
+engines derive specificity among learned rules themselves; every other pair
+of conflicting rules that one scene can hold together gets an explicit
+`sup/2` fact in rank order. The order is linear, so the superiority
+relation is acyclic and no conflict is left undecided.
+
+`general_section` writes the general layer as native facts, appended to
+the theory file that Algorithm 1 wrote (both engines read it).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Sequence
+
+import numpy as np
+
+from pantarhei.bridge.files import write_text
+from pantarhei.bridge.learning.generalize import General, Settings, _together, generalize
+from pantarhei.bridge.theories.model import Theory, complement, read_native
+
+
+@dataclass(frozen=True)
+class Ranked:
+    """A learned rule as the layers rank it."""
+    id: str
+    body: tuple[str, ...]
+    head: str
+    confidence: float
+
+    @property
+    def rank(self) -> tuple:
+        return (len(self.body), round(abs(self.confidence - 0.5), 9), self.id)
+
+
+def ranked_rules(theory: Theory, general: General) -> list[Ranked]:
+    """Algorithm 1's learned rules of `theory` (confidence from their
+    provenance) and the general rules, as one list."""
+    conf = {rid: int(v) / 1000 for rid, k, v in theory.provenance if k == "confidence_permille"}
+    out = [Ranked(r.id, tuple(sorted(r.body)), r.head, conf.get(r.id, 0.5))
+           for r in theory.rules if r.id in theory.learned]
+    out += [Ranked(g.id, tuple(sorted(g.body)), g.head, g.confidence) for g in general.rules]
+    return out
+
+
+def superiority(rules: Sequence[Ranked]) -> list[tuple[str, str]]:
+    """Explicit sup/2 pairs (higher, lower) for every pair of conflicting
+    rules that one scene can hold, where neither body holds the other
+    strictly (the engines derive those by specificity)."""
+    by_head: dict[str, list[Ranked]] = {}
+    for r in rules:
+        by_head.setdefault(r.head, []).append(r)
+    out = []
+    for head in sorted(h for h in by_head if not h.startswith("neg(")):
+        for r in by_head[head]:
+            for q in by_head.get(complement(head), ()):
+                rb, qb = set(r.body), set(q.body)
+                if rb < qb or qb < rb or not _together(r.body, q.body):
+                    continue
+                hi, lo = (r, q) if r.rank > q.rank else (q, r)
+                out.append((hi.id, lo.id))
+    return sorted(out)
+
+
+def general_section(theory: Theory, general: General, pours: int) -> str:
+    """The general layer as native facts: rules, bodies, `learned/1`, their
+    provenance (layer, level, support, kept, confidence in permille) and the
+    explicit superiority that makes both layers one linear order."""
+    lines = ["", "% General rules, learned from every pour of the exploration",
+             "% (bridge/learning/generalize.py): a default per expectation, exceptions",
+             "% and exceptions to those. provenance(Id, support, N): the pours whose",
+             "% description holds the body; kept: how many of them keep the head;",
+             "% confidence_permille: P(head | body) for the pours sampled for the body.",
+             "% sup/2 below orders both layers (see bridge/learning/layers.py).",
+             f"setting(general_pours, {int(pours)}).",
+             f"setting(general_rules, {len(general.rules)})."]
+    for g in general.rules:
+        lines.append(f"rule({g.id}, defeasible, {g.head}).")
+        lines.extend(f"body({g.id}, {b})." for b in g.body)
+        lines.append(f"learned({g.id}).")
+        lines += [f"provenance({g.id}, layer, general).",
+                  f"provenance({g.id}, level, {g.level}).",
+                  f"provenance({g.id}, support, {g.support}).",
+                  f"provenance({g.id}, kept, {g.kept}).",
+                  f"provenance({g.id}, confidence_permille, {int(round(1000 * g.confidence))})."]
+    lines += [f"sup({a}, {b})." for a, b in superiority(ranked_rules(theory, general))]
+    return "\n".join(lines) + "\n"
+
+
+def add_general_rules(path: Path | str, P: np.ndarray, S: np.ndarray, seed: int) -> General:
+    """Generalize the pours (P, S) of the exploration that wrote the theory
+    file `path`, and append the general layer to that file (whole or not
+    at all)."""
+    path = Path(path)
+    theory = read_native(path)
+    general = generalize(P, S, Settings(seed=int(seed)))
+    ok = int(np.all(np.isfinite(np.atleast_2d(S)), axis=1).sum())
+    text = path.read_text(encoding="utf-8")
+    write_text(path, text.rstrip("\n") + "\n" + general_section(theory, general, ok))
+    return general
