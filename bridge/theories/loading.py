@@ -8,7 +8,7 @@ from pathlib import Path
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.theories.dfl import is_dfl, read_dfl
-from pantarhei.bridge.theories.model import Theory, merge, read_native
+from pantarhei.bridge.theories.model import Theory, _line, _text_of, merge, read_native
 from pantarhei.theory import THEORY_DIR, TheoryFileError, defaults
 
 #: The theory the exploration writes, used when no theory file is named.
@@ -48,6 +48,10 @@ def load(paths: Path | str | list | tuple | None = None, check: bool = True) -> 
     for t in theories:
         if not (t.facts or t.rules or t.sup or t.settings or t.extra):
             raise UserError(f"{t.source}: an empty theory (no facts and no rules)")
+        try:
+            check_general_rules(t)
+        except TheoryFileError as e:
+            raise UserError(str(e)) from None
     try:
         theory = merge(theories)
         if check:
@@ -94,3 +98,41 @@ def initial_antecedent(theory: Theory) -> list[str]:
     antecedent a_0 its exploration started from (and which every learned
     rule body therefore contains, or a neighbour of)."""
     return [p for p in settings(theory).get("initial", []) if isinstance(p, str)]
+
+
+def check_general_rules(theory: Theory) -> None:
+    """TheoryFileError (`file:line: what`) for a general rule (provenance
+    `layer general`) that the vocabulary cannot read: a body proposition or
+    a head that is not in it, or evidence out of range (a confidence outside
+    0..1000 permille, more pours kept than described)."""
+    from pantarhei.theory.lexicon import load_vocabulary
+
+    general = {rid for rid, k, v in theory.provenance if k == "layer" and v == "general"}
+    if not general:
+        return
+    vocab = load_vocabulary()
+    text = _text_of(theory.source)
+    expectations = set(vocab.expectation_names)
+    for r in theory.rules:
+        if r.id not in general:
+            continue
+        for b in r.body:
+            if b not in vocab.propositions:
+                where = _line(text, rf"body\(\s*{re.escape(r.id)}\s*,\s*{re.escape(b)}\s*\)", theory.source)
+                raise TheoryFileError(f"{where}: general rule {r.id}: {b} is not a proposition "
+                                      f"of the vocabulary")
+        head = r.head[4:-1] if r.head.startswith("neg(") else r.head
+        if head not in expectations:
+            where = _line(text, rf"rule\(\s*{re.escape(r.id)}\s*,", theory.source)
+            raise TheoryFileError(f"{where}: general rule {r.id}: {head} is not an expectation")
+    facts = {(rid, k): v for rid, k, v in theory.provenance if rid in general}
+    for (rid, key), v in facts.items():
+        where = _line(text, rf"provenance\(\s*{re.escape(rid)}\s*,\s*{key}\s*,", theory.source)
+        if key == "confidence_permille" and not (isinstance(v, int) and 0 <= v <= 1000):
+            raise TheoryFileError(f"{where}: general rule {rid}: a confidence in permille "
+                                  f"is 0 to 1000, not {v}")
+        if key in ("support", "kept") and not (isinstance(v, int) and v >= 0):
+            raise TheoryFileError(f"{where}: general rule {rid}: {key} is a count of pours, not {v}")
+        if key == "kept" and isinstance(facts.get((rid, "support")), int) and v > facts[(rid, "support")]:
+            raise TheoryFileError(f"{where}: general rule {rid}: {v} pours kept of "
+                                  f"{facts[(rid, 'support')]} described")

@@ -260,3 +260,34 @@ def test_the_same_why_not_is_said_once(cli) -> None:
     assert r.out.count("why not: as for destination_still_approach") == 8
     assert "also needs pour_near_rim (instead of pour_to_side)" in r.out
     assert len(r.out.splitlines()) < 40
+
+
+GENERAL = """rule(g0_no_spill, defeasible, no_spill).
+learned(g0_no_spill).
+provenance(g0_no_spill, layer, general).
+provenance(g0_no_spill, support, 60).
+provenance(g0_no_spill, kept, 50).
+provenance(g0_no_spill, confidence_permille, 700).
+rule(g1_no_spill, defeasible, neg(no_spill)).
+body(g1_no_spill, pour_to_side).
+learned(g1_no_spill).
+provenance(g1_no_spill, layer, general).
+"""
+
+
+@pytest.mark.parametrize("old,new,line,what", [
+    ("body(g1_no_spill, pour_to_side)", "body(g1_no_spill, pour_form_side)", 8,
+     "pour_form_side is not a proposition of the vocabulary"),
+    ("confidence_permille, 700", "confidence_permille, 1700", 6, "is 0 to 1000, not 1700"),
+    ("kept, 50", "kept, 70", 5, "70 pours kept of 60 described"),
+    ("rule(g1_no_spill, defeasible, neg(no_spill))", "rule(g1_no_spill, defeasible, neg(no_spil))",
+     7, "no_spil is not an expectation"),
+])
+def test_malformed_general_rules_name_file_and_line(cli, tmp_path: Path, old, new, line, what) -> None:
+    good = tmp_path / "good.pl"
+    good.write_text(GENERAL)
+    assert cli("ask", "--props", "pour_to_side", "--theory", str(good)).code == 0
+    bad = tmp_path / "bad.pl"
+    bad.write_text(GENERAL.replace(old, new))
+    msg = assert_one_line_error(cli("ask", "--props", "pour_to_side", "--theory", str(bad)))
+    assert f"{bad}:{line}: " in msg and what in msg
