@@ -25,7 +25,6 @@ from pathlib import Path
 import numpy as np
 
 HERE = Path(__file__).resolve().parent
-QUESTIONS = HERE / "data" / "questions.json"
 STORE = HERE.parent / "generalization.sqlite"
 WORKERS = 2
 ANTECEDENTS, SAMPLES = 25, 31        # the exploration's budget: 775 pours
@@ -45,7 +44,9 @@ class Pours:
 
 
 def questions() -> list[dict]:
-    return json.loads(QUESTIONS.read_text())["questions"]
+    from pantarhei.bridge.evaluation.questions import questions as asked
+
+    return [{"text": q.text, "antecedent": list(q.antecedent)} for q in asked()]
 
 
 def draw(seed: int = SEED) -> dict[str, Pours]:
@@ -83,47 +84,23 @@ def simulate(sets: dict[str, Pours], store: Path = STORE, workers: int = WORKERS
     return sets
 
 
-def one_hot(scenes) -> np.ndarray:
-    from pantarhei.bridge.evaluation.measures import one_hot as oh
-
-    return oh(scenes)
-
-
 def baselines(train_scenes, Y: np.ndarray, test_scenes, seed: int) -> dict[str, np.ndarray]:
-    """A decision tree and gradient boosting per expectation, from the same
-    features (one-hot propositions), predicting the test scenes."""
-    from sklearn.ensemble import GradientBoostingClassifier
-    from sklearn.tree import DecisionTreeClassifier
+    from pantarhei.bridge.evaluation.measures import model_predictions
 
-    X, T = one_hot(train_scenes), one_hot(test_scenes)
-    out = {}
-    for label, make in (("tree", lambda: DecisionTreeClassifier(random_state=seed, min_samples_leaf=3)),
-                        ("boosting", lambda: GradientBoostingClassifier(random_state=seed))):
-        pred = np.empty((len(T), Y.shape[1]), dtype=int)
-        for k in range(Y.shape[1]):
-            if Y[:, k].all() or not Y[:, k].any():
-                pred[:, k] = int(Y[0, k])
-            else:
-                pred[:, k] = make().fit(X, Y[:, k]).predict(T).astype(int)
-        out[label] = pred
-    return out
+    return model_predictions(train_scenes, Y, test_scenes, seed)
 
 
 def key_of(S: np.ndarray, n_questions: int, of: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Per question and expectation: the majority verdict of its pours and
-    whether it is clear (at least 75% agree)."""
-    from pantarhei.bridge.evaluation.measures import verdicts
+    from pantarhei.bridge.evaluation.measures import question_key
 
-    V = verdicts(S)
-    share = np.array([V[of == i].mean(axis=0) for i in range(n_questions)])
-    return share >= 0.5, (share >= 0.75) | (share <= 0.25)
+    return question_key(S, of, n_questions)
 
 
 def question_scores(pred: np.ndarray, key: np.ndarray, clear: np.ndarray) -> tuple[float, float]:
-    decided = (pred != -1) & clear
-    cov = decided.sum() / max(clear.sum(), 1)
-    acc = ((pred == key) & decided).sum() / max(decided.sum(), 1)
-    return float(cov), float(acc)
+    from pantarhei.bridge.evaluation.measures import question_scores as scores
+
+    s = scores(pred, key, clear)
+    return s["coverage"], s["accuracy"]
 
 
 def in_prior_support(P: np.ndarray, bodies) -> list[int]:

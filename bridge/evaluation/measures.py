@@ -106,6 +106,49 @@ def tree_predictions(train: Sequence[Sequence[str]], train_verdicts: np.ndarray,
     return out
 
 
+def model_predictions(train: Sequence[Sequence[str]], train_verdicts: np.ndarray,
+                      test: Sequence[Sequence[str]], seed: int) -> dict[str, np.ndarray]:
+    """The learned-model baselines: a decision tree and gradient boosting
+    per expectation (scikit-learn), trained on scenes as one-hot
+    propositions (for pours, their descriptions), predicting the test scenes.
+    Both always decide."""
+    from sklearn.ensemble import GradientBoostingClassifier
+    from sklearn.tree import DecisionTreeClassifier
+
+    y = np.asarray(train_verdicts, dtype=bool)
+    X, T = one_hot(train), one_hot(test)
+    makers = {"tree": lambda: DecisionTreeClassifier(random_state=seed, min_samples_leaf=3),
+              "boosting": lambda: GradientBoostingClassifier(random_state=seed)}
+    out = {}
+    for label, make in makers.items():
+        pred = np.empty((len(T), y.shape[1]), dtype=int)
+        for k in range(y.shape[1]):
+            if y[:, k].all() or not y[:, k].any():
+                pred[:, k] = int(y[0, k])
+            else:
+                pred[:, k] = make().fit(X, y[:, k]).predict(T).astype(int)
+        out[label] = pred
+    return out
+
+
+def question_key(S: np.ndarray, of: np.ndarray, n_questions: int) -> tuple[np.ndarray, np.ndarray]:
+    """Per question and expectation: the majority verdict of the question's
+    pours (`of[i]` is the question of pour i), and whether it is clear (at
+    least 75% of them agree)."""
+    V = verdicts(S)
+    share = np.array([V[of == i].mean(axis=0) for i in range(n_questions)])
+    return share >= 0.5, (share >= 0.75) | (share <= 0.25)
+
+
+def question_scores(predictions: np.ndarray, key: np.ndarray, clear: np.ndarray) -> dict[str, float]:
+    """Coverage (decided among the clear cases) and accuracy (right among
+    the decided clear cases) of predictions of the questions."""
+    decided = (np.asarray(predictions) != UNKNOWN) & clear
+    right = ((np.asarray(predictions) == HOLDS) == key) & decided
+    return {"clear": int(clear.sum()), "coverage": float(decided.sum() / max(clear.sum(), 1)),
+            "accuracy": float(right.sum() / max(decided.sum(), 1))}
+
+
 def distinct_behaviours(consequents: np.ndarray) -> int:
     """How many distinct qualitative behaviours (distinct rows of verdicts)."""
     rows = np.asarray(consequents, dtype=bool)

@@ -125,6 +125,9 @@ class Evaluation:
     heldout: dict[str, Any] = field(default_factory=dict)
     curves: dict[str, Any] = field(default_factory=dict)
     behaviours: dict[str, int] = field(default_factory=dict)
+    #: The general theory (both layers as shipped, and the general rules alone)
+    #: against the models, per method's pours: held-out and one-phrase questions.
+    general: dict[str, Any] = field(default_factory=dict)
     paper_rules: list[dict[str, Any]] = field(default_factory=list)
     plans: list[dict[str, Any]] = field(default_factory=list)
     simulations: dict[str, int] = field(default_factory=dict)
@@ -137,7 +140,7 @@ class Evaluation:
     def as_dict(self) -> dict[str, Any]:
         return {k: getattr(self, k) for k in
                 ("theory", "oracle", "settings", "budget", "reproduced", "kept_all", "heldout", "curves", "behaviours",
-                 "paper_rules", "plans", "simulations", "seconds")}
+                 "general", "paper_rules", "plans", "simulations", "seconds")}
 
     @property
     def plan_rate(self) -> float | None:
@@ -218,6 +221,8 @@ def evaluate(opts: Options) -> Evaluation:
         final_theories(ev, learned.theory, {"curiosity": curiosity, "random": rnd}, held,
                        samples, mode, opts.seed)
         ev.seconds["predicting"] = round(time.monotonic() - t, 1)
+        general_theories(ev, learned.theory, {"curiosity": curiosity, "random": rnd}, held,
+                         run, opts.seed)
         ev.paper_rules = _paper_rules(learned.theory, run, opts)
         ev.plans = _plans(learned.theory, run, opts)
     finally:
@@ -322,6 +327,56 @@ def final_theories(ev: Evaluation, theory: Theory, methods: dict[str, Pours], he
         ev.heldout[name] = out
 
 
+def general_theories(ev: Evaluation, theory: Theory, methods: dict[str, Pours], held: dict,
+                     run: Simulations, seed: int) -> None:
+    """The general theory against the learned models, side by side: for
+    each method's pours, the general rules learned from them, a decision
+    tree and gradient boosting trained on the same pours (their
+    descriptions, one-hot), on the uniform held-out scenes and on the
+    one-phrase questions (majority of their own pours); and the shipped
+    theory (both layers, by SWI-Prolog) on the same."""
+    from pantarhei.bridge.evaluation.measures import model_predictions, question_key, question_scores
+    from pantarhei.bridge.evaluation.questions import question_pours, questions
+    from pantarhei.bridge.learning.generalize import Settings, generalize
+    from pantarhei.oracle.generative import describe
+
+    t = time.monotonic()
+    asked = questions()
+    P_q, of = question_pours(asked, seed)
+    S_q = run("questions", P_q)
+    ok = np.all(np.isfinite(S_q), axis=1)
+    key, clear = question_key(S_q[ok], of[ok], len(asked))
+    scenes = [q.antecedent for q in asked]
+    sel, y = held["uniform"]
+    names = load_vocabulary().expectation_names
+    out: dict[str, Any] = {"questions": [{"text": q.text, "antecedent": list(q.antecedent)}
+                                         for q in asked],
+                           "key": key.astype(int).tolist(), "clear": clear.astype(int).tolist()}
+
+    def scored(pred_held: np.ndarray, pred_q: np.ndarray) -> dict[str, Any]:
+        return {"uniform": accuracy(pred_held, y).as_dict(),
+                "questions": question_scores(pred_q, key, clear),
+                "answers": pred_q.astype(int).tolist()}
+
+    shipped = scored(predict(theory, sel), predict(theory, scenes))
+    shipped["general_rules"] = sum(1 for r in theory.rules if r.id.startswith("g"))
+    out["shipped"] = shipped
+    for method, m in methods.items():
+        okm = np.all(np.isfinite(m.S), axis=1)
+        g = generalize(m.P[okm], m.S[okm], Settings(seed=seed))
+        entry = scored(g.predict(sel), g.predict(scenes))
+        entry["rules_per_expectation"] = len(g.rules) / len(names)
+        entry["rules"] = [{"id": r.id, "body": list(r.body), "head": r.head, "support": r.support,
+                           "kept": r.kept, "confidence": round(r.confidence, 3), "level": r.level}
+                          for r in g.rules]
+        models = model_predictions(describe(m.P[okm]), verdicts(m.S[okm]), sel + scenes, seed)
+        for label, pred in models.items():
+            entry[label] = scored(pred[:len(sel)], pred[len(sel):])
+        out[method] = entry
+    ev.general = out
+    ev.seconds["general"] = round(time.monotonic() - t, 1)
+
+
 def _differing_rules(theory: Theory, heads: np.ndarray) -> list[str]:
     """The learned rules rI_E whose head is not the consequent rebuilt from
     the exploration's pours (none when the theory is reproduced)."""
@@ -362,7 +417,10 @@ def _paper_rules(theory: Theory, run: Simulations, opts: Options) -> list[dict[s
             rows = S[i * opts.paper_samples:(i + 1) * opts.paper_samples]
             rows = rows[np.all(np.isfinite(rows), axis=1)]
             share = float(goals_met(rows, [entry["literal"]]).mean()) if len(rows) else None
-            entry.update(simulated=int(len(rows)), oracle_share=share)
+            majority = None if share is None else (entry["literal"] if share >= 0.5
+                                                   else complement(entry["literal"]))
+            entry.update(simulated=int(len(rows)), oracle_share=share, oracle_majority=majority,
+                         agrees_with_oracle=majority is not None and entry["theory_says"] == majority)
     return out
 
 
