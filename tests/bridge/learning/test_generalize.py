@@ -33,14 +33,19 @@ def hand_made():
     return generalize(P, known_answer(P), Settings(seed=3))
 
 
-@pytest.fixture(scope="module")
-def synthetic():
+def synthetic_pours() -> tuple[np.ndarray, np.ndarray]:
+    """The random baseline's 775 pours (seed 2), scored by the synthetic oracle."""
     _, P = random_exploration(2, 25, 31)
     sim = make_simulator("synthetic", executor="inline", store=None)
     try:
-        S = np.asarray(sim.simulate(P), dtype=float)
+        return P, np.asarray(sim.simulate(P), dtype=float)
     finally:
         sim.close()
+
+
+@pytest.fixture(scope="module")
+def synthetic():
+    P, S = synthetic_pours()
     return generalize(P, S, Settings(seed=2))
 
 
@@ -143,12 +148,7 @@ def test_a_proposition_asked_alone_gets_the_answer_of_its_pours():
 
 
 def test_each_proposition_of_a_body_costs_pours(synthetic):
-    _, P = random_exploration(2, 25, 31)
-    sim = make_simulator("synthetic", executor="inline", store=None)
-    try:
-        S = np.asarray(sim.simulate(P), dtype=float)
-    finally:
-        sim.close()
+    P, S = synthetic_pours()
     free = generalize(P, S, Settings(seed=2, penalty=0.0))
 
     def mean_body(g):
@@ -164,12 +164,7 @@ def test_every_variant_of_the_logic_decides_alike():
     from pantarhei.bridge.reasoning.answers import what_happens
     from pantarhei.bridge.reasoning.logic import ALL_SEMANTICS
 
-    _, P = random_exploration(2, 25, 31)
-    sim = make_simulator("synthetic", executor="inline", store=None)
-    try:
-        S = np.asarray(sim.simulate(P), dtype=float)
-    finally:
-        sim.close()
+    P, S = synthetic_pours()
     # free bodies give more rules, and conflicts between incomparable ones
     synthetic = generalize(P, S, Settings(seed=2, penalty=0.0))
     theory = synthetic.theory("synthetic")
