@@ -66,6 +66,32 @@ test(rule_facts_and_theory_file, [setup(tmp_file(theory, F)), cleanup(delete_fil
     explore_plt_theory:rule(r2_no_spill, defeasible, neg(no_spill)),
     explore_plt_theory:setting(oracle_version, "1").
 
+test(modify_past_beyond_one_rank) :-
+    modify_past([pour_mid_height, pour_steeply_tilted], [move(no_spill, pour_z, down, 40)], [], New),
+    findall(P, member(mod(P, no_spill, pour_z, down), New), Ps),
+    msort(Ps, [[pour_below_rim, pour_steeply_tilted], [pour_low, pour_steeply_tilted]]).
+
+test(modify_past_farthest_when_none_passes) :-
+    modify_past([pour_mid_height, pour_steeply_tilted], [move(e, pour_z, down, -100)], [], New),
+    New == [mod([pour_below_rim, pour_steeply_tilted], e, pour_z, down)],
+    modify_past([pour_mid_height, pour_steeply_tilted], [move(e, pour_z, down, -100)],
+                [[pour_below_rim, pour_steeply_tilted]], New2),
+    New2 == [mod([pour_low, pour_steeply_tilted], e, pour_z, down)].
+
+test(modify_past_valid_new_and_past_the_flip,
+     [forall(member(A-X-S-F, [[]-pour_x-up-150, [pour_low]-particle_mass-up-5000,
+                              [pour_mid_height, pour_near_rim]-pour_y-up-30]))]) :-
+    modify_past(A, [move(e, X, S, F)], [A], New),
+    New \== [],
+    parameter_mean(A, X, M0),
+    forall(member(mod(P, e, X, S), New),
+           ( valid_antecedent(P), P \== A,
+             parameter_mean(P, X, M1),
+             ( S == up -> M1 > M0 ; M1 < M0 ) )).
+
+test(bad_curiosity, [true(R = error(_))]) :-
+    explore_result([curiosity(wild)], R).
+
 test(explore_without_the_bridge_says_so, [throws(exploration_error(_))]) :-
     explore([oracle(synthetic), max_rules(1)]).
 
