@@ -8,8 +8,8 @@ import sys
 import time
 
 #: The benchmark modules, in the order the loop runs: the world, the
-#: exploration, the reasoning.
-MODULES = ("oracle", "exploration", "reasoning")
+#: exploration and what it discovers, the reasoning.
+MODULES = ("oracle", "exploration", "discovery", "reasoning")
 
 
 def main() -> int:
