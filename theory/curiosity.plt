@@ -1,4 +1,5 @@
 :- begin_tests(curiosity).
+:- use_module(library(http/json)).
 
 :- use_module(curiosity).
 :- use_module(validity).
@@ -88,6 +89,24 @@ test(modify_past_valid_new_and_past_the_flip,
            ( valid_antecedent(P), P \== A,
              parameter_mean(P, X, M1),
              ( S == up -> M1 > M0 ; M1 < M0 ) )).
+
+test(unseen_behaviour_first,
+     [ setup(assertz((bridge:exploration_predict(Req, Reply) :- fake_predict(Req, Reply)))),
+       cleanup(retractall(bridge:exploration_predict(_, _))) ]) :-
+    Best = _{followed:[_{antecedent:a1,
+                         directions:[_{expectation:no_spill,
+                                       moves:[_{parameter:pour_z, sign:down, flip:40}]}]}]},
+    Explored = [ant(a1, [pour_mid_height, pour_steeply_tilted], none, initial)],
+    curiosity:discover_added(Best, Explored, [], Added),
+    Added == [ cand([pour_low, pour_steeply_tilted], a1, via(no_spill, pour_z, down)),
+               cand([pour_below_rim, pour_steeply_tilted], a1, via(no_spill, pour_z, down)) ].
+
+%   A stand-in for the bridge: only antecedents with pour_low are predicted
+%   to show a behaviour not seen yet.
+fake_predict(Req, Reply) :-
+    atom_json_dict(Req, D, [value_string_as(atom)]),
+    findall(U, ( member(C, D.candidates), ( memberchk(pour_low, C) -> U = true ; U = false ) ), Us),
+    atom_json_dict(Reply, _{unseen:Us}, [width(0)]).
 
 test(bad_curiosity, [true(R = error(_))]) :-
     explore_result([curiosity(wild)], R).
