@@ -636,7 +636,8 @@ string_value(V, S) :- ( string(V) -> S = V ; atom_string(V, S) ).
 %   ant(Id, Props, Parent, Via) and its qualified outcome (a dict with
 %   `outcomes`, a list of dicts with expectation, holds, confidence_permille
 %   and score_permille, and the antecedent's `simulations` and
-%   `weight_mass_permille`), one defeasible rule per outcome literal, its
+%   `weight_mass_permille`, and for the discovering curiosity `batches`,
+%   its batches of pours), one defeasible rule per outcome literal, its
 %   body facts, learned/1 and its provenance.
 rule_facts(Explored, Qualified, Facts) :-
     foldl(antecedent_facts(Qualified), Explored, Fs, []),
@@ -651,7 +652,11 @@ outcome_facts(AId, Props, Parent, Via, Q, O, Facts, Tail) :-
     atomic_list_concat([r, Num, '_', O.expectation], Id),
     (   O.holds == true -> Head = O.expectation ; Head = neg(O.expectation) ),
     findall(body(Id, P), member(P, Props), Bodies),
-    via_facts(Id, Via, ViaFacts),
+    via_facts(Id, Via, ViaFacts0),
+    (   get_dict(batches, Q, B)
+    ->  ViaFacts = [provenance(Id, batches, B)|ViaFacts0]
+    ;   ViaFacts = ViaFacts0
+    ),
     Prov = [ provenance(Id, antecedent, AId),
              provenance(Id, parent, Parent),
              provenance(Id, simulations, Q.simulations),

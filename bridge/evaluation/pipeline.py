@@ -62,6 +62,9 @@ class Learned:
     theory: Theory
     settings: dict[str, list[Any]]
     antecedents: list[tuple[str, ...]]      # explored, in order: a1, a2, ...
+    #: Batches of `samples` pours of each explored antecedent (more than one
+    #: where the discovering curiosity sampled an undecided antecedent again).
+    batches: list[int] = field(default_factory=list)
 
     def setting(self, key: str, default: Any = None) -> Any:
         values = self.settings.get(key)
@@ -91,7 +94,14 @@ def read_learned(path: Path | str) -> Learned:
     order = sorted(bodies)
     if order != list(range(1, len(order) + 1)):
         raise UserError(f"{path}: the explored antecedents are not a1..a{len(order)}")
-    return Learned(path, theory, settings, [bodies[i] for i in order])
+    batches: dict[int, int] = {}
+    for a in facts.get("provenance", []):
+        if len(a) == 3 and literal_text(a[1]) == "batches":
+            i = antecedent_index(of_rule.get(literal_text(a[0]), ""))
+            if i is not None:
+                batches[i] = int(a[2])
+    return Learned(path, theory, settings, [bodies[i] for i in order],
+                   [batches.get(i, 1) for i in order])
 
 
 # -- the run -------------------------------------------------------------------
@@ -182,10 +192,22 @@ class Simulations:
 @dataclass
 class Pours:
     """The pours of one way of choosing antecedents: the antecedents in
-    order, `samples` pours each, and their scores."""
+    order, their pours in that order, and their scores. `ends[k]` is the
+    number of pours of the first k + 1 antecedents (`samples` each unless
+    an antecedent had more batches)."""
     antecedents: list[tuple[str, ...]]
     P: np.ndarray
     S: np.ndarray
+    ends: list[int] = field(default_factory=list)
+
+    def __post_init__(self) -> None:
+        if not self.ends and self.antecedents:
+            each = len(self.P) // len(self.antecedents)
+            self.ends = [each * (k + 1) for k in range(len(self.antecedents))]
+
+    def upto(self, pours: int) -> int:
+        """How many antecedents have all their pours among the first `pours`."""
+        return sum(1 for e in self.ends if e <= pours)
 
 
 def evaluate(opts: Options) -> Evaluation:
@@ -197,7 +219,7 @@ def evaluate(opts: Options) -> Evaluation:
     samples = int(learned.setting("samples"))
     ev = Evaluation(theory=_shown(opts.theory), oracle=oracle,
                     settings={k: (v if len(v) > 1 else v[0]) for k, v in learned.settings.items()},
-                    budget=len(learned.antecedents) * samples, explored=list(learned.antecedents))
+                    budget=sum(learned.batches) * samples, explored=list(learned.antecedents))
     from pantarhei.bridge.exploration.simulation import open_simulator, oracle_identity
 
     version, _ = oracle_identity(oracle)
@@ -208,7 +230,7 @@ def evaluate(opts: Options) -> Evaluation:
     try:
         run = Simulations(sim, ev, opts.progress)
         curiosity = exploration_pours(learned, run, ev)
-        rnd = random_exploration_pours(opts.seed, len(learned.antecedents), samples, run)
+        rnd = random_exploration_pours(opts.seed, sum(learned.batches), samples, run)
         held = heldout_scenes(opts, curiosity.antecedents, rnd.antecedents, run)
         t = time.monotonic()
         _say("predicting the held-out scenes with every theory along the budget")
@@ -231,8 +253,12 @@ def exploration_pours(learned: Learned, run: Simulations, ev: Evaluation) -> Pou
     samples, seed = int(learned.setting("samples")), int(learned.setting("seed"))
     mode = str(learned.setting("qualify", "weighted"))
     explored = learned.antecedents
-    P = np.vstack([sample(list(a), samples, iteration_seed(seed, i))
-                   for i, a in enumerate(explored, start=1)])
+    # the pours of each antecedent's batches, in the iterations they were drawn
+    iterations = np.cumsum([0] + learned.batches[:-1]) + 1
+    P = np.vstack([sample(list(a), samples, iteration_seed(seed, int(first) + b))
+                   for a, first, n in zip(explored, iterations, learned.batches)
+                   for b in range(n)])
+    ends = list(np.cumsum(learned.batches) * samples)
     S = run("exploration", P)
     ev.explored_consequents = consequents(explored, P, S, mode)
     ok = np.all(np.isfinite(S), axis=1)
@@ -240,7 +266,7 @@ def exploration_pours(learned: Learned, run: Simulations, ev: Evaluation) -> Pou
     ev.best_samples = [P[ok][int(np.argmax(W[i]))] for i in range(len(explored))]
     ev.kept_all = []
     for i in range(len(explored)):
-        rows = S[i * samples:(i + 1) * samples]
+        rows = S[(ends[i - 1] if i else 0):ends[i]]
         rows = rows[np.all(np.isfinite(rows), axis=1)]
         ev.kept_all.append(float((rows > 0.5).all(axis=1).mean()) if len(rows) else None)
     differ = _differing_rules(learned.theory, ev.explored_consequents)
@@ -248,7 +274,7 @@ def exploration_pours(learned: Learned, run: Simulations, ev: Evaluation) -> Pou
     if differ:
         _say(f"{len(differ)} rules of the theory differ from those its own pours give here "
              f"(first: {differ[0]}): another oracle build, or a theory edited by hand")
-    return Pours(list(explored), P, S)
+    return Pours(list(explored), P, S, [int(e) for e in ends])
 
 
 def random_exploration_pours(seed: int, count: int, samples: int, run: Simulations) -> Pours:
@@ -286,12 +312,15 @@ def heldout_scenes(opts: Options, explored: Sequence[tuple[str, ...]],
 def curves(ev: Evaluation, methods: dict[str, Pours], held: dict, samples: int, mode: str) -> None:
     """Behaviours, coverage and accuracy of each method's theory after each
     explored antecedent (the curves over the budget)."""
-    R = min(len(m.antecedents) for m in methods.values())
+    R = min(len(m.P) for m in methods.values()) // samples
     out: dict[str, Any] = {"budget": [k * samples for k in range(1, R + 1)]}
     for method, m in methods.items():
         beh, cov, acc = [], {k: [] for k in held}, {k: [] for k in held}
-        for k in range(1, R + 1):
-            heads = consequents(m.antecedents[:k], m.P[:k * samples], m.S[:k * samples], mode)
+        for r in range(1, R + 1):
+            # the antecedents whose pours are all within the budget so far
+            k = max(1, m.upto(r * samples))
+            end = m.ends[k - 1]
+            heads = consequents(m.antecedents[:k], m.P[:end], m.S[:end], mode)
             beh.append(distinct_behaviours(heads))
             th = theory_of(m.antecedents[:k], heads, f"{method}@{k}")
             for name, (sel, y) in held.items():
@@ -319,7 +348,7 @@ def final_theories(ev: Evaluation, theory: Theory, methods: dict[str, Pours], he
         for label, th in final.items():
             out[f"{label}_theory"] = accuracy(predict(th, sel), y).as_dict()
         for label, m in methods.items():
-            X = [a for a in m.antecedents for _ in range(samples)]
+            X = [a for a, n in zip(m.antecedents, np.diff([0, *m.ends])) for _ in range(int(n))]
             okr = np.all(np.isfinite(m.S), axis=1)
             Xk = [x for x, o in zip(X, okr) if o]
             out[f"{label}_tree"] = accuracy(

@@ -380,6 +380,12 @@ class Host:
         out = []
         for i, e in enumerate(entries):
             out.append({"id": str(e["id"]), **consequent(S, W[i], mode)})
+        if s.settings.get("curiosity") == "discover":   # batches of pours per antecedent
+            counts: dict[str, int] = {}
+            for t in s.trace:
+                counts[str(t["id"])] = counts.get(str(t["id"]), 0) + 1
+            for o in out:
+                o["batches"] = counts.get(o["id"], 1)
         failed = int((~s.valid).sum())
         return {"antecedents": out, "simulations": len(s.params), "failed": failed,
                 "oracle_version": s.oracle_version}
