@@ -33,6 +33,7 @@ from pantarhei.theory.lexicon import load_vocabulary
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.evaluation.heldout import near_antecedents, random_antecedents
+from pantarhei.bridge.evaluation.map_elites import behaviours_seen
 from pantarhei.bridge.evaluation.measures import (accuracy, distinct_behaviours, tree_predictions,
                                                   verdicts)
 from pantarhei.bridge.evaluation.rule_building import consequents, predict, theory_of
@@ -118,6 +119,8 @@ class Options:
     workers: int | None = None
     ray_address: str | None = None
     progress: bool = True
+    #: Also spend the budget on random pours from the prior and on MAP-Elites.
+    baselines: bool = True
 
 
 @dataclass
@@ -134,6 +137,8 @@ class Evaluation:
     heldout: dict[str, Any] = field(default_factory=dict)
     curves: dict[str, Any] = field(default_factory=dict)
     behaviours: dict[str, int] = field(default_factory=dict)
+    #: Per search method: distinct nine-verdict vectors among its pours, each seen twice.
+    behaviours_seen: dict[str, int] = field(default_factory=dict)
     paper_rules: list[dict[str, Any]] = field(default_factory=list)
     plans: list[dict[str, Any]] = field(default_factory=list)
     simulations: dict[str, int] = field(default_factory=dict)
@@ -145,7 +150,7 @@ class Evaluation:
 
     def as_dict(self) -> dict[str, Any]:
         return {k: getattr(self, k) for k in
-                ("theory", "oracle", "settings", "budget", "reproduced", "kept_all", "heldout", "curves", "behaviours",
+                ("theory", "oracle", "settings", "budget", "reproduced", "kept_all", "heldout", "curves", "behaviours", "behaviours_seen",
                  "paper_rules", "plans", "simulations", "seconds")}
 
     @property
@@ -176,16 +181,19 @@ class Simulations:
         self.sim, self.ev, self.progress = sim, ev, progress
         self.width = len(load_vocabulary().expectations)
 
-    def __call__(self, label: str, P: np.ndarray) -> np.ndarray:
+    def __call__(self, label: str, P: np.ndarray, say: bool = True) -> np.ndarray:
+        """Simulate P as (part of) the stage `label`: its pours and seconds add up."""
         t = time.monotonic()
+        sims, secs = self.ev.simulations, self.ev.seconds
         if not len(P):
-            self.ev.simulations[label] = 0
-            self.ev.seconds[label] = 0.0
+            sims.setdefault(label, 0)
+            secs.setdefault(label, 0.0)
             return np.empty((0, self.width))
-        _say(f"{label}: {len(P)} pours")
-        S = np.asarray(self.sim.simulate(P, progress=self.progress), dtype=float)
-        self.ev.simulations[label] = int(self.sim.last_simulated)
-        self.ev.seconds[label] = round(time.monotonic() - t, 1)
+        if say:
+            _say(f"{label}: {len(P)} pours")
+        S = np.asarray(self.sim.simulate(P, progress=self.progress and say), dtype=float)
+        sims[label] = sims.get(label, 0) + int(self.sim.last_simulated)
+        secs[label] = round(secs.get(label, 0.0) + time.monotonic() - t, 1)
         return S
 
 
@@ -231,6 +239,10 @@ def evaluate(opts: Options) -> Evaluation:
         run = Simulations(sim, ev, opts.progress)
         curiosity = exploration_pours(learned, run, ev)
         rnd = random_exploration_pours(opts.seed, sum(learned.batches), samples, run)
+        ev.behaviours_seen = {"curiosity": behaviours_seen(curiosity.S),
+                              "random": behaviours_seen(rnd.S)}
+        if opts.baselines:
+            ev.behaviours_seen.update(search_baselines(opts.seed, ev.budget, samples, run))
         held = heldout_scenes(opts, curiosity.antecedents, rnd.antecedents, run)
         t = time.monotonic()
         _say("predicting the held-out scenes with every theory along the budget")
@@ -284,6 +296,18 @@ def random_exploration_pours(seed: int, count: int, samples: int, run: Simulatio
     P = np.vstack([sample(list(a), samples, iteration_seed(seed + 7919, i))
                    for i, a in enumerate(ants, start=1)])
     return Pours(ants, P, run("random exploration", P))
+
+
+def search_baselines(seed: int, budget: int, samples: int, run: Simulations) -> dict[str, int]:
+    """Behaviours seen by two searches that build no theory, with the same
+    budget: random pours from the prior, and MAP-Elites (pyribs) over the
+    30 parameters with the nine verdicts as its cells."""
+    from pantarhei.bridge.evaluation.map_elites import map_elites
+
+    prior = run("random pours", sample([], budget, iteration_seed(seed + 7919, 0)))
+    _say(f"MAP-Elites: {budget} pours in batches of {samples}")
+    qd = map_elites(lambda P: run("MAP-Elites", P, say=False), budget, seed, batch=samples)
+    return {"prior": behaviours_seen(prior), "map_elites": behaviours_seen(qd.S)}
 
 
 def heldout_scenes(opts: Options, explored: Sequence[tuple[str, ...]],

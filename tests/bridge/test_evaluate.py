@@ -123,6 +123,15 @@ def test_plans_and_paper_rules_are_checked_in_simulation(evaluated):
         assert r["simulated"] == 5 and 0 <= r["oracle_share"] <= 1
 
 
+def test_behaviours_seen_by_every_search_method_with_the_same_budget(evaluated):
+    ev, _ = evaluated
+    assert set(ev.behaviours_seen) == {"curiosity", "random", "prior", "map_elites"}
+    assert ev.simulations["random pours"] + ev.simulations["MAP-Elites"] <= 2 * ev.budget
+    assert ev.simulations["MAP-Elites"] > 0
+    for method, seen in ev.behaviours_seen.items():
+        assert 1 <= seen <= ev.budget // 2, method
+
+
 def test_the_report_and_its_figures(evaluated, tmp_path):
     from pantarhei.bridge.evaluation.report import headline, write
 
@@ -137,6 +146,7 @@ def test_the_report_and_its_figures(evaluated, tmp_path):
     assert json.loads((tmp_path / "rep" / "evaluation.json").read_text())["budget"] == 72
     for measure, value, target, met in headline(ev):
         assert f"| {measure} | {value} |" in text
+    assert f"| MAP-Elites (pyribs) | {ev.behaviours_seen['map_elites']} |" in text
 
 
 def test_evaluate_command_end_to_end(learned, tmp_path):
