@@ -602,29 +602,27 @@ setting_facts(Settings, Reply, Stop, Explored, Left, Facts) :-
     Permille is round(Settings.threshold * 1000),
     RidgePermille is round(Settings.ridge * 1000),
     string_value(Reply.oracle_version, Version),
-    Facts0 = [ setting(oracle, Settings.oracle),
+    (   Settings.curiosity == discover
+    ->  Threshold = [ setting(curiosity, discover),
+                      setting(significance_permille, Permille),
+                      setting(permutations, Settings.permutations),
+                      setting(resample, Settings.resample) ]
+    ;   Threshold = [ setting(threshold_permille, Permille) ]
+    ),
+    append([ [ setting(oracle, Settings.oracle),
                setting(oracle_version, Version),
                setting(seed, Settings.seed),
                setting(samples, Settings.samples),
-               setting(max_rules, Settings.max_rules),
-               setting(threshold_permille, Permille),
-               setting(breadth, Settings.breadth),
+               setting(max_rules, Settings.max_rules) ],
+             Threshold,
+             [ setting(breadth, Settings.breadth),
                setting(ridge_permille, RidgePermille),
                setting(qualify, Settings.qualify),
                setting(explored, N),
                setting(simulations, Reply.simulations),
                setting(failed_simulations, Reply.failed),
                setting(stopped, Stop),
-               setting(a_new_left, Left) ],
-    (   Settings.curiosity == discover
-    ->  Facts1 = [ setting(curiosity, discover),
-                   setting(significance_permille, Permille),
-                   setting(permutations, Settings.permutations),
-                   setting(resample, Settings.resample)
-                 | Rest0 ],
-        exclude(==(setting(threshold_permille, Permille)), Facts0, Rest0)
-    ;   Facts1 = Facts0
-    ),
+               setting(a_new_left, Left) ] ], Facts1),
     findall(setting(initial, P), member(P, Settings.initial), Initial),
     append(Facts1, Initial, Facts).
 

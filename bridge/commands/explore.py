@@ -91,7 +91,9 @@ def explore(args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         raise UserError("interrupted: the state is saved after every explored antecedent; "
                         "the same command with --resume continues", exit_code=130) from None
-    why = {"a_new_empty": "A_new is empty", "max_rules": f"{args.max_rules} rules"}.get(
+    budget = (f"{args.max_rules} rules" if args.curiosity == "paper"
+              else f"{args.max_rules} batches of pours")
+    why = {"a_new_empty": "A_new is empty", "max_rules": budget}.get(
         result.get("stopped", ""), result.get("stopped", ""))
     print(f"explored {result['explored']} antecedents with {result['simulations']} simulations "
           f"({result['failed']} failed); stopped: {why}")
