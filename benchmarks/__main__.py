@@ -8,8 +8,8 @@ import sys
 import time
 
 #: The benchmark modules, in the order the loop runs: the world, the
-#: exploration, the reasoning, the general theory.
-MODULES = ("oracle", "exploration", "reasoning", "generalization")
+#: exploration and what it discovers, the reasoning, the general theory.
+MODULES = ("oracle", "exploration", "discovery", "reasoning", "generalization")
 
 
 def main() -> int:

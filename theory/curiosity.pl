@@ -7,6 +7,7 @@
             describe/2,               % +Row, -Props
             direction/3,              % +Gradient, +MeanScore, -Direction
             modify/5,                 % +Props, +Direction, +Breadth, +Exclude, -New
+            modify_past/4,            % +Props, +Moves, +Exclude, -New
             parameter_mean/3,         % +Props, +Param, -Mean
             rule_facts/3,             % +Learned, +Qualified, -Facts
             write_theory/3            % +File, +Settings, +Facts
@@ -24,6 +25,7 @@ predicates of the module =bridge=, which `pantarhei explore` and
   - bridge:exploration_begin(+Settings, -Begun)
   - bridge:exploration_simulate(+Request, -Reply)
   - bridge:exploration_best_plane(+Request, -Reply)
+  - bridge:exploration_predict(+Request, -Reply)
   - bridge:exploration_qualify(+Request, -Reply)
   - bridge:exploration_checkpoint(+Request, -Reply)
   - bridge:exploration_end(+Request, -Reply)
@@ -40,6 +42,20 @@ cand(Props, Parent, Via) in the order they were added (A_new is a queue:
 pop takes the oldest). Via is `initial`, or via(Expectation, Param, Sign)
 for the plane, parameter and sign (up or down) that produced it. The state
 is saved after every explored antecedent, so an exploration can resume.
+
+Two curiosities share the loop (option curiosity/1):
+
+  - `paper`: Algorithm 1 as the paper states it. The steepest plane of all
+    explored antecedents is followed when its slope exceeds the threshold,
+    and modify/5 moves the parameters of its largest gradient components by
+    one rank.
+  - `discover` (the default): a plane's slopes count only where they beat
+    shuffles of the same weighted pours (a permutation test at the
+    significance level given as threshold), and modify_past/4 proposes, for
+    every significant plane of the chosen antecedent and every significant
+    parameter of it, the antecedents whose propositions move the pours past
+    the point where the plane's verdict flips; those whose behaviour the
+    plane predicts to be unseen so far are queued first.
 */
 
 :- use_module(library(apply)).
@@ -85,10 +101,16 @@ load_defaults :-
 %     - max_rules(+N)*: stop after N explored antecedents
 %     - samples(+N): simulations per explored antecedent (default: the
 %       number of parameters plus one)
-%     - threshold(+X)*: the slope below which nothing new is explored
+%     - curiosity(+Mode)*: discover or paper (see the module's documentation)
+%     - threshold(+X)*: for discover, the significance level of the
+%       permutation test (default significance_permille); for paper, the
+%       slope below which nothing new is explored (default threshold_permille)
+%     - permutations(+N)*: shuffles of the permutation test (discover)
+%     - resample(+N)*: more batches of an antecedent whose planes are all
+%       undecided (discover); max_rules then counts batches
 %     - seed(+S)*: seed of every random choice
 %     - initial(+Props)*: a_0 (default_initial/1)
-%     - breadth(+K)*: modify uses the K largest gradient components
+%     - breadth(+K)*: the paper's modify uses the K largest gradient components
 %     - ridge(+X)*: L2 penalty of the plane fits (0 is plain least squares)
 %     - qualify(+Mode)*: weighted or argmax (the paper's rule)
 %     - out(+File)*: the learned theory (relative to theory/)
@@ -144,9 +166,24 @@ settings(Options, S) :-
     aggregate_all(count, parameter(_, _, _, _, _), NParams),
     DefaultSamples is NParams + 1,
     default_initial(DefaultInitial),
-    default(oracle, DOracle), default(max_rules, DMax), default(threshold, DThreshold),
+    default(oracle, DOracle), default(max_rules, DMax), default(threshold, DSlope),
+    default(significance, DLevel),
     default(seed, DSeed), default(breadth, DBreadth), default(ridge, DRidge),
-    default(qualify, DQualify),
+    default(qualify, DQualify), default(curiosity, DCuriosity),
+    default(permutations, DPermutations),
+    option(curiosity(Curiosity), Options, DCuriosity),
+    (   memberchk(Curiosity, [paper, discover])
+    ->  true
+    ;   throw(exploration_error("curiosity: expected paper or discover"))
+    ),
+    (   Curiosity == paper -> DThreshold = DSlope ; DThreshold = DLevel ),
+    option(permutations(Permutations), Options, DPermutations),
+    check_positive(permutations, Permutations),
+    default(resample, DResample),
+    option(resample(Resample), Options, DResample),
+    (   integer(Resample), Resample >= 0 -> true
+    ;   throw(exploration_error("resample: expected a whole number >= 0"))
+    ),
     option(oracle(Oracle), Options, DOracle),
     option(max_rules(Max), Options, DMax),
     option(samples(Samples), Options, DefaultSamples),
@@ -169,6 +206,10 @@ settings(Options, S) :-
     ->  Threshold is float(Threshold0)
     ;   throw(exploration_error("threshold: expected a number >= 0"))
     ),
+    (   Curiosity == discover, Threshold > 1
+    ->  throw(exploration_error("threshold: a significance level is at most 1"))
+    ;   true
+    ),
     (   memberchk(Qualify, [weighted, argmax])
     ->  true
     ;   throw(exploration_error("qualify: expected weighted or argmax"))
@@ -181,7 +222,8 @@ settings(Options, S) :-
     absolute_file_name(Out0, Out),
     S0 = _{oracle:Oracle, max_rules:Max, samples:Samples, threshold:Threshold,
            seed:Seed, initial:Initial, breadth:Breadth, ridge:Ridge, qualify:Qualify,
-           resume:Resume, executor:Executor, progress:Progress, out:Out},
+           resume:Resume, executor:Executor, progress:Progress, out:Out,
+           curiosity:Curiosity, permutations:Permutations, resample:Resample},
     optional(store, Options, S0, S1),
     optional(workers, Options, S1, S2),
     optional(ray_address, Options, S2, S3),
@@ -240,10 +282,12 @@ initial_state(Begun, Settings, S) :-
 %!  loop(+S0, +Settings, -S, -Stop) is det.
 %
 %   Explore antecedents from A_new until it is empty (Stop = a_new_empty)
-%   or max_rules antecedents are explored (Stop = max_rules).
+%   or max_rules batches of simulations are done (Stop = max_rules): as
+%   many antecedents for the paper's curiosity, which samples each once; the
+%   discovering one may sample an undecided antecedent again, and so
+%   explores at most as many with the same budget of pours.
 loop(S0, Settings, S, Stop) :-
-    S0 = st(_, Explored, ANew),
-    length(Explored, N),
+    S0 = st(N, _, ANew),
     (   ANew == []
     ->  S = S0, Stop = a_new_empty
     ;   N >= Settings.max_rules
@@ -253,41 +297,123 @@ loop(S0, Settings, S, Stop) :-
     ).
 
 %   One iteration of Algorithm 1: pop a_c, explore it, fit the planes of
-%   every explored antecedent, and modify the one with the steepest plane.
+%   every explored antecedent, and modify the one with the steepest plane
+%   (for the discovering curiosity: the steepest significant plane).
 step(st(I, Explored, [cand(Props, Parent, Via)|Rest]), Settings, st(I1, Explored1, ANew)) :-
     I1 is I + 1,
-    format(atom(Id), "a~w", [I1]),
-    append(Explored, [ant(Id, Props, Parent, Via)], Explored1),
+    (   Via = more(Id, _)
+    ->  Explored1 = Explored
+    ;   length(Explored, N0),
+        N is N0 + 1,
+        format(atom(Id), "a~w", [N]),
+        append(Explored, [ant(Id, Props, Parent, Via)], Explored1)
+    ),
     call_bridge(exploration_simulate, _{id:Id, antecedent:Props, iteration:I1}, Sim),
     maplist(entry, Explored1, Entries),
     call_bridge(exploration_best_plane, _{antecedents:Entries}, Best),
-    (   Best.slope > Settings.threshold
-    ->  memberchk(ant(Best.antecedent, MProps, _, _), Explored1),
-        dict_pairs(Best.gradient, _, Gradient),
-        direction(Gradient, Best.mean, Direction),
-        findall(P, ( member(ant(_, P, _, _), Explored1) ; member(cand(P, _, _), Rest) ), Exclude),
-        modify(MProps, Direction, Settings.breadth, Exclude, Mods),
-        findall(cand(P, Best.antecedent, via(Best.expectation, X, Sign)),
-                member(mod(P, X, Sign), Mods), Added)
-    ;   Added = []
+    (   Settings.curiosity == discover
+    ->  discover_added(Best, Explored1, Rest, Added),
+        more(Added, Settings, Id, Props, Parent, Via, More)
+    ;   paper_added(Best, Settings, Explored1, Rest, Added),
+        More = []
     ),
-    append(Rest, Added, ANew),
+    append([More, Rest, Added], ANew),
     S1 = st(I1, Explored1, ANew),
     format(string(State), "~k", [S1]),
     length(ANew, Left),
     findall(P, member(cand(P, _, _), Added), AddedProps),
+    dict_pairs(Best.gradient, _, Gradient),
     findall(_{parameter:X, component:G},
-            ( Best.slope > Settings.threshold,
+            ( followed(Best, Settings),
               direction(Gradient, Best.mean, D), top(D, 5, Top), member(X-G, Top) ),
             Dir),
     format(string(ViaText), "~w", [Via]),
+    Best0 = _{antecedent:Best.antecedent, expectation:Best.expectation,
+              slope:Best.slope, mean:Best.mean, direction:Dir},
+    (   Settings.curiosity == discover
+    ->  findall(_{expectation:E, parameters:Xs},
+                ( member(Dn, Best.directions), get_dict(expectation, Dn, E),
+                  get_dict(moves, Dn, Ms),
+                  findall(X, ( member(M, Ms), get_dict(parameter, M, X) ), Xs) ),
+                Planes),
+        BestT = Best0.put(_{significant:Best.significant, planes:Planes})
+    ;   BestT = Best0
+    ),
     Trace = _{iteration:I1, id:Id, antecedent:Props, parent:Parent, via:ViaText,
               simulations:Sim.simulations, failed:Sim.failed,
-              best:_{antecedent:Best.antecedent, expectation:Best.expectation,
-                     slope:Best.slope, mean:Best.mean, direction:Dir},
-              added:AddedProps, a_new:Left},
+              best:BestT, added:AddedProps, a_new:Left},
     call_bridge(exploration_checkpoint, _{iteration:I1, state:State, trace:Trace,
                                           explored:I1, a_new:Left}, _).
+
+%   followed(+Best, +Settings): the best plane is followed (steep enough for
+%   the paper's curiosity, significant for the discovering one).
+followed(Best, Settings) :-
+    (   Settings.curiosity == discover
+    ->  Best.significant == true
+    ;   Best.slope > Settings.threshold
+    ).
+
+%   The paper's step: modify/5 along the steepest plane's signed gradient.
+paper_added(Best, Settings, Explored, Rest, Added) :-
+    (   Best.slope > Settings.threshold
+    ->  memberchk(ant(Best.antecedent, MProps, _, _), Explored),
+        dict_pairs(Best.gradient, _, Gradient),
+        direction(Gradient, Best.mean, Direction),
+        exclusions(Explored, Rest, Exclude),
+        modify(MProps, Direction, Settings.breadth, Exclude, Mods),
+        findall(cand(P, Best.antecedent, via(Best.expectation, X, Sign)),
+                member(mod(P, X, Sign), Mods), Added)
+    ;   Added = []
+    ).
+
+%   more(+Added, +Settings, +Id, +Props, +Parent, +Via, -More): when no
+%   plane led to a new antecedent (none is significant, or its moves are
+%   all explored), the antecedent just explored is sampled again next (at
+%   most `resample` more batches of it): planes that are undecided get more
+%   pours before the exploration moves on or stops.
+more(Added, Settings, Id, Props, Parent, Via, More) :-
+    (   Via = more(_, K) -> true ; K = 0 ),
+    (   Added == [], K < Settings.resample
+    ->  K1 is K + 1,
+        More = [cand(Props, Parent, more(Id, K1))]
+    ;   More = []
+    ).
+
+%   The discovering step: modify_past/4 for every significant plane and
+%   parameter of every antecedent with a significant plane (steepest
+%   first); of each antecedent's new ones, those predicted to show an unseen
+%   behaviour first (each group in modify_past/4's order).
+discover_added(Best, Explored, Rest, Added) :-
+    exclusions(Explored, Rest, Exclude0),
+    foldl(follow(Explored), Best.followed, Exclude0-[], _-RevAdded),
+    append(RevAdded, Added0),
+    Added = Added0.
+
+follow(Explored, F, Exclude0-Acc0, Exclude-[Added|Acc0]) :-
+    get_dict(antecedent, F, AId),
+    get_dict(directions, F, Directions),
+    memberchk(ant(AId, MProps, _, _), Explored),
+    findall(move(E, X, Sign, Flip),
+            ( member(Dn, Directions), get_dict(expectation, Dn, E),
+              get_dict(moves, Dn, Ms), member(M, Ms),
+              get_dict(parameter, M, X), get_dict(sign, M, Sign), get_dict(flip, M, Flip) ),
+            Moves),
+    modify_past(MProps, Moves, Exclude0, Mods),
+    findall(P, member(mod(P, _, _, _), Mods), Cands),
+    (   Cands == []
+    ->  Unseen = []
+    ;   call_bridge(exploration_predict, _{antecedent:AId, candidates:Cands}, Reply),
+        Unseen = Reply.unseen
+    ),
+    findall(cand(P, AId, via(E, X, Sign)),
+            ( nth1(K, Mods, mod(P, E, X, Sign)), nth1(K, Unseen, true) ), First),
+    findall(cand(P, AId, via(E, X, Sign)),
+            ( nth1(K, Mods, mod(P, E, X, Sign)), \+ nth1(K, Unseen, true) ), Then),
+    append(First, Then, Added),
+    append(Exclude0, Cands, Exclude).
+
+exclusions(Explored, Rest, Exclude) :-
+    findall(P, ( member(ant(_, P, _, _), Explored) ; member(cand(P, _, _), Rest) ), Exclude).
 
 entry(ant(Id, Props, _, _), _{id:Id, antecedent:Props}).
 
@@ -378,6 +504,72 @@ candidate(Props, X, D, Props1) :-
     (M1 - M0) * D > 0,
     valid_antecedent(Props1).
 
+%!  modify_past(+Props:list, +Moves:list, +Exclude:list, -New:list) is det.
+%
+%   New lists mod(Props1, Expectation, Param, Sign) for the antecedents
+%   Props1 (sorted) that move the pours of Props past the point where a
+%   plane's verdict flips. Moves lists move(Expectation, Param, Sign, Flip):
+%   the plane of Expectation says its verdict flips where Param passes the
+%   value Flip (theory units) going up or down (Sign). For each move,
+%
+%     - if a proposition of Props draws Param, it is replaced by any other
+%       proposition of its dimension (any rank, not only the next);
+%     - otherwise any proposition that draws Param, of a dimension Props
+%       does not use, is added;
+%
+%   keeping the valid antecedents not in Exclude whose mean of Param lies
+%   past Flip (parameter_mean/3); when none does, those that move the mean
+%   farthest towards it. Each antecedent once (its first move), in the
+%   order of Moves, then of the vocabulary.
+modify_past(Props0, Moves, Exclude, New) :-
+    sort(Props0, Props),
+    foldl(move_mods(Props, Exclude), Moves, [], RevMods),
+    reverse(RevMods, New).
+
+move_mods(Props, Exclude, move(E, X, Sign, Flip), Acc0, Acc) :-
+    parameter_mean(Props, X, M0),
+    findall(Gain-P1,
+            ( candidate_any(Props, X, P1),
+              \+ memberchk(P1, Exclude),
+              parameter_mean(P1, X, M1),
+              signed(Sign, M1 - M0, Gain),
+              Gain > 0,
+              valid_antecedent(P1) ),
+            Moved),
+    signed(Sign, Flip - M0, Need),
+    findall(P1, ( member(G-P1, Moved), G >= Need ), Past),
+    (   Past \== []
+    ->  Chosen = Past
+    ;   Moved == []
+    ->  Chosen = []
+    ;   aggregate_all(max(G), member(G-_, Moved), Far),
+        findall(P1, member(Far-P1, Moved), Chosen)
+    ),
+    foldl(add_move(E, X, Sign), Chosen, Acc0, Acc).
+
+add_move(E, X, Sign, P, Acc0, Acc) :-
+    (   memberchk(mod(P, _, _, _), Acc0) -> Acc = Acc0 ; Acc = [mod(P, E, X, Sign)|Acc0] ).
+
+signed(up, D, V) :- V is D.
+signed(down, D, V) :- V is -(D).
+
+%   candidate_any(+Props, +X, -Props1): Props with the proposition that
+%   draws X replaced by another of its dimension, or, when none draws X,
+%   with a proposition that draws X added from a dimension Props does not use.
+candidate_any(Props, X, Props1) :-
+    (   member(P, Props), model(P, X, _)
+    ->  proposition(P, Dim, _, _),
+        proposition(P1, Dim, _, _),
+        P1 \== P,
+        selectchk(P, Props, Rest),
+        sort([P1|Rest], Props1)
+    ;   findall(Dim, ( member(P, Props), proposition(P, Dim, _, _) ), Dims),
+        proposition(P1, Dim1, _, _),
+        model(P1, X, _),
+        \+ memberchk(Dim1, Dims),
+        sort([P1|Props], Props1)
+    ).
+
 %!  parameter_mean(+Props:list, +Param, -Mean:number) is det.
 %
 %   The mean of Param under the antecedent's generative models (its
@@ -412,22 +604,29 @@ setting_facts(Settings, Reply, Stop, Explored, Left, Facts) :-
     Permille is round(Settings.threshold * 1000),
     RidgePermille is round(Settings.ridge * 1000),
     string_value(Reply.oracle_version, Version),
-    Facts0 = [ setting(oracle, Settings.oracle),
+    (   Settings.curiosity == discover
+    ->  Threshold = [ setting(curiosity, discover),
+                      setting(significance_permille, Permille),
+                      setting(permutations, Settings.permutations),
+                      setting(resample, Settings.resample) ]
+    ;   Threshold = [ setting(threshold_permille, Permille) ]
+    ),
+    append([ [ setting(oracle, Settings.oracle),
                setting(oracle_version, Version),
                setting(seed, Settings.seed),
                setting(samples, Settings.samples),
-               setting(max_rules, Settings.max_rules),
-               setting(threshold_permille, Permille),
-               setting(breadth, Settings.breadth),
+               setting(max_rules, Settings.max_rules) ],
+             Threshold,
+             [ setting(breadth, Settings.breadth),
                setting(ridge_permille, RidgePermille),
                setting(qualify, Settings.qualify),
                setting(explored, N),
                setting(simulations, Reply.simulations),
                setting(failed_simulations, Reply.failed),
                setting(stopped, Stop),
-               setting(a_new_left, Left) ],
+               setting(a_new_left, Left) ] ], Facts1),
     findall(setting(initial, P), member(P, Settings.initial), Initial),
-    append(Facts0, Initial, Facts).
+    append(Facts1, Initial, Facts).
 
 string_value(V, S) :- ( string(V) -> S = V ; atom_string(V, S) ).
 
@@ -437,7 +636,8 @@ string_value(V, S) :- ( string(V) -> S = V ; atom_string(V, S) ).
 %   ant(Id, Props, Parent, Via) and its qualified outcome (a dict with
 %   `outcomes`, a list of dicts with expectation, holds, confidence_permille
 %   and score_permille, and the antecedent's `simulations` and
-%   `weight_mass_permille`), one defeasible rule per outcome literal, its
+%   `weight_mass_permille`, and for the discovering curiosity `batches`,
+%   its batches of pours), one defeasible rule per outcome literal, its
 %   body facts, learned/1 and its provenance.
 rule_facts(Explored, Qualified, Facts) :-
     foldl(antecedent_facts(Qualified), Explored, Fs, []),
@@ -452,7 +652,11 @@ outcome_facts(AId, Props, Parent, Via, Q, O, Facts, Tail) :-
     atomic_list_concat([r, Num, '_', O.expectation], Id),
     (   O.holds == true -> Head = O.expectation ; Head = neg(O.expectation) ),
     findall(body(Id, P), member(P, Props), Bodies),
-    via_facts(Id, Via, ViaFacts),
+    via_facts(Id, Via, ViaFacts0),
+    (   get_dict(batches, Q, B)
+    ->  ViaFacts = [provenance(Id, batches, B)|ViaFacts0]
+    ;   ViaFacts = ViaFacts0
+    ),
     Prov = [ provenance(Id, antecedent, AId),
              provenance(Id, parent, Parent),
              provenance(Id, simulations, Q.simulations),

@@ -1,4 +1,5 @@
 :- begin_tests(curiosity).
+:- use_module(library(http/json)).
 
 :- use_module(curiosity).
 :- use_module(validity).
@@ -65,6 +66,50 @@ test(rule_facts_and_theory_file, [setup(tmp_file(theory, F)), cleanup(delete_fil
     theory_files:load_facts(F, explore_plt_theory),
     explore_plt_theory:rule(r2_no_spill, defeasible, neg(no_spill)),
     explore_plt_theory:setting(oracle_version, "1").
+
+test(modify_past_beyond_one_rank) :-
+    modify_past([pour_mid_height, pour_steeply_tilted], [move(no_spill, pour_z, down, 40)], [], New),
+    findall(P, member(mod(P, no_spill, pour_z, down), New), Ps),
+    msort(Ps, [[pour_below_rim, pour_steeply_tilted], [pour_low, pour_steeply_tilted]]).
+
+test(modify_past_farthest_when_none_passes) :-
+    modify_past([pour_mid_height, pour_steeply_tilted], [move(e, pour_z, down, -100)], [], New),
+    New == [mod([pour_below_rim, pour_steeply_tilted], e, pour_z, down)],
+    modify_past([pour_mid_height, pour_steeply_tilted], [move(e, pour_z, down, -100)],
+                [[pour_below_rim, pour_steeply_tilted]], New2),
+    New2 == [mod([pour_low, pour_steeply_tilted], e, pour_z, down)].
+
+test(modify_past_valid_new_and_past_the_flip,
+     [forall(member(A-X-S-F, [[]-pour_x-up-150, [pour_low]-particle_mass-up-5000,
+                              [pour_mid_height, pour_near_rim]-pour_y-up-30]))]) :-
+    modify_past(A, [move(e, X, S, F)], [A], New),
+    New \== [],
+    parameter_mean(A, X, M0),
+    forall(member(mod(P, e, X, S), New),
+           ( valid_antecedent(P), P \== A,
+             parameter_mean(P, X, M1),
+             ( S == up -> M1 > M0 ; M1 < M0 ) )).
+
+test(unseen_behaviour_first,
+     [ setup(assertz((bridge:exploration_predict(Req, Reply) :- fake_predict(Req, Reply)))),
+       cleanup(retractall(bridge:exploration_predict(_, _))) ]) :-
+    Best = _{followed:[_{antecedent:a1,
+                         directions:[_{expectation:no_spill,
+                                       moves:[_{parameter:pour_z, sign:down, flip:40}]}]}]},
+    Explored = [ant(a1, [pour_mid_height, pour_steeply_tilted], none, initial)],
+    curiosity:discover_added(Best, Explored, [], Added),
+    Added == [ cand([pour_low, pour_steeply_tilted], a1, via(no_spill, pour_z, down)),
+               cand([pour_below_rim, pour_steeply_tilted], a1, via(no_spill, pour_z, down)) ].
+
+%   A stand-in for the bridge: only antecedents with pour_low are predicted
+%   to show a behaviour not seen yet.
+fake_predict(Req, Reply) :-
+    atom_json_dict(Req, D, [value_string_as(atom)]),
+    findall(U, ( member(C, D.candidates), ( memberchk(pour_low, C) -> U = true ; U = false ) ), Us),
+    atom_json_dict(Reply, _{unseen:Us}, [width(0)]).
+
+test(bad_curiosity, [true(R = error(_))]) :-
+    explore_result([curiosity(wild)], R).
 
 test(explore_without_the_bridge_says_so, [throws(exploration_error(_))]) :-
     explore([oracle(synthetic), max_rules(1)]).

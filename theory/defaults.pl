@@ -3,12 +3,21 @@
 % (pantarhei.theory.defaults: the command line and its help).
 % Common subset of Prolog and ASP: ground facts, no floats (permille).
 
-% Algorithm 1 (pantarhei explore): the oracle, the number of explored
-% antecedents, the slope below which nothing new is explored, the ridge
-% of the plane fits, the seed, how many ranks modify may move, and how an
-% antecedent's consequent is qualified (weighted vote or the paper's argmax).
+% Algorithm 1 (pantarhei explore): the curiosity (paper: the paper's own
+% variant; discover: planes tested against shuffled pours and modify past
+% the verdict's flip, which does not yet beat random search, see README), the oracle, the number of explored antecedents, the
+% threshold (for discover, the significance level of the permutation test
+% with its number of shuffles and how many more batches an undecided
+% antecedent gets; for paper, the slope below which nothing new
+% is explored), the ridge of the plane fits, the seed, how many gradient
+% components the paper's modify follows, and how an antecedent's consequent
+% is qualified (weighted vote or the paper's argmax).
+default(curiosity, paper).
 default(oracle, pybullet).
 default(max_rules, 25).
+default(significance_permille, 50).
+default(permutations, 199).
+default(resample, 2).
 default(threshold_permille, 100).
 default(ridge_permille, 1000).
 default(seed, 1).

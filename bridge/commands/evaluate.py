@@ -26,6 +26,9 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="pours simulated per example rule of the paper (default 20)")
     options.add_seed(p)
     p.add_argument("--no-gifs", action="store_true", help="do not render pours as GIFs")
+    p.add_argument("--no-baselines", action="store_true",
+                   help="do not also spend the budget on random pours from the prior and on "
+                        "MAP-Elites (their behaviours seen)")
     options.add_execution(p, progress="no progress bars")
     p.set_defaults(run=evaluate)
 
@@ -45,7 +48,8 @@ def evaluate(args: argparse.Namespace) -> int:
     ev = run(Options(theory=theory, store=Path(args.store), scenes=args.scenes, seed=args.seed,
                      verify=args.verify, paper_samples=args.paper_samples,
                      executor=args.executor, workers=args.workers,
-                     ray_address=args.ray_address, progress=not args.no_progress))
+                     ray_address=args.ray_address, progress=not args.no_progress,
+                     baselines=not args.no_baselines))
     report = write(ev, out, gifs=not args.no_gifs)
     for measure, value, target, met in headline(ev):
         print(f"{'  ' if met else '! '}{measure}: {value} (target {target})")

@@ -22,8 +22,19 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help=f"stop after this many explored antecedents (default {d['max_rules']})")
     p.add_argument("--samples", type=int,
                    help="simulations per explored antecedent (default: parameters + 1)")
-    p.add_argument("--threshold", type=float, default=d["threshold"],
-                   help=f"the plane slope below which nothing new is explored (default {d['threshold']})")
+    p.add_argument("--curiosity", choices=("discover", "paper"), default=d["curiosity"],
+                   help="discover: follow only plane slopes that beat shuffled pours, and modify "
+                        "past the point where a verdict flips; paper: Algorithm 1 as the paper "
+                        f"states it (default {d['curiosity']})")
+    p.add_argument("--threshold", type=float,
+                   help="discover: the significance level of the permutation test "
+                        f"(default {d['significance']}); paper: the plane slope below which "
+                        f"nothing new is explored (default {d['threshold']})")
+    p.add_argument("--resample", type=int, default=d["resample"],
+                   help="discover: more batches of an antecedent whose planes are all undecided "
+                        f"(default {d['resample']}); --max-rules then counts batches")
+    p.add_argument("--permutations", type=int, default=d["permutations"],
+                   help=f"discover: shuffles of the permutation test (default {d['permutations']})")
     options.add_seed(p)
     p.add_argument("--initial", metavar="P1,P2,...",
                    help=f"the initial antecedent a_0 (default: {','.join(d['initial'])})")
@@ -59,17 +70,21 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def explore(args: argparse.Namespace) -> int:
-    for name in ("max_rules", "samples", "breadth", "workers"):
+    for name in ("max_rules", "samples", "breadth", "workers", "permutations"):
         v = getattr(args, name)
         if v is not None and v < 1:
             raise UserError(f"--{name.replace('_', '-')} must be at least 1")
-    if args.threshold < 0 or args.ridge < 0:
+    if (args.threshold is not None and args.threshold < 0) or args.ridge < 0:
         raise UserError("--threshold and --ridge must not be negative")
+    if args.resample < 0:
+        raise UserError("--resample must not be negative")
+    if args.curiosity == "discover" and args.threshold is not None and args.threshold > 1:
+        raise UserError("--threshold is a significance level with --curiosity discover: at most 1")
     initial = None
     if args.initial is not None:
         initial = validity.require_valid([t.strip() for t in args.initial.split(",") if t.strip()])
     opts = Options(
-        oracle=args.oracle, max_rules=args.max_rules, samples=args.samples,
+        curiosity=args.curiosity, permutations=args.permutations, resample=args.resample, oracle=args.oracle, max_rules=args.max_rules, samples=args.samples,
         threshold=args.threshold, seed=args.seed, initial=initial, breadth=args.breadth,
         ridge=args.ridge, qualify=args.qualify, out=Path(args.out), store=Path(args.store),
         resume=args.resume, executor=args.executor, workers=args.workers,
@@ -80,7 +95,9 @@ def explore(args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         raise UserError("interrupted: the state is saved after every explored antecedent; "
                         "the same command with --resume continues", exit_code=130) from None
-    why = {"a_new_empty": "A_new is empty", "max_rules": f"{args.max_rules} rules"}.get(
+    budget = (f"{args.max_rules} rules" if args.curiosity == "paper"
+              else f"{args.max_rules} batches of pours")
+    why = {"a_new_empty": "A_new is empty", "max_rules": budget}.get(
         result.get("stopped", ""), result.get("stopped", ""))
     print(f"explored {result['explored']} antecedents with {result['simulations']} simulations "
           f"({result['failed']} failed); stopped: {why}")

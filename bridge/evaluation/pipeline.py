@@ -32,8 +32,9 @@ from pantarhei.oracle.generative import sample
 from pantarhei.theory.lexicon import load_vocabulary
 
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.evaluation.heldout import (near_antecedents, random_exploration,
-                                                 scene_pours, uniform_scenes)
+from pantarhei.bridge.evaluation.heldout import (near_antecedents, random_antecedents,
+                                                 random_exploration, scene_pours, uniform_scenes)
+from pantarhei.bridge.evaluation.map_elites import behaviours_seen
 from pantarhei.bridge.evaluation.measures import (accuracy, distinct_behaviours, tree_predictions,
                                                   verdicts)
 from pantarhei.bridge.evaluation.rule_building import consequents, predict, theory_of
@@ -63,6 +64,9 @@ class Learned:
     theory: Theory
     settings: dict[str, list[Any]]
     antecedents: list[tuple[str, ...]]      # explored, in order: a1, a2, ...
+    #: Batches of `samples` pours of each explored antecedent (more than one
+    #: where the discovering curiosity sampled an undecided antecedent again).
+    batches: list[int] = field(default_factory=list)
 
     def setting(self, key: str, default: Any = None) -> Any:
         values = self.settings.get(key)
@@ -92,7 +96,14 @@ def read_learned(path: Path | str) -> Learned:
     order = sorted(bodies)
     if order != list(range(1, len(order) + 1)):
         raise UserError(f"{path}: the explored antecedents are not a1..a{len(order)}")
-    return Learned(path, theory, settings, [bodies[i] for i in order])
+    batches: dict[int, int] = {}
+    for a in facts.get("provenance", []):
+        if len(a) == 3 and literal_text(a[1]) == "batches":
+            i = antecedent_index(of_rule.get(literal_text(a[0]), ""))
+            if i is not None:
+                batches[i] = int(a[2])
+    return Learned(path, theory, settings, [bodies[i] for i in order],
+                   [batches.get(i, 1) for i in order])
 
 
 # -- the run -------------------------------------------------------------------
@@ -109,6 +120,8 @@ class Options:
     workers: int | None = None
     ray_address: str | None = None
     progress: bool = True
+    #: Also spend the budget on random pours from the prior and on MAP-Elites.
+    baselines: bool = True
 
 
 @dataclass
@@ -128,6 +141,8 @@ class Evaluation:
     #: The general theory (both layers as shipped, and the general rules alone)
     #: against the models, per method's pours: held-out and one-phrase questions.
     general: dict[str, Any] = field(default_factory=dict)
+    #: Per search method: distinct nine-verdict vectors among its pours, each seen twice.
+    behaviours_seen: dict[str, int] = field(default_factory=dict)
     paper_rules: list[dict[str, Any]] = field(default_factory=list)
     plans: list[dict[str, Any]] = field(default_factory=list)
     simulations: dict[str, int] = field(default_factory=dict)
@@ -140,7 +155,7 @@ class Evaluation:
     def as_dict(self) -> dict[str, Any]:
         return {k: getattr(self, k) for k in
                 ("theory", "oracle", "settings", "budget", "reproduced", "kept_all", "heldout", "curves", "behaviours",
-                 "general", "paper_rules", "plans", "simulations", "seconds")}
+                 "behaviours_seen", "general", "paper_rules", "plans", "simulations", "seconds")}
 
     @property
     def plan_rate(self) -> float | None:
@@ -170,26 +185,41 @@ class Simulations:
         self.sim, self.ev, self.progress = sim, ev, progress
         self.width = len(load_vocabulary().expectations)
 
-    def __call__(self, label: str, P: np.ndarray) -> np.ndarray:
+    def __call__(self, label: str, P: np.ndarray, say: bool = True) -> np.ndarray:
+        """Simulate P as (part of) the stage `label`: its pours and seconds add up."""
         t = time.monotonic()
+        sims, secs = self.ev.simulations, self.ev.seconds
         if not len(P):
-            self.ev.simulations[label] = 0
-            self.ev.seconds[label] = 0.0
+            sims.setdefault(label, 0)
+            secs.setdefault(label, 0.0)
             return np.empty((0, self.width))
-        _say(f"{label}: {len(P)} pours")
-        S = np.asarray(self.sim.simulate(P, progress=self.progress), dtype=float)
-        self.ev.simulations[label] = int(self.sim.last_simulated)
-        self.ev.seconds[label] = round(time.monotonic() - t, 1)
+        if say:
+            _say(f"{label}: {len(P)} pours")
+        S = np.asarray(self.sim.simulate(P, progress=self.progress and say), dtype=float)
+        sims[label] = sims.get(label, 0) + int(self.sim.last_simulated)
+        secs[label] = round(secs.get(label, 0.0) + time.monotonic() - t, 1)
         return S
 
 
 @dataclass
 class Pours:
     """The pours of one way of choosing antecedents: the antecedents in
-    order, `samples` pours each, and their scores."""
+    order, their pours in that order, and their scores. `ends[k]` is the
+    number of pours of the first k + 1 antecedents (`samples` each unless
+    an antecedent had more batches)."""
     antecedents: list[tuple[str, ...]]
     P: np.ndarray
     S: np.ndarray
+    ends: list[int] = field(default_factory=list)
+
+    def __post_init__(self) -> None:
+        if not self.ends and self.antecedents:
+            each = len(self.P) // len(self.antecedents)
+            self.ends = [each * (k + 1) for k in range(len(self.antecedents))]
+
+    def upto(self, pours: int) -> int:
+        """How many antecedents have all their pours among the first `pours`."""
+        return sum(1 for e in self.ends if e <= pours)
 
 
 def evaluate(opts: Options) -> Evaluation:
@@ -201,7 +231,7 @@ def evaluate(opts: Options) -> Evaluation:
     samples = int(learned.setting("samples"))
     ev = Evaluation(theory=_shown(opts.theory), oracle=oracle,
                     settings={k: (v if len(v) > 1 else v[0]) for k, v in learned.settings.items()},
-                    budget=len(learned.antecedents) * samples, explored=list(learned.antecedents))
+                    budget=sum(learned.batches) * samples, explored=list(learned.antecedents))
     from pantarhei.bridge.exploration.simulation import open_simulator, oracle_identity
 
     version, _ = oracle_identity(oracle)
@@ -212,7 +242,11 @@ def evaluate(opts: Options) -> Evaluation:
     try:
         run = Simulations(sim, ev, opts.progress)
         curiosity = exploration_pours(learned, run, ev)
-        rnd = random_exploration_pours(opts.seed, len(learned.antecedents), samples, run)
+        rnd = random_exploration_pours(opts.seed, sum(learned.batches), samples, run)
+        ev.behaviours_seen = {"curiosity": behaviours_seen(curiosity.S),
+                              "random": behaviours_seen(rnd.S)}
+        if opts.baselines:
+            ev.behaviours_seen.update(search_baselines(opts.seed, ev.budget, samples, run))
         held = heldout_scenes(opts, curiosity.antecedents, rnd.antecedents, run)
         t = time.monotonic()
         _say("predicting the held-out scenes with every theory along the budget")
@@ -237,8 +271,12 @@ def exploration_pours(learned: Learned, run: Simulations, ev: Evaluation) -> Pou
     samples, seed = int(learned.setting("samples")), int(learned.setting("seed"))
     mode = str(learned.setting("qualify", "weighted"))
     explored = learned.antecedents
-    P = np.vstack([sample(list(a), samples, iteration_seed(seed, i))
-                   for i, a in enumerate(explored, start=1)])
+    # the pours of each antecedent's batches, in the iterations they were drawn
+    iterations = np.cumsum([0] + learned.batches[:-1]) + 1
+    P = np.vstack([sample(list(a), samples, iteration_seed(seed, int(first) + b))
+                   for a, first, n in zip(explored, iterations, learned.batches)
+                   for b in range(n)])
+    ends = list(np.cumsum(learned.batches) * samples)
     S = run("exploration", P)
     ev.explored_consequents = consequents(explored, P, S, mode)
     ok = np.all(np.isfinite(S), axis=1)
@@ -246,7 +284,7 @@ def exploration_pours(learned: Learned, run: Simulations, ev: Evaluation) -> Pou
     ev.best_samples = [P[ok][int(np.argmax(W[i]))] for i in range(len(explored))]
     ev.kept_all = []
     for i in range(len(explored)):
-        rows = S[i * samples:(i + 1) * samples]
+        rows = S[(ends[i - 1] if i else 0):ends[i]]
         rows = rows[np.all(np.isfinite(rows), axis=1)]
         ev.kept_all.append(float((rows > 0.5).all(axis=1).mean()) if len(rows) else None)
     differ = _differing_rules(learned.theory, ev.explored_consequents)
@@ -254,7 +292,7 @@ def exploration_pours(learned: Learned, run: Simulations, ev: Evaluation) -> Pou
     if differ:
         _say(f"{len(differ)} rules of the theory differ from those its own pours give here "
              f"(first: {differ[0]}): another oracle build, or a theory edited by hand")
-    return Pours(list(explored), P, S)
+    return Pours(list(explored), P, S, [int(e) for e in ends])
 
 
 def random_exploration_pours(seed: int, count: int, samples: int, run: Simulations) -> Pours:
@@ -262,6 +300,18 @@ def random_exploration_pours(seed: int, count: int, samples: int, run: Simulatio
     antecedents, `samples` pours each."""
     ants, P = random_exploration(seed, count, samples)
     return Pours(ants, P, run("random exploration", P))
+
+
+def search_baselines(seed: int, budget: int, samples: int, run: Simulations) -> dict[str, int]:
+    """Behaviours seen by two searches that build no theory, with the same
+    budget: random pours from the prior, and MAP-Elites (pyribs) over the
+    30 parameters with the nine verdicts as its cells."""
+    from pantarhei.bridge.evaluation.map_elites import map_elites
+
+    prior = run("random pours", sample([], budget, iteration_seed(seed + 7919, 0)))
+    _say(f"MAP-Elites: {budget} pours in batches of {samples}")
+    qd = map_elites(lambda P: run("MAP-Elites", P, say=False), budget, seed, batch=samples)
+    return {"prior": behaviours_seen(prior), "map_elites": behaviours_seen(qd.S)}
 
 
 def heldout_scenes(opts: Options, explored: Sequence[tuple[str, ...]],
@@ -286,12 +336,15 @@ def heldout_scenes(opts: Options, explored: Sequence[tuple[str, ...]],
 def curves(ev: Evaluation, methods: dict[str, Pours], held: dict, samples: int, mode: str) -> None:
     """Behaviours, coverage and accuracy of each method's theory after each
     explored antecedent (the curves over the budget)."""
-    R = min(len(m.antecedents) for m in methods.values())
+    R = min(len(m.P) for m in methods.values()) // samples
     out: dict[str, Any] = {"budget": [k * samples for k in range(1, R + 1)]}
     for method, m in methods.items():
         beh, cov, acc = [], {k: [] for k in held}, {k: [] for k in held}
-        for k in range(1, R + 1):
-            heads = consequents(m.antecedents[:k], m.P[:k * samples], m.S[:k * samples], mode)
+        for r in range(1, R + 1):
+            # the antecedents whose pours are all within the budget so far
+            k = max(1, m.upto(r * samples))
+            end = m.ends[k - 1]
+            heads = consequents(m.antecedents[:k], m.P[:end], m.S[:end], mode)
             beh.append(distinct_behaviours(heads))
             th = theory_of(m.antecedents[:k], heads, f"{method}@{k}")
             for name, (sel, y) in held.items():
@@ -319,7 +372,7 @@ def final_theories(ev: Evaluation, theory: Theory, methods: dict[str, Pours], he
         for label, th in final.items():
             out[f"{label}_theory"] = accuracy(predict(th, sel), y).as_dict()
         for label, m in methods.items():
-            X = [a for a in m.antecedents for _ in range(samples)]
+            X = [a for a, n in zip(m.antecedents, np.diff([0, *m.ends])) for _ in range(int(n))]
             okr = np.all(np.isfinite(m.S), axis=1)
             Xk = [x for x, o in zip(X, okr) if o]
             out[f"{label}_tree"] = accuracy(

@@ -247,6 +247,16 @@ def write(ev: Evaluation, out: Path, gifs: bool = True, command: str = "make eva
           f"{len(ev.explored)} uniformly random valid antecedents, and builds rules the same way "
           "(equation (1), then qualify). A behaviour is a distinct consequent: the vector of "
           "the nine verdicts.", "", "![distinct behaviours](behaviours.png)", ""]
+    if ev.behaviours_seen:
+        names = {"curiosity": "curiosity", "random": "random valid antecedents",
+                 "prior": "random pours from the prior", "map_elites": "MAP-Elites (pyribs)"}
+        L += ["Behaviours seen: distinct nine-verdict vectors among each method's "
+              f"{ev.budget} pours, each shown by at least two pours. MAP-Elites searches the "
+              "30 parameters (normalised) with a Gaussian emitter and keeps one pour per "
+              "verdict vector (pyribs' `CategoricalArchive`); it builds no theory.", "",
+              "| method | behaviours seen |", "|---|---|"]
+        L += [f"| {names.get(k, k)} | {v} |" for k, v in ev.behaviours_seen.items()]
+        L += [""]
     L += general_section(ev)
     L += ["## Held-out scenes", "",
           "Each held-out scene is a valid antecedent that neither exploration explored, "

@@ -25,9 +25,15 @@ def _default(key: str) -> Any:
 class Options:
     """The options of one exploration (see explore/1 in theory/curiosity.pl)."""
     oracle: str = _default("oracle")
+    #: "discover" (planes tested against shuffles, modify past the flip) or "paper".
+    curiosity: str = _default("curiosity")
     max_rules: int = _default("max_rules")
     samples: int | None = None
-    threshold: float = _default("threshold")
+    #: discover: the significance level; paper: the slope (None: the mode's default).
+    threshold: float | None = None
+    permutations: int = _default("permutations")
+    #: discover: more batches of an antecedent whose planes are undecided.
+    resample: int = _default("resample")
     ridge: float = _default("ridge")
     seed: int = _default("seed")
     initial: Sequence[str] | None = None
@@ -46,13 +52,17 @@ class Options:
     general: bool = _default("general")
 
     def prolog(self) -> str:
-        items = [f"oracle({prolog_quote(self.oracle)})", f"max_rules({int(self.max_rules)})",
-                 f"threshold({float(self.threshold)!r})", f"seed({int(self.seed)})",
+        items = [f"curiosity({prolog_quote(self.curiosity)})",
+                 f"oracle({prolog_quote(self.oracle)})", f"max_rules({int(self.max_rules)})",
+                 f"permutations({int(self.permutations)})", f"resample({int(self.resample)})",
+                 f"seed({int(self.seed)})",
                  f"breadth({int(self.breadth)})", f"ridge({float(self.ridge)!r})", f"qualify({prolog_quote(self.qualify)})",
                  f"out({prolog_quote(str(Path(self.out).absolute()))})",
                  f"store({prolog_quote(str(Path(self.store).absolute()))})",
                  f"resume({prolog_quote(bool(self.resume))})", f"executor({prolog_quote(self.executor)})",
                  f"progress({prolog_quote(bool(self.progress))})"]
+        if self.threshold is not None:
+            items.append(f"threshold({float(self.threshold)!r})")
         if self.samples is not None:
             items.append(f"samples({int(self.samples)})")
         if self.initial is not None:

@@ -41,13 +41,15 @@ from pantarhei.bridge.engines.swipl import Engine, engine as prolog_engine
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.exploration.planes import Planes, best_abs_slope, plane_fit
 from pantarhei.bridge.exploration.qualify import QUALIFY, consequent
+from pantarhei.bridge.exploration.significance import Tested, permutation_test, shuffle_seed
 from pantarhei.bridge.exploration.simulation import (iteration_seed, open_simulator,
                                                      oracle_identity)
 from pantarhei.bridge.exploration.state import ExplorationStore, run_key
 from pantarhei.bridge.exploration.trace import (append_trace, plot_path, plot_trace,
                                                 trace_path, write_trace)
 from pantarhei.bridge.exploration.weights import weights
-from pantarhei.oracle.generative import InvalidAntecedent, log_density, normalise, sample
+from pantarhei.oracle.generative import (InvalidAntecedent, distribution, log_density,
+                                         normalise, sample)
 from pantarhei.oracle.store import DEFAULT_STORE
 from pantarhei.theory.lexicon import load_vocabulary
 
@@ -68,6 +70,9 @@ class Session:
     pending: dict[int, tuple[np.ndarray, np.ndarray]] = field(default_factory=dict)
     log_dens: dict[str, np.ndarray] = field(default_factory=dict)
     plane_cache: dict[str, tuple[np.ndarray, Planes | None]] = field(default_factory=dict)
+    test_cache: dict[str, tuple[np.ndarray, Tested | None]] = field(default_factory=dict)
+    #: The antecedent and tested planes of the last significant direction.
+    predicting: dict[str, Tested] = field(default_factory=dict)
     started: float = field(default_factory=time.monotonic)
     bar: Any = None
     timings: dict[str, float] = field(default_factory=dict)
@@ -103,6 +108,23 @@ class Session:
         self.plane_cache[aid] = (w.copy(), planes)
         return planes
 
+    def tested_of(self, number: int, aid: str, X: np.ndarray, S: np.ndarray,
+                  w: np.ndarray) -> Tested | None:
+        """The antecedent's planes and their permutation test, done again
+        only when its weights changed (as `planes_of`)."""
+        cached = self.test_cache.get(aid)
+        if cached is not None:
+            w0, tested = cached
+            k = len(w0)
+            if k <= len(w) and np.array_equal(w0, w[:k]) and not w[k:].any():
+                return tested
+        used = int(((w > 0) & np.all(np.isfinite(S), axis=1)).sum())
+        tested = permutation_test(X, S, w, float(self.settings.get("ridge", 0.0)),
+                                  int(self.settings["permutations"]),
+                                  shuffle_seed(int(self.settings["seed"]), number, used))
+        self.test_cache[aid] = (w.copy(), tested)
+        return tested
+
     def weight_matrix(self, entries: Sequence[dict]) -> np.ndarray:
         """Equation (1) for the explored antecedents over the simulations
         that did not fail: (antecedents, valid simulations)."""
@@ -123,6 +145,7 @@ class Host:
             "exploration_begin": self.begin,
             "exploration_simulate": self._timed("simulate", self.simulate),
             "exploration_best_plane": self._timed("planes", self.best_plane),
+            "exploration_predict": self._timed("planes", self.predict),
             "exploration_qualify": self._timed("qualify", self.qualify),
             "exploration_checkpoint": self._timed("checkpoint", self.checkpoint),
             "exploration_end": self.end,
@@ -173,6 +196,10 @@ class Host:
                   "samples": int(request["samples"]), "threshold": float(request["threshold"]),
                   "initial": initial, "breadth": int(request["breadth"]),
                   "ridge": float(request["ridge"])}
+        if request.get("curiosity", "paper") != "paper":   # the paper's runs keep their keys
+            course.update(curiosity=str(request["curiosity"]),
+                          permutations=int(request["permutations"]),
+                          resample=int(request["resample"]))
         run = run_key(course)
         store_path = Path(str(request.get("store") or DEFAULT_STORE))
         try:
@@ -235,6 +262,8 @@ class Host:
 
     def best_plane(self, request: dict) -> dict:
         s = self.need_session()
+        if s.settings.get("curiosity") == "discover":
+            return self.significant_planes(request)
         entries = request["antecedents"]
         W = s.weight_matrix(entries)
         valid = s.valid
@@ -258,6 +287,90 @@ class Host:
                 "slope": float(slope), "mean": float(planes.mean[k]),
                 "gradient": {n: float(g) for n, g in zip(names, gradient)}}
 
+    def significant_planes(self, request: dict) -> dict:
+        """The discovering curiosity's planes: every explored antecedent's
+        planes tested against shuffles. Each antecedent with a significant
+        component is followed (steepest significant plane first) along each
+        of its significant planes: its significant parameters, largest first,
+        each with the antecedent's mean value and the value past which the
+        plane's verdict flips (theory units). The first is the best, as the
+        paper's steepest plane."""
+        s = self.need_session()
+        entries = request["antecedents"]
+        alpha = float(s.settings["threshold"])
+        W = s.weight_matrix(entries)
+        valid = s.valid
+        X = normalise(s.params[valid])
+        S = s.scores[valid]
+        vocab = load_vocabulary()
+        names, expectations = vocab.parameter_names, vocab.expectation_names
+        found: list[tuple[float, int, Tested]] = []
+        for i, e in enumerate(entries):
+            tested = s.tested_of(i + 1, str(e["id"]), X, S, W[i])
+            if tested is None:
+                continue
+            slope = float(tested.slopes(alpha).max())
+            if slope > 0:
+                found.append((-slope, i, tested))
+        if not found:
+            return {"antecedent": str(entries[-1]["id"]), "significant": False,
+                    "expectation": expectations[0], "slope": 0.0, "mean": 0.5,
+                    "gradient": {n: 0.0 for n in names}, "directions": [], "followed": []}
+        found.sort(key=lambda f: (f[0], f[1]))
+        lo = np.array([p.low for p in vocab.parameters], dtype=float)
+        hi = np.array([p.high for p in vocab.parameters], dtype=float)
+        followed = []
+        for _, i, tested in found:
+            sig = tested.significant(alpha)
+            slopes = tested.slopes(alpha)
+            directions = []
+            for k in np.argsort(-slopes, kind="stable"):
+                if slopes[k] <= 0:
+                    continue
+                m = float(tested.mean[k])
+                moves = []
+                for j in np.argsort(-np.abs(np.where(sig[k], tested.coef[k], 0.0)), kind="stable"):
+                    if not sig[k, j]:
+                        break
+                    g = float(tested.coef[k, j])
+                    # the plane through the antecedent's mean crosses 1/2 along j here
+                    flip = float(tested.centre[j]) + (0.5 - m) / g
+                    moves.append({"parameter": names[j], "component": g,
+                                  "sign": "up" if (0.5 - m) / g > 0 else "down",
+                                  "mean": float(lo[j] + tested.centre[j] * (hi[j] - lo[j])),
+                                  "flip": float(lo[j] + flip * (hi[j] - lo[j])),
+                                  "p": float(tested.p[k, j])})
+                directions.append({"expectation": expectations[k], "slope": float(slopes[k]),
+                                   "mean": m, "moves": moves})
+            followed.append({"antecedent": str(entries[i]["id"]), "directions": directions})
+        _, i, tested = found[0]
+        sig = tested.significant(alpha)
+        first = followed[0]["directions"][0]
+        k = expectations.index(first["expectation"])
+        s.predicting = {f["antecedent"]: t for f, (_, _, t) in zip(followed, found)}
+        return {"antecedent": str(entries[i]["id"]), "significant": True,
+                "expectation": first["expectation"], "slope": first["slope"],
+                "mean": first["mean"],
+                "gradient": {n: float(g) if sig[k, j] else 0.0
+                             for j, (n, g) in enumerate(zip(names, tested.coef[k]))},
+                "directions": followed[0]["directions"], "followed": followed}
+
+    def predict(self, request: dict) -> dict:
+        """For each candidate antecedent, whether the behaviour the last
+        significant planes of the antecedent it modifies predict at its mean pour (the nine verdicts) is one
+        that no pour so far has shown."""
+        s = self.need_session()
+        tested = s.predicting.get(str(request["antecedent"]))
+        if tested is None:
+            raise RuntimeError("exploration_predict for an antecedent without significant planes")
+        seen = {tuple(r) for r in (s.scores[s.valid] > 0.5)}
+        out = []
+        for props in request["candidates"]:
+            centre = normalise(mean_pour([str(p) for p in props])[None, :])[0]
+            predicted = tested.mean + tested.coef @ (centre - tested.centre) > 0.5
+            out.append(tuple(bool(v) for v in predicted) not in seen)
+        return {"unseen": out}
+
     def qualify(self, request: dict) -> dict:
         s = self.need_session()
         entries = request["antecedents"]
@@ -269,6 +382,12 @@ class Host:
         out = []
         for i, e in enumerate(entries):
             out.append({"id": str(e["id"]), **consequent(S, W[i], mode)})
+        if s.settings.get("curiosity") == "discover":   # batches of pours per antecedent
+            counts: dict[str, int] = {}
+            for t in s.trace:
+                counts[str(t["id"])] = counts.get(str(t["id"]), 0) + 1
+            for o in out:
+                o["batches"] = counts.get(o["id"], 1)
         failed = int((~s.valid).sum())
         return {"antecedents": out, "simulations": len(s.params), "failed": failed,
                 "oracle_version": s.oracle_version}
@@ -333,6 +452,17 @@ def _note(text: str) -> None:
 
 def _truthy(v: Any) -> bool:
     return v in (True, "true", 1, "1")
+
+
+def mean_pour(props: Sequence[str]) -> np.ndarray:
+    """The mean parameterization of P(p|props) (theory units): the middle of
+    each interval, a relative parameter's offset added to its base's mean and
+    clipped to its bounds (as parameter_mean/3 in theory/curiosity.pl)."""
+    d = distribution(props)
+    out = (d.low + d.high) / 2
+    for i in np.flatnonzero(d.base >= 0):
+        out[i] = min(d.bound_high[i], max(d.bound_low[i], out[d.base[i]] + (d.low[i] + d.high[i]) / 2))
+    return out
 
 
 def oracle_sample(request: dict) -> dict:

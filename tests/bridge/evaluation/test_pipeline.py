@@ -38,15 +38,20 @@ def evaluated(learned, tmp_path_factory) -> tuple[E.Evaluation, Path]:
 def test_read_learned_finds_the_explored_antecedents_in_order(learned):
     theory, _ = learned
     L = E.read_learned(theory)
-    assert len(L.antecedents) == 6
     trace = [json.loads(line) for line in theory.with_suffix(".trace.jsonl").read_text().splitlines()]
-    assert [tuple(sorted(t["antecedent"])) for t in trace] == L.antecedents
+    # six batches of pours; an antecedent whose planes were undecided got more than one
+    assert len(trace) == 6 == sum(L.batches) and len(L.batches) == len(L.antecedents)
+    firsts = [t for t in trace if not t["via"].startswith("more")]
+    assert [tuple(sorted(t["antecedent"])) for t in firsts] == L.antecedents
+    assert [sum(1 for t in trace if t["id"] == f"a{i}") for i in range(1, len(firsts) + 1)] == L.batches
     assert L.setting("oracle") == "synthetic" and L.setting("samples") == 12
 
 
 def test_rules_rebuilt_from_the_store_are_the_theory_prolog_wrote(evaluated, learned):
     ev, _ = evaluated
     L = E.read_learned(learned[0])
+    # the exploration's own pours, every batch of them, drawn again: all in its store
+    assert ev.simulations["exploration"] == 0 and ev.reproduced
     names = load_vocabulary().expectation_names
     for i, row in enumerate(ev.explored_consequents, start=1):
         for e, holds in zip(names, row):
@@ -140,19 +145,30 @@ def test_plans_and_paper_rules_are_checked_in_simulation(evaluated):
         assert r["simulated"] == 5 and 0 <= r["oracle_share"] <= 1
 
 
+def test_behaviours_seen_by_every_search_method_with_the_same_budget(evaluated):
+    ev, _ = evaluated
+    assert set(ev.behaviours_seen) == {"curiosity", "random", "prior", "map_elites"}
+    assert ev.simulations["random pours"] + ev.simulations["MAP-Elites"] <= 2 * ev.budget
+    assert ev.simulations["MAP-Elites"] > 0
+    for method, seen in ev.behaviours_seen.items():
+        assert 1 <= seen <= ev.budget // 2, method
+
+
 def test_the_report_and_its_figures(evaluated, tmp_path):
     from pantarhei.bridge.evaluation.report import headline, write
 
     ev, _ = evaluated
     path = write(ev, tmp_path / "rep", gifs=False)
     text = path.read_text()
-    assert "## Headline" in text and "| a6 |" in text
-    assert len(ev.kept_all) == 6 and all(0 <= k <= 1 for k in ev.kept_all)
+    n = len(ev.explored)
+    assert "## Headline" in text and f"| a{n} |" in text
+    assert len(ev.kept_all) == n and all(0 <= k <= 1 for k in ev.kept_all)
     for name in ("behaviours.png", "heldout.png", "expectations.png", "evaluation.json"):
         assert (tmp_path / "rep" / name).stat().st_size > 0
     assert json.loads((tmp_path / "rep" / "evaluation.json").read_text())["budget"] == 72
     for measure, value, target, met in headline(ev):
         assert f"| {measure} | {value} |" in text
+    assert f"| MAP-Elites (pyribs) | {ev.behaviours_seen['map_elites']} |" in text
 
 
 def test_evaluate_command_end_to_end(learned, tmp_path):

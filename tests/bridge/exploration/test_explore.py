@@ -1,5 +1,6 @@
-"""Whole explorations on the synthetic oracle: the theory, the trace, the
-plot, the known directions, and the same result for the same seed."""
+"""Whole explorations on the synthetic oracle with the paper's curiosity:
+the theory, the trace, the plot, the known directions, and the same result
+for the same seed. (The discovering curiosity: test_explore_discover.py.)"""
 from __future__ import annotations
 
 import json
@@ -23,7 +24,7 @@ V = load_vocabulary()
 
 
 def run(tmp: Path, name: str = "t", **kw) -> dict:
-    opts = dict(oracle="synthetic", max_rules=8, out=tmp / f"{name}.pl",
+    opts = dict(curiosity="paper", oracle="synthetic", max_rules=8, out=tmp / f"{name}.pl",
                 store=tmp / "store.sqlite", progress=False, executor="inline")
     opts.update(kw)
     return exploration.explore(Options(**opts))

@@ -15,6 +15,10 @@ FAST = ["--oracle", "synthetic", "--executor", "inline", "--no-progress"]
     (["--max-rules", "0"], "--max-rules must be at least 1"),
     (["--threshold", "-1"], "must not be negative"),
     (["--oracle", "nope"], "invalid choice"),
+    (["--threshold", "2"], "a significance level"),
+    (["--curiosity", "wild"], "invalid choice"),
+    (["--permutations", "0"], "--permutations must be at least 1"),
+    (["--resample", "-1"], "--resample must not be negative"),
 ])
 def test_bad_input_is_one_line_and_nonzero(tmp_path, args, words):
     r = run_cli("explore", *FAST, *args, "--out", str(tmp_path / "t.pl"),
@@ -27,7 +31,7 @@ def test_bad_input_is_one_line_and_nonzero(tmp_path, args, words):
 
 def test_explore_command_reports_what_it_wrote(tmp_path):
     out = tmp_path / "sub" / "learned.pl"
-    r = run_cli("explore", *FAST, "--max-rules", "3", "--samples", "12", "--out", str(out),
+    r = run_cli("explore", *FAST, "--curiosity", "paper", "--max-rules", "3", "--samples", "12", "--out", str(out),
                 "--store", str(tmp_path / "s.sqlite"))
     assert r.code == 0, r.err
     assert "explored 3 antecedents with 36 simulations" in r.out
@@ -38,7 +42,7 @@ def test_explore_command_reports_what_it_wrote(tmp_path):
 
 def test_prolog_command_drives_exploration(tmp_path):
     out = tmp_path / "p.pl"
-    goal = (f"explore([oracle(synthetic), max_rules(2), executor(inline), progress(false), "
+    goal = (f"explore([curiosity(paper), oracle(synthetic), max_rules(2), executor(inline), progress(false), "
             f"out('{out}'), store('{tmp_path / 's.sqlite'}')]), "
             f"theory_files:load_facts('{out}', m), aggregate_all(count, m:rule(_, _, _), N), "
             f"format('rules: ~w~n', [N])")
