@@ -25,9 +25,23 @@ V = load_vocabulary()
 
 def run(tmp: Path, name: str = "t", **kw) -> dict:
     opts = dict(curiosity="paper", oracle="synthetic", max_rules=8, out=tmp / f"{name}.pl",
-                store=tmp / "store.sqlite", progress=False, executor="inline")
+                store=tmp / "store.sqlite", progress=False, executor="inline",
+                general=False)          # Algorithm 1's rules alone
     opts.update(kw)
     return exploration.explore(Options(**opts))
+
+
+def test_the_general_layer_follows_algorithm_1s_rules(tmp_path):
+    from pantarhei.bridge.theories.loading import load
+
+    alone = Path(run(tmp_path, "alone")["out"]).read_text()
+    both = Path(run(tmp_path, "both", general=True)["out"]).read_text()
+    # the same exploration, then the general rules appended: Algorithm 1's part unchanged
+    assert both.startswith(alone.rstrip("\n"))
+    theory = load([tmp_path / "both.pl"])
+    general = [r for r in theory.rules if r.id.startswith("g")]
+    assert sorted(r.id for r in general if not r.body) == sorted(f"g0_{e}" for e in V.expectation_names)
+    assert {r.id for r in general} <= theory.learned
 
 
 @pytest.fixture(scope="module")

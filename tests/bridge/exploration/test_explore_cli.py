@@ -15,7 +15,7 @@ FAST = ["--oracle", "synthetic", "--executor", "inline", "--no-progress"]
     (["--max-rules", "0"], "--max-rules must be at least 1"),
     (["--threshold", "-1"], "must not be negative"),
     (["--oracle", "nope"], "invalid choice"),
-    (["--threshold", "2"], "a significance level"),
+    (["--curiosity", "discover", "--threshold", "2"], "a significance level"),
     (["--curiosity", "wild"], "invalid choice"),
     (["--permutations", "0"], "--permutations must be at least 1"),
     (["--resample", "-1"], "--resample must not be negative"),

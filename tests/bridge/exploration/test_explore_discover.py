@@ -26,7 +26,7 @@ FIXTURES = Path(__file__).parent / "fixtures"
 
 
 def run(tmp: Path, name: str = "t", **kw) -> dict:
-    opts = dict(oracle="synthetic", max_rules=6, out=tmp / f"{name}.pl",
+    opts = dict(curiosity="discover", oracle="synthetic", max_rules=6, out=tmp / f"{name}.pl",
                 store=tmp / f"{name}.sqlite", progress=False, executor="inline",
                 general=False)          # Algorithm 1 alone
     opts.update(kw)

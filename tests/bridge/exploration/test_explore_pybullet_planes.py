@@ -23,8 +23,12 @@ NEIGHBOURS = [["pour_low", "pour_near_rim", "pour_steeply_tilted"],
 
 
 @pytest.fixture(scope="module")
-def pours(request):
-    store = request.config.cache.mkdir("pantarhei-pybullet-pours") / "store.sqlite"
+def pours(request, tmp_path_factory):
+    # kept in pytest's cache between runs when it has one: simulated once
+    cache = getattr(request.config, "cache", None)
+    folder = (cache.mkdir("pantarhei-pybullet-pours") if cache is not None
+              else tmp_path_factory.mktemp("pybullet-pours"))
+    store = folder / "store.sqlite"
     ants = [A0] + NEIGHBOURS
     P = np.vstack([sample(a, 31 if i == 0 else 10, iteration_seed(1, i + 1))
                    for i, a in enumerate(ants)])
