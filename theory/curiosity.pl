@@ -493,11 +493,7 @@ candidate(Props, X, D, Props1) :-
         proposition(P1, Dim, R1, _),
         selectchk(P, Props, Rest),
         sort([P1|Rest], Props1)
-    ;   findall(Dim, ( member(P, Props), proposition(P, Dim, _, _) ), Dims),
-        proposition(P1, Dim1, _, _),
-        model(P1, X, _),
-        \+ memberchk(Dim1, Dims),
-        sort([P1|Props], Props1)
+    ;   with_new_dimension(Props, X, Props1)
     ),
     parameter_mean(Props, X, M0),
     parameter_mean(Props1, X, M1),
@@ -563,12 +559,17 @@ candidate_any(Props, X, Props1) :-
         P1 \== P,
         selectchk(P, Props, Rest),
         sort([P1|Rest], Props1)
-    ;   findall(Dim, ( member(P, Props), proposition(P, Dim, _, _) ), Dims),
-        proposition(P1, Dim1, _, _),
-        model(P1, X, _),
-        \+ memberchk(Dim1, Dims),
-        sort([P1|Props], Props1)
+    ;   with_new_dimension(Props, X, Props1)
     ).
+
+%   with_new_dimension(+Props, +X, -Props1): Props with a proposition that
+%   draws X added, from a dimension Props does not use.
+with_new_dimension(Props, X, Props1) :-
+    findall(Dim, ( member(P, Props), proposition(P, Dim, _, _) ), Dims),
+    proposition(P1, Dim1, _, _),
+    model(P1, X, _),
+    \+ memberchk(Dim1, Dims),
+    sort([P1|Props], Props1).
 
 %!  parameter_mean(+Props:list, +Param, -Mean:number) is det.
 %
