@@ -59,15 +59,17 @@ def demo(args: argparse.Namespace) -> int:
     if out.is_dir():
         raise UserError(f"{out}: a directory, not a theory file")
     started = time.monotonic()
+    budget = (f"{args.max_rules} rules" if defaults()["curiosity"] == "paper"
+              else f"{args.max_rules} batches of pours")
     _heading(f"Learning the theory of pouring: curious exploration of the {args.oracle} "
-             f"simulation, {args.max_rules} batches of pours (Algorithm 1)")
+             f"simulation, {budget} (Algorithm 1)")
     result = explore(Options(
         oracle=args.oracle, max_rules=args.max_rules, seed=args.seed, out=out,
         store=Path(args.store), workers=args.workers, progress=not args.no_progress))
     theory = loading.load([out])
     dfl = out.with_suffix(".dfl")
     write_text(dfl, write_dfl(theory, loading.provenance_lines(theory)))
-    why = {"a_new_empty": "A_new is empty", "max_rules": f"{args.max_rules} batches of pours"}.get(
+    why = {"a_new_empty": "A_new is empty", "max_rules": budget}.get(
         result.get("stopped", ""), result.get("stopped", ""))
     print(f"explored {result['explored']} antecedents with {result['simulations']} simulations "
           f"({result['failed']} failed) in {result.get('wall', 0.0):.0f} s; stopped: {why}")
