@@ -7,8 +7,10 @@ same files that SWI-Prolog consults.
 from __future__ import annotations
 
 from collections import defaultdict
+from functools import lru_cache
 from pathlib import Path
-from typing import Iterable, Union
+from types import MappingProxyType
+from typing import Iterable, Mapping, Union
 
 #: The folder that holds the theory files.
 THEORY_DIR = Path(__file__).resolve().parent
@@ -28,10 +30,12 @@ Value = Union[int, str, tuple]
 DEFAULTS_FILE = THEORY_DIR / "defaults.pl"
 
 
-def defaults() -> dict[str, object]:
-    """theory/defaults.pl as a dict: `default(Key, V)` facts by key (a
-    `Key_permille` value becomes `Key` as a float), and `initial`, the tuple
-    of default_initial/1 propositions in file order."""
+@lru_cache(maxsize=None)
+def defaults() -> Mapping[str, object]:
+    """theory/defaults.pl as a read-only mapping, read once per process:
+    `default(Key, V)` facts by key (a `Key_permille` value becomes `Key` as a
+    float), and `initial`, the tuple of default_initial/1 propositions in
+    file order."""
     facts = read_facts([DEFAULTS_FILE])
     out: dict[str, object] = {}
     for key, value in facts.get("default", []):
@@ -40,7 +44,7 @@ def defaults() -> dict[str, object]:
         else:
             out[key] = {"true": True, "false": False}.get(value, value) if isinstance(value, str) else value
     out["initial"] = tuple(p for (p,) in facts.get("default_initial", []))
-    return out
+    return MappingProxyType(out)
 
 
 def prolog_modules() -> tuple[str, ...]:
