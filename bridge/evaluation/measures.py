@@ -94,16 +94,8 @@ def tree_predictions(train: Sequence[Sequence[str]], train_verdicts: np.ndarray,
     of the test scenes. It always decides."""
     from sklearn.tree import DecisionTreeClassifier
 
-    y = np.asarray(train_verdicts, dtype=bool)
-    out = np.empty((len(test), y.shape[1]), dtype=int)
-    X, T = one_hot(train), one_hot(test)
-    for k in range(y.shape[1]):
-        if y[:, k].all() or not y[:, k].any():      # one class: nothing to split
-            out[:, k] = int(y[0, k])
-            continue
-        tree = DecisionTreeClassifier(random_state=seed, min_samples_leaf=3)
-        out[:, k] = tree.fit(X, y[:, k]).predict(T).astype(int)
-    return out
+    return _per_expectation(lambda: DecisionTreeClassifier(random_state=seed, min_samples_leaf=3),
+                            train, train_verdicts, test)
 
 
 def model_predictions(train: Sequence[Sequence[str]], train_verdicts: np.ndarray,
@@ -113,21 +105,25 @@ def model_predictions(train: Sequence[Sequence[str]], train_verdicts: np.ndarray
     propositions (for pours, their descriptions), predicting the test scenes.
     Both always decide."""
     from sklearn.ensemble import GradientBoostingClassifier
-    from sklearn.tree import DecisionTreeClassifier
 
+    return {"tree": tree_predictions(train, train_verdicts, test, seed),
+            "boosting": _per_expectation(lambda: GradientBoostingClassifier(random_state=seed),
+                                         train, train_verdicts, test)}
+
+
+def _per_expectation(make, train: Sequence[Sequence[str]], train_verdicts: np.ndarray,
+                     test: Sequence[Sequence[str]]) -> np.ndarray:
+    """One classifier per expectation (`make()` a fresh one), fitted on the
+    one-hot train scenes and predicting the test scenes; an expectation with
+    one class in training is predicted as that class."""
     y = np.asarray(train_verdicts, dtype=bool)
     X, T = one_hot(train), one_hot(test)
-    makers = {"tree": lambda: DecisionTreeClassifier(random_state=seed, min_samples_leaf=3),
-              "boosting": lambda: GradientBoostingClassifier(random_state=seed)}
-    out = {}
-    for label, make in makers.items():
-        pred = np.empty((len(T), y.shape[1]), dtype=int)
-        for k in range(y.shape[1]):
-            if y[:, k].all() or not y[:, k].any():
-                pred[:, k] = int(y[0, k])
-            else:
-                pred[:, k] = make().fit(X, y[:, k]).predict(T).astype(int)
-        out[label] = pred
+    out = np.empty((len(T), y.shape[1]), dtype=int)
+    for k in range(y.shape[1]):
+        if y[:, k].all() or not y[:, k].any():      # one class: nothing to split
+            out[:, k] = int(y[0, k])
+        else:
+            out[:, k] = make().fit(X, y[:, k]).predict(T).astype(int)
     return out
 
 
