@@ -5,7 +5,7 @@ Training pours are the random baseline's exploration at the exploration's
 budget (25 uniformly random valid antecedents x 31 pours, exactly as
 `pantarhei evaluate` draws them); held-out are 150 other uniformly random
 valid antecedents, one pour each; the questions are the one-phrase questions
-of `benchmarks/data/questions.json`, 20 pours each, whose majority is the
+of `bridge/evaluation/questions.json`, 20 pours each, whose majority is the
 key (clear where at least 75% agree). Every pour is kept in the store
 (`generalization.sqlite` here), so a second run simulates nothing.
 
@@ -29,7 +29,6 @@ STORE = HERE.parent / "generalization.sqlite"
 WORKERS = 2
 ANTECEDENTS, SAMPLES = 25, 31        # the exploration's budget: 775 pours
 SCENES = 150
-KEY_POURS = 20
 SEED = 1
 
 
@@ -43,28 +42,20 @@ class Pours:
     S: np.ndarray
 
 
-def questions() -> list[dict]:
-    from pantarhei.bridge.evaluation.questions import questions as asked
-
-    return [{"text": q.text, "antecedent": list(q.antecedent)} for q in asked()]
-
-
 def draw(seed: int = SEED) -> dict[str, Pours]:
     """The parameterizations of the three sets (nothing simulated yet)."""
     from pantarhei.bridge.evaluation.heldout import random_exploration, scene_pours, uniform_scenes
-    from pantarhei.bridge.exploration.simulation import iteration_seed
-    from pantarhei.oracle.generative import sample
+    from pantarhei.bridge.evaluation.questions import question_pours, questions
 
     train_ants, P_train = random_exploration(seed, ANTECEDENTS, SAMPLES)
     scenes = uniform_scenes(seed, SCENES, set(train_ants))
-    asked = [tuple(sorted(q["antecedent"])) for q in questions()]
-    P_q = np.vstack([sample(list(a), KEY_POURS, iteration_seed(seed, 400_000 + i))
-                     for i, a in enumerate(asked)])
+    asked = questions()
+    P_q, of = question_pours(asked, seed)
     empty = np.empty((0, 9))
     return {
         "train": Pours(train_ants, np.repeat(np.arange(ANTECEDENTS), SAMPLES), P_train, empty),
         "heldout": Pours(scenes, np.arange(len(scenes)), scene_pours(scenes, seed), empty),
-        "questions": Pours(asked, np.repeat(np.arange(len(asked)), KEY_POURS), P_q, empty),
+        "questions": Pours([q.antecedent for q in asked], of, P_q, empty),
     }
 
 
@@ -82,25 +73,6 @@ def simulate(sets: dict[str, Pours], store: Path = STORE, workers: int = WORKERS
     finally:
         sim.close()
     return sets
-
-
-def baselines(train_scenes, Y: np.ndarray, test_scenes, seed: int) -> dict[str, np.ndarray]:
-    from pantarhei.bridge.evaluation.measures import model_predictions
-
-    return model_predictions(train_scenes, Y, test_scenes, seed)
-
-
-def key_of(S: np.ndarray, n_questions: int, of: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    from pantarhei.bridge.evaluation.measures import question_key
-
-    return question_key(S, of, n_questions)
-
-
-def question_scores(pred: np.ndarray, key: np.ndarray, clear: np.ndarray) -> tuple[float, float]:
-    from pantarhei.bridge.evaluation.measures import question_scores as scores
-
-    s = scores(pred, key, clear)
-    return s["coverage"], s["accuracy"]
 
 
 def in_prior_support(P: np.ndarray, bodies) -> list[int]:
@@ -132,8 +104,10 @@ def speed(n: int = 10_000, seed: int = SEED) -> tuple[int, float]:
 
 def run(oracle: str = "pybullet", store: Path | None = STORE, seed: int = SEED,
         prolog_sample: int = 60) -> dict:
+    from pantarhei.bridge.evaluation.measures import (accuracy, model_predictions, question_key,
+                                                      question_scores, verdicts)
+    from pantarhei.bridge.evaluation.questions import questions
     from pantarhei.bridge.evaluation.rule_building import predict
-    from pantarhei.bridge.evaluation.measures import accuracy, verdicts
     from pantarhei.bridge.learning.generalize import Settings, generalize
     from pantarhei.oracle.generative import describe
     from pantarhei.theory.lexicon import load_vocabulary
@@ -155,7 +129,7 @@ def run(oracle: str = "pybullet", store: Path | None = STORE, seed: int = SEED,
     Y = verdicts(tr.S)
     y_held = verdicts(ho.S)
     held_scenes = [ho.antecedents[i] for i in ho.of]
-    key, clear = key_of(qs.S, len(qs.antecedents), qs.of)
+    key, clear = question_key(qs.S, qs.of, len(qs.antecedents))
     report["questions_clear"] = int(clear.sum())
     for meaning in ("prior", "pours"):
         t = time.perf_counter()
@@ -167,8 +141,7 @@ def run(oracle: str = "pybullet", store: Path | None = STORE, seed: int = SEED,
         for label, scenes in (("antecedent", held_scenes), ("description", describe(ho.P))):
             a = accuracy(g.predict(scenes), y_held)
             r[f"heldout_{label}"] = {"coverage": a.overall_coverage, "accuracy": a.overall_accuracy}
-        r["questions"] = dict(zip(("coverage", "accuracy"),
-                                  question_scores(g.predict(qs.antecedents), key, clear)))
+        r["questions"] = question_scores(g.predict(qs.antecedents), key, clear)
         report[f"meaning_{meaning}"] = r
         if meaning == "prior":
             general = g
@@ -176,23 +149,22 @@ def run(oracle: str = "pybullet", store: Path | None = STORE, seed: int = SEED,
             defaults = type(g)(rules=[x for x in g.rules if not x.body])
             report["defaults_only"] = {
                 "heldout_antecedent": accuracy(defaults.predict(held_scenes), y_held).overall_accuracy,
-                "questions": question_scores(defaults.predict(qs.antecedents), key, clear)[1]}
+                "questions": question_scores(defaults.predict(qs.antecedents), key, clear)["accuracy"]}
             # the clear verdicts of the questions that the defaults get wrong
             hard = clear & (defaults.predict(qs.antecedents) != key)
             report["questions_against_the_default"] = {
                 "cases": int(hard.sum()),
                 "right": int(((g.predict(qs.antecedents) == key) & hard).sum())}
     for label, scenes in (("antecedent", held_scenes), ("description", describe(ho.P))):
-        for name, pred in baselines(train_desc, Y, scenes, seed).items():
+        for name, pred in model_predictions(train_desc, Y, scenes, seed).items():
             a = accuracy(pred, y_held)
             report[f"{name}_{label}"] = {"coverage": a.overall_coverage, "accuracy": a.overall_accuracy}
-    for name, pred in baselines(train_desc, Y, qs.antecedents, seed).items():
-        report[f"{name}_questions"] = dict(zip(("coverage", "accuracy"),
-                                              question_scores(pred, key, clear)))
+    for name, pred in model_predictions(train_desc, Y, qs.antecedents, seed).items():
+        report[f"{name}_questions"] = question_scores(pred, key, clear)
     # the questions one by one, as the general theory answers them
     pred = general.predict(qs.antecedents)
     report["by_question"] = [
-        {"text": q["text"], "wrong": [names[k] for k in range(len(names))
+        {"text": q.text, "wrong": [names[k] for k in range(len(names))
                                       if clear[i, k] and pred[i, k] != -1 and pred[i, k] != key[i, k]]}
         for i, q in enumerate(questions())]
     # importance weights: the explored pours in the support of P(.|B)
@@ -219,7 +191,9 @@ def answer_time(repeats: int = 3) -> dict:
     from pantarhei.bridge.theories.loading import load
 
     theory = load()
-    asked = [q["antecedent"] for q in questions()]
+    from pantarhei.bridge.evaluation.questions import questions
+
+    asked = [q.antecedent for q in questions()]
     e = prolog_load(theory)
     e.use_module("queries")
     times = []
