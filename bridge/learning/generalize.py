@@ -98,6 +98,12 @@ class Settings:
             raise ValueError(f"meaning is prior or pours, not {self.meaning!r}")
 
 
+def rank(body: Sequence[str], confidence: float, rule_id: str) -> tuple:
+    """How a learned rule ranks against a conflicting one that can apply in
+    the same scene; higher ranks win: more specific, then surer, then the id."""
+    return (len(body), round(abs(confidence - 0.5), 9), rule_id)
+
+
 @dataclass(frozen=True)
 class GeneralRule:
     """`body => expectation` (holds) or `body => neg(expectation)`."""
@@ -116,8 +122,7 @@ class GeneralRule:
 
     @property
     def rank(self) -> tuple:
-        """Higher ranks win: more specific, then surer, then the id."""
-        return (len(self.body), round(abs(self.confidence - 0.5), 9), self.id)
+        return rank(self.body, self.confidence, self.id)
 
     def rule(self) -> Rule:
         return Rule(self.id, "defeasible", self.head, self.body)
@@ -487,7 +492,7 @@ def _level(body, r_holds: bool, chosen: Sequence[GeneralRule]) -> int:
     return 1 + max(under) if under else 1
 
 
-def _together(a: Sequence[str], b: Sequence[str]) -> bool:
+def together(a: Sequence[str], b: Sequence[str]) -> bool:
     """Whether one scene can hold both bodies."""
     return _askable(tuple(sorted(set(a) | set(b))))
 
@@ -498,7 +503,7 @@ def _superiority(rules: Sequence[GeneralRule]) -> list[Sup]:
     explicit sup/2."""
     out = []
     for r, q in combinations(rules, 2):
-        if r.holds == q.holds or not _together(r.body, q.body):
+        if r.holds == q.holds or not together(r.body, q.body):
             continue
         hi, lo = (r, q) if r.rank > q.rank else (q, r)
         reason = "specificity" if set(lo.body) < set(hi.body) else "rank"

@@ -24,7 +24,7 @@ from typing import Sequence
 import numpy as np
 
 from pantarhei.bridge.files import write_text
-from pantarhei.bridge.learning.generalize import General, Settings, _together, generalize
+from pantarhei.bridge.learning.generalize import General, Settings, generalize, rank, together
 from pantarhei.bridge.theories.model import Theory, complement, read_native
 
 
@@ -38,7 +38,7 @@ class Ranked:
 
     @property
     def rank(self) -> tuple:
-        return (len(self.body), round(abs(self.confidence - 0.5), 9), self.id)
+        return rank(self.body, self.confidence, self.id)
 
 
 def ranked_rules(theory: Theory, general: General) -> list[Ranked]:
@@ -63,7 +63,7 @@ def superiority(rules: Sequence[Ranked]) -> list[tuple[str, str]]:
         for r in by_head[head]:
             for q in by_head.get(complement(head), ()):
                 rb, qb = set(r.body), set(q.body)
-                if rb < qb or qb < rb or not _together(r.body, q.body):
+                if rb < qb or qb < rb or not together(r.body, q.body):
                     continue
                 hi, lo = (r, q) if r.rank > q.rank else (q, r)
                 out.append((hi.id, lo.id))
