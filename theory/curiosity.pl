@@ -166,33 +166,29 @@ settings(Options, S) :-
     aggregate_all(count, parameter(_, _, _, _, _), NParams),
     DefaultSamples is NParams + 1,
     default_initial(DefaultInitial),
-    default(oracle, DOracle), default(max_rules, DMax), default(threshold, DSlope),
+    default(threshold, DSlope),
     default(significance, DLevel),
-    default(seed, DSeed), default(breadth, DBreadth), default(ridge, DRidge),
-    default(qualify, DQualify), default(curiosity, DCuriosity),
-    default(permutations, DPermutations),
-    option(curiosity(Curiosity), Options, DCuriosity),
+    option_default(curiosity, Options, Curiosity),
     (   memberchk(Curiosity, [paper, discover])
     ->  true
     ;   throw(exploration_error("curiosity: expected paper or discover"))
     ),
     (   Curiosity == paper -> DThreshold = DSlope ; DThreshold = DLevel ),
-    option(permutations(Permutations), Options, DPermutations),
+    option_default(permutations, Options, Permutations),
     check_positive(permutations, Permutations),
-    default(resample, DResample),
-    option(resample(Resample), Options, DResample),
+    option_default(resample, Options, Resample),
     (   integer(Resample), Resample >= 0 -> true
     ;   throw(exploration_error("resample: expected a whole number >= 0"))
     ),
-    option(oracle(Oracle), Options, DOracle),
-    option(max_rules(Max), Options, DMax),
+    option_default(oracle, Options, Oracle),
+    option_default(max_rules, Options, Max),
     option(samples(Samples), Options, DefaultSamples),
     option(threshold(Threshold0), Options, DThreshold),
-    option(seed(Seed), Options, DSeed),
+    option_default(seed, Options, Seed),
     option(initial(Initial0), Options, DefaultInitial),
-    option(breadth(Breadth), Options, DBreadth),
-    option(ridge(Ridge0), Options, DRidge),
-    option(qualify(Qualify), Options, DQualify),
+    option_default(breadth, Options, Breadth),
+    option_default(ridge, Options, Ridge0),
+    option_default(qualify, Options, Qualify),
     option(resume(Resume), Options, false),
     option(executor(Executor), Options, local),
     option(progress(Progress), Options, true),
@@ -232,6 +228,13 @@ settings(Options, S) :-
         put_dict(oracle_options, S3, OracleOptions, S)
     ;   S = S3
     ).
+
+%   option_default(+Key, +Options, -Value): the option Key(Value) of
+%   Options, or the default of theory/defaults.pl.
+option_default(Key, Options, Value) :-
+    default(Key, Default),
+    Option =.. [Key, Value],
+    option(Option, Options, Default).
 
 optional(Key, Options, S0, S) :-
     Opt =.. [Key, V],
