@@ -1,95 +1,132 @@
 """Discovery: how many behaviours each search method finds with the same
-budget of pours, on the synthetic oracle (seeds 1 to 5, 775 pours each).
+budget of pours (25 batches of 31).
 
-Methods: curiosity (discover, the default), curiosity (paper), random valid
-antecedents (31 pours each), random pours from the prior, and MAP-Elites
-(pyribs) over the 30 parameters with the nine verdicts as its cells.
+Methods: curiosity (discover), curiosity (paper), random valid antecedents
+(31 pours each), random pours from the prior, and MAP-Elites (pyribs) over
+the 30 parameters with the nine verdicts as its cells.
 
 Measures: behaviours seen (distinct nine-verdict vectors among the pours,
 each shown by at least two), behaviours in the theory (distinct consequents
-of the rules, for the methods that build one: one rule set per antecedent,
-qualified as Algorithm 1 does), and for the curiosities the explored
-antecedents and the new antecedents per iteration. Medians with the range
-over the seeds.
+of the rules of Algorithm 1, for the methods that build one: one rule set
+per antecedent, qualified as Algorithm 1 does), and for the curiosities the
+explored antecedents and the new antecedents per iteration. Medians with
+the range over the seeds.
+
+By default the synthetic oracle, seeds 1 to 5, every method. The
+environment chooses otherwise (the PyBullet oracle takes about 10 minutes a
+method and seed on 2 cores; its pours are kept in the project's store, so a
+second run simulates nothing):
+
+    PANTARHEI_BENCH_ORACLE=pybullet PANTARHEI_BENCH_SEEDS=1,2,3 \\
+    PANTARHEI_BENCH_METHODS=discover,random python -m benchmarks discovery
 """
 from __future__ import annotations
 
 import json
+import os
 import statistics
 import tempfile
 from collections import defaultdict
 from pathlib import Path
+from typing import Callable
 
 import numpy as np
 
-SEEDS = (1, 2, 3, 4, 5)
 RULES, SAMPLES = 25, 31
+METHODS = {"discover": "curiosity (discover)", "paper": "curiosity (paper)",
+           "random": "random valid antecedents", "prior": "random pours (prior)",
+           "map_elites": "MAP-Elites (pyribs)"}
 
 
-def synthetic(P: np.ndarray) -> np.ndarray:
-    from pantarhei.oracle.synthetic import SyntheticOracle
+def settings() -> tuple[str, tuple[int, ...], tuple[str, ...], Path]:
+    """The oracle, seeds and methods this run measures, and the store."""
+    oracle = os.environ.get("PANTARHEI_BENCH_ORACLE", "synthetic")
+    seeds = tuple(int(s) for s in os.environ.get("PANTARHEI_BENCH_SEEDS", "1,2,3,4,5").split(","))
+    methods = tuple(os.environ.get("PANTARHEI_BENCH_METHODS", ",".join(METHODS)).split(","))
+    unknown = set(methods) - set(METHODS)
+    if unknown:
+        raise SystemExit(f"unknown method {sorted(unknown)[0]} (choose from {', '.join(METHODS)})")
+    from pantarhei.oracle.store import DEFAULT_STORE
 
-    oracle = SyntheticOracle()
-    return np.array([oracle.score(p).scores for p in P])
+    return oracle, seeds, methods, Path(DEFAULT_STORE).absolute()
+
+
+def simulator(oracle: str, store: Path) -> Callable[[np.ndarray], np.ndarray]:
+    if oracle == "synthetic":
+        from pantarhei.oracle.synthetic import SyntheticOracle
+
+        o = SyntheticOracle()
+        return lambda P: np.array([o.score(p).scores for p in P])
+    from pantarhei.bridge.exploration.simulation import open_simulator
+
+    sim = open_simulator(oracle, "local", None, store)
+    return lambda P: np.asarray(sim.simulate(P, progress=False), dtype=float)
 
 
 def theory_behaviours(path: Path) -> int:
-    """Distinct consequents (nine verdicts) of the rules of a learned theory."""
+    """Distinct consequents (nine verdicts) of Algorithm 1's rules of a learned theory."""
     from pantarhei.theory import read_facts
 
     f = read_facts([path])
     prov = {rid: v for rid, k, v in f["provenance"] if k == "antecedent"}
     heads: dict[str, dict[str, bool]] = defaultdict(dict)
     for rid, _, head in f["rule"]:
+        if rid not in prov:                 # a general rule: not an explored antecedent's
+            continue
         neg = isinstance(head, tuple)
         heads[prov[rid]][head[1] if neg else head] = not neg
     return len({tuple(sorted(h.items())) for h in heads.values()})
 
 
-def curiosity(mode: str, seed: int, tmp: Path) -> dict:
+def curiosity(mode: str, seed: int, tmp: Path, oracle: str, store: Path,
+              simulate: Callable) -> dict:
     from pantarhei.bridge.exploration.loop import Options, explore
     from pantarhei.bridge.exploration.simulation import iteration_seed
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen
     from pantarhei.oracle.generative import sample
 
     out = tmp / f"{mode}-{seed}.pl"
-    r = explore(Options(curiosity=mode, oracle="synthetic", max_rules=RULES, seed=seed, out=out,
-                        store=tmp / f"{mode}-{seed}.sqlite", progress=False, executor="inline"))
+    inline = oracle == "synthetic"
+    r = explore(Options(curiosity=mode, oracle=oracle, max_rules=RULES, seed=seed, out=out,
+                        store=tmp / f"{mode}-{seed}.sqlite" if inline else store,
+                        progress=False, executor="inline" if inline else "local",
+                        general=False))
     trace = [json.loads(line) for line in out.with_suffix(".trace.jsonl").read_text().splitlines()]
     P = np.vstack([sample(t["antecedent"], SAMPLES, iteration_seed(seed, t["iteration"]))
                    for t in trace])
-    S = synthetic(P)
+    S = simulate(P)
+    wall, sim = r.get("wall", 0.0), r.get("timings", {}).get("oracle", 0.0)
     return {"seen": behaviours_seen(S), "theory": theory_behaviours(out),
-            "explored": r["explored"], "pours": len(P), "planes": r["timings"].get("planes", 0.0),
+            "explored": r["explored"], "pours": len(P),
+            "other": (wall - sim) / wall if wall > 0 else 0.0,
             "added": [len(t["added"]) for t in trace]}
 
 
-def random_antecedents(seed: int) -> dict:
-    from pantarhei.bridge.evaluation.heldout import random_antecedents as draw
+def random_antecedents(seed: int, simulate: Callable) -> dict:
+    from pantarhei.bridge.evaluation.heldout import random_exploration
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen
     from pantarhei.bridge.evaluation.measures import distinct_behaviours
     from pantarhei.bridge.evaluation.rule_building import consequents
-    from pantarhei.bridge.exploration.simulation import iteration_seed
-    from pantarhei.oracle.generative import sample
 
-    ants = draw(seed + 7919, RULES)          # as the evaluation draws its baseline
-    P = np.vstack([sample(list(a), SAMPLES, iteration_seed(seed + 7919, i))
-                   for i, a in enumerate(ants, start=1)])
-    S = synthetic(P)
+    ants, P = random_exploration(seed, RULES, SAMPLES)     # as the evaluation draws its baseline
+    S = simulate(P)
     return {"seen": behaviours_seen(S), "theory": distinct_behaviours(consequents(ants, P, S))}
 
 
-def prior_pours(seed: int) -> dict:
+def prior_pours(seed: int, simulate: Callable) -> dict:
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen
+    from pantarhei.bridge.exploration.simulation import iteration_seed
     from pantarhei.oracle.generative import sample
 
-    return {"seen": behaviours_seen(synthetic(sample([], RULES * SAMPLES, seed)))}
+    # as the evaluation draws its baseline
+    return {"seen": behaviours_seen(simulate(sample([], RULES * SAMPLES,
+                                                    iteration_seed(seed + 7919, 0))))}
 
 
-def map_elites(seed: int) -> dict:
+def map_elites(seed: int, simulate: Callable) -> dict:
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen, map_elites as search
 
-    return {"seen": behaviours_seen(search(synthetic, RULES * SAMPLES, seed).S)}
+    return {"seen": behaviours_seen(search(simulate, RULES * SAMPLES, seed, batch=SAMPLES).S)}
 
 
 def spread(values: list[float]) -> str:
@@ -97,16 +134,25 @@ def spread(values: list[float]) -> str:
 
 
 def main() -> None:
+    oracle, seeds, methods, store = settings()
+    simulate = simulator(oracle, store)
     rows: dict[str, list[dict]] = defaultdict(list)
     with tempfile.TemporaryDirectory() as d:
         tmp = Path(d)
-        for seed in SEEDS:
-            rows["curiosity (discover)"].append(curiosity("discover", seed, tmp))
-            rows["curiosity (paper)"].append(curiosity("paper", seed, tmp))
-            rows["random valid antecedents"].append(random_antecedents(seed))
-            rows["random pours (prior)"].append(prior_pours(seed))
-            rows["MAP-Elites (pyribs)"].append(map_elites(seed))
-    print(f"synthetic oracle, {RULES * SAMPLES} pours, seeds {SEEDS[0]}-{SEEDS[-1]}: "
+        for seed in seeds:
+            for m in methods:
+                if m in ("discover", "paper"):
+                    r = curiosity(m, seed, tmp, oracle, store, simulate)
+                elif m == "random":
+                    r = random_antecedents(seed, simulate)
+                elif m == "prior":
+                    r = prior_pours(seed, simulate)
+                else:
+                    r = map_elites(seed, simulate)
+                rows[METHODS[m]].append(r)
+                print(f"  {oracle}, seed {seed}, {METHODS[m]}: "
+                      + ", ".join(f"{k} {v}" for k, v in r.items() if k != "added"), flush=True)
+    print(f"{oracle} oracle, {RULES * SAMPLES} pours, seeds {','.join(map(str, seeds))}: "
           "median [min-max]")
     print(f"{'method':<26} {'behaviours seen':>16} {'in the theory':>14} {'explored':>12}")
     for method, rs in rows.items():
@@ -114,10 +160,10 @@ def main() -> None:
         theory = spread([r["theory"] for r in rs]) if "theory" in rs[0] else "-"
         explored = spread([r["explored"] for r in rs]) if "explored" in rs[0] else "-"
         print(f"{method:<26} {seen:>16} {theory:>14} {explored:>12}")
-    for method in ("curiosity (discover)", "curiosity (paper)"):
-        for seed, r in zip(SEEDS, rows[method]):
-            print(f"{method}, seed {seed}: new antecedents per iteration {r['added']}; "
-                  f"planes {r['planes']:.2f} s")
+    for m in ("discover", "paper"):
+        for seed, r in zip(seeds, rows.get(METHODS[m], [])):
+            print(f"{METHODS[m]}, seed {seed}: new antecedents per iteration {r['added']}; "
+                  f"everything but simulation {100 * r['other']:.1f}% of the wall time")
 
 
 if __name__ == "__main__":

@@ -38,10 +38,13 @@ Requests and replies are JSON text; a reply =|{"error": Text}|= raises
 
 The loop's state is the term st(Iteration, Explored, ANew): Explored lists
 ant(Id, Props, Parent, Via) in the order of exploration, ANew lists
-cand(Props, Parent, Via) in the order they were added (A_new is a queue:
-pop takes the oldest). Via is `initial`, or via(Expectation, Param, Sign)
-for the plane, parameter and sign (up or down) that produced it. The state
-is saved after every explored antecedent, so an exploration can resume.
+cand(Props, Parent, Via) in the order they are popped (for the paper's
+curiosity a queue, the oldest first; for the discovering one the most novel
+first). Via is `initial`; via(Expectation, Param, Sign) for the plane,
+parameter and sign (up or down) that produced it; `near` for a neighbour of
+the antecedent explored before it; `jump` for a random valid antecedent; or
+more(Id, K) for the K-th more batch of an explored antecedent. The state is
+saved after every explored antecedent, so an exploration can resume.
 
 Two curiosities share the loop (option curiosity/1):
 
@@ -49,13 +52,19 @@ Two curiosities share the loop (option curiosity/1):
     explored antecedents is followed when its slope exceeds the threshold,
     and modify/5 moves the parameters of its largest gradient components by
     one rank.
-  - `discover` (the default): a plane's slopes count only where they beat
-    shuffles of the same weighted pours (a permutation test at the
-    significance level given as threshold), and modify_past/4 proposes, for
-    every significant plane of the chosen antecedent and every significant
-    parameter of it, the antecedents whose propositions move the pours past
-    the point where the plane's verdict flips; those whose behaviour the
-    plane predicts to be unseen so far are queued first.
+  - `discover`: a plane's slopes count only where they beat shuffles of the
+    same weighted pours (a permutation test at the significance level given
+    as threshold). The candidates of a step are the antecedents that move
+    the pours past the point where a significant plane's verdict flips
+    (modify_past/4, every significant plane and parameter), the neighbours
+    of the antecedent just explored (neighbours/3), and as many random valid
+    antecedents as a batch has pours (jumps, far from anything explored).
+    Each candidate and each of A_new gets its novelty, the chance that it
+    shows a behaviour not yet got as a forest of every pour so far predicts
+    it (bridge/exploration/novelty.py); A_new keeps the most novel of those
+    that reach the novelty level. When nothing reaches it, the antecedent
+    just explored gets more pours (resample/1), which may change the forest's
+    mind; when that is spent too and A_new is empty, the exploration stops.
 */
 
 :- use_module(library(apply)).
@@ -102,12 +111,16 @@ load_defaults :-
 %     - samples(+N): simulations per explored antecedent (default: the
 %       number of parameters plus one)
 %     - curiosity(+Mode)*: discover or paper (see the module's documentation)
+%     - queue(+N)*: A_new keeps the N most novel candidates (discover)
 %     - threshold(+X)*: for discover, the significance level of the
 %       permutation test (default significance_permille); for paper, the
 %       slope below which nothing new is explored (default threshold_permille)
 %     - permutations(+N)*: shuffles of the permutation test (discover)
 %     - resample(+N)*: more batches of an antecedent whose planes are all
-%       undecided (discover); max_rules then counts batches
+%       undecided and that queued nothing new (discover); max_rules then
+%       counts batches
+%     - novelty(+X)*: the estimated chance of a new behaviour, from 0 to 1,
+%       a candidate needs to be queued (discover; default novelty_permille)
 %     - seed(+S)*: seed of every random choice
 %     - initial(+Props)*: a_0 (default_initial/1)
 %     - breadth(+K)*: the paper's modify uses the K largest gradient components
@@ -180,6 +193,12 @@ settings(Options, S) :-
     (   integer(Resample), Resample >= 0 -> true
     ;   throw(exploration_error("resample: expected a whole number >= 0"))
     ),
+    option_default(queue, Options, Queue),
+    check_positive(queue, Queue),
+    option_default(novelty, Options, Novelty0),
+    (   number(Novelty0), Novelty0 >= 0, Novelty0 =< 1 -> Novelty is float(Novelty0)
+    ;   throw(exploration_error("novelty: expected a number from 0 to 1"))
+    ),
     option_default(oracle, Options, Oracle),
     option_default(max_rules, Options, Max),
     option(samples(Samples), Options, DefaultSamples),
@@ -219,7 +238,8 @@ settings(Options, S) :-
     S0 = _{oracle:Oracle, max_rules:Max, samples:Samples, threshold:Threshold,
            seed:Seed, initial:Initial, breadth:Breadth, ridge:Ridge, qualify:Qualify,
            resume:Resume, executor:Executor, progress:Progress, out:Out,
-           curiosity:Curiosity, permutations:Permutations, resample:Resample},
+           curiosity:Curiosity, permutations:Permutations, resample:Resample,
+           novelty:Novelty, queue:Queue},
     optional(store, Options, S0, S1),
     optional(workers, Options, S1, S2),
     optional(ray_address, Options, S2, S3),
@@ -315,12 +335,12 @@ step(st(I, Explored, [cand(Props, Parent, Via)|Rest]), Settings, st(I1, Explored
     maplist(entry, Explored1, Entries),
     call_bridge(exploration_best_plane, _{antecedents:Entries}, Best),
     (   Settings.curiosity == discover
-    ->  discover_added(Best, Explored1, Rest, Added),
-        more(Added, Settings, Id, Props, Parent, Via, More)
+    ->  discover_queue(Best, Explored1, Id, Props, Rest, Settings, I1, Added, Queue),
+        more(Added, Settings, Id, Props, Parent, Via, More),
+        append(More, Queue, ANew)
     ;   paper_added(Best, Settings, Explored1, Rest, Added),
-        More = []
+        append(Rest, Added, ANew)
     ),
-    append([More, Rest, Added], ANew),
     S1 = st(I1, Explored1, ANew),
     format(string(State), "~k", [S1]),
     length(ANew, Left),
@@ -382,15 +402,52 @@ more(Added, Settings, Id, Props, Parent, Via, More) :-
     ;   More = []
     ).
 
-%   The discovering step: modify_past/4 for every significant plane and
-%   parameter of every antecedent with a significant plane (steepest
-%   first); of each antecedent's new ones, those predicted to show an unseen
-%   behaviour first (each group in modify_past/4's order).
-discover_added(Best, Explored, Rest, Added) :-
+%   discover_queue(+Best, +Explored, +Id, +Props, +Rest, +Settings, +I, -Added, -Queue):
+%   the discovering step of iteration I, after the antecedent Id (Props).
+%   The candidates are those of modify_past/4 for every significant plane
+%   and parameter of every antecedent with a significant plane (steepest
+%   first), every valid antecedent one proposition away from Props
+%   (neighbours/3), random valid antecedents (jumps/4), then A_new as it was
+%   (Rest). Each gets its novelty (exploration_predict); Queue, the new
+%   A_new, holds the most novel of those that reach the novelty level, at
+%   most `queue` of them (ties in the order above). Added are the new ones
+%   of Queue.
+discover_queue(Best, Explored, Id, Props, Rest, Settings, I, Added, Queue) :-
     exclusions(Explored, Rest, Exclude0),
-    foldl(follow(Explored), Best.followed, Exclude0-[], _-RevAdded),
-    append(RevAdded, Added0),
-    Added = Added0.
+    foldl(follow(Explored), Best.followed, Exclude0-[], Exclude1-RevFollowed),
+    append(RevFollowed, Followed),
+    neighbours(Props, Exclude1, Near),
+    findall(cand(P, Id, near), member(P, Near), Neighbours),
+    append(Exclude1, Near, Exclude2),
+    jumps(Settings, I, Exclude2, Far),
+    findall(cand(P, none, jump), member(P, Far), Jumps),
+    append([Followed, Neighbours, Jumps, Rest], Pool),
+    (   Pool == []
+    ->  Added = [], Queue = []
+    ;   maplist(entry, Explored, Entries),
+        findall(P, member(cand(P, _, _), Pool), Cands),
+        call_bridge(exploration_predict, _{antecedents:Entries, candidates:Cands}, Reply),
+        findall(Key-C, ( nth1(K, Pool, C), nth1(K, Reply.queued, true),
+                         nth1(K, Reply.novelty, N), Key is -N ),
+                Keyed),
+        keysort(Keyed, Sorted),
+        pairs_values(Sorted, Queue0),
+        length(Queue0, Len),
+        Keep is min(Len, Settings.queue),
+        length(Queue, Keep),
+        append(Queue, _, Queue0),
+        append([Followed, Neighbours, Jumps], New),
+        include([C]>>memberchk(C, Queue), New, Added)
+    ).
+
+%   jumps(+Settings, +Iteration, +Exclude, -New): as many valid antecedents
+%   as the batch has pours, drawn uniformly (validity:random_antecedents/3,
+%   seeded by the run's seed and the iteration), none in Exclude.
+jumps(Settings, I, Exclude, New) :-
+    Seed is Settings.seed * 1000003 + I,
+    random_antecedents(Seed, Settings.samples, All),
+    exclude([P]>>memberchk(P, Exclude), All, New0),
+    list_to_set(New0, New).
 
 follow(Explored, F, Exclude0-Acc0, Exclude-[Added|Acc0]) :-
     get_dict(antecedent, F, AId),
@@ -402,18 +459,22 @@ follow(Explored, F, Exclude0-Acc0, Exclude-[Added|Acc0]) :-
               get_dict(parameter, M, X), get_dict(sign, M, Sign), get_dict(flip, M, Flip) ),
             Moves),
     modify_past(MProps, Moves, Exclude0, Mods),
+    findall(cand(P, AId, via(E, X, Sign)), member(mod(P, E, X, Sign), Mods), Added),
     findall(P, member(mod(P, _, _, _), Mods), Cands),
-    (   Cands == []
-    ->  Unseen = []
-    ;   call_bridge(exploration_predict, _{antecedent:AId, candidates:Cands}, Reply),
-        Unseen = Reply.unseen
-    ),
-    findall(cand(P, AId, via(E, X, Sign)),
-            ( nth1(K, Mods, mod(P, E, X, Sign)), nth1(K, Unseen, true) ), First),
-    findall(cand(P, AId, via(E, X, Sign)),
-            ( nth1(K, Mods, mod(P, E, X, Sign)), \+ nth1(K, Unseen, true) ), Then),
-    append(First, Then, Added),
     append(Exclude0, Cands, Exclude).
+
+%!  neighbours(+Props:list, +Exclude:list, -New:list) is det.
+%
+%   The valid antecedents not in Exclude that differ from Props by one
+%   proposition: one replaced by another value of its dimension, or one of
+%   a dimension Props does not use added. Sorted, each once, in the order
+%   of the vocabulary's parameters.
+neighbours(Props0, Exclude, New) :-
+    sort(Props0, Props),
+    findall(P1, ( parameter(X, _, _, _, _), candidate_any(Props, X, P1),
+                  \+ memberchk(P1, Exclude), valid_antecedent(P1) ),
+            All),
+    list_to_set(All, New).
 
 exclusions(Explored, Rest, Exclude) :-
     findall(P, ( member(ant(_, P, _, _), Explored) ; member(cand(P, _, _), Rest) ), Exclude).
@@ -607,12 +668,14 @@ setting_facts(Settings, Reply, Stop, Explored, Left, Facts) :-
     length(Explored, N),
     Permille is round(Settings.threshold * 1000),
     RidgePermille is round(Settings.ridge * 1000),
+    NoveltyPermille is round(Settings.novelty * 1000),
     string_value(Reply.oracle_version, Version),
     (   Settings.curiosity == discover
     ->  Threshold = [ setting(curiosity, discover),
                       setting(significance_permille, Permille),
                       setting(permutations, Settings.permutations),
-                      setting(resample, Settings.resample) ]
+                      setting(resample, Settings.resample),
+                      setting(novelty_permille, NoveltyPermille) ]
     ;   Threshold = [ setting(threshold_permille, Permille) ]
     ),
     append([ [ setting(oracle, Settings.oracle),
@@ -672,6 +735,8 @@ outcome_facts(AId, Props, Parent, Via, Q, O, Facts, Tail) :-
     append(Fs, Tail, Facts).
 
 via_facts(_, initial, []).
+via_facts(_, near, []).
+via_facts(_, jump, []).
 via_facts(Id, via(E, X, Sign), [ provenance(Id, followed, E),
                                  provenance(Id, direction, X),
                                  provenance(Id, sign, Sign) ]).

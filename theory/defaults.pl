@@ -18,6 +18,8 @@ default(max_rules, 25).
 default(significance_permille, 50).
 default(permutations, 199).
 default(resample, 2).
+default(novelty_permille, 100).
+default(queue, 100).
 default(threshold_permille, 100).
 default(ridge_permille, 1000).
 default(seed, 1).

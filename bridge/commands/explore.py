@@ -23,9 +23,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--samples", type=int,
                    help="simulations per explored antecedent (default: parameters + 1)")
     p.add_argument("--curiosity", choices=("discover", "paper"), default=d["curiosity"],
-                   help="discover: follow only plane slopes that beat shuffled pours, and modify "
-                        "past the point where a verdict flips; paper: Algorithm 1 as the paper "
-                        f"states it (default {d['curiosity']})")
+                   help="discover: queue the candidates (moves past where a significant plane's "
+                        "verdict flips, neighbours, random jumps) a forest of the pours so far "
+                        "predicts to show something new, most novel first; paper: Algorithm 1 "
+                        f"as the paper states it (default {d['curiosity']})")
     p.add_argument("--threshold", type=float,
                    help="discover: the significance level of the permutation test "
                         f"(default {d['significance']}); paper: the plane slope below which "
@@ -33,6 +34,11 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--resample", type=int, default=d["resample"],
                    help="discover: more batches of an antecedent whose planes are all undecided "
                         f"(default {d['resample']}); --max-rules then counts batches")
+    p.add_argument("--novelty", type=float, default=d["novelty"],
+                   help="discover: the predicted novelty, from 0 to 1, a candidate needs to be "
+                        f"queued (default {d['novelty']})")
+    p.add_argument("--queue", type=int, default=d["queue"],
+                   help=f"discover: A_new keeps this many most novel candidates (default {d['queue']})")
     p.add_argument("--permutations", type=int, default=d["permutations"],
                    help=f"discover: shuffles of the permutation test (default {d['permutations']})")
     options.add_seed(p)
@@ -70,7 +76,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def explore(args: argparse.Namespace) -> int:
-    for name in ("max_rules", "samples", "breadth", "workers", "permutations"):
+    for name in ("max_rules", "samples", "breadth", "workers", "permutations", "queue"):
         v = getattr(args, name)
         if v is not None and v < 1:
             raise UserError(f"--{name.replace('_', '-')} must be at least 1")
@@ -78,13 +84,17 @@ def explore(args: argparse.Namespace) -> int:
         raise UserError("--threshold and --ridge must not be negative")
     if args.resample < 0:
         raise UserError("--resample must not be negative")
+    if not 0 <= args.novelty <= 1:
+        raise UserError("--novelty must be from 0 to 1")
     if args.curiosity == "discover" and args.threshold is not None and args.threshold > 1:
         raise UserError("--threshold is a significance level with --curiosity discover: at most 1")
     initial = None
     if args.initial is not None:
         initial = validity.require_valid([t.strip() for t in args.initial.split(",") if t.strip()])
     opts = Options(
-        curiosity=args.curiosity, permutations=args.permutations, resample=args.resample, oracle=args.oracle, max_rules=args.max_rules, samples=args.samples,
+        curiosity=args.curiosity, permutations=args.permutations, resample=args.resample,
+        novelty=args.novelty, queue=args.queue, oracle=args.oracle, max_rules=args.max_rules,
+        samples=args.samples,
         threshold=args.threshold, seed=args.seed, initial=initial, breadth=args.breadth,
         ridge=args.ridge, qualify=args.qualify, out=Path(args.out), store=Path(args.store),
         resume=args.resume, executor=args.executor, workers=args.workers,

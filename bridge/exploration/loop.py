@@ -25,7 +25,7 @@ def _default(key: str) -> Any:
 class Options:
     """The options of one exploration (see explore/1 in theory/curiosity.pl)."""
     oracle: str = _default("oracle")
-    #: "discover" (planes tested against shuffles, modify past the flip) or "paper".
+    #: "discover" (candidates ranked by predicted novelty) or "paper".
     curiosity: str = _default("curiosity")
     max_rules: int = _default("max_rules")
     samples: int | None = None
@@ -34,6 +34,10 @@ class Options:
     permutations: int = _default("permutations")
     #: discover: more batches of an antecedent whose planes are undecided.
     resample: int = _default("resample")
+    #: discover: the novelty a candidate needs to be queued (bridge/exploration/novelty.py).
+    novelty: float = _default("novelty")
+    #: discover: how many of the most novel candidates A_new keeps.
+    queue: int = _default("queue")
     ridge: float = _default("ridge")
     seed: int = _default("seed")
     initial: Sequence[str] | None = None
@@ -55,6 +59,7 @@ class Options:
         items = [f"curiosity({prolog_quote(self.curiosity)})",
                  f"oracle({prolog_quote(self.oracle)})", f"max_rules({int(self.max_rules)})",
                  f"permutations({int(self.permutations)})", f"resample({int(self.resample)})",
+                 f"novelty({float(self.novelty)!r})", f"queue({int(self.queue)})",
                  f"seed({int(self.seed)})",
                  f"breadth({int(self.breadth)})", f"ridge({float(self.ridge)!r})", f"qualify({prolog_quote(self.qualify)})",
                  f"out({prolog_quote(str(Path(self.out).absolute()))})",

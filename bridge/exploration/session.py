@@ -39,6 +39,7 @@ import numpy as np
 
 from pantarhei.bridge.engines.swipl import Engine, engine as prolog_engine
 from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.exploration.novelty import Known, known, novelties
 from pantarhei.bridge.exploration.planes import Planes, best_abs_slope, plane_fit
 from pantarhei.bridge.exploration.qualify import QUALIFY, consequent
 from pantarhei.bridge.exploration.significance import Tested, permutation_test, shuffle_seed
@@ -48,7 +49,7 @@ from pantarhei.bridge.exploration.state import ExplorationStore, run_key
 from pantarhei.bridge.exploration.trace import (append_trace, plot_path, plot_trace,
                                                 trace_path, write_trace)
 from pantarhei.bridge.exploration.weights import weights
-from pantarhei.oracle.generative import (InvalidAntecedent, distribution, log_density,
+from pantarhei.oracle.generative import (InvalidAntecedent, log_density,
                                          normalise, sample)
 from pantarhei.oracle.store import DEFAULT_STORE
 from pantarhei.theory.lexicon import load_vocabulary
@@ -71,8 +72,8 @@ class Session:
     log_dens: dict[str, np.ndarray] = field(default_factory=dict)
     plane_cache: dict[str, tuple[np.ndarray, Planes | None]] = field(default_factory=dict)
     test_cache: dict[str, tuple[np.ndarray, Tested | None]] = field(default_factory=dict)
-    #: The antecedent and tested planes of the last significant direction.
-    predicting: dict[str, Tested] = field(default_factory=dict)
+    #: What the last novelty estimate knew: ((pours, antecedents), Known).
+    known: tuple[tuple[int, int], Known] | None = None
     started: float = field(default_factory=time.monotonic)
     bar: Any = None
     timings: dict[str, float] = field(default_factory=dict)
@@ -199,7 +200,8 @@ class Host:
         if request.get("curiosity", "paper") != "paper":   # the paper's runs keep their keys
             course.update(curiosity=str(request["curiosity"]),
                           permutations=int(request["permutations"]),
-                          resample=int(request["resample"]))
+                          resample=int(request["resample"]),
+                          novelty=float(request["novelty"]), queue=int(request["queue"]))
         run = run_key(course)
         store_path = Path(str(request.get("store") or DEFAULT_STORE))
         try:
@@ -347,7 +349,6 @@ class Host:
         sig = tested.significant(alpha)
         first = followed[0]["directions"][0]
         k = expectations.index(first["expectation"])
-        s.predicting = {f["antecedent"]: t for f, (_, _, t) in zip(followed, found)}
         return {"antecedent": str(entries[i]["id"]), "significant": True,
                 "expectation": first["expectation"], "slope": first["slope"],
                 "mean": first["mean"],
@@ -356,20 +357,26 @@ class Host:
                 "directions": followed[0]["directions"], "followed": followed}
 
     def predict(self, request: dict) -> dict:
-        """For each candidate antecedent, whether the behaviour the last
-        significant planes of the antecedent it modifies predict at its mean pour (the nine verdicts) is one
-        that no pour so far has shown."""
+        """The novelty of each candidate antecedent (bridge/exploration/novelty.py)
+        given every pour so far and the consequents of the explored
+        antecedents, and whether it reaches the level to be queued."""
         s = self.need_session()
-        tested = s.predicting.get(str(request["antecedent"]))
-        if tested is None:
-            raise RuntimeError("exploration_predict for an antecedent without significant planes")
-        seen = {tuple(r) for r in (s.scores[s.valid] > 0.5)}
-        out = []
-        for props in request["candidates"]:
-            centre = normalise(mean_pour([str(p) for p in props])[None, :])[0]
-            predicted = tested.mean + tested.coef @ (centre - tested.centre) > 0.5
-            out.append(tuple(bool(v) for v in predicted) not in seen)
-        return {"unseen": out}
+        entries = request["antecedents"]
+        key = (len(s.params), len(entries))
+        if s.known is None or s.known[0] != key:
+            W = s.weight_matrix(entries)
+            S = s.scores[s.valid]
+            mode = str(s.settings.get("qualify", "weighted"))
+            consequents = [tuple(o["holds"] for o in consequent(S, W[i], mode)["outcomes"])
+                           for i in range(len(entries))]
+            seed = int(s.settings["seed"])
+            s.known = (key, known(s.params, s.scores, consequents, int(s.settings["samples"]),
+                                  seed, shuffle_seed(seed, 0, len(s.params))))
+        k = s.known[1]
+        level = float(s.settings["novelty"])
+        found = novelties(k, [[str(p) for p in props] for props in request["candidates"]])
+        return {"novelty": [f["novelty"] for f in found],
+                "queued": [f["novelty"] >= level for f in found]}
 
     def qualify(self, request: dict) -> dict:
         s = self.need_session()
@@ -452,17 +459,6 @@ def _note(text: str) -> None:
 
 def _truthy(v: Any) -> bool:
     return v in (True, "true", 1, "1")
-
-
-def mean_pour(props: Sequence[str]) -> np.ndarray:
-    """The mean parameterization of P(p|props) (theory units): the middle of
-    each interval, a relative parameter's offset added to its base's mean and
-    clipped to its bounds (as parameter_mean/3 in theory/curiosity.pl)."""
-    d = distribution(props)
-    out = (d.low + d.high) / 2
-    for i in np.flatnonzero(d.base >= 0):
-        out[i] = min(d.bound_high[i], max(d.bound_low[i], out[d.base[i]] + (d.low[i] + d.high[i]) / 2))
-    return out
 
 
 def oracle_sample(request: dict) -> dict:

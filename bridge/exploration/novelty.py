@@ -1,0 +1,121 @@
+"""Novelty: how likely a candidate antecedent is to show a behaviour the
+exploration has not yet got, before any of its pours is simulated.
+
+The discovering curiosity ranks its candidates (A_new and the new ones of
+each step) by this estimate and queues only those that reach a level.
+
+For a candidate antecedent c, its pours are drawn from P(p|c) as its
+simulations would be (the same sampler, with a seed of its own), and a
+random forest of every pour so far (the nine verdicts against the
+normalised parameters) predicts them: q_e, the predicted share of c's pours
+in which expectation e holds. Taking q_e as the chance that c's verdict on
+e holds, the chance that c's consequent is one an explored antecedent
+already has is the sum over those consequents K of prod_e P(verdict_e =
+K_e). This is optimistic where the pours are mixed (q_e near one half, the
+verdict could go either way): it draws the exploration to where the
+behaviour changes, which found more behaviours than taking the verdict of
+the larger share as certain (python -m benchmarks discovery). The
+estimate is 0.8 times the chance that it is none of them, plus 0.2 times
+the share of c's predicted pours whose nine verdicts no two pours so far
+have shown. So it is near 0 where the forest expects nothing new, and near
+1 where it surely expects a new rule whose pours all show new behaviour.
+"""
+from __future__ import annotations
+
+import zlib
+from collections import Counter
+from dataclasses import dataclass
+from typing import Sequence
+
+import numpy as np
+from sklearn.ensemble import RandomForestClassifier
+
+from pantarhei.oracle.generative import normalise, sample
+
+#: Trees of the forest; its leaves hold at least this many pours.
+TREES, LEAF = 50, 3
+#: The weight of a new consequent in the estimate; the rest is the share of
+#: pours with unseen verdicts.
+NEW_CONSEQUENT = 0.8
+#: The seeded tie-break's share of the estimate (which so stays below 1).
+TIE = 1e-6
+
+
+@dataclass(frozen=True)
+class Known:
+    """What the exploration knows when it ranks candidates."""
+    forest: RandomForestClassifier | None
+    columns: np.ndarray         # (9,) verdict of a constant column (-1: the forest predicts it)
+    seen: frozenset             # nine-verdict vectors shown by at least two pours
+    consequents: frozenset      # consequents (nine verdicts) of the explored antecedents
+    samples: int                # pours per batch
+    seed: int                   # the run's seed (of the candidates' predicted pours)
+
+
+def known(params: np.ndarray, scores: np.ndarray, consequents: Sequence[tuple[bool, ...]],
+          samples: int, seed: int, forest_seed: int) -> Known:
+    """Fit the forest (seeded by `forest_seed`) on the valid pours (params in
+    theory units, scores (n, 9)) and gather the behaviours seen and the
+    explored antecedents' consequents."""
+    ok = np.all(np.isfinite(scores), axis=1)
+    P, V = params[ok], scores[ok] > 0.5
+    counts = Counter(tuple(bool(v) for v in row) for row in V)
+    seen = frozenset(k for k, c in counts.items() if c >= 2)
+    columns = np.full(V.shape[1], -1)
+    forest = None
+    if len(P):
+        constant = np.all(V == V[:1], axis=0)
+        columns = np.where(constant, V[0].astype(int), -1)
+        if not constant.all():
+            forest = RandomForestClassifier(n_estimators=TREES, min_samples_leaf=LEAF, max_features=None,
+                                            random_state=forest_seed % 2**32, n_jobs=1)
+            forest.fit(normalise(P), V[:, ~constant])
+    return Known(forest, columns, seen, frozenset(consequents), samples, seed)
+
+
+def candidate_seed(seed: int, props: Sequence[str]) -> int:
+    """The seed of a candidate's predicted pours: the run's seed and its
+    propositions, so a candidate is always judged on the same pours."""
+    key = zlib.crc32(",".join(sorted(props)).encode())
+    return int(np.random.SeedSequence([int(seed), key]).generate_state(1)[0])
+
+
+def predicted(k: Known, P: np.ndarray) -> np.ndarray:
+    """(m, 9) predicted probability that each expectation holds for pours P."""
+    out = np.tile(k.columns.astype(float), (len(P), 1))
+    if k.forest is not None:
+        proba = k.forest.predict_proba(normalise(P))
+        classes = k.forest.classes_
+        if not isinstance(proba, list):          # one free column: not multi-output
+            proba, classes = [proba], [classes]
+        for col, pr, cl in zip(np.flatnonzero(k.columns < 0), proba, classes):
+            cl = list(cl)
+            out[:, col] = pr[:, cl.index(True)] if True in cl else 0.0
+    return out
+
+
+def novelties(k: Known, candidates: Sequence[Sequence[str]]) -> list[dict]:
+    """The estimate for each candidate antecedent, with its parts (the chance
+    that its consequent is new, the share of predicted pours with unseen
+    verdicts). A seeded tie-break of a millionth orders equal
+    estimates without favouring the vocabulary's order; the estimate stays
+    below 1, so the level 1 queues nothing."""
+    if not candidates:
+        return []
+    seeds = [candidate_seed(k.seed, props) for props in candidates]
+    P = np.vstack([sample(list(props), k.samples, seed)
+                   for props, seed in zip(candidates, seeds)])
+    p = predicted(k, P).reshape(len(candidates), k.samples, -1)
+    known_c = np.array(sorted(k.consequents), dtype=bool).reshape(-1, p.shape[2])
+    out = []
+    for i in range(len(candidates)):
+        q = p[i].mean(axis=0)                    # predicted share of pours that hold
+        same = float(np.prod(np.where(known_c, q, 1.0 - q), axis=1).sum())
+        new = max(0.0, 1.0 - same)
+        unseen = float(np.mean([tuple(bool(v) for v in row) not in k.seen
+                                for row in p[i] > 0.5]))
+        tie = np.random.default_rng(seeds[i]).random() * TIE
+        estimate = NEW_CONSEQUENT * new + (1.0 - NEW_CONSEQUENT) * unseen
+        out.append({"novelty": estimate * (1.0 - TIE) + tie, "new_consequent": new,
+                    "unseen": unseen})
+    return out
