@@ -3,16 +3,19 @@
 % (pantarhei.theory.defaults: the command line and its help).
 % Common subset of Prolog and ASP: ground facts, no floats (permille).
 
-% Algorithm 1 (pantarhei explore): the curiosity (paper: the paper's own
-% variant; discover: planes tested against shuffled pours and modify past
-% the verdict's flip, which does not yet beat random search, see README), the oracle, the number of explored antecedents, the
+% Algorithm 1 (pantarhei explore): the curiosity (discover: planes tested
+% against shuffled pours, and candidates (moves past a significant plane's
+% flip, neighbours, random jumps) ranked by the novelty a forest of every
+% pour so far predicts; paper: the paper's own variant), the oracle, the
+% number of explored antecedents (batches of pours, for discover), the
 % threshold (for discover, the significance level of the permutation test
-% with its number of shuffles and how many more batches an undecided
-% antecedent gets; for paper, the slope below which nothing new
-% is explored), the ridge of the plane fits, the seed, how many gradient
+% with its number of shuffles; for paper, the slope below which nothing new
+% is explored), how many more batches an antecedent gets when nothing new is
+% queued after it, the novelty a candidate needs to be queued and how many
+% A_new keeps, the ridge of the plane fits, the seed, how many gradient
 % components the paper's modify follows, and how an antecedent's consequent
 % is qualified (weighted vote or the paper's argmax).
-default(curiosity, paper).
+default(curiosity, discover).
 default(oracle, pybullet).
 default(max_rules, 25).
 default(significance_permille, 50).

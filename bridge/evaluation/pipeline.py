@@ -256,7 +256,7 @@ def evaluate(opts: Options) -> Evaluation:
                        samples, mode, opts.seed)
         ev.seconds["predicting"] = round(time.monotonic() - t, 1)
         general_theories(ev, learned.theory, {"curiosity": curiosity, "random": rnd}, held,
-                         run, opts.seed)
+                         run, opts.seed, int(learned.setting("seed", opts.seed)))
         ev.paper_rules = _paper_rules(learned.theory, run, opts)
         ev.plans = _plans(learned.theory, run, opts)
     finally:
@@ -381,13 +381,16 @@ def final_theories(ev: Evaluation, theory: Theory, methods: dict[str, Pours], he
 
 
 def general_theories(ev: Evaluation, theory: Theory, methods: dict[str, Pours], held: dict,
-                     run: Simulations, seed: int) -> None:
+                     run: Simulations, seed: int, explored_seed: int) -> None:
     """The general theory against the learned models, side by side: for
     each method's pours, the general rules learned from them, a decision
     tree and gradient boosting trained on the same pours (their
     descriptions, one-hot), on the uniform held-out scenes and on the
     one-phrase questions (majority of their own pours); and the shipped
-    theory (both layers, by SWI-Prolog) on the same."""
+    theory (both layers, by SWI-Prolog) on the same. Curiosity's pours are
+    generalized with the exploration's seed (`explored_seed`), as `explore`
+    did, so they give the very rules the theory holds; the random pours
+    with the evaluation's."""
     from pantarhei.bridge.evaluation.measures import model_predictions, question_key, question_scores
     from pantarhei.bridge.evaluation.questions import question_pours, questions
     from pantarhei.bridge.learning.generalize import Settings, generalize
@@ -416,7 +419,8 @@ def general_theories(ev: Evaluation, theory: Theory, methods: dict[str, Pours], 
     out["shipped"] = shipped
     for method, m in methods.items():
         okm = np.all(np.isfinite(m.S), axis=1)
-        g = generalize(m.P[okm], m.S[okm], Settings(seed=seed))
+        g = generalize(m.P[okm], m.S[okm],
+                       Settings(seed=explored_seed if method == "curiosity" else seed))
         entry = scored(g.predict(sel), g.predict(scenes))
         entry["rules_per_expectation"] = len(g.rules) / len(names)
         entry["rules"] = [{"id": r.id, "body": list(r.body), "head": r.head, "support": r.support,
