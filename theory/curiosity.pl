@@ -411,7 +411,7 @@ more(Added, Settings, Id, Props, Parent, Via, More) :-
 %   (Rest). Each gets its novelty (exploration_predict); Queue, the new
 %   A_new, holds the most novel of those that reach the novelty level, at
 %   most `queue` of them (ties in the order above). Added are the new ones
-%   of Queue.
+%   of Queue, in its order.
 discover_queue(Best, Explored, Id, Props, Rest, Settings, I, Added, Queue) :-
     exclusions(Explored, Rest, Exclude0),
     foldl(follow(Explored), Best.followed, Exclude0-[], Exclude1-RevFollowed),
@@ -437,7 +437,7 @@ discover_queue(Best, Explored, Id, Props, Rest, Settings, I, Added, Queue) :-
         length(Queue, Keep),
         append(Queue, _, Queue0),
         append([Followed, Neighbours, Jumps], New),
-        include([C]>>memberchk(C, Queue), New, Added)
+        include([C]>>memberchk(C, New), Queue, Added)
     ).
 
 %   jumps(+Settings, +Iteration, +Exclude, -New): as many valid antecedents
@@ -675,7 +675,8 @@ setting_facts(Settings, Reply, Stop, Explored, Left, Facts) :-
                       setting(significance_permille, Permille),
                       setting(permutations, Settings.permutations),
                       setting(resample, Settings.resample),
-                      setting(novelty_permille, NoveltyPermille) ]
+                      setting(novelty_permille, NoveltyPermille),
+                      setting(queue, Settings.queue) ]
     ;   Threshold = [ setting(threshold_permille, Permille) ]
     ),
     append([ [ setting(oracle, Settings.oracle),

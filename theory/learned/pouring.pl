@@ -21,6 +21,7 @@ setting(significance_permille, 50).
 setting(permutations, 199).
 setting(resample, 2).
 setting(novelty_permille, 100).
+setting(queue, 100).
 setting(breadth, 3).
 setting(ridge_permille, 1000).
 setting(qualify, weighted).
