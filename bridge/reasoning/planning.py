@@ -3,7 +3,9 @@
 theory/plan.lp chooses manner propositions (poses, tilts, speeds) that,
 with the given context, form a valid antecedent from which the theory
 defeasibly concludes every goal literal. Plans come cheapest first (fewest
-chosen propositions); each further plan is the cheapest one that does not
+chosen propositions) among those whose goals rest on the most confident
+rules (the sum over the goals of the largest confidence of a rule for the
+goal that applies); each further plan is the best one that does not
 merely add propositions to a plan already found.
 """
 from __future__ import annotations
@@ -112,7 +114,9 @@ def relevant(theory: Theory, goals: list[str]) -> Theory:
     rules = [r for r in theory.rules if r.head in wanted]
     ids = {r.id for r in rules}
     return Theory(list(theory.facts), rules, [(a, b) for a, b in theory.sup if a in ids and b in ids],
-                  theory.learned & ids, source=theory.source)
+                  theory.learned & ids, source=theory.source,
+                  provenance=[p for p in theory.provenance
+                              if p[0] in ids and p[1] == "confidence_permille"])
 
 
 def _solve(theory: Theory, goals: list[str], given: list[str], count: int,

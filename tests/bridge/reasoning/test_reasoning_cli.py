@@ -61,6 +61,30 @@ def test_plan_best_first_then_alternatives(cli) -> None:
     assert all("light_liquid" in p["antecedent"] for p in after["plans"])
 
 
+CONFIDENT = """rule(r1, defeasible, no_spill).
+learned(r1).
+provenance(r1, confidence_permille, 550).
+rule(r2, defeasible, no_spill).
+body(r2, pour_centred).
+learned(r2).
+provenance(r2, confidence_permille, 950).
+"""
+
+
+def test_plan_rests_on_the_most_confident_rules_first(cli, tmp_path: Path) -> None:
+    # the default already concludes no spill, but only just: the plan that
+    # pours centred rests on a rule of 95%, and comes first
+    f = tmp_path / "confident.pl"
+    f.write_text(CONFIDENT)
+    r = cli("plan", "--goal", "no_spill", "--theory", str(f), "--json")
+    assert r.code == 0, r.err
+    assert [p["chosen"] for p in json.loads(r.out)["plans"]] == [["pour_centred"], []]
+    # without confidences the cheapest plan comes first
+    f.write_text("\n".join(line for line in CONFIDENT.splitlines() if "provenance" not in line))
+    r = cli("plan", "--goal", "no_spill", "--theory", str(f), "--json")
+    assert [p["chosen"] for p in json.loads(r.out)["plans"]] == [[]]
+
+
 def test_plan_negated_goal(cli) -> None:
     for goal in ("--goal=neg(no_spill)", "--goal=-no_spill"):
         r = cli("plan", goal, "--theory", LEARNED, "--json")
