@@ -160,7 +160,8 @@ def main() -> None:
         theory = spread([r["theory"] for r in rs]) if "theory" in rs[0] else "-"
         explored = spread([r["explored"] for r in rs]) if "explored" in rs[0] else "-"
         print(f"{method:<26} {seen:>16} {theory:>14} {explored:>12}")
-    free = " (the synthetic oracle's scores cost nothing)" if oracle == "synthetic" else ""
+    free = (" (the synthetic oracle's scores cost nothing)" if oracle == "synthetic"
+            else " (pours read from the store count as not simulated)")
     for m in ("discover", "paper"):
         for seed, r in zip(seeds, rows.get(METHODS[m], [])):
             print(f"{METHODS[m]}, seed {seed}: new antecedents per iteration {r['added']}; "
