@@ -10,7 +10,7 @@ cost of a pour measured here, on a few pours of a_0), giving the share of
 a paper-scale run that is not simulation (target: at most 5%).
 
 Also measured side by side: the qualify rules (held-out verdict accuracy
-of the learned rules on the synthetic oracle) and the plane fits (how often
+of the rules the paper's curiosity learns on the synthetic oracle) and the plane fits (how often
 the steepest direction from a_0 is one the synthetic oracle really has,
 with plain least squares and with the ridge penalty).
 """
@@ -74,8 +74,8 @@ def qualify_accuracy(tmp: Path, seeds=(1, 2, 3)) -> dict[str, float]:
         ok = total = 0
         for seed in seeds:
             path = tmp / f"q-{mode}-{seed}.pl"
-            explore(Options(oracle="synthetic", seed=seed, qualify=mode, out=path,
-                            store=tmp / "q.sqlite", progress=False, executor="inline"))
+            explore(Options(curiosity="paper", oracle="synthetic", seed=seed, qualify=mode,
+                            out=path, store=tmp / "q.sqlite", progress=False, executor="inline"))
             f = read_facts([path])
             body = defaultdict(list)
             for rid, p in f["body"]:
@@ -134,7 +134,8 @@ def main() -> None:
         parts = ", ".join(f"{k} {v:.2f} s" for k, v in sorted(timings.items()) if k != "oracle")
         print(f"where the overhead of 25 batches goes (besides Prolog itself): {parts}")
         acc = qualify_accuracy(tmp)
-        print(f"qualify, held-out verdict accuracy on the synthetic oracle (seeds 1-3): "
+        print(f"qualify, held-out verdict accuracy of the paper's curiosity's rules on the "
+              f"synthetic oracle (seeds 1-3): "
               f"weighted {100 * acc['weighted']:.1f}%, argmax {100 * acc['argmax']:.1f}% "
               f"(ratio {acc['weighted'] / acc['argmax']:.3f})")
         plain, ridged = direction_hits(0.0), direction_hits(1.0)

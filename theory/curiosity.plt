@@ -154,7 +154,7 @@ test(bad_curiosity, [true(R = error(_))]) :-
 test(explore_without_the_bridge_says_so, [throws(exploration_error(_))]) :-
     explore([oracle(synthetic), max_rules(1)]).
 
-test(bad_option, [true(R = error(_))]) :-
-    explore_result([max_rules(0)], R).
+test(bad_option, [forall(member(O, [max_rules(0), novelty(2), queue(0)])), true(R = error(_))]) :-
+    explore_result([O], R).
 
 :- end_tests(curiosity).

@@ -19,6 +19,8 @@ FAST = ["--oracle", "synthetic", "--executor", "inline", "--no-progress"]
     (["--curiosity", "wild"], "invalid choice"),
     (["--permutations", "0"], "--permutations must be at least 1"),
     (["--resample", "-1"], "--resample must not be negative"),
+    (["--novelty", "1.5"], "--novelty must be from 0 to 1"),
+    (["--queue", "0"], "--queue must be at least 1"),
 ])
 def test_bad_input_is_one_line_and_nonzero(tmp_path, args, words):
     r = run_cli("explore", *FAST, *args, "--out", str(tmp_path / "t.pl"),
