@@ -78,12 +78,9 @@ def theory_behaviours(path: Path) -> int:
     return len({tuple(sorted(h.items())) for h in heads.values()})
 
 
-def curiosity(mode: str, seed: int, tmp: Path, oracle: str, store: Path,
-              simulate: Callable) -> dict:
+def curiosity(mode: str, seed: int, tmp: Path, oracle: str, store: Path) -> dict:
     from pantarhei.bridge.exploration.loop import Options, explore
-    from pantarhei.bridge.exploration.simulation import iteration_seed
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen
-    from pantarhei.oracle.generative import sample
 
     out = tmp / f"{mode}-{seed}.pl"
     inline = oracle == "synthetic"
@@ -92,9 +89,7 @@ def curiosity(mode: str, seed: int, tmp: Path, oracle: str, store: Path,
                         progress=False, executor="inline" if inline else "local",
                         general=False))
     trace = [json.loads(line) for line in out.with_suffix(".trace.jsonl").read_text().splitlines()]
-    P = np.vstack([sample(t["antecedent"], SAMPLES, iteration_seed(seed, t["iteration"]))
-                   for t in trace])
-    S = simulate(P)
+    P, S = r["pours"]                       # every pour of the exploration, as it simulated them
     wall, sim = r.get("wall", 0.0), r.get("timings", {}).get("oracle", 0.0)
     return {"seen": behaviours_seen(S), "theory": theory_behaviours(out),
             "explored": r["explored"], "pours": len(P),
@@ -142,7 +137,7 @@ def main() -> None:
         for seed in seeds:
             for m in methods:
                 if m in ("discover", "paper"):
-                    r = curiosity(m, seed, tmp, oracle, store, simulate)
+                    r = curiosity(m, seed, tmp, oracle, store)
                 elif m == "random":
                     r = random_antecedents(seed, simulate)
                 elif m == "prior":

@@ -13,7 +13,7 @@ from pathlib import Path
 
 from pantarhei.bridge.commands import options
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.exploration.loop import Options, explore
+from pantarhei.bridge.exploration.loop import Options, budget_text, explore, stop_text
 from pantarhei.theory import defaults
 
 #: The paper's three questions (section 3.2), as words and propositions.
@@ -59,18 +59,16 @@ def demo(args: argparse.Namespace) -> int:
     if out.is_dir():
         raise UserError(f"{out}: a directory, not a theory file")
     started = time.monotonic()
-    budget = (f"{args.max_rules} rules" if defaults()["curiosity"] == "paper"
-              else f"{args.max_rules} batches of pours")
+    curiosity = defaults()["curiosity"]
     _heading(f"Learning the theory of pouring: curious exploration of the {args.oracle} "
-             f"simulation, {budget} (Algorithm 1)")
+             f"simulation, {budget_text(curiosity, args.max_rules)} (Algorithm 1)")
     result = explore(Options(
         oracle=args.oracle, max_rules=args.max_rules, seed=args.seed, out=out,
         store=Path(args.store), workers=args.workers, progress=not args.no_progress))
     theory = loading.load([out])
     dfl = out.with_suffix(".dfl")
     write_text(dfl, write_dfl(theory, loading.provenance_lines(theory)))
-    why = {"a_new_empty": "A_new is empty", "max_rules": budget}.get(
-        result.get("stopped", ""), result.get("stopped", ""))
+    why = stop_text(result, curiosity, args.max_rules)
     print(f"explored {result['explored']} antecedents with {result['simulations']} simulations "
           f"({result['failed']} failed) in {result.get('wall', 0.0):.0f} s; stopped: {why}")
     print(f"theory: {out} ({len(theory.rules)} rules), in DFL: {dfl}")

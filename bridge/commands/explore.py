@@ -8,7 +8,7 @@ from pathlib import Path
 
 from pantarhei.bridge.commands import options
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.exploration.loop import Options, explore as run_exploration
+from pantarhei.bridge.exploration.loop import Options, explore as run_exploration, stop_text
 from pantarhei.bridge.exploration.session import install
 from pantarhei.bridge.exploration.qualify import QUALIFY
 from pantarhei.bridge.reasoning import scenes as validity
@@ -105,10 +105,7 @@ def explore(args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         raise UserError("interrupted: the state is saved after every explored antecedent; "
                         "the same command with --resume continues", exit_code=130) from None
-    budget = (f"{args.max_rules} rules" if args.curiosity == "paper"
-              else f"{args.max_rules} batches of pours")
-    why = {"a_new_empty": "A_new is empty", "max_rules": budget}.get(
-        result.get("stopped", ""), result.get("stopped", ""))
+    why = stop_text(result, args.curiosity, args.max_rules)
     print(f"explored {result['explored']} antecedents with {result['simulations']} simulations "
           f"({result['failed']} failed); stopped: {why}")
     wall, sim = result.get("wall", 0.0), result.get("timings", {}).get("oracle", 0.0)

@@ -14,12 +14,12 @@ nine-verdict vectors among its pours that at least two pours show.
 """
 from __future__ import annotations
 
-from collections import Counter
 from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
 
+from pantarhei.bridge.exploration.novelty import shown
 from pantarhei.oracle.generative import normalise, sample
 from pantarhei.theory.lexicon import load_vocabulary
 
@@ -36,12 +36,10 @@ class Search:
 
 
 def behaviours_seen(S: np.ndarray, at_least: int = 2) -> int:
-    """Distinct nine-verdict vectors (score above 1/2) among the pours whose
-    simulation did not fail, each shown by at least `at_least` pours."""
-    S = np.asarray(S, dtype=float)
-    S = S[np.all(np.isfinite(S), axis=1)]
-    counts = Counter(tuple(row) for row in (S > 0.5))
-    return sum(1 for c in counts.values() if c >= at_least)
+    """How many distinct nine-verdict vectors (score above 1/2) the pours
+    whose simulation did not fail show, each by at least `at_least` pours
+    (the behaviours the discovering curiosity counts as seen)."""
+    return len(shown(S, at_least))
 
 
 def denormalise(Z: np.ndarray) -> np.ndarray:

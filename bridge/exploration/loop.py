@@ -116,6 +116,19 @@ def explore(options: Options) -> dict:
     return out
 
 
+def budget_text(curiosity: str, max_rules: int) -> str:
+    """What max_rules counts: explored antecedents for the paper's
+    curiosity, batches of pours for the discovering one."""
+    return f"{max_rules} rules" if curiosity == "paper" else f"{max_rules} batches of pours"
+
+
+def stop_text(result: dict, curiosity: str, max_rules: int) -> str:
+    """Why an exploration stopped, in words."""
+    stopped = str(result.get("stopped", ""))
+    return {"a_new_empty": "A_new is empty",
+            "max_rules": budget_text(curiosity, max_rules)}.get(stopped, stopped)
+
+
 def _result_text(result: Any) -> str:
     from pantarhei.bridge.engines.swipl import text
 

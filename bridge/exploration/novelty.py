@@ -52,6 +52,16 @@ class Known:
     seed: int                   # the run's seed (of the candidates' predicted pours)
 
 
+def shown(S: np.ndarray, at_least: int = 2) -> frozenset:
+    """The behaviours seen: the distinct nine-verdict vectors (score above
+    1/2) among the pours whose simulation did not fail, each shown by at
+    least `at_least` pours."""
+    S = np.asarray(S, dtype=float)
+    S = S[np.all(np.isfinite(S), axis=1)]
+    counts = Counter(tuple(bool(v) for v in row) for row in S > 0.5)
+    return frozenset(k for k, c in counts.items() if c >= at_least)
+
+
 def known(params: np.ndarray, scores: np.ndarray, consequents: Sequence[tuple[bool, ...]],
           samples: int, seed: int, forest_seed: int) -> Known:
     """Fit the forest (seeded by `forest_seed`) on the valid pours (params in
@@ -59,8 +69,7 @@ def known(params: np.ndarray, scores: np.ndarray, consequents: Sequence[tuple[bo
     explored antecedents' consequents."""
     ok = np.all(np.isfinite(scores), axis=1)
     P, V = params[ok], scores[ok] > 0.5
-    counts = Counter(tuple(bool(v) for v in row) for row in V)
-    seen = frozenset(k for k, c in counts.items() if c >= 2)
+    seen = shown(scores)
     columns = np.full(V.shape[1], -1)
     forest = None
     if len(P):

@@ -100,11 +100,8 @@ class Session:
         changed: an antecedent whose support holds none of the new
         simulations, and none that a new antecedent shares, keeps its planes."""
         cached = self.plane_cache.get(aid)
-        if cached is not None:
-            w0, planes = cached
-            k = len(w0)
-            if k <= len(w) and np.array_equal(w0, w[:k]) and not w[k:].any():
-                return planes
+        if cached is not None and _same_weights(cached[0], w):
+            return cached[1]
         planes = plane_fit(X, S, w, float(self.settings.get("ridge", 0.0)))
         self.plane_cache[aid] = (w.copy(), planes)
         return planes
@@ -114,11 +111,8 @@ class Session:
         """The antecedent's planes and their permutation test, done again
         only when its weights changed (as `planes_of`)."""
         cached = self.test_cache.get(aid)
-        if cached is not None:
-            w0, tested = cached
-            k = len(w0)
-            if k <= len(w) and np.array_equal(w0, w[:k]) and not w[k:].any():
-                return tested
+        if cached is not None and _same_weights(cached[0], w):
+            return cached[1]
         used = int(((w > 0) & np.all(np.isfinite(S), axis=1)).sum())
         tested = permutation_test(X, S, w, float(self.settings.get("ridge", 0.0)),
                                   int(self.settings["permutations"]),
@@ -132,6 +126,20 @@ class Session:
         valid = self.valid
         ld = np.vstack([self.log_density_of(str(e["id"]), e["antecedent"])[valid] for e in entries])
         return weights(ld)
+
+    def consequents(self, entries: Sequence[dict], mode: str) -> list[dict]:
+        """Qualify each explored antecedent from its weighted simulations
+        (`qualify.consequent`, in the order of `entries`)."""
+        W = self.weight_matrix(entries)
+        S = self.scores[self.valid]
+        return [consequent(S, W[i], mode) for i in range(len(entries))]
+
+
+def _same_weights(w0: np.ndarray, w: np.ndarray) -> bool:
+    """Whether weights w over the simulations so far are those cached (w0)
+    with none on the simulations since: what was fitted on w0 still holds."""
+    k = len(w0)
+    return k <= len(w) and np.array_equal(w0, w[:k]) and not w[k:].any()
 
 
 class Host:
@@ -364,11 +372,8 @@ class Host:
         entries = request["antecedents"]
         key = (len(s.params), len(entries))
         if s.known is None or s.known[0] != key:
-            W = s.weight_matrix(entries)
-            S = s.scores[s.valid]
-            mode = str(s.settings.get("qualify", "weighted"))
-            consequents = [tuple(o["holds"] for o in consequent(S, W[i], mode)["outcomes"])
-                           for i in range(len(entries))]
+            consequents = [tuple(o["holds"] for o in c["outcomes"])
+                           for c in s.consequents(entries, str(s.settings.get("qualify", "weighted")))]
             seed = int(s.settings["seed"])
             s.known = (key, known(s.params, s.scores, consequents, int(s.settings["samples"]),
                                   seed, shuffle_seed(seed, 0, len(s.params))))
@@ -384,11 +389,7 @@ class Host:
         mode = str(request.get("mode", "weighted"))
         if mode not in QUALIFY:
             raise UserError(f"unknown qualify mode '{mode}' (choose {' or '.join(QUALIFY)})")
-        W = s.weight_matrix(entries)
-        S = s.scores[s.valid]
-        out = []
-        for i, e in enumerate(entries):
-            out.append({"id": str(e["id"]), **consequent(S, W[i], mode)})
+        out = [{"id": str(e["id"]), **c} for e, c in zip(entries, s.consequents(entries, mode))]
         if s.settings.get("curiosity") == "discover":   # batches of pours per antecedent
             counts: dict[str, int] = {}
             for t in s.trace:
