@@ -7,17 +7,10 @@ from typing import Sequence
 
 import numpy as np
 
-from pantarhei.bridge.engines.swipl import engine
 from pantarhei.bridge.exploration.simulation import iteration_seed
-from pantarhei.bridge.reasoning.scenes import violations
+from pantarhei.bridge.reasoning.scenes import random_antecedents, violations
 from pantarhei.oracle.generative import sample
 from pantarhei.theory.lexicon import load_vocabulary
-
-
-def random_antecedents(seed: int, n: int) -> list[tuple[str, ...]]:
-    """n antecedents drawn uniformly from the valid ones (by Prolog)."""
-    r = engine().once("validity:random_antecedents(Seed, N, As)", Seed=int(seed), N=int(n))
-    return [tuple(str(p) for p in a) for a in r["As"]]
 
 
 def random_exploration(seed: int, count: int, samples: int) -> tuple[list[tuple[str, ...]], np.ndarray]:

@@ -32,8 +32,8 @@ from pantarhei.oracle.generative import sample
 from pantarhei.theory.lexicon import load_vocabulary
 
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.evaluation.heldout import (near_antecedents, random_antecedents,
-                                                 random_exploration, scene_pours, uniform_scenes)
+from pantarhei.bridge.evaluation.heldout import (near_antecedents, random_exploration, scene_pours,
+                                                 uniform_scenes)
 from pantarhei.bridge.evaluation.map_elites import behaviours_seen
 from pantarhei.bridge.evaluation.measures import (accuracy, distinct_behaviours, tree_predictions,
                                                   verdicts)

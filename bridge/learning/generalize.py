@@ -23,8 +23,18 @@ verdict from the 30 parameters, trained on every pour, averaged over
 How rules are found (per expectation, greedy, as a decision list):
 
 1. the default: the empty body, concluding the verdict most pours sampled
-   from the priors would give (where that is within `margin` of one half,
-   the verdict of most explored pours);
+   from the priors would give. Where that is within `margin` of one half,
+   the priors leave it open, and the pours are no guide either: curiosity
+   draws them to where behaviour changes, so their majority is not that of
+   scenes at large. Then a decision list is learned for each default, and
+   the one kept is the list that the model of the pours finds right more
+   often on `judges` uniformly random valid antecedents (drawn by Prolog,
+   with a seed of their own), on ties the pours' majority. (One default
+   can need many exceptions where the other needs few: liquid stays in the
+   source unless the source tips far, so "stays" takes exceptions naming
+   the pour's tilt, "leaves" a list of everything that keeps it upright.)
+   The default's confidence is then the share of the pours of the judging
+   antecedents it decides that the model expects to keep its head;
 2. candidates: bodies of one or two propositions (and three, extending a
    chosen body of two) that are valid antecedents, that at least
    `min_support` pours satisfy, and whose pours mostly (at least `margin`
@@ -57,7 +67,7 @@ default's empty body makes every scene decided.
 from __future__ import annotations
 
 import zlib
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import lru_cache
 from itertools import combinations
 from typing import Iterable, Sequence
@@ -88,12 +98,17 @@ class Settings:
     #: gain: of two bodies setting nearly as many pours right, the shorter
     #: one, which more questions ask, joins
     penalty: float = 0.01
+    #: uniformly random valid antecedents on which the model of the pours
+    #: judges a default the priors leave open (`meaning` "prior" only)
+    judges: int = 300
 
     def __post_init__(self) -> None:
         if self.max_rules < 1 or not 0 <= self.max_body <= 3:
             raise ValueError("max_rules must be at least 1 and max_body 0 to 3")
         if not 0 <= self.margin < 0.5 or self.min_support < 1 or self.samples < 1:
             raise ValueError("margin in [0, 1/2), min_support and samples at least 1")
+        if self.judges < 0:
+            raise ValueError("judges must be at least 0")
         if self.meaning not in ("prior", "pours"):
             raise ValueError(f"meaning is prior or pours, not {self.meaning!r}")
 
@@ -271,12 +286,66 @@ def _generalize(P: np.ndarray, S: np.ndarray, settings: Settings) -> General:
                      else _Described(names, D, Y))
     bodies = _candidates(names, D, settings)
     A = _matrix(names, D, bodies)
+    judge = _Judge(meaning, settings) if settings.meaning == "prior" and settings.judges else None
     out = General()
     for k, e in enumerate(vocab.expectation_names):
-        rules = _learn(e, k, names, D, Y[:, k], bodies, A, meaning, settings)
+        def learn(default: bool, c0: float) -> list[GeneralRule]:
+            return _learn(e, k, names, D, Y[:, k], bodies, A, meaning, settings, default, c0)
+
+        c0, kept = float(meaning([()])[0, k]), float(Y[:, k].mean())
+        if np.isfinite(c0) and abs(c0 - 0.5) >= settings.margin:
+            rules = learn(c0 >= 0.5, c0)
+        elif judge is None:
+            # the priors leave it open: the default follows the pours
+            rules = learn(kept >= 0.5, kept)
+        else:
+            rules = judge.better(k, learn(kept >= 0.5, kept), learn(kept < 0.5, kept))
         out.rules.extend(rules)
         out.sup.extend(_superiority(rules))
     return out
+
+
+class _Judge:
+    """Which of two decision lists (with opposite defaults) the model of the
+    pours finds right more often, on uniformly random valid antecedents."""
+
+    def __init__(self, meaning: "_Cache", s: Settings):
+        from pantarhei.bridge.reasoning.scenes import random_antecedents
+
+        # a seed of their own: not the held-out scenes of an evaluation
+        self.scenes = [tuple(sorted(a)) for a in
+                       random_antecedents(_seed(s.seed, ("judges",)), s.judges)]
+        self.meaning = meaning
+
+    def better(self, k: int, first: list[GeneralRule], second: list[GeneralRule]
+               ) -> list[GeneralRule]:
+        """The list expected to be right on more of the judging pours (the
+        first on ties), its default's confidence the share it gets right of
+        the pours it decides."""
+        p = self.meaning(self.scenes)[:, k]
+        ok = np.isfinite(p)
+        scored = []
+        for rules in (first, second):
+            holds, decider = _decide(rules, [s for s, o in zip(self.scenes, ok) if o])
+            right = np.where(holds, p[ok], 1 - p[ok])
+            scored.append((float(right.mean()) if len(right) else 0.0, right[decider == 0]))
+        rules, (_, mine) = (first, scored[0]) if scored[0][0] >= scored[1][0] else (second, scored[1])
+        if len(mine):
+            rules = [replace(rules[0], confidence=float(mine.mean())), *rules[1:]]
+        return rules
+
+
+def _decide(rules: Sequence[GeneralRule], scenes: Sequence[Sequence[str]]
+            ) -> tuple[np.ndarray, np.ndarray]:
+    """Per scene: whether one expectation's rules conclude it holds, and the
+    index of the deciding rule (the highest ranked whose body it holds)."""
+    holds = np.zeros(len(scenes), dtype=bool)
+    decider = np.zeros(len(scenes), dtype=int)
+    for i, s in enumerate(scenes):
+        s = set(s)
+        j = max((j for j, r in enumerate(rules) if set(r.body) <= s), key=lambda j: rules[j].rank)
+        holds[i], decider[i] = rules[j].holds, j
+    return holds, decider
 
 
 class _Described:
@@ -391,13 +460,11 @@ class _Pool:
         return np.where(self.alive, g, -np.inf)
 
 
-def _learn(e: str, k: int, names, D, y, bodies, A, meaning: _Cache, s: Settings) -> list[GeneralRule]:
+def _learn(e: str, k: int, names, D, y, bodies, A, meaning: _Cache, s: Settings,
+           default_holds: bool, c0: float) -> list[GeneralRule]:
+    """The decision list of one expectation under the default given (c0:
+    the estimated share of pours that keep the expectation)."""
     n = len(y)
-    c0 = float(meaning([()])[0, k])
-    if not np.isfinite(c0) or abs(c0 - 0.5) < s.margin:
-        # the priors leave it open: the default follows the pours
-        c0 = float(y.mean())
-    default_holds = bool(c0 >= 0.5)
     chosen: list[GeneralRule] = [GeneralRule(
         f"g0_{e}", (), e, default_holds, n, int((y == default_holds).sum()),
         float(c0 if default_holds else 1 - c0), 0)]

@@ -1,4 +1,5 @@
-"""Is an antecedent valid? Asked of SWI-Prolog or of clingo, same answer."""
+"""Is an antecedent valid? Asked of SWI-Prolog or of clingo, same answer.
+And valid antecedents drawn uniformly, by SWI-Prolog."""
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -66,6 +67,15 @@ def require_valid(props: Iterable[str]) -> list[str]:
         more = f" (and {len(bad) - 1} more)" if len(bad) > 1 else ""
         raise UserError(f"invalid antecedent: {bad[0].words()}{more}")
     return props
+
+
+def random_antecedents(seed: int, n: int) -> list[tuple[str, ...]]:
+    """n antecedents drawn uniformly from the valid ones (by Prolog's
+    validity:random_antecedents/3; the same seed, the same antecedents)."""
+    from pantarhei.bridge.engines.swipl import engine as prolog
+
+    r = prolog().once("validity:random_antecedents(Seed, N, As)", Seed=int(seed), N=int(n))
+    return [tuple(str(p) for p in a) for a in r["As"]]
 
 
 def count_valid() -> int:

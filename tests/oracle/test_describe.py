@@ -11,7 +11,7 @@ from pantarhei.theory.lexicon import load_vocabulary
 
 
 def random_valid(seed: int) -> tuple[str, ...]:
-    from pantarhei.bridge.evaluation.heldout import random_antecedents
+    from pantarhei.bridge.reasoning.scenes import random_antecedents
 
     return random_antecedents(seed, 1)[0]
 
