@@ -78,7 +78,9 @@ def general_section(theory: Theory, general: General, pours: int) -> str:
              "% (bridge/learning/generalize.py): a default per expectation, exceptions",
              "% and exceptions to those. provenance(Id, support, N): the pours whose",
              "% description holds the body; kept: how many of them keep the head;",
-             "% confidence_permille: P(head | body) for the pours sampled for the body.",
+             "% confidence_permille: P(head | body) for the pours sampled for the body",
+             "% (a default the priors leave open: for the pours of the uniformly random",
+             "% scenes it decides).",
              "% sup/2 below orders both layers (see bridge/learning/layers.py).",
              f"setting(general_pours, {int(pours)}).",
              f"setting(general_rules, {len(general.rules)})."]

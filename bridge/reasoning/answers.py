@@ -59,7 +59,8 @@ def explain(theory: Theory, props: list[str], literal: str,
 def rule_words(theory: Theory, rule_id: str) -> str:
     """Why a rule decides, in words: its body's glosses (or "in general"
     for the empty body), then its evidence and its id, e.g. "pour from the
-    side (41 of 52 such pours; rule g3_no_spill)"."""
+    side (expected in 79% of such pours, seen in 41 of 52; rule
+    g3_no_spill)"."""
     from pantarhei.theory.lexicon import load_vocabulary
 
     vocab = load_vocabulary()
@@ -74,11 +75,17 @@ def rule_words(theory: Theory, rule_id: str) -> str:
 
 
 def evidence(theory: Theory, rule_id: str) -> str:
-    """The pours behind a learned rule, from its provenance facts: "41 of
-    52 such pours" for a general rule, "93% of the weighted pours of a4"
-    for a rule of Algorithm 1; "" when the theory records none."""
+    """The pours behind a learned rule, from its provenance facts:
+    "expected in 79% of such pours, seen in 41 of 52" for a general rule
+    (its confidence, then the explored pours its body describes and how
+    many kept its head; "41 of 52 such pours" without a confidence), "93%
+    of the weighted pours of a4" for a rule of Algorithm 1; "" when the
+    theory records none."""
     facts = {k: v for rid, k, v in theory.provenance if rid == rule_id}
     if "support" in facts and "kept" in facts:
+        if "confidence_permille" in facts:
+            return (f"expected in {int(facts['confidence_permille']) / 10:.0f}% of such pours, "
+                    f"seen in {facts['kept']} of {facts['support']}")
         return f"{facts['kept']} of {facts['support']} such pours"
     if "confidence_permille" in facts and "antecedent" in facts:
         return (f"{int(facts['confidence_permille']) / 10:.0f}% of the weighted pours of "

@@ -6356,10 +6356,12 @@ provenance(r25_no_spill, batches, 1).
 % (bridge/learning/generalize.py): a default per expectation, exceptions
 % and exceptions to those. provenance(Id, support, N): the pours whose
 % description holds the body; kept: how many of them keep the head;
-% confidence_permille: P(head | body) for the pours sampled for the body.
+% confidence_permille: P(head | body) for the pours sampled for the body
+% (a default the priors leave open: for the pours of the uniformly random
+% scenes it decides).
 % sup/2 below orders both layers (see bridge/learning/layers.py).
 setting(general_pours, 775).
-setting(general_rules, 21).
+setting(general_rules, 23).
 rule(g0_destination_still_approach, defeasible, destination_still_approach).
 learned(g0_destination_still_approach).
 provenance(g0_destination_still_approach, layer, general).
@@ -6440,56 +6442,70 @@ provenance(g3_source_clear, level, 1).
 provenance(g3_source_clear, support, 166).
 provenance(g3_source_clear, kept, 135).
 provenance(g3_source_clear, confidence_permille, 604).
-rule(g0_liquid_leaves_source, defeasible, liquid_leaves_source).
+rule(g0_liquid_leaves_source, defeasible, neg(liquid_leaves_source)).
 learned(g0_liquid_leaves_source).
 provenance(g0_liquid_leaves_source, layer, general).
 provenance(g0_liquid_leaves_source, level, 0).
 provenance(g0_liquid_leaves_source, support, 775).
-provenance(g0_liquid_leaves_source, kept, 456).
-provenance(g0_liquid_leaves_source, confidence_permille, 588).
-rule(g1_liquid_leaves_source, defeasible, neg(liquid_leaves_source)).
-body(g1_liquid_leaves_source, bouncy_source).
-body(g1_liquid_leaves_source, heavy_source).
+provenance(g0_liquid_leaves_source, kept, 319).
+provenance(g0_liquid_leaves_source, confidence_permille, 794).
+rule(g1_liquid_leaves_source, defeasible, liquid_leaves_source).
+body(g1_liquid_leaves_source, retreat_lowering).
+body(g1_liquid_leaves_source, retreat_moving_closer).
 learned(g1_liquid_leaves_source).
 provenance(g1_liquid_leaves_source, layer, general).
 provenance(g1_liquid_leaves_source, level, 1).
-provenance(g1_liquid_leaves_source, support, 202).
-provenance(g1_liquid_leaves_source, kept, 149).
-provenance(g1_liquid_leaves_source, confidence_permille, 609).
-rule(g2_liquid_leaves_source, defeasible, neg(liquid_leaves_source)).
-body(g2_liquid_leaves_source, fast_approach).
-body(g2_liquid_leaves_source, grippy_source).
+provenance(g1_liquid_leaves_source, support, 242).
+provenance(g1_liquid_leaves_source, kept, 224).
+provenance(g1_liquid_leaves_source, confidence_permille, 633).
+rule(g2_liquid_leaves_source, defeasible, liquid_leaves_source).
+body(g2_liquid_leaves_source, pour_steeply_tilted).
 learned(g2_liquid_leaves_source).
 provenance(g2_liquid_leaves_source, layer, general).
 provenance(g2_liquid_leaves_source, level, 1).
-provenance(g2_liquid_leaves_source, support, 96).
-provenance(g2_liquid_leaves_source, kept, 89).
-provenance(g2_liquid_leaves_source, confidence_permille, 612).
-rule(g3_liquid_leaves_source, defeasible, neg(liquid_leaves_source)).
-body(g3_liquid_leaves_source, pour_slightly_tilted).
-body(g3_liquid_leaves_source, retreat_raising).
+provenance(g2_liquid_leaves_source, support, 193).
+provenance(g2_liquid_leaves_source, kept, 187).
+provenance(g2_liquid_leaves_source, confidence_permille, 815).
+rule(g3_liquid_leaves_source, defeasible, liquid_leaves_source).
+body(g3_liquid_leaves_source, end_upside_down).
 learned(g3_liquid_leaves_source).
 provenance(g3_liquid_leaves_source, layer, general).
 provenance(g3_liquid_leaves_source, level, 1).
-provenance(g3_liquid_leaves_source, support, 93).
-provenance(g3_liquid_leaves_source, kept, 63).
-provenance(g3_liquid_leaves_source, confidence_permille, 948).
-rule(g4_liquid_leaves_source, defeasible, neg(liquid_leaves_source)).
-body(g4_liquid_leaves_source, heavy_destination).
-body(g4_liquid_leaves_source, pour_half_tilted).
+provenance(g3_liquid_leaves_source, support, 124).
+provenance(g3_liquid_leaves_source, kept, 122).
+provenance(g3_liquid_leaves_source, confidence_permille, 979).
+rule(g4_liquid_leaves_source, defeasible, liquid_leaves_source).
+body(g4_liquid_leaves_source, end_steeply_tilted).
 learned(g4_liquid_leaves_source).
 provenance(g4_liquid_leaves_source, layer, general).
 provenance(g4_liquid_leaves_source, level, 1).
-provenance(g4_liquid_leaves_source, support, 62).
-provenance(g4_liquid_leaves_source, kept, 47).
-provenance(g4_liquid_leaves_source, confidence_permille, 914).
+provenance(g4_liquid_leaves_source, support, 124).
+provenance(g4_liquid_leaves_source, kept, 116).
+provenance(g4_liquid_leaves_source, confidence_permille, 886).
+rule(g5_liquid_leaves_source, defeasible, liquid_leaves_source).
+body(g5_liquid_leaves_source, end_below_rim).
+body(g5_liquid_leaves_source, pour_rolled).
+learned(g5_liquid_leaves_source).
+provenance(g5_liquid_leaves_source, layer, general).
+provenance(g5_liquid_leaves_source, level, 1).
+provenance(g5_liquid_leaves_source, support, 155).
+provenance(g5_liquid_leaves_source, kept, 138).
+provenance(g5_liquid_leaves_source, confidence_permille, 662).
+rule(g6_liquid_leaves_source, defeasible, liquid_leaves_source).
+body(g6_liquid_leaves_source, pour_upside_down).
+learned(g6_liquid_leaves_source).
+provenance(g6_liquid_leaves_source, layer, general).
+provenance(g6_liquid_leaves_source, level, 1).
+provenance(g6_liquid_leaves_source, support, 12).
+provenance(g6_liquid_leaves_source, kept, 12).
+provenance(g6_liquid_leaves_source, confidence_permille, 989).
 rule(g0_liquid_enters_destination, defeasible, neg(liquid_enters_destination)).
 learned(g0_liquid_enters_destination).
 provenance(g0_liquid_enters_destination, layer, general).
 provenance(g0_liquid_enters_destination, level, 0).
 provenance(g0_liquid_enters_destination, support, 775).
 provenance(g0_liquid_enters_destination, kept, 480).
-provenance(g0_liquid_enters_destination, confidence_permille, 619).
+provenance(g0_liquid_enters_destination, confidence_permille, 721).
 rule(g1_liquid_enters_destination, defeasible, liquid_enters_destination).
 body(g1_liquid_enters_destination, heavy_liquid).
 body(g1_liquid_enters_destination, moderate_approach).
@@ -6531,25 +6547,21 @@ provenance(g2_no_spill, level, 1).
 provenance(g2_no_spill, support, 83).
 provenance(g2_no_spill, kept, 68).
 provenance(g2_no_spill, confidence_permille, 642).
+sup(r12_liquid_leaves_source, g3_liquid_leaves_source).
+sup(r12_liquid_leaves_source, g4_liquid_leaves_source).
 sup(r13_liquid_enters_destination, g1_liquid_enters_destination).
-sup(r14_liquid_leaves_source, g2_liquid_leaves_source).
+sup(r17_liquid_leaves_source, g3_liquid_leaves_source).
+sup(r17_liquid_leaves_source, g4_liquid_leaves_source).
 sup(r17_no_spill, g1_no_spill).
 sup(r17_no_spill, g2_no_spill).
-sup(r18_liquid_leaves_source, g2_liquid_leaves_source).
 sup(r1_destination_still_approach, g2_destination_still_approach).
-sup(r1_liquid_leaves_source, g1_liquid_leaves_source).
-sup(r1_liquid_leaves_source, g2_liquid_leaves_source).
 sup(r1_no_spill, g1_no_spill).
 sup(r1_no_spill, g2_no_spill).
 sup(r1_source_clear, g1_source_clear).
 sup(r1_source_clear, g2_source_clear).
 sup(r20_destination_still_approach, g2_destination_still_approach).
-sup(r20_liquid_leaves_source, g1_liquid_leaves_source).
 sup(r21_destination_still_approach, g2_destination_still_approach).
+sup(r24_liquid_leaves_source, g3_liquid_leaves_source).
+sup(r24_liquid_leaves_source, g4_liquid_leaves_source).
 sup(r24_no_spill, g2_no_spill).
-sup(r25_liquid_leaves_source, g1_liquid_leaves_source).
 sup(r2_destination_still_approach, g2_destination_still_approach).
-sup(r2_liquid_leaves_source, g1_liquid_leaves_source).
-sup(r5_liquid_leaves_source, g1_liquid_leaves_source).
-sup(r7_liquid_leaves_source, g1_liquid_leaves_source).
-sup(r8_liquid_leaves_source, g1_liquid_leaves_source).

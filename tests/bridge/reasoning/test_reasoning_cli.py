@@ -215,11 +215,13 @@ def test_ask_says_the_deciding_rule_in_words_with_its_evidence(cli, tmp_path: Pa
                  "provenance(g0_no_spill, support, 60).\nprovenance(g0_no_spill, kept, 50).\n"
                  "rule(g1_no_spill, defeasible, neg(no_spill)).\nbody(g1_no_spill, pour_to_side).\n"
                  "learned(g1_no_spill).\nprovenance(g1_no_spill, support, 52).\n"
-                 "provenance(g1_no_spill, kept, 41).\n")
+                 "provenance(g1_no_spill, kept, 41).\n"
+                 "provenance(g1_no_spill, confidence_permille, 912).\n")
     r = cli("ask", "pour from the side", "--theory", str(f))
     assert r.code == 0, r.err
     assert "[no ] no_spill" in r.out
-    assert "because: pour from the side (41 of 52 such pours; rule g1_no_spill)" in r.out
+    assert ("because: pour from the side (expected in 91% of such pours, seen in 41 of 52; "
+            "rule g1_no_spill)") in r.out
     light = cli("ask", "--props", "light_liquid", "--theory", str(f))
     assert "[yes] no_spill" in light.out
     assert "because: in general (50 of 60 such pours; rule g0_no_spill)" in light.out
