@@ -8,9 +8,12 @@ the 30 parameters with the nine verdicts as its cells.
 Measures: behaviours seen (distinct nine-verdict vectors among the pours,
 each shown by at least two), behaviours in the theory (distinct consequents
 of the rules of Algorithm 1, for the methods that build one: one rule set
-per antecedent, qualified as Algorithm 1 does), and for the curiosities the
-explored antecedents and the new antecedents per iteration. Medians with
-the range over the seeds.
+per antecedent, qualified as Algorithm 1 does), the accuracy and coverage
+of the general rules learned from each method's pours on 150 uniformly
+random held-out scenes (one pour each, drawn as `pantarhei evaluate` draws
+them for the same seed), and for the curiosities the explored antecedents
+and the new antecedents per iteration. Medians with the range over the
+seeds.
 
 By default the synthetic oracle, seeds 1 to 5, every method. The
 environment chooses otherwise (the PyBullet oracle takes about 10 minutes a
@@ -33,6 +36,8 @@ from typing import Callable
 import numpy as np
 
 RULES, SAMPLES = 25, 31
+#: what a line per method and seed shows
+SHOWN = ("seen", "theory", "explored", "pours", "other", "general", "covered")
 METHODS = {"discover": "curiosity (discover)", "paper": "curiosity (paper)",
            "random": "random valid antecedents", "prior": "random pours (prior)",
            "map_elites": "MAP-Elites (pyribs)"}
@@ -94,7 +99,8 @@ def curiosity(mode: str, seed: int, tmp: Path, oracle: str, store: Path) -> dict
     return {"seen": behaviours_seen(S), "theory": theory_behaviours(out),
             "explored": r["explored"], "pours": len(P),
             "other": (wall - sim) / wall if wall > 0 else 0.0,
-            "added": [len(t["added"]) for t in trace]}
+            "added": [len(t["added"]) for t in trace],
+            "antecedents": [tuple(t["antecedent"]) for t in trace], "P": P, "S": S}
 
 
 def random_antecedents(seed: int, simulate: Callable) -> dict:
@@ -105,7 +111,8 @@ def random_antecedents(seed: int, simulate: Callable) -> dict:
 
     ants, P = random_exploration(seed, RULES, SAMPLES)     # as the evaluation draws its baseline
     S = simulate(P)
-    return {"seen": behaviours_seen(S), "theory": distinct_behaviours(consequents(ants, P, S))}
+    return {"seen": behaviours_seen(S), "theory": distinct_behaviours(consequents(ants, P, S)),
+            "antecedents": ants, "P": P, "S": S}
 
 
 def prior_pours(seed: int, simulate: Callable) -> dict:
@@ -114,14 +121,35 @@ def prior_pours(seed: int, simulate: Callable) -> dict:
     from pantarhei.oracle.generative import sample
 
     # as the evaluation draws its baseline
-    return {"seen": behaviours_seen(simulate(sample([], RULES * SAMPLES,
-                                                    iteration_seed(seed + 7919, 0))))}
+    P = sample([], RULES * SAMPLES, iteration_seed(seed + 7919, 0))
+    S = simulate(P)
+    return {"seen": behaviours_seen(S), "P": P, "S": S}
 
 
 def map_elites(seed: int, simulate: Callable) -> dict:
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen, map_elites as search
 
-    return {"seen": behaviours_seen(search(simulate, RULES * SAMPLES, seed, batch=SAMPLES).S)}
+    qd = search(simulate, RULES * SAMPLES, seed, batch=SAMPLES)
+    return {"seen": behaviours_seen(qd.S), "P": qd.P, "S": qd.S}
+
+
+def general_accuracy(seed: int, rows: dict[str, dict], known: set, simulate: Callable) -> None:
+    """Per method: coverage and accuracy of the general rules learned from
+    its pours (with the run's seed) on 150 uniform held-out scenes, none in
+    `known`, kept in its row."""
+    from pantarhei.bridge.evaluation.heldout import scene_pours, uniform_scenes
+    from pantarhei.bridge.evaluation.measures import accuracy, verdicts
+    from pantarhei.bridge.learning.generalize import Settings, generalize
+
+    scenes = uniform_scenes(seed, 150, known)
+    S = simulate(scene_pours(scenes, seed))
+    ok = np.all(np.isfinite(S), axis=1)
+    scenes, y = [s for s, o in zip(scenes, ok) if o], verdicts(S[ok])
+    for r in rows.values():
+        good = np.all(np.isfinite(r["S"]), axis=1)
+        a = accuracy(generalize(r["P"][good], r["S"][good], Settings(seed=seed)).predict(scenes), y)
+        r["general"] = round(100 * a.overall_accuracy, 1)
+        r["covered"] = round(100 * a.overall_coverage, 1)
 
 
 def spread(values: list[float]) -> str:
@@ -135,26 +163,35 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as d:
         tmp = Path(d)
         for seed in seeds:
+            of_seed: dict[str, dict] = {}
             for m in methods:
                 if m in ("discover", "paper"):
-                    r = curiosity(m, seed, tmp, oracle, store)
+                    of_seed[m] = curiosity(m, seed, tmp, oracle, store)
                 elif m == "random":
-                    r = random_antecedents(seed, simulate)
+                    of_seed[m] = random_antecedents(seed, simulate)
                 elif m == "prior":
-                    r = prior_pours(seed, simulate)
+                    of_seed[m] = prior_pours(seed, simulate)
                 else:
-                    r = map_elites(seed, simulate)
+                    of_seed[m] = map_elites(seed, simulate)
+            # the held-out scenes avoid what curiosity and random exploration explored
+            known = {a for m in ("discover", "random")
+                     for a in of_seed.get(m, {}).get("antecedents", [])}
+            general_accuracy(seed, of_seed, known, simulate)
+            for m, r in of_seed.items():
                 rows[METHODS[m]].append(r)
                 print(f"  {oracle}, seed {seed}, {METHODS[m]}: "
-                      + ", ".join(f"{k} {v}" for k, v in r.items() if k != "added"), flush=True)
+                      + ", ".join(f"{k} {v}" for k, v in r.items() if k in SHOWN), flush=True)
     print(f"{oracle} oracle, {RULES * SAMPLES} pours, seeds {','.join(map(str, seeds))}: "
           "median [min-max]")
-    print(f"{'method':<26} {'behaviours seen':>16} {'in the theory':>14} {'explored':>12}")
+    print(f"{'method':<26} {'behaviours seen':>16} {'in the theory':>14} {'explored':>12} "
+          f"{'general rules: accuracy %':>26} {'coverage %':>18}")
     for method, rs in rows.items():
         seen = spread([r["seen"] for r in rs])
         theory = spread([r["theory"] for r in rs]) if "theory" in rs[0] else "-"
         explored = spread([r["explored"] for r in rs]) if "explored" in rs[0] else "-"
-        print(f"{method:<26} {seen:>16} {theory:>14} {explored:>12}")
+        general = spread([r["general"] for r in rs])
+        covered = spread([r["covered"] for r in rs])
+        print(f"{method:<26} {seen:>16} {theory:>14} {explored:>12} {general:>26} {covered:>18}")
     free = (" (the synthetic oracle's scores cost nothing)" if oracle == "synthetic"
             else " (pours read from the store count as not simulated)")
     for m in ("discover", "paper"):
