@@ -22,6 +22,9 @@ second run simulates nothing):
 
     PANTARHEI_BENCH_ORACLE=pybullet PANTARHEI_BENCH_SEEDS=1,2,3 \\
     PANTARHEI_BENCH_METHODS=discover,random python -m benchmarks discovery
+
+PANTARHEI_BENCH_JUMPS sets the discovering curiosity's random candidates
+per step (`--jumps`; default the project's).
 """
 from __future__ import annotations
 
@@ -89,8 +92,9 @@ def curiosity(mode: str, seed: int, tmp: Path, oracle: str, store: Path) -> dict
 
     out = tmp / f"{mode}-{seed}.pl"
     inline = oracle == "synthetic"
+    jumps = int(os.environ.get("PANTARHEI_BENCH_JUMPS", Options.jumps))
     r = explore(Options(curiosity=mode, oracle=oracle, max_rules=RULES, seed=seed, out=out,
-                        store=tmp / f"{mode}-{seed}.sqlite" if inline else store,
+                        jumps=jumps, store=tmp / f"{mode}-{seed}.sqlite" if inline else store,
                         progress=False, executor="inline" if inline else "local",
                         general=False))
     trace = [json.loads(line) for line in out.with_suffix(".trace.jsonl").read_text().splitlines()]

@@ -57,8 +57,9 @@ Two curiosities share the loop (option curiosity/1):
     as threshold). The candidates of a step are the antecedents that move
     the pours past the point where a significant plane's verdict flips
     (modify_past/4, every significant plane and parameter), the neighbours
-    of the antecedent just explored (neighbours/3), and as many random valid
-    antecedents as a batch has pours (jumps, far from anything explored).
+    of the antecedent just explored (neighbours/3), and `jumps` uniformly
+    random valid antecedents (far from anything explored; ten times a
+    batch's pours by default: more jumps to rank found more behaviours).
     Each candidate and each of A_new gets its novelty, the chance that it
     shows a behaviour not yet got as a forest of every pour so far predicts
     it (bridge/exploration/novelty.py); A_new keeps the most novel of those
@@ -112,6 +113,8 @@ load_defaults :-
 %       number of parameters plus one)
 %     - curiosity(+Mode)*: discover or paper (see the module's documentation)
 %     - queue(+N)*: A_new keeps the N most novel candidates (discover)
+%     - jumps(+N)*: uniformly random valid antecedents drawn as candidates
+%       each step (discover)
 %     - threshold(+X)*: for discover, the significance level of the
 %       permutation test (default significance_permille); for paper, the
 %       slope below which nothing new is explored (default threshold_permille)
@@ -195,6 +198,8 @@ settings(Options, S) :-
     ),
     option_default(queue, Options, Queue),
     check_positive(queue, Queue),
+    option_default(jumps, Options, Jumps),
+    check_positive(jumps, Jumps),
     option_default(novelty, Options, Novelty0),
     (   number(Novelty0), Novelty0 >= 0, Novelty0 =< 1 -> Novelty is float(Novelty0)
     ;   throw(exploration_error("novelty: expected a number from 0 to 1"))
@@ -239,7 +244,7 @@ settings(Options, S) :-
            seed:Seed, initial:Initial, breadth:Breadth, ridge:Ridge, qualify:Qualify,
            resume:Resume, executor:Executor, progress:Progress, out:Out,
            curiosity:Curiosity, permutations:Permutations, resample:Resample,
-           novelty:Novelty, queue:Queue},
+           novelty:Novelty, queue:Queue, jumps:Jumps},
     optional(store, Options, S0, S1),
     optional(workers, Options, S1, S2),
     optional(ray_address, Options, S2, S3),
@@ -440,12 +445,12 @@ discover_queue(Best, Explored, Id, Props, Rest, Settings, I, Added, Queue) :-
         include([C]>>memberchk(C, New), Queue, Added)
     ).
 
-%   jumps(+Settings, +Iteration, +Exclude, -New): as many valid antecedents
-%   as the batch has pours, drawn uniformly (validity:random_antecedents/3,
-%   seeded by the run's seed and the iteration), none in Exclude.
+%   jumps(+Settings, +Iteration, +Exclude, -New): Settings.jumps valid
+%   antecedents drawn uniformly (validity:random_antecedents/3, seeded by
+%   the run's seed and the iteration), none in Exclude.
 jumps(Settings, I, Exclude, New) :-
     Seed is Settings.seed * 1000003 + I,
-    random_antecedents(Seed, Settings.samples, All),
+    random_antecedents(Seed, Settings.jumps, All),
     exclude([P]>>memberchk(P, Exclude), All, New0),
     list_to_set(New0, New).
 
@@ -676,7 +681,8 @@ setting_facts(Settings, Reply, Stop, Explored, Left, Facts) :-
                       setting(permutations, Settings.permutations),
                       setting(resample, Settings.resample),
                       setting(novelty_permille, NoveltyPermille),
-                      setting(queue, Settings.queue) ]
+                      setting(queue, Settings.queue),
+                      setting(jumps, Settings.jumps) ]
     ;   Threshold = [ setting(threshold_permille, Permille) ]
     ),
     append([ [ setting(oracle, Settings.oracle),

@@ -11,8 +11,9 @@
 % threshold (for discover, the significance level of the permutation test
 % with its number of shuffles; for paper, the slope below which nothing new
 % is explored), how many more batches an antecedent gets when nothing new is
-% queued after it, the novelty a candidate needs to be queued and how many
-% A_new keeps, the ridge of the plane fits, the seed, how many gradient
+% queued after it, the novelty a candidate needs to be queued, how many
+% A_new keeps and how many random valid antecedents each step draws as
+% candidates (jumps), the ridge of the plane fits, the seed, how many gradient
 % components the paper's modify follows, and how an antecedent's consequent
 % is qualified (weighted vote or the paper's argmax).
 default(curiosity, discover).
@@ -23,6 +24,7 @@ default(permutations, 199).
 default(resample, 2).
 default(novelty_permille, 100).
 default(queue, 100).
+default(jumps, 310).
 default(threshold_permille, 100).
 default(ridge_permille, 1000).
 default(seed, 1).

@@ -39,6 +39,9 @@ def register(sub: argparse._SubParsersAction) -> None:
                         f"queued (default {d['novelty']})")
     p.add_argument("--queue", type=int, default=d["queue"],
                    help=f"discover: A_new keeps this many most novel candidates (default {d['queue']})")
+    p.add_argument("--jumps", type=int, default=d["jumps"],
+                   help="discover: uniformly random valid antecedents drawn as candidates each "
+                        f"step (default {d['jumps']})")
     p.add_argument("--permutations", type=int, default=d["permutations"],
                    help=f"discover: shuffles of the permutation test (default {d['permutations']})")
     options.add_seed(p)
@@ -76,7 +79,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def explore(args: argparse.Namespace) -> int:
-    for name in ("max_rules", "samples", "breadth", "workers", "permutations", "queue"):
+    for name in ("max_rules", "samples", "breadth", "workers", "permutations", "queue", "jumps"):
         v = getattr(args, name)
         if v is not None and v < 1:
             raise UserError(f"--{name.replace('_', '-')} must be at least 1")
@@ -93,7 +96,7 @@ def explore(args: argparse.Namespace) -> int:
         initial = validity.require_valid([t.strip() for t in args.initial.split(",") if t.strip()])
     opts = Options(
         curiosity=args.curiosity, permutations=args.permutations, resample=args.resample,
-        novelty=args.novelty, queue=args.queue, oracle=args.oracle, max_rules=args.max_rules,
+        novelty=args.novelty, queue=args.queue, jumps=args.jumps, oracle=args.oracle, max_rules=args.max_rules,
         samples=args.samples,
         threshold=args.threshold, seed=args.seed, initial=initial, breadth=args.breadth,
         ridge=args.ridge, qualify=args.qualify, out=Path(args.out), store=Path(args.store),

@@ -38,6 +38,8 @@ class Options:
     novelty: float = _default("novelty")
     #: discover: how many of the most novel candidates A_new keeps.
     queue: int = _default("queue")
+    #: discover: uniformly random valid antecedents drawn as candidates each step.
+    jumps: int = _default("jumps")
     ridge: float = _default("ridge")
     seed: int = _default("seed")
     initial: Sequence[str] | None = None
@@ -60,6 +62,7 @@ class Options:
                  f"oracle({prolog_quote(self.oracle)})", f"max_rules({int(self.max_rules)})",
                  f"permutations({int(self.permutations)})", f"resample({int(self.resample)})",
                  f"novelty({float(self.novelty)!r})", f"queue({int(self.queue)})",
+                 f"jumps({int(self.jumps)})",
                  f"seed({int(self.seed)})",
                  f"breadth({int(self.breadth)})", f"ridge({float(self.ridge)!r})", f"qualify({prolog_quote(self.qualify)})",
                  f"out({prolog_quote(str(Path(self.out).absolute()))})",

@@ -209,7 +209,8 @@ class Host:
             course.update(curiosity=str(request["curiosity"]),
                           permutations=int(request["permutations"]),
                           resample=int(request["resample"]),
-                          novelty=float(request["novelty"]), queue=int(request["queue"]))
+                          novelty=float(request["novelty"]), queue=int(request["queue"]),
+                          jumps=int(request["jumps"]))
         run = run_key(course)
         store_path = Path(str(request.get("store") or DEFAULT_STORE))
         try:

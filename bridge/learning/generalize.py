@@ -329,7 +329,8 @@ class _Judge:
             holds, decider = _decide(rules, [s for s, o in zip(self.scenes, ok) if o])
             right = np.where(holds, p[ok], 1 - p[ok])
             scored.append((float(right.mean()) if len(right) else 0.0, right[decider == 0]))
-        rules, (_, mine) = (first, scored[0]) if scored[0][0] >= scored[1][0] else (second, scored[1])
+        k_best = 0 if scored[0][0] >= scored[1][0] else 1
+        rules, mine = (first, second)[k_best], scored[k_best][1]
         if len(mine):
             rules = [replace(rules[0], confidence=float(mine.mean())), *rules[1:]]
         return rules
