@@ -92,7 +92,7 @@ def curiosity(mode: str, seed: int, tmp: Path, oracle: str, store: Path) -> dict
 
     out = tmp / f"{mode}-{seed}.pl"
     inline = oracle == "synthetic"
-    jumps = int(os.environ.get("PANTARHEI_BENCH_JUMPS", Options.jumps))
+    jumps = int(os.environ.get("PANTARHEI_BENCH_JUMPS", Options().jumps))
     r = explore(Options(curiosity=mode, oracle=oracle, max_rules=RULES, seed=seed, out=out,
                         jumps=jumps, store=tmp / f"{mode}-{seed}.sqlite" if inline else store,
                         progress=False, executor="inline" if inline else "local",

@@ -58,8 +58,8 @@ Two curiosities share the loop (option curiosity/1):
     the pours past the point where a significant plane's verdict flips
     (modify_past/4, every significant plane and parameter), the neighbours
     of the antecedent just explored (neighbours/3), and `jumps` uniformly
-    random valid antecedents (far from anything explored; ten times a
-    batch's pours by default: more jumps to rank found more behaviours).
+    random valid antecedents (far from anything explored; as many as a
+    batch has pours by default).
     Each candidate and each of A_new gets its novelty, the chance that it
     shows a behaviour not yet got as a forest of every pour so far predicts
     it (bridge/exploration/novelty.py); A_new keeps the most novel of those

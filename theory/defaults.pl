@@ -24,7 +24,7 @@ default(permutations, 199).
 default(resample, 2).
 default(novelty_permille, 100).
 default(queue, 100).
-default(jumps, 310).
+default(jumps, 31).
 default(threshold_permille, 100).
 default(ridge_permille, 1000).
 default(seed, 1).
