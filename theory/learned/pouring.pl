@@ -22,6 +22,7 @@ setting(permutations, 199).
 setting(resample, 2).
 setting(novelty_permille, 100).
 setting(queue, 100).
+setting(jumps, 31).
 setting(breadth, 3).
 setting(ridge_permille, 1000).
 setting(qualify, weighted).
