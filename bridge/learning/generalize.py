@@ -321,7 +321,7 @@ class _Judge:
                ) -> list[GeneralRule]:
         """The list expected to be right on more of the judging pours (the
         first on ties), its default's confidence the share it gets right of
-        the pours it decides."""
+        the pours it decides (one half where it decides none)."""
         p = self.meaning(self.scenes)[:, k]
         ok = np.isfinite(p)
         scored = []
@@ -331,9 +331,8 @@ class _Judge:
             scored.append((float(right.mean()) if len(right) else 0.0, right[decider == 0]))
         k_best = 0 if scored[0][0] >= scored[1][0] else 1
         rules, mine = (first, second)[k_best], scored[k_best][1]
-        if len(mine):
-            rules = [replace(rules[0], confidence=float(mine.mean())), *rules[1:]]
-        return rules
+        confidence = float(mine.mean()) if len(mine) else 0.5
+        return [replace(rules[0], confidence=confidence), *rules[1:]]
 
 
 def _decide(rules: Sequence[GeneralRule], scenes: Sequence[Sequence[str]]
