@@ -141,17 +141,15 @@ def general_accuracy(seed: int, rows: dict[str, dict], known: set, simulate: Cal
     """Per method: coverage and accuracy of the general rules learned from
     its pours (with the run's seed) on 150 uniform held-out scenes, none in
     `known`, kept in its row."""
-    from pantarhei.bridge.evaluation.heldout import scene_pours, uniform_scenes
-    from pantarhei.bridge.evaluation.measures import accuracy, verdicts
+    from pantarhei.bridge.evaluation.heldout import scene_pours, simulated, uniform_scenes
+    from pantarhei.bridge.evaluation.measures import accuracy
     from pantarhei.bridge.learning.generalize import Settings, generalize
 
-    scenes = uniform_scenes(seed, 150, known)
-    S = simulate(scene_pours(scenes, seed))
-    ok = np.all(np.isfinite(S), axis=1)
-    scenes, y = [s for s, o in zip(scenes, ok) if o], verdicts(S[ok])
+    drawn = uniform_scenes(seed, 150, known)
+    scenes, y = simulated(drawn, simulate(scene_pours(drawn, seed)))
     for r in rows.values():
-        good = np.all(np.isfinite(r["S"]), axis=1)
-        a = accuracy(generalize(r["P"][good], r["S"][good], Settings(seed=seed)).predict(scenes), y)
+        # generalize leaves out the pours whose simulation failed
+        a = accuracy(generalize(r["P"], r["S"], Settings(seed=seed)).predict(scenes), y)
         r["general"] = round(100 * a.overall_accuracy, 1)
         r["covered"] = round(100 * a.overall_coverage, 1)
 

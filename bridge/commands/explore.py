@@ -96,8 +96,8 @@ def explore(args: argparse.Namespace) -> int:
         initial = validity.require_valid([t.strip() for t in args.initial.split(",") if t.strip()])
     opts = Options(
         curiosity=args.curiosity, permutations=args.permutations, resample=args.resample,
-        novelty=args.novelty, queue=args.queue, jumps=args.jumps, oracle=args.oracle, max_rules=args.max_rules,
-        samples=args.samples,
+        novelty=args.novelty, queue=args.queue, jumps=args.jumps, oracle=args.oracle,
+        max_rules=args.max_rules, samples=args.samples,
         threshold=args.threshold, seed=args.seed, initial=initial, breadth=args.breadth,
         ridge=args.ridge, qualify=args.qualify, out=Path(args.out), store=Path(args.store),
         resume=args.resume, executor=args.executor, workers=args.workers,

@@ -7,6 +7,7 @@ from typing import Sequence
 
 import numpy as np
 
+from pantarhei.bridge.evaluation.measures import verdicts
 from pantarhei.bridge.exploration.simulation import iteration_seed
 from pantarhei.bridge.reasoning.scenes import random_antecedents, violations
 from pantarhei.oracle.generative import sample
@@ -35,6 +36,14 @@ def scene_pours(scenes: Sequence[Sequence[str]], seed: int) -> np.ndarray:
         return np.empty((0, len(load_vocabulary().parameters)))
     return np.vstack([sample(list(a), 1, iteration_seed(seed, 100_000 + j))
                       for j, a in enumerate(scenes)])
+
+
+def simulated(scenes: Sequence[tuple[str, ...]], S: np.ndarray
+              ) -> tuple[list[tuple[str, ...]], np.ndarray]:
+    """The scenes whose one pour (a row of scores S) did not fail, and their
+    verdicts."""
+    ok = np.all(np.isfinite(S), axis=1)
+    return [s for s, kept in zip(scenes, ok) if kept], verdicts(S[ok])
 
 
 def near_antecedents(explored: Sequence[Sequence[str]], n: int, seed: int,

@@ -33,7 +33,7 @@ from pantarhei.theory.lexicon import load_vocabulary
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.evaluation.heldout import (near_antecedents, random_exploration, scene_pours,
-                                                 uniform_scenes)
+                                                 simulated, uniform_scenes)
 from pantarhei.bridge.evaluation.map_elites import behaviours_seen
 from pantarhei.bridge.evaluation.measures import (accuracy, distinct_behaviours, tree_predictions,
                                                   verdicts)
@@ -327,9 +327,7 @@ def heldout_scenes(opts: Options, explored: Sequence[tuple[str, ...]],
                                    known | set(uniform) | set(near))
     held = {}
     for name, scenes in {"uniform": uniform, "near": near, "near_random": near_random}.items():
-        S = run(f"held-out ({name})", scene_pours(scenes, opts.seed))
-        ok = np.all(np.isfinite(S), axis=1)
-        held[name] = ([s for s, kept in zip(scenes, ok) if kept], verdicts(S[ok]))
+        held[name] = simulated(scenes, run(f"held-out ({name})", scene_pours(scenes, opts.seed)))
     return held
 
 

@@ -143,6 +143,13 @@ class GeneralRule:
         return Rule(self.id, "defeasible", self.head, self.body)
 
 
+def deciding(rules: Sequence[GeneralRule], scene: set[str]) -> int | None:
+    """The index of the rule that decides a scene: the highest ranked of
+    those whose body it holds (None when none does)."""
+    live = [j for j, r in enumerate(rules) if set(r.body) <= scene]
+    return max(live, key=lambda j: rules[j].rank) if live else None
+
+
 @dataclass(frozen=True)
 class Sup:
     """`superior` beats `inferior`: by specificity (the engine derives it
@@ -166,12 +173,10 @@ class General:
         s = set(scene)
         out: dict[str, tuple[int, str | None]] = {}
         for e in load_vocabulary().expectation_names:
-            live = [r for r in self.of(e) if set(r.body) <= s]
-            if not live:
-                out[e] = (UNKNOWN, None)
-                continue
-            best = max(live, key=lambda r: r.rank)
-            out[e] = (HOLDS if best.holds else FAILS, best.id)
+            rules = self.of(e)
+            j = deciding(rules, s)
+            out[e] = ((UNKNOWN, None) if j is None
+                      else (HOLDS if rules[j].holds else FAILS, rules[j].id))
         return out
 
     def predict(self, scenes: Sequence[Iterable[str]]) -> np.ndarray:
@@ -337,14 +342,10 @@ class _Judge:
 
 def _decide(rules: Sequence[GeneralRule], scenes: Sequence[Sequence[str]]
             ) -> tuple[np.ndarray, np.ndarray]:
-    """Per scene: whether one expectation's rules conclude it holds, and the
-    index of the deciding rule (the highest ranked whose body it holds)."""
-    holds = np.zeros(len(scenes), dtype=bool)
-    decider = np.zeros(len(scenes), dtype=int)
-    for i, s in enumerate(scenes):
-        s = set(s)
-        j = max((j for j, r in enumerate(rules) if set(r.body) <= s), key=lambda j: rules[j].rank)
-        holds[i], decider[i] = rules[j].holds, j
+    """Per scene: whether one expectation's rules (a default among them)
+    conclude it holds, and the index of the deciding rule (`deciding`)."""
+    decider = np.array([deciding(rules, set(s)) for s in scenes], dtype=int)
+    holds = np.array([rules[j].holds for j in decider], dtype=bool)
     return holds, decider
 
 
