@@ -11,8 +11,11 @@ of the rules of Algorithm 1, for the methods that build one: one rule set
 per antecedent, qualified as Algorithm 1 does), the accuracy and coverage
 of the general rules learned from each method's pours on 150 uniformly
 random held-out scenes (one pour each, drawn as `pantarhei evaluate` draws
-them for the same seed), and for the curiosities the explored antecedents
-and the new antecedents per iteration. Medians with the range over the
+them for the same seed), and for the curiosities the explored antecedents,
+the new antecedents per iteration, which explored antecedents turned out to
+have a consequent not seen before, and what was left to discover: how many
+of the random valid antecedents of the same seed have a consequent the
+curiosity's theory lacks. Medians with the range over the
 seeds.
 
 By default the synthetic oracle, seeds 1 to 5, every method. The
@@ -40,7 +43,7 @@ import numpy as np
 
 RULES, SAMPLES = 25, 31
 #: what a line per method and seed shows
-SHOWN = ("seen", "theory", "explored", "pours", "other", "general", "covered")
+SHOWN = ("seen", "theory", "explored", "pours", "other", "general", "covered", "left")
 METHODS = {"discover": "curiosity (discover)", "paper": "curiosity (paper)",
            "random": "random valid antecedents", "prior": "random pours (prior)",
            "map_elites": "MAP-Elites (pyribs)"}
@@ -71,9 +74,12 @@ def simulator(oracle: str, store: Path) -> Callable[[np.ndarray], np.ndarray]:
     return lambda P: np.asarray(sim.simulate(P, progress=False), dtype=float)
 
 
-def theory_behaviours(path: Path) -> int:
-    """Distinct consequents (nine verdicts) of Algorithm 1's rules of a learned theory."""
+def theory_consequents(path: Path) -> dict[str, tuple[bool, ...]]:
+    """The consequent (nine verdicts, in the vocabulary's order) of each
+    explored antecedent's rules (Algorithm 1's) of a learned theory, by the
+    antecedent's id."""
     from pantarhei.theory import read_facts
+    from pantarhei.theory.lexicon import load_vocabulary
 
     f = read_facts([path])
     prov = {rid: v for rid, k, v in f["provenance"] if k == "antecedent"}
@@ -83,7 +89,8 @@ def theory_behaviours(path: Path) -> int:
             continue
         neg = isinstance(head, tuple)
         heads[prov[rid]][head[1] if neg else head] = not neg
-    return len({tuple(sorted(h.items())) for h in heads.values()})
+    names = load_vocabulary().expectation_names
+    return {a: tuple(h[e] for e in names) for a, h in heads.items()}
 
 
 def curiosity(mode: str, seed: int, tmp: Path, oracle: str, store: Path) -> dict:
@@ -100,7 +107,12 @@ def curiosity(mode: str, seed: int, tmp: Path, oracle: str, store: Path) -> dict
     trace = [json.loads(line) for line in out.with_suffix(".trace.jsonl").read_text().splitlines()]
     P, S = r["pours"]                       # every pour of the exploration, as it simulated them
     wall, sim = r.get("wall", 0.0), r.get("timings", {}).get("oracle", 0.0)
-    return {"seen": behaviours_seen(S), "theory": theory_behaviours(out),
+    of = theory_consequents(out)
+    # in the order of exploration, whether each antecedent's consequent was new
+    order = [of[t["id"]] for t in trace if t["id"] in of]
+    fresh = [c not in order[:i] for i, c in enumerate(order)]
+    return {"seen": behaviours_seen(S), "theory": len(set(of.values())),
+            "consequents": set(of.values()), "fresh": fresh,
             "explored": r["explored"], "pours": len(P),
             "other": (wall - sim) / wall if wall > 0 else 0.0,
             "added": [len(t["added"]) for t in trace],
@@ -115,8 +127,22 @@ def random_antecedents(seed: int, simulate: Callable) -> dict:
 
     ants, P = random_exploration(seed, RULES, SAMPLES)     # as the evaluation draws its baseline
     S = simulate(P)
-    return {"seen": behaviours_seen(S), "theory": distinct_behaviours(consequents(ants, P, S)),
+    C = consequents(ants, P, S)
+    return {"seen": behaviours_seen(S), "theory": distinct_behaviours(C),
+            "consequents": [tuple(bool(v) for v in c) for c in C],
             "antecedents": ants, "P": P, "S": S}
+
+
+def left_new(rows: dict[str, dict]) -> None:
+    """For each curiosity, what it left to discover: of the random valid
+    antecedents of the same seed, how many have a consequent its theory
+    lacks (needs the random method in the run)."""
+    if "random" not in rows:
+        return
+    for m in ("discover", "paper"):
+        if m in rows:
+            have = rows[m]["consequents"]
+            rows[m]["left"] = sum(c not in have for c in rows["random"]["consequents"])
 
 
 def prior_pours(seed: int, simulate: Callable) -> dict:
@@ -179,6 +205,7 @@ def main() -> None:
             known = {a for m in ("discover", "random")
                      for a in of_seed.get(m, {}).get("antecedents", [])}
             general_accuracy(seed, of_seed, known, simulate)
+            left_new(of_seed)
             for m, r in of_seed.items():
                 rows[METHODS[m]].append(r)
                 print(f"  {oracle}, seed {seed}, {METHODS[m]}: "
@@ -198,8 +225,13 @@ def main() -> None:
             else " (pours read from the store count as not simulated)")
     for m in ("discover", "paper"):
         for seed, r in zip(seeds, rows.get(METHODS[m], [])):
+            fresh, k = r["fresh"], min(10, len(r["fresh"]))
             print(f"{METHODS[m]}, seed {seed}: new antecedents per iteration {r['added']}; "
-                  f"everything but simulation {100 * r['other']:.1f}% of the wall time{free}")
+                  f"explored antecedents with a new consequent: {sum(fresh[:k])} of the first {k}, "
+                  f"{sum(fresh[k:])} of the other {len(fresh) - k}; "
+                  + (f"left to discover: {r['left']} of the {RULES} random valid antecedents have "
+                     "a consequent its theory lacks; " if "left" in r else "")
+                  + f"everything but simulation {100 * r['other']:.1f}% of the wall time{free}")
 
 
 if __name__ == "__main__":
