@@ -15,7 +15,13 @@ them for the same seed), and for the curiosities the explored antecedents,
 the new antecedents per iteration, which explored antecedents turned out to
 have a consequent not seen before, and what was left to discover: how many
 of the random valid antecedents of the same seed have a consequent the
-curiosity's theory lacks. Medians with the range over the
+curiosity's theory lacks. And whether a theory's behaviours are the
+simulation's or its noise's: each rule set's antecedent gets a fresh batch
+of 31 pours (seeded by the run's seed and the antecedent's propositions,
+so an antecedent two methods explored gets the same batch); a rule set is
+reproduced when the verdicts of the larger share of that batch are its
+consequent, and the confirmed behaviours in the theory are the distinct
+consequents of the reproduced rule sets. Medians with the range over the
 seeds.
 
 By default the synthetic oracle, seeds 1 to 5, every method. The
@@ -43,7 +49,10 @@ import numpy as np
 
 RULES, SAMPLES = 25, 31
 #: what a line per method and seed shows
-SHOWN = ("seen", "theory", "explored", "pours", "other", "general", "covered", "left")
+SHOWN = ("seen", "theory", "confirmed", "reproduced", "explored", "pours", "other", "general",
+         "covered", "left")
+#: added to the run's seed for the confirming batches (apart from every other draw)
+CONFIRM_SEED = 104729
 METHODS = {"discover": "curiosity (discover)", "paper": "curiosity (paper)",
            "random": "random valid antecedents", "prior": "random pours (prior)",
            "map_elites": "MAP-Elites (pyribs)"}
@@ -110,9 +119,11 @@ def curiosity(mode: str, seed: int, tmp: Path, oracle: str, store: Path) -> dict
     of = theory_consequents(out)
     # in the order of exploration, whether each antecedent's consequent was new
     order = [of[t["id"]] for t in trace if t["id"] in of]
+    props = {t["id"]: tuple(t["antecedent"]) for t in trace}
     fresh = [c not in order[:i] for i, c in enumerate(order)]
     return {"seen": behaviours_seen(S), "theory": len(set(of.values())),
             "consequents": set(of.values()), "fresh": fresh,
+            "rules": [(props[a], c) for a, c in of.items()],
             "explored": r["explored"], "pours": len(P),
             "other": (wall - sim) / wall if wall > 0 else 0.0,
             "added": [len(t["added"]) for t in trace],
@@ -130,7 +141,34 @@ def random_antecedents(seed: int, simulate: Callable) -> dict:
     C = consequents(ants, P, S)
     return {"seen": behaviours_seen(S), "theory": distinct_behaviours(C),
             "consequents": [tuple(bool(v) for v in c) for c in C],
+            "rules": [(tuple(a), tuple(bool(v) for v in c)) for a, c in zip(ants, C)],
             "antecedents": ants, "P": P, "S": S}
+
+
+def confirm(seed: int, rows: dict[str, dict], simulate: Callable) -> None:
+    """For each method with a theory: how many of its rule sets a fresh batch
+    of their antecedent reproduces (the verdicts of the larger share of its
+    pours that did not fail are the consequent), and the distinct
+    consequents of those (the confirmed behaviours in the theory), kept in
+    its row."""
+    from pantarhei.bridge.exploration.novelty import candidate_seed
+    from pantarhei.oracle.generative import sample
+
+    for r in rows.values():
+        if "rules" not in r:
+            continue
+        P = np.vstack([sample(list(a), SAMPLES, candidate_seed(seed + CONFIRM_SEED, a))
+                       for a, _ in r["rules"]])
+        S = np.asarray(simulate(P), dtype=float).reshape(len(r["rules"]), SAMPLES, -1)
+        kept = set()
+        reproduced = 0
+        for (_, c), B in zip(r["rules"], S):
+            B = B[np.all(np.isfinite(B), axis=1)]
+            if len(B) and tuple(bool(v) for v in (B > 0.5).mean(axis=0) > 0.5) == c:
+                reproduced += 1
+                kept.add(c)
+        r["confirmed"] = len(kept)
+        r["reproduced"] = f"{reproduced}/{len(r['rules'])}"
 
 
 def left_new(rows: dict[str, dict]) -> None:
@@ -205,6 +243,7 @@ def main() -> None:
             known = {a for m in ("discover", "random")
                      for a in of_seed.get(m, {}).get("antecedents", [])}
             general_accuracy(seed, of_seed, known, simulate)
+            confirm(seed, of_seed, simulate)
             left_new(of_seed)
             for m, r in of_seed.items():
                 rows[METHODS[m]].append(r)
@@ -212,15 +251,17 @@ def main() -> None:
                       + ", ".join(f"{k} {v}" for k, v in r.items() if k in SHOWN), flush=True)
     print(f"{oracle} oracle, {RULES * SAMPLES} pours, seeds {','.join(map(str, seeds))}: "
           "median [min-max]")
-    print(f"{'method':<26} {'behaviours seen':>16} {'in the theory':>14} {'explored':>12} "
+    print(f"{'method':<26} {'behaviours seen':>16} {'in the theory':>14} {'confirmed':>12} {'explored':>12} "
           f"{'general rules: accuracy %':>26} {'coverage %':>18}")
     for method, rs in rows.items():
         seen = spread([r["seen"] for r in rs])
         theory = spread([r["theory"] for r in rs]) if "theory" in rs[0] else "-"
+        confirmed = spread([r["confirmed"] for r in rs]) if "confirmed" in rs[0] else "-"
         explored = spread([r["explored"] for r in rs]) if "explored" in rs[0] else "-"
         general = spread([r["general"] for r in rs])
         covered = spread([r["covered"] for r in rs])
-        print(f"{method:<26} {seen:>16} {theory:>14} {explored:>12} {general:>26} {covered:>18}")
+        print(f"{method:<26} {seen:>16} {theory:>14} {confirmed:>12} {explored:>12} {general:>26} "
+              f"{covered:>18}")
     free = (" (the synthetic oracle's scores cost nothing)" if oracle == "synthetic"
             else " (pours read from the store count as not simulated)")
     for m in ("discover", "paper"):
