@@ -139,9 +139,9 @@ def random_antecedents(seed: int, simulate: Callable) -> dict:
     ants, P = random_exploration(seed, RULES, SAMPLES)     # as the evaluation draws its baseline
     S = simulate(P)
     C = consequents(ants, P, S)
-    return {"seen": behaviours_seen(S), "theory": distinct_behaviours(C),
-            "consequents": [tuple(bool(v) for v in c) for c in C],
-            "rules": [(tuple(a), tuple(bool(v) for v in c)) for a, c in zip(ants, C)],
+    heads = [tuple(bool(v) for v in c) for c in C]
+    return {"seen": behaviours_seen(S), "theory": distinct_behaviours(C), "consequents": heads,
+            "rules": [(tuple(a), c) for a, c in zip(ants, heads)],
             "antecedents": ants, "P": P, "S": S}
 
 
@@ -152,6 +152,7 @@ def confirm(seed: int, rows: dict[str, dict], simulate: Callable) -> None:
     consequents of those (the confirmed behaviours in the theory), kept in
     its row."""
     from pantarhei.bridge.exploration.novelty import candidate_seed
+    from pantarhei.bridge.exploration.qualify import consequent
     from pantarhei.oracle.generative import sample
 
     for r in rows.values():
@@ -164,7 +165,9 @@ def confirm(seed: int, rows: dict[str, dict], simulate: Callable) -> None:
         reproduced = 0
         for (_, c), B in zip(r["rules"], S):
             B = B[np.all(np.isfinite(B), axis=1)]
-            if len(B) and tuple(bool(v) for v in (B > 0.5).mean(axis=0) > 0.5) == c:
+            # equal weights: the verdicts of the larger share
+            heads = consequent(B, np.ones(len(B)), "weighted")["outcomes"]
+            if len(B) and tuple(o["holds"] for o in heads) == c:
                 reproduced += 1
                 kept.add(c)
         r["confirmed"] = len(kept)
@@ -251,8 +254,8 @@ def main() -> None:
                       + ", ".join(f"{k} {v}" for k, v in r.items() if k in SHOWN), flush=True)
     print(f"{oracle} oracle, {RULES * SAMPLES} pours, seeds {','.join(map(str, seeds))}: "
           "median [min-max]")
-    print(f"{'method':<26} {'behaviours seen':>16} {'in the theory':>14} {'confirmed':>12} {'explored':>12} "
-          f"{'general rules: accuracy %':>26} {'coverage %':>18}")
+    print(f"{'method':<26} {'behaviours seen':>16} {'in the theory':>14} {'confirmed':>12} "
+          f"{'explored':>12} {'general rules: accuracy %':>26} {'coverage %':>18}")
     for method, rs in rows.items():
         seen = spread([r["seen"] for r in rs])
         theory = spread([r["theory"] for r in rs]) if "theory" in rs[0] else "-"
