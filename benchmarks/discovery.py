@@ -1,5 +1,6 @@
 """Discovery: how many behaviours each search method finds with the same
-budget of pours (25 batches of 31).
+budget of pours (775: 25 batches of 31; the discovering curiosity's probes
+count in it, and it stops when another step might exceed it).
 
 Methods: curiosity (discover), curiosity (paper), random valid antecedents
 (31 pours each), random pours from the prior, and MAP-Elites (pyribs) over

@@ -36,14 +36,16 @@ predicates of the module =bridge=, which `pantarhei explore` and
 Requests and replies are JSON text; a reply =|{"error": Text}|= raises
 =|exploration_error(Text)|=.
 
-The loop's state is the term st(Iteration, Explored, ANew): Explored lists
+The loop's state is the term st(Iteration, Explored, ANew, SetAside): Explored lists
 ant(Id, Props, Parent, Via) in the order of exploration, ANew lists
 cand(Props, Parent, Via) in the order they are popped (for the paper's
 curiosity a queue, the oldest first; for the discovering one the most novel
 first). Via is `initial`; via(Expectation, Param, Sign) for the plane,
 parameter and sign (up or down) that produced it; `near` for a neighbour of
 the antecedent explored before it; `jump` for a random valid antecedent; or
-more(Id, K) for the K-th more batch of an explored antecedent. The state is
+more(Id, K) for the K-th more batch of an explored antecedent. SetAside
+lists aside(Iteration, Attempt, Props) for each candidate set aside after
+its probe (below). The state is
 saved after every explored antecedent, so an exploration can resume.
 
 Two curiosities share the loop (option curiosity/1):
@@ -66,6 +68,11 @@ Two curiosities share the loop (option curiosity/1):
     that reach the novelty level. When nothing reaches it, the antecedent
     just explored gets more pours (resample/1), which may change the forest's
     mind; when that is spent too and A_new is empty, the exploration stops.
+    The forest's guess is checked before a batch is spent on it: the first
+    `probe` pours of the candidate's batch are simulated, and when they do
+    not show a new, reproducible consequent the candidate is set aside and
+    the next one probed (choose/6). The budget is then in pours: max_rules
+    batches' worth, batches and probes together.
 */
 
 :- use_module(library(apply)).
@@ -108,7 +115,8 @@ load_defaults :-
 %   of those marked * are in theory/defaults.pl):
 %
 %     - oracle(+Name)*: pybullet or synthetic
-%     - max_rules(+N)*: stop after N explored antecedents
+%     - max_rules(+N)*: stop after N explored antecedents (discover: the
+%       pours of N batches, its batches and probes)
 %     - samples(+N): simulations per explored antecedent (default: the
 %       number of parameters plus one)
 %     - curiosity(+Mode)*: discover or paper (see the module's documentation)
@@ -124,6 +132,8 @@ load_defaults :-
 %       counts batches
 %     - novelty(+X)*: the estimated chance of a new behaviour, from 0 to 1,
 %       a candidate needs to be queued (discover; default novelty_permille)
+%     - probe(+N)*: pours of a candidate's probe, 0 for none (discover)
+%     - probe_attempts(+N)*: candidates probed at most in a step (discover)
 %     - seed(+S)*: seed of every random choice
 %     - initial(+Props)*: a_0 (default_initial/1)
 %     - breadth(+K)*: the paper's modify uses the K largest gradient components
@@ -147,9 +157,9 @@ explore(Options) :-
 explore_loop(Settings, Begun) :-
     initial_state(Begun, Settings, S0),
     loop(S0, Settings, S, Stop),
-    S = st(_, Explored, ANew),
+    S = st(_, Explored, ANew, SetAside),
     length(ANew, Left),
-    learned(Explored, Settings, Stop, Left, Facts),
+    learned(Explored, SetAside, Settings, Stop, Left, Facts),
     write_theory(Settings.out, Settings, Facts),
     length(Explored, N),
     call_bridge(exploration_end, _{out:Settings.out, stopped:Stop, explored:N,
@@ -200,6 +210,12 @@ settings(Options, S) :-
     check_positive(queue, Queue),
     option_default(jumps, Options, Jumps),
     check_positive(jumps, Jumps),
+    option_default(probe, Options, Probe),
+    (   integer(Probe), Probe >= 0 -> true
+    ;   throw(exploration_error("probe: expected a whole number >= 0"))
+    ),
+    option_default(probe_attempts, Options, Attempts),
+    check_positive(probe_attempts, Attempts),
     option_default(novelty, Options, Novelty0),
     (   number(Novelty0), Novelty0 >= 0, Novelty0 =< 1 -> Novelty is float(Novelty0)
     ;   throw(exploration_error("novelty: expected a number from 0 to 1"))
@@ -244,7 +260,8 @@ settings(Options, S) :-
            seed:Seed, initial:Initial, breadth:Breadth, ridge:Ridge, qualify:Qualify,
            resume:Resume, executor:Executor, progress:Progress, out:Out,
            curiosity:Curiosity, permutations:Permutations, resample:Resample,
-           novelty:Novelty, queue:Queue, jumps:Jumps},
+           novelty:Novelty, queue:Queue, jumps:Jumps, probe:Probe,
+           probe_attempts:Attempts},
     optional(store, Options, S0, S1),
     optional(workers, Options, S1, S2),
     optional(ray_address, Options, S2, S3),
@@ -301,7 +318,7 @@ check_initial(Props, Set) :-
 initial_state(Begun, Settings, S) :-
     (   get_dict(state, Begun, Text), Text \== '', Text \== ""
     ->  term_string(S, Text)
-    ;   S = st(0, [], [cand(Settings.initial, none, initial)])
+    ;   S = st(0, [], [cand(Settings.initial, none, initial)], [])
     ).
 
 % ----------------------------------------------------------------------
@@ -310,25 +327,55 @@ initial_state(Begun, Settings, S) :-
 %!  loop(+S0, +Settings, -S, -Stop) is det.
 %
 %   Explore antecedents from A_new until it is empty (Stop = a_new_empty)
-%   or max_rules batches of simulations are done (Stop = max_rules): as
-%   many antecedents for the paper's curiosity, which samples each once; the
-%   discovering one may sample an undecided antecedent again, and so
-%   explores at most as many with the same budget of pours.
+%   or the budget of max_rules batches of simulations would be exceeded by
+%   another step (Stop = max_rules): as many antecedents for the paper's
+%   curiosity, which samples each once; the discovering one may sample an
+%   undecided antecedent again and spends pours on probes, and so explores
+%   at most as many with the same budget of pours.
 loop(S0, Settings, S, Stop) :-
-    S0 = st(N, _, ANew),
+    S0 = st(_, _, ANew, _),
     (   ANew == []
     ->  S = S0, Stop = a_new_empty
-    ;   N >= Settings.max_rules
+    ;   spent(S0, Settings, Spent),
+        step_cost(Settings, Most),
+        Spent + Most > Settings.max_rules * Settings.samples
     ->  S = S0, Stop = max_rules
     ;   step(S0, Settings, S1),
         loop(S1, Settings, S, Stop)
     ).
 
-%   One iteration of Algorithm 1: pop a_c, explore it, fit the planes of
-%   every explored antecedent, and modify the one with the steepest plane
-%   (for the discovering curiosity: the steepest significant plane).
-step(st(I, Explored, [cand(Props, Parent, Via)|Rest]), Settings, st(I1, Explored1, ANew)) :-
+%   spent(+State, +Settings, -Pours): the pours spent so far: a batch per
+%   iteration and a probe per candidate set aside after its probe.
+spent(st(I, _, _, Probed), Settings, Pours) :-
+    length(Probed, K),
+    probe_size(Settings, M),
+    Pours is I * Settings.samples + K * M.
+
+%   step_cost(+Settings, -Pours): the most pours a step spends: its batch,
+%   and the probes of the candidates it may set aside. The loop stops when
+%   that would exceed the budget, so a step never depends on the budget
+%   and a longer run continues a shorter one.
+step_cost(Settings, Pours) :-
+    probe_size(Settings, M),
+    Pours is Settings.samples + (Settings.probe_attempts - 1) * M.
+
+probe_size(Settings, M) :-
+    (   Settings.curiosity == discover
+    ->  M is min(Settings.probe, Settings.samples)
+    ;   M = 0
+    ).
+
+%   One iteration of Algorithm 1: pop a_c (for the discovering curiosity
+%   with probes: the first candidate whose probe passes, choose/6), explore
+%   it, fit the planes of every explored antecedent, and modify the one with
+%   the steepest plane (for the discovering curiosity: the steepest
+%   significant plane).
+step(S0, Settings, st(I1, Explored1, ANew, Probed)) :-
+    S0 = st(I, Explored, _, Probed0),
     I1 is I + 1,
+    choose(S0, Settings, cand(Props, Parent, Via), Attempt, Rest, Probes),
+    findall(aside(I1, K, P), member(probe(P, _, false, K), Probes), SetAside),
+    append(Probed0, SetAside, Probed),
     (   Via = more(Id, _)
     ->  Explored1 = Explored
     ;   length(Explored, N0),
@@ -336,17 +383,19 @@ step(st(I, Explored, [cand(Props, Parent, Via)|Rest]), Settings, st(I1, Explored
         format(atom(Id), "a~w", [N]),
         append(Explored, [ant(Id, Props, Parent, Via)], Explored1)
     ),
-    call_bridge(exploration_simulate, _{id:Id, antecedent:Props, iteration:I1}, Sim),
+    call_bridge(exploration_simulate, _{id:Id, antecedent:Props, iteration:I1,
+                                        attempt:Attempt}, Sim),
     maplist(entry, Explored1, Entries),
     call_bridge(exploration_best_plane, _{antecedents:Entries}, Best),
     (   Settings.curiosity == discover
-    ->  discover_queue(Best, Explored1, Id, Props, Rest, Settings, I1, Added, Queue),
+    ->  append(Rest, Probed, Away),
+        discover_queue(Best, Explored1, Id, Props, Away, Rest, Settings, I1, Added, Queue),
         more(Added, Settings, Id, Props, Parent, Via, More),
         append(More, Queue, ANew)
     ;   paper_added(Best, Settings, Explored1, Rest, Added),
         append(Rest, Added, ANew)
     ),
-    S1 = st(I1, Explored1, ANew),
+    S1 = st(I1, Explored1, ANew, Probed),
     format(string(State), "~k", [S1]),
     length(ANew, Left),
     findall(P, member(cand(P, _, _), Added), AddedProps),
@@ -367,11 +416,74 @@ step(st(I, Explored, [cand(Props, Parent, Via)|Rest]), Settings, st(I1, Explored
         BestT = Best0.put(_{significant:Best.significant, planes:Planes})
     ;   BestT = Best0
     ),
-    Trace = _{iteration:I1, id:Id, antecedent:Props, parent:Parent, via:ViaText,
-              simulations:Sim.simulations, failed:Sim.failed,
-              best:BestT, added:AddedProps, a_new:Left},
+    Trace0 = _{iteration:I1, id:Id, antecedent:Props, parent:Parent, via:ViaText,
+               simulations:Sim.simulations, failed:Sim.failed,
+               best:BestT, added:AddedProps, a_new:Left},
+    (   Settings.curiosity == discover
+    ->  findall(_{antecedent:P, score:Sc, kept:K}, member(probe(P, Sc, K, _), Probes), ProbeTrace),
+        Trace = Trace0.put(probes, ProbeTrace)
+    ;   Trace = Trace0
+    ),
     call_bridge(exploration_checkpoint, _{iteration:I1, state:State, trace:Trace,
                                           explored:I1, a_new:Left}, _).
+
+%   choose(+State, +Settings, -Cand, -Attempt, -Rest, -Probes): the
+%   candidate this iteration explores, the attempt whose pours its batch is
+%   (0: the iteration's own), A_new without it and the candidates set
+%   aside, and Probes, probe(Props, Score, Kept, Attempt) for each
+%   candidate probed.
+%   Without probes (the paper's curiosity, probe(0), a_0 and more batches)
+%   it is the head of A_new. Otherwise the first `probe` pours of the head's
+%   batch are simulated, and it is explored when they show a new,
+%   reproducible consequent (exploration_probe); else the next is probed,
+%   at most `probe_attempts` of them, and the one whose probe scored best is
+%   explored.
+choose(st(I, Explored, [C|Rest], _), Settings, Cand, Attempt, Rest1, Probes) :-
+    (   unprobed(C, Settings)
+    ->  Cand = C, Attempt = 0, Rest1 = Rest, Probes = []
+    ;   I1 is I + 1,
+        maplist(entry, Explored, Entries),
+        probe_loop([C|Rest], Entries, Settings, I1, 0, [], Cand, Attempt, Rest1, Probes)
+    ).
+
+unprobed(cand(_, _, Via), Settings) :-
+    (   Settings.curiosity \== discover
+    ;   Settings.probe =:= 0
+    ;   Via = initial
+    ;   Via = more(_, _)
+    ), !.
+
+probe_loop([C|Rest], Entries, Settings, I1, K, Tried, Cand, Attempt, Rest1, Probes) :-
+    C = cand(Props, _, _),
+    call_bridge(exploration_probe, _{antecedents:Entries, antecedent:Props,
+                                     iteration:I1, attempt:K}, R),
+    Tried1 = [t(R.score, K, C)|Tried],
+    K1 is K + 1,
+    (   R.pass == true
+    ->  probe_end(Tried1, K, Rest, Cand, Attempt, Rest1, Probes)
+    ;   K1 < Settings.probe_attempts,
+        Rest = [Next|_], \+ unprobed(Next, Settings)
+    ->  probe_loop(Rest, Entries, Settings, I1, K1, Tried1, Cand, Attempt, Rest1, Probes)
+    ;   best_probe(Tried1, Best),
+        probe_end(Tried1, Best, Rest, Cand, Attempt, Rest1, Probes)
+    ).
+
+%   probe_end(+Tried, +Chosen, +Rest, -Cand, -Attempt, -Rest, -Probes):
+%   the attempt Chosen of Tried is explored, the others are set aside.
+probe_end(Tried, Chosen, Rest, Cand, Chosen, Rest, Probes) :-
+    memberchk(t(_, Chosen, Cand), Tried),
+    reverse(Tried, InOrder),
+    findall(probe(P, Sc, Kept, K),
+            ( member(t(Sc, K, cand(P, _, _)), InOrder),
+              ( K == Chosen -> Kept = true ; Kept = false ) ),
+            Probes).
+
+%   best_probe(+Tried, -K): the attempt whose probe scored best (the
+%   earliest of equals).
+best_probe(Tried, K) :-
+    reverse(Tried, InOrder),
+    findall(Key-A, ( member(t(Sc, A, _), InOrder), Key is -Sc ), Keyed),
+    keysort(Keyed, [_-K|_]).
 
 %   followed(+Best, +Settings): the best plane is followed (steep enough for
 %   the paper's curiosity, significant for the discovering one).
@@ -407,8 +519,10 @@ more(Added, Settings, Id, Props, Parent, Via, More) :-
     ;   More = []
     ).
 
-%   discover_queue(+Best, +Explored, +Id, +Props, +Rest, +Settings, +I, -Added, -Queue):
+%   discover_queue(+Best, +Explored, +Id, +Props, +Away, +Rest, +Settings, +I, -Added, -Queue):
 %   the discovering step of iteration I, after the antecedent Id (Props).
+%   Away are antecedents that are no candidates: A_new and those set aside
+%   after their probe.
 %   The candidates are those of modify_past/4 for every significant plane
 %   and parameter of every antecedent with a significant plane (steepest
 %   first), every valid antecedent one proposition away from Props
@@ -417,8 +531,8 @@ more(Added, Settings, Id, Props, Parent, Via, More) :-
 %   A_new, holds the most novel of those that reach the novelty level, at
 %   most `queue` of them (ties in the order above). Added are the new ones
 %   of Queue, in its order.
-discover_queue(Best, Explored, Id, Props, Rest, Settings, I, Added, Queue) :-
-    exclusions(Explored, Rest, Exclude0),
+discover_queue(Best, Explored, Id, Props, Away, Rest, Settings, I, Added, Queue) :-
+    exclusions(Explored, Away, Exclude0),
     foldl(follow(Explored), Best.followed, Exclude0-[], Exclude1-RevFollowed),
     append(RevFollowed, Followed),
     neighbours(Props, Exclude1, Near),
@@ -481,8 +595,10 @@ neighbours(Props0, Exclude, New) :-
             All),
     list_to_set(All, New).
 
-exclusions(Explored, Rest, Exclude) :-
-    findall(P, ( member(ant(_, P, _, _), Explored) ; member(cand(P, _, _), Rest) ), Exclude).
+exclusions(Explored, Away, Exclude) :-
+    findall(P, ( member(ant(_, P, _, _), Explored)
+               ; member(cand(P, _, _), Away)
+               ; member(aside(_, _, P), Away) ), Exclude).
 
 entry(ant(Id, Props, _, _), _{id:Id, antecedent:Props}).
 
@@ -662,12 +778,13 @@ model_mean(relative(Base, L, H), Props, Lo, Hi, Mean) :-
 % ----------------------------------------------------------------------
 % Qualify and the learned theory
 
-learned(Explored, Settings, Stop, Left, Facts) :-
+learned(Explored, SetAside, Settings, Stop, Left, Facts) :-
     maplist(entry, Explored, Entries),
     call_bridge(exploration_qualify, _{antecedents:Entries, mode:Settings.qualify}, Reply),
     setting_facts(Settings, Reply, Stop, Explored, Left, SettingFacts),
+    findall(set_aside(I, K, P), ( member(aside(I, K, Ps), SetAside), member(P, Ps) ), AsideFacts),
     rule_facts(Explored, Reply.antecedents, RuleFacts),
-    append(SettingFacts, RuleFacts, Facts).
+    append([SettingFacts, AsideFacts, RuleFacts], Facts).
 
 setting_facts(Settings, Reply, Stop, Explored, Left, Facts) :-
     length(Explored, N),
@@ -682,7 +799,9 @@ setting_facts(Settings, Reply, Stop, Explored, Left, Facts) :-
                       setting(resample, Settings.resample),
                       setting(novelty_permille, NoveltyPermille),
                       setting(queue, Settings.queue),
-                      setting(jumps, Settings.jumps) ]
+                      setting(jumps, Settings.jumps),
+                      setting(probe, Settings.probe),
+                      setting(probe_attempts, Settings.probe_attempts) ]
     ;   Threshold = [ setting(threshold_permille, Permille) ]
     ),
     append([ [ setting(oracle, Settings.oracle),
@@ -776,7 +895,12 @@ write_facts(Out, Settings, Facts) :-
     format(Out, "%   parent antecedent, simulations with a weight, their weight mass and the~n", []),
     format(Out, "%   verdict's confidence in permille, and the plane, parameter and sign~n", []),
     format(Out, "%   that produced the antecedent);~n", []),
-    format(Out, "%   setting(Key, Value): how the exploration ran.~n~n", []),
+    (   get_dict(curiosity, Settings, discover)
+    ->  format(Out, "%   setting(Key, Value): how the exploration ran;~n", []),
+        format(Out, "%   set_aside(Iteration, Attempt, Prop): a proposition of a candidate whose~n", []),
+        format(Out, "%   probe (the Attempt-th of the Iteration, from 0) set it aside.~n~n", [])
+    ;   format(Out, "%   setting(Key, Value): how the exploration ran.~n~n", [])
+    ),
     forall(member(F, Facts),
            (   ( F = rule(_, _, _) -> nl(Out) ; true ),
                write_term(Out, F, [quoted(true), spacing(next_argument)]),

@@ -100,8 +100,8 @@ test(most_novel_first_above_the_level_up_to_the_queue,
     Explored = [ant(a1, A, none, initial)],
     Low = [pour_low, pour_steeply_tilted],
     Below = [pour_below_rim, pour_steeply_tilted],
-    curiosity:discover_queue(Best, Explored, a1, A, [], _{seed:1, samples:3, queue:5, jumps:3}, 1,
-                             Added, Queue),
+    curiosity:discover_queue(Best, Explored, a1, A, [], [], _{seed:1, samples:3, queue:5, jumps:3},
+                             1, Added, Queue),
     % both moves past the flip, the most novel first, then a neighbour;
     % nothing else reaches the level
     High = [pour_high, pour_steeply_tilted],
@@ -111,13 +111,17 @@ test(most_novel_first_above_the_level_up_to_the_queue,
     Added == Queue,
     % A_new as it was is scored again, and the queue keeps only the most novel
     Old = cand(High, a0, near),
-    curiosity:discover_queue(_{followed:[]}, Explored, a1, A, [Old],
+    curiosity:discover_queue(_{followed:[]}, Explored, a1, A, [Old], [Old],
                              _{seed:1, samples:3, queue:3, jumps:3}, 1, Added1, Queue1),
     Queue1 == [cand(Low, a1, near), cand(Below, a1, near), Old],
     Added1 == [cand(Low, a1, near), cand(Below, a1, near)],
-    curiosity:discover_queue(_{followed:[]}, Explored, a1, A, [Old],
+    curiosity:discover_queue(_{followed:[]}, Explored, a1, A, [Old], [Old],
                              _{seed:1, samples:3, queue:1, jumps:3}, 1, _, Queue2),
-    Queue2 == [cand(Low, a1, near)].
+    Queue2 == [cand(Low, a1, near)],
+    % an antecedent set aside after its probe is no candidate again
+    curiosity:discover_queue(_{followed:[]}, Explored, a1, A, [aside(1, 0, Low)], [],
+                             _{seed:1, samples:3, queue:5, jumps:3}, 1, _, Queue3),
+    Queue3 == [cand(Below, a1, near), cand(High, a1, near)].
 
 %   A stand-in for the bridge's novelty, with known answers: pouring low is
 %   the most novel, below the rim next, pouring high a little; nothing else
@@ -154,7 +158,8 @@ test(bad_curiosity, [true(R = error(_))]) :-
 test(explore_without_the_bridge_says_so, [throws(exploration_error(_))]) :-
     explore([oracle(synthetic), max_rules(1)]).
 
-test(bad_option, [forall(member(O, [max_rules(0), novelty(2), queue(0), jumps(0)])),
+test(bad_option, [forall(member(O, [max_rules(0), novelty(2), queue(0), jumps(0), probe(-1),
+                                    probe(two), probe_attempts(0)])),
                   true(R = error(_))]) :-
     explore_result([O], R).
 

@@ -6,16 +6,20 @@
 % Algorithm 1 (pantarhei explore): the curiosity (discover: planes tested
 % against shuffled pours, and candidates (moves past a significant plane's
 % flip, neighbours, random jumps) ranked by the novelty a forest of every
-% pour so far predicts; paper: the paper's own variant), the oracle, the
-% number of explored antecedents (batches of pours, for discover), the
-% threshold (for discover, the significance level of the permutation test
-% with its number of shuffles; for paper, the slope below which nothing new
-% is explored), how many more batches an antecedent gets when nothing new is
-% queued after it, the novelty a candidate needs to be queued, how many
-% A_new keeps and how many random valid antecedents each step draws as
-% candidates (jumps), the ridge of the plane fits, the seed, how many gradient
-% components the paper's modify follows, and how an antecedent's consequent
-% is qualified (weighted vote or the paper's argmax).
+% pour so far predicts, then probed; paper: the paper's own variant), the
+% oracle, the budget (explored antecedents for paper; for discover, the
+% pours of as many batches), the threshold (for discover, the significance
+% level of the permutation test with its number of shuffles; for paper,
+% the slope below which nothing new is explored), how many more batches an
+% antecedent gets when nothing new is queued after it, the novelty a
+% candidate needs to be queued, how many A_new keeps, how many random valid
+% antecedents each step draws as candidates (jumps), the pours of a probe
+% (discover: the first pours of a candidate's batch, simulated before the
+% rest; a candidate whose probe shows no new, reproducible consequent is
+% set aside for the next, at most probe_attempts candidates a step; 0: no
+% probes), the ridge of the plane fits, the seed, how many gradient
+% components the paper's modify follows, and how an antecedent's
+% consequent is qualified (weighted vote or the paper's argmax).
 default(curiosity, discover).
 default(oracle, pybullet).
 default(max_rules, 25).
@@ -25,6 +29,8 @@ default(resample, 2).
 default(novelty_permille, 100).
 default(queue, 100).
 default(jumps, 31).
+default(probe, 8).
+default(probe_attempts, 3).
 default(threshold_permille, 100).
 default(ridge_permille, 1000).
 default(seed, 1).

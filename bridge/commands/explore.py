@@ -19,7 +19,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     d = defaults()
     p = sub.add_parser("explore", help="learn a theory by curiosity-driven exploration (Algorithm 1)")
     p.add_argument("--max-rules", type=int, default=d["max_rules"],
-                   help=f"stop after this many explored antecedents (default {d['max_rules']})")
+                   help="the budget: this many explored antecedents (paper), the pours of this "
+                        f"many batches (discover; default {d['max_rules']})")
     p.add_argument("--samples", type=int,
                    help="simulations per explored antecedent (default: parameters + 1)")
     p.add_argument("--curiosity", choices=("discover", "paper"), default=d["curiosity"],
@@ -42,6 +43,13 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--jumps", type=int, default=d["jumps"],
                    help="discover: uniformly random valid antecedents drawn as candidates each "
                         f"step (default {d['jumps']})")
+    p.add_argument("--probe", type=int, default=d["probe"],
+                   help="discover: simulate this many pours of a candidate's batch first, and "
+                        "set it aside for the next when they show no new, reproducible "
+                        f"consequent; 0: no probes (default {d['probe']})")
+    p.add_argument("--probe-attempts", type=int, default=d["probe_attempts"],
+                   help="discover: candidates probed at most in a step; then the one whose "
+                        f"probe scored best is explored (default {d['probe_attempts']})")
     p.add_argument("--permutations", type=int, default=d["permutations"],
                    help=f"discover: shuffles of the permutation test (default {d['permutations']})")
     options.add_seed(p)
@@ -79,14 +87,16 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def explore(args: argparse.Namespace) -> int:
-    for name in ("max_rules", "samples", "breadth", "workers", "permutations", "queue", "jumps"):
+    for name in ("max_rules", "samples", "breadth", "workers", "permutations", "queue", "jumps",
+                 "probe_attempts"):
         v = getattr(args, name)
         if v is not None and v < 1:
             raise UserError(f"--{name.replace('_', '-')} must be at least 1")
     if (args.threshold is not None and args.threshold < 0) or args.ridge < 0:
         raise UserError("--threshold and --ridge must not be negative")
-    if args.resample < 0:
-        raise UserError("--resample must not be negative")
+    for name in ("resample", "probe"):
+        if getattr(args, name) < 0:
+            raise UserError(f"--{name} must not be negative")
     if not 0 <= args.novelty <= 1:
         raise UserError("--novelty must be from 0 to 1")
     if args.curiosity == "discover" and args.threshold is not None and args.threshold > 1:
@@ -96,7 +106,8 @@ def explore(args: argparse.Namespace) -> int:
         initial = validity.require_valid([t.strip() for t in args.initial.split(",") if t.strip()])
     opts = Options(
         curiosity=args.curiosity, permutations=args.permutations, resample=args.resample,
-        novelty=args.novelty, queue=args.queue, jumps=args.jumps, oracle=args.oracle,
+        novelty=args.novelty, queue=args.queue, jumps=args.jumps, probe=args.probe,
+        probe_attempts=args.probe_attempts, oracle=args.oracle,
         max_rules=args.max_rules, samples=args.samples,
         threshold=args.threshold, seed=args.seed, initial=initial, breadth=args.breadth,
         ridge=args.ridge, qualify=args.qualify, out=Path(args.out), store=Path(args.store),

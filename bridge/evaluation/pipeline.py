@@ -67,6 +67,8 @@ class Learned:
     #: Batches of `samples` pours of each explored antecedent (more than one
     #: where the discovering curiosity sampled an undecided antecedent again).
     batches: list[int] = field(default_factory=list)
+    #: The candidates set aside after their probe: iteration -> attempt -> antecedent.
+    set_aside: dict[int, dict[int, tuple[str, ...]]] = field(default_factory=dict)
 
     def setting(self, key: str, default: Any = None) -> Any:
         values = self.settings.get(key)
@@ -102,8 +104,12 @@ def read_learned(path: Path | str) -> Learned:
             i = antecedent_index(of_rule.get(literal_text(a[0]), ""))
             if i is not None:
                 batches[i] = int(a[2])
+    aside: dict[int, dict[int, list[str]]] = {}
+    for a in facts.get("set_aside", []):
+        aside.setdefault(int(a[0]), {}).setdefault(int(a[1]), []).append(literal_text(a[2]))
     return Learned(path, theory, settings, [bodies[i] for i in order],
-                   [batches.get(i, 1) for i in order])
+                   [batches.get(i, 1) for i in order],
+                   {i: {k: tuple(sorted(ps)) for k, ps in by.items()} for i, by in aside.items()})
 
 
 # -- the run -------------------------------------------------------------------
@@ -211,11 +217,17 @@ class Pours:
     P: np.ndarray
     S: np.ndarray
     ends: list[int] = field(default_factory=list)
+    #: The antecedent each pour was drawn from (a candidate set aside after
+    #: its probe is none of `antecedents`).
+    drawn: list[tuple[str, ...]] = field(default_factory=list)
 
     def __post_init__(self) -> None:
         if not self.ends and self.antecedents:
             each = len(self.P) // len(self.antecedents)
             self.ends = [each * (k + 1) for k in range(len(self.antecedents))]
+        if not self.drawn:
+            self.drawn = [a for a, n in zip(self.antecedents, np.diff([0, *self.ends]))
+                          for _ in range(int(n))]
 
     def upto(self, pours: int) -> int:
         """How many antecedents have all their pours among the first `pours`."""
@@ -231,7 +243,7 @@ def evaluate(opts: Options) -> Evaluation:
     samples = int(learned.setting("samples"))
     ev = Evaluation(theory=_shown(opts.theory), oracle=oracle,
                     settings={k: (v if len(v) > 1 else v[0]) for k, v in learned.settings.items()},
-                    budget=sum(learned.batches) * samples, explored=list(learned.antecedents))
+                    budget=0, explored=list(learned.antecedents))
     from pantarhei.bridge.exploration.simulation import open_simulator, oracle_identity
 
     version, _ = oracle_identity(oracle)
@@ -242,7 +254,9 @@ def evaluate(opts: Options) -> Evaluation:
     try:
         run = Simulations(sim, ev, opts.progress)
         curiosity = exploration_pours(learned, run, ev)
-        rnd = random_exploration_pours(opts.seed, sum(learned.batches), samples, run)
+        # the same budget: as many pours as the exploration's (probes too), in whole batches
+        ev.budget = max(1, round(len(curiosity.P) / samples)) * samples
+        rnd = random_exploration_pours(opts.seed, ev.budget // samples, samples, run)
         ev.behaviours_seen = {"curiosity": behaviours_seen(curiosity.S),
                               "random": behaviours_seen(rnd.S)}
         if opts.baselines:
@@ -271,12 +285,7 @@ def exploration_pours(learned: Learned, run: Simulations, ev: Evaluation) -> Pou
     samples, seed = int(learned.setting("samples")), int(learned.setting("seed"))
     mode = str(learned.setting("qualify", "weighted"))
     explored = learned.antecedents
-    # the pours of each antecedent's batches, in the iterations they were drawn
-    iterations = np.cumsum([0] + learned.batches[:-1]) + 1
-    P = np.vstack([sample(list(a), samples, iteration_seed(seed, int(first) + b))
-                   for a, first, n in zip(explored, iterations, learned.batches)
-                   for b in range(n)])
-    ends = list(np.cumsum(learned.batches) * samples)
+    P, drawn, of, ends = exploration_draws(learned)
     S = run("exploration", P)
     ev.explored_consequents = consequents(explored, P, S, mode)
     ok = np.all(np.isfinite(S), axis=1)
@@ -284,7 +293,7 @@ def exploration_pours(learned: Learned, run: Simulations, ev: Evaluation) -> Pou
     ev.best_samples = [P[ok][int(np.argmax(W[i]))] for i in range(len(explored))]
     ev.kept_all = []
     for i in range(len(explored)):
-        rows = S[(ends[i - 1] if i else 0):ends[i]]
+        rows = S[of == i]
         rows = rows[np.all(np.isfinite(rows), axis=1)]
         ev.kept_all.append(float((rows > 0.5).all(axis=1).mean()) if len(rows) else None)
     differ = _differing_rules(learned.theory, ev.explored_consequents)
@@ -292,7 +301,41 @@ def exploration_pours(learned: Learned, run: Simulations, ev: Evaluation) -> Pou
     if differ:
         _say(f"{len(differ)} rules of the theory differ from those its own pours give here "
              f"(first: {differ[0]}): another oracle build, or a theory edited by hand")
-    return Pours(list(explored), P, S, [int(e) for e in ends])
+    return Pours(list(explored), P, S, [int(e) for e in ends], drawn)
+
+
+def exploration_draws(learned: Learned) -> tuple[np.ndarray, list[tuple[str, ...]], np.ndarray,
+                                                  list[int]]:
+    """The exploration's pours drawn again with its seeds, in the order it
+    simulated them: per iteration, the probes of its candidates in turn
+    (`probe` pours each, the candidates set aside and the one explored),
+    then the rest of the explored one's batch (the whole batch where
+    nothing was set aside). With the antecedent each pour was drawn from,
+    the index of the explored antecedent it belongs to (-1 for a probe set
+    aside) and where each explored antecedent's last batch ends."""
+    from pantarhei.bridge.exploration.simulation import batch_seed
+
+    samples, seed = int(learned.setting("samples")), int(learned.setting("seed"))
+    m = min(int(learned.setting("probe", 0)), samples)
+    rows, drawn, of, ends = [], [], [], []
+    iteration = 0
+    for i, (a, n) in enumerate(zip(learned.antecedents, learned.batches)):
+        for _ in range(n):
+            iteration += 1
+            aside = learned.set_aside.get(iteration, {})
+            chosen = min(set(range(len(aside) + 1)) - set(aside))
+            if aside:
+                for k in range(len(aside) + 1):
+                    b = aside.get(k, a)
+                    rows.append(sample(list(b), samples, batch_seed(seed, iteration, k))[:m])
+                    drawn += [b] * m
+                    of += [i if k == chosen else -1] * m
+            P = sample(list(a), samples, batch_seed(seed, iteration, chosen))[m if aside else 0:]
+            rows.append(P)
+            drawn += [a] * len(P)
+            of += [i] * len(P)
+        ends.append(len(of))
+    return np.vstack(rows), drawn, np.array(of), ends
 
 
 def random_exploration_pours(seed: int, count: int, samples: int, run: Simulations) -> Pours:
@@ -370,7 +413,7 @@ def final_theories(ev: Evaluation, theory: Theory, methods: dict[str, Pours], he
         for label, th in final.items():
             out[f"{label}_theory"] = accuracy(predict(th, sel), y).as_dict()
         for label, m in methods.items():
-            X = [a for a, n in zip(m.antecedents, np.diff([0, *m.ends])) for _ in range(int(n))]
+            X = m.drawn
             okr = np.all(np.isfinite(m.S), axis=1)
             Xk = [x for x, o in zip(X, okr) if o]
             out[f"{label}_tree"] = accuracy(

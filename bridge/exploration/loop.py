@@ -40,6 +40,9 @@ class Options:
     queue: int = _default("queue")
     #: discover: uniformly random valid antecedents drawn as candidates each step.
     jumps: int = _default("jumps")
+    #: discover: pours of a candidate's probe (0: none) and candidates probed a step.
+    probe: int = _default("probe")
+    probe_attempts: int = _default("probe_attempts")
     ridge: float = _default("ridge")
     seed: int = _default("seed")
     initial: Sequence[str] | None = None
@@ -62,7 +65,8 @@ class Options:
                  f"oracle({prolog_quote(self.oracle)})", f"max_rules({int(self.max_rules)})",
                  f"permutations({int(self.permutations)})", f"resample({int(self.resample)})",
                  f"novelty({float(self.novelty)!r})", f"queue({int(self.queue)})",
-                 f"jumps({int(self.jumps)})",
+                 f"jumps({int(self.jumps)})", f"probe({int(self.probe)})",
+                 f"probe_attempts({int(self.probe_attempts)})",
                  f"seed({int(self.seed)})",
                  f"breadth({int(self.breadth)})", f"ridge({float(self.ridge)!r})", f"qualify({prolog_quote(self.qualify)})",
                  f"out({prolog_quote(str(Path(self.out).absolute()))})",
@@ -121,8 +125,9 @@ def explore(options: Options) -> dict:
 
 def budget_text(curiosity: str, max_rules: int) -> str:
     """What max_rules counts: explored antecedents for the paper's
-    curiosity, batches of pours for the discovering one."""
-    return f"{max_rules} rules" if curiosity == "paper" else f"{max_rules} batches of pours"
+    curiosity; for the discovering one, the pours of as many batches (its
+    batches and probes)."""
+    return f"{max_rules} rules" if curiosity == "paper" else f"the pours of {max_rules} batches"
 
 
 def stop_text(result: dict, curiosity: str, max_rules: int) -> str:

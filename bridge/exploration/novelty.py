@@ -19,6 +19,12 @@ estimate is 0.8 times the chance that it is none of them, plus 0.2 times
 the share of c's predicted pours whose nine verdicts no two pours so far
 have shown. So it is near 0 where the forest expects nothing new, and near
 1 where it surely expects a new rule whose pours all show new behaviour.
+
+The forest's guess is checked before a batch is spent on it: a probe, the
+first pours of the candidate's batch, is simulated, and `probe_score` says
+how likely a batch of the candidate is to give a consequent no explored
+antecedent has and that another batch would give again (the candidate is
+set aside below PASS; theory/curiosity.pl, choose/6).
 """
 from __future__ import annotations
 
@@ -28,6 +34,7 @@ from dataclasses import dataclass
 from typing import Sequence
 
 import numpy as np
+from scipy.stats import binom
 from sklearn.ensemble import RandomForestClassifier
 
 from pantarhei.oracle.generative import normalise, sample
@@ -39,6 +46,9 @@ TREES, LEAF = 50, 3
 NEW_CONSEQUENT = 0.8
 #: The seeded tie-break's share of the estimate (which so stays below 1).
 TIE = 1e-6
+#: A probe passes when the chance it gives of a new, reproducible consequent
+#: is at least this: more likely than not.
+PASS = 0.5
 
 
 @dataclass(frozen=True)
@@ -128,3 +138,35 @@ def novelties(k: Known, candidates: Sequence[Sequence[str]]) -> list[dict]:
         out.append({"novelty": estimate * (1.0 - TIE) + tie, "new_consequent": new,
                     "unseen": unseen})
     return out
+
+
+def majority(q: np.ndarray, n: int) -> np.ndarray:
+    """The chance that the larger share of n pours holds, when each holds
+    with chance q (a tie, for even n, counts half)."""
+    q = np.clip(np.asarray(q, dtype=float), 0.0, 1.0)
+    return binom.sf(n // 2, n, q) + (0.0 if n % 2 else 0.5 * binom.pmf(n // 2, n, q))
+
+
+def new_reproduced(q: np.ndarray, n: int, consequents: np.ndarray) -> float:
+    """The chance that two batches of n pours, in which the expectations
+    hold with the chances q, give the same consequent and that it is none of
+    `consequents` (rows of nine verdicts): a behaviour found, not a toss."""
+    r = majority(q, n)
+    agree = float(np.prod(r * r + (1.0 - r) * (1.0 - r)))
+    same = float(np.prod(np.where(consequents, r * r, (1.0 - r) * (1.0 - r)), axis=1).sum())
+    return max(0.0, agree - same)
+
+
+def probe_score(S: np.ndarray, n: int, consequents: Sequence[tuple[bool, ...]]) -> float:
+    """What a probe says of its candidate: the chance (new_reproduced) that
+    a batch of n of its pours gives a consequent none of `consequents` has,
+    and that another batch would give it again, with each expectation's
+    chance taken from the probe's pours that did not fail ((holds + 1) /
+    (pours + 2): a probe of a few pours is not read as certain). A split
+    probe scores at most about one half, a probe that shows an explored
+    antecedent's consequent about 0."""
+    S = np.asarray(S, dtype=float)
+    V = S[np.all(np.isfinite(S), axis=1)] > 0.5
+    q = (V.sum(axis=0) + 1.0) / (len(V) + 2.0)
+    known_c = np.array(sorted(consequents), dtype=bool).reshape(-1, S.shape[1])
+    return new_reproduced(q, n, known_c)

@@ -11,6 +11,8 @@ Prolog module `bridge`:
 * `exploration_best_plane`: the weights of equation (1) over all
   simulations, a weighted plane fit per explored antecedent, and the
   steepest plane of all;
+* `exploration_probe`: simulate the first pours of a candidate's batch and
+  say whether they show a new, reproducible consequent;
 * `exploration_qualify`: the consequent of each explored antecedent;
 * `exploration_checkpoint`: save the state after an explored antecedent;
 * `exploration_end`: write the trace and its plot, and close everything;
@@ -39,12 +41,11 @@ import numpy as np
 
 from pantarhei.bridge.engines.swipl import Engine, engine as prolog_engine
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.exploration.novelty import Known, known, novelties
+from pantarhei.bridge.exploration.novelty import PASS, Known, known, novelties, probe_score
 from pantarhei.bridge.exploration.planes import Planes, best_abs_slope, plane_fit
 from pantarhei.bridge.exploration.qualify import QUALIFY, consequent
 from pantarhei.bridge.exploration.significance import Tested, permutation_test, shuffle_seed
-from pantarhei.bridge.exploration.simulation import (iteration_seed, open_simulator,
-                                                     oracle_identity)
+from pantarhei.bridge.exploration.simulation import batch_seed, open_simulator, oracle_identity
 from pantarhei.bridge.exploration.state import ExplorationStore, run_key
 from pantarhei.bridge.exploration.trace import (append_trace, plot_path, plot_trace,
                                                 trace_path, write_trace)
@@ -79,6 +80,8 @@ class Session:
     timings: dict[str, float] = field(default_factory=dict)
     #: Seconds since the start after each explored antecedent (kept out of the trace).
     elapsed: list[float] = field(default_factory=list)
+    #: Pours already in the pool of each probed (iteration, attempt).
+    probed: dict[tuple[int, int], int] = field(default_factory=dict)
 
     @property
     def valid(self) -> np.ndarray:
@@ -155,6 +158,7 @@ class Host:
             "exploration_simulate": self._timed("simulate", self.simulate),
             "exploration_best_plane": self._timed("planes", self.best_plane),
             "exploration_predict": self._timed("planes", self.predict),
+            "exploration_probe": self._timed("probe", self.probe),
             "exploration_qualify": self._timed("qualify", self.qualify),
             "exploration_checkpoint": self._timed("checkpoint", self.checkpoint),
             "exploration_end": self.end,
@@ -211,6 +215,9 @@ class Host:
                           resample=int(request["resample"]),
                           novelty=float(request["novelty"]), queue=int(request["queue"]),
                           jumps=int(request["jumps"]))
+            if int(request.get("probe", 0)):       # runs without probes keep their keys
+                course.update(probe=int(request["probe"]),
+                              probe_attempts=int(request["probe_attempts"]))
         run = run_key(course)
         store_path = Path(str(request.get("store") or DEFAULT_STORE))
         try:
@@ -251,13 +258,18 @@ class Host:
         return {"state": saved.state if saved else "", "run": run,
                 "resumed": bool(saved), "iterations": saved.iteration if saved else 0}
 
-    def simulate(self, request: dict) -> dict:
+    def batch(self, request: dict, n: int) -> tuple[np.ndarray, np.ndarray]:
+        """The first n pours of the batch of an iteration's attempt
+        (attempt 0 is the iteration's own seed; a candidate probed after
+        others gets a seed of its own), simulated, and added to the pool
+        and to what the iteration's checkpoint saves, except those a probe
+        of the same batch already added."""
         s = self.need_session()
         props = [str(p) for p in request["antecedent"]]
-        iteration = int(request["iteration"])
-        n = int(s.settings["samples"])
+        iteration, attempt = int(request["iteration"]), int(request.get("attempt", 0))
+        samples = int(s.settings["samples"])
         try:
-            P = sample(props, n, iteration_seed(int(s.settings["seed"]), iteration))
+            P = sample(props, samples, batch_seed(int(s.settings["seed"]), iteration, attempt))[:n]
         except InvalidAntecedent as e:
             raise UserError(f"cannot sample {', '.join(props)}: {e}") from None
         t = time.perf_counter()
@@ -265,11 +277,36 @@ class Host:
         s.timings["oracle"] = s.timings.get("oracle", 0.0) + time.perf_counter() - t
         if S.shape != (n, len(load_vocabulary().expectations)):
             raise RuntimeError(f"the simulator returned scores of shape {S.shape}")
-        s.params = np.vstack([s.params, P])
-        s.scores = np.vstack([s.scores, S])
-        s.pending[iteration] = (P, S)
+        have = s.probed.get((iteration, attempt), 0)
+        s.params = np.vstack([s.params, P[have:]])
+        s.scores = np.vstack([s.scores, S[have:]])
+        s.probed[(iteration, attempt)] = max(have, n)
+        if iteration in s.pending:
+            P0, S0 = s.pending[iteration]
+            s.pending[iteration] = (np.vstack([P0, P[have:]]), np.vstack([S0, S[have:]]))
+        else:
+            s.pending[iteration] = (P[have:], S[have:])
+        return P, S
+
+    def simulate(self, request: dict) -> dict:
+        s = self.need_session()
+        _, S = self.batch(request, int(s.settings["samples"]))
         failed = int((~np.all(np.isfinite(S), axis=1)).sum())
         return {"simulations": len(s.params), "failed": failed}
+
+    def probe(self, request: dict) -> dict:
+        """Simulate the first `probe` pours of a candidate's batch and say
+        whether they show a new, reproducible consequent
+        (novelty.probe_score against the explored antecedents' consequents,
+        at least novelty.PASS)."""
+        s = self.need_session()
+        samples = int(s.settings["samples"])
+        _, S = self.batch(request, min(int(s.settings["probe"]), samples))
+        mode = str(s.settings.get("qualify", "weighted"))
+        consequents = [tuple(o["holds"] for o in c["outcomes"])
+                       for c in s.consequents(request["antecedents"], mode)]
+        score = probe_score(S, samples, consequents)
+        return {"score": score, "pass": score >= PASS, "simulations": len(s.params)}
 
     def best_plane(self, request: dict) -> dict:
         s = self.need_session()

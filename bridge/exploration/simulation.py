@@ -15,6 +15,14 @@ def iteration_seed(seed: int, iteration: int) -> int:
     return int(np.random.SeedSequence([int(seed), int(iteration)]).generate_state(1)[0])
 
 
+def batch_seed(seed: int, iteration: int, attempt: int = 0) -> int:
+    """The sampling seed of an iteration's batch: the iteration's own for
+    its first candidate (attempt 0), one of its own for a candidate probed
+    after others were set aside."""
+    s = iteration_seed(seed, iteration)
+    return s if not attempt else int(np.random.SeedSequence([s, int(attempt)]).generate_state(1)[0])
+
+
 def open_simulator(oracle: str, executor: str = "local", workers: int | None = None,
                    store: str | Path | None = None, ray_address: str | None = None,
                    oracle_options: dict | None = None) -> Any:

@@ -182,7 +182,7 @@ def test_failed_simulations_are_left_out_and_counted(tmp_path):
     failed ones out of weights and fits, and says how many failed."""
     crash = list(range(10, 40))            # about a sixth of the prior's counts
     r = exploration.explore(Options(
-        oracle="faulty", oracle_options={"crash": crash}, max_rules=2, samples=16,
+        oracle="faulty", oracle_options={"crash": crash}, max_rules=2, samples=16, probe=0,
         out=tmp_path / "f.pl", store=tmp_path / "f.sqlite", progress=False,
         executor="local", workers=2, initial=["pour_low"]))
     assert r["explored"] == 2 and 0 < r["failed"] < r["simulations"]

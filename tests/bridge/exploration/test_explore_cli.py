@@ -22,6 +22,8 @@ FAST = ["--oracle", "synthetic", "--executor", "inline", "--no-progress"]
     (["--novelty", "1.5"], "--novelty must be from 0 to 1"),
     (["--queue", "0"], "--queue must be at least 1"),
     (["--jumps", "0"], "--jumps must be at least 1"),
+    (["--probe", "-1"], "--probe must not be negative"),
+    (["--probe-attempts", "0"], "--probe-attempts must be at least 1"),
 ])
 def test_bad_input_is_one_line_and_nonzero(tmp_path, args, words):
     r = run_cli("explore", *FAST, *args, "--out", str(tmp_path / "t.pl"),

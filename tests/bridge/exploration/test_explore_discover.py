@@ -12,6 +12,7 @@ import pytest
 from pantarhei.bridge.engines.swipl import engine
 from pantarhei.bridge.exploration import loop as exploration
 from pantarhei.bridge.exploration.loop import Options
+from pantarhei.bridge.exploration.novelty import PASS
 from pantarhei.bridge.exploration.session import install
 from pantarhei.bridge.exploration.significance import permutation_test
 from pantarhei.bridge.reasoning.scenes import violations
@@ -164,7 +165,37 @@ def test_runs_are_reproducible_and_add_only_new_valid_antecedents(tmp_path):
         for p in t["added"]:
             assert not violations(p) and tuple(p) not in seen
         assert t["a_new"] <= 100
-    assert lines[-1]["iteration"] == 6 == a["simulations"] // 31
+    aside = sum(not p["kept"] for t in lines for p in t["probes"])
+    assert lines[-1]["iteration"] == len(lines) and a["simulations"] == len(lines) * 31 + aside * 8
+
+
+def test_probes_set_candidates_aside_and_keep_to_the_pour_budget(tmp_path):
+    r = run(tmp_path, name="p", seed=1, max_rules=8)        # probes of 8 pours, 3 a step
+    lines = trace(r)
+    explored = [tuple(t["antecedent"]) for t in lines]
+    aside = [tuple(p["antecedent"]) for t in lines for p in t["probes"] if not p["kept"]]
+    assert aside and not set(aside) & set(explored)          # set aside, never explored later
+    assert len(set(aside)) == len(aside)
+    for t in lines:
+        if t["via"] in ("initial",) or t["via"].startswith("more"):
+            assert t["probes"] == []
+            continue
+        probes = t["probes"]
+        assert 1 <= len(probes) <= 3
+        (kept,) = [p for p in probes if p["kept"]]
+        assert kept["antecedent"] == t["antecedent"]
+        if kept["score"] >= PASS:                        # passed: the last one probed
+            assert probes[-1] is kept and all(p["score"] < PASS for p in probes[:-1])
+        else:      # none passed (3 probed, or no room for more): the best is explored
+            assert kept["score"] == max(p["score"] for p in probes)
+    # a batch per iteration and a probe per candidate set aside, within the budget;
+    # the kept probe's pours are its batch's first, not simulated twice
+    assert r["simulations"] == len(lines) * 31 + len(aside) * 8 <= 8 * 31
+    P, _ = r["pours"]
+    assert len(np.unique(P, axis=0)) == len(P)
+    # without probes: none, and the whole budget in batches
+    r0 = run(tmp_path, name="q", seed=1, max_rules=8, probe=0)
+    assert all(t["probes"] == [] for t in trace(r0)) and r0["simulations"] == 8 * 31
 
 
 def test_when_nothing_is_novel_enough_a0_gets_more_pours_then_the_exploration_stops(tmp_path):

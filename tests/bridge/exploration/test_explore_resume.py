@@ -49,14 +49,14 @@ def test_killed_exploration_resumes_to_the_same_theory(tmp_path):
         if proc.poll() is None:
             proc.kill()
     done = saved_iterations(store)
-    assert 3 <= done < 10
+    assert 3 <= done
     assert not out.exists()
 
     resumed = run_cli(*ARGS, "--resume", "--out", str(out), "--store", str(store))
     assert resumed.code == 0, resumed.err
     assert out.read_text() == expected
     trace = (tmp_path / "killed.trace.jsonl").read_text()
-    assert len(trace.splitlines()) == 10
+    assert done < len(trace.splitlines()) <= 10     # fewer batches when probes set candidates aside
     # no timings in the trace: the same run writes the same trace, byte for byte
     assert trace == (tmp_path / "whole.trace.jsonl").read_text()
 

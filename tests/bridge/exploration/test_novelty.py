@@ -1,11 +1,14 @@
 """Novelty on the synthetic oracle, whose answers are known: a forest of
 prior pours predicts that a proposition the oracle ignores shows nothing
-new, and that pouring from the side (which spills) gives a new consequent."""
+new, and that pouring from the side (which spills) gives a new consequent;
+a probe of a few real pours says the same, and counts a split verdict as a
+toss."""
 from __future__ import annotations
 
 import numpy as np
 
-from pantarhei.bridge.exploration.novelty import known, novelties
+from pantarhei.bridge.exploration.novelty import (PASS, known, majority, new_reproduced,
+                                                  novelties, probe_score)
 from pantarhei.oracle.generative import sample
 from pantarhei.oracle.synthetic import DEPENDS, scores
 from pantarhei.theory.lexicon import load_vocabulary
@@ -54,3 +57,36 @@ def test_with_no_pours_everything_is_new():
                   samples=31, seed=1, forest_seed=2)
     (f,) = novelties(empty, [A0])
     assert f["new_consequent"] == 1.0 and f["unseen"] == 1.0
+
+
+def test_the_chance_of_a_new_reproduced_consequent():
+    decided = np.array([1.0] * 5 + [0.0] * 4)
+    none = np.empty((0, 9), dtype=bool)
+    assert majority(np.array([0.5]), 31)[0] == 0.5 == majority(np.array([0.5]), 30)[0]
+    assert majority(np.array([0.6]), 31)[0] > 0.85
+    assert new_reproduced(decided, 31, none) == 1.0
+    assert new_reproduced(decided, 31, np.array([decided > 0.5])) == 0.0
+    split = decided.copy()
+    split[5] = 0.5                  # a toss on one verdict: two batches agree half the time
+    assert abs(new_reproduced(split, 31, none) - 0.5) < 1e-9
+    assert abs(new_reproduced(split, 31, np.array([decided > 0.5])) - 0.25) < 1e-9
+
+
+def test_a_probe_reads_its_few_pours_as_evidence_not_certainty():
+    new = np.array([[0.9] * 5 + [0.1] * 4] * 8)          # eight pours, all alike
+    known_c = [tuple([True] * 9)]
+    assert probe_score(new, 31, known_c) > 0.99
+    assert probe_score(new, 31, [tuple(bool(v) for v in new[0] > 0.5)]) < 0.01
+    split = new.copy()
+    split[:4, 5] = 0.9                                   # four of eight hold: a toss
+    assert abs(probe_score(split, 31, known_c) - 0.5) < 0.01
+    failed = np.vstack([split, np.full((3, 9), np.nan)])  # failed pours say nothing
+    assert probe_score(failed, 31, known_c) == probe_score(split, 31, known_c)
+    one = new[:1]                   # one pour is weak evidence: (1 + 1) / (1 + 2) for each
+    assert 0.5 < probe_score(one, 31, known_c) < probe_score(new, 31, known_c)
+
+
+def test_probes_of_the_synthetic_oracle_pass_the_side_pour_and_not_a_0_again():
+    a0 = consequent(A0)
+    assert probe_score(synthetic(sample(SIDE, 8, 4)), 31, [a0]) >= PASS
+    assert probe_score(synthetic(sample(sorted(A0 + [IGNORED]), 8, 4)), 31, [a0]) < 0.1
