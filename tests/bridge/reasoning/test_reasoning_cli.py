@@ -151,7 +151,8 @@ def test_the_shipped_theory_answers_without_a_theory_option(cli) -> None:
     assert shipped.source == str(DEFAULT_THEORY)
     s = settings(shipped)
     assert s["oracle"] == ["pybullet"] and s["curiosity"] == ["discover"]
-    assert s["explored"] == [25] and s["simulations"] == [775]
+    # the pours of 25 batches of 31 at most, probes included
+    assert 1 <= s["explored"][0] <= 25 and 31 * s["explored"][0] <= s["simulations"][0] <= 775
     r = cli("ask", "--props", "light_liquid", "--json")
     assert r.code == 0, r.err
     import json
