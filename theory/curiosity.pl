@@ -346,8 +346,8 @@ loop(S0, Settings, S, Stop) :-
 
 %   spent(+State, +Settings, -Pours): the pours spent so far: a batch per
 %   iteration and a probe per candidate set aside after its probe.
-spent(st(I, _, _, Probed), Settings, Pours) :-
-    length(Probed, K),
+spent(st(I, _, _, SetAside), Settings, Pours) :-
+    length(SetAside, K),
     probe_size(Settings, M),
     Pours is I * Settings.samples + K * M.
 
@@ -370,12 +370,12 @@ probe_size(Settings, M) :-
 %   it, fit the planes of every explored antecedent, and modify the one with
 %   the steepest plane (for the discovering curiosity: the steepest
 %   significant plane).
-step(S0, Settings, st(I1, Explored1, ANew, Probed)) :-
-    S0 = st(I, Explored, _, Probed0),
+step(S0, Settings, st(I1, Explored1, ANew, SetAside)) :-
+    S0 = st(I, Explored, _, SetAside0),
     I1 is I + 1,
     choose(S0, Settings, cand(Props, Parent, Via), Attempt, Rest, Probes),
-    findall(aside(I1, K, P), member(probe(P, _, false, K), Probes), SetAside),
-    append(Probed0, SetAside, Probed),
+    findall(aside(I1, K, P), member(probe(P, _, false, K), Probes), NewAside),
+    append(SetAside0, NewAside, SetAside),
     (   Via = more(Id, _)
     ->  Explored1 = Explored
     ;   length(Explored, N0),
@@ -388,14 +388,14 @@ step(S0, Settings, st(I1, Explored1, ANew, Probed)) :-
     maplist(entry, Explored1, Entries),
     call_bridge(exploration_best_plane, _{antecedents:Entries}, Best),
     (   Settings.curiosity == discover
-    ->  append(Rest, Probed, Away),
+    ->  append(Rest, SetAside, Away),
         discover_queue(Best, Explored1, Id, Props, Away, Rest, Settings, I1, Added, Queue),
         more(Added, Settings, Id, Props, Parent, Via, More),
         append(More, Queue, ANew)
     ;   paper_added(Best, Settings, Explored1, Rest, Added),
         append(Rest, Added, ANew)
     ),
-    S1 = st(I1, Explored1, ANew, Probed),
+    S1 = st(I1, Explored1, ANew, SetAside),
     format(string(State), "~k", [S1]),
     length(ANew, Left),
     findall(P, member(cand(P, _, _), Added), AddedProps),

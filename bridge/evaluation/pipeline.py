@@ -38,7 +38,7 @@ from pantarhei.bridge.evaluation.map_elites import behaviours_seen
 from pantarhei.bridge.evaluation.measures import (accuracy, distinct_behaviours, tree_predictions,
                                                   verdicts)
 from pantarhei.bridge.evaluation.rule_building import consequents, predict, theory_of
-from pantarhei.bridge.exploration.simulation import iteration_seed
+from pantarhei.bridge.exploration.simulation import batch_seed, iteration_seed
 from pantarhei.bridge.exploration.weights import log_densities, weights
 from pantarhei.bridge.reasoning import answers
 from pantarhei.bridge.theories import loading
@@ -313,8 +313,6 @@ def exploration_draws(learned: Learned) -> tuple[np.ndarray, list[tuple[str, ...
     nothing was set aside). With the antecedent each pour was drawn from,
     the index of the explored antecedent it belongs to (-1 for a probe set
     aside) and where each explored antecedent's last batch ends."""
-    from pantarhei.bridge.exploration.simulation import batch_seed
-
     samples, seed = int(learned.setting("samples")), int(learned.setting("seed"))
     m = min(int(learned.setting("probe", 0)), samples)
     rows, drawn, of, ends = [], [], [], []

@@ -31,7 +31,7 @@ from __future__ import annotations
 import zlib
 from collections import Counter
 from dataclasses import dataclass
-from typing import Sequence
+from typing import Iterable, Sequence
 
 import numpy as np
 from scipy.stats import binom
@@ -125,7 +125,7 @@ def novelties(k: Known, candidates: Sequence[Sequence[str]]) -> list[dict]:
     P = np.vstack([sample(list(props), k.samples, seed)
                    for props, seed in zip(candidates, seeds)])
     p = predicted(k, P).reshape(len(candidates), k.samples, -1)
-    known_c = np.array(sorted(k.consequents), dtype=bool).reshape(-1, p.shape[2])
+    known_c = verdict_rows(k.consequents, p.shape[2])
     out = []
     for i in range(len(candidates)):
         q = p[i].mean(axis=0)                    # predicted share of pours that hold
@@ -138,6 +138,11 @@ def novelties(k: Known, candidates: Sequence[Sequence[str]]) -> list[dict]:
         out.append({"novelty": estimate * (1.0 - TIE) + tie, "new_consequent": new,
                     "unseen": unseen})
     return out
+
+
+def verdict_rows(consequents: Iterable[tuple[bool, ...]], width: int) -> np.ndarray:
+    """Consequents as a (k, width) boolean array, sorted (none: 0 rows)."""
+    return np.array(sorted(consequents), dtype=bool).reshape(-1, width)
 
 
 def majority(q: np.ndarray, n: int) -> np.ndarray:
@@ -168,5 +173,4 @@ def probe_score(S: np.ndarray, n: int, consequents: Sequence[tuple[bool, ...]]) 
     S = np.asarray(S, dtype=float)
     V = S[np.all(np.isfinite(S), axis=1)] > 0.5
     q = (V.sum(axis=0) + 1.0) / (len(V) + 2.0)
-    known_c = np.array(sorted(consequents), dtype=bool).reshape(-1, S.shape[1])
-    return new_reproduced(q, n, known_c)
+    return new_reproduced(q, n, verdict_rows(consequents, S.shape[1]))

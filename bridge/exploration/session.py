@@ -137,6 +137,12 @@ class Session:
         S = self.scores[self.valid]
         return [consequent(S, W[i], mode) for i in range(len(entries))]
 
+    def verdicts(self, entries: Sequence[dict]) -> list[tuple[bool, ...]]:
+        """The consequent of each explored antecedent as nine verdicts,
+        qualified as the run's settings say."""
+        mode = str(self.settings.get("qualify", "weighted"))
+        return [tuple(o["holds"] for o in c["outcomes"]) for c in self.consequents(entries, mode)]
+
 
 def _same_weights(w0: np.ndarray, w: np.ndarray) -> bool:
     """Whether weights w over the simulations so far are those cached (w0)
@@ -281,11 +287,8 @@ class Host:
         s.params = np.vstack([s.params, P[have:]])
         s.scores = np.vstack([s.scores, S[have:]])
         s.probed[(iteration, attempt)] = max(have, n)
-        if iteration in s.pending:
-            P0, S0 = s.pending[iteration]
-            s.pending[iteration] = (np.vstack([P0, P[have:]]), np.vstack([S0, S[have:]]))
-        else:
-            s.pending[iteration] = (P[have:], S[have:])
+        P0, S0 = s.pending.get(iteration, (P[:0], S[:0]))
+        s.pending[iteration] = (np.vstack([P0, P[have:]]), np.vstack([S0, S[have:]]))
         return P, S
 
     def simulate(self, request: dict) -> dict:
@@ -302,10 +305,7 @@ class Host:
         s = self.need_session()
         samples = int(s.settings["samples"])
         _, S = self.batch(request, min(int(s.settings["probe"]), samples))
-        mode = str(s.settings.get("qualify", "weighted"))
-        consequents = [tuple(o["holds"] for o in c["outcomes"])
-                       for c in s.consequents(request["antecedents"], mode)]
-        score = probe_score(S, samples, consequents)
+        score = probe_score(S, samples, s.verdicts(request["antecedents"]))
         return {"score": score, "pass": score >= PASS, "simulations": len(s.params)}
 
     def best_plane(self, request: dict) -> dict:
@@ -410,10 +410,8 @@ class Host:
         entries = request["antecedents"]
         key = (len(s.params), len(entries))
         if s.known is None or s.known[0] != key:
-            consequents = [tuple(o["holds"] for o in c["outcomes"])
-                           for c in s.consequents(entries, str(s.settings.get("qualify", "weighted")))]
             seed = int(s.settings["seed"])
-            s.known = (key, known(s.params, s.scores, consequents, int(s.settings["samples"]),
+            s.known = (key, known(s.params, s.scores, s.verdicts(entries), int(s.settings["samples"]),
                                   seed, shuffle_seed(seed, 0, len(s.params))))
         k = s.known[1]
         level = float(s.settings["novelty"])
