@@ -258,8 +258,9 @@ class Host:
             from tqdm import tqdm
 
             done = saved.iteration if saved else 0
-            self.session.bar = tqdm(total=int(request["max_rules"]), initial=done, unit="rule",
-                                desc="exploring", file=sys.stderr, dynamic_ncols=True)
+            total, unit, initial = _progress(self.session, done)
+            self.session.bar = tqdm(total=total, initial=initial, unit=unit,
+                                    desc="exploring", file=sys.stderr, dynamic_ncols=True)
             self.session.bar.set_postfix_str(_postfix(self.session, done))
         return {"state": saved.state if saved else "", "run": run,
                 "resumed": bool(saved), "iterations": saved.iteration if saved else 0}
@@ -446,7 +447,7 @@ class Host:
         s.elapsed.append(round(time.monotonic() - s.started, 3))
         append_trace(Path(str(s.settings["out"])), trace)
         if s.bar is not None:
-            s.bar.update(1)
+            s.bar.update(_progress(s, iteration)[2] - s.bar.n)
             s.bar.set_postfix_str(_postfix(s, iteration, int(request.get("a_new", 0))))
         return {}
 
@@ -483,8 +484,21 @@ class Host:
                 s.store.close()
         return written
 
+
+def _progress(s: Session, iteration: int) -> tuple[int, str, int]:
+    """The progress bar's total, unit and position after `iteration`
+    iterations: for the discovering curiosity, whose budget is in pours,
+    the pours of max_rules batches and the pours spent (probes included);
+    for the paper's, max_rules explored antecedents."""
+    rules = int(s.settings["max_rules"])
+    if s.settings.get("curiosity") == "discover":
+        return rules * int(s.settings["samples"]), "pour", len(s.params)
+    return rules, "rule", iteration
+
+
 def _postfix(s: Session, explored: int, a_new: int | None = None) -> str:
-    text = f"{len(s.params)} simulations, {explored} rules"
+    text = (f"{explored} batches" if s.settings.get("curiosity") == "discover"
+            else f"{len(s.params)} simulations, {explored} rules")
     if a_new is not None:
         text += f", {a_new} in A_new"
     return text

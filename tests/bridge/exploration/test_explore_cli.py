@@ -45,6 +45,23 @@ def test_explore_command_reports_what_it_wrote(tmp_path):
     assert "setting(samples, 12)." in out.read_text()
 
 
+def test_progress_counts_the_budget_it_spends(tmp_path):
+    """The discovering curiosity's budget is in pours (probes included), so
+    its progress bar counts pours against max_rules batches of them; the
+    paper's counts explored antecedents."""
+    base = ["--oracle", "synthetic", "--executor", "inline", "--max-rules", "3", "--samples", "12",
+            "--store", str(tmp_path / "s.sqlite")]
+    r = run_cli("explore", *base, "--out", str(tmp_path / "d.pl"))
+    assert r.code == 0, r.err
+    last = r.err.replace("\r", "\n").strip().splitlines()[-1]
+    spent = int(r.out.split(" simulations")[0].split()[-1])
+    assert f"{spent}/36" in last and "pour" in last, last
+    r = run_cli("explore", *base, "--curiosity", "paper", "--out", str(tmp_path / "p.pl"))
+    assert r.code == 0, r.err
+    last = r.err.replace("\r", "\n").strip().splitlines()[-1]
+    assert "3/3" in last and "rule" in last, last
+
+
 def test_prolog_command_drives_exploration(tmp_path):
     out = tmp_path / "p.pl"
     goal = (f"explore([curiosity(paper), oracle(synthetic), max_rules(2), executor(inline), progress(false), "
