@@ -447,8 +447,8 @@ class Host:
         s.elapsed.append(round(time.monotonic() - s.started, 3))
         append_trace(Path(str(s.settings["out"])), trace)
         if s.bar is not None:
+            s.bar.set_postfix_str(_postfix(s, iteration, int(request.get("a_new", 0))), refresh=False)
             s.bar.update(_progress(s, iteration)[2] - s.bar.n)
-            s.bar.set_postfix_str(_postfix(s, iteration, int(request.get("a_new", 0))))
         return {}
 
     def end(self, request: dict) -> dict:
@@ -497,7 +497,8 @@ def _progress(s: Session, iteration: int) -> tuple[int, str, int]:
 
 
 def _postfix(s: Session, explored: int, a_new: int | None = None) -> str:
-    text = (f"{explored} batches" if s.settings.get("curiosity") == "discover"
+    text = (f"{explored} batch{'' if explored == 1 else 'es'}"
+            if s.settings.get("curiosity") == "discover"
             else f"{len(s.params)} simulations, {explored} rules")
     if a_new is not None:
         text += f", {a_new} in A_new"
