@@ -34,7 +34,9 @@ second run simulates nothing):
     PANTARHEI_BENCH_METHODS=discover,random python -m benchmarks discovery
 
 PANTARHEI_BENCH_JUMPS sets the discovering curiosity's random candidates
-per step (`--jumps`; default the project's).
+per step (`--jumps`; default the project's), and PANTARHEI_BENCH_RULES the
+budget in batches of 31 (by default the project's 25, the paper's scale;
+every method gets as many pours).
 """
 from __future__ import annotations
 
@@ -48,7 +50,7 @@ from typing import Callable
 
 import numpy as np
 
-RULES, SAMPLES = 25, 31
+SAMPLES = 31
 #: what a line per method and seed shows
 SHOWN = ("seen", "theory", "confirmed", "reproduced", "explored", "pours", "other", "general",
          "covered", "left")
@@ -57,6 +59,17 @@ CONFIRM_SEED = 104729
 METHODS = {"discover": "curiosity (discover)", "paper": "curiosity (paper)",
            "random": "random valid antecedents", "prior": "random pours (prior)",
            "map_elites": "MAP-Elites (pyribs)"}
+
+
+def budget() -> int:
+    """The budget in batches of SAMPLES pours (PANTARHEI_BENCH_RULES; by
+    default the project's max_rules, the paper's 25)."""
+    from pantarhei.theory import defaults
+
+    rules = int(os.environ.get("PANTARHEI_BENCH_RULES", defaults()["max_rules"]))
+    if rules < 1:
+        raise SystemExit("PANTARHEI_BENCH_RULES must be at least 1")
+    return rules
 
 
 def settings() -> tuple[str, tuple[int, ...], tuple[str, ...], Path]:
@@ -110,7 +123,7 @@ def curiosity(mode: str, seed: int, tmp: Path, oracle: str, store: Path) -> dict
     out = tmp / f"{mode}-{seed}.pl"
     inline = oracle == "synthetic"
     jumps = int(os.environ.get("PANTARHEI_BENCH_JUMPS", Options().jumps))
-    r = explore(Options(curiosity=mode, oracle=oracle, max_rules=RULES, seed=seed, out=out,
+    r = explore(Options(curiosity=mode, oracle=oracle, max_rules=budget(), seed=seed, out=out,
                         jumps=jumps, store=tmp / f"{mode}-{seed}.sqlite" if inline else store,
                         progress=False, executor="inline" if inline else "local",
                         general=False))
@@ -137,7 +150,7 @@ def random_antecedents(seed: int, simulate: Callable) -> dict:
     from pantarhei.bridge.evaluation.measures import distinct_behaviours
     from pantarhei.bridge.evaluation.rule_building import consequents
 
-    ants, P = random_exploration(seed, RULES, SAMPLES)     # as the evaluation draws its baseline
+    ants, P = random_exploration(seed, budget(), SAMPLES)     # as the evaluation draws its baseline
     S = simulate(P)
     C = consequents(ants, P, S)
     heads = [tuple(bool(v) for v in c) for c in C]
@@ -193,7 +206,7 @@ def prior_pours(seed: int, simulate: Callable) -> dict:
     from pantarhei.oracle.generative import sample
 
     # as the evaluation draws its baseline
-    P = sample([], RULES * SAMPLES, iteration_seed(seed + 7919, 0))
+    P = sample([], budget() * SAMPLES, iteration_seed(seed + 7919, 0))
     S = simulate(P)
     return {"seen": behaviours_seen(S), "P": P, "S": S}
 
@@ -201,7 +214,7 @@ def prior_pours(seed: int, simulate: Callable) -> dict:
 def map_elites(seed: int, simulate: Callable) -> dict:
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen, map_elites as search
 
-    qd = search(simulate, RULES * SAMPLES, seed, batch=SAMPLES)
+    qd = search(simulate, budget() * SAMPLES, seed, batch=SAMPLES)
     return {"seen": behaviours_seen(qd.S), "P": qd.P, "S": qd.S}
 
 
@@ -253,7 +266,7 @@ def main() -> None:
                 rows[METHODS[m]].append(r)
                 print(f"  {oracle}, seed {seed}, {METHODS[m]}: "
                       + ", ".join(f"{k} {v}" for k, v in r.items() if k in SHOWN), flush=True)
-    print(f"{oracle} oracle, {RULES * SAMPLES} pours, seeds {','.join(map(str, seeds))}: "
+    print(f"{oracle} oracle, {budget() * SAMPLES} pours, seeds {','.join(map(str, seeds))}: "
           "median [min-max]")
     print(f"{'method':<26} {'behaviours seen':>16} {'in the theory':>14} {'confirmed':>12} "
           f"{'explored':>12} {'general rules: accuracy %':>26} {'coverage %':>18}")
@@ -274,7 +287,7 @@ def main() -> None:
             print(f"{METHODS[m]}, seed {seed}: new antecedents per iteration {r['added']}; "
                   f"explored antecedents with a new consequent: {sum(fresh[:k])} of the first {k}, "
                   f"{sum(fresh[k:])} of the other {len(fresh) - k}; "
-                  + (f"left to discover: {r['left']} of the {RULES} random valid antecedents have "
+                  + (f"left to discover: {r['left']} of the {budget()} random valid antecedents have "
                      "a consequent its theory lacks; " if "left" in r else "")
                   + f"everything but simulation {100 * r['other']:.1f}% of the wall time{free}")
 
