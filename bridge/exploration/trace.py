@@ -29,22 +29,53 @@ def write_trace(path: Path, trace: Sequence[dict]) -> None:
     write_text(path, "".join(json.dumps(entry, sort_keys=True) + "\n" for entry in trace))
 
 
+def probes_passed(trace: Sequence[dict], level: float) -> list[float | None]:
+    """After each iteration, the share of the candidates probed so far whose
+    probe passed (scored at least `level`); None before the first probe."""
+    out: list[float | None] = []
+    passed = probed = 0
+    for t in trace:
+        probes = t.get("probes") or []
+        probed += len(probes)
+        passed += sum(p["score"] >= level for p in probes)
+        out.append(passed / probed if probed else None)
+    return out
+
+
 def plot_trace(path: Path, trace: Sequence[dict], settings: dict | None = None) -> None:
-    """|A_new| after each iteration, and the antecedents each added (PNG)."""
+    """|A_new| after each iteration and the antecedents each added (PNG);
+    for a run with probes also the share of its probes that passed so far,
+    the evidence that something new is still to be found."""
+    from pantarhei.bridge.exploration.novelty import PASS
+
     plt = pyplot()
     it = [t["iteration"] for t in trace]
     added = [len(t["added"]) for t in trace]
     size = [t["a_new"] for t in trace]
     fig, ax = plt.subplots(figsize=(7, 3.6), dpi=120)
-    ax.bar(it, added, color="#8fb3d9", label="new antecedents")
-    ax.plot(it, size, color="#c0392b", marker="o", markersize=3, label="|A_new|")
+    bars = ax.bar(it, added, color="#8fb3d9", label="new antecedents")
+    (line,) = ax.plot(it, size, color="#c0392b", marker="o", markersize=3, label="|A_new|")
+    handles = [bars, line]
+    ax.xaxis.get_major_locator().set_params(integer=True)
     ax.set_xlabel("iteration (explored antecedent)")
     ax.set_ylabel("antecedents")
+    share = probes_passed(trace, PASS)
+    if any(v is not None for v in share):
+        right = ax.twinx()
+        (probes,) = right.plot(it, [float("nan") if v is None else v for v in share],
+                               color="#27ae60", linestyle="--",
+                               label="probes passed so far (share, right)")
+        # room above the lines for the legend, on both axes alike
+        ax.set_ylim(0, 1.45 * max(max(size, default=1), max(added, default=1), 1))
+        right.set_ylim(0, 1.45)
+        right.set_yticks([0, 0.25, 0.5, 0.75, 1])
+        right.set_ylabel("share of probes")
+        handles.append(probes)
     title = "Curiosity-driven exploration"
     if settings:
         title += f" ({settings.get('oracle')} oracle, seed {settings.get('seed')})"
     ax.set_title(title)
-    ax.legend(loc="upper right")
+    ax.legend(handles=handles, loc="upper right", fontsize="small")
     ax.grid(axis="y", alpha=0.3)
     fig.tight_layout()
     save_figure(fig, path)

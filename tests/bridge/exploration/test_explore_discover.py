@@ -15,6 +15,7 @@ from pantarhei.bridge.exploration.loop import Options
 from pantarhei.bridge.exploration.novelty import PASS
 from pantarhei.bridge.exploration.session import install
 from pantarhei.bridge.exploration.significance import permutation_test
+from pantarhei.bridge.exploration.trace import probes_passed
 from pantarhei.bridge.reasoning.scenes import violations
 from pantarhei.oracle.generative import normalise, sample
 from pantarhei.oracle.synthetic import DEPENDS, scores
@@ -193,9 +194,16 @@ def test_probes_set_candidates_aside_and_keep_to_the_pour_budget(tmp_path):
     assert r["simulations"] == len(lines) * 31 + len(aside) * 8 <= 8 * 31
     P, _ = r["pours"]
     assert len(np.unique(P, axis=0)) == len(P)
+    # the plot's evidence: after each step, the share of the probes so far that passed
+    share = probes_passed(lines, PASS)
+    assert share[0] is None and lines[0]["probes"] == []
+    passed = [p["score"] >= PASS for t in lines for p in t["probes"]]
+    assert share[-1] == sum(passed) / len(passed) and 0 < share[-1] < 1
+    assert Path(r["plot"]).stat().st_size > 0
     # without probes: none, and the whole budget in batches
     r0 = run(tmp_path, name="q", seed=1, max_rules=8, probe=0)
     assert all(t["probes"] == [] for t in trace(r0)) and r0["simulations"] == 8 * 31
+    assert set(probes_passed(trace(r0), PASS)) == {None}
 
 
 def test_when_nothing_is_novel_enough_a0_gets_more_pours_then_the_exploration_stops(tmp_path):
