@@ -61,20 +61,16 @@ METHODS = {"discover": "curiosity (discover)", "paper": "curiosity (paper)",
            "map_elites": "MAP-Elites (pyribs)"}
 
 
-def budget() -> int:
-    """The budget in batches of SAMPLES pours (PANTARHEI_BENCH_RULES; by
-    default the project's max_rules, the paper's 25)."""
+def settings() -> tuple[str, tuple[int, ...], tuple[str, ...], int, Path]:
+    """The oracle, seeds and methods this run measures, its budget in
+    batches of SAMPLES pours (PANTARHEI_BENCH_RULES; by default the
+    project's max_rules), and the store."""
     from pantarhei.theory import defaults
 
-    rules = int(os.environ.get("PANTARHEI_BENCH_RULES", defaults()["max_rules"]))
-    if rules < 1:
-        raise SystemExit("PANTARHEI_BENCH_RULES must be at least 1")
-    return rules
-
-
-def settings() -> tuple[str, tuple[int, ...], tuple[str, ...], Path]:
-    """The oracle, seeds and methods this run measures, and the store."""
     oracle = os.environ.get("PANTARHEI_BENCH_ORACLE", "synthetic")
+    rules = os.environ.get("PANTARHEI_BENCH_RULES", str(defaults()["max_rules"]))
+    if not rules.isdigit() or int(rules) < 1:
+        raise SystemExit(f"PANTARHEI_BENCH_RULES must be a whole number of at least 1, not {rules!r}")
     seeds = tuple(int(s) for s in os.environ.get("PANTARHEI_BENCH_SEEDS", "1,2,3,4,5").split(","))
     methods = tuple(os.environ.get("PANTARHEI_BENCH_METHODS", ",".join(METHODS)).split(","))
     unknown = set(methods) - set(METHODS)
@@ -82,7 +78,7 @@ def settings() -> tuple[str, tuple[int, ...], tuple[str, ...], Path]:
         raise SystemExit(f"unknown method {sorted(unknown)[0]} (choose from {', '.join(METHODS)})")
     from pantarhei.oracle.store import DEFAULT_STORE
 
-    return oracle, seeds, methods, Path(DEFAULT_STORE).absolute()
+    return oracle, seeds, methods, int(rules), Path(DEFAULT_STORE).absolute()
 
 
 def simulator(oracle: str, store: Path) -> Callable[[np.ndarray], np.ndarray]:
@@ -116,14 +112,14 @@ def theory_consequents(path: Path) -> dict[str, tuple[bool, ...]]:
     return {a: tuple(h[e] for e in names) for a, h in heads.items()}
 
 
-def curiosity(mode: str, seed: int, tmp: Path, oracle: str, store: Path) -> dict:
+def curiosity(mode: str, seed: int, rules: int, tmp: Path, oracle: str, store: Path) -> dict:
     from pantarhei.bridge.exploration.loop import Options, explore
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen
 
     out = tmp / f"{mode}-{seed}.pl"
     inline = oracle == "synthetic"
     jumps = int(os.environ.get("PANTARHEI_BENCH_JUMPS", Options().jumps))
-    r = explore(Options(curiosity=mode, oracle=oracle, max_rules=budget(), seed=seed, out=out,
+    r = explore(Options(curiosity=mode, oracle=oracle, max_rules=rules, seed=seed, out=out,
                         jumps=jumps, store=tmp / f"{mode}-{seed}.sqlite" if inline else store,
                         progress=False, executor="inline" if inline else "local",
                         general=False))
@@ -144,13 +140,13 @@ def curiosity(mode: str, seed: int, tmp: Path, oracle: str, store: Path) -> dict
             "antecedents": [tuple(t["antecedent"]) for t in trace], "P": P, "S": S}
 
 
-def random_antecedents(seed: int, simulate: Callable) -> dict:
+def random_antecedents(seed: int, rules: int, simulate: Callable) -> dict:
     from pantarhei.bridge.evaluation.heldout import random_exploration
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen
     from pantarhei.bridge.evaluation.measures import distinct_behaviours
     from pantarhei.bridge.evaluation.rule_building import consequents
 
-    ants, P = random_exploration(seed, budget(), SAMPLES)     # as the evaluation draws its baseline
+    ants, P = random_exploration(seed, rules, SAMPLES)     # as the evaluation draws its baseline
     S = simulate(P)
     C = consequents(ants, P, S)
     heads = [tuple(bool(v) for v in c) for c in C]
@@ -200,21 +196,21 @@ def left_new(rows: dict[str, dict]) -> None:
             rows[m]["left"] = sum(c not in have for c in rows["random"]["consequents"])
 
 
-def prior_pours(seed: int, simulate: Callable) -> dict:
+def prior_pours(seed: int, rules: int, simulate: Callable) -> dict:
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen
     from pantarhei.bridge.exploration.simulation import iteration_seed
     from pantarhei.oracle.generative import sample
 
     # as the evaluation draws its baseline
-    P = sample([], budget() * SAMPLES, iteration_seed(seed + 7919, 0))
+    P = sample([], rules * SAMPLES, iteration_seed(seed + 7919, 0))
     S = simulate(P)
     return {"seen": behaviours_seen(S), "P": P, "S": S}
 
 
-def map_elites(seed: int, simulate: Callable) -> dict:
+def map_elites(seed: int, rules: int, simulate: Callable) -> dict:
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen, map_elites as search
 
-    qd = search(simulate, budget() * SAMPLES, seed, batch=SAMPLES)
+    qd = search(simulate, rules * SAMPLES, seed, batch=SAMPLES)
     return {"seen": behaviours_seen(qd.S), "P": qd.P, "S": qd.S}
 
 
@@ -240,7 +236,7 @@ def spread(values: list[float]) -> str:
 
 
 def main() -> None:
-    oracle, seeds, methods, store = settings()
+    oracle, seeds, methods, rules, store = settings()
     simulate = simulator(oracle, store)
     rows: dict[str, list[dict]] = defaultdict(list)
     with tempfile.TemporaryDirectory() as d:
@@ -249,13 +245,13 @@ def main() -> None:
             of_seed: dict[str, dict] = {}
             for m in methods:
                 if m in ("discover", "paper"):
-                    of_seed[m] = curiosity(m, seed, tmp, oracle, store)
+                    of_seed[m] = curiosity(m, seed, rules, tmp, oracle, store)
                 elif m == "random":
-                    of_seed[m] = random_antecedents(seed, simulate)
+                    of_seed[m] = random_antecedents(seed, rules, simulate)
                 elif m == "prior":
-                    of_seed[m] = prior_pours(seed, simulate)
+                    of_seed[m] = prior_pours(seed, rules, simulate)
                 else:
-                    of_seed[m] = map_elites(seed, simulate)
+                    of_seed[m] = map_elites(seed, rules, simulate)
             # the held-out scenes avoid what curiosity and random exploration explored
             known = {a for m in ("discover", "random")
                      for a in of_seed.get(m, {}).get("antecedents", [])}
@@ -266,7 +262,7 @@ def main() -> None:
                 rows[METHODS[m]].append(r)
                 print(f"  {oracle}, seed {seed}, {METHODS[m]}: "
                       + ", ".join(f"{k} {v}" for k, v in r.items() if k in SHOWN), flush=True)
-    print(f"{oracle} oracle, {budget() * SAMPLES} pours, seeds {','.join(map(str, seeds))}: "
+    print(f"{oracle} oracle, {rules * SAMPLES} pours, seeds {','.join(map(str, seeds))}: "
           "median [min-max]")
     print(f"{'method':<26} {'behaviours seen':>16} {'in the theory':>14} {'confirmed':>12} "
           f"{'explored':>12} {'general rules: accuracy %':>26} {'coverage %':>18}")
@@ -287,7 +283,7 @@ def main() -> None:
             print(f"{METHODS[m]}, seed {seed}: new antecedents per iteration {r['added']}; "
                   f"explored antecedents with a new consequent: {sum(fresh[:k])} of the first {k}, "
                   f"{sum(fresh[k:])} of the other {len(fresh) - k}; "
-                  + (f"left to discover: {r['left']} of the {budget()} random valid antecedents have "
+                  + (f"left to discover: {r['left']} of the {rules} random valid antecedents have "
                      "a consequent its theory lacks; " if "left" in r else "")
                   + f"everything but simulation {100 * r['other']:.1f}% of the wall time{free}")
 

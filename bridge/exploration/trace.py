@@ -66,7 +66,7 @@ def plot_trace(path: Path, trace: Sequence[dict], settings: dict | None = None) 
                                color="#27ae60", linestyle="--",
                                label="probes passed so far (share, right)")
         # room above the lines for the legend, on both axes alike
-        ax.set_ylim(0, 1.45 * max(max(size, default=1), max(added, default=1), 1))
+        ax.set_ylim(0, 1.45 * max(size + added + [1]))
         right.set_ylim(0, 1.45)
         right.set_yticks([0, 0.25, 0.5, 0.75, 1])
         right.set_ylabel("share of probes")
