@@ -65,7 +65,9 @@ Two curiosities share the loop (option curiosity/1):
     Each candidate and each of A_new gets its novelty, the chance that it
     shows a behaviour not yet got as a forest of every pour so far predicts
     it (bridge/exploration/novelty.py); A_new keeps the most novel of those
-    that reach the novelty level. When nothing reaches it, the antecedent
+    that reach the novelty level once scaled by the share of the probes so
+    far that passed (below), so it dries up as the probes stop finding
+    anything new. When nothing reaches it, the antecedent
     just explored gets more pours (resample/1), which may change the forest's
     mind; when that is spent too and A_new is empty, the exploration stops.
     The forest's guess is checked before a batch is spent on it: the first
@@ -131,7 +133,8 @@ load_defaults :-
 %       undecided and that queued nothing new (discover); max_rules then
 %       counts batches
 %     - novelty(+X)*: the estimated chance of a new behaviour, from 0 to 1,
-%       a candidate needs to be queued (discover; default novelty_permille)
+%       a candidate needs to be queued, scaled by the share of the probes
+%       so far that passed (discover; default novelty_permille)
 %     - probe(+N)*: pours of a candidate's probe, 0 for none (discover)
 %     - probe_attempts(+N)*: candidates probed at most in a step (discover)
 %     - seed(+S)*: seed of every random choice

@@ -12,7 +12,8 @@
 % level of the permutation test with its number of shuffles; for paper,
 % the slope below which nothing new is explored), how many more batches an
 % antecedent gets when nothing new is queued after it, the novelty a
-% candidate needs to be queued, how many A_new keeps, how many random valid
+% candidate needs to be queued (scaled by the share of the probes so far
+% that passed), how many A_new keeps, how many random valid
 % antecedents each step draws as candidates (jumps), the pours of a probe
 % (discover: the first pours of a candidate's batch, simulated before the
 % rest; a candidate whose probe shows no new, reproducible consequent is

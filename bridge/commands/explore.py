@@ -37,7 +37,8 @@ def register(sub: argparse._SubParsersAction) -> None:
                         f"(default {d['resample']}); --max-rules then counts batches")
     p.add_argument("--novelty", type=float, default=d["novelty"],
                    help="discover: the predicted novelty, from 0 to 1, a candidate needs to be "
-                        f"queued (default {d['novelty']})")
+                        "queued, scaled by the share of the probes so far that passed "
+                        f"(default {d['novelty']})")
     p.add_argument("--queue", type=int, default=d["queue"],
                    help=f"discover: A_new keeps this many most novel candidates (default {d['queue']})")
     p.add_argument("--jumps", type=int, default=d["jumps"],

@@ -34,7 +34,8 @@ class Options:
     permutations: int = _default("permutations")
     #: discover: more batches of an antecedent whose planes are undecided.
     resample: int = _default("resample")
-    #: discover: the novelty a candidate needs to be queued (bridge/exploration/novelty.py).
+    #: discover: the novelty a candidate needs to be queued, scaled by the
+    #: share of the probes so far that passed (bridge/exploration/novelty.py).
     novelty: float = _default("novelty")
     #: discover: how many of the most novel candidates A_new keeps.
     queue: int = _default("queue")

@@ -24,7 +24,12 @@ The forest's guess is checked before a batch is spent on it: a probe, the
 first pours of the candidate's batch, is simulated, and `probe_score` says
 how likely a batch of the candidate is to give a consequent no explored
 antecedent has and that another batch would give again (the candidate is
-set aside below PASS; theory/curiosity.pl, choose/6).
+set aside below PASS; theory/curiosity.pl, choose/6). The probes are also
+the record of how far the forest's estimates are borne out: a candidate is
+queued when its estimate, scaled by the share of the probes so far that
+passed (`discount`), reaches the novelty level. The ranking is the
+estimate's; the discount only shortens A_new, which so dries up as the
+probes stop finding anything new.
 """
 from __future__ import annotations
 
@@ -138,6 +143,13 @@ def novelties(k: Known, candidates: Sequence[Sequence[str]]) -> list[dict]:
         out.append({"novelty": estimate * (1.0 - TIE) + tie, "new_consequent": new,
                     "unseen": unseen})
     return out
+
+
+def discount(passed: int, probed: int) -> float:
+    """The share of the probes so far that passed, counting one pass before
+    the first probe: 1 until a probe fails, then falling as the probes stop
+    finding new, reproducible consequents."""
+    return (1.0 + passed) / (1.0 + probed)
 
 
 def verdict_rows(consequents: Iterable[tuple[bool, ...]], width: int) -> np.ndarray:

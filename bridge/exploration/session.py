@@ -41,7 +41,7 @@ import numpy as np
 
 from pantarhei.bridge.engines.swipl import Engine, engine as prolog_engine
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.exploration.novelty import PASS, Known, known, novelties, probe_score
+from pantarhei.bridge.exploration.novelty import PASS, Known, discount, known, novelties, probe_score
 from pantarhei.bridge.exploration.planes import Planes, best_abs_slope, plane_fit
 from pantarhei.bridge.exploration.qualify import QUALIFY, consequent
 from pantarhei.bridge.exploration.significance import Tested, permutation_test, shuffle_seed
@@ -56,7 +56,7 @@ from pantarhei.oracle.store import DEFAULT_STORE
 from pantarhei.theory.lexicon import load_vocabulary
 
 #: Bumped when the course of an exploration may change for the same settings.
-ALGORITHM_VERSION = "1"
+ALGORITHM_VERSION = "2"
 
 
 @dataclass
@@ -82,6 +82,8 @@ class Session:
     elapsed: list[float] = field(default_factory=list)
     #: Pours already in the pool of each probed (iteration, attempt).
     probed: dict[tuple[int, int], int] = field(default_factory=dict)
+    #: Whether the probe of each (iteration, attempt) not yet in the trace passed.
+    probes_now: dict[tuple[int, int], bool] = field(default_factory=dict)
 
     @property
     def valid(self) -> np.ndarray:
@@ -307,7 +309,16 @@ class Host:
         samples = int(s.settings["samples"])
         _, S = self.batch(request, min(int(s.settings["probe"]), samples))
         score = probe_score(S, samples, s.verdicts(request["antecedents"]))
+        s.probes_now[(int(request["iteration"]), int(request["attempt"]))] = score >= PASS
         return {"score": score, "pass": score >= PASS, "simulations": len(s.params)}
+
+    def probe_record(self) -> tuple[int, int]:
+        """How many probes passed, and how many there were, so far (those of
+        the trace and of the iteration under way)."""
+        s = self.need_session()
+        probes = [p["score"] >= PASS for t in s.trace for p in t.get("probes") or []]
+        probes += list(s.probes_now.values())
+        return sum(probes), len(probes)
 
     def best_plane(self, request: dict) -> dict:
         s = self.need_session()
@@ -406,7 +417,8 @@ class Host:
     def predict(self, request: dict) -> dict:
         """The novelty of each candidate antecedent (bridge/exploration/novelty.py)
         given every pour so far and the consequents of the explored
-        antecedents, and whether it reaches the level to be queued."""
+        antecedents, and whether it reaches the level to be queued once
+        scaled by the probes' record (novelty.discount)."""
         s = self.need_session()
         entries = request["antecedents"]
         key = (len(s.params), len(entries))
@@ -416,9 +428,10 @@ class Host:
                                   seed, shuffle_seed(seed, 0, len(s.params))))
         k = s.known[1]
         level = float(s.settings["novelty"])
+        scale = discount(*self.probe_record())
         found = novelties(k, [[str(p) for p in props] for props in request["candidates"]])
         return {"novelty": [f["novelty"] for f in found],
-                "queued": [f["novelty"] >= level for f in found]}
+                "queued": [f["novelty"] * scale >= level for f in found]}
 
     def qualify(self, request: dict) -> dict:
         s = self.need_session()
@@ -442,6 +455,7 @@ class Host:
         iteration = int(request["iteration"])
         P, S = s.pending.pop(iteration)
         trace = dict(request["trace"])
+        s.probes_now = {k: v for k, v in s.probes_now.items() if k[0] != iteration}
         s.store.save(s.run, iteration, P, S, str(request["state"]), trace)
         s.trace.append(trace)
         s.elapsed.append(round(time.monotonic() - s.started, 3))

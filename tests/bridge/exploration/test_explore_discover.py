@@ -206,6 +206,27 @@ def test_probes_set_candidates_aside_and_keep_to_the_pour_budget(tmp_path):
     assert set(probes_passed(trace(r0), PASS)) == {None}
 
 
+def test_a_new_dries_up_as_the_probes_stop_passing(tmp_path):
+    # a candidate is queued when its novelty (below 1) times the share of
+    # the probes so far that passed, (1 + passed) / (1 + probed), reaches the
+    # level: once that share is at most the level nothing new is queued, A_new
+    # holds at most the last antecedent's next batch, and the run stops
+    level = 0.5
+    r = run(tmp_path, name="d", seed=1, max_rules=25, novelty=level)
+    lines = trace(r)
+    passed = probed = 0
+    dry = []
+    for t in lines:
+        passed += sum(p["score"] >= PASS for p in t["probes"])
+        probed += len(t["probes"])
+        if (1 + passed) / (1 + probed) <= level:
+            dry.append(t)
+            assert t["added"] == [] and t["a_new"] <= 1
+    assert dry and r["stopped"] == "a_new_empty"
+    assert any(t["added"] for t in lines)          # while the probes passed, A_new grew
+    assert r["simulations"] < 25 * 31
+
+
 def test_when_nothing_is_novel_enough_a0_gets_more_pours_then_the_exploration_stops(tmp_path):
     # a novelty level no candidate reaches: a_0 gets its two more batches, then A_new is empty
     r = run(tmp_path, novelty=1.0)

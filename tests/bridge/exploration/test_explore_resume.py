@@ -10,6 +10,8 @@ import sys
 import time
 from pathlib import Path
 
+import pytest
+
 from tests.conftest import run_cli
 
 ARGS = ["explore", "--oracle", "synthetic", "--executor", "inline", "--max-rules", "10",
@@ -61,10 +63,14 @@ def test_killed_exploration_resumes_to_the_same_theory(tmp_path):
     assert trace == (tmp_path / "whole.trace.jsonl").read_text()
 
 
-def test_resume_of_a_finished_run_and_a_longer_one(tmp_path):
+# At the novelty level 0.5 the probes' record shortens A_new from the fourth
+# batch on (novelty.discount), so the longer run must read it back from the
+# saved trace.
+@pytest.mark.parametrize("level", [[], ["--novelty", "0.5"]], ids=["default", "novelty-0.5"])
+def test_resume_of_a_finished_run_and_a_longer_one(tmp_path, level):
     common = ["--out", str(tmp_path / "t.pl"), "--store", str(tmp_path / "s.sqlite")]
     short = ["explore", "--oracle", "synthetic", "--executor", "inline", "--no-progress",
-             "--seed", "4"]
+             "--seed", "4", *level]
     assert run_cli(*short, "--max-rules", "4", *common).code == 0
     # resuming with a larger budget continues where it stopped ...
     longer = run_cli(*short, "--max-rules", "7", "--resume", *common)
