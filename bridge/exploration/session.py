@@ -48,7 +48,7 @@ from pantarhei.bridge.exploration.significance import Tested, permutation_test, 
 from pantarhei.bridge.exploration.simulation import batch_seed, open_simulator, oracle_identity
 from pantarhei.bridge.exploration.state import ExplorationStore, run_key
 from pantarhei.bridge.exploration.trace import (append_trace, plot_path, plot_trace,
-                                                trace_path, write_trace)
+                                                rounded, trace_path, write_trace)
 from pantarhei.bridge.exploration.weights import weights
 from pantarhei.oracle.generative import (InvalidAntecedent, log_density,
                                          normalise, sample)
@@ -308,7 +308,9 @@ class Host:
         s = self.need_session()
         samples = int(s.settings["samples"])
         _, S = self.batch(request, min(int(s.settings["probe"]), samples))
-        score = probe_score(S, samples, s.verdicts(request["antecedents"]))
+        # rounded as the trace keeps it, so that a resumed run and another
+        # machine read the same pass from it
+        score = rounded(probe_score(S, samples, s.verdicts(request["antecedents"])))
         s.probes_now[(int(request["iteration"]), int(request["attempt"]))] = score >= PASS
         return {"score": score, "pass": score >= PASS, "simulations": len(s.params)}
 
@@ -454,7 +456,7 @@ class Host:
         s = self.need_session()
         iteration = int(request["iteration"])
         P, S = s.pending.pop(iteration)
-        trace = dict(request["trace"])
+        trace = rounded(dict(request["trace"]))
         s.probes_now = {k: v for k, v in s.probes_now.items() if k[0] != iteration}
         s.store.save(s.run, iteration, P, S, str(request["state"]), trace)
         s.trace.append(trace)

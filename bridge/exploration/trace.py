@@ -1,14 +1,33 @@
 """The exploration's trace: one JSON line per explored antecedent (what it
 added to A_new, the steepest plane, ...), and its plot. Timings are kept
 apart from the trace (see loop.explore), so that the same run writes the
-same trace."""
+same trace; its numbers keep DIGITS significant digits, so that it is the
+same on every machine (`rounded`)."""
 from __future__ import annotations
 
 import json
 from pathlib import Path
-from typing import Sequence
+from typing import Any, Sequence
 
 from pantarhei.bridge.files import pyplot, save_figure, write_text
+
+
+#: Significant digits of the trace's numbers. Machines whose linear algebra
+#: takes other code paths differ in a float's last bits (a plane's component
+#: was 0.2897128232031609 on one and 0.28971282320316083 on another).
+DIGITS = 10
+
+
+def rounded(value: Any) -> Any:
+    """`value` with every float in it (in lists and dicts too) rounded to
+    DIGITS significant digits."""
+    if isinstance(value, float):
+        return float(f"{value:.{DIGITS}g}")
+    if isinstance(value, dict):
+        return {k: rounded(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [rounded(v) for v in value]
+    return value
 
 
 def trace_path(out: Path) -> Path:
