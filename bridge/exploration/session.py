@@ -48,7 +48,8 @@ from pantarhei.bridge.exploration.significance import Tested, permutation_test, 
 from pantarhei.bridge.exploration.simulation import batch_seed, open_simulator, oracle_identity
 from pantarhei.bridge.exploration.state import ExplorationStore, run_key
 from pantarhei.bridge.exploration.trace import (append_trace, plot_path, plot_trace,
-                                                rounded, trace_path, write_trace)
+                                                probe_tally, rounded, trace_path,
+                                                write_trace)
 from pantarhei.bridge.exploration.weights import weights
 from pantarhei.oracle.generative import (InvalidAntecedent, log_density,
                                          normalise, sample)
@@ -311,16 +312,16 @@ class Host:
         # rounded as the trace keeps it, so that a resumed run and another
         # machine read the same pass from it
         score = rounded(probe_score(S, samples, s.verdicts(request["antecedents"])))
-        s.probes_now[(int(request["iteration"]), int(request["attempt"]))] = score >= PASS
-        return {"score": score, "pass": score >= PASS, "simulations": len(s.params)}
+        passed = score >= PASS
+        s.probes_now[(int(request["iteration"]), int(request["attempt"]))] = passed
+        return {"score": score, "pass": passed, "simulations": len(s.params)}
 
     def probe_record(self) -> tuple[int, int]:
         """How many probes passed, and how many there were, so far (those of
         the trace and of the iteration under way)."""
         s = self.need_session()
-        probes = [p["score"] >= PASS for t in s.trace for p in t.get("probes") or []]
-        probes += list(s.probes_now.values())
-        return sum(probes), len(probes)
+        passed, probed = (probe_tally(s.trace, PASS) or [(0, 0)])[-1]
+        return passed + sum(s.probes_now.values()), probed + len(s.probes_now)
 
     def best_plane(self, request: dict) -> dict:
         s = self.need_session()

@@ -48,17 +48,23 @@ def write_trace(path: Path, trace: Sequence[dict]) -> None:
     write_text(path, "".join(json.dumps(entry, sort_keys=True) + "\n" for entry in trace))
 
 
-def probes_passed(trace: Sequence[dict], level: float) -> list[float | None]:
-    """After each iteration, the share of the candidates probed so far whose
-    probe passed (scored at least `level`); None before the first probe."""
-    out: list[float | None] = []
+def probe_tally(trace: Sequence[dict], level: float) -> list[tuple[int, int]]:
+    """After each iteration, how many of the candidates probed so far passed
+    their probe (scored at least `level`), and how many were probed."""
+    out: list[tuple[int, int]] = []
     passed = probed = 0
     for t in trace:
         probes = t.get("probes") or []
         probed += len(probes)
         passed += sum(p["score"] >= level for p in probes)
-        out.append(passed / probed if probed else None)
+        out.append((passed, probed))
     return out
+
+
+def probes_passed(trace: Sequence[dict], level: float) -> list[float | None]:
+    """After each iteration, the share of the candidates probed so far whose
+    probe passed; None before the first probe."""
+    return [passed / probed if probed else None for passed, probed in probe_tally(trace, level)]
 
 
 def plot_trace(path: Path, trace: Sequence[dict], settings: dict | None = None) -> None:
