@@ -15,22 +15,10 @@ K_e). This is optimistic where the pours are mixed (q_e near one half, the
 verdict could go either way): it draws the exploration to where the
 behaviour changes, which found more behaviours than taking the verdict of
 the larger share as certain (python -m benchmarks discovery). The
-forest's estimate is 0.8 times the chance that it is none of them, plus 0.2
-times the share of c's predicted pours whose nine verdicts no two pours so
-far have shown. So it is near 0 where the forest expects nothing new, and
-near 1 where it surely expects a new rule whose pours all show new
-behaviour.
-
-But the forest only knows where the pours are: exploring where it expects
-something new, the exploration keeps to the corner of the pouring pose it
-started in, and the forest's guess for a pose it has hardly seen (upside
-down, say) is a guess. So the estimate is optimistic in proportion to how
-little the pours so far say of c: the forest's estimate f is moved towards
-1 by RARITY times c's `rarity` r, f + RARITY r (1 - f), where r = 1 / (1 +
-n / samples) for n the pours so far in which c's rarest proposition holds
-(1 where none, 1/2 after a batch's worth). The estimate is never below the
-forest's: for the same record of probes, rarity reorders A_new but never
-shortens it.
+estimate is 0.8 times the chance that it is none of them, plus 0.2 times
+the share of c's predicted pours whose nine verdicts no two pours so far
+have shown. So it is near 0 where the forest expects nothing new, and near
+1 where it surely expects a new rule whose pours all show new behaviour.
 
 The forest's guess is checked before a batch is spent on it: a probe, the
 first pours of the candidate's batch, is simulated, and `probe_score` says
@@ -54,16 +42,13 @@ import numpy as np
 from scipy.stats import binom
 from sklearn.ensemble import RandomForestClassifier
 
-from pantarhei.oracle.generative import holds, normalise, sample
+from pantarhei.oracle.generative import normalise, sample
 
 #: Trees of the forest; its leaves hold at least this many pours.
 TREES, LEAF = 50, 3
 #: The weight of a new consequent in the estimate; the rest is the share of
 #: pours with unseen verdicts.
 NEW_CONSEQUENT = 0.8
-#: How far rarity moves the forest's estimate towards 1 (surely new): where
-#: the pours so far are few the forest guesses, and the unknown may be new.
-RARITY = 0.5
 #: The seeded tie-break's share of the estimate (which so stays below 1).
 TIE = 1e-6
 #: A probe passes when the chance it gives of a new, reproducible consequent
@@ -80,7 +65,6 @@ class Known:
     consequents: frozenset      # consequents (nine verdicts) of the explored antecedents
     samples: int                # pours per batch
     seed: int                   # the run's seed (of the candidates' predicted pours)
-    counts: dict | None = None  # proposition -> pours so far that it holds (the forest's pours)
 
 
 def shown(S: np.ndarray, at_least: int = 2) -> frozenset:
@@ -110,19 +94,7 @@ def known(params: np.ndarray, scores: np.ndarray, consequents: Sequence[tuple[bo
             forest = RandomForestClassifier(n_estimators=TREES, min_samples_leaf=LEAF, max_features=None,
                                             random_state=forest_seed % 2**32, n_jobs=1)
             forest.fit(normalise(P), V[:, ~constant])
-    names, M = holds(P) if len(P) else ((), np.zeros((0, 0), dtype=bool))
-    counts = dict(zip(names, (int(c) for c in M.sum(axis=0))))
-    return Known(forest, columns, seen, frozenset(consequents), samples, seed, counts)
-
-
-def rarity(k: Known, props: Sequence[str]) -> float:
-    """How little the pours so far say of a candidate: 1 / (1 + n / samples)
-    for the candidate's rarest proposition, n the pours so far in which it
-    holds (a batch's worth halves it). Near 1 where the forest has no pours
-    to go by, small where many pours hold every proposition."""
-    counts = k.counts or {}
-    n = min((counts.get(str(p), 0) for p in props), default=0)
-    return 1.0 / (1.0 + n / k.samples)
+    return Known(forest, columns, seen, frozenset(consequents), samples, seed)
 
 
 def candidate_seed(seed: int, props: Sequence[str]) -> int:
@@ -167,11 +139,9 @@ def novelties(k: Known, candidates: Sequence[Sequence[str]]) -> list[dict]:
         unseen = float(np.mean([tuple(bool(v) for v in row) not in k.seen
                                 for row in p[i] > 0.5]))
         tie = np.random.default_rng(seeds[i]).random() * TIE
-        rare = rarity(k, candidates[i])
-        forest = NEW_CONSEQUENT * new + (1.0 - NEW_CONSEQUENT) * unseen
-        estimate = forest + RARITY * rare * (1.0 - forest)
+        estimate = NEW_CONSEQUENT * new + (1.0 - NEW_CONSEQUENT) * unseen
         out.append({"novelty": estimate * (1.0 - TIE) + tie, "new_consequent": new,
-                    "unseen": unseen, "rarity": rare})
+                    "unseen": unseen})
     return out
 
 

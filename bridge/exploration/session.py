@@ -57,7 +57,7 @@ from pantarhei.oracle.store import DEFAULT_STORE
 from pantarhei.theory.lexicon import load_vocabulary
 
 #: Bumped when the course of an exploration may change for the same settings.
-ALGORITHM_VERSION = "3"
+ALGORITHM_VERSION = "2"
 
 
 @dataclass

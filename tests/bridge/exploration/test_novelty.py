@@ -7,9 +7,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from pantarhei.bridge.exploration.novelty import (NEW_CONSEQUENT, PASS, RARITY, TIE, known,
-                                                  majority, new_reproduced, novelties,
-                                                  probe_score, rarity)
+from pantarhei.bridge.exploration.novelty import (PASS, known, majority, new_reproduced,
+                                                  novelties, probe_score)
 from pantarhei.oracle.generative import sample
 from pantarhei.oracle.synthetic import DEPENDS, scores
 from pantarhei.theory.lexicon import load_vocabulary
@@ -44,21 +43,6 @@ def test_the_ignored_proposition_is_not_novel_and_the_side_pour_is():
     # (not surely: its pours, as a_0's, are mixed on three expectations)
     assert side["new_consequent"] > 0.99 and side["novelty"] > 0.75
     assert dull["new_consequent"] < 0.5 and dull["novelty"] < side["novelty"] - 0.4
-
-
-def test_rarity_is_what_the_pours_so_far_say_of_the_rarest_proposition():
-    # 62 pours of a_0 alone: each of its propositions holds in all of them, and
-    # no pour is upside down (a_0 tilts steeply)
-    P = sample(A0, 62, 1)
-    k = known(P, synthetic(P), [consequent(A0)], samples=31, seed=1, forest_seed=2)
-    assert rarity(k, A0) == 1 / (1 + 62 / 31)
-    upside = ["pour_mid_height", "pour_near_rim", "pour_upside_down"]
-    assert rarity(k, upside) == 1.0
-    # the estimate: the forest's, moved towards 1 by rarity (the tie-break below a millionth)
-    for f, props in zip(novelties(k, [A0, upside]), [A0, upside]):
-        forest = NEW_CONSEQUENT * f["new_consequent"] + (1 - NEW_CONSEQUENT) * f["unseen"]
-        assert f["rarity"] == rarity(k, props)
-        assert abs(f["novelty"] - (forest + RARITY * f["rarity"] * (1 - forest))) <= 2 * TIE
 
 
 def test_estimates_are_seeded_and_below_one():

@@ -277,7 +277,7 @@ def test_the_shipped_theory_is_current_and_its_dfl_twin_agrees() -> None:
         "the oracle changed: learn the shipped theory again with make demo"
     # the version the shipped theory was learned with (make demo): learn it
     # again, and set this, when the course of an exploration changes
-    assert ALGORITHM_VERSION == "3"
+    assert ALGORITHM_VERSION == "2"
     dfl = load([DEFAULT_THEORY.with_suffix(".dfl")])
     assert {(r.id, r.head, frozenset(r.body)) for r in dfl.rules} == \
            {(r.id, r.head, frozenset(r.body)) for r in native.rules}
@@ -344,31 +344,3 @@ def test_malformed_general_rules_name_file_and_line(cli, tmp_path: Path, old, ne
     bad.write_text(GENERAL.replace(old, new))
     msg = assert_one_line_error(cli("ask", "--props", "pour_to_side", "--theory", str(bad)))
     assert f"{bad}:{line}: " in msg and what in msg
-
-
-def test_the_shipped_theory_says_what_pouring_upside_down_does(cli, tmp_path: Path) -> None:
-    """A question a person types, against real PyBullet pours: the shipped
-    exploration poured upside down often enough (its novelty is optimistic
-    where the pours are few) that a general rule of its own says all the
-    liquid leaves the source, as 10 pours sampled for the question show."""
-    import numpy as np
-
-    from pantarhei.bridge.exploration.simulation import open_simulator
-    from pantarhei.oracle.generative import sample
-    from pantarhei.theory.lexicon import load_vocabulary
-
-    r = cli("ask", "turn the source upside down", "--json")
-    assert r.code == 0, r.err
-    answer = json.loads(r.out)
-    assert answer["understood"] == ["pour_upside_down"]
-    reason = answer["reasons"]["liquid_leaves_source"]
-    assert answer["outcomes"]["liquid_leaves_source"] == "holds"
-    assert reason["rule"].startswith("g")          # a general rule, not the default
-    sim = open_simulator("pybullet", "local", 1, tmp_path / "store.sqlite")
-    try:
-        S = np.asarray(sim.simulate(sample(["pour_upside_down"], 10, 7), progress=False), dtype=float)
-    finally:
-        sim.close()
-    k = load_vocabulary().expectation_names.index("liquid_leaves_source")
-    S = S[np.all(np.isfinite(S), axis=1)]
-    assert len(S) >= 8 and (S[:, k] > 0.5).mean() >= 0.8
