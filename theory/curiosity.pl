@@ -65,9 +65,9 @@ Two curiosities share the loop (option curiosity/1):
     Each candidate and each of A_new gets its novelty, the chance that it
     shows a behaviour not yet got as a forest of every pour so far predicts
     it (bridge/exploration/novelty.py); A_new keeps the most novel of those
-    that reach the novelty level once scaled by the share of the probes so
-    far that passed (below), so it dries up as the probes stop finding
-    anything new. When nothing reaches it, the antecedent
+    that reach the novelty level once scaled by the probes' mean score so
+    far (below), so it dries up as the probes stop finding anything
+    new. When nothing reaches it, the antecedent
     just explored gets more pours (resample/1), which may change the forest's
     mind; when that is spent too and A_new is empty, the exploration stops.
     The forest's guess is checked before a batch is spent on it: the first
@@ -133,10 +133,13 @@ load_defaults :-
 %       undecided and that queued nothing new (discover); max_rules then
 %       counts batches
 %     - novelty(+X)*: the estimated chance of a new behaviour, from 0 to 1,
-%       a candidate needs to be queued, scaled by the share of the probes
-%       so far that passed (discover; default novelty_permille)
+%       a candidate needs to be queued, scaled by the probes' mean score
+%       so far (discover; default novelty_permille)
 %     - probe(+N)*: pours of a candidate's probe, 0 for none (discover)
 %     - probe_attempts(+N)*: candidates probed at most in a step (discover)
+%     - cover(+N)*: the last probe of a step goes to the candidate whose
+%       rarest proposition the fewest pours so far hold, when fewer than N
+%       do; 0 for never (discover)
 %     - seed(+S)*: seed of every random choice
 %     - initial(+Props)*: a_0 (default_initial/1)
 %     - breadth(+K)*: the paper's modify uses the K largest gradient components
@@ -219,6 +222,10 @@ settings(Options, S) :-
     ),
     option_default(probe_attempts, Options, Attempts),
     check_positive(probe_attempts, Attempts),
+    option_default(cover, Options, Cover),
+    (   integer(Cover), Cover >= 0 -> true
+    ;   throw(exploration_error("cover: expected a whole number >= 0"))
+    ),
     option_default(novelty, Options, Novelty0),
     (   number(Novelty0), Novelty0 >= 0, Novelty0 =< 1 -> Novelty is float(Novelty0)
     ;   throw(exploration_error("novelty: expected a number from 0 to 1"))
@@ -264,7 +271,7 @@ settings(Options, S) :-
            resume:Resume, executor:Executor, progress:Progress, out:Out,
            curiosity:Curiosity, permutations:Permutations, resample:Resample,
            novelty:Novelty, queue:Queue, jumps:Jumps, probe:Probe,
-           probe_attempts:Attempts},
+           probe_attempts:Attempts, cover:Cover},
     optional(store, Options, S0, S1),
     optional(workers, Options, S1, S2),
     optional(ray_address, Options, S2, S3),
@@ -377,7 +384,7 @@ step(S0, Settings, st(I1, Explored1, ANew, SetAside)) :-
     S0 = st(I, Explored, _, SetAside0),
     I1 is I + 1,
     choose(S0, Settings, cand(Props, Parent, Via), Attempt, Rest, Probes),
-    findall(aside(I1, K, P), member(probe(P, _, false, K), Probes), NewAside),
+    findall(aside(I1, K, P), member(probe(P, _, false, K, _), Probes), NewAside),
     append(SetAside0, NewAside, SetAside),
     (   Via = more(Id, _)
     ->  Explored1 = Explored
@@ -423,7 +430,8 @@ step(S0, Settings, st(I1, Explored1, ANew, SetAside)) :-
                simulations:Sim.simulations, failed:Sim.failed,
                best:BestT, added:AddedProps, a_new:Left},
     (   Settings.curiosity == discover
-    ->  findall(_{antecedent:P, score:Sc, kept:K}, member(probe(P, Sc, K, _), Probes), ProbeTrace),
+    ->  findall(T, ( member(probe(P, Sc, K, _, By), Probes),
+                         probe_entry(P, Sc, K, By, T) ), ProbeTrace),
         Trace = Trace0.put(probes, ProbeTrace)
     ;   Trace = Trace0
     ),
@@ -433,20 +441,24 @@ step(S0, Settings, st(I1, Explored1, ANew, SetAside)) :-
 %   choose(+State, +Settings, -Cand, -Attempt, -Rest, -Probes): the
 %   candidate this iteration explores, the attempt whose pours its batch is
 %   (0: the iteration's own), A_new without it and the candidates set
-%   aside, and Probes, probe(Props, Score, Kept, Attempt) for each
-%   candidate probed.
+%   aside, and Probes, probe(Props, Score, Kept, Attempt, By) for each
+%   candidate probed, By `novelty` (the next of A_new) or `fewest` (the
+%   last attempt, where the pours are fewest: fewest/5).
 %   Without probes (the paper's curiosity, probe(0), a_0 and more batches)
 %   it is the head of A_new. Otherwise the first `probe` pours of the head's
 %   batch are simulated, and it is explored when they show a new,
 %   reproducible consequent (exploration_probe); else the next is probed,
 %   at most `probe_attempts` of them, and the one whose probe scored best is
 %   explored.
-choose(st(I, Explored, [C|Rest], _), Settings, Cand, Attempt, Rest1, Probes) :-
+choose(st(I, Explored, [C|Rest], SetAside), Settings, Cand, Attempt, Rest1, Probes) :-
     (   unprobed(C, Settings)
     ->  Cand = C, Attempt = 0, Rest1 = Rest, Probes = []
     ;   I1 is I + 1,
         maplist(entry, Explored, Entries),
-        probe_loop([C|Rest], Entries, Settings, I1, 0, [], Cand, Attempt, Rest1, Probes)
+        append([C|Rest], SetAside, Away),
+        exclusions(Explored, Away, Exclude),
+        probe_loop([C|Rest], Entries-Exclude, Settings, I1, 0, novelty, [], Cand, Attempt,
+                   Rest1, Probes)
     ).
 
 unprobed(cand(_, _, Via), Settings) :-
@@ -456,28 +468,51 @@ unprobed(cand(_, _, Via), Settings) :-
     ;   Via = more(_, _)
     ), !.
 
-probe_loop([C|Rest], Entries, Settings, I1, K, Tried, Cand, Attempt, Rest1, Probes) :-
+probe_loop([C|Rest], Known, Settings, I1, K, By, Tried, Cand, Attempt, Rest1, Probes) :-
+    Known = Entries-Exclude,
     C = cand(Props, _, _),
     call_bridge(exploration_probe, _{antecedents:Entries, antecedent:Props,
-                                     iteration:I1, attempt:K}, R),
-    Tried1 = [t(R.score, K, C)|Tried],
+                                     iteration:I1, attempt:K, by:By}, R),
+    Tried1 = [t(R.score, K, By, C)|Tried],
     K1 is K + 1,
     (   R.pass == true
     ->  probe_end(Tried1, K, Rest, Cand, Attempt, Rest1, Probes)
     ;   K1 < Settings.probe_attempts,
         Rest = [Next|_], \+ unprobed(Next, Settings)
-    ->  probe_loop(Rest, Entries, Settings, I1, K1, Tried1, Cand, Attempt, Rest1, Probes)
+    ->  (   K1 =:= Settings.probe_attempts - 1, K1 > 0, Settings.cover > 0,
+            fewest(Rest, Exclude, Settings, I1, Rest2)
+        ->  probe_loop(Rest2, Known, Settings, I1, K1, fewest, Tried1, Cand, Attempt, Rest1, Probes)
+        ;   probe_loop(Rest, Known, Settings, I1, K1, novelty, Tried1, Cand, Attempt, Rest1, Probes)
+        )
     ;   best_probe(Tried1, Best),
         probe_end(Tried1, Best, Rest, Cand, Attempt, Rest1, Probes)
     ).
 
+%   fewest(+Rest, +Exclude, +Settings, +I, -Rest2): the last probe of a
+%   step goes where the pours are fewest: to the candidate of A_new (Rest)
+%   or of this step's random valid antecedents (jumps/4, none in Exclude)
+%   whose rarest proposition the fewest pours so far hold, when fewer than
+%   `cover` do (exploration_fewest; the earliest of equals). Rest2 is Rest
+%   with it first. Fails when `cover` pours or more hold every proposition
+%   of every candidate.
+fewest(Rest, Exclude, Settings, I, [Chosen|Others]) :-
+    include([C]>>( \+ unprobed(C, Settings) ), Rest, InQueue),
+    jumps(Settings, I, Exclude, Far),
+    findall(cand(P, none, jump), member(P, Far), Jumps),
+    append(InQueue, Jumps, Pool),
+    findall(P, member(cand(P, _, _), Pool), Cands),
+    call_bridge(exploration_fewest, _{candidates:Cands, enough:Settings.cover}, Reply),
+    Reply.index >= 0,
+    nth0(Reply.index, Pool, Chosen),
+    (   selectchk(Chosen, Rest, Others) -> true ; Others = Rest ).
+
 %   probe_end(+Tried, +Chosen, +Rest, -Cand, -Attempt, -Rest, -Probes):
 %   the attempt Chosen of Tried is explored, the others are set aside.
 probe_end(Tried, Chosen, Rest, Cand, Chosen, Rest, Probes) :-
-    memberchk(t(_, Chosen, Cand), Tried),
+    memberchk(t(_, Chosen, _, Cand), Tried),
     reverse(Tried, InOrder),
-    findall(probe(P, Sc, Kept, K),
-            ( member(t(Sc, K, cand(P, _, _)), InOrder),
+    findall(probe(P, Sc, Kept, K, By),
+            ( member(t(Sc, K, By, cand(P, _, _)), InOrder),
               ( K == Chosen -> Kept = true ; Kept = false ) ),
             Probes).
 
@@ -485,8 +520,13 @@ probe_end(Tried, Chosen, Rest, Cand, Chosen, Rest, Probes) :-
 %   earliest of equals).
 best_probe(Tried, K) :-
     reverse(Tried, InOrder),
-    findall(Key-A, ( member(t(Sc, A, _), InOrder), Key is -Sc ), Keyed),
+    findall(Key-A, ( member(t(Sc, A, _, _), InOrder), Key is -Sc ), Keyed),
     keysort(Keyed, [_-K|_]).
+
+%   probe_entry(+Props, +Score, +Kept, +By, -Entry): a probe in the trace;
+%   one that went where the pours are fewest (fewest/5) says so.
+probe_entry(P, Sc, K, novelty, _{antecedent:P, score:Sc, kept:K}).
+probe_entry(P, Sc, K, fewest, _{antecedent:P, score:Sc, kept:K, by:fewest}).
 
 %   followed(+Best, +Settings): the best plane is followed (steep enough for
 %   the paper's curiosity, significant for the discovering one).
@@ -804,7 +844,8 @@ setting_facts(Settings, Reply, Stop, Explored, Left, Facts) :-
                       setting(queue, Settings.queue),
                       setting(jumps, Settings.jumps),
                       setting(probe, Settings.probe),
-                      setting(probe_attempts, Settings.probe_attempts) ]
+                      setting(probe_attempts, Settings.probe_attempts),
+                      setting(cover, Settings.cover) ]
     ;   Threshold = [ setting(threshold_permille, Permille) ]
     ),
     append([ [ setting(oracle, Settings.oracle),

@@ -12,13 +12,14 @@
 % level of the permutation test with its number of shuffles; for paper,
 % the slope below which nothing new is explored), how many more batches an
 % antecedent gets when nothing new is queued after it, the novelty a
-% candidate needs to be queued (scaled by the share of the probes so far
-% that passed), how many A_new keeps, how many random valid
+% candidate needs to be queued (scaled by the probes' mean score so far),
+% how many A_new keeps, how many random valid
 % antecedents each step draws as candidates (jumps), the pours of a probe
 % (discover: the first pours of a candidate's batch, simulated before the
 % rest; a candidate whose probe shows no new, reproducible consequent is
 % set aside for the next, at most probe_attempts candidates a step; 0: no
-% probes), the ridge of the plane fits, the seed, how many gradient
+% probes; the last of them goes to the candidate whose rarest proposition
+% fewer than cover pours so far hold, the fewest, 0: never), the ridge of the plane fits, the seed, how many gradient
 % components the paper's modify follows, and how an antecedent's
 % consequent is qualified (weighted vote or the paper's argmax).
 default(curiosity, discover).
@@ -32,6 +33,7 @@ default(queue, 100).
 default(jumps, 31).
 default(probe, 8).
 default(probe_attempts, 3).
+default(cover, 0).
 default(threshold_permille, 100).
 default(ridge_permille, 1000).
 default(seed, 1).

@@ -37,7 +37,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                         f"(default {d['resample']}); --max-rules then counts batches")
     p.add_argument("--novelty", type=float, default=d["novelty"],
                    help="discover: the predicted novelty, from 0 to 1, a candidate needs to be "
-                        "queued, scaled by the share of the probes so far that passed "
+                        "queued, scaled by the probes' mean score so far "
                         f"(default {d['novelty']})")
     p.add_argument("--queue", type=int, default=d["queue"],
                    help=f"discover: A_new keeps this many most novel candidates (default {d['queue']})")
@@ -51,6 +51,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--probe-attempts", type=int, default=d["probe_attempts"],
                    help="discover: candidates probed at most in a step; then the one whose "
                         f"probe scored best is explored (default {d['probe_attempts']})")
+    p.add_argument("--cover", type=int, default=d["cover"],
+                   help="discover: the last probe of a step goes to the candidate whose rarest "
+                        "proposition the fewest pours so far hold, when fewer than this many do; "
+                        f"0: never (default {d['cover']})")
     p.add_argument("--permutations", type=int, default=d["permutations"],
                    help=f"discover: shuffles of the permutation test (default {d['permutations']})")
     options.add_seed(p)
@@ -95,7 +99,7 @@ def explore(args: argparse.Namespace) -> int:
             raise UserError(f"--{name.replace('_', '-')} must be at least 1")
     if (args.threshold is not None and args.threshold < 0) or args.ridge < 0:
         raise UserError("--threshold and --ridge must not be negative")
-    for name in ("resample", "probe"):
+    for name in ("resample", "probe", "cover"):
         if getattr(args, name) < 0:
             raise UserError(f"--{name} must not be negative")
     if not 0 <= args.novelty <= 1:
@@ -108,7 +112,7 @@ def explore(args: argparse.Namespace) -> int:
     opts = Options(
         curiosity=args.curiosity, permutations=args.permutations, resample=args.resample,
         novelty=args.novelty, queue=args.queue, jumps=args.jumps, probe=args.probe,
-        probe_attempts=args.probe_attempts, oracle=args.oracle,
+        probe_attempts=args.probe_attempts, cover=args.cover, oracle=args.oracle,
         max_rules=args.max_rules, samples=args.samples,
         threshold=args.threshold, seed=args.seed, initial=initial, breadth=args.breadth,
         ridge=args.ridge, qualify=args.qualify, out=Path(args.out), store=Path(args.store),

@@ -35,7 +35,7 @@ class Options:
     #: discover: more batches of an antecedent whose planes are undecided.
     resample: int = _default("resample")
     #: discover: the novelty a candidate needs to be queued, scaled by the
-    #: share of the probes so far that passed (bridge/exploration/novelty.py).
+    #: probes' mean score so far (bridge/exploration/novelty.py).
     novelty: float = _default("novelty")
     #: discover: how many of the most novel candidates A_new keeps.
     queue: int = _default("queue")
@@ -44,6 +44,9 @@ class Options:
     #: discover: pours of a candidate's probe (0: none) and candidates probed a step.
     probe: int = _default("probe")
     probe_attempts: int = _default("probe_attempts")
+    #: discover: the last probe of a step goes where fewer than this many pours
+    #: hold the candidate's rarest proposition, the fewest (0: never).
+    cover: int = _default("cover")
     ridge: float = _default("ridge")
     seed: int = _default("seed")
     initial: Sequence[str] | None = None
@@ -67,7 +70,7 @@ class Options:
                  f"permutations({int(self.permutations)})", f"resample({int(self.resample)})",
                  f"novelty({float(self.novelty)!r})", f"queue({int(self.queue)})",
                  f"jumps({int(self.jumps)})", f"probe({int(self.probe)})",
-                 f"probe_attempts({int(self.probe_attempts)})",
+                 f"probe_attempts({int(self.probe_attempts)})", f"cover({int(self.cover)})",
                  f"seed({int(self.seed)})",
                  f"breadth({int(self.breadth)})", f"ridge({float(self.ridge)!r})", f"qualify({prolog_quote(self.qualify)})",
                  f"out({prolog_quote(str(Path(self.out).absolute()))})",

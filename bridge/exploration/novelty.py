@@ -26,10 +26,10 @@ how likely a batch of the candidate is to give a consequent no explored
 antecedent has and that another batch would give again (the candidate is
 set aside below PASS; theory/curiosity.pl, choose/6). The probes are also
 the record of how far the forest's estimates are borne out: a candidate is
-queued when its estimate, scaled by the share of the probes so far that
-passed (`discount`), reaches the novelty level. The ranking is the
-estimate's; the discount only shortens A_new, which so dries up as the
-probes stop finding anything new.
+queued when its estimate, scaled by the probes' mean score so far
+(`discount`), reaches the novelty level. The ranking is the estimate's;
+the discount only shortens A_new, which so dries up as the probes stop
+finding anything new.
 """
 from __future__ import annotations
 
@@ -145,11 +145,14 @@ def novelties(k: Known, candidates: Sequence[Sequence[str]]) -> list[dict]:
     return out
 
 
-def discount(passed: int, probed: int) -> float:
-    """The share of the probes so far that passed, counting one pass before
-    the first probe: 1 until a probe fails, then falling as the probes stop
-    finding new, reproducible consequents."""
-    return (1.0 + passed) / (1.0 + probed)
+def discount(found: float, probed: int) -> float:
+    """The probes' mean score so far (`found`, their scores summed, over
+    `probed` probes), counting a score of 1 before the first probe: the
+    share of the forest's candidates that turned out to hold a new,
+    reproducible consequent, each probe counted by its chance of it (a
+    probe split on one verdict, scoring just under PASS, is half a find,
+    not none), falling as the probes stop finding anything new."""
+    return (1.0 + found) / (1.0 + probed)
 
 
 def verdict_rows(consequents: Iterable[tuple[bool, ...]], width: int) -> np.ndarray:

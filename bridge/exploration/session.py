@@ -41,6 +41,7 @@ import numpy as np
 
 from pantarhei.bridge.engines.swipl import Engine, engine as prolog_engine
 from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.exploration.coverage import fewest
 from pantarhei.bridge.exploration.novelty import PASS, Known, discount, known, novelties, probe_score
 from pantarhei.bridge.exploration.planes import Planes, best_abs_slope, plane_fit
 from pantarhei.bridge.exploration.qualify import QUALIFY, consequent
@@ -48,7 +49,7 @@ from pantarhei.bridge.exploration.significance import Tested, permutation_test, 
 from pantarhei.bridge.exploration.simulation import batch_seed, open_simulator, oracle_identity
 from pantarhei.bridge.exploration.state import ExplorationStore, run_key
 from pantarhei.bridge.exploration.trace import (append_trace, plot_path, plot_trace,
-                                                probe_tally, rounded, trace_path,
+                                                probe_evidence, rounded, trace_path,
                                                 write_trace)
 from pantarhei.bridge.exploration.weights import weights
 from pantarhei.oracle.generative import (InvalidAntecedent, log_density,
@@ -57,7 +58,7 @@ from pantarhei.oracle.store import DEFAULT_STORE
 from pantarhei.theory.lexicon import load_vocabulary
 
 #: Bumped when the course of an exploration may change for the same settings.
-ALGORITHM_VERSION = "2"
+ALGORITHM_VERSION = "4"
 
 
 @dataclass
@@ -83,8 +84,8 @@ class Session:
     elapsed: list[float] = field(default_factory=list)
     #: Pours already in the pool of each probed (iteration, attempt).
     probed: dict[tuple[int, int], int] = field(default_factory=dict)
-    #: Whether the probe of each (iteration, attempt) not yet in the trace passed.
-    probes_now: dict[tuple[int, int], bool] = field(default_factory=dict)
+    #: The score of the probe of each (iteration, attempt) not yet in the trace.
+    probes_now: dict[tuple[int, int], float] = field(default_factory=dict)
 
     @property
     def valid(self) -> np.ndarray:
@@ -168,6 +169,7 @@ class Host:
             "exploration_best_plane": self._timed("planes", self.best_plane),
             "exploration_predict": self._timed("planes", self.predict),
             "exploration_probe": self._timed("probe", self.probe),
+            "exploration_fewest": self._timed("probe", self.fewest),
             "exploration_qualify": self._timed("qualify", self.qualify),
             "exploration_checkpoint": self._timed("checkpoint", self.checkpoint),
             "exploration_end": self.end,
@@ -227,6 +229,8 @@ class Host:
             if int(request.get("probe", 0)):       # runs without probes keep their keys
                 course.update(probe=int(request["probe"]),
                               probe_attempts=int(request["probe_attempts"]))
+                if int(request.get("cover", 0)):   # runs without coverage keep their keys
+                    course.update(cover=int(request["cover"]))
         run = run_key(course)
         store_path = Path(str(request.get("store") or DEFAULT_STORE))
         try:
@@ -310,18 +314,27 @@ class Host:
         samples = int(s.settings["samples"])
         _, S = self.batch(request, min(int(s.settings["probe"]), samples))
         # rounded as the trace keeps it, so that a resumed run and another
-        # machine read the same pass from it
+        # machine read the same score from it
         score = rounded(probe_score(S, samples, s.verdicts(request["antecedents"])))
         passed = score >= PASS
-        s.probes_now[(int(request["iteration"]), int(request["attempt"]))] = passed
+        if request.get("by", "novelty") == "novelty":    # the forest's record (probe_record)
+            s.probes_now[(int(request["iteration"]), int(request["attempt"]))] = score
         return {"score": score, "pass": passed, "simulations": len(s.params)}
 
-    def probe_record(self) -> tuple[int, int]:
-        """How many probes passed, and how many there were, so far (those of
-        the trace and of the iteration under way)."""
+    def fewest(self, request: dict) -> dict:
+        """Which candidate's rarest proposition the fewest pours so far hold,
+        when fewer than `enough` (bridge/exploration/coverage.py; -1: none)."""
         s = self.need_session()
-        passed, probed = (probe_tally(s.trace, PASS) or [(0, 0)])[-1]
-        return passed + sum(s.probes_now.values()), probed + len(s.probes_now)
+        return {"index": fewest(s.params[s.valid], request["candidates"], int(request["enough"]))}
+
+    def probe_record(self) -> tuple[float, int]:
+        """The probes' scores summed, and how many probes there were, so far
+        (those of the trace and of the iteration under way): of the probes
+        of the forest's candidates, not those that went where the pours are
+        fewest."""
+        s = self.need_session()
+        found, probed = (probe_evidence(s.trace) or [(0.0, 0)])[-1]
+        return found + sum(s.probes_now.values()), probed + len(s.probes_now)
 
     def best_plane(self, request: dict) -> dict:
         s = self.need_session()

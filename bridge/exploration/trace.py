@@ -48,31 +48,31 @@ def write_trace(path: Path, trace: Sequence[dict]) -> None:
     write_text(path, "".join(json.dumps(entry, sort_keys=True) + "\n" for entry in trace))
 
 
-def probe_tally(trace: Sequence[dict], level: float) -> list[tuple[int, int]]:
-    """After each iteration, how many of the candidates probed so far passed
-    their probe (scored at least `level`), and how many were probed."""
-    out: list[tuple[int, int]] = []
-    passed = probed = 0
+def probe_evidence(trace: Sequence[dict]) -> list[tuple[float, int]]:
+    """After each iteration, the sum of the scores of the forest's
+    candidates probed so far (each the chance that its batch gives a new,
+    reproducible consequent), and how many were probed; the probes that
+    went where the pours are fewest (`"by": "fewest"`) are left out."""
+    out: list[tuple[float, int]] = []
+    found, probed = 0.0, 0
     for t in trace:
-        probes = t.get("probes") or []
+        probes = [p for p in t.get("probes") or [] if p.get("by", "novelty") == "novelty"]
         probed += len(probes)
-        passed += sum(p["score"] >= level for p in probes)
-        out.append((passed, probed))
+        found += sum(float(p["score"]) for p in probes)
+        out.append((found, probed))
     return out
 
 
-def probes_passed(trace: Sequence[dict], level: float) -> list[float | None]:
-    """After each iteration, the share of the candidates probed so far whose
-    probe passed; None before the first probe."""
-    return [passed / probed if probed else None for passed, probed in probe_tally(trace, level)]
+def probe_means(trace: Sequence[dict]) -> list[float | None]:
+    """After each iteration, the mean score of the candidates probed so
+    far; None before the first probe."""
+    return [found / probed if probed else None for found, probed in probe_evidence(trace)]
 
 
 def plot_trace(path: Path, trace: Sequence[dict], settings: dict | None = None) -> None:
     """|A_new| after each iteration and the antecedents each added (PNG);
-    for a run with probes also the share of its probes that passed so far,
-    the evidence that something new is still to be found."""
-    from pantarhei.bridge.exploration.novelty import PASS
-
+    for a run with probes also their mean score so far, the evidence that
+    something new is still to be found (what scales the queue)."""
     plt = pyplot()
     it = [t["iteration"] for t in trace]
     added = [len(t["added"]) for t in trace]
@@ -84,17 +84,17 @@ def plot_trace(path: Path, trace: Sequence[dict], settings: dict | None = None) 
     ax.xaxis.get_major_locator().set_params(integer=True)
     ax.set_xlabel("iteration (explored antecedent)")
     ax.set_ylabel("antecedents")
-    share = probes_passed(trace, PASS)
+    share = probe_means(trace)
     if any(v is not None for v in share):
         right = ax.twinx()
         (probes,) = right.plot(it, [float("nan") if v is None else v for v in share],
                                color="#27ae60", linestyle="--",
-                               label="probes passed so far (share, right)")
+                               label="probes' mean score so far (right)")
         # room above the lines for the legend, on both axes alike
         ax.set_ylim(0, 1.45 * max(size + added + [1]))
         right.set_ylim(0, 1.45)
         right.set_yticks([0, 0.25, 0.5, 0.75, 1])
-        right.set_ylabel("share of probes")
+        right.set_ylabel("mean probe score")
         handles.append(probes)
     title = "Curiosity-driven exploration"
     if settings:

@@ -61,7 +61,13 @@ def test_rules_rebuilt_from_the_store_are_the_theory_prolog_wrote(evaluated, lea
     for i, row in enumerate(ev.explored_consequents, start=1):
         for e, holds in zip(names, row):
             assert L.theory.rule(f"r{i}_{e}").head == (e if holds else f"neg({e})")
-    assert ev.behaviours["curiosity"] == distinct_behaviours(ev.explored_consequents)
+    # the behaviours at the budget both methods are compared at (whole
+    # batches within either's pours): of the antecedents whose pours all lie
+    # within it
+    _, _, _, ends = E.exploration_draws(L)
+    within = sum(1 for e in ends if e <= ev.curves["budget"][-1])
+    assert within >= len(ends) - 1
+    assert ev.behaviours["curiosity"] == distinct_behaviours(ev.explored_consequents[:within])
     assert ev.curves["curiosity"]["behaviours"][-1] == ev.behaviours["curiosity"]
 
 
