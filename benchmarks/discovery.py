@@ -34,7 +34,8 @@ second run simulates nothing):
     PANTARHEI_BENCH_METHODS=discover,random python -m benchmarks discovery
 
 PANTARHEI_BENCH_JUMPS sets the discovering curiosity's random candidates
-per step (`--jumps`; default the project's), and PANTARHEI_BENCH_RULES the
+per step (`--jumps`; default the project's), PANTARHEI_BENCH_COVER its
+`--cover` (default the project's, 0), and PANTARHEI_BENCH_RULES the
 budget in batches of 31 (by default the project's 25, the paper's scale;
 every method gets as many pours).
 """
@@ -119,8 +120,9 @@ def curiosity(mode: str, seed: int, rules: int, tmp: Path, oracle: str, store: P
     out = tmp / f"{mode}-{seed}.pl"
     inline = oracle == "synthetic"
     jumps = int(os.environ.get("PANTARHEI_BENCH_JUMPS", Options().jumps))
+    cover = int(os.environ.get("PANTARHEI_BENCH_COVER", Options().cover))
     r = explore(Options(curiosity=mode, oracle=oracle, max_rules=rules, seed=seed, out=out,
-                        jumps=jumps, store=tmp / f"{mode}-{seed}.sqlite" if inline else store,
+                        jumps=jumps, cover=cover, store=tmp / f"{mode}-{seed}.sqlite" if inline else store,
                         progress=False, executor="inline" if inline else "local",
                         general=False))
     trace = [json.loads(line) for line in out.with_suffix(".trace.jsonl").read_text().splitlines()]
