@@ -24,6 +24,7 @@ FAST = ["--oracle", "synthetic", "--executor", "inline", "--no-progress"]
     (["--jumps", "0"], "--jumps must be at least 1"),
     (["--probe", "-1"], "--probe must not be negative"),
     (["--probe-attempts", "0"], "--probe-attempts must be at least 1"),
+    (["--cover", "-1"], "--cover must not be negative"),
 ])
 def test_bad_input_is_one_line_and_nonzero(tmp_path, args, words):
     r = run_cli("explore", *FAST, *args, "--out", str(tmp_path / "t.pl"),
