@@ -84,8 +84,9 @@ class Session:
     elapsed: list[float] = field(default_factory=list)
     #: Pours already in the pool of each probed (iteration, attempt).
     probed: dict[tuple[int, int], int] = field(default_factory=dict)
-    #: The score of the probe of each (iteration, attempt) not yet in the trace.
-    probes_now: dict[tuple[int, int], float] = field(default_factory=dict)
+    #: The probe of each (iteration, attempt) not yet in the trace, as the
+    #: trace will hold it (its score, and `by` what it was chosen).
+    probes_now: dict[tuple[int, int], dict] = field(default_factory=dict)
 
     @property
     def valid(self) -> np.ndarray:
@@ -317,8 +318,8 @@ class Host:
         # machine read the same score from it
         score = rounded(probe_score(S, samples, s.verdicts(request["antecedents"])))
         passed = score >= PASS
-        if request.get("by", "novelty") == "novelty":    # the forest's record (probe_record)
-            s.probes_now[(int(request["iteration"]), int(request["attempt"]))] = score
+        s.probes_now[(int(request["iteration"]), int(request["attempt"]))] = {
+            "score": score, "by": str(request.get("by", "novelty"))}
         return {"score": score, "pass": passed, "simulations": len(s.params)}
 
     def fewest(self, request: dict) -> dict:
@@ -333,8 +334,7 @@ class Host:
         of the forest's candidates, not those that went where the pours are
         fewest."""
         s = self.need_session()
-        found, probed = (probe_evidence(s.trace) or [(0.0, 0)])[-1]
-        return found + sum(s.probes_now.values()), probed + len(s.probes_now)
+        return probe_evidence([*s.trace, {"probes": list(s.probes_now.values())}])[-1]
 
     def best_plane(self, request: dict) -> dict:
         s = self.need_session()

@@ -64,8 +64,8 @@ def probe_evidence(trace: Sequence[dict]) -> list[tuple[float, int]]:
 
 
 def probe_means(trace: Sequence[dict]) -> list[float | None]:
-    """After each iteration, the mean score of the candidates probed so
-    far; None before the first probe."""
+    """After each iteration, the mean score of the forest's candidates
+    probed so far (probe_evidence); None before the first probe."""
     return [found / probed if probed else None for found, probed in probe_evidence(trace)]
 
 
