@@ -6,7 +6,11 @@ every pour of the exploration (`g<i>_<E>`). Both are learned rules, and a
 scene that both speak of is decided as within one layer: the most specific
 applicable rule wins (a body that holds another's), and between rules whose
 bodies do not hold each other, the higher ranked one: the larger body, then
-the surer verdict (confidence further from one half), then the id. The
+the general layer's (estimated from every pour, where Algorithm 1's rule
+rests on the weighted pours of its antecedent: the two layers' rules for
+the empty body, when the priors were explored, say the same thing, and
+the general one says it better), then the surer verdict (confidence
+further from one half), then the id. The
 engines derive specificity among learned rules themselves; every other pair
 of conflicting rules that one scene can hold together gets an explicit
 `sup/2` fact in rank order. The order is linear, so the superiority
@@ -35,10 +39,12 @@ class Ranked:
     body: tuple[str, ...]
     head: str
     confidence: float
+    general: bool = False
 
     @property
     def rank(self) -> tuple:
-        return rank(self.body, self.confidence, self.id)
+        size, *rest = rank(self.body, self.confidence, self.id)
+        return (size, self.general, *rest)
 
 
 def ranked_rules(theory: Theory, general: General) -> list[Ranked]:
@@ -47,7 +53,7 @@ def ranked_rules(theory: Theory, general: General) -> list[Ranked]:
     conf = {rid: int(v) / 1000 for rid, k, v in theory.provenance if k == "confidence_permille"}
     out = [Ranked(r.id, tuple(sorted(r.body)), r.head, conf.get(r.id, 0.5))
            for r in theory.rules if r.id in theory.learned]
-    out += [Ranked(g.id, tuple(sorted(g.body)), g.head, g.confidence) for g in general.rules]
+    out += [Ranked(g.id, tuple(sorted(g.body)), g.head, g.confidence, True) for g in general.rules]
     return out
 
 
