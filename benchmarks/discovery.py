@@ -35,7 +35,8 @@ second run simulates nothing):
 
 PANTARHEI_BENCH_JUMPS sets the discovering curiosity's random candidates
 per step (`--jumps`; default the project's), PANTARHEI_BENCH_COVER its
-`--cover` (default the project's, 0), and PANTARHEI_BENCH_RULES the
+`--cover` (default the project's, 0), PANTARHEI_BENCH_PRIOR its `--prior`
+(default the project's, 0), and PANTARHEI_BENCH_RULES the
 budget in batches of 31 (by default the project's 25, the paper's scale;
 every method gets as many pours).
 """
@@ -121,8 +122,9 @@ def curiosity(mode: str, seed: int, rules: int, tmp: Path, oracle: str, store: P
     inline = oracle == "synthetic"
     jumps = int(os.environ.get("PANTARHEI_BENCH_JUMPS", Options().jumps))
     cover = int(os.environ.get("PANTARHEI_BENCH_COVER", Options().cover))
+    prior = int(os.environ.get("PANTARHEI_BENCH_PRIOR", Options().prior))
     r = explore(Options(curiosity=mode, oracle=oracle, max_rules=rules, seed=seed, out=out,
-                        jumps=jumps, cover=cover, store=tmp / f"{mode}-{seed}.sqlite" if inline else store,
+                        jumps=jumps, cover=cover, prior=prior, store=tmp / f"{mode}-{seed}.sqlite" if inline else store,
                         progress=False, executor="inline" if inline else "local",
                         general=False))
     trace = [json.loads(line) for line in out.with_suffix(".trace.jsonl").read_text().splitlines()]

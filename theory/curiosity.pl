@@ -40,7 +40,8 @@ The loop's state is the term st(Iteration, Explored, ANew, SetAside): Explored l
 ant(Id, Props, Parent, Via) in the order of exploration, ANew lists
 cand(Props, Parent, Via) in the order they are popped (for the paper's
 curiosity a queue, the oldest first; for the discovering one the most novel
-first). Via is `initial`; via(Expectation, Param, Sign) for the plane,
+first). Via is `initial`; `prior` for the empty antecedent explored
+right after a_0 (prior/1); via(Expectation, Param, Sign) for the plane,
 parameter and sign (up or down) that produced it; `near` for a neighbour of
 the antecedent explored before it; `jump` for a random valid antecedent; or
 more(Id, K) for the K-th more batch of an explored antecedent. SetAside
@@ -75,6 +76,12 @@ Two curiosities share the loop (option curiosity/1):
     not show a new, reproducible consequent the candidate is set aside and
     the next one probed (choose/6). The budget is then in pours: max_rules
     batches' worth, batches and probes together.
+    With prior(1) (0 by default) the second batch goes to the priors: the
+    empty antecedent, every parameter drawn from its prior, unprobed and
+    unranked. A question leaves parameters unsaid, and they follow their
+    priors; the antecedents curiosity explores set nearly every parameter
+    away from them, so without this batch the general rules learned from
+    the pours (bridge/learning/) answer every question by extrapolation.
 */
 
 :- use_module(library(apply)).
@@ -140,6 +147,9 @@ load_defaults :-
 %     - cover(+N)*: the last probe of a step goes to the candidate whose
 %       rarest proposition the fewest pours so far hold, when fewer than N
 %       do; 0 for never (discover)
+%     - prior(+B)*: 1 to explore the priors (the empty antecedent, every
+%       parameter from its prior, as a question's unsaid ones) right after
+%       a_0, 0 not to (discover)
 %     - seed(+S)*: seed of every random choice
 %     - initial(+Props)*: a_0 (default_initial/1)
 %     - breadth(+K)*: the paper's modify uses the K largest gradient components
@@ -226,6 +236,10 @@ settings(Options, S) :-
     (   integer(Cover), Cover >= 0 -> true
     ;   throw(exploration_error("cover: expected a whole number >= 0"))
     ),
+    option_default(prior, Options, Prior),
+    (   memberchk(Prior, [0, 1]) -> true
+    ;   throw(exploration_error("prior: expected 0 or 1"))
+    ),
     option_default(novelty, Options, Novelty0),
     (   number(Novelty0), Novelty0 >= 0, Novelty0 =< 1 -> Novelty is float(Novelty0)
     ;   throw(exploration_error("novelty: expected a number from 0 to 1"))
@@ -271,7 +285,7 @@ settings(Options, S) :-
            resume:Resume, executor:Executor, progress:Progress, out:Out,
            curiosity:Curiosity, permutations:Permutations, resample:Resample,
            novelty:Novelty, queue:Queue, jumps:Jumps, probe:Probe,
-           probe_attempts:Attempts, cover:Cover},
+           probe_attempts:Attempts, cover:Cover, prior:Prior},
     optional(store, Options, S0, S1),
     optional(workers, Options, S1, S2),
     optional(ray_address, Options, S2, S3),
@@ -328,7 +342,11 @@ check_initial(Props, Set) :-
 initial_state(Begun, Settings, S) :-
     (   get_dict(state, Begun, Text), Text \== '', Text \== ""
     ->  term_string(S, Text)
-    ;   S = st(0, [], [cand(Settings.initial, none, initial)], [])
+    ;   (   Settings.curiosity == discover, Settings.prior =:= 1
+        ->  Prior = [cand([], none, prior)]
+        ;   Prior = []
+        ),
+        S = st(0, [], [cand(Settings.initial, none, initial)|Prior], [])
     ).
 
 % ----------------------------------------------------------------------
@@ -465,6 +483,7 @@ unprobed(cand(_, _, Via), Settings) :-
     (   Settings.curiosity \== discover
     ;   Settings.probe =:= 0
     ;   Via = initial
+    ;   Via = prior
     ;   Via = more(_, _)
     ), !.
 
@@ -573,7 +592,8 @@ more(Added, Settings, Id, Props, Parent, Via, More) :-
 %   (Rest). Each gets its novelty (exploration_predict); Queue, the new
 %   A_new, holds the most novel of those that reach the novelty level, at
 %   most `queue` of them (ties in the order above). Added are the new ones
-%   of Queue, in its order.
+%   of Queue, in its order. The priors (Via `prior`, queued after a_0) stay
+%   first, unranked: they are explored whatever the forest predicts.
 discover_queue(Best, Explored, Id, Props, Away, Rest, Settings, I, Added, Queue) :-
     exclusions(Explored, Away, Exclude0),
     foldl(follow(Explored), Best.followed, Exclude0-[], Exclude1-RevFollowed),
@@ -583,9 +603,11 @@ discover_queue(Best, Explored, Id, Props, Away, Rest, Settings, I, Added, Queue)
     append(Exclude1, Near, Exclude2),
     jumps(Settings, I, Exclude2, Far),
     findall(cand(P, none, jump), member(P, Far), Jumps),
-    append([Followed, Neighbours, Jumps, Rest], Pool),
+    partition([cand(_, _, V)]>>(V == prior), Rest, Fixed, Ranked),
+    append([Followed, Neighbours, Jumps, Ranked], Pool),
+    length(Fixed, NFixed),
     (   Pool == []
-    ->  Added = [], Queue = []
+    ->  Added = [], Queue = Fixed
     ;   maplist(entry, Explored, Entries),
         findall(P, member(cand(P, _, _), Pool), Cands),
         call_bridge(exploration_predict, _{antecedents:Entries, candidates:Cands}, Reply),
@@ -595,11 +617,12 @@ discover_queue(Best, Explored, Id, Props, Away, Rest, Settings, I, Added, Queue)
         keysort(Keyed, Sorted),
         pairs_values(Sorted, Queue0),
         length(Queue0, Len),
-        Keep is min(Len, Settings.queue),
-        length(Queue, Keep),
-        append(Queue, _, Queue0),
+        Keep is max(0, min(Len, Settings.queue - NFixed)),
+        length(Queue1, Keep),
+        append(Queue1, _, Queue0),
+        append(Fixed, Queue1, Queue),
         append([Followed, Neighbours, Jumps], New),
-        include([C]>>memberchk(C, New), Queue, Added)
+        include([C]>>memberchk(C, New), Queue1, Added)
     ).
 
 %   jumps(+Settings, +Iteration, +Exclude, -New): Settings.jumps valid
@@ -845,7 +868,8 @@ setting_facts(Settings, Reply, Stop, Explored, Left, Facts) :-
                       setting(jumps, Settings.jumps),
                       setting(probe, Settings.probe),
                       setting(probe_attempts, Settings.probe_attempts),
-                      setting(cover, Settings.cover) ]
+                      setting(cover, Settings.cover),
+                      setting(prior, Settings.prior) ]
     ;   Threshold = [ setting(threshold_permille, Permille) ]
     ),
     append([ [ setting(oracle, Settings.oracle),
@@ -905,6 +929,7 @@ outcome_facts(AId, Props, Parent, Via, Q, O, Facts, Tail) :-
     append(Fs, Tail, Facts).
 
 via_facts(_, initial, []).
+via_facts(_, prior, []).
 via_facts(_, near, []).
 via_facts(_, jump, []).
 via_facts(Id, via(E, X, Sign), [ provenance(Id, followed, E),

@@ -123,6 +123,30 @@ test(most_novel_first_above_the_level_up_to_the_queue,
                              _{seed:1, samples:3, queue:5, jumps:3}, 1, _, Queue3),
     Queue3 == [cand(Below, a1, near), cand(High, a1, near)].
 
+% The priors (the empty antecedent, queued after a_0) stay first in A_new,
+% whatever the forest predicts of them, and count in the queue's length.
+test(the_priors_stay_first_and_unranked,
+     [ setup(assertz((bridge:exploration_predict(Req, Reply) :- fake_predict(Req, Reply)))),
+       cleanup(retractall(bridge:exploration_predict(_, _))) ]) :-
+    A = [pour_mid_height, pour_steeply_tilted],
+    Explored = [ant(a1, A, none, initial)],
+    Prior = cand([], none, prior),
+    curiosity:discover_queue(_{followed:[]}, Explored, a1, A, [Prior], [Prior],
+                             _{seed:1, samples:3, queue:3, jumps:3}, 1, Added, Queue),
+    Queue == [Prior, cand([pour_low, pour_steeply_tilted], a1, near),
+              cand([pour_below_rim, pour_steeply_tilted], a1, near)],
+    Added == [cand([pour_low, pour_steeply_tilted], a1, near),
+              cand([pour_below_rim, pour_steeply_tilted], a1, near)],
+    curiosity:discover_queue(_{followed:[]}, Explored, a1, A, [Prior], [Prior],
+                             _{seed:1, samples:3, queue:1, jumps:3}, 1, [], [Prior]).
+
+test(the_priors_are_queued_after_a0_only_when_asked) :-
+    Settings = _{curiosity:discover, initial:[pour_low], prior:1},
+    curiosity:initial_state(_{}, Settings, st(0, [], ANew, [])),
+    ANew == [cand([pour_low], none, initial), cand([], none, prior)],
+    curiosity:initial_state(_{}, Settings.put(prior, 0), st(0, [], [_], [])),
+    curiosity:initial_state(_{}, Settings.put(curiosity, paper), st(0, [], [_], [])).
+
 %   A stand-in for the bridge's novelty, with known answers: pouring low is
 %   the most novel, below the rim next, pouring high a little; nothing else
 %   reaches the level (0.1).
@@ -189,7 +213,7 @@ test(explore_without_the_bridge_says_so, [throws(exploration_error(_))]) :-
     explore([oracle(synthetic), max_rules(1)]).
 
 test(bad_option, [forall(member(O, [max_rules(0), novelty(2), queue(0), jumps(0), probe(-1),
-                                    probe(two), probe_attempts(0)])),
+                                    probe(two), probe_attempts(0), prior(2), prior(-1)])),
                   true(R = error(_))]) :-
     explore_result([O], R).
 

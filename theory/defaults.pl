@@ -19,7 +19,10 @@
 % rest; a candidate whose probe shows no new, reproducible consequent is
 % set aside for the next, at most probe_attempts candidates a step; 0: no
 % probes; the last of them goes to the candidate whose rarest proposition
-% fewer than cover pours so far hold, the fewest, 0: never), the ridge of the plane fits, the seed, how many gradient
+% fewer than cover pours so far hold, the fewest, 0: never), whether
+% (1) or not (0) the discovering curiosity explores the priors (the empty
+% antecedent: every parameter drawn from its prior, as the parameters a
+% question leaves unsaid are) right after a_0, the ridge of the plane fits, the seed, how many gradient
 % components the paper's modify follows, and how an antecedent's
 % consequent is qualified (weighted vote or the paper's argmax).
 default(curiosity, discover).
@@ -34,6 +37,7 @@ default(jumps, 31).
 default(probe, 8).
 default(probe_attempts, 3).
 default(cover, 0).
+default(prior, 0).
 default(threshold_permille, 100).
 default(ridge_permille, 1000).
 default(seed, 1).

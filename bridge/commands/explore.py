@@ -55,6 +55,10 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="discover: the last probe of a step goes to the candidate whose rarest "
                         "proposition the fewest pours so far hold, when fewer than this many do; "
                         f"0: never (default {d['cover']})")
+    p.add_argument("--prior", type=int, choices=(0, 1), default=d["prior"],
+                   help="discover: 1 to explore the priors (nothing said: every parameter from "
+                        "its prior, as a question's unsaid ones) right after a_0, 0 not to "
+                        f"(default {d['prior']})")
     p.add_argument("--permutations", type=int, default=d["permutations"],
                    help=f"discover: shuffles of the permutation test (default {d['permutations']})")
     options.add_seed(p)
@@ -112,7 +116,8 @@ def explore(args: argparse.Namespace) -> int:
     opts = Options(
         curiosity=args.curiosity, permutations=args.permutations, resample=args.resample,
         novelty=args.novelty, queue=args.queue, jumps=args.jumps, probe=args.probe,
-        probe_attempts=args.probe_attempts, cover=args.cover, oracle=args.oracle,
+        probe_attempts=args.probe_attempts, cover=args.cover, prior=args.prior,
+        oracle=args.oracle,
         max_rules=args.max_rules, samples=args.samples,
         threshold=args.threshold, seed=args.seed, initial=initial, breadth=args.breadth,
         ridge=args.ridge, qualify=args.qualify, out=Path(args.out), store=Path(args.store),

@@ -47,6 +47,8 @@ class Options:
     #: discover: the last probe of a step goes where fewer than this many pours
     #: hold the candidate's rarest proposition, the fewest (0: never).
     cover: int = _default("cover")
+    #: discover: 1 to explore the priors (the empty antecedent) right after a_0.
+    prior: int = _default("prior")
     ridge: float = _default("ridge")
     seed: int = _default("seed")
     initial: Sequence[str] | None = None
@@ -71,6 +73,7 @@ class Options:
                  f"novelty({float(self.novelty)!r})", f"queue({int(self.queue)})",
                  f"jumps({int(self.jumps)})", f"probe({int(self.probe)})",
                  f"probe_attempts({int(self.probe_attempts)})", f"cover({int(self.cover)})",
+                 f"prior({int(self.prior)})",
                  f"seed({int(self.seed)})",
                  f"breadth({int(self.breadth)})", f"ridge({float(self.ridge)!r})", f"qualify({prolog_quote(self.qualify)})",
                  f"out({prolog_quote(str(Path(self.out).absolute()))})",

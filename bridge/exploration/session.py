@@ -232,6 +232,8 @@ class Host:
                               probe_attempts=int(request["probe_attempts"]))
                 if int(request.get("cover", 0)):   # runs without coverage keep their keys
                     course.update(cover=int(request["cover"]))
+            if int(request.get("prior", 0)):       # runs without the priors keep their keys
+                course.update(prior=int(request["prior"]))
         run = run_key(course)
         store_path = Path(str(request.get("store") or DEFAULT_STORE))
         try:

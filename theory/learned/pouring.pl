@@ -28,6 +28,7 @@ setting(jumps, 31).
 setting(probe, 8).
 setting(probe_attempts, 3).
 setting(cover, 0).
+setting(prior, 0).
 setting(breadth, 3).
 setting(ridge_permille, 1000).
 setting(qualify, weighted).

@@ -25,6 +25,7 @@ FAST = ["--oracle", "synthetic", "--executor", "inline", "--no-progress"]
     (["--probe", "-1"], "--probe must not be negative"),
     (["--probe-attempts", "0"], "--probe-attempts must be at least 1"),
     (["--cover", "-1"], "--cover must not be negative"),
+    (["--prior", "2"], "invalid choice"),
 ])
 def test_bad_input_is_one_line_and_nonzero(tmp_path, args, words):
     r = run_cli("explore", *FAST, *args, "--out", str(tmp_path / "t.pl"),
