@@ -38,8 +38,26 @@ def what_happens(theory: Theory, props: list[str],
     out = []
     for line in r["Ss"]:
         exp, value, rule, reason = prolog_text(line).split("\t", 3)
-        out.append(Answer(exp, value, rule, reason))
+        out.append(Answer(exp, value, _general_twin(theory, rule), reason))
     return out
+
+
+def _general_twin(theory: Theory, rule_id: str) -> str:
+    """The rule to name for a conclusion: where the deciding rule is one of
+    Algorithm 1's and the general layer has a rule with the same body and
+    head (the empty body, when the priors were explored), the general one,
+    which ranks above it (bridge/learning/layers.py) and whose evidence is
+    every pour."""
+    general = {rid for rid, k, v in theory.provenance if k == "layer" and v == "general"}
+    if rule_id in general:
+        return rule_id
+    try:
+        r = theory.rule(rule_id)
+    except KeyError:
+        return rule_id
+    twins = [g.id for g in theory.rules
+             if g.id in general and g.head == r.head and set(g.body) == set(r.body)]
+    return twins[0] if twins else rule_id
 
 
 def explain(theory: Theory, props: list[str], literal: str,
