@@ -76,7 +76,7 @@ Two curiosities share the loop (option curiosity/1):
     not show a new, reproducible consequent the candidate is set aside and
     the next one probed (choose/6). The budget is then in pours: max_rules
     batches' worth, batches and probes together.
-    With prior(1) (0 by default) the second batch goes to the priors: the
+    With prior(1) (the default) the second batch goes to the priors: the
     empty antecedent, every parameter drawn from its prior, unprobed and
     unranked. A question leaves parameters unsaid, and they follow their
     priors; the antecedents curiosity explores set nearly every parameter

@@ -37,7 +37,7 @@ default(jumps, 31).
 default(probe, 8).
 default(probe_attempts, 3).
 default(cover, 0).
-default(prior, 0).
+default(prior, 1).
 default(threshold_permille, 100).
 default(ridge_permille, 1000).
 default(seed, 1).

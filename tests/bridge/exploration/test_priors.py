@@ -1,4 +1,4 @@
-"""The priors explored after a_0 (`--prior 1`): the scene where nothing is
+"""The priors explored after a_0 (`--prior 1`, the default): the scene where nothing is
 said, every parameter drawn from its prior, as the parameters a question
 leaves unsaid are; the general rules then learn from pours where the
 questions are asked."""
@@ -37,6 +37,16 @@ def test_the_priors_are_explored_after_a0_and_drawn_again_by_the_evaluation(tmp_
     assert "setting(prior, 1)." in text
     assert "provenance(r2_no_spill, antecedent, a2)." in text
     assert "body(r2_" not in text
+
+
+def test_by_default_the_priors_are_explored_after_a0(tmp_path):
+    from pantarhei.bridge.exploration import loop as exploration
+    from pantarhei.bridge.exploration.loop import Options
+
+    r = exploration.explore(Options(oracle="synthetic", max_rules=3, out=tmp_path / "d.pl",
+                                    store=tmp_path / "d.sqlite", progress=False,
+                                    executor="inline", general=False))
+    assert [t["via"] for t in trace(r)][:2] == ["initial", "prior"]
 
 
 def test_the_priors_take_the_second_step_and_leave_a0s_as_it_was(tmp_path):
