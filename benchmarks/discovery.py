@@ -36,7 +36,7 @@ second run simulates nothing):
 PANTARHEI_BENCH_JUMPS sets the discovering curiosity's random candidates
 per step (`--jumps`; default the project's), PANTARHEI_BENCH_COVER its
 `--cover` (default the project's, 0), PANTARHEI_BENCH_PRIOR its `--prior`
-(default the project's, 0), and PANTARHEI_BENCH_RULES the
+(default the project's, 1), and PANTARHEI_BENCH_RULES the
 budget in batches of 31 (by default the project's 25, the paper's scale;
 every method gets as many pours).
 """

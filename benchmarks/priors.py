@@ -31,13 +31,15 @@ REPORT = Path(__file__).resolve().parents[1] / "report" / "evaluation.json"
 
 def measure(path: Path, pours: int, seed: int, report: Path) -> dict:
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen
-    from pantarhei.bridge.evaluation.measures import question_scores, verdicts
+    from pantarhei.bridge.evaluation.measures import question_misses, question_scores, verdicts
     from pantarhei.bridge.evaluation.pipeline import exploration_draws, read_learned
     from pantarhei.bridge.evaluation.rule_building import predict
     from pantarhei.bridge.exploration.simulation import open_simulator
     from pantarhei.bridge.learning.generalize import Meaning, Settings
+    from pantarhei.bridge.theories.loading import load
     from pantarhei.oracle.generative import normalise, sample
     from pantarhei.oracle.store import DEFAULT_STORE
+    from pantarhei.theory.lexicon import load_vocabulary
 
     from benchmarks.discovery import theory_consequents
 
@@ -53,9 +55,8 @@ def measure(path: Path, pours: int, seed: int, report: Path) -> dict:
         sim.close()
     ok, okq = np.all(np.isfinite(S), axis=1), np.all(np.isfinite(SQ), axis=1)
     model = Meaning(P[ok], verdicts(S[ok]), Settings(seed=int(learned.setting("seed", 1))))
-    X, truth = normalise(Q[okq]), verdicts(SQ[okq])
-    expected = np.column_stack([np.full(len(X), m) if isinstance(m, float) else m.predict_proba(X)[:, 1]
-                                for m in model.models])
+    truth = verdicts(SQ[okq])
+    expected = model.shares(normalise(Q[okq]))
     of = theory_consequents(path)
     out = {"explored": len(of), "theory": len(set(of.values())), "seen": behaviours_seen(S),
            "pours": len(P),
@@ -66,16 +67,11 @@ def measure(path: Path, pours: int, seed: int, report: Path) -> dict:
     ev = json.loads(report.read_text(encoding="utf-8"))["general"]
     key, clear = np.array(ev["key"]), np.array(ev["clear"])
     asked = [tuple(q["antecedent"]) for q in ev["questions"]]
-    from pantarhei.bridge.theories.loading import load
-
     answers = predict(load([path]), asked)
     out["questions"] = question_scores(answers, key, clear)
-    from pantarhei.theory.lexicon import load_vocabulary
-
     names = load_vocabulary().expectation_names
-    out["wrong"] = [f"{q['text']}: {names[k]}" for i, q in enumerate(ev["questions"])
-                    for k in range(len(names))
-                    if clear[i][k] and answers[i][k] >= 0 and bool(answers[i][k]) != bool(key[i][k])]
+    out["wrong"] = [f"{q['text']}: {names[k]}" for q, (wrong, _) in
+                    zip(ev["questions"], question_misses(answers, key, clear)) for k in wrong]
     return out
 
 

@@ -136,6 +136,17 @@ def question_key(S: np.ndarray, of: np.ndarray, n_questions: int) -> tuple[np.nd
     return share >= 0.5, (share >= 0.75) | (share <= 0.25)
 
 
+def question_misses(answers, key, clear) -> list[tuple[list[int], list[int]]]:
+    """Per question: the expectations of its clear cases the answers get
+    wrong, and those they leave undecided (answers HOLDS/FAILS/UNKNOWN)."""
+    out = []
+    for a, k, c in zip(answers, key, clear):
+        wrong = [e for e in range(len(a)) if c[e] and a[e] != UNKNOWN and bool(a[e]) != bool(k[e])]
+        open_ = [e for e in range(len(a)) if c[e] and a[e] == UNKNOWN]
+        out.append((wrong, open_))
+    return out
+
+
 def question_scores(predictions: np.ndarray, key: np.ndarray, clear: np.ndarray) -> dict[str, float]:
     """Coverage (decided among the clear cases) and accuracy (right among
     the decided clear cases) of predictions of the questions."""

@@ -16,6 +16,7 @@ from typing import Sequence
 
 from pantarhei.theory.lexicon import load_vocabulary
 
+from pantarhei.bridge.evaluation.measures import question_misses
 from pantarhei.bridge.evaluation.pipeline import Evaluation
 from pantarhei.bridge.evaluation.plots import (SET_NAMES, plot_behaviours, plot_expectations,
                                                plot_heldout)
@@ -136,12 +137,9 @@ def general_section(ev: Evaluation) -> list[str]:
           "wrong or leaves open are named):", "", "| question | clear | wrong | undecided |",
           "|---|---|---|---|"]
     ans, key, clear = g["shipped"]["answers"], g["key"], g["clear"]
-    for i, q in enumerate(g["questions"]):
-        wrong = [names[k] for k in range(len(names)) if clear[i][k] and ans[i][k] != -1
-                 and bool(ans[i][k]) != bool(key[i][k])]
-        open_ = [names[k] for k in range(len(names)) if clear[i][k] and ans[i][k] == -1]
-        L.append(f"| {q['text']} | {sum(clear[i])} | {', '.join(wrong) or '-'} | "
-                 f"{', '.join(open_) or '-'} |")
+    for i, (q, (wrong, open_)) in enumerate(zip(g["questions"], question_misses(ans, key, clear))):
+        L.append(f"| {q['text']} | {sum(clear[i])} | {', '.join(names[k] for k in wrong) or '-'} | "
+                 f"{', '.join(names[k] for k in open_) or '-'} |")
     L += ["", "The general rules learned from curiosity's pours:", "",
           "| rule | when | then | pours (kept of described) | confidence |", "|---|---|---|---|---|"]
     for r in g["curiosity"]["rules"]:

@@ -257,11 +257,16 @@ class Meaning:
                 continue
         if not rows:
             return out
-        X = normalise(np.vstack(rows))
-        for k, m in enumerate(self.models):
-            p = np.full(len(X), m) if isinstance(m, float) else m.predict_proba(X)[:, 1]
-            out[ok, k] = p.reshape(len(ok), n).mean(axis=1)
+        p = self.shares(normalise(np.vstack(rows)))
+        for k in range(len(self.models)):
+            out[ok, k] = p[:, k].reshape(len(ok), n).mean(axis=1)
         return out
+
+    def shares(self, X: np.ndarray) -> np.ndarray:
+        """len(X) x 9: the chance that each expectation holds, per pour
+        (rows of normalised parameters)."""
+        return np.column_stack([np.full(len(X), m) if isinstance(m, float) else m.predict_proba(X)[:, 1]
+                                for m in self.models])
 
 
 # -- the learner -----------------------------------------------------------------

@@ -35,20 +35,20 @@ def what_happens(theory: Theory, props: list[str],
             "(V == fails -> L = neg(E) ; L = E), queries:explain_brief(Scene, L, Sem, T), "
             "format(string(S), '~w\\t~w\\t~w\\t~s', [E, V, R, T])), Ss)")
     r = e.once(goal, Scene=list(props))
+    general = {rid for rid, k, v in theory.provenance if k == "layer" and v == "general"}
     out = []
     for line in r["Ss"]:
         exp, value, rule, reason = prolog_text(line).split("\t", 3)
-        out.append(Answer(exp, value, _general_twin(theory, rule), reason))
+        out.append(Answer(exp, value, _general_twin(theory, general, rule), reason))
     return out
 
 
-def _general_twin(theory: Theory, rule_id: str) -> str:
+def _general_twin(theory: Theory, general: set[str], rule_id: str) -> str:
     """The rule to name for a conclusion: where the deciding rule is one of
     Algorithm 1's and the general layer has a rule with the same body and
     head (the empty body, when the priors were explored), the general one,
     which ranks above it (bridge/learning/layers.py) and whose evidence is
-    every pour."""
-    general = {rid for rid, k, v in theory.provenance if k == "layer" and v == "general"}
+    every pour. `general`: the ids of the general layer's rules."""
     if rule_id in general:
         return rule_id
     try:
