@@ -41,7 +41,7 @@ ant(Id, Props, Parent, Via) in the order of exploration, ANew lists
 cand(Props, Parent, Via) in the order they are popped (for the paper's
 curiosity a queue, the oldest first; for the discovering one the most novel
 first). Via is `initial`; `prior` for the empty antecedent explored
-right after a_0 (prior/1); via(Expectation, Param, Sign) for the plane,
+last (prior/1); via(Expectation, Param, Sign) for the plane,
 parameter and sign (up or down) that produced it; `near` for a neighbour of
 the antecedent explored before it; `jump` for a random valid antecedent; or
 more(Id, K) for the K-th more batch of an explored antecedent. SetAside
@@ -76,12 +76,15 @@ Two curiosities share the loop (option curiosity/1):
     not show a new, reproducible consequent the candidate is set aside and
     the next one probed (choose/6). The budget is then in pours: max_rules
     batches' worth, batches and probes together.
-    With prior(1) (the default) the second batch goes to the priors: the
-    empty antecedent, every parameter drawn from its prior, unprobed and
-    unranked. A question leaves parameters unsaid, and they follow their
-    priors; the antecedents curiosity explores set nearly every parameter
-    away from them, so without this batch the general rules learned from
-    the pours (bridge/learning/) answer every question by extrapolation.
+    With prior(1) (the default) the last batch of the budget (or the
+    next, when A_new is empty) goes to the priors: the empty antecedent,
+    every parameter drawn from its prior, unprobed and unranked. A question
+    leaves parameters unsaid, and they follow their priors; the antecedents
+    curiosity explores set nearly every parameter away from them, so
+    without this batch the general rules learned from the pours
+    (bridge/learning/) answer every question by extrapolation. Coming last,
+    it leaves the curiosity's course before it as it is without the priors
+    (the budget less one batch).
 */
 
 :- use_module(library(apply)).
@@ -148,8 +151,8 @@ load_defaults :-
 %       rarest proposition the fewest pours so far hold, when fewer than N
 %       do; 0 for never (discover)
 %     - prior(+B)*: 1 to explore the priors (the empty antecedent, every
-%       parameter from its prior, as a question's unsaid ones) right after
-%       a_0, 0 not to (discover)
+%       parameter from its prior, as a question's unsaid ones) with the
+%       last batch of the budget, 0 not to (discover)
 %     - seed(+S)*: seed of every random choice
 %     - initial(+Props)*: a_0 (default_initial/1)
 %     - breadth(+K)*: the paper's modify uses the K largest gradient components
@@ -342,11 +345,7 @@ check_initial(Props, Set) :-
 initial_state(Begun, Settings, S) :-
     (   get_dict(state, Begun, Text), Text \== '', Text \== ""
     ->  term_string(S, Text)
-    ;   (   Settings.curiosity == discover, Settings.prior =:= 1
-        ->  Prior = [cand([], none, prior)]
-        ;   Prior = []
-        ),
-        S = st(0, [], [cand(Settings.initial, none, initial)|Prior], [])
+    ;   S = st(0, [], [cand(Settings.initial, none, initial)], [])
     ).
 
 % ----------------------------------------------------------------------
@@ -359,18 +358,48 @@ initial_state(Begun, Settings, S) :-
 %   another step (Stop = max_rules): as many antecedents for the paper's
 %   curiosity, which samples each once; the discovering one may sample an
 %   undecided antecedent again and spends pours on probes, and so explores
-%   at most as many with the same budget of pours.
+%   at most as many with the same budget of pours. With prior(1) the
+%   priors take the batch before the step that could exceed the budget
+%   with it, or the next when A_new is empty (priors_pending/2).
 loop(S0, Settings, S, Stop) :-
-    S0 = st(_, _, ANew, _),
-    (   ANew == []
-    ->  S = S0, Stop = a_new_empty
-    ;   spent(S0, Settings, Spent),
-        step_cost(Settings, Most),
-        Spent + Most > Settings.max_rules * Settings.samples
-    ->  S = S0, Stop = max_rules
+    next_move(S0, Settings, Move),
+    (   Move = stop(Stop)
+    ->  S = S0
+    ;   Move == priors
+    ->  S0 = st(I, Explored, ANew, SetAside),
+        step(st(I, Explored, [cand([], none, prior)|ANew], SetAside), Settings, S1),
+        loop(S1, Settings, S, Stop)
     ;   step(S0, Settings, S1),
         loop(S1, Settings, S, Stop)
     ).
+
+%   next_move(+State, +Settings, -Move): what the loop does next: `priors`
+%   (their batch), `step` (the next of A_new) or stop(Why).
+next_move(S0, Settings, Move) :-
+    S0 = st(_, Explored, ANew, _),
+    spent(S0, Settings, Spent),
+    step_cost(Settings, Most),
+    Budget is Settings.max_rules * Settings.samples,
+    (   priors_pending(Explored, Settings),
+        Spent + Settings.samples =< Budget,
+        ( ANew == [] ; Spent + Most + Settings.samples > Budget )
+    ->  Move = priors
+    ;   ANew == []
+    ->  Move = stop(a_new_empty)
+    ;   Spent + Most > Budget
+    ->  Move = stop(max_rules)
+    ;   Move = step
+    ).
+
+%   priors_pending(+Explored, +Settings): the priors are to be explored
+%   (prior(1)) and have not been yet. Their batch is the last of the
+%   budget, or comes when A_new is empty: their pours then teach the
+%   general rules without changing the course of the curiosity before
+%   them.
+priors_pending(Explored, Settings) :-
+    Settings.curiosity == discover,
+    Settings.prior =:= 1,
+    \+ memberchk(ant(_, [], _, prior), Explored).
 
 %   spent(+State, +Settings, -Pours): the pours spent so far: a batch per
 %   iteration and a probe per candidate set aside after its probe.
@@ -592,8 +621,7 @@ more(Added, Settings, Id, Props, Parent, Via, More) :-
 %   (Rest). Each gets its novelty (exploration_predict); Queue, the new
 %   A_new, holds the most novel of those that reach the novelty level, at
 %   most `queue` of them (ties in the order above). Added are the new ones
-%   of Queue, in its order. The priors (Via `prior`, queued after a_0) stay
-%   first, unranked: they are explored whatever the forest predicts.
+%   of Queue, in its order.
 discover_queue(Best, Explored, Id, Props, Away, Rest, Settings, I, Added, Queue) :-
     exclusions(Explored, Away, Exclude0),
     foldl(follow(Explored), Best.followed, Exclude0-[], Exclude1-RevFollowed),
@@ -603,11 +631,9 @@ discover_queue(Best, Explored, Id, Props, Away, Rest, Settings, I, Added, Queue)
     append(Exclude1, Near, Exclude2),
     jumps(Settings, I, Exclude2, Far),
     findall(cand(P, none, jump), member(P, Far), Jumps),
-    partition([cand(_, _, V)]>>(V == prior), Rest, Fixed, Ranked),
-    append([Followed, Neighbours, Jumps, Ranked], Pool),
-    length(Fixed, NFixed),
+    append([Followed, Neighbours, Jumps, Rest], Pool),
     (   Pool == []
-    ->  Added = [], Queue = Fixed
+    ->  Added = [], Queue = []
     ;   maplist(entry, Explored, Entries),
         findall(P, member(cand(P, _, _), Pool), Cands),
         call_bridge(exploration_predict, _{antecedents:Entries, candidates:Cands}, Reply),
@@ -617,12 +643,11 @@ discover_queue(Best, Explored, Id, Props, Away, Rest, Settings, I, Added, Queue)
         keysort(Keyed, Sorted),
         pairs_values(Sorted, Queue0),
         length(Queue0, Len),
-        Keep is max(0, min(Len, Settings.queue - NFixed)),
-        length(Queue1, Keep),
-        append(Queue1, _, Queue0),
-        append(Fixed, Queue1, Queue),
+        Keep is min(Len, Settings.queue),
+        length(Queue, Keep),
+        append(Queue, _, Queue0),
         append([Followed, Neighbours, Jumps], New),
-        include([C]>>memberchk(C, New), Queue1, Added)
+        include([C]>>memberchk(C, New), Queue, Added)
     ).
 
 %   jumps(+Settings, +Iteration, +Exclude, -New): Settings.jumps valid

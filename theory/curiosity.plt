@@ -123,29 +123,32 @@ test(most_novel_first_above_the_level_up_to_the_queue,
                              _{seed:1, samples:3, queue:5, jumps:3}, 1, _, Queue3),
     Queue3 == [cand(Below, a1, near), cand(High, a1, near)].
 
-% The priors (the empty antecedent, queued after a_0) stay first in A_new,
-% whatever the forest predicts of them, and count in the queue's length.
-test(the_priors_stay_first_and_unranked,
-     [ setup(assertz((bridge:exploration_predict(Req, Reply) :- fake_predict(Req, Reply)))),
-       cleanup(retractall(bridge:exploration_predict(_, _))) ]) :-
-    A = [pour_mid_height, pour_steeply_tilted],
-    Explored = [ant(a1, A, none, initial)],
-    Prior = cand([], none, prior),
-    curiosity:discover_queue(_{followed:[]}, Explored, a1, A, [Prior], [Prior],
-                             _{seed:1, samples:3, queue:3, jumps:3}, 1, Added, Queue),
-    Queue == [Prior, cand([pour_low, pour_steeply_tilted], a1, near),
-              cand([pour_below_rim, pour_steeply_tilted], a1, near)],
-    Added == [cand([pour_low, pour_steeply_tilted], a1, near),
-              cand([pour_below_rim, pour_steeply_tilted], a1, near)],
-    curiosity:discover_queue(_{followed:[]}, Explored, a1, A, [Prior], [Prior],
-                             _{seed:1, samples:3, queue:1, jumps:3}, 1, [], [Prior]).
-
-test(the_priors_are_queued_after_a0_only_when_asked) :-
-    Settings = _{curiosity:discover, initial:[pour_low], prior:1},
-    curiosity:initial_state(_{}, Settings, st(0, [], ANew, [])),
-    ANew == [cand([pour_low], none, initial), cand([], none, prior)],
-    curiosity:initial_state(_{}, Settings.put(prior, 0), st(0, [], [_], [])),
-    curiosity:initial_state(_{}, Settings.put(curiosity, paper), st(0, [], [_], [])).
+% The priors (the empty antecedent) take the last batch of the budget, or
+% the next when A_new is empty, once; a_0 alone starts A_new.
+test(the_priors_take_the_last_batch_once) :-
+    Settings = _{curiosity:discover, initial:[pour_low], prior:1, max_rules:4,
+                 samples:10, probe:2, probe_attempts:3},
+    curiosity:initial_state(_{}, Settings, S0),
+    S0 == st(0, [], [cand([pour_low], none, initial)], []),
+    C = cand([pour_high], none, jump),
+    A1 = ant(a1, [pour_low], none, initial),
+    % 10 spent: a step (at most 14) and the priors (10) fit in 40
+    curiosity:next_move(st(1, [A1], [C], []), Settings, step),
+    % 20 spent: a step and the priors would not, the priors alone do
+    curiosity:next_move(st(2, [A1], [C], []), Settings, priors),
+    % A_new empty: the priors before stopping
+    curiosity:next_move(st(1, [A1], [], []), Settings, priors),
+    % explored once, never again
+    P = ant(a2, [], none, prior),
+    curiosity:next_move(st(3, [A1, P], [C], []), Settings, stop(max_rules)),
+    curiosity:next_move(st(2, [A1, P], [], []), Settings, stop(a_new_empty)),
+    curiosity:next_move(st(2, [A1, P], [C], []), Settings, step),
+    % not when they would exceed the budget, nor without prior(1), nor for
+    % the paper's curiosity
+    curiosity:next_move(st(4, [A1], [C], []), Settings, stop(max_rules)),
+    curiosity:next_move(st(2, [A1], [C], []), Settings.put(prior, 0), step),
+    curiosity:next_move(st(2, [A1], [C], []), Settings.put(curiosity, paper), step),
+    curiosity:initial_state(_{}, Settings.put(prior, 0), S0).
 
 %   A stand-in for the bridge's novelty, with known answers: pouring low is
 %   the most novel, below the rim next, pouring high a little; nothing else

@@ -22,7 +22,7 @@
 % fewer than cover pours so far hold, the fewest, 0: never), whether
 % (1) or not (0) the discovering curiosity explores the priors (the empty
 % antecedent: every parameter drawn from its prior, as the parameters a
-% question leaves unsaid are) right after a_0, the ridge of the plane fits, the seed, how many gradient
+% question leaves unsaid are) with the last batch of the budget, the ridge of the plane fits, the seed, how many gradient
 % components the paper's modify follows, and how an antecedent's
 % consequent is qualified (weighted vote or the paper's argmax).
 default(curiosity, discover).

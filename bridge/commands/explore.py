@@ -57,7 +57,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                         f"0: never (default {d['cover']})")
     p.add_argument("--prior", type=int, choices=(0, 1), default=d["prior"],
                    help="discover: 1 to explore the priors (nothing said: every parameter from "
-                        "its prior, as a question's unsaid ones) right after a_0, 0 not to "
+                        "its prior, as a question's unsaid ones) with the budget's last batch, 0 not to "
                         f"(default {d['prior']})")
     p.add_argument("--permutations", type=int, default=d["permutations"],
                    help=f"discover: shuffles of the permutation test (default {d['permutations']})")

@@ -233,7 +233,7 @@ class Host:
                 if int(request.get("cover", 0)):   # runs without coverage keep their keys
                     course.update(cover=int(request["cover"]))
             if int(request.get("prior", 0)):       # runs without the priors keep their keys
-                course.update(prior=int(request["prior"]))
+                course.update(prior=int(request["prior"]), prior_batch="last")
         run = run_key(course)
         store_path = Path(str(request.get("store") or DEFAULT_STORE))
         try:

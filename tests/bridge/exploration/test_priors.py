@@ -1,7 +1,8 @@
-"""The priors explored after a_0 (`--prior 1`, the default): the scene where nothing is
-said, every parameter drawn from its prior, as the parameters a question
-leaves unsaid are; the general rules then learn from pours where the
-questions are asked."""
+"""The priors explored with the last batch of the budget (`--prior 1`, the
+default): the scene where nothing is said, every parameter drawn from its
+prior, as the parameters a question leaves unsaid are; the general rules
+then learn from pours where the questions are asked, and the curiosity's
+course before that batch is the one it takes without it."""
 from __future__ import annotations
 
 from pathlib import Path
@@ -14,45 +15,59 @@ from pantarhei.oracle.generative import log_density
 from tests.bridge.exploration.test_explore_discover import A0, run, trace
 
 
-def test_the_priors_are_explored_after_a0_and_drawn_again_by_the_evaluation(tmp_path):
+def test_the_priors_take_the_last_batch_and_are_drawn_again_by_the_evaluation(tmp_path):
     r = run(tmp_path, seed=1, max_rules=6, prior=1)
     lines = trace(r)
-    assert [t["via"] for t in lines[:2]] == ["initial", "prior"]
-    assert lines[0]["antecedent"] == A0 and lines[1]["antecedent"] == []
-    assert lines[1]["probes"] == []                 # explored as it is, not probed
-    assert all(t["via"] != "prior" for t in lines[2:])
+    assert [t["via"] for t in lines].count("prior") == 1
+    last = lines[-1]
+    assert last["via"] == "prior" and last["antecedent"] == []
+    assert last["probes"] == []                     # explored as it is, not probed
+    assert r["stopped"] == "max_rules"
     # its batch: 31 pours, every one within the priors' support, where the
-    # later antecedents' pours (of 15 to 20 propositions) are not
+    # curiosity's antecedents' pours after a_0's (of 15 to 20 propositions)
+    # are not
     P, _ = r["pours"]
     learned = read_learned(r["out"])
-    assert learned.antecedents[:2] == [tuple(sorted(A0)), ()]
+    assert learned.antecedents[0] == tuple(sorted(A0)) and learned.antecedents[-1] == ()
     redrawn, drawn, of, _ = exploration_draws(learned)
     assert np.array_equal(redrawn, P)               # the evaluation draws the same pours
-    mine = P[of == 1]
+    k = len(learned.antecedents) - 1
+    mine = P[of == k]
     assert len(mine) == 31 and np.isfinite(log_density(mine, [])).all()
-    later = np.isfinite(log_density(P[of >= 2], []))
-    assert later.mean() < 0.1
+    before = np.isfinite(log_density(P[(of > 0) & (of < k)], []))
+    assert before.mean() < 0.1
     # its rules have an empty body, and the theory records the setting
     text = Path(r["out"]).read_text()
     assert "setting(prior, 1)." in text
-    assert "provenance(r2_no_spill, antecedent, a2)." in text
-    assert "body(r2_" not in text
+    assert f"provenance(r{k + 1}_no_spill, antecedent, a{k + 1})." in text
+    assert f"body(r{k + 1}_" not in text
 
 
-def test_by_default_the_priors_are_explored_after_a0(tmp_path):
+def test_by_default_the_priors_are_explored(tmp_path):
     from pantarhei.bridge.exploration import loop as exploration
     from pantarhei.bridge.exploration.loop import Options
 
     r = exploration.explore(Options(oracle="synthetic", max_rules=3, out=tmp_path / "d.pl",
                                     store=tmp_path / "d.sqlite", progress=False,
                                     executor="inline", general=False))
-    assert [t["via"] for t in trace(r)][:2] == ["initial", "prior"]
+    assert [t["via"] for t in trace(r)] == ["initial", "prior"]
 
 
-def test_the_priors_take_the_second_step_and_leave_a0s_as_it_was(tmp_path):
-    a = trace(run(tmp_path, name="a", seed=2, max_rules=6, prior=0))
+def test_the_course_before_the_priors_is_the_one_without_them(tmp_path):
+    a = trace(run(tmp_path, name="a", seed=2, max_rules=8, prior=0))
     assert all(t["via"] != "prior" for t in a)
-    c = trace(run(tmp_path, name="c", seed=2, max_rules=6, prior=1))
-    # a_0's step is the same; the priors take the first place of its A_new
-    assert {k: v for k, v in c[0].items() if k != "added"} == {k: v for k, v in a[0].items() if k != "added"}
-    assert c[0]["added"] == a[0]["added"][:99] and c[1]["via"] == "prior"
+    c = trace(run(tmp_path, name="c", seed=2, max_rules=8, prior=1))
+    assert c[-1]["via"] == "prior"
+    # every step before the priors' batch is the same step, to the digit;
+    # the reserved batch costs the course at most its last step
+    assert c[:-1] == a[:len(c) - 1]
+    assert len(a) - 1 <= len(c) - 1 <= len(a)
+
+
+def test_when_a_new_is_empty_the_priors_come_before_the_stop(tmp_path):
+    # the novelty level 1 queues nothing: a_0 gets its more batches, then
+    # the priors theirs, and A_new stays empty
+    r = run(tmp_path, seed=1, max_rules=10, prior=1, novelty=1.0)
+    assert [t["via"].split("(")[0] for t in trace(r)] == ["initial", "more", "more",
+                                                          "prior", "more", "more"]
+    assert r["stopped"] == "a_new_empty"
