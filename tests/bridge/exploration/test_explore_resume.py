@@ -65,12 +65,13 @@ def test_killed_exploration_resumes_to_the_same_theory(tmp_path):
 
 # At the novelty level 0.5 the probes' record shortens A_new from the fourth
 # batch on (novelty.discount), so the longer run must read it back from the
-# saved trace.
+# saved trace. Without the priors' batch, which is the last of the budget
+# it was explored in (below).
 @pytest.mark.parametrize("level", [[], ["--novelty", "0.5"]], ids=["default", "novelty-0.5"])
 def test_resume_of_a_finished_run_and_a_longer_one(tmp_path, level):
     common = ["--out", str(tmp_path / "t.pl"), "--store", str(tmp_path / "s.sqlite")]
     short = ["explore", "--oracle", "synthetic", "--executor", "inline", "--no-progress",
-             "--seed", "4", *level]
+             "--seed", "4", "--prior", "0", *level]
     assert run_cli(*short, "--max-rules", "4", *common).code == 0
     # resuming with a larger budget continues where it stopped ...
     longer = run_cli(*short, "--max-rules", "7", "--resume", *common)
@@ -81,6 +82,23 @@ def test_resume_of_a_finished_run_and_a_longer_one(tmp_path, level):
                     "--store", str(tmp_path / "f.sqlite"))
     assert fresh.code == 0
     assert continued == (tmp_path / "f.pl").read_text()
+
+
+def test_a_longer_run_continues_after_the_priors_batch(tmp_path):
+    out = tmp_path / "t.pl"
+    common = ["--out", str(out), "--store", str(tmp_path / "s.sqlite")]
+    short = ["explore", "--oracle", "synthetic", "--executor", "inline", "--no-progress",
+             "--seed", "4"]
+    assert run_cli(*short, "--max-rules", "4", *common).code == 0
+    before = out.with_suffix(".trace.jsonl").read_text().splitlines()
+    assert '"via": "prior"' in before[-1]
+    longer = run_cli(*short, "--max-rules", "7", "--resume", *common)
+    assert longer.code == 0, longer.err
+    after = out.with_suffix(".trace.jsonl").read_text().splitlines()
+    # the shorter run's steps, its priors' batch last, then the curiosity
+    # goes on; the priors are explored once
+    assert after[:len(before)] == before and len(after) > len(before)
+    assert sum('"via": "prior"' in line for line in after) == 1
 
 
 def test_resume_with_nothing_saved_starts_afresh(tmp_path):
