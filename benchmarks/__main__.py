@@ -7,9 +7,10 @@ import importlib.util
 import sys
 import time
 
-#: The benchmark modules, in the order the loop runs: the world, the
-#: exploration and what it discovers, the reasoning, the general theory.
-MODULES = ("oracle", "exploration", "discovery", "reasoning", "generalization")
+#: The benchmark modules: the front door (start-up), then in the order the
+#: loop runs: the world, the exploration and what it discovers, the
+#: reasoning, the general theory.
+MODULES = ("startup", "oracle", "exploration", "discovery", "reasoning", "generalization")
 
 
 def main() -> int:

@@ -1,7 +1,15 @@
 """The `pantarhei` command: one subcommand per module of bridge/commands/.
 
 Each module has `register(subparsers)`, which adds its subcommands with
-`set_defaults(run=function)`; `run(args)` returns the exit code.
+`set_defaults(run=function)`; `run(args)` returns the exit code. Registering
+imports nothing heavy: each command imports what it uses when it runs, so
+that `--help` and `ask` answer at once.
+
+Commands that compute with floats (simulate, learn, evaluate) also set
+`pin=True`, or `pin=function(args)` when it depends on their options: the
+process is then started again with the baseline math (oracle/baseline.py)
+after the arguments were checked, so that they compute the same numbers on
+every x86-64 machine.
 """
 from __future__ import annotations
 
@@ -32,13 +40,26 @@ def parser() -> argparse.ArgumentParser:
     return p
 
 
-def main(argv: Sequence[str] | None = None) -> int:
+def pinned(args: argparse.Namespace) -> bool:
+    """Does the command compute with floats (start it with the baseline math)?"""
+    pin = getattr(args, "pin", False)
+    return bool(pin(args) if callable(pin) else pin)
+
+
+def main(argv: Sequence[str] | None = None, pin_math: bool = False) -> int:
+    """Run the command of `argv`; with `pin_math`, a command that computes
+    with floats first restarts this process with the baseline math (the
+    arguments are checked before, so that a bad one is refused at once)."""
     try:        # the help texts read the theory's defaults: that needs clingo's parser
         args = parser().parse_args(argv)
     except (MissingEngine, TheoryFileError) as e:
         print(f"pantarhei: {e}", file=sys.stderr)
         return 2
     try:
+        if pin_math and pinned(args):
+            from pantarhei.oracle import baseline
+
+            baseline.restart_with(baseline.ENVIRONMENT)
         code = args.run(args)
     except UserError as e:
         print(f"pantarhei {args.command}: {e}", file=sys.stderr)
@@ -51,18 +72,16 @@ def main(argv: Sequence[str] | None = None) -> int:
         code = 130
     except BrokenPipeError:
         code = 0
-    sys.stdout.flush()
+    try:
+        sys.stdout.flush()
+    except BrokenPipeError:
+        code = 0
     return code
 
 
 def entry() -> None:
-    """The `pantarhei` command: this process is started again with the
-    baseline math (oracle/baseline.py) unless it was, so that learning, like
-    simulating, computes the same numbers on every x86-64 machine."""
-    from pantarhei.oracle import baseline
-
-    baseline.restart_with(baseline.ENVIRONMENT)
-    sys.exit(main())
+    """The `pantarhei` command."""
+    sys.exit(main(pin_math=True))
 
 
 if __name__ == "__main__":

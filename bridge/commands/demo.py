@@ -13,7 +13,6 @@ from pathlib import Path
 
 from pantarhei.bridge.commands import options
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.exploration.loop import Options, budget_text, explore, stop_text
 from pantarhei.theory import defaults
 
 #: The paper's three questions (section 3.2), as words and propositions.
@@ -40,7 +39,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="pours simulated to check the plan (default 10; 0: none)")
     p.add_argument("--workers", type=int, help="worker processes (default: one per core)")
     p.add_argument("--no-progress", action="store_true", help="no progress bar")
-    p.set_defaults(run=demo)
+    p.set_defaults(run=demo, pin=True)
 
 
 def _heading(text: str) -> None:
@@ -52,6 +51,7 @@ def demo(args: argparse.Namespace) -> int:
     from pantarhei.bridge.files import write_text
     from pantarhei.bridge.theories import loading
     from pantarhei.bridge.commands.querying import ask, plan
+    from pantarhei.bridge.exploration.loop import Options, budget_text, explore, stop_text
 
     if args.max_rules < 1 or args.verify < 0 or (args.workers is not None and args.workers < 1):
         raise UserError("--max-rules and --workers must be at least 1, --verify at least 0")

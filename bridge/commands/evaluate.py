@@ -30,7 +30,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="do not also spend the budget on random pours from the prior and on "
                         "MAP-Elites (their behaviours seen)")
     options.add_execution(p, progress="no progress bars")
-    p.set_defaults(run=evaluate)
+    p.set_defaults(run=evaluate, pin=True)
 
 
 def evaluate(args: argparse.Namespace) -> int:

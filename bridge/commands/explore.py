@@ -8,11 +8,12 @@ from pathlib import Path
 
 from pantarhei.bridge.commands import options
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.exploration.loop import Options, explore as run_exploration, stop_text
-from pantarhei.bridge.exploration.session import install
-from pantarhei.bridge.exploration.qualify import QUALIFY
-from pantarhei.bridge.reasoning import scenes as validity
 from pantarhei.theory import defaults
+
+#: How an antecedent's consequent is drawn from its simulations: the modes of
+#: bridge/exploration/qualify.py (QUALIFY; named here so that declaring the
+#: flag does not import numpy).
+QUALIFY = ("weighted", "argmax")
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -83,7 +84,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                         "from every pour")
     options.add_oracle(p)
     options.add_execution(p)
-    p.set_defaults(run=explore)
+    p.set_defaults(run=explore, pin=True)
 
     p = sub.add_parser("prolog", help="an interactive SWI-Prolog with the theory and the oracle "
                                       "loaded (try: what_happens([pour_to_side], O).)")
@@ -92,10 +93,13 @@ def register(sub: argparse._SubParsersAction) -> None:
                         "default: the shipped learned theory)")
     p.add_argument("--goal", "-g", metavar="GOAL",
                    help="run GOAL (Prolog text) and exit instead of the interactive prompt")
-    p.set_defaults(run=prolog)
+    p.set_defaults(run=prolog, pin=True)     # explore/1 and simulate/3 compute there
 
 
 def explore(args: argparse.Namespace) -> int:
+    from pantarhei.bridge.exploration.loop import Options, explore as run_exploration, stop_text
+    from pantarhei.bridge.reasoning import scenes as validity
+
     for name in ("max_rules", "samples", "breadth", "workers", "permutations", "queue", "jumps",
                  "probe_attempts"):
         v = getattr(args, name)
@@ -147,6 +151,7 @@ def prolog(args: argparse.Namespace) -> int:
     from pantarhei.bridge.reasoning.logic import prolog_load
     from pantarhei.bridge.theories.loading import load
     from pantarhei.theory import prolog_modules
+    from pantarhei.bridge.exploration.session import install
 
     eng = install()
     for name in prolog_modules():

@@ -5,9 +5,15 @@ from __future__ import annotations
 
 import argparse
 
-from pantarhei.bridge.theories.loading import DEFAULT_THEORY
-from pantarhei.oracle.store import DEFAULT_STORE
-from pantarhei.theory import defaults
+from pathlib import Path
+
+from pantarhei.theory import THEORY_DIR, defaults
+
+#: The shipped learned theory and the store, as bridge.theories.loading and
+#: oracle.store name them (read here from theory/defaults.pl alone, so that
+#: declaring the flags imports neither the theory readers nor numpy).
+DEFAULT_THEORY = THEORY_DIR / str(defaults()["theory"])
+DEFAULT_STORE = Path(str(defaults()["store"]))
 
 #: The oracles a command may simulate with.
 ORACLES = ("pybullet", "synthetic")
@@ -46,8 +52,6 @@ def add_seed(p: argparse.ArgumentParser, default: int | None = None, what: str =
 
 
 def _shown(path) -> str:
-    from pathlib import Path
-
     try:
         return str(Path(path).resolve().relative_to(Path.cwd()))
     except ValueError:

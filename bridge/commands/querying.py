@@ -4,12 +4,14 @@ from __future__ import annotations
 import argparse
 import json
 import re
+import sys
 
-from pantarhei.bridge.theories import loading
-from pantarhei.bridge.reasoning import answers, logic
-from pantarhei.bridge.theories.dfl import dfl_literal
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.scenes import known, require_valid
+
+#: The engines of `conclusions` (bridge/reasoning/logic.py's ENGINES; named
+#: here so that declaring the flag does not start SWI-Prolog).
+ENGINES = ("prolog", "asp")
 
 THEORY_HELP = ("theory file, native facts or .dfl (repeat to add hand-written rules to a learned "
                "theory; default: the shipped learned theory theory/learned/pouring.pl)")
@@ -17,7 +19,9 @@ THEORY_HELP = ("theory file, native facts or .dfl (repeat to add hand-written ru
 
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("ask", help="what happens when pouring like this? (Prolog)")
-    p.add_argument("question", nargs="?", help='the scene in words, e.g. "pour from the side"')
+    p.add_argument("question", nargs="?",
+                   help='the scene in words, e.g. "pour from the side"; without it (or with -), '
+                        'one question a line from standard input, each answered at once')
     p.add_argument("--props", help="the scene as propositions P1,P2 (instead of words)")
     p.add_argument("--theory", action="append", metavar="FILE", help=THEORY_HELP)
     p.add_argument("--why", metavar="LITERAL",
@@ -39,7 +43,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--store", default="pantarhei.sqlite",
                    help="SQLite file of simulations for --verify (default pantarhei.sqlite)")
     p.add_argument("--json", action="store_true", help="print JSON")
-    p.set_defaults(run=plan)
+    p.set_defaults(run=plan, pin=lambda args: args.verify > 0)     # --verify simulates
 
     p = sub.add_parser("conclusions", help="all conclusions (+D, -D, +d, -d) of a theory file")
     p.add_argument("file", nargs="+", metavar="FILE", help="theory file(s), native facts or .dfl")
@@ -47,7 +51,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--no-team-defeat", action="store_true", help="a single rule must beat every attacker")
     p.add_argument("--no-well-founded", action="store_true",
                    help="Kunen semantics: literals whose proofs loop stay undecided")
-    p.add_argument("--engine", choices=logic.ENGINES, default="prolog")
+    p.add_argument("--engine", choices=ENGINES, default="prolog")
     p.add_argument("--json", action="store_true", help="print JSON")
     p.set_defaults(run=conclusions)
 
@@ -65,23 +69,63 @@ def _split(text: str | None) -> list[str]:
 # -- ask ----------------------------------------------------------------------
 
 def ask(args: argparse.Namespace) -> int:
+    from pantarhei.bridge.theories import loading
+
     if args.props is not None and args.question:
         raise UserError("give the scene in words or with --props, not both")
+    if args.why is not None and not args.why.strip():
+        raise UserError("--why: give an expectation E or neg(E) (see `pantarhei vocab`)")
+    if args.props is None and args.question in (None, "-"):    # one question a line
+        return _ask_each_line(args, loading.load(args.theory), sys.stdin)
     if args.props is not None:
         props = known(_split(args.props))
         if not props:
             raise UserError("--props: no propositions given (see `pantarhei vocab`)")
-    elif args.question:
-        from pantarhei.bridge.reasoning.reading import understand
-
-        props = understand(args.question)
-        if not props:
-            raise UserError(f"understood none of \"{args.question}\": describe the scene with the "
-                            f"words of `pantarhei vocab`, or give --props P1,P2")
     else:
-        raise UserError("give a scene: a question in words, or --props P1,P2")
+        props = _understood(args.question)
     props = require_valid(props)
-    theory = loading.load(args.theory)
+    return _answer(args, loading.load(args.theory), props)
+
+
+def _understood(question: str) -> list[str]:
+    """The propositions of a question in words (UserError if none)."""
+    from pantarhei.bridge.reasoning.reading import understand
+
+    props = understand(question)
+    if not props:
+        raise UserError(f"understood none of \"{question}\": describe the scene with the "
+                        f"words of `pantarhei vocab`, or give --props P1,P2")
+    return props
+
+
+def _ask_each_line(args: argparse.Namespace, theory, lines) -> int:
+    """Answer each question of `lines` as it comes (a blank line or one
+    starting with # is skipped); a question not understood gets its one
+    line on stderr and the next is read. Exit 0 if every one was answered."""
+    asked = failed = 0
+    for number, line in enumerate(lines, 1):
+        question = line.strip()
+        if not question or question.startswith("#"):
+            continue
+        if asked:
+            print()
+        asked += 1
+        try:
+            _answer(args, theory, require_valid(_understood(question)))
+        except UserError as e:
+            failed += 1
+            print(f"pantarhei ask: line {number}: {e}", file=sys.stderr, flush=True)
+        sys.stdout.flush()
+    if not asked:
+        raise UserError("give a scene: a question in words, --props P1,P2, or questions one a "
+                        "line on standard input")
+    return 1 if failed else 0
+
+
+def _answer(args: argparse.Namespace, theory, props: list[str]) -> int:
+    """Print what the theory says of the scene `props` (or --why)."""
+    from pantarhei.bridge.reasoning import answers
+
     scene = props
     if args.why:
         from pantarhei.bridge.reasoning.planning import check_goals
@@ -148,6 +192,7 @@ def _print_scene(props: list[str], glosses: bool) -> None:
 
 def plan(args: argparse.Namespace) -> int:
     from pantarhei.bridge.reasoning.planning import plan as make_plans
+    from pantarhei.bridge.theories import loading
 
     goals = _split(args.goal)
     if not goals:
@@ -213,6 +258,10 @@ def _verify(antecedent: tuple[str, ...], goals: list[str], n: int, seed: int,
 # -- conclusions --------------------------------------------------------------
 
 def conclusions(args: argparse.Namespace) -> int:
+    from pantarhei.bridge.reasoning import logic
+    from pantarhei.bridge.theories import loading
+    from pantarhei.bridge.theories.dfl import dfl_literal
+
     theory = loading.load(args.file)
     sem = logic.Semantics(args.ambiguity, not args.no_team_defeat, not args.no_well_founded)
     result = logic.conclusions(theory, sem, args.engine)
@@ -233,6 +282,7 @@ def convert(args: argparse.Namespace) -> int:
 
     from pantarhei.bridge.theories.dfl import write_dfl
     from pantarhei.bridge.files import write_text
+    from pantarhei.bridge.theories import loading
 
     theory = loading.load(args.file, check=False)
     text = (write_dfl(theory, loading.provenance_lines(theory)) if args.to == "dfl"

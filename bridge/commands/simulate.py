@@ -9,9 +9,6 @@ import sys
 from pathlib import Path
 from typing import Any, Optional
 
-import numpy as np
-
-from pantarhei.oracle import generative
 from pantarhei.theory.lexicon import load_vocabulary
 
 from pantarhei.bridge.reasoning import scenes as validity
@@ -31,7 +28,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     options.add_seed(p, 0, "the sampling")
     p.add_argument("--json", action="store_true", help="print JSON")
     _simulation_options(p)
-    p.set_defaults(run=simulate)
+    p.set_defaults(run=simulate, pin=True)
 
     p = sub.add_parser("render", help="render a pour as an animated GIF (headless)")
     source = p.add_mutually_exclusive_group(required=True)
@@ -46,7 +43,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--size", default="480x360", help="image size WxH (default 480x360)")
     p.add_argument("--fidelity", choices=("chosen", "default"), default="chosen",
                    help="simulation settings (default: the chosen fast ones)")
-    p.set_defaults(run=render)
+    p.set_defaults(run=render, pin=True)
 
 
 def _simulation_options(p: argparse.ArgumentParser) -> None:
@@ -65,6 +62,8 @@ def _simulation_options(p: argparse.ArgumentParser) -> None:
 def parse_antecedent(text: str) -> list[str]:
     """The propositions of 'P1,P2,...', known and valid together (UserError
     otherwise)."""
+    from pantarhei.oracle import generative
+
     props = [t.strip() for t in text.split(",") if t.strip()]
     props = validity.require_valid(props)
     try:
@@ -78,6 +77,10 @@ def read_params(path: str) -> np.ndarray:
     """The parameterizations of a JSON file: a list of objects, each with
     'params' (name to value) or itself name to value; one such object alone
     is accepted too."""
+    import numpy as np
+
+    from pantarhei.oracle import generative
+
     try:
         text = Path(path).read_text()
     except OSError as e:
@@ -105,6 +108,8 @@ def read_params(path: str) -> np.ndarray:
 
 
 def _parameterizations(args: argparse.Namespace, n: int) -> tuple[np.ndarray, Optional[list[str]]]:
+    from pantarhei.oracle import generative
+
     if args.params is not None:
         return read_params(args.params), None
     if n < 1:
@@ -117,6 +122,8 @@ def _parameterizations(args: argparse.Namespace, n: int) -> tuple[np.ndarray, Op
 # output
 
 def _jsonable(x: Any) -> Any:
+    import numpy as np
+
     if isinstance(x, float) and not math.isfinite(x):
         return None
     if isinstance(x, dict):
@@ -129,6 +136,10 @@ def _jsonable(x: Any) -> Any:
 
 
 def results_json(P: np.ndarray, S: np.ndarray, records: list, errors: list) -> list[dict[str, Any]]:
+    import numpy as np
+
+    from pantarhei.oracle import generative
+
     names = load_vocabulary().expectation_names
     out = []
     for p, s, rec, err in zip(P, S, records, errors):
@@ -149,6 +160,8 @@ def _fmt(v: float) -> str:
 
 def print_results(P: np.ndarray, S: np.ndarray, records: list, errors: list,
                   props: Optional[list[str]]) -> None:
+    import numpy as np
+
     vocab = load_vocabulary()
     if props is not None:
         print(f"antecedent: {', '.join(props) if props else '(none)'}")
@@ -174,6 +187,8 @@ def print_results(P: np.ndarray, S: np.ndarray, records: list, errors: list,
 # commands
 
 def simulate(args: argparse.Namespace) -> int:
+    import numpy as np
+
     from pantarhei.oracle.simulator import make_simulator
 
     P, props = _parameterizations(args, args.n)
