@@ -25,6 +25,14 @@ inside an argument list) are grounded over the facts: every instance whose
 body literals all occur among the facts or the heads of other instances.
 Rules without a label get `r<line>` (`line<line>` if another rule is
 labelled `r<line>`).
+
+What DFL has no form for (`learned/1`, `setting/2`, `provenance/3` and any
+other fact of a native theory) is written as a comment that holds the
+native fact, `# pantarhei: learned(r1).`, read back as in a native file
+(SPINdle and silkie skip it). The superiority that specificity gives
+learned rules is written out too (`r4 > r3 # specificity`), so that those
+tools conclude the same; it is read back as specificity again when both
+rules are learned.
 """
 from __future__ import annotations
 
@@ -34,7 +42,13 @@ from typing import Sequence
 
 from pantarhei.theory import TheoryFileError
 
-from pantarhei.bridge.theories.model import Rule, Theory, complement, superiority_cycle
+from pantarhei.bridge.theories import facts as theory_facts
+from pantarhei.bridge.theories.model import Rule, Theory, complement, from_facts, superiority_cycle
+
+#: A comment holding a native fact DFL has no form for.
+ANNOTATION = "# pantarhei: "
+_ANNOTATION = re.compile(r"^\s*#\s*pantarhei:\s?(.*)$")
+_DERIVED = re.compile(r"^\s*([a-z][A-Za-z0-9_]*)\s*>\s*([a-z][A-Za-z0-9_]*)\s*#\s*specificity\s*$")
 
 _ARROWS = (("->", "strict"), ("=>", "defeasible"), ("~>", "defeater"))
 _TERM = re.compile(r"^[a-z][A-Za-z0-9_]*(\((.*)\))?$")
@@ -57,7 +71,17 @@ def parse_dfl(text: str, source: str = "<dfl>") -> Theory:
     t = Theory(source=source)
     schemas: list[tuple[Rule, int]] = []
     sups: list[tuple[str, str, int]] = []
-    lines = [re.split(r"#|%|//", raw, maxsplit=1)[0].strip() for raw in text.splitlines()]
+    raws = text.splitlines()
+    annotations = []
+    derived = set()
+    for n, raw in enumerate(raws, start=1):
+        m = _ANNOTATION.match(raw)
+        if m:
+            annotations.extend(theory_facts.parse(m.group(1), source, n))
+        m = _DERIVED.match(raw)
+        if m:
+            derived.add((m.group(1), m.group(2)))
+    lines = [re.split(r"#|%|//", raw, maxsplit=1)[0].strip() for raw in raws]
     labels = {m.group(1) for m in (re.match(r"^([A-Za-z0-9_]+)\s*:(?!-)", x) for x in lines) if m}
     for n, line in enumerate(lines, start=1):
         if not line:
@@ -98,19 +122,29 @@ def parse_dfl(text: str, source: str = "<dfl>") -> Theory:
                               f"{' > '.join(cycle)}: it must be acyclic")
     t.rules, origin = _ground(schemas, t.facts, source)
     ids = {r.id for r in t.rules} | {r.id for r, _ in schemas}
+    instances: dict[str, list[str]] = {}
+    for r in t.rules:
+        instances.setdefault(origin[r.id], []).append(r.id)
     for a, b, n in sups:
         for x in (a, b):
             if not re.fullmatch(r"[a-z][A-Za-z0-9_]*", x):
                 raise TheoryFileError(f"{source}:{n}: a rule label in lower case letters, digits and _, not '{x}'")
         # a label not defined here may name a rule of another file (merge)
-        left = [r.id for r in t.rules if origin[r.id] == a] or ([] if a in ids else [a])
-        right = [r.id for r in t.rules if origin[r.id] == b] or ([] if b in ids else [b])
+        left = instances.get(a) or ([] if a in ids else [a])
+        right = instances.get(b) or ([] if b in ids else [b])
         t.sup.extend((x, y) for x in left for y in right)
     seen: dict[str, int] = {}
     for r, n in schemas:
         if r.id in seen:
             raise TheoryFileError(f"{source}:{n}: a second rule labelled {r.id} (line {seen[r.id]})")
         seen[r.id] = n
+        if _variables(r.head) or any(map(_variables, r.body)):
+            t.schemas.append((r.id, n))
+    for r in t.rules:
+        t.lines[r.id] = seen.get(origin[r.id], 0)
+    if annotations:
+        from_facts(annotations, source, t)
+        t.sup = [p for p in t.sup if not (p in derived and p[0] in t.learned and p[1] in t.learned)]
     return t
 
 
@@ -242,18 +276,32 @@ def dfl_literal(lit: str) -> str:
 
 def write_dfl(theory: Theory, header: Sequence[str] = ()) -> str:
     """The theory in DFL: facts, rules, then superiority, including the
-    superiority that specificity gives learned rules (DFL has no
-    `learned`), so that the DFL theory has the same conclusions. `header`
-    lines go first, as comments."""
+    superiority that specificity gives learned rules, so that the DFL
+    theory has the same conclusions in SPINdle and silkie; every other fact
+    as an annotation (`# pantarhei: learned(r1).`), so that nothing is
+    lost. `header` lines go first, as comments."""
+    from pantarhei.bridge.theories.model import _value_text
+
     arrows = {k: a for a, k in _ARROWS}
     lines = [f"# {h}" for h in header]
+    lines += [f"{ANNOTATION}setting({k}, {_value_text(v)})." for k, vs in theory.settings.items() for v in vs]
     lines += [f">> {dfl_literal(f)}" for f in theory.facts]
+    of_rule: dict[str, list[str]] = {}
+    for rid, key, value in theory.provenance:
+        of_rule.setdefault(rid, []).append(f"{ANNOTATION}provenance({rid}, {key}, {_value_text(value)}).")
     for r in theory.rules:
         body = ", ".join(dfl_literal(b) for b in r.body)
         lines.append(f"{r.id}: {body}{' ' if body else ''}{arrows[r.kind]} {dfl_literal(r.head)}")
+        if r.id in theory.learned:
+            lines.append(f"{ANNOTATION}learned({r.id}).")
+        lines.extend(of_rule.pop(r.id, ()))
     lines.extend(f"{a} > {b}" for a, b in theory.sup)
+    rules = {r.id for r in theory.rules}
+    lines.extend(f"{ANNOTATION}learned({x})." for x in sorted(theory.learned - rules))
+    lines.extend(x for xs in of_rule.values() for x in xs)
+    lines.extend(ANNOTATION + x for x in theory.extra)
     derived = theory.specificity()
     if derived:
         lines.append("# superiority of learned rules by specificity")
-        lines.extend(f"{a} > {b}" for a, b in derived)
+        lines.extend(f"{a} > {b} # specificity" for a, b in derived)
     return "\n".join(lines) + "\n"

@@ -5,20 +5,42 @@ The native format is ground facts that SWI-Prolog and clingo both read:
     fact(L).  rule(Id, Kind, Head).  body(Id, L).  sup(R1, R2).  learned(Id).
 
 Literals are kept as their native text (`bird(tweety)`, `neg(flies(tweety))`),
-which is also how both engines print them. Facts of other predicates
-(provenance, settings) are kept aside and written back unchanged.
+which is also how both engines print them: a name, or a name with names and
+integers as arguments, or neg(L). A learned theory adds `setting(Key, V)`
+and `provenance(Id, Key, V)`; facts of any other predicate (`set_aside/3`,
+...) are kept aside in `extra` and written back (quoted text quoted and
+escaped). The file's language is that of `facts` (and of
+theory/theory_files.pl, which checks the same things with the same
+messages).
 """
 from __future__ import annotations
 
 import re
+from collections import deque
 from dataclasses import dataclass, field
 from pathlib import Path
+from itertools import combinations
 from typing import Iterable
 
-from pantarhei.theory import TheoryFileError, read_facts
+from pantarhei.bridge.theories import facts as theory_facts
+from pantarhei.bridge.theories.facts import Fact, Text, term_text
+from pantarhei.theory import TheoryFileError
 
 KINDS = ("strict", "defeasible", "defeater")
 _NAME = re.compile(r"^[a-z][A-Za-z0-9_]*$")
+_ARG = r"(?:[a-z][A-Za-z0-9_]*|-?[0-9]+)"
+_ATOM = rf"[a-z][A-Za-z0-9_]*(?:\({_ARG}(?:,{_ARG})*\))?"
+_LITERAL = re.compile(rf"^(?:{_ATOM}|neg\({_ATOM}\))$")
+
+# The messages, word for word those of theory/theory_files.pl.
+RULE_NAME = "a rule name in lower case letters, digits and _, not '{}'"
+KIND = "rule {}: kind strict, defeasible or defeater, not {}"
+SECOND_RULE = "a second rule named {}"
+DANGLING_BODY = "body({0}, _) of a rule {0} that has no rule({0}, Kind, Head) fact"
+LITERAL = "a literal such as p, bird(tweety) or neg(p) (names and integers as arguments), not {}"
+DOUBLE_NEG = "a literal or its negation neg(L), not a double negation {}"
+ARITY = "expected {}, not a {}/{} fact"
+NAME_ARG = "{}: a name in lower case letters, digits and _, not {}"
 
 
 @dataclass(frozen=True)
@@ -44,12 +66,22 @@ class Theory:
     #: `provenance(Rule, Key, Value)` facts of a learned theory (where each
     #: rule comes from), in file order; values str or int.
     provenance: list[tuple[str, str, str | int]] = field(default_factory=list)
+    #: The line of each rule's `rule/3` fact (or DFL rule) in `source`.
+    lines: dict[str, int] = field(default_factory=dict, compare=False, repr=False)
+    #: The line of each `body(Id, L)` fact, by (Id, L).
+    body_lines: dict[tuple[str, str], int] = field(default_factory=dict, compare=False, repr=False)
+    #: DFL rules with variables, grounded when read: (label, line).
+    schemas: list[tuple[str, int]] = field(default_factory=list, compare=False, repr=False)
 
     def rule(self, rule_id: str) -> Rule:
         for r in self.rules:
             if r.id == rule_id:
                 return r
         raise KeyError(rule_id)
+
+    def where(self, rule_id: str) -> str:
+        """`file:line` of a rule (line 0 when not known)."""
+        return f"{self.source}:{self.lines.get(rule_id, 0)}"
 
     def literals(self) -> set[str]:
         """The literals of facts, heads and bodies."""
@@ -64,7 +96,8 @@ class Theory:
         extra = [f for f in facts if f not in self.facts]
         return Theory(self.facts + extra, list(self.rules), list(self.sup), set(self.learned),
                       list(self.extra), self.source,
-                      {k: list(v) for k, v in self.settings.items()}, list(self.provenance))
+                      {k: list(v) for k, v in self.settings.items()}, list(self.provenance),
+                      dict(self.lines), dict(self.body_lines), list(self.schemas))
 
     def native(self) -> str:
         """The theory in the native format: everything it holds (settings
@@ -81,6 +114,8 @@ class Theory:
                 lines.append(f"learned({r.id}).")
             lines.extend(f"provenance({r.id}, {k}, {_value_text(v)})." for k, v in of_rule.pop(r.id, ()))
         lines.extend(f"sup({a}, {b})." for a, b in self.sup)
+        rules = {r.id for r in self.rules}
+        lines.extend(f"learned({x})." for x in sorted(self.learned - rules))
         lines.extend(f"provenance({rid}, {k}, {_value_text(v)})." for rid, kvs in of_rule.items() for k, v in kvs)
         lines.extend(self.extra)
         return "\n".join(lines) + "\n"
@@ -92,14 +127,24 @@ class Theory:
         explicit = set(self.sup)
         learned = [r for r in self.rules if r.id in self.learned]
         by_head: dict[str, list[Rule]] = {}
+        by_body: dict[tuple[str, frozenset], list[Rule]] = {}
         for r in learned:
             by_head.setdefault(r.head, []).append(r)
+            by_body.setdefault((r.head, frozenset(r.body)), []).append(r)
         out = []
         for r in learned:
-            rb = set(r.body)
-            for s in by_head.get(complement(r.head), ()):
-                if set(s.body) < rb and (s.id, r.id) not in explicit and (r.id, s.id) not in explicit:
-                    out.append((r.id, s.id))
+            rb = frozenset(r.body)
+            against = complement(r.head)
+            rivals = by_head.get(against, ())
+            if len(rb) < 20 and 2 ** len(rb) < len(rivals):
+                # fewer strict subsets of the body than rules against it
+                found = [s for sub in _strict_subsets(sorted(rb))
+                         for s in by_body.get((against, sub), ())]
+                found.sort(key=lambda s: rivals.index(s) if len(rivals) < 64 else 0)
+            else:
+                found = [s for s in rivals if set(s.body) < rb]
+            out.extend((r.id, s.id) for s in found
+                       if (s.id, r.id) not in explicit and (r.id, s.id) not in explicit)
         return out
 
     def acyclic(self) -> bool:
@@ -131,34 +176,57 @@ class Theory:
 
     def validate(self) -> None:
         """Raise TheoryFileError (`file:line: what`) for what the engines
-        cannot read: unknown kinds, dangling bodies, double negation..."""
-        text = _text_of(self.source)
-        ids: dict[str, Rule] = {}
+        cannot read: bad rule names or kinds, a second rule of a name,
+        literals that are not names or terms of names and integers..."""
+        ids: set[str] = set()
         for r in self.rules:
-            where = _line(text, rf"rule\(\s*{re.escape(r.id)}\s*,", self.source)
+            where = self.where(r.id)
             if not _NAME.match(r.id):
-                raise TheoryFileError(f"{where}: a rule name in lower case letters, digits and _, not '{r.id}'")
+                raise TheoryFileError(f"{where}: " + RULE_NAME.format(r.id))
             if r.kind not in KINDS:
-                raise TheoryFileError(f"{where}: rule {r.id}: kind strict, defeasible or defeater, not {r.kind}")
+                raise TheoryFileError(f"{where}: " + KIND.format(r.id, r.kind))
             if r.id in ids:
-                raise TheoryFileError(f"{where}: a second rule named {r.id}")
-            ids[r.id] = r
+                raise TheoryFileError(f"{where}: " + SECOND_RULE.format(r.id))
+            ids.add(r.id)
             for lit in (r.head, *r.body):
                 _check_literal(lit, where)
         for f in self.facts:
-            _check_literal(f, _line(text, rf"fact\(\s*{re.escape(f)}", self.source))
+            _check_literal(f, f"{self.source}:0")
 
     def check_acyclic(self) -> None:
         """Raise TheoryFileError if the superiority relation (sup/2 with
         specificity) has a cycle: a rule could then beat itself, and a
-        literal and its complement both be concluded."""
-        cycle = superiority_cycle(self.sup + self.specificity())
+        literal and its complement both be concluded. Specificity alone
+        never has one (it makes bodies strictly larger), so only cycles
+        through sup/2 are looked for, with specificity's pairs found on
+        the way (never all of them: they may be quadratically many)."""
+        if not self.sup:
+            return
+        cycle = superiority_cycle(self.sup, self._specific_successors())
         if cycle:
             a, b = cycle[0], cycle[1]
             where = _line(_text_of(self.source), rf"sup\(\s*{re.escape(a)}\s*,\s*{re.escape(b)}\s*\)"
                                                  rf"|\b{re.escape(a)}\s*>\s*{re.escape(b)}\b", self.source)
             raise TheoryFileError(f"{where.removesuffix(':0')}: the superiority relation has a cycle, "
                                   f"{' > '.join(cycle)}: it must be acyclic")
+
+    def _specific_successors(self):
+        """rule id -> the learned rules it beats by specificity (sup/2 not
+        saying otherwise), computed when asked."""
+        explicit = set(self.sup)
+        rules = {r.id: r for r in self.rules if r.id in self.learned}
+        by_head: dict[str, list[Rule]] = {}
+        for r in rules.values():
+            by_head.setdefault(r.head, []).append(r)
+
+        def successors(rid: str) -> list[str]:
+            r = rules.get(rid)
+            if r is None:
+                return []
+            rb = set(r.body)
+            return [s.id for s in by_head.get(complement(r.head), ())
+                    if set(s.body) < rb and (s.id, r.id) not in explicit and (r.id, s.id) not in explicit]
+        return successors
 
     def check_superiority(self) -> None:
         """Raise TheoryFileError if sup/2 names a rule that does not exist."""
@@ -189,53 +257,84 @@ def antecedent_index(aid: str) -> int | None:
 
 
 def _value_text(value) -> str:
-    """A setting's or provenance's value as native text: integers and atoms
-    as they are, anything else quoted."""
-    if isinstance(value, int) or (isinstance(value, str) and _NAME.match(value)):
+    """A setting's or provenance's value as native text: integers, names
+    and terms as they are, anything else (`Text`, or str that is not a
+    term) quoted and escaped, so that no value can be read as more facts."""
+    if isinstance(value, bool) or not isinstance(value, (int, str)):
+        value = str(value)
+    if isinstance(value, int):
         return str(value)
-    if isinstance(value, str) and re.match(r"^[a-z][A-Za-z0-9_]*\(.*\)$", value):
+    if isinstance(value, Text):
+        return theory_facts.quote(value)
+    if _NAME.match(value):
         return value
-    return '"' + str(value).replace("\\", "\\\\").replace('"', '\\"') + '"'
+    if "(" in value and value[:1].islower():
+        try:
+            (f,) = theory_facts.parse(f"v({value}).")
+            if len(f.args) == 1 and term_text(f.args[0]) == value:
+                return value
+        except (TheoryFileError, ValueError):
+            pass
+    return theory_facts.quote(value)
 
 
-def superiority_cycle(pairs: Iterable[tuple[str, str]]) -> list[str] | None:
+def superiority_cycle(pairs: Iterable[tuple[str, str]], more=None) -> list[str] | None:
     """A shortest cycle [r, ..., r] of the relation `pairs` through the
-    first rule (in sorted order) that lies on one; None if it is acyclic."""
+    first rule (in sorted order) that lies on one; None if it is acyclic.
+    `more(r)`, if given, lists further successors of r (a relation too
+    large to list whole); then only cycles through `pairs` are looked for."""
     succ: dict[str, list[str]] = {}
     for a, b in pairs:
         succ.setdefault(a, []).append(b)
+    cache: dict[str, list[str]] = {}
+
+    def following(node: str) -> list[str]:
+        if more is None:
+            return succ.get(node, [])
+        if node not in cache:
+            cache[node] = succ.get(node, []) + more(node)
+        return cache[node]
     for start in sorted(succ):
         paths = {b: [start, b] for b in succ[start]}
-        queue = list(paths)
+        queue = deque(paths)
         while queue:
-            node = queue.pop(0)
+            node = queue.popleft()
             if node == start:
                 return paths[node]
-            for nxt in succ.get(node, ()):
+            for nxt in following(node):
                 if nxt not in paths:
                     paths[nxt] = paths[node] + [nxt]
                     queue.append(nxt)
     return None
 
 
+def _strict_subsets(items: list[str]):
+    for k in range(len(items)):
+        for c in combinations(items, k):
+            yield frozenset(c)
+
+
 def literal_text(value) -> str:
-    """A value of `read_facts` (str, int or tuple) as native text."""
-    if isinstance(value, tuple):
-        return f"{value[0]}({','.join(literal_text(v) for v in value[1:])})"
-    return str(value)
+    """A value of a theory file (str, int, `Text` or tuple) as native text:
+    quoted text stays quoted and escaped."""
+    return term_text(value)
 
 
 def complement(lit: str) -> str:
     return lit[4:-1] if lit.startswith("neg(") and lit.endswith(")") else f"neg({lit})"
 
 
+def is_literal(lit: str) -> bool:
+    """A literal: a name, a name with names and integers as arguments, or
+    neg(L) of one."""
+    return bool(_LITERAL.match(lit))
+
+
 def _check_literal(lit: str, where: str) -> None:
-    inner = complement(lit) if lit.startswith("neg(") else lit
-    if inner.startswith("neg("):
-        raise TheoryFileError(f"{where}: a literal or its negation neg(L), not a double negation {lit}")
-    name = inner.split("(", 1)[0]
-    if not _NAME.match(name):
-        raise TheoryFileError(f"{where}: a literal such as p or bird(tweety), not {lit}")
+    if lit.startswith("neg(neg("):
+        raise TheoryFileError(f"{where}: " + DOUBLE_NEG.format(lit))
+    if not _LITERAL.match(lit):
+        raise TheoryFileError(f"{where}: " + LITERAL.format(lit))
 
 
 def _text_of(source: str) -> str:
@@ -253,39 +352,83 @@ def _line(text: str, pattern: str, source: str) -> str:
 
 def read_native(path: Path | str) -> Theory:
     """Read a native theory file; TheoryFileError names file and line."""
-    path = Path(path)
-    facts = read_facts([path])
-    t = Theory(source=str(path))
-    t.facts = [literal_text(f[0]) for f in facts.get("fact", []) if len(f) == 1]
+    return from_facts(theory_facts.read(path), str(path))
+
+
+#: The predicates of a theory, with the form each is written in.
+FORMS = {("fact", 1): "fact(L)", ("rule", 3): "rule(Id, Kind, Head)", ("body", 2): "body(Id, L)",
+         ("sup", 2): "sup(R1, R2)", ("learned", 1): "learned(Id)",
+         ("setting", 2): "setting(Key, Value)", ("provenance", 3): "provenance(Id, Key, Value)"}
+_FORM_OF = {name: form for (name, _), form in FORMS.items()}
+
+
+def check_fact(f: Fact, source: str) -> None:
+    """TheoryFileError (`file:line: what`) if a fact of a theory predicate
+    is not of its form (theory_files:check_theory_fact/2 in Prolog)."""
+    where = f"{source}:{f.line}"
+    form = _FORM_OF.get(f.name)
+    if form is None:
+        return
+    if (f.name, len(f.args)) not in FORMS:
+        raise TheoryFileError(f"{where}: " + ARITY.format(form, f.name, len(f.args)))
+    a = f.args
+    names = {"rule": (0,), "body": (0,), "sup": (0, 1), "learned": (0,), "setting": (0,),
+             "provenance": (0, 1)}.get(f.name, ())
+    for i in names:
+        if not (type(a[i]) is str and _NAME.match(a[i])):
+            raise TheoryFileError(f"{where}: " + NAME_ARG.format(form, term_text(a[i])))
+    if f.name == "rule" and a[1] not in KINDS:
+        raise TheoryFileError(f"{where}: " + KIND.format(a[0], term_text(a[1])))
+    lit = {"fact": 0, "rule": 2, "body": 1}.get(f.name)
+    if lit is not None:
+        _check_literal(term_text(a[lit]), where)
+
+
+def from_facts(facts: list[Fact], source: str, t: Theory | None = None) -> Theory:
+    """A theory of the facts of a file (checked: TheoryFileError with
+    `file:line: what`); added to `t` if given."""
+    t = t if t is not None else Theory(source=source)
     bodies: dict[str, list[str]] = {}
-    for args in facts.get("body", []):
-        if len(args) == 2:
-            bodies.setdefault(literal_text(args[0]), []).append(literal_text(args[1]))
-    rule_ids = set()
-    for args in facts.get("rule", []):
-        if len(args) != 3:
-            continue
-        rid, kind, head = (literal_text(a) for a in args)
-        rule_ids.add(rid)
-        t.rules.append(Rule(rid, kind, head, tuple(dict.fromkeys(bodies.get(rid, ())))))
-    text = _text_of(str(path))
-    for rid in bodies:
-        if rid not in rule_ids:
-            where = _line(text, rf"body\(\s*{re.escape(rid)}\s*,", str(path))
-            raise TheoryFileError(f"{where}: body({rid}, _) of a rule {rid} that has no rule({rid}, Kind, Head) fact")
-    t.sup = [(literal_text(a), literal_text(b)) for a, b in
-             (x for x in facts.get("sup", []) if len(x) == 2)]
-    t.learned = {literal_text(x[0]) for x in facts.get("learned", []) if len(x) == 1}
-    for args in facts.get("setting", []):
-        if len(args) == 2:
-            value = args[1] if isinstance(args[1], (str, int)) else literal_text(args[1])
-            t.settings.setdefault(literal_text(args[0]), []).append(value)
-    for args in facts.get("provenance", []):
-        if len(args) == 3:
-            value = args[2] if isinstance(args[2], (str, int)) else literal_text(args[2])
-            t.provenance.append((literal_text(args[0]), literal_text(args[1]), value))
-    t.validate()
+    heads: list[tuple[str, str, str]] = []
+    first_body: dict[str, int] = {}
+    for f in facts:
+        check_fact(f, source)
+        name, a = f.name, f.args
+        if name == "rule":
+            rid = a[0]
+            if rid in t.lines:
+                raise TheoryFileError(f"{source}:{f.line}: " + SECOND_RULE.format(rid))
+            t.lines[rid] = f.line
+            heads.append((rid, a[1], term_text(a[2])))
+        elif name == "body":
+            lit = term_text(a[1])
+            bodies.setdefault(a[0], []).append(lit)
+            first_body.setdefault(a[0], f.line)
+            t.body_lines.setdefault((a[0], lit), f.line)
+        elif name == "fact":
+            t.facts.append(term_text(a[0]))
+        elif name == "sup":
+            t.sup.append((a[0], a[1]))
+        elif name == "learned":
+            t.learned.add(a[0])
+        elif name == "setting":
+            t.settings.setdefault(a[0], []).append(_plain(a[1]))
+        elif name == "provenance":
+            t.provenance.append((a[0], a[1], _plain(a[2])))
+        else:
+            t.extra.append(f.text + ".")
+    for rid, line in first_body.items():
+        if rid not in t.lines:
+            raise TheoryFileError(f"{source}:{line}: " + DANGLING_BODY.format(rid))
+    t.rules.extend(Rule(rid, kind, head, tuple(dict.fromkeys(bodies.get(rid, ()))))
+                   for rid, kind, head in heads)
     return t
+
+
+def _plain(value) -> str | int:
+    """A setting's or provenance's value: int, name or Text as they are, a
+    term as its native text."""
+    return value if isinstance(value, (str, int)) else term_text(value)
 
 
 def merge(theories: list[Theory]) -> Theory:

@@ -1,0 +1,263 @@
+"""The language of theory files, read in Python: ground facts, nothing else.
+
+A theory file is ASCII text: facts `name.` or `name(Arg, ...).`, where an
+argument is a name (`[a-z][A-Za-z0-9_]*`), an integer in decimal from
+-2147483648 to 2147483647 (what clingo can hold), quoted text `"..."` (on
+with `\\\\`, `\\"` and `\\n` as its only escapes) or a term of
+those; `%` starts a comment to the end of the line. That is the subset of
+Prolog and ASP that both engines read the same way, and theory/theory_files.pl
+reads the same language in SWI-Prolog: the two reject the same files with
+the same `file:line: what` (the line where the offending fact starts, or of
+the offending byte). Directives (`:- ...`, `#include`, `#script`, ...),
+rules, variables, quoted atoms, lists, floats, block comments and anything
+else are refused: a theory file is data.
+
+Quoted text comes back as `Text` (a `str`), so that it is written back
+quoted and escaped (`term_text`), never as bare program text.
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+from pantarhei.theory import TheoryFileError
+
+#: The integers clingo holds (32-bit); theory files stay within them.
+INT_MIN, INT_MAX = -2 ** 31, 2 ** 31 - 1
+
+# The messages, word for word those of theory/theory_files.pl.
+EXPECTED_FACT = "expected a fact such as name(arg, 1)."
+NOT_ASCII = "byte {:#04x} is not printable ASCII: a theory file is ASCII text (no other characters, no invalid UTF-8)"
+DIRECTIVE = "a fact, not a directive: a theory file is data"
+HASH_DIRECTIVE = "a fact, not a directive (#include, #script, ...): a theory file is data"
+RULE = "a fact, not a rule"
+VARIABLE = "a ground fact (no variables)"
+FLOAT = "an integer, not a float (use integer units such as mm or permille)"
+LIST = "an atom, integer, text or term, not a list"
+INT_RANGE = "an integer from -2147483648 to 2147483647, not {}"
+INT_FORM = "an integer in decimal digits without leading zeros, not {}"
+TEXT_ESCAPE = "quoted text with \\\\, \\\" and \\n as its only escapes"
+NAME = "a name in lower case letters, digits and _, not '{}'"
+
+
+class Text(str):
+    """Quoted text of a theory file (written back quoted by `term_text`)."""
+
+    __slots__ = ()
+
+
+@dataclass(frozen=True)
+class Fact:
+    """One fact: its predicate name, arguments (str names, `Text`, int, or
+    tuples `(name, arg, ...)` for terms) and the line where it starts."""
+    name: str
+    args: tuple
+    line: int
+
+    @property
+    def text(self) -> str:
+        return term_text((self.name, *self.args) if self.args else self.name)
+
+
+def term_text(value) -> str:
+    """A value as native text: names and integers as they are, `Text`
+    quoted and escaped, terms `name(arg,...)`."""
+    if isinstance(value, tuple):
+        return f"{value[0]}({','.join(term_text(v) for v in value[1:])})"
+    if isinstance(value, Text):
+        return quote(value)
+    return str(value)
+
+
+def quote(s: str) -> str:
+    """Text as quoted native text (both engines read it back as the same text)."""
+    return '"' + s.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'
+
+
+_BAD_BYTE = re.compile(rb"[^\x20-\x7e\t\n\r]")
+_TOKEN = re.compile(r"""
+    (?P<ws>[ \t\r\n]+)
+  | (?P<comment>%[^\n]*)
+  | (?P<name>[a-z][A-Za-z0-9_]*)
+  | (?P<var>[A-Z_][A-Za-z0-9_]*)
+  | (?P<float>[0-9]+\.[0-9]|[0-9]+[eE][+-]?[0-9])
+  | (?P<int>-?[0-9]+)
+  | (?P<text>"(?:[^"\\]|\\.)*")
+  | (?P<open>\()
+  | (?P<close>\))
+  | (?P<comma>,)
+  | (?P<end>\.(?=[ \t\r\n%]|\Z))
+  | (?P<neck>:-|\?-)
+  | (?P<list>\[)
+  | (?P<other>.)
+""", re.X | re.S)
+# A line holding one flat fact (the usual case), read without the tokenizer.
+_FLAT = re.compile(r"[ \t]*([a-z][A-Za-z0-9_]*)\(((?:[a-z][A-Za-z0-9_]*|-?[0-9]+)"
+                   r"(?:[ \t]*,[ \t]*(?:[a-z][A-Za-z0-9_]*|-?[0-9]+))*)\)\.[ \t\r]*(?:%[^\n]*)?")
+
+
+def read(path: Path | str) -> list[Fact]:
+    """The facts of a theory file; TheoryFileError (`file:line: what`)."""
+    path = Path(path)
+    try:
+        data = path.read_bytes()
+    except FileNotFoundError:
+        raise TheoryFileError(f"{path}: no such file") from None
+    except IsADirectoryError:
+        raise TheoryFileError(f"{path}: a directory, not a theory file") from None
+    except OSError as e:
+        raise TheoryFileError(f"{path}: cannot be read ({e.strerror})") from None
+    return parse(data, str(path))
+
+
+def check_bytes(data: bytes, source: str, first_line: int = 1) -> str:
+    """`data` as text, or TheoryFileError naming the line of its first byte
+    that is not printable ASCII (tab, newline and carriage return allowed)."""
+    m = _BAD_BYTE.search(data)
+    if m:
+        line = first_line + data.count(b"\n", 0, m.start())
+        raise TheoryFileError(f"{source}:{line}: " + NOT_ASCII.format(data[m.start()]))
+    return data.decode("ascii")
+
+
+def parse(data: bytes | str, source: str = "<theory>", first_line: int = 1) -> list[Fact]:
+    """The facts of theory-file text (bytes, or str), in file order."""
+    if isinstance(data, str):
+        data = data.encode("utf-8", errors="surrogateescape")
+    text = check_bytes(data, source, first_line)
+    facts: list[Fact] = []
+    flat = _FLAT.fullmatch
+    pos, line, n = 0, first_line, len(text)
+    while pos < n:
+        eol = text.find("\n", pos)
+        if eol < 0:
+            eol = n
+        m = flat(text, pos, eol)
+        if m:
+            facts.append(Fact(m.group(1), tuple(_value(a.strip(), source, line)
+                                                for a in m.group(2).split(",")), line))
+        else:
+            # anything else: the tokenizer, up to the end of a line between facts
+            eol, line = _Tokens(text, source, facts).run(pos, line)
+        pos, line = eol + 1, line + 1
+    return facts
+
+
+def _value(token: str, source: str, line: int):
+    if token[0] == "-" or token[0].isdigit():
+        return _integer(token, source, line)
+    return token
+
+
+def _integer(token: str, source: str, line: int) -> int:
+    n = int(token)
+    if not INT_MIN <= n <= INT_MAX:
+        raise TheoryFileError(f"{source}:{line}: " + INT_RANGE.format(token))
+    if str(n) != token:
+        raise TheoryFileError(f"{source}:{line}: " + INT_FORM.format(token))
+    return n
+
+
+def _unescape(token: str, source: str, line: int) -> Text:
+    body = token[1:-1]
+    if "\\" not in body:
+        return Text(body)
+    out, i = [], 0
+    while i < len(body):
+        c = body[i]
+        if c == "\\":
+            nxt = body[i + 1]
+            if nxt not in '\\"n':
+                raise TheoryFileError(f"{source}:{line}: {TEXT_ESCAPE}")
+            out.append("\n" if nxt == "n" else nxt)
+            i += 2
+        else:
+            out.append(c)
+            i += 1
+    return Text("".join(out))
+
+
+class _Tokens:
+    """Facts token by token: a stack of the terms being built. Every error
+    names the line where its fact starts."""
+
+    def __init__(self, text: str, source: str, facts: list[Fact]) -> None:
+        self.text, self.source, self.facts = text, source, facts
+        self.start = 0                  # the line of the current fact; 0 between facts
+        self.stack: list[list] = []     # open terms [name, arg, ...]
+        self.state = "value"            # value (a value may come) | open | after
+
+    def fail(self, what: str = EXPECTED_FACT):
+        raise TheoryFileError(f"{self.source}:{self.start}: {what}")
+
+    def run(self, pos: int, line: int) -> tuple[int, int]:
+        """Read from pos (at line) until a newline between facts, or the
+        end; the position of that newline and its line."""
+        text, match = self.text, _TOKEN.match
+        while pos < len(text):
+            m = match(text, pos)
+            kind, tok = m.lastgroup, m.group()
+            if kind == "ws":
+                nl = tok.find("\n")
+                if nl >= 0 and not self.start:
+                    return pos + nl, line
+                line += tok.count("\n")
+            elif kind != "comment":
+                if not self.start:
+                    self.start = line
+                    if tok == "#":
+                        self.fail(HASH_DIRECTIVE)
+                    if kind == "neck":
+                        self.fail(DIRECTIVE)
+                self.token(kind, tok, text, m.end())
+                if kind == "text":
+                    line += tok.count("\n")
+            pos = m.end()
+        if self.start:
+            self.fail()
+        return pos, line
+
+    def token(self, kind: str, tok: str, text: str, after: int) -> None:
+        if kind == "var":
+            self.fail(VARIABLE)
+        if kind == "float":
+            self.fail(FLOAT)
+        if kind == "list":
+            self.fail(LIST)
+        state = self.state
+        if state == "value":
+            if kind == "name":
+                if text.startswith("(", after):
+                    self.stack.append([tok])
+                    self.state = "open"
+                    return
+                self.value(tok)
+            elif kind == "int" and self.stack:
+                self.value(_integer(tok, self.source, self.start))
+            elif kind == "text" and self.stack:
+                self.value(_unescape(tok, self.source, self.start))
+            else:
+                self.fail()
+        elif state == "open":            # just after name(
+            self.state = "value"
+        elif state == "after":
+            if kind == "comma" and self.stack:
+                self.state = "value"
+            elif kind == "close" and self.stack:
+                self.value(tuple(self.stack.pop()))
+            elif kind == "end" and not self.stack:
+                self.state = "value"
+                self.start = 0
+            elif kind == "neck" and tok == ":-" and not self.stack:
+                self.fail(RULE)
+            else:
+                self.fail()
+
+    def value(self, value) -> None:
+        if self.stack:
+            self.stack[-1].append(value)
+        else:
+            name, args = (value[0], value[1:]) if isinstance(value, tuple) else (value, ())
+            self.facts.append(Fact(name, args, self.start))
+        self.state = "after"
