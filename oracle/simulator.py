@@ -11,6 +11,7 @@ they arrive, so an interrupted run loses only the simulations in flight.
 """
 from __future__ import annotations
 
+import re
 from pathlib import Path
 from typing import Any, Optional
 
@@ -23,6 +24,8 @@ from pantarhei.theory.lexicon import load_vocabulary
 
 #: Seconds a single simulation may take before it counts as hung.
 DEFAULT_TIMEOUT = 120.0
+#: The error of a simulation stopped by the timeout (oracle/executors.py).
+_TIMED_OUT = re.compile(r"^timed out after ([0-9.eE+-]+) s$")
 
 
 class Simulator:
@@ -63,12 +66,14 @@ class Simulator:
         todo: list[tuple[int, np.ndarray]] = []
         for k, rows in rows_of.items():
             r = stored.get(k)
-            if r is not None and (r.ok or not self.retry_failed):
+            if r is not None and (r.ok or not self.retry_failed) and not self._cut_short(r.error):
                 for i in rows:
                     scores[i], records[i], errors[i], cached[i] = r.scores, r.record, r.error, True
             else:
                 todo.append((rows[0], P[rows[0]]))
 
+        if self.store is not None:       # a store that cannot take them: before the first pour
+            self.store.require_writable(len(todo))
         cost = getattr(self.oracle, "cost", None)
         if cost is not None:
             # longest first, so that no long simulation is left running alone at the end
@@ -96,12 +101,24 @@ class Simulator:
 
         try:
             self.executor.run(self.oracle, todo, on_result, self.timeout)
+        except BaseException:
+            if self.store is not None:
+                self.store.save_unsaved()
+            raise
         finally:
             if bar is not None:
                 bar.close()
+        if self.store is not None:      # StoreError naming the recovery file if writing failed
+            self.store.settle()
         self.last_records, self.last_errors, self.last_cached = records, errors, cached
         self.last_simulated = len(todo)
         return scores
+
+    def _cut_short(self, error: Optional[str]) -> bool:
+        """Did a stored failure time out under a shorter limit than this
+        simulator's? Then it is no outcome of the pour: simulate it again."""
+        m = _TIMED_OUT.match(error or "")
+        return m is not None and (self.timeout is None or self.timeout > float(m.group(1)))
 
     def close(self) -> None:
         self.executor.close()
