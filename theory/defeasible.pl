@@ -100,7 +100,7 @@ load_theory(File) :-
     % defined here, so that a theory without rules does not reach the
     % built-in rule/3 that the module would otherwise inherit
     forall(theory_predicate(P, A), dynamic(Scratch:P/A)),
-    load_facts(File, Scratch),
+    load_theory_facts(File, Scratch),
     clear_theory,
     forall(theory_predicate(P, A),
            ( functor(H, P, A),

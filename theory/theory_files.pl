@@ -1,6 +1,10 @@
 :- module(theory_files,
           [ load_facts/2,              % +File, +Module
+            load_theory_facts/2,       % +File, +Module
+            read_fact_file/2,          % +File, -LineFacts
             check_fact/1,              % +Term
+            check_theory_fact/2,       % +Fact, -Problem
+            term_text/2,               % +Term, -Text
             theory_error_message/2,    % +Error, -Message
             error_message/2            % +Error, -Message
           ]).
@@ -8,17 +12,29 @@
 
 Every theory file of the project (the vocabulary, the constraints, learned
 and hand-written theories) is a list of ground facts that both SWI-Prolog
-and clingo read: atoms written as plain identifiers, integers, quoted text
-("..."), and compound terms of those. No lists, no floats, no operators, no
-quoted atoms, no rules.
+and clingo read the same way: ASCII text; facts =|name.|= or
+=|name(Arg, ...).|=, where an argument is a name (=|[a-z][A-Za-z0-9_]*|=),
+an integer in decimal from -2147483648 to 2147483647 (what clingo holds),
+quoted text ("...", with =|\\|=, =|\"|= and =|\n|= as its only escapes) or
+a term of those; =|%|= starts a comment. No directives (=|:- ...|=,
+=|#include|=, =|#script|=), rules, variables, lists, floats, operators,
+quoted atoms or block comments: a theory file is data.
 
-This module reads such a file term by term, checks each term, and adds the
-facts to a module. A malformed file raises
+This module reads such a file term by term with read_term/3, checks each
+term against the text it was read from (so that =|'a'|=, =|0x1F|= or
+=|"\x41\"|=, which SWI-Prolog reads but clingo does not, are refused), and
+adds the facts to a module. Python reads the same language
+(bridge/theories/facts.py): both refuse the same files with the same
+message, naming the line where the offending fact starts (or of the
+offending byte). A malformed file raises
 =|theory_error(File, Line, Expected)|=, which theory_error_message/2 turns
 into one line =|File:Line: Expected|=.
 */
 
 :- use_module(library(readutil)).
+:- use_module(library(lists)).
+:- use_module(library(apply)).
+:- use_module(library(assoc)).
 
 %!  load_facts(+File, +Module) is det.
 %
@@ -27,15 +43,131 @@ into one line =|File:Line: Expected|=.
 %
 %   @error theory_error(File, Line, Expected) if a term is malformed.
 load_facts(File, Module) :-
-    (   exists_file(File)
-    ->  true
-    ;   throw(theory_error(File, 0, "no such file"))
+    read_fact_file(File, LineFacts),
+    forall(member(_-F, LineFacts), add_fact(Module, F)).
+
+%!  load_theory_facts(+File, +Module) is det.
+%
+%   As load_facts/2, for a theory: the facts of its predicates (fact/1,
+%   rule/3, body/2, sup/2, learned/1, setting/2, provenance/3) must also be
+%   of their forms (check_theory_fact/2), a rule name is given once, and
+%   every body/2 belongs to a rule.
+%
+%   @error theory_error(File, Line, Expected) naming the first offence.
+load_theory_facts(File, Module) :-
+    read_fact_file(File, LineFacts),
+    empty_assoc(Rules0),
+    foldl(check_theory_line(File), LineFacts, Rules0, Rules),
+    (   member(Line-body(R, _), LineFacts),
+        \+ get_assoc(R, Rules, _)
+    ->  format(string(M), "body(~w, _) of a rule ~w that has no rule(~w, Kind, Head) fact", [R, R, R]),
+        throw(theory_error(File, Line, M))
+    ;   true
     ),
-    setup_call_cleanup(
-        open(File, read, In),
-        read_facts(In, File, Facts),
-        close(In)),
-    forall(member(F, Facts), add_fact(Module, F)).
+    forall(member(_-F, LineFacts), add_fact(Module, F)).
+
+check_theory_line(File, Line-Fact, Rules0, Rules) :-
+    (   check_theory_fact(Fact, Problem)
+    ->  throw(theory_error(File, Line, Problem))
+    ;   true
+    ),
+    (   Fact = rule(R, _, _)
+    ->  (   get_assoc(R, Rules0, _)
+        ->  format(string(M), "a second rule named ~w", [R]),
+            throw(theory_error(File, Line, M))
+        ;   put_assoc(R, Rules0, Line, Rules)
+        )
+    ;   Rules = Rules0
+    ).
+
+%!  check_theory_fact(+Fact, -Problem:string) is semidet.
+%
+%   Problem says how Fact, a fact of a theory predicate, is not of its
+%   form; fails if it is (or if it is of another predicate).
+check_theory_fact(Fact, Problem) :-
+    functor(Fact, Name, Arity),
+    theory_form(Name, Form, _),
+    (   \+ theory_form(Name, _, Arity)
+    ->  format(string(Problem), "expected ~w, not a ~w/~w fact", [Form, Name, Arity])
+    ;   Fact =.. [_|Args],
+        theory_names(Name, Ns),
+        member(I, Ns), nth0(I, Args, A), \+ plain_name(A)
+    ->  term_text(A, T),
+        format(string(Problem), "~w: a name in lower case letters, digits and _, not ~w", [Form, T])
+    ;   Fact = rule(R, K, _), \+ memberchk(K, [strict, defeasible, defeater])
+    ->  term_text(K, T),
+        format(string(Problem), "rule ~w: kind strict, defeasible or defeater, not ~w", [R, T])
+    ;   theory_literal_arg(Fact, L),
+        literal_problem(L, Problem)
+    ->  true
+    ).
+
+theory_form(fact, "fact(L)", 1).
+theory_form(rule, "rule(Id, Kind, Head)", 3).
+theory_form(body, "body(Id, L)", 2).
+theory_form(sup, "sup(R1, R2)", 2).
+theory_form(learned, "learned(Id)", 1).
+theory_form(setting, "setting(Key, Value)", 2).
+theory_form(provenance, "provenance(Id, Key, Value)", 3).
+
+theory_names(rule, [0]).
+theory_names(body, [0]).
+theory_names(sup, [0, 1]).
+theory_names(learned, [0]).
+theory_names(setting, [0]).
+theory_names(provenance, [0, 1]).
+theory_names(fact, []).
+
+theory_literal_arg(fact(L), L).
+theory_literal_arg(rule(_, _, L), L).
+theory_literal_arg(body(_, L), L).
+
+plain_name(A) :- atom(A), lower_name(A).
+
+literal_problem(L, Problem) :-
+    (   L = neg(neg(_))
+    ->  term_text(L, T),
+        format(string(Problem), "a literal or its negation neg(L), not a double negation ~w", [T])
+    ;   \+ literal(L)
+    ->  term_text(L, T),
+        format(string(Problem), "a literal such as p, bird(tweety) or neg(p) (names and integers as arguments), not ~w", [T])
+    ).
+
+literal(neg(A)) :- !, literal_atom(A).
+literal(A) :- literal_atom(A).
+
+literal_atom(A) :- atom(A), !, lower_name(A).
+literal_atom(A) :-
+    compound(A),
+    compound_name_arguments(A, N, Args),
+    Args \== [],
+    lower_name(N),
+    forall(member(X, Args), ( integer(X) -> true ; atom(X), lower_name(X) )).
+
+%!  term_text(+Term, -Text:string) is det.
+%
+%   Term as native text, as Python writes it (model.term_text): names and
+%   integers as they are, text quoted and escaped, terms =|name(a,b)|=.
+term_text(T, Text) :-
+    string(T), !,
+    string_codes(T, Cs),
+    foldl(escape_code, Cs, Out, []),
+    string_codes(S, Out),
+    string_concat("\"", S, S1),
+    string_concat(S1, "\"", Text).
+term_text(T, Text) :-
+    compound(T), !,
+    compound_name_arguments(T, N, Args),
+    maplist(term_text, Args, Ts),
+    atomic_list_concat(Ts, ',', Inner),
+    format(string(Text), "~w(~w)", [N, Inner]).
+term_text(T, Text) :-
+    format(string(Text), "~w", [T]).
+
+escape_code(0'\\, [0'\\, 0'\\|T], T) :- !.
+escape_code(0'", [0'\\, 0'"|T], T) :- !.
+escape_code(0'\n, [0'\\, 0'n|T], T) :- !.
+escape_code(C, [C|T], T).
 
 add_fact(Module, Fact) :-
     functor(Fact, Name, Arity),
@@ -45,79 +177,256 @@ add_fact(Module, Fact) :-
     ),
     assertz(Module:Fact).
 
-read_facts(In, File, Facts) :-
-    catch(read_term(In, Term, [term_position(Pos), syntax_errors(error),
-                                double_quotes(string), variable_names(Vs)]),
-          error(syntax_error(What), Context),
-          syntax_error_line(File, What, Context)),
-    (   Term == end_of_file
-    ->  Facts = []
-    ;   stream_position_data(line_count, Pos, Line),
-        catch((check_fact(Term), Expected = none), bad_fact(Expected), true),
-        (   Expected \== none
-        ->  throw(theory_error(File, Line, Expected))
-        ;   Vs \== []
-        ->  throw(theory_error(File, Line, "a ground fact (no variables)"))
-        ;   Facts = [Term|Rest]
-        ),
-        read_facts(In, File, Rest)
+%!  read_fact_file(+File, -LineFacts:list) is det.
+%
+%   The facts of File as Line-Fact pairs in file order, Line where the
+%   fact starts.
+%
+%   @error theory_error(File, Line, Expected) if File is not of the
+%   language (see the module comment).
+read_fact_file(File, LineFacts) :-
+    (   exists_file(File)
+    ->  true
+    ;   throw(theory_error(File, 0, "no such file"))
+    ),
+    read_file_to_string(File, Text, [encoding(octet)]),
+    check_bytes(File, Text),
+    setup_call_cleanup(
+        open_string(Text, In),
+        read_facts(In, Text, File, LineFacts),
+        close(In)).
+
+% check_bytes(+File, +Text): every byte printable ASCII, tab, newline or
+% carriage return.
+check_bytes(File, Text) :-
+    bad_bytes(Bad),
+    split_string(Text, Bad, "", [First|_]),
+    string_length(First, N0),
+    string_codes(Nul, [0]),
+    (   once(sub_string(Text, Z, 1, _, Nul)), Z < N0
+    ->  N = Z                           % (split_string/4 stops at a NUL separator)
+    ;   N = N0
+    ),
+    string_length(Text, Len),
+    (   N =:= Len
+    ->  true
+    ;   N1 is N + 1,
+        string_code(N1, Text, C),
+        sub_string(Text, 0, N, _, Before),
+        split_string(Before, "\n", "", Lines),
+        length(Lines, Line),
+        format(string(M), "byte 0x~|~`0t~16r~2+ is not printable ASCII: a theory file is ASCII text (no other characters, no invalid UTF-8)", [C]),
+        throw(theory_error(File, Line, M))
     ).
 
-syntax_error_line(File, What, Context) :-
-    (   Context = stream(_, Line, _, _)
+bad_bytes(Bad) :-                       % (without NUL: see check_bytes/2)
+    numlist(1, 255, All),
+    exclude(good_byte, All, Codes),
+    string_codes(Bad, Codes).
+
+good_byte(C) :- C >= 0x20, C =< 0x7e, !.
+good_byte(0'\t).
+good_byte(0'\n).
+good_byte(0'\r).
+
+read_facts(In, Text, File, Facts) :-
+    skip_layout(In),
+    peek_char(In, C0),
+    (   C0 == end_of_file
+    ->  Facts = []
+    ;   line_count(In, Line),
+        catch(read_term(In, Term, [subterm_positions(Pos), syntax_errors(error),
+                                    double_quotes(string), comments(Comments)]),
+              error(syntax_error(_), _),
+              Term = '$syntax_error'),
+        (   C0 == '#'
+        ->  throw(theory_error(File, Line, "a fact, not a directive (#include, #script, ...): a theory file is data"))
+        ;   Term == '$syntax_error'
+        ->  throw(theory_error(File, Line, "expected a fact such as name(arg, 1)."))
+        ;   catch(( check_fact_text(Term, Pos, Comments, Text), Expected = none ),
+                  bad_fact(Expected), true),
+            Expected \== none
+        ->  throw(theory_error(File, Line, Expected))
+        ;   Facts = [Line-Term|Rest],
+            read_facts(In, Text, File, Rest)
+        )
+    ).
+
+% skip_layout(+In): past white space and % comments, to the next fact.
+skip_layout(In) :-
+    peek_char(In, C),
+    (   C == end_of_file
     ->  true
-    ;   Context = file(_, Line, _, _)
-    ->  true
-    ;   Line = 0
+    ;   char_type(C, space)
+    ->  get_char(In, _), skip_layout(In)
+    ;   C == '%'
+    ->  skip(In, 0'\n), skip_layout(In)
+    ;   true
+    ).
+
+% check_fact_text(+Term, +Pos, +Comments, +Text): Term, read at Pos from
+% Text, is a fact of the language.
+check_fact_text(Term, Pos, Comments, Text) :-
+    term_start(Pos, Start),
+    (   member(CPos-C, Comments), sub_string(C, 0, 2, _, "/*"),
+        stream_position_data(char_count, CPos, At), At < Start
+    ->  bad(expected)
+    ;   true
     ),
-    format(string(Msg), "syntax error (~w): expected a fact such as name(arg, 1).", [What]),
-    throw(theory_error(File, Line, Msg)).
+    check_top(Term),
+    check_text(Pos, Term, Text, top),
+    (   member(_-C, Comments), sub_string(C, 0, 2, _, "/*")
+    ->  bad(expected)
+    ;   true
+    ).
+
+term_start(From-_, From) :- !.
+term_start(P, From) :- compound(P), arg(1, P, From), integer(From), !.
+term_start(_, 0).
+
+bad(expected) :- !, throw(bad_fact("expected a fact such as name(arg, 1).")).
+bad(M) :- throw(bad_fact(M)).
+
+% check_text(+Pos, +Term, +Text, +Where): Term is written in Text as the
+% language writes it (an unquoted name, a decimal integer, "..." with the
+% three escapes, name(...) without layout before the parenthesis).
+check_top(Term) :-
+    (   var(Term)
+    ->  true                                    % check_text/4 says so
+    ;   Term = (:- _)
+    ->  bad("a fact, not a directive: a theory file is data")
+    ;   Term = (?- _)
+    ->  bad("a fact, not a directive: a theory file is data")
+    ;   Term = (_ :- _)
+    ->  bad("a fact, not a rule")
+    ;   true
+    ).
+
+check_text(_, T, _, _) :-
+    var(T), !,
+    bad("a ground fact (no variables)").
+check_text(_, T, _, _) :-
+    float(T), !,
+    bad("an integer, not a float (use integer units such as mm or permille)").
+check_text(_, T, _, _) :-
+    ( T == [] ; T = [_|_] ), !,
+    bad("an atom, integer, text or term, not a list").
+check_text(From-To, T, Text, Where) :-
+    !,
+    (   atom(T)
+    ->  atom_length(T, N),
+        (   To - From =:= N, lower_name(T) -> true ; bad(expected) )
+    ;   integer(T), Where == arg
+    ->  Len is To - From,
+        sub_string(Text, From, Len, _, Raw),
+        check_integer(Raw, T)
+    ;   bad(expected)
+    ).
+check_text(string_position(From, To), T, Text, arg) :-
+    string(T), !,
+    Len is To - From,
+    sub_string(Text, From, Len, _, Raw),
+    string_codes(Raw, Codes),
+    (   phrase(quoted(Escapes), Codes)
+    ->  (   Escapes == ok -> true
+        ;   bad("quoted text with \\\\, \\\" and \\n as its only escapes")
+        )
+    ;   bad(expected)
+    ).
+check_text(term_position(From, _, From, FTo, ArgsPos), T, Text, _) :-
+    compound(T),
+    compound_name_arguments(T, Name, Args),
+    Args \== [],
+    atom_length(Name, N),
+    FTo - From =:= N,
+    lower_name(Name),
+    sub_string(Text, FTo, 1, _, "("),
+    !,
+    foldl(check_arg_text(Text), ArgsPos, Args, 0, _).
+check_text(_, _, _, _) :-
+    bad(expected).
+
+check_arg_text(Text, Pos, Arg, N, N1) :-
+    N1 is N + 1,
+    check_text(Pos, Arg, Text, arg).
+
+check_integer(Raw, N) :-
+    (   string_codes(Raw, Cs),
+        ( Cs = [0'-|Ds] -> true ; Ds = Cs ),
+        Ds \== [],
+        forall(member(D, Ds), code_type(D, digit(_))),
+        forall(member(D, Ds), D =< 0'9)
+    ->  (   N >= -2147483648, N =< 2147483647
+        ->  (   number_string(N, Raw) , format(string(Raw), "~d", [N])
+            ->  true
+            ;   format(string(M), "an integer in decimal digits without leading zeros, not ~w", [Raw]),
+                bad(M)
+            )
+        ;   format(string(M), "an integer from -2147483648 to 2147483647, not ~w", [Raw]),
+            bad(M)
+        )
+    ;   bad(expected)
+    ).
+
+% quoted(-Escapes)// : "..." whose escapes are \\, \" and \n (Escapes = ok),
+% or others too (Escapes = bad).
+quoted(E) --> [0'"], quoted_codes(ok, E), [0'"].
+
+quoted_codes(E0, E) --> [0'\\, C], !,
+    { memberchk(C, [0'\\, 0'", 0'n]) -> E1 = E0 ; E1 = bad },
+    quoted_codes(E1, E).
+quoted_codes(E0, E) --> [C], { C \== 0'", C \== 0'\\ }, !, quoted_codes(E0, E).
+quoted_codes(E, E) --> [].
 
 %!  check_fact(+Term) is det.
 %
-%   Succeed if Term is a fact in the common subset of Prolog and ASP.
+%   Succeed if Term, as read, is a fact in the common subset of Prolog and
+%   ASP (check_fact_text/4 checks how it was written as well).
 %
 %   @error bad_fact(Expected) saying what was expected instead.
 check_fact(Term) :-
-    (   Term = (_ :- _)
-    ->  throw(bad_fact("a fact, not a rule"))
+    (   var(Term)
+    ->  bad("a ground fact (no variables)")
     ;   Term = (:- _)
-    ->  throw(bad_fact("a fact, not a directive"))
-    ;   true
-    ),
-    (   callable(Term)
+    ->  bad("a fact, not a directive: a theory file is data")
+    ;   Term = (?- _)
+    ->  bad("a fact, not a directive: a theory file is data")
+    ;   Term = (_ :- _)
+    ->  bad("a fact, not a rule")
+    ;   Term = [_|_]
+    ->  bad("an atom, integer, text or term, not a list")
+    ;   Term == []
+    ->  bad("an atom, integer, text or term, not a list")
+    ;   callable(Term)
     ->  true
-    ;   throw(bad_fact("a fact such as name(arg, 1)"))
+    ;   bad(expected)
     ),
-    check_name(Term),
-    Term =.. [_|Args],
-    maplist(check_arg, Args).
+    (   compound(Term)
+    ->  compound_name_arguments(Term, _, Args),
+        maplist(check_arg, Args)
+    ;   true
+    ).
 
 check_arg(A) :- var(A), !,
-    throw(bad_fact("a ground fact (no variables)")).
+    bad("a ground fact (no variables)").
 check_arg(A) :- integer(A), !.
 check_arg(A) :- string(A), !.
 check_arg(A) :- float(A), !,
-    throw(bad_fact("an integer, not a float (use integer units such as mm or permille)")).
-check_arg(A) :- is_list(A), !,
-    throw(bad_fact("an atom, integer, text or term, not a list")).
-check_arg(A) :- atom(A), !, check_name(A).
+    bad("an integer, not a float (use integer units such as mm or permille)").
+check_arg(A) :- ( A == [] ; A = [_|_] ), !,
+    bad("an atom, integer, text or term, not a list").
+check_arg(A) :- atom(A), !.
 check_arg(A) :- compound(A), !,
-    check_name(A),
-    A =.. [_|Args],
+    compound_name_arguments(A, _, Args),
     maplist(check_arg, Args).
 check_arg(_) :-
-    throw(bad_fact("an atom, integer, text or term")).
+    bad(expected).
 
-check_name(Term) :-
-    functor(Term, Name, _),
+% lower_name(+Atom): [a-z][A-Za-z0-9_]*, in ASCII.
+lower_name(Name) :-
     atom_codes(Name, [C|Cs]),
-    (   code_type(C, lower),
-        forall(member(X, Cs), code_type(X, csym))
-    ->  true
-    ;   format(string(Msg), "a name in lower case letters, digits and _, not '~w'", [Name]),
-        throw(bad_fact(Msg))
-    ).
+    C >= 0'a, C =< 0'z,
+    forall(member(X, Cs), ( X < 128, code_type(X, csym) )).
 
 %!  theory_error_message(+Error, -Message:string) is semidet.
 %

@@ -11,6 +11,11 @@ load_error(Text, Line, Expected) :-
     catch(load_facts(File, plunit_scratch), theory_error(File, Line, Expected), true),
     delete_file(File).
 
+theory_error(Text, Line, Expected) :-
+    write_tmp(Text, File),
+    catch(load_theory_facts(File, plunit_scratch), theory_error(File, Line, Expected), true),
+    delete_file(File).
+
 test(facts_are_loaded, X-T == f(a, -3)-"some text") :-
     write_tmp("p(f(a, -3), \"some text\").\n", File),
     load_facts(File, plunit_loaded),
@@ -44,5 +49,50 @@ test(error_message_of_a_theory_error, M == "f.pl:3: a fact") :-
 test(error_message_of_another_error, M == "atom_length/2: Arguments are not sufficiently instantiated") :-
     catch(atom_length(_, _), E, true),
     error_message(E, M).
+
+test(an_include_is_refused, [Line, Expected] == [2, "a fact, not a directive (#include, #script, ...): a theory file is data"]) :-
+    load_error("a(1).\n#include \"other.pl\".\n", Line, Expected).
+
+test(a_directive_is_refused, Expected == "a fact, not a directive: a theory file is data") :-
+    load_error(":- initialization(halt).\n", _, Expected).
+
+test(an_integer_clingo_cannot_hold_is_refused, Expected == "an integer from -2147483648 to 2147483647, not 3000000000") :-
+    load_error("size(3000000000).\n", _, Expected).
+
+test(an_integer_in_another_notation_is_refused, Line == 1) :-
+    load_error("a(0x1F).\n", Line, _).
+
+test(a_non_ascii_byte_names_its_line, [Line, Expected] == [3, "byte 0xc3 is not printable ASCII: a theory file is ASCII text (no other characters, no invalid UTF-8)"]) :-
+    load_error("a(1).\n\n% caf\u00e9\n", Line, Expected).
+
+test(an_escape_clingo_does_not_read_is_refused, Expected == "quoted text with \\\\, \\\" and \\n as its only escapes") :-
+    load_error("a(\"x\\ty\").\n", _, Expected).
+
+test(quoted_text_keeps_its_escapes, T == "a\"b\nc") :-
+    write_tmp("p(\"a\\\"b\\nc\").\n", File),
+    load_facts(File, plunit_text),
+    plunit_text:p(T),
+    delete_file(File).
+
+test(an_error_names_the_line_where_the_fact_starts, Line == 2) :-
+    load_error("a(1).\nb(1,\n  2,\n  'x').\n", Line, _).
+
+test(a_rule_of_another_kind_names_its_line, [Line, Expected] == [2, "rule r2: kind strict, defeasible or defeater, not usually"]) :-
+    theory_error("rule(r1, defeasible, b).\nrule(r2, usually, c).\n", Line, Expected).
+
+test(a_literal_with_text_is_refused, Line == 1) :-
+    theory_error("rule(h2, defeasible, p(\"x\")).\n", Line, _).
+
+test(a_second_rule_of_a_name_is_refused, [Line, Expected] == [3, "a second rule named r1"]) :-
+    theory_error("rule(r1, defeasible, b).\nbody(r1, a).\nrule(r1, defeasible, b).\n", Line, Expected).
+
+test(a_body_without_its_rule_is_refused, Line == 2) :-
+    theory_error("rule(r1, defeasible, b).\nbody(r9, a).\n", Line, _).
+
+test(a_theory_fact_of_another_arity_is_refused, Expected == "expected rule(Id, Kind, Head), not a rule/2 fact") :-
+    theory_error("rule(r1, b).\n", _, Expected).
+
+test(term_text_as_python_writes_it, T == "p(a,-3,\"x\\\"y\")") :-
+    term_text(p(a, -3, "x\"y"), T).
 
 :- end_tests(theory_files).

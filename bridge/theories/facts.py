@@ -75,14 +75,16 @@ def quote(s: str) -> str:
     return '"' + s.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'
 
 
+#: What may follow a backslash in SWI-Prolog's quoted text.
+_SWI_ESCAPES = frozenset("abfrtvesc01234567x`'\n")
 _BAD_BYTE = re.compile(rb"[^\x20-\x7e\t\n\r]")
 _TOKEN = re.compile(r"""
     (?P<ws>[ \t\r\n]+)
   | (?P<comment>%[^\n]*)
   | (?P<name>[a-z][A-Za-z0-9_]*)
   | (?P<var>[A-Z_][A-Za-z0-9_]*)
-  | (?P<float>[0-9]+\.[0-9]|[0-9]+[eE][+-]?[0-9])
-  | (?P<int>-?[0-9]+)
+  | (?P<float>-?[0-9]+\.[0-9]|-?[0-9]+[eE][+-]?[0-9])
+  | (?P<int>-?[0-9]+(?![A-Za-z0-9_']))
   | (?P<text>"(?:[^"\\]|\\.)*")
   | (?P<open>\()
   | (?P<close>\))
@@ -169,7 +171,9 @@ def _unescape(token: str, source: str, line: int) -> Text:
         if c == "\\":
             nxt = body[i + 1]
             if nxt not in '\\"n':
-                raise TheoryFileError(f"{source}:{line}: {TEXT_ESCAPE}")
+                # an escape SWI-Prolog reads (but clingo does not), or none at all
+                raise TheoryFileError(f"{source}:{line}: "
+                                      f"{TEXT_ESCAPE if nxt in _SWI_ESCAPES else EXPECTED_FACT}")
             out.append("\n" if nxt == "n" else nxt)
             i += 2
         else:
