@@ -136,7 +136,7 @@ def _nan_json(x: Any) -> Any:
     return x
 
 
-def connect(path: str | Path, timeout: float = 60.0) -> sqlite3.Connection:
+def _connect(path: str | Path, timeout: float = 60.0) -> sqlite3.Connection:
     """A connection to the store file (made with its folder if need be) in
     WAL mode, autocommitting: the one way every table of the file is opened."""
     path = str(path)
@@ -146,6 +146,19 @@ def connect(path: str | Path, timeout: float = 60.0) -> sqlite3.Connection:
     db.execute("PRAGMA journal_mode=WAL")
     db.execute("PRAGMA synchronous=NORMAL")
     return db
+
+
+def connect(path: str | Path, timeout: float = 60.0) -> sqlite3.Connection:
+    """A connection to the store file (made with its folder if need be) in
+    WAL mode, autocommitting: the one way every table of the file is opened;
+    StoreError in one line if it cannot be opened to be written."""
+    try:
+        return _connect(path, timeout)
+    except (sqlite3.Error, OSError) as e:
+        if _read_only(e):
+            raise StoreError(f"the store {path} cannot be written ({_reason(e)}): give a writable "
+                             f"--store") from None
+        raise _damaged(str(path), e) from None
 
 
 def _reason(e: BaseException) -> str:
@@ -198,7 +211,7 @@ class Store:
 
     def _open_writable(self, timeout: float) -> sqlite3.Connection:
         """Opened, checked, migrated if need be, and written once."""
-        db = connect(self.path, timeout)
+        db = _connect(self.path, timeout)
         try:
             self._check(db)
             db.execute("BEGIN IMMEDIATE")
