@@ -1,0 +1,150 @@
+"""Theory files are data: Python's reader (bridge/theories) and SWI-Prolog's
+(theory/theory_files.pl, through defeasible:load_theory/1) refuse the same
+hostile files with the same `file:line: what`, and quoted text can never
+become program text for clingo or Prolog."""
+from __future__ import annotations
+
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from pantarhei.bridge.reasoning.logic import Semantics, asp_conclusions, prolog_conclusions
+from pantarhei.bridge.theories import facts
+from pantarhei.bridge.theories.model import read_native
+from pantarhei.theory import THEORY_DIR, TheoryFileError
+
+LITERAL = "a literal such as p, bird(tweety) or neg(p) (names and integers as arguments), not "
+INJECTION = r'rule(h2, defeasible, p("x)).\n#include \"other.pl\".\nrule(h3, defeasible, q(1")).'
+
+#: name -> (file content, line, message)
+CORPUS: dict[str, tuple[bytes, int, str]] = {
+    "injection through quotes": (
+        b"rule(h1, defeasible, a).\n" + INJECTION.encode() + b"\n", 2,
+        LITERAL + r'p("x)).\n#include \"other.pl\".\nrule(h3, defeasible, q(1")'),
+    "injection through quotes, raw newlines": (
+        b'rule(h2, defeasible, p("x)).\n#include "other.pl".\nrule(h3, defeasible, q(1")).\n', 1,
+        facts.EXPECTED_FACT),
+    "#include": (b'fact(a).\n#include "/etc/passwd".\n', 2, facts.HASH_DIRECTIVE),
+    "#script": (b"#script (python)\nimport os\nos.system('touch /tmp/pwned')\n#end.\n", 1,
+                facts.HASH_DIRECTIVE),
+    "#const after a fact on its line": (b"fact(a). #const n = 3.\n", 1, facts.HASH_DIRECTIVE),
+    "#show": (b"fact(a).\n\n  #show fact/1.\n", 3, facts.HASH_DIRECTIVE),
+    "directive": (b"fact(a).\n:- initialization(shell('touch /tmp/pwned')).\n", 2, facts.DIRECTIVE),
+    "query directive": (b"?- halt.\n", 1, facts.DIRECTIVE),
+    "rule": (b'fact(a).\n\nfact(b) :- shell("touch /tmp/pwned").\n', 3, facts.RULE),
+    "term expansion": (b"term_expansion(_, fact(pwned)).\n", 1, facts.VARIABLE),
+    "variable on a later line of its fact": (b"rule(r1,\n  defeasible,\n  X).\n", 1, facts.VARIABLE),
+    "non-ASCII atom": ("fact(a).\nfact(café).\n".encode(), 2, facts.NOT_ASCII.format(0xC3)),
+    "non-ASCII in quoted text": ('setting(note, "naïve").\n'.encode(), 1, facts.NOT_ASCII.format(0xC3)),
+    "invalid UTF-8 in a comment": (b"fact(a).\n% \xff\xfe\nfact(b).\n", 2, facts.NOT_ASCII.format(0xFF)),
+    "NUL byte": (b"fact(a).\nfact(b\x00).\n", 2, facts.NOT_ASCII.format(0)),
+    "integer past 2^31 - 1": (b"setting(size, 3000000000).\n", 1, facts.INT_RANGE.format(3000000000)),
+    "integer below -2^31": (b"setting(size, -2147483649).\n", 1, facts.INT_RANGE.format(-2147483649)),
+    "integer of 400 digits": (b"setting(size, 1" + b"0" * 400 + b").\n", 1,
+                              facts.INT_RANGE.format("1" + "0" * 400)),
+    "integer in hexadecimal": (b"setting(size, 0x1F).\n", 1, facts.EXPECTED_FACT),
+    "integer with leading zeros": (b"setting(size, 007).\n", 1, facts.INT_FORM.format("007")),
+    "float": (b"setting(x, 1.5).\n", 1, facts.FLOAT),
+    "list": (b"setting(x, [1, 2]).\n", 1, facts.LIST),
+    "quoted atom": (b"fact('a').\n", 1, facts.EXPECTED_FACT),
+    "block comment": (b"/* a comment clingo does not read */\nfact(a).\n", 1, facts.EXPECTED_FACT),
+    "escape only SWI-Prolog reads": (b'setting(x, "a\\x41\\b").\n', 1, facts.TEXT_ESCAPE),
+    "ASP pooling": (b"fact(a;b).\n", 1, facts.EXPECTED_FACT),
+    "operator": (b"fact(a:b).\n", 1, facts.EXPECTED_FACT),
+    "no period at the end": (b"fact(a).\nfact(b)\n", 2, facts.EXPECTED_FACT),
+    "two facts without layout": (b"fact(a).fact(b).\n", 1, facts.EXPECTED_FACT),
+    "empty argument list": (b"fact().\n", 1, facts.EXPECTED_FACT),
+    "rule of another kind": (b"rule(r1, defeasible, b).\nrule(r2, usually, c).\n", 2,
+                             "rule r2: kind strict, defeasible or defeater, not usually"),
+    "rule of another arity": (b"rule(r1, b).\n", 1, "expected rule(Id, Kind, Head), not a rule/2 fact"),
+    "rule named by a number": (b"rule(1, defeasible, b).\n", 1,
+                               "rule(Id, Kind, Head): a name in lower case letters, digits and _, not 1"),
+    "nested literal": (b"fact(p(f(a))).\n", 1, LITERAL + "p(f(a))"),
+    "double negation": (b"fact(neg(neg(a))).\n", 1,
+                        "a literal or its negation neg(L), not a double negation neg(neg(a))"),
+    "a second rule of a name": (b"rule(r1, defeasible, b).\nbody(r1, a).\nrule(r1, strict, b).\n", 3,
+                                "a second rule named r1"),
+    "body without its rule": (b"rule(r1, defeasible, b).\nbody(r9, a).\n", 2,
+                              "body(r9, _) of a rule r9 that has no rule(r9, Kind, Head) fact"),
+}
+
+
+def _prolog_errors(paths: list[Path]) -> list[str]:
+    """What defeasible:load_theory/1 says of each file, in one swipl."""
+    swipl = shutil.which("swipl")
+    assert swipl, "SWI-Prolog is needed"
+    files = ", ".join("'" + str(p).replace("'", "\\'") + "'" for p in paths)
+    goal = (f"use_module('{THEORY_DIR / 'defeasible'}'), use_module('{THEORY_DIR / 'theory_files'}'), "
+            f"forall(member(F, [{files}]), "
+            "(catch((load_theory(F), M = ok), E, theory_files:error_message(E, M)), "
+            "format('~w~n', [M])))")
+    p = subprocess.run([swipl, "-q", "-g", goal, "-t", "halt"], capture_output=True, text=True, timeout=120)
+    assert p.returncode == 0, p.stderr
+    return p.stdout.splitlines()
+
+
+def _python_error(path: Path) -> str:
+    try:
+        read_native(path)
+    except TheoryFileError as e:
+        return str(e)
+    return "ok"
+
+
+def test_both_readers_refuse_the_hostile_corpus_alike(tmp_path: Path) -> None:
+    paths = []
+    for i, (content, _, _) in enumerate(CORPUS.values()):
+        path = tmp_path / f"hostile{i}.pl"
+        path.write_bytes(content)
+        paths.append(path)
+    prolog = _prolog_errors(paths)
+    assert len(prolog) == len(paths)
+    for (name, (_, line, message)), path, said in zip(CORPUS.items(), paths, prolog):
+        expected = f"{path}:{line}: {message}"
+        assert _python_error(path) == expected, name
+        assert said == expected, name
+
+
+def test_quoted_text_is_written_back_quoted(tmp_path: Path) -> None:
+    """Text that reads as ASP and Prolog when unquoted stays one string in
+    every engine (before, a quoted argument was written back bare)."""
+    hostile = r'x).\n#include \"other.pl\".\nfact(pwned).\n%'
+    path = tmp_path / "t.pl"
+    path.write_text(f'setting(note, "{hostile}").\nset_aside(0, 1, "{hostile}").\n'
+                    "rule(r1, defeasible, a).\nfact(b).\n")
+    theory = read_native(path)
+    text = hostile.replace(r"\n", "\n").replace(r"\"", '"')
+    assert theory.settings["note"] == [text]
+    again = tmp_path / "again.pl"
+    again.write_text(theory.native())
+    assert read_native(again).settings == theory.settings
+    assert read_native(again).extra == theory.extra
+    for conclusions in (asp_conclusions(theory, Semantics()), prolog_conclusions(theory, Semantics())):
+        assert "pwned" not in conclusions["+D"] and conclusions["+d"] == ["a", "b"]
+    # clingo reads the written theory as the same facts
+    from pantarhei.theory import clingo_module
+
+    ctl = clingo_module().Control(["--warn=none"])
+    ctl.add("base", [], theory.native())
+    ctl.ground([("base", [])])
+    atoms = {str(a.symbol.name) for a in ctl.symbolic_atoms}
+    assert atoms == {"setting", "set_aside", "rule", "fact"}
+    (note,) = [a.symbol for a in ctl.symbolic_atoms if a.symbol.name == "setting"]
+    assert note.arguments[1].string == text
+
+
+def test_the_shipped_theory_reads_alike(tmp_path: Path) -> None:
+    """Every fact of the shipped theory, as both readers read it."""
+    from pantarhei.bridge.theories.loading import DEFAULT_THEORY
+
+    if not DEFAULT_THEORY.is_file():
+        pytest.skip("no shipped theory")
+    python = [f.text for f in facts.read(DEFAULT_THEORY)]
+    swipl = shutil.which("swipl")
+    goal = (f"use_module('{THEORY_DIR / 'theory_files'}'), read_fact_file('{DEFAULT_THEORY}', LF), "
+            "forall(member(_-F, LF), (term_text(F, T), format('~w~n', [T])))")
+    p = subprocess.run([swipl, "-q", "-g", goal, "-t", "halt"], capture_output=True, text=True, timeout=120)
+    assert p.returncode == 0, p.stderr
+    assert p.stdout.splitlines() == python
