@@ -19,6 +19,7 @@ import sys
 from typing import Sequence
 
 from pantarhei.bridge.errors import MissingEngine, TheoryFileError, UserError
+from pantarhei.oracle.store import StoreError
 
 #: Modules of pantarhei.bridge.commands, in the order `--help` lists them.
 COMMANDS = ("vocab", "demo", "simulate", "explore", "querying", "evaluate")
@@ -59,7 +60,11 @@ def main(argv: Sequence[str] | None = None, pin_math: bool = False) -> int:
         if pin_math and pinned(args):
             from pantarhei.oracle import baseline
 
-            baseline.restart_with(baseline.ENVIRONMENT)
+            try:
+                baseline.restart_with(baseline.ENVIRONMENT)
+            except OSError as e:
+                raise UserError(f"cannot restart with the baseline math ({e.strerror or e}): "
+                                f"start it with {' '.join(f'{k}={v!r}' for k, v in baseline.ENVIRONMENT.items())}") from None
         code = args.run(args)
     except UserError as e:
         print(f"pantarhei {args.command}: {e}", file=sys.stderr)
@@ -67,6 +72,9 @@ def main(argv: Sequence[str] | None = None, pin_math: bool = False) -> int:
     except (MissingEngine, TheoryFileError) as e:
         print(f"pantarhei {args.command}: {e}", file=sys.stderr)
         code = 2
+    except StoreError as e:     # the results it could not keep are in the file it names
+        print(f"pantarhei {args.command}: {e}", file=sys.stderr)
+        code = 1
     except KeyboardInterrupt:
         print(f"pantarhei {args.command}: interrupted", file=sys.stderr)
         code = 130

@@ -24,6 +24,24 @@ def replace_with(path: Path | str, write: Callable[[Path], None]) -> None:
         raise
 
 
+def require_writable_file(path: Path | str, flag: str) -> None:
+    """UserError unless a file can be written at `path` (by `replace_with`:
+    its folder, or the nearest one that exists, must be writable): checked
+    before the work whose result goes there."""
+    from pantarhei.bridge.errors import UserError
+
+    path = Path(path)
+    if path.is_dir():
+        raise UserError(f"{flag} {path}: a directory, not a file")
+    folder = path.absolute().parent
+    while not folder.exists():
+        folder = folder.parent
+    if not folder.is_dir():
+        raise UserError(f"{flag} {path}: {folder} is not a directory")
+    if not os.access(folder, os.W_OK | os.X_OK):
+        raise UserError(f"{flag} {path}: cannot write into {folder} (permission denied)")
+
+
 def write_text(path: Path | str, text: str) -> None:
     """Write `text` (UTF-8) to `path` whole or not at all."""
     replace_with(path, lambda tmp: tmp.write_text(text, encoding="utf-8"))

@@ -30,14 +30,14 @@ def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("demo", help="the main job: learn the theory of pouring (PyBullet, 25 "
                                     "rules), write it, ask it the paper's questions and plan")
     options.add_oracle(p)
-    p.add_argument("--max-rules", type=int, default=defaults()["max_rules"],
+    p.add_argument("--max-rules", type=options.count(1, options.MAX_RULES), default=defaults()["max_rules"],
                    help=f"explored antecedents (default {defaults()['max_rules']})")
     options.add_seed(p)
     options.add_theory_out(p, extra="; the DFL version goes beside it as .dfl")
     options.add_store(p)
-    p.add_argument("--verify", type=int, default=10,
+    p.add_argument("--verify", type=options.count(0, options.VERIFY_MAX), default=10,
                    help="pours simulated to check the plan (default 10; 0: none)")
-    p.add_argument("--workers", type=int, help="worker processes (default: one per core)")
+    options.add_workers(p)
     p.add_argument("--no-progress", action="store_true", help="no progress bar")
     p.set_defaults(run=demo, pin=True)
 
@@ -48,16 +48,13 @@ def _heading(text: str) -> None:
 
 def demo(args: argparse.Namespace) -> int:
     from pantarhei.bridge.theories.dfl import write_dfl
-    from pantarhei.bridge.files import write_text
+    from pantarhei.bridge.files import require_writable_file, write_text
     from pantarhei.bridge.theories import loading
     from pantarhei.bridge.commands.querying import ask, plan
     from pantarhei.bridge.exploration.loop import Options, budget_text, explore, stop_text
 
-    if args.max_rules < 1 or args.verify < 0 or (args.workers is not None and args.workers < 1):
-        raise UserError("--max-rules and --workers must be at least 1, --verify at least 0")
     out = Path(args.out)
-    if out.is_dir():
-        raise UserError(f"{out}: a directory, not a theory file")
+    require_writable_file(out, "--out")
     started = time.monotonic()
     curiosity = defaults()["curiosity"]
     _heading(f"Learning the theory of pouring: curious exploration of the {args.oracle} "

@@ -18,11 +18,11 @@ def register(sub: argparse._SubParsersAction) -> None:
     options.add_store(p)
     p.add_argument("--out", default=str(DEFAULT_REPORT),
                    help=f"directory of the report (default {DEFAULT_REPORT}/)")
-    p.add_argument("--scenes", type=int, default=150,
+    p.add_argument("--scenes", type=options.count(1, options.COUNT_MAX), default=150,
                    help="held-out scenes per set, one pour each (default 150)")
-    p.add_argument("--verify", type=int, default=10,
+    p.add_argument("--verify", type=options.count(0, options.VERIFY_MAX), default=10,
                    help="pours simulated per plan (default 10)")
-    p.add_argument("--paper-samples", type=int, default=20,
+    p.add_argument("--paper-samples", type=options.count(0, options.VERIFY_MAX), default=20,
                    help="pours simulated per example rule of the paper (default 20)")
     options.add_seed(p)
     p.add_argument("--no-gifs", action="store_true", help="do not render pours as GIFs")
@@ -36,15 +36,15 @@ def register(sub: argparse._SubParsersAction) -> None:
 def evaluate(args: argparse.Namespace) -> int:
     from pantarhei.bridge.evaluation.pipeline import Options, evaluate as run
     from pantarhei.bridge.evaluation.report import headline, write
+    from pantarhei.bridge.files import require_writable_file
 
     theory = Path(args.theory)
     if not theory.is_file():
         raise UserError(f"{theory}: no such theory (learn one with `pantarhei explore`)")
-    if args.workers is not None and args.workers < 1:
-        raise UserError("--workers must be at least 1")
     out = Path(args.out)
     if out.exists() and not out.is_dir():
         raise UserError(f"{out}: not a directory")
+    require_writable_file(out / "evaluation.json", "--out")
     ev = run(Options(theory=theory, store=Path(args.store), scenes=args.scenes, seed=args.seed,
                      verify=args.verify, paper_samples=args.paper_samples,
                      executor=args.executor, workers=args.workers,

@@ -19,40 +19,40 @@ QUALIFY = ("weighted", "argmax")
 def register(sub: argparse._SubParsersAction) -> None:
     d = defaults()
     p = sub.add_parser("explore", help="learn a theory by curiosity-driven exploration (Algorithm 1)")
-    p.add_argument("--max-rules", type=int, default=d["max_rules"],
+    p.add_argument("--max-rules", type=options.count(1, options.MAX_RULES), default=d["max_rules"],
                    help="the budget: this many explored antecedents (paper), the pours of this "
                         f"many batches (discover; default {d['max_rules']})")
-    p.add_argument("--samples", type=int,
+    p.add_argument("--samples", type=options.count(1, options.SAMPLES_MAX),
                    help="simulations per explored antecedent (default: parameters + 1)")
     p.add_argument("--curiosity", choices=("discover", "paper"), default=d["curiosity"],
                    help="discover: queue the candidates (moves past where a significant plane's "
                         "verdict flips, neighbours, random jumps) a forest of the pours so far "
                         "predicts to show something new, most novel first; paper: Algorithm 1 "
                         f"as the paper states it (default {d['curiosity']})")
-    p.add_argument("--threshold", type=float,
+    p.add_argument("--threshold", type=options.number(0),
                    help="discover: the significance level of the permutation test "
                         f"(default {d['significance']}); paper: the plane slope below which "
                         f"nothing new is explored (default {d['threshold']})")
-    p.add_argument("--resample", type=int, default=d["resample"],
+    p.add_argument("--resample", type=options.count(0, options.COUNT_MAX), default=d["resample"],
                    help="discover: more batches of an antecedent whose planes are all undecided "
                         f"(default {d['resample']}); --max-rules then counts batches")
-    p.add_argument("--novelty", type=float, default=d["novelty"],
+    p.add_argument("--novelty", type=options.number(0, 1), default=d["novelty"],
                    help="discover: the predicted novelty, from 0 to 1, a candidate needs to be "
                         "queued, scaled by the probes' mean score so far "
                         f"(default {d['novelty']})")
-    p.add_argument("--queue", type=int, default=d["queue"],
+    p.add_argument("--queue", type=options.count(1, options.COUNT_MAX), default=d["queue"],
                    help=f"discover: A_new keeps this many most novel candidates (default {d['queue']})")
-    p.add_argument("--jumps", type=int, default=d["jumps"],
+    p.add_argument("--jumps", type=options.count(1, options.COUNT_MAX), default=d["jumps"],
                    help="discover: uniformly random valid antecedents drawn as candidates each "
                         f"step (default {d['jumps']})")
-    p.add_argument("--probe", type=int, default=d["probe"],
+    p.add_argument("--probe", type=options.count(0, options.SAMPLES_MAX), default=d["probe"],
                    help="discover: simulate this many pours of a candidate's batch first, and "
                         "set it aside for the next when they show no new, reproducible "
                         f"consequent; 0: no probes (default {d['probe']})")
-    p.add_argument("--probe-attempts", type=int, default=d["probe_attempts"],
+    p.add_argument("--probe-attempts", type=options.count(1, options.COUNT_MAX), default=d["probe_attempts"],
                    help="discover: candidates probed at most in a step; then the one whose "
                         f"probe scored best is explored (default {d['probe_attempts']})")
-    p.add_argument("--cover", type=int, default=d["cover"],
+    p.add_argument("--cover", type=options.count(0, options.COUNT_MAX), default=d["cover"],
                    help="discover: the last probe of a step goes to the candidate whose rarest "
                         "proposition the fewest pours so far hold, when fewer than this many do; "
                         f"0: never (default {d['cover']})")
@@ -60,15 +60,15 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="discover: 1 to explore the priors (nothing said: every parameter from "
                         "its prior, as a question's unsaid ones) with the budget's last batch, 0 not to "
                         f"(default {d['prior']})")
-    p.add_argument("--permutations", type=int, default=d["permutations"],
+    p.add_argument("--permutations", type=options.count(1, options.COUNT_MAX), default=d["permutations"],
                    help=f"discover: shuffles of the permutation test (default {d['permutations']})")
     options.add_seed(p)
     p.add_argument("--initial", metavar="P1,P2,...",
                    help=f"the initial antecedent a_0 (default: {','.join(d['initial'])})")
-    p.add_argument("--breadth", type=int, default=d["breadth"],
+    p.add_argument("--breadth", type=options.count(1, options.COUNT_MAX), default=d["breadth"],
                    help="modify steps the parameters of this many largest gradient "
                         f"components (default {d['breadth']})")
-    p.add_argument("--ridge", type=float, default=d["ridge"],
+    p.add_argument("--ridge", type=options.number(0), default=d["ridge"],
                    help="L2 penalty of the plane fits on normalised parameters "
                         f"(default {d['ridge']}; 0 is plain least squares)")
     p.add_argument("--qualify", choices=QUALIFY, default=d["qualify"],
@@ -100,18 +100,9 @@ def explore(args: argparse.Namespace) -> int:
     from pantarhei.bridge.exploration.loop import Options, explore as run_exploration, stop_text
     from pantarhei.bridge.reasoning import scenes as validity
 
-    for name in ("max_rules", "samples", "breadth", "workers", "permutations", "queue", "jumps",
-                 "probe_attempts"):
-        v = getattr(args, name)
-        if v is not None and v < 1:
-            raise UserError(f"--{name.replace('_', '-')} must be at least 1")
-    if (args.threshold is not None and args.threshold < 0) or args.ridge < 0:
-        raise UserError("--threshold and --ridge must not be negative")
-    for name in ("resample", "probe", "cover"):
-        if getattr(args, name) < 0:
-            raise UserError(f"--{name} must not be negative")
-    if not 0 <= args.novelty <= 1:
-        raise UserError("--novelty must be from 0 to 1")
+    from pantarhei.bridge.files import require_writable_file
+
+    require_writable_file(Path(args.out), "--out")
     if args.curiosity == "discover" and args.threshold is not None and args.threshold > 1:
         raise UserError("--threshold is a significance level with --curiosity discover: at most 1")
     initial = None
@@ -160,8 +151,13 @@ def prolog(args: argparse.Namespace) -> int:
         except UserError as e:  # one module that does not load does not stop the others
             print(f"pantarhei prolog: {name} not loaded: {e}", file=sys.stderr)
     prolog_load(load(args.theory))     # the shipped theory, or the files given
-    if args.goal:
-        ok = eng.succeeds(f"catch(({args.goal}), E, (print_message(error, E), fail))")
+    if args.goal:       # read as a term first: a syntax error is one line
+        r = eng.once("catch((term_string(_, T), R = ok), error(syntax_error(S), _), R = S)",
+                     T=args.goal)
+        if str(r["R"]) != "ok":
+            raise UserError(f"--goal: syntax error ({r['R']}) in '{args.goal}'")
+        ok = eng.succeeds("term_string(G, T), catch(G, E, (print_message(error, E), fail))",
+                          T=args.goal)
         sys.stdout.flush()
         return 0 if ok else 1
     print("Panta Rhei: the theory and the oracle are loaded. Try\n"

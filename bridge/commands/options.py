@@ -1,11 +1,14 @@
 """Flags that several commands share, each declared once here: the oracle,
-the store, where simulations run, the seed and the progress bar. Defaults
-come from theory/defaults.pl (through pantarhei.theory.defaults)."""
+the store, where simulations run, the seed and the progress bar; and the
+types that check a flag's value when the arguments are parsed, before any
+work starts (one line and exit 2 otherwise). Defaults come from
+theory/defaults.pl (through pantarhei.theory.defaults)."""
 from __future__ import annotations
 
 import argparse
-
+import math
 from pathlib import Path
+from typing import Callable
 
 from pantarhei.theory import THEORY_DIR, defaults
 
@@ -17,6 +20,55 @@ DEFAULT_STORE = Path(str(defaults()["store"]))
 
 #: The oracles a command may simulate with.
 ORACLES = ("pybullet", "synthetic")
+
+#: Seeds are 0 .. SEED_MAX: what SWI-Prolog, clingo (32-bit integers) and
+#: numpy all keep as they are.
+SEED_MAX = 2**31 - 1
+#: Most workers a command starts.
+WORKERS_MAX = 1024
+#: Bounds of counts: explored antecedents, simulations per antecedent,
+#: pours simulated to verify, and any other count (scenes, pours, shuffles).
+MAX_RULES = 100_000
+SAMPLES_MAX = 10_000
+VERIFY_MAX = 10_000
+COUNT_MAX = 1_000_000
+
+
+def count(low: int, high: int) -> Callable[[str], int]:
+    """An argparse type: a whole number from `low` to `high`."""
+    def parse(text: str) -> int:
+        try:
+            value = int(text, 10)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"must be a whole number, not '{text}'") from None
+        if value < low:
+            raise argparse.ArgumentTypeError(f"must be at least {low}, not {value}")
+        if value > high:
+            raise argparse.ArgumentTypeError(f"must be at most {high}, not {value}")
+        return value
+    return parse
+
+
+def number(low: float = -math.inf, high: float = math.inf, *, above: bool = False) -> Callable[[str], float]:
+    """An argparse type: a finite number from `low` (or above it) to `high`."""
+    def parse(text: str) -> float:
+        try:
+            value = float(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"must be a number, not '{text}'") from None
+        if not math.isfinite(value):
+            raise argparse.ArgumentTypeError(f"must be a finite number, not '{text}'")
+        if value < low or (above and value == low):
+            raise argparse.ArgumentTypeError(
+                f"must be {'more than' if above else 'at least'} {low:g}, not {text}")
+        if value > high:
+            raise argparse.ArgumentTypeError(f"must be at most {high:g}, not {text}")
+        return value
+    return parse
+
+
+#: Seconds a simulation may take: more than 0 (a day at most).
+seconds = number(0, 86400, above=True)
 
 
 def add_oracle(p: argparse.ArgumentParser) -> None:
@@ -39,16 +91,22 @@ def add_execution(p: argparse.ArgumentParser, progress: str = "no progress bar")
     """--executor, --workers, --ray-address and --no-progress."""
     p.add_argument("--executor", choices=("local", "ray", "inline"), default="local",
                    help="worker processes here (default), a Ray cluster, or this process")
-    p.add_argument("--workers", type=int, help="worker processes (default: one per core)")
+    add_workers(p)
     p.add_argument("--ray-address", metavar="ADDR",
                    help="Ray cluster to join (with --executor ray; default: start a local Ray "
                         "on this machine)")
     p.add_argument("--no-progress", action="store_true", help=progress)
 
 
+def add_workers(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--workers", type=count(1, WORKERS_MAX),
+                   help="worker processes (default: one per core)")
+
+
 def add_seed(p: argparse.ArgumentParser, default: int | None = None, what: str = "every random choice") -> None:
     value = int(defaults()["seed"]) if default is None else default
-    p.add_argument("--seed", type=int, default=value, help=f"seed of {what} (default {value})")
+    p.add_argument("--seed", type=count(0, SEED_MAX), default=value,
+                   help=f"seed of {what}, 0 to {SEED_MAX} (default {value})")
 
 
 def _shown(path) -> str:

@@ -6,6 +6,7 @@ import json
 import re
 import sys
 
+from pantarhei.bridge.commands import options
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.scenes import known, require_valid
 
@@ -35,11 +36,11 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="goal literals G1,G2: expectations, negated as neg(E) or -E")
     p.add_argument("--given", default="", help="context propositions P1,P2 (liquid, amount, bowls...)")
     p.add_argument("--theory", action="append", metavar="FILE", help=THEORY_HELP)
-    p.add_argument("--alternatives", type=int, default=4, metavar="K",
+    p.add_argument("--alternatives", type=options.count(0, options.COUNT_MAX), default=4, metavar="K",
                    help="list up to K plans after the best (default 4)")
-    p.add_argument("--verify", type=int, default=0, metavar="N",
+    p.add_argument("--verify", type=options.count(0, options.VERIFY_MAX), default=0, metavar="N",
                    help="sample each plan N times, simulate, and report how often the goals were met")
-    p.add_argument("--seed", type=int, default=0, help="seed for --verify (default 0)")
+    options.add_seed(p, 0, "--verify's sampling")
     p.add_argument("--store", default="pantarhei.sqlite",
                    help="SQLite file of simulations for --verify (default pantarhei.sqlite)")
     p.add_argument("--json", action="store_true", help="print JSON")
@@ -197,8 +198,6 @@ def plan(args: argparse.Namespace) -> int:
     goals = _split(args.goal)
     if not goals:
         raise UserError("--goal: give at least one goal literal")
-    if args.alternatives < 0 or args.verify < 0:
-        raise UserError("--alternatives and --verify take a number >= 0")
     given = known(_split(args.given))
     theory = loading.load(args.theory)
     plans = make_plans(theory, goals, given, args.alternatives)

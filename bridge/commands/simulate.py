@@ -24,7 +24,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     source.add_argument("--params", metavar="FILE.json",
                         help="simulate the parameterizations in FILE (a list of objects with "
                              "'params': name to value)")
-    p.add_argument("-n", type=int, default=10, help="parameterizations to sample (default 10)")
+    p.add_argument("-n", type=options.count(1, options.COUNT_MAX), default=10, help="parameterizations to sample (default 10)")
     options.add_seed(p, 0, "the sampling")
     p.add_argument("--json", action="store_true", help="print JSON")
     _simulation_options(p)
@@ -39,7 +39,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     options.add_seed(p, 0, "the sampling")
     p.add_argument("--out", default="pour.gif", help="the GIF to write (default pour.gif)")
     p.add_argument("--frames", metavar="DIR", help="also write each frame as a PNG into DIR")
-    p.add_argument("--fps", type=int, default=15, help="frames per simulated second (default 15)")
+    p.add_argument("--fps", type=options.count(1, 240), default=15, help="frames per simulated second (default 15)")
     p.add_argument("--size", default="480x360", help="image size WxH (default 480x360)")
     p.add_argument("--fidelity", choices=("chosen", "default"), default="chosen",
                    help="simulation settings (default: the chosen fast ones)")
@@ -49,7 +49,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 def _simulation_options(p: argparse.ArgumentParser) -> None:
     options.add_store(p, "results")
     p.add_argument("--no-store", action="store_true", help="neither read nor write the store")
-    p.add_argument("--timeout", type=float, default=120.0,
+    p.add_argument("--timeout", type=options.seconds, default=120.0,
                    help="seconds before a simulation counts as hung (default 120)")
     p.add_argument("--fidelity", choices=("chosen", "default"), default="chosen",
                    help="simulation settings: the chosen fast ones (default) or PyBullet's defaults")
@@ -82,11 +82,13 @@ def read_params(path: str) -> np.ndarray:
     from pantarhei.oracle import generative
 
     try:
-        text = Path(path).read_text()
+        text = Path(path).read_text(encoding="utf-8")
     except OSError as e:
         raise UserError(f"cannot read {path}: {e.strerror or e}") from None
+    except UnicodeDecodeError as e:
+        raise UserError(f"{path}: not UTF-8 text (byte {e.start + 1}); expected JSON") from None
     try:
-        data = json.loads(text)
+        data = json.loads(text, parse_int=_json_int)
     except json.JSONDecodeError as e:
         raise UserError(f"{path}: malformed JSON at line {e.lineno} column {e.colno}: {e.msg}") from None
     if isinstance(data, dict):
@@ -104,7 +106,16 @@ def read_params(path: str) -> np.ndarray:
             rows.append(generative.from_dict(params))
         except ValueError as e:
             raise UserError(f"{path}: item {k}: {e}") from None
+        except (OverflowError, TypeError):
+            raise UserError(f"{path}: item {k}: a number too large for any parameter") from None
     return np.array(rows)
+
+
+def _json_int(text: str) -> int | float:
+    """A JSON integer; one of more than 15 digits (far past any parameter's
+    bounds) as a float, so that it is refused as out of bounds (or as not
+    finite), not parsed digit by digit."""
+    return int(text) if len(text.lstrip("-")) <= 15 else float(text)
 
 
 def _parameterizations(args: argparse.Namespace, n: int) -> tuple[np.ndarray, Optional[list[str]]]:
@@ -112,8 +123,6 @@ def _parameterizations(args: argparse.Namespace, n: int) -> tuple[np.ndarray, Op
 
     if args.params is not None:
         return read_params(args.params), None
-    if n < 1:
-        raise UserError(f"-n must be at least 1, not {n}")
     props = parse_antecedent(args.antecedent)
     return generative.sample(props, n, args.seed), props
 
@@ -190,10 +199,9 @@ def simulate(args: argparse.Namespace) -> int:
     import numpy as np
 
     from pantarhei.oracle.simulator import make_simulator
+    from pantarhei.oracle.store import StoreError
 
     P, props = _parameterizations(args, args.n)
-    if args.workers is not None and args.workers < 1:
-        raise UserError(f"--workers must be at least 1, not {args.workers}")
     if args.ray_address and args.executor != "ray":
         raise UserError("--ray-address needs --executor ray")
     try:
@@ -201,7 +209,9 @@ def simulate(args: argparse.Namespace) -> int:
                              store=None if args.no_store else args.store,
                              ray_address=args.ray_address, timeout=args.timeout,
                              fidelity=args.fidelity)
-    except Exception as e:  # a store that cannot be opened, a cluster that cannot be reached
+    except StoreError:
+        raise
+    except Exception as e:  # a cluster that cannot be reached
         raise UserError(f"cannot start the simulator: {e}") from None
     with sim:
         S = sim.simulate(P, progress=not args.no_progress and sys.stderr.isatty())
@@ -218,23 +228,22 @@ def simulate(args: argparse.Namespace) -> int:
 
 
 def render(args: argparse.Namespace) -> int:
-    from pantarhei.oracle import baseline
+    from pantarhei.bridge.files import require_writable_file
     from pantarhei.oracle.physics import FIDELITIES
     from pantarhei.oracle.render import render as draw
 
     try:
         width, height = (int(v) for v in args.size.lower().split("x"))
-        if width < 16 or height < 16:
+        if not (16 <= width <= 4096 and 16 <= height <= 4096):
             raise ValueError
     except ValueError:
-        raise UserError(f"--size must be WxH with both at least 16, not '{args.size}'") from None
-    if args.fps < 1:
-        raise UserError(f"--fps must be at least 1, not {args.fps}")
+        raise UserError(f"--size must be WxH with both from 16 to 4096, not '{args.size}'") from None
     P, props = _parameterizations(args, 1)
     if not str(args.out).lower().endswith(".gif"):
         raise UserError(f"--out must name a .gif file, not '{args.out}'")
-    # the pour is simulated here: in a process started with the baseline math
-    baseline.restart_with(baseline.ENVIRONMENT)
+    require_writable_file(args.out, "--out")
+    if args.frames:
+        require_writable_file(Path(args.frames) / "frame.png", "--frames")
     frames, outcome = draw(P[0], args.out, args.frames, fps=args.fps, width=width, height=height,
                            fidelity=FIDELITIES[args.fidelity])
     names = load_vocabulary().expectation_names
