@@ -279,13 +279,11 @@ def conclusions(args: argparse.Namespace) -> int:
 def convert(args: argparse.Namespace) -> int:
     from pathlib import Path
 
-    from pantarhei.bridge.theories.dfl import write_dfl
     from pantarhei.bridge.files import write_text
     from pantarhei.bridge.theories import loading
 
     theory = loading.load(args.file, check=False)
-    text = (write_dfl(theory, loading.provenance_lines(theory)) if args.to == "dfl"
-            else theory.native())
+    text = loading.converted(theory, args.to, args.output)
     if not args.output:
         print(text, end="")
         return 0

@@ -139,7 +139,7 @@ def parse_dfl(text: str, source: str = "<dfl>") -> Theory:
             raise TheoryFileError(f"{source}:{n}: a second rule labelled {r.id} (line {seen[r.id]})")
         seen[r.id] = n
         if _variables(r.head) or any(map(_variables, r.body)):
-            t.schemas.append((r.id, n))
+            t.schemas.append((f"{source}:{n}", r.id))
     for r in t.rules:
         t.lines[r.id] = seen.get(origin[r.id], 0)
     if annotations:

@@ -62,6 +62,25 @@ def load(paths: Path | str | list | tuple | None = None, check: bool = True) -> 
     return theory
 
 
+def converted(theory: Theory, to: str, out: Path | str | None = None) -> str:
+    """The theory as the text of a file in format `to` (dfl or native),
+    holding every fact it was read from; UserError (one line) for what that
+    format cannot hold, or for an `out` file whose name would be read as
+    the other format."""
+    from pantarhei.bridge.theories.dfl import is_dfl, write_dfl
+
+    if to not in ("dfl", "native"):
+        raise UserError(f"a theory converts to dfl or native, not {to}")
+    if out is not None and is_dfl(out) != (to == "dfl"):
+        raise UserError(f"{out}: a {'DFL' if to == 'dfl' else 'native'} theory goes in a "
+                        f"{'.dfl' if to == 'dfl' else 'file not named .dfl'} (the name says how it is read)")
+    if theory.schemas:
+        where, label = theory.schemas[0]
+        raise UserError(f"{where}: rule {label} has variables, which convert would ground into "
+                        f"instances and lose: write its instances by hand, or keep the DFL file")
+    return write_dfl(theory, provenance_lines(theory)) if to == "dfl" else theory.native()
+
+
 _SETTING = re.compile(r"^\s*setting\(\s*([a-z][A-Za-z0-9_]*)\s*,\s*(.+?)\s*\)\s*\.\s*$")
 
 

@@ -70,8 +70,8 @@ class Theory:
     lines: dict[str, int] = field(default_factory=dict, compare=False, repr=False)
     #: The line of each `body(Id, L)` fact, by (Id, L).
     body_lines: dict[tuple[str, str], int] = field(default_factory=dict, compare=False, repr=False)
-    #: DFL rules with variables, grounded when read: (label, line).
-    schemas: list[tuple[str, int]] = field(default_factory=list, compare=False, repr=False)
+    #: DFL rules with variables, grounded when read: (`file:line`, label).
+    schemas: list[tuple[str, str]] = field(default_factory=list, compare=False, repr=False)
 
     def rule(self, rule_id: str) -> Rule:
         for r in self.rules:
@@ -454,4 +454,6 @@ def merge(theories: list[Theory]) -> Theory:
             have = out.settings.setdefault(k, [])
             have.extend(v for v in values if v not in have)
         out.provenance.extend(t.provenance)
+        out.extra.extend(t.extra)
+        out.schemas.extend(t.schemas)
     return out
