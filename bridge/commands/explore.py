@@ -150,7 +150,7 @@ def prolog(args: argparse.Namespace) -> int:
             eng.use_module(name)
         except UserError as e:  # one module that does not load does not stop the others
             print(f"pantarhei prolog: {name} not loaded: {e}", file=sys.stderr)
-    prolog_load(load(args.theory))     # the shipped theory, or the files given
+    prolog_load(load(args.theory, pouring=True))     # the shipped theory, or the files given
     if args.goal:       # read as a term first: a syntax error is one line
         r = eng.once("catch((term_string(_, T), R = ok), error(syntax_error(S), _), R = S)",
                      T=args.goal)

@@ -77,7 +77,7 @@ def ask(args: argparse.Namespace) -> int:
     if args.why is not None and not args.why.strip():
         raise UserError("--why: give an expectation E or neg(E) (see `pantarhei vocab`)")
     if args.props is None and args.question in (None, "-"):    # one question a line
-        return _ask_each_line(args, loading.load(args.theory), sys.stdin)
+        return _ask_each_line(args, loading.load(args.theory, pouring=True), sys.stdin)
     if args.props is not None:
         props = known(_split(args.props))
         if not props:
@@ -85,7 +85,7 @@ def ask(args: argparse.Namespace) -> int:
     else:
         props = _understood(args.question)
     props = require_valid(props)
-    return _answer(args, loading.load(args.theory), props)
+    return _answer(args, loading.load(args.theory, pouring=True), props)
 
 
 def _understood(question: str) -> list[str]:
@@ -199,7 +199,7 @@ def plan(args: argparse.Namespace) -> int:
     if not goals:
         raise UserError("--goal: give at least one goal literal")
     given = known(_split(args.given))
-    theory = loading.load(args.theory)
+    theory = loading.load(args.theory, pouring=True)
     plans = make_plans(theory, goals, given, args.alternatives)
     verified: list[dict | None] = [None] * len(plans)
     if args.verify:

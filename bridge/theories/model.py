@@ -68,7 +68,7 @@ class Theory:
     provenance: list[tuple[str, str, str | int]] = field(default_factory=list)
     #: The line of each rule's `rule/3` fact (or DFL rule) in `source`.
     lines: dict[str, int] = field(default_factory=dict, compare=False, repr=False)
-    #: The line of each `body(Id, L)` fact, by (Id, L).
+    #: The line of each `body(Id, L)` fact, by (Id, L); of `fact(L)`, by ("", L).
     body_lines: dict[tuple[str, str], int] = field(default_factory=dict, compare=False, repr=False)
     #: DFL rules with variables, grounded when read: (`file:line`, label).
     schemas: list[tuple[str, str]] = field(default_factory=list, compare=False, repr=False)
@@ -407,6 +407,7 @@ def from_facts(facts: list[Fact], source: str, t: Theory | None = None) -> Theor
             t.body_lines.setdefault((a[0], lit), f.line)
         elif name == "fact":
             t.facts.append(term_text(a[0]))
+            t.body_lines.setdefault(("", t.facts[-1]), f.line)
         elif name == "sup":
             t.sup.append((a[0], a[1]))
         elif name == "learned":
