@@ -20,6 +20,7 @@ large theories: the rules that come nearest to deciding the literal.
 
 :- use_module(defeasible).
 :- use_module(vocabulary).
+:- use_module(validity).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
 :- use_module(library(aggregate)).
@@ -36,12 +37,32 @@ large theories: the rules that come nearest to deciding the literal.
 what_happens(Scene, Outcomes) :-
     what_happens(Scene, [], Outcomes).
 what_happens(Scene, Options, Outcomes) :-
+    must_be_scene(Scene, what_happens/3),
     must_have_theory(what_happens/3),
     semantics(Options, S),
     with_scene(Scene,
                findall(outcome(E, V, R),
                        ( expectation(E, _, _), outcome(S, E, V, R) ),
                        Outcomes)).
+
+% must_be_scene(+Scene, +Where): a scene is a list of known propositions,
+% valid together (validity:violations/2), as `pantarhei ask` checks it:
+% an instantiation error for an unbound scene, one domain error in words
+% for any other.
+must_be_scene(Scene, Where) :-
+    must_be(list, Scene),
+    (   member(P, Scene), var(P)
+    ->  instantiation_error(Scene)
+    ;   true
+    ),
+    validity:violations(Scene, Why),
+    (   Why == []
+    ->  true
+    ;   findall(W, ( member(V, Why), arg(_, V, W), string(W) ), Words),
+        atomic_list_concat(Words, '; ', Text),
+        format(string(Message), "~w (see pantarhei vocab)", [Text]),
+        throw(error(domain_error(scene, Scene), context(Where, Message)))
+    ).
 
 % must_have_theory(+Where): a question needs a theory to answer it.
 must_have_theory(Where) :-
@@ -369,3 +390,10 @@ explain(Scene, L, Options, Text) :-
 explain_brief(Scene, L, Options, Text) :-
     why_brief(Scene, L, Options, Proof),
     proof_text(Proof, Text).
+
+% A theory file that cannot be read, in one line in plain SWI-Prolog too
+% (theory_files:theory_error_message/2): "File:Line: what was expected".
+:- multifile prolog:message//1.
+prolog:message(theory_error(File, Line, Expected)) -->
+    { theory_files:theory_error_message(theory_error(File, Line, Expected), Message) },
+    [ '~s'-[Message] ].
