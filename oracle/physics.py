@@ -378,7 +378,7 @@ MATHS = ("baseline", "native")
 class PouringOracle(Oracle):
     """Scores a parameterization by simulating the pour in PyBullet."""
     name = "pybullet"
-    version = "3"
+    version = "4"
 
     def __init__(self, fidelity: str | Fidelity = "chosen", math: str = "baseline",
                  **overrides: Any):

@@ -95,31 +95,8 @@ Two curiosities share the loop (option curiosity/1):
 :- use_module(theory_files).
 :- use_module(vocabulary).
 :- use_module(validity).
+:- use_module(default_values).
 
-%!  default_initial(-Props:list) is det.
-%
-%   The initial antecedent a_0 when none is given, as theory/defaults.pl
-%   says (default_initial/1 facts, in file order).
-default_initial(Props) :-
-    findall(P, defaults:default_initial(P), Props).
-
-%!  default(?Key, ?Value) is nondet.
-%
-%   The defaults of theory/defaults.pl, with permille values as numbers
-%   (threshold, ridge).
-default(Key, Value) :-
-    defaults:default(Key0, Value0),
-    (   atom_concat(Key, '_permille', Key0)
-    ->  Value is Value0 / 1000
-    ;   Key = Key0, Value = Value0
-    ).
-
-load_defaults :-
-    prolog_load_context(directory, Dir),
-    directory_file_path(Dir, 'defaults.pl', File),
-    load_facts(File, defaults).
-
-:- load_defaults.
 
 %!  explore(+Options:list) is det.
 %

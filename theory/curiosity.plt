@@ -16,7 +16,7 @@ test(direction_towards_other_verdict) :-
 
 test(parameter_mean_uniform_prior_relative) :-
     parameter_mean([pour_low], pour_z, M1), M1 =:= 30,
-    parameter_mean([], pour_z, M2), M2 =:= 180,
+    parameter_mean([], pour_z, M2), M2 =:= 85,
     parameter_mean([pour_low, approach_lowering], start_z, M3), M3 =:= 30 + 85.
 
 test(step_up_and_down) :-
@@ -25,14 +25,18 @@ test(step_up_and_down) :-
     modify([pour_low, pour_steeply_tilted], [pour_z-(-1.0)], 1, [], Down),
     Down == [mod([pour_below_rim, pour_steeply_tilted], pour_z, down)].
 
+% the ordinary pour's liquid is of medium weight: lighter is a light one,
+% heavier a heavy one
 test(add_for_free_parameter) :-
     modify([pour_low], [particle_mass-(-1.0)], 1, [], New),
     findall(P, member(mod(P, _, _), New), Ps),
-    Ps == [[light_liquid, pour_low], [medium_liquid, pour_low]].
+    Ps == [[light_liquid, pour_low]],
+    modify([pour_low], [particle_mass-1.0], 1, [], Up),
+    Up == [mod([heavy_liquid, pour_low], particle_mass, up)].
 
 test(excluded_and_invalid_are_left_out) :-
     modify([pour_low], [particle_mass-(-1.0)], 1, [[light_liquid, pour_low]], New),
-    New == [mod([medium_liquid, pour_low], particle_mass, down)],
+    New == [],
     modify([pour_low, pour_near_rim], [pour_z-(-1.0)], 1, [], None),
     None == [].
 

@@ -47,6 +47,13 @@ default(qualify, weighted).
 % After Algorithm 1, learn general rules from every pour of the
 % exploration and add them to the theory (bridge/learning/): true or false.
 default(general, true).
+% Before learning them, the learner simulates pours of its own for the
+% ordinary pour and for each proposition asked alone that fewer explored
+% pours hold than this (bridge/learning/gaps.py).
+default(pours_per_proposition, 12).
+% An answer is uncertain where the likelihood that the expectation holds
+% lies within this of one half (35% to 65% of such pours).
+default(uncertain_band_permille, 150).
 
 % a_0, the initial antecedent: an ordinary pour (from mid height, near the
 % destination's rim, steeply tilted).

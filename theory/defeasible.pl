@@ -62,7 +62,7 @@ theory/defeasible.lp computes the same conclusions with clingo.
 % theories have few atoms, so keep them.
 :- set_prolog_flag(agc_margin, 0).
 
-:- dynamic fact/1, rule/3, body/2, sup/2, learned/1, given_theory/1,
+:- dynamic fact/1, rule/3, body/2, sup/2, learned/1, provenance/3, given_theory/1,
    scene_fact/1, rule_body/2, superior/2, theory_literal/1, loaded/0,
    generation/1, head_key/3, fact_key/2.
 
@@ -90,7 +90,8 @@ internal(S, S).
 %!  load_theory(+File) is det.
 %
 %   Replace the current theory by the facts of File (native format).
-%   Facts of other predicates (provenance, settings) are ignored.
+%   provenance/3 facts are kept (a learned rule's confidence and layer);
+%   facts of other predicates (settings, set_aside) are ignored.
 %
 %   @error theory_error(File, Line, Expected) for a malformed file.
 load_theory(File) :-
@@ -120,6 +121,7 @@ theory_predicate(rule, 3).
 theory_predicate(body, 2).
 theory_predicate(sup, 2).
 theory_predicate(learned, 1).
+theory_predicate(provenance, 3).
 
 check_theory(File) :-
     (   rule(R, K, _), \+ memberchk(K, [strict, defeasible, defeater])
@@ -139,7 +141,8 @@ check_theory(File) :-
 %   Forget the current theory.
 clear_theory :-
     retractall(fact(_)), retractall(rule(_, _, _)), retractall(body(_, _)),
-    retractall(sup(_, _)), retractall(learned(_)), retractall(scene_fact(_)),
+    retractall(sup(_, _)), retractall(learned(_)), retractall(provenance(_, _, _)),
+    retractall(scene_fact(_)),
     retractall(rule_body(_, _)), retractall(superior(_, _)),
     retractall(theory_literal(_)), retractall(loaded),
     retractall(given_theory(_)),
@@ -147,7 +150,7 @@ clear_theory :-
 
 %!  add_theory_fact(+Fact) is det.
 %
-%   Add one fact (fact/1, rule/3, body/2, sup/2 or learned/1) to the
+%   Add one fact (fact/1, rule/3, body/2, sup/2, learned/1 or provenance/3) to the
 %   current theory. Call load_theory/1, or add facts and then query:
 %   derived tables are rebuilt on the next query.
 add_theory_fact(F) :-

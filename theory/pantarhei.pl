@@ -11,6 +11,7 @@ provides.
 */
 
 :- use_module(theory_files).
+:- use_module(default_values).
 :- use_module(vocabulary).
 :- use_module(validity).
 :- use_module(defeasible).

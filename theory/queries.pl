@@ -20,6 +20,7 @@ large theories: the rules that come nearest to deciding the literal.
 
 :- use_module(defeasible).
 :- use_module(vocabulary).
+:- use_module(default_values).
 :- use_module(validity).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
@@ -29,11 +30,19 @@ large theories: the rules that come nearest to deciding the literal.
 %!  what_happens(+SceneProps:list, -Outcomes:list) is det.
 %!  what_happens(+SceneProps:list, +Options:list, -Outcomes:list) is det.
 %
-%   Outcomes has one =|outcome(Expectation, Value, Rule)|= per expectation,
-%   in the vocabulary's order. Value is =holds= (the theory defeasibly
-%   concludes the expectation), =fails= (it concludes its negation) or
-%   =unknown=; Rule is the deciding rule, =fact= for a given literal, or
-%   =none=. Options select the semantics (defeasible:semantics/2).
+%   Outcomes has one =|outcome(Expectation, Value, Likelihood, Rule)|= per
+%   expectation, in the vocabulary's order. Rule is the deciding rule (of
+%   the applicable, unbeaten rules for the concluded literal, the highest
+%   ranked: the larger body, the general layer, the surer, the id), =fact=
+%   for a given literal, or =none=. Likelihood is the share of such pours
+%   in which the expectation holds, from the deciding rule's confidence
+%   (its =|provenance(R, confidence_permille, C)|= fact), or =none= for a
+%   rule that records none. Value is =holds= (the theory defeasibly
+%   concludes the expectation), =fails= (it concludes its negation),
+%   =uncertain= (it concludes one of them, but the likelihood lies within
+%   the band of theory/defaults.pl's =uncertain_band= around one half:
+%   such pours split) or =unknown= (it concludes neither). Options select
+%   the semantics (defeasible:semantics/2).
 what_happens(Scene, Outcomes) :-
     what_happens(Scene, [], Outcomes).
 what_happens(Scene, Options, Outcomes) :-
@@ -41,8 +50,8 @@ what_happens(Scene, Options, Outcomes) :-
     must_have_theory(what_happens/3),
     semantics(Options, S),
     with_scene(Scene,
-               findall(outcome(E, V, R),
-                       ( expectation(E, _, _), outcome(S, E, V, R) ),
+               findall(outcome(E, V, P, R),
+                       ( expectation(E, _, _), outcome(S, E, V, P, R) ),
                        Outcomes)).
 
 % must_be_scene(+Scene, +Where): a scene is a list of known propositions,
@@ -72,12 +81,40 @@ must_have_theory(Where) :-
                     context(Where, "no theory is loaded: call defeasible:load_theory(File), or start with swipl theory/pantarhei.pl, which loads the shipped theory")))
     ).
 
-outcome(S, E, V, R) :-
+outcome(S, E, V, P, R) :-
     (   truth(S, defeasibly(S, E), true)
-    ->  V = holds, deciding_rule(S, E, R)
+    ->  deciding_rule(S, E, R), likelihood(R, E, P), verdict(holds, P, V)
     ;   truth(S, defeasibly(S, neg(E)), true)
-    ->  V = fails, deciding_rule(S, neg(E), R)
-    ;   V = unknown, R = none
+    ->  deciding_rule(S, neg(E), R), likelihood(R, neg(E), P), verdict(fails, P, V)
+    ;   V = unknown, R = none, P = none
+    ).
+
+% likelihood(+Rule, +Literal, -P): the share of such pours in which the
+% expectation holds, as the rule that concludes Literal records it.
+likelihood(fact, L, P) :-
+    !,
+    (   L = neg(_) -> P = 0.0 ; P = 1.0 ).
+likelihood(R, L, P) :-
+    (   defeasible:provenance(R, confidence_permille, C), number(C)
+    ->  (   L = neg(_) -> P is (1000 - C) / 1000 ; P is C / 1000 )
+    ;   P = none
+    ).
+
+% verdict(+Concluded, +Likelihood, -Value): uncertain where such pours split.
+verdict(V, none, V) :- !.
+verdict(V0, P, V) :-
+    default(uncertain_band, B),
+    (   abs(P - 0.5) < B - 1.0e-9 -> V = uncertain ; V = V0 ).
+
+% rank_key(+Rule, -Key): how the deciding rule is chosen among the
+% applicable, unbeaten rules for one literal (bridge/learning/layers.py
+% ranks the same way): the larger body, the general layer, the surer.
+rank_key(R, k(N, G, D, R)) :-
+    rule_body(R, Bs), length(Bs, N),
+    (   defeasible:provenance(R, layer, general) -> G = 1 ; G = 0 ),
+    (   defeasible:provenance(R, confidence_permille, C), number(C)
+    ->  D is abs(C - 500)
+    ;   D = 0
     ).
 
 % deciding_rule(+S, +L, -R): why L is concluded, in one rule.
@@ -100,7 +137,10 @@ applicable_definitely(S, R) :-
     forall(member(B, Bs), truth(S, definitely(S, B), true)).
 
 applicable_for(S, L, Rs) :-
-    findall(R, ( rule(R, K, L), K \== defeater, applicable(S, R, true) ), Rs).
+    findall(Key-R, ( rule(R, K, L), K \== defeater, applicable(S, R, true),
+                     rank_key(R, Key) ), Keyed),
+    sort(1, @>=, Keyed, Sorted),
+    pairs_values(Sorted, Rs).
 
 beaten(S, R, L) :-
     complement(L, NL), rule(A, _, NL), superior(A, R), applicable(S, A, true).

@@ -12,19 +12,46 @@ example(File) :-
 
 setup :- example(F), load_theory(F).
 
-test(what_happens, [setup(setup), true(O == outcome(no_spill, fails, r1))]) :-
+% a hand-written rule records no likelihood
+test(what_happens, [setup(setup), true(O == outcome(no_spill, fails, none, r1))]) :-
     what_happens([pour_to_side], Os),
     length(Os, 9),
-    memberchk(outcome(no_spill, _, _), Os),
-    member(O, Os), O = outcome(no_spill, _, _).
+    memberchk(outcome(no_spill, _, _, _), Os),
+    member(O, Os), O = outcome(no_spill, _, _, _).
 
-test(unknown_without_rules, [setup(setup), true(V-R == unknown-none)]) :-
+test(unknown_without_rules, [setup(setup), true(V-P-R == unknown-none-none)]) :-
     what_happens([pour_centred], Os),
-    memberchk(outcome(destination_still_settle, V, R), Os).
+    memberchk(outcome(destination_still_settle, V, P, R), Os).
 
 test(specific_rule_decides, [setup(setup), true(R == r4)]) :-
     what_happens([pour_steeply_tilted, light_liquid], Os),
-    memberchk(outcome(liquid_leaves_source, fails, R), Os).
+    memberchk(outcome(liquid_leaves_source, fails, _, R), Os).
+
+% learned rules carry the share of their pours that keep the head: the
+% answer is its likelihood, uncertain where such pours split (within
+% uncertain_band of one half), and the most specific rule decides
+likely_theory :-
+    clear_theory,
+    maplist(add_theory_fact,
+            [ rule(g0, defeasible, no_spill), learned(g0),
+              provenance(g0, confidence_permille, 900),
+              rule(g1, defeasible, neg(no_spill)), body(g1, pour_to_side), learned(g1),
+              provenance(g1, confidence_permille, 550),
+              rule(g2, defeasible, neg(no_spill)), body(g2, pour_far_away), learned(g2),
+              provenance(g2, confidence_permille, 800),
+              rule(g3, defeasible, neg(no_spill)), body(g3, pour_far_away),
+              body(g3, heavy_liquid), learned(g3),
+              provenance(g3, confidence_permille, 950)
+            ]).
+
+test(likelihoods, [setup(likely_theory), cleanup(clear_theory),
+                   true(Vs == [holds-0.9-g0, uncertain-0.45-g1, fails-0.2-g2, fails-0.05-g3])]) :-
+    findall(V-P-R,
+            ( member(Scene, [[], [pour_to_side], [pour_far_away], [pour_far_away, heavy_liquid]]),
+              what_happens(Scene, Os),
+              memberchk(outcome(no_spill, V, P0, R), Os),
+              P is round(P0 * 100) / 100 ),
+            Vs).
 
 test(why, [setup(setup), true(Rebs == [beaten(r3, r4), inapplicable(r5, pour_upside_down)])]) :-
     why([pour_steeply_tilted, light_liquid], neg(liquid_leaves_source),

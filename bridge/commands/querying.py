@@ -3,7 +3,6 @@ from __future__ import annotations
 
 import argparse
 import json
-import re
 import sys
 
 from pantarhei.bridge.commands import options
@@ -141,10 +140,10 @@ def _answer(args: argparse.Namespace, theory, props: list[str]) -> int:
         return 0
     outcomes = answers.what_happens(theory, scene)
     if args.json:
-        print(json.dumps({"understood": props,
-                          "outcomes": {o.expectation: o.value for o in outcomes},
-                          "reasons": {o.expectation: {"rule": o.rule, "why": o.reason}
-                                      for o in outcomes}}, indent=1))
+        print(json.dumps({"understood": props, "theory": theory.source, "outcomes": {
+            o.expectation: {"verdict": o.value, "likelihood": o.likelihood, "rule": o.rule,
+                            "because": _because(theory, o)}
+            for o in outcomes}}, indent=1))
         return 0
     from pantarhei.theory.lexicon import load_vocabulary
 
@@ -152,30 +151,46 @@ def _answer(args: argparse.Namespace, theory, props: list[str]) -> int:
     _print_scene(props, glosses=True)
     print(f"theory: {theory.source}")
     glosses = {e.name: e.gloss for e in vocab.expectations}
-    why_not = False
     said: dict[str, str] = {}     # a why-not already printed, with its expectation as E
     for o in outcomes:
-        mark = {"holds": "yes", "fails": "no ", "unknown": " ? "}[o.value]
-        print(f"  [{mark}] {o.expectation:30} {glosses[o.expectation]}")
+        print(f"  [{answer_mark(o)}] {o.expectation:30} {glosses[o.expectation]}")
         if o.value != "unknown":
-            if o.rule in ("fact", "none"):
-                print(f"        because {o.reason}")
-            else:
-                print(f"        because: {answers.rule_words(theory, o.rule)}")
-        elif "no rule concludes" not in o.reason:
-            general = re.sub(rf"(?<![a-z]){re.escape(o.expectation)}(?![a-z_])", "E", o.reason)
-            if general in said:   # the same reasons as for an expectation above
-                print(f"        why not: as for {said[general]}")
-                continue
-            said[general] = o.expectation
-            first, *more = o.reason.split("; ")[1:] or [o.reason]
-            print(f"        why not: {first}")
-            for line in more:
-                print(f"          {line}")
-            why_not = True
-    print("(ask again with --why E for the whole argument about the expectation E)"
-          if not why_not else "(ask again with --why E to see every rule for the expectation E)")
+            print(f"          {_because(theory, o)}")
+            continue
+        general = o.reason.replace(o.expectation, "E")
+        if general in said:   # the same reasons as for an expectation above
+            print(f"          why not: as for {said[general]}")
+            continue
+        said[general] = o.expectation
+        first, *more = o.reason.split("; ")[1:] or [o.reason]
+        print(f"          why not: {first}")
+        for line in more:
+            print(f"            {line}")
+    print("(yes / no: what such pours do, and the share of them in which the expectation holds; "
+          "maybe: such pours split; ?: the theory does not say. Ask again with --why E for the "
+          "whole argument)")
     return 0
+
+
+def answer_mark(o) -> str:
+    """The verdict and its likelihood, 10 characters: "yes    92%",
+    "no      8%", "maybe  55%", "?" for an expectation the theory leaves
+    undecided."""
+    word = {"holds": "yes", "fails": "no", "uncertain": "maybe", "unknown": "?"}[o.value]
+    share = f"{round(100 * o.likelihood):3d}%" if o.likelihood is not None else ""
+    return f"{word:6}{share:>4}"
+
+
+def _because(theory, o) -> str:
+    """Why an answer is what it is, in one line: the deciding rule in
+    words, or for an undecided expectation the nearest reason."""
+    from pantarhei.bridge.reasoning import answers
+
+    if o.value == "unknown":
+        return f"why not: {'; '.join(o.reason.split('; ')[1:] or [o.reason])}"
+    if o.rule in ("fact", "none"):
+        return f"because {o.reason}" if o.reason else "given"
+    return f"because {answers.rule_words(theory, o.rule)}"
 
 
 def _print_scene(props: list[str], glosses: bool) -> None:

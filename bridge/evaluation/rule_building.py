@@ -44,19 +44,31 @@ def theory_of(antecedents: Sequence[Sequence[str]], heads: np.ndarray, source: s
 
 def predict(theory: Theory, scenes: Sequence[Sequence[str]]) -> np.ndarray:
     """What SWI-Prolog concludes in each scene (scenes x 9): HOLDS, FAILS or
-    UNKNOWN, by `queries:what_happens/3`."""
+    UNKNOWN (neither, or uncertain), by `queries:what_happens/3`."""
+    return answer_matrix(theory, scenes)[0]
+
+
+def answer_matrix(theory: Theory, scenes: Sequence[Sequence[str]]
+                  ) -> tuple[np.ndarray, np.ndarray]:
+    """What SWI-Prolog answers in each scene (`queries:what_happens/3`):
+    scenes x 9 verdicts (HOLDS, FAILS, or UNKNOWN for an uncertain or
+    undecided one), and scenes x 9 likelihoods that the expectation holds
+    (NaN where the deciding rule records none)."""
     names = load_vocabulary().expectation_names
     out = np.full((len(scenes), len(names)), UNKNOWN, dtype=int)
+    lik = np.full((len(scenes), len(names)), np.nan)
     if not scenes:
-        return out
+        return out, lik
     e = logic.prolog_load(theory)
     e.use_module("queries")
     code = {"holds": HOLDS, "fails": FAILS}
     for i, scene in enumerate(scenes):
         r = e.once("queries:what_happens(Scene, [], Os), "
-                   "findall(S, (member(outcome(E, V, _), Os), format(atom(S), '~w=~w', [E, V])), Ss)",
+                   "findall(S, (member(outcome(E, V, P, _), Os), "
+                   "format(atom(S), '~w=~w=~w', [E, V, P])), Ss)",
                    Scene=list(scene))
-        for pair in r["Ss"]:
-            name, value = prolog_text(pair).split("=", 1)
+        for triple in r["Ss"]:
+            name, value, p = prolog_text(triple).split("=", 2)
             out[i, names.index(name)] = code.get(value, UNKNOWN)
-    return out
+            lik[i, names.index(name)] = np.nan if p == "none" else float(p)
+    return out, lik

@@ -122,9 +122,17 @@ def explore(options: Options) -> dict:
     if options.general:
         from pantarhei.bridge.learning.layers import add_general_rules
 
+        from pantarhei.bridge.exploration.simulation import open_simulator
+
         P, S = out["pours"]
         t = time.monotonic()
-        general = add_general_rules(options.out, P, S, options.seed)
+        simulator = open_simulator(options.oracle, options.executor, options.workers,
+                                   options.store, options.ray_address, options.oracle_options)
+        try:
+            general = add_general_rules(options.out, P, S, options.seed,
+                                        lambda X: simulator.simulate(X, progress=options.progress))
+        finally:
+            simulator.close()
         out["general_rules"] = len(general.rules)
         out.setdefault("timings", {})["generalize"] = time.monotonic() - t
     return out

@@ -1,56 +1,36 @@
-"""General defeasible rules from every pour: defaults, exceptions to them,
-and exceptions to those.
+"""General defeasible rules from every pour, each with the likelihood of
+its head: a default per expectation, and the contrasts that move it.
 
-What a rule means. A rule `B => e` (or `B => neg(e)`) says that the pours
-`pantarhei simulate --antecedent B` samples for B mostly keep e (or mostly
-break it): every parameter B leaves unsaid follows its prior. Its
-`confidence` is that share, P(e | B) under the generative model of B, and
-its evidence is the pours of the exploration that B describes
-(`describe`): `support` of them, `kept` of which keep the rule's head.
+What a rule means. A rule `B => e` (or `B => neg(e)`) speaks of the pours
+`pantarhei simulate --antecedent B` samples for B: B as asked, everything
+it leaves unsaid as the ordinary pour (the priors). Its `confidence` is the
+share of those pours that keep its head, so the likelihood that e holds
+when B is asked is the confidence of a rule for e, one minus that of a
+rule for neg(e). Its evidence is the pours learned from that could have
+been drawn for B (in the support of P(.|B)): `support` of them, `kept` of
+which keep the head.
 
-Why not importance weights alone. Equation (1)'s densities would give
-P(e | B) from every pour as sum w y / sum w with w = P(p|B) / q(p), q the
-mixture of the distributions the pours were drawn from. But the priors are
-narrow where a question is silent (the start and end poses of an ordinary
-pour), and an explored antecedent of 15-20 propositions moves those
-parameters outside them: no explored pour lies in the support of P(.|B)
-for a short B (0 of the 775 pours of 25 random valid antecedents, for the
-empty body as for each short question), so the weights are all zero. Instead P(e | B) is
-estimated by the model of the pours: a gradient-boosted classifier of each
-verdict from the 30 parameters, trained on every pour, averaged over
-`samples` parameterizations drawn from P(.|B).
+How P(e | B) is known. A gradient-boosted classifier of each verdict from
+the 30 parameters is trained on every pour (the model of the pours), and
+averaged over `samples` parameterizations drawn from P(.|B) (`Meaning`).
+Importance weights alone cannot do it: an explored antecedent moves the
+parameters it names outside what a short question draws, so few explored
+pours lie in the support of P(.|B) for most B.
 
-How rules are found (per expectation, greedy, as a decision list):
-
-1. the default: the empty body, concluding the verdict most pours sampled
-   from the priors would give. Where that is within `margin` of one half,
-   the priors leave it open, and the pours are no guide either: curiosity
-   draws them to where behaviour changes, so their majority is not that of
-   scenes at large. Then a decision list is learned for each default, and
-   the one kept is the list that the model of the pours finds right more
-   often on `judges` uniformly random valid antecedents (drawn by Prolog,
-   with a seed of their own), on ties the pours' majority. (One default
-   can need many exceptions where the other needs few: liquid stays in the
-   source unless the source tips far, so "stays" takes exceptions naming
-   the pour's tilt, "leaves" a list of everything that keeps it upright.)
-   The default's confidence is then the share of the pours of the judging
-   antecedents it decides that the model expects to keep its head;
-2. candidates: bodies of one or two propositions (and three, extending a
-   chosen body of two) that are valid antecedents, that at least
-   `min_support` pours satisfy, and whose pours mostly (at least `margin`
-   from one half) give one verdict: the candidate's head;
-3. repeatedly, the candidate that sets right the most pours, net of a cost
-   of `penalty` times the number of pours per proposition of its body (each
-   pour is the scene of its own description, decided by the rules so far;
-   among equals the body describing the fewest pours, which aims at the
-   errors) joins, while that net gain is at least `min_gain` and the
-   expectation has fewer than `max_rules` rules. It joins only if its
-   confidence (the pours sampled for it) is on its pours' side, at least
-   `margin` from one half; otherwise it is dropped;
-4. then each proposition asked alone: where the rules answer otherwise than
-   its confidence, and the pours it describes agree with that confidence,
-   its own rule joins, if it sets no more pours wrong than right (the
-   budget `max_rules` still holds).
+How rules are found (per expectation, greedy). The bodies a person asks
+about are the empty one, every valid proposition alone and every valid
+pair (`max_body`). The theory answers a body with its deciding rule's
+likelihood (the highest ranked rule whose body it holds), and each body
+costs |answered - P(e | B)|, plus `miss` where the two fall in different
+bands (holds, uncertain, fails: `band`), weighted by how often it is asked
+(the empty body `default_weight`, one proposition 1, a pair
+`pair_weight`). The default (the empty body, likelihood P(e | ())) comes
+first; then, while the expectation has fewer than `max_rules` rules, the
+rule for the body whose own likelihood removes the most cost joins, as
+long as it removes at least `min_gain`. A rule for one proposition answers
+every pair that holds it and has no rule of its own; a pair gets a rule
+where the two propositions interact: where neither proposition's rule
+gives the pair's likelihood.
 
 How a question is decided. A scene (a set of propositions) is decided, for
 each expectation, by the highest ranked rule whose body it holds. Rules rank
@@ -74,7 +54,8 @@ from typing import Iterable, Sequence
 
 import numpy as np
 
-from pantarhei.oracle.generative import InvalidAntecedent, holds, normalise, sample
+from pantarhei.oracle.generative import InvalidAntecedent, in_support, normalise, sample
+from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
 
 from pantarhei.bridge.evaluation.measures import FAILS, HOLDS, UNKNOWN, verdicts
@@ -84,33 +65,37 @@ from pantarhei.bridge.theories.model import Rule, Theory
 @dataclass(frozen=True)
 class Settings:
     max_rules: int = 12        # per expectation, the default included
-    max_body: int = 3          # propositions in a body
-    min_support: int = 10      # pours a body must describe
-    margin: float = 0.1        # |confidence - 1/2| at least
-    min_gain: int = 3          # pours a new rule must set right, net
-    samples: int = 64          # drawn per body to estimate its confidence
+    max_body: int = 2          # propositions in a body (0 to 2)
+    samples: int = 64          # drawn per body to estimate its likelihood
     seed: int = 1
-    #: "prior": a body's confidence is P(e | B) for the pours sampled for B
-    #: (the model of the pours over P(.|B)); "pours": the share of the
-    #: explored pours B describes (what those pours saw, unweighted).
-    meaning: str = "prior"
-    #: each proposition of a body costs this share of the pours in the
-    #: gain: of two bodies setting nearly as many pours right, the shorter
-    #: one, which more questions ask, joins
-    penalty: float = 0.01
-    #: uniformly random valid antecedents on which the model of the pours
-    #: judges a default the priors leave open (`meaning` "prior" only)
-    judges: int = 300
+    #: an answer whose likelihood lies within this of one half is uncertain
+    #: (theory/defaults.pl's uncertain_band, which the Prolog answers read)
+    band: float = field(default_factory=lambda: float(defaults()["uncertain_band"]))
+    #: the cost of an answer in another band than the body's likelihood,
+    #: beside the difference of the likelihoods
+    miss: float = 0.5
+    #: how much each kind of body counts: the empty one, one proposition
+    #: (1), a pair
+    default_weight: float = 20.0
+    pair_weight: float = 0.2
+    #: the weighted cost a new rule must remove
+    min_gain: float = 0.1
 
     def __post_init__(self) -> None:
-        if self.max_rules < 1 or not 0 <= self.max_body <= 3:
-            raise ValueError("max_rules must be at least 1 and max_body 0 to 3")
-        if not 0 <= self.margin < 0.5 or self.min_support < 1 or self.samples < 1:
-            raise ValueError("margin in [0, 1/2), min_support and samples at least 1")
-        if self.judges < 0:
-            raise ValueError("judges must be at least 0")
-        if self.meaning not in ("prior", "pours"):
-            raise ValueError(f"meaning is prior or pours, not {self.meaning!r}")
+        if self.max_rules < 1 or not 0 <= self.max_body <= 2:
+            raise ValueError("max_rules must be at least 1 and max_body 0 to 2")
+        if not 0 <= self.band < 0.5 or self.samples < 1:
+            raise ValueError("band in [0, 1/2), samples at least 1")
+        if min(self.miss, self.default_weight, self.pair_weight, self.min_gain) < 0:
+            raise ValueError("miss, weights and min_gain at least 0")
+
+    def verdict(self, likelihood):
+        """HOLDS, FAILS or UNKNOWN (uncertain) for a likelihood that e holds
+        (a number or an array of them)."""
+        x = np.asarray(likelihood, dtype=float)
+        out = np.where(x >= 0.5 + self.band - 1e-9, HOLDS,
+                       np.where(x <= 0.5 - self.band + 1e-9, FAILS, UNKNOWN))
+        return int(out) if out.ndim == 0 else out
 
 
 def rank(body: Sequence[str], confidence: float, rule_id: str) -> tuple:
@@ -139,6 +124,11 @@ class GeneralRule:
     def rank(self) -> tuple:
         return rank(self.body, self.confidence, self.id)
 
+    @property
+    def likelihood(self) -> float:
+        """The share of the body's pours in which the expectation holds."""
+        return self.confidence if self.holds else 1 - self.confidence
+
     def rule(self) -> Rule:
         return Rule(self.id, "defeasible", self.head, self.body)
 
@@ -164,19 +154,31 @@ class General:
     """The general rules of every expectation and their superiority."""
     rules: list[GeneralRule] = field(default_factory=list)
     sup: list[Sup] = field(default_factory=list)
+    #: answers whose likelihood lies within this of one half are uncertain
+    band: float = 0.0
 
     def of(self, expectation: str) -> list[GeneralRule]:
         return [r for r in self.rules if r.expectation == expectation]
 
     def decide(self, scene: Iterable[str]) -> dict[str, tuple[int, str | None]]:
-        """Per expectation: HOLDS, FAILS or UNKNOWN, and the deciding rule's id."""
+        """Per expectation: HOLDS, FAILS or UNKNOWN (undecided, or uncertain:
+        the likelihood within `band` of one half), and the deciding rule's id."""
+        return {e: (v, rid) for e, (v, _, rid) in self.answer(scene).items()}
+
+    def answer(self, scene: Iterable[str]) -> dict[str, tuple[int, float, str | None]]:
+        """Per expectation: the verdict (as `decide`), the likelihood that it
+        holds (NaN where no rule decides), and the deciding rule's id."""
         s = set(scene)
-        out: dict[str, tuple[int, str | None]] = {}
+        out: dict[str, tuple[int, float, str | None]] = {}
         for e in load_vocabulary().expectation_names:
             rules = self.of(e)
             j = deciding(rules, s)
-            out[e] = ((UNKNOWN, None) if j is None
-                      else (HOLDS if rules[j].holds else FAILS, rules[j].id))
+            if j is None:
+                out[e] = (UNKNOWN, float("nan"), None)
+                continue
+            p = rules[j].likelihood
+            v = UNKNOWN if abs(p - 0.5) < self.band - 1e-9 else HOLDS if rules[j].holds else FAILS
+            out[e] = (v, p, rules[j].id)
         return out
 
     def predict(self, scenes: Sequence[Iterable[str]]) -> np.ndarray:
@@ -245,21 +247,26 @@ class Meaning:
             self.models.append(m.fit(X, y))
 
     def __call__(self, bodies: Sequence[tuple[str, ...]]) -> np.ndarray:
-        """len(bodies) x 9: the estimated P(e | B); NaN where B cannot be sampled."""
-        n = self.settings.samples
+        """len(bodies) x 9: the estimated P(e | B); NaN where B cannot be
+        sampled. Shorter bodies, which more questions fall back on, get
+        more draws: `samples` for a pair, 4 times as many for one
+        proposition, 16 times for the empty body."""
         out = np.full((len(bodies), len(self.models)), np.nan)
-        rows, ok = [], []
+        rows, ok, sizes = [], [], []
         for i, b in enumerate(bodies):
+            n = self.settings.samples * {0: 16, 1: 4}.get(len(b), 1)
             try:
                 rows.append(sample(list(b), n, _seed(self.settings.seed, b)))
-                ok.append(i)
             except InvalidAntecedent:
                 continue
+            ok.append(i)
+            sizes.append(n)
         if not rows:
             return out
         p = self.shares(normalise(np.vstack(rows)))
-        for k in range(len(self.models)):
-            out[ok, k] = p[:, k].reshape(len(ok), n).mean(axis=1)
+        ends = np.cumsum(sizes)
+        for i, start, end in zip(ok, ends - sizes, ends):
+            out[i] = p[start:end].mean(axis=0)
         return out
 
     def shares(self, X: np.ndarray) -> np.ndarray:
@@ -282,6 +289,18 @@ def generalize(P: np.ndarray, S: np.ndarray, settings: Settings = Settings()) ->
         return _generalize(P, S, settings)
 
 
+def askable_bodies(max_body: int) -> list[tuple[str, ...]]:
+    """The empty body, every proposition alone and every valid pair (up to
+    `max_body` propositions), in canonical order."""
+    names = sorted(load_vocabulary().propositions)
+    out: list[tuple[str, ...]] = [()]
+    if max_body >= 1:
+        out += [(n,) for n in names]
+    if max_body >= 2:
+        out += [b for b in combinations(names, 2) if _askable(b)]
+    return out
+
+
 def _generalize(P: np.ndarray, S: np.ndarray, settings: Settings) -> General:
     vocab = load_vocabulary()
     P = np.atleast_2d(np.asarray(P, dtype=float))
@@ -291,273 +310,92 @@ def _generalize(P: np.ndarray, S: np.ndarray, settings: Settings) -> General:
     if not len(P):
         raise ValueError("no pours to generalize from")
     Y = verdicts(S)
-    names, D = holds(P)
-    meaning = _Cache(Meaning(P, Y, settings) if settings.meaning == "prior"
-                     else _Described(names, D, Y))
-    bodies = _candidates(names, D, settings)
-    A = _matrix(names, D, bodies)
-    judge = _Judge(meaning, settings) if settings.meaning == "prior" and settings.judges else None
-    out = General()
+    bodies = askable_bodies(settings.max_body)
+    T = Meaning(P, Y, settings)(bodies)
+    known = np.isfinite(T[:, 0])
+    bodies, T = [b for b, k in zip(bodies, known) if k], T[known]
+    out = General(band=settings.band)
     for k, e in enumerate(vocab.expectation_names):
-        def learn(default: bool, c0: float) -> list[GeneralRule]:
-            return _learn(e, k, names, D, Y[:, k], bodies, A, meaning, settings, default, c0)
-
-        c0, kept = float(meaning([()])[0, k]), float(Y[:, k].mean())
-        if np.isfinite(c0) and abs(c0 - 0.5) >= settings.margin:
-            rules = learn(c0 >= 0.5, c0)
-        elif judge is None:
-            # the priors leave it open: the default follows the pours
-            rules = learn(kept >= 0.5, kept)
-        else:
-            rules = judge.better(k, learn(kept >= 0.5, kept), learn(kept < 0.5, kept))
-        out.rules.extend(rules)
-        out.sup.extend(_superiority(rules))
+        rules = _Contrasts(e, bodies, T[:, k], settings).learn()
+        out.rules.extend(_with_evidence(r, P, Y[:, k]) for r in rules)
+    for e in vocab.expectation_names:
+        out.sup.extend(_superiority(out.of(e)))
     return out
 
 
-class _Judge:
-    """Which of two decision lists (with opposite defaults) the model of the
-    pours finds right more often, on uniformly random valid antecedents."""
-
-    def __init__(self, meaning: "_Cache", s: Settings):
-        from pantarhei.bridge.reasoning.scenes import random_antecedents
-
-        # a seed of their own: not the held-out scenes of an evaluation
-        self.scenes = [tuple(sorted(a)) for a in
-                       random_antecedents(_seed(s.seed, ("judges",)), s.judges)]
-        self.meaning = meaning
-
-    def better(self, k: int, first: list[GeneralRule], second: list[GeneralRule]
-               ) -> list[GeneralRule]:
-        """The list expected to be right on more of the judging pours (the
-        first on ties), its default's confidence the share it gets right of
-        the pours it decides (one half where it decides none)."""
-        p = self.meaning(self.scenes)[:, k]
-        ok = np.isfinite(p)
-        scored = []
-        for rules in (first, second):
-            holds, decider = _decide(rules, [s for s, o in zip(self.scenes, ok) if o])
-            right = np.where(holds, p[ok], 1 - p[ok])
-            scored.append((float(right.mean()) if len(right) else 0.0, right[decider == 0]))
-        k_best = 0 if scored[0][0] >= scored[1][0] else 1
-        rules, mine = (first, second)[k_best], scored[k_best][1]
-        confidence = float(mine.mean()) if len(mine) else 0.5
-        return [replace(rules[0], confidence=confidence), *rules[1:]]
+def _with_evidence(r: GeneralRule, P: np.ndarray, y: np.ndarray) -> GeneralRule:
+    """The rule with its evidence: the pours that could have been drawn for
+    its body (in the support of P(.|B): the body as asked, everything else
+    an ordinary pour), and how many of them keep its head."""
+    m = in_support(P, r.body)
+    return replace(r, support=int(m.sum()), kept=int((y[m] == r.holds).sum()))
 
 
-def _decide(rules: Sequence[GeneralRule], scenes: Sequence[Sequence[str]]
-            ) -> tuple[np.ndarray, np.ndarray]:
-    """Per scene: whether one expectation's rules (a default among them)
-    conclude it holds, and the index of the deciding rule (`deciding`)."""
-    decider = np.array([deciding(rules, set(s)) for s in scenes], dtype=int)
-    holds = np.array([rules[j].holds for j in decider], dtype=bool)
-    return holds, decider
+class _Contrasts:
+    """The greedy choice of one expectation's rules over the askable bodies
+    (`bodies`, with their likelihoods `target`)."""
 
+    def __init__(self, e: str, bodies: Sequence[tuple[str, ...]], target: np.ndarray,
+                 s: Settings):
+        self.e, self.bodies, self.target, self.s = e, list(bodies), target, s
+        self.weight = np.array([s.default_weight if not b else 1.0 if len(b) == 1 else s.pair_weight
+                                for b in bodies])
+        self.band = s.verdict(target)
+        index = {b: i for i, b in enumerate(self.bodies)}
+        #: per body, the askable bodies that hold it (itself included)
+        self.above: list[np.ndarray] = [np.array([], dtype=int)] * len(bodies)
+        holders: dict[int, list[int]] = {i: [i] for i in range(len(bodies))}
+        for j, b in enumerate(self.bodies):
+            for size in range(1, len(b)):
+                for sub in combinations(b, size):
+                    if sub in index:
+                        holders[index[sub]].append(j)
+        self.above = [np.array(sorted(v), dtype=int) for _, v in sorted(holders.items())]
+        self.root = index[()]
 
-class _Described:
-    """P(e | B) as the share of the explored pours B describes."""
+    def cost(self, answered: np.ndarray, at: np.ndarray) -> np.ndarray:
+        """The weighted cost of answering the bodies `at` with likelihoods `answered`."""
+        t = self.target[at]
+        miss = self.s.verdict(answered) != self.band[at]
+        return self.weight[at] * (np.abs(answered - t) + self.s.miss * miss)
 
-    def __init__(self, names, D, Y):
-        self.names, self.D, self.Y = names, D, Y
+    def rule(self, i: int, n: int) -> GeneralRule:
+        t, b = float(self.target[i]), self.bodies[i]
+        holds = t >= 0.5
+        return GeneralRule(f"g{n}_{self.e}", b, self.e, holds, 0, 0, t if holds else 1 - t, 0)
 
-    def __call__(self, bodies: Sequence[tuple[str, ...]]) -> np.ndarray:
-        out = np.full((len(bodies), self.Y.shape[1]), np.nan)
-        for i, b in enumerate(bodies):
-            m = _described(self.names, self.D, b)
-            if m.any():
-                out[i] = self.Y[m].mean(axis=0)
-        return out
-
-
-class _Cache:
-    """The meaning of bodies, each estimated once (in batches)."""
-
-    def __init__(self, meaning: Meaning):
-        self.meaning = meaning
-        self.known: dict[tuple[str, ...], np.ndarray] = {}
-
-    def __call__(self, bodies: Sequence[tuple[str, ...]]) -> np.ndarray:
-        new = [b for b in dict.fromkeys(bodies) if b not in self.known]
-        if new:
-            self.known.update(zip(new, self.meaning(new)))
-        return np.array([self.known[b] for b in bodies]).reshape(len(bodies), -1)
-
-
-def _described(names: Sequence[str], D: np.ndarray, body: Sequence[str]) -> np.ndarray:
-    col = {n: i for i, n in enumerate(names)}
-    return D[:, [col[p] for p in body]].all(axis=1) if body else np.ones(len(D), dtype=bool)
-
-
-def _candidates(names: Sequence[str], D: np.ndarray, s: Settings) -> list[tuple[str, ...]]:
-    """The bodies of one and two propositions that are askable and that at
-    least min_support pours satisfy, in canonical order."""
-    out: list[tuple[str, ...]] = []
-    if s.max_body >= 1:
-        count = D.sum(axis=0)
-        single = [i for i in range(len(names)) if count[i] >= s.min_support]
-        out += [(names[i],) for i in sorted(single, key=lambda i: names[i])]
-        if s.max_body >= 2:
-            Di = D.astype(np.int32)
-            pairs = Di.T @ Di
-            for a, b in combinations(single, 2):
-                if pairs[a, b] >= s.min_support:
-                    body = tuple(sorted((names[a], names[b])))
-                    if _askable(body):
-                        out.append(body)
-    return out
-
-
-def _matrix(names, D, bodies) -> "sparse.csc_matrix":
-    """Which pours (rows) each body (column) describes, as a sparse 0/1 matrix."""
-    from scipy import sparse
-
-    indices = [np.flatnonzero(_described(names, D, b)) for b in bodies]
-    indptr = np.concatenate([[0], np.cumsum([len(i) for i in indices])])
-    data = np.ones(int(indptr[-1]), dtype=np.float32)
-    flat = np.concatenate(indices) if indices else np.empty(0, dtype=int)
-    return sparse.csc_matrix((data, flat, indptr), shape=(len(D), len(bodies)))
-
-
-class _Pool:
-    """Candidate bodies with the pours each describes (a sparse matrix) and
-    the verdict most of those pours give."""
-
-    def __init__(self, bodies, A, y, s: Settings):
-        n_b = np.asarray(A.sum(axis=0)).ravel()
-        k_b = A.T @ y.astype(np.float32)
-        rate = np.where(n_b > 0, k_b / np.maximum(n_b, 1), 0.5)
-        keep = np.flatnonzero((n_b >= s.min_support) & (np.abs(rate - 0.5) >= s.margin))
-        self.bodies = [bodies[i] for i in keep]
-        self.A = A[:, keep]
-        self.holds = rate[keep] >= 0.5
-        self.size = np.array([len(b) for b in self.bodies], dtype=float)
-        self.support = n_b[keep]
-        self.alive = np.ones(len(self.bodies), dtype=bool)
-
-    def add(self, names, D, y, bodies, s: Settings) -> None:
-        from scipy import sparse
-
-        have = set(self.bodies)
-        bodies = [b for b in bodies if b not in have]
-        more = _Pool(bodies, _matrix(names, D, bodies), y, s)
-        self.bodies += more.bodies
-        self.A = sparse.hstack([self.A, more.A]).tocsc()
-        self.holds = np.concatenate([self.holds, more.holds])
-        self.size = np.concatenate([self.size, more.size])
-        self.support = np.concatenate([self.support, more.support])
-        self.alive = np.concatenate([self.alive, more.alive])
-
-    def gains(self, y, pred, decider, levels) -> np.ndarray:
-        """Per candidate: pours set right minus pours set wrong if it joined
-        (ranked by its size: it beats the rules of smaller bodies)."""
-        right_now = (pred == y).astype(np.float32)
-        g = np.zeros(len(self.bodies))
-        AT = self.A.T.tocsr()
-        for j, lv in enumerate(levels):
-            on = decider == j
-            if not on.any():
-                continue
-            beats = self.size > lv
-            for h in (True, False):
-                v = np.where(on, (y == h).astype(np.float32) - right_now, 0.0)
-                sel = beats & (self.holds == h)
-                if sel.any():
-                    g[sel] += (AT @ v)[sel]
-        return np.where(self.alive, g, -np.inf)
-
-
-def _learn(e: str, k: int, names, D, y, bodies, A, meaning: _Cache, s: Settings,
-           default_holds: bool, c0: float) -> list[GeneralRule]:
-    """The decision list of one expectation under the default given (c0:
-    the estimated share of pours that keep the expectation)."""
-    n = len(y)
-    chosen: list[GeneralRule] = [GeneralRule(
-        f"g0_{e}", (), e, default_holds, n, int((y == default_holds).sum()),
-        float(c0 if default_holds else 1 - c0), 0)]
-    pred = np.full(n, default_holds)
-    decider = np.zeros(n, dtype=int)
-    pool = _Pool(bodies, A, y, s)
-    while len(chosen) < s.max_rules and pool.alive.any():
-        g = pool.gains(y, pred, decider, [len(r.body) + abs(r.confidence - 0.5) for r in chosen])
-        g = g - s.penalty * n * pool.size
-        # the most pours set right; among equals the narrowest body, which
-        # aims at the errors rather than at pours already right
-        order = [i for i in np.lexsort((pool.support, -g))[:16] if g[i] >= s.min_gain]
-        if not order:
-            break
-        conf = meaning([pool.bodies[i] for i in order])[:, k]
-        taken = None
-        for i, c in zip(order, conf):
-            # the pours the body describes and the pours sampled for it must agree
-            if np.isfinite(c) and (c >= 0.5) == pool.holds[i] and abs(c - 0.5) >= s.margin:
-                taken = (i, float(c))
+    def learn(self) -> list[GeneralRule]:
+        chosen = [self.rule(self.root, 0)]
+        decider = np.zeros(len(self.bodies), dtype=int)     # index into chosen
+        answered = np.full(len(self.bodies), float(self.target[self.root]))
+        now = self.cost(answered, np.arange(len(self.bodies)))
+        taken = {self.root}
+        while len(chosen) < self.s.max_rules:
+            best, best_gain = None, self.s.min_gain
+            for i in range(len(self.bodies)):
+                if i in taken:
+                    continue
+                cand = self.rule(i, len(chosen))
+                at = self.above[i]
+                wins = np.array([cand.rank > chosen[decider[j]].rank for j in at], dtype=bool)
+                at = at[wins]
+                if not len(at):
+                    continue
+                gain = float(now[at].sum() - self.cost(np.full(len(at), cand.likelihood), at).sum())
+                if gain > best_gain + 1e-12:
+                    best, best_gain = i, gain
+            if best is None:
                 break
-            pool.alive[i] = False
-        if taken is None:
-            continue
-        i, c = taken
-        pool.alive[i] = False
-        body, r_holds = pool.bodies[i], bool(pool.holds[i])
-        m = _described(names, D, body)
-        rule = GeneralRule(f"g{len(chosen)}_{e}", body, e, r_holds, int(m.sum()),
-                           int((y[m] == r_holds).sum()), c if r_holds else 1 - c,
-                           _level(body, r_holds, chosen))
-        chosen.append(rule)
-        for p in np.flatnonzero(m):
-            if rule.rank > chosen[decider[p]].rank:
-                decider[p], pred[p] = len(chosen) - 1, r_holds
-        if len(body) == 2 and s.max_body >= 3:
-            pool.add(names, D, y, _extensions(body, names, D, s), s)
-    _ask_alone(e, k, names, D, y, pool, chosen, pred, decider, meaning, s)
-    return chosen
-
-
-def _ask_alone(e, k, names, D, y, pool: _Pool, chosen: list[GeneralRule], pred, decider,
-               meaning: _Cache, s: Settings) -> None:
-    """One proposition asked alone must get the answer of the pours sampled
-    for it: where the rules so far answer otherwise, and the pours it
-    describes agree with its confidence, its own rule joins (if it sets no
-    more pours wrong than right)."""
-    singles = [i for i, b in enumerate(pool.bodies) if len(b) == 1 and pool.alive[i]]
-    if not singles or len(chosen) >= s.max_rules:
-        return
-    conf = meaning([pool.bodies[i] for i in singles])[:, k]
-    order = sorted(range(len(singles)), key=lambda j: (-abs(conf[j] - 0.5), pool.bodies[singles[j]]))
-    for j in order:
-        i, c = singles[j], float(conf[j])
-        if len(chosen) >= s.max_rules:
-            break
-        if not np.isfinite(c) or abs(c - 0.5) < s.margin or (c >= 0.5) != pool.holds[i]:
-            continue
-        body, r_holds = pool.bodies[i], bool(pool.holds[i])
-        said = max((r for r in chosen if set(r.body) <= set(body)), key=lambda r: r.rank)
-        if said.holds == r_holds:
-            continue
-        rule = GeneralRule(f"g{len(chosen)}_{e}", body, e, r_holds, int(pool.support[i]), 0,
-                           c if r_holds else 1 - c, _level(body, r_holds, chosen))
-        m = _described(names, D, body)
-        wins = np.array([rule.rank > chosen[d].rank for d in decider[m]], dtype=bool)
-        idx = np.flatnonzero(m)[wins]
-        if (y[idx] == r_holds).sum() < (y[idx] == pred[idx]).sum():
-            continue
-        rule = GeneralRule(rule.id, body, e, r_holds, rule.support, int((y[m] == r_holds).sum()),
-                           rule.confidence, rule.level)
-        chosen.append(rule)
-        pred[idx], decider[idx] = r_holds, len(chosen) - 1
-
-
-def _extensions(body, names, D, s: Settings) -> list[tuple[str, ...]]:
-    """The askable bodies of three propositions that extend `body`
-    (candidates for exceptions to an exception)."""
-    m = _described(names, D, body)
-    count = D[m].sum(axis=0)
-    have = set(body)
-    out = []
-    for i in np.flatnonzero(count >= s.min_support):
-        b = tuple(sorted(have | {names[i]}))
-        if len(b) == 3 and _askable(b):
-            out.append(b)
-    return out
+            rule = self.rule(best, len(chosen))
+            rule = replace(rule, level=_level(rule.body, rule.holds, chosen))
+            taken.add(best)
+            chosen.append(rule)
+            at = self.above[best]
+            at = at[[rule.rank > chosen[decider[j]].rank for j in at]]
+            decider[at] = len(chosen) - 1
+            answered[at] = rule.likelihood
+            now[at] = self.cost(answered[at], at)
+        return chosen
 
 
 def _level(body, r_holds: bool, chosen: Sequence[GeneralRule]) -> int:

@@ -76,19 +76,20 @@ def superiority(rules: Sequence[Ranked]) -> list[tuple[str, str]]:
     return sorted(out)
 
 
-def general_section(theory: Theory, general: General, pours: int) -> str:
+def general_section(theory: Theory, general: General, pours: int, own: int = 0) -> str:
     """The general layer as native facts: rules, bodies, `learned/1`, their
     provenance (layer, level, support, kept, confidence in permille) and the
     explicit superiority that makes both layers one linear order."""
     lines = ["", "% General rules, learned from every pour of the exploration",
-             "% (bridge/learning/generalize.py): a default per expectation, exceptions",
-             "% and exceptions to those. provenance(Id, support, N): the pours whose",
+             "% and the learner's own pours (bridge/learning/gaps.py), by",
+             "% bridge/learning/generalize.py: a default per expectation and the",
+             "% contrasts that move it. provenance(Id, support, N): the pours whose",
              "% description holds the body; kept: how many of them keep the head;",
-             "% confidence_permille: P(head | body) for the pours sampled for the body",
-             "% (a default the priors leave open: for the pours of the uniformly random",
-             "% scenes it decides).",
+             "% confidence_permille: P(head | body), the share of the pours sampled",
+             "% for the body (the rest an ordinary pour) that keep the head.",
              "% sup/2 below orders both layers (see bridge/learning/layers.py).",
              f"setting(general_pours, {int(pours)}).",
+             f"setting(general_own_pours, {int(own)}).",
              f"setting(general_rules, {len(general.rules)})."]
     for g in general.rules:
         lines.append(f"rule({g.id}, defeasible, {g.head}).")
@@ -103,14 +104,36 @@ def general_section(theory: Theory, general: General, pours: int) -> str:
     return "\n".join(lines) + "\n"
 
 
-def add_general_rules(path: Path | str, P: np.ndarray, S: np.ndarray, seed: int) -> General:
+def learn_general(P: np.ndarray, S: np.ndarray, seed: int, simulate=None,
+                  per_body: int | None = None) -> tuple[General, np.ndarray, np.ndarray]:
+    """The general rules of the pours (P, S), after simulating (with
+    `simulate`: parameterizations to scores) the pours the learner asks
+    for where the exploration left it none (bridge/learning/gaps.py); the
+    pours it learned from are returned beside the rules."""
+    from pantarhei.bridge.learning.gaps import gap_pours
+    from pantarhei.theory import defaults
+
+    P = np.atleast_2d(np.asarray(P, dtype=float))
+    S = np.atleast_2d(np.asarray(S, dtype=float))
+    if simulate is not None:
+        n = int(defaults()["pours_per_proposition"] if per_body is None else per_body)
+        extra = gap_pours(P, n, seed)
+        if len(extra):
+            P = np.vstack([P, extra])
+            S = np.vstack([S, np.asarray(simulate(extra), dtype=float)])
+    return generalize(P, S, Settings(seed=int(seed))), P, S
+
+
+def add_general_rules(path: Path | str, P: np.ndarray, S: np.ndarray, seed: int,
+                      simulate=None) -> General:
     """Generalize the pours (P, S) of the exploration that wrote the theory
-    file `path`, and append the general layer to that file (whole or not
-    at all)."""
+    file `path` (and the learner's own, with `simulate`), and append the
+    general layer to that file (whole or not at all)."""
     path = Path(path)
     theory = read_native(path)
-    general = generalize(P, S, Settings(seed=int(seed)))
+    n0 = len(np.atleast_2d(P))
+    general, P, S = learn_general(P, S, seed, simulate)
     ok = int(np.all(np.isfinite(np.atleast_2d(S)), axis=1).sum())
     text = path.read_text(encoding="utf-8")
-    write_text(path, text.rstrip("\n") + "\n" + general_section(theory, general, ok))
+    write_text(path, text.rstrip("\n") + "\n" + general_section(theory, general, ok, len(P) - n0))
     return general

@@ -3,9 +3,10 @@ per expectation, with the deciding rule), why or why not, and the deciding
 rule in words with its evidence.
 
 A question means what `pantarhei simulate --antecedent Q` samples for it:
-whatever it leaves unsaid follows the priors (an ordinary scene). Nothing is
-added to it: the general rules (bridge/learning/) answer questions of any
-length in that meaning."""
+whatever it leaves unsaid follows the priors (the ordinary pour). Nothing
+is added to it: the general rules (bridge/learning/) answer questions of
+any length in that meaning, each with the likelihood that the expectation
+holds in such pours."""
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -19,7 +20,8 @@ from pantarhei.bridge.theories.model import Theory
 class Answer:
     """What the theory says about one expectation in a scene."""
     expectation: str
-    value: str          # "holds", "fails" or "unknown"
+    value: str          # "holds", "fails", "uncertain" or "unknown"
+    likelihood: float | None    # the share of such pours in which it holds
     rule: str           # the deciding rule, "fact", or "none"
     reason: str         # in words
 
@@ -31,15 +33,16 @@ def what_happens(theory: Theory, props: list[str],
     e = prolog_load(theory)
     e.use_module("queries")
     goal = (f"Sem = {semantics.options()}, queries:what_happens(Scene, Sem, Os), "
-            "findall(S, (member(outcome(E, V, R), Os), "
-            "(V == fails -> L = neg(E) ; L = E), queries:explain_brief(Scene, L, Sem, T), "
-            "format(string(S), '~w\\t~w\\t~w\\t~s', [E, V, R, T])), Ss)")
+            "findall(S, (member(outcome(E, V, P, R), Os), "
+            "(V == unknown -> queries:explain_brief(Scene, E, Sem, T) ; T = \"\"), "
+            "format(string(S), '~w\\t~w\\t~w\\t~w\\t~s', [E, V, P, R, T])), Ss)")
     r = e.once(goal, Scene=list(props))
     general = {rid for rid, k, v in theory.provenance if k == "layer" and v == "general"}
     out = []
     for line in r["Ss"]:
-        exp, value, rule, reason = prolog_text(line).split("\t", 3)
-        out.append(Answer(exp, value, _general_twin(theory, general, rule), reason))
+        exp, value, p, rule, reason = prolog_text(line).split("\t", 4)
+        likelihood = None if p == "none" else float(p)
+        out.append(Answer(exp, value, likelihood, _general_twin(theory, general, rule), reason))
     return out
 
 
@@ -75,10 +78,10 @@ def explain(theory: Theory, props: list[str], literal: str,
 
 
 def rule_words(theory: Theory, rule_id: str) -> str:
-    """Why a rule decides, in words: its body's glosses (or "in general"
-    for the empty body), then its evidence and its id, e.g. "pour from the
-    side (expected in 79% of such pours, seen in 41 of 52; rule
-    g3_no_spill)"."""
+    """The deciding rule in words: its body's glosses (or "an ordinary
+    pour" for the empty body), the share of such pours in which its
+    expectation holds, and its evidence, e.g. "pour from the side: holds
+    in 45% of such pours (seen in 27 of 60 such pours; rule g3_no_spill)"."""
     from pantarhei.theory.lexicon import load_vocabulary
 
     vocab = load_vocabulary()
@@ -87,25 +90,33 @@ def rule_words(theory: Theory, rule_id: str) -> str:
     except KeyError:
         return rule_id
     props = [vocab.propositions[b].gloss if b in vocab.propositions else b for b in rule.body]
-    where = ", ".join(props) if props else "in general"
+    where = ", ".join(props) if props else "an ordinary pour"
+    share = likelihood(theory, rule_id)
+    said = f": holds in {round(100 * share)}% of such pours" if share is not None else ""
     ev = evidence(theory, rule_id)
-    return f"{where} ({ev + '; ' if ev else ''}rule {rule_id})"
+    return f"{where}{said} ({ev + '; ' if ev else ''}rule {rule_id})"
+
+
+def likelihood(theory: Theory, rule_id: str) -> float | None:
+    """The share of a learned rule's pours in which its expectation holds
+    (from its confidence in its head), None where it records none."""
+    conf = [v for rid, k, v in theory.provenance if rid == rule_id and k == "confidence_permille"]
+    if not conf:
+        return None
+    c = int(conf[0]) / 1000
+    return 1 - c if theory.rule(rule_id).head.startswith("neg(") else c
 
 
 def evidence(theory: Theory, rule_id: str) -> str:
-    """The pours behind a learned rule, from its provenance facts:
-    "expected in 79% of such pours, seen in 41 of 52" for a general rule
-    (its confidence, then the explored pours its body describes and how
-    many kept its head; "41 of 52 such pours" without a confidence), "93%
-    of the weighted pours of a4" for a rule of Algorithm 1; "" when the
-    theory records none."""
+    """The pours behind a learned rule, from its provenance facts: "seen in
+    41 of 52 such pours" for a general rule (of the pours learned from that
+    could have been drawn for its body, how many kept its head), "the weighted pours of a4" for a rule of Algorithm 1; ""
+    when the theory records none."""
     facts = {k: v for rid, k, v in theory.provenance if rid == rule_id}
     if "support" in facts and "kept" in facts:
-        if "confidence_permille" in facts:
-            return (f"expected in {int(facts['confidence_permille']) / 10:.0f}% of such pours, "
-                    f"seen in {facts['kept']} of {facts['support']}")
-        return f"{facts['kept']} of {facts['support']} such pours"
-    if "confidence_permille" in facts and "antecedent" in facts:
-        return (f"{int(facts['confidence_permille']) / 10:.0f}% of the weighted pours of "
-                f"{facts['antecedent']}")
+        if not int(facts["support"]):
+            return "no such pour simulated: estimated from the pours nearby"
+        return f"seen in {facts['kept']} of {facts['support']} such pours"
+    if "antecedent" in facts:
+        return f"the weighted pours of {facts['antecedent']}"
     return ""

@@ -7,10 +7,18 @@
 % parameter(Name, Group, Unit, Low, High): the parameter's bounds.
 % prior(Name, uniform(Low, High)): the distribution of a parameter that no
 %   proposition of an antecedent draws: uniform over [Low, High], within the
-%   bounds. The priors describe an ordinary scene when nothing is said: the
-%   source starts and ends upright and level, beside and above the
-%   destination, in line with it; the pouring pose, the timing, the
-%   materials and the amount of liquid range over their bounds.
+%   bounds. The priors are the one meaning of what a question leaves
+%   unsaid: the ordinary pour, what a person means by "pour" when they say
+%   nothing more. The source starts and ends upright and level, beside and
+%   above the destination, in line with it; when pouring it is tilted past
+%   the horizontal so that the liquid pours (100 to 140 degrees), over or
+%   near the destination (its base 0 to 80 mm from the destination's axis),
+%   a little above the rim (50 to 120 mm), level and in line. It moves at a
+%   moderate speed, and the bodies and the liquid are ordinary: every
+%   material and the amount lie between the values that a proposition
+%   names as extreme (between a light and a heavy liquid, a slippery and a
+%   grippy bowl, a little and a full source), so that each extreme a
+%   person names is a departure from the ordinary pour, not a part of it.
 % parameter_gloss(Name, Text).
 %
 % Frame: positions are those of the centre of the source bowl's base,
@@ -56,11 +64,11 @@ prior(start_z, uniform(100, 300)).
 prior(start_roll, uniform(-5, 5)).
 prior(start_pitch, uniform(-5, 5)).
 prior(start_yaw, uniform(-180, 180)).
-prior(pour_x, uniform(-250, 250)).
-prior(pour_y, uniform(-60, 60)).
-prior(pour_z, uniform(-40, 400)).
+prior(pour_x, uniform(0, 80)).
+prior(pour_y, uniform(-20, 20)).
+prior(pour_z, uniform(50, 120)).
 prior(pour_roll, uniform(-5, 5)).
-prior(pour_pitch, uniform(-30, 180)).
+prior(pour_pitch, uniform(100, 140)).
 prior(pour_yaw, uniform(-180, 180)).
 prior(end_x, uniform(100, 250)).
 prior(end_y, uniform(-20, 20)).
@@ -68,18 +76,18 @@ prior(end_z, uniform(100, 300)).
 prior(end_roll, uniform(-5, 5)).
 prior(end_pitch, uniform(-5, 5)).
 prior(end_yaw, uniform(-180, 180)).
-prior(approach_duration, uniform(300, 4000)).
-prior(retreat_duration, uniform(300, 4000)).
-prior(source_mass, uniform(100, 2000)).
-prior(source_restitution, uniform(0, 950)).
-prior(source_friction, uniform(0, 1500)).
-prior(destination_mass, uniform(20, 3000)).
-prior(destination_restitution, uniform(0, 950)).
-prior(destination_friction, uniform(0, 1500)).
-prior(particle_mass, uniform(100, 10000)).
-prior(particle_restitution, uniform(0, 950)).
-prior(particle_friction, uniform(0, 1500)).
-prior(particle_count, uniform(10, 200)).
+prior(approach_duration, uniform(1000, 2000)).
+prior(retreat_duration, uniform(1000, 2000)).
+prior(source_mass, uniform(400, 800)).
+prior(source_restitution, uniform(150, 600)).
+prior(source_friction, uniform(200, 800)).
+prior(destination_mass, uniform(200, 600)).
+prior(destination_restitution, uniform(150, 600)).
+prior(destination_friction, uniform(200, 800)).
+prior(particle_mass, uniform(1500, 3000)).
+prior(particle_restitution, uniform(150, 600)).
+prior(particle_friction, uniform(200, 800)).
+prior(particle_count, uniform(40, 140)).
 
 parameter_gloss(start_x, "distance of the source from the destination's axis, towards the side it comes from, at the start").
 parameter_gloss(start_y, "sideways offset of the source at the start").
