@@ -82,8 +82,9 @@ check_theory_line(File, Line-Fact, Rules0, Rules) :-
 
 %!  check_theory_fact(+Fact, -Problem:string) is semidet.
 %
-%   Problem says how Fact, a fact of a theory predicate, is not of its
-%   form; fails if it is (or if it is of another predicate).
+%   Problem says how Fact, a fact of a theory predicate as read_fact_file/2
+%   gives it (its atoms are names), is not of its form; fails if it is
+%   (or if it is of another predicate).
 check_theory_fact(Fact, Problem) :-
     functor(Fact, Name, Arity),
     theory_form(Name, Form, _),
@@ -122,7 +123,8 @@ theory_literal_arg(fact(L), L).
 theory_literal_arg(rule(_, _, L), L).
 theory_literal_arg(body(_, L), L).
 
-plain_name(A) :- atom(A), lower_name(A).
+% (every atom read_fact_file/2 gives is a name: lower_name/1)
+plain_name(A) :- atom(A).
 
 literal_problem(L, Problem) :-
     (   L = neg(neg(_))
@@ -136,13 +138,14 @@ literal_problem(L, Problem) :-
 literal(neg(A)) :- !, literal_atom(A).
 literal(A) :- literal_atom(A).
 
-literal_atom(A) :- atom(A), !, lower_name(A).
+literal_atom(A) :- atom(A), !.
 literal_atom(A) :-
     compound(A),
-    compound_name_arguments(A, N, Args),
-    Args \== [],
-    lower_name(N),
-    forall(member(X, Args), ( integer(X) -> true ; atom(X), lower_name(X) )).
+    compound_name_arguments(A, _, Args),
+    constants(Args).
+
+constants([]).
+constants([X|Xs]) :- ( integer(X) -> true ; atom(X) ), constants(Xs).
 
 %!  term_text(+Term, -Text:string) is det.
 %
@@ -426,7 +429,16 @@ check_arg(_) :-
 lower_name(Name) :-
     atom_codes(Name, [C|Cs]),
     C >= 0'a, C =< 0'z,
-    forall(member(X, Cs), ( X < 128, code_type(X, csym) )).
+    name_codes(Cs).
+
+name_codes([]).
+name_codes([C|Cs]) :-
+    (   C >= 0'a, C =< 0'z -> true
+    ;   C >= 0'0, C =< 0'9 -> true
+    ;   C =:= 0'_ -> true
+    ;   C >= 0'A, C =< 0'Z
+    ),
+    name_codes(Cs).
 
 %!  theory_error_message(+Error, -Message:string) is semidet.
 %

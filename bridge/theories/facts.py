@@ -17,9 +17,11 @@ quoted and escaped (`term_text`), never as bare program text.
 """
 from __future__ import annotations
 
+import gc
 import re
-from dataclasses import dataclass
+from contextlib import contextmanager
 from pathlib import Path
+from typing import NamedTuple
 
 from pantarhei.theory import TheoryFileError
 
@@ -47,8 +49,7 @@ class Text(str):
     __slots__ = ()
 
 
-@dataclass(frozen=True)
-class Fact:
+class Fact(NamedTuple):
     """One fact: its predicate name, arguments (str names, `Text`, int, or
     tuples `(name, arg, ...)` for terms) and the line where it starts."""
     name: str
@@ -94,9 +95,15 @@ _TOKEN = re.compile(r"""
   | (?P<list>\[)
   | (?P<other>.)
 """, re.X | re.S)
-# A line holding one flat fact (the usual case), read without the tokenizer.
-_FLAT = re.compile(r"[ \t]*([a-z][A-Za-z0-9_]*)\(((?:[a-z][A-Za-z0-9_]*|-?[0-9]+)"
-                   r"(?:[ \t]*,[ \t]*(?:[a-z][A-Za-z0-9_]*|-?[0-9]+))*)\)\.[ \t\r]*(?:%[^\n]*)?")
+# A line holding one fact whose arguments are names, integers or terms of
+# those (the usual case), read without the tokenizer.
+_A0 = r"(?:[a-z][A-Za-z0-9_]*|-?[0-9]+)"
+_A1 = rf"(?:[a-z][A-Za-z0-9_]*\({_A0}(?:[ \t]*,[ \t]*{_A0})*\)|{_A0})"
+_FLAT = re.compile(rf"^[ \t]*([a-z][A-Za-z0-9_]*)\(({_A1}(?:[ \t]*,[ \t]*{_A1})*)\)\.[ \t\r]*(?:%[^\n]*)?$",
+                   re.M)
+_FLAT_ARG = re.compile(r"([a-z][A-Za-z0-9_]*)(?:\(([^()]*)\))?|(-?[0-9]+)")
+_COMMA = re.compile(r"[ \t]*,[ \t]*")
+_DIGITS = frozenset("-0123456789")
 
 
 def read(path: Path | str) -> list[Fact]:
@@ -128,26 +135,55 @@ def parse(data: bytes | str, source: str = "<theory>", first_line: int = 1) -> l
     if isinstance(data, str):
         data = data.encode("utf-8", errors="surrogateescape")
     text = check_bytes(data, source, first_line)
+    with _no_gc():
+        return _parse(text, source, first_line)
+
+
+@contextmanager
+def _no_gc():
+    """Without the cycle collector: facts make no cycles, and collecting
+    while a million tuples pile up makes reading large files quadratic."""
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()
+
+
+def _parse(text: str, source: str, first_line: int) -> list[Fact]:
     facts: list[Fact] = []
-    flat = _FLAT.fullmatch
-    pos, line, n = 0, first_line, len(text)
-    while pos < n:
-        eol = text.find("\n", pos)
-        if eol < 0:
-            eol = n
-        m = flat(text, pos, eol)
-        if m:
-            facts.append(Fact(m.group(1), tuple(_value(a.strip(), source, line)
-                                                for a in m.group(2).split(",")), line))
-        else:
+    append = facts.append
+    pos, line = 0, first_line
+    for m in _FLAT.finditer(text):
+        start = m.start()
+        if start < pos:
+            continue
+        while pos < start:
             # anything else: the tokenizer, up to the end of a line between facts
             eol, line = _Tokens(text, source, facts).run(pos, line)
+            pos, line = eol + 1, line + 1
+        if pos != start:
+            continue                    # the tokenizer read on into this line
+        name, args = m.groups()
+        if "(" in args:
+            append(Fact(name, tuple(
+                (f, *[_value(x, source, line) for x in _COMMA.split(inner)]) if inner
+                else f if f else _integer(number, source, line)
+                for f, inner, number in _FLAT_ARG.findall(args)), line))
+        else:
+            append(Fact(name, tuple([_integer(x, source, line) if x[0] in _DIGITS else x
+                                     for x in _COMMA.split(args)]), line))
+        pos, line = m.end() + 1, line + 1
+    while pos < len(text):
+        eol, line = _Tokens(text, source, facts).run(pos, line)
         pos, line = eol + 1, line + 1
     return facts
 
 
 def _value(token: str, source: str, line: int):
-    if token[0] == "-" or token[0].isdigit():
+    if token[0] in _DIGITS:
         return _integer(token, source, line)
     return token
 

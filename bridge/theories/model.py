@@ -352,7 +352,9 @@ def _line(text: str, pattern: str, source: str) -> str:
 
 def read_native(path: Path | str) -> Theory:
     """Read a native theory file; TheoryFileError names file and line."""
-    return from_facts(theory_facts.read(path), str(path))
+    facts = theory_facts.read(path)
+    with theory_facts._no_gc():
+        return from_facts(facts, str(path))
 
 
 #: The predicates of a theory, with the form each is written in.
@@ -362,26 +364,33 @@ FORMS = {("fact", 1): "fact(L)", ("rule", 3): "rule(Id, Kind, Head)", ("body", 2
 _FORM_OF = {name: form for (name, _), form in FORMS.items()}
 
 
-def check_fact(f: Fact, source: str) -> None:
+_NAMES_AT = {"rule": (0,), "body": (0,), "sup": (0, 1), "learned": (0,), "setting": (0,),
+             "provenance": (0, 1), "fact": ()}
+_LITERAL_AT = {"fact": 0, "rule": 2, "body": 1}
+
+
+def check_fact(f: Fact, source: str, checked: set | None = None) -> None:
     """TheoryFileError (`file:line: what`) if a fact of a theory predicate
-    is not of its form (theory_files:check_theory_fact/2 in Prolog)."""
-    where = f"{source}:{f.line}"
+    is not of its form (theory_files:check_theory_fact/2 in Prolog).
+    `checked` holds literals already found good (a theory repeats them)."""
     form = _FORM_OF.get(f.name)
     if form is None:
         return
-    if (f.name, len(f.args)) not in FORMS:
-        raise TheoryFileError(f"{where}: " + ARITY.format(form, f.name, len(f.args)))
     a = f.args
-    names = {"rule": (0,), "body": (0,), "sup": (0, 1), "learned": (0,), "setting": (0,),
-             "provenance": (0, 1)}.get(f.name, ())
-    for i in names:
+    if (f.name, len(a)) not in FORMS:
+        raise TheoryFileError(f"{source}:{f.line}: " + ARITY.format(form, f.name, len(a)))
+    for i in _NAMES_AT[f.name]:
         if not (type(a[i]) is str and _NAME.match(a[i])):
-            raise TheoryFileError(f"{where}: " + NAME_ARG.format(form, term_text(a[i])))
+            raise TheoryFileError(f"{source}:{f.line}: " + NAME_ARG.format(form, term_text(a[i])))
     if f.name == "rule" and a[1] not in KINDS:
-        raise TheoryFileError(f"{where}: " + KIND.format(a[0], term_text(a[1])))
-    lit = {"fact": 0, "rule": 2, "body": 1}.get(f.name)
-    if lit is not None:
-        _check_literal(term_text(a[lit]), where)
+        raise TheoryFileError(f"{source}:{f.line}: " + KIND.format(a[0], term_text(a[1])))
+    i = _LITERAL_AT.get(f.name)
+    if i is not None:
+        lit = a[i] if type(a[i]) is str else term_text(a[i])
+        if checked is None or lit not in checked:
+            _check_literal(lit, f"{source}:{f.line}")
+            if checked is not None:
+                checked.add(lit)
 
 
 def from_facts(facts: list[Fact], source: str, t: Theory | None = None) -> Theory:
@@ -391,27 +400,41 @@ def from_facts(facts: list[Fact], source: str, t: Theory | None = None) -> Theor
     bodies: dict[str, list[str]] = {}
     heads: list[tuple[str, str, str]] = []
     first_body: dict[str, int] = {}
+    lines, body_lines = t.lines, t.body_lines
+    checked: set[str] = set()
+    names: set[str] = set()
     for f in facts:
-        check_fact(f, source)
         name, a = f.name, f.args
-        if name == "rule":
+        if name == "body" and len(a) == 2:
+            rid, lit = a
+            if type(lit) is not str:
+                lit = term_text(lit)
+            if lit not in checked or rid not in names:
+                check_fact(f, source, checked)
+                names.add(rid)
+        else:
+            check_fact(f, source, checked)
+        if name == "body":
+            have = bodies.get(rid)
+            if have is None:
+                bodies[rid] = [lit]
+                first_body[rid] = f.line
+            else:
+                have.append(lit)
+            body_lines.setdefault((rid, lit), f.line)
+        elif name == "rule":
             rid = a[0]
-            if rid in t.lines:
+            if rid in lines:
                 raise TheoryFileError(f"{source}:{f.line}: " + SECOND_RULE.format(rid))
-            t.lines[rid] = f.line
-            heads.append((rid, a[1], term_text(a[2])))
-        elif name == "body":
-            lit = term_text(a[1])
-            bodies.setdefault(a[0], []).append(lit)
-            first_body.setdefault(a[0], f.line)
-            t.body_lines.setdefault((a[0], lit), f.line)
-        elif name == "fact":
-            t.facts.append(term_text(a[0]))
-            t.body_lines.setdefault(("", t.facts[-1]), f.line)
-        elif name == "sup":
-            t.sup.append((a[0], a[1]))
+            lines[rid] = f.line
+            heads.append((rid, a[1], a[2] if type(a[2]) is str else term_text(a[2])))
         elif name == "learned":
             t.learned.add(a[0])
+        elif name == "fact":
+            t.facts.append(term_text(a[0]))
+            body_lines.setdefault(("", t.facts[-1]), f.line)
+        elif name == "sup":
+            t.sup.append((a[0], a[1]))
         elif name == "setting":
             t.settings.setdefault(a[0], []).append(_plain(a[1]))
         elif name == "provenance":
