@@ -440,6 +440,13 @@ name_codes([C|Cs]) :-
     ),
     name_codes(Cs).
 
+:- multifile prolog:message//1.
+
+%   A theory_error/3 printed by print_message/2 (plain swipl loading a bad
+%   theory): its one line, not "Unknown message".
+prolog:message(theory_error(File, Line, Expected)) -->
+    [ '~w:~w: ~w'-[File, Line, Expected] ].
+
 %!  theory_error_message(+Error, -Message:string) is semidet.
 %
 %   The one-line message for a theory_error/3.

@@ -95,4 +95,8 @@ test(a_theory_fact_of_another_arity_is_refused, Expected == "expected rule(Id, K
 test(term_text_as_python_writes_it, T == "p(a,-3,\"x\\\"y\")") :-
     term_text(p(a, -3, "x\"y"), T).
 
+test(print_message_prints_the_one_line, S == "f.pl:3: a fact\n") :-
+    '$messages':translate_message(theory_error('f.pl', 3, "a fact"), Lines, []),
+    with_output_to(string(S), print_message_lines(current_output, '', Lines)).
+
 :- end_tests(theory_files).
