@@ -54,4 +54,4 @@ def test_demo_refuses_bad_options_in_one_line(tmp_path):
     r = run_cli("demo", "--max-rules", "0", "--out", str(tmp_path / "t.pl"))
     assert "--max-rules" in assert_one_line_error(r)
     r = run_cli("demo", "--oracle", "synthetic", "--out", str(tmp_path))
-    assert "a directory, not a theory file" in assert_one_line_error(r)
+    assert "a directory, not a file" in assert_one_line_error(r)
