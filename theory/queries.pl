@@ -430,10 +430,3 @@ explain(Scene, L, Options, Text) :-
 explain_brief(Scene, L, Options, Text) :-
     why_brief(Scene, L, Options, Proof),
     proof_text(Proof, Text).
-
-% A theory file that cannot be read, in one line in plain SWI-Prolog too
-% (theory_files:theory_error_message/2): "File:Line: what was expected".
-:- multifile prolog:message//1.
-prolog:message(theory_error(File, Line, Expected)) -->
-    { theory_files:theory_error_message(theory_error(File, Line, Expected), Message) },
-    [ '~s'-[Message] ].
