@@ -80,7 +80,7 @@ def demo(args: argparse.Namespace) -> int:
     _heading(f"How should I pour so that {GOAL.replace(',', ', ')}?")
     try:
         plan(argparse.Namespace(goal=GOAL, given="", theory=[str(out)], alternatives=2,
-                                verify=args.verify, seed=args.seed, json=False,
+                                verify=args.verify, min_success=0.9, seed=args.seed, json=False,
                                 oracle=args.oracle, store=args.store))
     except UserError as e:     # a theory that cannot reach the goal: say so, and finish
         print(f"no plan: {e}")

@@ -37,8 +37,13 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--theory", action="append", metavar="FILE", help=THEORY_HELP)
     p.add_argument("--alternatives", type=options.count(0, options.COUNT_MAX), default=4, metavar="K",
                    help="list up to K plans after the best (default 4)")
-    p.add_argument("--verify", type=options.count(0, options.VERIFY_MAX), default=0, metavar="N",
-                   help="sample each plan N times, simulate, and report how often the goals were met")
+    p.add_argument("--verify", type=options.count(0, options.VERIFY_MAX), default=10, metavar="N",
+                   help="sample each plan the theory proposes N times and simulate it; only the "
+                        "plans that met the goals often enough are shown (default 10; 0: show "
+                        "the theory's plans unverified)")
+    p.add_argument("--min-success", type=float, default=0.9, metavar="SHARE",
+                   help="the share of a plan's verifying pours that must meet every goal "
+                        "(default 0.9)")
     options.add_seed(p, 0, "--verify's sampling")
     p.add_argument("--store", default="pantarhei.sqlite",
                    help="SQLite file of simulations for --verify (default pantarhei.sqlite)")
@@ -214,13 +219,15 @@ def plan(args: argparse.Namespace) -> int:
     if not goals:
         raise UserError("--goal: give at least one goal literal")
     given = known(_split(args.given))
+    if not 0 < args.min_success <= 1:
+        raise UserError("--min-success: a share above 0 and at most 1")
     theory = loading.load(args.theory, pouring=True)
-    plans = make_plans(theory, goals, given, args.alternatives)
-    verified: list[dict | None] = [None] * len(plans)
+    verified: list[dict | None]
     if args.verify:
-        oracle = str((loading.settings(theory).get("oracle") or ["pybullet"])[0])
-        verified = [_verify(p.antecedent, goals, args.verify, args.seed + i, oracle, args.store)
-                    for i, p in enumerate(plans)]
+        plans, verified = _verified(args, theory, goals, given)
+    else:
+        plans = make_plans(theory, goals, given, args.alternatives)
+        verified = [None] * len(plans)
     from pantarhei.bridge.reasoning.planning import check_goals
 
     goal_lits = check_goals(goals, theory)
@@ -248,25 +255,29 @@ def plan(args: argparse.Namespace) -> int:
     return 0
 
 
-def _verify(antecedent: tuple[str, ...], goals: list[str], n: int, seed: int,
-            oracle: str = "pybullet", store: str | None = None) -> dict:
-    """Sample the antecedent n times, simulate with the oracle the theory was
-    learned from (stored), and count the runs that met every goal."""
-    import numpy as np
-
-    from pantarhei.oracle.generative import sample
-
+def _verified(args: argparse.Namespace, theory, goals: list[str], given: list[str]
+              ) -> tuple[list, list[dict]]:
+    """The theory's plans that met the goals in at least --min-success of
+    --verify pours each (simulated with the oracle the theory was learned
+    from, stored); UserError when none did."""
     from pantarhei.bridge.exploration.simulation import open_simulator, oracle_identity
-    from pantarhei.bridge.reasoning.planning import goals_met
+    from pantarhei.bridge.reasoning.planning import verified_plans
+    from pantarhei.bridge.theories import loading
 
+    oracle = str((loading.settings(theory).get("oracle") or ["pybullet"])[0])
     oracle_identity(oracle)     # UserError for an oracle that is unknown or cannot load
-    params = sample(list(antecedent), n, seed)
-    with open_simulator(oracle, store=store) as sim:
-        scores = np.asarray(sim.simulate(params), dtype=float)
-    simulated = int(np.all(np.isfinite(scores), axis=1).sum())
-    met = int(goals_met(scores, goals).sum())
-    return {"simulated": simulated, "met": met, "failed": int(n - simulated),
-            "rate": float(met / simulated) if simulated else 0.0}
+    with open_simulator(oracle, store=args.store) as sim:
+        good, tried = verified_plans(theory, goals, given, sim.simulate, args.verify, args.seed,
+                                     args.min_success, 1 + args.alternatives)
+    if not good:
+        best = max(tried, key=lambda v: v.rate)
+        raise UserError(f"no plan found: none of the {len(tried)} plans the theory proposes met "
+                        f"the goals in {args.min_success:.0%} of {args.verify} pours (the best, "
+                        f"{', '.join(best.plan.chosen) or 'the context alone'}, in {best.met} of "
+                        f"{best.simulated})")
+    return [v.plan for v in good], [{"simulated": v.simulated, "met": v.met,
+                                     "failed": args.verify - v.simulated, "rate": v.rate}
+                                    for v in good]
 
 
 # -- conclusions --------------------------------------------------------------

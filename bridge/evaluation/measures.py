@@ -156,6 +156,63 @@ def question_scores(predictions: np.ndarray, key: np.ndarray, clear: np.ndarray)
             "accuracy": float(right.sum() / max(decided.sum(), 1))}
 
 
+def question_shares(S: np.ndarray, of: np.ndarray, n_questions: int) -> np.ndarray:
+    """Per question and expectation: the share of the question's pours in
+    which the expectation holds."""
+    V = verdicts(S)
+    return np.array([V[of == i].mean(axis=0) for i in range(n_questions)])
+
+
+def defaults_only(train_verdicts: np.ndarray, n: int) -> tuple[np.ndarray, np.ndarray]:
+    """The defaults-only baseline for n questions: one verdict per
+    expectation, the majority of all the pours learned from, whatever is
+    asked; and as its likelihood the share of those pours that keep it."""
+    share = np.asarray(train_verdicts, dtype=float).mean(axis=0)
+    verdict = np.where(share >= 0.5, HOLDS, FAILS)
+    return np.tile(verdict, (n, 1)), np.tile(share, (n, 1))
+
+
+def contrast_keys(key: np.ndarray, clear: np.ndarray, default: np.ndarray) -> np.ndarray:
+    """The clear keys whose verdict differs from the defaults-only answer
+    (`default`: its verdicts, questions x 9): where knowing the question
+    matters."""
+    return clear & (key != (np.asarray(default) == HOLDS))
+
+
+def calibration(likelihood: np.ndarray, share: np.ndarray) -> float | None:
+    """The mean absolute difference between the likelihoods stated and the
+    shares of the questions' pours, over every key with a likelihood."""
+    d = np.abs(np.asarray(likelihood, dtype=float) - share)
+    d = d[np.isfinite(d)]
+    return float(d.mean()) if len(d) else None
+
+
+def coherent(predictions: np.ndarray, V: np.ndarray, of: np.ndarray) -> np.ndarray:
+    """Per question: whether its decided verdicts, taken together, are a
+    behaviour one of its own pours shows (`V`: the pours' verdicts, `of`:
+    each pour's question)."""
+    out = np.zeros(len(predictions), dtype=bool)
+    for i, a in enumerate(np.asarray(predictions)):
+        on = a != UNKNOWN
+        rows = V[of == i][:, on]
+        out[i] = bool((rows == (a[on] == HOLDS)).all(axis=1).any()) if len(rows) else False
+    return out
+
+
+def question_measures(predictions: np.ndarray, likelihood: np.ndarray, share: np.ndarray,
+                      key: np.ndarray, clear: np.ndarray, contrast: np.ndarray,
+                      V: np.ndarray, of: np.ndarray) -> dict[str, float | int | None]:
+    """Every question measure of one theory or model: coverage and accuracy
+    on the clear keys, accuracy on the contrast keys (and their coverage),
+    calibration, and the share of coherent answers."""
+    out = question_scores(predictions, key, clear)
+    c = question_scores(predictions, key, contrast)
+    out.update(contrast=c["clear"], contrast_coverage=c["coverage"],
+               contrast_accuracy=c["accuracy"], calibration=calibration(likelihood, share),
+               coherent=float(coherent(predictions, V, of).mean()))
+    return out
+
+
 def distinct_behaviours(consequents: np.ndarray) -> int:
     """How many distinct qualitative behaviours (distinct rows of verdicts)."""
     rows = np.asarray(consequents, dtype=bool)

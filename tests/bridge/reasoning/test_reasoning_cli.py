@@ -49,7 +49,8 @@ def test_ask_why_and_why_not(cli) -> None:
 
 
 def test_plan_best_first_then_alternatives(cli) -> None:
-    args = ("plan", "--goal", "liquid_leaves_source,no_spill", "--given", "light_liquid", "--json")
+    args = ("plan", "--goal", "liquid_leaves_source,no_spill", "--given", "light_liquid", "--json",
+            "--verify", "0")
     before = json.loads(cli(*args, "--theory", LEARNED).out)
     after = json.loads(cli(*args, "--theory", LEARNED, "--theory", HAND).out)
     assert [p["chosen"] for p in before["plans"]] == [["pour_centred", "pour_upside_down"]]
@@ -75,21 +76,51 @@ def test_plan_rests_on_the_most_confident_rules_first(cli, tmp_path: Path) -> No
     # pours centred rests on a rule of 95%, and comes first
     f = tmp_path / "confident.pl"
     f.write_text(CONFIDENT)
-    r = cli("plan", "--goal", "no_spill", "--theory", str(f), "--json")
+    r = cli("plan", "--goal", "no_spill", "--theory", str(f), "--json", "--verify", "0")
     assert r.code == 0, r.err
     assert [p["chosen"] for p in json.loads(r.out)["plans"]] == [["pour_centred"], []]
     # without confidences the cheapest plan comes first
     f.write_text("\n".join(line for line in CONFIDENT.splitlines() if "provenance" not in line))
-    r = cli("plan", "--goal", "no_spill", "--theory", str(f), "--json")
+    r = cli("plan", "--goal", "no_spill", "--theory", str(f), "--json", "--verify", "0")
     assert [p["chosen"] for p in json.loads(r.out)["plans"]] == [[]]
 
 
 def test_plan_negated_goal(cli) -> None:
     for goal in ("--goal=neg(no_spill)", "--goal=-no_spill"):
-        r = cli("plan", goal, "--theory", LEARNED, "--json")
+        r = cli("plan", goal, "--theory", LEARNED, "--json", "--verify", "0")
         assert r.code == 0, r.err
         assert json.loads(r.out)["goals"] == ["neg(no_spill)"]
         assert json.loads(r.out)["plans"][0]["chosen"] == ["pour_to_side"]
+
+
+WISHFUL = """rule(r1, defeasible, neg(liquid_enters_destination)).
+rule(r2, defeasible, liquid_enters_destination).
+body(r2, pour_far_away).
+rule(r3, defeasible, liquid_enters_destination).
+body(r3, pour_centred).
+sup(r2, r1).
+sup(r3, r1).
+"""
+
+
+def test_plan_shows_only_plans_that_hold_in_simulation(cli, tmp_path: Path) -> None:
+    """A theory that thinks pouring far away fills the destination: its
+    first plan fails every verifying pour and is not shown; pouring centred
+    holds. Asked for more than any plan gives, it says so in one line."""
+    f = tmp_path / "wishful.pl"
+    f.write_text(WISHFUL)
+    args = ("plan", "--goal", "liquid_enters_destination", "--theory", str(f), "--verify", "4",
+            "--store", str(tmp_path / "s.sqlite"))
+    proposed = json.loads(cli(*args[:5], "--verify", "0", "--json").out)["plans"]
+    assert {tuple(p["chosen"]) for p in proposed} == {("pour_far_away",), ("pour_centred",)}
+    r = cli(*args, "--min-success", "0.75", "--json")
+    assert r.code == 0, r.err
+    plans = json.loads(r.out)["plans"]
+    assert [p["chosen"] for p in plans] == [["pour_centred"]]
+    assert plans[0]["verified"]["met"] >= 3
+    f.write_text(WISHFUL.replace("pour_centred", "pour_upright"))
+    line = assert_one_line_error(cli(*args))
+    assert line.startswith("pantarhei plan: no plan found") and "in 0 of 4" in line, line
 
 
 def test_conclusions_of_both_engines_agree_and_use_dfl_literals(cli, tmp_path: Path) -> None:
@@ -117,6 +148,7 @@ def test_conclusions_of_both_engines_agree_and_use_dfl_literals(cli, tmp_path: P
     (("plan", "--goal", "liquid_leaves_source", "--given", "light_liquid,pour_steeply_tilted,pour_level",
       "--theory", LEARNED), "unreachable goal"),
     (("plan", "--goal", "no_spil", "--theory", LEARNED), "did you mean no_spill"),
+    (("plan", "--goal", "no_spill", "--min-success", "1.5"), "--min-success"),
     (("conclusions", "/nonexistent/theory.dfl"), "no such theory file"),
 ])
 def test_bad_input_gets_one_line_and_a_non_zero_exit(cli, args, words: str) -> None:
