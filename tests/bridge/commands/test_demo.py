@@ -32,10 +32,11 @@ def test_demo_learns_writes_asks_and_plans(tmp_path):
                       "#   oracle: synthetic", f"#   oracle_version: {theory_version()}"]
     # the paper's three questions, each answered for all nine expectations, then a plan
     assert r.out.count("understood:") == 3
-    assert len(re.findall(r"^  \[(yes|no |\s\?\s)\] ", r.out, re.M)) == 27
-    # asked as given, each question is decided: by the general rules where no explored
-    # antecedent speaks of it
-    assert "[ ? ]" not in r.out and "assumed" not in r.out
+    marks = re.findall(r"^  \[(yes|no|maybe|\?) +(\d+%)?\] ", r.out, re.M)
+    assert len(marks) == 27
+    # asked as given, each question is decided, with its likelihood: by the
+    # general rules where no explored antecedent speaks of it
+    assert all(word != "?" and share for word, share in marks) and "assumed" not in r.out
     assert re.search(r"verified: goals met in \d of 3 simulations", r.out) or "no plan:" in r.out
     # a second run reads every simulation from the store and writes the same theory
     first = out.read_text()
