@@ -49,3 +49,35 @@ def test_tree_learns_a_rule_from_one_feature():
     pred = tree_predictions(train, y, test, seed=1)
     assert list(pred[:, 8]) == [0, 1]
     assert (pred[:, :8] == 1).all()
+
+
+def test_the_defaults_only_theory_and_its_contrast_keys():
+    from pantarhei.bridge.evaluation.measures import contrast_keys, defaults_only
+
+    Y = np.array([[1, 0], [1, 0], [0, 0], [1, 1]], dtype=bool)     # 3/4 hold, 1/4 hold
+    verdict, share = defaults_only(Y, 2)
+    assert verdict.tolist() == [[1, 0], [1, 0]] and share.tolist() == [[0.75, 0.25]] * 2
+    key = np.array([[True, True], [False, False]])
+    clear = np.array([[True, True], [True, False]])
+    # where the defaults answer wrongly, among the clear keys only
+    assert contrast_keys(key, clear, verdict).tolist() == [[False, True], [True, False]]
+
+
+def test_calibration_is_the_mean_gap_over_the_keys_with_a_likelihood():
+    from pantarhei.bridge.evaluation.measures import calibration
+
+    share = np.array([[0.5, 1.0], [0.0, 0.2]])
+    assert calibration(np.array([[0.7, 1.0], [np.nan, 0.0]]), share) == pytest.approx(0.4 / 3)
+    assert calibration(np.full((2, 2), np.nan), share) is None
+
+
+def test_an_answer_is_coherent_when_one_of_its_pours_shows_it():
+    from pantarhei.bridge.evaluation.measures import FAILS, HOLDS, UNKNOWN, coherent
+
+    # question 0's pours: (leaves, enters) = (1, 1) and (1, 0); question 1's: (0, 0)
+    V = np.array([[1, 1], [1, 0], [0, 0]], dtype=bool)
+    of = np.array([0, 0, 1])
+    answers = np.array([[HOLDS, FAILS], [FAILS, HOLDS]])
+    assert coherent(answers, V, of).tolist() == [True, False]
+    # an undecided verdict constrains nothing
+    assert coherent(np.array([[FAILS, UNKNOWN], [FAILS, UNKNOWN]]), V, of).tolist() == [False, True]
