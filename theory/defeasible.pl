@@ -55,6 +55,8 @@ theory/defeasible.lp computes the same conclusions with clingo.
 :- use_module(theory_files).
 :- use_module(library(lists)).
 :- use_module(library(ordsets)).
+:- use_module(library(assoc)).
+:- use_module(library(pairs)).
 :- use_module(library(apply)).
 
 % SWI-Prolog 9.0 can reclaim an atom that a table's trie still holds
@@ -189,23 +191,32 @@ check_superiority(File) :-
     ).
 
 % superiority_cycle(-Cycle): a shortest cycle [R, ..., R] of superior/2
-% through the first rule (in standard order) that lies on one.
+% through the first rule (in standard order) of sup/2 that lies on one.
+% Specificity alone has no cycle (it makes bodies strictly larger), so a
+% cycle goes through sup/2, and only its rules need be started from.
 superiority_cycle(Cycle) :-
-    findall(R, superior(R, _), Rs0), sort(Rs0, Rs),
+    findall(R, sup(R, _), Rs0), sort(Rs0, Rs),
     member(R, Rs),
     findall([S, R], superior(R, S), Queue),
-    cycle_back(Queue, R, [], Cycle), !.
+    empty_assoc(Seen),
+    cycle_back(Queue, [], R, Seen, Cycle), !.
 
-cycle_back([[N|P]|_], R, _, Cycle) :-
+% cycle_back(+Queue, +Next, +R, +Seen, -Cycle): breadth first, a level
+% (Queue) at a time, the paths of the next level gathered in Next.
+cycle_back([], [], _, _, _) :- !, fail.
+cycle_back([], Next, R, Seen, Cycle) :- !,
+    cycle_back(Next, [], R, Seen, Cycle).
+cycle_back([[N|P]|_], _, R, _, Cycle) :-
     N == R, !,
     reverse([N|P], Cycle).
-cycle_back([[N|P]|Queue], R, Seen, Cycle) :-
-    (   memberchk(N, Seen)
-    ->  Next = Queue
-    ;   findall([M, N|P], superior(N, M), More),
-        append(Queue, More, Next)
-    ),
-    cycle_back(Next, R, [N|Seen], Cycle).
+cycle_back([[N|P]|Queue], Next, R, Seen, Cycle) :-
+    (   get_assoc(N, Seen, _)
+    ->  cycle_back(Queue, Next, R, Seen, Cycle)
+    ;   put_assoc(N, Seen, t, Seen1),
+        findall([M, N|P], superior(N, M), More),
+        append(More, Next, Next1),
+        cycle_back(Queue, Next1, R, Seen1, Cycle)
+    ).
 
 prepare :-
     retractall(rule_body(_, _)), retractall(superior(_, _)),
@@ -218,20 +229,53 @@ prepare :-
     forall(rule(R, _, _),
            ( findall(B, body(R, B), Bs0), sort(Bs0, Bs),
              assertz(rule_body(R, Bs)) )),
-    forall(distinct(R-S, derived_superior(R, S)), assertz(superior(R, S))),
+    learned_index(Index),
+    forall(distinct(R-S, derived_superior(Index, R, S)), assertz(superior(R, S))),
     findall(L, mentioned(L), Ls0), sort(Ls0, Ls),
     dependency_order(Ls, Ordered),
     forall(member(L, Ordered), assertz(theory_literal(L))),
     next_generation,
     assertz(loaded).
 
-derived_superior(R, S) :- sup(R, S).
-derived_superior(R, S) :-
+derived_superior(_, R, S) :- sup(R, S).
+derived_superior(Index, R, S) :-
     learned(R), rule(R, _, H), complement(H, NH),
-    rule_for(NH, S, _), learned(S),
-    \+ sup(S, R),
-    rule_body(R, BR), rule_body(S, BS),
-    ord_subset(BS, BR), BS \== BR.
+    rule_body(R, BR),
+    more_general(Index, NH, BR, S),
+    \+ sup(S, R).
+
+% learned_index(-Index): the learned rules by head (Head-Count) and by
+% head and body (Head-Body, a sorted list, to the rules), so that the
+% rules a learned rule is more specific than are looked up, not searched
+% for among all the rules against it (which made loading quadratic).
+learned_index(index(Counts, ByBody)) :-
+    findall((H-Bs)-S, ( learned(S), rule(S, _, H), rule_body(S, Bs) ), Pairs0),
+    msort(Pairs0, Pairs),
+    group_pairs_by_key(Pairs, Groups),
+    list_to_assoc(Groups, ByBody),
+    findall(H-N, ( member((H-_)-Ss, Groups), length(Ss, N) ), HNs),
+    group_pairs_by_key(HNs, ByHead),
+    findall(H-N, ( member(H-Ns, ByHead), sum_list(Ns, N) ), Counts0),
+    list_to_assoc(Counts0, Counts).
+
+% more_general(+Index, +Head, +Body, -S): S is a learned rule for Head
+% whose body is strictly inside Body: through the strict subsets of Body
+% when they are fewer than the learned rules for Head, else through those.
+more_general(index(Counts, ByBody), H, BR, S) :-
+    get_assoc(H, Counts, N),
+    length(BR, K),
+    (   K < 20, 1 << K < N
+    ->  subsequence(BR, BS), BS \== BR,
+        get_assoc(H-BS, ByBody, Ss),
+        member(S, Ss)
+    ;   rule_for(H, S, _), learned(S),
+        rule_body(S, BS),
+        ord_subset(BS, BR), BS \== BR
+    ).
+
+subsequence([], []).
+subsequence([X|Xs], [X|Ys]) :- subsequence(Xs, Ys).
+subsequence([_|Xs], Ys) :- subsequence(Xs, Ys).
 
 % dependency_order(+Literals, -Ordered): the literals with those they
 % depend on (through the rules for them and their complements) first, so
