@@ -19,7 +19,6 @@ import sys
 from typing import Sequence
 
 from pantarhei.bridge.errors import MissingEngine, TheoryFileError, UserError
-from pantarhei.oracle.store import StoreError
 
 #: Modules of pantarhei.bridge.commands, in the order `--help` lists them.
 COMMANDS = ("vocab", "demo", "simulate", "explore", "querying", "evaluate")
@@ -53,6 +52,7 @@ def main(argv: Sequence[str] | None = None, pin_math: bool = False) -> int:
     arguments are checked before, so that a bad one is refused at once)."""
     try:        # the help texts read the theory's defaults: that needs clingo's parser
         args = parser().parse_args(argv)
+        from pantarhei.oracle.store import StoreError   # its default path is one of the defaults
     except (MissingEngine, TheoryFileError) as e:
         print(f"pantarhei: {e}", file=sys.stderr)
         return 2

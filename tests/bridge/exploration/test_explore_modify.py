@@ -92,13 +92,12 @@ def test_modify_steps_a_graded_dimension_once(eng):
 
 
 def test_modify_adds_propositions_for_a_free_parameter(eng):
-    # particle_mass is free (prior mean 5050 mg): up adds heavy_liquid only,
-    # down adds light and medium liquid
+    # particle_mass is free (the ordinary pour's prior: a medium liquid, mean
+    # 2250 mg): up adds heavy_liquid only, down light_liquid only
     up = parse(eng, ["pour_low"], [("particle_mass", 2.0)], 1, [])
     assert [p for p, _, _ in up] == [("heavy_liquid", "pour_low")]
     down = parse(eng, ["pour_low"], [("particle_mass", -2.0)], 1, [])
-    assert sorted(p for p, _, _ in down) == [("light_liquid", "pour_low"),
-                                              ("medium_liquid", "pour_low")]
+    assert sorted(p for p, _, _ in down) == [("light_liquid", "pour_low")]
 
 
 def test_modify_never_returns_an_invalid_antecedent(eng):

@@ -20,25 +20,26 @@ def with_values(**values):
 
 
 def test_weight_by_hand_two_antecedents():
-    # pour_low draws pour_z from [0, 60]; the prior draws it from [-40, 400];
-    # every other parameter has the same density under both.
-    p = with_values(pour_z=30.0)
+    # pour_low draws pour_z from [0, 60]; the prior (the ordinary pour) from
+    # [50, 120]; every other parameter has the same density under both.
+    p = with_values(pour_z=55.0)
     low, free = ["pour_low"], []
-    assert weight(low, p, [low, free]) == pytest.approx((1 / 60) / (1 / 60 + 1 / 440))
-    assert weight(free, p, [low, free]) == pytest.approx((1 / 440) / (1 / 60 + 1 / 440))
+    assert weight(low, p, [low, free]) == pytest.approx((1 / 60) / (1 / 60 + 1 / 70))
+    assert weight(free, p, [low, free]) == pytest.approx((1 / 70) / (1 / 60 + 1 / 70))
     assert weight(low, p, [low]) == pytest.approx(1.0)
 
 
 def test_weight_by_hand_three_antecedents_and_outside_support():
-    a, b, c = ["pour_low"], ["pour_low", "heavy_liquid"], []
-    inside = with_values(pour_z=10.0, particle_mass=6000.0)
-    da = (1 / 60) * (1 / 9900)       # pour_z, particle_mass under a
-    db = (1 / 60) * (1 / 5000)
-    dc = (1 / 440) * (1 / 9900)
+    # pour_near_rim draws pour_x from [40, 95], the prior from [0, 80]
+    a, b, c = ["pour_low"], ["pour_low", "pour_near_rim"], []
+    inside = with_values(pour_z=55.0, pour_x=60.0)
+    da = (1 / 60) * (1 / 80)       # pour_z, pour_x under a
+    db = (1 / 60) * (1 / 55)
+    dc = (1 / 70) * (1 / 80)
     total = da + db + dc
     for ant, d in ((a, da), (b, db), (c, dc)):
         assert weight(ant, inside, [a, b, c]) == pytest.approx(d / total)
-    outside = with_values(pour_z=200.0, particle_mass=6000.0)
+    outside = with_values(pour_z=100.0, pour_x=60.0)
     assert weight(a, outside, [a, b, c]) == 0.0
     assert weight(b, outside, [a, b, c]) == 0.0
     assert weight(c, outside, [a, b, c]) == pytest.approx(1.0)
@@ -58,7 +59,9 @@ def test_weights_columns_sum_to_one_over_real_antecedents():
     w = weights(log_densities(P, ants))
     assert w.shape == (4, 80)
     assert np.allclose(w.sum(axis=0), 1.0)
-    assert np.all(w[2] > 0)               # the empty antecedent's support is everything
+    own = np.repeat(np.arange(4), 20)     # each pour lies in the support it was drawn from
+    assert np.all(w[own, np.arange(80)] > 0)
+    assert np.all(w[2, 60:] == 0)         # the ordinary pour never pours from the side
 
 
 def test_plane_fit_recovers_a_linear_function_and_the_steepest_plane():

@@ -31,8 +31,10 @@ def consequent(props: list[str]) -> tuple[bool, ...]:
 
 
 def knowing_a0():
-    """What an exploration knows after two batches of a_0 and some pours elsewhere."""
-    P = np.vstack([sample(A0, 62, 1), sample([], 300, 2)])
+    """What an exploration knows after two batches of a_0 and some pours
+    elsewhere (a few for every proposition: the ordinary pour alone never
+    pours from the side)."""
+    P = np.vstack([sample(A0, 62, 1)] + [sample([p], 8, 2) for p in V.propositions])
     return known(P, synthetic(P), [consequent(A0)], samples=31, seed=1, forest_seed=2)
 
 
