@@ -44,7 +44,7 @@ test-prolog:
 	swipl --on-error=status -q -g "load_test_files([]), (run_tests -> halt ; halt(1))" theory/pantarhei.pl
 
 bench: setup
-	$(PY) -m benchmarks
+	$(PY) -m benchmarks --out report/bench.txt
 
 clean:
 	rm -rf $(VENV) build *.egg-info
