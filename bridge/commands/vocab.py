@@ -13,7 +13,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("vocab", help="list the parameters, propositions and expectations")
     form = p.add_mutually_exclusive_group()
     form.add_argument("--json", action="store_true", help="print JSON")
-    form.add_argument("--markdown", action="store_true", help="print Markdown tables (as in README)")
+    form.add_argument("--markdown", action="store_true", help="print Markdown tables (as in docs/vocabulary.md)")
     p.set_defaults(run=vocab)
 
     p = sub.add_parser("check", help="is an antecedent (a set of propositions) valid?")
@@ -95,7 +95,7 @@ def count(args: argparse.Namespace) -> int:
 
 
 def markdown_tables() -> str:
-    """The vocabulary as the Markdown tables of README (kept equal by a test)."""
+    """The vocabulary as the Markdown tables of docs/vocabulary.md (kept equal by a test)."""
     v = load_vocabulary()
     out = [f"#### The {len(v.parameters)} scene parameters", "",
            "| # | parameter | unit | bounds | prior | meaning |", "|---|---|---|---|---|---|"]

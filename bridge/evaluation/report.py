@@ -180,7 +180,7 @@ def general_section(ev: Evaluation) -> list[str]:
 
 
 def headline_markdown(ev: Evaluation) -> str:
-    """The headline figures as a Markdown table (the report's, and README's)."""
+    """The headline figures as a Markdown table (report/README.md's)."""
     lines = ["| measure | measured | target | met |", "|---|---|---|---|"]
     for measure, value, target, met in headline(ev):
         lines.append(f"| {measure} | {value} | {target} | {'yes' if met else '**no**'} |")

@@ -7,7 +7,7 @@ defeaters and superiority, in both engines.
 Each expectation is worked out by hand from the definitions; the comments
 give the reasoning where it is not immediate. Literals are those of the
 theory and their complements. Where silkie's code departs from the
-definition (README, "Panta Rhei and silkie"), the expectation follows the
+definition (docs/theory-formats.md, "Panta Rhei and silkie"), the expectation follows the
 definition and says so.
 """
 from __future__ import annotations
