@@ -1,39 +1,46 @@
 """From a question in words to scene propositions.
 
-`understand("pour from the side with a light liquid")` matches the words
-against each proposition's gloss and name: a proposition is a candidate
-when one clause of the question holds most of the weight of its gloss's
-words (rare words weigh more than common ones, such as "pour" or "source"),
-or names it outright (`pour_to_side`), and the stage it speaks of ("start",
-"end", ...) is named.
+`understand("pour a heavy liquid into a light bowl, steeply tilted")` reads
+the question in four steps:
 
-Words are read where they stand. A gloss's value words (those that set it
-apart from the other values of its dimension: "light" in "a light liquid",
-not "liquid") are each read once, as part of the candidate whose words lie
-closest together: in "a heavy source bowl and a light destination bowl",
-"light" is the destination's, not the source's.
-
-Negation ("not", "never", "no", "without", "don't", ...) covers the rest
-of its clause: a proposition whose value words it covers is excluded, and
-its dimension is read as its other value when one is left (or another value
-is said), or the question is refused naming the values left. Two values of
-one dimension ("a light and heavy liquid") are refused as contradictory.
-A refusal is a UserError: one line saying what was not understood.
+1. Everyday phrases become the vocabulary's words (words.py: "a full cup",
+   "move in fast", "right it up", "over the rim").
+2. Each word gets the stage it speaks of: "start", "pour", "end",
+   "approach" (the move into the pouring pose) or "retreat" (the move out
+   of it), said by a stage word ("then", "after pouring", "move away" ...).
+   A stage word speaks for its clause from there on, and for the words of
+   its clause before it; a clause without one goes on in the stage before
+   (pouring, at first). A pose said while moving in is the start pose,
+   while moving away the end pose.
+3. Each proposition is said by its value words: the words of its gloss
+   or of its name, without its stage or body ("far" for `pour_far_away`,
+   "tilted halfway" or "half tilted" for `pour_half_tilted`), found close
+   together in one clause, in the stage of the proposition; the readings
+   with the most words first, each word read once. A word said of the
+   bodies ("light", "slippery") belongs to the noun it qualifies: the one
+   it stands before ("a light, slippery bowl"), or else the one before it
+   ("the liquid is light"). A bowl is the destination unless the source is
+   said ("a source bowl", "pour out of a cup"). A proposition's name said
+   outright (`pour_to_side`) is read as it is.
+4. Negation ("not", "never", "no", "without", "don't", ...) covers the
+   rest of its clause: a proposition said there is excluded, and its
+   dimension is read as its other value when one is left (or another value
+   is said), or the question is refused naming the values left. Two values
+   of one dimension ("a light and heavy liquid") are refused as
+   contradictory, and so is a question with a word that cannot be placed
+   ("pour light": the light what?). A refusal is a UserError: one line.
+   A question with nothing understood in it reads as no propositions.
 """
 from __future__ import annotations
 
-import math
 import re
-from collections import Counter
+from bisect import bisect_left
 from dataclasses import dataclass
+from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.reasoning.words import FILLERS, rewrites
 from pantarhei.theory.lexicon import load_vocabulary
-
-_STOP = {"a", "an", "the", "of", "to", "with", "from", "and", "at", "is", "in", "on", "over",
-         "that", "does", "not", "it", "its", "when", "what", "if", "happens", "i", "we", "then",
-         "be", "by", "for", "while", "very", "bowl", "above", "do", "s"}
-THRESHOLD = 0.8
 
 #: Words that end a clause (besides punctuation): negation stops there.
 _CLAUSE_ENDS = {"but", "then", "while", "whereas", "instead", "rather", "except", "so"}
@@ -42,116 +49,144 @@ _SCOPE_ENDS = _CLAUSE_ENDS | {"and", "or", "yet"}
 #: Words that negate what follows them in their clause.
 _NEGATIONS = {"not", "never", "no", "without", "nor", "neither", "cannot", "none", "nothing"}
 
-# the stage a proposition is about must be named: "end" for end_upright
-_STAGES = {"start": ("start", "begin"), "end": ("end", "finally", "final"),
-           "approach": ("approach", "before"), "retreat": ("retreat", "after")}
+#: Stage words (words.py brings "before pouring", "move in", ... to them), and
+#: where "then" goes on to from each stage.
+_MARKERS = {"start": "start", "pour": "pour", "end": "end", "finally": "end", "final": "end",
+            "approach": "approach", "retreat": "retreat", "then": None}
+_THEN = {"start": "pour", "approach": "pour", "pour": "end", "retreat": "end", "end": "end"}
+#: The pose and the movement a stage speaks of: "move in from low down" is start_low.
+_POSE = {"start": "start", "approach": "start", "pour": "pour", "retreat": "end", "end": "end"}
+_MOVE = {"start": "approach", "approach": "approach", "pour": None, "retreat": "retreat",
+         "end": "retreat"}
+_OBJECTS = ("source", "destination", "liquid")
+#: Words that may stand between a body's value word and its noun: "a light, slippery bowl".
+_BETWEEN = {"a", "an", "the", "and", "or", "very"}
+#: The most other words between the words of one reading.
+_MAX_GAP = 4
 
 
 def _stem(w: str) -> str:
-    for suffix in ("ing", "ly", "ed", "s"):
-        if len(w) > 4 and w.endswith(suffix):
-            return w[: -len(suffix)]
-    return w
+    for suffix in ("ing", "ly", "ed", "es", "s"):
+        if len(w) > len(suffix) + 2 and w.endswith(suffix):
+            w = w[: -len(suffix)]
+            break
+    return w[:-1] if len(w) > 3 and w.endswith("e") else w
 
 
-def _words(text: str) -> list[str]:
-    return [_stem(w) for w in re.findall(r"[a-z]+", text.lower())]
-
-
-def _keep_very(gloss: str) -> list[str]:
-    # "very" separates "very high" from "high": keep it as a word then.
-    return ["very"] if "very" in gloss.lower().split() else []
+_MARKER_STEMS = {_stem(w): s for w, s in _MARKERS.items()}
+_OBJECT_STEMS = {_stem(o): o for o in _OBJECTS}
+_BOWL = _stem("bowl")
+#: (word, next word) before a bowl that the liquid is poured out of: "pour from a cup"
+_POURED_FROM = {(_stem(a), _stem(b))
+                for a, b in (("out", "of"), ("pour", "from"), ("liquid", "from"))}
+_IGNORED = {_stem(w) for w in FILLERS}
+_NEGATION_STEMS = {_stem(w) for w in _NEGATIONS}
 
 
 @dataclass(frozen=True)
 class _Token:
-    word: str        # stemmed, lower case
-    raw: str         # as written (a proposition's name keeps its underscores)
+    word: str        # stemmed, lower case (a proposition's name as written)
+    raw: str         # as written
     clause: int
+
+
+def _tokens(text: str) -> list[_Token]:
+    """The words of `text` in the vocabulary's words, stemmed, each with its clause."""
+    text = text.lower().replace("\u2019", "'")
+    text = re.sub(r"\bcan't\b|\bcannot\b", "can not", text)
+    text = re.sub(r"\bwon't\b", "will not", text)
+    text = re.sub(r"n't\b|\b(do|does|did|is|are|was|were)nt\b", r"\1 not", text)
+    text = re.sub(r"'s?\b", "", text)                 # the destination's rim
+    pairs = [(w, w) for w in re.findall(r"[a-z0-9_]+|[,;.!?:()]", text)]
+    joined = " ".join(w for w, _ in pairs)
+    for pattern, words in rewrites():
+        if pattern.search(joined):
+            pairs = _rewrite(pairs, pattern, words)
+            joined = " ".join(w for w, _ in pairs)
+    out, clause = [], 0
+    for word, raw in pairs:
+        if not re.match(r"[a-z0-9_]", word) or word in _CLAUSE_ENDS:
+            clause += 1
+            if not re.match(r"[a-z0-9_]", word):
+                continue
+        out.append(_Token(word if "_" in word else _stem(word), raw, clause))
+    return out
+
+
+def _rewrite(pairs: list[tuple[str, str]], pattern: re.Pattern, words: tuple[str, ...]):
+    """(word, as written) pairs with each match of `pattern` read as `words`."""
+    starts, at = [], 0
+    for w, _ in pairs:
+        starts.append(at)
+        at += len(w) + 1
+    out, last = [], 0
+    for m in pattern.finditer(" ".join(w for w, _ in pairs)):
+        i, j = bisect_left(starts, m.start()), bisect_left(starts, m.end())
+        if i < last or i == len(starts) or starts[i] != m.start():
+            continue
+        raw = " ".join(r for _, r in pairs[i:j])
+        out += pairs[last:i] + [(w, raw) for w in words]
+        last = j
+    return out + pairs[last:]
 
 
 @dataclass(frozen=True)
-class _Candidate:
-    name: str
-    score: float
-    matched: int                 # gloss words found
-    gap: int                     # other words between the first and the last of them
-    values: frozenset[int]       # positions of its value words
-    clause: int
+class _Lexicon:
+    phrases: dict[tuple[str, ...], frozenset[str]]   # value words -> the propositions they say
+    slots: dict[str, tuple[str, str]]                # proposition -> ("stage"|"object", which)
+    placeable: frozenset[str]                        # words a question must place
+    known: frozenset[str]
 
 
-def _tokens(question: str) -> list[_Token]:
-    out: list[_Token] = []
-    clause = 0
-    for m in re.finditer(r"[a-z_]+(?:'[a-z]+)?|[,;.!?:()]", question.lower()):
-        raw = m.group(0)
-        if not re.match(r"[a-z_]", raw) or raw in _CLAUSE_ENDS:
-            clause += 1
-            if not re.match(r"[a-z_]", raw):
-                continue
-        if raw.endswith("n't") or raw in ("dont", "doesnt", "isnt", "cant", "wont"):
-            raw = "not"                   # don't, isn't, can't, won't: a negation
-        elif "'" in raw:
-            raw = raw.split("'")[0]       # the destination's rim
-        out.append(_Token(_stem(raw) if "_" not in raw else raw, raw, clause))
-    return out
+@lru_cache(maxsize=None)
+def _lexicon() -> _Lexicon:
+    vocab = load_vocabulary()
+    props = vocab.propositions
+    slot_words = set(_MARKER_STEMS) | set(_OBJECT_STEMS) | {_BOWL}
+    phrases: dict[tuple[str, ...], set[str]] = {}
+    slots = {}
+    for n, p in props.items():
+        # said by its gloss, read as a question is, or by its name word by word
+        for words in ({t.word for t in _tokens(p.gloss)}, {_stem(w) for w in n.split("_")}):
+            phrases.setdefault(tuple(sorted(words - _IGNORED - slot_words)), set()).add(n)
+        first, last = n.split("_")[0], n.split("_")[-1]      # pour_low, fast_approach, light_liquid
+        slots[n] = ("stage", first) if first in _POSE else (
+            ("stage", last) if last in _POSE else ("object", last))
+    placeable = set().union(*phrases) - {"very"}
+    texts = [*(p.gloss for p in props.values()), *(d.gloss for d in vocab.dimensions.values()),
+             *(e.gloss for e in vocab.expectations), *(p.gloss for p in vocab.parameters)]
+    known = {_stem(w) for t in texts for w in re.findall(r"[a-z]+", t.lower())}
+    known |= {_stem(w) for _, words in rewrites() for w in words}
+    known |= _IGNORED | slot_words | _NEGATION_STEMS | {"very"}
+    return _Lexicon({k: frozenset(v) for k, v in phrases.items()}, slots,
+                    frozenset(placeable), frozenset(known))
 
 
 def understand(question: str) -> list[str]:
     """The propositions the question names, sorted; UserError for a
-    question that negates or contradicts itself in a way not understood."""
+    question that negates or contradicts itself in a way not understood,
+    or holds a word that cannot be placed."""
     vocab = load_vocabulary()
     props = vocab.propositions
-    glosses = {p.name: [w for w in _words(p.gloss) if w not in _STOP] + _keep_very(p.gloss)
-               for p in props.values()}
-    # a name in words is a second gloss: "fast approach", "heavy destination"
-    named = {p: [w for w in _words(p.replace("_", " ")) if w not in _STOP] + _keep_very(p.replace("_", " "))
-             for p in glosses}
-    df = Counter(w for ws in (*glosses.values(), *named.values()) for w in set(ws))
-    idf = {w: math.log(1 + len(glosses) / c) for w, c in df.items()}
-    frame = {d.name: set.intersection(*(set(glosses[v]) for v in d.values))
-             for d in vocab.dimensions.values()}
+    lex = _lexicon()
     tokens = _tokens(question)
-    lexical = _lexical_negations()
-    cues = [i for i, t in enumerate(tokens)
-            if t.word in _NEGATIONS and not _is_lexical(tokens, i, lexical)]
-
-    # each value word is read once: greedily, by the reading whose words lie closest
-    # together, the others then read again without the words taken
-    claimed: set[int] = set()
-    accepted: list[_Candidate] = []
-    left = set(glosses)
-    while True:
-        candidates = []
-        for name in left:
-            frame_d = frame[props[name].dimension]
-            best = None
-            for ws in (glosses[name], named[name]):
-                c = _match(name, ws, tokens, idf, frame_d, claimed)
-                if c is not None and (best is None or (c.score >= THRESHOLD, _rank(c))
-                                      > (best.score >= THRESHOLD, _rank(best))):
-                    best = c
-            if best is not None and best.score >= THRESHOLD and _stage_named(name, tokens, best.clause):
-                candidates.append(best)
-        if not candidates:
-            break
-        c = max(candidates, key=_rank)
-        accepted.append(c)
-        claimed |= c.values
-        left.discard(c.name)
-
-    covered = _negated_positions(tokens, cues)
+    accepted = _read(tokens, lex)
+    cues = [i for i, t in enumerate(tokens) if t.word in _NEGATION_STEMS]
     for i in cues:
         scope = _scope(tokens, i)
-        if any(tokens[j].word not in _STOP for j in scope) and not any(scope & c.values for c in accepted):
+        if any(tokens[j].word not in _IGNORED for j in scope) and \
+                not any(scope & positions for _, positions in accepted):
             phrase = " ".join(tokens[j].raw for j in (i, *sorted(scope)))
             raise UserError(f"understood nothing that \"{phrase}\" excludes: describe the scene "
                             f"with the words of `pantarhei vocab`, or give --props P1,P2")
+    covered = set().union(*(_scope(tokens, i) for i in cues))
     said: dict[str, list[str]] = {}
     negated: dict[str, list[str]] = {}
-    for c in accepted:
-        target = negated if c.values & covered else said
-        target.setdefault(props[c.name].dimension, []).append(c.name)
+    for name, positions in accepted:
+        target = negated if positions & covered else said
+        names = target.setdefault(props[name].dimension, [])
+        if name not in names:
+            names.append(name)
 
     out = []
     for dim, names in said.items():
@@ -168,90 +203,155 @@ def understand(question: str) -> list[str]:
             out.append(others[0])
             continue
         raise UserError(f"not {', '.join(names)} leaves {_or(others)}: say which one (or give "
-                        f"--props P1,P2)" if others else f"\"{question}\" excludes every value of {dim}")
+                        f"--props P1,P2)" if others
+                        else f"\"{question}\" excludes every value of {dim}")
+    _refuse_unplaced(question, tokens, accepted, lex)
     return sorted(out)
+
+
+def _read(tokens: list[_Token], lex: _Lexicon) -> list[tuple[str, frozenset[int]]]:
+    """Each proposition said, with the positions of the words that say it:
+    names given outright, then the readings with the most words, then the
+    closest together, each word read once."""
+    stages = _stages(tokens)
+    roles = _roles(tokens, lex)
+    found = [(t.word, frozenset({i})) for i, t in enumerate(tokens) if t.word in lex.slots]
+    claimed = set().union(*(p for _, p in found))
+    for words, positions in sorted(_occurrences(tokens, lex), key=_closest):
+        if positions & claimed:
+            continue
+        name = _resolve(lex.phrases[words], positions, stages, roles, tokens, lex)
+        if name is not None:
+            found.append((name, positions))
+            claimed |= positions
+    return found
+
+
+def _occurrences(tokens: list[_Token], lex: _Lexicon):
+    """(value words, their positions) for every reading the question holds:
+    anchored on each of its words, the nearest of each other in its clause."""
+    present = {t.word for t in tokens}
+    for words in lex.phrases:
+        if not present.issuperset(words):
+            continue
+        for a, t in enumerate(tokens):
+            if t.word not in words:
+                continue
+            at = {t.word: a}
+            for w in words:
+                near = [i for i, u in enumerate(tokens) if u.word == w and u.clause == t.clause]
+                if w != t.word and near:
+                    at[w] = min(near, key=lambda i: (abs(i - a), i))
+            span = max(at.values()) - min(at.values()) + 1
+            if len(at) == len(words) and span - len(words) <= _MAX_GAP:
+                yield words, frozenset(at.values())
+
+
+def _closest(reading: tuple[tuple[str, ...], frozenset[int]]) -> tuple:
+    words, positions = reading
+    return (-len(words), max(positions) - min(positions), min(positions))
+
+
+def _resolve(names: frozenset[str], positions: frozenset[int], stages: list[str],
+             roles: dict[int, str], tokens: list[_Token], lex: _Lexicon) -> str | None:
+    """The one proposition of `names` that the words at `positions` say in
+    their stage and of their noun, or None."""
+    stage = stages[min(positions)]
+    fits = [n for n in names if lex.slots[n][0] == "stage" and lex.slots[n][1] in
+            (_POSE[stage], _MOVE[stage])]
+    of_bodies = sorted(n for n in names if lex.slots[n][0] == "object")
+    if len(of_bodies) > 1:
+        noun = _noun(tokens, min(positions), max(positions), roles, lex)
+        of_bodies = [n for n in of_bodies if lex.slots[n][1] == noun]
+    fits += of_bodies
+    return fits[0] if len(fits) == 1 else None
+
+
+def _stages(tokens: list[_Token]) -> list[str]:
+    """The stage each word speaks of (see the module's docstring)."""
+    out: list[str] = []
+    stage = "pour"
+    for clause in sorted({t.clause for t in tokens}):
+        at = [i for i, t in enumerate(tokens) if t.clause == clause]
+        marks = [i for i in at if tokens[i].word in _MARKER_STEMS]
+        current = _next(tokens[marks[0]].word, stage) if marks else stage
+        for i in at:
+            if marks and i != marks[0] and i in marks:
+                current = _next(tokens[i].word, current)
+            out.append(current)
+        stage = current
+    return out
+
+
+def _next(word: str, stage: str) -> str:
+    return _MARKER_STEMS[word] or _THEN[stage]
+
+
+def _roles(tokens: list[_Token], lex: _Lexicon) -> dict[int, str]:
+    """The body each noun names: a bowl is the destination, unless it is a
+    source bowl or what is poured from ("pour from a cup", "out of a cup")."""
+    roles: dict[int, str] = {}
+    for i, t in enumerate(tokens):
+        if t.word in _OBJECT_STEMS:
+            roles[i] = _OBJECT_STEMS[t.word]
+        elif t.word == _BOWL:
+            if roles.get(i - 1) in ("source", "destination"):
+                roles[i] = roles[i - 1]
+                continue
+            j = i - 1
+            while j > 0 and (tokens[j].word in _BETWEEN or tokens[j].word in lex.placeable):
+                j -= 1
+            before = (tokens[j - 1].word, tokens[j].word) if j > 0 else None
+            roles[i] = "source" if before in _POURED_FROM else "destination"
+    return roles
+
+
+def _noun(tokens: list[_Token], first: int, last: int, roles: dict[int, str],
+          lex: _Lexicon) -> str | None:
+    """The body a value word qualifies: the noun it stands before, through
+    other value words ("a light, slippery bowl"), or else the nearest noun
+    before it in its clause ("the liquid is very light")."""
+    for j in range(last + 1, len(tokens)):
+        if j in roles:
+            return roles[j]
+        if tokens[j].word not in _BETWEEN and tokens[j].word not in lex.placeable:
+            break
+    for j in range(first - 1, -1, -1):
+        if tokens[j].clause != tokens[first].clause:
+            break
+        if j in roles:
+            return roles[j]
+    return None
+
+
+def _refuse_unplaced(question: str, tokens: list[_Token], accepted, lex: _Lexicon) -> None:
+    """UserError naming the words of the question that were not read: value
+    words that fit nothing said ("pour light": the light what?) and, when
+    something else was read, words the vocabulary does not know (a question
+    with nothing understood is the caller's to refuse)."""
+    read = set().union(*(p for _, p in accepted))
+    words = []
+    for i, t in enumerate(tokens):
+        if i not in read and (t.word in lex.placeable or (accepted and t.word not in lex.known)) \
+                and t.raw not in words:
+            words.append(t.raw)
+    if words:
+        said = ", ".join(f'"{w}"' for w in words)
+        raise UserError(f"could not place {said} in \"{question}\": describe the scene with "
+                        f"the words of `pantarhei vocab`, or give --props P1,P2")
 
 
 def _or(names: list[str]) -> str:
     return ", ".join(names[:-1]) + " or " + names[-1] if len(names) > 1 else names[0]
 
 
-def _rank(c: _Candidate) -> tuple:
-    # closest together first, then the fuller match, then the surer
-    return (-c.gap, c.matched, c.score, c.name)
-
-
-def _match(name: str, ws: list[str], tokens: list[_Token], idf: dict[str, float],
-           frame: set[str], claimed: set[int]) -> _Candidate | None:
-    """The best reading of one gloss (its words `ws`) in one clause of the
-    question, or None when no clause holds any of its value words; value
-    words at the positions `claimed` are another reading's."""
-    for i, t in enumerate(tokens):
-        if t.raw == name and i not in claimed:      # named outright
-            return _Candidate(name, 2.0, len(ws) or 1, 0, frozenset({i}), t.clause)
-    total = sum(idf[w] for w in ws)
-    if not total:
-        return None
-    best = None
-    for clause in sorted({t.clause for t in tokens}):
-        where: dict[str, list[int]] = {}
-        for i, t in enumerate(tokens):
-            if t.clause == clause and t.word in ws and (t.word in frame or i not in claimed):
-                where.setdefault(t.word, []).append(i)
-        if not any(w not in frame for w in where):
-            continue
-        score = sum(idf[w] for w in where) / total
-        # anchored on each occurrence of its words, the nearest occurrence of each other
-        for a in sorted(p for ps in where.values() for p in ps):
-            chosen = {w: min(ps, key=lambda p: (abs(p - a), p)) for w, ps in where.items()}
-            gap = max(chosen.values()) - min(chosen.values()) + 1 - len(chosen)
-            values = frozenset(p for w, p in chosen.items() if w not in frame)
-            c = _Candidate(name, score, len(where), gap, values, clause)
-            if best is None or (c.score >= THRESHOLD, _rank(c)) > (best.score >= THRESHOLD, _rank(best)):
-                best = c
-    return best
-
-
-def _stage_named(name: str, tokens: list[_Token], clause: int) -> bool:
-    """Is the stage of the proposition named: in the question for the start,
-    the end and the moves between; for the pouring pose, no other stage is
-    named in its clause without "pour" ("end with the source upright")."""
-    stage = name.split("_", 1)[0]
-    if any(t.raw == name for t in tokens):
-        return True
-    if stage == "pour":
-        here = {t.word for t in tokens if t.clause == clause}
-        return "pour" in here or not here & {"start", "begin", "end", "finally", "final"}
-    words = _STAGES.get(stage)
-    return words is None or any(t.word in words for t in tokens)
-
-
-def _lexical_negations() -> set[tuple[str, str]]:
-    """(negation, next word) pairs that glosses use themselves: "does not
-    bounce" is a dull bowl, not a negation."""
-    vocab = load_vocabulary()
-    pairs = set()
-    for p in vocab.propositions.values():
-        ws = [_stem(w) for w in re.findall(r"[a-z]+", p.gloss.lower())]
-        pairs |= {(a, b) for a, b in zip(ws, ws[1:]) if a in _NEGATIONS}
-    return pairs
-
-
-def _is_lexical(tokens: list[_Token], i: int, lexical: set[tuple[str, str]]) -> bool:
-    return i + 1 < len(tokens) and (tokens[i].word, tokens[i + 1].word) in lexical
-
-
 def _scope(tokens: list[_Token], i: int) -> set[int]:
     """The positions a negation at i covers: the rest of its clause, up to
-    the next "and", "with", "or"..."""
+    the next "and", "or", "yet"..."""
     out = set()
     for j in range(i + 1, len(tokens)):
         if tokens[j].clause != tokens[i].clause or tokens[j].word in _SCOPE_ENDS:
             break
-        if tokens[j].word not in _NEGATIONS:
+        if tokens[j].word not in _NEGATION_STEMS:
             out.add(j)
     return out
-
-
-def _negated_positions(tokens: list[_Token], cues: list[int]) -> set[int]:
-    return set().union(*(_scope(tokens, i) for i in cues)) if cues else set()

@@ -1,0 +1,114 @@
+"""Everyday words for the vocabulary's words, read by reading.py.
+
+The vocabulary (theory/vocabulary/propositions.pl) says each proposition
+once, in its own words; people say the same things in others ("a full
+cup", "move in fast", "right it up after pouring"). `PHRASES` rewrites
+such phrases into the vocabulary's words before a question (or a gloss) is
+read: each entry is (the vocabulary's words, the phrases that mean them).
+A phrase is written in plain words and matches their inflections ("move
+in" matches "moving in"); "[the source|it]" is an optional part, and a
+pattern starting with "re:" is a regular expression. Entries apply in
+order, so a longer phrase comes before a word it holds.
+
+The stage words ("start", "pour", "end", "approach", "retreat") are
+read by reading.py: the rewrites here only bring other words to them.
+"""
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+_IT = "[the source|the bowl|it]"
+
+PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
+    ("", ("how much", "how many")),       # asks, does not say: "how much liquid spills"
+    # the stages: the move into the pouring pose, the move out of it, the end pose
+    ("end upright", (f"right {_IT} up", f"set {_IT} upright", f"stand {_IT} up")),
+    ("end", (f"put {_IT} down", f"set {_IT} down", "at the end", "in the end")),
+    ("approach", ("before pour", "move to the pour pose", "move into the pour pose",
+                  "move in", "come in")),
+    ("away from", ("move away from", "pull away from")),    # a direction, not the retreat
+    ("retreat", ("after pour", "afterwards", "move away", "pull away", "pull back",
+                 "back off", "withdraw")),
+    ("start", ("begin", "at first", "at the start", "initially")),
+    # the containers: a bowl is the destination unless the question says otherwise
+    ("bowl", ("cup", "container", "glass", "jug", "mug", "pot", "vessel", "jar", "beaker",
+              "pitcher", "basin")),
+    ("liquid", ("water", "fluid")),
+    ("destination", ("target",)),
+    ("rim", ("edge", "lip", "brim")),
+    # where the source is
+    ("near the rim", ("over the [destination|bowl] rim", "at the [destination|bowl] rim",
+                      "by the [destination|bowl] rim", "close to the [destination|bowl] rim")),
+    ("very high", ("very high up", "way up high", "way up")),
+    ("high", ("high up", "up high")),
+    ("low", ("low down", "down low", "just above", "close above")),
+    ("below", ("beneath", "underneath", "under")),
+    ("centred", ("centered", "center", "central", "in the middle", "middle")),
+    ("far", ("far off", "distant", "a long way")),
+    # how the source is tilted and moved
+    ("upside down", ("inverted", "upturned", "turned over")),
+    ("upright", ("vertical", "straight up")),
+    ("tilted", ("angled", "inclined")),
+    ("steeply", ("sharply",)),
+    ("slightly", ("gently", "barely")),
+    ("halfway", ("half way",)),
+    ("fast", ("quickly", "quick", "rapidly", "swiftly", "briskly")),
+    ("moderate", ("steadily", "medium speed")),
+    # the bodies and the liquid
+    ("dull", ("[does|do|will] not bounce",)),
+    ("full", ("filled", "brimming", "full up")),
+    ("much", ("a lot of", "lots of", "plenty of")),
+    ("little", ("a few drops of", "a drop of")),
+    ("slippery", ("slick", "smooth")),
+    ("grippy", ("rough",)),
+    ("runny", ("thin", "watery")),
+    ("sticky", ("viscous", "thick", "syrupy", "gooey")),
+    ("bouncy", ("springy", "elastic")),
+    # last, a bare "up" or "down" (not "high up", "upside down"): a move up or down
+    ("raise", ("lift", "rise", "up")),
+    ("lower", (r"re:(?<!upside )\bdown\b",)),
+)
+
+#: Words that say nothing about the scene: a question's frame, not its facts
+#: ("very" is not one: it sets "very high" apart from "high").
+FILLERS = frozenset("""
+    what which how why when where whether if happen happens would will could should can may
+    might must do does did is are was were be been being i we you it they me my our your its
+    this that these those there here so as just really quite rather too also still only
+    even keep hold turn make let use try get go put set move while during into onto out up down
+    and or but then with without by for from at on in over above of to a an the please say
+    tell suppose imagine case ever all both each one way thing
+""".split())
+
+_FUNCTION_WORDS = {"a", "an", "the", "it", "of", "to", "in", "at", "on", "by", "from", "into",
+                   "over", "with", "and", "up", "down", "way"}
+
+
+def _word(w: str) -> str:
+    """A word and its inflections: move, moves, moved, moving; put, putting."""
+    if w in _FUNCTION_WORDS:
+        return re.escape(w)
+    base = w[:-1] if w.endswith("e") else w
+    return rf"{re.escape(base)}(?:{re.escape(w[-1])}?(?:e|es|ed|ing|s|d)?)?"
+
+
+def _pattern(phrase: str) -> str:
+    if phrase.startswith("re:"):
+        return phrase[3:]
+    parts = []
+    for element in re.findall(r"\[[^\]]*\]|\S+", phrase):
+        if element.startswith("["):
+            alternatives = "|".join(" ".join(_word(w) for w in alt.split())
+                                    for alt in element[1:-1].split("|"))
+            parts.append(rf"(?:(?:{alternatives}) )?")
+        else:
+            parts.append(_word(element) + " ")
+    return r"\b" + "".join(parts)[:-1] + r"\b"
+
+
+@lru_cache(maxsize=None)
+def rewrites() -> tuple[tuple[re.Pattern, tuple[str, ...]], ...]:
+    """Each entry's phrases as one compiled pattern, with the words they are read as."""
+    return tuple((re.compile("|".join(f"(?:{_pattern(p)})" for p in ps)), tuple(words.split()))
+                 for words, ps in PHRASES)
