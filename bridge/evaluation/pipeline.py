@@ -558,6 +558,9 @@ GOAL_SETS = (
     ("a clean pour: no bump, no spill, the liquid stays in",
      ["source_clear", "no_spill", "liquid_remains_in_destination"]),
     ("everything goes well", None),
+    ("carry the liquid without pouring any", ["neg(liquid_leaves_source)", "no_spill"]),
+    ("empty the source, but not into the destination",
+     ["liquid_leaves_source", "neg(liquid_enters_destination)"]),
 )
 
 
