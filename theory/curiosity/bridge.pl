@@ -1,0 +1,66 @@
+:- module(curiosity_bridge,
+          [ call_bridge/3,            % +Name, +Request, -Reply
+            string_value/2            % +Value, -String
+          ]).
+/** <module> Calling the oracle: the foreign predicates of Algorithm 1
+
+The numeric work of the exploration (sampling and simulating, the weights
+of equation (1), the weighted plane fits, the novelty of candidates, the
+outcome of an antecedent's simulations) is done in Python behind foreign
+predicates of the module =bridge=, which `pantarhei explore` and
+`pantarhei prolog` register:
+
+  - bridge:exploration_begin(+Settings, -Begun)
+  - bridge:exploration_simulate(+Request, -Reply)
+  - bridge:exploration_best_plane(+Request, -Reply)
+  - bridge:exploration_probe(+Request, -Reply)
+  - bridge:exploration_fewest(+Request, -Reply)
+  - bridge:exploration_predict(+Request, -Reply)
+  - bridge:exploration_qualify(+Request, -Reply)
+  - bridge:exploration_checkpoint(+Request, -Reply)
+  - bridge:exploration_end(+Request, -Reply)
+  - bridge:oracle_sample(+Request, -Reply), bridge:oracle_simulate(+Request, -Reply),
+    bridge:oracle_describe(+Request, -Reply): sample/4, simulate/3 and
+    describe/2 of oracle.pl, the oracle at the Prolog prompt
+
+Requests and replies are JSON text; a reply =|{"error": Text}|= raises
+=|exploration_error(Text)|=, which prints as its Text.
+*/
+
+:- use_module(library(http/json)).
+
+:- multifile prolog:message//1.
+
+prolog:message(exploration_error(Text)) -->
+    [ '~w'-[Text] ].
+
+%!  call_bridge(+Name:atom, +Request:dict, -Reply:dict) is det.
+%
+%   Call the foreign predicate bridge:Name/2 with Request as JSON text, and
+%   read its reply (strings as atoms).
+%
+%   @error exploration_error(Text) when the foreign predicate is not
+%   registered, fails, or replies with an error.
+call_bridge(Name, Request, Reply) :-
+    (   current_predicate(bridge:Name/2)
+    ->  true
+    ;   throw(exploration_error("the oracle is not loaded: start Prolog with `pantarhei prolog`"))
+    ),
+    atom_json_dict(Text, Request, [width(0)]),
+    Goal =.. [Name, Text, ReplyText],
+    (   call(bridge:Goal)
+    ->  true
+    ;   format(string(M), "~w failed", [Name]),
+        throw(exploration_error(M))
+    ),
+    atom_json_dict(ReplyText, Reply0, [value_string_as(atom)]),
+    (   get_dict(error, Reply0, Message)
+    ->  string_value(Message, M),
+        throw(exploration_error(M))
+    ;   Reply = Reply0
+    ).
+
+%!  string_value(+Value, -String:string) is det.
+%
+%   String is Value (a string, or an atom as replies hold them) as a string.
+string_value(V, S) :- ( string(V) -> S = V ; atom_string(V, S) ).

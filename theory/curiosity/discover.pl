@@ -1,0 +1,134 @@
+:- module(curiosity_discover,
+          [ discover_queue/10,        % +Best, +Explored, +Id, +Props, +Away, +Rest, +Settings, +I, -Added, -Queue
+            more/7,                   % +Added, +Settings, +Id, +Props, +Parent, +Via, -More
+            jumps/4,                  % +Settings, +Iteration, +Exclude, -New
+            neighbours/3              % +Props, +Exclude, -New
+          ]).
+/** <module> The discovering curiosity's queue A_new
+
+After each explored antecedent, the discovering curiosity (option
+curiosity(discover)) makes A_new anew. A plane's slopes count only where
+they beat shuffles of the same weighted pours (a permutation test at the
+significance level given as threshold). The candidates of a step are the
+antecedents that move the pours past the point where a significant plane's
+verdict flips (modify_past/4, every significant plane and parameter), the
+neighbours of the antecedent just explored (neighbours/3), and `jumps`
+uniformly random valid antecedents (far from anything explored; as many as
+a batch has pours by default).
+
+Each candidate and each of A_new gets its novelty, the chance that it
+shows a behaviour not yet got as a forest of every pour so far predicts it
+(bridge/exploration/novelty.py); A_new keeps the most novel of those that
+reach the novelty level once scaled by the probes' mean score so far
+(probe.pl), so it dries up as the probes stop finding anything new. When
+nothing reaches it, the antecedent just explored gets more pours
+(resample/1, more/7), which may change the forest's mind; when that is
+spent too and A_new is empty, the exploration stops.
+*/
+
+:- use_module(library(apply)).
+:- use_module(library(lists)).
+:- use_module(library(pairs)).
+:- use_module('../vocabulary').
+:- use_module('../validity').
+:- use_module(bridge).
+:- use_module(state).
+:- use_module(modify).
+
+%!  more(+Added:list, +Settings:dict, +Id, +Props:list, +Parent, +Via, -More:list) is det.
+%
+%   When no plane led to a new antecedent (Added is empty: none is
+%   significant, or its moves are all explored), More holds the antecedent
+%   just explored (Id, Props), to be sampled again next (at most
+%   `resample` more batches of it): planes that are undecided get more
+%   pours before the exploration moves on or stops. Else More is empty.
+more(Added, Settings, Id, Props, Parent, Via, More) :-
+    (   Via = more(_, K) -> true ; K = 0 ),
+    (   Added == [], K < Settings.resample
+    ->  K1 is K + 1,
+        More = [cand(Props, Parent, more(Id, K1))]
+    ;   More = []
+    ).
+
+%!  discover_queue(+Best, +Explored, +Id, +Props, +Away, +Rest, +Settings, +I, -Added, -Queue) is det.
+%
+%   The discovering step of iteration I, after the antecedent Id (Props).
+%   Away are antecedents that are no candidates: A_new and those set aside
+%   after their probe.
+%   The candidates are those of modify_past/4 for every significant plane
+%   and parameter of every antecedent with a significant plane (steepest
+%   first), every valid antecedent one proposition away from Props
+%   (neighbours/3), random valid antecedents (jumps/4), then A_new as it was
+%   (Rest). Each gets its novelty (exploration_predict); Queue, the new
+%   A_new, holds the most novel of those that reach the novelty level, at
+%   most `queue` of them (ties in the order above). Added are the new ones
+%   of Queue, in its order.
+discover_queue(Best, Explored, Id, Props, Away, Rest, Settings, I, Added, Queue) :-
+    exclusions(Explored, Away, Exclude0),
+    foldl(follow(Explored), Best.followed, Exclude0-[], Exclude1-RevFollowed),
+    append(RevFollowed, Followed),
+    neighbours(Props, Exclude1, Near),
+    findall(cand(P, Id, near), member(P, Near), Neighbours),
+    append(Exclude1, Near, Exclude2),
+    jumps(Settings, I, Exclude2, Far),
+    findall(cand(P, none, jump), member(P, Far), Jumps),
+    append([Followed, Neighbours, Jumps, Rest], Pool),
+    (   Pool == []
+    ->  Added = [], Queue = []
+    ;   maplist(entry, Explored, Entries),
+        findall(P, member(cand(P, _, _), Pool), Cands),
+        call_bridge(exploration_predict, _{antecedents:Entries, candidates:Cands}, Reply),
+        findall(Key-C, ( nth1(K, Pool, C), nth1(K, Reply.queued, true),
+                         nth1(K, Reply.novelty, N), Key is -N ),
+                Keyed),
+        keysort(Keyed, Sorted),
+        pairs_values(Sorted, Queue0),
+        length(Queue0, Len),
+        Keep is min(Len, Settings.queue),
+        length(Queue, Keep),
+        append(Queue, _, Queue0),
+        append([Followed, Neighbours, Jumps], New),
+        include([C]>>memberchk(C, New), Queue, Added)
+    ).
+
+%!  jumps(+Settings:dict, +Iteration:integer, +Exclude:list, -New:list) is det.
+%
+%   New are Settings.jumps valid antecedents drawn uniformly
+%   (validity:random_antecedents/3, seeded by the run's seed and the
+%   iteration), none in Exclude, each once.
+jumps(Settings, I, Exclude, New) :-
+    Seed is Settings.seed * 1000003 + I,
+    random_antecedents(Seed, Settings.jumps, All),
+    exclude([P]>>memberchk(P, Exclude), All, New0),
+    list_to_set(New0, New).
+
+%   follow(+Explored, +F, +Exclude0-Acc0, -Exclude-Acc): the candidates
+%   of modify_past/4 for every move of the significant planes of one
+%   antecedent (F, from the reply of exploration_best_plane) added, the
+%   new ones also to the exclusions.
+follow(Explored, F, Exclude0-Acc0, Exclude-[Added|Acc0]) :-
+    get_dict(antecedent, F, AId),
+    get_dict(directions, F, Directions),
+    memberchk(ant(AId, MProps, _, _), Explored),
+    findall(move(E, X, Sign, Flip),
+            ( member(Dn, Directions), get_dict(expectation, Dn, E),
+              get_dict(moves, Dn, Ms), member(M, Ms),
+              get_dict(parameter, M, X), get_dict(sign, M, Sign), get_dict(flip, M, Flip) ),
+            Moves),
+    modify_past(MProps, Moves, Exclude0, Mods),
+    findall(cand(P, AId, via(E, X, Sign)), member(mod(P, E, X, Sign), Mods), Added),
+    findall(P, member(mod(P, _, _, _), Mods), Cands),
+    append(Exclude0, Cands, Exclude).
+
+%!  neighbours(+Props:list, +Exclude:list, -New:list) is det.
+%
+%   The valid antecedents not in Exclude that differ from Props by one
+%   proposition: one replaced by another value of its dimension, or one of
+%   a dimension Props does not use added. Sorted, each once, in the order
+%   of the vocabulary's parameters.
+neighbours(Props0, Exclude, New) :-
+    sort(Props0, Props),
+    findall(P1, ( parameter(X, _, _, _, _), candidate_any(Props, X, P1),
+                  \+ memberchk(P1, Exclude), valid_antecedent(P1) ),
+            All),
+    list_to_set(All, New).

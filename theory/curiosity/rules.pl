@@ -1,0 +1,167 @@
+:- module(curiosity_rules,
+          [ learned/6,                % +Explored, +SetAside, +Settings, +Stop, +Left, -Facts
+            rule_facts/3,             % +Explored, +Qualified, -Facts
+            write_theory/3            % +File, +Settings, +Facts
+          ]).
+/** <module> Qualify and the learned theory
+
+At the end of the loop each explored antecedent is qualified (the outcome
+of its simulations, exploration_qualify) and becomes defeasible rules, one
+per expectation, with their provenance; the settings of the run and the
+candidates set aside are facts beside them. write_theory/3 writes them in
+the common subset of Prolog and ASP.
+*/
+
+:- use_module(library(apply)).
+:- use_module(library(lists)).
+:- use_module(bridge).
+:- use_module(state).
+
+%!  learned(+Explored:list, +SetAside:list, +Settings:dict, +Stop, +Left:integer, -Facts:list) is det.
+%
+%   Facts are those of the learned theory: the settings of the run (with
+%   why it stopped, Stop, and how many candidates were left in A_new,
+%   Left), set_aside/3 for each proposition of a candidate set aside after
+%   its probe, and the rules of the explored antecedents, qualified by
+%   exploration_qualify (rule_facts/3).
+learned(Explored, SetAside, Settings, Stop, Left, Facts) :-
+    maplist(entry, Explored, Entries),
+    call_bridge(exploration_qualify, _{antecedents:Entries, mode:Settings.qualify}, Reply),
+    setting_facts(Settings, Reply, Stop, Explored, Left, SettingFacts),
+    findall(set_aside(I, K, P), ( member(aside(I, K, Ps), SetAside), member(P, Ps) ), AsideFacts),
+    rule_facts(Explored, Reply.antecedents, RuleFacts),
+    append([SettingFacts, AsideFacts, RuleFacts], Facts).
+
+%   setting_facts(+Settings, +Reply, +Stop, +Explored, +Left, -Facts):
+%   setting/2 facts saying how the exploration ran (Reply: that of
+%   exploration_qualify, with the oracle's version and the simulations).
+setting_facts(Settings, Reply, Stop, Explored, Left, Facts) :-
+    length(Explored, N),
+    Permille is round(Settings.threshold * 1000),
+    RidgePermille is round(Settings.ridge * 1000),
+    NoveltyPermille is round(Settings.novelty * 1000),
+    string_value(Reply.oracle_version, Version),
+    (   Settings.curiosity == discover
+    ->  Threshold = [ setting(curiosity, discover),
+                      setting(significance_permille, Permille),
+                      setting(permutations, Settings.permutations),
+                      setting(resample, Settings.resample),
+                      setting(novelty_permille, NoveltyPermille),
+                      setting(queue, Settings.queue),
+                      setting(jumps, Settings.jumps),
+                      setting(probe, Settings.probe),
+                      setting(probe_attempts, Settings.probe_attempts),
+                      setting(cover, Settings.cover),
+                      setting(prior, Settings.prior) ]
+    ;   Threshold = [ setting(threshold_permille, Permille) ]
+    ),
+    append([ [ setting(oracle, Settings.oracle),
+               setting(oracle_version, Version),
+               setting(seed, Settings.seed),
+               setting(samples, Settings.samples),
+               setting(max_rules, Settings.max_rules) ],
+             Threshold,
+             [ setting(breadth, Settings.breadth),
+               setting(ridge_permille, RidgePermille),
+               setting(qualify, Settings.qualify),
+               setting(explored, N),
+               setting(simulations, Reply.simulations),
+               setting(failed_simulations, Reply.failed),
+               setting(stopped, Stop),
+               setting(a_new_left, Left) ] ], Facts1),
+    findall(setting(initial, P), member(P, Settings.initial), Initial),
+    append(Facts1, Initial, Facts).
+
+
+%!  rule_facts(+Explored:list, +Qualified:list, -Facts:list) is det.
+%
+%   The facts of the learned rules: for each explored antecedent
+%   ant(Id, Props, Parent, Via) and its qualified outcome (a dict with
+%   `outcomes`, a list of dicts with expectation, holds, confidence_permille
+%   and score_permille, and the antecedent's `simulations` and
+%   `weight_mass_permille`, and for the discovering curiosity `batches`,
+%   its batches of pours), one defeasible rule per outcome literal, its
+%   body facts, learned/1 and its provenance.
+rule_facts(Explored, Qualified, Facts) :-
+    foldl(antecedent_facts(Qualified), Explored, Fs, []),
+    Facts = Fs.
+
+%   antecedent_facts(+Qualified, +Ant, -Facts, ?Tail): the facts of the
+%   rules of one explored antecedent, a difference list.
+antecedent_facts(Qualified, ant(Id, Props, Parent, Via), Facts, Tail) :-
+    member(Q, Qualified), Q.id == Id, !,
+    foldl(outcome_facts(Id, Props, Parent, Via, Q), Q.outcomes, Facts, Tail).
+
+%   outcome_facts(+AId, +Props, +Parent, +Via, +Q, +O, -Facts, ?Tail): the
+%   rule of one outcome O of the antecedent AId, its body and provenance.
+outcome_facts(AId, Props, Parent, Via, Q, O, Facts, Tail) :-
+    sub_atom(AId, 1, _, 0, Num),
+    atomic_list_concat([r, Num, '_', O.expectation], Id),
+    (   O.holds == true -> Head = O.expectation ; Head = neg(O.expectation) ),
+    findall(body(Id, P), member(P, Props), Bodies),
+    via_facts(Id, Via, ViaFacts0),
+    (   get_dict(batches, Q, B)
+    ->  ViaFacts = [provenance(Id, batches, B)|ViaFacts0]
+    ;   ViaFacts = ViaFacts0
+    ),
+    Prov = [ provenance(Id, antecedent, AId),
+             provenance(Id, parent, Parent),
+             provenance(Id, simulations, Q.simulations),
+             provenance(Id, weight_mass_permille, Q.weight_mass_permille),
+             provenance(Id, confidence_permille, O.confidence_permille),
+             provenance(Id, score_permille, O.score_permille)
+           | ViaFacts ],
+    append([[rule(Id, defeasible, Head)], Bodies, [learned(Id)], Prov], Fs),
+    append(Fs, Tail, Facts).
+
+%   via_facts(+Id, +Via, -Facts): the provenance of how the antecedent was
+%   found (the plane, parameter and sign that produced it).
+via_facts(_, initial, []).
+via_facts(_, prior, []).
+via_facts(_, near, []).
+via_facts(_, jump, []).
+via_facts(Id, via(E, X, Sign), [ provenance(Id, followed, E),
+                                 provenance(Id, direction, X),
+                                 provenance(Id, sign, Sign) ]).
+
+%!  write_theory(+File, +Settings:dict, +Facts:list) is det.
+%
+%   Write Facts to File, in the common subset of Prolog and ASP, with a
+%   header saying what the file is. The file is written beside under a
+%   temporary name and renamed, so File is never half-written.
+write_theory(File, Settings, Facts) :-
+    file_directory_name(File, Dir),
+    make_directory_path(Dir),
+    current_prolog_flag(pid, Pid),
+    format(atom(Tmp), "~w.~w.tmp", [File, Pid]),
+    setup_call_cleanup(
+        open(Tmp, write, Out, [encoding(utf8)]),
+        write_facts(Out, Settings, Facts),
+        close(Out)),
+    rename_file(Tmp, File).
+
+%   write_facts(+Out, +Settings, +Facts): the header, then each fact, a
+%   blank line before each rule.
+write_facts(Out, Settings, Facts) :-
+    format(Out, "% A theory of pouring learned by curiosity-driven exploration~n", []),
+    format(Out, "% (pantarhei explore, oracle ~w, seed ~w).~n", [Settings.oracle, Settings.seed]),
+    format(Out, "%~n", []),
+    format(Out, "% Ground facts, read by SWI-Prolog and clingo alike:~n", []),
+    format(Out, "%   rule(Id, defeasible, Head): Head is an expectation, or neg(E) when it fails;~n", []),
+    format(Out, "%   body(Id, Prop): a scene proposition of the rule's antecedent;~n", []),
+    format(Out, "%   learned(Id): a learned rule (superiority from specificity);~n", []),
+    format(Out, "%   provenance(Id, Key, Value): where the rule comes from (antecedent,~n", []),
+    format(Out, "%   parent antecedent, simulations with a weight, their weight mass and the~n", []),
+    format(Out, "%   verdict's confidence in permille, and the plane, parameter and sign~n", []),
+    format(Out, "%   that produced the antecedent);~n", []),
+    (   get_dict(curiosity, Settings, discover)
+    ->  format(Out, "%   setting(Key, Value): how the exploration ran;~n", []),
+        format(Out, "%   set_aside(Iteration, Attempt, Prop): a proposition of a candidate whose~n", []),
+        format(Out, "%   probe (the Attempt-th of the Iteration, from 0) set it aside.~n~n", [])
+    ;   format(Out, "%   setting(Key, Value): how the exploration ran.~n~n", [])
+    ),
+    forall(member(F, Facts),
+           (   ( F = rule(_, _, _) -> nl(Out) ; true ),
+               write_term(Out, F, [quoted(true), spacing(next_argument)]),
+               write(Out, '.\n')
+           )).
