@@ -12,11 +12,16 @@ second run simulates nothing:
   and `near_random` (the same around the random exploration's antecedents);
 * random exploration: the same budget spent on uniformly random valid
   antecedents, and the same rule building (equation (1) and qualify);
-* the paper's three example rules, asked of the theory and simulated;
-* plans for the goals the theory can reach, sampled and simulated.
+* the general theory asked the questions a person would type
+  (general_answers.py);
+* the paper's three example rules, asked of the theory and simulated
+  (paper_rules.py);
+* plans for goal sets a user would ask, verified and measured on fresh
+  pours (plan_checks.py).
 
-The numbers go into an `Evaluation` (and JSON); `bridge/evaluation/report.py` writes
-them up.
+This module runs the stages in order through one simulator; held-out
+prediction is in heldout.py. The numbers go into an `Evaluation` (and
+JSON); `bridge/evaluation/report.py` writes them up.
 """
 from __future__ import annotations
 
@@ -32,29 +37,17 @@ from pantarhei.oracle.generative import sample
 from pantarhei.theory.lexicon import load_vocabulary
 
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.evaluation.heldout import (near_antecedents, random_exploration, scene_pours,
+from pantarhei.bridge.evaluation.general_answers import general_theories
+from pantarhei.bridge.evaluation.heldout import (heldout_curves, heldout_theories, near_antecedents, random_exploration, scene_pours,
                                                  simulated, uniform_scenes)
 from pantarhei.bridge.evaluation.map_elites import behaviours_seen
-from pantarhei.bridge.evaluation.measures import (accuracy, distinct_behaviours, tree_predictions,
-                                                  verdicts)
-from pantarhei.bridge.evaluation.rule_building import consequents, predict, theory_of
+from pantarhei.bridge.evaluation.paper_rules import paper_rules
+from pantarhei.bridge.evaluation.plan_checks import plan_checks
+from pantarhei.bridge.evaluation.rule_building import consequents
 from pantarhei.bridge.exploration.simulation import batch_seed, iteration_seed
 from pantarhei.bridge.exploration.weights import log_densities, weights
-from pantarhei.bridge.reasoning import answers
 from pantarhei.bridge.theories import loading
-from pantarhei.bridge.theories.model import Theory, antecedent_index, complement, literal_text, rule_id
-
-#: The paper's three example rules (section 3.2): the scene, the literal it
-#: concludes, and the paper's words.
-PAPER_RULES = (
-    (("pour_to_side",), "neg(no_spill)", "pouring from the side will result in spillage"),
-    (("light_liquid",), "neg(liquid_leaves_source)",
-     "too light a liquid will not entirely leave the source"),
-    (("light_liquid", "end_upright", "end_low"), "neg(liquid_remains_in_destination)",
-     "when pouring a lightweight liquid and then righting up the source while low above the "
-     "destination, the liquid does not remain in the destination"),
-)
-
+from pantarhei.bridge.theories.model import Theory, antecedent_index, literal_text, rule_id
 
 @dataclass
 class Learned:
@@ -265,14 +258,16 @@ def evaluate(opts: Options) -> Evaluation:
         t = time.monotonic()
         _say("predicting the held-out scenes with every theory along the budget")
         mode = str(learned.setting("qualify", "weighted"))
-        curves(ev, {"curiosity": curiosity, "random": rnd}, held, samples, mode)
-        final_theories(ev, learned.theory, {"curiosity": curiosity, "random": rnd}, held,
+        heldout_curves(ev, {"curiosity": curiosity, "random": rnd}, held, samples, mode)
+        heldout_theories(ev, learned.theory, {"curiosity": curiosity, "random": rnd}, held,
                        samples, mode, opts.seed)
         ev.seconds["predicting"] = round(time.monotonic() - t, 1)
         general_theories(ev, learned.theory, {"curiosity": curiosity, "random": rnd}, held,
                          run, opts.seed, int(learned.setting("seed", opts.seed)))
-        ev.paper_rules = _paper_rules(learned.theory, run, opts)
-        ev.plans = _plans(learned.theory, run, opts)
+        ev.paper_rules = paper_rules(learned.theory, lambda X: run("the paper's rules", X),
+                                     opts.paper_samples, opts.seed)
+        ev.plans = plan_checks(learned.theory, lambda X: run("plans", X, say=False),
+                               opts.verify, opts.seed)
     finally:
         sim.close()
     return ev
@@ -282,7 +277,6 @@ def exploration_pours(learned: Learned, run: Simulations, ev: Evaluation) -> Pou
     """The exploration's simulations, drawn again with its seeds; whether
     they give the theory's rules, and per explored antecedent the share of
     its own pours that kept every expectation."""
-    samples, seed = int(learned.setting("samples")), int(learned.setting("seed"))
     mode = str(learned.setting("qualify", "weighted"))
     explored = learned.antecedents
     P, drawn, of, ends = exploration_draws(learned)
@@ -372,133 +366,6 @@ def heldout_scenes(opts: Options, explored: Sequence[tuple[str, ...]],
     return held
 
 
-def curves(ev: Evaluation, methods: dict[str, Pours], held: dict, samples: int, mode: str) -> None:
-    """Behaviours, coverage and accuracy of each method's theory after each
-    explored antecedent (the curves over the budget)."""
-    R = min(len(m.P) for m in methods.values()) // samples
-    out: dict[str, Any] = {"budget": [k * samples for k in range(1, R + 1)]}
-    for method, m in methods.items():
-        beh, cov, acc = [], {k: [] for k in held}, {k: [] for k in held}
-        for r in range(1, R + 1):
-            # the antecedents whose pours are all within the budget so far
-            k = max(1, m.upto(r * samples))
-            end = m.ends[k - 1]
-            heads = consequents(m.antecedents[:k], m.P[:end], m.S[:end], mode)
-            beh.append(distinct_behaviours(heads))
-            th = theory_of(m.antecedents[:k], heads, f"{method}@{k}")
-            for name, (sel, y) in held.items():
-                a = accuracy(predict(th, sel), y)
-                cov[name].append(a.overall_coverage)
-                acc[name].append(None if np.isnan(a.overall_accuracy) else a.overall_accuracy)
-        out[method] = {"behaviours": beh, "coverage": cov, "accuracy": acc}
-        ev.behaviours[method] = beh[-1]
-    ev.curves = out
-
-
-def final_theories(ev: Evaluation, theory: Theory, methods: dict[str, Pours], held: dict,
-                   samples: int, mode: str, seed: int) -> None:
-    """Per held-out set: the accuracy of the learned theory, of the random
-    exploration's theory, and of a decision tree trained on each method's
-    pours."""
-    rnd = methods["random"]
-    final = {"curiosity": theory,
-             "random": theory_of(rnd.antecedents, consequents(rnd.antecedents, rnd.P, rnd.S, mode),
-                                 "random")}
-    for name, (sel, y) in held.items():
-        out: dict[str, Any] = {"scenes": len(sel),
-                               "mean_propositions": float(np.mean([len(s) for s in sel]))
-                               if sel else 0.0}
-        for label, th in final.items():
-            out[f"{label}_theory"] = accuracy(predict(th, sel), y).as_dict()
-        for label, m in methods.items():
-            X = m.drawn
-            okr = np.all(np.isfinite(m.S), axis=1)
-            Xk = [x for x, o in zip(X, okr) if o]
-            out[f"{label}_tree"] = accuracy(
-                tree_predictions(Xk, verdicts(m.S[okr]), sel, seed), y).as_dict()
-        ev.heldout[name] = out
-
-
-def general_theories(ev: Evaluation, theory: Theory, methods: dict[str, Pours], held: dict,
-                     run: Simulations, seed: int, explored_seed: int) -> None:
-    """The general theory against the oracle on questions a person would
-    type (bridge/evaluation/questions.json, 20 pours each) and on the
-    uniform held-out scenes, side by side with the baselines: for each
-    method's pours, the general rules learned from them (and from the
-    learner's own pours, as `explore` learns them), gradient boosting on
-    the same pours (the ceiling of what they support: `Meaning`, averaged
-    over each question's meaning) and the defaults-only theory (the
-    majority of those pours, whatever is asked); and the shipped theory
-    (both layers, by SWI-Prolog). Curiosity's pours are generalized with
-    the exploration's seed (`explored_seed`), as `explore` did, so they
-    give the very rules the theory holds; the random pours with the
-    evaluation's. The contrast keys are the clear keys where the
-    defaults-only theory of curiosity's pours is wrong."""
-    from pantarhei.bridge.evaluation.measures import (contrast_keys, defaults_only,
-                                                      question_key, question_measures,
-                                                      question_shares)
-    from pantarhei.bridge.evaluation.questions import question_pours, questions
-    from pantarhei.bridge.evaluation.rule_building import answer_matrix
-    from pantarhei.bridge.learning.generalize import Meaning, Settings
-    from pantarhei.bridge.learning.layers import learn_general
-
-    t = time.monotonic()
-    asked = questions()
-    P_q, of = question_pours(asked, seed)
-    S_q = run("questions", P_q)
-    ok = np.all(np.isfinite(S_q), axis=1)
-    key, clear = question_key(S_q[ok], of[ok], len(asked))
-    share = question_shares(S_q[ok], of[ok], len(asked))
-    V, of_ok = verdicts(S_q[ok]), of[ok]
-    scenes = [q.antecedent for q in asked]
-    sel, y = held["uniform"]
-    names = load_vocabulary().expectation_names
-    band = Settings()
-    out: dict[str, Any] = {"questions": [{"text": q.text, "antecedent": list(q.antecedent)}
-                                         for q in asked],
-                           "key": key.astype(int).tolist(), "clear": clear.astype(int).tolist(),
-                           "share": np.round(share, 3).tolist()}
-    contrast = np.zeros_like(clear)
-
-    def scored(pred_held: np.ndarray | None, pred_q: np.ndarray, lik_q: np.ndarray) -> dict[str, Any]:
-        entry = {"questions": question_measures(pred_q, lik_q, share, key, clear, contrast, V, of_ok),
-                 "answers": pred_q.astype(int).tolist(),
-                 "likelihood": np.round(lik_q, 3).tolist()}
-        if pred_held is not None:
-            entry["uniform"] = accuracy(pred_held, y).as_dict()
-        return entry
-
-    for method, m in methods.items():
-        okm = np.all(np.isfinite(m.S), axis=1)
-        s_m = explored_seed if method == "curiosity" else seed
-        g, P, S = learn_general(m.P[okm], m.S[okm], s_m,
-                                lambda X: run("the learner's own pours", X))
-        Y = verdicts(S)
-        base, base_p = defaults_only(Y, len(scenes))
-        if method == "curiosity":
-            contrast = contrast_keys(key, clear, base)
-            out["contrast"] = contrast.astype(int).tolist()
-        lik = np.array([[g.answer(q)[e][1] for e in names] for q in scenes])
-        entry = scored(g.predict(sel), g.predict(scenes), lik)
-        entry["pours"] = int(len(P))
-        entry["rules_per_expectation"] = len(g.rules) / len(names)
-        entry["rules"] = [{"id": r.id, "body": list(r.body), "head": r.head, "support": r.support,
-                           "kept": r.kept, "confidence": round(r.confidence, 3), "level": r.level}
-                          for r in g.rules]
-        model = Meaning(P, Y, Settings(seed=s_m))
-        lik_m = model([tuple(q) for q in scenes])
-        entry["boosting"] = scored(band.verdict(model([tuple(a) for a in sel])), band.verdict(lik_m),
-                                   lik_m)
-        entry["defaults"] = scored(defaults_only(Y, len(sel))[0], base, base_p)
-        out[method] = entry
-    pred, lik = answer_matrix(theory, scenes)
-    shipped = scored(predict(theory, sel), pred, lik)
-    shipped["general_rules"] = sum(1 for r in theory.rules if r.id.startswith("g"))
-    out["shipped"] = shipped
-    ev.general = out
-    ev.seconds["general"] = round(time.monotonic() - t, 1)
-
-
 def _differing_rules(theory: Theory, heads: np.ndarray) -> list[str]:
     """The learned rules rI_E whose head is not the consequent rebuilt from
     the exploration's pours (none when the theory is reproduced)."""
@@ -510,95 +377,4 @@ def _differing_rules(theory: Theory, heads: np.ndarray) -> list[str]:
             rid = rule_id(i, e)
             if have.get(rid) != (e if holds else f"neg({e})"):
                 out.append(rid)
-    return out
-
-
-def _paper_rules(theory: Theory, run: Simulations, opts: Options) -> list[dict[str, Any]]:
-    from pantarhei.bridge.reasoning.planning import goals_met
-
-    out, scenes = [], []
-    for props, literal, words in PAPER_RULES:
-        # learned rules for the literal whose antecedent holds the scene's propositions
-        # (and perhaps more: what else each needs is kept)
-        rules = [{"rule": r.id, "also_needs": sorted(set(r.body) - set(props))}
-                 for r in theory.rules if r.id in theory.learned and r.head == literal
-                 and set(props) <= set(r.body)]
-        scene = sorted(props)
-        said = {o.expectation: o for o in answers.what_happens(theory, scene)}
-        expectation = complement(literal) if literal.startswith("neg(") else literal
-        o = said[expectation]
-        says = {"holds": expectation, "fails": f"neg({expectation})"}.get(o.value, "unknown")
-        out.append({"scene": list(props), "literal": literal, "paper": words,
-                    "learned": rules, "theory_says": says, "rule": o.rule, "reason": o.reason})
-        scenes.append(scene)
-    if opts.paper_samples:
-        P = np.vstack([sample(s, opts.paper_samples, iteration_seed(opts.seed, 200_000 + i))
-                       for i, s in enumerate(scenes)])
-        S = run("the paper's rules", P)
-        for i, entry in enumerate(out):
-            rows = S[i * opts.paper_samples:(i + 1) * opts.paper_samples]
-            rows = rows[np.all(np.isfinite(rows), axis=1)]
-            share = float(goals_met(rows, [entry["literal"]]).mean()) if len(rows) else None
-            majority = None if share is None else (entry["literal"] if share >= 0.5
-                                                   else complement(entry["literal"]))
-            entry.update(simulated=int(len(rows)), oracle_share=share, oracle_majority=majority,
-                         agrees_with_oracle=majority is not None and entry["theory_says"] == majority)
-    return out
-
-
-#: Goal sets a user would ask a plan for, with their words.
-GOAL_SETS = (
-    ("no spill", ["no_spill"]),
-    ("all the liquid into the destination, and kept there",
-     ["liquid_leaves_source", "liquid_enters_destination", "liquid_remains_in_destination"]),
-    ("the destination kept still and upright",
-     ["destination_still_approach", "destination_still_retreat", "destination_still_settle",
-      "destination_upright"]),
-    ("empty the source without spilling", ["liquid_leaves_source", "no_spill"]),
-    ("a clean pour: no bump, no spill, the liquid stays in",
-     ["source_clear", "no_spill", "liquid_remains_in_destination"]),
-    ("everything goes well", None),
-    ("carry the liquid without pouring any", ["neg(liquid_leaves_source)", "no_spill"]),
-    ("empty the source, but not into the destination",
-     ["liquid_leaves_source", "neg(liquid_enters_destination)"]),
-)
-
-
-def goal_sets() -> list[tuple[str, list[str]]]:
-    names = load_vocabulary().expectation_names
-    return [(words, list(goals) if goals else list(names)) for words, goals in GOAL_SETS]
-
-
-def _plans(theory: Theory, run: Simulations, opts: Options) -> list[dict[str, Any]]:
-    """For each goal set, the plan `pantarhei plan` would print (the first
-    of the theory's plans whose goals were met in at least 90% of `verify`
-    pours), measured again on twice as many fresh pours."""
-    from pantarhei.bridge.reasoning.planning import goals_met, verified_plans
-
-    out = []
-    if not opts.verify:
-        return out
-    for i, (words, goals) in enumerate(goal_sets()):
-        entry: dict[str, Any] = {"goals": goals, "words": words}
-        try:
-            good, tried = verified_plans(theory, goals, [], lambda X: run("plans", X, say=False),
-                                         opts.verify, iteration_seed(opts.seed, 300_000 + 100 * i),
-                                         0.9)
-        except UserError as e:
-            entry["none"] = str(e)
-            out.append(entry)
-            continue
-        entry["tried"] = len(tried)
-        if not good:
-            entry["none"] = "no plan the theory proposes met the goals in 90% of its pours"
-            out.append(entry)
-            continue
-        p = good[0].plan
-        n = 2 * opts.verify
-        P = sample(list(p.antecedent), n, iteration_seed(opts.seed, 350_000 + i))
-        S = run("plans", P)
-        rows = S[np.all(np.isfinite(S), axis=1)]
-        entry.update(plan=list(p.chosen), antecedent=list(p.antecedent),
-                     simulated=int(len(rows)), met=int(goals_met(rows, goals).sum()))
-        out.append(entry)
     return out

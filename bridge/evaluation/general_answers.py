@@ -1,0 +1,115 @@
+"""The general theory asked what a person would ask: the questions of
+bridge/evaluation/questions.json (20 pours each) and the uniform held-out
+scenes, for the general rules of each method's pours beside gradient
+boosting of the same pours and the defaults-only theory, and the shipped
+theory as SWI-Prolog answers. Part of `pantarhei evaluate` (pipeline.py)."""
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from typing import Any, Callable
+
+import numpy as np
+
+from pantarhei.theory.lexicon import load_vocabulary
+
+from pantarhei.bridge.evaluation.measures import (accuracy, contrast_keys, defaults_only,
+                                                  question_key, question_measures,
+                                                  question_shares, verdicts)
+from pantarhei.bridge.evaluation.questions import question_pours, questions
+from pantarhei.bridge.evaluation.rule_building import answer_matrix, predict
+from pantarhei.bridge.theories.model import Theory
+
+
+@dataclass
+class _Keys:
+    """The questions' keys from their pours, and the held-out scenes."""
+    scenes: list
+    key: np.ndarray
+    clear: np.ndarray
+    share: np.ndarray
+    V: np.ndarray
+    of: np.ndarray
+    held: list
+    held_y: np.ndarray
+    contrast: np.ndarray
+
+    def scored(self, pred_held: np.ndarray | None, pred_q: np.ndarray,
+               lik_q: np.ndarray) -> dict[str, Any]:
+        entry = {"questions": question_measures(pred_q, lik_q, self.share, self.key, self.clear,
+                                                self.contrast, self.V, self.of),
+                 "answers": pred_q.astype(int).tolist(),
+                 "likelihood": np.round(lik_q, 3).tolist()}
+        if pred_held is not None:
+            entry["uniform"] = accuracy(pred_held, self.held_y).as_dict()
+        return entry
+
+
+def general_theories(ev, theory: Theory, methods: dict, held: dict,
+                     run: Callable[..., np.ndarray], seed: int, explored_seed: int) -> None:
+    """Fill `ev.general`: for each method's pours (`methods`: name -> Pours),
+    the general rules learned from them (and from the learner's own pours,
+    as `explore` learns them), gradient boosting on the same pours (the
+    ceiling of what they support: `Meaning`, averaged over each question's
+    meaning) and the defaults-only theory (the majority of those pours,
+    whatever is asked); and the shipped theory (both layers, by
+    SWI-Prolog). Curiosity's pours are generalized with the exploration's
+    seed (`explored_seed`), as `explore` did, so they give the very rules
+    the theory holds; the random pours with the evaluation's. The contrast
+    keys are the clear keys where the defaults-only theory of curiosity's
+    pours is wrong."""
+    t = time.monotonic()
+    asked = questions()
+    P_q, of = question_pours(asked, seed)
+    S_q = run("questions", P_q)
+    ok = np.all(np.isfinite(S_q), axis=1)
+    key, clear = question_key(S_q[ok], of[ok], len(asked))
+    sel, y = held["uniform"]
+    k = _Keys([q.antecedent for q in asked], key, clear,
+              question_shares(S_q[ok], of[ok], len(asked)), verdicts(S_q[ok]), of[ok],
+              sel, y, np.zeros_like(clear))
+    out: dict[str, Any] = {"questions": [{"text": q.text, "antecedent": list(q.antecedent)}
+                                         for q in asked],
+                           "key": key.astype(int).tolist(), "clear": clear.astype(int).tolist(),
+                           "share": np.round(k.share, 3).tolist()}
+    for method, m in methods.items():
+        out[method] = _method(k, m, explored_seed if method == "curiosity" else seed, run,
+                              first=method == "curiosity")
+        if method == "curiosity":
+            out["contrast"] = k.contrast.astype(int).tolist()
+    pred, lik = answer_matrix(theory, k.scenes)
+    shipped = k.scored(predict(theory, sel), pred, lik)
+    shipped["general_rules"] = sum(1 for r in theory.rules if r.id.startswith("g"))
+    out["shipped"] = shipped
+    ev.general = out
+    ev.seconds["general"] = round(time.monotonic() - t, 1)
+
+
+def _method(k: _Keys, m, seed: int, run: Callable[..., np.ndarray], first: bool) -> dict[str, Any]:
+    """One method's entry: its general rules, boosting and defaults-only; the
+    first method's defaults-only theory sets the contrast keys."""
+    from pantarhei.bridge.learning.generalize import Meaning, Settings
+    from pantarhei.bridge.learning.layers import learn_general
+
+    names = load_vocabulary().expectation_names
+    okm = np.all(np.isfinite(m.S), axis=1)
+    g, P, S = learn_general(m.P[okm], m.S[okm], seed,
+                            lambda X: run("the learner's own pours", X))
+    Y = verdicts(S)
+    base, base_p = defaults_only(Y, len(k.scenes))
+    if first:
+        k.contrast = contrast_keys(k.key, k.clear, base)
+    lik = np.array([[g.answer(q)[e][1] for e in names] for q in k.scenes])
+    entry = k.scored(g.predict(k.held), g.predict(k.scenes), lik)
+    entry["pours"] = int(len(P))
+    entry["rules_per_expectation"] = len(g.rules) / len(names)
+    entry["rules"] = [{"id": r.id, "body": list(r.body), "head": r.head, "support": r.support,
+                       "kept": r.kept, "confidence": round(r.confidence, 3), "level": r.level}
+                      for r in g.rules]
+    model = Meaning(P, Y, Settings(seed=seed))
+    lik_m = model([tuple(q) for q in k.scenes])
+    band = Settings()
+    entry["boosting"] = k.scored(band.verdict(model([tuple(a) for a in k.held])),
+                                 band.verdict(lik_m), lik_m)
+    entry["defaults"] = k.scored(defaults_only(Y, len(k.held))[0], base, base_p)
+    return entry
