@@ -156,7 +156,8 @@ def prolog(args: argparse.Namespace) -> int:
                      T=args.goal)
         if str(r["R"]) != "ok":
             raise UserError(f"--goal: syntax error ({r['R']}) in '{args.goal}'")
-        ok = eng.succeeds("term_string(G, T), catch(G, E, (print_message(error, E), fail))",
+        # \+ \+: the goal's bindings stay in Prolog (pyswip cannot read every term back)
+        ok = eng.succeeds("\\+ \\+ (term_string(G, T), catch(G, E, (print_message(error, E), fail)))",
                           T=args.goal)
         sys.stdout.flush()
         return 0 if ok else 1
