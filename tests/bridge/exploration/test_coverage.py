@@ -32,10 +32,10 @@ def test_the_probes_record_leaves_out_the_probes_that_went_where_pours_are_fewes
 
 
 def test_covering_gives_every_proposition_pours_of_its_own(tmp_path):
-    # synthetic seed 1, the paper's budget: ranked by the forest alone six
-    # propositions are held by fewer pours than a general rule needs
-    # (min_support), some by none; with the last probe of each step going
-    # where the pours are fewest, none is
+    # synthetic seed 1, the paper's budget: ranked by the forest alone some
+    # propositions (two, with the ordinary pour's priors) are held by fewer
+    # pours than a general rule needed (min_support); with the last probe of
+    # each step going where the pours are fewest, none is
     need = 10     # the pours a body needed before the general learner asked for its own
     rare = {}
     for cover in (0, 31):
@@ -51,4 +51,4 @@ def test_covering_gives_every_proposition_pours_of_its_own(tmp_path):
             assert 0 < sum(b == "fewest" for _, b in by) < len(lines)
         else:
             assert all(b == "novelty" for _, b in by)
-    assert len(rare[0]) >= 5 and rare[31] == []
+    assert len(rare[0]) >= 2 and rare[31] == []
