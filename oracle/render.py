@@ -9,6 +9,8 @@ import numpy as np
 
 from . import physics, scoring
 from pantarhei.oracle.base import Outcome
+from pantarhei.oracle.stepping import run
+from pantarhei.oracle.world import World
 
 
 def _camera(client: Any, width: int, height: int) -> tuple[list[float], list[float]]:
@@ -30,7 +32,7 @@ def render(p: np.ndarray, out: str | Path, frames_dir: Optional[str | Path] = No
     images: list[Image.Image] = []
     cam: dict[str, Any] = {}
 
-    def on_frame(world: physics.World, t: float) -> None:
+    def on_frame(world: World, t: float) -> None:
         c = world.client
         if not cam:
             cam["view"], cam["proj"] = _camera(c, width, height)
@@ -40,7 +42,7 @@ def render(p: np.ndarray, out: str | Path, frames_dir: Optional[str | Path] = No
         arr = np.reshape(np.asarray(rgba, dtype=np.uint8), (height, width, 4))[:, :, :3]
         images.append(Image.fromarray(arr))
 
-    record = physics.run(np.asarray(p, dtype=float), fidelity, on_frame=on_frame, frame_hz=fps)
+    record = run(np.asarray(p, dtype=float), fidelity, on_frame=on_frame, frame_hz=fps)
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
     images[0].save(out, save_all=True, append_images=images[1:], duration=int(1000 / fps),

@@ -5,8 +5,9 @@ import numpy as np
 import pytest
 
 from pantarhei.oracle.base import make_oracle
-from pantarhei.oracle.physics import CHOSEN_FIDELITY, PouringOracle, TIMING_FIELDS
+from pantarhei.oracle.physics import CHOSEN_FIDELITY, PouringOracle
 from pantarhei.oracle.simulator import make_simulator
+from pantarhei.oracle.stepping import TIMING_FIELDS
 from pantarhei.theory.lexicon import load_vocabulary
 
 from .pours import CENTRED_LOW_TIPPED, FAR_SIDE_TIPPED, HEAVY_DROP, NEVER_TILTED, pour
