@@ -154,7 +154,7 @@ ROUNDS = 3
 def baseline_math(P: np.ndarray, rounds: int = ROUNDS) -> None:
     from pantarhei.oracle.physics import PouringOracle
     from pantarhei.oracle.simulator import Simulator
-    from pantarhei.oracle.executors import LocalExecutor
+    from pantarhei.oracle.local_executor import LocalExecutor
 
     print(f"baseline math: {len(P)} pours on 1 worker, {rounds} rounds taking turns "
           f"(load average {os.getloadavg()[0]:.1f} before)")

@@ -18,13 +18,14 @@ from typing import Any, Optional
 import numpy as np
 
 from pantarhei.oracle.base import Oracle, make_oracle
-from pantarhei.oracle.executors import Done, Executor, make_executor
+from pantarhei.oracle.execution import Done, Executor
+from pantarhei.oracle.executors import make_executor
 from pantarhei.oracle.store import Store, key, oracle_tag
 from pantarhei.theory.lexicon import load_vocabulary
 
 #: Seconds a single simulation may take before it counts as hung.
 DEFAULT_TIMEOUT = 120.0
-#: The error of a simulation stopped by the timeout (oracle/executors.py).
+#: The error of a simulation stopped by the timeout (local_executor, ray_executor).
 _TIMED_OUT = re.compile(r"^timed out after ([0-9.eE+-]+) s$")
 
 

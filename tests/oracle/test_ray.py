@@ -10,8 +10,8 @@ import os
 import numpy as np
 import pytest
 
-from pantarhei.oracle.executors import RayExecutor
 from pantarhei.oracle.faults import FaultyOracle
+from pantarhei.oracle.ray_executor import RayExecutor
 from pantarhei.theory.lexicon import load_vocabulary
 
 COUNT = load_vocabulary().parameter("particle_count").index
