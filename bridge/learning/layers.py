@@ -29,7 +29,8 @@ import numpy as np
 
 from pantarhei.bridge.files import write_text
 from pantarhei.bridge.learning.generalize import General, Settings, generalize, rank, together
-from pantarhei.bridge.theories.model import Theory, complement, read_native
+from pantarhei.bridge.theories.model import Theory, complement
+from pantarhei.bridge.theories.native import read_native
 
 
 @dataclass(frozen=True)

@@ -43,7 +43,9 @@ from typing import Sequence
 from pantarhei.theory import TheoryFileError
 
 from pantarhei.bridge.theories import facts as theory_facts
-from pantarhei.bridge.theories.model import Rule, Theory, complement, from_facts, superiority_cycle
+from pantarhei.bridge.theories.model import Rule, Theory, complement, superiority_cycle
+from pantarhei.bridge.theories.native import from_facts
+from pantarhei.bridge.theories.well_formed import value_text
 
 #: A comment holding a native fact DFL has no form for.
 ANNOTATION = "# pantarhei: "
@@ -69,9 +71,35 @@ def read_dfl(path: Path | str) -> Theory:
 def parse_dfl(text: str, source: str = "<dfl>") -> Theory:
     """A theory from DFL text; TheoryFileError names source and line."""
     t = Theory(source=source)
-    schemas: list[tuple[Rule, int]] = []
-    sups: list[tuple[str, str, int]] = []
     raws = text.splitlines()
+    annotations, derived = _annotations(raws, source)
+    lines = [re.split(r"#|%|//", raw, maxsplit=1)[0].strip() for raw in raws]
+    schemas, sups = _statements(lines, source, t)
+    cycle = superiority_cycle((a, b) for a, b, _ in sups)
+    if cycle:
+        n = next(n for a, b, n in sups if (a, b) == (cycle[0], cycle[1]))
+        raise TheoryFileError(f"{source}:{n}: the superiority relation has a cycle, "
+                              f"{' > '.join(cycle)}: it must be acyclic")
+    t.rules, origin = _ground(schemas, t.facts, source)
+    _add_superiority(t, sups, schemas, origin, source)
+    seen: dict[str, int] = {}
+    for r, n in schemas:
+        if r.id in seen:
+            raise TheoryFileError(f"{source}:{n}: a second rule labelled {r.id} (line {seen[r.id]})")
+        seen[r.id] = n
+        if _variables(r.head) or any(map(_variables, r.body)):
+            t.schemas.append((f"{source}:{n}", r.id))
+    for r in t.rules:
+        t.lines[r.id] = seen.get(origin[r.id], 0)
+    if annotations:
+        from_facts(annotations, source, t)
+        t.sup = [p for p in t.sup if not (p in derived and p[0] in t.learned and p[1] in t.learned)]
+    return t
+
+
+def _annotations(raws: list[str], source: str) -> tuple[list, set[tuple[str, str]]]:
+    """The native facts the comments hold (`# pantarhei: ...`), and the
+    superiority pairs written as specificity's (`r4 > r3 # specificity`)."""
     annotations = []
     derived = set()
     for n, raw in enumerate(raws, start=1):
@@ -81,7 +109,15 @@ def parse_dfl(text: str, source: str = "<dfl>") -> Theory:
         m = _DERIVED.match(raw)
         if m:
             derived.add((m.group(1), m.group(2)))
-    lines = [re.split(r"#|%|//", raw, maxsplit=1)[0].strip() for raw in raws]
+    return annotations, derived
+
+
+def _statements(lines: list[str], source: str,
+                t: Theory) -> tuple[list[tuple[Rule, int]], list[tuple[str, str, int]]]:
+    """The rules (with variables, and their lines) and superiority pairs
+    (with their lines) of the lines without comments; facts go into `t`."""
+    schemas: list[tuple[Rule, int]] = []
+    sups: list[tuple[str, str, int]] = []
     labels = {m.group(1) for m in (re.match(r"^([A-Za-z0-9_]+)\s*:(?!-)", x) for x in lines) if m}
     for n, line in enumerate(lines, start=1):
         if not line:
@@ -98,29 +134,38 @@ def parse_dfl(text: str, source: str = "<dfl>") -> Theory:
                                       f"a superiority 'r1 > r2' or a fact '>> a'")
             sups.append((m.group(1), m.group(2), n))
             continue
-        label, rest = None, line
-        m = re.match(r"^([A-Za-z0-9_]+)\s*:(?!-)\s*(.*)$", line)
-        if m:
-            label, rest = m.group(1), m.group(2)
-        body_text, head_text = rest.split(arrow[0], 1)
-        body = tuple(_literal(b, where) for b in _split(body_text, where))
-        head = _literal(head_text.strip(), where)
-        if not body and label is None and arrow[1] != "defeater":
-            if _variables(head):
-                raise TheoryFileError(f"{where}: a fact without variables, not {head_text.strip()}")
-            if arrow[1] == "strict":
-                t.facts.append(head)
-                continue
-        rid = label if label is not None else f"r{n}" if f"r{n}" not in labels else f"line{n}"
-        if not re.fullmatch(r"[a-z][A-Za-z0-9_]*", rid):
-            raise TheoryFileError(f"{where}: a rule label in lower case letters, digits and _, not '{rid}'")
-        schemas.append((Rule(rid, arrow[1], head, body), n))
-    cycle = superiority_cycle((a, b) for a, b, _ in sups)
-    if cycle:
-        n = next(n for a, b, n in sups if (a, b) == (cycle[0], cycle[1]))
-        raise TheoryFileError(f"{source}:{n}: the superiority relation has a cycle, "
-                              f"{' > '.join(cycle)}: it must be acyclic")
-    t.rules, origin = _ground(schemas, t.facts, source)
+        rule = _rule(line, arrow, n, labels, where)
+        if isinstance(rule, str):
+            t.facts.append(rule)
+        else:
+            schemas.append((rule, n))
+    return schemas, sups
+
+
+def _rule(line: str, arrow: tuple[str, str], n: int, labels: set[str], where: str) -> Rule | str:
+    """The rule of a line with an arrow, or the literal of a strict fact
+    (`-> a`)."""
+    label, rest = None, line
+    m = re.match(r"^([A-Za-z0-9_]+)\s*:(?!-)\s*(.*)$", line)
+    if m:
+        label, rest = m.group(1), m.group(2)
+    body_text, head_text = rest.split(arrow[0], 1)
+    body = tuple(_literal(b, where) for b in _split(body_text, where))
+    head = _literal(head_text.strip(), where)
+    if not body and label is None and arrow[1] != "defeater":
+        if _variables(head):
+            raise TheoryFileError(f"{where}: a fact without variables, not {head_text.strip()}")
+        if arrow[1] == "strict":
+            return head
+    rid = label if label is not None else f"r{n}" if f"r{n}" not in labels else f"line{n}"
+    if not re.fullmatch(r"[a-z][A-Za-z0-9_]*", rid):
+        raise TheoryFileError(f"{where}: a rule label in lower case letters, digits and _, not '{rid}'")
+    return Rule(rid, arrow[1], head, body)
+
+
+def _add_superiority(t: Theory, sups: list[tuple[str, str, int]], schemas: list[tuple[Rule, int]],
+                     origin: dict[str, str], source: str) -> None:
+    """The superiority pairs, between the instances of rules with variables."""
     ids = {r.id for r in t.rules} | {r.id for r, _ in schemas}
     instances: dict[str, list[str]] = {}
     for r in t.rules:
@@ -133,19 +178,6 @@ def parse_dfl(text: str, source: str = "<dfl>") -> Theory:
         left = instances.get(a) or ([] if a in ids else [a])
         right = instances.get(b) or ([] if b in ids else [b])
         t.sup.extend((x, y) for x in left for y in right)
-    seen: dict[str, int] = {}
-    for r, n in schemas:
-        if r.id in seen:
-            raise TheoryFileError(f"{source}:{n}: a second rule labelled {r.id} (line {seen[r.id]})")
-        seen[r.id] = n
-        if _variables(r.head) or any(map(_variables, r.body)):
-            t.schemas.append((f"{source}:{n}", r.id))
-    for r in t.rules:
-        t.lines[r.id] = seen.get(origin[r.id], 0)
-    if annotations:
-        from_facts(annotations, source, t)
-        t.sup = [p for p in t.sup if not (p in derived and p[0] in t.learned and p[1] in t.learned)]
-    return t
 
 
 def _split(text: str, where: str) -> list[str]:
@@ -280,15 +312,13 @@ def write_dfl(theory: Theory, header: Sequence[str] = ()) -> str:
     theory has the same conclusions in SPINdle and silkie; every other fact
     as an annotation (`# pantarhei: learned(r1).`), so that nothing is
     lost. `header` lines go first, as comments."""
-    from pantarhei.bridge.theories.model import _value_text
-
     arrows = {k: a for a, k in _ARROWS}
     lines = [f"# {h}" for h in header]
-    lines += [f"{ANNOTATION}setting({k}, {_value_text(v)})." for k, vs in theory.settings.items() for v in vs]
+    lines += [f"{ANNOTATION}setting({k}, {value_text(v)})." for k, vs in theory.settings.items() for v in vs]
     lines += [f">> {dfl_literal(f)}" for f in theory.facts]
     of_rule: dict[str, list[str]] = {}
     for rid, key, value in theory.provenance:
-        of_rule.setdefault(rid, []).append(f"{ANNOTATION}provenance({rid}, {key}, {_value_text(value)}).")
+        of_rule.setdefault(rid, []).append(f"{ANNOTATION}provenance({rid}, {key}, {value_text(value)}).")
     for r in theory.rules:
         body = ", ".join(dfl_literal(b) for b in r.body)
         lines.append(f"{r.id}: {body}{' ' if body else ''}{arrows[r.kind]} {dfl_literal(r.head)}")

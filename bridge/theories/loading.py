@@ -9,7 +9,9 @@ from pathlib import Path
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.theories.dfl import is_dfl, read_dfl
-from pantarhei.bridge.theories.model import Theory, _line, _text_of, merge, read_native
+from pantarhei.bridge.theories.model import Theory
+from pantarhei.bridge.theories.native import read_native
+from pantarhei.bridge.theories.well_formed import source_line, source_text
 from pantarhei.theory import THEORY_DIR, TheoryFileError, defaults
 
 #: The theory the exploration writes, used when no theory file is named.
@@ -67,6 +69,34 @@ def load(paths: Path | str | list | tuple | None = None, check: bool = True,
     except TheoryFileError as e:
         raise UserError(str(e)) from None
     return theory
+
+
+def merge(theories: list[Theory]) -> Theory:
+    """One theory from several files (a learned theory and rules added by
+    hand); rule names must be distinct, sup/2 may cross files."""
+    if len(theories) == 1:
+        return theories[0]
+    out = Theory(source=" + ".join(t.source for t in theories))
+    owner: dict[str, str] = {}
+    for t in theories:
+        for f in t.facts:
+            if f not in out.facts:
+                out.facts.append(f)
+        for r in t.rules:
+            if r.id in owner:
+                where = source_line(source_text(t.source), rf"{re.escape(r.id)}\b", t.source)
+                raise TheoryFileError(f"{where}: rule {r.id} is already defined in {owner[r.id]}")
+            owner[r.id] = t.source
+            out.rules.append(r)
+        out.sup.extend(t.sup)
+        out.learned |= t.learned
+        for k, values in t.settings.items():
+            have = out.settings.setdefault(k, [])
+            have.extend(v for v in values if v not in have)
+        out.provenance.extend(t.provenance)
+        out.extra.extend(t.extra)
+        out.schemas.extend(t.schemas)
+    return out
 
 
 def converted(theory: Theory, to: str, out: Path | str | None = None) -> str:
@@ -177,23 +207,23 @@ def check_general_rules(theory: Theory) -> None:
     if not general:
         return
     vocab = load_vocabulary()
-    text = _text_of(theory.source)
+    text = source_text(theory.source)
     expectations = set(vocab.expectation_names)
     for r in theory.rules:
         if r.id not in general:
             continue
         for b in r.body:
             if b not in vocab.propositions:
-                where = _line(text, rf"body\(\s*{re.escape(r.id)}\s*,\s*{re.escape(b)}\s*\)", theory.source)
+                where = source_line(text, rf"body\(\s*{re.escape(r.id)}\s*,\s*{re.escape(b)}\s*\)", theory.source)
                 raise TheoryFileError(f"{where}: general rule {r.id}: {b} is not a proposition "
                                       f"of the vocabulary")
         head = r.head[4:-1] if r.head.startswith("neg(") else r.head
         if head not in expectations:
-            where = _line(text, rf"rule\(\s*{re.escape(r.id)}\s*,", theory.source)
+            where = source_line(text, rf"rule\(\s*{re.escape(r.id)}\s*,", theory.source)
             raise TheoryFileError(f"{where}: general rule {r.id}: {head} is not an expectation")
     facts = {(rid, k): v for rid, k, v in theory.provenance if rid in general}
     for (rid, key), v in facts.items():
-        where = _line(text, rf"provenance\(\s*{re.escape(rid)}\s*,\s*{key}\s*,", theory.source)
+        where = source_line(text, rf"provenance\(\s*{re.escape(rid)}\s*,\s*{key}\s*,", theory.source)
         if key == "confidence_permille" and not (isinstance(v, int) and 0 <= v <= 1000):
             raise TheoryFileError(f"{where}: general rule {rid}: a confidence in permille "
                                   f"is 0 to 1000, not {v}")

@@ -1,4 +1,5 @@
-"""Defeasible theories as Python values: read and write the native format.
+"""Defeasible theories as Python values, and the native format they are
+written in.
 
 The native format is ground facts that SWI-Prolog and clingo both read:
 
@@ -9,38 +10,24 @@ which is also how both engines print them: a name, or a name with names and
 integers as arguments, or neg(L). A learned theory adds `setting(Key, V)`
 and `provenance(Id, Key, V)`; facts of any other predicate (`set_aside/3`,
 ...) are kept aside in `extra` and written back (quoted text quoted and
-escaped). The file's language is that of `facts` (and of
-theory/theory_files.pl, which checks the same things with the same
-messages).
+escaped). What a file may hold is checked by `well_formed` (and by
+theory/theory_files.pl, with the same messages); `native` reads a file.
+The superiority a theory's rules have (sup/2 and the specificity of learned
+rules), and whether it is acyclic, is asked of the theory here.
 """
 from __future__ import annotations
 
 import re
 from collections import deque
 from dataclasses import dataclass, field
-from pathlib import Path
 from itertools import combinations
 from typing import Iterable
 
-from pantarhei.bridge.theories import facts as theory_facts
-from pantarhei.bridge.theories.facts import Fact, Text, term_text
+from pantarhei.bridge.theories.facts import term_text
+from pantarhei.bridge.theories.well_formed import (KIND, KINDS, NAME, RULE_NAME, SECOND_RULE,
+                                                   check_literal, source_line, source_text,
+                                                   value_text)
 from pantarhei.theory import TheoryFileError
-
-KINDS = ("strict", "defeasible", "defeater")
-_NAME = re.compile(r"^[a-z][A-Za-z0-9_]*$")
-_ARG = r"(?:[a-z][A-Za-z0-9_]*|-?[0-9]+)"
-_ATOM = rf"[a-z][A-Za-z0-9_]*(?:\({_ARG}(?:,{_ARG})*\))?"
-_LITERAL = re.compile(rf"^(?:{_ATOM}|neg\({_ATOM}\))$")
-
-# The messages, word for word those of theory/theory_files.pl.
-RULE_NAME = "a rule name in lower case letters, digits and _, not '{}'"
-KIND = "rule {}: kind strict, defeasible or defeater, not {}"
-SECOND_RULE = "a second rule named {}"
-DANGLING_BODY = "body({0}, _) of a rule {0} that has no rule({0}, Kind, Head) fact"
-LITERAL = "a literal such as p, bird(tweety) or neg(p) (names and integers as arguments), not {}"
-DOUBLE_NEG = "a literal or its negation neg(L), not a double negation {}"
-ARITY = "expected {}, not a {}/{} fact"
-NAME_ARG = "{}: a name in lower case letters, digits and _, not {}"
 
 
 @dataclass(frozen=True)
@@ -102,7 +89,7 @@ class Theory:
     def native(self) -> str:
         """The theory in the native format: everything it holds (settings
         first, each rule's provenance after it)."""
-        lines = [f"setting({k}, {_value_text(v)})." for k, vs in self.settings.items() for v in vs]
+        lines = [f"setting({k}, {value_text(v)})." for k, vs in self.settings.items() for v in vs]
         lines += [f"fact({f})." for f in self.facts]
         of_rule: dict[str, list[tuple[str, str | int]]] = {}
         for rid, key, value in self.provenance:
@@ -112,11 +99,11 @@ class Theory:
             lines.extend(f"body({r.id}, {b})." for b in r.body)
             if r.id in self.learned:
                 lines.append(f"learned({r.id}).")
-            lines.extend(f"provenance({r.id}, {k}, {_value_text(v)})." for k, v in of_rule.pop(r.id, ()))
+            lines.extend(f"provenance({r.id}, {k}, {value_text(v)})." for k, v in of_rule.pop(r.id, ()))
         lines.extend(f"sup({a}, {b})." for a, b in self.sup)
         rules = {r.id for r in self.rules}
         lines.extend(f"learned({x})." for x in sorted(self.learned - rules))
-        lines.extend(f"provenance({rid}, {k}, {_value_text(v)})." for rid, kvs in of_rule.items() for k, v in kvs)
+        lines.extend(f"provenance({rid}, {k}, {value_text(v)})." for rid, kvs in of_rule.items() for k, v in kvs)
         lines.extend(self.extra)
         return "\n".join(lines) + "\n"
 
@@ -181,7 +168,7 @@ class Theory:
         ids: set[str] = set()
         for r in self.rules:
             where = self.where(r.id)
-            if not _NAME.match(r.id):
+            if not NAME.match(r.id):
                 raise TheoryFileError(f"{where}: " + RULE_NAME.format(r.id))
             if r.kind not in KINDS:
                 raise TheoryFileError(f"{where}: " + KIND.format(r.id, r.kind))
@@ -189,9 +176,9 @@ class Theory:
                 raise TheoryFileError(f"{where}: " + SECOND_RULE.format(r.id))
             ids.add(r.id)
             for lit in (r.head, *r.body):
-                _check_literal(lit, where)
+                check_literal(lit, where)
         for f in self.facts:
-            _check_literal(f, f"{self.source}:0")
+            check_literal(f, f"{self.source}:0")
 
     def check_acyclic(self) -> None:
         """Raise TheoryFileError if the superiority relation (sup/2 with
@@ -205,8 +192,9 @@ class Theory:
         cycle = superiority_cycle(self.sup, self._specific_successors())
         if cycle:
             a, b = cycle[0], cycle[1]
-            where = _line(_text_of(self.source), rf"sup\(\s*{re.escape(a)}\s*,\s*{re.escape(b)}\s*\)"
-                                                 rf"|\b{re.escape(a)}\s*>\s*{re.escape(b)}\b", self.source)
+            pattern = (rf"sup\(\s*{re.escape(a)}\s*,\s*{re.escape(b)}\s*\)"
+                       rf"|\b{re.escape(a)}\s*>\s*{re.escape(b)}\b")
+            where = source_line(source_text(self.source), pattern, self.source)
             raise TheoryFileError(f"{where.removesuffix(':0')}: the superiority relation has a cycle, "
                                   f"{' > '.join(cycle)}: it must be acyclic")
 
@@ -230,13 +218,13 @@ class Theory:
 
     def check_superiority(self) -> None:
         """Raise TheoryFileError if sup/2 names a rule that does not exist."""
-        text = _text_of(self.source)
+        text = source_text(self.source)
         ids = {r.id for r in self.rules}
         for a, b in self.sup:
             for x in (a, b):
                 if x not in ids:
-                    where = _line(text, rf"sup\(\s*{re.escape(a)}\s*,\s*{re.escape(b)}\b"
-                                        rf"|\b{re.escape(a)}\s*>\s*{re.escape(b)}\b", self.source)
+                    where = source_line(text, rf"sup\(\s*{re.escape(a)}\s*,\s*{re.escape(b)}\b"
+                                              rf"|\b{re.escape(a)}\s*>\s*{re.escape(b)}\b", self.source)
                     raise TheoryFileError(f"{where}: sup({a}, {b}) names {x}, which is not a rule")
 
 
@@ -255,27 +243,6 @@ def antecedent_index(aid: str) -> int | None:
     """i for an antecedent id `a<i>`, None for anything else (`none`)."""
     return int(aid[1:]) if len(aid) > 1 and aid[0] == "a" and aid[1:].isdigit() else None
 
-
-def _value_text(value) -> str:
-    """A setting's or provenance's value as native text: integers, names
-    and terms as they are, anything else (`Text`, or str that is not a
-    term) quoted and escaped, so that no value can be read as more facts."""
-    if isinstance(value, bool) or not isinstance(value, (int, str)):
-        value = str(value)
-    if isinstance(value, int):
-        return str(value)
-    if isinstance(value, Text):
-        return theory_facts.quote(value)
-    if _NAME.match(value):
-        return value
-    if "(" in value and value[:1].islower():
-        try:
-            (f,) = theory_facts.parse(f"v({value}).")
-            if len(f.args) == 1 and term_text(f.args[0]) == value:
-                return value
-        except (TheoryFileError, ValueError):
-            pass
-    return theory_facts.quote(value)
 
 
 def superiority_cycle(pairs: Iterable[tuple[str, str]], more=None) -> list[str] | None:
@@ -324,160 +291,3 @@ def complement(lit: str) -> str:
     return lit[4:-1] if lit.startswith("neg(") and lit.endswith(")") else f"neg({lit})"
 
 
-def is_literal(lit: str) -> bool:
-    """A literal: a name, a name with names and integers as arguments, or
-    neg(L) of one."""
-    return bool(_LITERAL.match(lit))
-
-
-def _check_literal(lit: str, where: str) -> None:
-    if lit.startswith("neg(neg("):
-        raise TheoryFileError(f"{where}: " + DOUBLE_NEG.format(lit))
-    if not _LITERAL.match(lit):
-        raise TheoryFileError(f"{where}: " + LITERAL.format(lit))
-
-
-def _text_of(source: str) -> str:
-    try:
-        return Path(source).read_text(encoding="utf-8", errors="replace")
-    except OSError:
-        return ""
-
-
-def _line(text: str, pattern: str, source: str) -> str:
-    m = re.search(pattern, text)
-    line = text.count("\n", 0, m.start()) + 1 if m else 0
-    return f"{source}:{line}"
-
-
-def read_native(path: Path | str) -> Theory:
-    """Read a native theory file; TheoryFileError names file and line."""
-    facts = theory_facts.read(path)
-    with theory_facts._no_gc():
-        return from_facts(facts, str(path))
-
-
-#: The predicates of a theory, with the form each is written in.
-FORMS = {("fact", 1): "fact(L)", ("rule", 3): "rule(Id, Kind, Head)", ("body", 2): "body(Id, L)",
-         ("sup", 2): "sup(R1, R2)", ("learned", 1): "learned(Id)",
-         ("setting", 2): "setting(Key, Value)", ("provenance", 3): "provenance(Id, Key, Value)"}
-_FORM_OF = {name: form for (name, _), form in FORMS.items()}
-
-
-_NAMES_AT = {"rule": (0,), "body": (0,), "sup": (0, 1), "learned": (0,), "setting": (0,),
-             "provenance": (0, 1), "fact": ()}
-_LITERAL_AT = {"fact": 0, "rule": 2, "body": 1}
-
-
-def check_fact(f: Fact, source: str, checked: set | None = None) -> None:
-    """TheoryFileError (`file:line: what`) if a fact of a theory predicate
-    is not of its form (theory_files:check_theory_fact/2 in Prolog).
-    `checked` holds literals already found good (a theory repeats them)."""
-    form = _FORM_OF.get(f.name)
-    if form is None:
-        return
-    a = f.args
-    if (f.name, len(a)) not in FORMS:
-        raise TheoryFileError(f"{source}:{f.line}: " + ARITY.format(form, f.name, len(a)))
-    for i in _NAMES_AT[f.name]:
-        if not (type(a[i]) is str and _NAME.match(a[i])):
-            raise TheoryFileError(f"{source}:{f.line}: " + NAME_ARG.format(form, term_text(a[i])))
-    if f.name == "rule" and a[1] not in KINDS:
-        raise TheoryFileError(f"{source}:{f.line}: " + KIND.format(a[0], term_text(a[1])))
-    i = _LITERAL_AT.get(f.name)
-    if i is not None:
-        lit = a[i] if type(a[i]) is str else term_text(a[i])
-        if checked is None or lit not in checked:
-            _check_literal(lit, f"{source}:{f.line}")
-            if checked is not None:
-                checked.add(lit)
-
-
-def from_facts(facts: list[Fact], source: str, t: Theory | None = None) -> Theory:
-    """A theory of the facts of a file (checked: TheoryFileError with
-    `file:line: what`); added to `t` if given."""
-    t = t if t is not None else Theory(source=source)
-    bodies: dict[str, list[str]] = {}
-    heads: list[tuple[str, str, str]] = []
-    first_body: dict[str, int] = {}
-    lines, body_lines = t.lines, t.body_lines
-    checked: set[str] = set()
-    names: set[str] = set()
-    for f in facts:
-        name, a = f.name, f.args
-        if name == "body" and len(a) == 2:
-            rid, lit = a
-            if type(lit) is not str:
-                lit = term_text(lit)
-            if lit not in checked or rid not in names:
-                check_fact(f, source, checked)
-                names.add(rid)
-        else:
-            check_fact(f, source, checked)
-        if name == "body":
-            have = bodies.get(rid)
-            if have is None:
-                bodies[rid] = [lit]
-                first_body[rid] = f.line
-            else:
-                have.append(lit)
-            body_lines.setdefault((rid, lit), f.line)
-        elif name == "rule":
-            rid = a[0]
-            if rid in lines:
-                raise TheoryFileError(f"{source}:{f.line}: " + SECOND_RULE.format(rid))
-            lines[rid] = f.line
-            heads.append((rid, a[1], a[2] if type(a[2]) is str else term_text(a[2])))
-        elif name == "learned":
-            t.learned.add(a[0])
-        elif name == "fact":
-            t.facts.append(term_text(a[0]))
-            body_lines.setdefault(("", t.facts[-1]), f.line)
-        elif name == "sup":
-            t.sup.append((a[0], a[1]))
-        elif name == "setting":
-            t.settings.setdefault(a[0], []).append(_plain(a[1]))
-        elif name == "provenance":
-            t.provenance.append((a[0], a[1], _plain(a[2])))
-        else:
-            t.extra.append(f.text + ".")
-    for rid, line in first_body.items():
-        if rid not in t.lines:
-            raise TheoryFileError(f"{source}:{line}: " + DANGLING_BODY.format(rid))
-    t.rules.extend(Rule(rid, kind, head, tuple(dict.fromkeys(bodies.get(rid, ()))))
-                   for rid, kind, head in heads)
-    return t
-
-
-def _plain(value) -> str | int:
-    """A setting's or provenance's value: int, name or Text as they are, a
-    term as its native text."""
-    return value if isinstance(value, (str, int)) else term_text(value)
-
-
-def merge(theories: list[Theory]) -> Theory:
-    """One theory from several files (a learned theory and rules added by
-    hand); rule names must be distinct, sup/2 may cross files."""
-    if len(theories) == 1:
-        return theories[0]
-    out = Theory(source=" + ".join(t.source for t in theories))
-    owner: dict[str, str] = {}
-    for t in theories:
-        for f in t.facts:
-            if f not in out.facts:
-                out.facts.append(f)
-        for r in t.rules:
-            if r.id in owner:
-                where = _line(_text_of(t.source), rf"{re.escape(r.id)}\b", t.source)
-                raise TheoryFileError(f"{where}: rule {r.id} is already defined in {owner[r.id]}")
-            owner[r.id] = t.source
-            out.rules.append(r)
-        out.sup.extend(t.sup)
-        out.learned |= t.learned
-        for k, values in t.settings.items():
-            have = out.settings.setdefault(k, [])
-            have.extend(v for v in values if v not in have)
-        out.provenance.extend(t.provenance)
-        out.extra.extend(t.extra)
-        out.schemas.extend(t.schemas)
-    return out

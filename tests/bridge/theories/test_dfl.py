@@ -8,7 +8,8 @@ import pytest
 from pantarhei.bridge.theories.dfl import parse_dfl, write_dfl
 from pantarhei.bridge.reasoning.logic import Semantics, conclusions
 from pantarhei.bridge.theories.loading import load
-from pantarhei.bridge.theories.model import Rule, read_native
+from pantarhei.bridge.theories.model import Rule
+from pantarhei.bridge.theories.native import read_native
 from pantarhei.bridge.errors import UserError
 from pantarhei.theory import TheoryFileError
 

@@ -12,7 +12,7 @@ import pytest
 
 from pantarhei.bridge.reasoning.logic import Semantics, asp_conclusions, prolog_conclusions
 from pantarhei.bridge.theories import facts
-from pantarhei.bridge.theories.model import read_native
+from pantarhei.bridge.theories.native import read_native
 from pantarhei.theory import THEORY_DIR, TheoryFileError
 
 LITERAL = "a literal such as p, bird(tweety) or neg(p) (names and integers as arguments), not "

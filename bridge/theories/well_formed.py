@@ -1,0 +1,80 @@
+"""What a theory file may hold, and where it goes wrong: rule names, kinds
+and literals as the native format and both engines read them, the messages
+for what they cannot read (word for word those of theory/theory_files.pl),
+how a setting's or provenance's value is written so that it reads back as
+one value, and the line of a file an error is on."""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from pantarhei.bridge.theories import facts as theory_facts
+from pantarhei.bridge.theories.facts import Text, term_text
+from pantarhei.theory import TheoryFileError
+
+KINDS = ("strict", "defeasible", "defeater")
+NAME = re.compile(r"^[a-z][A-Za-z0-9_]*$")
+_ARG = r"(?:[a-z][A-Za-z0-9_]*|-?[0-9]+)"
+_ATOM = rf"[a-z][A-Za-z0-9_]*(?:\({_ARG}(?:,{_ARG})*\))?"
+_LITERAL = re.compile(rf"^(?:{_ATOM}|neg\({_ATOM}\))$")
+
+# The messages, word for word those of theory/theory_files.pl.
+RULE_NAME = "a rule name in lower case letters, digits and _, not '{}'"
+KIND = "rule {}: kind strict, defeasible or defeater, not {}"
+SECOND_RULE = "a second rule named {}"
+DANGLING_BODY = "body({0}, _) of a rule {0} that has no rule({0}, Kind, Head) fact"
+LITERAL = "a literal such as p, bird(tweety) or neg(p) (names and integers as arguments), not {}"
+DOUBLE_NEG = "a literal or its negation neg(L), not a double negation {}"
+ARITY = "expected {}, not a {}/{} fact"
+NAME_ARG = "{}: a name in lower case letters, digits and _, not {}"
+
+
+def is_literal(lit: str) -> bool:
+    """A literal: a name, a name with names and integers as arguments, or
+    neg(L) of one."""
+    return bool(_LITERAL.match(lit))
+
+
+def check_literal(lit: str, where: str) -> None:
+    """TheoryFileError (`where: what`) unless `lit` is a literal."""
+    if lit.startswith("neg(neg("):
+        raise TheoryFileError(f"{where}: " + DOUBLE_NEG.format(lit))
+    if not _LITERAL.match(lit):
+        raise TheoryFileError(f"{where}: " + LITERAL.format(lit))
+
+
+def value_text(value) -> str:
+    """A setting's or provenance's value as native text: integers, names
+    and terms as they are, anything else (`Text`, or str that is not a
+    term) quoted and escaped, so that no value can be read as more facts."""
+    if isinstance(value, bool) or not isinstance(value, (int, str)):
+        value = str(value)
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, Text):
+        return theory_facts.quote(value)
+    if NAME.match(value):
+        return value
+    if "(" in value and value[:1].islower():
+        try:
+            (f,) = theory_facts.parse(f"v({value}).")
+            if len(f.args) == 1 and term_text(f.args[0]) == value:
+                return value
+        except (TheoryFileError, ValueError):
+            pass
+    return theory_facts.quote(value)
+
+
+def source_text(source: str) -> str:
+    """The text of the file a theory was read from ("" if there is none)."""
+    try:
+        return Path(source).read_text(encoding="utf-8", errors="replace")
+    except OSError:
+        return ""
+
+
+def source_line(text: str, pattern: str, source: str) -> str:
+    """`source:line` of the first match of `pattern` in `text` (line 0 if none)."""
+    m = re.search(pattern, text)
+    line = text.count("\n", 0, m.start()) + 1 if m else 0
+    return f"{source}:{line}"
