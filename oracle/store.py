@@ -15,21 +15,26 @@ is refused before it is simulated (`require_writable`). If writing fails
 mid-run (a full disk), the results it could not keep are written to a
 recovery file beside it (or in the temporary folder), which `StoreError`
 names; the next run that opens the store writable takes them back.
+
+The keys are made in `result_keys`, the file is opened and checked in
+`store_file`, its layout and migration are `store_schema`'s, and the
+recovery files `store_recovery`'s; this module reads and writes results.
 """
 from __future__ import annotations
 
-import hashlib
 import json
 import math
-import os
 import sqlite3
-import tempfile
 import time
 import urllib.parse
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Iterable, Optional
 
+from pantarhei.oracle import store_recovery
+from pantarhei.oracle.result_keys import canonical
+from pantarhei.oracle.store_file import StoreError, check, damaged, open_file, read_only, reason
+from pantarhei.oracle.store_schema import COLUMNS, SCHEMA, has_table, migrate, missing_columns
 from pantarhei.theory import defaults
 
 if TYPE_CHECKING:
@@ -40,73 +45,6 @@ if TYPE_CHECKING:
 #: The store of simulations (and exploration state) unless told otherwise,
 #: relative to the working directory (theory/defaults.pl).
 DEFAULT_STORE = Path(str(defaults()["store"]))
-
-#: Decimal places a parameter value keeps in the key (theory units).
-DECIMALS = 6
-
-SCHEMA = """
-CREATE TABLE IF NOT EXISTS simulation_results (
-    key        TEXT PRIMARY KEY,
-    oracle     TEXT NOT NULL,
-    version    TEXT NOT NULL,
-    settings   TEXT NOT NULL,
-    params     TEXT NOT NULL,
-    status     TEXT NOT NULL CHECK (status IN ('ok', 'failed')),
-    scores     TEXT,
-    record     TEXT,
-    error      TEXT,
-    attempts   INTEGER NOT NULL,
-    seconds    REAL,
-    created    REAL NOT NULL
-);
-CREATE INDEX IF NOT EXISTS simulation_results_oracle ON simulation_results (oracle, version);
-CREATE TABLE IF NOT EXISTS simulation_store (
-    name       TEXT PRIMARY KEY,
-    value      TEXT NOT NULL
-);
-"""
-
-#: The columns of simulation_results in their order (SCHEMA's).
-COLUMNS = ("key", "oracle", "version", "settings", "params", "status", "scores", "record",
-           "error", "attempts", "seconds", "created")
-#: Columns an older layout may lack, and what they are added as (status is
-#: then derived from the scores).
-ADDABLE = {
-    "status": "TEXT NOT NULL DEFAULT 'ok' CHECK (status IN ('ok', 'failed'))",
-    "record": "TEXT",
-    "error": "TEXT",
-    "attempts": "INTEGER NOT NULL DEFAULT 1",
-    "seconds": "REAL",
-    "created": "REAL NOT NULL DEFAULT 0",
-    "settings": "TEXT NOT NULL DEFAULT '{}'",
-}
-
-
-class StoreError(RuntimeError):
-    """A store that cannot be read or written; str() is one line saying
-    what happened and what to do."""
-
-
-
-def canonical(p: Iterable[float]) -> list[float]:
-    """A parameterization as the list of numbers its key is made of."""
-    out = []
-    for v in p:
-        r = round(float(v), DECIMALS)
-        out.append(0.0 if r == 0 else r)
-    return out
-
-
-def oracle_tag(oracle: Oracle) -> str:
-    """The oracle's name, version and settings as one canonical string."""
-    return json.dumps({"name": oracle.name, "version": oracle.version,
-                       "settings": oracle.settings()}, sort_keys=True, separators=(",", ":"))
-
-
-def key(p: Iterable[float], tag: str) -> str:
-    """The key of a parameterization's result under an oracle's tag."""
-    text = json.dumps(canonical(p), separators=(",", ":")) + "|" + tag
-    return hashlib.sha256(text.encode()).hexdigest()
 
 
 @dataclass
@@ -136,50 +74,6 @@ def _nan_json(x: Any) -> Any:
     return x
 
 
-def _connect(path: str | Path, timeout: float = 60.0) -> sqlite3.Connection:
-    """A connection to the store file (made with its folder if need be) in
-    WAL mode, autocommitting: the one way every table of the file is opened."""
-    path = str(path)
-    if path != ":memory:":
-        Path(path).parent.mkdir(parents=True, exist_ok=True)
-    db = sqlite3.connect(path, timeout=timeout, isolation_level=None)
-    db.execute("PRAGMA journal_mode=WAL")
-    db.execute("PRAGMA synchronous=NORMAL")
-    return db
-
-
-def connect(path: str | Path, timeout: float = 60.0) -> sqlite3.Connection:
-    """A connection to the store file (made with its folder if need be) in
-    WAL mode, autocommitting: the one way every table of the file is opened;
-    StoreError in one line if it cannot be opened to be written."""
-    try:
-        return _connect(path, timeout)
-    except (sqlite3.Error, OSError) as e:
-        if _read_only(e):
-            raise StoreError(f"the store {path} cannot be written ({_reason(e)}): give a writable "
-                             f"--store") from None
-        raise _damaged(str(path), e) from None
-
-
-def _reason(e: BaseException) -> str:
-    """An OS or SQLite error in a few words."""
-    if isinstance(e, OSError):
-        return e.strerror or str(e)
-    return " ".join(str(e).replace("*** in database main ***", "").split()).rstrip(".")
-
-
-def _read_only(e: BaseException) -> bool:
-    """Is `e` SQLite or the OS saying the file or its folder cannot be written?"""
-    text = str(e).lower()
-    return (isinstance(e, PermissionError)
-            or any(w in text for w in ("readonly", "read-only", "unable to open", "disk i/o error")))
-
-
-def _damaged(path: str, e: BaseException) -> StoreError:
-    return StoreError(f"the store {path} is damaged ({_reason(e)}): move it aside and run again "
-                      f"to start a new one, or give another --store")
-
-
 class Store:
     """Results of simulations in one SQLite file (or in memory for ':memory:').
 
@@ -199,24 +93,24 @@ class Store:
         try:
             self.db = self._open_writable(timeout)
         except (sqlite3.Error, OSError) as e:
-            if not _read_only(e) or not Path(self.path).is_file():
-                if _read_only(e):
-                    raise StoreError(f"cannot create the store {self.path} ({_reason(e)}): give a "
+            if not read_only(e) or not Path(self.path).is_file():
+                if read_only(e):
+                    raise StoreError(f"cannot create the store {self.path} ({reason(e)}): give a "
                                      f"writable --store") from None
-                raise _damaged(self.path, e) from None
-            self.writable, self.read_only_why = False, _reason(e)
+                raise damaged(self.path, e) from None
+            self.writable, self.read_only_why = False, reason(e)
             self.db = self._open_read_only(timeout)
 
     # -- opening ---------------------------------------------------------------
 
     def _open_writable(self, timeout: float) -> sqlite3.Connection:
         """Opened, checked, migrated if need be, and written once."""
-        db = _connect(self.path, timeout)
+        db = open_file(self.path, timeout)
         try:
-            self._check(db)
+            check(db, self.path)
             db.execute("BEGIN IMMEDIATE")
             try:
-                self._migrate(db)
+                migrate(db, self.path)
                 db.execute("COMMIT")
             except BaseException:
                 db.execute("ROLLBACK")
@@ -225,7 +119,7 @@ class Store:
             db.execute("INSERT OR REPLACE INTO simulation_store VALUES ('opened', ?)",
                        (repr(time.time()),))
             if self.path != ":memory:":
-                self._take_back_recovered(db)
+                store_recovery.take_back(db, self.path)
         except BaseException:
             db.close()
             raise
@@ -244,12 +138,12 @@ class Store:
                 last = e
                 continue
             try:
-                self._check(db)
-                if not self._has_table(db):
+                check(db, self.path)
+                if not has_table(db):
                     raise StoreError(f"the store {self.path} cannot be written "
                                      f"({self.read_only_why}) and holds no simulations yet: give "
                                      f"a writable --store")
-                missing = self._missing_columns(db)
+                missing = missing_columns(db)
                 if missing:
                     raise StoreError(f"the store {self.path} has an older layout (no "
                                      f"{', '.join(missing)}) and cannot be written to bring it up "
@@ -261,48 +155,9 @@ class Store:
             except sqlite3.DatabaseError as e:
                 db.close()
                 last = e
-                if not _read_only(e):
-                    raise _damaged(self.path, e) from None
-        raise StoreError(f"cannot read the store {self.path} ({_reason(last)})")
-
-    def _check(self, db: sqlite3.Connection) -> None:
-        """StoreError for a damaged file (SQLite's quick check)."""
-        try:
-            problems = [r[0] for r in db.execute("PRAGMA quick_check(3)")]
-        except sqlite3.DatabaseError as e:
-            if _read_only(e):
-                raise
-            raise _damaged(self.path, e) from None
-        if problems != ["ok"]:
-            raise _damaged(self.path, RuntimeError(problems[0]))
-
-    @staticmethod
-    def _has_table(db: sqlite3.Connection) -> bool:
-        return db.execute("SELECT 1 FROM sqlite_master WHERE type = 'table' AND "
-                          "name = 'simulation_results'").fetchone() is not None
-
-    @staticmethod
-    def _missing_columns(db: sqlite3.Connection) -> list[str]:
-        have = {row[1] for row in db.execute("PRAGMA table_info(simulation_results)")}
-        return [c for c in COLUMNS if c not in have]
-
-    def _migrate(self, db: sqlite3.Connection) -> None:
-        """Bring an older simulation_results table up to SCHEMA's layout,
-        or StoreError naming the columns it lacks that cannot be made."""
-        if not self._has_table(db):
-            return
-        missing = self._missing_columns(db)
-        if not missing:
-            return
-        lost = [c for c in missing if c not in ADDABLE]
-        if lost:
-            raise StoreError(f"the store {self.path} has a table simulation_results of another "
-                             f"layout (no {', '.join(lost)}): move it aside or give another --store")
-        for c in missing:
-            db.execute(f"ALTER TABLE simulation_results ADD COLUMN {c} {ADDABLE[c]}")
-        if "status" in missing:
-            db.execute("UPDATE simulation_results SET status = "
-                       "CASE WHEN scores IS NULL THEN 'failed' ELSE 'ok' END")
+                if not read_only(e):
+                    raise damaged(self.path, e) from None
+        raise StoreError(f"cannot read the store {self.path} ({reason(last)})")
 
     # -- results -----------------------------------------------------------------
 
@@ -326,7 +181,7 @@ class Store:
                     found[k] = Result(k, status, s, json.loads(record) if record else None, error,
                                       attempts)
         except (sqlite3.DatabaseError, ValueError) as e:
-            raise StoreError(f"cannot read the store {self.path} ({_reason(e)})") from None
+            raise StoreError(f"cannot read the store {self.path} ({reason(e)})") from None
         return found
 
     def get(self, k: str) -> Optional[Result]:
@@ -361,7 +216,7 @@ class Store:
                                     f"VALUES ({', '.join('?' * len(COLUMNS))})", row)
                     return
                 except sqlite3.Error as e:
-                    self.failure = _reason(e)
+                    self.failure = reason(e)
         self.unsaved.append(row)
 
     def save_unsaved(self) -> Optional[Path]:
@@ -371,21 +226,10 @@ class Store:
         file could be written."""
         if not self.unsaved:
             return None
-        text = "".join(json.dumps(dict(zip(COLUMNS, row))) + "\n" for row in self.unsaved)
-        name = f"{Path(self.path).name}.recovered-{time.strftime('%Y%m%d-%H%M%S')}-{os.getpid()}.jsonl"
-        for folder in (Path(self.path).absolute().parent, Path(tempfile.gettempdir())):
-            target = folder / name
-            try:
-                with open(target, "x", encoding="utf-8") as f:
-                    f.write(text)
-                self.unsaved = []
-                return target
-            except OSError:
-                try:
-                    target.unlink()
-                except OSError:
-                    pass
-        return None
+        target = store_recovery.save(self.path, self.unsaved)
+        if target is not None:
+            self.unsaved = []
+        return target
 
     def settle(self) -> None:
         """StoreError if writing failed during the run, after the results
@@ -398,28 +242,6 @@ class Store:
                  f"writable store at {self.path} takes them back if the file is beside it)"
                  if saved else f"the {n} results it could not keep could not be written anywhere")
         raise StoreError(f"the store {self.path} failed during the run ({self.failure}): {where}")
-
-    def _take_back_recovered(self, db: sqlite3.Connection) -> None:
-        """Insert the results of recovery files beside the store (written
-        by an earlier run whose store failed), then remove the files."""
-        path = Path(self.path).absolute()
-        for f in sorted(path.parent.glob(f"{path.name}.recovered-*.jsonl")):
-            try:
-                rows = [json.loads(line) for line in f.read_text(encoding="utf-8").splitlines()
-                        if line.strip()]
-                db.execute("BEGIN IMMEDIATE")
-                try:
-                    db.executemany(
-                        f"INSERT OR IGNORE INTO simulation_results ({', '.join(COLUMNS)}) "
-                        f"VALUES ({', '.join('?' * len(COLUMNS))})",
-                        [tuple(r[c] for c in COLUMNS) for r in rows])
-                    db.execute("COMMIT")
-                except BaseException:
-                    db.execute("ROLLBACK")
-                    raise
-                f.unlink()
-            except (OSError, ValueError, KeyError, TypeError, sqlite3.Error):
-                continue        # left for a later run, or for the person named on the error line
 
     def count(self, status: Optional[str] = None) -> int:
         if status is None:

@@ -27,7 +27,7 @@ from typing import Any, Mapping
 
 import numpy as np
 
-from pantarhei.oracle.store import connect
+from pantarhei.oracle.store_file import connect
 
 SCHEMA = """
 CREATE TABLE IF NOT EXISTS exploration_runs (

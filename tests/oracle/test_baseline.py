@@ -12,7 +12,7 @@ import pytest
 
 from pantarhei.oracle import baseline
 from pantarhei.oracle.physics import PouringOracle
-from pantarhei.oracle.store import key, oracle_tag
+from pantarhei.oracle.result_keys import key, oracle_tag
 
 #: CPU features hidden from the C library, OpenBLAS and numpy: none, then
 #: the wide vector units (what an older x86-64 machine lacks).

@@ -19,7 +19,8 @@ import pytest
 from pantarhei.oracle import baseline
 from pantarhei.oracle.generative import sample
 from pantarhei.oracle.simulator import make_simulator
-from pantarhei.oracle.store import COLUMNS, Store, StoreError
+from pantarhei.oracle.store import Store, StoreError
+from pantarhei.oracle.store_schema import COLUMNS
 
 from ..conftest import assert_one_line_error, run_cli
 
