@@ -18,9 +18,10 @@ from typing import Any, Optional
 import numpy as np
 
 from pantarhei.oracle.base import Oracle, make_oracle
-from pantarhei.oracle.execution import Done, Executor
+from pantarhei.oracle.execution import Done, Executor, OnResult
 from pantarhei.oracle.executors import make_executor
-from pantarhei.oracle.store import Store, key, oracle_tag
+from pantarhei.oracle.result_keys import key, oracle_tag
+from pantarhei.oracle.store import Store
 from pantarhei.theory.lexicon import load_vocabulary
 
 #: Seconds a single simulation may take before it counts as hung.
@@ -72,19 +73,8 @@ class Simulator:
                     scores[i], records[i], errors[i], cached[i] = r.scores, r.record, r.error, True
             else:
                 todo.append((rows[0], P[rows[0]]))
-
-        if self.store is not None:       # a store that cannot take them: before the first pour
-            self.store.require_writable(len(todo))
-        cost = getattr(self.oracle, "cost", None)
-        if cost is not None:
-            # longest first, so that no long simulation is left running alone at the end
-            todo.sort(key=lambda t: -float(cost(t[1])))
-
-        bar = None
-        if progress:
-            from tqdm import tqdm
-            bar = tqdm(total=n, initial=n - sum(len(rows_of[keys[i]]) for i, _ in todo),
-                       unit="sim", desc="simulating", dynamic_ncols=True)
+        self._schedule(todo)
+        bar = _progress_bar(n, n - sum(len(rows_of[keys[i]]) for i, _ in todo)) if progress else None
 
         def on_result(d: Done) -> None:
             k = keys[d.index]
@@ -100,6 +90,25 @@ class Simulator:
                 if d.error:
                     bar.set_postfix_str("failed: " + d.error[:40])
 
+        self._run(todo, on_result, bar)
+        self.last_records, self.last_errors, self.last_cached = records, errors, cached
+        self.last_simulated = len(todo)
+        return scores
+
+    def _schedule(self, todo: list[tuple[int, np.ndarray]]) -> None:
+        """StoreError if the store cannot take the results of `todo` (before
+        the first pour); then `todo` longest first."""
+        if self.store is not None:       # a store that cannot take them: before the first pour
+            self.store.require_writable(len(todo))
+        cost = getattr(self.oracle, "cost", None)
+        if cost is not None:
+            # longest first, so that no long simulation is left running alone at the end
+            todo.sort(key=lambda t: -float(cost(t[1])))
+
+    def _run(self, todo: list[tuple[int, np.ndarray]], on_result: OnResult,
+             bar: Any) -> None:
+        """Simulate `todo`; StoreError after the last pour (naming the
+        recovery file) if writing failed."""
         try:
             self.executor.run(self.oracle, todo, on_result, self.timeout)
         except BaseException:
@@ -111,9 +120,6 @@ class Simulator:
                 bar.close()
         if self.store is not None:      # StoreError naming the recovery file if writing failed
             self.store.settle()
-        self.last_records, self.last_errors, self.last_cached = records, errors, cached
-        self.last_simulated = len(todo)
-        return scores
 
     def _cut_short(self, error: Optional[str]) -> bool:
         """Did a stored failure time out under a shorter limit than this
@@ -131,6 +137,12 @@ class Simulator:
 
     def __exit__(self, *exc: Any) -> None:
         self.close()
+
+
+def _progress_bar(n: int, done: int) -> Any:
+    """A progress bar of n simulations, `done` of them from the store."""
+    from tqdm import tqdm
+    return tqdm(total=n, initial=done, unit="sim", desc="simulating", dynamic_ncols=True)
 
 
 def make_simulator(oracle: str | Oracle = "pybullet", executor: str = "local",
