@@ -8,7 +8,7 @@ the theory answers the one-phrase questions.
 
 For each learned theory: its explored antecedents and their distinct
 consequents, the behaviours its pours show; the model of its pours
-(bridge/learning/generalize.py, `Meaning`) against `--pours` pours drawn
+(bridge/learning/meaning.py, `Meaning`) against `--pours` pours drawn
 from the priors (seeded, simulated by the theory's oracle through the
 store): the mean over the nine expectations of the gap between the share
 of those pours that keep it and the share the model expects, and how
@@ -35,7 +35,8 @@ def measure(path: Path, pours: int, seed: int, report: Path) -> dict:
     from pantarhei.bridge.evaluation.pipeline import exploration_draws, read_learned
     from pantarhei.bridge.evaluation.rule_building import predict
     from pantarhei.bridge.exploration.simulation import open_simulator
-    from pantarhei.bridge.learning.generalize import Meaning, Settings
+    from pantarhei.bridge.learning.generalize import Settings
+    from pantarhei.bridge.learning.meaning import Meaning
     from pantarhei.bridge.theories.loading import load
     from pantarhei.oracle.generative import normalise, sample
     from pantarhei.oracle.store import DEFAULT_STORE

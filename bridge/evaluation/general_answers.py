@@ -88,7 +88,8 @@ def general_theories(ev, theory: Theory, methods: dict, held: dict,
 def _method(k: _Keys, m, seed: int, run: Callable[..., np.ndarray], first: bool) -> dict[str, Any]:
     """One method's entry: its general rules, boosting and defaults-only; the
     first method's defaults-only theory sets the contrast keys."""
-    from pantarhei.bridge.learning.generalize import Meaning, Settings
+    from pantarhei.bridge.learning.generalize import Settings
+    from pantarhei.bridge.learning.meaning import Meaning
     from pantarhei.bridge.learning.layers import learn_general
 
     names = load_vocabulary().expectation_names

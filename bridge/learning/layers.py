@@ -28,7 +28,9 @@ from typing import Sequence
 import numpy as np
 
 from pantarhei.bridge.files import write_text
-from pantarhei.bridge.learning.generalize import General, Settings, generalize, rank, together
+from pantarhei.bridge.learning.askable import together
+from pantarhei.bridge.learning.general_rules import General, rank
+from pantarhei.bridge.learning.generalize import Settings, generalize
 from pantarhei.bridge.theories.model import Theory, complement
 from pantarhei.bridge.theories.native import read_native
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from pantarhei.bridge.learning.generalize import General, GeneralRule
+from pantarhei.bridge.learning.general_rules import General, GeneralRule
 from pantarhei.bridge.learning.layers import ranked_rules, superiority
 from pantarhei.bridge.reasoning.logic import ENGINES, Semantics, conclusions
 from pantarhei.bridge.theories.model import Rule, Theory

@@ -1,0 +1,85 @@
+"""What a general rule means, and how the learner knows it: P(e | B).
+
+A rule `B => e` (or `B => neg(e)`) speaks of the pours `pantarhei simulate
+--antecedent B` samples for B: B as asked, everything it leaves unsaid as
+the ordinary pour (the priors). Its `confidence` is the share of those
+pours that keep its head, so the likelihood that e holds when B is asked
+is the confidence of a rule for e, one minus that of a rule for neg(e).
+Its evidence is the pours learned from that could have been drawn for B
+(in the support of P(.|B)): `support` of them, `kept` of which keep the
+head.
+
+How P(e | B) is known. A gradient-boosted classifier of each verdict from
+the 30 parameters is trained on every pour (the model of the pours), and
+averaged over `samples` parameterizations drawn from P(.|B) (`Meaning`).
+Importance weights alone cannot do it: an explored antecedent moves the
+parameters it names outside what a short question draws, so few explored
+pours lie in the support of P(.|B) for most B.
+"""
+from __future__ import annotations
+
+import zlib
+from typing import TYPE_CHECKING, Sequence
+
+import numpy as np
+
+from pantarhei.oracle.generative import InvalidAntecedent, normalise, sample
+
+if TYPE_CHECKING:
+    from pantarhei.bridge.learning.generalize import Settings
+
+
+def _seed(seed: int, body: Sequence[str]) -> int:
+    return int(np.random.SeedSequence([int(seed), zlib.crc32(" ".join(body).encode())])
+               .generate_state(1)[0])
+
+
+class Meaning:
+    """P(e | B) for every expectation e: the model of the pours (one
+    gradient-boosted classifier per expectation, on the 30 parameters),
+    averaged over parameterizations drawn from P(.|B)."""
+
+    def __init__(self, P: np.ndarray, Y: np.ndarray, settings: Settings):
+        from sklearn.ensemble import HistGradientBoostingClassifier
+
+        self.settings = settings
+        X = normalise(P)
+        self.models: list = []
+        for k in range(Y.shape[1]):
+            y = Y[:, k]
+            if y.all() or not y.any():
+                self.models.append(float(y[0]) if len(y) else 0.5)
+                continue
+            m = HistGradientBoostingClassifier(max_depth=3, max_iter=150, learning_rate=0.1,
+                                               min_samples_leaf=10, early_stopping=False,
+                                               random_state=settings.seed)
+            self.models.append(m.fit(X, y))
+
+    def __call__(self, bodies: Sequence[tuple[str, ...]]) -> np.ndarray:
+        """len(bodies) x 9: the estimated P(e | B); NaN where B cannot be
+        sampled. Shorter bodies, which more questions fall back on, get
+        more draws: `samples` for a pair, 4 times as many for one
+        proposition, 16 times for the empty body."""
+        out = np.full((len(bodies), len(self.models)), np.nan)
+        rows, ok, sizes = [], [], []
+        for i, b in enumerate(bodies):
+            n = self.settings.samples * {0: 16, 1: 4}.get(len(b), 1)
+            try:
+                rows.append(sample(list(b), n, _seed(self.settings.seed, b)))
+            except InvalidAntecedent:
+                continue
+            ok.append(i)
+            sizes.append(n)
+        if not rows:
+            return out
+        p = self.shares(normalise(np.vstack(rows)))
+        ends = np.cumsum(sizes)
+        for i, start, end in zip(ok, ends - sizes, ends):
+            out[i] = p[start:end].mean(axis=0)
+        return out
+
+    def shares(self, X: np.ndarray) -> np.ndarray:
+        """len(X) x 9: the chance that each expectation holds, per pour
+        (rows of normalised parameters)."""
+        return np.column_stack([np.full(len(X), m) if isinstance(m, float) else m.predict_proba(X)[:, 1]
+                                for m in self.models])
