@@ -75,7 +75,8 @@ def test_readme_types_in_no_measured_figures():
     """The figures are report/'s (written by `make evaluate`) and the
     benchmarks' own: README links them and types none in, so learning the
     theory again never leaves README behind."""
-    from pantarhei.bridge.evaluation.report import headline, load
+    from pantarhei.bridge.evaluation.headline import headline
+    from pantarhei.bridge.evaluation.report import load
 
     assert "<!-- evaluation:" not in README
     assert re.findall(r"\d\s?%", README) == []                  # no percentages

@@ -35,7 +35,8 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def evaluate(args: argparse.Namespace) -> int:
     from pantarhei.bridge.evaluation.pipeline import Options, evaluate as run
-    from pantarhei.bridge.evaluation.report import headline, write
+    from pantarhei.bridge.evaluation.headline import headline
+    from pantarhei.bridge.evaluation.report import write
     from pantarhei.bridge.files import require_writable_file
 
     theory = Path(args.theory)

@@ -184,7 +184,8 @@ def test_behaviours_seen_by_every_search_method_with_the_same_budget(evaluated):
 
 
 def test_the_report_and_its_figures(evaluated, tmp_path):
-    from pantarhei.bridge.evaluation.report import headline, write
+    from pantarhei.bridge.evaluation.headline import headline
+    from pantarhei.bridge.evaluation.report import write
 
     ev, _ = evaluated
     path = write(ev, tmp_path / "rep", gifs=False)
