@@ -102,83 +102,118 @@ def speed(n: int = 10_000, seed: int = SEED) -> tuple[int, float]:
     return len(P), time.perf_counter() - t
 
 
+def scored(sets: dict[str, Pours], oracle: str, store: Path | None) -> dict[str, Pours]:
+    """Every set scored: by PyBullet through the store, or by another
+    oracle inline without one."""
+    if oracle == "pybullet":
+        return simulate(sets, store)
+    from pantarhei.oracle.simulator import make_simulator
+
+    sim = make_simulator(oracle, executor="inline", store=None)
+    for s in sets.values():
+        s.S = np.asarray(sim.simulate(s.P), dtype=float)
+    sim.close()
+    return sets
+
+
 def run(oracle: str = "pybullet", store: Path | None = STORE, seed: int = SEED,
         prolog_sample: int = 60) -> dict:
-    from pantarhei.bridge.evaluation.measures import (accuracy, model_predictions, question_key,
-                                                      question_scores, verdicts)
-    from pantarhei.bridge.evaluation.questions import questions
+    from pantarhei.bridge.evaluation.measures import question_key, verdicts
     from pantarhei.bridge.evaluation.rule_building import predict
     from pantarhei.bridge.learning.generalize import Settings, generalize
     from pantarhei.oracle.generative import describe
-    from pantarhei.theory.lexicon import load_vocabulary
 
-    names = load_vocabulary().expectation_names
-    sets = draw(seed)
-    if oracle == "pybullet":
-        sets = simulate(sets, store)
-    else:
-        from pantarhei.oracle.simulator import make_simulator
-
-        sim = make_simulator(oracle, executor="inline", store=None)
-        for s in sets.values():
-            s.S = np.asarray(sim.simulate(s.P), dtype=float)
-        sim.close()
+    sets = scored(draw(seed), oracle, store)
     tr, ho, qs = sets["train"], sets["heldout"], sets["questions"]
     report: dict = {"oracle": oracle, "pours": {k: len(v.P) for k, v in sets.items()}}
-    train_desc = describe(tr.P)
-    Y = verdicts(tr.S)
     y_held = verdicts(ho.S)
-    held_scenes = [ho.antecedents[i] for i in ho.of]
+    held = {"antecedent": [ho.antecedents[i] for i in ho.of], "description": describe(ho.P)}
     key, clear = question_key(qs.S, qs.of, len(qs.antecedents))
     report["questions_clear"] = int(clear.sum())
     for meaning in ("prior", "pours"):
         t = time.perf_counter()
         g = generalize(tr.P, tr.S, Settings(seed=seed, meaning=meaning))
-        secs = time.perf_counter() - t
-        r: dict = {"seconds": round(secs, 1),
-                   "rules_per_expectation": len(g.rules) / len(names),
-                   "rules": {e: len(g.of(e)) for e in names}}
-        for label, scenes in (("antecedent", held_scenes), ("description", describe(ho.P))):
-            a = accuracy(g.predict(scenes), y_held)
-            r[f"heldout_{label}"] = {"coverage": a.overall_coverage, "accuracy": a.overall_accuracy}
-        r["questions"] = question_scores(g.predict(qs.antecedents), key, clear)
-        report[f"meaning_{meaning}"] = r
+        report[f"meaning_{meaning}"] = _measured(g, time.perf_counter() - t, held, y_held,
+                                                 qs.antecedents, key, clear)
         if meaning == "prior":
             general = g
-            # what the defaults alone would say: how much the exceptions add
-            defaults = type(g)(rules=[x for x in g.rules if not x.body])
-            report["defaults_only"] = {
-                "heldout_antecedent": accuracy(defaults.predict(held_scenes), y_held).overall_accuracy,
-                "questions": question_scores(defaults.predict(qs.antecedents), key, clear)["accuracy"]}
-            # the clear verdicts of the questions that the defaults get wrong
-            hard = clear & (defaults.predict(qs.antecedents) != key)
-            report["questions_against_the_default"] = {
-                "cases": int(hard.sum()),
-                "right": int(((g.predict(qs.antecedents) == key) & hard).sum())}
-    for label, scenes in (("antecedent", held_scenes), ("description", describe(ho.P))):
-        for name, pred in model_predictions(train_desc, Y, scenes, seed).items():
-            a = accuracy(pred, y_held)
-            report[f"{name}_{label}"] = {"coverage": a.overall_coverage, "accuracy": a.overall_accuracy}
-    for name, pred in model_predictions(train_desc, Y, qs.antecedents, seed).items():
-        report[f"{name}_questions"] = question_scores(pred, key, clear)
-    # the questions one by one, as the general theory answers them
-    pred = general.predict(qs.antecedents)
-    report["by_question"] = [
-        {"text": q.text, "wrong": [names[k] for k in range(len(names))
-                                      if clear[i, k] and pred[i, k] != -1 and pred[i, k] != key[i, k]]}
-        for i, q in enumerate(questions())]
+            report.update(_against_defaults(g, held["antecedent"], y_held, qs.antecedents, key, clear))
+    report.update(_models(describe(tr.P), verdicts(tr.S), held, y_held, qs.antecedents, key, clear, seed))
+    report["by_question"] = _by_question(general, qs.antecedents, key, clear)
     # importance weights: the explored pours in the support of P(.|B)
     report["pours_in_prior_support"] = dict(zip(
         ["(none)"] + [" ".join(b) for b in qs.antecedents[:5]],
         in_prior_support(tr.P, [()] + qs.antecedents[:5])))
     # SWI-Prolog decides as the learner says
-    scenes = held_scenes[:prolog_sample // 2] + qs.antecedents[:prolog_sample // 2]
+    scenes = held["antecedent"][:prolog_sample // 2] + qs.antecedents[:prolog_sample // 2]
     agree = (predict(general.theory("general"), scenes) == general.predict(scenes)).mean()
     report["prolog_agreement"] = float(agree)
     report["rules"] = [{"id": r.id, "body": list(r.body), "head": r.head, "support": r.support,
                         "kept": r.kept, "confidence": round(r.confidence, 3), "level": r.level}
                        for r in general.rules]
     return report
+
+
+def _measured(g, secs: float, held: dict, y_held: np.ndarray, asked: list,
+              key: np.ndarray, clear: np.ndarray) -> dict:
+    """A general theory's rules, and its held-out and question scores."""
+    from pantarhei.bridge.evaluation.measures import accuracy, question_scores
+    from pantarhei.theory.lexicon import load_vocabulary
+
+    names = load_vocabulary().expectation_names
+    r: dict = {"seconds": round(secs, 1),
+               "rules_per_expectation": len(g.rules) / len(names),
+               "rules": {e: len(g.of(e)) for e in names}}
+    for label, scenes in held.items():
+        a = accuracy(g.predict(scenes), y_held)
+        r[f"heldout_{label}"] = {"coverage": a.overall_coverage, "accuracy": a.overall_accuracy}
+    r["questions"] = question_scores(g.predict(asked), key, clear)
+    return r
+
+
+def _against_defaults(g, held_scenes: list, y_held: np.ndarray, asked: list,
+                      key: np.ndarray, clear: np.ndarray) -> dict:
+    """What the defaults alone would say (how much the exceptions add),
+    and the clear verdicts of the questions that the defaults get wrong."""
+    from pantarhei.bridge.evaluation.measures import accuracy, question_scores
+
+    defaults = type(g)(rules=[x for x in g.rules if not x.body])
+    hard = clear & (defaults.predict(asked) != key)
+    return {"defaults_only": {
+                "heldout_antecedent": accuracy(defaults.predict(held_scenes), y_held).overall_accuracy,
+                "questions": question_scores(defaults.predict(asked), key, clear)["accuracy"]},
+            "questions_against_the_default": {
+                "cases": int(hard.sum()),
+                "right": int(((g.predict(asked) == key) & hard).sum())}}
+
+
+def _models(train_desc, Y: np.ndarray, held: dict, y_held: np.ndarray, asked: list,
+            key: np.ndarray, clear: np.ndarray, seed: int) -> dict:
+    """The decision tree and gradient boosting, trained on the same pours
+    with the same features, on the held-out scenes and the questions."""
+    from pantarhei.bridge.evaluation.measures import accuracy, model_predictions, question_scores
+
+    out: dict = {}
+    for label, scenes in held.items():
+        for name, pred in model_predictions(train_desc, Y, scenes, seed).items():
+            a = accuracy(pred, y_held)
+            out[f"{name}_{label}"] = {"coverage": a.overall_coverage, "accuracy": a.overall_accuracy}
+    for name, pred in model_predictions(train_desc, Y, asked, seed).items():
+        out[f"{name}_questions"] = question_scores(pred, key, clear)
+    return out
+
+
+def _by_question(general, asked: list, key: np.ndarray, clear: np.ndarray) -> list[dict]:
+    """The questions one by one, as the general theory answers them: the
+    clear verdicts it decides wrongly."""
+    from pantarhei.bridge.evaluation.questions import questions
+    from pantarhei.theory.lexicon import load_vocabulary
+
+    names = load_vocabulary().expectation_names
+    pred = general.predict(asked)
+    return [{"text": q.text, "wrong": [names[k] for k in range(len(names))
+                                       if clear[i, k] and pred[i, k] != -1 and pred[i, k] != key[i, k]]}
+            for i, q in enumerate(questions())]
 
 
 def answer_time(repeats: int = 3) -> dict:
