@@ -130,14 +130,11 @@ def run(oracle: str = "pybullet", store: Path | None = STORE, seed: int = SEED,
     held = {"antecedent": [ho.antecedents[i] for i in ho.of], "description": describe(ho.P)}
     key, clear = question_key(qs.S, qs.of, len(qs.antecedents))
     report["questions_clear"] = int(clear.sum())
-    for meaning in ("prior", "pours"):
-        t = time.perf_counter()
-        g = generalize(tr.P, tr.S, Settings(seed=seed, meaning=meaning))
-        report[f"meaning_{meaning}"] = _measured(g, time.perf_counter() - t, held, y_held,
-                                                 qs.antecedents, key, clear)
-        if meaning == "prior":
-            general = g
-            report.update(_against_defaults(g, held["antecedent"], y_held, qs.antecedents, key, clear))
+    t = time.perf_counter()
+    general = generalize(tr.P, tr.S, Settings(seed=seed))
+    report["general"] = _measured(general, time.perf_counter() - t, held, y_held,
+                                  qs.antecedents, key, clear)
+    report.update(_against_defaults(general, held["antecedent"], y_held, qs.antecedents, key, clear))
     report.update(_models(describe(tr.P), verdicts(tr.S), held, y_held, qs.antecedents, key, clear, seed))
     report["by_question"] = _by_question(general, qs.antecedents, key, clear)
     # importance weights: the explored pours in the support of P(.|B)
