@@ -1,5 +1,8 @@
-"""modify, run by the real SWI-Prolog: only valid, new antecedents that move
-along the direction."""
+"""modify, run by the real SWI-Prolog from Python: on random antecedents and
+directions, only valid, new antecedents that move along the direction, as
+Python's validity checks and generative models see them. The single steps
+(up and down a graded dimension, a free parameter, an invalid step, the
+direction) are plunit tests beside the module: theory/curiosity/modify.plt."""
 from __future__ import annotations
 
 import numpy as np
@@ -18,8 +21,6 @@ NAMES = V.parameter_names
 @pytest.fixture(scope="module")
 def eng():
     return install()
-
-
 
 
 def parse(eng, props, direction, breadth, exclude):
@@ -81,35 +82,3 @@ def test_modify_keeps_only_valid_new_antecedents_moving_along_the_direction(eng)
                 pa, pr = V.propositions[a], V.propositions[r]
                 assert pa.dimension == pr.dimension and abs(pa.rank - pr.rank) == 1
     assert seen > 50
-
-
-def test_modify_steps_a_graded_dimension_once(eng):
-    # pour_z is drawn by pour_low: a positive direction steps to pour_mid_height
-    new = parse(eng, ["pour_low", "pour_steeply_tilted"], [("pour_z", 1.0)], 1, [])
-    assert new == [(("pour_mid_height", "pour_steeply_tilted"), "pour_z", "up")]
-    new = parse(eng, ["pour_low", "pour_steeply_tilted"], [("pour_z", -1.0)], 1, [])
-    assert new == [(("pour_below_rim", "pour_steeply_tilted"), "pour_z", "down")]
-
-
-def test_modify_adds_propositions_for_a_free_parameter(eng):
-    # particle_mass is free (the ordinary pour's prior: a medium liquid, mean
-    # 2250 mg): up adds heavy_liquid only, down light_liquid only
-    up = parse(eng, ["pour_low"], [("particle_mass", 2.0)], 1, [])
-    assert [p for p, _, _ in up] == [("heavy_liquid", "pour_low")]
-    down = parse(eng, ["pour_low"], [("particle_mass", -2.0)], 1, [])
-    assert sorted(p for p, _, _ in down) == [("light_liquid", "pour_low")]
-
-
-def test_modify_never_returns_an_invalid_antecedent(eng):
-    # pour_low near the rim, stepping down to pour_below_rim conflicts
-    # (inside_destination): nothing is returned
-    assert parse(eng, ["pour_low", "pour_near_rim"], [("pour_z", -1.0)], 1, []) == []
-
-
-def test_direction_points_towards_the_other_verdict(eng):
-    sol = eng.once("curiosity:direction([a-1.0, b-(-2.0)], 0.8, D), "
-                   "findall(G, member(_-G, D), Gs)")
-    assert sol["Gs"] == [-1.0, 2.0]
-    sol = eng.once("curiosity:direction([a-1.0, b-(-2.0)], 0.3, D), "
-                   "findall(G, member(_-G, D), Gs)")
-    assert sol["Gs"] == [1.0, -2.0]
