@@ -34,8 +34,11 @@ DEFAULTS_FILE = THEORY_DIR / "defaults.pl"
 def defaults() -> Mapping[str, object]:
     """theory/defaults.pl as a read-only mapping, read once per process:
     `default(Key, V)` facts by key (a `Key_permille` value becomes `Key` as a
-    float), and `initial`, the tuple of default_initial/1 propositions in
-    file order."""
+    float), the defaults of the option table (`option/5`, as
+    pantarhei.theory.option_table reads them), and `initial`, the tuple of
+    default_initial/1 propositions in file order."""
+    from pantarhei.theory.option_table import option_table
+
     facts = read_facts([DEFAULTS_FILE])
     out: dict[str, object] = {}
     for key, value in facts.get("default", []):
@@ -43,6 +46,9 @@ def defaults() -> Mapping[str, object]:
             out[key[: -len("_permille")]] = value / 1000
         else:
             out[key] = {"true": True, "false": False}.get(value, value) if isinstance(value, str) else value
+    for o in option_table():
+        if o.default is not None:
+            out.setdefault(o.name, o.default)
     out["initial"] = tuple(p for (p,) in facts.get("default_initial", []))
     return MappingProxyType(out)
 

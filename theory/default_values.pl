@@ -5,7 +5,8 @@
 /** <module> The project's defaults, read from theory/defaults.pl
 
 theory/defaults.pl holds every default of the project as ground facts,
-written once; this module reads them for the Prolog side (Python reads the
+written once (those of explore/1's options in its option table); this
+module reads them for the Prolog side (Python reads the
 same file: pantarhei.theory.defaults).
 */
 
@@ -21,6 +22,12 @@ default(Key, Value) :-
     ->  Value is Value0 / 1000
     ;   Key = Key0, Value = Value0
     ).
+default(Key, Value) :-                  % an option's default in the option table
+    defaults:option(Key, Type, _, Value0, _),
+    Value0 \== none,
+    Value0 \= default(_),
+    (   Type == permille -> Value is Value0 / 1000 ; Value = Value0 ).
+
 
 %!  default_initial(-Props:list) is det.
 %

@@ -3,50 +3,116 @@
 % (pantarhei.theory.defaults: the command line and its help).
 % Common subset of Prolog and ASP: ground facts, no floats (permille).
 
-% Algorithm 1 (pantarhei explore): the curiosity (discover: planes tested
-% against shuffled pours, and candidates (moves past a significant plane's
-% flip, neighbours, random jumps) ranked by the novelty a forest of every
-% pour so far predicts, then probed; paper: the paper's own variant), the
-% oracle, the budget (explored antecedents for paper; for discover, the
-% pours of as many batches), the threshold (for discover, the significance
-% level of the permutation test with its number of shuffles; for paper,
-% the slope below which nothing new is explored), how many more batches an
-% antecedent gets when nothing new is queued after it, the novelty a
-% candidate needs to be queued (scaled by the probes' mean score so far),
-% how many A_new keeps, how many random valid
-% antecedents each step draws as candidates (jumps), the pours of a probe
-% (discover: the first pours of a candidate's batch, simulated before the
-% rest; a candidate whose probe shows no new, reproducible consequent is
-% set aside for the next, at most probe_attempts candidates a step; 0: no
-% probes; the last of them goes to the candidate whose rarest proposition
-% fewer than cover pours so far hold, the fewest, 0: never), whether
-% (1) or not (0) the discovering curiosity explores the priors (the empty
-% antecedent: every parameter drawn from its prior, as the parameters a
-% question leaves unsaid are) with the last batch of the budget, the ridge of the plane fits, the seed, how many gradient
-% components the paper's modify follows, and how an antecedent's
-% consequent is qualified (weighted vote or the paper's argmax).
-default(curiosity, discover).
-default(oracle, pybullet).
-default(max_rules, 25).
-default(significance_permille, 50).
-default(permutations, 199).
-default(resample, 2).
-default(novelty_permille, 100).
-default(queue, 100).
-default(jumps, 31).
-default(probe, 8).
-default(probe_attempts, 3).
-default(cover, 0).
-default(prior, 1).
-default(threshold_permille, 100).
-default(ridge_permille, 1000).
-default(seed, 1).
-default(breadth, 3).
-default(qualify, weighted).
+% The options of Algorithm 1 (pantarhei explore, explore/1), each declared
+% once: option(Name, Type, Range, Default, Help). From this table come the
+% command line (--name, underscores as dashes; --no-name for a flag whose
+% default is true), the checks of explore/1's options
+% (theory/curiosity/settings.pl), the options Python passes to explore/1,
+% the reference page docs/options.md, and default(Name, Value) for Prolog
+% and Python (theory/default_values.pl, pantarhei.theory.defaults).
+% Type and Range:
+%   count, range(Low, High): a whole number from Low to High;
+%   permille, range(Low, High): a number from Low/1000 to High/1000
+%     (High none: no bound), its default in thousandths;
+%   choice, one_of(A, B, ...): one of those;
+%   oracle, one_of(A, B, ...): an oracle, those the command line offers;
+%   flag, none: true or false;
+%   antecedent, none: a valid antecedent (propositions);
+%   path, none and text, none: a file, or text.
+% A Default none is set otherwise: the help says how (a_0's are the
+% default_initial facts below). Default default(Key) is the project's
+% default(Key, Value) below.
+option(curiosity, choice, one_of(discover, paper), discover,
+  "discover: queue the candidates (moves past where a significant plane's verdict flips, neighbours, random jumps) a forest of the pours so far predicts to show something new, most novel first; paper: Algorithm 1 as the paper states it").
+option(oracle, oracle, one_of(pybullet, synthetic), pybullet,
+  "the simulation, or analytic test scores (synthetic)").
+option(max_rules, count, range(1, 100000), 25,
+  "the budget: this many explored antecedents (paper), the pours of this many batches (discover)").
+option(samples, count, range(1, 10000), none,
+  "simulations per explored antecedent (default: parameters + 1)").
+option(threshold, permille, range(0, none), none,
+  "discover: the significance level of the permutation test, at most 1 (default 0.05); paper: the plane slope below which nothing new is explored (default 0.1)").
+option(permutations, count, range(1, 1000000), 199,
+  "discover: shuffles of the permutation test").
+option(resample, count, range(0, 1000000), 2,
+  "discover: more batches of an antecedent whose planes are all undecided and that queued nothing new").
+option(novelty, permille, range(0, 1000), 100,
+  "discover: the predicted novelty, from 0 to 1, a candidate needs to be queued, scaled by the probes' mean score so far").
+option(queue, count, range(1, 1000000), 100,
+  "discover: A_new keeps this many most novel candidates").
+option(jumps, count, range(1, 1000000), 31,
+  "discover: uniformly random valid antecedents drawn as candidates each step").
+option(probe, count, range(0, 10000), 8,
+  "discover: simulate this many pours of a candidate's batch first, and set it aside for the next when they show no new, reproducible consequent; 0: no probes").
+option(probe_attempts, count, range(1, 1000000), 3,
+  "discover: candidates probed at most in a step; then the one whose probe scored best is explored").
+option(cover, count, range(0, 1000000), 0,
+  "discover: the last probe of a step goes to the candidate whose rarest proposition the fewest pours so far hold, when fewer than this many do; 0: never").
+option(prior, choice, one_of(0, 1), 1,
+  "discover: 1 to explore the priors (nothing said: every parameter from its prior, as a question's unsaid ones) with the budget's last batch, 0 not to").
+option(seed, count, range(0, 2147483647), 1,
+  "seed of every random choice").
+option(initial, antecedent, none, none,
+  "the initial antecedent a_0, propositions separated by commas").
+option(breadth, count, range(1, 1000000), 3,
+  "paper: modify steps the parameters of this many largest gradient components").
+option(ridge, permille, range(0, none), 1000,
+  "L2 penalty of the plane fits on normalised parameters; 0 is the paper's plain least squares").
+option(qualify, choice, one_of(weighted, argmax), weighted,
+  "the consequent of an antecedent: the weighted vote of its simulations (weighted) or the simulation of largest weight (argmax, the paper's)").
+option(store, path, none, default(store),
+  "SQLite file of simulations and exploration state").
+option(out, path, none, default(theory),
+  "the learned theory; the trace (.trace.jsonl) and its plot (.trace.png) go beside it").
+option(resume, flag, none, false,
+  "continue the saved exploration with the same settings").
+option(general, flag, none, true,
+  "--no-general: write Algorithm 1's rules only, without the general rules learned from every pour").
+option(executor, choice, one_of(local, ray, inline), local,
+  "worker processes here, a Ray cluster, or this process").
+option(workers, count, range(1, 1024), none,
+  "worker processes (default: one per core)").
+option(ray_address, text, none, none,
+  "Ray cluster to join (with --executor ray; default: start a local Ray on this machine)").
+option(progress, flag, none, true,
+  "--no-progress: no progress bar").
 
-% After Algorithm 1, learn general rules from every pour of the
-% exploration and add them to the theory (bridge/learning/): true or false.
-default(general, true).
+% The options that decide an exploration's course, hashed into its run
+% key (bridge/exploration/opening.py; a saved run resumes only with the
+% same): course(Name, When), When every (every run), discover (runs of the
+% discovering curiosity) or nonzero(Option) (runs where Option is not 0:
+% those without it keep their keys). A name with several facts needs all.
+course(oracle, every).
+course(seed, every).
+course(samples, every).
+course(threshold, every).
+course(initial, every).
+course(breadth, every).
+course(ridge, every).
+course(curiosity, discover).
+course(permutations, discover).
+course(resample, discover).
+course(novelty, discover).
+course(queue, discover).
+course(jumps, discover).
+course(probe, discover).
+course(probe, nonzero(probe)).
+course(probe_attempts, discover).
+course(probe_attempts, nonzero(probe)).
+course(cover, discover).
+course(cover, nonzero(probe)).
+course(cover, nonzero(cover)).
+course(prior, discover).
+course(prior, nonzero(prior)).
+
+% The defaults of explore/1 set otherwise: the significance level of the
+% discovering curiosity's permutation test and the paper's slope below
+% which nothing new is explored (threshold, by curiosity).
+default(significance_permille, 50).
+default(threshold_permille, 100).
+
+% After Algorithm 1, the general rules are learned from every pour of the
+% exploration (option general above; bridge/learning/).
 % Before learning them, the learner simulates pours of its own for the
 % ordinary pour and for each proposition asked alone that fewer explored
 % pours hold than this (bridge/learning/gaps.py).

@@ -109,6 +109,38 @@ def add_seed(p: argparse.ArgumentParser, default: int | None = None, what: str =
                    help=f"seed of {what}, 0 to {SEED_MAX} (default {value})")
 
 
+def add_table_option(p: argparse.ArgumentParser, o) -> None:
+    """The flag of a row of the option table (pantarhei.theory.option_table):
+    its type and range checked as the arguments are parsed, its help the
+    table's with the default."""
+    from pantarhei.theory.option_table import default_text
+
+    kw: dict = {"dest": o.name, "help": o.help}
+    if o.type == "flag":
+        kw.update(action="store_false" if o.default else "store_true", default=o.default)
+        p.add_argument(o.flag, **kw)
+        return
+    if o.type == "count":
+        kw["type"] = count(int(o.low), int(o.high) if o.high is not None else COUNT_MAX)
+    elif o.type == "permille":
+        kw["type"] = number(o.low, o.high if o.high is not None else math.inf)
+    elif o.choices:
+        kw["choices"] = o.choices
+        if all(isinstance(c, int) for c in o.choices):
+            kw["type"] = int
+    elif o.type == "antecedent":
+        kw["metavar"] = "P1,P2,..."
+    shown = default_text(o)
+    if o.type == "path":
+        value = DEFAULT_THEORY if o.ref == "theory" else Path(str(o.default))
+        kw["default"], shown = str(value), _shown(value)
+    elif o.type != "antecedent":
+        kw["default"] = o.default
+    if shown:
+        kw["help"] += f" (default {shown})"
+    p.add_argument(o.flag, **kw)
+
+
 def _shown(path) -> str:
     try:
         return str(Path(path).resolve().relative_to(Path.cwd()))

@@ -1,98 +1,73 @@
 """Running Algorithm 1 from Python: the options of one exploration and
 `explore(options)`, which asks theory/curiosity.pl to explore and returns
-what it did. Defaults come from theory/defaults.pl."""
+what it did. The options and their defaults are the option table of
+theory/defaults.pl."""
 from __future__ import annotations
 
 import json
 import time
-from dataclasses import dataclass, field
+from dataclasses import field, make_dataclass
 from pathlib import Path
-from typing import Any, Sequence
+from typing import Any
 
-from pantarhei.bridge.engines.swipl import prolog_quote, text
+from pantarhei.bridge.engines.swipl import prolog_quote
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.exploration.session import error_text, install
-from pantarhei.bridge.theories.loading import DEFAULT_THEORY
-from pantarhei.oracle.store import DEFAULT_STORE
-from pantarhei.theory import defaults
+from pantarhei.theory import THEORY_DIR
+from pantarhei.theory.option_table import Option, option_table
 
 
-def _default(key: str) -> Any:
-    return field(default_factory=lambda: defaults()[key])
+def _field(o: Option) -> tuple[str, Any, Any]:
+    """The dataclass field of a row of the option table: its default, a
+    path as a Path (the learned theory's relative to theory/)."""
+    if o.type == "path":
+        value = THEORY_DIR / str(o.default) if o.ref == "theory" else Path(str(o.default))
+        return o.name, Path, field(default_factory=lambda: value)
+    if o.type == "antecedent":
+        return o.name, "Sequence[str] | None", field(default=None)
+    return o.name, Any, field(default=o.default)
 
 
-@dataclass
-class Options:
-    """The options of one exploration (see explore/1 in theory/curiosity.pl)."""
-    oracle: str = _default("oracle")
-    #: "discover" (candidates ranked by predicted novelty) or "paper".
-    curiosity: str = _default("curiosity")
-    max_rules: int = _default("max_rules")
-    samples: int | None = None
-    #: discover: the significance level; paper: the slope (None: the mode's default).
-    threshold: float | None = None
-    permutations: int = _default("permutations")
-    #: discover: more batches of an antecedent whose planes are undecided.
-    resample: int = _default("resample")
-    #: discover: the novelty a candidate needs to be queued, scaled by the
-    #: probes' mean score so far (bridge/exploration/novelty.py).
-    novelty: float = _default("novelty")
-    #: discover: how many of the most novel candidates A_new keeps.
-    queue: int = _default("queue")
-    #: discover: uniformly random valid antecedents drawn as candidates each step.
-    jumps: int = _default("jumps")
-    #: discover: pours of a candidate's probe (0: none) and candidates probed a step.
-    probe: int = _default("probe")
-    probe_attempts: int = _default("probe_attempts")
-    #: discover: the last probe of a step goes where fewer than this many pours
-    #: hold the candidate's rarest proposition, the fewest (0: never).
-    cover: int = _default("cover")
-    #: discover: 1 to explore the priors (the empty antecedent) right after a_0.
-    prior: int = _default("prior")
-    ridge: float = _default("ridge")
-    seed: int = _default("seed")
-    initial: Sequence[str] | None = None
-    breadth: int = _default("breadth")
-    qualify: str = _default("qualify")
-    out: Path = DEFAULT_THEORY
-    store: Path = DEFAULT_STORE
-    resume: bool = False
-    executor: str = "local"
-    workers: int | None = None
-    ray_address: str | None = None
-    progress: bool = True
-    #: Keyword arguments of the oracle's constructor (JSON values).
-    oracle_options: dict | None = None
-    #: Learn the general rules from every pour and add them to the theory.
-    general: bool = _default("general")
+def _prolog_value(o: Option, v: Any) -> str:
+    """A value of an option as explore/1 reads it."""
+    if o.type == "count":
+        return str(int(v))
+    if o.type == "permille":
+        return repr(float(v))
+    if o.type == "flag":
+        return prolog_quote(bool(v))
+    if o.type == "antecedent":
+        return prolog_quote(list(v))
+    if o.type == "path":
+        return prolog_quote(str(Path(v).absolute()))
+    return prolog_quote(v)
 
-    def prolog(self) -> str:
-        items = [f"curiosity({prolog_quote(self.curiosity)})",
-                 f"oracle({prolog_quote(self.oracle)})", f"max_rules({int(self.max_rules)})",
-                 f"permutations({int(self.permutations)})", f"resample({int(self.resample)})",
-                 f"novelty({float(self.novelty)!r})", f"queue({int(self.queue)})",
-                 f"jumps({int(self.jumps)})", f"probe({int(self.probe)})",
-                 f"probe_attempts({int(self.probe_attempts)})", f"cover({int(self.cover)})",
-                 f"prior({int(self.prior)})",
-                 f"seed({int(self.seed)})",
-                 f"breadth({int(self.breadth)})", f"ridge({float(self.ridge)!r})", f"qualify({prolog_quote(self.qualify)})",
-                 f"out({prolog_quote(str(Path(self.out).absolute()))})",
-                 f"store({prolog_quote(str(Path(self.store).absolute()))})",
-                 f"resume({prolog_quote(bool(self.resume))})", f"executor({prolog_quote(self.executor)})",
-                 f"progress({prolog_quote(bool(self.progress))})"]
-        if self.threshold is not None:
-            items.append(f"threshold({float(self.threshold)!r})")
-        if self.samples is not None:
-            items.append(f"samples({int(self.samples)})")
-        if self.initial is not None:
-            items.append(f"initial({prolog_quote(list(self.initial))})")
-        if self.workers is not None:
-            items.append(f"workers({int(self.workers)})")
-        if self.ray_address:
-            items.append(f"ray_address({prolog_quote(self.ray_address)})")
-        if self.oracle_options:
-            items.append(f"oracle_options({prolog_quote(json.dumps(self.oracle_options))})")
-        return "[" + ", ".join(items) + "]"
+
+def _prolog(self: "Options") -> str:
+    """The options as explore/1's option list: every option of the table
+    that is set (general is Python's: the rules learned after explore/1)."""
+    items = [f"{o.name}({_prolog_value(o, getattr(self, o.name))})" for o in option_table()
+             if o.name != "general" and getattr(self, o.name) not in (None, "")]
+    if self.oracle_options:
+        items.append(f"oracle_options({prolog_quote(json.dumps(self.oracle_options))})")
+    return "[" + ", ".join(items) + "]"
+
+
+def _paths(self: "Options") -> None:
+    for o in option_table():
+        if o.type == "path":
+            setattr(self, o.name, Path(getattr(self, o.name)))
+
+
+#: The options of one exploration (see explore/1 in theory/curiosity.pl):
+#: a field for each row of the option table of theory/defaults.pl
+#: (docs/options.md), with its default (None: explore/1 sets it: samples,
+#: the threshold of the curiosity, a_0, workers), and oracle_options, the
+#: keyword arguments of the oracle's constructor (JSON values).
+Options = make_dataclass(
+    "Options", [*(_field(o) for o in option_table()),
+                ("oracle_options", "dict | None", field(default=None))],
+    namespace={"prolog": _prolog, "__post_init__": _paths, "__doc__": "The options of one exploration (the option table)."})
 
 
 def explore(options: Options) -> dict:

@@ -7,6 +7,7 @@ import sys
 from typing import Any
 
 from pantarhei.bridge.exploration.pool import Session
+from pantarhei.theory.option_table import Option, course_table, option
 
 #: Bumped when the course of an exploration may change for the same settings.
 ALGORITHM_VERSION = "4"
@@ -14,29 +15,34 @@ ALGORITHM_VERSION = "4"
 
 def course(request: dict, version: str, oracle_settings: Any) -> dict:
     """The settings of explore/1's request that decide the exploration's
-    course, with the algorithm's and the oracle's versions: what the run
-    key hashes. The keys of a mode or option left off stay out, so that
-    runs without it keep their keys."""
-    out = {"algorithm": ALGORITHM_VERSION, "oracle": str(request["oracle"]),
-           "oracle_version": version, "oracle_settings": oracle_settings,
-           "seed": int(request["seed"]), "samples": int(request["samples"]),
-           "threshold": float(request["threshold"]),
-           "initial": sorted(str(p) for p in request["initial"]),
-           "breadth": int(request["breadth"]), "ridge": float(request["ridge"])}
-    if request.get("curiosity", "paper") != "paper":   # the paper's runs keep their keys
-        out.update(curiosity=str(request["curiosity"]),
-                   permutations=int(request["permutations"]),
-                   resample=int(request["resample"]),
-                   novelty=float(request["novelty"]), queue=int(request["queue"]),
-                   jumps=int(request["jumps"]))
-        if int(request.get("probe", 0)):       # runs without probes keep their keys
-            out.update(probe=int(request["probe"]),
-                       probe_attempts=int(request["probe_attempts"]))
-            if int(request.get("cover", 0)):   # runs without coverage keep their keys
-                out.update(cover=int(request["cover"]))
-        if int(request.get("prior", 0)):       # runs without the priors keep their keys
-            out.update(prior=int(request["prior"]), prior_batch="last")
+    course (course/2 of theory/defaults.pl), with the algorithm's and the
+    oracle's versions: what the run key hashes. The keys of a mode or
+    option left off stay out, so that runs without it keep their keys."""
+    out = {"algorithm": ALGORITHM_VERSION, "oracle_version": version,
+           "oracle_settings": oracle_settings}
+    discover = request.get("curiosity", "paper") != "paper"
+    for name, whens in course_table():
+        if all(_holds(when, request, discover) for when in whens):
+            out[name] = _course_value(option(name), request[name])
+    if "prior" in out:          # where the priors' batch goes: the budget's last
+        out["prior_batch"] = "last"
     return out
+
+
+def _holds(when: Any, request: dict, discover: bool) -> bool:
+    if when == "every":
+        return True
+    if when == "discover":
+        return discover
+    return bool(int(request.get(when[1], 0)))          # ("nonzero", Option)
+
+
+def _course_value(o: Option, v: Any) -> Any:
+    if o.type == "antecedent":
+        return sorted(str(p) for p in v)
+    if o.type == "count" or (o.choices and all(isinstance(c, int) for c in o.choices)):
+        return int(v)
+    return float(v) if o.type == "permille" else str(v)
 
 
 def open_bar(s: Session, done: int) -> None:

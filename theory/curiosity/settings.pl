@@ -16,141 +16,121 @@ defaults of theory/defaults.pl. A bad option raises
 :- use_module('../vocabulary').
 :- use_module('../validity').
 :- use_module('../default_values').
+:- use_module(library(aggregate)).
 
 %!  settings(+Options:list, -Settings:dict) is det.
 %
-%   Settings holds every option of explore/1 (see explore.pl): those of
-%   Options, checked, the others their defaults. The discovering
-%   curiosity's options are read and checked first (curiosity_options/4),
-%   then those of every run (run_options/4); store, workers, ray_address
-%   and oracle_options are keys only when given.
+%   Settings holds every option of explore/1 (see explore.pl), as the
+%   option table of theory/defaults.pl declares them: those of Options,
+%   checked against their type and range, the others their defaults. The
+%   curiosity is read first (the paper's and the discovering one have
+%   thresholds of their own); store, workers, ray_address and
+%   oracle_options are keys only when given. The option general is
+%   Python's (the general rules learned after explore/1), not a key.
 %
 %   @error exploration_error(Text) for the first bad option.
 settings(Options, S) :-
     must_be(list, Options),
-    curiosity_options(Options, Curiosity, DThreshold, Discover),
-    run_options(Options, Curiosity, DThreshold, Run),
-    put_dict(Run, Discover, S0),
-    optional(store, Options, S0, S1),
-    optional(workers, Options, S1, S2),
-    optional(ray_address, Options, S2, S3),
-    (   option(oracle_options(OO), Options)
-    ->  (   is_dict(OO) -> OracleOptions = OO ; atom_json_dict(OO, OracleOptions, []) ),
-        put_dict(oracle_options, S3, OracleOptions, S)
-    ;   S = S3
-    ).
-
-%   curiosity_options(+Options, -Curiosity, -DThreshold, -Settings): the
-%   curiosity and the options of the discovering one, checked; DThreshold
-%   is the default threshold of that curiosity (a slope for the paper's, a
-%   significance level for the discovering one).
-curiosity_options(Options, Curiosity, DThreshold, Settings) :-
-    default(threshold, DSlope),
-    default(significance, DLevel),
-    option_default(curiosity, Options, Curiosity),
-    (   memberchk(Curiosity, [paper, discover])
-    ->  true
-    ;   throw(exploration_error("curiosity: expected paper or discover"))
-    ),
-    (   Curiosity == paper -> DThreshold = DSlope ; DThreshold = DLevel ),
-    option_default(permutations, Options, Permutations),
-    check_positive(permutations, Permutations),
-    option_default(resample, Options, Resample),
-    (   integer(Resample), Resample >= 0 -> true
-    ;   throw(exploration_error("resample: expected a whole number >= 0"))
-    ),
-    option_default(queue, Options, Queue),
-    check_positive(queue, Queue),
-    option_default(jumps, Options, Jumps),
-    check_positive(jumps, Jumps),
-    option_default(probe, Options, Probe),
-    (   integer(Probe), Probe >= 0 -> true
-    ;   throw(exploration_error("probe: expected a whole number >= 0"))
-    ),
-    option_default(probe_attempts, Options, Attempts),
-    check_positive(probe_attempts, Attempts),
-    option_default(cover, Options, Cover),
-    (   integer(Cover), Cover >= 0 -> true
-    ;   throw(exploration_error("cover: expected a whole number >= 0"))
-    ),
-    option_default(prior, Options, Prior),
-    (   memberchk(Prior, [0, 1]) -> true
-    ;   throw(exploration_error("prior: expected 0 or 1"))
-    ),
-    option_default(novelty, Options, Novelty0),
-    (   number(Novelty0), Novelty0 >= 0, Novelty0 =< 1 -> Novelty is float(Novelty0)
-    ;   throw(exploration_error("novelty: expected a number from 0 to 1"))
-    ),
-    Settings = _{curiosity:Curiosity, permutations:Permutations, resample:Resample,
-                 novelty:Novelty, queue:Queue, jumps:Jumps, probe:Probe,
-                 probe_attempts:Attempts, cover:Cover, prior:Prior}.
-
-%   run_options(+Options, +Curiosity, +DThreshold, -Settings): the options
-%   of every run (oracle, budget, threshold, seed, a_0, modify, qualify,
-%   where to simulate and write), checked.
-run_options(Options, Curiosity, DThreshold, Settings) :-
-    aggregate_all(count, parameter(_, _, _, _, _), NParams),
-    DefaultSamples is NParams + 1,
-    default_initial(DefaultInitial),
-    option_default(oracle, Options, Oracle),
-    option_default(max_rules, Options, Max),
-    option(samples(Samples), Options, DefaultSamples),
-    option(threshold(Threshold0), Options, DThreshold),
-    option_default(seed, Options, Seed),
-    option(initial(Initial0), Options, DefaultInitial),
-    option_default(breadth, Options, Breadth),
-    option_default(ridge, Options, Ridge0),
-    option_default(qualify, Options, Qualify),
-    option(resume(Resume), Options, false),
-    option(executor(Executor), Options, local),
-    option(progress(Progress), Options, true),
-    default_out(DefaultOut),
-    option(out(Out0), Options, DefaultOut),
-    check_positive(max_rules, Max),
-    check_positive(samples, Samples),
-    check_positive(breadth, Breadth),
-    (   integer(Seed) -> true ; throw(exploration_error("seed: expected an integer")) ),
-    (   number(Threshold0), Threshold0 >= 0
-    ->  Threshold is float(Threshold0)
-    ;   throw(exploration_error("threshold: expected a number >= 0"))
-    ),
-    (   Curiosity == discover, Threshold > 1
+    setting_value(curiosity, Options, discover, Curiosity),
+    findall(Key-Value,
+            ( table_option(Key, _, _, _),
+              \+ memberchk(Key, [curiosity, general]),
+              setting_value(Key, Options, Curiosity, Value)
+            ), Pairs),
+    dict_pairs(S0, _, [curiosity-Curiosity|Pairs]),
+    (   Curiosity == discover, S0.threshold > 1
     ->  throw(exploration_error("threshold: a significance level is at most 1"))
     ;   true
     ),
-    (   memberchk(Qualify, [weighted, argmax])
-    ->  true
-    ;   throw(exploration_error("qualify: expected weighted or argmax"))
-    ),
-    (   number(Ridge0), Ridge0 >= 0
-    ->  Ridge is float(Ridge0)
-    ;   throw(exploration_error("ridge: expected a number >= 0"))
-    ),
-    check_initial(Initial0, Initial),
-    absolute_file_name(Out0, Out),
-    Settings = _{oracle:Oracle, max_rules:Max, samples:Samples, threshold:Threshold,
-                 seed:Seed, initial:Initial, breadth:Breadth, ridge:Ridge, qualify:Qualify,
-                 resume:Resume, executor:Executor, progress:Progress, out:Out}.
-
-%   option_default(+Key, +Options, -Value): the option Key(Value) of
-%   Options, or the default of theory/defaults.pl.
-option_default(Key, Options, Value) :-
-    default(Key, Default),
-    Option =.. [Key, Value],
-    option(Option, Options, Default).
-
-%   optional(+Key, +Options, +S0, -S): S0 with Key set to the option
-%   Key(Value) of Options (a store as an absolute path), if given.
-optional(Key, Options, S0, S) :-
-    Opt =.. [Key, V],
-    (   option(Opt, Options)
-    ->  (   Key == store
-        ->  absolute_file_name(V, Value)
-        ;   Value = V
-        ),
-        put_dict(Key, S0, Value, S)
+    (   option(oracle_options(OO), Options)
+    ->  (   is_dict(OO) -> OracleOptions = OO ; atom_json_dict(OO, OracleOptions, []) ),
+        put_dict(oracle_options, S0, OracleOptions, S)
     ;   S = S0
     ).
+
+%   table_option(?Key, ?Type, ?Range, ?Default): a row of the option
+%   table (theory/defaults.pl).
+table_option(Key, Type, Range, Default) :-
+    defaults:option(Key, Type, Range, Default, _).
+
+%   setting_value(+Key, +Options, +Curiosity, -Value): the option Key of
+%   Options, checked, or its default; fails for an option without a
+%   default that is not given (store, workers, ray_address).
+setting_value(Key, Options, Curiosity, Value) :-
+    table_option(Key, Type, Range, Default),
+    Option =.. [Key, Given],
+    (   option(Option, Options)
+    ->  check_option(Type, Range, Key, Given, Value)
+    ;   unsaid(Key, Default, Curiosity, Value0)
+    ->  check_option(Type, Range, Key, Value0, Value)
+    ).
+
+%   unsaid(+Key, +Default, +Curiosity, -Value): the value of an option not
+%   given: the table's default, or one set otherwise (the number of
+%   samples, the threshold of the curiosity, a_0, the learned theory).
+unsaid(samples, none, _, N) :- !,
+    aggregate_all(count, parameter(_, _, _, _, _), NParams),
+    N is NParams + 1.
+unsaid(threshold, none, Curiosity, T) :- !,
+    (   Curiosity == paper -> default(threshold, T) ; default(significance, T) ).
+unsaid(initial, none, _, Initial) :- !,
+    default_initial(Initial).
+unsaid(out, _, _, File) :- !,
+    default_out(File).
+unsaid(Key, Default, _, Value) :-
+    Default \== none,
+    Default \= default(_),
+    default(Key, Value).
+
+%   check_option(+Type, +Range, +Key, +Value0, -Value): Value0 is of the
+%   option's type and in its range (Value, as the settings hold it), else
+%   the error names the option Key.
+check_option(count, range(Low, High), Key, N, N) :- !,
+    (   integer(N), N >= Low
+    ->  (   ( High == none ; N =< High )
+        ->  true
+        ;   option_error(Key, "expected a whole number at most ~w", [High])
+        )
+    ;   Low =:= 1
+    ->  option_error(Key, "expected a whole number above 0", [])
+    ;   option_error(Key, "expected a whole number >= ~w", [Low])
+    ).
+check_option(permille, range(Low, High), Key, X, Value) :- !,
+    (   number(X), X * 1000 >= Low, ( High == none ; X * 1000 =< High )
+    ->  Value is float(X)
+    ;   unit(Low, L),
+        (   High == none
+        ->  option_error(Key, "expected a number >= ~w", [L])
+        ;   unit(High, H),
+            option_error(Key, "expected a number from ~w to ~w", [L, H])
+        )
+    ).
+check_option(choice, Range, Key, V, V) :- !,
+    Range =.. [one_of|Choices],
+    (   memberchk(V, Choices)
+    ->  true
+    ;   append(First, [Last], Choices),
+        atomic_list_concat(First, ', ', Text),
+        option_error(Key, "expected ~w or ~w", [Text, Last])
+    ).
+check_option(oracle, _, _, V, V) :- !.      % the bridge knows the oracles (test ones too)
+check_option(flag, _, Key, V, V) :- !,
+    (   memberchk(V, [true, false]) -> true ; option_error(Key, "expected true or false", []) ).
+check_option(antecedent, _, _, Props, Set) :- !,
+    check_initial(Props, Set).
+check_option(path, _, _, File, Absolute) :- !,
+    absolute_file_name(File, Absolute).
+check_option(text, _, _, V, V).
+
+%   unit(+Permille, -Number): thousandths as the number they stand for
+%   (a whole number when they are whole).
+unit(P, N) :- ( P mod 1000 =:= 0 -> N is P // 1000 ; N is P / 1000 ).
+
+%   option_error(+Key, +Format, +Args): raise exploration_error("Key: ...").
+option_error(Key, Format, Args) :-
+    format(string(Why), Format, Args),
+    format(string(M), "~w: ~s", [Key, Why]),
+    throw(exploration_error(M)).
 
 %   default_out(-File): the default learned theory, relative to theory/
 %   (the folder above this one).
@@ -160,13 +140,6 @@ default_out(File) :-
     file_directory_name(CuriosityDir, Dir),
     default(theory, Relative),
     directory_file_path(Dir, Relative, File).
-
-%   check_positive(+Name, +N): N is a whole number above 0, else the error
-%   names the option Name.
-check_positive(_, N) :- integer(N), N > 0, !.
-check_positive(Name, _) :-
-    format(string(M), "~w: expected a whole number above 0", [Name]),
-    throw(exploration_error(M)).
 
 %   check_initial(+Props, -Set): Props, a list of propositions, sorted, is
 %   a valid antecedent (the first reason it is not is the error).

@@ -1,0 +1,150 @@
+"""The options of Algorithm 1 (`pantarhei explore`, explore/1), declared
+once in theory/defaults.pl as `option(Name, Type, Range, Default, Help)`
+facts, read here for Python: the command line
+(bridge/commands/explore.py), the options Python passes to explore/1
+(bridge/exploration/loop.py) and the reference page docs/options.md
+(`options_page`). SWI-Prolog checks explore/1's options against the same
+facts (theory/curiosity/settings.pl).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+from typing import Any
+
+from pantarhei.theory import DEFAULTS_FILE, THEORY_DIR, read_facts
+
+#: The reference page the table gives (`options_page`).
+OPTIONS_PAGE = THEORY_DIR.parent / "docs" / "options.md"
+
+
+@dataclass(frozen=True)
+class Option:
+    """One row of the table. `low`/`high` bound a count or a number (high
+    None: unbounded; numbers as floats, not thousandths), `choices` those of
+    a choice, `default` the value as Python holds it (None: set otherwise,
+    as the help says)."""
+    name: str
+    type: str
+    low: float | None
+    high: float | None
+    choices: tuple
+    default: Any
+    help: str
+    #: The project's default(Key, _) the default is, if it is one (theory, store).
+    ref: str | None = None
+
+    @property
+    def flag(self) -> str:
+        """The command line's flag: --name, or --no-name for a flag that is on by default."""
+        dashed = self.name.replace("_", "-")
+        return f"--no-{dashed}" if self.type == "flag" and self.default is True else f"--{dashed}"
+
+    def value(self, v: Any) -> Any:
+        """A value of the option as Python holds it (thousandths as a float)."""
+        return v / 1000 if self.type == "permille" and isinstance(v, int) else v
+
+
+@lru_cache(maxsize=None)
+def option_table() -> tuple[Option, ...]:
+    """The option/5 facts of theory/defaults.pl, in file order."""
+    facts = read_facts([DEFAULTS_FILE])
+    project = {k: v for k, v in facts.get("default", [])}
+    project["initial"] = tuple(p for (p,) in facts.get("default_initial", []))
+    return tuple(_option(row, project) for row in facts.get("option", []))
+
+
+def _option(row: tuple, project: dict) -> Option:
+    name, kind, rng, default, help_text = row
+    low = high = ref = None
+    choices: tuple = ()
+    scale = 1000 if kind == "permille" else 1
+    if isinstance(rng, tuple) and rng[0] == "range":
+        low = rng[1] / scale if scale > 1 else rng[1]
+        high = None if rng[2] == "none" else (rng[2] / scale if scale > 1 else rng[2])
+    elif isinstance(rng, tuple) and rng[0] == "one_of":
+        choices = tuple(rng[1:])
+    if default == "none":       # a_0 is the default_initial facts; the others are set otherwise
+        default = project["initial"] if kind == "antecedent" else None
+    elif isinstance(default, tuple) and default[0] == "default":
+        ref = default[1]
+        default = project[ref]
+    elif kind == "flag":
+        default = default == "true"
+    elif kind == "permille":
+        default = default / 1000
+    return Option(name, kind, low, high, choices, default, help_text, ref)
+
+
+@lru_cache(maxsize=None)
+def course_table() -> tuple[tuple[str, tuple], ...]:
+    """The options that decide an exploration's course (course/2 of
+    theory/defaults.pl), in file order, each with its conditions: "every",
+    "discover" or ("nonzero", Option)."""
+    out: dict[str, list] = {}
+    for name, when in read_facts([DEFAULTS_FILE]).get("course", []):
+        out.setdefault(name, []).append(when)
+    return tuple((name, tuple(whens)) for name, whens in out.items())
+
+
+def option(name: str) -> Option:
+    """The table's row for `name`."""
+    for o in option_table():
+        if o.name == name:
+            return o
+    raise KeyError(name)
+
+
+def options_page() -> str:
+    """docs/options.md as the table gives it (tests/test_options_page.py
+    keeps the file equal to it; `python -m pantarhei.theory.option_table`
+    writes it)."""
+    lines = ["# The options of `pantarhei explore`", "",
+             "This page is written from the option table in `theory/defaults.pl`",
+             "(`python -m pantarhei.theory.option_table`). The same names are the",
+             "options of `explore/1` at the Prolog prompt (`seed(3)` for `--seed 3`,",
+             "underscores for dashes, `progress(false)` for `--no-progress`).", "",
+             "| flag | values | default | what it does |", "|---|---|---|---|"]
+    for o in option_table():
+        lines.append(f"| `{o.flag}` | {_values(o)} | {_default_text(o)} | {o.help} |")
+    return "\n".join(lines) + "\n"
+
+
+def _values(o: Option) -> str:
+    if o.choices:
+        shown = [f"`{c}`" for c in o.choices]
+        return ", ".join(shown[:-1]) + " or " + shown[-1]
+    if o.type in ("count", "permille"):
+        what = "whole number" if o.type == "count" else "number"
+        return f"{what} from {_number(o.low)}" + (f" to {_number(o.high)}" if o.high is not None else "")
+    return {"flag": "(a flag)", "antecedent": "propositions", "path": "file", "text": "text"}[o.type]
+
+
+def _number(x: float) -> str:
+    return str(int(x)) if float(x).is_integer() else f"{x:g}"
+
+
+def default_text(o: Option) -> str:
+    """The option's default as the help and the page show it ('' for a
+    flag, or one set otherwise)."""
+    if o.default is None or o.type == "flag":
+        return ""
+    if o.type == "antecedent":
+        return ",".join(o.default)
+    if o.ref == "theory":
+        return f"theory/{o.default}"
+    return _number(o.default) if isinstance(o.default, (int, float)) else str(o.default)
+
+
+def _default_text(o: Option) -> str:
+    text = default_text(o)
+    return f"`{text}`" if text else ""
+
+
+def write_options_page() -> None:
+    """Write docs/options.md from the table."""
+    OPTIONS_PAGE.write_text(options_page(), encoding="utf-8")
+
+
+if __name__ == "__main__":
+    write_options_page()
