@@ -35,7 +35,7 @@ second run simulates nothing):
 
 PANTARHEI_BENCH_JUMPS sets the discovering curiosity's random candidates
 per step (`--jumps`; default the project's), PANTARHEI_BENCH_COVER its
-`--cover` (default the project's, 0), PANTARHEI_BENCH_PRIOR its `--prior`
+`--cover` (default the project's, 0), PANTARHEI_BENCH_PRIOR its `--prior-batch`
 (default the project's, 1), and PANTARHEI_BENCH_RULES the
 budget in batches of 31 (by default the project's 25, the paper's scale;
 every method gets as many pours).
@@ -66,11 +66,11 @@ METHODS = {"discover": "curiosity (discover)", "paper": "curiosity (paper)",
 def settings() -> tuple[str, tuple[int, ...], tuple[str, ...], int, Path]:
     """The oracle, seeds and methods this run measures, its budget in
     batches of SAMPLES pours (PANTARHEI_BENCH_RULES; by default the
-    project's max_rules), and the store."""
+    project's budget), and the store."""
     from pantarhei.theory import defaults
 
     oracle = os.environ.get("PANTARHEI_BENCH_ORACLE", "synthetic")
-    rules = os.environ.get("PANTARHEI_BENCH_RULES", str(defaults()["max_rules"]))
+    rules = os.environ.get("PANTARHEI_BENCH_RULES", str(defaults()["budget"]))
     if not rules.isdigit() or int(rules) < 1:
         raise SystemExit(f"PANTARHEI_BENCH_RULES must be a whole number of at least 1, not {rules!r}")
     seeds = tuple(int(s) for s in os.environ.get("PANTARHEI_BENCH_SEEDS", "1,2,3,4,5").split(","))
@@ -122,9 +122,9 @@ def curiosity(mode: str, seed: int, rules: int, tmp: Path, oracle: str, store: P
     inline = oracle == "synthetic"
     jumps = int(os.environ.get("PANTARHEI_BENCH_JUMPS", Options().jumps))
     cover = int(os.environ.get("PANTARHEI_BENCH_COVER", Options().cover))
-    prior = int(os.environ.get("PANTARHEI_BENCH_PRIOR", Options().prior))
-    r = explore(Options(curiosity=mode, oracle=oracle, max_rules=rules, seed=seed, out=out,
-                        jumps=jumps, cover=cover, prior=prior, store=tmp / f"{mode}-{seed}.sqlite" if inline else store,
+    prior = int(os.environ.get("PANTARHEI_BENCH_PRIOR", Options().prior_batch))
+    r = explore(Options(curiosity=mode, oracle=oracle, budget=rules, seed=seed, out=out,
+                        jumps=jumps, cover=cover, prior_batch=prior, store=tmp / f"{mode}-{seed}.sqlite" if inline else store,
                         progress=False, executor="inline" if inline else "local",
                         general=False))
     trace = [json.loads(line) for line in out.with_suffix(".trace.jsonl").read_text().splitlines()]

@@ -39,7 +39,7 @@ def overhead(max_rules: int, tmp: Path, seed: int = 1, breadth: int = 3,
 
     t = time.perf_counter()
     # the paper's curiosity with threshold 0 follows every plane (a run that never stops early)
-    r = explore(Options(curiosity=curiosity, oracle="synthetic", max_rules=max_rules, seed=seed,
+    r = explore(Options(curiosity=curiosity, oracle="synthetic", budget=max_rules, seed=seed,
                         out=tmp / "t.pl", store=tmp / f"s{max_rules}-{seed}-{time.time_ns()}.sqlite",
                         progress=False, executor="inline", breadth=breadth,
                         threshold=0.0 if curiosity == "paper" else None))

@@ -57,7 +57,7 @@ def measure(paths: list[str]) -> tuple[list[dict], dict[tuple[str, str], float]]
         V, of_ok = verdicts(S_q[ok]), of[ok]
         for path in paths:
             learned = E.read_learned(path)
-            seed, samples = int(learned.setting("seed")), int(learned.setting("samples"))
+            seed, samples = int(learned.setting("seed")), int(learned.setting("batch"))
             P, _, _, _ = E.exploration_draws(learned)
             S = run("exploration", P, say=False)
             batches = max(1, round(len(P) / samples))

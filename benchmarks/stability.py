@@ -22,7 +22,7 @@ def agreement(paths: list[str], scenes: int = 150, seed: int = 1) -> dict[tuple[
     from pantarhei.bridge.theories.loading import load
 
     first = read_learned(paths[0])
-    ants, _ = random_exploration(seed, sum(first.batches), int(first.setting("samples")))
+    ants, _ = random_exploration(seed, sum(first.batches), int(first.setting("batch")))
     held = uniform_scenes(seed, scenes, set(ants) | set(first.antecedents))
     preds = {p: predict(load([p]), held) for p in paths}
     out = {}

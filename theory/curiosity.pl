@@ -40,17 +40,17 @@ explore` and `pantarhei prolog` register (bridge.pl lists them).
 Two curiosities share the loop (option curiosity/1):
 
   - `paper`: Algorithm 1 as the paper states it. The steepest plane of all
-    explored antecedents is followed when its slope exceeds the threshold,
+    explored antecedents is followed when its slope exceeds slope(X),
     and modify/5 moves the parameters of its largest gradient components by
     one rank.
   - `discover`: a plane's slopes count only where they beat shuffles of the
     same weighted pours (a permutation test at the significance level given
-    as threshold). The candidates of a step are the antecedents that move
+    as significance(X)). The candidates of a step are the antecedents that move
     the pours past the point where a significant plane's verdict flips
     (modify_past/4), the neighbours of the antecedent just explored, and
     `jumps` uniformly random valid antecedents; A_new keeps the most novel
     of them (discover.pl), and each is probed before a batch is spent on
-    it (probe.pl). With prior(1) (the default) the last batch of the
+    it (probe.pl). With prior_batch(1) (the default) the last batch of the
     budget goes to the priors, the empty antecedent (loop.pl).
 */
 

@@ -26,12 +26,14 @@ option(curiosity, choice, one_of(discover, paper), discover,
   "discover: queue the candidates (moves past where a significant plane's verdict flips, neighbours, random jumps) a forest of the pours so far predicts to show something new, most novel first; paper: Algorithm 1 as the paper states it").
 option(oracle, oracle, one_of(pybullet, synthetic), pybullet,
   "the simulation, or analytic test scores (synthetic)").
-option(max_rules, count, range(1, 100000), 25,
-  "the budget: this many explored antecedents (paper), the pours of this many batches (discover)").
-option(samples, count, range(1, 10000), none,
-  "simulations per explored antecedent (default: parameters + 1)").
-option(threshold, permille, range(0, none), none,
-  "discover: the significance level of the permutation test, at most 1 (default 0.05); paper: the plane slope below which nothing new is explored (default 0.1)").
+option(budget, count, range(1, 100000), 25,
+  "the budget: the pours of this many batches, probes included (discover); this many explored antecedents (paper)").
+option(batch, count, range(1, 10000), none,
+  "pours simulated per batch, for each explored antecedent (default: parameters + 1)").
+option(significance, permille, range(0, 1000), 50,
+  "discover: the significance level of the permutation test of the planes").
+option(slope, permille, range(0, none), 100,
+  "paper: the plane slope below which nothing new is explored").
 option(permutations, count, range(1, 1000000), 199,
   "discover: shuffles of the permutation test").
 option(resample, count, range(0, 1000000), 2,
@@ -48,7 +50,7 @@ option(probe_attempts, count, range(1, 1000000), 3,
   "discover: candidates probed at most in a step; then the one whose probe scored best is explored").
 option(cover, count, range(0, 1000000), 0,
   "discover: the last probe of a step goes to the candidate whose rarest proposition the fewest pours so far hold, when fewer than this many do; 0: never").
-option(prior, choice, one_of(0, 1), 1,
+option(prior_batch, choice, one_of(0, 1), 1,
   "discover: 1 to explore the priors (nothing said: every parameter from its prior, as a question's unsaid ones) with the budget's last batch, 0 not to").
 option(seed, count, range(0, 2147483647), 1,
   "seed of every random choice").
@@ -79,13 +81,14 @@ option(progress, flag, none, true,
 
 % The options that decide an exploration's course, hashed into its run
 % key (bridge/exploration/opening.py; a saved run resumes only with the
-% same): course(Name, When), When every (every run), discover (runs of the
-% discovering curiosity) or nonzero(Option) (runs where Option is not 0:
+% same): course(Name, When), When every (every run), discover or paper
+% (runs of that curiosity) or nonzero(Option) (runs where Option is not 0:
 % those without it keep their keys). A name with several facts needs all.
 course(oracle, every).
 course(seed, every).
-course(samples, every).
-course(threshold, every).
+course(batch, every).
+course(significance, discover).
+course(slope, paper).
 course(initial, every).
 course(breadth, every).
 course(ridge, every).
@@ -102,14 +105,8 @@ course(probe_attempts, nonzero(probe)).
 course(cover, discover).
 course(cover, nonzero(probe)).
 course(cover, nonzero(cover)).
-course(prior, discover).
-course(prior, nonzero(prior)).
-
-% The defaults of explore/1 set otherwise: the significance level of the
-% discovering curiosity's permutation test and the paper's slope below
-% which nothing new is explored (threshold, by curiosity).
-default(significance_permille, 50).
-default(threshold_permille, 100).
+course(prior_batch, discover).
+course(prior_batch, nonzero(prior_batch)).
 
 % After Algorithm 1, the general rules are learned from every pour of the
 % exploration (option general above; bridge/learning/).

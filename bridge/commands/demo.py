@@ -14,6 +14,7 @@ from pathlib import Path
 from pantarhei.bridge.commands import options
 from pantarhei.bridge.errors import UserError
 from pantarhei.theory import defaults
+from pantarhei.theory.option_table import option
 
 #: The paper's three questions (section 3.2), as words and propositions.
 QUESTIONS = (
@@ -30,8 +31,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("demo", help="the main job: learn the theory of pouring (PyBullet, 25 "
                                     "rules), write it, ask it the paper's questions and plan")
     options.add_oracle(p)
-    p.add_argument("--max-rules", type=options.count(1, options.MAX_RULES), default=defaults()["max_rules"],
-                   help=f"explored antecedents (default {defaults()['max_rules']})")
+    options.add_table_option(p, option("budget"))    # as explore's
     options.add_seed(p)
     options.add_theory_out(p, extra="; the DFL version goes beside it as .dfl")
     options.add_store(p)
@@ -58,14 +58,14 @@ def demo(args: argparse.Namespace) -> int:
     started = time.monotonic()
     curiosity = defaults()["curiosity"]
     _heading(f"Learning the theory of pouring: curious exploration of the {args.oracle} "
-             f"simulation, {budget_text(curiosity, args.max_rules)} (Algorithm 1)")
+             f"simulation, {budget_text(curiosity, args.budget)} (Algorithm 1)")
     result = explore(Options(
-        oracle=args.oracle, max_rules=args.max_rules, seed=args.seed, out=out,
+        oracle=args.oracle, budget=args.budget, seed=args.seed, out=out,
         store=Path(args.store), workers=args.workers, progress=not args.no_progress))
     theory = loading.load([out])
     dfl = out.with_suffix(".dfl")
     write_text(dfl, write_dfl(theory, loading.provenance_lines(theory)))
-    why = stop_text(result, curiosity, args.max_rules)
+    why = stop_text(result, curiosity, args.budget)
     print(f"explored {result['explored']} antecedents with {result['simulations']} simulations "
           f"({result['failed']} failed) in {result.get('wall', 0.0):.0f} s; stopped: {why}")
     print(f"theory: {out} ({len(theory.rules)} rules), in DFL: {dfl}")

@@ -38,8 +38,6 @@ def explore(args: argparse.Namespace) -> int:
     from pantarhei.bridge.files import require_writable_file
 
     require_writable_file(Path(args.out), "--out")
-    if args.curiosity == "discover" and args.threshold is not None and args.threshold > 1:
-        raise UserError("--threshold is a significance level with --curiosity discover: at most 1")
     values = {o.name: getattr(args, o.name) for o in option_table()}
     if args.initial is not None:
         values["initial"] = validity.require_valid([t.strip() for t in args.initial.split(",") if t.strip()])
@@ -51,7 +49,7 @@ def explore(args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         raise UserError("interrupted: the state is saved after every explored antecedent; "
                         "the same command with --resume continues", exit_code=130) from None
-    why = stop_text(result, args.curiosity, args.max_rules)
+    why = stop_text(result, args.curiosity, args.budget)
     print(f"explored {result['explored']} antecedents with {result['simulations']} simulations "
           f"({result['failed']} failed); stopped: {why}")
     wall, sim = result.get("wall", 0.0), result.get("timings", {}).get("oracle", 0.0)
@@ -90,7 +88,7 @@ def prolog(args: argparse.Namespace) -> int:
         return 0 if ok else 1
     print("Panta Rhei: the theory and the oracle are loaded. Try\n"
           "  ?- what_happens([pour_to_side], O).\n"
-          "  ?- explore([oracle(synthetic), max_rules(5), out('/tmp/learned.pl')]).\n"
+          "  ?- explore([oracle(synthetic), budget(5), out('/tmp/learned.pl')]).\n"
           "  ?- sample([pour_to_side], 3, 1, Rows), simulate(Rows, [oracle(synthetic)], Scores).\n"
           "  ?- validity:valid_antecedent([pour_to_side, pour_low]).\n"
           "End with halt. or Ctrl-D.", file=sys.stderr)

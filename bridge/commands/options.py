@@ -26,10 +26,8 @@ ORACLES = ("pybullet", "synthetic")
 SEED_MAX = 2**31 - 1
 #: Most workers a command starts.
 WORKERS_MAX = 1024
-#: Bounds of counts: explored antecedents, simulations per antecedent,
-#: pours simulated to verify, and any other count (scenes, pours, shuffles).
-MAX_RULES = 100_000
-SAMPLES_MAX = 10_000
+#: Bounds of counts: pours simulated to verify, and any other count (scenes,
+#: pours, shuffles); explore's are in its option table (theory/defaults.pl).
 VERIFY_MAX = 10_000
 COUNT_MAX = 1_000_000
 

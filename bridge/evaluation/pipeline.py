@@ -79,7 +79,7 @@ def read_learned(path: Path | str) -> Learned:
     settings = loading.settings(theory)
     of_rule = {literal_text(a[0]): literal_text(a[2]) for a in facts.get("provenance", [])
                if len(a) == 3 and literal_text(a[1]) == "antecedent"}
-    if not settings.get("seed") or not settings.get("samples") or not of_rule:
+    if not settings.get("seed") or not settings.get("batch") or not of_rule:
         raise UserError(f"{path}: not a theory written by `pantarhei explore` "
                         f"(no setting/2 and provenance/3 facts to evaluate it by)")
     bodies: dict[int, tuple[str, ...]] = {}
@@ -233,7 +233,7 @@ def evaluate(opts: Options) -> Evaluation:
     if opts.scenes < 1 or opts.verify < 0 or opts.paper_samples < 0:
         raise UserError("--scenes must be at least 1, --verify and --paper-samples at least 0")
     oracle = str(learned.setting("oracle", "pybullet"))
-    samples = int(learned.setting("samples"))
+    samples = int(learned.setting("batch"))
     ev = Evaluation(theory=_shown(opts.theory), oracle=oracle,
                     settings={k: (v if len(v) > 1 else v[0]) for k, v in learned.settings.items()},
                     budget=0, explored=list(learned.antecedents))
@@ -307,7 +307,7 @@ def exploration_draws(learned: Learned) -> tuple[np.ndarray, list[tuple[str, ...
     nothing was set aside). With the antecedent each pour was drawn from,
     the index of the explored antecedent it belongs to (-1 for a probe set
     aside) and where each explored antecedent's last batch ends."""
-    samples, seed = int(learned.setting("samples")), int(learned.setting("seed"))
+    samples, seed = int(learned.setting("batch")), int(learned.setting("seed"))
     m = min(int(learned.setting("probe", 0)), samples)
     rows, drawn, of, ends = [], [], [], []
     iteration = 0

@@ -61,8 +61,8 @@ def _paths(self: "Options") -> None:
 
 #: The options of one exploration (see explore/1 in theory/curiosity.pl):
 #: a field for each row of the option table of theory/defaults.pl
-#: (docs/options.md), with its default (None: explore/1 sets it: samples,
-#: the threshold of the curiosity, a_0, workers), and oracle_options, the
+#: (docs/options.md), with its default (None: explore/1 sets it: the pours
+#: of a batch, a_0, workers), and oracle_options, the
 #: keyword arguments of the oracle's constructor (JSON values).
 Options = make_dataclass(
     "Options", [*(_field(o) for o in option_table()),
@@ -113,18 +113,18 @@ def explore(options: Options) -> dict:
     return out
 
 
-def budget_text(curiosity: str, max_rules: int) -> str:
-    """What max_rules counts: explored antecedents for the paper's
+def budget_text(curiosity: str, budget: int) -> str:
+    """What the budget counts: explored antecedents for the paper's
     curiosity; for the discovering one, the pours of as many batches (its
     batches and probes)."""
-    return f"{max_rules} rules" if curiosity == "paper" else f"the pours of {max_rules} batches"
+    return f"{budget} rules" if curiosity == "paper" else f"the pours of {budget} batches"
 
 
-def stop_text(result: dict, curiosity: str, max_rules: int) -> str:
+def stop_text(result: dict, curiosity: str, budget: int) -> str:
     """Why an exploration stopped, in words."""
     stopped = str(result.get("stopped", ""))
     return {"a_new_empty": "A_new is empty",
-            "max_rules": budget_text(curiosity, max_rules)}.get(stopped, stopped)
+            "budget": budget_text(curiosity, budget)}.get(stopped, stopped)
 
 
 def _result_text(result: Any) -> str:

@@ -24,16 +24,16 @@ def course(request: dict, version: str, oracle_settings: Any) -> dict:
     for name, whens in course_table():
         if all(_holds(when, request, discover) for when in whens):
             out[name] = _course_value(option(name), request[name])
-    if "prior" in out:          # where the priors' batch goes: the budget's last
-        out["prior_batch"] = "last"
+    if "prior_batch" in out:    # where the priors' batch goes: the budget's last
+        out["priors_at"] = "last"
     return out
 
 
 def _holds(when: Any, request: dict, discover: bool) -> bool:
     if when == "every":
         return True
-    if when == "discover":
-        return discover
+    if when in ("discover", "paper"):
+        return discover == (when == "discover")
     return bool(int(request.get(when[1], 0)))          # ("nonzero", Option)
 
 
@@ -58,11 +58,11 @@ def open_bar(s: Session, done: int) -> None:
 def progress(s: Session, iteration: int) -> tuple[int, str, int]:
     """The progress bar's total, unit and position after `iteration`
     iterations: for the discovering curiosity, whose budget is in pours,
-    the pours of max_rules batches and the pours spent (probes included);
-    for the paper's, max_rules explored antecedents."""
-    rules = int(s.settings["max_rules"])
+    the pours of `budget` batches and the pours spent (probes included);
+    for the paper's, `budget` explored antecedents."""
+    rules = int(s.settings["budget"])
     if s.settings.get("curiosity") == "discover":
-        return rules * int(s.settings["samples"]), "pour", len(s.params)
+        return rules * int(s.settings["batch"]), "pour", len(s.params)
     return rules, "rule", iteration
 
 

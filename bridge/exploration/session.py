@@ -171,7 +171,7 @@ class Host:
         s = self.need_session()
         props = [str(p) for p in request["antecedent"]]
         iteration, attempt = int(request["iteration"]), int(request.get("attempt", 0))
-        samples = int(s.settings["samples"])
+        samples = int(s.settings["batch"])
         try:
             P = sample(props, samples, batch_seed(int(s.settings["seed"]), iteration, attempt))[:n]
         except InvalidAntecedent as e:
@@ -191,7 +191,7 @@ class Host:
 
     def simulate(self, request: dict) -> dict:
         s = self.need_session()
-        _, S = self.batch(request, int(s.settings["samples"]))
+        _, S = self.batch(request, int(s.settings["batch"]))
         failed = int((~np.all(np.isfinite(S), axis=1)).sum())
         return {"simulations": len(s.params), "failed": failed}
 
@@ -201,7 +201,7 @@ class Host:
         (novelty.probe_score against the explored antecedents' consequents,
         at least novelty.PASS)."""
         s = self.need_session()
-        samples = int(s.settings["samples"])
+        samples = int(s.settings["batch"])
         _, S = self.batch(request, min(int(s.settings["probe"]), samples))
         # rounded as the trace keeps it, so that a resumed run and another
         # machine read the same score from it
@@ -238,7 +238,7 @@ class Host:
         key = (len(s.params), len(entries))
         if s.known is None or s.known[0] != key:
             seed = int(s.settings["seed"])
-            s.known = (key, known(s.params, s.scores, s.verdicts(entries), int(s.settings["samples"]),
+            s.known = (key, known(s.params, s.scores, s.verdicts(entries), int(s.settings["batch"]),
                                   seed, shuffle_seed(seed, 0, len(s.params))))
         k = s.known[1]
         level = float(s.settings["novelty"])

@@ -4,8 +4,9 @@ Tables of their own (prefixed `exploration_`), written through a connection
 of their own in WAL mode, beside the simulator's results:
 
 * `exploration_runs`: one row per run, keyed by a hash of the settings that
-  decide its course (oracle, seed, samples, threshold, initial antecedent,
-  breadth of modify), with those settings as JSON;
+  decide its course (course/2 of theory/defaults.pl: oracle, seed, batch,
+  significance or slope, initial antecedent, breadth of modify, ...), with
+  those settings as JSON;
 * `exploration_checkpoints`: after every explored antecedent, the state of
   the loop (the explored antecedents and A_new, as Prolog term text) and
   that iteration's trace line;

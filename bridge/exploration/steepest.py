@@ -53,7 +53,7 @@ def significant_planes(s: Session, request: dict) -> dict:
     """The discovering curiosity's planes (see the module's text): every
     antecedent with a significant plane, followed, and the first of them."""
     entries = request["antecedents"]
-    alpha = float(s.settings["threshold"])
+    alpha = float(s.settings["significance"])
     W = s.weight_matrix(entries)
     valid = s.valid
     X = normalise(s.params[valid])

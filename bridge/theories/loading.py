@@ -118,6 +118,12 @@ def converted(theory: Theory, to: str, out: Path | str | None = None) -> str:
     return write_dfl(theory, provenance_lines(theory)) if to == "dfl" else theory.native()
 
 
+#: Settings of theories learned before explore's options had one meaning
+#: each, by the names they have now (the discovering curiosity's
+#: significance_permille kept its name).
+RENAMED_SETTINGS = {"max_rules": "budget", "samples": "batch",
+                    "threshold_permille": "slope_permille", "prior": "prior_batch"}
+
 _SETTING = re.compile(r"^\s*setting\(\s*([a-z][A-Za-z0-9_]*)\s*,\s*(.+?)\s*\)\s*\.\s*$")
 
 
@@ -128,11 +134,11 @@ def settings(theory: Theory) -> dict[str, list]:
     its native file(s) (`Theory.settings`), then any among the lines it keeps
     aside (`extra`); none for DFL files or hand-written theories without
     such facts. Values are str or int."""
-    out = {k: list(v) for k, v in theory.settings.items()}
+    out = {RENAMED_SETTINGS.get(k, k): list(v) for k, v in theory.settings.items()}
     for m in map(_SETTING.match, theory.extra):
         if m:
             v = m.group(2).strip('"')
-            have = out.setdefault(m.group(1), [])
+            have = out.setdefault(RENAMED_SETTINGS.get(m.group(1), m.group(1)), [])
             value = int(v) if v.lstrip("-").isdigit() else v
             if value not in have:
                 have.append(value)

@@ -9,7 +9,7 @@
 After each explored antecedent, the discovering curiosity (option
 curiosity(discover)) makes A_new anew. A plane's slopes count only where
 they beat shuffles of the same weighted pours (a permutation test at the
-significance level given as threshold). The candidates of a step are the
+significance level given as significance(X)). The candidates of a step are the
 antecedents that move the pours past the point where a significant plane's
 verdict flips (modify_past/4, every significant plane and parameter), the
 neighbours of the antecedent just explored (neighbours/3), and `jumps`

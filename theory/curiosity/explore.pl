@@ -20,47 +20,12 @@ oracle's side too (aborted), then propagates.
 
 %!  explore(+Options:list) is det.
 %
-%   Run Algorithm 1 and write the learned theory. Options (the defaults
-%   of those marked * are in theory/defaults.pl):
+%   Run Algorithm 1 and write the learned theory. Options: those of the
+%   option table of theory/defaults.pl (docs/options.md), each as
+%   Name(Value), e.g. explore([oracle(synthetic), budget(5), out(File)]):
+%   their types, ranges and defaults are there. Besides them:
 %
-%     - oracle(+Name)*: pybullet or synthetic
-%     - max_rules(+N)*: stop after N explored antecedents (discover: the
-%       pours of N batches, its batches and probes)
-%     - samples(+N): simulations per explored antecedent (default: the
-%       number of parameters plus one)
-%     - curiosity(+Mode)*: discover or paper (see theory/curiosity.pl)
-%     - queue(+N)*: A_new keeps the N most novel candidates (discover)
-%     - jumps(+N)*: uniformly random valid antecedents drawn as candidates
-%       each step (discover)
-%     - threshold(+X)*: for discover, the significance level of the
-%       permutation test (default significance_permille); for paper, the
-%       slope below which nothing new is explored (default threshold_permille)
-%     - permutations(+N)*: shuffles of the permutation test (discover)
-%     - resample(+N)*: more batches of an antecedent whose planes are all
-%       undecided and that queued nothing new (discover); max_rules then
-%       counts batches
-%     - novelty(+X)*: the estimated chance of a new behaviour, from 0 to 1,
-%       a candidate needs to be queued, scaled by the probes' mean score
-%       so far (discover; default novelty_permille)
-%     - probe(+N)*: pours of a candidate's probe, 0 for none (discover)
-%     - probe_attempts(+N)*: candidates probed at most in a step (discover)
-%     - cover(+N)*: the last probe of a step goes to the candidate whose
-%       rarest proposition the fewest pours so far hold, when fewer than N
-%       do; 0 for never (discover)
-%     - prior(+B)*: 1 to explore the priors (the empty antecedent, every
-%       parameter from its prior, as a question's unsaid ones) with the
-%       last batch of the budget, 0 not to (discover)
-%     - seed(+S)*: seed of every random choice
-%     - initial(+Props)*: a_0 (default_initial/1)
-%     - breadth(+K)*: the paper's modify uses the K largest gradient components
-%     - ridge(+X)*: L2 penalty of the plane fits (0 is plain least squares)
-%     - qualify(+Mode)*: weighted or argmax (the paper's rule)
-%     - out(+File)*: the learned theory (relative to theory/)
-%     - store(+File): the SQLite store of simulations and state
-%     - resume(+Bool): continue the saved exploration with these settings
-%     - executor(+E), workers(+N), ray_address(+A): where to simulate
 %     - oracle_options(+Dict): arguments of the oracle (a dict or JSON text)
-%     - progress(+Bool): show a progress bar (default true)
 %
 %   @error exploration_error(Text) for bad options or a failing oracle.
 explore(Options) :-

@@ -6,10 +6,11 @@ test(bad_curiosity, [true(R = error(_))]) :-
     explore_result([curiosity(wild)], R).
 
 test(explore_without_the_bridge_says_so, [throws(exploration_error(_))]) :-
-    explore([oracle(synthetic), max_rules(1)]).
+    explore([oracle(synthetic), budget(1)]).
 
-test(bad_option, [forall(member(O, [max_rules(0), novelty(2), queue(0), jumps(0), probe(-1),
-                                    probe(two), probe_attempts(0), prior(2), prior(-1)])),
+test(bad_option, [forall(member(O, [budget(0), novelty(2), queue(0), jumps(0), probe(-1),
+                                    probe(two), probe_attempts(0), prior_batch(2),
+                                    prior_batch(-1), significance(2), slope(-1)])),
                   true(R = error(_))]) :-
     explore_result([O], R).
 

@@ -8,14 +8,14 @@ Each step pops a_c from A_new (for the discovering curiosity with probes,
 the first candidate whose probe passes: probe.pl), explores it (a batch of
 simulations), fits the planes of every explored antecedent, and queues the
 new antecedents of the steepest plane: for the paper's curiosity,
-modify/5 along it when its slope exceeds the threshold (paper_added/5);
+modify/5 along it when its slope exceeds the slope setting (paper_added/5);
 for the discovering one, its candidates by novelty (discover.pl). The
 state (state.pl) and a trace of the step are saved after each step
 (exploration_checkpoint).
 
-The budget is max_rules batches of simulations: as many antecedents for
+The budget is `budget` batches of simulations: as many antecedents for
 the paper's curiosity; the discovering one also spends pours on probes
-and on more batches of undecided antecedents. With prior(1) (the default)
+and on more batches of undecided antecedents. With prior_batch(1) (the default)
 the last batch of the budget (or the next, when A_new is empty) goes to
 the priors: the empty antecedent, every parameter drawn from its prior,
 unprobed and unranked. A question leaves parameters unsaid, and they
@@ -37,11 +37,11 @@ the priors (the budget less one batch).
 %!  loop(+S0, +Settings, -S, -Stop) is det.
 %
 %   Explore antecedents from A_new until it is empty (Stop = a_new_empty)
-%   or the budget of max_rules batches of simulations would be exceeded by
-%   another step (Stop = max_rules): as many antecedents for the paper's
+%   or the budget of `budget` batches of simulations would be exceeded by
+%   another step (Stop = budget): as many antecedents for the paper's
 %   curiosity, which samples each once; the discovering one may sample an
 %   undecided antecedent again and spends pours on probes, and so explores
-%   at most as many with the same budget of pours. With prior(1) the
+%   at most as many with the same budget of pours. With prior_batch(1) the
 %   priors take the batch before the step that could exceed the budget
 %   with it, or the next when A_new is empty (priors_pending/2).
 loop(S0, Settings, S, Stop) :-
@@ -64,26 +64,26 @@ next_move(S0, Settings, Move) :-
     S0 = st(_, Explored, ANew, _),
     spent(S0, Settings, Spent),
     step_cost(Settings, Most),
-    Budget is Settings.max_rules * Settings.samples,
+    Budget is Settings.budget * Settings.batch,
     (   priors_pending(Explored, Settings),
-        Spent + Settings.samples =< Budget,
-        ( ANew == [] ; Spent + Most + Settings.samples > Budget )
+        Spent + Settings.batch =< Budget,
+        ( ANew == [] ; Spent + Most + Settings.batch > Budget )
     ->  Move = priors
     ;   ANew == []
     ->  Move = stop(a_new_empty)
     ;   Spent + Most > Budget
-    ->  Move = stop(max_rules)
+    ->  Move = stop(budget)
     ;   Move = step
     ).
 
 %   priors_pending(+Explored, +Settings): the priors are to be explored
-%   (prior(1)) and have not been yet. Their batch is the last of the
+%   (prior_batch(1)) and have not been yet. Their batch is the last of the
 %   budget, or comes when A_new is empty: their pours then teach the
 %   general rules without changing the course of the curiosity before
 %   them.
 priors_pending(Explored, Settings) :-
     Settings.curiosity == discover,
-    Settings.prior =:= 1,
+    Settings.prior_batch =:= 1,
     \+ memberchk(ant(_, [], _, prior), Explored).
 
 %   spent(+State, +Settings, -Pours): the pours spent so far: a batch per
@@ -91,7 +91,7 @@ priors_pending(Explored, Settings) :-
 spent(st(I, _, _, SetAside), Settings, Pours) :-
     length(SetAside, K),
     probe_size(Settings, M),
-    Pours is I * Settings.samples + K * M.
+    Pours is I * Settings.batch + K * M.
 
 %   step_cost(+Settings, -Pours): the most pours a step spends: its batch,
 %   and the probes of the candidates it may set aside. The loop stops when
@@ -99,11 +99,11 @@ spent(st(I, _, _, SetAside), Settings, Pours) :-
 %   and a longer run continues a shorter one.
 step_cost(Settings, Pours) :-
     probe_size(Settings, M),
-    Pours is Settings.samples + (Settings.probe_attempts - 1) * M.
+    Pours is Settings.batch + (Settings.probe_attempts - 1) * M.
 
 probe_size(Settings, M) :-
     (   Settings.curiosity == discover
-    ->  M is min(Settings.probe, Settings.samples)
+    ->  M is min(Settings.probe, Settings.batch)
     ;   M = 0
     ).
 
@@ -202,14 +202,14 @@ best_trace(Best, Settings, BestT) :-
 followed(Best, Settings) :-
     (   Settings.curiosity == discover
     ->  Best.significant == true
-    ;   Best.slope > Settings.threshold
+    ;   Best.slope > Settings.slope
     ).
 
 %   paper_added(+Best, +Settings, +Explored, +Rest, -Added): the paper's
 %   step: modify/5 along the steepest plane's signed gradient, when its
-%   slope exceeds the threshold (else nothing is added).
+%   slope exceeds the slope setting (else nothing is added).
 paper_added(Best, Settings, Explored, Rest, Added) :-
-    (   Best.slope > Settings.threshold
+    (   Best.slope > Settings.slope
     ->  memberchk(ant(Best.antecedent, MProps, _, _), Explored),
         dict_pairs(Best.gradient, _, Gradient),
         direction(Gradient, Best.mean, Direction),

@@ -6,8 +6,8 @@
 % The priors (the empty antecedent) take the last batch of the budget, or
 % the next when A_new is empty, once; a_0 alone starts A_new.
 test(the_priors_take_the_last_batch_once) :-
-    Settings = _{curiosity:discover, initial:[pour_low], prior:1, max_rules:4,
-                 samples:10, probe:2, probe_attempts:3},
+    Settings = _{curiosity:discover, initial:[pour_low], prior_batch:1, budget:4,
+                 batch:10, probe:2, probe_attempts:3},
     initial_state(_{}, Settings, S0),
     S0 == st(0, [], [cand([pour_low], none, initial)], []),
     C = cand([pour_high], none, jump),
@@ -20,14 +20,14 @@ test(the_priors_take_the_last_batch_once) :-
     next_move(st(1, [A1], [], []), Settings, priors),
     % explored once, never again
     P = ant(a2, [], none, prior),
-    next_move(st(3, [A1, P], [C], []), Settings, stop(max_rules)),
+    next_move(st(3, [A1, P], [C], []), Settings, stop(budget)),
     next_move(st(2, [A1, P], [], []), Settings, stop(a_new_empty)),
     next_move(st(2, [A1, P], [C], []), Settings, step),
-    % not when they would exceed the budget, nor without prior(1), nor for
+    % not when they would exceed the budget, nor without prior_batch(1), nor for
     % the paper's curiosity
-    next_move(st(4, [A1], [C], []), Settings, stop(max_rules)),
-    next_move(st(2, [A1], [C], []), Settings.put(prior, 0), step),
+    next_move(st(4, [A1], [C], []), Settings, stop(budget)),
+    next_move(st(2, [A1], [C], []), Settings.put(prior_batch, 0), step),
     next_move(st(2, [A1], [C], []), Settings.put(curiosity, paper), step),
-    initial_state(_{}, Settings.put(prior, 0), S0).
+    initial_state(_{}, Settings.put(prior_batch, 0), S0).
 
 :- end_tests(curiosity_loop).

@@ -11,7 +11,7 @@ pours of the candidate's batch are simulated, and when they do not show a
 new, reproducible consequent the candidate is set aside and the next one
 probed, at most `probe_attempts` of them (choose/6). With cover(N) above 0
 the last probe of a step goes where the pours so far are fewest
-(fewest/5). The budget is then in pours: max_rules batches' worth,
+(fewest/5). The budget is then in pours: `budget` batches' worth,
 batches and probes together (loop.pl).
 */
 

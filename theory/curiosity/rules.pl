@@ -37,13 +37,14 @@ learned(Explored, SetAside, Settings, Stop, Left, Facts) :-
 %   exploration_qualify, with the oracle's version and the simulations).
 setting_facts(Settings, Reply, Stop, Explored, Left, Facts) :-
     length(Explored, N),
-    Permille is round(Settings.threshold * 1000),
+    SignificancePermille is round(Settings.significance * 1000),
+    SlopePermille is round(Settings.slope * 1000),
     RidgePermille is round(Settings.ridge * 1000),
     NoveltyPermille is round(Settings.novelty * 1000),
     string_value(Reply.oracle_version, Version),
     (   Settings.curiosity == discover
     ->  Threshold = [ setting(curiosity, discover),
-                      setting(significance_permille, Permille),
+                      setting(significance_permille, SignificancePermille),
                       setting(permutations, Settings.permutations),
                       setting(resample, Settings.resample),
                       setting(novelty_permille, NoveltyPermille),
@@ -52,14 +53,14 @@ setting_facts(Settings, Reply, Stop, Explored, Left, Facts) :-
                       setting(probe, Settings.probe),
                       setting(probe_attempts, Settings.probe_attempts),
                       setting(cover, Settings.cover),
-                      setting(prior, Settings.prior) ]
-    ;   Threshold = [ setting(threshold_permille, Permille) ]
+                      setting(prior_batch, Settings.prior_batch) ]
+    ;   Threshold = [ setting(slope_permille, SlopePermille) ]
     ),
     append([ [ setting(oracle, Settings.oracle),
                setting(oracle_version, Version),
                setting(seed, Settings.seed),
-               setting(samples, Settings.samples),
-               setting(max_rules, Settings.max_rules) ],
+               setting(batch, Settings.batch),
+               setting(budget, Settings.budget) ],
              Threshold,
              [ setting(breadth, Settings.breadth),
                setting(ridge_permille, RidgePermille),

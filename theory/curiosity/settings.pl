@@ -23,8 +23,7 @@ defaults of theory/defaults.pl. A bad option raises
 %   Settings holds every option of explore/1 (see explore.pl), as the
 %   option table of theory/defaults.pl declares them: those of Options,
 %   checked against their type and range, the others their defaults. The
-%   curiosity is read first (the paper's and the discovering one have
-%   thresholds of their own); store, workers, ray_address and
+%   curiosity is read first; store, workers, ray_address and
 %   oracle_options are keys only when given. The option general is
 %   Python's (the general rules learned after explore/1), not a key.
 %
@@ -38,10 +37,6 @@ settings(Options, S) :-
               setting_value(Key, Options, Curiosity, Value)
             ), Pairs),
     dict_pairs(S0, _, [curiosity-Curiosity|Pairs]),
-    (   Curiosity == discover, S0.threshold > 1
-    ->  throw(exploration_error("threshold: a significance level is at most 1"))
-    ;   true
-    ),
     (   option(oracle_options(OO), Options)
     ->  (   is_dict(OO) -> OracleOptions = OO ; atom_json_dict(OO, OracleOptions, []) ),
         put_dict(oracle_options, S0, OracleOptions, S)
@@ -66,13 +61,11 @@ setting_value(Key, Options, Curiosity, Value) :-
     ).
 
 %   unsaid(+Key, +Default, +Curiosity, -Value): the value of an option not
-%   given: the table's default, or one set otherwise (the number of
-%   samples, the threshold of the curiosity, a_0, the learned theory).
-unsaid(samples, none, _, N) :- !,
+%   given: the table's default, or one set otherwise (the pours of a
+%   batch, a_0, the learned theory).
+unsaid(batch, none, _, N) :- !,
     aggregate_all(count, parameter(_, _, _, _, _), NParams),
     N is NParams + 1.
-unsaid(threshold, none, Curiosity, T) :- !,
-    (   Curiosity == paper -> default(threshold, T) ; default(significance, T) ).
 unsaid(initial, none, _, Initial) :- !,
     default_initial(Initial).
 unsaid(out, _, _, File) :- !,

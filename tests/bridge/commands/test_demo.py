@@ -10,7 +10,7 @@ from tests.conftest import assert_one_line_error, run_cli
 
 def test_demo_learns_writes_asks_and_plans(tmp_path):
     out = tmp_path / "learned" / "pouring.pl"           # the directory is made
-    args = ["demo", "--oracle", "synthetic", "--max-rules", "5", "--out", str(out),
+    args = ["demo", "--oracle", "synthetic", "--budget", "5", "--out", str(out),
             "--store", str(tmp_path / "s.sqlite"), "--verify", "3", "--no-progress"]
     r = run_cli(*args)
     assert r.code == 0, r.err
@@ -52,7 +52,7 @@ def theory_version() -> str:
 
 
 def test_demo_refuses_bad_options_in_one_line(tmp_path):
-    r = run_cli("demo", "--max-rules", "0", "--out", str(tmp_path / "t.pl"))
-    assert "--max-rules" in assert_one_line_error(r)
+    r = run_cli("demo", "--budget", "0", "--out", str(tmp_path / "t.pl"))
+    assert "--budget" in assert_one_line_error(r)
     r = run_cli("demo", "--oracle", "synthetic", "--out", str(tmp_path))
     assert "a directory, not a file" in assert_one_line_error(r)

@@ -26,7 +26,7 @@ def learned(tmp_path_factory) -> tuple[Path, Path]:
     d = tmp_path_factory.mktemp("learned")
     # without the priors' batch: with it, this small run's last antecedent ends
     # past the last whole batch both methods are compared at
-    r = run_cli("explore", *FAST, "--prior", "0", "--max-rules", "6", "--samples", "12", "--out",
+    r = run_cli("explore", *FAST, "--prior-batch", "0", "--budget", "6", "--batch", "12", "--out",
                 str(d / "t.pl"), "--store", str(d / "s.sqlite"))
     assert r.code == 0, r.err
     return d / "t.pl", d / "s.sqlite"
@@ -54,7 +54,7 @@ def test_read_learned_finds_the_explored_antecedents_in_order(learned):
     firsts = [t for t in trace if not t["via"].startswith("more")]
     assert [tuple(sorted(t["antecedent"])) for t in firsts] == L.antecedents
     assert [sum(1 for t in trace if t["id"] == f"a{i}") for i in range(1, len(firsts) + 1)] == L.batches
-    assert L.setting("oracle") == "synthetic" and L.setting("samples") == 12
+    assert L.setting("oracle") == "synthetic" and L.setting("batch") == 12
 
 
 def test_rules_rebuilt_from_the_store_are_the_theory_prolog_wrote(evaluated, learned):

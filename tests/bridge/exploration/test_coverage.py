@@ -39,7 +39,7 @@ def test_covering_gives_every_proposition_pours_of_its_own(tmp_path):
     need = 10     # the pours a body needed before the general learner asked for its own
     rare = {}
     for cover in (0, 31):
-        r = run(tmp_path, name=f"c{cover}", seed=1, max_rules=25, cover=cover)
+        r = run(tmp_path, name=f"c{cover}", seed=1, budget=25, cover=cover)
         P, S = r["pours"]
         rare[cover] = sorted(p for p, n in counts(P[np.all(np.isfinite(S), axis=1)]).items()
                              if n < need)

@@ -24,7 +24,7 @@ V = load_vocabulary()
 
 
 def run(tmp: Path, name: str = "t", **kw) -> dict:
-    opts = dict(curiosity="paper", oracle="synthetic", max_rules=8, out=tmp / f"{name}.pl",
+    opts = dict(curiosity="paper", oracle="synthetic", budget=8, out=tmp / f"{name}.pl",
                 store=tmp / "store.sqlite", progress=False, executor="inline",
                 general=False)          # Algorithm 1's rules alone
     opts.update(kw)
@@ -73,7 +73,7 @@ def test_one_rule_per_outcome_literal_with_provenance(explored):
     for k, v in f["setting"]:
         settings[k].append(v)
     assert settings["oracle"] == ["synthetic"] and settings["seed"] == [1]
-    assert settings["samples"] == [31] and settings["explored"] == [result["explored"]]
+    assert settings["batch"] == [31] and settings["explored"] == [result["explored"]]
     assert settings["simulations"] == [31 * result["explored"]]
     assert sorted(settings["initial"]) == ["pour_mid_height", "pour_near_rim", "pour_steeply_tilted"]
     bodies = defaultdict(set)
@@ -156,14 +156,14 @@ def test_same_seed_same_theory_and_other_seed_runs(tmp_path, explored):
     tmp, result = explored
     again = run(tmp_path)
     assert Path(again["out"]).read_text() == Path(result["out"]).read_text()
-    other = run(tmp_path, name="o", seed=2, qualify="argmax", max_rules=3)
+    other = run(tmp_path, name="o", seed=2, qualify="argmax", budget=3)
     text = Path(other["out"]).read_text()
     assert "setting(seed, 2)." in text and "setting(qualify, argmax)." in text
 
 
 def test_stops_when_a_new_is_empty(tmp_path):
-    # a threshold no slope reaches: only a_0 is explored
-    r = run(tmp_path, threshold=1e9)
+    # a slope setting no plane reaches: only a_0 is explored
+    r = run(tmp_path, slope=1e9)
     assert r["explored"] == 1 and r["stopped"] == "a_new_empty"
     assert "setting(stopped, a_new_empty)." in Path(r["out"]).read_text()
 
@@ -182,7 +182,7 @@ def test_failed_simulations_are_left_out_and_counted(tmp_path):
     failed ones out of weights and fits, and says how many failed."""
     crash = list(range(40, 57))            # about a sixth of the prior's counts (40 to 140)
     r = exploration.explore(Options(
-        oracle="faulty", oracle_options={"crash": crash}, max_rules=2, samples=16, probe=0,
+        oracle="faulty", oracle_options={"crash": crash}, budget=2, batch=16, probe=0,
         out=tmp_path / "f.pl", store=tmp_path / "f.sqlite", progress=False,
         executor="local", workers=2, initial=["pour_low"]))
     assert r["explored"] == 2 and 0 < r["failed"] < r["simulations"]

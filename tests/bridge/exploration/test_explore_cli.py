@@ -12,10 +12,10 @@ FAST = ["--oracle", "synthetic", "--executor", "inline", "--no-progress"]
 @pytest.mark.parametrize("args, words", [
     (["--initial", "pour_sideways"], "unknown proposition 'pour_sideways'"),
     (["--initial", "pour_low,pour_high"], "invalid antecedent"),
-    (["--max-rules", "0"], "argument --max-rules: must be at least 1, not 0"),
-    (["--threshold", "-1"], "argument --threshold: must be at least 0, not -1"),
+    (["--budget", "0"], "argument --budget: must be at least 1, not 0"),
+    (["--slope", "-1"], "argument --slope: must be at least 0, not -1"),
     (["--oracle", "nope"], "invalid choice"),
-    (["--curiosity", "discover", "--threshold", "2"], "a significance level"),
+    (["--significance", "2"], "argument --significance: must be at most 1, not 2"),
     (["--curiosity", "wild"], "invalid choice"),
     (["--permutations", "0"], "argument --permutations: must be at least 1, not 0"),
     (["--resample", "-1"], "argument --resample: must be at least 0, not -1"),
@@ -25,7 +25,7 @@ FAST = ["--oracle", "synthetic", "--executor", "inline", "--no-progress"]
     (["--probe", "-1"], "argument --probe: must be at least 0, not -1"),
     (["--probe-attempts", "0"], "argument --probe-attempts: must be at least 1, not 0"),
     (["--cover", "-1"], "argument --cover: must be at least 0, not -1"),
-    (["--prior", "2"], "invalid choice"),
+    (["--prior-batch", "2"], "invalid choice"),
 ])
 def test_bad_input_is_one_line_and_nonzero(tmp_path, args, words):
     r = run_cli("explore", *FAST, *args, "--out", str(tmp_path / "t.pl"),
@@ -38,7 +38,7 @@ def test_bad_input_is_one_line_and_nonzero(tmp_path, args, words):
 
 def test_explore_command_reports_what_it_wrote(tmp_path):
     out = tmp_path / "sub" / "learned.pl"
-    r = run_cli("explore", *FAST, "--curiosity", "paper", "--max-rules", "3", "--samples", "12", "--out", str(out),
+    r = run_cli("explore", *FAST, "--curiosity", "paper", "--budget", "3", "--batch", "12", "--out", str(out),
                 "--store", str(tmp_path / "s.sqlite"))
     assert r.code == 0, r.err
     assert out.is_file() and out.with_suffix(".trace.jsonl").is_file()
@@ -47,15 +47,15 @@ def test_explore_command_reports_what_it_wrote(tmp_path):
     assert 1 <= len(steps) <= 3
     assert f"explored {len(steps)} antecedents with {12 * len(steps)} simulations" in r.out
     assert out.with_suffix(".trace.png").is_file()
-    assert "setting(samples, 12)." in out.read_text()
+    assert "setting(batch, 12)." in out.read_text()
 
 
 def test_progress_counts_the_budget_it_spends(tmp_path):
     """The discovering curiosity's budget is in pours (probes included), so
-    its progress bar counts pours against max_rules batches of them; the
+    its progress bar counts pours against `budget` batches of them; the
     paper's counts explored antecedents. (The general learner's own pours
     have a bar of their own after it.)"""
-    base = ["--oracle", "synthetic", "--executor", "inline", "--max-rules", "3", "--samples", "12",
+    base = ["--oracle", "synthetic", "--executor", "inline", "--budget", "3", "--batch", "12",
             "--store", str(tmp_path / "s.sqlite")]
     r = run_cli("explore", *base, "--out", str(tmp_path / "d.pl"))
     assert r.code == 0, r.err
@@ -71,7 +71,7 @@ def test_progress_counts_the_budget_it_spends(tmp_path):
 
 def test_prolog_command_drives_exploration(tmp_path):
     out = tmp_path / "p.pl"
-    goal = (f"explore([curiosity(paper), oracle(synthetic), max_rules(2), executor(inline), progress(false), "
+    goal = (f"explore([curiosity(paper), oracle(synthetic), budget(2), executor(inline), progress(false), "
             f"out('{out}'), store('{tmp_path / 's.sqlite'}')]), "
             f"theory_files:load_facts('{out}', m), aggregate_all(count, m:rule(_, _, _), N), "
             f"format('rules: ~w~n', [N])")

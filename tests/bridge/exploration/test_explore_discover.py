@@ -28,10 +28,10 @@ FIXTURES = Path(__file__).parent / "fixtures"
 
 
 def run(tmp: Path, name: str = "t", **kw) -> dict:
-    opts = dict(curiosity="discover", oracle="synthetic", max_rules=6, out=tmp / f"{name}.pl",
+    opts = dict(curiosity="discover", oracle="synthetic", budget=6, out=tmp / f"{name}.pl",
                 store=tmp / f"{name}.sqlite", progress=False, executor="inline",
                 general=False,          # Algorithm 1 alone
-                prior=0)                # the course the known answers below were found on
+                prior_batch=0)                # the course the known answers below were found on
                                         # (with the priors' batch: test_priors.py)
     opts.update(kw)
     return exploration.explore(Options(**opts))
@@ -84,7 +84,7 @@ def test_steep_direction_from_a0_in_nine_of_ten_seeds(tmp_path):
     really has, in at least 9 of 10 seeds; and never one it does not have."""
     hits = wrong = 0
     for seed in range(1, 11):
-        r = run(tmp_path, name=f"s{seed}", seed=seed, max_rules=3)
+        r = run(tmp_path, name=f"s{seed}", seed=seed, budget=3)
         for t in trace(r):
             best = t["best"]
             if best["significant"]:
@@ -173,7 +173,7 @@ def test_runs_are_reproducible_and_add_only_new_valid_antecedents(tmp_path):
 
 
 def test_probes_set_candidates_aside_and_keep_to_the_pour_budget(tmp_path):
-    r = run(tmp_path, name="p", seed=1, max_rules=8)        # probes of 8 pours, 3 a step
+    r = run(tmp_path, name="p", seed=1, budget=8)        # probes of 8 pours, 3 a step
     lines = trace(r)
     explored = [tuple(t["antecedent"]) for t in lines]
     aside = [tuple(p["antecedent"]) for t in lines for p in t["probes"] if not p["kept"]]
@@ -204,7 +204,7 @@ def test_probes_set_candidates_aside_and_keep_to_the_pour_budget(tmp_path):
     assert share[-1] == pytest.approx(sum(scores) / len(scores)) and 0 < share[-1] < 1
     assert Path(r["plot"]).stat().st_size > 0
     # without probes: none, and the whole budget in batches
-    r0 = run(tmp_path, name="q", seed=1, max_rules=8, probe=0)
+    r0 = run(tmp_path, name="q", seed=1, budget=8, probe=0)
     assert all(t["probes"] == [] for t in trace(r0)) and r0["simulations"] == 8 * 31
     assert set(probe_means(trace(r0))) == {None}
 
@@ -216,7 +216,7 @@ def test_a_new_dries_up_as_the_probes_stop_finding(tmp_path):
     # level nothing new is queued, A_new holds at most the last antecedent's
     # next batch, and the run stops
     level = 0.6
-    r = run(tmp_path, name="d", seed=6, max_rules=25, novelty=level)
+    r = run(tmp_path, name="d", seed=6, budget=25, novelty=level)
     lines = trace(r)
     found = probed = 0
     dry = []
@@ -238,14 +238,14 @@ def test_a_new_keeps_candidates_while_the_probes_nearly_pass(tmp_path):
     # alone (1 + passed) / (1 + probed) is under a half in the first eight
     # steps; counted by their scores the probes find more, and the
     # exploration goes on to the budget with candidates always queued
-    r = run(tmp_path, name="n", seed=7, max_rules=25, novelty=0.3)
+    r = run(tmp_path, name="n", seed=7, budget=25, novelty=0.3)
     lines = trace(r)
     probes = [p["score"] for t in lines[:8] for p in t["probes"]]
     near = [s for s in probes if 0 < s < PASS]
     assert near                                     # some probes nearly pass
     assert (1 + sum(s >= PASS for s in probes)) / (1 + len(probes)) < 0.5 < \
         (1 + sum(probes)) / (1 + len(probes))
-    assert r["stopped"] == "max_rules" and r["explored"] > 8
+    assert r["stopped"] == "budget" and r["explored"] > 8
     assert all(t["a_new"] > 0 for t in lines)
 
 
@@ -262,7 +262,7 @@ def test_paper_curiosity_writes_the_theory_it_wrote_before(tmp_path):
     (before, with the same code, it explored 12 antecedents; the ordinary
     pour empties A_new after 5), with the trace's numbers kept to
     trace.DIGITS significant digits, the same on every machine."""
-    r = run(tmp_path, name="p", curiosity="paper", seed=3, max_rules=12)
+    r = run(tmp_path, name="p", curiosity="paper", seed=3, budget=12)
     assert Path(r["out"]).read_bytes() == (FIXTURES / "paper_synthetic_seed3.pl").read_bytes()
     assert (Path(r["out"]).with_suffix(".trace.jsonl").read_bytes()
             == (FIXTURES / "paper_synthetic_seed3.trace.jsonl").read_bytes())

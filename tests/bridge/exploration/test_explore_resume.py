@@ -15,7 +15,7 @@ import pytest
 
 from tests.conftest import run_cli
 
-ARGS = ["explore", "--oracle", "synthetic", "--executor", "inline", "--max-rules", "10",
+ARGS = ["explore", "--oracle", "synthetic", "--executor", "inline", "--budget", "10",
         "--seed", "3", "--no-progress"]
 
 
@@ -72,14 +72,14 @@ def test_killed_exploration_resumes_to_the_same_theory(tmp_path):
 def test_resume_of_a_finished_run_and_a_longer_one(tmp_path, level):
     common = ["--out", str(tmp_path / "t.pl"), "--store", str(tmp_path / "s.sqlite")]
     short = ["explore", "--oracle", "synthetic", "--executor", "inline", "--no-progress",
-             "--seed", "4", "--prior", "0", *level]
-    assert run_cli(*short, "--max-rules", "4", *common).code == 0
+             "--seed", "4", "--prior-batch", "0", *level]
+    assert run_cli(*short, "--budget", "4", *common).code == 0
     # resuming with a larger budget continues where it stopped ...
-    longer = run_cli(*short, "--max-rules", "7", "--resume", *common)
+    longer = run_cli(*short, "--budget", "7", "--resume", *common)
     assert longer.code == 0, longer.err
     continued = (tmp_path / "t.pl").read_text()
     # ... and ends where a run with that budget from scratch ends
-    fresh = run_cli(*short, "--max-rules", "7", "--out", str(tmp_path / "f.pl"),
+    fresh = run_cli(*short, "--budget", "7", "--out", str(tmp_path / "f.pl"),
                     "--store", str(tmp_path / "f.sqlite"))
     assert fresh.code == 0
     assert continued == (tmp_path / "f.pl").read_text()
@@ -90,10 +90,10 @@ def test_a_longer_run_continues_after_the_priors_batch(tmp_path):
     common = ["--out", str(out), "--store", str(tmp_path / "s.sqlite")]
     short = ["explore", "--oracle", "synthetic", "--executor", "inline", "--no-progress",
              "--seed", "4"]
-    assert run_cli(*short, "--max-rules", "4", *common).code == 0
+    assert run_cli(*short, "--budget", "4", *common).code == 0
     before = out.with_suffix(".trace.jsonl").read_text().splitlines()
     assert json.loads(before[-1])["via"] == "prior"
-    longer = run_cli(*short, "--max-rules", "7", "--resume", *common)
+    longer = run_cli(*short, "--budget", "7", "--resume", *common)
     assert longer.code == 0, longer.err
     after = out.with_suffix(".trace.jsonl").read_text().splitlines()
     # the shorter run's steps, its priors' batch last, then the curiosity
@@ -104,7 +104,7 @@ def test_a_longer_run_continues_after_the_priors_batch(tmp_path):
 
 def test_resume_with_nothing_saved_starts_afresh(tmp_path):
     r = run_cli("explore", "--oracle", "synthetic", "--executor", "inline", "--no-progress",
-                "--max-rules", "2", "--resume", "--out", str(tmp_path / "t.pl"),
+                "--budget", "2", "--resume", "--out", str(tmp_path / "t.pl"),
                 "--store", str(tmp_path / "s.sqlite"))
     assert r.code == 0
     assert "starting afresh" in r.err

@@ -1,4 +1,4 @@
-"""The priors explored with the last batch of the budget (`--prior 1`, the
+"""The priors explored with the last batch of the budget (`--prior-batch 1`, the
 default): the scene where nothing is said, every parameter drawn from its
 prior, as the parameters a question leaves unsaid are; the general rules
 then learn from pours where the questions are asked, and the curiosity's
@@ -16,13 +16,13 @@ from tests.bridge.exploration.test_explore_discover import A0, run, trace
 
 
 def test_the_priors_take_the_last_batch_and_are_drawn_again_by_the_evaluation(tmp_path):
-    r = run(tmp_path, seed=1, max_rules=6, prior=1)
+    r = run(tmp_path, seed=1, budget=6, prior_batch=1)
     lines = trace(r)
     assert [t["via"] for t in lines].count("prior") == 1
     last = lines[-1]
     assert last["via"] == "prior" and last["antecedent"] == []
     assert last["probes"] == []                     # explored as it is, not probed
-    assert r["stopped"] == "max_rules"
+    assert r["stopped"] == "budget"
     # its batch: 31 pours, every one within the priors' support, where the
     # curiosity's antecedents' pours after a_0's (of 15 to 20 propositions)
     # are not
@@ -38,7 +38,7 @@ def test_the_priors_take_the_last_batch_and_are_drawn_again_by_the_evaluation(tm
     assert before.mean() < 0.1
     # its rules have an empty body, and the theory records the setting
     text = Path(r["out"]).read_text()
-    assert "setting(prior, 1)." in text
+    assert "setting(prior_batch, 1)." in text
     assert f"provenance(r{k + 1}_no_spill, antecedent, a{k + 1})." in text
     assert f"body(r{k + 1}_" not in text
 
@@ -47,16 +47,16 @@ def test_by_default_the_priors_are_explored(tmp_path):
     from pantarhei.bridge.exploration import loop as exploration
     from pantarhei.bridge.exploration.loop import Options
 
-    r = exploration.explore(Options(oracle="synthetic", max_rules=3, out=tmp_path / "d.pl",
+    r = exploration.explore(Options(oracle="synthetic", budget=3, out=tmp_path / "d.pl",
                                     store=tmp_path / "d.sqlite", progress=False,
                                     executor="inline", general=False))
     assert [t["via"] for t in trace(r)] == ["initial", "prior"]
 
 
 def test_the_course_before_the_priors_is_the_one_without_them(tmp_path):
-    a = trace(run(tmp_path, name="a", seed=2, max_rules=8, prior=0))
+    a = trace(run(tmp_path, name="a", seed=2, budget=8, prior_batch=0))
     assert all(t["via"] != "prior" for t in a)
-    c = trace(run(tmp_path, name="c", seed=2, max_rules=8, prior=1))
+    c = trace(run(tmp_path, name="c", seed=2, budget=8, prior_batch=1))
     assert c[-1]["via"] == "prior"
     # every step before the priors' batch is the same step, to the digit;
     # the reserved batch costs the course at most its last step
@@ -67,7 +67,7 @@ def test_the_course_before_the_priors_is_the_one_without_them(tmp_path):
 def test_when_a_new_is_empty_the_priors_come_before_the_stop(tmp_path):
     # the novelty level 1 queues nothing: a_0 gets its more batches, then
     # the priors theirs, and A_new stays empty
-    r = run(tmp_path, seed=1, max_rules=10, prior=1, novelty=1.0)
+    r = run(tmp_path, seed=1, budget=10, prior_batch=1, novelty=1.0)
     assert [t["via"].split("(")[0] for t in trace(r)] == ["initial", "more", "more",
                                                           "prior", "more", "more"]
     assert r["stopped"] == "a_new_empty"
