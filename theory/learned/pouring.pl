@@ -16,8 +16,8 @@
 setting(oracle, pybullet).
 setting(oracle_version, "4").
 setting(seed, 1).
-setting(samples, 31).
-setting(max_rules, 25).
+setting(batch, 31).
+setting(budget, 25).
 setting(curiosity, discover).
 setting(significance_permille, 50).
 setting(permutations, 199).
@@ -28,14 +28,14 @@ setting(jumps, 31).
 setting(probe, 8).
 setting(probe_attempts, 3).
 setting(cover, 0).
-setting(prior, 1).
+setting(prior_batch, 1).
 setting(breadth, 3).
 setting(ridge_permille, 1000).
 setting(qualify, weighted).
 setting(explored, 18).
 setting(simulations, 734).
 setting(failed_simulations, 0).
-setting(stopped, max_rules).
+setting(stopped, budget).
 setting(a_new_left, 100).
 setting(initial, pour_mid_height).
 setting(initial, pour_near_rim).
