@@ -24,7 +24,7 @@ The forest's guess is checked before a batch is spent on it: a probe, the
 first pours of the candidate's batch, is simulated, and `probe_score` says
 how likely a batch of the candidate is to give a consequent no explored
 antecedent has and that another batch would give again (the candidate is
-set aside below PASS; theory/curiosity.pl, choose/6). The probes are also
+set aside below PASS; theory/curiosity/probe.pl, choose/6). The probes are also
 the record of how far the forest's estimates are borne out: a candidate is
 queued when its estimate, scaled by the probes' mean score so far
 (`discount`), reaches the novelty level. The ranking is the estimate's;

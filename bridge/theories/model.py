@@ -230,7 +230,7 @@ class Theory:
 
 def rule_id(antecedent: int, expectation: str) -> str:
     """The id of Algorithm 1's rule for the i-th explored antecedent and an
-    expectation (theory/curiosity.pl makes the same ids): `r<i>_<E>`."""
+    expectation (theory/curiosity/rules.pl makes the same ids): `r<i>_<E>`."""
     return f"r{int(antecedent)}_{expectation}"
 
 
