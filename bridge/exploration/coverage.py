@@ -4,9 +4,10 @@ The forest of bridge/exploration/novelty.py only knows where the pours
 are, so an exploration ranked by it alone keeps to the corner of the
 scene it started in. The last probe of a step (theory/curiosity/probe.pl,
 fewest/5, with `--cover` above 0) goes instead to the candidate whose
-rarest proposition the fewest pours so far hold: its probe's pours stay in the pool whether it passes or not, for the
-forest, the planes and the general rules, which need `min_support` pours
-of a proposition to answer a question about it from its own pours.
+rarest proposition the fewest pours so far hold: its probe's pours stay
+in the pool whether it passes or not, for the forest, the planes and the
+general rules, which need `min_support` pours of a proposition to answer
+a question about it from its own pours.
 """
 from __future__ import annotations
 
