@@ -11,7 +11,7 @@ body costs |answered - P(e | B)|, plus `miss` where the two fall in
 different bands (holds, uncertain, fails: `band`), weighted by how often
 it is asked (the empty body `default_weight`, one proposition 1, a pair
 `pair_weight`). The default (the empty body, likelihood P(e | ())) comes
-first; then, while the expectation has fewer than `max_rules` rules, the
+first; then, while the expectation has fewer than `rules_per_expectation` rules, the
 rule for the body whose own likelihood removes the most cost joins, as
 long as it removes at least `min_gain`. A rule for one proposition answers
 every pair that holds it and has no rule of its own; a pair gets a rule
@@ -39,9 +39,9 @@ from pantarhei.bridge.learning.meaning import Meaning
 
 @dataclass(frozen=True)
 class Settings:
-    max_rules: int = 12        # per expectation, the default included
+    rules_per_expectation: int = 12   # the default included
     max_body: int = 2          # propositions in a body (0 to 2)
-    samples: int = 64          # drawn per body to estimate its likelihood
+    draws: int = 64            # parameterizations drawn per body to estimate its likelihood
     seed: int = 1
     #: an answer whose likelihood lies within this of one half is uncertain
     #: (theory/defaults.pl's uncertain_band, which the Prolog answers read)
@@ -57,10 +57,10 @@ class Settings:
     min_gain: float = 0.1
 
     def __post_init__(self) -> None:
-        if self.max_rules < 1 or not 0 <= self.max_body <= 2:
-            raise ValueError("max_rules must be at least 1 and max_body 0 to 2")
-        if not 0 <= self.band < 0.5 or self.samples < 1:
-            raise ValueError("band in [0, 1/2), samples at least 1")
+        if self.rules_per_expectation < 1 or not 0 <= self.max_body <= 2:
+            raise ValueError("rules_per_expectation must be at least 1 and max_body 0 to 2")
+        if not 0 <= self.band < 0.5 or self.draws < 1:
+            raise ValueError("band in [0, 1/2), draws at least 1")
         if min(self.miss, self.default_weight, self.pair_weight, self.min_gain) < 0:
             raise ValueError("miss, weights and min_gain at least 0")
 
@@ -153,7 +153,7 @@ class _Contrasts:
         answered = np.full(len(self.bodies), float(self.target[self.root]))
         now = self.cost(answered, np.arange(len(self.bodies)))
         taken = {self.root}
-        while len(chosen) < self.s.max_rules:
+        while len(chosen) < self.s.rules_per_expectation:
             best, best_gain = None, self.s.min_gain
             for i in range(len(self.bodies)):
                 if i in taken:

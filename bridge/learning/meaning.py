@@ -11,7 +11,7 @@ head.
 
 How P(e | B) is known. A gradient-boosted classifier of each verdict from
 the 30 parameters is trained on every pour (the model of the pours), and
-averaged over `samples` parameterizations drawn from P(.|B) (`Meaning`).
+averaged over `draws` parameterizations drawn from P(.|B) (`Meaning`).
 Importance weights alone cannot do it: an explored antecedent moves the
 parameters it names outside what a short question draws, so few explored
 pours lie in the support of P(.|B) for most B.
@@ -58,12 +58,12 @@ class Meaning:
     def __call__(self, bodies: Sequence[tuple[str, ...]]) -> np.ndarray:
         """len(bodies) x 9: the estimated P(e | B); NaN where B cannot be
         sampled. Shorter bodies, which more questions fall back on, get
-        more draws: `samples` for a pair, 4 times as many for one
+        more draws: `draws` for a pair, 4 times as many for one
         proposition, 16 times for the empty body."""
         out = np.full((len(bodies), len(self.models)), np.nan)
         rows, ok, sizes = [], [], []
         for i, b in enumerate(bodies):
-            n = self.settings.samples * {0: 16, 1: 4}.get(len(b), 1)
+            n = self.settings.draws * {0: 16, 1: 4}.get(len(b), 1)
             try:
                 rows.append(sample(list(b), n, _seed(self.settings.seed, b)))
             except InvalidAntecedent:

@@ -18,7 +18,7 @@ from pantarhei.theory.lexicon import load_vocabulary
 
 NAMES = load_vocabulary().expectation_names
 E = "no_spill"
-FAST = Settings(seed=3, samples=24)
+FAST = Settings(seed=3, draws=24)
 
 
 def scored(P: np.ndarray, spills) -> np.ndarray:
@@ -111,14 +111,14 @@ def synthetic_pours() -> tuple[np.ndarray, np.ndarray]:
 @pytest.fixture(scope="module")
 def synthetic():
     P, S = synthetic_pours()
-    return generalize(P, S, Settings(seed=2, samples=24))
+    return generalize(P, S, Settings(seed=2, draws=24))
 
 
 def test_bodies_are_short_and_rules_few(synthetic):
     s = Settings()
     for e in NAMES:
         rules = synthetic.of(e)
-        assert 1 <= len(rules) <= s.max_rules
+        assert 1 <= len(rules) <= s.rules_per_expectation
         assert all(len(r.body) <= s.max_body for r in rules)
         assert all(0.5 <= r.confidence <= 1 and 0 <= r.kept <= r.support for r in rules)
     assert len(synthetic.rules) > len(NAMES)      # contrasts, not defaults alone
@@ -190,7 +190,7 @@ def test_every_variant_of_the_logic_decides_alike():
     from pantarhei.bridge.reasoning.logic import ALL_SEMANTICS
 
     P, S = synthetic_pours()
-    synthetic = generalize(P, S, Settings(seed=2, samples=24))
+    synthetic = generalize(P, S, Settings(seed=2, draws=24))
     theory = _with_provenance(synthetic)
     scenes = [tuple(a[:k]) for k, a in zip([1, 2, 3, 6, 20] * 4, random_antecedents(13, 20))]
     # and where two conflicting rules of incomparable bodies both apply
