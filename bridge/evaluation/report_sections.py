@@ -43,7 +43,7 @@ def opening(ev: Evaluation, command: str) -> list[str]:
     return [f"# Evaluation of `{ev.theory}`", "",
             f"Measured by `{command}` with the {ev.oracle} oracle (version "
             f"{s.get('oracle_version', '?')}). The theory was learned with seed {s.get('seed')}, "
-            f"{s.get('explored')} explored antecedents of {s.get('samples')} pours each "
+            f"{s.get('explored')} explored antecedents of {s.get('batch')} pours each "
             f"({ev.budget} pours), qualify `{s.get('qualify')}`. All numbers below are in "
             "`evaluation.json`.", "",
             ("The exploration's own pours, simulated here, give exactly the theory's rules."

@@ -192,6 +192,8 @@ def test_the_report_and_its_figures(evaluated, tmp_path):
     text = path.read_text()
     n = len(ev.explored)
     assert "## Headline" in text and f"| a{n} |" in text
+    # the learned fixture explores with --batch 12: the opening names it
+    assert f"{n} explored antecedents of 12 pours each" in text
     assert len(ev.kept_all) == n and all(0 <= k <= 1 for k in ev.kept_all)
     for name in ("behaviours.png", "heldout.png", "expectations.png", "evaluation.json"):
         assert (tmp_path / "rep" / name).stat().st_size > 0
