@@ -130,7 +130,7 @@ _SETTING = re.compile(r"^\s*setting\(\s*([a-z][A-Za-z0-9_]*)\s*,\s*(.+?)\s*\)\s*
 def settings(theory: Theory) -> dict[str, list]:
     """The theory's `setting(Key, Value)` facts, values in file order: what
     `pantarhei explore` records of the exploration behind a learned theory
-    (oracle, oracle_version, seed, samples, initial, ...). Those read from
+    (oracle, oracle_version, seed, batch, initial, ...). Those read from
     its native file(s) (`Theory.settings`), then any among the lines it keeps
     aside (`extra`); none for DFL files or hand-written theories without
     such facts. Values are str or int."""
