@@ -33,12 +33,11 @@ second run simulates nothing):
     PANTARHEI_BENCH_ORACLE=pybullet PANTARHEI_BENCH_SEEDS=1,2,3 \\
     PANTARHEI_BENCH_METHODS=discover,random python -m benchmarks discovery
 
-PANTARHEI_BENCH_JUMPS sets the discovering curiosity's random candidates
-per step (`--jumps`; default the project's), PANTARHEI_BENCH_COVER its
-`--cover` (default the project's, 0), PANTARHEI_BENCH_PRIOR its `--prior-batch`
-(default the project's, 1), and PANTARHEI_BENCH_RULES the
-budget in batches of 31 (by default the project's 25, the paper's scale;
-every method gets as many pours).
+PANTARHEI_BENCH_EXPLORE gives the curiosities other options, as
+`pantarhei explore` takes them (for example "--cover 31 --resample 0"; by
+default the option table's), and PANTARHEI_BENCH_RULES the budget in
+batches of 31 (by default the project's 25, the paper's scale; every method
+gets as many pours).
 """
 from __future__ import annotations
 
@@ -114,19 +113,38 @@ def theory_consequents(path: Path) -> dict[str, tuple[bool, ...]]:
     return {a: tuple(h[e] for e in names) for a, h in heads.items()}
 
 
+def explore_options() -> dict:
+    """The explore options PANTARHEI_BENCH_EXPLORE gives (flags as
+    `pantarhei explore` takes them, checked by its parser), the others the
+    option table's defaults."""
+    import argparse
+    import shlex
+
+    from pantarhei.bridge.commands import explore as command
+    from pantarhei.theory.option_table import option_table
+
+    parser = argparse.ArgumentParser(prog="PANTARHEI_BENCH_EXPLORE")
+    command.register(parser.add_subparsers())
+    args = parser.parse_args(["explore", *shlex.split(os.environ.get("PANTARHEI_BENCH_EXPLORE", ""))])
+    values = {o.name: getattr(args, o.name) for o in option_table()}
+    if values["initial"] is None:
+        del values["initial"]
+    else:
+        values["initial"] = tuple(t.strip() for t in values["initial"].split(",") if t.strip())
+    return values
+
+
 def curiosity(mode: str, seed: int, rules: int, tmp: Path, oracle: str, store: Path) -> dict:
     from pantarhei.bridge.exploration.loop import Options, explore
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen
 
     out = tmp / f"{mode}-{seed}.pl"
     inline = oracle == "synthetic"
-    jumps = int(os.environ.get("PANTARHEI_BENCH_JUMPS", Options().jumps))
-    cover = int(os.environ.get("PANTARHEI_BENCH_COVER", Options().cover))
-    prior = int(os.environ.get("PANTARHEI_BENCH_PRIOR", Options().prior_batch))
-    r = explore(Options(curiosity=mode, oracle=oracle, budget=rules, seed=seed, out=out,
-                        jumps=jumps, cover=cover, prior_batch=prior, store=tmp / f"{mode}-{seed}.sqlite" if inline else store,
-                        progress=False, executor="inline" if inline else "local",
-                        general=False))
+    r = explore(Options(**{**explore_options(), "curiosity": mode, "oracle": oracle,
+                           "budget": rules, "seed": seed, "out": out,
+                           "store": tmp / f"{mode}-{seed}.sqlite" if inline else store,
+                           "progress": False, "executor": "inline" if inline else "local",
+                           "general": False}))
     trace = [json.loads(line) for line in out.with_suffix(".trace.jsonl").read_text().splitlines()]
     P, S = r["pours"]                       # every pour of the exploration, as it simulated them
     wall, sim = r.get("wall", 0.0), r.get("timings", {}).get("oracle", 0.0)

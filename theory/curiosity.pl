@@ -10,7 +10,7 @@
             modify_past/4,            % +Props, +Moves, +Exclude, -New
             parameter_mean/3,         % +Props, +Param, -Mean
             rule_facts/3,             % +Learned, +Qualified, -Facts
-            write_theory/3            % +File, +Settings, +Facts
+            write_theory/4            % +File, +Settings, +Facts, +General
           ]).
 /** <module> Curiosity-driven exploration: Algorithm 1 of the paper
 
@@ -24,7 +24,7 @@ file, one module per concern, in the order of the loop:
   | probe.pl    | which candidate a step explores: the probes |
   | discover.pl | the discovering curiosity's A_new: candidates by novelty |
   | modify.pl   | direction and modify: new antecedents from a plane |
-  | rules.pl    | qualify, and the learned rules written as a theory |
+  | rules.pl    | qualify, the general layer, and both written as one theory |
   | oracle.pl   | the oracle at the Prolog prompt: sample, describe, simulate |
   | bridge.pl   | calling the foreign predicates of Python's oracle |
 

@@ -50,7 +50,7 @@ def demo(args: argparse.Namespace) -> int:
     from pantarhei.bridge.theories.dfl import write_dfl
     from pantarhei.bridge.files import require_writable_file, write_text
     from pantarhei.bridge.theories import loading
-    from pantarhei.bridge.commands.querying import ask, plan
+    from pantarhei.bridge.commands.querying import answer, print_plans
     from pantarhei.bridge.exploration.loop import Options, budget_text, explore, stop_text
 
     out = Path(args.out)
@@ -62,7 +62,7 @@ def demo(args: argparse.Namespace) -> int:
     result = explore(Options(
         oracle=args.oracle, budget=args.budget, seed=args.seed, out=out,
         store=Path(args.store), workers=args.workers, progress=not args.no_progress))
-    theory = loading.load([out])
+    theory = loading.load([out], pouring=True)      # read once, for every question below
     dfl = out.with_suffix(".dfl")
     write_text(dfl, write_dfl(theory, loading.provenance_lines(theory)))
     why = stop_text(result, curiosity, args.budget)
@@ -74,14 +74,12 @@ def demo(args: argparse.Namespace) -> int:
 
     for question, props in QUESTIONS:
         _heading(question)
-        ask(argparse.Namespace(question=None, props=",".join(props), theory=[str(out)], why=None,
-                               json=False))
+        answer(theory, props)
 
     _heading(f"How should I pour so that {GOAL.replace(',', ', ')}?")
     try:
-        plan(argparse.Namespace(goal=GOAL, given="", theory=[str(out)], alternatives=2,
-                                verify=args.verify, min_success=0.9, seed=args.seed, json=False,
-                                oracle=args.oracle, store=args.store))
+        print_plans(theory, GOAL.split(","), [], alternatives=2, verify=args.verify,
+                    min_success=0.9, seed=args.seed, store=args.store)
     except UserError as e:     # a theory that cannot reach the goal: say so, and finish
         print(f"no plan: {e}")
     print(f"\ndone in {time.monotonic() - started:.0f} s. Ask more: pantarhei ask \"pour high "

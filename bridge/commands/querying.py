@@ -89,7 +89,7 @@ def ask(args: argparse.Namespace) -> int:
     else:
         props = _understood(args.question)
     props = require_valid(props)
-    return _answer(args, loading.load(args.theory, pouring=True), props)
+    return answer(loading.load(args.theory, pouring=True), props, args.why, args.json)
 
 
 def _understood(question: str) -> list[str]:
@@ -116,7 +116,7 @@ def _ask_each_line(args: argparse.Namespace, theory, lines) -> int:
             print()
         asked += 1
         try:
-            _answer(args, theory, require_valid(_understood(question)))
+            answer(theory, require_valid(_understood(question)), args.why, args.json)
         except UserError as e:
             failed += 1
             print(f"pantarhei ask: line {number}: {e}", file=sys.stderr, flush=True)
@@ -127,24 +127,25 @@ def _ask_each_line(args: argparse.Namespace, theory, lines) -> int:
     return 1 if failed else 0
 
 
-def _answer(args: argparse.Namespace, theory, props: list[str]) -> int:
-    """Print what the theory says of the scene `props` (or --why)."""
+def answer(theory, props: list[str], why: str | None = None, as_json: bool = False) -> int:
+    """Print what the theory says of the scene `props`, or with `why` (a
+    literal) the whole argument for it; as JSON with `as_json`."""
     from pantarhei.bridge.reasoning import answers
 
     scene = props
-    if args.why:
+    if why:
         from pantarhei.bridge.reasoning.planning import check_goals
 
-        (lit,) = check_goals([args.why], theory, reachable=False)
+        (lit,) = check_goals([why], theory, reachable=False)
         words = answers.explain(theory, scene, lit)
-        if args.json:
+        if as_json:
             print(json.dumps({"understood": props, "literal": lit, "why": words}, indent=1))
         else:
             _print_scene(props, glosses=False)
             print(words.replace("; ", "\n  "))
         return 0
     outcomes = answers.what_happens(theory, scene)
-    if args.json:
+    if as_json:
         print(json.dumps({"understood": props, "theory": theory.source, "outcomes": {
             o.expectation: {"verdict": o.value, "likelihood": o.likelihood, "rule": o.rule,
                             "because": _because(theory, o)}
@@ -212,7 +213,6 @@ def _print_scene(props: list[str], glosses: bool) -> None:
 # -- plan ---------------------------------------------------------------------
 
 def plan(args: argparse.Namespace) -> int:
-    from pantarhei.bridge.reasoning.planning import plan as make_plans
     from pantarhei.bridge.theories import loading
 
     goals = _split(args.goal)
@@ -221,17 +221,26 @@ def plan(args: argparse.Namespace) -> int:
     given = known(_split(args.given))
     if not 0 < args.min_success <= 1:
         raise UserError("--min-success: a share above 0 and at most 1")
-    theory = loading.load(args.theory, pouring=True)
-    verified: list[dict | None]
-    if args.verify:
-        plans, verified = _verified(args, theory, goals, given)
-    else:
-        plans = make_plans(theory, goals, given, args.alternatives)
-        verified = [None] * len(plans)
-    from pantarhei.bridge.reasoning.planning import check_goals
+    return print_plans(loading.load(args.theory, pouring=True), goals, given, args.alternatives,
+                       args.verify, args.min_success, args.seed, args.store, args.json)
 
+
+def print_plans(theory, goals: list[str], given: list[str], alternatives: int, verify: int,
+                min_success: float, seed: int, store, as_json: bool = False) -> int:
+    """Print the theory's plans for `goals` given `given`: the best and up
+    to `alternatives` more, each met in at least `min_success` of `verify`
+    pours (simulated, kept in `store`; 0: not simulated)."""
+    from pantarhei.bridge.reasoning.planning import check_goals, plan as make_plans
+
+    verified: list[dict | None]
+    if verify:
+        plans, verified = _verified(theory, goals, given, alternatives, verify, min_success, seed,
+                                    store)
+    else:
+        plans = make_plans(theory, goals, given, alternatives)
+        verified = [None] * len(plans)
     goal_lits = check_goals(goals, theory)
-    if args.json:
+    if as_json:
         print(json.dumps({"goals": goal_lits, "given": given,
                           "plans": [{"chosen": list(p.chosen), "antecedent": list(p.antecedent),
                                      **({"verified": v} if v is not None else {})}
@@ -255,10 +264,10 @@ def plan(args: argparse.Namespace) -> int:
     return 0
 
 
-def _verified(args: argparse.Namespace, theory, goals: list[str], given: list[str]
-              ) -> tuple[list, list[dict]]:
-    """The theory's plans that met the goals in at least --min-success of
-    --verify pours each (simulated with the oracle the theory was learned
+def _verified(theory, goals: list[str], given: list[str], alternatives: int, verify: int,
+              min_success: float, seed: int, store) -> tuple[list, list[dict]]:
+    """The theory's plans that met the goals in at least `min_success` of
+    `verify` pours each (simulated with the oracle the theory was learned
     from, stored); UserError when none did."""
     from pantarhei.bridge.exploration.simulation import open_simulator, oracle_identity
     from pantarhei.bridge.reasoning.planning import verified_plans
@@ -266,17 +275,17 @@ def _verified(args: argparse.Namespace, theory, goals: list[str], given: list[st
 
     oracle = str((loading.settings(theory).get("oracle") or ["pybullet"])[0])
     oracle_identity(oracle)     # UserError for an oracle that is unknown or cannot load
-    with open_simulator(oracle, store=args.store) as sim:
-        good, tried = verified_plans(theory, goals, given, sim.simulate, args.verify, args.seed,
-                                     args.min_success, 1 + args.alternatives)
+    with open_simulator(oracle, store=store) as sim:
+        good, tried = verified_plans(theory, goals, given, sim.simulate, verify, seed,
+                                     min_success, 1 + alternatives)
     if not good:
         best = max(tried, key=lambda v: v.rate)
         raise UserError(f"no plan found: none of the {len(tried)} plans the theory proposes met "
-                        f"the goals in {args.min_success:.0%} of {args.verify} pours (the best, "
+                        f"the goals in {min_success:.0%} of {verify} pours (the best, "
                         f"{', '.join(best.plan.chosen) or 'the context alone'}, in {best.met} of "
                         f"{best.simulated})")
     return [v.plan for v in good], [{"simulated": v.simulated, "met": v.met,
-                                     "failed": args.verify - v.simulated, "rate": v.rate}
+                                     "failed": verify - v.simulated, "rate": v.rate}
                                     for v in good]
 
 

@@ -5,7 +5,6 @@ theory/defaults.pl."""
 from __future__ import annotations
 
 import json
-import time
 from dataclasses import field, make_dataclass
 from pathlib import Path
 from typing import Any
@@ -45,9 +44,9 @@ def _prolog_value(o: Option, v: Any) -> str:
 
 def _prolog(self: "Options") -> str:
     """The options as explore/1's option list: every option of the table
-    that is set (general is Python's: the rules learned after explore/1)."""
+    that is set."""
     items = [f"{o.name}({_prolog_value(o, getattr(self, o.name))})" for o in option_table()
-             if o.name != "general" and getattr(self, o.name) not in (None, "")]
+             if getattr(self, o.name) not in (None, "")]
     if self.oracle_options:
         items.append(f"oracle_options({prolog_quote(json.dumps(self.oracle_options))})")
     return "[" + ", ".join(items) + "]"
@@ -93,24 +92,7 @@ def explore(options: Options) -> dict:
                 raise e
             raise UserError(error_text(e)) from e
         raise UserError(_result_text(result))
-    out = dict(host.result)
-    if options.general:
-        from pantarhei.bridge.learning.layers import add_general_rules
-
-        from pantarhei.bridge.exploration.simulation import open_simulator
-
-        P, S = out["pours"]
-        t = time.monotonic()
-        simulator = open_simulator(options.oracle, options.executor, options.workers,
-                                   options.store, options.ray_address, options.oracle_options)
-        try:
-            general = add_general_rules(options.out, P, S, options.seed,
-                                        lambda X: simulator.simulate(X, progress=options.progress))
-        finally:
-            simulator.close()
-        out["general_rules"] = len(general.rules)
-        out.setdefault("timings", {})["generalize"] = time.monotonic() - t
-    return out
+    return dict(host.result)
 
 
 def budget_text(curiosity: str, budget: int) -> str:

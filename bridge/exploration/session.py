@@ -17,6 +17,9 @@ Prolog module `bridge`:
 * `exploration_fewest`: the candidate where the pours are fewest;
 * `exploration_qualify`: the consequent of each explored antecedent;
 * `exploration_checkpoint`: save the state after an explored antecedent;
+* `exploration_general`: the general rules of every pour of the
+  exploration (bridge/learning/layers.py), which explore/1 writes beside
+  Algorithm 1's rules;
 * `exploration_end`: write the trace and its plot, and close everything;
 * `oracle_sample`, `oracle_simulate`, `oracle_describe`: the oracle at the
   Prolog prompt (bridge/exploration/prompt_oracle.py).
@@ -82,6 +85,7 @@ class Host:
             "exploration_fewest": self._timed("probe", self.fewest),
             "exploration_qualify": self._timed("qualify", self.qualify),
             "exploration_checkpoint": self._timed("checkpoint", self.checkpoint),
+            "exploration_general": self._timed("generalize", self.general),
             "exploration_end": self.end,
             "oracle_sample": oracle_sample,
             "oracle_simulate": oracle_simulate,
@@ -278,6 +282,27 @@ class Host:
             s.bar.set_postfix_str(postfix(s, iteration, int(request.get("a_new", 0))), refresh=False)
             s.bar.update(progress(s, iteration)[2] - s.bar.n)
         return {}
+
+    def general(self, request: dict) -> dict:
+        """The general layer of every pour so far and of the pours the
+        learner asks for where there are few (simulated as the
+        exploration's are), ranked with Algorithm 1's rules of the request
+        (id, expectation, holds, body, confidence_permille)."""
+        from pantarhei.bridge.learning.layers import general_layer
+        from pantarhei.bridge.theories.model import Rule, Theory
+
+        s = self.need_session()
+        learned = Theory()
+        for r in request["rules"]:
+            head = str(r["expectation"]) if truthy(r["holds"]) else f"neg({r['expectation']})"
+            learned.rules.append(Rule(str(r["id"]), "defeasible", head,
+                                      tuple(str(b) for b in r["body"])))
+            learned.provenance.append((str(r["id"]), "confidence_permille",
+                                       int(r["confidence_permille"])))
+        learned.learned = {r.id for r in learned.rules}
+        progress = truthy(s.settings.get("progress", True))
+        return general_layer(learned, s.params, s.scores, int(s.settings["seed"]),
+                             lambda X: s.simulator.simulate(X, progress=progress))
 
     def end(self, request: dict) -> dict:
         s = self.session

@@ -16,23 +16,21 @@ of conflicting rules that one scene can hold together gets an explicit
 `sup/2` fact in rank order. The order is linear, so the superiority
 relation is acyclic and no conflict is left undecided.
 
-`general_section` writes the general layer as native facts, appended to
-the theory file that Algorithm 1 wrote (both engines read it).
+`general_layer` gives the general layer to explore/1, which writes it into
+the theory file beside Algorithm 1's rules (theory/curiosity/rules.pl);
+both engines read that file.
 """
 from __future__ import annotations
 
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Sequence
 
 import numpy as np
 
-from pantarhei.bridge.files import write_text
 from pantarhei.bridge.learning.askable import together
 from pantarhei.bridge.learning.general_rules import General, rank
 from pantarhei.bridge.learning.generalize import Settings, generalize
 from pantarhei.bridge.theories.model import Theory, complement
-from pantarhei.bridge.theories.native import read_native
 
 
 @dataclass(frozen=True)
@@ -79,34 +77,6 @@ def superiority(rules: Sequence[Ranked]) -> list[tuple[str, str]]:
     return sorted(out)
 
 
-def general_section(theory: Theory, general: General, pours: int, own: int = 0) -> str:
-    """The general layer as native facts: rules, bodies, `learned/1`, their
-    provenance (layer, level, support, kept, confidence in permille) and the
-    explicit superiority that makes both layers one linear order."""
-    lines = ["", "% General rules, learned from every pour of the exploration",
-             "% and the learner's own pours (bridge/learning/gaps.py), by",
-             "% bridge/learning/generalize.py: a default per expectation and the",
-             "% contrasts that move it. provenance(Id, support, N): the pours whose",
-             "% description holds the body; kept: how many of them keep the head;",
-             "% confidence_permille: P(head | body), the share of the pours sampled",
-             "% for the body (the rest an ordinary pour) that keep the head.",
-             "% sup/2 below orders both layers (see bridge/learning/layers.py).",
-             f"setting(general_pours, {int(pours)}).",
-             f"setting(general_own_pours, {int(own)}).",
-             f"setting(general_rules, {len(general.rules)})."]
-    for g in general.rules:
-        lines.append(f"rule({g.id}, defeasible, {g.head}).")
-        lines.extend(f"body({g.id}, {b})." for b in g.body)
-        lines.append(f"learned({g.id}).")
-        lines += [f"provenance({g.id}, layer, general).",
-                  f"provenance({g.id}, level, {g.level}).",
-                  f"provenance({g.id}, support, {g.support}).",
-                  f"provenance({g.id}, kept, {g.kept}).",
-                  f"provenance({g.id}, confidence_permille, {int(round(1000 * g.confidence))})."]
-    lines += [f"sup({a}, {b})." for a, b in superiority(ranked_rules(theory, general))]
-    return "\n".join(lines) + "\n"
-
-
 def learn_general(P: np.ndarray, S: np.ndarray, seed: int, simulate=None,
                   per_body: int | None = None) -> tuple[General, np.ndarray, np.ndarray]:
     """The general rules of the pours (P, S), after simulating (with
@@ -127,16 +97,20 @@ def learn_general(P: np.ndarray, S: np.ndarray, seed: int, simulate=None,
     return generalize(P, S, Settings(seed=int(seed))), P, S
 
 
-def add_general_rules(path: Path | str, P: np.ndarray, S: np.ndarray, seed: int,
-                      simulate=None) -> General:
-    """Generalize the pours (P, S) of the exploration that wrote the theory
-    file `path` (and the learner's own, with `simulate`), and append the
-    general layer to that file (whole or not at all)."""
-    path = Path(path)
-    theory = read_native(path)
+def general_layer(learned: Theory, P: np.ndarray, S: np.ndarray, seed: int,
+                  simulate=None) -> dict:
+    """The general layer of an exploration's pours (P, S) and the
+    learner's own (simulated with `simulate`), as explore/1 writes it
+    beside Algorithm 1's rules `learned`: the pours it learned from (those
+    with finite scores; `own_pours`, the learner's), each rule with its
+    provenance (confidence in permille: P(head | body)), and the sup/2
+    pairs that make both layers one linear order."""
     n0 = len(np.atleast_2d(P))
     general, P, S = learn_general(P, S, seed, simulate)
-    ok = int(np.all(np.isfinite(np.atleast_2d(S)), axis=1).sum())
-    text = path.read_text(encoding="utf-8")
-    write_text(path, text.rstrip("\n") + "\n" + general_section(theory, general, ok, len(P) - n0))
-    return general
+    return {"pours": int(np.all(np.isfinite(np.atleast_2d(S)), axis=1).sum()),
+            "own_pours": len(P) - n0,
+            "rules": [{"id": g.id, "expectation": g.expectation, "holds": g.holds,
+                       "body": list(g.body), "level": g.level, "support": g.support,
+                       "kept": g.kept, "confidence_permille": int(round(1000 * g.confidence))}
+                      for g in general.rules],
+            "sup": [[a, b] for a, b in superiority(ranked_rules(learned, general))]}

@@ -18,6 +18,7 @@ predicates of the module =bridge=, which `pantarhei explore` and
   - bridge:exploration_predict(+Request, -Reply)
   - bridge:exploration_qualify(+Request, -Reply)
   - bridge:exploration_checkpoint(+Request, -Reply)
+  - bridge:exploration_general(+Request, -Reply)
   - bridge:exploration_end(+Request, -Reply)
   - bridge:oracle_sample(+Request, -Reply), bridge:oracle_simulate(+Request, -Reply),
     bridge:oracle_describe(+Request, -Reply): sample/4, simulate/3 and

@@ -6,8 +6,9 @@
 
 The entry of Algorithm 1: read the options (settings.pl), begin the
 exploration on the oracle's side, run the loop (loop.pl) from a_0 or the
-saved state (state.pl), qualify the explored antecedents and write the
-learned theory (rules.pl), and end. An error ends the exploration on the
+saved state (state.pl), qualify the explored antecedents, learn the
+general rules of every pour (unless general(false)) and write the learned
+theory with both layers, once (rules.pl), and end. An error ends the exploration on the
 oracle's side too (aborted), then propagates.
 */
 
@@ -43,7 +44,11 @@ explore_loop(Settings, Begun) :-
     S = st(_, Explored, ANew, SetAside),
     length(ANew, Left),
     learned(Explored, SetAside, Settings, Stop, Left, Facts),
-    write_theory(Settings.out, Settings, Facts),
+    (   Settings.general == true
+    ->  general_layer(Facts, General)
+    ;   General = []
+    ),
+    write_theory(Settings.out, Settings, Facts, General),
     length(Explored, N),
     call_bridge(exploration_end, _{out:Settings.out, stopped:Stop, explored:N,
                                    a_new:Left}, _).

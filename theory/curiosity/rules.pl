@@ -1,15 +1,17 @@
 :- module(curiosity_rules,
           [ learned/6,                % +Explored, +SetAside, +Settings, +Stop, +Left, -Facts
             rule_facts/3,             % +Explored, +Qualified, -Facts
-            write_theory/3            % +File, +Settings, +Facts
+            general_layer/2,          % +Facts, -General
+            write_theory/4            % +File, +Settings, +Facts, +General
           ]).
 /** <module> Qualify and the learned theory
 
 At the end of the loop each explored antecedent is qualified (the outcome
 of its simulations, exploration_qualify) and becomes defeasible rules, one
 per expectation, with their provenance; the settings of the run and the
-candidates set aside are facts beside them. write_theory/3 writes them in
-the common subset of Prolog and ASP.
+candidates set aside are facts beside them. The general rules, learned
+from every pour, are the second layer (general_layer/2). write_theory/4
+writes both, once, in the common subset of Prolog and ASP.
 */
 
 :- use_module(library(apply)).
@@ -125,19 +127,63 @@ via_facts(Id, via(E, X, Sign), [ provenance(Id, followed, E),
                                  provenance(Id, direction, X),
                                  provenance(Id, sign, Sign) ]).
 
-%!  write_theory(+File, +Settings:dict, +Facts:list) is det.
+%!  general_layer(+Facts:list, -General:list) is det.
 %
-%   Write Facts to File, in the common subset of Prolog and ASP, with a
-%   header saying what the file is. The file is written beside under a
-%   temporary name and renamed, so File is never half-written.
-write_theory(File, Settings, Facts) :-
+%   General are the facts of the general layer (bridge/learning/layers.py,
+%   exploration_general): rules learned from every pour of the
+%   exploration and the learner's own, each with its provenance (layer,
+%   level, support, kept, confidence in permille), setting/2 facts of how
+%   many pours they rest on, and the sup/2 facts that order both layers
+%   (Algorithm 1's rules are those of Facts, with their confidence).
+general_layer(Facts, General) :-
+    findall(_{id:Id, expectation:E, holds:H, body:B, confidence_permille:C},
+            ( member(rule(Id, _, Head), Facts),
+              head_expectation(Head, E, H),
+              findall(P, member(body(Id, P), Facts), B),
+              memberchk(provenance(Id, confidence_permille, C), Facts)
+            ), Rules),
+    call_bridge(exploration_general, _{rules:Rules}, Reply),
+    length(Reply.rules, N),
+    maplist(general_rule_facts, Reply.rules, RuleFacts),
+    findall(sup(A, B), member([A, B], Reply.sup), Sups),
+    append(RuleFacts, Rules1),
+    append([ [ setting(general_pours, Reply.pours),
+               setting(general_own_pours, Reply.own_pours),
+               setting(general_rules, N) ],
+             Rules1, Sups ], General).
+
+head_expectation(neg(E), E, false) :- !.
+head_expectation(E, E, true).
+
+%   general_rule_facts(+Rule:dict, -Facts): a general rule of the reply
+%   as facts.
+general_rule_facts(R, Facts) :-
+    head_expectation(Head, R.expectation, R.holds),
+    Id = R.id,
+    findall(body(Id, P), member(P, R.body), Bodies),
+    append([ [rule(Id, defeasible, Head)], Bodies,
+             [ learned(Id),
+               provenance(Id, layer, general),
+               provenance(Id, level, R.level),
+               provenance(Id, support, R.support),
+               provenance(Id, kept, R.kept),
+               provenance(Id, confidence_permille, R.confidence_permille) ] ], Facts).
+
+%!  write_theory(+File, +Settings:dict, +Facts:list, +General:list) is det.
+%
+%   Write Facts (Algorithm 1's) and General (the general layer, if any) to
+%   File, in the common subset of Prolog and ASP, each with a header
+%   saying what it is. The file is written beside under a temporary name
+%   and renamed, so File is never half-written.
+write_theory(File, Settings, Facts, General) :-
     file_directory_name(File, Dir),
     make_directory_path(Dir),
     current_prolog_flag(pid, Pid),
     format(atom(Tmp), "~w.~w.tmp", [File, Pid]),
     setup_call_cleanup(
         open(Tmp, write, Out, [encoding(utf8)]),
-        write_facts(Out, Settings, Facts),
+        ( write_facts(Out, Settings, Facts),
+          write_general(Out, General) ),
         close(Out)),
     rename_file(Tmp, File).
 
@@ -163,6 +209,25 @@ write_facts(Out, Settings, Facts) :-
     ),
     forall(member(F, Facts),
            (   ( F = rule(_, _, _) -> nl(Out) ; true ),
-               write_term(Out, F, [quoted(true), spacing(next_argument)]),
-               write(Out, '.\n')
+               write_fact(Out, F)
            )).
+
+%   write_general(+Out, +General): the general layer after a blank line,
+%   its header, then each fact.
+write_general(_, []) :- !.
+write_general(Out, General) :-
+    forall(member(Line, [ "",
+                          "% General rules, learned from every pour of the exploration",
+                          "% and the learner's own pours (bridge/learning/gaps.py), by",
+                          "% bridge/learning/generalize.py: a default per expectation and the",
+                          "% contrasts that move it. provenance(Id, support, N): the pours whose",
+                          "% description holds the body; kept: how many of them keep the head;",
+                          "% confidence_permille: P(head | body), the share of the pours sampled",
+                          "% for the body (the rest an ordinary pour) that keep the head.",
+                          "% sup/2 below orders both layers (see bridge/learning/layers.py)." ]),
+           format(Out, "~w~n", [Line])),
+    forall(member(F, General), write_fact(Out, F)).
+
+write_fact(Out, F) :-
+    write_term(Out, F, [quoted(true), spacing(next_argument)]),
+    write(Out, '.\n').

@@ -24,8 +24,7 @@ defaults of theory/defaults.pl. A bad option raises
 %   option table of theory/defaults.pl declares them: those of Options,
 %   checked against their type and range, the others their defaults. The
 %   curiosity is read first; store, workers, ray_address and
-%   oracle_options are keys only when given. The option general is
-%   Python's (the general rules learned after explore/1), not a key.
+%   oracle_options are keys only when given.
 %
 %   @error exploration_error(Text) for the first bad option.
 settings(Options, S) :-
@@ -33,7 +32,7 @@ settings(Options, S) :-
     setting_value(curiosity, Options, discover, Curiosity),
     findall(Key-Value,
             ( table_option(Key, _, _, _),
-              \+ memberchk(Key, [curiosity, general]),
+              Key \== curiosity,
               setting_value(Key, Options, Curiosity, Value)
             ), Pairs),
     dict_pairs(S0, _, [curiosity-Curiosity|Pairs]),

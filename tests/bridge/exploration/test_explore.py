@@ -36,7 +36,7 @@ def test_the_general_layer_follows_algorithm_1s_rules(tmp_path):
 
     alone = Path(run(tmp_path, "alone")["out"]).read_text()
     both = Path(run(tmp_path, "both", general=True)["out"]).read_text()
-    # the same exploration, then the general rules appended: Algorithm 1's part unchanged
+    # the same exploration, its general layer written after Algorithm 1's rules (unchanged)
     assert both.startswith(alone.rstrip("\n"))
     theory = load([tmp_path / "both.pl"])
     general = [r for r in theory.rules if r.id.startswith("g")]
