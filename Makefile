@@ -35,8 +35,10 @@ evaluate: setup
 
 test: setup test-python test-prolog
 
+# One pytest worker per core (pytest-xdist), each test file whole on one
+# worker so that a file's fixtures are computed once.
 test-python:
-	$(PY) -m pytest -q
+	$(PY) -m pytest -q -n auto --dist loadfile
 
 # Every plunit file (a .plt beside its module), loaded and run in one swipl:
 # theory/pantarhei.pl loads every module of the theory.

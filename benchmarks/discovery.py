@@ -34,7 +34,7 @@ second run simulates nothing):
     PANTARHEI_BENCH_METHODS=discover,random python -m benchmarks discovery
 
 PANTARHEI_BENCH_EXPLORE gives the curiosities other options, as
-`pantarhei explore` takes them (for example "--cover 31 --resample 0"; by
+`pantarhei explore` takes them (for example "--jumps 310 --resample 0"; by
 default the option table's), and PANTARHEI_BENCH_RULES the budget in
 batches of 31 (by default the project's 25, the paper's scale; every method
 gets as many pours).

@@ -39,7 +39,7 @@ option(permutations, count, range(1, 1000000), 199,
 option(resample, count, range(0, 1000000), 2,
   "discover: more batches of an antecedent whose planes are all undecided and that queued nothing new").
 option(novelty, permille, range(0, 1000), 100,
-  "discover: the predicted novelty, from 0 to 1, a candidate needs to be queued, scaled by the probes' mean score so far").
+  "discover: the predicted novelty, from 0 to 1, a candidate needs to be queued").
 option(queue, count, range(1, 1000000), 100,
   "discover: A_new keeps this many most novel candidates").
 option(jumps, count, range(1, 1000000), 31,
@@ -48,8 +48,6 @@ option(probe, count, range(0, 10000), 8,
   "discover: simulate this many pours of a candidate's batch first, and set it aside for the next when they show no new, reproducible consequent; 0: no probes").
 option(probe_attempts, count, range(1, 1000000), 3,
   "discover: candidates probed at most in a step; then the one whose probe scored best is explored").
-option(cover, count, range(0, 1000000), 0,
-  "discover: the last probe of a step goes to the candidate whose rarest proposition the fewest pours so far hold, when fewer than this many do; 0: never").
 option(prior_batch, choice, one_of(0, 1), 1,
   "discover: 1 to explore the priors (nothing said: every parameter from its prior, as a question's unsaid ones) with the budget's last batch, 0 not to").
 option(seed, count, range(0, 2147483647), 1,
@@ -102,9 +100,6 @@ course(probe, discover).
 course(probe, nonzero(probe)).
 course(probe_attempts, discover).
 course(probe_attempts, nonzero(probe)).
-course(cover, discover).
-course(cover, nonzero(probe)).
-course(cover, nonzero(cover)).
 course(prior_batch, discover).
 course(prior_batch, nonzero(prior_batch)).
 

@@ -24,12 +24,8 @@ The forest's guess is checked before a batch is spent on it: a probe, the
 first pours of the candidate's batch, is simulated, and `probe_score` says
 how likely a batch of the candidate is to give a consequent no explored
 antecedent has and that another batch would give again (the candidate is
-set aside below PASS; theory/curiosity/probe.pl, choose/6). The probes are also
-the record of how far the forest's estimates are borne out: a candidate is
-queued when its estimate, scaled by the probes' mean score so far
-(`discount`), reaches the novelty level. The ranking is the estimate's;
-the discount only shortens A_new, which so dries up as the probes stop
-finding anything new.
+set aside below PASS; theory/curiosity/probe.pl, choose/6). A candidate is
+queued when its estimate reaches the novelty level.
 """
 from __future__ import annotations
 
@@ -143,16 +139,6 @@ def novelties(k: Known, candidates: Sequence[Sequence[str]]) -> list[dict]:
         out.append({"novelty": estimate * (1.0 - TIE) + tie, "new_consequent": new,
                     "unseen": unseen})
     return out
-
-
-def discount(found: float, probed: int) -> float:
-    """The probes' mean score so far (`found`, their scores summed, over
-    `probed` probes), counting a score of 1 before the first probe: the
-    share of the forest's candidates that turned out to hold a new,
-    reproducible consequent, each probe counted by its chance of it (a
-    probe split on one verdict, scoring just under PASS, is half a find,
-    not none), falling as the probes stop finding anything new."""
-    return (1.0 + found) / (1.0 + probed)
 
 
 def verdict_rows(consequents: Iterable[tuple[bool, ...]], width: int) -> np.ndarray:

@@ -46,9 +46,6 @@ class Session:
     elapsed: list[float] = field(default_factory=list)
     #: Pours already in the pool of each probed (iteration, attempt).
     probed: dict[tuple[int, int], int] = field(default_factory=dict)
-    #: The probe of each (iteration, attempt) not yet in the trace, as the
-    #: trace will hold it (its score, and `by` what it was chosen).
-    probes_now: dict[tuple[int, int], dict] = field(default_factory=dict)
 
     @property
     def valid(self) -> np.ndarray:

@@ -14,7 +14,6 @@ Prolog module `bridge`:
 * `exploration_predict`: the novelty of candidates;
 * `exploration_probe`: simulate the first pours of a candidate's batch and
   say whether they show a new, reproducible consequent;
-* `exploration_fewest`: the candidate where the pours are fewest;
 * `exploration_qualify`: the consequent of each explored antecedent;
 * `exploration_checkpoint`: save the state after an explored antecedent;
 * `exploration_general`: the general rules of every pour of the
@@ -46,8 +45,7 @@ import numpy as np
 
 from pantarhei.bridge.engines.swipl import Engine, engine as prolog_engine
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.exploration.coverage import fewest
-from pantarhei.bridge.exploration.novelty import PASS, discount, known, novelties, probe_score
+from pantarhei.bridge.exploration.novelty import PASS, known, novelties, probe_score
 from pantarhei.bridge.exploration.opening import (ALGORITHM_VERSION, course, note, open_bar,
                                                   postfix, progress, truthy)
 from pantarhei.bridge.exploration.pool import Session
@@ -58,9 +56,8 @@ from pantarhei.bridge.exploration.significance import shuffle_seed
 from pantarhei.bridge.exploration.simulation import batch_seed, open_simulator, oracle_identity
 from pantarhei.bridge.exploration.state import ExplorationStore, run_key
 from pantarhei.bridge.exploration.steepest import best_plane
-from pantarhei.bridge.exploration.trace import (append_trace, plot_path, plot_trace,
-                                                probe_evidence, rounded, trace_path,
-                                                write_trace)
+from pantarhei.bridge.exploration.trace import (append_trace, plot_path, plot_trace, rounded,
+                                                trace_path, write_trace)
 from pantarhei.oracle.generative import InvalidAntecedent, sample
 from pantarhei.oracle.store import DEFAULT_STORE
 from pantarhei.theory.lexicon import load_vocabulary
@@ -82,7 +79,6 @@ class Host:
             "exploration_best_plane": self._timed("planes", self.best_plane),
             "exploration_predict": self._timed("planes", self.predict),
             "exploration_probe": self._timed("probe", self.probe),
-            "exploration_fewest": self._timed("probe", self.fewest),
             "exploration_qualify": self._timed("qualify", self.qualify),
             "exploration_checkpoint": self._timed("checkpoint", self.checkpoint),
             "exploration_general": self._timed("generalize", self.general),
@@ -211,23 +207,7 @@ class Host:
         # machine read the same score from it
         score = rounded(probe_score(S, samples, s.verdicts(request["antecedents"])))
         passed = score >= PASS
-        s.probes_now[(int(request["iteration"]), int(request["attempt"]))] = {
-            "score": score, "by": str(request.get("by", "novelty"))}
         return {"score": score, "pass": passed, "simulations": len(s.params)}
-
-    def fewest(self, request: dict) -> dict:
-        """Which candidate's rarest proposition the fewest pours so far hold,
-        when fewer than `enough` (bridge/exploration/coverage.py; -1: none)."""
-        s = self.need_session()
-        return {"index": fewest(s.params[s.valid], request["candidates"], int(request["enough"]))}
-
-    def probe_record(self) -> tuple[float, int]:
-        """The probes' scores summed, and how many probes there were, so far
-        (those of the trace and of the iteration under way): of the probes
-        of the forest's candidates, not those that went where the pours are
-        fewest."""
-        s = self.need_session()
-        return probe_evidence([*s.trace, {"probes": list(s.probes_now.values())}])[-1]
 
     def best_plane(self, request: dict) -> dict:
         return best_plane(self.need_session(), request)
@@ -236,7 +216,7 @@ class Host:
         """The novelty of each candidate antecedent (bridge/exploration/novelty.py)
         given every pour so far and the consequents of the explored
         antecedents, and whether it reaches the level to be queued once
-        scaled by the probes' record (novelty.discount)."""
+        (novelty.py)."""
         s = self.need_session()
         entries = request["antecedents"]
         key = (len(s.params), len(entries))
@@ -246,10 +226,9 @@ class Host:
                                   seed, shuffle_seed(seed, 0, len(s.params))))
         k = s.known[1]
         level = float(s.settings["novelty"])
-        scale = discount(*self.probe_record())
         found = novelties(k, [[str(p) for p in props] for props in request["candidates"]])
         return {"novelty": [f["novelty"] for f in found],
-                "queued": [f["novelty"] * scale >= level for f in found]}
+                "queued": [f["novelty"] >= level for f in found]}
 
     def qualify(self, request: dict) -> dict:
         s = self.need_session()
@@ -273,7 +252,6 @@ class Host:
         iteration = int(request["iteration"])
         P, S = s.pending.pop(iteration)
         trace = rounded(dict(request["trace"]))
-        s.probes_now = {k: v for k, v in s.probes_now.items() if k[0] != iteration}
         s.store.save(s.run, iteration, P, S, str(request["state"]), trace)
         s.trace.append(trace)
         s.elapsed.append(round(time.monotonic() - s.started, 3))

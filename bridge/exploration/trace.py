@@ -48,31 +48,24 @@ def write_trace(path: Path, trace: Sequence[dict]) -> None:
     write_text(path, "".join(json.dumps(entry, sort_keys=True) + "\n" for entry in trace))
 
 
-def probe_evidence(trace: Sequence[dict]) -> list[tuple[float, int]]:
-    """After each iteration, the sum of the scores of the forest's
-    candidates probed so far (each the chance that its batch gives a new,
-    reproducible consequent), and how many were probed; the probes that
-    went where the pours are fewest (`"by": "fewest"`) are left out."""
-    out: list[tuple[float, int]] = []
+def probe_means(trace: Sequence[dict]) -> list[float | None]:
+    """After each iteration, the mean score of the candidates probed so far
+    (each the chance that its batch gives a new, reproducible consequent);
+    None before the first probe."""
+    out: list[float | None] = []
     found, probed = 0.0, 0
     for t in trace:
-        probes = [p for p in t.get("probes") or [] if p.get("by", "novelty") == "novelty"]
+        probes = t.get("probes") or []
         probed += len(probes)
         found += sum(float(p["score"]) for p in probes)
-        out.append((found, probed))
+        out.append(found / probed if probed else None)
     return out
-
-
-def probe_means(trace: Sequence[dict]) -> list[float | None]:
-    """After each iteration, the mean score of the forest's candidates
-    probed so far (probe_evidence); None before the first probe."""
-    return [found / probed if probed else None for found, probed in probe_evidence(trace)]
 
 
 def plot_trace(path: Path, trace: Sequence[dict], settings: dict | None = None) -> None:
     """|A_new| after each iteration and the antecedents each added (PNG);
     for a run with probes also their mean score so far, the evidence that
-    something new is still to be found (what scales the queue)."""
+    something new is still to be found."""
     plt = pyplot()
     it = [t["iteration"] for t in trace]
     added = [len(t["added"]) for t in trace]

@@ -14,7 +14,6 @@ predicates of the module =bridge=, which `pantarhei explore` and
   - bridge:exploration_simulate(+Request, -Reply)
   - bridge:exploration_best_plane(+Request, -Reply)
   - bridge:exploration_probe(+Request, -Reply)
-  - bridge:exploration_fewest(+Request, -Reply)
   - bridge:exploration_predict(+Request, -Reply)
   - bridge:exploration_qualify(+Request, -Reply)
   - bridge:exploration_checkpoint(+Request, -Reply)

@@ -19,8 +19,7 @@ a batch has pours by default).
 Each candidate and each of A_new gets its novelty, the chance that it
 shows a behaviour not yet got as a forest of every pour so far predicts it
 (bridge/exploration/novelty.py); A_new keeps the most novel of those that
-reach the novelty level once scaled by the probes' mean score so far
-(probe.pl), so it dries up as the probes stop finding anything new. When
+reach the novelty level. When
 nothing reaches it, the antecedent just explored gets more pours
 (resample/1, more/7), which may change the forest's mind; when that is
 spent too and A_new is empty, the exploration stops.

@@ -117,7 +117,7 @@ step(S0, Settings, st(I1, Explored1, ANew, SetAside)) :-
     I1 is I + 1,
     choose(S0, Settings, Cand, Attempt, Rest, Probes),
     Cand = cand(Props, _, _),
-    findall(aside(I1, K, P), member(probe(P, _, false, K, _), Probes), NewAside),
+    findall(aside(I1, K, P), member(probe(P, _, false, K), Probes), NewAside),
     append(SetAside0, NewAside, SetAside),
     explored(Cand, Explored, Id, Explored1),
     call_bridge(exploration_simulate, _{id:Id, antecedent:Props, iteration:I1,
@@ -169,8 +169,7 @@ step_trace(Best, Settings, I1-Id, cand(Props, Parent, Via), Sim, Probes, Added, 
                simulations:Sim.simulations, failed:Sim.failed,
                best:BestT, added:AddedProps, a_new:Left},
     (   Settings.curiosity == discover
-    ->  findall(T, ( member(probe(P, Sc, K, _, By), Probes),
-                         probe_entry(P, Sc, K, By, T) ), ProbeTrace),
+    ->  maplist(probe_entry, Probes, ProbeTrace),
         Trace = Trace0.put(probes, ProbeTrace)
     ;   Trace = Trace0
     ).

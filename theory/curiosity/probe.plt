@@ -2,36 +2,50 @@
 :- use_module(library(http/json)).
 
 :- use_module(probe).
-:- use_module('../validity').
 
-% The last probe of a step goes where the pours are fewest: here (a stand-in
-% for the pours so far) only the pours upside down are few.
-test(fewest_puts_the_least_covered_candidate_first,
-     [ setup(assertz((bridge:exploration_fewest(Req, Reply) :- fake_fewest(Req, Reply)))),
-       cleanup(retractall(bridge:exploration_fewest(_, _))) ]) :-
-    A = cand([pour_mid_height, pour_steeply_tilted], a1, near),
-    B = cand([pour_mid_height, pour_upside_down], a1, near),
-    C = cand([pour_high, pour_steeply_tilted], a1, near),
+% A stand-in for the probes' simulations: pouring high passes (0.9), pouring
+% mid-height comes close (0.4), anything else finds nothing new (0.1).
+settings(_{curiosity:discover, probe:8, probe_attempts:3}).
+
+test(the_first_candidate_whose_probe_passes_is_explored,
+     [ setup(assertz((bridge:exploration_probe(Req, Reply) :- fake_probe(Req, Reply)))),
+       cleanup(retractall(bridge:exploration_probe(_, _))) ]) :-
+    A = cand([pour_low], a1, near), B = cand([pour_high], a1, near),
+    C = cand([pour_mid_height], a1, near),
+    settings(S),
+    choose(st(1, [], [A, B, C], []), S, Cand, Attempt, Rest, Probes),
+    Cand == B, Attempt == 1, Rest == [C],
+    Probes == [probe([pour_low], 0.1, false, 0), probe([pour_high], 0.9, true, 1)].
+
+test(when_none_passes_the_best_of_probe_attempts_is_explored,
+     [ setup(assertz((bridge:exploration_probe(Req, Reply) :- fake_probe(Req, Reply)))),
+       cleanup(retractall(bridge:exploration_probe(_, _))) ]) :-
+    A = cand([pour_low], a1, near), C = cand([pour_mid_height], a1, near),
+    D = cand([pour_to_side], a1, near), E = cand([pour_high], a1, near),
+    settings(S),
+    choose(st(1, [], [A, C, D, E], []), S, Cand, Attempt, Rest, Probes),
+    Cand == C, Attempt == 1, Rest == [E],
+    findall(K-Kept, member(probe(_, _, Kept, K), Probes), [0-false, 1-true, 2-false]).
+
+test(more_batches_and_a_0_are_explored_without_a_probe,
+     [ setup(assertz((bridge:exploration_probe(_, _) :- fail))),
+       cleanup(retractall(bridge:exploration_probe(_, _))) ]) :-
+    settings(S),
     More = cand([pour_low], a1, more(a1, 1)),
-    Settings = _{seed:1, jumps:31, probe:8, curiosity:discover, cover:31},
-    % in A_new: moved to the front, the others in their order
-    fewest([A, B, C], [], Settings, 2, Rest),
-    Rest == [B, A, C],
-    % a batch of more pours is no candidate for a probe
-    fewest([More, A, C], [], Settings, 2, Rest2),
-    Rest2 = [cand(P, none, jump), More, A, C],
-    memberchk(pour_upside_down, P), valid_antecedent(P).
+    choose(st(1, [], [More], []), S, More, 0, [], []),
+    A0 = cand([pour_low], none, initial),
+    choose(st(0, [], [A0], []), S, A0, 0, [], []),
+    % and without probes every candidate is
+    C = cand([pour_high], a1, near),
+    choose(st(1, [], [C], []), S.put(probe, 0), C, 0, [], []).
 
-test(fewest_fails_when_every_candidate_is_covered,
-     [ setup(assertz((bridge:exploration_fewest(Req, Reply) :- fake_fewest(Req, Reply)))),
-       cleanup(retractall(bridge:exploration_fewest(_, _))),
-       fail ]) :-
-    fewest([cand([pour_high], a1, near)], [],
-                     _{seed:1, jumps:0, probe:8, curiosity:discover, cover:31}, 2, _).
-
-fake_fewest(Req, Reply) :-
+fake_probe(Req, Reply) :-
     atom_json_dict(Req, D, [value_string_as(atom)]),
-    (   nth0(I, D.candidates, P), memberchk(pour_upside_down, P) -> true ; I = -1 ),
-    atom_json_dict(Reply, _{index:I}, [width(0)]).
+    (   memberchk(pour_high, D.antecedent) -> Score = 0.9
+    ;   memberchk(pour_mid_height, D.antecedent) -> Score = 0.4
+    ;   Score = 0.1
+    ),
+    ( Score >= 0.5 -> Pass = true ; Pass = false ),
+    atom_json_dict(Reply, _{score:Score, pass:Pass, simulations:8}, [width(0)]).
 
 :- end_tests(curiosity_probe).

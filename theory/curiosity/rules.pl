@@ -54,7 +54,6 @@ setting_facts(Settings, Reply, Stop, Explored, Left, Facts) :-
                       setting(jumps, Settings.jumps),
                       setting(probe, Settings.probe),
                       setting(probe_attempts, Settings.probe_attempts),
-                      setting(cover, Settings.cover),
                       setting(prior_batch, Settings.prior_batch) ]
     ;   Threshold = [ setting(slope_permille, SlopePermille) ]
     ),

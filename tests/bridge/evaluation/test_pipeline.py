@@ -149,16 +149,6 @@ def test_predict_is_what_swi_prolog_concludes():
     assert len(names) == p.shape[1]
 
 
-def test_a_second_run_simulates_nothing_and_gives_the_same_figures(evaluated, learned, tmp_path):
-    ev, store = evaluated
-    again = E.evaluate(E.Options(theory=learned[0], store=store, scenes=25, seed=3, verify=4,
-                                 paper_samples=5, executor="inline", progress=False))
-    assert sum(again.simulations.values()) == 0
-    a, b = ev.as_dict(), again.as_dict()
-    a.pop("seconds"), b.pop("seconds"), a.pop("simulations"), b.pop("simulations")
-    assert a == b
-
-
 def test_plans_and_paper_rules_are_checked_in_simulation(evaluated):
     ev, _ = evaluated
     assert len(ev.plans) == len(goal_sets()) >= 5
@@ -203,13 +193,20 @@ def test_the_report_and_its_figures(evaluated, tmp_path):
     assert f"| MAP-Elites (pyribs) | {ev.behaviours_seen['map_elites']} |" in text
 
 
-def test_evaluate_command_end_to_end(learned, tmp_path):
+def test_the_command_end_to_end_simulates_nothing_the_second_time_and_gives_the_same_figures(
+        evaluated, learned, tmp_path):
+    ev, _ = evaluated
     theory, store = learned
     r = run_cli("evaluate", "--theory", str(theory), "--store", str(store), "--out",
-                str(tmp_path / "r"), "--scenes", "10", "--verify", "2", "--paper-samples", "2",
-                "--executor", "inline", "--no-progress")
+                str(tmp_path / "r"), "--scenes", "25", "--seed", "3", "--verify", "4",
+                "--paper-samples", "5", "--executor", "inline", "--no-progress")
     assert r.code == 0, r.err
     assert "distinct behaviours" in r.out and f"report: {tmp_path / 'r' / 'README.md'}" in r.out
+    again = json.loads((tmp_path / "r" / "evaluation.json").read_text())
+    assert sum(again.pop("simulations").values()) == 0      # every pour from the store
+    figures = json.loads(json.dumps(ev.as_dict()))
+    figures.pop("simulations"), figures.pop("seconds"), again.pop("seconds")
+    assert again == figures
 
 
 @pytest.mark.parametrize("make, words", [
@@ -241,6 +238,9 @@ def test_the_theory_is_reproduced_from_its_pours_or_the_report_says_not(evaluate
     flipped = (head.replace("neg(no_spill)", "no_spill") if "neg(" in head
                else head.replace(", no_spill)", ", neg(no_spill))"))
     edited.write_text(text.replace(head, flipped))
-    again = E.evaluate(E.Options(theory=edited, store=store, scenes=5, seed=3, verify=0,
-                                 paper_samples=0, executor="inline", progress=False))
+    from pantarhei.bridge.exploration.simulation import open_simulator
+
+    again = E.Evaluation(theory=str(edited), oracle="synthetic", settings={}, budget=0)
+    with open_simulator("synthetic", "inline", None, store) as sim:
+        E.exploration_pours(E.read_learned(edited), E.Simulations(sim, again, False), again)
     assert not again.reproduced

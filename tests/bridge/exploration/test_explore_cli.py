@@ -24,7 +24,6 @@ FAST = ["--oracle", "synthetic", "--executor", "inline", "--no-progress"]
     (["--jumps", "0"], "argument --jumps: must be at least 1, not 0"),
     (["--probe", "-1"], "argument --probe: must be at least 0, not -1"),
     (["--probe-attempts", "0"], "argument --probe-attempts: must be at least 1, not 0"),
-    (["--cover", "-1"], "argument --cover: must be at least 0, not -1"),
     (["--prior-batch", "2"], "invalid choice"),
 ])
 def test_bad_input_is_one_line_and_nonzero(tmp_path, args, words):
@@ -53,10 +52,9 @@ def test_explore_command_reports_what_it_wrote(tmp_path):
 def test_progress_counts_the_budget_it_spends(tmp_path):
     """The discovering curiosity's budget is in pours (probes included), so
     its progress bar counts pours against `budget` batches of them; the
-    paper's counts explored antecedents. (The general learner's own pours
-    have a bar of their own after it.)"""
+    paper's counts explored antecedents."""
     base = ["--oracle", "synthetic", "--executor", "inline", "--budget", "3", "--batch", "12",
-            "--store", str(tmp_path / "s.sqlite")]
+            "--no-general", "--store", str(tmp_path / "s.sqlite")]
     r = run_cli("explore", *base, "--out", str(tmp_path / "d.pl"))
     assert r.code == 0, r.err
     last = [ln for ln in r.err.replace("\r", "\n").splitlines() if ln.startswith("exploring")][-1]
@@ -73,11 +71,15 @@ def test_prolog_command_drives_exploration(tmp_path):
     out = tmp_path / "p.pl"
     goal = (f"explore([curiosity(paper), oracle(synthetic), budget(2), executor(inline), progress(false), "
             f"out('{out}'), store('{tmp_path / 's.sqlite'}')]), "
-            f"theory_files:load_facts('{out}', m), aggregate_all(count, m:rule(_, _, _), N), "
-            f"format('rules: ~w~n', [N])")
+            f"theory_files:load_facts('{out}', m), "
+            f"aggregate_all(count, (m:rule(I, _, _), sub_atom(I, 0, 1, _, r)), N), "
+            f"aggregate_all(count, m:provenance(_, layer, general), G), "
+            f"format('rules: ~w, general: ~w~n', [N, G])")
     r = run_cli("prolog", "-g", goal)
     assert r.code == 0, r.err
-    assert "rules: 18" in r.out
+    # Algorithm 1's 2 x 9 rules, and the general layer written with them
+    rules, general = r.out.split("rules: ")[1].split(", general: ")
+    assert rules == "18" and int(general) >= 9
 
 
 A0_QUESTION = ("what_happens([pour_near_rim, pour_mid_height, pour_steeply_tilted], O), "

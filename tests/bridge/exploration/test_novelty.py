@@ -7,9 +7,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from pantarhei.bridge.exploration.novelty import (PASS, discount, known, majority,
+from pantarhei.bridge.exploration.novelty import (PASS, known, majority,
                                                   new_reproduced, novelties, probe_score)
-from pantarhei.bridge.exploration.trace import probe_evidence
 from pantarhei.oracle.generative import sample
 from pantarhei.oracle.synthetic import DEPENDS, scores
 from pantarhei.theory.lexicon import load_vocabulary
@@ -87,19 +86,6 @@ def test_a_probe_reads_its_few_pours_as_evidence_not_certainty():
     assert probe_score(failed, 31, known_c) == probe_score(split, 31, known_c)
     one = new[:1]                   # one pour is weak evidence: (1 + 1) / (1 + 2) for each
     assert 0.5 < probe_score(one, 31, known_c) < probe_score(new, 31, known_c)
-
-
-def test_the_probes_record_counts_each_probe_by_its_chance_of_a_find():
-    # two probes split on one verdict (each about 1/2, just under PASS) are
-    # about one find between them, not none; a probe of a known consequent
-    # is none
-    split = [{"score": 0.45, "kept": False}, {"score": 0.45, "kept": True}]
-    trace = [{"probes": []}, {"probes": split}, {"probes": [{"score": 0.0, "kept": True}]}]
-    assert probe_evidence(trace) == [(0.0, 0), (0.9, 2), (0.9, 3)]
-    assert all(p["score"] < PASS for t in trace for p in t["probes"])
-    assert discount(0.0, 0) == 1.0                       # nothing probed yet: no discount
-    assert discount(*probe_evidence(trace)[1]) == (1 + 0.9) / (1 + 2)
-    assert discount(*probe_evidence(trace)[2]) == (1 + 0.9) / (1 + 3)
 
 
 def test_probes_of_the_synthetic_oracle_pass_the_side_pour_and_not_a_0_again():
