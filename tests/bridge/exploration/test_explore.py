@@ -184,7 +184,7 @@ def test_failed_simulations_are_left_out_and_counted(tmp_path):
     r = exploration.explore(Options(
         oracle="faulty", oracle_options={"crash": crash}, budget=2, batch=16, probe=0,
         out=tmp_path / "f.pl", store=tmp_path / "f.sqlite", progress=False,
-        executor="local", workers=2, initial=["pour_low"]))
+        executor="local", workers=2, initial=["pour_low"], general=False))
     assert r["explored"] == 2 and 0 < r["failed"] < r["simulations"]
     f = read_facts([Path(r["out"])])
     settings = dict(f["setting"])

@@ -32,8 +32,8 @@ def theories(draw) -> Theory:
     return theory
 
 
-# 40 examples of 25 theories: 1,000 theories, one Prolog process per example.
-@settings(max_examples=40, deadline=None, derandomize=True,
+# 20 examples of 25 theories: 500 theories, one Prolog process per example.
+@settings(max_examples=20, deadline=None, derandomize=True,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
 @given(st.lists(theories(), min_size=25, max_size=25))
 def test_prolog_and_asp_agree_under_every_switch(batch: list[Theory]) -> None:
