@@ -40,8 +40,6 @@ option(resample, count, range(0, 1000000), 2,
   "discover: more batches of an antecedent whose planes are all undecided and that queued nothing new").
 option(novelty, permille, range(0, 1000), 100,
   "discover: the predicted novelty, from 0 to 1, a candidate needs to be queued").
-option(queue, count, range(1, 1000000), 100,
-  "discover: A_new keeps this many most novel candidates").
 option(jumps, count, range(1, 1000000), 31,
   "discover: uniformly random valid antecedents drawn as candidates each step").
 option(probe, count, range(0, 10000), 8,
@@ -94,7 +92,6 @@ course(curiosity, discover).
 course(permutations, discover).
 course(resample, discover).
 course(novelty, discover).
-course(queue, discover).
 course(jumps, discover).
 course(probe, discover).
 course(probe, nonzero(probe)).

@@ -59,9 +59,9 @@ more(Added, Settings, Id, Props, Parent, Via, More) :-
 %   first), every valid antecedent one proposition away from Props
 %   (neighbours/3), random valid antecedents (jumps/4), then A_new as it was
 %   (Rest). Each gets its novelty (exploration_predict); Queue, the new
-%   A_new, holds the most novel of those that reach the novelty level, at
-%   most `queue` of them (ties in the order above). Added are the new ones
-%   of Queue, in its order.
+%   A_new, holds those that reach the novelty level, the most novel first
+%   (ties in the order above). Added are the new ones of Queue, in its
+%   order.
 discover_queue(Best, Explored, Id, Props, Away, Rest, Settings, I, Added, Queue) :-
     exclusions(Explored, Away, Exclude0),
     foldl(follow(Explored), Best.followed, Exclude0-[], Exclude1-RevFollowed),
@@ -81,11 +81,7 @@ discover_queue(Best, Explored, Id, Props, Away, Rest, Settings, I, Added, Queue)
                          nth1(K, Reply.novelty, N), Key is -N ),
                 Keyed),
         keysort(Keyed, Sorted),
-        pairs_values(Sorted, Queue0),
-        length(Queue0, Len),
-        Keep is min(Len, Settings.queue),
-        length(Queue, Keep),
-        append(Queue, _, Queue0),
+        pairs_values(Sorted, Queue),
         append([Followed, Neighbours, Jumps], New),
         include([C]>>memberchk(C, New), Queue, Added)
     ).

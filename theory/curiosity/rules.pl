@@ -50,7 +50,6 @@ setting_facts(Settings, Reply, Stop, Explored, Left, Facts) :-
                       setting(permutations, Settings.permutations),
                       setting(resample, Settings.resample),
                       setting(novelty_permille, NoveltyPermille),
-                      setting(queue, Settings.queue),
                       setting(jumps, Settings.jumps),
                       setting(probe, Settings.probe),
                       setting(probe_attempts, Settings.probe_attempts),

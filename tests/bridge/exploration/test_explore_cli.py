@@ -20,7 +20,6 @@ FAST = ["--oracle", "synthetic", "--executor", "inline", "--no-progress"]
     (["--permutations", "0"], "argument --permutations: must be at least 1, not 0"),
     (["--resample", "-1"], "argument --resample: must be at least 0, not -1"),
     (["--novelty", "1.5"], "argument --novelty: must be at most 1, not 1.5"),
-    (["--queue", "0"], "argument --queue: must be at least 1, not 0"),
     (["--jumps", "0"], "argument --jumps: must be at least 1, not 0"),
     (["--probe", "-1"], "argument --probe: must be at least 0, not -1"),
     (["--probe-attempts", "0"], "argument --probe-attempts: must be at least 1, not 0"),
@@ -37,8 +36,8 @@ def test_bad_input_is_one_line_and_nonzero(tmp_path, args, words):
 
 def test_explore_command_reports_what_it_wrote(tmp_path):
     out = tmp_path / "sub" / "learned.pl"
-    r = run_cli("explore", *FAST, "--curiosity", "paper", "--budget", "3", "--batch", "12", "--out", str(out),
-                "--store", str(tmp_path / "s.sqlite"))
+    r = run_cli("explore", *FAST, "--curiosity", "paper", "--budget", "3", "--batch", "12", "--no-general",
+                "--out", str(out), "--store", str(tmp_path / "s.sqlite"))
     assert r.code == 0, r.err
     assert out.is_file() and out.with_suffix(".trace.jsonl").is_file()
     # what it says it explored is what its trace holds: one line an antecedent
@@ -70,16 +69,12 @@ def test_progress_counts_the_budget_it_spends(tmp_path):
 def test_prolog_command_drives_exploration(tmp_path):
     out = tmp_path / "p.pl"
     goal = (f"explore([curiosity(paper), oracle(synthetic), budget(2), executor(inline), progress(false), "
-            f"out('{out}'), store('{tmp_path / 's.sqlite'}')]), "
-            f"theory_files:load_facts('{out}', m), "
-            f"aggregate_all(count, (m:rule(I, _, _), sub_atom(I, 0, 1, _, r)), N), "
-            f"aggregate_all(count, m:provenance(_, layer, general), G), "
-            f"format('rules: ~w, general: ~w~n', [N, G])")
+            f"general(false), out('{out}'), store('{tmp_path / 's.sqlite'}')]), "
+            f"theory_files:load_facts('{out}', m), aggregate_all(count, m:rule(_, _, _), N), "
+            f"format('rules: ~w~n', [N])")
     r = run_cli("prolog", "-g", goal)
     assert r.code == 0, r.err
-    # Algorithm 1's 2 x 9 rules, and the general layer written with them
-    rules, general = r.out.split("rules: ")[1].split(", general: ")
-    assert rules == "18" and int(general) >= 9
+    assert "rules: 18" in r.out
 
 
 A0_QUESTION = ("what_happens([pour_near_rim, pour_mid_height, pour_steeply_tilted], O), "
