@@ -1,8 +1,8 @@
 """`pantarhei demo`: the main job on the embedded defaults.
 
 Learn the theory of pouring by curious exploration of the PyBullet
-simulation (25 rules, the paper's scale), write it natively and in DFL, then
-ask it the paper's three questions and one goal query. Simulations are
+simulation (the pours of 25 batches, the paper's scale), write it natively
+and in DFL, then ask it the paper's three questions and one goal query. Simulations are
 stored, so a second run simulates nothing.
 """
 from __future__ import annotations
@@ -28,8 +28,9 @@ GOAL = "liquid_leaves_source,liquid_remains_in_destination,no_spill"
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser("demo", help="the main job: learn the theory of pouring (PyBullet, 25 "
-                                    "rules), write it, ask it the paper's questions and plan")
+    p = sub.add_parser("demo", help="the main job: learn the theory of pouring (PyBullet, the "
+                                    "pours of 25 batches), write it, ask it the paper's "
+                                    "questions and plan")
     options.add_oracle(p)
     options.add_table_option(p, option("budget"))    # as explore's
     options.add_seed(p)
