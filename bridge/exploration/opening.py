@@ -10,7 +10,7 @@ from pantarhei.bridge.exploration.pool import Session
 from pantarhei.theory.option_table import Option, course_table, option
 
 #: Bumped when the course of an exploration may change for the same settings.
-ALGORITHM_VERSION = "4"
+ALGORITHM_VERSION = "5"
 
 
 def course(request: dict, version: str, oracle_settings: Any) -> dict:

@@ -215,8 +215,7 @@ class Host:
     def predict(self, request: dict) -> dict:
         """The novelty of each candidate antecedent (bridge/exploration/novelty.py)
         given every pour so far and the consequents of the explored
-        antecedents, and whether it reaches the level to be queued once
-        (novelty.py)."""
+        antecedents, and whether it reaches the novelty level to be queued."""
         s = self.need_session()
         entries = request["antecedents"]
         key = (len(s.params), len(entries))
