@@ -121,17 +121,11 @@ def explore_options() -> dict:
     import shlex
 
     from pantarhei.bridge.commands import explore as command
-    from pantarhei.theory.option_table import option_table
 
     parser = argparse.ArgumentParser(prog="PANTARHEI_BENCH_EXPLORE")
     command.register(parser.add_subparsers())
     args = parser.parse_args(["explore", *shlex.split(os.environ.get("PANTARHEI_BENCH_EXPLORE", ""))])
-    values = {o.name: getattr(args, o.name) for o in option_table()}
-    if values["initial"] is None:
-        del values["initial"]
-    else:
-        values["initial"] = tuple(t.strip() for t in values["initial"].split(",") if t.strip())
-    return values
+    return command.option_values(args)
 
 
 def curiosity(mode: str, seed: int, rules: int, tmp: Path, oracle: str, store: Path) -> dict:

@@ -32,18 +32,10 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def explore(args: argparse.Namespace) -> int:
     from pantarhei.bridge.exploration.loop import Options, explore as run_exploration, stop_text
-    from pantarhei.bridge.reasoning import scenes as validity
-    from pantarhei.theory.option_table import option_table
-
     from pantarhei.bridge.files import require_writable_file
 
     require_writable_file(Path(args.out), "--out")
-    values = {o.name: getattr(args, o.name) for o in option_table()}
-    if args.initial is not None:
-        values["initial"] = validity.require_valid([t.strip() for t in args.initial.split(",") if t.strip()])
-    else:
-        del values["initial"]
-    opts = Options(**values)
+    opts = Options(**option_values(args))
     try:
         result = run_exploration(opts)
     except KeyboardInterrupt:
@@ -61,6 +53,20 @@ def explore(args: argparse.Namespace) -> int:
         if key in result:
             print(f"{key}: {result[key]}")
     return 0
+
+
+def option_values(args: argparse.Namespace) -> dict:
+    """explore's parsed flags as the fields of its Options: one per row of
+    the option table, a_0 (--initial) checked, and left out when not given."""
+    from pantarhei.bridge.reasoning import scenes as validity
+    from pantarhei.theory.option_table import option_table
+
+    values = {o.name: getattr(args, o.name) for o in option_table()}
+    if args.initial is not None:
+        values["initial"] = validity.require_valid([t.strip() for t in args.initial.split(",") if t.strip()])
+    else:
+        del values["initial"]
+    return values
 
 
 def prolog(args: argparse.Namespace) -> int:

@@ -265,18 +265,13 @@ class Host:
         learner asks for where there are few (simulated as the
         exploration's are), ranked with Algorithm 1's rules of the request
         (id, expectation, holds, body, confidence_permille)."""
-        from pantarhei.bridge.learning.layers import general_layer
-        from pantarhei.bridge.theories.model import Rule, Theory
+        from pantarhei.bridge.learning.layers import Ranked, general_layer
 
         s = self.need_session()
-        learned = Theory()
-        for r in request["rules"]:
-            head = str(r["expectation"]) if truthy(r["holds"]) else f"neg({r['expectation']})"
-            learned.rules.append(Rule(str(r["id"]), "defeasible", head,
-                                      tuple(str(b) for b in r["body"])))
-            learned.provenance.append((str(r["id"]), "confidence_permille",
-                                       int(r["confidence_permille"])))
-        learned.learned = {r.id for r in learned.rules}
+        learned = [Ranked(str(r["id"]), tuple(sorted(str(b) for b in r["body"])),
+                          str(r["expectation"]) if truthy(r["holds"]) else f"neg({r['expectation']})",
+                          int(r["confidence_permille"]) / 1000)
+                   for r in request["rules"]]
         progress = truthy(s.settings.get("progress", True))
         return general_layer(learned, s.params, s.scores, int(s.settings["seed"]),
                              lambda X: s.simulator.simulate(X, progress=progress))

@@ -52,10 +52,14 @@ def ranked_rules(theory: Theory, general: General) -> list[Ranked]:
     """Algorithm 1's learned rules of `theory` (confidence from their
     provenance) and the general rules, as one list."""
     conf = {rid: int(v) / 1000 for rid, k, v in theory.provenance if k == "confidence_permille"}
-    out = [Ranked(r.id, tuple(sorted(r.body)), r.head, conf.get(r.id, 0.5))
-           for r in theory.rules if r.id in theory.learned]
-    out += [Ranked(g.id, tuple(sorted(g.body)), g.head, g.confidence, True) for g in general.rules]
-    return out
+    return with_general([Ranked(r.id, tuple(sorted(r.body)), r.head, conf.get(r.id, 0.5))
+                         for r in theory.rules if r.id in theory.learned], general)
+
+
+def with_general(learned: Sequence[Ranked], general: General) -> list[Ranked]:
+    """Algorithm 1's rules `learned` and the general rules, as one list."""
+    return [*learned, *(Ranked(g.id, tuple(sorted(g.body)), g.head, g.confidence, True)
+                        for g in general.rules)]
 
 
 def superiority(rules: Sequence[Ranked]) -> list[tuple[str, str]]:
@@ -97,7 +101,7 @@ def learn_general(P: np.ndarray, S: np.ndarray, seed: int, simulate=None,
     return generalize(P, S, Settings(seed=int(seed))), P, S
 
 
-def general_layer(learned: Theory, P: np.ndarray, S: np.ndarray, seed: int,
+def general_layer(learned: Sequence[Ranked], P: np.ndarray, S: np.ndarray, seed: int,
                   simulate=None) -> dict:
     """The general layer of an exploration's pours (P, S) and the
     learner's own (simulated with `simulate`), as explore/1 writes it
@@ -113,4 +117,4 @@ def general_layer(learned: Theory, P: np.ndarray, S: np.ndarray, seed: int,
                        "body": list(g.body), "level": g.level, "support": g.support,
                        "kept": g.kept, "confidence_permille": int(round(1000 * g.confidence))}
                       for g in general.rules],
-            "sup": [[a, b] for a, b in superiority(ranked_rules(learned, general))]}
+            "sup": [[a, b] for a, b in superiority(with_general(learned, general))]}
