@@ -23,8 +23,8 @@ Prolog module `bridge`:
 * `oracle_sample`, `oracle_simulate`, `oracle_describe`: the oracle at the
   Prolog prompt (bridge/exploration/prompt_oracle.py).
 
-Each takes a JSON request and unifies its second argument with a JSON
-reply. An exception in Python becomes the reply `{"error": ...}` (Prolog
+Each takes a request dict and unifies its second argument with a reply
+dict, as terms (bridge/engines/terms.py). An exception in Python becomes the reply `{"error": ...}` (Prolog
 raises it as `exploration_error/1`) and is raised again, as it was, when the
 Prolog goal returns. All Prolog calls stay on the main thread.
 
@@ -36,14 +36,15 @@ course-deciding settings and the progress bar, bridge/exploration/opening.py.
 """
 from __future__ import annotations
 
-import json
 import time
+from functools import partial
 from pathlib import Path
 from typing import Any, Callable
 
 import numpy as np
 
 from pantarhei.bridge.engines.swipl import Engine, engine as prolog_engine
+from pantarhei.bridge.engines.terms import foreign
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.exploration.novelty import PASS, known, novelties, probe_score
 from pantarhei.bridge.exploration.opening import (ALGORITHM_VERSION, course, note, open_bar,
@@ -73,6 +74,8 @@ class Host:
         self.session: Session | None = None
         self.error: BaseException | None = None
         self.result: dict[str, Any] = {}
+        #: the C callbacks of the foreign predicates, alive while Prolog is
+        self.callbacks: list = []
         self.handlers: dict[str, Callable[[dict], dict]] = {
             "exploration_begin": self.begin,
             "exploration_simulate": self._timed("simulate", self.simulate),
@@ -104,15 +107,14 @@ class Host:
             raise UserError("no exploration is running")
         return self.session
 
-    def dispatch(self, name: str, request_text: str) -> str:
-        """Run one handler on a JSON request; its JSON reply, or
-        `{"error": ...}` with the exception kept for `take_error`."""
+    def dispatch(self, name: str, request: dict) -> dict:
+        """Run one handler on a request; its reply, or `{"error": ...}`
+        with the exception kept for `take_error`."""
         try:
-            answer = self.handlers[name](json.loads(request_text))
+            return self.handlers[name](request)
         except BaseException as e:  # reported to Prolog, raised again by the caller
             self.error = e
-            answer = {"error": error_text(e)}
-        return json.dumps(answer)
+            return {"error": error_text(e)}
 
     def take_error(self) -> BaseException | None:
         e, self.error = self.error, None
@@ -323,20 +325,9 @@ def install(eng: Engine | None = None) -> Engine:
     theory/curiosity.pl. Registering twice does nothing."""
     eng = eng or prolog_engine()
     if eng.exploration_host is None:
-        from pyswip import Prolog
-
         host = Host()
         for name in host.handlers:
-            Prolog.register_foreign(_foreign(eng, name), name=name, arity=2, module="bridge")
+            foreign("bridge", name, partial(host.dispatch, name), host.callbacks)
         eng.exploration_host = host
         eng.use_module("curiosity")
     return eng
-
-
-def _foreign(eng: Engine, name: str) -> Callable[[Any, Any], bool]:
-    def predicate(request: Any, reply: Any) -> bool:
-        text = request.decode() if isinstance(request, bytes) else str(request)
-        reply.unify(eng.exploration_host.dispatch(name, text))
-        return True
-    predicate.__name__ = name
-    return predicate

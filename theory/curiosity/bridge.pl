@@ -23,11 +23,11 @@ predicates of the module =bridge=, which `pantarhei explore` and
     bridge:oracle_describe(+Request, -Reply): sample/4, simulate/3 and
     describe/2 of oracle.pl, the oracle at the Prolog prompt
 
-Requests and replies are JSON text; a reply =|{"error": Text}|= raises
-=|exploration_error(Text)|=, which prints as its Text.
+Requests and replies are dicts of atoms, strings, numbers, lists and
+dicts (strings come back as atoms, and the booleans as =true= and
+=false=); a reply =|_{error: Text}|= raises =|exploration_error(Text)|=,
+which prints as its Text.
 */
-
-:- use_module(library(http/json)).
 
 :- multifile prolog:message//1.
 
@@ -36,8 +36,8 @@ prolog:message(exploration_error(Text)) -->
 
 %!  call_bridge(+Name:atom, +Request:dict, -Reply:dict) is det.
 %
-%   Call the foreign predicate bridge:Name/2 with Request as JSON text, and
-%   read its reply (strings as atoms).
+%   Call the foreign predicate bridge:Name/2 with Request, and take its
+%   reply.
 %
 %   @error exploration_error(Text) when the foreign predicate is not
 %   registered, fails, or replies with an error.
@@ -46,14 +46,12 @@ call_bridge(Name, Request, Reply) :-
     ->  true
     ;   throw(exploration_error("the oracle is not loaded: start Prolog with `pantarhei prolog`"))
     ),
-    atom_json_dict(Text, Request, [width(0)]),
-    Goal =.. [Name, Text, ReplyText],
+    Goal =.. [Name, Request, Reply0],
     (   call(bridge:Goal)
     ->  true
     ;   format(string(M), "~w failed", [Name]),
         throw(exploration_error(M))
     ),
-    atom_json_dict(ReplyText, Reply0, [value_string_as(atom)]),
     (   get_dict(error, Reply0, Message)
     ->  string_value(Message, M),
         throw(exploration_error(M))
