@@ -8,8 +8,10 @@
 % command line (--name, underscores as dashes; --no-name for a flag whose
 % default is true), the checks of explore/1's options
 % (theory/curiosity/settings.pl), the options Python passes to explore/1,
+% the setting/2 facts of the learned theory (theory/curiosity/rules.pl),
 % the reference page docs/options.md, and default(Name, Value) for Prolog
 % and Python (theory/default_values.pl, pantarhei.theory.defaults).
+% The rows are in the order of the help and of the setting/2 facts.
 % Type and Range:
 %   count, range(Low, High): a whole number from Low to High;
 %   permille, range(Low, High): a number from Low/1000 to High/1000
@@ -22,18 +24,18 @@
 % A Default none is set otherwise: the help says how (a_0's are the
 % default_initial facts below). Default default(Key) is the project's
 % default(Key, Value) below.
-option(curiosity, choice, one_of(discover, paper), discover,
-  "discover: queue the candidates (moves past where a significant plane's verdict flips, neighbours, random jumps) a forest of the pours so far predicts to show something new, most novel first; paper: Algorithm 1 as the paper states it").
 option(oracle, oracle, one_of(pybullet, synthetic), pybullet,
   "the simulation, or analytic test scores (synthetic)").
-option(budget, count, range(1, 100000), 25,
-  "the budget: the pours of this many batches, probes included (discover); this many explored antecedents (paper)").
+option(seed, count, range(0, 2147483647), 1,
+  "seed of every random choice").
 option(batch, count, range(1, 10000), none,
   "pours simulated per batch, for each explored antecedent (default: parameters + 1)").
+option(budget, count, range(1, 100000), 25,
+  "the budget: the pours of this many batches, probes included (discover); this many explored antecedents (paper)").
+option(curiosity, choice, one_of(discover, paper), discover,
+  "discover: queue the candidates (moves past where a significant plane's verdict flips, neighbours, random jumps) a forest of the pours so far predicts to show something new, most novel first; paper: Algorithm 1 as the paper states it").
 option(significance, permille, range(0, 1000), 50,
   "discover: the significance level of the permutation test of the planes").
-option(slope, permille, range(0, none), 100,
-  "paper: the plane slope below which nothing new is explored").
 option(permutations, count, range(1, 1000000), 199,
   "discover: shuffles of the permutation test").
 option(resample, count, range(0, 1000000), 2,
@@ -48,24 +50,24 @@ option(probe_attempts, count, range(1, 1000000), 3,
   "discover: candidates probed at most in a step; then the one whose probe scored best is explored").
 option(prior_batch, choice, one_of(0, 1), 1,
   "discover: 1 to explore the priors (nothing said: every parameter from its prior, as a question's unsaid ones) with the budget's last batch, 0 not to").
-option(seed, count, range(0, 2147483647), 1,
-  "seed of every random choice").
-option(initial, antecedent, none, none,
-  "the initial antecedent a_0, propositions separated by commas").
+option(slope, permille, range(0, none), 100,
+  "paper: the plane slope below which nothing new is explored").
 option(breadth, count, range(1, 1000000), 3,
   "paper: modify steps the parameters of this many largest gradient components").
 option(ridge, permille, range(0, none), 1000,
   "L2 penalty of the plane fits on normalised parameters; 0 is the paper's plain least squares").
 option(qualify, choice, one_of(weighted, argmax), weighted,
   "the consequent of an antecedent: the weighted vote of its simulations (weighted) or the simulation of largest weight (argmax, the paper's)").
+option(initial, antecedent, none, none,
+  "the initial antecedent a_0, propositions separated by commas").
+option(general, flag, none, true,
+  "--no-general: write Algorithm 1's rules only, without the general rules learned from every pour").
 option(store, path, none, default(store),
   "SQLite file of simulations and exploration state").
 option(out, path, none, default(theory),
   "the learned theory; the trace (.trace.jsonl) and its plot (.trace.png) go beside it").
 option(resume, flag, none, false,
   "continue the saved exploration with the same settings").
-option(general, flag, none, true,
-  "--no-general: write Algorithm 1's rules only, without the general rules learned from every pour").
 option(executor, choice, one_of(local, ray, inline), local,
   "worker processes here, a Ray cluster, or this process").
 option(workers, count, range(1, 1024), none,
@@ -99,6 +101,15 @@ course(probe_attempts, discover).
 course(probe_attempts, nonzero(probe)).
 course(prior_batch, discover).
 course(prior_batch, nonzero(prior_batch)).
+
+% The learned theory's setting/2 facts say how it was learned: the options
+% of the run's course/2 above and these, which decide what the theory says
+% without changing the course (a run resumes with a larger budget). A
+% permille option is written as Name_permille in thousandths, the oracle
+% with its version (oracle_version), and the propositions of an
+% antecedent one fact each, after the run's own facts.
+recorded(budget).
+recorded(qualify).
 
 % After Algorithm 1, the general rules are learned from every pour of the
 % exploration (option general above; bridge/learning/).

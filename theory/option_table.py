@@ -76,17 +76,6 @@ def _option(row: tuple, project: dict) -> Option:
     return Option(name, kind, low, high, choices, default, help_text, ref)
 
 
-@lru_cache(maxsize=None)
-def course_table() -> tuple[tuple[str, tuple], ...]:
-    """The options that decide an exploration's course (course/2 of
-    theory/defaults.pl), in file order, each with its conditions: "every",
-    "discover" or ("nonzero", Option)."""
-    out: dict[str, list] = {}
-    for name, when in read_facts([DEFAULTS_FILE]).get("course", []):
-        out.setdefault(name, []).append(when)
-    return tuple((name, tuple(whens)) for name, whens in out.items())
-
-
 def option(name: str) -> Option:
     """The table's row for `name`."""
     for o in option_table():

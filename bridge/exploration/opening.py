@@ -7,7 +7,7 @@ import sys
 from typing import Any
 
 from pantarhei.bridge.exploration.pool import Session
-from pantarhei.theory.option_table import Option, course_table, option
+from pantarhei.theory.option_table import Option, option
 
 #: Bumped when the course of an exploration may change for the same settings.
 ALGORITHM_VERSION = "5"
@@ -15,26 +15,18 @@ ALGORITHM_VERSION = "5"
 
 def course(request: dict, version: str, oracle_settings: Any) -> dict:
     """The settings of explore/1's request that decide the exploration's
-    course (course/2 of theory/defaults.pl), with the algorithm's and the
-    oracle's versions: what the run key hashes. The keys of a mode or
-    option left off stay out, so that runs without it keep their keys."""
+    course, with the algorithm's and the oracle's versions: what the run
+    key hashes. The request names them (`course`: course_options/2 of
+    theory/curiosity/settings.pl, from course/2 of theory/defaults.pl);
+    the keys of a mode or option left off stay out, so that runs without
+    it keep their keys."""
     out = {"algorithm": ALGORITHM_VERSION, "oracle_version": version,
            "oracle_settings": oracle_settings}
-    discover = request.get("curiosity", "paper") != "paper"
-    for name, whens in course_table():
-        if all(_holds(when, request, discover) for when in whens):
-            out[name] = _course_value(option(name), request[name])
+    for name in request["course"]:
+        out[name] = _course_value(option(name), request[name])
     if "prior_batch" in out:    # where the priors' batch goes: the budget's last
         out["priors_at"] = "last"
     return out
-
-
-def _holds(when: Any, request: dict, discover: bool) -> bool:
-    if when == "every":
-        return True
-    if when in ("discover", "paper"):
-        return discover == (when == "discover")
-    return bool(int(request.get(when[1], 0)))          # ("nonzero", Option)
 
 
 def _course_value(o: Option, v: Any) -> Any:

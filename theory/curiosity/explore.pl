@@ -31,7 +31,8 @@ oracle's side too (aborted), then propagates.
 %   @error exploration_error(Text) for bad options or a failing oracle.
 explore(Options) :-
     settings(Options, Settings),
-    call_bridge(exploration_begin, Settings, Begun),
+    course_options(Settings, Course),
+    call_bridge(exploration_begin, Settings.put(course, Course), Begun),
     catch(explore_loop(Settings, Begun), E,
           ( catch(call_bridge(exploration_end, _{aborted:true}, _), _, true),
             throw(E) )).

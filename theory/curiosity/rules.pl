@@ -18,6 +18,7 @@ writes both, once, in the common subset of Prolog and ASP.
 :- use_module(library(lists)).
 :- use_module(bridge).
 :- use_module(state).
+:- use_module(settings).
 
 %!  learned(+Explored:list, +SetAside:list, +Settings:dict, +Stop, +Left:integer, -Facts:list) is det.
 %
@@ -35,43 +36,21 @@ learned(Explored, SetAside, Settings, Stop, Left, Facts) :-
     append([SettingFacts, AsideFacts, RuleFacts], Facts).
 
 %   setting_facts(+Settings, +Reply, +Stop, +Explored, +Left, -Facts):
-%   setting/2 facts saying how the exploration ran (Reply: that of
-%   exploration_qualify, with the oracle's version and the simulations).
+%   setting/2 facts saying how the exploration ran: the options the option
+%   table records (recorded_settings/4), then the run's own facts, then the
+%   initial antecedent (Reply: that of exploration_qualify, with the
+%   oracle's version and the simulations).
 setting_facts(Settings, Reply, Stop, Explored, Left, Facts) :-
-    length(Explored, N),
-    SignificancePermille is round(Settings.significance * 1000),
-    SlopePermille is round(Settings.slope * 1000),
-    RidgePermille is round(Settings.ridge * 1000),
-    NoveltyPermille is round(Settings.novelty * 1000),
     string_value(Reply.oracle_version, Version),
-    (   Settings.curiosity == discover
-    ->  Threshold = [ setting(curiosity, discover),
-                      setting(significance_permille, SignificancePermille),
-                      setting(permutations, Settings.permutations),
-                      setting(resample, Settings.resample),
-                      setting(novelty_permille, NoveltyPermille),
-                      setting(jumps, Settings.jumps),
-                      setting(probe, Settings.probe),
-                      setting(probe_attempts, Settings.probe_attempts),
-                      setting(prior_batch, Settings.prior_batch) ]
-    ;   Threshold = [ setting(slope_permille, SlopePermille) ]
-    ),
-    append([ [ setting(oracle, Settings.oracle),
-               setting(oracle_version, Version),
-               setting(seed, Settings.seed),
-               setting(batch, Settings.batch),
-               setting(budget, Settings.budget) ],
-             Threshold,
-             [ setting(breadth, Settings.breadth),
-               setting(ridge_permille, RidgePermille),
-               setting(qualify, Settings.qualify),
-               setting(explored, N),
+    recorded_settings(Settings, Version, Options, Antecedents),
+    length(Explored, N),
+    append([ Options,
+             [ setting(explored, N),
                setting(simulations, Reply.simulations),
                setting(failed_simulations, Reply.failed),
                setting(stopped, Stop),
-               setting(a_new_left, Left) ] ], Facts1),
-    findall(setting(initial, P), member(P, Settings.initial), Initial),
-    append(Facts1, Initial, Facts).
+               setting(a_new_left, Left) ],
+             Antecedents ], Facts).
 
 
 %!  rule_facts(+Explored:list, +Qualified:list, -Facts:list) is det.

@@ -1,12 +1,16 @@
 :- module(curiosity_settings,
-          [ settings/2                % +Options, -Settings
+          [ settings/2,               % +Options, -Settings
+            course_options/2,         % +Settings, -Names
+            recorded_settings/4       % +Settings, +OracleVersion, -Facts, -Antecedents
           ]).
 /** <module> The settings of an exploration
 
 Read the options of explore/1 into one dict, the Settings every part of
 the loop reads: each option checked, and those not given taken from the
 defaults of theory/defaults.pl. A bad option raises
-=|exploration_error(Text)|= with one line saying which and why.
+=|exploration_error(Text)|= with one line saying which and why. From the
+same table: the options that decide a run's course (its run key) and the
+setting/2 facts of its learned theory.
 */
 
 :- use_module(library(apply)).
@@ -41,6 +45,62 @@ settings(Options, S) :-
         put_dict(oracle_options, S0, OracleOptions, S)
     ;   S = S0
     ).
+
+%!  course_options(+Settings:dict, -Names:list) is det.
+%
+%   Names are the options that decide the course of the run of Settings:
+%   those of course/2 in theory/defaults.pl whose every condition holds,
+%   in the option table's order. Python hashes them into the run key.
+course_options(S, Names) :-
+    course_names(S, true, Names).
+
+%   course_names(+Settings, +Nonzero, -Names): the options of course/2
+%   whose conditions hold for Settings, in the option table's order; with
+%   Nonzero false, a condition nonzero(Option) counts as holding.
+course_names(S, Nonzero, Names) :-
+    findall(Name, ( table_option(Name, _, _, _),
+                    once(defaults:course(Name, _)),
+                    forall(defaults:course(Name, When), course_holds(When, Nonzero, S)) ),
+            Names).
+
+course_holds(every, _, _).
+course_holds(discover, _, S) :- get_dict(curiosity, S, discover).
+course_holds(paper, _, S) :- get_dict(curiosity, S, paper).
+course_holds(nonzero(Option), Nonzero, S) :-
+    (   Nonzero == true -> get_dict(Option, S, V), V =\= 0 ; true ).
+
+%!  recorded_settings(+Settings:dict, +OracleVersion, -Facts:list, -Antecedents:list) is det.
+%
+%   The setting/2 facts of the learned theory of the run of Settings: the
+%   options of its course (those of course/2 for its curiosity, at 0 too:
+%   nonzero/1 only keeps the run keys of runs without an option) and
+%   those of recorded/1 in theory/defaults.pl, in the option table's
+%   order. Facts: a permille option as Name_permille in
+%   thousandths, the oracle followed by oracle_version(OracleVersion), the
+%   others as they are; Antecedents: setting(Name, Prop) for each
+%   proposition of an antecedent option (which the theory writes after
+%   the run's own facts).
+recorded_settings(S, Version, Facts, Antecedents) :-
+    course_names(S, false, Course),
+    findall(Name-Type, ( table_option(Name, Type, _, _),
+                         ( memberchk(Name, Course) ; defaults:recorded(Name) ) ),
+            Recorded),
+    findall(F, ( member(Name-Type, Recorded), Type \== antecedent,
+                 get_dict(Name, S, V), recorded_fact(Type, Name, V, Version, F) ),
+            Facts),
+    findall(setting(Name, P), ( member(Name-antecedent, Recorded),
+                                get_dict(Name, S, Props), member(P, Props) ),
+            Antecedents).
+
+recorded_fact(permille, Name, V, _, setting(Key, Permille)) :- !,
+    atom_concat(Name, '_permille', Key),
+    Permille is round(V * 1000).
+recorded_fact(oracle, Name, V, Version, F) :- !,
+    (   F = setting(Name, V)
+    ;   atom_concat(Name, '_version', Key),
+        F = setting(Key, Version)
+    ).
+recorded_fact(_, Name, V, _, setting(Name, V)).
 
 %   table_option(?Key, ?Type, ?Range, ?Default): a row of the option
 %   table (theory/defaults.pl).

@@ -2,10 +2,43 @@
 
 :- use_module('../default_values').
 :- use_module('../validity').
+:- use_module(settings).
 
 % a_0, the default of initial(Props), is a valid antecedent
 test(default_initial_is_valid) :-
     default_initial(A),
     valid_antecedent(A).
+
+% the course of a discovering run: course/2's options in the table's
+% order, without the paper's slope; probe and prior_batch only when not 0
+test(course_options_discover) :-
+    settings([], S),
+    course_options(S, Names),
+    Names = [oracle, seed, batch, curiosity, significance, permutations, resample,
+             novelty, jumps, probe, probe_attempts, prior_batch, breadth, ridge, initial],
+    settings([probe(0), prior_batch(0)], S0),
+    course_options(S0, Names0),
+    \+ memberchk(probe, Names0), \+ memberchk(probe_attempts, Names0),
+    \+ memberchk(prior_batch, Names0), memberchk(jumps, Names0).
+
+% the paper's curiosity: its slope, and none of discover's options
+test(course_options_paper) :-
+    settings([curiosity(paper)], S),
+    course_options(S, [oracle, seed, batch, slope, breadth, ridge, initial]).
+
+% the setting/2 facts: recorded/1's options besides the course's, permille
+% in thousandths, the oracle with its version, probes at 0 still written,
+% the initial antecedent apart
+test(recorded_settings) :-
+    settings([probe(0), seed(7), novelty(0.25), initial([pour_near_rim])], S),
+    recorded_settings(S, "9", Facts, Antecedents),
+    Facts = [setting(oracle, pybullet), setting(oracle_version, "9"), setting(seed, 7),
+             setting(batch, _), setting(budget, 25), setting(curiosity, discover)|_],
+    memberchk(setting(novelty_permille, 250), Facts),
+    memberchk(setting(probe, 0), Facts),
+    memberchk(setting(qualify, weighted), Facts),
+    \+ memberchk(setting(slope_permille, _), Facts),
+    \+ memberchk(setting(initial, _), Facts),
+    Antecedents == [setting(initial, pour_near_rim)].
 
 :- end_tests(curiosity_settings).
