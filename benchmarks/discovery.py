@@ -129,7 +129,7 @@ def explore_options() -> dict:
 
 
 def curiosity(mode: str, seed: int, rules: int, tmp: Path, oracle: str, store: Path) -> dict:
-    from pantarhei.bridge.exploration.loop import Options, explore
+    from pantarhei.bridge.exploration.running import Options, explore
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen
 
     out = tmp / f"{mode}-{seed}.pl"

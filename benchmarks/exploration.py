@@ -35,7 +35,7 @@ REPEATS = 3
 
 def overhead(max_rules: int, tmp: Path, seed: int = 1, breadth: int = 3,
              curiosity: str = "discover") -> tuple[float, int, dict]:
-    from pantarhei.bridge.exploration.loop import Options, explore
+    from pantarhei.bridge.exploration.running import Options, explore
 
     t = time.perf_counter()
     # the paper's curiosity with threshold 0 follows every plane (a run that never stops early)
@@ -66,7 +66,7 @@ def pour_seconds(n: int = 6) -> float:
 
 
 def qualify_accuracy(tmp: Path, seeds=(1, 2, 3)) -> dict[str, float]:
-    from pantarhei.bridge.exploration.loop import Options, explore
+    from pantarhei.bridge.exploration.running import Options, explore
     from pantarhei.oracle.generative import sample
     from pantarhei.oracle.synthetic import scores
     from pantarhei.theory.lexicon import load_vocabulary

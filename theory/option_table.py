@@ -2,7 +2,7 @@
 once in theory/defaults.pl as `option(Name, Type, Range, Default, Help)`
 facts, read here for Python: the command line
 (bridge/commands/explore.py), the options Python passes to explore/1
-(bridge/exploration/loop.py) and the reference page docs/options.md
+(bridge/exploration/running.py) and the reference page docs/options.md
 (`options_page`). SWI-Prolog checks explore/1's options against the same
 facts (theory/curiosity/settings.pl).
 """

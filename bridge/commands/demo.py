@@ -52,7 +52,7 @@ def demo(args: argparse.Namespace) -> int:
     from pantarhei.bridge.files import require_writable_file, write_text
     from pantarhei.bridge.theories import loading
     from pantarhei.bridge.commands.querying import answer, print_plans
-    from pantarhei.bridge.exploration.loop import Options, budget_text, explore, stop_text
+    from pantarhei.bridge.exploration.running import Options, budget_text, explore, stop_text
 
     out = Path(args.out)
     require_writable_file(out, "--out")

@@ -31,7 +31,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def explore(args: argparse.Namespace) -> int:
-    from pantarhei.bridge.exploration.loop import Options, explore as run_exploration, stop_text
+    from pantarhei.bridge.exploration.running import Options, explore as run_exploration, stop_text
     from pantarhei.bridge.files import require_writable_file
 
     require_writable_file(Path(args.out), "--out")

@@ -90,7 +90,11 @@ class Engine:
 
 def prolog_quote(value: Any) -> str:
     """A Python value written as a Prolog term: text as a quoted atom, lists
-    and tuples as lists, booleans as true/false, numbers as they are."""
+    and tuples as lists, a dict as a dict with quoted keys, booleans as
+    true/false, numbers as they are."""
+    if isinstance(value, dict):
+        return "_{" + ", ".join(f"{prolog_quote(k)}: {prolog_quote(v)}"
+                                for k, v in value.items()) + "}"
     if isinstance(value, (list, tuple)):
         return "[" + ", ".join(prolog_quote(v) for v in value) + "]"
     if isinstance(value, bool):

@@ -26,7 +26,7 @@ oracle's side too (aborted), then propagates.
 %   Name(Value), e.g. explore([oracle(synthetic), budget(5), out(File)]):
 %   their types, ranges and defaults are there. Besides them:
 %
-%     - oracle_options(+Dict): arguments of the oracle (a dict or JSON text)
+%     - oracle_options(+Dict): arguments of the oracle (a dict)
 %
 %   @error exploration_error(Text) for bad options or a failing oracle.
 explore(Options) :-

@@ -16,7 +16,6 @@ setting/2 facts of its learned theory.
 :- use_module(library(apply)).
 :- use_module(library(lists)).
 :- use_module(library(option)).
-:- use_module(library(http/json)).
 :- use_module('../vocabulary').
 :- use_module('../validity').
 :- use_module('../default_values').
@@ -40,8 +39,10 @@ settings(Options, S) :-
               setting_value(Key, Options, Curiosity, Value)
             ), Pairs),
     dict_pairs(S0, _, [curiosity-Curiosity|Pairs]),
-    (   option(oracle_options(OO), Options)
-    ->  (   is_dict(OO) -> OracleOptions = OO ; atom_json_dict(OO, OracleOptions, []) ),
+    (   option(oracle_options(OracleOptions), Options)
+    ->  (   is_dict(OracleOptions) -> true
+        ;   throw(exploration_error("oracle_options: expected a dict"))
+        ),
         put_dict(oracle_options, S0, OracleOptions, S)
     ;   S = S0
     ).

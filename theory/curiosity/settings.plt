@@ -41,4 +41,11 @@ test(recorded_settings) :-
     \+ memberchk(setting(initial, _), Facts),
     Antecedents == [setting(initial, pour_near_rim)].
 
+% the oracle's arguments are a dict
+test(oracle_options_must_be_a_dict) :-
+    settings([oracle_options(_{crash: 3})], S),
+    get_dict(oracle_options, S, OO), get_dict(crash, OO, 3),
+    catch(settings([oracle_options('{"crash": 3}')], _), exploration_error(M), true),
+    M == "oracle_options: expected a dict".
+
 :- end_tests(curiosity_settings).

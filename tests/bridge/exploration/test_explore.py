@@ -11,9 +11,9 @@ import clingo
 import numpy as np
 import pytest
 
-from pantarhei.bridge.exploration import loop as exploration, session
+from pantarhei.bridge.exploration import running as exploration, session
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.exploration.loop import Options
+from pantarhei.bridge.exploration.running import Options
 from pantarhei.bridge.engines.swipl import engine
 from pantarhei.bridge.reasoning.scenes import violations
 from pantarhei.oracle.synthetic import DEPENDS

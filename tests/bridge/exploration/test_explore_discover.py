@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 from pantarhei.bridge.engines.swipl import engine
-from pantarhei.bridge.exploration import loop as exploration
-from pantarhei.bridge.exploration.loop import Options
+from pantarhei.bridge.exploration import running as exploration
+from pantarhei.bridge.exploration.running import Options
 from pantarhei.bridge.exploration.novelty import PASS
 from pantarhei.bridge.exploration.session import install
 from pantarhei.bridge.exploration.significance import permutation_test

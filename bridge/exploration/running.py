@@ -4,7 +4,6 @@ what it did. The options and their defaults are the option table of
 theory/defaults.pl."""
 from __future__ import annotations
 
-import json
 from dataclasses import field, make_dataclass
 from pathlib import Path
 from typing import Any
@@ -48,7 +47,7 @@ def _prolog(self: "Options") -> str:
     items = [f"{o.name}({_prolog_value(o, getattr(self, o.name))})" for o in option_table()
              if getattr(self, o.name) not in (None, "")]
     if self.oracle_options:
-        items.append(f"oracle_options({prolog_quote(json.dumps(self.oracle_options))})")
+        items.append(f"oracle_options({prolog_quote(self.oracle_options)})")
     return "[" + ", ".join(items) + "]"
 
 
@@ -62,7 +61,7 @@ def _paths(self: "Options") -> None:
 #: a field for each row of the option table of theory/defaults.pl
 #: (docs/options.md), with its default (None: explore/1 sets it: the pours
 #: of a batch, a_0, workers), and oracle_options, the
-#: keyword arguments of the oracle's constructor (JSON values).
+#: keyword arguments of the oracle's constructor.
 Options = make_dataclass(
     "Options", [*(_field(o) for o in option_table()),
                 ("oracle_options", "dict | None", field(default=None))],
