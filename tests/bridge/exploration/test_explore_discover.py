@@ -1,6 +1,8 @@
-"""The discovering curiosity on the synthetic oracle, run by the real
-SWI-Prolog: the permutation test of the planes, modify past the flip, the
-known steep direction from a_0, and the paper's variant kept byte for byte."""
+"""The discovering curiosity (theory/curiosity/discover.pl and the loop) on
+the synthetic oracle, run by the real SWI-Prolog from Python: the known
+steep direction from a_0, modify past the flip, probes, and the paper's
+variant kept byte for byte. The permutation test alone:
+test_significance.py."""
 from __future__ import annotations
 
 import json
@@ -14,7 +16,6 @@ from pantarhei.bridge.exploration import running as exploration
 from pantarhei.bridge.exploration.running import Options
 from pantarhei.bridge.exploration.novelty import PASS
 from pantarhei.bridge.exploration.session import install
-from pantarhei.bridge.exploration.significance import permutation_test
 from pantarhei.bridge.exploration.trace import probe_means
 from pantarhei.bridge.reasoning.scenes import violations
 from pantarhei.oracle.generative import normalise, sample
@@ -44,38 +45,6 @@ def trace(result: dict) -> list[dict]:
 
 def synthetic(P: np.ndarray) -> np.ndarray:
     return np.array([scores(dict(zip(NAMES, p))) for p in P])
-
-
-# ----------------------------------------------------------------------
-# The permutation test
-
-def test_noise_is_not_significant_and_a_real_slope_is():
-    rng = np.random.default_rng(5)
-    X = rng.random((60, 30))
-    noise = rng.random((60, 9))
-    t = permutation_test(X, noise, np.ones(60), 1.0, 199, seed=1)
-    assert not t.significant(0.05).any()
-    signal = noise.copy()
-    signal[:, 4] = np.clip(X[:, 7] * 1.5 - 0.2, 0, 1)   # expectation 4 follows parameter 7
-    t = permutation_test(X, signal, np.ones(60), 1.0, 199, seed=1)
-    sig = t.significant(0.05)
-    assert sig[4, 7] and sig.sum() == 1
-    assert t.slopes(0.05)[4] == pytest.approx(abs(t.coef[4, 7]))
-    # the same seed, the same shuffles
-    again = permutation_test(X, signal, np.ones(60), 1.0, 199, seed=1)
-    assert np.array_equal(again.p, t.p)
-
-
-def test_the_planes_are_the_weighted_ridge_fits():
-    from pantarhei.bridge.exploration.planes import plane_fit
-
-    rng = np.random.default_rng(3)
-    X, S, w = rng.random((40, 30)), rng.random((40, 9)), rng.random(40)
-    w[:5] = 0.0                                          # pours of other antecedents
-    t = permutation_test(X, S, w, 1.0, 19, seed=0)
-    planes = plane_fit(X, S, w, 1.0)
-    assert np.allclose(t.coef, planes.coef) and np.allclose(t.mean, planes.mean)
-    assert t.used == 35
 
 
 def test_steep_direction_from_a0_in_nine_of_ten_seeds(tmp_path):

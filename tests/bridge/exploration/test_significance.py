@@ -1,12 +1,15 @@
-"""The permutation test on real PyBullet pours: a_0 and three neighbours,
-simulated once through a store kept in pytest's cache (later runs read it).
-Both bowls are round, so the yaw of the source (start, pour, end) cannot
-change what happens: no plane may call it significant."""
+"""The permutation test of the planes (bridge/exploration/significance.py):
+on noise and a known slope, against the plane fits, and on real PyBullet
+pours: a_0 and three neighbours, simulated once through a store kept in
+pytest's cache (later runs read it). Both bowls are round, so the yaw of
+the source (start, pour, end) cannot change what happens: no plane may
+call it significant."""
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
+from pantarhei.bridge.exploration.planes import plane_fit
 from pantarhei.bridge.exploration.significance import permutation_test, shuffle_seed
 from pantarhei.bridge.exploration.simulation import iteration_seed, open_simulator
 from pantarhei.bridge.exploration.weights import log_densities, weights
@@ -55,3 +58,30 @@ def test_yaw_is_never_a_significant_direction(pours):
         found += int(sig.any())
     # the test sees signal in these pours: it is not silent everywhere
     assert found >= 1
+
+
+def test_noise_is_not_significant_and_a_real_slope_is():
+    rng = np.random.default_rng(5)
+    X = rng.random((60, 30))
+    noise = rng.random((60, 9))
+    t = permutation_test(X, noise, np.ones(60), 1.0, 199, seed=1)
+    assert not t.significant(0.05).any()
+    signal = noise.copy()
+    signal[:, 4] = np.clip(X[:, 7] * 1.5 - 0.2, 0, 1)   # expectation 4 follows parameter 7
+    t = permutation_test(X, signal, np.ones(60), 1.0, 199, seed=1)
+    sig = t.significant(0.05)
+    assert sig[4, 7] and sig.sum() == 1
+    assert t.slopes(0.05)[4] == pytest.approx(abs(t.coef[4, 7]))
+    # the same seed, the same shuffles
+    again = permutation_test(X, signal, np.ones(60), 1.0, 199, seed=1)
+    assert np.array_equal(again.p, t.p)
+
+
+def test_the_planes_are_the_weighted_ridge_fits():
+    rng = np.random.default_rng(3)
+    X, S, w = rng.random((40, 30)), rng.random((40, 9)), rng.random(40)
+    w[:5] = 0.0                                          # pours of other antecedents
+    t = permutation_test(X, S, w, 1.0, 19, seed=0)
+    planes = plane_fit(X, S, w, 1.0)
+    assert np.allclose(t.coef, planes.coef) and np.allclose(t.mean, planes.mean)
+    assert t.used == 35

@@ -1,5 +1,7 @@
-"""Never lose work: a real exploration killed with SIGKILL mid-run resumes
-and ends with the same theory as an uninterrupted run with the same seed."""
+"""The exploration's saved state (bridge/exploration/state.py): never lose
+work. A real exploration killed with SIGKILL mid-run resumes and ends with
+the same theory as an uninterrupted run with the same seed; the run key
+and the checkpoints of the store, read back."""
 from __future__ import annotations
 
 import json
@@ -11,10 +13,12 @@ import sys
 import time
 from pathlib import Path
 
+import numpy as np
+
 from tests.conftest import run_cli
 
 # Algorithm 1's rules alone: the general layer is learned from the pours
-# once the loop ends, whether it ran at once or was resumed (test_explore.py)
+# once the loop ends, whether it ran at once or was resumed (test_running.py)
 ARGS = ["explore", "--oracle", "synthetic", "--executor", "inline", "--budget", "10",
         "--seed", "3", "--no-progress", "--no-general"]
 
@@ -106,3 +110,29 @@ def test_resume_with_nothing_saved_starts_afresh(tmp_path):
     assert r.code == 0
     assert "starting afresh" in r.err
     assert (tmp_path / "t.pl").exists()
+
+
+def test_the_store_gives_back_every_iteration_it_committed(tmp_path):
+    from pantarhei.bridge.exploration.state import ExplorationStore, run_key
+
+    settings = {"seed": 3, "oracle": "synthetic", "initial": ["pour_low"]}
+    run = run_key(settings)
+    assert run == run_key(dict(reversed(settings.items())))      # order does not matter
+    assert run != run_key({**settings, "seed": 4})
+    rng = np.random.default_rng(0)
+    batches = [(rng.random((2, 30)), rng.random((2, 9))), (rng.random((3, 30)), rng.random((3, 9)))]
+    with ExplorationStore(tmp_path / "s.sqlite") as store:
+        assert store.latest(run, 30, 9) is None
+        store.start(run, settings)
+        for i, (P, S) in enumerate(batches, start=1):
+            store.save(run, i, P, S, f"st({i})", {"iteration": i})
+    with ExplorationStore(tmp_path / "s.sqlite") as store:            # read back from the file
+        saved = store.latest(run, 30, 9)
+        assert (saved.iteration, saved.state, saved.batches, saved.finished) == (2, "st(2)", [2, 3], False)
+        assert np.array_equal(saved.params, np.vstack([b[0] for b in batches]))
+        assert np.array_equal(saved.scores, np.vstack([b[1] for b in batches]))
+        assert saved.trace == [{"iteration": 1}, {"iteration": 2}]
+        store.finish(run)
+        assert store.latest(run, 30, 9).finished
+        store.start(run, settings)                                  # afresh: the saved state goes
+        assert store.latest(run, 30, 9) is None and store.exists(run)

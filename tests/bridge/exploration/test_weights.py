@@ -1,16 +1,12 @@
-"""Equation (1) and the plane fits, on hand-computed cases."""
+"""Equation (1), the weights of bridge/exploration/weights.py, on
+hand-computed cases."""
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from pantarhei.bridge.exploration.planes import best_abs_slope, plane_fit
 from pantarhei.bridge.exploration.weights import log_densities, weight, weights
-from pantarhei.bridge.exploration.qualify import consequent as outcome
-from pantarhei.oracle.generative import from_dict, normalise, sample, to_dict
-from pantarhei.theory.lexicon import load_vocabulary
-
-V = load_vocabulary()
+from pantarhei.oracle.generative import from_dict, sample, to_dict
 
 
 def with_values(**values):
@@ -62,52 +58,3 @@ def test_weights_columns_sum_to_one_over_real_antecedents():
     own = np.repeat(np.arange(4), 20)     # each pour lies in the support it was drawn from
     assert np.all(w[own, np.arange(80)] > 0)
     assert np.all(w[2, 60:] == 0)         # the ordinary pour never pours from the side
-
-
-def test_plane_fit_recovers_a_linear_function_and_the_steepest_plane():
-    P = sample([], 200, seed=1)
-    X = normalise(P)
-    rng = np.random.default_rng(2)
-    coef = np.zeros((9, 30))
-    coef[3, 5] = 0.8
-    coef[6, [2, 7]] = [-0.3, 0.25]
-    S = 0.1 + X @ coef.T
-    w = rng.uniform(0.1, 1.0, len(P))
-    planes = plane_fit(X, S, w)
-    assert np.allclose(planes.coef, coef, atol=1e-9)
-    best = best_abs_slope(planes)
-    assert best.expectation == 3 and best.slope == pytest.approx(0.8)
-    assert np.argmax(np.abs(best.gradient)) == 5
-    # rows with NaN scores or no weight take no part
-    S2 = S.copy()
-    S2[:5] = np.nan
-    w2 = w.copy()
-    w2[5:10] = 0
-    planes2 = plane_fit(X, S2, w2)
-    assert planes2.used == len(P) - 10
-    assert np.allclose(planes2.coef, coef, atol=1e-9)
-    assert plane_fit(X[:1], S[:1], w[:1]) is None
-
-
-def test_ridge_shrinks_but_keeps_the_direction():
-    P = sample([], 31, seed=3)
-    X = normalise(P)
-    S = np.zeros((31, 9))
-    S[:, 0] = 0.2 + 0.6 * X[:, 10]
-    plain = best_abs_slope(plane_fit(X, S, np.ones(31)))
-    ridged = best_abs_slope(plane_fit(X, S, np.ones(31), ridge=1.0))
-    assert np.argmax(np.abs(plain.gradient)) == np.argmax(np.abs(ridged.gradient)) == 10
-    assert ridged.slope < plain.slope
-
-
-def test_outcome_weighted_vote_and_argmax():
-    S = np.array([[0.9] * 9, [0.2] * 9, [0.3] * 9])
-    w = np.array([0.5, 0.3, 0.4])
-    weighted = outcome(S, w, "weighted")
-    assert [o["holds"] for o in weighted["outcomes"]] == [False] * 9   # 0.7 of the weight fails
-    assert weighted["outcomes"][0]["confidence_permille"] == round(1000 * 0.7 / 1.2)
-    assert weighted["weight_mass_permille"] == 1200 and weighted["simulations"] == 3
-    argmax = outcome(S, w, "argmax")
-    assert argmax["sample"] == 0
-    assert [o["holds"] for o in argmax["outcomes"]] == [True] * 9
-    assert argmax["outcomes"][0]["confidence_permille"] == round(1000 * 0.5 / 1.2)

@@ -1,4 +1,5 @@
-"""Whole explorations on the synthetic oracle with the paper's curiosity:
+"""explore() of bridge/exploration/running.py: whole explorations on the
+synthetic oracle with the paper's curiosity:
 the theory, the trace, the plot, the known directions, and the same result
 for the same seed. (The discovering curiosity: test_explore_discover.py.)"""
 from __future__ import annotations
