@@ -1,5 +1,5 @@
 """Beginning an exploration's session: the settings that decide its course
-(hashed into the run's key, bridge/exploration/state.py), and the progress
+(hashed into the run's key, bridge/exploration/checkpoints.py), and the progress
 bar, counted in the budget's own unit."""
 from __future__ import annotations
 

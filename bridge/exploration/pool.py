@@ -16,7 +16,7 @@ from pantarhei.bridge.exploration.novelty import Known
 from pantarhei.bridge.exploration.planes import Planes, plane_fit
 from pantarhei.bridge.exploration.qualify import consequent
 from pantarhei.bridge.exploration.significance import Tested, permutation_test, shuffle_seed
-from pantarhei.bridge.exploration.state import ExplorationStore
+from pantarhei.bridge.exploration.checkpoints import ExplorationStore
 from pantarhei.bridge.exploration.weights import weights
 from pantarhei.oracle.generative import log_density
 

@@ -55,7 +55,7 @@ from pantarhei.bridge.exploration.prompt_oracle import (oracle_describe, oracle_
 from pantarhei.bridge.exploration.qualify import QUALIFY
 from pantarhei.bridge.exploration.significance import shuffle_seed
 from pantarhei.bridge.exploration.simulation import batch_seed, open_simulator, oracle_identity
-from pantarhei.bridge.exploration.state import ExplorationStore, run_key
+from pantarhei.bridge.exploration.checkpoints import ExplorationStore, run_key
 from pantarhei.bridge.exploration.steepest import best_plane
 from pantarhei.bridge.exploration.trace import (append_trace, plot_path, plot_trace, rounded,
                                                 trace_path, write_trace)

@@ -1,4 +1,4 @@
-"""The exploration's saved state (bridge/exploration/state.py): never lose
+"""The exploration's saved state (bridge/exploration/checkpoints.py): never lose
 work. A real exploration killed with SIGKILL mid-run resumes and ends with
 the same theory as an uninterrupted run with the same seed; the run key
 and the checkpoints of the store, read back."""
@@ -113,7 +113,7 @@ def test_resume_with_nothing_saved_starts_afresh(tmp_path):
 
 
 def test_the_store_gives_back_every_iteration_it_committed(tmp_path):
-    from pantarhei.bridge.exploration.state import ExplorationStore, run_key
+    from pantarhei.bridge.exploration.checkpoints import ExplorationStore, run_key
 
     settings = {"seed": 3, "oracle": "synthetic", "initial": ["pour_low"]}
     run = run_key(settings)
