@@ -3,7 +3,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from pantarhei.oracle.generative import from_dict
+from pantarhei.oracle.generative import from_dict, sample
+from pantarhei.theory.lexicon import load_vocabulary
 
 BASE = dict(
     start_x=150, start_y=0, start_z=100, start_roll=0, start_pitch=0, start_yaw=0,
@@ -20,6 +21,14 @@ def pour(**changes: float) -> np.ndarray:
     unknown = set(changes) - set(BASE)
     assert not unknown, unknown
     return from_dict({**BASE, **changes})
+
+
+def with_counts(counts, seed: int = 7) -> np.ndarray:
+    """Pours drawn from the prior with the given particle counts (by which
+    the faulty oracle picks the pours that crash or hang), one row each."""
+    P = sample([], len(counts), seed=seed)
+    P[:, load_vocabulary().parameter("particle_count").index] = counts
+    return P
 
 
 #: The source moves over the destination but never tilts.

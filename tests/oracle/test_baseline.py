@@ -1,5 +1,6 @@
-"""The same pours give bit-identical scores whatever the CPU features the
-libraries see: every simulating process is started with the baseline math."""
+"""oracle/baseline.py: the same pours give bit-identical scores whatever the
+CPU features the libraries see: every simulating process is started with
+the baseline math, and a process knows what it was started with."""
 from __future__ import annotations
 
 import json
@@ -7,12 +8,9 @@ import os
 import subprocess
 import sys
 
-import numpy as np
 import pytest
 
 from pantarhei.oracle import baseline
-from pantarhei.oracle.physics import PouringOracle
-from pantarhei.oracle.result_keys import key, oracle_tag
 
 #: CPU features hidden from the C library, OpenBLAS and numpy: none, then
 #: the wide vector units (what an older x86-64 machine lacks).
@@ -46,17 +44,6 @@ def test_two_cpu_feature_masks_give_bit_identical_scores(executor):
     assert [r["params"] for r in runs[0]] == [r["params"] for r in runs[1]]
     assert [r["scores"] for r in runs[0]] == [r["scores"] for r in runs[1]]
     assert [r["record"] for r in runs[0]] == [r["record"] for r in runs[1]]
-
-
-def test_the_pinned_environment_is_part_of_the_key():
-    p = np.zeros(30)
-    pinned, native = PouringOracle(), PouringOracle(math="native")
-    assert pinned.environment() == dict(baseline.ENVIRONMENT)
-    assert pinned.settings()["environment"] == dict(baseline.ENVIRONMENT)
-    assert native.environment() == {}
-    assert key(p, oracle_tag(pinned)) != key(p, oracle_tag(native))
-    with pytest.raises(ValueError, match="unknown math"):
-        PouringOracle(math="fast")
 
 
 def test_a_process_knows_what_it_was_started_with():

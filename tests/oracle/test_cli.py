@@ -1,4 +1,7 @@
-"""`pantarhei simulate` and `pantarhei render`, run as a user would."""
+"""The commands `pantarhei simulate` and `pantarhei render`
+(bridge/commands/simulate.py), run as a user would: the oracle's command
+line, not a module of oracle/ (what `render` draws is tested in
+test_render)."""
 from __future__ import annotations
 
 import json
@@ -48,23 +51,6 @@ def test_simulate_given_parameterizations_and_print_them(cli, tmp_path):
         assert r.out.count(e) == 2
     assert "holds" in r.out and "in the destination" in r.out
     assert "argv" not in r.out
-
-
-@pytest.mark.slow
-def test_render_writes_a_gif_and_frames(cli, tmp_path):
-    out = tmp_path / "pour.gif"
-    r = cli("render", "--antecedent", "pour_centred,pour_low,pour_steeply_tilted,little_liquid",
-            "--seed", "1", "--out", str(out), "--frames", str(tmp_path / "frames"), "--fps", "5",
-            "--size", "160x120")
-    assert r.code == 0, r.err
-    from PIL import Image
-    with Image.open(out) as im:
-        assert im.size == (160, 120) and im.n_frames > 3
-        n = im.n_frames
-    pngs = sorted((tmp_path / "frames").glob("*.png"))
-    assert len(pngs) >= n       # a GIF merges identical frames (everything at rest)
-    with Image.open(pngs[0]) as a, Image.open(pngs[-1]) as b:
-        assert a.tobytes() != b.tobytes()       # something moved
 
 
 BAD = [

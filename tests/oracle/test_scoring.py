@@ -1,4 +1,4 @@
-"""The 9 scores from a record: bounds, verdicts, continuity."""
+"""oracle/scoring.py: the 9 scores from a record: bounds, verdicts, continuity."""
 from __future__ import annotations
 
 import numpy as np

@@ -1,4 +1,5 @@
-"""The synthetic oracle: analytic scores with known directions and outcomes."""
+"""oracle/synthetic.py: the synthetic oracle, analytic scores with known
+directions and outcomes."""
 from __future__ import annotations
 
 import pickle

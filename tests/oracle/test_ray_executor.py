@@ -1,6 +1,7 @@
-"""The Ray executor on a local Ray (2 CPUs, loopback): the same results as
-the local workers, the same handling of crashes and hangs, and no port open
-beyond loopback."""
+"""oracle/ray_executor.py: the Ray executor on a local Ray (2 CPUs,
+loopback): the same results as the local workers, the same handling of
+crashes and hangs, and no port open beyond loopback. One Ray for the whole
+file (the module-scoped fixture), so these tests stay together."""
 from __future__ import annotations
 
 import ipaddress
@@ -12,16 +13,15 @@ import pytest
 
 from pantarhei.oracle.faults import FaultyOracle
 from pantarhei.oracle.ray_executor import RayExecutor
-from pantarhei.theory.lexicon import load_vocabulary
-
-COUNT = load_vocabulary().parameter("particle_count").index
 from pantarhei.oracle.generative import sample
 from pantarhei.oracle.physics import PouringOracle
 from pantarhei.oracle.simulator import Simulator, make_simulator
+from pantarhei.theory.lexicon import load_vocabulary
 
 from .pours import CENTRED_LOW_TIPPED, HEAVY_DROP, pour
 
 pytestmark = pytest.mark.slow
+COUNT = load_vocabulary().parameter("particle_count").index
 
 
 @pytest.fixture(scope="module")

@@ -1,0 +1,20 @@
+"""Helpers of the store's tests: pours simulated by the synthetic oracle
+in this process into a store file."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from pantarhei.oracle.generative import sample
+from pantarhei.oracle.simulator import make_simulator
+
+
+def low_pours(n: int, seed: int = 1) -> np.ndarray:
+    return sample(["pour_low"], n, seed)
+
+
+def simulate(store: Path, P: np.ndarray, **kw) -> tuple[np.ndarray, object]:
+    """The scores of P, and the simulator (closed) to ask what it did."""
+    with make_simulator("synthetic", executor="inline", store=str(store), **kw) as sim:
+        return sim.simulate(P), sim
