@@ -1,7 +1,6 @@
 """The commands `pantarhei simulate` and `pantarhei render`
 (bridge/commands/simulate.py), run as a user would: the oracle's command
-line, not a module of oracle/ (what `render` draws is tested in
-test_render)."""
+line (what `render` draws is tested in tests/oracle/test_render.py)."""
 from __future__ import annotations
 
 import json
@@ -12,8 +11,8 @@ from pantarhei.oracle.generative import to_dict
 from pantarhei.oracle.store import Store
 from pantarhei.theory.lexicon import load_vocabulary
 
-from ..conftest import assert_one_line_error
-from .pours import BASE, CENTRED_LOW_TIPPED, pour
+from tests.conftest import assert_one_line_error
+from tests.oracle.pours import BASE, CENTRED_LOW_TIPPED, pour
 
 EXPECTATIONS = load_vocabulary().expectation_names
 
