@@ -195,3 +195,8 @@ def test_canonical_sorted_tuples():
     out = G.describe(G.sample(["light_liquid"], 5, 1))
     assert all(isinstance(d, tuple) and list(d) == sorted(set(d)) for d in out)
     assert G.describe(np.empty((0, 30))) == []
+
+
+def test_a_pour_is_drawn_again_from_its_parameters():
+    p = G.sample(["light_liquid"], 1, 5)[0]
+    assert np.array_equal(G.from_dict(G.to_dict(p)), p)

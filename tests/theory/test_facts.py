@@ -1,4 +1,6 @@
-"""The fact reader: the vocabulary files as clingo reads them, and bad files."""
+"""The fact reader of the theory's own files (`read_facts` of
+theory/__init__.py, pantarhei.theory): the vocabulary files as clingo
+reads them, and bad files."""
 from pathlib import Path
 
 import pytest

@@ -1,5 +1,6 @@
-"""The learner's own pours: for the ordinary pour and each proposition
-asked alone, enough pours that could have been drawn for it."""
+"""The learner's own pours (bridge/learning/gaps.py): for the ordinary pour
+and each proposition asked alone, enough pours that could have been drawn
+for it."""
 import numpy as np
 
 from pantarhei.bridge.learning.gaps import gap_pours, thin_bodies

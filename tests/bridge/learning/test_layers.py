@@ -1,5 +1,6 @@
-"""The two layers of a learned theory, Algorithm 1's rules and the general
-rules, as one linear order that both engines follow."""
+"""The two layers of a learned theory (bridge/learning/layers.py),
+Algorithm 1's rules and the general rules, as one linear order that both
+engines follow."""
 from __future__ import annotations
 
 import pytest
@@ -50,22 +51,3 @@ def test_both_engines_decide_by_the_layers_order(engine):
     assert says([]) == (True, False)                  # the general default
     assert says(["pour_low"]) == (True, False)        # a2's rule, more specific
     assert says(["pour_high"]) == (False, True)       # the general exception
-
-
-def test_an_answer_names_the_general_twin_of_algorithm_1s_rule():
-    from pantarhei.bridge.reasoning.answers import what_happens
-
-    # both layers conclude no spill in general: the answer names the
-    # general rule (its evidence is every pour), not a1's weighted share
-    t = Theory()
-    t.rules += [Rule("r1_no_spill", "defeasible", "no_spill"),
-                Rule("g0_no_spill", "defeasible", "no_spill"),
-                Rule("r2_no_spill", "defeasible", "neg(no_spill)", ("pour_low",))]
-    t.learned = {r.id for r in t.rules}
-    t.provenance += [("r1_no_spill", "confidence_permille", 580),
-                     ("g0_no_spill", "layer", "general"), ("g0_no_spill", "confidence_permille", 730)]
-    said = {a.expectation: a for a in what_happens(t, [])}
-    assert said["no_spill"].value == "holds" and said["no_spill"].rule == "g0_no_spill"
-    # a rule of Algorithm 1 with no general twin is named as it is
-    said = {a.expectation: a for a in what_happens(t, ["pour_low"])}
-    assert said["no_spill"].value == "fails" and said["no_spill"].rule == "r2_no_spill"

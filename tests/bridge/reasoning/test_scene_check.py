@@ -1,6 +1,11 @@
 """what_happens/2 checks its scene as `ask` does, in `pantarhei prolog` and
 in plain SWI-Prolog alike; a theory file that cannot be read is one
-readable line in plain SWI-Prolog too."""
+readable line in plain SWI-Prolog too.
+
+The Prolog side of questions, which no Python module owns: what_happens/2
+of theory/queries.pl and load_theory/1 of theory/defeasible.pl (with
+theory/theory_files.pl's messages), through theory/pantarhei.pl and the
+`prolog` command."""
 from __future__ import annotations
 
 import subprocess

@@ -1,4 +1,6 @@
-"""Validity of antecedents: Prolog and clingo agree, and the count is right."""
+"""Validity of antecedents (bridge/reasoning/scenes.py): Prolog and clingo
+agree, and the count is right; the `check`, `count` and `vocab` commands
+that report them."""
 from __future__ import annotations
 
 import json

@@ -1,4 +1,9 @@
-"""DFL (SPINdle, silkie) read and written; native theory files checked."""
+"""DFL, the theory format of SPINdle and silkie (bridge/theories/dfl.py):
+read and written; its facts (`>> a` and `-> a` definite, `=> a` a
+defeasible rule without body, which gives +d but never +D and can be
+defeated) as both engines conclude them; rules with variables grounded;
+malformed files and a cyclic superiority relation named by file and line.
+Expected conclusions are worked out from the definitions."""
 from __future__ import annotations
 
 from pathlib import Path
@@ -10,10 +15,11 @@ from pantarhei.bridge.reasoning.logic import Semantics, conclusions
 from pantarhei.bridge.theories.loading import load
 from pantarhei.bridge.theories.model import Rule
 from pantarhei.bridge.theories.native import read_native
-from pantarhei.bridge.errors import UserError
 from pantarhei.theory import TheoryFileError
+from tests.conftest import assert_one_line_error
 
 EXAMPLES = Path(__file__).resolve().parents[3] / "examples" / "extend_by_hand"
+ENGINES = ("prolog", "asp")
 
 TWEETY = """# comment
 >> bird(tweety)
@@ -25,6 +31,19 @@ r3: penguin(?x) => -flies(?x)
 d1: broken_wing ~> -flies(tweety)   // a defeater
 r3 > r1
 """
+
+
+def native(lits: str) -> list[str]:
+    """DFL literals separated by spaces, as the sorted native literals."""
+    return sorted(f"neg({x[1:]})" if x.startswith("-") else x for x in lits.split())
+
+
+def expect(pd: str, md: str, pdd: str, mdd: str) -> dict[str, list[str]]:
+    return {"+D": native(pd), "-D": native(md), "+d": native(pdd), "-d": native(mdd)}
+
+
+DEFINITE = expect("a", "-a", "a", "-a")
+DEFEASIBLE = expect("", "a -a", "a", "-a")
 
 
 def test_dfl_kinds_facts_and_superiority() -> None:
@@ -47,7 +66,7 @@ def test_rules_with_variables_are_grounded_over_the_facts() -> None:
     assert {"flies(tweety)", "flies(polly)", "neg(flies(opus))"} <= set(c["+d"])
 
 
-@pytest.mark.parametrize("engine", ["prolog", "asp"])
+@pytest.mark.parametrize("engine", ENGINES)
 def test_write_then_read_gives_the_same_theory_and_conclusions(engine: str) -> None:
     t = parse_dfl(TWEETY)
     again = parse_dfl(write_dfl(t))
@@ -56,34 +75,10 @@ def test_write_then_read_gives_the_same_theory_and_conclusions(engine: str) -> N
 
 
 def test_native_and_dfl_versions_of_the_example_agree() -> None:
-    native = load([EXAMPLES / "learned.pl", EXAMPLES / "hand.pl"])
+    native_theory = load([EXAMPLES / "learned.pl", EXAMPLES / "hand.pl"])
     dfl = load([EXAMPLES / "learned.pl", EXAMPLES / "hand.dfl"])
-    assert conclusions(native) == conclusions(dfl)
+    assert conclusions(native_theory) == conclusions(dfl)
     assert read_native(EXAMPLES / "learned.pl").learned >= {"r1", "r4"}
-
-
-def test_native_text_round_trip(tmp_path: Path) -> None:
-    t = load(EXAMPLES / "learned.pl")
-    f = tmp_path / "copy.pl"
-    f.write_text(t.native())
-    again = read_native(f)
-    assert again.rules == t.rules and again.learned == t.learned and again.facts == t.facts
-
-
-def _everything(t) -> tuple:
-    return (t.facts, t.rules, t.sup, t.learned, t.extra, t.settings, t.provenance)
-
-
-def test_convert_to_native_keeps_everything_of_a_learned_theory(tmp_path: Path) -> None:
-    from pantarhei.bridge.theories.loading import DEFAULT_THEORY
-    from tests.conftest import run_cli
-
-    shipped = read_native(DEFAULT_THEORY)
-    assert shipped.settings and shipped.provenance          # what a learned theory records
-    out = tmp_path / "copy.pl"
-    r = run_cli("convert", str(DEFAULT_THEORY), "--to", "native", "-o", str(out))
-    assert r.code == 0, r.err
-    assert _everything(read_native(out)) == _everything(shipped)
 
 
 @pytest.mark.parametrize("text,line,what", [
@@ -101,22 +96,7 @@ def test_malformed_dfl_names_file_and_line(text: str, line: int, what: str) -> N
     assert str(e.value).startswith(f"t.dfl:{line}: ") and what in str(e.value)
 
 
-@pytest.mark.parametrize("text,line,what", [
-    ("rule(r1, defeasible, b).\nrule(r2, usually, c).\n", 2, "kind strict, defeasible or defeater"),
-    ("rule(r1, defeasible, b).\nbody(r9, a).\n", 2, "has no rule(r9"),
-    ("rule(r1, defeasible, b).\nsup(r1, r7).\n", 2, "r7, which is not a rule"),
-    ("rule(r1, defeasible, b).\nbody(r1, a)\n", 2, "expected a fact such as name(arg, 1)."),
-    ("fact(neg(neg(a))).\n", 1, "double negation"),
-])
-def test_malformed_native_files_name_file_and_line(tmp_path: Path, text: str, line: int, what: str) -> None:
-    f = tmp_path / "bad.pl"
-    f.write_text(text)
-    with pytest.raises(UserError) as e:
-        load(f)
-    assert str(e.value).startswith(f"{f}:{line}: ") and what in str(e.value), str(e.value)
-
-
-@pytest.mark.parametrize("engine", ["prolog", "asp"])
+@pytest.mark.parametrize("engine", ENGINES)
 def test_dfl_of_a_learned_theory_keeps_specificity_as_superiority(engine: str) -> None:
     learned = load(EXAMPLES / "learned.pl")
     text = write_dfl(learned)
@@ -132,12 +112,57 @@ def test_dfl_of_a_learned_theory_keeps_specificity_as_superiority(engine: str) -
                 conclusions(learned.with_facts(scene), Semantics(), engine)
 
 
-def test_convert_command_writes_whole_files(cli, tmp_path: Path) -> None:
-    out = tmp_path / "learned.dfl"
-    r = cli("convert", str(EXAMPLES / "learned.pl"), "-o", str(out))
-    assert r.code == 0, r.err
-    back = tmp_path / "back.pl"
-    assert cli("convert", str(out), "--to", "native", "-o", str(back)).code == 0
-    assert conclusions(load(back)) == conclusions(load(EXAMPLES / "learned.pl"))
-    assert "rule(h1, defeasible, liquid_leaves_source)." in cli("convert", str(EXAMPLES / "hand.dfl"),
-                                                              "--to", "native").out
+# -- facts -------------------------------------------------------------------
+
+@pytest.mark.parametrize("engine", ENGINES)
+@pytest.mark.parametrize("text,expected", [
+    ("=> a\n", DEFEASIBLE),
+    ("-> a\n", DEFINITE),
+    (">> a\n", DEFINITE),
+    ("f: => a\n", DEFEASIBLE),
+    ("f: -> a\n", DEFINITE),                    # a strict rule without body proves +D like a fact
+])
+def test_dfl_facts(engine: str, text: str, expected: dict) -> None:
+    assert conclusions(parse_dfl(text), Semantics(), engine) == expected
+
+
+def test_an_unlabelled_fact_keeps_clear_of_labels() -> None:
+    t = parse_dfl("=> a\nr1: a => b\n=> c\n")
+    assert [(r.id, r.head) for r in t.rules] == [("line1", "a"), ("r1", "b"), ("r3", "c")]
+
+
+@pytest.mark.parametrize("engine", ENGINES)
+def test_a_defeasible_fact_is_defeated(engine: str) -> None:
+    # f2 beats f1: -a is +d, a is not
+    beaten = parse_dfl("f1: => a\nf2: => -a\nf2 > f1\n")
+    assert conclusions(beaten, Semantics(), engine) == expect("", "a -a", "-a", "a")
+    # a definite -a: the rule for a is not applicable against it
+    assert conclusions(parse_dfl("=> a\n-> -a\n"), Semantics(), engine) == expect("-a", "a", "-a", "a")
+    # an applicable defeater for -a that nothing beats: neither a nor -a
+    blocked = parse_dfl("=> a\n-> b\nd1: b ~> -a\n")
+    assert conclusions(blocked, Semantics(), engine) == expect("b", "a -a -b", "b", "a -a -b")
+
+
+@pytest.mark.parametrize("engine", ENGINES)
+def test_a_strict_fact_is_not_defeated(engine: str) -> None:
+    t = parse_dfl("-> a\nf2: => -a\n-> b\nd1: b ~> -a\n")
+    assert conclusions(t, Semantics(), engine) == expect("a b", "-a -b", "a b", "-a -b")
+
+
+# -- a cyclic superiority relation -------------------------------------------
+
+CYCLES = [
+    ("r1: a => b\nr2: a => -b\nr1 > r2\nr2 > r1\n>> a\n", 3, "r1 > r2 > r1"),
+    ("r1: a => b\nr1 > r1\n", 2, "r1 > r1"),
+    ("r1: => b\nr2: => b\nr3: => -b\nr1 > r2\nr2 > r3\nr3 > r1\n", 4, "r1 > r2 > r3 > r1"),
+]
+
+
+@pytest.mark.parametrize("text,line,cycle", CYCLES)
+def test_cyclic_superiority_in_dfl_names_line_and_rules(cli, text: str, line: int, cycle: str,
+                                                        tmp_path: Path) -> None:
+    f = tmp_path / "cyclic.dfl"
+    f.write_text(text)
+    for engine in ENGINES:
+        msg = assert_one_line_error(cli("conclusions", str(f), "--engine", engine))
+        assert msg.endswith(f"{f}:{line}: the superiority relation has a cycle, {cycle}: it must be acyclic")

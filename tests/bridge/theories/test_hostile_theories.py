@@ -1,7 +1,13 @@
 """Theory files are data: Python's reader (bridge/theories) and SWI-Prolog's
 (theory/theory_files.pl, through defeasible:load_theory/1) refuse the same
 hostile files with the same `file:line: what`, and quoted text can never
-become program text for clingo or Prolog."""
+become program text for clingo or Prolog.
+
+A concern no single module owns: Python's reader is facts.py (the
+language of theory files), native.py (the forms of the theory's facts) and
+well_formed.py (names, kinds, literals and their messages), checked
+against theory/theory_files.pl; writing quoted text back is
+model.Theory.native with well_formed.value_text."""
 from __future__ import annotations
 
 import shutil

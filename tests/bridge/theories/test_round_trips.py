@@ -1,5 +1,10 @@
 """`pantarhei convert` keeps every fact of a theory file, in either
-direction and in place, or refuses in one line."""
+direction and in place, or refuses in one line.
+
+A concern no single module owns: the conversion is loading.converted, the
+reading dfl.parse_dfl, native.read_native and facts.read, the writing
+dfl.write_dfl and model.Theory.native (all bridge/theories/), run as the
+`convert` command of bridge/commands/querying.py."""
 from __future__ import annotations
 
 import shutil
@@ -7,10 +12,12 @@ from pathlib import Path
 
 import pytest
 
+from pantarhei.bridge.reasoning.logic import conclusions
 from pantarhei.bridge.theories import facts
 from pantarhei.bridge.theories.dfl import parse_dfl
-from pantarhei.bridge.theories.loading import DEFAULT_THEORY
-from tests.conftest import assert_one_line_error
+from pantarhei.bridge.theories.loading import DEFAULT_THEORY, load
+from pantarhei.bridge.theories.native import read_native
+from tests.conftest import assert_one_line_error, run_cli
 
 EXAMPLES = Path(__file__).resolve().parents[3] / "examples" / "extend_by_hand"
 
@@ -113,3 +120,27 @@ def test_hand_written_dfl_converts_as_before(cli) -> None:
     r = cli("convert", str(EXAMPLES / "hand.dfl"), "--to", "native")
     assert r.code == 0, r.err
     assert "rule(h1, defeasible, liquid_leaves_source)." in r.out
+
+
+def _everything(t) -> tuple:
+    return (t.facts, t.rules, t.sup, t.learned, t.extra, t.settings, t.provenance)
+
+
+def test_convert_to_native_keeps_everything_of_a_learned_theory(tmp_path: Path) -> None:
+    shipped = read_native(DEFAULT_THEORY)
+    assert shipped.settings and shipped.provenance          # what a learned theory records
+    out = tmp_path / "copy.pl"
+    r = run_cli("convert", str(DEFAULT_THEORY), "--to", "native", "-o", str(out))
+    assert r.code == 0, r.err
+    assert _everything(read_native(out)) == _everything(shipped)
+
+
+def test_convert_command_writes_whole_files(cli, tmp_path: Path) -> None:
+    out = tmp_path / "learned.dfl"
+    r = cli("convert", str(EXAMPLES / "learned.pl"), "-o", str(out))
+    assert r.code == 0, r.err
+    back = tmp_path / "back.pl"
+    assert cli("convert", str(out), "--to", "native", "-o", str(back)).code == 0
+    assert conclusions(load(back)) == conclusions(load(EXAMPLES / "learned.pl"))
+    assert "rule(h1, defeasible, liquid_leaves_source)." in cli("convert", str(EXAMPLES / "hand.dfl"),
+                                                              "--to", "native").out

@@ -9,6 +9,11 @@ give the reasoning where it is not immediate. Literals are those of the
 theory and their complements. Where silkie's code departs from the
 definition (docs/theory-formats.md, "Panta Rhei and silkie"), the expectation follows the
 definition and says so.
+
+What is tested is the logic of both engines (bridge/reasoning/logic.py:
+theory/defeasible.pl and theory/defeasible.lp) on theories read by
+bridge/theories/dfl.py: a conformance suite no single module owns, which
+docs/theory-formats.md names by this file's path.
 """
 from __future__ import annotations
 

@@ -1,6 +1,7 @@
-"""The option table of theory/defaults.pl, `pantarhei explore --help` and
-docs/options.md say the same: the page is what the table gives, and every
-option of the table is a flag of the command, and the reverse."""
+"""The option table (theory/option_table.py, read from theory/defaults.pl),
+`pantarhei explore --help` and docs/options.md say the same: the page is
+what the table gives, and every option of the table is a flag of the
+command, and the reverse."""
 from __future__ import annotations
 
 import re
@@ -26,15 +27,3 @@ def test_every_option_has_help_and_a_known_type():
         assert o.help and "%" not in o.help and "|" not in o.help, o.name
         assert o.type in ("count", "permille", "choice", "oracle", "flag", "antecedent",
                           "path", "text"), o.name
-
-
-def test_a_theory_learned_before_the_renames_reads_by_todays_names(tmp_path):
-    from pantarhei.bridge.theories import loading
-
-    old = tmp_path / "old.pl"
-    old.write_text("setting(seed, 3).\nsetting(samples, 31).\nsetting(max_rules, 8).\n"
-                   "setting(threshold_permille, 100).\nsetting(prior, 1).\n"
-                   "rule(r0_no_spill, defeasible, no_spill).\nbody(r0_no_spill, pour_low).\n")
-    s = loading.settings(loading.load([old]))
-    assert s["batch"] == [31] and s["budget"] == [8] and s["slope_permille"] == [100]
-    assert s["prior_batch"] == [1] and "samples" not in s and "max_rules" not in s

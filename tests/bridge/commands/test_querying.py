@@ -1,4 +1,8 @@
-"""`pantarhei ask`, `plan` and `conclusions`, run as a user runs them."""
+"""`pantarhei ask`, `plan` and `conclusions` (bridge/commands/querying.py),
+run as a user runs them: their output, their one-line errors, and the
+answers, plans and conclusions of bridge/reasoning (answers.py,
+planning.py, logic.py) and bridge/reasoning/reading.py as the commands give
+them."""
 from __future__ import annotations
 
 import re
@@ -139,6 +143,21 @@ def test_conclusions_of_both_engines_agree_and_use_dfl_literals(cli, tmp_path: P
     assert "-d p\n" in text
 
 
+@pytest.mark.parametrize("engine", ["prolog", "asp"])
+@pytest.mark.parametrize("text,out", [
+    ("=> a\n", "-D a\n-D -a\n+d a\n-d -a\n"),
+    ("-> a\n", "+D a\n-D -a\n+d a\n-d -a\n"),
+    (">> a\n", "+D a\n-D -a\n+d a\n-d -a\n"),
+])
+def test_a_theory_of_facts_only_from_the_command_line(cli, engine: str, text: str, out: str,
+                                                      tmp_path: Path) -> None:
+    """In a process of its own, as a user runs it."""
+    f = tmp_path / "facts.dfl"
+    f.write_text(text)
+    r = cli("conclusions", str(f), "--engine", engine)
+    assert (r.code, r.out, r.err) == (0, out, "")
+
+
 @pytest.mark.parametrize("args,words", [
     (("ask", "--props", "pour_to_sid", "--theory", LEARNED), "did you mean pour_to_side"),
     (("ask", "--props", "pour_to_side,pour_centred", "--theory", LEARNED), "one_value_per_dimension"),
@@ -163,16 +182,6 @@ def test_malformed_files_name_the_line(cli, tmp_path: Path) -> None:
     g = tmp_path / "bad.pl"
     g.write_text("rule(r1, defeasible, b).\nrule(r2, maybe, c).\n")
     assert f"{g}:2:" in assert_one_line_error(cli("ask", "--props", "pour_centred", "--theory", str(g)))
-
-
-def test_without_a_theory_the_commands_say_how_to_get_one(monkeypatch, tmp_path: Path) -> None:
-    from pantarhei.bridge.errors import UserError
-    from pantarhei.bridge.theories import loading
-
-    monkeypatch.setattr(loading, "DEFAULT_THEORY", tmp_path / "learned" / "pouring.pl")
-    with pytest.raises(UserError, match="no learned theory yet") as e:
-        loading.load()
-    assert "--theory" in str(e.value)
 
 
 def test_the_shipped_theory_answers_without_a_theory_option(cli) -> None:

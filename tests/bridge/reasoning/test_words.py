@@ -1,0 +1,44 @@
+"""Everyday words for the vocabulary's words (bridge/reasoning/words.py),
+as reading.py reads questions with them: the phrases of `PHRASES` ("a full
+cup", "come in quickly") read as the vocabulary's words, in their
+inflections, and a negation or contradiction said in them still refused."""
+from __future__ import annotations
+
+import pytest
+
+from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.reasoning.reading import understand
+
+
+@pytest.mark.parametrize("question,props", [
+    ("pour far from the cup", ["pour_far_away"]),
+    ("a full container", ["very_much_liquid"]),
+    ("pour from a filled jug", ["very_much_liquid"]),
+    ("come in quickly", ["fast_approach"]),
+    ("pour low over the rim", ["pour_low", "pour_near_rim"]),
+    ("pour water into a heavy mug", ["heavy_destination"]),
+    ("pour a viscous liquid", ["sticky_liquid"]),
+    ("a liquid that does not bounce", ["dull_liquid"]),
+    # a bowl is the destination, unless it is the one poured from
+    ("pour out of a heavy cup into a light bowl", ["heavy_source", "light_destination"]),
+    ("how much liquid spills if I pour from the side?", ["pour_to_side"]),
+])
+def test_everyday_words_are_read_as_the_vocabulary(question, props):
+    assert understand(question) == props
+
+
+@pytest.mark.parametrize("question,words", [
+    ("do not move in fast", "not fast_approach leaves moderate_approach or slow_approach"),
+    ("don't pour far from the cup", "not pour_far_away leaves"),
+    ("a light and heavy cup", "says both heavy_destination (a heavy destination bowl) and "
+                              "light_destination"),
+    ("move in fast and slowly", "two values of approach_speed"),
+])
+def test_negation_and_contradiction_in_everyday_words_are_still_refused(question, words):
+    with pytest.raises(UserError) as e:
+        understand(question)
+    assert words in str(e.value) and "\n" not in str(e.value)
+
+
+def test_a_negation_in_everyday_words_beside_the_value_said():
+    assert understand("a light bowl, not a heavy cup") == ["light_destination"]

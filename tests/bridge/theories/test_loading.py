@@ -1,0 +1,96 @@
+"""Reading theories (bridge/theories/loading.py): read as a theory of
+pouring (ask, plan, prolog), a rule that names no proposition or
+expectation gets a warning with file:line and the nearest known name
+(`unknown_names`), while `conclusions` reads any theory without one; a
+path that is no theory file, an empty theory and a missing shipped theory
+are refused in one line; the settings of a theory learned before explore's
+options were renamed read by today's names."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.theories import loading
+from pantarhei.bridge.theories.loading import DEFAULT_THEORY, load, unknown_names
+from tests.conftest import assert_one_line_error
+
+TYPO_PL = ("% a misspelled rule\n"
+           "rule(h1, defeasible, no_spil).\n"
+           "body(h1, light_liquid).\n"
+           "body(h1, pour_to_sidee).\n")
+TYPO_DFL = "# a misspelled rule\n\nh1: light_liquid, pour_to_sidee => -no_spil\n"
+
+
+def _warnings(path: Path) -> list[str]:
+    return [f"warning: {w}" for w in unknown_names(load(path))]
+
+
+@pytest.mark.parametrize("name,text,lines", [("typo.pl", TYPO_PL, (2, 4)), ("typo.dfl", TYPO_DFL, (3, 3))])
+def test_a_misspelled_rule_is_named_with_the_nearest_word(cli, tmp_path: Path, name, text, lines) -> None:
+    path = tmp_path / name
+    path.write_text(text)
+    expected = [f"warning: {path}:{lines[0]}: rule h1: head no_spil is not a proposition or expectation "
+                "of pouring (did you mean no_spill?)",
+                f"warning: {path}:{lines[1]}: rule h1: body pour_to_sidee is not a proposition or "
+                "expectation of pouring (did you mean pour_to_side?)"]
+    assert sorted(_warnings(path)) == sorted(expected)
+    r = cli("ask", "--props", "pour_to_side", "--theory", str(path))
+    assert r.code == 0, r.err
+    assert sorted(x for x in r.err.splitlines() if x.startswith("warning:")) == sorted(expected)
+    r = cli("conclusions", str(path))
+    assert r.code == 0 and "warning" not in r.err, r.err
+
+
+def test_a_theory_s_own_words_and_the_shipped_theory_pass(tmp_path: Path) -> None:
+    chain = tmp_path / "chain.dfl"
+    chain.write_text("c1: pour_to_side => wet_table\nc2: wet_table => -no_spill\n")
+    assert unknown_names(load(chain)) == []
+    if DEFAULT_THEORY.is_file():
+        assert unknown_names(load()) == []
+
+
+def test_prolog_warns_too(cli, tmp_path: Path) -> None:
+    path = tmp_path / "typo.pl"
+    path.write_text(TYPO_PL)
+    r = cli("prolog", "--theory", str(path), "-g", "true")
+    assert r.code == 0, r.err
+    assert any("pour_to_sidee" in x and x.startswith(f"warning: {path}:4:") for x in r.err.splitlines())
+
+
+# -- what is no theory ---------------------------------------------------------
+
+@pytest.mark.parametrize("path,words", [
+    ("/dev/null", "/dev/null: not a regular file"),
+    ("/nonexistent/theory.dfl", "no such theory file"),
+])
+def test_what_is_wrong_with_a_path(cli, path: str, words: str) -> None:
+    assert words in assert_one_line_error(cli("conclusions", path))
+
+
+def test_a_directory_and_empty_files(cli, tmp_path: Path) -> None:
+    assert "a directory, not a theory file" in assert_one_line_error(cli("conclusions", str(tmp_path)))
+    for name, text in (("empty.pl", ""), ("comments.dfl", "# nothing yet\n")):
+        f = tmp_path / name
+        f.write_text(text)
+        assert f"{f}: an empty theory" in assert_one_line_error(cli("conclusions", str(f)))
+
+
+def test_without_a_theory_the_commands_say_how_to_get_one(monkeypatch, tmp_path: Path) -> None:
+    monkeypatch.setattr(loading, "DEFAULT_THEORY", tmp_path / "learned" / "pouring.pl")
+    with pytest.raises(UserError, match="no learned theory yet") as e:
+        loading.load()
+    assert "--theory" in str(e.value)
+
+
+# -- settings ------------------------------------------------------------------
+
+def test_a_theory_learned_before_the_renames_reads_by_todays_names(tmp_path: Path) -> None:
+    old = tmp_path / "old.pl"
+    old.write_text("setting(seed, 3).\nsetting(samples, 31).\nsetting(max_rules, 8).\n"
+                   "setting(threshold_permille, 100).\nsetting(prior, 1).\n"
+                   "rule(r0_no_spill, defeasible, no_spill).\nbody(r0_no_spill, pour_low).\n")
+    s = loading.settings(loading.load([old]))
+    assert s["batch"] == [31] and s["budget"] == [8] and s["slope_permille"] == [100]
+    assert s["prior_batch"] == [1] and "samples" not in s and "max_rules" not in s
