@@ -85,7 +85,7 @@ def option(name: str) -> Option:
 
 
 def options_page() -> str:
-    """docs/options.md as the table gives it (tests/test_options_page.py
+    """docs/options.md as the table gives it (tests/theory/test_option_table.py
     keeps the file equal to it; `python -m pantarhei.theory.option_table`
     writes it)."""
     lines = ["# The options of `pantarhei explore`", "",
