@@ -1,7 +1,8 @@
-"""The front door: each command imports what it uses, only the commands that
-compute with floats restart with the pinned math, `ask` answers questions
-one a line from standard input, and bad options are refused in one line
-before any work starts."""
+"""The front door (bridge/cli.py, and the shared flags of
+bridge/commands/options.py): each command imports what it uses, only the
+commands that compute with floats restart with the pinned math, `ask`
+answers questions one a line from standard input, and bad options are
+refused in one line before any work starts."""
 from __future__ import annotations
 
 import json
