@@ -16,7 +16,7 @@ from pantarhei.bridge.evaluation.plan_checks import goal_sets
 from pantarhei.bridge.evaluation.rule_building import predict, theory_of
 from pantarhei.bridge.reasoning.scenes import violations
 from pantarhei.theory.lexicon import load_vocabulary
-from tests.conftest import assert_one_line_error, run_cli
+from tests.conftest import run_cli
 
 FAST = ["--oracle", "synthetic", "--executor", "inline", "--no-progress"]
 
@@ -207,19 +207,6 @@ def test_the_command_end_to_end_simulates_nothing_the_second_time_and_gives_the_
     figures = json.loads(json.dumps(ev.as_dict()))
     figures.pop("simulations"), figures.pop("seconds"), again.pop("seconds")
     assert again == figures
-
-
-@pytest.mark.parametrize("make, words", [
-    (lambda d: d / "missing.pl", "no such theory"),
-    (lambda d: (d / "hand.pl").write_text("rule(r1, defeasible, no_spill).\n") and d / "hand.pl",
-     "not a theory written by `pantarhei explore`"),
-    (lambda d: (d / "bad.pl").write_text("rule(r1, defeasible\n") and d / "bad.pl", "bad.pl:"),
-])
-def test_bad_theories_get_one_line(tmp_path, make, words):
-    r = run_cli("evaluate", "--theory", str(make(tmp_path)), "--store", str(tmp_path / "s.sqlite"),
-                "--out", str(tmp_path / "r"), "--no-progress")
-    assert words in assert_one_line_error(r, code=r.code if r.code else 2)
-    assert r.code != 0
 
 
 def test_read_learned_refuses_a_hand_written_theory(tmp_path):
