@@ -229,12 +229,15 @@ def check_general_rules(theory: Theory) -> None:
             raise TheoryFileError(f"{where}: general rule {r.id}: {head} is not an expectation")
     facts = {(rid, k): v for rid, k, v in theory.provenance if rid in general}
     for (rid, key), v in facts.items():
-        where = source_line(text, rf"provenance\(\s*{re.escape(rid)}\s*,\s*{key}\s*,", theory.source)
         if key == "confidence_permille" and not (isinstance(v, int) and 0 <= v <= 1000):
-            raise TheoryFileError(f"{where}: general rule {rid}: a confidence in permille "
-                                  f"is 0 to 1000, not {v}")
-        if key in ("support", "kept") and not (isinstance(v, int) and v >= 0):
-            raise TheoryFileError(f"{where}: general rule {rid}: {key} is a count of pours, not {v}")
-        if key == "kept" and isinstance(facts.get((rid, "support")), int) and v > facts[(rid, "support")]:
-            raise TheoryFileError(f"{where}: general rule {rid}: {v} pours kept of "
-                                  f"{facts[(rid, 'support')]} described")
+            why = f"a confidence in permille is 0 to 1000, not {v}"
+        elif key in ("support", "kept") and not (isinstance(v, int) and v >= 0):
+            why = f"{key} is a count of pours, not {v}"
+        elif key == "kept" and isinstance(facts.get((rid, "support")), int) and v > facts[(rid, "support")]:
+            why = f"{v} pours kept of {facts[(rid, 'support')]} described"
+        else:
+            continue
+        # the line is looked for only to say where: a search per fact costs
+        # more than reading the theory
+        where = source_line(text, rf"provenance\(\s*{re.escape(rid)}\s*,\s*{key}\s*,", theory.source)
+        raise TheoryFileError(f"{where}: general rule {rid}: {why}")
