@@ -138,6 +138,11 @@ class ExplorationStore:
                                (run,)).fetchone()
         return int(row[0]) if row else 0
 
+    def trace(self, run: str) -> list[dict]:
+        """The trace lines of the run's saved iterations, in order."""
+        return [json.loads(t) for (t,) in self._db.execute(
+            "SELECT trace FROM exploration_checkpoints WHERE run = ? ORDER BY iteration", (run,))]
+
     def latest(self, run: str, n_params: int, n_scores: int) -> Checkpoint | None:
         """The run's latest checkpoint with every simulation up to it, or
         None when nothing of it is saved."""

@@ -24,7 +24,8 @@ from pantarhei.oracle.generative import log_density
 @dataclass
 class Session:
     """One exploration under way: its settings, run key, store and
-    simulator, every pour so far, and what is cached on them."""
+    simulator, every pour so far, and what is cached on them. The trace
+    is the store's (its checkpoints), the symbolic state Prolog's."""
     settings: dict
     run: str
     store: ExplorationStore
@@ -32,7 +33,6 @@ class Session:
     oracle_version: str
     params: np.ndarray
     scores: np.ndarray
-    trace: list[dict]
     pending: dict[int, tuple[np.ndarray, np.ndarray]] = field(default_factory=dict)
     log_dens: dict[str, np.ndarray] = field(default_factory=dict)
     plane_cache: dict[str, tuple[np.ndarray, Planes | None]] = field(default_factory=dict)

@@ -157,8 +157,7 @@ class Host:
             settings=dict(request, store=str(store_path)), run=run, store=store,
             simulator=simulator, oracle_version=version,
             params=saved.params.copy() if saved else np.empty((0, n_par)),
-            scores=saved.scores.copy() if saved else np.empty((0, n_exp)),
-            trace=list(saved.trace) if saved else [])
+            scores=saved.scores.copy() if saved else np.empty((0, n_exp)))
         if truthy(request.get("progress", True)):
             open_bar(self.session, saved.iteration if saved else 0)
         return {"state": saved.state if saved else "", "run": run,
@@ -240,7 +239,7 @@ class Host:
         out = [{"id": str(e["id"]), **c} for e, c in zip(entries, s.consequents(entries, mode))]
         if s.settings.get("curiosity") == "discover":   # batches of pours per antecedent
             counts: dict[str, int] = {}
-            for t in s.trace:
+            for t in s.store.trace(s.run):
                 counts[str(t["id"])] = counts.get(str(t["id"]), 0) + 1
             for o in out:
                 o["batches"] = counts.get(o["id"], 1)
@@ -254,7 +253,6 @@ class Host:
         P, S = s.pending.pop(iteration)
         trace = rounded(dict(request["trace"]))
         s.store.save(s.run, iteration, P, S, str(request["state"]), trace)
-        s.trace.append(trace)
         s.elapsed.append(round(time.monotonic() - s.started, 3))
         append_trace(Path(str(s.settings["out"])), trace)
         if s.bar is not None:
@@ -287,10 +285,11 @@ class Host:
         try:
             if not truthy(request.get("aborted")):
                 out = Path(str(request["out"]))
-                write_trace(trace_path(out), s.trace)
+                trace = s.store.trace(s.run)
+                write_trace(trace_path(out), trace)
                 written["trace"] = str(trace_path(out))
                 try:
-                    plot_trace(plot_path(out), s.trace, s.settings)
+                    plot_trace(plot_path(out), trace, s.settings)
                     written["plot"] = str(plot_path(out))
                 except Exception as e:  # the theory and trace are written: say so and go on
                     note(f"could not plot the trace: {e}")

@@ -131,7 +131,7 @@ def test_the_store_gives_back_every_iteration_it_committed(tmp_path):
         assert (saved.iteration, saved.state, saved.batches, saved.finished) == (2, "st(2)", [2, 3], False)
         assert np.array_equal(saved.params, np.vstack([b[0] for b in batches]))
         assert np.array_equal(saved.scores, np.vstack([b[1] for b in batches]))
-        assert saved.trace == [{"iteration": 1}, {"iteration": 2}]
+        assert saved.trace == store.trace(run) == [{"iteration": 1}, {"iteration": 2}]
         store.finish(run)
         assert store.latest(run, 30, 9).finished
         store.start(run, settings)                                  # afresh: the saved state goes

@@ -14,7 +14,7 @@ def session(P: np.ndarray) -> Session:
     rng = np.random.default_rng(0)
     return Session(settings={"ridge": 1.0, "permutations": 19, "seed": 1, "qualify": "weighted"},
                    run="", store=None, simulator=None, oracle_version="", params=P,
-                   scores=rng.random((len(P), 9)), trace=[])
+                   scores=rng.random((len(P), 9)))
 
 
 def test_log_densities_grow_with_the_pours():

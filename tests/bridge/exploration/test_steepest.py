@@ -23,7 +23,7 @@ def session(curiosity: str) -> Session:
     settings = {"curiosity": curiosity, "significance": 0.05, "permutations": 99, "seed": 1,
                 "ridge": 1.0}
     return Session(settings=settings, run="", store=None, simulator=None, oracle_version="",
-                   params=P, scores=S, trace=[])
+                   params=P, scores=S)
 
 
 def test_the_papers_steepest_plane_follows_a_real_dependency():
