@@ -33,16 +33,26 @@ BUDGETS = ((5, 3), (10, 3), (25, 3), (50, 6))
 REPEATS = 3
 
 
+def run_options(max_rules: int, tmp: Path, seed: int = 1, breadth: int = 3,
+                curiosity: str = "discover"):
+    """The options of one measured run: the synthetic oracle, in this
+    process, with the option table's other defaults (for the paper's
+    curiosity slope 0: it follows every plane, a run that never stops
+    early)."""
+    from pantarhei.bridge.exploration.running import Options
+
+    paper = {"slope": 0.0} if curiosity == "paper" else {}
+    return Options(curiosity=curiosity, oracle="synthetic", budget=max_rules, seed=seed,
+                   out=tmp / "t.pl", store=tmp / f"s{max_rules}-{seed}-{time.time_ns()}.sqlite",
+                   progress=False, executor="inline", breadth=breadth, **paper)
+
+
 def overhead(max_rules: int, tmp: Path, seed: int = 1, breadth: int = 3,
              curiosity: str = "discover") -> tuple[float, int, dict]:
-    from pantarhei.bridge.exploration.running import Options, explore
+    from pantarhei.bridge.exploration.running import explore
 
     t = time.perf_counter()
-    # the paper's curiosity with threshold 0 follows every plane (a run that never stops early)
-    r = explore(Options(curiosity=curiosity, oracle="synthetic", budget=max_rules, seed=seed,
-                        out=tmp / "t.pl", store=tmp / f"s{max_rules}-{seed}-{time.time_ns()}.sqlite",
-                        progress=False, executor="inline", breadth=breadth,
-                        threshold=0.0 if curiosity == "paper" else None))
+    r = explore(run_options(max_rules, tmp, seed, breadth, curiosity))
     wall = time.perf_counter() - t
     return wall - r["timings"].get("oracle", 0.0), r["simulations"], r["timings"]
 
