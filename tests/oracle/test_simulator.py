@@ -7,7 +7,6 @@ from __future__ import annotations
 import signal
 import subprocess
 import sys
-import textwrap
 import time
 
 import numpy as np
@@ -17,7 +16,7 @@ from pantarhei.oracle.simulator import make_simulator
 from pantarhei.oracle.store import Store
 
 from .pours import with_counts
-from .stores import low_pours, simulate
+from .stores import HANGING_RUN as SCRIPT, low_pours, simulate
 
 
 def expected(P):
@@ -72,17 +71,6 @@ def test_a_stored_time_out_is_no_outcome_for_a_longer_limit(tmp_path):
         assert sim.last_cached == [True, True]
     scores, sim = simulate(db, P)      # the default limit simulates them again
     assert sim.last_simulated == 2 and np.isfinite(scores).all()
-
-
-SCRIPT = textwrap.dedent("""
-    import sys
-    import numpy as np
-    from pantarhei.oracle.simulator import make_simulator
-    P = np.load(sys.argv[2])
-    with make_simulator("faulty", executor="local", workers=1, store=sys.argv[1],
-                        timeout=600, hang=[43]) as sim:
-        sim.simulate(P)
-""")
 
 
 def test_results_survive_a_process_killed_mid_run(tmp_path):

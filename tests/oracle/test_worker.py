@@ -6,23 +6,12 @@ import os
 import signal
 import subprocess
 import sys
-import textwrap
 import time
 
 import numpy as np
 
 from .pours import with_counts
-
-#: Simulates pours in one local worker; particle count 43 hangs.
-SCRIPT = textwrap.dedent("""
-    import sys
-    import numpy as np
-    from pantarhei.oracle.simulator import make_simulator
-    P = np.load(sys.argv[2])
-    with make_simulator("faulty", executor="local", workers=1, store=sys.argv[1],
-                        timeout=600, hang=[43]) as sim:
-        sim.simulate(P)
-""")
+from .stores import HANGING_RUN as SCRIPT
 
 
 def test_workers_go_when_their_process_is_killed(tmp_path):
