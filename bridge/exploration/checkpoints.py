@@ -138,10 +138,12 @@ class ExplorationStore:
                                (run,)).fetchone()
         return int(row[0]) if row else 0
 
-    def trace(self, run: str) -> list[dict]:
-        """The trace lines of the run's saved iterations, in order."""
+    def trace(self, run: str, last: int | None = None) -> list[dict]:
+        """The trace lines of the run's saved iterations (up to `last`), in order."""
+        upto = "" if last is None else " AND iteration <= ?"
         return [json.loads(t) for (t,) in self._db.execute(
-            "SELECT trace FROM exploration_checkpoints WHERE run = ? ORDER BY iteration", (run,))]
+            f"SELECT trace FROM exploration_checkpoints WHERE run = ?{upto} ORDER BY iteration",
+            (run,) if last is None else (run, last))]
 
     def latest(self, run: str, n_params: int, n_scores: int) -> Checkpoint | None:
         """The run's latest checkpoint with every simulation up to it, or
@@ -153,9 +155,7 @@ class ExplorationStore:
         last, finished = int(row[0]), bool(row[1])
         (state,) = self._db.execute("SELECT state FROM exploration_checkpoints "
                                     "WHERE run = ? AND iteration = ?", (run, last)).fetchone()
-        trace = [json.loads(t) for (t,) in self._db.execute(
-            "SELECT trace FROM exploration_checkpoints WHERE run = ? AND iteration <= ? "
-            "ORDER BY iteration", (run, last))]
+        trace = self.trace(run, last)
         P, S, batches = [], [], []
         for rows, p, s in self._db.execute(
                 "SELECT rows, params, scores FROM exploration_simulations "
