@@ -75,5 +75,6 @@ def note(text: str) -> None:
 
 
 def truthy(v: Any) -> bool:
-    """A Prolog or JSON truth value as a bool."""
+    """A truth value of a request (a bool, as the foreign predicates read
+    true and false, or true and 1 as text) as a bool."""
     return v in (True, "true", 1, "1")
