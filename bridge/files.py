@@ -42,6 +42,31 @@ def require_writable_file(path: Path | str, flag: str) -> None:
         raise UserError(f"{flag} {path}: cannot write into {folder} (permission denied)")
 
 
+def require_distinct(roles: dict[str, Path | str]) -> None:
+    """UserError when two of a command's files (`roles`: what each is, its
+    flag or the file written beside one, to its path) are the same file,
+    after resolving `..` and links (a hard link too, when both exist), so
+    that no output replaces an input or another output: checked before
+    anything is written."""
+    from pantarhei.bridge.errors import UserError
+
+    seen: dict[object, str] = {}
+    for role, path in roles.items():
+        path = Path(path)
+        keys: list[object] = [path.resolve()]
+        try:
+            st = path.stat()
+            keys.append((st.st_dev, st.st_ino))
+        except OSError:
+            pass
+        for key in keys:
+            if key in seen:
+                raise UserError(f"{seen[key]} and {role} are the same file {path}: "
+                                f"give each its own path")
+        for key in keys:
+            seen[key] = role
+
+
 def write_text(path: Path | str, text: str) -> None:
     """Write `text` (UTF-8) to `path` whole or not at all."""
     replace_with(path, lambda tmp: tmp.write_text(text, encoding="utf-8"))

@@ -51,11 +51,13 @@ def demo(args: argparse.Namespace) -> int:
     from pantarhei.bridge.theories.dfl import write_dfl
     from pantarhei.bridge.files import require_writable_file, write_text
     from pantarhei.bridge.theories import loading
+    from pantarhei.bridge.commands.explore import require_distinct_outputs
     from pantarhei.bridge.commands.querying import answer, print_plans
     from pantarhei.bridge.exploration.running import Options, budget_text, explore, stop_text
 
     out = Path(args.out)
     require_writable_file(out, "--out")
+    require_distinct_outputs(Path(args.store), out, dfl=True)
     started = time.monotonic()
     curiosity = defaults()["curiosity"]
     _heading(f"Learning the theory of pouring: curious exploration of the {args.oracle} "

@@ -314,17 +314,22 @@ def conclusions(args: argparse.Namespace) -> int:
 def convert(args: argparse.Namespace) -> int:
     from pathlib import Path
 
-    from pantarhei.bridge.files import write_text
+    from pantarhei.bridge.files import require_writable_file, write_text
     from pantarhei.bridge.theories import loading
 
+    out = Path(args.output) if args.output else None
+    if out is not None:       # said before reading (converting in place is allowed)
+        if not out.parent.is_dir():
+            raise UserError(f"{out}: no such directory {out.parent}")
+        require_writable_file(out, "-o")
     theory = loading.load(args.file, check=False)
     text = loading.converted(theory, args.to, args.output)
-    if not args.output:
+    if out is None:
         print(text, end="")
         return 0
-    out = Path(args.output)
-    if not out.parent.is_dir():
-        raise UserError(f"{out}: no such directory {out.parent}")
-    write_text(out, text)
+    try:
+        write_text(out, text)
+    except OSError as e:      # a read-only or full file system: nothing was written
+        raise UserError(f"-o {out}: cannot write ({e.strerror or e}); nothing was written") from None
     print(f"wrote {len(theory.rules)} rules, {len(theory.facts)} facts to {out}")
     return 0

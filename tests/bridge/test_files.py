@@ -33,3 +33,18 @@ def test_where_nothing_can_be_written_is_said_before_any_work(tmp_path):
     (tmp_path / "file").write_text("")
     with pytest.raises(UserError, match="is not a directory"):
         require_writable_file(tmp_path / "file" / "x.pl", "--out")
+
+
+def test_two_roles_on_one_file_are_refused_however_it_is_named(tmp_path):
+    from pantarhei.bridge.files import require_distinct
+
+    require_distinct({"--store": tmp_path / "s.sqlite", "--out": tmp_path / "t.pl"})
+    (tmp_path / "sub").mkdir()
+    with pytest.raises(UserError, match=r"^--store and --out are the same file .*: give each its own path$"):
+        require_distinct({"--store": tmp_path / "x", "--out": tmp_path / "sub" / ".." / "x"})
+    (tmp_path / "real.pl").write_text("")
+    (tmp_path / "link.pl").symlink_to(tmp_path / "real.pl")
+    os.link(tmp_path / "real.pl", tmp_path / "hard.pl")
+    for other in ("link.pl", "hard.pl"):
+        with pytest.raises(UserError, match="--store and --out are the same file"):
+            require_distinct({"--store": tmp_path / "real.pl", "--out": tmp_path / other})

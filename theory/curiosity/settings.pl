@@ -32,6 +32,7 @@ setting/2 facts of its learned theory.
 %   @error exploration_error(Text) for the first bad option.
 settings(Options, S) :-
     must_be(list, Options),
+    maplist(known_option, Options),
     setting_value(curiosity, Options, discover, Curiosity),
     findall(Key-Value,
             ( table_option(Key, _, _, _),
@@ -102,6 +103,20 @@ recorded_fact(oracle, Name, V, Version, F) :- !,
         F = setting(Key, Version)
     ).
 recorded_fact(_, Name, V, _, setting(Name, V)).
+
+%   known_option(+Option): Option is Name(Value) or Name = Value, Name an
+%   option of the table or oracle_options; else the error names it (a
+%   misspelt option is refused, not left to its default).
+known_option(Option) :-
+    (   nonvar(Option),
+        ( Option = (Name = _) ; compound(Option), compound_name_arity(Option, Name, 1) ),
+        atom(Name),
+        ( Name == oracle_options ; table_option(Name, _, _, _) )
+    ->  true
+    ;   format(string(M), "unknown option ~q (the options of explore/1 are those of docs/options.md)",
+               [Option]),
+        throw(exploration_error(M))
+    ).
 
 %   table_option(?Key, ?Type, ?Range, ?Default): a row of the option
 %   table (theory/defaults.pl).

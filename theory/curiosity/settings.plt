@@ -48,4 +48,10 @@ test(oracle_options_must_be_a_dict) :-
     catch(settings([oracle_options('{"crash": 3}')], _), exploration_error(M), true),
     M == "oracle_options: expected a dict".
 
+% an option the table does not have is refused by name, not ignored
+test(unknown_option_is_refused, [forall(member(O, [ouy('/tmp/x.pl'), outt = '/tmp/x.pl', seed, 7]))]) :-
+    catch(settings([oracle(synthetic), O], _), exploration_error(M), true),
+    format(string(Want), "unknown option ~q", [O]),
+    string(M), sub_string(M, 0, _, _, Want).
+
 :- end_tests(curiosity_settings).

@@ -56,3 +56,7 @@ def test_demo_refuses_bad_options_in_one_line(tmp_path):
     assert "--budget" in assert_one_line_error(r)
     r = run_cli("demo", "--oracle", "synthetic", "--out", str(tmp_path))
     assert "a directory, not a file" in assert_one_line_error(r)
+    r = run_cli("demo", "--oracle", "synthetic", "--out", str(tmp_path / "t.dfl"),
+                "--store", str(tmp_path / "s.sqlite"))
+    assert "--out and --out's DFL version are the same file" in assert_one_line_error(r)
+    assert list(tmp_path.iterdir()) == []

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.conftest import run_cli
+from tests.conftest import assert_one_line_error, run_cli
 
 FAST = ["--oracle", "synthetic", "--executor", "inline", "--no-progress"]
 
@@ -33,6 +33,18 @@ def test_bad_input_is_one_line_and_nonzero(tmp_path, args, words):
     assert words in r.err
     assert len(r.err.strip().splitlines()) == 1 and "Traceback" not in r.err
     assert not (tmp_path / "t.pl").exists()
+
+
+@pytest.mark.parametrize("store, out, words", [
+    ("x.sqlite", "x.sqlite", "--store and --out are the same file"),
+    ("x.trace.jsonl", "x.pl", "--store and --out's trace are the same file"),
+    ("x.trace.png", "x.pl", "--store and --out's trace plot are the same file"),
+])
+def test_one_file_for_two_roles_is_refused_before_anything_is_written(tmp_path, store, out, words):
+    r = run_cli("explore", *FAST, "--budget", "1", "--batch", "4", "--no-general",
+                "--store", str(tmp_path / store), "--out", str(tmp_path / "sub" / ".." / out))
+    assert words in assert_one_line_error(r)
+    assert list(tmp_path.iterdir()) == []
 
 
 def test_explore_command_reports_what_it_wrote(tmp_path):
@@ -89,6 +101,16 @@ def _decided_by_shipped_rules(out: str) -> list[str]:
     ids = {r.id for r in load([DEFAULT_THEORY]).rules}
     lines = [ln.split() for ln in out.splitlines() if len(ln.split()) == 3]
     return [r for _e, v, r in lines if v in ("holds", "fails", "uncertain") and r in ids]
+
+
+def test_explore_at_the_prompt_refuses_an_unknown_option_before_it_runs(tmp_path):
+    goal = (f"explore([curiosity(paper), oracle(synthetic), budget(1), batch(4), executor(inline), "
+            f"progress(false), general(false), seeed(3), out('{tmp_path / 'p.pl'}'), "
+            f"store('{tmp_path / 's.sqlite'}')])")
+    r = run_cli("prolog", "-g", goal)
+    line = assert_one_line_error(r, code=1)
+    assert "unknown option seeed(3)" in line, line
+    assert list(tmp_path.iterdir()) == []
 
 
 def test_prolog_command_interactive_prompt_has_the_shipped_theory(tmp_path):

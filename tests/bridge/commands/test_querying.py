@@ -396,3 +396,49 @@ def test_malformed_general_rules_name_file_and_line(cli, tmp_path: Path, old, ne
     bad.write_text(GENERAL.replace(old, new))
     msg = assert_one_line_error(cli("ask", "--props", "pour_to_side", "--theory", str(bad)))
     assert f"{bad}:{line}: " in msg and what in msg
+
+
+def _limited_file_size(limit: int):
+    """For a subprocess: files larger than `limit` bytes cannot be written
+    (the kernel fails the write with EFBIG, as a full disk fails it with
+    ENOSPC; Python ignores the signal that comes with it)."""
+    import resource
+
+    def preexec() -> None:
+        resource.setrlimit(resource.RLIMIT_FSIZE, (limit, limit))
+    return preexec
+
+
+def test_convert_that_cannot_write_its_output_says_so_in_one_line(tmp_path: Path) -> None:
+    import os
+    import subprocess
+    import sys
+
+    out = tmp_path / "learned.dfl"
+    p = subprocess.run([sys.executable, "-m", "pantarhei.bridge", "convert", LEARNED, "-o", str(out)],
+                       capture_output=True, text=True, stdin=subprocess.DEVNULL,
+                       preexec_fn=_limited_file_size(512), env={**os.environ, "PYTHONDONTWRITEBYTECODE": "1"})
+    from tests.conftest import Run
+
+    line = assert_one_line_error(Run(p.returncode, p.stdout, p.stderr))
+    assert line.startswith(f"pantarhei convert: -o {out}: cannot write (") and "nothing was written" in line
+    assert os.listdir(tmp_path) == []       # no half file, no temporary
+
+
+def test_convert_into_a_read_only_folder_says_so_in_one_line(tmp_path: Path, monkeypatch, capsys) -> None:
+    """A read-only file system refuses even root: the temporary file beside
+    the output cannot be made."""
+    import errno
+    import tempfile
+
+    from pantarhei.bridge.cli import main
+
+    def read_only(*args, **kwargs):
+        raise OSError(errno.EROFS, "Read-only file system")
+
+    monkeypatch.setattr(tempfile, "mkstemp", read_only)
+    out = tmp_path / "learned.dfl"
+    assert main(["convert", LEARNED, "-o", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert err == f"pantarhei convert: -o {out}: cannot write (Read-only file system); nothing was written\n"
+    assert not out.exists()
