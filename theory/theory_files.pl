@@ -359,16 +359,30 @@ check_integer(Raw, N) :-
         Ds \== [],
         forall(member(D, Ds), code_type(D, digit(_))),
         forall(member(D, Ds), D =< 0'9)
-    ->  (   N >= -2147483648, N =< 2147483647
+    ->  integer_shown(Raw, Shown),
+        (   N >= -2147483648, N =< 2147483647
         ->  (   number_string(N, Raw) , format(string(Raw), "~d", [N])
             ->  true
-            ;   format(string(M), "an integer in decimal digits without leading zeros, not ~w", [Raw]),
+            ;   format(string(M), "an integer in decimal digits without leading zeros, not ~w", [Shown]),
                 bad(M)
             )
-        ;   format(string(M), "an integer from -2147483648 to 2147483647, not ~w", [Raw]),
+        ;   format(string(M), "an integer from -2147483648 to 2147483647, not ~w", [Shown]),
             bad(M)
         )
     ;   bad(expected)
+    ).
+
+% integer_shown(+Raw, -Shown): an integer's text as a message shows it:
+% whole up to 24 characters, a longer one by its ends and its number of
+% digits (as bridge/theories/facts.py).
+integer_shown(Raw, Shown) :-
+    string_length(Raw, L),
+    (   L =< 24
+    ->  Shown = Raw
+    ;   sub_string(Raw, 0, 12, _, Head),
+        sub_string(Raw, _, 4, 0, Tail),
+        (   sub_string(Raw, 0, 1, _, "-") -> D is L - 1 ; D = L ),
+        format(string(Shown), "~s...~s (~d digits)", [Head, Tail, D])
     ).
 
 % quoted(-Escapes)// : "..." whose escapes are \\, \" and \n (Escapes = ok),

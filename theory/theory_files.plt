@@ -59,6 +59,11 @@ test(a_directive_is_refused, Expected == "a fact, not a directive: a theory file
 test(an_integer_clingo_cannot_hold_is_refused, Expected == "an integer from -2147483648 to 2147483647, not 3000000000") :-
     load_error("size(3000000000).\n", _, Expected).
 
+test(an_integer_of_thousands_of_digits_is_shown_by_its_ends, [Line, Expected] == [2, "an integer from -2147483648 to 2147483647, not 999999999999...9999 (5001 digits)"]) :-
+    length(Ds, 5001), maplist(=(0'9), Ds), string_codes(Big, Ds),
+    format(string(Text), "a(1).\nsize(~s).\n", [Big]),
+    load_error(Text, Line, Expected).
+
 test(an_integer_in_another_notation_is_refused, Line == 1) :-
     load_error("a(0x1F).\n", Line, _).
 

@@ -214,6 +214,8 @@ def _literal(text: str, where: str, ground: bool = False) -> str:
         for a in args:
             if not _ARG.match(a):
                 raise TheoryFileError(f"{where}: expected a constant or a variable ?x as argument, not '{a}'")
+            if a[0] in "-0123456789" and (problem := theory_facts.integer_problem(a)):
+                raise TheoryFileError(f"{where}: {problem}")     # clingo would wrap it
             if ground and _is_var(a):
                 raise TheoryFileError(f"{where}: a fact without variables, not '{text.strip()}'")
         s = f"{s.split('(', 1)[0]}({','.join('?' + a.lstrip('?') if _is_var(a) else a for a in args)})"

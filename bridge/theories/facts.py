@@ -189,12 +189,33 @@ def _value(token: str, source: str, line: int):
 
 
 def _integer(token: str, source: str, line: int) -> int:
-    n = int(token)
-    if not INT_MIN <= n <= INT_MAX:
-        raise TheoryFileError(f"{source}:{line}: " + INT_RANGE.format(token))
-    if str(n) != token:
-        raise TheoryFileError(f"{source}:{line}: " + INT_FORM.format(token))
-    return n
+    if len(token) <= 11:
+        n = int(token)
+        if INT_MIN <= n <= INT_MAX and str(n) == token:
+            return n
+    raise TheoryFileError(f"{source}:{line}: " + integer_problem(token))
+
+
+def integer_problem(token: str) -> str | None:
+    """Why the text of an integer (`-?[0-9]+`) is not one a theory may
+    hold, or None: outside clingo's -2147483648 .. 2147483647 (decided
+    without converting thousands of digits), or not plain decimal (leading
+    zeros, -0)."""
+    sign = "-" if token[:1] == "-" else ""
+    significant = token[len(sign):].lstrip("0") or "0"
+    if len(significant) > 10 or not INT_MIN <= int(sign + significant) <= INT_MAX:
+        return INT_RANGE.format(integer_shown(token))
+    if str(int(sign + significant)) != token:
+        return INT_FORM.format(integer_shown(token))
+    return None
+
+
+def integer_shown(token: str) -> str:
+    """An integer's text as a message shows it: whole up to 24 characters,
+    a longer one by its ends and its number of digits."""
+    if len(token) <= 24:
+        return token
+    return f"{token[:12]}...{token[-4:]} ({len(token.lstrip('-'))} digits)"
 
 
 def _unescape(token: str, source: str, line: int) -> Text:

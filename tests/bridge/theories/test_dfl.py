@@ -166,3 +166,31 @@ def test_cyclic_superiority_in_dfl_names_line_and_rules(cli, text: str, line: in
     for engine in ENGINES:
         msg = assert_one_line_error(cli("conclusions", str(f), "--engine", engine))
         assert msg.endswith(f"{f}:{line}: the superiority relation has a cycle, {cycle}: it must be acyclic")
+
+
+RANGE = "an integer from -2147483648 to 2147483647, not "
+
+
+@pytest.mark.parametrize("text,line,what", [
+    (">> p(4294967296)\n", 1, RANGE + "4294967296"),
+    (">> p(2147483647)\nr1: p(-2147483649) => q\n", 2, RANGE + "-2147483649"),
+    ("r1: p(1) => q(2147483648)\n", 1, RANGE + "2147483648"),
+    (">> p(" + "9" * 5001 + ")\n", 1, RANGE + "999999999999...9999 (5001 digits)"),
+    (">> p(007)\n", 1, "an integer in decimal digits without leading zeros, not 007"),
+])
+def test_integers_clingo_cannot_hold_are_refused_in_dfl(cli, tmp_path: Path, text: str, line: int,
+                                                        what: str) -> None:
+    """clingo wraps an integer past 32 bits (p(4294967296) was +D p(0)):
+    the reader refuses it, so that no engine and no conversion sees it."""
+    f = tmp_path / "big.dfl"
+    f.write_text(text)
+    for engine in ENGINES:
+        assert assert_one_line_error(cli("conclusions", str(f), "--engine", engine)) == \
+            f"pantarhei conclusions: {f}:{line}: {what}"
+    out = tmp_path / "big.pl"
+    assert f"{f}:{line}: {what}" in assert_one_line_error(cli("convert", str(f), "--to", "native",
+                                                              "-o", str(out)))
+    assert not out.exists()
+    f.write_text(text.replace("4294967296", "2147483647").replace("2147483648", "-2147483648")
+                 .replace("-2147483649", "-2147483648").replace("9" * 5001, "9").replace("007", "7"))
+    assert cli("convert", str(f), "--to", "native", "-o", str(out)).code == 0
