@@ -1,114 +1,316 @@
-"""What the curiosity's pours teach: the general rules learned from an
-exploration's pours against those learned from the pours of random valid
-antecedents at the same budget, on the questions a person would type
-(bridge/evaluation/questions.json, 20 pours each, seed 1, as `pantarhei
-evaluate` draws them), and how far theories of several seeds agree.
+"""Knowledge per pour: what a theory learned from the pours each method
+chooses knows, at the same total of pours, every pour counted.
 
-    pantarhei explore --seed 101 --out runs/s101.pl
-    pantarhei explore --seed 102 --out runs/s102.pl
-    python -m benchmarks.knowledge runs/s101.pl runs/s102.pl
+    python -m benchmarks knowledge                        # PyBullet, seeds 101-105
+    python -m benchmarks knowledge --oracle synthetic --seeds 101,102 --budgets 40,80
 
-For each theory (its exploration's seed S): coverage and accuracy on the
-clear keys, accuracy on the contrast keys (the clear keys where the
-defaults-only theory is wrong) and calibration, for the general rules of
-its pours and of random valid antecedents' pours (seed S, the same number
-of batches), each with the learner's own pours (bridge/learning/gaps.py);
-then the medians with their range; then, for each pair of theories as
-written, the share of the question decisions both make on which they
-agree. Every pour goes through the store (pantarhei.sqlite).
+The methods, each spending the same budget on pours of its own choice and
+learning the same kind of theory from its own pours only (no pours of the
+learner's own, bridge/learning/generalize.py, likelihoods from every pour
+pooled):
+
+* `curiosity`: the learning curiosity (`explore --curiosity learn`); the
+  rules' bodies are the antecedents it explored;
+* `random`: the ordinary pour, then uniformly random antecedents of what a
+  question says (a proposition or a valid pair, the antecedents the
+  curiosity chooses among), a batch of the curiosity's size each; the
+  rules' bodies are those antecedents;
+* `designed`: the one-at-a-time experiment: the ordinary pour and each
+  proposition alone, one pour each in turn, round after round; the rules'
+  bodies are those;
+* `uncertainty`: uncertainty sampling on a boosting model of the pours so
+  far: from pours of the ordinary pour, each batch the pours (among 256
+  drawn for random propositions and pairs) whose nine verdicts the model
+  is least sure of; the rules' bodies are every askable one;
+* `map_elites`: MAP-Elites' pours (pyribs, bridge/evaluation/map_elites.py);
+  the rules' bodies are every askable one.
+
+Each method's pours are one sequence, and the theory at a budget is learned
+from its first pours (for the curiosity: the pours of the steps that fit,
+as a run with that budget explores them). The theories are asked the
+questions of bridge/evaluation/questions.json, keyed by 20 pours each (seed
+1, as `pantarhei evaluate` draws them): accuracy on the clear keys, on the
+contrast keys (the clear keys where the defaults-only answer, the majority
+of the questions' pours, is wrong), calibration and coherence; beside them
+the distinct behaviours each method's pours show (nine-verdict vectors at
+least two pours show). Medians over the seeds with their range; a table
+and a plot of the learning curves go to `--report` (report/). Every pour
+goes through the store (pantarhei.sqlite), so a second run simulates
+nothing.
 """
 from __future__ import annotations
 
-import itertools
-import sys
+import argparse
+import tempfile
+import zlib
+from dataclasses import dataclass
 from pathlib import Path
+from typing import Callable, Sequence
 
 import numpy as np
 
+METHODS = ("curiosity", "random", "designed", "uncertainty", "map_elites")
+MEASURES = (("contrast_accuracy", "contrast accuracy"), ("accuracy", "clear accuracy"),
+            ("calibration", "calibration"), ("coherent", "coherent"))
 
-def measure(paths: list[str]) -> tuple[list[dict], dict[tuple[str, str], float]]:
-    from pantarhei.bridge.evaluation import pipeline as E
+
+@dataclass
+class Chosen:
+    """A method's pours, in the order simulated, and the bodies its theory
+    may have rules for once it has spent n pours."""
+    P: np.ndarray
+    S: np.ndarray
+    bodies: Callable[[int], list[tuple[str, ...]] | None]   # None: every askable body
+
+
+def _seed(seed: int, *words: str) -> int:
+    return int(np.random.SeedSequence([int(seed), zlib.crc32(" ".join(words).encode())])
+               .generate_state(1)[0])
+
+
+def _batch() -> int:
+    from pantarhei.theory import defaults
+    return int(defaults()["learn_batch"])
+
+
+def curiosity(seed: int, budget: int, oracle: str, store: Path, run) -> Chosen:
+    """The learning curiosity's pours and, at each prefix, the antecedents
+    explored by then (from its trace)."""
+    import json
+
+    from pantarhei.bridge.exploration.running import Options, explore
+    from pantarhei.bridge.exploration.trace import trace_path
+
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "learned.pl"
+        result = explore(Options(oracle=oracle, curiosity="learn", pours=budget, seed=seed,
+                                 out=out, store=store, progress=False))
+        trace = [json.loads(line) for line in trace_path(out).read_text().splitlines()]
+    P, S = result["pours"]
+    batch = _batch()
+    steps = [(int(t["iteration"]) * batch, tuple(sorted(t["antecedent"]))) for t in trace]
+
+    def bodies(n: int) -> list[tuple[str, ...]]:
+        return list(dict.fromkeys(b for end, b in steps if end <= n))
+    return Chosen(P, S, bodies)
+
+
+def random_bodies(seed: int, budget: int, run) -> Chosen:
+    """The ordinary pour, then random propositions and valid pairs."""
+    from pantarhei.bridge.learning.askable import askable_bodies
+    from pantarhei.oracle.generative import sample
+
+    batch = _batch()
+    pool = askable_bodies(2)[1:]
+    rng = np.random.default_rng(_seed(seed, "random bodies"))
+    order = [()] + [pool[i] for i in rng.permutation(len(pool))]
+    steps = order[: -(-budget // batch)]
+    P = np.vstack([sample(list(b), batch, _seed(seed, "random", *b)) for b in steps])[:budget]
+    S = run(P)
+
+    def bodies(n: int) -> list[tuple[str, ...]]:
+        return steps[: max(1, n // batch)]
+    return Chosen(P, S, bodies)
+
+
+def designed(seed: int, budget: int, run) -> Chosen:
+    """The ordinary pour and each proposition alone, one pour each in turn."""
+    from pantarhei.oracle.generative import sample
+    from pantarhei.theory.lexicon import load_vocabulary
+
+    order = [()] + [(n,) for n in sorted(load_vocabulary().propositions)]
+    rounds = -(-budget // len(order))
+    draws = {b: sample(list(b), rounds, _seed(seed, "designed", *b)) for b in order}
+    P = np.vstack([draws[b][r] for r in range(rounds) for b in order])[:budget]
+    S = run(P)
+    return Chosen(P, S, lambda n: order[: max(1, n)])
+
+
+def uncertainty(seed: int, budget: int, run) -> Chosen:
+    """Uncertainty sampling on a boosting model of the pours so far."""
+    from pantarhei.bridge.evaluation.measures import verdicts
+    from pantarhei.bridge.learning.askable import askable_bodies
+    from pantarhei.bridge.learning.generalize import Settings
+    from pantarhei.bridge.learning.meaning import Meaning
+    from pantarhei.oracle.generative import normalise, sample
+
+    batch = _batch()
+    pool = askable_bodies(2)[1:]
+    rng = np.random.default_rng(_seed(seed, "uncertainty"))
+    P = sample([], min(budget, 4 * batch), _seed(seed, "uncertainty start"))
+    S = run(P)
+    while len(P) < budget:
+        picks = rng.integers(len(pool), size=256)
+        C = np.vstack([sample(list(pool[i]), 1, int(rng.integers(2**31))) for i in picks])
+        ok = np.all(np.isfinite(S), axis=1)
+        model = Meaning(P[ok], verdicts(S[ok]), Settings(seed=seed), 50)
+        q = np.clip(model.shares(normalise(C)), 1e-6, 1 - 1e-6)
+        entropy = -(q * np.log(q) + (1 - q) * np.log(1 - q)).sum(axis=1)
+        take = np.argsort(-entropy, kind="stable")[: min(batch, budget - len(P))]
+        P = np.vstack([P, C[take]])
+        S = np.vstack([S, run(C[take])])
+    return Chosen(P, S, lambda n: None)
+
+
+def map_elites_pours(seed: int, budget: int, run) -> Chosen:
+    from pantarhei.bridge.evaluation.map_elites import map_elites
+
+    qd = map_elites(run, budget, seed, batch=_batch())
+    return Chosen(qd.P, qd.S, lambda n: None)
+
+
+def measure(oracle: str, seeds: Sequence[int], budgets: Sequence[int], store: Path,
+            methods: Sequence[str] = METHODS) -> list[dict]:
+    """One row per method, seed and budget: the measures of its theory on
+    the questions, and the behaviours its pours show."""
+    from pantarhei.bridge.evaluation.map_elites import behaviours_seen
     from pantarhei.bridge.evaluation.measures import (contrast_keys, defaults_only,
                                                       question_key, question_measures,
                                                       question_shares, verdicts)
     from pantarhei.bridge.evaluation.questions import question_pours, questions
-    from pantarhei.bridge.evaluation.rule_building import answer_matrix
     from pantarhei.bridge.exploration.simulation import open_simulator
-    from pantarhei.bridge.learning.layers import learn_general
-    from pantarhei.bridge.theories.loading import load
-    from pantarhei.oracle.store import DEFAULT_STORE
+    from pantarhei.bridge.learning.generalize import Settings, generalize
     from pantarhei.theory.lexicon import load_vocabulary
 
     names = load_vocabulary().expectation_names
     asked = questions()
     scenes = [q.antecedent for q in asked]
-    first = E.read_learned(paths[0])
-    sim = open_simulator(str(first.setting("oracle", "pybullet")), "local", None,
-                         Path(DEFAULT_STORE).absolute())
-    rows, decisions = [], {}
+    sim = open_simulator(oracle, "local", None, store.absolute())
+    run = lambda P: np.asarray(sim.simulate(P, progress=False), dtype=float)  # noqa: E731
+    rows = []
     try:
-        ev = E.Evaluation(theory="", oracle="", settings={}, budget=0)
-        run = E.Simulations(sim, ev, progress=False)
         P_q, of = question_pours(asked, 1)
-        S_q = run("questions", P_q, say=False)
+        S_q = run(P_q)
         ok = np.all(np.isfinite(S_q), axis=1)
         key, clear = question_key(S_q[ok], of[ok], len(asked))
         share = question_shares(S_q[ok], of[ok], len(asked))
         V, of_ok = verdicts(S_q[ok]), of[ok]
-        for path in paths:
-            learned = E.read_learned(path)
-            seed, samples = int(learned.setting("seed")), int(learned.setting("batch"))
-            P, _, _, _ = E.exploration_draws(learned)
-            S = run("exploration", P, say=False)
-            batches = max(1, round(len(P) / samples))
-            rnd = E.random_exploration_pours(seed, batches, samples, run)
-            row = {"theory": path, "seed": seed}
-            contrast = None
-            for method, (Pm, Sm) in (("curiosity", (P, S)), ("random", (rnd.P, rnd.S))):
-                okm = np.all(np.isfinite(Sm), axis=1)
-                g, Pg, Sg = learn_general(Pm[okm], Sm[okm], seed,
-                                          lambda X: run("own", X, say=False))
-                if contrast is None:
-                    contrast = contrast_keys(key, clear, defaults_only(verdicts(Sg), len(asked))[0])
-                lik = np.array([[g.answer(q)[e][1] for e in names] for q in scenes])
-                row[method] = question_measures(g.predict(scenes), lik, share, key, clear,
-                                                contrast, V, of_ok)
-            rows.append(row)
-            decisions[path] = answer_matrix(load([path]), scenes)[0]
+        contrast = contrast_keys(key, clear, defaults_only(V, len(asked))[0])
+        top = max(budgets)
+        for seed in seeds:
+            for method in methods:
+                if method == "curiosity":
+                    chosen = curiosity(seed, top, oracle, store, run)
+                else:
+                    make = {"random": random_bodies, "designed": designed,
+                            "uncertainty": uncertainty, "map_elites": map_elites_pours}[method]
+                    chosen = make(seed, top, run)
+                for n in budgets:
+                    P, S = chosen.P[:n], chosen.S[:n]
+                    good = np.all(np.isfinite(S), axis=1)
+                    g = generalize(P[good], S[good], Settings(seed=seed), chosen.bodies(n))
+                    lik = np.array([[g.answer(q)[e][1] for e in names] for q in scenes])
+                    m = question_measures(g.predict(scenes), lik, share, key, clear,
+                                          contrast, V, of_ok)
+                    rows.append({"method": method, "seed": seed, "pours": n,
+                                 "behaviours": behaviours_seen(S), **m})
+                    print(f"{method:11} seed {seed} {n:4} pours: " + ", ".join(
+                        f"{label} {_num(m.get(k))}" for k, label in MEASURES)
+                        + f", behaviours {behaviours_seen(S)}", flush=True)
     finally:
         sim.close()
-    agree = {}
-    for a, b in itertools.combinations(paths, 2):
-        both = (decisions[a] != -1) & (decisions[b] != -1)
-        agree[(a, b)] = float((decisions[a] == decisions[b])[both].mean()) if both.any() else float("nan")
-    return rows, agree
+    return rows
 
 
-def _spread(values: list[float]) -> str:
-    v = [x for x in values if x is not None]
-    if not v:
-        return "n/a"
-    return f"{np.median(v):.3f} [{min(v):.3f}-{max(v):.3f}]"
+def _num(x) -> str:
+    return "n/a" if x is None else f"{x:.3f}"
+
+
+def summary(rows: list[dict], key: str, method: str, pours: int) -> tuple[float, float, float] | None:
+    """Median, lowest and highest of a measure over the seeds."""
+    v = [r[key] for r in rows if r["method"] == method and r["pours"] == pours
+         and r.get(key) is not None]
+    return (float(np.median(v)), float(min(v)), float(max(v))) if v else None
+
+
+def table(rows: list[dict], oracle: str, seeds: Sequence[int]) -> str:
+    """The report: one row per method and budget, medians [range]."""
+    budgets = sorted({r["pours"] for r in rows})
+    methods = [m for m in METHODS if any(r["method"] == m for r in rows)]
+    cols = [*MEASURES, ("behaviours", "behaviours seen")]
+    out = [f"# Knowledge per pour ({oracle} oracle)", "",
+           f"Written by `python -m benchmarks knowledge --oracle {oracle}`; seeds "
+           f"{', '.join(map(str, seeds))}, medians [lowest-highest]. Each method learns the "
+           "same kind of theory from its own pours only, every pour counted "
+           "(benchmarks/knowledge.py says how each chooses).", "",
+           "| method | pours | " + " | ".join(label for _, label in cols) + " |",
+           "|---|---|" + "---|" * len(cols)]
+    for n in budgets:
+        for m in methods:
+            cells = []
+            for k, _ in cols:
+                s = summary(rows, k, m, n)
+                fmt = "{:.0f}" if k == "behaviours" else "{:.3f}"
+                cells.append("n/a" if s is None else
+                             f"{fmt.format(s[0])} [{fmt.format(s[1])}-{fmt.format(s[2])}]")
+            out.append(f"| {m} | {n} | " + " | ".join(cells) + " |")
+    return "\n".join(out) + "\n"
+
+
+def plot(rows: list[dict], path: Path) -> None:
+    """Learning curves: each measure against the pours, the median of the
+    seeds with their range shaded."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    budgets = sorted({r["pours"] for r in rows})
+    methods = [m for m in METHODS if any(r["method"] == m for r in rows)]
+    fig, axes = plt.subplots(1, len(MEASURES), figsize=(4 * len(MEASURES), 3.4))
+    for ax, (k, label) in zip(axes, MEASURES):
+        for m in methods:
+            s = [summary(rows, k, m, n) for n in budgets]
+            xs = [n for n, v in zip(budgets, s) if v]
+            if not xs:
+                continue
+            med = [v[0] for v in s if v]
+            ax.plot(xs, med, marker="o", label=m)
+            ax.fill_between(xs, [v[1] for v in s if v], [v[2] for v in s if v], alpha=0.15)
+        ax.set_xlabel("pours simulated")
+        ax.set_title(label)
+    axes[0].legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+
+
+def _numbers(text: str) -> list[int]:
+    out = []
+    for part in text.split(","):
+        if "-" in part:
+            a, b = part.split("-")
+            out += list(range(int(a), int(b) + 1))
+        elif part.strip():
+            out.append(int(part))
+    return out
 
 
 def main(argv: list[str] | None = None) -> None:
-    paths = list(sys.argv[1:] if argv is None else argv)
-    if not paths:
-        raise SystemExit("give one or more theories written by pantarhei explore")
-    rows, agree = measure(paths)
-    keys = ("coverage", "accuracy", "contrast_accuracy", "calibration", "coherent")
-    print("theory  seed  pours  " + "  ".join(keys))
-    for r in rows:
-        for method in ("curiosity", "random"):
-            q = r[method]
-            print(f"{r['theory']}  {r['seed']}  {method:9}  "
-                  + "  ".join(f"{q[k]:.3f}" if q[k] is not None else "n/a" for k in keys)
-                  + f"  (contrast keys {q['contrast']})")
-    for method in ("curiosity", "random"):
-        print(f"median [range], {method}: "
-              + ", ".join(f"{k} {_spread([r[method][k] for r in rows])}" for k in keys))
-    for (a, b), s in agree.items():
-        print(f"{a} / {b}: agree on {100 * s:.1f}% of the question decisions both make")
+    from pantarhei.oracle.store import DEFAULT_STORE
+
+    p = argparse.ArgumentParser(prog="python -m benchmarks knowledge", description=__doc__,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--oracle", default="pybullet")
+    p.add_argument("--seeds", default="101-105", help="seeds, e.g. 101-105 or 101,103")
+    p.add_argument("--budgets", default="200,400,775", help="total pours, e.g. 200,400,775")
+    p.add_argument("--methods", default=",".join(METHODS))
+    p.add_argument("--store", default=DEFAULT_STORE)
+    p.add_argument("--report", default="report", help="folder for knowledge-ORACLE.md and .png")
+    args = p.parse_args(argv)
+    seeds, budgets = _numbers(args.seeds), sorted(_numbers(args.budgets))
+    methods = [m for m in args.methods.split(",") if m]
+    unknown = sorted(set(methods) - set(METHODS))
+    if unknown or not seeds or not budgets or min(budgets) < 1:
+        raise SystemExit(f"unknown method {', '.join(unknown)} (choose among {', '.join(METHODS)})"
+                         if unknown else "give seeds and budgets of at least 1 pour")
+    rows = measure(args.oracle, seeds, budgets, Path(args.store), methods)
+    text = table(rows, args.oracle, seeds)
+    print(text)
+    folder = Path(args.report)
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / f"knowledge-{args.oracle}.md").write_text(text, encoding="utf-8")
+    plot(rows, folder / f"knowledge-{args.oracle}.png")
+    print(f"written: {folder / f'knowledge-{args.oracle}.md'}, {folder / f'knowledge-{args.oracle}.png'}")
 
 
 if __name__ == "__main__":

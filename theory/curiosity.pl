@@ -23,6 +23,7 @@ file, one module per concern, in the order of the loop:
   | loop.pl     | the loop, its budget, and one step of Algorithm 1 |
   | probe.pl    | which candidate a step explores: the probes |
   | discover.pl | the discovering curiosity's A_new: candidates by novelty |
+  | teach.pl    | the learning curiosity's A_new: candidates by what they teach |
   | modify.pl   | direction and modify: new antecedents from a plane |
   | rules.pl    | qualify, the general layer, and both written as one theory |
   | oracle.pl   | the oracle at the Prolog prompt: sample, describe, simulate |
@@ -37,7 +38,7 @@ candidates, the outcome of an antecedent's simulations) is done in Python
 behind foreign predicates of the module =bridge=, which `pantarhei
 explore` and `pantarhei prolog` register (bridge.pl lists them).
 
-Two curiosities share the loop (option curiosity/1):
+Three curiosities share the loop (option curiosity/1):
 
   - `paper`: Algorithm 1 as the paper states it. The steepest plane of all
     explored antecedents is followed when its slope exceeds slope(X),
@@ -52,6 +53,11 @@ Two curiosities share the loop (option curiosity/1):
     of them (discover.pl), and each is probed before a batch is spent on
     it (probe.pl). With prior_batch(1) (the default) the last batch of the
     budget goes to the priors, the empty antecedent (loop.pl).
+  - `learn`: from the ordinary pour (the empty antecedent), explore what
+    questions say: antecedents of one proposition more than one explored,
+    up to body(N), the one whose pours would change the theory most first
+    (teach.pl); the budget is every pour, pours(N). The theory is one
+    layer: the rules of the explored antecedents (rules.pl).
 */
 
 :- use_module(default_values).
@@ -60,6 +66,7 @@ Two curiosities share the loop (option curiosity/1):
 :- use_module(curiosity/state).
 :- use_module(curiosity/modify).
 :- use_module(curiosity/discover).
+:- use_module(curiosity/teach).
 :- use_module(curiosity/probe).
 :- use_module(curiosity/loop).
 :- use_module(curiosity/rules).

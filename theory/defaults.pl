@@ -32,8 +32,16 @@ option(batch, count, range(1, 10000), none,
   "pours simulated per batch, for each explored antecedent (default: parameters + 1)").
 option(budget, count, range(1, 100000), 25,
   "the budget: the pours of this many batches, probes included (discover); this many explored antecedents (paper)").
-option(curiosity, choice, one_of(discover, paper), discover,
-  "discover: queue the candidates (moves past where a significant plane's verdict flips, neighbours, random jumps) a forest of the pours so far predicts to show something new, most novel first; paper: Algorithm 1 as the paper states it").
+option(pours, count, range(1, 1000000), 775,
+  "learn: the budget: every pour the run simulates, in batches").
+option(curiosity, choice, one_of(discover, paper, learn), discover,
+  "discover: queue the candidates (moves past where a significant plane's verdict flips, neighbours, random jumps) a forest of the pours so far predicts to show something new, most novel first; paper: Algorithm 1 as the paper states it; learn: from the ordinary pour, explore what questions say, the antecedent whose pours would change the theory most first, and write one rule layer of the explored antecedents").
+option(body, count, range(1, 4), 2,
+  "learn: the most propositions an explored antecedent says").
+option(queue, count, range(1, 100000), 64,
+  "learn: the candidates A_new keeps, the most valuable first").
+option(uncertainty, permille, range(0, none), 1000,
+  "learn: the weight of a candidate's uncertain likelihoods beside how far its answer would move").
 option(significance, permille, range(0, 1000), 50,
   "discover: the significance level of the permutation test of the planes").
 option(permutations, count, range(1, 1000000), 199,
@@ -79,8 +87,9 @@ option(progress, flag, none, true,
 
 % The options that decide an exploration's course, hashed into its run
 % key (bridge/exploration/opening.py; a saved run resumes only with the
-% same): course(Name, When), When every (every run), discover or paper
-% (runs of that curiosity) or nonzero(Option) (runs where Option is not 0:
+% same): course(Name, When), When every (every run), discover, paper or
+% learn (runs of that curiosity), other_than(C) (runs of another curiosity than
+% C) or nonzero(Option) (runs where Option is not 0:
 % those without it keep their keys). A name with several facts needs all.
 course(oracle, every).
 course(seed, every).
@@ -90,7 +99,7 @@ course(slope, paper).
 course(initial, every).
 course(breadth, every).
 course(ridge, every).
-course(curiosity, discover).
+course(curiosity, other_than(paper)).
 course(permutations, discover).
 course(resample, discover).
 course(novelty, discover).
@@ -101,6 +110,10 @@ course(probe_attempts, discover).
 course(probe_attempts, nonzero(probe)).
 course(prior_batch, discover).
 course(prior_batch, nonzero(prior_batch)).
+course(pours, learn).
+course(body, learn).
+course(queue, learn).
+course(uncertainty, learn).
 
 % The learned theory's setting/2 facts say how it was learned: the options
 % of the run's course/2 above and these, which decide what the theory says
@@ -121,8 +134,13 @@ default(pours_per_proposition, 12).
 % lies within this of one half (35% to 65% of such pours).
 default(uncertain_band_permille, 150).
 
-% a_0, the initial antecedent: an ordinary pour (from mid height, near the
-% destination's rim, steeply tilted).
+% The pours of a batch of the learning curiosity (the others': parameters + 1).
+default(learn_batch, 4).
+
+% a_0, the initial antecedent of the discovering and the paper's curiosity:
+% an ordinary pour (from mid height, near the destination's rim, steeply
+% tilted). The learning curiosity starts from the empty antecedent, the
+% ordinary pour as a question means it.
 default_initial(pour_mid_height).
 default_initial(pour_near_rim).
 default_initial(pour_steeply_tilted).

@@ -42,7 +42,7 @@ def explore(args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         raise UserError("interrupted: the state is saved after every explored antecedent; "
                         "the same command with --resume continues", exit_code=130) from None
-    why = stop_text(result, args.curiosity, args.budget)
+    why = stop_text(result, args.curiosity, args.budget, args.pours)
     print(f"explored {result['explored']} antecedents with {result['simulations']} simulations "
           f"({result['failed']} failed); stopped: {why}")
     wall, sim = result.get("wall", 0.0), result.get("timings", {}).get("oracle", 0.0)

@@ -39,6 +39,8 @@ class Session:
     test_cache: dict[str, tuple[np.ndarray, Tested | None]] = field(default_factory=dict)
     #: What the last novelty estimate knew: ((pours, antecedents), Known).
     known: tuple[tuple[int, int], Known] | None = None
+    #: The learning curiosity's model of the pours: (pours it is fitted on, Meaning).
+    teacher: tuple[int, Any] | None = None
     started: float = field(default_factory=time.monotonic)
     bar: Any = None
     timings: dict[str, float] = field(default_factory=dict)

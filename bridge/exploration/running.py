@@ -94,18 +94,20 @@ def explore(options: Options) -> dict:
     return dict(host.result)
 
 
-def budget_text(curiosity: str, budget: int) -> str:
+def budget_text(curiosity: str, budget: int, pours: int | None = None) -> str:
     """What the budget counts: explored antecedents for the paper's
     curiosity; for the discovering one, the pours of as many batches (its
-    batches and probes)."""
+    batches and probes); for the learning one, `pours` in all."""
+    if curiosity == "learn":
+        return f"{pours} pours"
     return f"{budget} rules" if curiosity == "paper" else f"the pours of {budget} batches"
 
 
-def stop_text(result: dict, curiosity: str, budget: int) -> str:
+def stop_text(result: dict, curiosity: str, budget: int, pours: int | None = None) -> str:
     """Why an exploration stopped, in words."""
     stopped = str(result.get("stopped", ""))
     return {"a_new_empty": "A_new is empty",
-            "budget": budget_text(curiosity, budget)}.get(stopped, stopped)
+            "budget": budget_text(curiosity, budget, pours)}.get(stopped, stopped)
 
 
 def _result_text(result: Any) -> str:

@@ -14,6 +14,8 @@ Prolog module `bridge`:
 * `exploration_predict`: the novelty of candidates;
 * `exploration_probe`: simulate the first pours of a candidate's batch and
   say whether they show a new, reproducible consequent;
+* `exploration_teach`: what each candidate's pours would teach the theory
+  (the learning curiosity, bridge/exploration/teaching.py);
 * `exploration_qualify`: the consequent of each explored antecedent;
 * `exploration_checkpoint`: save the state after an explored antecedent;
 * `exploration_general`: the general rules of every pour of the
@@ -82,6 +84,7 @@ class Host:
             "exploration_best_plane": self._timed("planes", self.best_plane),
             "exploration_predict": self._timed("planes", self.predict),
             "exploration_probe": self._timed("probe", self.probe),
+            "exploration_teach": self._timed("planes", self.teach),
             "exploration_qualify": self._timed("qualify", self.qualify),
             "exploration_checkpoint": self._timed("checkpoint", self.checkpoint),
             "exploration_general": self._timed("generalize", self.general),
@@ -230,6 +233,22 @@ class Host:
         return {"novelty": [f["novelty"] for f in found],
                 "queued": [f["novelty"] >= level for f in found]}
 
+    def teach(self, request: dict) -> dict:
+        """The value of each candidate for the learning curiosity
+        (bridge/exploration/teaching.py), given every pour so far and the
+        explored antecedents."""
+        from pantarhei.bridge.exploration.teaching import fitted_on, model, teaching
+
+        s = self.need_session()
+        seed = int(s.settings["seed"])
+        size = fitted_on(int(s.valid.sum()))
+        if s.teacher is None or s.teacher[0] != size:
+            s.teacher = (size, model(s.params, s.scores, seed))
+        found = teaching(s.params, s.scores, [e["antecedent"] for e in request["antecedents"]],
+                         request["candidates"], float(s.settings["uncertainty"]),
+                         int(s.settings["batch"]), seed, s.teacher[1])
+        return {"value": found.value}
+
     def qualify(self, request: dict) -> dict:
         s = self.need_session()
         entries = request["antecedents"]
@@ -273,8 +292,12 @@ class Host:
                           int(r["confidence_permille"]) / 1000)
                    for r in request["rules"]]
         progress = truthy(s.settings.get("progress", True))
+        explored = None
+        if "explored" in request:
+            explored = [(str(e["id"]), [str(p) for p in e["antecedent"]])
+                        for e in request["explored"]]
         return general_layer(learned, s.params, s.scores, int(s.settings["seed"]),
-                             lambda X: s.simulator.simulate(X, progress=progress))
+                             lambda X: s.simulator.simulate(X, progress=progress), explored)
 
     def end(self, request: dict) -> dict:
         s = self.session

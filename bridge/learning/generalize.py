@@ -73,18 +73,22 @@ class Settings:
         return int(out) if out.ndim == 0 else out
 
 
-def generalize(P: np.ndarray, S: np.ndarray, settings: Settings = Settings()) -> General:
+def generalize(P: np.ndarray, S: np.ndarray, settings: Settings = Settings(),
+               bodies: Sequence[Sequence[str]] | None = None) -> General:
     """The general rules of pours P (n x 30) with scores S (n x 9); pours
-    with a failed simulation (a NaN score) are left out."""
+    with a failed simulation (a NaN score) are left out. The rules' bodies
+    are chosen among `bodies` (and the empty one, the default's), or
+    among the askable bodies when None."""
     from threadpoolctl import threadpool_limits
 
     # one thread: the models are small, and spinning threads on a shared
     # machine cost more than they give
     with threadpool_limits(1):
-        return _generalize(P, S, settings)
+        return _generalize(P, S, settings, bodies)
 
 
-def _generalize(P: np.ndarray, S: np.ndarray, settings: Settings) -> General:
+def _generalize(P: np.ndarray, S: np.ndarray, settings: Settings,
+                among: Sequence[Sequence[str]] | None = None) -> General:
     vocab = load_vocabulary()
     P = np.atleast_2d(np.asarray(P, dtype=float))
     S = np.atleast_2d(np.asarray(S, dtype=float))
@@ -93,7 +97,10 @@ def _generalize(P: np.ndarray, S: np.ndarray, settings: Settings) -> General:
     if not len(P):
         raise ValueError("no pours to generalize from")
     Y = verdicts(S)
-    bodies = askable_bodies(settings.max_body)
+    if among is None:
+        bodies = askable_bodies(settings.max_body)
+    else:
+        bodies = list(dict.fromkeys([()] + [tuple(sorted(str(p) for p in b)) for b in among]))
     T = Meaning(P, Y, settings)(bodies)
     known = np.isfinite(T[:, 0])
     bodies, T = [b for b, k in zip(bodies, known) if k], T[known]

@@ -82,11 +82,15 @@ def superiority(rules: Sequence[Ranked]) -> list[tuple[str, str]]:
 
 
 def learn_general(P: np.ndarray, S: np.ndarray, seed: int, simulate=None,
-                  per_body: int | None = None) -> tuple[General, np.ndarray, np.ndarray]:
+                  per_body: int | None = None,
+                  bodies: Sequence[Sequence[str]] | None = None
+                  ) -> tuple[General, np.ndarray, np.ndarray]:
     """The general rules of the pours (P, S), after simulating (with
     `simulate`: parameterizations to scores) the pours the learner asks
     for where the exploration left it none (bridge/learning/gaps.py); the
-    pours it learned from are returned beside the rules."""
+    pours it learned from are returned beside the rules. The rules'
+    bodies are among `bodies` (and the empty one) when given, else among
+    the askable ones."""
     from pantarhei.bridge.learning.gaps import gap_pours
     from pantarhei.theory import defaults
 
@@ -98,23 +102,35 @@ def learn_general(P: np.ndarray, S: np.ndarray, seed: int, simulate=None,
         if len(extra):
             P = np.vstack([P, extra])
             S = np.vstack([S, np.asarray(simulate(extra), dtype=float)])
-    return generalize(P, S, Settings(seed=int(seed))), P, S
+    return generalize(P, S, Settings(seed=int(seed)), bodies), P, S
 
 
 def general_layer(learned: Sequence[Ranked], P: np.ndarray, S: np.ndarray, seed: int,
-                  simulate=None) -> dict:
+                  simulate=None, explored: Sequence[tuple[str, Sequence[str]]] | None = None
+                  ) -> dict:
     """The general layer of an exploration's pours (P, S) and the
     learner's own (simulated with `simulate`), as explore/1 writes it
     beside Algorithm 1's rules `learned`: the pours it learned from (those
     with finite scores; `own_pours`, the learner's), each rule with its
     provenance (confidence in permille: P(head | body)), and the sup/2
-    pairs that make both layers one linear order."""
+    pairs that make both layers one linear order. With `explored` (id,
+    antecedent) pairs, the learning curiosity's: the rules' bodies are the
+    explored antecedents (and the empty one), each rule names the
+    antecedent whose body it has, and no pour is the learner's own."""
     n0 = len(np.atleast_2d(P))
-    general, P, S = learn_general(P, S, seed, simulate)
+    among = None if explored is None else [tuple(sorted(b)) for _, b in explored]
+    general, P, S = learn_general(P, S, seed, simulate if explored is None else None,
+                                  bodies=among)
+    ids = {tuple(sorted(b)): str(a) for a, b in reversed(list(explored or []))}
+    rules = []
+    for g in general.rules:
+        rule = {"id": g.id, "expectation": g.expectation, "holds": g.holds,
+                "body": list(g.body), "level": g.level, "support": g.support,
+                "kept": g.kept, "confidence_permille": int(round(1000 * g.confidence))}
+        if tuple(sorted(g.body)) in ids:
+            rule["antecedent"] = ids[tuple(sorted(g.body))]
+        rules.append(rule)
     return {"pours": int(np.all(np.isfinite(np.atleast_2d(S)), axis=1).sum()),
             "own_pours": len(P) - n0,
-            "rules": [{"id": g.id, "expectation": g.expectation, "holds": g.holds,
-                       "body": list(g.body), "level": g.level, "support": g.support,
-                       "kept": g.kept, "confidence_permille": int(round(1000 * g.confidence))}
-                      for g in general.rules],
+            "rules": rules,
             "sup": [[a, b] for a, b in superiority(with_general(learned, general))]}

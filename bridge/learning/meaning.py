@@ -39,7 +39,11 @@ class Meaning:
     gradient-boosted classifier per expectation, on the 30 parameters),
     averaged over parameterizations drawn from P(.|B)."""
 
-    def __init__(self, P: np.ndarray, Y: np.ndarray, settings: Settings):
+    def __init__(self, P: np.ndarray, Y: np.ndarray, settings: Settings,
+                 iterations: int = 150):
+        """The model of pours P with verdicts Y; `iterations` rounds of
+        boosting at a learning rate of 15 / iterations (fewer, coarser
+        rounds for a quicker model)."""
         from sklearn.ensemble import HistGradientBoostingClassifier
 
         self.settings = settings
@@ -50,7 +54,8 @@ class Meaning:
             if y.all() or not y.any():
                 self.models.append(float(y[0]) if len(y) else 0.5)
                 continue
-            m = HistGradientBoostingClassifier(max_depth=3, max_iter=150, learning_rate=0.1,
+            m = HistGradientBoostingClassifier(max_depth=3, max_iter=iterations,
+                                               learning_rate=15 / iterations,
                                                min_samples_leaf=10, early_stopping=False,
                                                random_state=settings.seed)
             self.models.append(m.fit(X, y))

@@ -8,7 +8,8 @@ The entry of Algorithm 1: read the options (settings.pl), begin the
 exploration on the oracle's side, run the loop (loop.pl) from a_0 or the
 saved state (state.pl), qualify the explored antecedents, learn the
 general rules of every pour (unless general(false)) and write the learned
-theory with both layers, once (rules.pl), and end. An error ends the exploration on the
+theory with both layers, once (rules.pl), and end. The learning
+curiosity writes one layer: the rules of its explored antecedents. An error ends the exploration on the
 oracle's side too (aborted), then propagates.
 */
 
@@ -45,7 +46,9 @@ explore_loop(Settings, Begun) :-
     S = st(_, Explored, ANew, SetAside),
     length(ANew, Left),
     learned(Explored, SetAside, Settings, Stop, Left, Facts),
-    (   Settings.general == true
+    (   Settings.curiosity == learn
+    ->  learned_layer(Explored, General)
+    ;   Settings.general == true
     ->  general_layer(Facts, General)
     ;   General = []
     ),

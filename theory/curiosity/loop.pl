@@ -32,6 +32,7 @@ the priors (the budget less one batch).
 :- use_module(state).
 :- use_module(probe).
 :- use_module(discover).
+:- use_module(teach).
 :- use_module(modify).
 
 %!  loop(+S0, +Settings, -S, -Stop) is det.
@@ -64,7 +65,7 @@ next_move(S0, Settings, Move) :-
     S0 = st(_, Explored, ANew, _),
     spent(S0, Settings, Spent),
     step_cost(Settings, Most),
-    Budget is Settings.budget * Settings.batch,
+    budget(Settings, Budget),
     (   priors_pending(Explored, Settings),
         Spent + Settings.batch =< Budget,
         ( ANew == [] ; Spent + Most + Settings.batch > Budget )
@@ -85,6 +86,15 @@ priors_pending(Explored, Settings) :-
     Settings.curiosity == discover,
     Settings.prior_batch =:= 1,
     \+ memberchk(ant(_, [], _, prior), Explored).
+
+%   budget(+Settings, -Pours): the budget in pours: `pours` for the
+%   learning curiosity (every pour the run simulates), the pours of
+%   `budget` batches for the others.
+budget(Settings, Pours) :-
+    (   Settings.curiosity == learn
+    ->  Pours = Settings.pours
+    ;   Pours is Settings.budget * Settings.batch
+    ).
 
 %   spent(+State, +Settings, -Pours): the pours spent so far: a batch per
 %   iteration and a probe per candidate set aside after its probe.
@@ -122,21 +132,27 @@ step(S0, Settings, st(I1, Explored1, ANew, SetAside)) :-
     explored(Cand, Explored, Id, Explored1),
     call_bridge(exploration_simulate, _{id:Id, antecedent:Props, iteration:I1,
                                         attempt:Attempt}, Sim),
-    maplist(entry, Explored1, Entries),
-    call_bridge(exploration_best_plane, _{antecedents:Entries}, Best),
-    a_new(Best, Settings, Explored1, Id, Cand, Rest, SetAside, I1, Added, ANew),
+    (   Settings.curiosity == learn
+    ->  teach_queue(Explored1, Id, Props, Rest, Settings, Added, ANew),
+        length(ANew, Left),
+        learn_trace(I1-Id, Cand, Sim, Added, ANew, Trace)
+    ;   maplist(entry, Explored1, Entries),
+        call_bridge(exploration_best_plane, _{antecedents:Entries}, Best),
+        a_new(Best, Settings, Explored1, Id, Cand, Rest, SetAside, I1, Added, ANew),
+        length(ANew, Left),
+        step_trace(Best, Settings, I1-Id, Cand, Sim, Probes, Added, Left, Trace)
+    ),
     S1 = st(I1, Explored1, ANew, SetAside),
     format(string(State), "~k", [S1]),
-    length(ANew, Left),
-    step_trace(Best, Settings, I1-Id, Cand, Sim, Probes, Added, Left, Trace),
     call_bridge(exploration_checkpoint, _{iteration:I1, state:State, trace:Trace,
                                           explored:I1, a_new:Left}, _).
 
 %   explored(+Cand, +Explored, -Id, -Explored1): Explored with the
 %   candidate added as the next antecedent, Id (a<N>); for more pours of an
-%   explored antecedent, its Id, and Explored as it is.
+%   explored antecedent (more(Id, K), again(Id)), its Id, and Explored as
+%   it is.
 explored(cand(Props, Parent, Via), Explored, Id, Explored1) :-
-    (   Via = more(Id, _)
+    (   ( Via = more(Id, _) ; Via = again(Id) )
     ->  Explored1 = Explored
     ;   length(Explored, N0),
         N is N0 + 1,
@@ -173,6 +189,18 @@ step_trace(Best, Settings, I1-Id, cand(Props, Parent, Via), Sim, Probes, Added, 
         Trace = Trace0.put(probes, ProbeTrace)
     ;   Trace = Trace0
     ).
+
+%   learn_trace(+I-Id, +Cand, +Sim, +Added, +ANew, -Trace): a step of the
+%   learning curiosity in the trace: what was explored, its simulations,
+%   the children queued and the head of A_new (the next to explore).
+learn_trace(I1-Id, cand(Props, Parent, Via), Sim, Added, ANew, Trace) :-
+    findall(P, member(cand(P, _, _), Added), AddedProps),
+    format(string(ViaText), "~w", [Via]),
+    length(ANew, Left),
+    (   ANew = [cand(Next, _, _)|_] -> true ; Next = [] ),
+    Trace = _{iteration:I1, id:Id, antecedent:Props, parent:Parent, via:ViaText,
+              simulations:Sim.simulations, failed:Sim.failed,
+              added:AddedProps, next:Next, a_new:Left}.
 
 %   best_trace(+Best, +Settings, -BestT): the best plane in the trace: its
 %   antecedent, expectation, slope and mean score, the five largest

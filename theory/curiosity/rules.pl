@@ -2,6 +2,7 @@
           [ learned/6,                % +Explored, +SetAside, +Settings, +Stop, +Left, -Facts
             rule_facts/3,             % +Explored, +Qualified, -Facts
             general_layer/2,          % +Facts, -General
+            learned_layer/2,          % +Explored, -Layer
             write_theory/4            % +File, +Settings, +Facts, +General
           ]).
 /** <module> Qualify and the learned theory
@@ -32,7 +33,10 @@ learned(Explored, SetAside, Settings, Stop, Left, Facts) :-
     call_bridge(exploration_qualify, _{antecedents:Entries, mode:Settings.qualify}, Reply),
     setting_facts(Settings, Reply, Stop, Explored, Left, SettingFacts),
     findall(set_aside(I, K, P), ( member(aside(I, K, Ps), SetAside), member(P, Ps) ), AsideFacts),
-    rule_facts(Explored, Reply.antecedents, RuleFacts),
+    (   Settings.curiosity == learn
+    ->  RuleFacts = []                  % its one layer: learned_layer/2
+    ;   rule_facts(Explored, Reply.antecedents, RuleFacts)
+    ),
     append([SettingFacts, AsideFacts, RuleFacts], Facts).
 
 %   setting_facts(+Settings, +Reply, +Stop, +Explored, +Left, -Facts):
@@ -120,6 +124,25 @@ general_layer(Facts, General) :-
               memberchk(provenance(Id, confidence_permille, C), Facts)
             ), Rules),
     call_bridge(exploration_general, _{rules:Rules}, Reply),
+    layer_facts(Reply, General).
+
+%!  learned_layer(+Explored:list, -Layer:list) is det.
+%
+%   Layer are the facts of the learning curiosity's theory, one layer
+%   (exploration_general with the explored antecedents): per expectation,
+%   the rules of the explored antecedents whose likelihoods the rest of
+%   the theory does not give, each naming its antecedent, with every pour
+%   of the run pooled for the likelihoods; the setting/2 facts of how many
+%   pours they rest on, and their sup/2 facts.
+learned_layer(Explored, Layer) :-
+    maplist(entry, Explored, Entries),
+    call_bridge(exploration_general, _{rules:[], explored:Entries}, Reply),
+    layer_facts(Reply, Layer).
+
+%   layer_facts(+Reply, -Facts): the rules of exploration_general's
+%   reply as facts, after the setting/2 facts of their pours and before
+%   their sup/2 facts.
+layer_facts(Reply, General) :-
     length(Reply.rules, N),
     maplist(general_rule_facts, Reply.rules, RuleFacts),
     findall(sup(A, B), member([A, B], Reply.sup), Sups),
@@ -144,7 +167,12 @@ general_rule_facts(R, Facts) :-
                provenance(Id, level, R.level),
                provenance(Id, support, R.support),
                provenance(Id, kept, R.kept),
-               provenance(Id, confidence_permille, R.confidence_permille) ] ], Facts).
+               provenance(Id, confidence_permille, R.confidence_permille) ],
+             Antecedent ], Facts),
+    (   get_dict(antecedent, R, A)
+    ->  Antecedent = [provenance(Id, antecedent, A)]
+    ;   Antecedent = []
+    ).
 
 %!  write_theory(+File, +Settings:dict, +Facts:list, +General:list) is det.
 %
@@ -160,7 +188,7 @@ write_theory(File, Settings, Facts, General) :-
     setup_call_cleanup(
         open(Tmp, write, Out, [encoding(utf8)]),
         ( write_facts(Out, Settings, Facts),
-          write_general(Out, General) ),
+          write_general(Out, Settings, General) ),
         close(Out)),
     rename_file(Tmp, File).
 
@@ -189,10 +217,28 @@ write_facts(Out, Settings, Facts) :-
                write_fact(Out, F)
            )).
 
-%   write_general(+Out, +General): the general layer after a blank line,
-%   its header, then each fact.
-write_general(_, []) :- !.
-write_general(Out, General) :-
+%   write_general(+Out, +Settings, +General): the general layer (the
+%   learning curiosity's one layer) after a blank line, its header, then
+%   each fact.
+write_general(_, _, []) :- !.
+write_general(Out, Settings, General) :-
+    Settings.curiosity == learn,
+    !,
+    forall(member(Line, [ "",
+                          "% The rules curiosity learned: per expectation, a default (the",
+                          "% ordinary pour, the empty antecedent) and the explored antecedents",
+                          "% whose likelihoods the rest of the theory does not give",
+                          "% (bridge/learning/generalize.py over the explored antecedents).",
+                          "% provenance(Id, antecedent, A): the explored antecedent of its body;",
+                          "% support: the pours whose description holds the body; kept: how",
+                          "% many of them keep the head; confidence_permille: P(head | body), the",
+                          "% share of the pours sampled for the body (the rest an ordinary pour)",
+                          "% that keep the head, every pour of the run pooled to estimate it.",
+                          "% sup/2 below orders the rules that one scene can hold (see",
+                          "% bridge/learning/layers.py)." ]),
+           format(Out, "~w~n", [Line])),
+    forall(member(F, General), write_fact(Out, F)).
+write_general(Out, _, General) :-
     forall(member(Line, [ "",
                           "% General rules, learned from every pour of the exploration",
                           "% and the learner's own pours (bridge/learning/gaps.py), by",

@@ -68,6 +68,8 @@ course_names(S, Nonzero, Names) :-
 course_holds(every, _, _).
 course_holds(discover, _, S) :- get_dict(curiosity, S, discover).
 course_holds(paper, _, S) :- get_dict(curiosity, S, paper).
+course_holds(learn, _, S) :- get_dict(curiosity, S, learn).
+course_holds(other_than(C), _, S) :- \+ get_dict(curiosity, S, C).
 course_holds(nonzero(Option), Nonzero, S) :-
     (   Nonzero == true -> get_dict(Option, S, V), V =\= 0 ; true ).
 
@@ -138,9 +140,12 @@ setting_value(Key, Options, Curiosity, Value) :-
 %   unsaid(+Key, +Default, +Curiosity, -Value): the value of an option not
 %   given: the table's default, or one set otherwise (the pours of a
 %   batch, a_0, the learned theory).
+unsaid(batch, none, learn, N) :- !,
+    default(learn_batch, N).
 unsaid(batch, none, _, N) :- !,
     aggregate_all(count, parameter(_, _, _, _, _), NParams),
     N is NParams + 1.
+unsaid(initial, none, learn, []) :- !.
 unsaid(initial, none, _, Initial) :- !,
     default_initial(Initial).
 unsaid(out, _, _, File) :- !,

@@ -1,0 +1,162 @@
+"""What a batch of pours would teach the theory: the learning curiosity's
+choice of the next antecedent (option curiosity(learn),
+theory/curiosity/teach.pl).
+
+The learning curiosity explores what questions say: the ordinary pour
+first (the empty antecedent), then antecedents of one proposition more
+than one explored, up to `body` propositions, each meaning what a question
+with the same words means (what it says; the rest the ordinary pour). The
+theory it writes has a rule for an explored antecedent where that
+antecedent's likelihoods depart from what the rest of the theory answers
+(bridge/learning/generalize.py over the explored bodies), so the pours to
+simulate next are those that would change the theory most.
+
+For each candidate B, with every pour so far pooled in a model of the
+pours (`Meaning`: a gradient-boosted classifier per expectation, averaged
+over parameterizations drawn for B), M_e(B) is the model's likelihood of
+e for B, and T_e(B) what the theory answers now: M_e of the largest
+explored antecedent that B holds (its deciding rule). B's value is
+
+    asked(B) * (departure(B) + uncertainty * sum_e sd_e(B) * drop(n_B))
+
+where departure(B) = sum_e |M_e(B) - T_e(B)| is how far B's answer would
+move from the one it gets now (a proposition that changes what happens,
+or a pair whose propositions interact: what one proposition at a time
+cannot show), and the second term is how much a batch of b more pours
+would narrow the standard error of B's likelihoods: with n_B pours in B's
+support, sd_e(B) = sqrt(q (1 - q)) for q = (n_B M_e(B) + 1) / (n_B + 2)
+(the model's likelihood, drawn to one half where B has few pours of its
+own: the model's guess for an antecedent it never saw is no knowledge),
+and drop(n) = 1/sqrt(n + 1) - 1/sqrt(n + b + 1), large for an antecedent
+without pours and small once it has many. asked(B) is how often B
+is asked, as the learner weighs the bodies it answers
+(generalize.Settings: the empty antecedent most, a proposition alone 1,
+a pair less): what one proposition does is learned from the proposition
+alone, before the pairs that hold it. An explored antecedent
+is a candidate for another batch by the second term alone (its departure
+is its rule's). The value is 0 for no candidate only where everything is
+known.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Sequence
+
+import numpy as np
+
+from pantarhei.oracle.generative import in_support
+from pantarhei.theory.lexicon import load_vocabulary
+
+#: Parameterizations drawn per candidate pair to average the model over
+#: (4 times as many for one proposition, 16 for the empty antecedent).
+DRAWS = 16
+#: Rounds of boosting of the model of the pours (the learner's takes 150).
+ROUNDS = 50
+#: The model is fitted again when the pours have grown by this factor
+#: since it was fitted (on the first `fitted_on(n)` of n pours, so that a
+#: resumed run fits the model an uninterrupted one had).
+GROWTH = 1.2
+
+
+def fitted_on(n: int) -> int:
+    """How many of the first n pours the model is fitted on: the largest of
+    8, 8 x GROWTH, 8 x GROWTH^2, ... (rounded up) that is at most n; n
+    below 8."""
+    m, k = 8, 8.0
+    if n < m:
+        return n
+    while True:
+        k *= GROWTH
+        nxt = int(np.ceil(k))
+        if nxt > n:
+            return m
+        m = nxt
+
+
+@dataclass(frozen=True)
+class Teaching:
+    """The value of each candidate, and its parts."""
+    value: list[float]
+    departure: list[float]
+    uncertainty: list[float]
+
+
+def deciding(body: Sequence[str], explored: Sequence[Sequence[str]]) -> int | None:
+    """The index of the explored antecedent that decides `body` in the
+    theory: the largest one that `body` holds (the first of equals); None
+    when none does (before a_0 is explored)."""
+    b = set(body)
+    best, size = None, -1
+    for i, e in enumerate(explored):
+        if set(e) <= b and len(e) > size:
+            best, size = i, len(e)
+    return best
+
+
+def model(P: np.ndarray, S: np.ndarray, seed: int):
+    """The model of the pours the value is estimated with: a Meaning of the
+    first `fitted_on(n)` of the n pours (P, S) whose simulation did not
+    fail; None when there are none."""
+    from threadpoolctl import threadpool_limits
+
+    from pantarhei.bridge.evaluation.measures import verdicts
+    from pantarhei.bridge.learning.generalize import Settings
+    from pantarhei.bridge.learning.meaning import Meaning
+
+    P, S = _valid(P, S)
+    n = fitted_on(len(P))
+    if not n:
+        return None
+    with threadpool_limits(1):
+        return Meaning(P[:n], verdicts(S[:n]), Settings(seed=int(seed), draws=DRAWS), ROUNDS)
+
+
+def _valid(P: np.ndarray, S: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    P = np.atleast_2d(np.asarray(P, dtype=float))
+    S = np.atleast_2d(np.asarray(S, dtype=float))
+    ok = np.all(np.isfinite(S), axis=1)
+    return P[ok], S[ok]
+
+
+def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
+             candidates: Sequence[Sequence[str]], weight: float, batch: int,
+             seed: int, meaning=None) -> Teaching:
+    """The value of exploring each candidate next with a batch of `batch`
+    pours, given the pours so far (P, S; failed ones are left out) and the
+    explored antecedents; `meaning` is model(P, S, seed), when the caller
+    keeps it."""
+    from threadpoolctl import threadpool_limits
+
+    from pantarhei.bridge.learning.generalize import Settings
+
+    if meaning is None:
+        meaning = model(P, S, seed)
+    P, S = _valid(P, S)
+    cands = [tuple(sorted(str(p) for p in c)) for c in candidates]
+    done = [tuple(sorted(str(p) for p in e)) for e in explored]
+    if not cands:
+        return Teaching([], [], [])
+    bodies = list(dict.fromkeys(done + cands))
+    index = {b: i for i, b in enumerate(bodies)}
+    if meaning is not None:
+        with threadpool_limits(1):
+            M = np.nan_to_num(meaning(bodies), nan=0.5)
+    else:                       # every pour failed: nothing is known
+        M = np.full((len(bodies), len(load_vocabulary().expectations)), 0.5)
+    learner = Settings()
+    asked = {0: learner.default_weight, 1: 1.0}
+    value, dep, unc = [], [], []
+    for c in cands:
+        m = M[index[c]]
+        d = deciding(c, done)
+        t = M[index[done[d]]] if d is not None else np.full_like(m, 0.5)
+        n = int(in_support(P, c).sum()) if len(P) else 0
+        departure = float(np.abs(m - t).sum())
+        q = (n * m + 1) / (n + 2)
+        drop = 1 / np.sqrt(n + 1) - 1 / np.sqrt(n + batch + 1)
+        uncertainty = float(np.sqrt(q * (1 - q)).sum() * drop)
+        dep.append(round(departure, 6))
+        unc.append(round(uncertainty, 6))
+        value.append(round(asked.get(len(c), learner.pair_weight)
+                           * (departure + weight * uncertainty), 6))
+    return Teaching(value, dep, unc)

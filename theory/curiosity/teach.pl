@@ -1,0 +1,81 @@
+:- module(curiosity_teach,
+          [ teach_queue/7,            % +Explored, +Id, +Props, +Rest, +Settings, -Added, -Queue
+            children/4                % +Props, +Most, +Exclude, -New
+          ]).
+/** <module> The learning curiosity's queue A_new
+
+The learning curiosity (option curiosity(learn)) explores what questions
+say: a_0 is the ordinary pour (the empty antecedent), and each explored
+antecedent makes candidates of itself with one proposition more
+(children/4), up to `body` propositions. An explored antecedent means what
+a question with the same words means, so its pours are those a question
+draws, and the rule written for it is one a question can use.
+
+After each batch every candidate, the new ones, those already in A_new
+and every explored antecedent (for another batch, again(Id)), is valued by
+what its pours would teach the theory (exploration_teach,
+bridge/exploration/teaching.py): how far its answer would move from the
+one the theory gives it now, and how uncertain its likelihoods still are.
+A_new keeps the `queue` most valuable, the most valuable first; the
+candidates a step values are so at most `queue`, the new children and the
+explored antecedents.
+*/
+
+:- use_module(library(apply)).
+:- use_module(library(lists)).
+:- use_module(library(pairs)).
+:- use_module('../vocabulary').
+:- use_module('../validity').
+:- use_module(bridge).
+:- use_module(state).
+
+%!  teach_queue(+Explored, +Id, +Props, +Rest, +Settings:dict, -Added:list, -Queue:list) is det.
+%
+%   The learning step after the antecedent Id (Props) was explored: the
+%   candidates are its children (children/4; not explored, not in Rest),
+%   Rest (A_new without what was just explored) and each explored
+%   antecedent for another batch (again(Id)); each is valued
+%   (exploration_teach) and Queue holds the `queue` most valuable with a
+%   value above 0, the most valuable first (ties in the order above).
+%   Added are Queue's new children, in its order.
+teach_queue(Explored, Id, Props, Rest, Settings, Added, Queue) :-
+    exclusions(Explored, Rest, Exclude),
+    children(Props, Settings.body, Exclude, Kids),
+    findall(cand(P, Id, near), member(P, Kids), New),
+    exclude([cand(_, _, again(_))]>>true, Rest, Waiting),
+    findall(cand(P, A, again(A)), member(ant(A, P, _, _), Explored), Again),
+    append([New, Waiting, Again], Pool),
+    (   Pool == []
+    ->  Added = [], Queue = []
+    ;   maplist(entry, Explored, Entries),
+        findall(P, member(cand(P, _, _), Pool), Cands),
+        call_bridge(exploration_teach, _{antecedents:Entries, candidates:Cands}, Reply),
+        findall(Key-C, ( nth1(K, Pool, C), nth1(K, Reply.value, V), V > 0, Key is -V ),
+                Keyed),
+        keysort(Keyed, Sorted),
+        pairs_values(Sorted, All),
+        length(All, N),
+        Keep is min(N, Settings.queue),
+        length(Queue, Keep),
+        append(Queue, _, All),
+        include([C]>>memberchk(C, New), Queue, Added)
+    ).
+
+%!  children(+Props:list, +Most:integer, -Exclude:list, -New:list) is det.
+%
+%   New are the valid antecedents of Props with one proposition added,
+%   from a dimension Props does not use, none in Exclude, none of more than
+%   Most propositions; sorted, in the order of the vocabulary's
+%   propositions.
+children(Props0, Most, Exclude, New) :-
+    sort(Props0, Props),
+    length(Props, N),
+    (   N >= Most
+    ->  New = []
+    ;   findall(Dim, ( member(P, Props), proposition(P, Dim, _, _) ), Used),
+        findall(P1, ( proposition(Q, Dim, _, _), \+ memberchk(Dim, Used),
+                      sort([Q|Props], P1),
+                      \+ memberchk(P1, Exclude), valid_antecedent(P1) ),
+                All),
+        list_to_set(All, New)
+    ).
