@@ -76,12 +76,15 @@ def _split(text: str | None) -> list[str]:
 def ask(args: argparse.Namespace) -> int:
     from pantarhei.bridge.theories import loading
 
+    for flag in ("question", "props", "why"):
+        if getattr(args, flag) is not None:
+            utf8(getattr(args, flag), "the question" if flag == "question" else f"--{flag}")
     if args.props is not None and args.question:
         raise UserError("give the scene in words or with --props, not both")
     if args.why is not None and not args.why.strip():
         raise UserError("--why: give an expectation E or neg(E) (see `pantarhei vocab`)")
     if args.props is None and args.question in (None, "-"):    # one question a line
-        return _ask_each_line(args, loading.load(args.theory, pouring=True), sys.stdin)
+        return _ask_each_line(args, loading.load(args.theory, pouring=True), sys.stdin.buffer)
     if args.props is not None:
         props = known(_split(args.props))
         if not props:
@@ -90,6 +93,17 @@ def ask(args: argparse.Namespace) -> int:
         props = _understood(args.question)
     props = require_valid(props)
     return answer(loading.load(args.theory, pouring=True), props, args.why, args.json)
+
+
+def utf8(text: bytes | str, what: str) -> str:
+    """`text` as a str; UserError naming the first byte that is not UTF-8
+    (an argument holds it as a surrogate escape)."""
+    if isinstance(text, str):
+        text = text.encode("utf-8", "surrogateescape")
+    try:
+        return text.decode("utf-8")
+    except UnicodeDecodeError as e:
+        raise UserError(f"{what}: byte {text[e.start]:#04x} is not UTF-8: give text in UTF-8") from None
 
 
 def _understood(question: str) -> list[str]:
@@ -104,19 +118,23 @@ def _understood(question: str) -> list[str]:
 
 
 def _ask_each_line(args: argparse.Namespace, theory, lines) -> int:
-    """Answer each question of `lines` as it comes (a blank line or one
-    starting with # is skipped); a question not understood gets its one
-    line on stderr and the next is read. Exit 0 if every one was answered."""
+    """Answer each question of `lines` (bytes, UTF-8) as it comes (a blank
+    line or one starting with # is skipped); a question not understood, or
+    not UTF-8, gets its one line on stderr and the next is read. With
+    --json, each answer is one line of JSON (JSON Lines) that names its
+    line and question. Exit 0 if every one was answered."""
     asked = failed = 0
-    for number, line in enumerate(lines, 1):
-        question = line.strip()
-        if not question or question.startswith("#"):
+    for number, raw in enumerate(lines, 1):
+        question = raw.strip()
+        if not question or question.startswith(b"#"):
             continue
-        if asked:
+        if asked and not args.json:
             print()
         asked += 1
         try:
-            answer(theory, require_valid(_understood(question)), args.why, args.json)
+            question = utf8(question, "the question")
+            answer(theory, require_valid(_understood(question)), args.why, args.json,
+                   json_line={"line": number, "question": question})
         except UserError as e:
             failed += 1
             print(f"pantarhei ask: line {number}: {e}", file=sys.stderr, flush=True)
@@ -127,10 +145,18 @@ def _ask_each_line(args: argparse.Namespace, theory, lines) -> int:
     return 1 if failed else 0
 
 
-def answer(theory, props: list[str], why: str | None = None, as_json: bool = False) -> int:
+def answer(theory, props: list[str], why: str | None = None, as_json: bool = False,
+           json_line: dict | None = None) -> int:
     """Print what the theory says of the scene `props`, or with `why` (a
-    literal) the whole argument for it; as JSON with `as_json`."""
+    literal) the whole argument for it; as JSON with `as_json`, on one line
+    beginning with the keys of `json_line` when it is given (JSON Lines)."""
     from pantarhei.bridge.reasoning import answers
+
+    def print_json(obj: dict) -> None:
+        if json_line is None:
+            print(json.dumps(obj, indent=1))
+        else:
+            print(json.dumps({**json_line, **obj}, separators=(",", ":")))
 
     scene = props
     if why:
@@ -139,17 +165,17 @@ def answer(theory, props: list[str], why: str | None = None, as_json: bool = Fal
         (lit,) = check_goals([why], theory, reachable=False)
         words = answers.explain(theory, scene, lit)
         if as_json:
-            print(json.dumps({"understood": props, "literal": lit, "why": words}, indent=1))
+            print_json({"understood": props, "literal": lit, "why": words})
         else:
             _print_scene(props, glosses=False)
             print(words.replace("; ", "\n  "))
         return 0
     outcomes = answers.what_happens(theory, scene)
     if as_json:
-        print(json.dumps({"understood": props, "theory": theory.source, "outcomes": {
+        print_json({"understood": props, "theory": theory.source, "outcomes": {
             o.expectation: {"verdict": o.value, "likelihood": o.likelihood, "rule": o.rule,
                             "because": _because(theory, o)}
-            for o in outcomes}}, indent=1))
+            for o in outcomes}})
         return 0
     from pantarhei.theory.lexicon import load_vocabulary
 
@@ -215,7 +241,8 @@ def _print_scene(props: list[str], glosses: bool) -> None:
 def plan(args: argparse.Namespace) -> int:
     from pantarhei.bridge.theories import loading
 
-    goals = _split(args.goal)
+    goals = _split(utf8(args.goal, "--goal"))
+    utf8(args.given, "--given")
     if not goals:
         raise UserError("--goal: give at least one goal literal")
     given = known(_split(args.given))

@@ -8,6 +8,7 @@ as Prolog text where a whole program is written out.
 """
 from __future__ import annotations
 
+import sys
 import threading
 from functools import lru_cache
 from typing import Any, Iterator
@@ -24,10 +25,14 @@ class Engine:
     theories with errors turned into UserError (one line)."""
 
     def __init__(self) -> None:
-        try:
+        argv = sys.argv     # pyswip encodes it as UTF-8 on import, and never uses it:
+        sys.argv = [a.encode("utf-8", "surrogateescape").decode("utf-8", "replace") for a in argv]
+        try:                # an argument that is not UTF-8 is not a missing SWI-Prolog
             from pyswip import Prolog
         except Exception:  # ImportError, or pyswip's own "SWI-Prolog not found"
             raise MissingEngine(SWIPL_MISSING) from None
+        finally:
+            sys.argv = argv
         self._prolog = Prolog()
         self._thread = threading.get_ident()
         #: The digest of the theory text that defeasible:load_theory/1 last

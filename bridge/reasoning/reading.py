@@ -172,14 +172,21 @@ def understand(question: str) -> list[str]:
     tokens = _tokens(question)
     accepted = _read(tokens, lex)
     cues = [i for i, t in enumerate(tokens) if t.word in _NEGATION_STEMS]
+    ends = _scope_ends(tokens)
+    # per position: how many words before it say something (neither filler
+    # nor negation); the positions read, negations left out
+    saying = [0]
+    for t in tokens:
+        saying.append(saying[-1] + (t.word not in _IGNORED and t.word not in _NEGATION_STEMS))
+    read = sorted(j for _, positions in accepted for j in positions
+                  if tokens[j].word not in _NEGATION_STEMS)
     for i in cues:
-        scope = _scope(tokens, i)
-        if any(tokens[j].word not in _IGNORED for j in scope) and \
-                not any(scope & positions for _, positions in accepted):
-            phrase = " ".join(tokens[j].raw for j in (i, *sorted(scope)))
+        k = bisect_left(read, i + 1)
+        if saying[ends[i]] > saying[i + 1] and not (k < len(read) and read[k] < ends[i]):
+            phrase = " ".join(tokens[j].raw for j in (i, *sorted(_scope(tokens, i, ends))))
             raise UserError(f"understood nothing that \"{phrase}\" excludes: describe the scene "
                             f"with the words of `pantarhei vocab`, or give --props P1,P2")
-    covered = set().union(*(_scope(tokens, i) for i in cues))
+    covered = _covered(tokens, cues, ends)
     said: dict[str, list[str]] = {}
     negated: dict[str, list[str]] = {}
     for name, positions in accepted:
@@ -214,13 +221,13 @@ def _read(tokens: list[_Token], lex: _Lexicon) -> list[tuple[str, frozenset[int]
     names given outright, then the readings with the most words, then the
     closest together, each word read once."""
     stages = _stages(tokens)
-    roles = _roles(tokens, lex)
+    noun = _Nouns(tokens, _roles(tokens, lex), lex)
     found = [(t.word, frozenset({i})) for i, t in enumerate(tokens) if t.word in lex.slots]
     claimed = set().union(*(p for _, p in found))
     for words, positions in sorted(_occurrences(tokens, lex), key=_closest):
         if positions & claimed:
             continue
-        name = _resolve(lex.phrases[words], positions, stages, roles, tokens, lex)
+        name = _resolve(lex.phrases[words], positions, stages, noun, lex)
         if name is not None:
             found.append((name, positions))
             claimed |= positions
@@ -230,21 +237,34 @@ def _read(tokens: list[_Token], lex: _Lexicon) -> list[tuple[str, frozenset[int]
 def _occurrences(tokens: list[_Token], lex: _Lexicon):
     """(value words, their positions) for every reading the question holds:
     anchored on each of its words, the nearest of each other in its clause."""
-    present = {t.word for t in tokens}
+    where: dict[str, list[int]] = {}              # word -> its positions, in order
+    for i, t in enumerate(tokens):
+        where.setdefault(t.word, []).append(i)
     for words in lex.phrases:
-        if not present.issuperset(words):
+        if not all(w in where for w in words):
             continue
-        for a, t in enumerate(tokens):
-            if t.word not in words:
-                continue
+        for a in sorted({i for w in words for i in where[w]}):
+            t = tokens[a]
             at = {t.word: a}
             for w in words:
-                near = [i for i, u in enumerate(tokens) if u.word == w and u.clause == t.clause]
-                if w != t.word and near:
-                    at[w] = min(near, key=lambda i: (abs(i - a), i))
+                if w != t.word:
+                    near = _nearest(where[w], a, tokens, t.clause)
+                    if near is not None:
+                        at[w] = near
             span = max(at.values()) - min(at.values()) + 1
             if len(at) == len(words) and span - len(words) <= _MAX_GAP:
                 yield words, frozenset(at.values())
+
+
+def _nearest(positions: list[int], a: int, tokens: list[_Token], clause: int) -> int | None:
+    """The position of `positions` (in order) in `clause` nearest to `a`,
+    the earlier of two as near; None if there is none. Words of one clause
+    stand together, so the nearest is beside where `a` would go, or the
+    nearest in the clause on that side."""
+    k = bisect_left(positions, a)
+    near = [positions[j] for j in (k - 1, k)
+            if 0 <= j < len(positions) and tokens[positions[j]].clause == clause]
+    return min(near, key=lambda i: (abs(i - a), i)) if near else None
 
 
 def _closest(reading: tuple[tuple[str, ...], frozenset[int]]) -> tuple:
@@ -253,7 +273,7 @@ def _closest(reading: tuple[tuple[str, ...], frozenset[int]]) -> tuple:
 
 
 def _resolve(names: frozenset[str], positions: frozenset[int], stages: list[str],
-             roles: dict[int, str], tokens: list[_Token], lex: _Lexicon) -> str | None:
+             noun: "_Nouns", lex: _Lexicon) -> str | None:
     """The one proposition of `names` that the words at `positions` say in
     their stage and of their noun, or None."""
     stage = stages[min(positions)]
@@ -261,8 +281,8 @@ def _resolve(names: frozenset[str], positions: frozenset[int], stages: list[str]
             (_POSE[stage], _MOVE[stage])]
     of_bodies = sorted(n for n in names if lex.slots[n][0] == "object")
     if len(of_bodies) > 1:
-        noun = _noun(tokens, min(positions), max(positions), roles, lex)
-        of_bodies = [n for n in of_bodies if lex.slots[n][1] == noun]
+        body = noun(min(positions), max(positions))
+        of_bodies = [n for n in of_bodies if lex.slots[n][1] == body]
     fits += of_bodies
     return fits[0] if len(fits) == 1 else None
 
@@ -271,12 +291,16 @@ def _stages(tokens: list[_Token]) -> list[str]:
     """The stage each word speaks of (see the module's docstring)."""
     out: list[str] = []
     stage = "pour"
-    for clause in sorted({t.clause for t in tokens}):
-        at = [i for i, t in enumerate(tokens) if t.clause == clause]
+    clauses: dict[int, list[int]] = {}          # clause -> its positions, in order
+    for i, t in enumerate(tokens):
+        clauses.setdefault(t.clause, []).append(i)
+    for clause in sorted(clauses):
+        at = clauses[clause]
         marks = [i for i in at if tokens[i].word in _MARKER_STEMS]
         current = _next(tokens[marks[0]].word, stage) if marks else stage
+        marked = set(marks[1:])
         for i in at:
-            if marks and i != marks[0] and i in marks:
+            if i in marked:
                 current = _next(tokens[i].word, current)
             out.append(current)
         stage = current
@@ -306,22 +330,38 @@ def _roles(tokens: list[_Token], lex: _Lexicon) -> dict[int, str]:
     return roles
 
 
-def _noun(tokens: list[_Token], first: int, last: int, roles: dict[int, str],
-          lex: _Lexicon) -> str | None:
-    """The body a value word qualifies: the noun it stands before, through
-    other value words ("a light, slippery bowl"), or else the nearest noun
-    before it in its clause ("the liquid is very light")."""
-    for j in range(last + 1, len(tokens)):
-        if j in roles:
-            return roles[j]
-        if tokens[j].word not in _BETWEEN and tokens[j].word not in lex.placeable:
-            break
-    for j in range(first - 1, -1, -1):
-        if tokens[j].clause != tokens[first].clause:
-            break
-        if j in roles:
-            return roles[j]
-    return None
+class _Nouns:
+    """`noun(first, last)`: the body the value words from `first` to `last`
+    qualify: the noun they stand before, through other value words ("a
+    light, slippery bowl"), or else the nearest noun before them in their
+    clause ("the liquid is very light"). Where each search ends is found
+    once for the whole question, so that a long one is read in linear time."""
+
+    def __init__(self, tokens: list[_Token], roles: dict[int, str], lex: _Lexicon):
+        n = len(tokens)
+        self.roles = roles
+        # stop[j]: the first position from j on that is a noun or a word
+        # that cannot stand between a value word and its noun
+        self.stop = [n] * (n + 1)
+        for j in range(n - 1, -1, -1):
+            passes = j not in roles and (tokens[j].word in _BETWEEN or tokens[j].word in lex.placeable)
+            self.stop[j] = self.stop[j + 1] if passes else j
+        # before[i]: the nearest noun before i in its clause, or None
+        self.before: list[int | None] = []
+        last = None
+        for i, t in enumerate(tokens):
+            if last is not None and tokens[last].clause != t.clause:
+                last = None
+            self.before.append(last)
+            if i in roles:
+                last = i
+
+    def __call__(self, first: int, last: int) -> str | None:
+        j = self.stop[last + 1]
+        if j in self.roles:
+            return self.roles[j]
+        b = self.before[first]
+        return self.roles[b] if b is not None else None
 
 
 def _refuse_unplaced(question: str, tokens: list[_Token], accepted, lex: _Lexicon) -> None:
@@ -330,11 +370,10 @@ def _refuse_unplaced(question: str, tokens: list[_Token], accepted, lex: _Lexico
     something else was read, words the vocabulary does not know (a question
     with nothing understood is the caller's to refuse)."""
     read = set().union(*(p for _, p in accepted))
-    words = []
+    words: dict[str, None] = {}           # in order, each once
     for i, t in enumerate(tokens):
-        if i not in read and (t.word in lex.placeable or (accepted and t.word not in lex.known)) \
-                and t.raw not in words:
-            words.append(t.raw)
+        if i not in read and (t.word in lex.placeable or (accepted and t.word not in lex.known)):
+            words.setdefault(t.raw)
     if words:
         said = ", ".join(f'"{w}"' for w in words)
         raise UserError(f"could not place {said} in \"{question}\": describe the scene with "
@@ -345,13 +384,30 @@ def _or(names: list[str]) -> str:
     return ", ".join(names[:-1]) + " or " + names[-1] if len(names) > 1 else names[0]
 
 
-def _scope(tokens: list[_Token], i: int) -> set[int]:
+def _scope_ends(tokens: list[_Token]) -> list[int]:
+    """For each position i, where the scope of a negation at i ends: the
+    end of its clause, or the next "and", "or", "yet"... after it."""
+    ends = [len(tokens)] * len(tokens)
+    for j in range(len(tokens) - 2, -1, -1):
+        nxt = tokens[j + 1]
+        ends[j] = j + 1 if nxt.clause != tokens[j].clause or nxt.word in _SCOPE_ENDS else ends[j + 1]
+    return ends
+
+
+def _scope(tokens: list[_Token], i: int, ends: list[int]) -> set[int]:
     """The positions a negation at i covers: the rest of its clause, up to
-    the next "and", "or", "yet"..."""
-    out = set()
-    for j in range(i + 1, len(tokens)):
-        if tokens[j].clause != tokens[i].clause or tokens[j].word in _SCOPE_ENDS:
-            break
-        if tokens[j].word not in _NEGATION_STEMS:
-            out.add(j)
+    the next "and", "or", "yet"..., its negations left out."""
+    return {j for j in range(i + 1, ends[i]) if tokens[j].word not in _NEGATION_STEMS}
+
+
+def _covered(tokens: list[_Token], cues: list[int], ends: list[int]) -> set[int]:
+    """The positions the negations at `cues` cover, together (each position
+    is looked at once: a scope that starts inside another ends with it)."""
+    out: set[int] = set()
+    reach = 0
+    for i in cues:                            # in order
+        for j in range(max(i + 1, reach), ends[i]):
+            if tokens[j].word not in _NEGATION_STEMS:
+                out.add(j)
+        reach = max(reach, ends[i])
     return out

@@ -442,3 +442,58 @@ def test_convert_into_a_read_only_folder_says_so_in_one_line(tmp_path: Path, mon
     err = capsys.readouterr().err
     assert err == f"pantarhei convert: -o {out}: cannot write (Read-only file system); nothing was written\n"
     assert not out.exists()
+
+
+def _ask_stdin(data: bytes, *args: str, timeout: float = 60):
+    """`pantarhei ask ARGS` with `data` on standard input."""
+    import subprocess
+    import sys
+
+    from tests.conftest import Run
+
+    p = subprocess.run([sys.executable, "-m", "pantarhei.bridge", "ask", "--theory", LEARNED, *args],
+                       input=data, capture_output=True, timeout=timeout)
+    return Run(p.returncode, p.stdout.decode(), p.stderr.decode())
+
+
+def test_ask_json_on_standard_input_writes_json_lines() -> None:
+    r = _ask_stdin(b"pour from the side\n\n# a comment\nsing me a song\npour low\n", "--json")
+    assert r.code == 1
+    lines = r.out.splitlines()
+    assert len(lines) == 2, r.out
+    first, second = (json.loads(line) for line in lines)
+    assert (first["line"], first["question"], first["understood"]) == (1, "pour from the side", ["pour_to_side"])
+    assert (second["line"], second["question"], second["understood"]) == (5, "pour low", ["pour_low"])
+    assert set(first["outcomes"]) == set(second["outcomes"]) and len(first["outcomes"]) == 9
+    assert r.err.startswith("pantarhei ask: line 4: understood none of") and len(r.err.splitlines()) == 1
+    r = _ask_stdin(b"pour low\n", "--json", "--why", "no_spill")
+    assert r.code == 0 and len(r.out.splitlines()) == 1 and json.loads(r.out)["literal"] == "no_spill"
+
+
+def test_a_question_that_is_not_utf8_says_so() -> None:
+    import subprocess
+    import sys
+
+    r = _ask_stdin(b"pour \xff low\npour low\n")
+    assert r.code == 1
+    assert r.err == "pantarhei ask: line 1: the question: byte 0xff is not UTF-8: give text in UTF-8\n"
+    assert "understood: pour_low" in r.out
+    # and as an argument (which pyswip used to take for a missing SWI-Prolog)
+    import os
+
+    for args, what in (([os.fsdecode(b"pour \xfe low")], "the question"),
+                       (["--props", "pour_low", "--why", os.fsdecode(b"no_spill\xfe")], "--why")):
+        p = subprocess.run([sys.executable, "-m", "pantarhei.bridge", "ask", *args], capture_output=True,
+                           text=True, stdin=subprocess.DEVNULL)
+        from tests.conftest import Run
+
+        line = assert_one_line_error(Run(p.returncode, p.stdout, p.stderr))
+        assert line == f"pantarhei ask: {what}: byte 0xfe is not UTF-8: give text in UTF-8", line
+
+
+def test_one_long_line_on_standard_input_is_answered_in_time_linear_in_it() -> None:
+    """190 KB in one line (it took 73 s)."""
+    line = " ".join(["a light bowl , not heavy and then pour low"] * 4400).encode() + b"\npour low\n"
+    r = _ask_stdin(line, "--json", timeout=20)
+    assert r.code == 1 and "line 1: " in r.err
+    assert json.loads(r.out)["understood"] == ["pour_low"]

@@ -31,3 +31,16 @@ def test_a_theory_that_does_not_load_is_one_line_naming_the_file(tmp_path):
     with pytest.raises(UserError) as e:
         engine().load_theory_file(str(bad), "given.pl")
     assert str(e.value).startswith("given.pl: ") and "\n" not in str(e.value)
+
+
+def test_an_argument_that_is_not_utf8_is_not_a_missing_swipl():
+    """pyswip encodes the process's arguments when it is imported: one that
+    is not UTF-8 made it fail, which read as SWI-Prolog not installed."""
+    import subprocess
+    import sys
+
+    code = ("import sys; sys.argv.append('pour \\udcff low'); "
+            "from pantarhei.bridge.engines.swipl import engine; "
+            "print(engine().once('X is 6 * 7')['X'], sys.argv[-1] == 'pour \\udcff low')")
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert (p.returncode, p.stdout) == (0, "42 True\n"), p.stderr

@@ -150,3 +150,30 @@ def test_ask_refuses_a_word_it_cannot_place_in_one_line():
     r = run_cli("ask", "pour from the side with a purple bowl")
     assert "purple" in assert_one_line_error(r)
     assert r.out == ""
+
+
+@pytest.mark.parametrize("words", [
+    "pour from the side",                                     # one reading, many times
+    "light",                                                  # value words without a noun
+    "not a",                                                  # negations, each with a scope
+    "a light bowl , not heavy and then pour low",             # clauses, stages, nouns
+])
+def test_a_long_question_is_read_in_time_linear_in_its_length(words):
+    """About 100 KB in one line (the reader grew with its square: such a
+    line took a minute and more)."""
+    import signal
+
+    def too_slow(*_):
+        raise TimeoutError("reading a 100 KB question took more than 3 s")
+
+    question = " ".join([words] * (100_000 // (len(words) + 1)))
+    old = signal.signal(signal.SIGALRM, too_slow)
+    signal.alarm(3)
+    try:
+        try:
+            understand(question)
+        except UserError as e:          # refused in one line is an answer too
+            assert "\n" not in str(e)
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, old)
