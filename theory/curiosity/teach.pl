@@ -61,7 +61,7 @@ teach_queue(Explored, Id, Props, Rest, Settings, Added, Queue) :-
         include([C]>>memberchk(C, New), Queue, Added)
     ).
 
-%!  children(+Props:list, +Most:integer, -Exclude:list, -New:list) is det.
+%!  children(+Props:list, +Most:integer, +Exclude:list, -New:list) is det.
 %
 %   New are the valid antecedents of Props with one proposition added,
 %   from a dimension Props does not use, none in Exclude, none of more than

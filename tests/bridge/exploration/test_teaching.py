@@ -1,0 +1,64 @@
+"""bridge/exploration/teaching.py: the learning curiosity's value of a
+candidate, on pours of the synthetic oracle, whose answers are known:
+pouring from the side spills there, and the source's bounciness changes
+nothing."""
+from __future__ import annotations
+
+import numpy as np
+
+from pantarhei.bridge.exploration.teaching import deciding, fitted_on, model, teaching
+from pantarhei.oracle.generative import sample, to_dict
+from pantarhei.oracle.synthetic import scores
+
+
+def pours(body, n, seed):
+    P = sample(list(body), n, seed)
+    return P, np.array([scores(to_dict(p)) for p in P])
+
+
+def pooled(*parts):
+    return np.vstack([p for p, _ in parts]), np.vstack([s for _, s in parts])
+
+
+def test_deciding_is_the_largest_explored_antecedent_held():
+    explored = [(), ("pour_to_side",), ("light_liquid", "pour_to_side")]
+    assert deciding(("pour_high", "pour_to_side"), explored) == 1
+    assert deciding(("light_liquid", "pour_to_side"), explored) == 2
+    assert deciding(("pour_high",), explored) == 0
+    assert deciding(("pour_high",), [("pour_to_side",)]) is None
+
+
+def test_the_model_is_fitted_again_as_the_pours_grow_by_a_fifth():
+    sizes = [fitted_on(n) for n in range(0, 400)]
+    assert sizes[:8] == list(range(8))
+    assert all(0 < m <= n for n, m in enumerate(sizes) if n) and sizes == sorted(sizes)
+    changes = [n for n in range(9, 400) if sizes[n] != sizes[n - 1]]
+    assert all(b / a >= 1.15 for a, b in zip(changes, changes[1:]))
+
+
+def test_a_proposition_that_changes_what_happens_teaches_more():
+    P, S = pooled(pours([], 40, 1), pours(["pour_to_side"], 8, 2), pours(["bouncy_source"], 8, 3))
+    found = teaching(P, S, [()], [("pour_to_side",), ("bouncy_source",)], 1.0, 4, 1)
+    side, bouncy = found.departure
+    # pouring from the side spills: its answers move from the ordinary pour's
+    assert side > 1.0 and bouncy < 0.3
+    assert found.value[0] > found.value[1]
+
+
+def test_an_explored_antecedent_is_valued_by_its_uncertainty_alone():
+    P, S = pooled(pours([], 40, 1), pours(["pour_to_side"], 8, 2))
+    found = teaching(P, S, [(), ("pour_to_side",)], [("pour_to_side",), ("light_liquid",)],
+                     1.0, 4, 1)
+    assert found.departure[0] == 0.0
+    # an antecedent without pours of its own is the least certain
+    assert found.uncertainty[1] > found.uncertainty[0] > 0
+    # and without the weight of uncertainty, another batch of it teaches nothing
+    assert teaching(P, S, [(), ("pour_to_side",)], [("pour_to_side",)], 0.0, 4, 1).value == [0.0]
+
+
+def test_the_same_pours_give_the_same_values():
+    P, S = pooled(pours([], 24, 5), pours(["light_liquid"], 8, 6))
+    cands = [("light_liquid",), ("pour_far_away",), ("light_liquid", "pour_high")]
+    a = teaching(P, S, [(), ("light_liquid",)], cands, 1.0, 4, 7)
+    b = teaching(P, S, [(), ("light_liquid",)], cands, 1.0, 4, 7, model(P, S, 7))
+    assert a == b

@@ -1,0 +1,54 @@
+:- begin_tests(curiosity_teach).
+
+:- use_module(teach).
+:- use_module('../vocabulary').
+:- use_module('../validity').
+
+test(children_of_the_ordinary_pour_are_the_propositions_alone) :-
+    children([], 2, [], Kids),
+    findall([P], ( proposition(P, _, _, _), valid_antecedent([P]) ), Alone0),
+    msort(Alone0, Alone),
+    msort(Kids, Sorted),
+    Sorted == Alone,
+    % what is excluded is no child, and nothing past the most propositions
+    children([], 2, [[pour_to_side]], Kids1),
+    \+ memberchk([pour_to_side], Kids1),
+    children([pour_to_side], 1, [], []).
+
+test(children_add_one_proposition_of_an_unused_dimension) :-
+    children([pour_to_side], 2, [], Kids),
+    Kids \== [],
+    forall(member(K, Kids),
+           ( length(K, 2), memberchk(pour_to_side, K), valid_antecedent(K) )),
+    % no other value of the dimension pour_to_side is of
+    proposition(pour_to_side, Dim, _, _),
+    forall(( member(K, Kids), member(P, K), P \== pour_to_side ),
+           \+ proposition(P, Dim, _, _)).
+
+test(queue_most_valuable_first_bounded,
+     [ setup(assertz((bridge:exploration_teach(Req, Reply) :- fake_teach(Req, Reply)))),
+       cleanup(retractall(bridge:exploration_teach(_, _))) ]) :-
+    Explored = [ant(a1, [], none, initial)],
+    teach_queue(Explored, a1, [], [], _{body:1, queue:2}, Added, Queue),
+    % the two most valuable children, the most valuable first
+    Queue == [cand([pour_to_side], a1, near), cand([light_liquid], a1, near)],
+    Added == Queue,
+    % A_new as it was is valued again, and the explored antecedent is a
+    % candidate for another batch; a value of 0 is never queued
+    Old = cand([pour_to_side], a1, near),
+    teach_queue(Explored, a1, [], [Old], _{body:1, queue:10}, Added1, Queue1),
+    Queue1 = [Old, cand([light_liquid], a1, near), cand([], a1, again(a1))],
+    Added1 == [cand([light_liquid], a1, near)].
+
+%   A stand-in for the bridge's value, with known answers: pouring from the
+%   side teaches most, a light liquid next, another batch of the ordinary
+%   pour a little, anything else nothing.
+fake_teach(Req, _{value:Values}) :-
+    findall(V, ( member(C, Req.candidates), fake_value(C, V) ), Values).
+
+fake_value([pour_to_side], 3) :- !.
+fake_value([light_liquid], 2) :- !.
+fake_value([], 1) :- !.
+fake_value(_, 0).
+
+:- end_tests(curiosity_teach).
