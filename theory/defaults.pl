@@ -29,7 +29,7 @@ option(oracle, oracle, one_of(pybullet, synthetic), pybullet,
 option(seed, count, range(0, 2147483647), 1,
   "seed of every random choice").
 option(batch, count, range(1, 10000), none,
-  "pours simulated per batch, for each explored antecedent (default: parameters + 1)").
+  "pours simulated per batch, for each explored antecedent (default: parameters + 1; learn: learn_batch of theory/defaults.pl)").
 option(budget, count, range(1, 100000), 25,
   "the budget: the pours of this many batches, probes included (discover); this many explored antecedents (paper)").
 option(pours, count, range(1, 1000000), 775,
@@ -69,7 +69,7 @@ option(qualify, choice, one_of(weighted, argmax), weighted,
 option(initial, antecedent, none, none,
   "the initial antecedent a_0, propositions separated by commas").
 option(general, flag, none, true,
-  "--no-general: write Algorithm 1's rules only, without the general rules learned from every pour").
+  "--no-general: write Algorithm 1's rules only, without the general rules learned from every pour (discover and paper; learn writes one layer)").
 option(store, path, none, default(store),
   "SQLite file of simulations and exploration state").
 option(out, path, none, default(theory),

@@ -79,6 +79,9 @@ def read_learned(path: Path | str) -> Learned:
     settings = loading.settings(theory)
     of_rule = {literal_text(a[0]): literal_text(a[2]) for a in facts.get("provenance", [])
                if len(a) == 3 and literal_text(a[1]) == "antecedent"}
+    if [str(c) for c in settings.get("curiosity", [])] == ["learn"]:
+        raise UserError(f"{path}: a theory of the learning curiosity, which evaluate does not "
+                        f"read yet: measure it with python -m benchmarks knowledge")
     if not settings.get("seed") or not settings.get("batch") or not of_rule:
         raise UserError(f"{path}: not a theory written by `pantarhei explore` "
                         f"(no setting/2 and provenance/3 facts to evaluate it by)")

@@ -101,3 +101,15 @@ def test_the_same_seed_writes_the_same_theory(learned, tmp_path):
     again = run(tmp, "again")
     assert Path(again["out"]).read_bytes().replace(b"again", b"t") \
         == Path(result["out"]).read_bytes().replace(b"again", b"t")
+
+
+def test_evaluate_says_it_does_not_read_it_in_one_line(learned):
+    import subprocess
+    import sys
+
+    tmp, result, _ = learned
+    r = subprocess.run([sys.executable, "-m", "pantarhei.bridge", "evaluate", "--theory",
+                        str(result["out"]), "--store", str(tmp / "store.sqlite")],
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode != 0 and "Traceback" not in r.stderr
+    assert len(r.stderr.strip().splitlines()) == 1 and "learning curiosity" in r.stderr
