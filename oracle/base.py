@@ -21,6 +21,9 @@ ORACLES = {
     "synthetic": "pantarhei.oracle.synthetic:SyntheticOracle",
     "faulty": "pantarhei.oracle.faults:FaultyOracle",   # test-only: really crashes or hangs
 }
+#: The oracles that simulate the world; the others are for tests (analytic
+#: scores, faults), and `plan` verifies with none of them.
+REAL_ORACLES = ("pybullet",)
 
 
 @dataclass

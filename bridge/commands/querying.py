@@ -248,8 +248,25 @@ def plan(args: argparse.Namespace) -> int:
     given = known(_split(args.given))
     if not 0 < args.min_success <= 1:
         raise UserError("--min-success: a share above 0 and at most 1")
-    return print_plans(loading.load(args.theory, pouring=True), goals, given, args.alternatives,
+    theory = loading.load(args.theory, pouring=True)
+    if args.verify:
+        from pantarhei.oracle.base import ORACLES, REAL_ORACLES
+
+        oracle = _verifying_oracle(theory)
+        if oracle in ORACLES and oracle not in REAL_ORACLES:
+            raise UserError(f"{theory.source}: setting(oracle, {oracle}) names a test-only oracle: "
+                            f"plans are verified in a real simulation only ({', '.join(REAL_ORACLES)}); "
+                            f"--verify 0 shows the theory's plans unverified")
+    return print_plans(theory, goals, given, args.alternatives,
                        args.verify, args.min_success, args.seed, args.store, args.json)
+
+
+def _verifying_oracle(theory) -> str:
+    """The oracle a theory's plans are verified with: the one it was
+    learned from (its setting(oracle, O)), PyBullet otherwise."""
+    from pantarhei.bridge.theories import loading
+
+    return str((loading.settings(theory).get("oracle") or ["pybullet"])[0])
 
 
 def print_plans(theory, goals: list[str], given: list[str], alternatives: int, verify: int,
@@ -298,9 +315,8 @@ def _verified(theory, goals: list[str], given: list[str], alternatives: int, ver
     from, stored); UserError when none did."""
     from pantarhei.bridge.exploration.simulation import open_simulator, oracle_identity
     from pantarhei.bridge.reasoning.planning import verified_plans
-    from pantarhei.bridge.theories import loading
 
-    oracle = str((loading.settings(theory).get("oracle") or ["pybullet"])[0])
+    oracle = _verifying_oracle(theory)
     oracle_identity(oracle)     # UserError for an oracle that is unknown or cannot load
     with open_simulator(oracle, store=store) as sim:
         good, tried = verified_plans(theory, goals, given, sim.simulate, verify, seed,

@@ -497,3 +497,21 @@ def test_one_long_line_on_standard_input_is_answered_in_time_linear_in_it() -> N
     r = _ask_stdin(line, "--json", timeout=20)
     assert r.code == 1 and "line 1: " in r.err
     assert json.loads(r.out)["understood"] == ["pour_low"]
+
+
+@pytest.mark.parametrize("oracle", ["synthetic", "faulty"])
+def test_plan_verifies_with_a_real_oracle_only(cli, tmp_path: Path, oracle: str) -> None:
+    """A theory that names a test-only oracle (analytic scores, or faults)
+    has no plan "verified" by it; --verify 0 still shows its plans."""
+    f = tmp_path / "wishful.pl"
+    f.write_text(f"setting(oracle, {oracle}).\n" + WISHFUL)
+    store = tmp_path / "s.sqlite"
+    line = assert_one_line_error(cli("plan", "--goal", "liquid_enters_destination", "--theory", str(f),
+                                     "--verify", "2", "--store", str(store)))
+    assert line == (f"pantarhei plan: {f}: setting(oracle, {oracle}) names a test-only oracle: plans "
+                    f"are verified in a real simulation only (pybullet); --verify 0 shows the "
+                    f"theory's plans unverified"), line
+    assert not store.exists()
+    r = cli("plan", "--goal", "liquid_enters_destination", "--theory", str(f), "--verify", "0", "--json")
+    assert r.code == 0, r.err
+    assert "verified" not in json.loads(r.out)["plans"][0]
