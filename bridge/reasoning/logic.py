@@ -124,7 +124,7 @@ def asp_conclusions(theory: Theory, semantics: Semantics = Semantics(),
     doubling the alternation steps until they suffice."""
     from pantarhei.bridge.engines.asp import solve
 
-    text = theory.native()
+    text = theory.encoded()
     acyclic = theory.acyclic()
     if acyclic:
         steps = 0

@@ -136,7 +136,7 @@ def _solve(theory: Theory, goals: list[str], given: list[str], count: int,
             ctl.load(str(f))
         for e in ENCODINGS:
             ctl.load(str(THEORY_DIR / e))
-        facts = theory.native() + "".join(f"goal({g})." for g in goals) \
+        facts = theory.encoded() + "".join(f"goal({g})." for g in goals) \
             + "".join(f"context({p})." for p in given)
         ctl.add("base", [], facts)
         ctl.ground([("base", [])])

@@ -49,6 +49,8 @@ from pantarhei.bridge.theories.well_formed import value_text
 
 #: A comment holding a native fact DFL has no form for.
 ANNOTATION = "# pantarhei: "
+#: The native predicates DFL has a form for, which no such comment holds.
+_DFL_FORMS = {"fact", "rule", "body", "sup"}
 _ANNOTATION = re.compile(r"^\s*#\s*pantarhei:\s?(.*)$")
 _DERIVED = re.compile(r"^\s*([a-z][A-Za-z0-9_]*)\s*>\s*([a-z][A-Za-z0-9_]*)\s*#\s*specificity\s*$")
 
@@ -105,7 +107,14 @@ def _annotations(raws: list[str], source: str) -> tuple[list, set[tuple[str, str
     for n, raw in enumerate(raws, start=1):
         m = _ANNOTATION.match(raw)
         if m:
-            annotations.extend(theory_facts.parse(m.group(1), source, n))
+            held = theory_facts.parse(m.group(1), source, n)
+            for f in held:
+                if f.name in _DFL_FORMS:      # a comment carries no rules
+                    raise TheoryFileError(
+                        f"{source}:{n}: {ANNOTATION.strip()} comments hold what DFL has no form "
+                        f"for, not {f.name}/{len(f.args)}: write rules, facts and superiority "
+                        f"as DFL")
+            annotations.extend(held)
         m = _DERIVED.match(raw)
         if m:
             derived.add((m.group(1), m.group(2)))

@@ -107,6 +107,14 @@ class Theory:
         lines.extend(self.extra)
         return "\n".join(lines) + "\n"
 
+    def encoded(self) -> str:
+        """The theory as clingo's encodings read it: its facts, rules,
+        superiority, learned rules and their provenance, and nothing else:
+        not its settings nor the facts kept aside, which an encoding would
+        take for its own (`changed.`, `superior(r2, r1).`, `concl(...)`)."""
+        return Theory(self.facts, self.rules, self.sup, self.learned,
+                      provenance=self.provenance).native()
+
     def specificity(self) -> list[tuple[str, str]]:
         """The superiority that specificity gives among learned rules: R
         beats S when their heads conflict, S's body is strictly inside R's,

@@ -194,3 +194,26 @@ def test_integers_clingo_cannot_hold_are_refused_in_dfl(cli, tmp_path: Path, tex
     f.write_text(text.replace("4294967296", "2147483647").replace("2147483648", "-2147483648")
                  .replace("-2147483649", "-2147483648").replace("9" * 5001, "9").replace("007", "7"))
     assert cli("convert", str(f), "--to", "native", "-o", str(out)).code == 0
+
+
+@pytest.mark.parametrize("held", ["rule(h1, defeasible, flies).", "body(r2, bird).", "sup(r1, r2).",
+                                  "fact(wings)."])
+def test_a_pantarhei_comment_carries_no_rules(held: str) -> None:
+    """What DFL has a form for is written as DFL: a rule, fact or
+    superiority hidden in a `# pantarhei:` comment (which SPINdle and silkie
+    skip) would decide answers those tools never see."""
+    text = f">> bird\nr1: bird => flies\nr2: bird => -flies\n# pantarhei: {held}\n"
+    with pytest.raises(TheoryFileError) as e:
+        parse_dfl(text, "t.dfl")
+    name = held.split("(")[0]
+    assert str(e.value).startswith(f"t.dfl:4: # pantarhei: comments hold what DFL has no form for, "
+                                   f"not {name}/")
+
+
+def test_what_a_pantarhei_comment_holds_never_reaches_clingo() -> None:
+    text = '>> bird\nr1: bird => flies\n# pantarhei: concl("+D", pwned).\n# pantarhei: changed.\n'
+    t = parse_dfl(text, "t.dfl")
+    assert len(t.extra) == 2
+    assert conclusions(t, Semantics(), "asp") == conclusions(t, Semantics(), "prolog")
+    assert "pwned" not in str(conclusions(t, Semantics(), "asp"))
+    assert parse_dfl(write_dfl(t), "again.dfl").extra == t.extra      # kept, as convert keeps it

@@ -158,3 +158,38 @@ def test_the_shipped_theory_reads_alike(tmp_path: Path) -> None:
     p = subprocess.run([swipl, "-q", "-g", goal, "-t", "halt"], capture_output=True, text=True, timeout=120)
     assert p.returncode == 0, p.stderr
     assert p.stdout.splitlines() == python
+
+
+BIRDS = ("rule(r1, defeasible, flies).\nbody(r1, bird).\nrule(r2, defeasible, neg(flies)).\n"
+         "body(r2, penguin).\nfact(bird).\nfact(penguin).\n")
+
+
+@pytest.mark.parametrize("hostile", [
+    'concl("+D", pwned).\n',           # a conclusion of conclusions.lp, forged
+    "superior(r2, r1).\n",              # superiority of defeasible.lp, forged
+    "changed.\n",                       # kept clingo doubling its steps until killed
+    "defeated(r1).\nhasbody(r2).\nsup_cycle(r1).\n",
+])
+def test_facts_of_other_predicates_never_reach_clingo(tmp_path: Path, hostile: str) -> None:
+    """The theory's own predicates reach the encodings; anything else a
+    file holds is kept aside (and written back by convert), never taken by
+    clingo for an atom of its own: both engines conclude the same."""
+    import signal
+
+    path = tmp_path / "birds.pl"
+    path.write_text(BIRDS + hostile)
+    theory = read_native(path)
+    assert theory.extra and theory.extra[0].split("(")[0] in hostile
+
+    def too_slow(*_):
+        raise TimeoutError("clingo did not finish in 20 s")
+
+    old = signal.signal(signal.SIGALRM, too_slow)
+    signal.alarm(20)
+    try:
+        asp = asp_conclusions(theory, Semantics())
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, old)
+    assert asp == prolog_conclusions(theory, Semantics())
+    assert asp["+D"] == ["bird", "penguin"] and "neg(flies)" not in asp["+d"]
