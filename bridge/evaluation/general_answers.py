@@ -46,7 +46,8 @@ class _Keys:
 
 
 def general_theories(ev, theory: Theory, methods: dict, held: dict,
-                     run: Callable[..., np.ndarray], seed: int, explored_seed: int) -> None:
+                     run: Callable[..., np.ndarray], seed: int, explored_seed: int,
+                     explored: list | None = None) -> None:
     """Fill `ev.general`: for each method's pours (`methods`: name -> Pours),
     the general rules learned from them (and from the learner's own pours,
     as `explore` learns them), gradient boosting on the same pours (the
@@ -57,7 +58,9 @@ def general_theories(ev, theory: Theory, methods: dict, held: dict,
     seed (`explored_seed`), as `explore` did, so they give the very rules
     the theory holds; the random pours with the evaluation's. The contrast
     keys are the clear keys where the defaults-only theory of curiosity's
-    pours is wrong."""
+    pours is wrong. For the learning curiosity's theory, `explored` are its
+    explored antecedents: curiosity's rules are learned over them from its
+    pours alone, as `explore` wrote them."""
     t = time.monotonic()
     asked = questions()
     P_q, of = question_pours(asked, seed)
@@ -74,7 +77,8 @@ def general_theories(ev, theory: Theory, methods: dict, held: dict,
                            "share": np.round(k.share, 3).tolist()}
     for method, m in methods.items():
         out[method] = _method(k, m, explored_seed if method == "curiosity" else seed, run,
-                              first=method == "curiosity")
+                              first=method == "curiosity",
+                              bodies=explored if method == "curiosity" else None)
         if method == "curiosity":
             out["contrast"] = k.contrast.astype(int).tolist()
     pred, lik = answer_matrix(theory, k.scenes)
@@ -85,9 +89,13 @@ def general_theories(ev, theory: Theory, methods: dict, held: dict,
     ev.seconds["general"] = round(time.monotonic() - t, 1)
 
 
-def _method(k: _Keys, m, seed: int, run: Callable[..., np.ndarray], first: bool) -> dict[str, Any]:
+def _method(k: _Keys, m, seed: int, run: Callable[..., np.ndarray], first: bool,
+            bodies: list | None = None) -> dict[str, Any]:
     """One method's entry: its general rules, boosting and defaults-only; the
-    first method's defaults-only theory sets the contrast keys."""
+    first method's defaults-only theory sets the contrast keys. With
+    `bodies`, the rules are learned over them from the method's pours alone
+    (the learning curiosity's one layer); else over the askable bodies,
+    with the learner's own pours."""
     from pantarhei.bridge.learning.generalize import Settings
     from pantarhei.bridge.learning.meaning import Meaning
     from pantarhei.bridge.learning.layers import learn_general
@@ -95,7 +103,8 @@ def _method(k: _Keys, m, seed: int, run: Callable[..., np.ndarray], first: bool)
     names = load_vocabulary().expectation_names
     okm = np.all(np.isfinite(m.S), axis=1)
     g, P, S = learn_general(m.P[okm], m.S[okm], seed,
-                            lambda X: run("the learner's own pours", X))
+                            None if bodies is not None else
+                            lambda X: run("the learner's own pours", X), bodies=bodies)
     Y = verdicts(S)
     base, base_p = defaults_only(Y, len(k.scenes))
     if first:

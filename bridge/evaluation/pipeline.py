@@ -62,6 +62,14 @@ class Learned:
     batches: list[int] = field(default_factory=list)
     #: The candidates set aside after their probe: iteration -> attempt -> antecedent.
     set_aside: dict[int, dict[int, tuple[str, ...]]] = field(default_factory=dict)
+    #: The learning curiosity's: the explored antecedent (index into
+    #: `antecedents`) of each iteration, in order, from its trace.
+    steps: list[int] = field(default_factory=list)
+
+    @property
+    def one_layer(self) -> bool:
+        """Whether the theory is the learning curiosity's one layer."""
+        return bool(self.steps)
 
     def setting(self, key: str, default: Any = None) -> Any:
         values = self.settings.get(key)
@@ -80,8 +88,7 @@ def read_learned(path: Path | str) -> Learned:
     of_rule = {literal_text(a[0]): literal_text(a[2]) for a in facts.get("provenance", [])
                if len(a) == 3 and literal_text(a[1]) == "antecedent"}
     if [str(c) for c in settings.get("curiosity", [])] == ["learn"]:
-        raise UserError(f"{path}: a theory of the learning curiosity, which evaluate does not "
-                        f"read yet: measure it with python -m benchmarks knowledge")
+        return _read_one_layer(path, theory, settings)
     if not settings.get("seed") or not settings.get("batch") or not of_rule:
         raise UserError(f"{path}: not a theory written by `pantarhei explore` "
                         f"(no setting/2 and provenance/3 facts to evaluate it by)")
@@ -106,6 +113,31 @@ def read_learned(path: Path | str) -> Learned:
     return Learned(path, theory, settings, [bodies[i] for i in order],
                    [batches.get(i, 1) for i in order],
                    {i: {k: tuple(sorted(ps)) for k, ps in by.items()} for i, by in aside.items()})
+
+
+def _read_one_layer(path: Path, theory: Theory, settings: dict[str, list[Any]]) -> Learned:
+    """A theory of the learning curiosity: what it explored, iteration by
+    iteration, is its trace (FILE.trace.jsonl, written beside it)."""
+    import json
+
+    from pantarhei.bridge.exploration.trace import trace_path
+
+    trace = trace_path(path)
+    if not settings.get("seed") or not settings.get("batch"):
+        raise UserError(f"{path}: not a theory written by `pantarhei explore` "
+                        f"(no setting/2 facts to evaluate it by)")
+    try:
+        steps = [json.loads(line) for line in trace.read_text(encoding="utf-8").splitlines()]
+        ids = [str(t["id"]) for t in steps]
+        bodies = {str(t["id"]): tuple(sorted(str(p) for p in t["antecedent"])) for t in steps}
+    except (OSError, ValueError, KeyError, TypeError) as e:
+        raise UserError(f"{trace}: the trace of the learning curiosity's theory cannot be read "
+                        f"({e})") from None
+    order = list(dict.fromkeys(ids))
+    if order != [f"a{i}" for i in range(1, len(order) + 1)]:
+        raise UserError(f"{trace}: the explored antecedents are not a1..a{len(order)}")
+    return Learned(path, theory, settings, [bodies[a] for a in order],
+                   [ids.count(a) for a in order], {}, [order.index(a) for a in ids])
 
 
 # -- the run -------------------------------------------------------------------
@@ -266,7 +298,8 @@ def evaluate(opts: Options) -> Evaluation:
                        samples, mode, opts.seed)
         ev.seconds["predicting"] = round(time.monotonic() - t, 1)
         general_theories(ev, learned.theory, {"curiosity": curiosity, "random": rnd}, held,
-                         run, opts.seed, int(learned.setting("seed", opts.seed)))
+                         run, opts.seed, int(learned.setting("seed", opts.seed)),
+                         learned.antecedents if learned.one_layer else None)
         ev.paper_rules = paper_rules(learned.theory, lambda X: run("the paper's rules", X),
                                      opts.paper_samples, opts.seed)
         ev.plans = plan_checks(learned.theory, lambda X: run("plans", X, say=False),
@@ -293,7 +326,8 @@ def exploration_pours(learned: Learned, run: Simulations, ev: Evaluation) -> Pou
         rows = S[of == i]
         rows = rows[np.all(np.isfinite(rows), axis=1)]
         ev.kept_all.append(float((rows > 0.5).all(axis=1).mean()) if len(rows) else None)
-    differ = _differing_rules(learned.theory, ev.explored_consequents)
+    differ = (_differing_layer(learned, P, S) if learned.one_layer
+              else _differing_rules(learned.theory, ev.explored_consequents))
     ev.reproduced = not differ
     if differ:
         _say(f"{len(differ)} rules of the theory differ from those its own pours give here "
@@ -311,6 +345,13 @@ def exploration_draws(learned: Learned) -> tuple[np.ndarray, list[tuple[str, ...
     the index of the explored antecedent it belongs to (-1 for a probe set
     aside) and where each explored antecedent's last batch ends."""
     samples, seed = int(learned.setting("batch")), int(learned.setting("seed"))
+    if learned.one_layer:
+        rows = [sample(list(learned.antecedents[i]), samples, batch_seed(seed, t, 0))
+                for t, i in enumerate(learned.steps, start=1)]
+        of = np.repeat(learned.steps, samples)
+        drawn = [learned.antecedents[i] for i in of]
+        ends = [int(np.flatnonzero(of == i)[-1]) + 1 for i in range(len(learned.antecedents))]
+        return np.vstack(rows), drawn, of, ends
     m = min(int(learned.setting("probe", 0)), samples)
     rows, drawn, of, ends = [], [], [], []
     iteration = 0
@@ -367,6 +408,22 @@ def heldout_scenes(opts: Options, explored: Sequence[tuple[str, ...]],
     for name, scenes in {"uniform": uniform, "near": near, "near_random": near_random}.items():
         held[name] = simulated(scenes, run(f"held-out ({name})", scene_pours(scenes, opts.seed)))
     return held
+
+
+def _differing_layer(learned: Learned, P: np.ndarray, S: np.ndarray) -> list[str]:
+    """The rules of the learning curiosity's theory that the rules learned
+    again from the exploration's pours (over its explored antecedents) do
+    not give, with the same head, body and likelihood, or the reverse."""
+    from pantarhei.bridge.learning.layers import learn_general
+
+    ok = np.all(np.isfinite(S), axis=1)
+    g, _, _ = learn_general(P[ok], S[ok], int(learned.setting("seed")),
+                            bodies=learned.antecedents)
+    conf = {str(r): int(v) for r, k, v in learned.theory.provenance if k == "confidence_permille"}
+    have = {(r.id, r.head, tuple(sorted(r.body)), conf.get(r.id)) for r in learned.theory.rules}
+    again = {(r.id, r.head, tuple(sorted(r.body)), int(round(1000 * r.confidence)))
+             for r in g.rules}
+    return sorted(x[0] for x in have ^ again)
 
 
 def _differing_rules(theory: Theory, heads: np.ndarray) -> list[str]:

@@ -5,9 +5,13 @@ synthetic oracle's do, and the same theory for the same seed."""
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 
+import numpy as np
 import pytest
+
+from pantarhei.bridge.errors import UserError
 
 from pantarhei.bridge.exploration import running as exploration
 from pantarhei.bridge.exploration.running import Options
@@ -103,13 +107,28 @@ def test_the_same_seed_writes_the_same_theory(learned, tmp_path):
         == Path(result["out"]).read_bytes().replace(b"again", b"t")
 
 
-def test_evaluate_says_it_does_not_read_it_in_one_line(learned):
-    import subprocess
-    import sys
+def test_evaluate_reads_it_from_its_trace_and_learns_the_same_layer_again(learned, tmp_path):
+    """evaluate draws the exploration's pours again from its trace, and the
+    rules learned again over the explored antecedents are the theory's."""
+    from pantarhei.bridge.evaluation import pipeline as E
 
-    tmp, result, _ = learned
-    r = subprocess.run([sys.executable, "-m", "pantarhei.bridge", "evaluate", "--theory",
-                        str(result["out"]), "--store", str(tmp / "store.sqlite")],
-                       capture_output=True, text=True, timeout=120)
-    assert r.returncode != 0 and "Traceback" not in r.stderr
-    assert len(r.stderr.strip().splitlines()) == 1 and "learning curiosity" in r.stderr
+    tmp, result, trace = learned
+    got = E.read_learned(result["out"])
+    assert got.one_layer and len(got.steps) == len(trace)
+    assert [got.antecedents[i] for i in got.steps] \
+        == [tuple(sorted(t["antecedent"])) for t in trace]
+    P, drawn, of, ends = E.exploration_draws(got)
+    assert np.array_equal(P, result["pours"][0])        # the very pours, in order
+    assert not E._differing_layer(got, P, result["pours"][1])
+    # a rule edited by hand is told apart
+    edited = tmp_path / "edited.pl"
+    text = Path(result["out"]).read_text()
+    m = re.search(r"confidence_permille, (\d+)\)", text)
+    value = int(m.group(1))
+    edited.write_text(text[:m.start(1)] + str(value - 1 if value else 1) + text[m.end(1):])
+    (tmp_path / "edited.trace.jsonl").write_text((tmp / "t.trace.jsonl").read_text())
+    assert E._differing_layer(E.read_learned(edited), P, result["pours"][1])
+    # without its trace, one line says so
+    (tmp_path / "edited.trace.jsonl").unlink()
+    with pytest.raises(UserError, match="trace"):
+        E.read_learned(edited)
