@@ -160,9 +160,11 @@ def map_elites_pours(seed: int, budget: int, run) -> Chosen:
 
 
 def measure(oracle: str, seeds: Sequence[int], budgets: Sequence[int], store: Path,
-            methods: Sequence[str] = METHODS) -> list[dict]:
+            methods: Sequence[str] = METHODS,
+            done: Callable[[list[dict]], None] | None = None) -> list[dict]:
     """One row per method, seed and budget: the measures of its theory on
-    the questions, and the behaviours its pours show."""
+    the questions, and the behaviours its pours show; `done` is given the
+    rows so far after each seed."""
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen
     from pantarhei.bridge.evaluation.measures import (contrast_keys, defaults_only,
                                                       question_key, question_measures,
@@ -207,6 +209,8 @@ def measure(oracle: str, seeds: Sequence[int], budgets: Sequence[int], store: Pa
                     print(f"{method:11} seed {seed} {n:4} pours: " + ", ".join(
                         f"{label} {_num(m.get(k))}" for k, label in MEASURES)
                         + f", behaviours {behaviours_seen(S)}", flush=True)
+            if done is not None:
+                done(rows)
     finally:
         sim.close()
     return rows
@@ -303,14 +307,18 @@ def main(argv: list[str] | None = None) -> None:
     if unknown or not seeds or not budgets or min(budgets) < 1:
         raise SystemExit(f"unknown method {', '.join(unknown)} (choose among {', '.join(METHODS)})"
                          if unknown else "give seeds and budgets of at least 1 pour")
-    rows = measure(args.oracle, seeds, budgets, Path(args.store), methods)
-    text = table(rows, args.oracle, seeds)
-    print(text)
     folder = Path(args.report)
     folder.mkdir(parents=True, exist_ok=True)
-    (folder / f"knowledge-{args.oracle}.md").write_text(text, encoding="utf-8")
-    plot(rows, folder / f"knowledge-{args.oracle}.png")
-    print(f"written: {folder / f'knowledge-{args.oracle}.md'}, {folder / f'knowledge-{args.oracle}.png'}")
+    md, png = folder / f"knowledge-{args.oracle}.md", folder / f"knowledge-{args.oracle}.png"
+
+    def write(rows: list[dict]) -> None:        # after each seed: what is measured is kept
+        measured = sorted({r["seed"] for r in rows})
+        md.write_text(table(rows, args.oracle, measured), encoding="utf-8")
+        plot(rows, png)
+
+    rows = measure(args.oracle, seeds, budgets, Path(args.store), methods, write)
+    print(table(rows, args.oracle, seeds))
+    print(f"written: {md}, {png}")
 
 
 if __name__ == "__main__":

@@ -34,8 +34,8 @@ option(budget, count, range(1, 100000), 25,
   "the budget: the pours of this many batches, probes included (discover); this many explored antecedents (paper)").
 option(pours, count, range(1, 1000000), 775,
   "learn: the budget: every pour the run simulates, in batches").
-option(curiosity, choice, one_of(discover, paper, learn), discover,
-  "discover: queue the candidates (moves past where a significant plane's verdict flips, neighbours, random jumps) a forest of the pours so far predicts to show something new, most novel first; paper: Algorithm 1 as the paper states it; learn: from the ordinary pour, explore what questions say, the antecedent whose pours would change the theory most first, and write one rule layer of the explored antecedents").
+option(curiosity, choice, one_of(learn, discover, paper), learn,
+  "learn: from the ordinary pour, explore what questions say, the antecedent whose pours would change the theory most first, and write one layer of rules of the explored antecedents; discover: queue the candidates (moves past where a significant plane's verdict flips, neighbours, random jumps) a forest of the pours so far predicts to show something new, most novel first; paper: Algorithm 1 as the paper states it").
 option(body, count, range(1, 4), 2,
   "learn: the most propositions an explored antecedent says").
 option(queue, count, range(1, 100000), 64,

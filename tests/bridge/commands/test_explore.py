@@ -67,7 +67,7 @@ def test_progress_counts_the_budget_it_spends(tmp_path):
     paper's counts explored antecedents."""
     base = ["--oracle", "synthetic", "--executor", "inline", "--budget", "3", "--batch", "12",
             "--no-general", "--store", str(tmp_path / "s.sqlite")]
-    r = run_cli("explore", *base, "--out", str(tmp_path / "d.pl"))
+    r = run_cli("explore", *base, "--curiosity", "discover", "--out", str(tmp_path / "d.pl"))
     assert r.code == 0, r.err
     last = [ln for ln in r.err.replace("\r", "\n").splitlines() if ln.startswith("exploring")][-1]
     spent = int(r.out.split(" simulations")[0].split()[-1])

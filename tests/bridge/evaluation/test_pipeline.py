@@ -26,7 +26,8 @@ def learned(tmp_path_factory) -> tuple[Path, Path]:
     d = tmp_path_factory.mktemp("learned")
     # without the priors' batch: with it, this small run's last antecedent ends
     # past the last whole batch both methods are compared at
-    r = run_cli("explore", *FAST, "--prior-batch", "0", "--budget", "6", "--batch", "12", "--out",
+    r = run_cli("explore", *FAST, "--curiosity", "discover", "--prior-batch", "0", "--budget", "6",
+                "--batch", "12", "--out",
                 str(d / "t.pl"), "--store", str(d / "s.sqlite"))
     assert r.code == 0, r.err
     return d / "t.pl", d / "s.sqlite"

@@ -19,7 +19,8 @@ from tests.conftest import run_cli
 
 # Algorithm 1's rules alone: the general layer is learned from the pours
 # once the loop ends, whether it ran at once or was resumed (test_running.py)
-ARGS = ["explore", "--oracle", "synthetic", "--executor", "inline", "--budget", "10",
+ARGS = ["explore", "--curiosity", "discover", "--oracle", "synthetic", "--executor", "inline",
+        "--budget", "10",
         "--seed", "3", "--no-progress", "--no-general"]
 
 
@@ -72,7 +73,8 @@ def test_killed_exploration_resumes_to_the_same_theory(tmp_path):
 # explored in (below).
 def test_resume_of_a_finished_run_and_a_longer_one(tmp_path):
     common = ["--out", str(tmp_path / "t.pl"), "--store", str(tmp_path / "s.sqlite")]
-    short = ["explore", "--oracle", "synthetic", "--executor", "inline", "--no-progress",
+    short = ["explore", "--curiosity", "discover", "--oracle", "synthetic", "--executor", "inline",
+             "--no-progress",
              "--no-general", "--seed", "4", "--prior-batch", "0"]
     assert run_cli(*short, "--budget", "4", *common).code == 0
     # resuming with a larger budget continues where it stopped ...
@@ -89,7 +91,8 @@ def test_resume_of_a_finished_run_and_a_longer_one(tmp_path):
 def test_a_longer_run_continues_after_the_priors_batch(tmp_path):
     out = tmp_path / "t.pl"
     common = ["--out", str(out), "--store", str(tmp_path / "s.sqlite")]
-    short = ["explore", "--oracle", "synthetic", "--executor", "inline", "--no-progress",
+    short = ["explore", "--curiosity", "discover", "--oracle", "synthetic", "--executor", "inline",
+             "--no-progress",
              "--no-general", "--seed", "4"]
     assert run_cli(*short, "--budget", "4", *common).code == 0
     before = out.with_suffix(".trace.jsonl").read_text().splitlines()
@@ -104,7 +107,8 @@ def test_a_longer_run_continues_after_the_priors_batch(tmp_path):
 
 
 def test_resume_with_nothing_saved_starts_afresh(tmp_path):
-    r = run_cli("explore", "--oracle", "synthetic", "--executor", "inline", "--no-progress",
+    r = run_cli("explore", "--curiosity", "discover", "--oracle", "synthetic", "--executor",
+                "inline", "--no-progress",
                 "--no-general", "--budget", "2", "--resume", "--out", str(tmp_path / "t.pl"),
                 "--store", str(tmp_path / "s.sqlite"))
     assert r.code == 0

@@ -47,7 +47,8 @@ def test_by_default_the_priors_are_explored(tmp_path):
     from pantarhei.bridge.exploration import running as exploration
     from pantarhei.bridge.exploration.running import Options
 
-    r = exploration.explore(Options(oracle="synthetic", budget=3, out=tmp_path / "d.pl",
+    r = exploration.explore(Options(curiosity="discover", oracle="synthetic", budget=3,
+                                    out=tmp_path / "d.pl",
                                     store=tmp_path / "d.sqlite", progress=False,
                                     executor="inline", general=False))
     assert [t["via"] for t in trace(r)] == ["initial", "prior"]
