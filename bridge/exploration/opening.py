@@ -49,10 +49,13 @@ def open_bar(s: Session, done: int) -> None:
 
 def progress(s: Session, iteration: int) -> tuple[int, str, int]:
     """The progress bar's total, unit and position after `iteration`
-    iterations: for the discovering curiosity, whose budget is in pours,
-    the pours of `budget` batches and the pours spent (probes included);
-    for the paper's, `budget` explored antecedents."""
+    iterations: for the learning curiosity, `pours` and the pours spent;
+    for the discovering one, whose budget is in pours, the pours of
+    `budget` batches and the pours spent (probes included); for the
+    paper's, `budget` explored antecedents."""
     rules = int(s.settings["budget"])
+    if s.settings.get("curiosity") == "learn":
+        return int(s.settings["pours"]), "pour", len(s.params)
     if s.settings.get("curiosity") == "discover":
         return rules * int(s.settings["batch"]), "pour", len(s.params)
     return rules, "rule", iteration
@@ -62,7 +65,7 @@ def postfix(s: Session, explored: int, a_new: int | None = None) -> str:
     """The text after the progress bar: batches (discover) or simulations
     and rules (paper) so far, and the candidates in A_new."""
     text = (f"{explored} batch{'' if explored == 1 else 'es'}"
-            if s.settings.get("curiosity") == "discover"
+            if s.settings.get("curiosity") in ("discover", "learn")
             else f"{len(s.params)} simulations, {explored} rules")
     if a_new is not None:
         text += f", {a_new} in A_new"

@@ -30,3 +30,11 @@ def test_progress_counts_pours_for_discover_and_rules_for_the_paper():
     paper = SimpleNamespace(settings={"curiosity": "paper", "budget": 3, "batch": 31}, params=pours)
     assert progress(paper, 2) == (3, "rule", 2)
     assert postfix(paper, 2) == "40 simulations, 2 rules"
+
+
+def test_progress_counts_every_pour_for_the_learning_curiosity():
+    pours = np.zeros((40, 30))
+    learn = SimpleNamespace(settings={"curiosity": "learn", "budget": 3, "batch": 4,
+                                      "pours": 775}, params=pours)
+    assert progress(learn, 10) == (775, "pour", 40)
+    assert postfix(learn, 10, 64) == "10 batches, 64 in A_new"
