@@ -13,7 +13,8 @@ import time
 #: The benchmark modules: the front door (start-up), then in the order the
 #: loop runs: the world, the exploration and what it discovers, the
 #: reasoning, the general theory.
-MODULES = ("startup", "oracle", "exploration", "discovery", "reasoning", "loading", "generalization")
+MODULES = ("startup", "oracle", "exploration", "discovery", "knowledge", "reasoning", "loading",
+           "generalization")
 
 
 def main() -> int:

@@ -1,8 +1,8 @@
 """Knowledge per pour: what a theory learned from the pours each method
 chooses knows, at the same total of pours, every pour counted.
 
-    python -m benchmarks knowledge                        # PyBullet, seeds 101-105
-    python -m benchmarks knowledge --oracle synthetic --seeds 101,102 --budgets 40,80
+    python -m benchmarks knowledge                        # PyBullet, seeds 101-105 (make bench)
+    python -m benchmarks.knowledge --oracle synthetic --seeds 101,102 --budgets 40,80
 
 The methods, each spending the same budget on pours of its own choice and
 learning the same kind of theory from its own pours only (no pours of the
@@ -289,7 +289,9 @@ def _numbers(text: str) -> list[int]:
     return out
 
 
-def main(argv: list[str] | None = None) -> None:
+def main(argv: Sequence[str] = ()) -> None:
+    """The benchmark with the options `argv` (none: its defaults, as `make
+    bench` runs it)."""
     from pantarhei.oracle.store import DEFAULT_STORE
 
     p = argparse.ArgumentParser(prog="python -m benchmarks knowledge", description=__doc__,
@@ -300,7 +302,7 @@ def main(argv: list[str] | None = None) -> None:
     p.add_argument("--methods", default=",".join(METHODS))
     p.add_argument("--store", default=DEFAULT_STORE)
     p.add_argument("--report", default="report", help="folder for knowledge-ORACLE.md and .png")
-    args = p.parse_args(argv)
+    args = p.parse_args(list(argv))
     seeds, budgets = _numbers(args.seeds), sorted(_numbers(args.budgets))
     methods = [m for m in args.methods.split(",") if m]
     unknown = sorted(set(methods) - set(METHODS))
@@ -322,4 +324,6 @@ def main(argv: list[str] | None = None) -> None:
 
 
 if __name__ == "__main__":
-    main()
+    import sys
+
+    main(sys.argv[1:])

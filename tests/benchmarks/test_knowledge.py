@@ -1,0 +1,46 @@
+"""benchmarks/knowledge.py on the synthetic oracle: every method's pours
+counted up to the budget, the curiosity's theory at a budget learned over
+what it had explored by then, the table and the plot written."""
+from __future__ import annotations
+
+import numpy as np
+
+from benchmarks import knowledge
+
+
+def test_the_designed_experiment_asks_each_proposition_in_turn(tmp_path):
+    from pantarhei.theory.lexicon import load_vocabulary
+
+    sim = lambda P: np.zeros((len(P), 9))  # noqa: E731  (the pours only are looked at)
+    chosen = knowledge.designed(101, 100, sim)
+    assert len(chosen.P) == 100
+    n = len(load_vocabulary().propositions) + 1
+    assert chosen.bodies(100)[0] == () and len(chosen.bodies(100)) == min(100, n)
+    rnd = knowledge.random_bodies(101, 30, sim)
+    assert len(rnd.P) == 30 and rnd.bodies(30)[0] == () and len(rnd.bodies(30)) == 30 // 4
+
+
+def test_curves_table_and_plot(tmp_path):
+    knowledge.main(["--oracle", "synthetic", "--seeds", "101", "--budgets", "24,48",
+                    "--methods", "curiosity,designed", "--store", str(tmp_path / "s.sqlite"),
+                    "--report", str(tmp_path)])
+    text = (tmp_path / "knowledge-synthetic.md").read_text()
+    rows = [ln for ln in text.splitlines() if ln.startswith("| curiosity") or
+            ln.startswith("| designed")]
+    assert [r.split(" | ")[:2] for r in rows] == [["| curiosity", "24"], ["| designed", "24"],
+                                                  ["| curiosity", "48"], ["| designed", "48"]]
+    assert (tmp_path / "knowledge-synthetic.png").stat().st_size > 1000
+
+
+def test_the_curiositys_theory_at_a_budget_has_what_it_explored_by_then(tmp_path):
+    from pantarhei.bridge.exploration.simulation import open_simulator
+
+    sim = open_simulator("synthetic", "inline", None, tmp_path / "s.sqlite")
+    try:
+        run = lambda P: np.asarray(sim.simulate(P, progress=False), dtype=float)  # noqa: E731
+        chosen = knowledge.curiosity(101, 40, "synthetic", tmp_path / "s.sqlite", run)
+    finally:
+        sim.close()
+    assert len(chosen.P) == 40
+    assert chosen.bodies(4) == [()]
+    assert set(chosen.bodies(20)) <= set(chosen.bodies(40)) and len(chosen.bodies(40)) > 1
