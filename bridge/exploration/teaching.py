@@ -14,28 +14,31 @@ simulate next are those that would change the theory most.
 For each candidate B, with every pour so far pooled in a model of the
 pours (`Meaning`: a gradient-boosted classifier per expectation, averaged
 over parameterizations drawn for B), M_e(B) is the model's likelihood of
-e for B, and T_e(B) what the theory answers now: M_e of the largest
-explored antecedent that B holds (its deciding rule). B's value is
+e for B. B's value is
 
     asked(B) * (departure(B) + uncertainty * sum_e sd_e(B) * drop(n_B))
 
-where departure(B) = sum_e |M_e(B) - T_e(B)| is how far B's answer would
-move from the one it gets now (a proposition that changes what happens,
-or a pair whose propositions interact: what one proposition at a time
-cannot show), and the second term is how much a batch of b more pours
-would narrow the standard error of B's likelihoods: with n_B pours in B's
-support, sd_e(B) = sqrt(q (1 - q)) for q = (n_B M_e(B) + 1) / (n_B + 2)
-(the model's likelihood, drawn to one half where B has few pours of its
-own: the model's guess for an antecedent it never saw is no knowledge),
-and drop(n) = 1/sqrt(n + 1) - 1/sqrt(n + b + 1), large for an antecedent
-without pours and small once it has many. asked(B) is how often B
-is asked, as the learner weighs the bodies it answers
-(generalize.Settings: the empty antecedent most, a proposition alone 1,
-a pair less): what one proposition does is learned from the proposition
-alone, before the pairs that hold it. An explored antecedent
-is a candidate for another batch by the second term alone (its departure
-is its rule's). The value is 0 for no candidate only where everything is
-known.
+departure(B) = sum_e min_A |M_e(B) - M_e(A)| over the antecedents A that B
+holds with one proposition less: for a proposition alone, how far its
+answers move from the ordinary pour's; for a pair, how far they move from
+both of its propositions' (an interaction, which one proposition at a
+time cannot show; what one proposition does is learned from it alone).
+For an explored antecedent it is 0: its rule gives its answers.
+
+The second term is how much a batch of b more pours would narrow the
+standard error of B's likelihoods: with n_B pours in B's support,
+sd_e(B) = sqrt(q (1 - q)) for q = (n_B M_e(B) + 1) / (n_B + 2) (the
+model's likelihood, drawn to one half where B has few pours of its own:
+the model's guess for an antecedent it never saw is no knowledge), and
+drop(n) = 1/sqrt(n + 1) - 1/sqrt(n + b + 1), large for an antecedent
+without pours and small once it has many. A pair never explored gets
+none (its pours would sweep the pairs at random: it is explored for an
+interaction or not at all); an explored antecedent is a candidate for
+another batch by this term alone.
+
+asked(B) is how often B is asked, as the learner weighs the bodies it
+answers (generalize.Settings: the empty antecedent most, a proposition
+alone 1, a pair less).
 """
 from __future__ import annotations
 
@@ -81,18 +84,6 @@ class Teaching:
     uncertainty: list[float]
 
 
-def deciding(body: Sequence[str], explored: Sequence[Sequence[str]]) -> int | None:
-    """The index of the explored antecedent that decides `body` in the
-    theory: the largest one that `body` holds (the first of equals); None
-    when none does (before a_0 is explored)."""
-    b = set(body)
-    best, size = None, -1
-    for i, e in enumerate(explored):
-        if set(e) <= b and len(e) > size:
-            best, size = i, len(e)
-    return best
-
-
 def model(P: np.ndarray, S: np.ndarray, seed: int):
     """The model of the pours the value is estimated with: a Meaning of the
     first `fitted_on(n)` of the n pours (P, S) whose simulation did not
@@ -136,7 +127,8 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
     done = [tuple(sorted(str(p) for p in e)) for e in explored]
     if not cands:
         return Teaching([], [], [])
-    bodies = list(dict.fromkeys(done + cands))
+    parents = {c: [tuple(q for q in c if q != p) for p in c] for c in cands}
+    bodies = list(dict.fromkeys(done + cands + [a for c in cands for a in parents[c]]))
     index = {b: i for i, b in enumerate(bodies)}
     if meaning is not None:
         with threadpool_limits(1):
@@ -148,13 +140,17 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
     value, dep, unc = [], [], []
     for c in cands:
         m = M[index[c]]
-        d = deciding(c, done)
-        t = M[index[done[d]]] if d is not None else np.full_like(m, 0.5)
+        explored = c in done
+        if explored or not c:
+            departure = 0.0
+        else:
+            away = np.min(np.abs(m - M[[index[a] for a in parents[c]]]), axis=0)
+            departure = float(away.sum())
         n = int(in_support(P, c).sum()) if len(P) else 0
-        departure = float(np.abs(m - t).sum())
         q = (n * m + 1) / (n + 2)
         drop = 1 / np.sqrt(n + 1) - 1 / np.sqrt(n + batch + 1)
-        uncertainty = float(np.sqrt(q * (1 - q)).sum() * drop)
+        uncertainty = (float(np.sqrt(q * (1 - q)).sum() * drop)
+                       if explored or len(c) <= 1 else 0.0)
         dep.append(round(departure, 6))
         unc.append(round(uncertainty, 6))
         value.append(round(asked.get(len(c), learner.pair_weight)

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pantarhei.bridge.exploration.teaching import deciding, fitted_on, model, teaching
+from pantarhei.bridge.exploration.teaching import fitted_on, model, teaching
 from pantarhei.oracle.generative import sample, to_dict
 from pantarhei.oracle.synthetic import scores
 
@@ -18,14 +18,6 @@ def pours(body, n, seed):
 
 def pooled(*parts):
     return np.vstack([p for p, _ in parts]), np.vstack([s for _, s in parts])
-
-
-def test_deciding_is_the_largest_explored_antecedent_held():
-    explored = [(), ("pour_to_side",), ("light_liquid", "pour_to_side")]
-    assert deciding(("pour_high", "pour_to_side"), explored) == 1
-    assert deciding(("light_liquid", "pour_to_side"), explored) == 2
-    assert deciding(("pour_high",), explored) == 0
-    assert deciding(("pour_high",), [("pour_to_side",)]) is None
 
 
 def test_the_model_is_fitted_again_as_the_pours_grow_by_a_fifth():
@@ -62,3 +54,13 @@ def test_the_same_pours_give_the_same_values():
     a = teaching(P, S, [(), ("light_liquid",)], cands, 1.0, 4, 7)
     b = teaching(P, S, [(), ("light_liquid",)], cands, 1.0, 4, 7, model(P, S, 7))
     assert a == b
+
+
+def test_a_pair_teaches_only_where_its_propositions_interact():
+    """Pouring from the side spills whatever the source's bounciness: the
+    pair moves no answer away from pouring from the side alone, and a
+    pair never explored is no candidate for its uncertainty."""
+    P, S = pooled(pours([], 40, 1), pours(["pour_to_side"], 8, 2), pours(["bouncy_source"], 8, 3))
+    found = teaching(P, S, [(), ("pour_to_side",), ("bouncy_source",)],
+                     [("bouncy_source", "pour_to_side")], 1.0, 4, 1)
+    assert found.departure[0] < 0.3 and found.uncertainty == [0.0]
