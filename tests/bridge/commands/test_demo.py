@@ -49,9 +49,15 @@ def test_the_demo_plans_what_the_ordinary_pour_does_not_reach(tmp_path):
     from pantarhei.bridge.commands.demo import PLANS, chosen_plan
 
     light = tmp_path / "light.pl"
-    light.write_text("rule(d, defeasible, liquid_leaves_source).\nlearned(d).\n"
-                     "rule(l, defeasible, neg(liquid_leaves_source)).\nbody(l, light_liquid).\n"
-                     "learned(l).\n")
+    rules = ("rule(d, defeasible, liquid_leaves_source).\nlearned(d).\n"
+             "rule(l, defeasible, neg(liquid_leaves_source)).\nbody(l, light_liquid).\n"
+             "learned(l).\n")
+    light.write_text(rules)
+    # a light liquid does not leave the source, and nothing makes it: the next query
+    assert chosen_plan(loading.load([light]))[0] != ["light_liquid"]
+    light.write_text(rules + "rule(t, defeasible, liquid_leaves_source).\n"
+                             "body(t, light_liquid).\nbody(t, pour_upside_down).\nlearned(t).\n")
+    # pouring it upside down does: that is the plan the demo asks for
     assert chosen_plan(loading.load([light])) == (["light_liquid"], ["liquid_leaves_source"], True)
     everything = tmp_path / "all.pl"
     everything.write_text("".join(f"rule(r{i}, defeasible, {e}).\nlearned(r{i}).\n"
