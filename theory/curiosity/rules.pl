@@ -222,34 +222,33 @@ write_facts(Out, Settings, Facts) :-
 %   each fact.
 write_general(_, _, []) :- !.
 write_general(Out, Settings, General) :-
-    Settings.curiosity == learn,
-    !,
-    forall(member(Line, [ "",
-                          "% The rules curiosity learned: per expectation, a default (the",
-                          "% ordinary pour, the empty antecedent) and the explored antecedents",
-                          "% whose likelihoods the rest of the theory does not give",
-                          "% (bridge/learning/generalize.py over the explored antecedents).",
-                          "% provenance(Id, antecedent, A): the explored antecedent of its body;",
-                          "% support: the pours whose description holds the body; kept: how",
-                          "% many of them keep the head; confidence_permille: P(head | body), the",
-                          "% share of the pours sampled for the body (the rest an ordinary pour)",
-                          "% that keep the head, every pour of the run pooled to estimate it.",
-                          "% sup/2 below orders the rules that one scene can hold (see",
-                          "% bridge/learning/layers.py)." ]),
-           format(Out, "~w~n", [Line])),
+    general_header(Settings.curiosity, Header),
+    forall(member(Line, ["" | Header]), format(Out, "~w~n", [Line])),
     forall(member(F, General), write_fact(Out, F)).
-write_general(Out, _, General) :-
-    forall(member(Line, [ "",
-                          "% General rules, learned from every pour of the exploration",
-                          "% and the learner's own pours (bridge/learning/gaps.py), by",
-                          "% bridge/learning/generalize.py: a default per expectation and the",
-                          "% contrasts that move it. provenance(Id, support, N): the pours whose",
-                          "% description holds the body; kept: how many of them keep the head;",
-                          "% confidence_permille: P(head | body), the share of the pours sampled",
-                          "% for the body (the rest an ordinary pour) that keep the head.",
-                          "% sup/2 below orders both layers (see bridge/learning/layers.py)." ]),
-           format(Out, "~w~n", [Line])),
-    forall(member(F, General), write_fact(Out, F)).
+
+%   general_header(+Curiosity, -Lines): what the header of the rules after
+%   Algorithm 1's says: the learning curiosity's one layer, or the others'
+%   general layer.
+general_header(learn, Lines) :- !,
+    Lines = [ "% The rules curiosity learned: per expectation, a default (the",
+              "% ordinary pour, the empty antecedent) and the explored antecedents",
+              "% whose likelihoods the rest of the theory does not give",
+              "% (bridge/learning/generalize.py over the explored antecedents).",
+              "% provenance(Id, antecedent, A): the explored antecedent of its body;",
+              "% support: the pours whose description holds the body; kept: how",
+              "% many of them keep the head; confidence_permille: P(head | body), the",
+              "% share of the pours sampled for the body (the rest an ordinary pour)",
+              "% that keep the head, every pour of the run pooled to estimate it.",
+              "% sup/2 below orders the rules that one scene can hold (see",
+              "% bridge/learning/layers.py)." ].
+general_header(_, [ "% General rules, learned from every pour of the exploration",
+                    "% and the learner's own pours (bridge/learning/gaps.py), by",
+                    "% bridge/learning/generalize.py: a default per expectation and the",
+                    "% contrasts that move it. provenance(Id, support, N): the pours whose",
+                    "% description holds the body; kept: how many of them keep the head;",
+                    "% confidence_permille: P(head | body), the share of the pours sampled",
+                    "% for the body (the rest an ordinary pour) that keep the head.",
+                    "% sup/2 below orders both layers (see bridge/learning/layers.py)." ]).
 
 write_fact(Out, F) :-
     write_term(Out, F, [quoted(true), spacing(next_argument)]),
