@@ -183,7 +183,8 @@ def test_failed_simulations_are_left_out_and_counted(tmp_path):
     failed ones out of weights and fits, and says how many failed."""
     crash = list(range(40, 57))            # about a sixth of the prior's counts (40 to 140)
     r = exploration.explore(Options(
-        oracle="faulty", oracle_options={"crash": crash}, budget=2, batch=16, probe=0,
+        curiosity="discover", oracle="faulty", oracle_options={"crash": crash}, budget=2,
+        batch=16, probe=0,
         out=tmp_path / "f.pl", store=tmp_path / "f.sqlite", progress=False,
         executor="local", workers=2, initial=["pour_low"], general=False))
     assert r["explored"] == 2 and 0 < r["failed"] < r["simulations"]
