@@ -13,7 +13,9 @@ for the discovering one, its candidates by novelty (discover.pl). The
 state (state.pl) and a trace of the step are saved after each step
 (exploration_checkpoint).
 
-The budget is `budget` batches of simulations: as many antecedents for
+For the learning curiosity the step queues what the antecedent's pours
+teach (teach.pl) and fits no plane, and the budget is `pours`, every pour.
+Otherwise the budget is `budget` batches of simulations: as many antecedents for
 the paper's curiosity; the discovering one also spends pours on probes
 and on more batches of undecided antecedents. With prior_batch(1) (the default)
 the last batch of the budget (or the next, when A_new is empty) goes to

@@ -13,8 +13,9 @@ most novel first). Via is `initial`; `prior` for the empty antecedent
 explored last (prior/1); via(Expectation, Param, Sign) for the plane,
 parameter and sign (up or down) that produced it; `near` for a neighbour
 of the antecedent explored before it; `jump` for a random valid
-antecedent; or more(Id, K) for the K-th more batch of an explored
-antecedent. SetAside lists aside(Iteration, Attempt, Props) for each
+antecedent; more(Id, K) for the K-th more batch of an explored
+antecedent; or again(Id) for another batch of an explored antecedent
+chosen by the learning curiosity (teach.pl). SetAside lists aside(Iteration, Attempt, Props) for each
 candidate set aside after its probe (probe.pl). The state is saved after
 every explored antecedent, so an exploration can resume.
 */
