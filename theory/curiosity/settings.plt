@@ -12,14 +12,26 @@ test(default_initial_is_valid) :-
 % the course of a discovering run: course/2's options in the table's
 % order, without the paper's slope; probe and prior_batch only when not 0
 test(course_options_discover) :-
-    settings([], S),
+    settings([curiosity(discover)], S),
     course_options(S, Names),
     Names = [oracle, seed, batch, curiosity, significance, permutations, resample,
              novelty, jumps, probe, probe_attempts, prior_batch, breadth, ridge, initial],
-    settings([probe(0), prior_batch(0)], S0),
+    settings([curiosity(discover), probe(0), prior_batch(0)], S0),
     course_options(S0, Names0),
     \+ memberchk(probe, Names0), \+ memberchk(probe_attempts, Names0),
     \+ memberchk(prior_batch, Names0), memberchk(jumps, Names0).
+
+% the learning curiosity, the default: its budget in pours, its options,
+% a_0 the ordinary pour (the empty antecedent) and a batch of its own size
+test(course_options_learn) :-
+    settings([], S),
+    S.curiosity == learn, S.initial == [], once(default(learn_batch, B)), S.batch =:= B,
+    course_options(S, [oracle, seed, batch, pours, curiosity, body, queue, uncertainty,
+                       breadth, ridge, initial]),
+    recorded_settings(S, "9", Facts, []),
+    once(default(pours, Pours)),
+    memberchk(setting(pours, Pours), Facts),
+    memberchk(setting(uncertainty_permille, _), Facts).
 
 % the paper's curiosity: its slope, and none of discover's options
 test(course_options_paper) :-
@@ -30,7 +42,8 @@ test(course_options_paper) :-
 % in thousandths, the oracle with its version, probes at 0 still written,
 % the initial antecedent apart
 test(recorded_settings) :-
-    settings([probe(0), seed(7), novelty(0.25), initial([pour_near_rim])], S),
+    settings([curiosity(discover), probe(0), seed(7), novelty(0.25),
+              initial([pour_near_rim])], S),
     recorded_settings(S, "9", Facts, Antecedents),
     Facts = [setting(oracle, pybullet), setting(oracle_version, "9"), setting(seed, 7),
              setting(batch, _), setting(budget, 25), setting(curiosity, discover)|_],
