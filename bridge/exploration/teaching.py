@@ -124,11 +124,11 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
         meaning = model(P, S, seed)
     P, S = _valid(P, S)
     cands = [tuple(sorted(str(p) for p in c)) for c in candidates]
-    done = [tuple(sorted(str(p) for p in e)) for e in explored]
+    done = {tuple(sorted(str(p) for p in e)) for e in explored}
     if not cands:
         return Teaching([], [], [])
     parents = {c: [tuple(q for q in c if q != p) for p in c] for c in cands}
-    bodies = list(dict.fromkeys(done + cands + [a for c in cands for a in parents[c]]))
+    bodies = list(dict.fromkeys(cands + [a for c in cands for a in parents[c]]))
     index = {b: i for i, b in enumerate(bodies)}
     if meaning is not None:
         with threadpool_limits(1):
