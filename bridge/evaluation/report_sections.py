@@ -43,9 +43,11 @@ def opening(ev: Evaluation, command: str) -> list[str]:
     return [f"# Evaluation of `{ev.theory}`", "",
             f"Measured by `{command}` with the {ev.oracle} oracle (version "
             f"{s.get('oracle_version', '?')}). The theory was learned with seed {s.get('seed')}, "
-            f"{s.get('explored')} explored antecedents of {s.get('batch')} pours each "
-            f"({ev.budget} pours), qualify `{s.get('qualify')}`. All numbers below are in "
-            "`evaluation.json`.", "",
+            + (f"{s.get('explored')} explored antecedents in batches of {s.get('batch')} pours "
+               f"({ev.budget} pours), curiosity `learn`" if s.get("curiosity") == "learn" else
+               f"{s.get('explored')} explored antecedents of {s.get('batch')} pours each "
+               f"({ev.budget} pours), qualify `{s.get('qualify')}`")
+            + ". All numbers below are in `evaluation.json`.", "",
             ("The exploration's own pours, simulated here, give exactly the theory's rules."
              if ev.reproduced else
              "**The exploration's own pours, simulated here, do not give all of the theory's "
