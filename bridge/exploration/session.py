@@ -255,7 +255,8 @@ class Host:
         mode = str(request.get("mode", "weighted"))
         if mode not in QUALIFY:
             raise UserError(f"unknown qualify mode '{mode}' (choose {' or '.join(QUALIFY)})")
-        out = [{"id": str(e["id"]), **c} for e, c in zip(entries, s.consequents(entries, mode))]
+        out = ([{"id": str(e["id"]), **c} for e, c in zip(entries, s.consequents(entries, mode))]
+               if entries else [])
         if s.settings.get("curiosity") == "discover":   # batches of pours per antecedent
             counts: dict[str, int] = {}
             for t in s.store.trace(s.run):

@@ -27,16 +27,18 @@ writes both, once, in the common subset of Prolog and ASP.
 %   why it stopped, Stop, and how many candidates were left in A_new,
 %   Left), set_aside/3 for each proposition of a candidate set aside after
 %   its probe, and the rules of the explored antecedents, qualified by
-%   exploration_qualify (rule_facts/3).
+%   exploration_qualify (rule_facts/3); for the learning curiosity none
+%   (its rules are its one layer), and nothing is qualified.
 learned(Explored, SetAside, Settings, Stop, Left, Facts) :-
-    maplist(entry, Explored, Entries),
+    (   Settings.curiosity == learn
+    ->  Qualified = []                  % its one layer: learned_layer/2
+    ;   Qualified = Explored
+    ),
+    maplist(entry, Qualified, Entries),
     call_bridge(exploration_qualify, _{antecedents:Entries, mode:Settings.qualify}, Reply),
     setting_facts(Settings, Reply, Stop, Explored, Left, SettingFacts),
     findall(set_aside(I, K, P), ( member(aside(I, K, Ps), SetAside), member(P, Ps) ), AsideFacts),
-    (   Settings.curiosity == learn
-    ->  RuleFacts = []                  % its one layer: learned_layer/2
-    ;   rule_facts(Explored, Reply.antecedents, RuleFacts)
-    ),
+    rule_facts(Qualified, Reply.antecedents, RuleFacts),
     append([SettingFacts, AsideFacts, RuleFacts], Facts).
 
 %   setting_facts(+Settings, +Reply, +Stop, +Explored, +Left, -Facts):
