@@ -34,13 +34,17 @@ contrast keys (the clear keys where the defaults-only answer, the majority
 of the questions' pours, is wrong), calibration and coherence; beside them
 the distinct behaviours each method's pours show (nine-verdict vectors at
 least two pours show). Medians over the seeds with their range; a table
-and a plot of the learning curves go to `--report` (report/). Every pour
-goes through the store (pantarhei.sqlite), so a second run simulates
+and a plot of the learning curves go to `--report` (report/), and every
+row measured to `knowledge-ORACLE.json` beside them, after each seed: a
+later run measures only the methods, seeds and budgets that file lacks
+(`--fresh` measures all again), so an interrupted run loses nothing. Every
+pour goes through the store (pantarhei.sqlite), so a second run simulates
 nothing.
 """
 from __future__ import annotations
 
 import argparse
+import json
 import tempfile
 import zlib
 from dataclasses import dataclass
@@ -76,8 +80,6 @@ def _batch() -> int:
 def curiosity(seed: int, budget: int, oracle: str, store: Path, run) -> Chosen:
     """The learning curiosity's pours and, at each prefix, the antecedents
     explored by then (from its trace)."""
-    import json
-
     from pantarhei.bridge.exploration.running import Options, explore
     from pantarhei.bridge.exploration.trace import trace_path
 
@@ -161,10 +163,12 @@ def map_elites_pours(seed: int, budget: int, run) -> Chosen:
 
 def measure(oracle: str, seeds: Sequence[int], budgets: Sequence[int], store: Path,
             methods: Sequence[str] = METHODS,
-            done: Callable[[list[dict]], None] | None = None) -> list[dict]:
+            done: Callable[[list[dict]], None] | None = None,
+            known: Sequence[dict] = ()) -> list[dict]:
     """One row per method, seed and budget: the measures of its theory on
-    the questions, and the behaviours its pours show; `done` is given the
-    rows so far after each seed."""
+    the questions, and the behaviours its pours show; the rows of `known`
+    are kept and not measured again; `done` is given the rows so far after
+    each seed."""
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen
     from pantarhei.bridge.evaluation.measures import (contrast_keys, defaults_only,
                                                       question_key, question_measures,
@@ -179,7 +183,8 @@ def measure(oracle: str, seeds: Sequence[int], budgets: Sequence[int], store: Pa
     scenes = [q.antecedent for q in asked]
     sim = open_simulator(oracle, "local", None, store.absolute())
     run = lambda P: np.asarray(sim.simulate(P, progress=False), dtype=float)  # noqa: E731
-    rows = []
+    rows = list(known)
+    have = {(r["method"], r["seed"], r["pours"]) for r in rows}
     try:
         P_q, of = question_pours(asked, 1)
         S_q = run(P_q)
@@ -191,13 +196,16 @@ def measure(oracle: str, seeds: Sequence[int], budgets: Sequence[int], store: Pa
         top = max(budgets)
         for seed in seeds:
             for method in methods:
+                wanted = [n for n in budgets if (method, seed, n) not in have]
+                if not wanted:
+                    continue
                 if method == "curiosity":
                     chosen = curiosity(seed, top, oracle, store, run)
                 else:
                     make = {"random": random_bodies, "designed": designed,
                             "uncertainty": uncertainty, "map_elites": map_elites_pours}[method]
                     chosen = make(seed, top, run)
-                for n in budgets:
+                for n in wanted:
                     P, S = chosen.P[:n], chosen.S[:n]
                     good = np.all(np.isfinite(S), axis=1)
                     g = generalize(P[good], S[good], Settings(seed=seed), chosen.bodies(n))
@@ -278,6 +286,24 @@ def plot(rows: list[dict], path: Path) -> None:
     plt.close(fig)
 
 
+def _order(row: dict) -> tuple:
+    return (row["seed"], METHODS.index(row["method"]), row["pours"])
+
+
+def _rows(path: Path) -> list[dict]:
+    """The rows measured before, from `path` (none if it does not exist)."""
+    if not path.exists():
+        return []
+    try:
+        rows = json.loads(path.read_text(encoding="utf-8"))
+        if not all({"method", "seed", "pours"} <= set(r) for r in rows):
+            raise ValueError("a row without its method, seed or pours")
+    except (ValueError, TypeError, AttributeError) as e:
+        raise SystemExit(f"{path}: not the rows of the knowledge benchmark ({e}); "
+                         "move it aside or run with --fresh") from None
+    return rows
+
+
 def _numbers(text: str) -> list[int]:
     out = []
     for part in text.split(","):
@@ -301,7 +327,10 @@ def main(argv: Sequence[str] = ()) -> None:
     p.add_argument("--budgets", default="200,400,775", help="total pours, e.g. 200,400,775")
     p.add_argument("--methods", default=",".join(METHODS))
     p.add_argument("--store", default=DEFAULT_STORE)
-    p.add_argument("--report", default="report", help="folder for knowledge-ORACLE.md and .png")
+    p.add_argument("--report", default="report",
+                   help="folder for knowledge-ORACLE.md, .png and .json")
+    p.add_argument("--fresh", action="store_true",
+                   help="measure every row again (default: keep the rows of knowledge-ORACLE.json)")
     args = p.parse_args(list(argv))
     seeds, budgets = _numbers(args.seeds), sorted(_numbers(args.budgets))
     methods = [m for m in args.methods.split(",") if m]
@@ -311,16 +340,22 @@ def main(argv: Sequence[str] = ()) -> None:
                          if unknown else "give seeds and budgets of at least 1 pour")
     folder = Path(args.report)
     folder.mkdir(parents=True, exist_ok=True)
-    md, png = folder / f"knowledge-{args.oracle}.md", folder / f"knowledge-{args.oracle}.png"
+    md, png, data = (folder / f"knowledge-{args.oracle}.{x}" for x in ("md", "png", "json"))
+    known = [] if args.fresh else _rows(data)
 
     def write(rows: list[dict]) -> None:        # after each seed: what is measured is kept
-        measured = sorted({r["seed"] for r in rows})
-        md.write_text(table(rows, args.oracle, measured), encoding="utf-8")
-        plot(rows, png)
+        data.write_text(json.dumps(sorted(rows, key=_order), indent=1) + "\n", encoding="utf-8")
+        shown = [r for r in rows if r["seed"] in seeds and r["pours"] in budgets
+                 and r["method"] in methods]
+        md.write_text(table(shown, args.oracle, sorted({r["seed"] for r in shown})),
+                      encoding="utf-8")
+        plot(shown, png)
 
-    rows = measure(args.oracle, seeds, budgets, Path(args.store), methods, write)
-    print(table(rows, args.oracle, seeds))
-    print(f"written: {md}, {png}")
+    rows = measure(args.oracle, seeds, budgets, Path(args.store), methods, write, known)
+    write(rows)
+    print(table([r for r in rows if r["seed"] in seeds and r["pours"] in budgets
+                 and r["method"] in methods], args.oracle, seeds))
+    print(f"written: {md}, {png}, {data}")
 
 
 if __name__ == "__main__":

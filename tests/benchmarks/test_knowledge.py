@@ -44,3 +44,34 @@ def test_the_curiositys_theory_at_a_budget_has_what_it_explored_by_then(tmp_path
     assert len(chosen.P) == 40
     assert chosen.bodies(4) == [()]
     assert set(chosen.bodies(20)) <= set(chosen.bodies(40)) and len(chosen.bodies(40)) > 1
+
+
+def test_rows_measured_are_kept_and_not_measured_again(tmp_path, monkeypatch):
+    import json
+
+    args = ["--oracle", "synthetic", "--seeds", "101", "--budgets", "24", "--methods",
+            "designed", "--store", str(tmp_path / "s.sqlite"), "--report", str(tmp_path)]
+    knowledge.main(args)
+    data = tmp_path / "knowledge-synthetic.json"
+    rows = json.loads(data.read_text())
+    assert [(r["method"], r["seed"], r["pours"]) for r in rows] == [("designed", 101, 24)]
+    rows[0]["contrast_accuracy"] = 0.123            # a row measured before is kept as it is
+    data.write_text(json.dumps(rows))
+    asked = []
+    real = knowledge.designed
+    monkeypatch.setattr(knowledge, "designed", lambda *a: asked.append(a) or real(*a))
+    knowledge.main(args[:5] + ["24,48"] + args[6:])
+    assert [a[:2] for a in asked] == [(101, 48)]     # only the budget it lacked
+    rows = json.loads(data.read_text())
+    assert [(r["pours"], r["contrast_accuracy"] == 0.123) for r in rows] == [(24, True),
+                                                                             (48, False)]
+    assert "| designed | 24 | 0.123" in (tmp_path / "knowledge-synthetic.md").read_text()
+    data.write_text("{not json")
+    try:
+        knowledge.main(args)
+    except SystemExit as e:
+        assert "knowledge-synthetic.json" in str(e) and "--fresh" in str(e)
+    else:
+        raise AssertionError("a damaged rows file was read")
+    knowledge.main(args + ["--fresh"])
+    assert json.loads(data.read_text())[0]["seed"] == 101
