@@ -107,14 +107,11 @@ def utf8(text: bytes | str, what: str) -> str:
 
 
 def _understood(question: str) -> list[str]:
-    """The propositions of a question in words (UserError if none)."""
+    """The propositions of a question in words (none: the ordinary pour;
+    UserError for a question that says nothing of a pour)."""
     from pantarhei.bridge.reasoning.reading import understand
 
-    props = understand(question)
-    if not props:
-        raise UserError(f"understood none of \"{question}\": describe the scene with the "
-                        f"words of `pantarhei vocab`, or give --props P1,P2")
-    return props
+    return understand(question)
 
 
 def _ask_each_line(args: argparse.Namespace, theory, lines) -> int:

@@ -4,7 +4,9 @@
 the question in four steps:
 
 1. Everyday phrases become the vocabulary's words (words.py: "a full cup",
-   "move in fast", "right it up", "over the rim").
+   "move in fast", "right it up", "over the rim"), and a number with its
+   unit the proposition whose range holds it (quantities.py: "tilted at 45
+   degrees", "30 cm above the bowl").
 2. Each word gets the stage it speaks of: "start", "pour", "end",
    "approach" (the move into the pouring pose) or "retreat" (the move out
    of it), said by a stage word ("then", "after pouring", "move away" ...).
@@ -29,7 +31,9 @@ the question in four steps:
    of one dimension ("a light and heavy liquid") are refused as
    contradictory, and so is a question with a word that cannot be placed
    ("pour light": the light what?). A refusal is a UserError: one line.
-   A question with nothing understood in it reads as no propositions.
+   A question of pouring that names no proposition ("what happens if I
+   pour?") reads as no propositions: the ordinary pour; a question that
+   says nothing of a pour is refused.
 """
 from __future__ import annotations
 
@@ -39,7 +43,8 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.reasoning.words import FILLERS, rewrites
+from pantarhei.bridge.reasoning.quantities import CUES, REACH, UNITS, Quantity, parameter, proposition
+from pantarhei.bridge.reasoning.words import FILLERS, UNCLEAR, rewrites
 from pantarhei.theory.lexicon import load_vocabulary
 
 #: Words that end a clause (besides punctuation): negation stops there.
@@ -61,6 +66,7 @@ _MOVE = {"start": "approach", "approach": "approach", "pour": None, "retreat": "
 _OBJECTS = ("source", "destination", "liquid")
 #: Words that may stand between a body's value word and its noun: "a light, slippery bowl".
 _BETWEEN = {"a", "an", "the", "and", "or", "very"}
+_ARTICLES = {"a", "an", "the"}
 #: The most other words between the words of one reading.
 _MAX_GAP = 4
 
@@ -97,7 +103,9 @@ def _tokens(text: str) -> list[_Token]:
     text = re.sub(r"\bwon't\b", "will not", text)
     text = re.sub(r"n't\b|\b(do|does|did|is|are|was|were)nt\b", r"\1 not", text)
     text = re.sub(r"'s?\b", "", text)                 # the destination's rim
-    pairs = [(w, w) for w in re.findall(r"[a-z0-9_]+|[,;.!?:()]", text)]
+    text = re.sub(r"(\d)\s*\u00b0", r"\1 degrees ", text)  # 45°
+    text = re.sub(r"(\d)([a-z])", r"\1 \2", text)       # 30cm
+    pairs = [(w, w) for w in re.findall(r"\d+(?:\.\d+)?|[a-z0-9_]+|[,;.!?:()]", text)]
     joined = " ".join(w for w, _ in pairs)
     for pattern, words in rewrites():
         if pattern.search(joined):
@@ -136,6 +144,8 @@ class _Lexicon:
     slots: dict[str, tuple[str, str]]                # proposition -> ("stage"|"object", which)
     placeable: frozenset[str]                        # words a question must place
     known: frozenset[str]
+    amounts: frozenset[str]                          # propositions of how much liquid the source holds
+    asking: frozenset[str]                           # words of a question of the ordinary pour
 
 
 @lru_cache(maxsize=None)
@@ -158,8 +168,17 @@ def _lexicon() -> _Lexicon:
     known = {_stem(w) for t in texts for w in re.findall(r"[a-z]+", t.lower())}
     known |= {_stem(w) for _, words in rewrites() for w in words}
     known |= _IGNORED | slot_words | _NEGATION_STEMS | {"very"}
+    # the dimension whose gloss says the liquid is in the source: its values
+    # may be said of the source ("a full cup")
+    amounts = {n for n, p in props.items() if slots[n] == ("object", "liquid")
+               and "source" in vocab.dimensions[p.dimension].gloss}
+    # what a question of the ordinary pour may hold: its frame, the bodies,
+    # pouring and the expectations it asks of ("does the liquid spill?")
+    asking = _IGNORED | set(_OBJECT_STEMS) | {_BOWL, "pour"} | {
+        _stem(w) for e in vocab.expectations for w in re.findall(r"[a-z]+", f"{e.name} {e.gloss}")}
     return _Lexicon({k: frozenset(v) for k, v in phrases.items()}, slots,
-                    frozenset(placeable), frozenset(known))
+                    frozenset(placeable | {UNCLEAR}), frozenset(known), frozenset(amounts),
+                    frozenset(asking))
 
 
 def understand(question: str) -> list[str]:
@@ -169,7 +188,7 @@ def understand(question: str) -> list[str]:
     vocab = load_vocabulary()
     props = vocab.propositions
     lex = _lexicon()
-    tokens = _tokens(question)
+    tokens = _quantities(_tokens(question), lex)
     accepted = _read(tokens, lex)
     cues = [i for i, t in enumerate(tokens) if t.word in _NEGATION_STEMS]
     ends = _scope_ends(tokens)
@@ -213,7 +232,44 @@ def understand(question: str) -> list[str]:
                         f"--props P1,P2)" if others
                         else f"\"{question}\" excludes every value of {dim}")
     _refuse_unplaced(question, tokens, accepted, lex)
+    if not accepted and not _ordinary(tokens, lex):
+        raise UserError(f"understood none of \"{question}\": describe the scene with the "
+                        f"words of `pantarhei vocab`, or give --props P1,P2")
     return sorted(out)
+
+
+def _ordinary(tokens: list[_Token], lex: _Lexicon) -> bool:
+    """Whether a question that names no proposition asks of the ordinary
+    pour: it says pouring ("what happens if I pour water into a cup?") in
+    words the vocabulary knows, and nothing else."""
+    return any(t.word == "pour" for t in tokens) and all(t.word in lex.asking for t in tokens)
+
+
+def _quantities(tokens: list[_Token], lex: _Lexicon) -> list[_Token]:
+    """The tokens with each number and its unit ("45 degrees"), and the
+    words beside it that picked its parameter ("tilted at"), read as one:
+    the proposition whose range holds it (quantities.py)."""
+    numbers = [i for i, t in enumerate(tokens[:-1]) if re.fullmatch(r"\d+(?:\.\d+)?", t.word)
+               and tokens[i + 1].raw in UNITS and tokens[i + 1].clause == t.clause]
+    if not numbers:
+        return tokens
+    stages = _stages(tokens)
+    noun = _Nouns(tokens, _roles(tokens, lex), lex)
+    cue_of = {_stem(w): w for ws in CUES.values() for w in ws}     # stem -> cue word
+    read: dict[int, _Token] = {}
+    dropped: set[int] = set()
+    for i in numbers:
+        unit = tokens[i + 1].raw
+        q = Quantity(float(tokens[i].word) * UNITS[unit][1], UNITS[unit][0],
+                     f"{tokens[i].raw} {unit}")
+        near = [k for k in range(max(0, i - REACH), min(len(tokens), i + 2 + REACH))
+                if k not in (i, i + 1) and tokens[k].clause == tokens[i].clause
+                and tokens[k].word in cue_of and k not in dropped]
+        cues = {cue_of[tokens[k].word] for k in near}
+        param, by = parameter(q, _POSE[stages[i]], _MOVE[stages[i]], cues, noun(i, i + 1))
+        read[i] = _Token(proposition(q, param, cues), q.text, tokens[i].clause)
+        dropped |= {i + 1} | {k for k in near if by and cue_of[tokens[k].word] in CUES[by]}
+    return [read.get(i, t) for i, t in enumerate(tokens) if i not in dropped]
 
 
 def _read(tokens: list[_Token], lex: _Lexicon) -> list[tuple[str, frozenset[int]]]:
@@ -284,7 +340,33 @@ def _resolve(names: frozenset[str], positions: frozenset[int], stages: list[str]
         body = noun(min(positions), max(positions))
         of_bodies = [n for n in of_bodies if lex.slots[n][1] == body]
     fits += of_bodies
-    return fits[0] if len(fits) == 1 else None
+    if len(fits) != 1:
+        return None
+    return fits[0] if _agrees(fits[0], min(positions), max(positions), noun, lex) else None
+
+
+def _agrees(name: str, first: int, last: int, noun: "_Nouns", lex: _Lexicon) -> bool:
+    """Whether the proposition `name`, said by the words from `first` to
+    `last`, fits the noun they qualify: a property of the liquid said of a
+    bowl ("a sticky bowl"), how full the source is said of the destination
+    ("the destination is full"), or a pose of the source said of the
+    destination ("with the cup upside down": a bowl is the destination) is
+    no reading, and the words are refused as not placed."""
+    kind, which = lex.slots[name]
+    at = noun.at(first, last)
+    if at is None:
+        return True
+    body = noun.roles[at]
+    if kind == "stage":             # only "with the <destination> ..." says it of the destination
+        t = noun.tokens
+        said_with = at == first - 1 and any(
+            k >= 0 and t[k].word == "with" and all(t[m].word in _ARTICLES for m in range(k + 1, at))
+            for k in (at - 1, at - 2))
+        return not (said_with and body == "destination")
+    if body == which:
+        return True
+    # how much liquid there is, said of the source: "a full cup", "a source full of liquid"
+    return which == "liquid" and name in lex.amounts and not noun.names_destination(at)
 
 
 def _stages(tokens: list[_Token]) -> list[str]:
@@ -326,7 +408,10 @@ def _roles(tokens: list[_Token], lex: _Lexicon) -> dict[int, str]:
             while j > 0 and (tokens[j].word in _BETWEEN or tokens[j].word in lex.placeable):
                 j -= 1
             before = (tokens[j - 1].word, tokens[j].word) if j > 0 else None
-            roles[i] = "source" if before in _POURED_FROM else "destination"
+            after = [t.word for t in tokens[i + 1:i + 4]]
+            as_source = after[:1] == ["as"] and _OBJECT_STEMS.get(
+                after[2] if after[1:2] in (["the"], ["a"]) else (after[1:2] or [""])[0]) == "source"
+            roles[i] = "source" if before in _POURED_FROM or as_source else "destination"
     return roles
 
 
@@ -339,12 +424,14 @@ class _Nouns:
 
     def __init__(self, tokens: list[_Token], roles: dict[int, str], lex: _Lexicon):
         n = len(tokens)
-        self.roles = roles
+        self.roles, self.tokens = roles, tokens
         # stop[j]: the first position from j on that is a noun or a word
         # that cannot stand between a value word and its noun
         self.stop = [n] * (n + 1)
         for j in range(n - 1, -1, -1):
             passes = j not in roles and (tokens[j].word in _BETWEEN or tokens[j].word in lex.placeable)
+            if tokens[j].word in ("and", "or") and j + 1 < n and tokens[j + 1].word in _ARTICLES:
+                passes = False          # "heavy and the destination ...": a new noun's words
             self.stop[j] = self.stop[j + 1] if passes else j
         # before[i]: the nearest noun before i in its clause, or None
         self.before: list[int | None] = []
@@ -357,11 +444,19 @@ class _Nouns:
                 last = i
 
     def __call__(self, first: int, last: int) -> str | None:
+        at = self.at(first, last)
+        return None if at is None else self.roles[at]
+
+    def at(self, first: int, last: int) -> int | None:
+        """The position of the noun the words from `first` to `last` qualify."""
         j = self.stop[last + 1]
-        if j in self.roles:
-            return self.roles[j]
-        b = self.before[first]
-        return self.roles[b] if b is not None else None
+        return j if j in self.roles else self.before[first]
+
+    def names_destination(self, i: int) -> bool:
+        """Whether the noun at `i` says the destination in so many words
+        ("the destination", "a destination bowl"), not a bowl by default."""
+        return self.roles.get(i) == "destination" and (
+            self.tokens[i].word == "destination" or (i > 0 and self.tokens[i - 1].word == "destination"))
 
 
 def _refuse_unplaced(question: str, tokens: list[_Token], accepted, lex: _Lexicon) -> None:

@@ -20,37 +20,56 @@ from functools import lru_cache
 
 _IT = "[the source|the bowl|it]"
 
+#: The word that phrases too vague to read become ("pour from above": over
+#: the destination's middle, or high above it?): reading.py places it
+#: nowhere, so a question that says one is refused naming the phrase.
+UNCLEAR = "unclear"
+
 PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("", ("how much", "how many")),       # asks, does not say: "how much liquid spills"
+    (UNCLEAR, ("from above", r"re:\bfrom below\b(?! the (?:destination |bowl )?rim)",
+               "from the top", "from the bottom", "overhead")),
     # the stages: the move into the pouring pose, the move out of it, the end pose
-    ("end upright", (f"right {_IT} up", f"set {_IT} upright", f"stand {_IT} up")),
-    ("end", (f"put {_IT} down", f"set {_IT} down", "at the end", "in the end")),
-    ("approach", ("before pour", "move to the pour pose", "move into the pour pose",
+    ("end upright", (f"right {_IT} up", f"put {_IT} back upright", f"set {_IT} back upright",
+                     f"set {_IT} upright", f"stand {_IT} back up", f"stand {_IT} up",
+                     "back upright")),
+    ("end", (f"put {_IT} down", f"set {_IT} down", "at the end", "in the end", "finish")),
+    ("approach", (r"re:\b(?:move|bring)(?:s|d|ed|ing)? (?:it|the \w+) in\b",
+                  "before pour", "move to the pour pose", "move into the pour pose",
                   "move in", "come in")),
     ("away from", ("move away from", "pull away from")),    # a direction, not the retreat
-    ("retreat", ("after pour", "afterwards", "move away", "pull away", "pull back",
+    ("retreat", (r"re:\bpull(?:s|ed|ing)? (?:it|the \w+) (?:back|away)\b",
+                 "after pour", "afterwards", "move away", "pull away", "pull back",
                  "back off", "withdraw")),
     ("start", ("begin", "at first", "at the start", "initially")),
     # the containers: a bowl is the destination unless the question says otherwise
     ("bowl", ("cup", "container", "glass", "jug", "mug", "pot", "vessel", "jar", "beaker",
               "pitcher", "basin")),
     ("liquid", ("water", "fluid")),
-    ("destination", ("target",)),
+    ("destination", ("target", "receiving")),
     ("rim", ("edge", "lip", "brim")),
     # where the source is
     ("near the rim", ("over the [destination|bowl] rim", "at the [destination|bowl] rim",
+                      "from the [destination|bowl] rim",
                       "by the [destination|bowl] rim", "close to the [destination|bowl] rim")),
-    ("very high", ("very high up", "way up high", "way up")),
+    ("very high", ("very high up", "way up high", "way up", "from a great height")),
     ("high", ("high up", "up high")),
     ("low", ("low down", "down low", "just above", "close above")),
     ("below", ("beneath", "underneath", "under")),
     ("centred", ("centered", "center", "central", "in the middle", "middle")),
-    ("far", ("far off", "distant", "a long way")),
+    ("far", ("far off", "distant", "a long way", "from a distance", "at a distance")),
+    ("offset sideways", ("offset to the side", "offset to one side")),
+    ("side", ("off to one side", "off to the side", "to one side")),
     # how the source is tilted and moved
     ("upside down", ("inverted", "upturned", "turned over")),
+    ("rolled sideways", (r"re:\b(?:tilt|tip|lean)(?:s|ed|ing)?(?: (?:it|the \w+))? sideways\b",)),
+    ("tilted away from the destination", ("tilted back", "tilted backwards", "leaning back")),
+    ("slightly tilted", (r"re:\btilt(?:s|ed|ing)?(?: (?:it|the \w+))?(?: only)? "
+                         r"(?:a (?:little )?bit|a little)\b",)),
     ("upright", ("vertical", "straight up")),
     ("tilted", ("angled", "inclined")),
     ("steeply", ("sharply",)),
+    ("pour steeply tilted", (r"re:\bpour(?:s|ed|ing)? steeply\b(?! tilt)",)),
     ("slightly", ("gently", "barely")),
     ("halfway", ("half way",)),
     ("fast", ("quickly", "quick", "rapidly", "swiftly", "briskly")),
@@ -59,11 +78,12 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("dull", ("[does|do|will] not bounce",)),
     ("full", ("filled", "brimming", "full up")),
     ("much", ("a lot of", "lots of", "plenty of")),
-    ("little", ("a few drops of", "a drop of")),
+    ("little", ("a few drops of", "a few drops", "a drop of", "a drop")),
     ("slippery", ("slick", "smooth")),
     ("grippy", ("rough",)),
     ("runny", ("thin", "watery")),
     ("sticky", ("viscous", "thick", "syrupy", "gooey")),
+    ("sticky liquid", ("honey", "syrup", "molasses", "treacle")),
     ("bouncy", ("springy", "elastic")),
     # last, a bare "up" or "down" (not "high up", "upside down"): a move up or down
     ("raise", ("lift", "rise", "up")),
@@ -77,6 +97,7 @@ FILLERS = frozenset("""
     might must do does did is are was were be been being i we you it they me my our your its
     this that these those there here so as just really quite rather too also still only
     even keep hold turn make let use try get go put set move while during into onto out up down
+    take takes took taking
     and or but then with without by for from at on in over above of to a an the please say
     tell suppose imagine case ever all both each one way thing
 """.split())

@@ -126,7 +126,7 @@ def test_each_word_is_read_in_the_stage_it_is_said_in(question, props):
     ("pour fast", '"fast"'),                                     # pouring has no speed
     ("pour from the side, tilted", '"tilted"'),                  # tilted how far?
     ("pour from the side with a purple bowl", '"purple"'),       # a word not known
-    ("pour a heavy liquid from 45 degrees", '"45", "degrees"'),
+    ("pour a heavy liquid from 45 furlongs", '"45", "furlongs"'),     # no unit known
 ])
 def test_a_word_that_cannot_be_placed_is_refused_naming_it(question, words):
     with pytest.raises(UserError) as e:
@@ -140,7 +140,9 @@ def test_a_word_that_cannot_be_placed_is_refused_naming_it(question, words):
     ("will the liquid spill if we pour it from very high up?", ["pour_very_high"]),
     ("does the destination tip over when I pour a heavy liquid into a light bowl?",
      ["heavy_liquid", "light_destination"]),
-    ("sing me a song", []),                  # nothing understood: the caller says so
+    # a question of pouring that names no proposition asks of the ordinary pour
+    ("pour", []),
+    ("what happens if I pour water into a cup?", []),
 ])
 def test_the_words_of_a_question_are_not_refused(question, props):
     assert understand(question) == props
@@ -177,3 +179,77 @@ def test_a_long_question_is_read_in_time_linear_in_its_length(words):
     finally:
         signal.alarm(0)
         signal.signal(signal.SIGALRM, old)
+
+
+@pytest.mark.parametrize("question", ["sing me a song", "what happens?", "pour a song"])
+def test_a_question_that_says_nothing_of_a_pour_is_refused(question):
+    with pytest.raises(UserError, match="understood none of"):
+        understand(question)
+
+
+def test_ask_answers_pour_alone_as_the_ordinary_pour():
+    r = run_cli("ask", "what happens if I pour?")
+    assert r.code == 0 and "an ordinary pour" in r.out
+
+
+@pytest.mark.parametrize("question,props", [
+    # each noun phrase of a coordination keeps its own words, negated or not
+    ("the source is not heavy and the destination is heavy",
+     ["heavy_destination", "light_source"]),
+    ("the source is heavy and the destination is light", ["heavy_source", "light_destination"]),
+    ("the liquid is sticky and the source is not light", ["heavy_source", "sticky_liquid"]),
+    # everyday verbs and adverbs
+    ("pour steeply", ["pour_steeply_tilted"]),
+    ("finish with the source upside down", ["end_upside_down"]),
+    ("pour, then put the source back upright", ["end_upright"]),
+    ("only a few drops", ["little_liquid"]),
+])
+def test_coordination_and_everyday_words(question, props):
+    assert understand(question) == props
+
+
+@pytest.mark.parametrize("question,words", [
+    ("pour from the side and from above", '"from above"'),      # above: how high, or where?
+    ("the destination is full", '"full"'),                      # the source is what is filled
+    ("pour into a sticky bowl", '"sticky"'),                    # the liquid is what is sticky
+    ("pour with the cup upside down", '"upside"'),              # a cup is the destination
+])
+def test_words_said_of_what_they_cannot_be_said_of_are_refused(question, words):
+    with pytest.raises(UserError) as e:
+        understand(question)
+    assert f"could not place {words}" in str(e.value) and "\n" not in str(e.value)
+
+
+@pytest.mark.parametrize("question,props", [
+    ("tilted at 45 degrees", ["pour_half_tilted"]),
+    ("tilt the source 100\u00b0 when pouring", ["pour_steeply_tilted"]),
+    ("end at 10 degrees", ["end_slightly_tilted"]),
+    ("pour with the source rolled 20 degrees", ["pour_rolled"]),
+    ("30 cm above the bowl", ["pour_very_high"]),
+    ("pour 70 mm above the bowl", ["pour_mid_height"]),
+    ("pour 2 cm below the rim", ["pour_below_rim"]),
+    ("start 0.1 m above the destination, then pour low", ["pour_low", "start_mid_height"]),
+    ("pour 15 cm to the side", ["pour_to_side"]),
+    ("pour 5cm sideways", ["pour_offset_sideways"]),
+    ("move in over 3 seconds", ["slow_approach"]),
+    ("pour, then move away in 500 ms", ["fast_retreat"]),
+    ("a 2 kg bowl", ["heavy_destination"]),
+    ("pour from a source bowl of 300 g", ["light_source"]),
+    ("50 particles of liquid", ["some_liquid"]),
+])
+def test_numbers_with_units_are_read_as_the_proposition_whose_range_holds_them(question, props):
+    assert understand(question) == props
+
+
+@pytest.mark.parametrize("question,words", [
+    ("pour for 3 seconds", "pouring takes no time of its own"),
+    ("pour 10 cm from the bowl", "above the destination, or to its side?"),
+    ("pour with the source tilted 200 degrees", "200 deg of pour_pitch, which no proposition "
+                                                "holds (pour_tilted_back -30 to -5 deg;"),
+    ("pour from a 600 g source bowl", "600 g of source_mass, which no proposition holds"),
+    ("a 5 kg liquid", "the mass of which bowl?"),
+])
+def test_a_number_no_proposition_holds_is_refused_naming_the_ranges(question, words):
+    with pytest.raises(UserError) as e:
+        understand(question)
+    assert words in str(e.value) and "\n" not in str(e.value)

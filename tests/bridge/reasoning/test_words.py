@@ -22,6 +22,22 @@ from pantarhei.bridge.reasoning.reading import understand
     # a bowl is the destination, unless it is the one poured from
     ("pour out of a heavy cup into a light bowl", ["heavy_source", "light_destination"]),
     ("how much liquid spills if I pour from the side?", ["pour_to_side"]),
+    # everyday verbs and adverbs for the dimensions
+    ("move the cup in quickly and pour", ["fast_approach"]),
+    ("pull the cup back fast", ["fast_retreat"]),
+    ("what if the receiving bowl is light and slippery?",
+     ["light_destination", "slippery_destination"]),
+    ("pour syrup into a light cup", ["light_destination", "sticky_liquid"]),
+    ("tilt the jug a bit", ["pour_slightly_tilted"]),
+    ("tilt the source sideways while pouring", ["pour_rolled"]),
+    ("end with the source tilted back", ["end_tilted_back"]),
+    ("pour from a distance", ["pour_far_away"]),
+    ("pour off to one side", ["pour_to_side"]),
+    ("pour offset to the side", ["pour_offset_sideways"]),
+    ("pour from the edge of the bowl", ["pour_near_rim"]),
+    ("pour the water from a great height", ["pour_very_high"]),
+    ("use a heavy glass as the source", ["heavy_source"]),
+    ("take 4 seconds to move in", ["slow_approach"]),
 ])
 def test_everyday_words_are_read_as_the_vocabulary(question, props):
     assert understand(question) == props
