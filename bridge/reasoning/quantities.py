@@ -99,9 +99,9 @@ def proposition(q: Quantity, param: str, cues: set[str]) -> str:
     v = -q.value if param.endswith("_z") and "below" in cues else q.value
     ranges = sorted((p.model.low, p.model.high, n) for n, p in vocab.propositions.items()
                     if p.model.kind == "uniform" and p.model.param == param)
-    for low, high, name in ranges:
-        if low <= v <= high:
-            return name
+    holding = [name for low, high, name in ranges if low <= v <= high]
+    if holding:     # on the bound of two ranges, the upper: 0 mm above the rim is low
+        return holding[-1]
     said = "; ".join(f"{n} {lo} to {hi} {unit}" for lo, hi, n in ranges)
     raise UserError(f"\"{q.text}\" is {v:g} {unit} of {param}, which no proposition holds"
                     + (f" ({said}): say one of these" if said else

@@ -287,7 +287,22 @@ def _read(tokens: list[_Token], lex: _Lexicon) -> list[tuple[str, frozenset[int]
         if name is not None:
             found.append((name, positions))
             claimed |= positions
+            found += [(n, positions) for n in _shared(name, words, positions, noun, lex)]
     return found
+
+
+def _shared(name: str, words: tuple[str, ...], positions: frozenset[int], noun: "_Nouns",
+            lex: _Lexicon) -> list[str]:
+    """The same value said of the other bodies its noun is coordinated with
+    ("the source and the destination are heavy", "a light source and
+    destination", "both bowls are light"): their propositions of `words`."""
+    kind, body = lex.slots[name]
+    at = noun.at(min(positions), max(positions))
+    if kind != "object" or at is None:
+        return []
+    others = noun.partners(at) - {body}
+    return sorted(n for n in lex.phrases[words] if lex.slots[n][0] == "object"
+                  and lex.slots[n][1] in others)
 
 
 def _occurrences(tokens: list[_Token], lex: _Lexicon):
@@ -451,6 +466,27 @@ class _Nouns:
         """The position of the noun the words from `first` to `last` qualify."""
         j = self.stop[last + 1]
         return j if j in self.roles else self.before[first]
+
+    def partners(self, i: int) -> set[str]:
+        """The bodies the noun at `i` names with others: those of the nouns
+        coordinated with it ("the source and the destination"), or both
+        bowls for bowls in the plural ("both cups")."""
+        t = self.tokens
+        if t[i].word == _BOWL and (re.search(r"[^s]s$", t[i].raw) or (i > 0 and t[i - 1].word == "both")):
+            return {"source", "destination"}
+        out = set()
+        for step in (-1, 1):            # "X and [the] <i>" and "<i> and [the] Y"
+            j = i + step
+            while 0 <= j < len(t) and t[j].word in _ARTICLES:
+                j += step
+            if not (0 <= j < len(t) and t[j].word == "and"):
+                continue
+            j += step
+            while 0 <= j < len(t) and t[j].word in _ARTICLES:
+                j += step
+            if j in self.roles:
+                out.add(self.roles[j])
+        return out
 
     def names_destination(self, i: int) -> bool:
         """Whether the noun at `i` says the destination in so many words

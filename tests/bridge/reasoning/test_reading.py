@@ -198,6 +198,11 @@ def test_ask_answers_pour_alone_as_the_ordinary_pour():
      ["heavy_destination", "light_source"]),
     ("the source is heavy and the destination is light", ["heavy_source", "light_destination"]),
     ("the liquid is sticky and the source is not light", ["heavy_source", "sticky_liquid"]),
+    # a value said of coordinated nouns, or of bowls in the plural, is said of each
+    ("the source and the destination are both heavy", ["heavy_destination", "heavy_source"]),
+    ("a light source and destination", ["light_destination", "light_source"]),
+    ("both bowls are slippery", ["slippery_destination", "slippery_source"]),
+    ("a heavy glass", ["heavy_destination"]),                        # a glass is one bowl
     # everyday verbs and adverbs
     ("pour steeply", ["pour_steeply_tilted"]),
     ("finish with the source upside down", ["end_upside_down"]),
@@ -228,6 +233,7 @@ def test_words_said_of_what_they_cannot_be_said_of_are_refused(question, words):
     ("30 cm above the bowl", ["pour_very_high"]),
     ("pour 70 mm above the bowl", ["pour_mid_height"]),
     ("pour 2 cm below the rim", ["pour_below_rim"]),
+    ("pour 0 cm above the rim", ["pour_low"]),       # on a bound: the upper range
     ("start 0.1 m above the destination, then pour low", ["pour_low", "start_mid_height"]),
     ("pour 15 cm to the side", ["pour_to_side"]),
     ("pour 5cm sideways", ["pour_offset_sideways"]),
