@@ -65,8 +65,8 @@ theory/defeasible.lp computes the same conclusions with clingo.
 :- set_prolog_flag(agc_margin, 0).
 
 :- dynamic fact/1, rule/3, body/2, sup/2, learned/1, provenance/3, given_theory/1,
-   scene_fact/1, rule_body/2, superior/2, theory_literal/1, loaded/0,
-   generation/1, head_key/3, fact_key/2.
+   scene_fact/1, rule_body/2, theory_literal/1, loaded/0,
+   generation/1, head_key/3, fact_key/2, learned_key/2, learned_literal_key/2.
 
 % Tables are keyed by a generation number that changes with the theory
 % (and with the facts of a scene), instead of being abolished: abolishing
@@ -145,7 +145,8 @@ clear_theory :-
     retractall(fact(_)), retractall(rule(_, _, _)), retractall(body(_, _)),
     retractall(sup(_, _)), retractall(learned(_)), retractall(provenance(_, _, _)),
     retractall(scene_fact(_)),
-    retractall(rule_body(_, _)), retractall(superior(_, _)),
+    retractall(rule_body(_, _)), retractall(learned_key(_, _)),
+    retractall(learned_literal_key(_, _)),
     retractall(theory_literal(_)), retractall(loaded),
     retractall(given_theory(_)),
     next_generation.
@@ -219,7 +220,8 @@ cycle_back([[N|P]|Queue], Next, R, Seen, Cycle) :-
     ).
 
 prepare :-
-    retractall(rule_body(_, _)), retractall(superior(_, _)),
+    retractall(rule_body(_, _)), retractall(learned_key(_, _)),
+    retractall(learned_literal_key(_, _)),
     retractall(theory_literal(_)), retractall(head_key(_, _, _)),
     retractall(fact_key(_, _)),
     % literals such as neg(a) all share a functor, so clause indexing on
@@ -229,49 +231,66 @@ prepare :-
     forall(rule(R, _, _),
            ( findall(B, body(R, B), Bs0), sort(Bs0, Bs),
              assertz(rule_body(R, Bs)) )),
-    learned_index(Index),
-    forall(distinct(R-S, derived_superior(Index, R, S)), assertz(superior(R, S))),
+    learned_index,
     findall(L, mentioned(L), Ls0), sort(Ls0, Ls),
     dependency_order(Ls, Ordered),
     forall(member(L, Ordered), assertz(theory_literal(L))),
     next_generation,
     assertz(loaded).
 
-derived_superior(_, R, S) :- sup(R, S).
-derived_superior(Index, R, S) :-
-    learned(R), rule(R, _, H), complement(H, NH),
-    rule_body(R, BR),
-    more_general(Index, NH, BR, S),
+%!  superior(?R1, ?R2) is nondet.
+%
+%   R1 is superior to R2: sup(R1, R2), or R1 and R2 are learned rules with
+%   complementary heads and the body of R1 strictly contains that of R2
+%   (specificity), unless sup(R2, R1). Specificity is looked up when
+%   asked, through the indexes learned_index/0 builds, never held pair by
+%   pair: the pairs grow with the square of the rules, the indexes with
+%   the rules.
+superior(R, S) :- sup(R, S).
+superior(R, S) :-
+    (   nonvar(R)
+    ->  more_specific(R, S)
+    ;   nonvar(S)
+    ->  less_specific(S, R)
+    ;   learned(R), more_specific(R, S)
+    ).
+
+% more_specific(+R, ?S): R is learned and more specific than the learned S.
+more_specific(R, S) :-
+    learned(R), rule(R, _, H), complement(H, NH), rule_body(R, BR),
+    (   nonvar(S)
+    ->  learned(S), rule(S, _, NH), rule_body(S, BS),
+        ord_subset(BS, BR), BS \== BR
+    ;   length(BR, K), K < 12
+    ->  subsequence(BR, BS), BS \== BR,
+        term_hash(NH-BS, Key), learned_key(Key, S),
+        rule(S, _, NH), rule_body(S, BS)
+    ;   rule_for(NH, S, _), learned(S), rule_body(S, BS),
+        ord_subset(BS, BR), BS \== BR
+    ),
     \+ sup(S, R).
 
-% learned_index(-Index): the learned rules by head (Head-Count) and by
-% head and body (Head-Body, a sorted list, to the rules), so that the
-% rules a learned rule is more specific than are looked up, not searched
-% for among all the rules against it (which made loading quadratic).
-learned_index(index(Counts, ByBody)) :-
-    findall((H-Bs)-S, ( learned(S), rule(S, _, H), rule_body(S, Bs) ), Pairs0),
-    msort(Pairs0, Pairs),
-    group_pairs_by_key(Pairs, Groups),
-    list_to_assoc(Groups, ByBody),
-    findall(H-N, ( member((H-_)-Ss, Groups), length(Ss, N) ), HNs),
-    group_pairs_by_key(HNs, ByHead),
-    findall(H-N, ( member(H-Ns, ByHead), sum_list(Ns, N) ), Counts0),
-    list_to_assoc(Counts0, Counts).
+% less_specific(+S, -R): R is learned and more specific than the learned S:
+% among the learned rules for the complementary head that hold the first
+% literal of S's body (or, for S without a body, all those with one).
+less_specific(S, R) :-
+    learned(S), rule(S, _, NH), complement(NH, H), rule_body(S, BS),
+    (   BS = [L|_]
+    ->  term_hash(H-L, Key), learned_literal_key(Key, R),
+        rule(R, _, H), rule_body(R, BR)
+    ;   rule_for(H, R, _), learned(R), rule_body(R, BR)
+    ),
+    ord_subset(BS, BR), BS \== BR,
+    \+ sup(S, R).
 
-% more_general(+Index, +Head, +Body, -S): S is a learned rule for Head
-% whose body is strictly inside Body: through the strict subsets of Body
-% when they are fewer than the learned rules for Head, else through those.
-more_general(index(Counts, ByBody), H, BR, S) :-
-    get_assoc(H, Counts, N),
-    length(BR, K),
-    (   K < 20, 1 << K < N
-    ->  subsequence(BR, BS), BS \== BR,
-        get_assoc(H-BS, ByBody, Ss),
-        member(S, Ss)
-    ;   rule_for(H, S, _), learned(S),
-        rule_body(S, BS),
-        ord_subset(BS, BR), BS \== BR
-    ).
+% learned_index: each learned rule under a hash of its head and body, and
+% under a hash of its head and each literal of its body, so that the rules
+% a learned rule is more or less specific than are looked up, not searched
+% for among all the rules.
+learned_index :-
+    forall(( learned(S), rule(S, _, H), rule_body(S, Bs) ),
+           ( term_hash(H-Bs, Key), assertz(learned_key(Key, S)),
+             forall(member(L, Bs), ( term_hash(H-L, K), assertz(learned_literal_key(K, S)) )) )).
 
 subsequence([], []).
 subsequence([X|Xs], [X|Ys]) :- subsequence(Xs, Ys).

@@ -16,7 +16,7 @@ from pathlib import Path
 from pantarhei.bridge.engines.swipl import engine, prolog_quote, text as prolog_text
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.theories.model import Theory
-from pantarhei.theory import THEORY_DIR
+from pantarhei.theory import THEORY_DIR, TheoryFileError
 
 TAGS = ("+D", "-D", "+d", "-d")
 ENGINES = ("prolog", "asp")
@@ -124,6 +124,13 @@ def asp_conclusions(theory: Theory, semantics: Semantics = Semantics(),
     doubling the alternation steps until they suffice."""
     from pantarhei.bridge.engines.asp import solve
 
+    try:
+        # defeasible.lp weighs specificity only among the rules that may
+        # apply (the pairs of all would grow with the square of the rules):
+        # a cycle among the others is found here, without the pairs
+        theory.check_acyclic()
+    except TheoryFileError as e:
+        raise UserError(str(e)) from None
     text = theory.encoded()
     acyclic = theory.acyclic()
     if acyclic:
