@@ -145,6 +145,11 @@ default_initial(pour_mid_height).
 default_initial(pour_near_rim).
 default_initial(pour_steeply_tilted).
 
+% The largest theory file either reader reads (bytes; 32 MiB, some 200,000
+% learned rules): loading and answering are linear in the file, so this
+% bounds what a file may cost.
+default(theory_bytes_at_most, 33554432).
+
 % Where the learned theory is written (relative to theory/) and the store
 % of simulations (relative to the working directory).
 default(theory, "learned/pouring.pl").

@@ -53,6 +53,7 @@ theory/defeasible.lp computes the same conclusions with clingo.
 */
 
 :- use_module(theory_files).
+:- use_module(default_values).
 :- use_module(library(lists)).
 :- use_module(library(ordsets)).
 :- use_module(library(assoc)).
@@ -97,6 +98,7 @@ internal(S, S).
 %
 %   @error theory_error(File, Line, Expected) for a malformed file.
 load_theory(File) :-
+    check_size(File),
     Scratch = defeasible_input,
     forall(current_predicate(Scratch:P/A),
            ( functor(H, P, A), retractall(Scratch:H) )),
@@ -117,6 +119,18 @@ load_theory(File) :-
     assertz(given_theory(File)),
     prepare,
     check_superiority(File).
+
+% check_size(+File): a theory file of at most theory_bytes_at_most bytes
+% (theory/defaults.pl): loading is linear in the file, so this bounds
+% what a file may cost.
+check_size(File) :-
+    default(theory_bytes_at_most, Most),
+    (   exists_file(File), size_file(File, Size), Size > Most
+    ->  format(string(M), "~D bytes, past the ~D a theory file may have (theory_bytes_at_most, theory/defaults.pl)",
+               [Size, Most]),
+        throw(theory_error(File, 0, M))
+    ;   true
+    ).
 
 theory_predicate(fact, 1).
 theory_predicate(rule, 3).

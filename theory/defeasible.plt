@@ -48,6 +48,34 @@ test(specificity, [true(R-S == r2-r1)]) :-
                rule(r2, defeasible, neg(p)). body(r2, a). body(r2, b). learned(r2)."),
     theory_loaded, superior(R, S).
 
+% Specificity is looked up in every mode, never held: each mode gives the
+% pairs the definition gives (sup/2, or learned rules with complementary
+% heads, one body strictly inside the other, sup/2 not saying otherwise).
+test(specificity_in_every_mode, [true(Modes == [Pairs, Pairs, Pairs, Pairs])]) :-
+    load_text("rule(r1, defeasible, p). body(r1, a). learned(r1).
+               rule(r2, defeasible, neg(p)). body(r2, a). body(r2, b). learned(r2).
+               rule(r3, defeasible, neg(p)). learned(r3).
+               rule(r4, defeasible, p). body(r4, a). body(r4, b). body(r4, c). learned(r4).
+               rule(r5, defeasible, p). body(r5, b). learned(r5).
+               rule(r6, defeasible, neg(p)). body(r6, a). body(r6, c). body(r6, d).
+               rule(r7, defeasible, neg(p)). body(r7, b). body(r7, c). learned(r7).
+               sup(r3, r5). sup(r6, r1)."),
+    theory_loaded,
+    findall(R-S, ( defeasible:rule(R, _, _), defeasible:rule(S, _, _), defined_superior(R, S) ), Ps0),
+    sort(Ps0, Pairs),
+    findall(R-S, superior(R, S), M1), sort(M1, Free),
+    findall(R-S, ( defeasible:rule(R, _, _), superior(R, S) ), M2), sort(M2, First),
+    findall(R-S, ( defeasible:rule(S, _, _), superior(R, S) ), M3), sort(M3, Second),
+    findall(R-S, ( defeasible:rule(R, _, _), defeasible:rule(S, _, _), superior(R, S) ), M4), sort(M4, Both),
+    Modes = [Free, First, Second, Both].
+
+defined_superior(R, S) :- defeasible:sup(R, S).
+defined_superior(R, S) :-
+    defeasible:learned(R), defeasible:learned(S),
+    defeasible:rule(R, _, H), complement(H, NH), defeasible:rule(S, _, NH),
+    rule_body(R, BR), rule_body(S, BS), ord_subset(BS, BR), BS \== BR,
+    \+ defeasible:sup(S, R).
+
 test(sup_against_specificity, [fail]) :-
     load_text("rule(r1, defeasible, p). body(r1, a). learned(r1).
                rule(r2, defeasible, neg(p)). body(r2, a). body(r2, b). learned(r2).

@@ -21,8 +21,21 @@ NO_THEORY = (f"no learned theory yet ({DEFAULT_THEORY} does not exist): run the 
              f"(native facts or .dfl, e.g. examples/extend_by_hand/learned.pl)")
 
 
+def too_large(size: int) -> str | None:
+    """Why a theory file of `size` bytes is not read, or None."""
+    most = int(defaults()["theory_bytes_at_most"])
+    return (f"{size:,} bytes, past the {most:,} a theory file may have (theory_bytes_at_most, "
+            f"theory/defaults.pl)" if size > most else None)
+
+
 def read_theory(path: Path | str) -> Theory:
     """A theory file, native or DFL; UserError with `file:line: what`."""
+    try:
+        why = too_large(Path(path).stat().st_size)
+    except OSError:
+        why = None                      # the reader names what is wrong
+    if why:
+        raise UserError(f"{path}: {why}")
     try:
         return read_dfl(path) if is_dfl(path) else read_native(path)
     except TheoryFileError as e:

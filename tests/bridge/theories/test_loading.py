@@ -77,6 +77,29 @@ def test_a_directory_and_empty_files(cli, tmp_path: Path) -> None:
         assert f"{f}: an empty theory" in assert_one_line_error(cli("conclusions", str(f)))
 
 
+def test_a_theory_file_past_the_documented_size_is_refused_by_both_readers(cli, tmp_path: Path) -> None:
+    import subprocess
+
+    from pantarhei.theory import THEORY_DIR, defaults
+
+    most = int(defaults()["theory_bytes_at_most"])
+    big = tmp_path / "big.pl"
+    with big.open("wb") as f:           # one fact, then blanks past the bound
+        f.write(b"fact(a).\n")
+        f.write(b" " * (most + 1 - f.tell()))
+    words = f"{most + 1:,} bytes, past the {most:,} a theory file may have"
+    for args in (("conclusions", str(big)), ("conclusions", "--engine", "asp", str(big)),
+                 ("ask", "pour from the side", "--theory", str(big))):
+        assert words in assert_one_line_error(cli(*args))
+    p = subprocess.run(["swipl", "-q", "-g", f"use_module('{THEORY_DIR / 'defeasible'}'), "
+                        f"catch(load_theory('{big}'), theory_error(_, _, M), (write(M), halt(3)))",
+                        "-t", "halt"], capture_output=True, text=True)
+    assert p.returncode == 3 and p.stdout.startswith(words)
+    with big.open("r+b") as f:          # at the bound, it is read
+        f.truncate(most)
+    assert cli("conclusions", str(big)).code == 0
+
+
 def test_without_a_theory_the_commands_say_how_to_get_one(monkeypatch, tmp_path: Path) -> None:
     monkeypatch.setattr(loading, "DEFAULT_THEORY", tmp_path / "learned" / "pouring.pl")
     with pytest.raises(UserError, match="no learned theory yet") as e:
