@@ -64,6 +64,32 @@ def _import_ray_for_local() -> Any:
     return ray
 
 
+#: Seconds to wait for a Ray cluster's address to answer before giving up
+#: (ray.init itself waits minutes on an address that does not answer).
+REACH_TIMEOUT = 5.0
+
+
+def reach(address: str, timeout: float = REACH_TIMEOUT) -> None:
+    """RuntimeError in one line unless something listens at the Ray
+    cluster `address` (HOST:PORT or ray://HOST:PORT; "auto" and other
+    forms are left to ray.init)."""
+    import socket
+
+    hostport = address.removeprefix("ray://")
+    host, sep, port = hostport.rpartition(":")
+    if not sep or not port.isdigit() or not host:
+        return
+    try:
+        with socket.create_connection((host.strip("[]"), int(port)), timeout=timeout):
+            pass
+    except socket.gaierror:
+        raise RuntimeError(f"cannot reach a Ray cluster at {address}: no such host {host}") from None
+    except OSError as e:
+        why = "no answer" if isinstance(e, TimeoutError) else (e.strerror or str(e))
+        raise RuntimeError(f"cannot reach a Ray cluster at {address}: {why} "
+                           f"(within {timeout:g} s)") from None
+
+
 class RayExecutor(Executor):
     """Tasks on a Ray cluster at `address`, or on a local Ray started here
     with `workers` CPUs (all of them if None), listening on loopback only.
@@ -73,6 +99,7 @@ class RayExecutor(Executor):
 
     def __init__(self, address: Optional[str] = None, workers: Optional[int] = None):
         if address:
+            reach(address)
             import ray
         else:
             ray = _import_ray_for_local()

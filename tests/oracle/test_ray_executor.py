@@ -129,3 +129,22 @@ def test_the_ray_executor_from_the_command_line(cli):
     assert local.code == 0, local.err
     assert [r["scores"] for r in json.loads(ray.out)] == [r["scores"] for r in json.loads(local.out)]
     assert all(r["scores"] is not None for r in json.loads(ray.out))
+
+
+def test_a_ray_address_that_does_not_answer_is_refused_in_seconds_naming_it():
+    import socket
+
+    from pantarhei.oracle.ray_executor import reach
+
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        free = s.getsockname()[1]               # closed again: nothing listens there
+    with pytest.raises(RuntimeError, match=rf"cannot reach a Ray cluster at 127.0.0.1:{free}: "):
+        reach(f"127.0.0.1:{free}", timeout=2)
+    with pytest.raises(RuntimeError, match="no such host nosuchhost.invalid"):
+        reach("ray://nosuchhost.invalid:10001", timeout=2)
+    with socket.socket() as s:                  # something listens: left to ray.init
+        s.bind(("127.0.0.1", 0))
+        s.listen()
+        reach(f"127.0.0.1:{s.getsockname()[1]}", timeout=2)
+    reach("auto")
