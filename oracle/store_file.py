@@ -51,8 +51,20 @@ def read_only(e: BaseException) -> bool:
             or any(w in text for w in ("readonly", "read-only", "unable to open", "disk i/o error")))
 
 
+def full(e: BaseException) -> bool:
+    """Is `e` SQLite or the OS saying the disk is full?"""
+    import errno
+
+    return ((isinstance(e, OSError) and e.errno in (errno.ENOSPC, errno.EDQUOT))
+            or "disk is full" in str(e).lower() or "no space left" in str(e).lower())
+
+
 def damaged(path: str, e: BaseException) -> StoreError:
-    """The error of a store file SQLite cannot read as a database."""
+    """The error of a store file SQLite cannot read as a database, or of
+    one it cannot open for want of disk space (no fault of the file's)."""
+    if full(e):
+        return StoreError(f"the store {path} cannot be written: the disk is full ({reason(e)}): "
+                          f"free some space, or give a --store on another disk")
     return StoreError(f"the store {path} is damaged ({reason(e)}): move it aside and run again "
                       f"to start a new one, or give another --store")
 

@@ -35,3 +35,22 @@ def test_a_damaged_store_is_refused_in_one_line_before_any_pour(tmp_path):
     r = run_cli("simulate", "--antecedent", "pour_low", "-n", "1", "--store", str(db))
     line = assert_one_line_error(r, 1)
     assert "is damaged" in line and str(db) in line
+
+
+def test_a_full_disk_is_called_a_full_disk_not_a_damaged_store(tmp_path):
+    import errno
+    import sqlite3
+
+    from pantarhei.oracle.store_file import damaged
+
+    db = sqlite3.connect(tmp_path / "s.sqlite")
+    db.execute("PRAGMA max_page_count = 3")        # SQLite's own "disk is full", for real
+    db.execute("CREATE TABLE t (x BLOB)")
+    with pytest.raises(sqlite3.Error) as e:
+        for _ in range(20):
+            db.execute("INSERT INTO t VALUES (zeroblob(2000))")
+    db.close()
+    for err in (e.value, OSError(errno.ENOSPC, "No space left on device")):
+        said = str(damaged("s.sqlite", err))
+        assert "the disk is full" in said and "damaged" not in said and "\n" not in said
+    assert "is damaged" in str(damaged("s.sqlite", sqlite3.DatabaseError("file is not a database")))
