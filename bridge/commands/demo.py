@@ -83,7 +83,7 @@ def demo(args: argparse.Namespace) -> int:
     from pantarhei.bridge.theories.dfl import write_dfl
     from pantarhei.bridge.files import require_writable_file, write_text
     from pantarhei.bridge.theories import loading
-    from pantarhei.bridge.commands.explore import require_distinct_outputs
+    from pantarhei.bridge.exploration.trace import require_distinct_outputs
     from pantarhei.bridge.commands.querying import answer, print_plans
     from pantarhei.bridge.exploration.running import Options, budget_text, explore, stop_text
 

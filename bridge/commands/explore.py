@@ -32,6 +32,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def explore(args: argparse.Namespace) -> int:
     from pantarhei.bridge.exploration.running import Options, explore as run_exploration, stop_text
+    from pantarhei.bridge.exploration.trace import require_distinct_outputs
     from pantarhei.bridge.files import require_writable_file
 
     require_writable_file(Path(args.out), "--out")
@@ -54,20 +55,6 @@ def explore(args: argparse.Namespace) -> int:
         if key in result:
             print(f"{key}: {result[key]}")
     return 0
-
-
-def require_distinct_outputs(store: Path, out: Path, dfl: bool = False) -> None:
-    """UserError when the store, the learned theory, its trace, the trace's
-    plot (or, with `dfl`, the theory's DFL twin) would be the same file:
-    one would overwrite another."""
-    from pantarhei.bridge.exploration.trace import plot_path, trace_path
-    from pantarhei.bridge.files import require_distinct
-
-    roles = {"--store": store, "--out": out, "--out's trace": trace_path(out),
-             "--out's trace plot": plot_path(out)}
-    if dfl:
-        roles["--out's DFL version"] = out.with_suffix(".dfl")
-    require_distinct(roles)
 
 
 def option_values(args: argparse.Namespace) -> dict:

@@ -59,8 +59,9 @@ from pantarhei.bridge.exploration.significance import shuffle_seed
 from pantarhei.bridge.exploration.simulation import batch_seed, open_simulator, oracle_identity
 from pantarhei.bridge.exploration.checkpoints import ExplorationStore, run_key
 from pantarhei.bridge.exploration.steepest import best_plane
-from pantarhei.bridge.exploration.trace import (append_trace, plot_path, plot_trace, rounded,
-                                                trace_path, write_trace)
+from pantarhei.bridge.exploration.trace import (append_trace, plot_path, plot_trace,
+                                                require_distinct_outputs, rounded, trace_path,
+                                                write_trace)
 from pantarhei.oracle.generative import InvalidAntecedent, sample
 from pantarhei.oracle.store import DEFAULT_STORE
 from pantarhei.theory.lexicon import load_vocabulary
@@ -134,6 +135,7 @@ class Host:
         settings = course(request, version, oracle_settings)
         run = run_key(settings)
         store_path = Path(str(request.get("store") or DEFAULT_STORE))
+        require_distinct_outputs(store_path, Path(str(request["out"])), names=("store(...)", "out(...)"))
         try:
             store = ExplorationStore(store_path)
         except Exception as e:

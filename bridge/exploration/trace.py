@@ -38,6 +38,22 @@ def plot_path(out: Path) -> Path:
     return out.with_suffix(".trace.png")
 
 
+def require_distinct_outputs(store: Path, out: Path, dfl: bool = False,
+                             names: tuple[str, str] = ("--store", "--out")) -> None:
+    """UserError when the store, the learned theory, its trace, the trace's
+    plot (or, with `dfl`, the theory's DFL twin) would be the same file:
+    one would overwrite another. Checked before anything is written, by
+    explore and demo (`names`: their flags) and by explore/1 at the Prolog
+    prompt (its options) alike."""
+    from pantarhei.bridge.files import require_distinct
+
+    s, o = names
+    roles = {s: store, o: out, f"{o}'s trace": trace_path(out), f"{o}'s trace plot": plot_path(out)}
+    if dfl:
+        roles[f"{o}'s DFL version"] = out.with_suffix(".dfl")
+    require_distinct(roles)
+
+
 def append_trace(out: Path, entry: dict) -> None:
     with open(trace_path(out), "a", encoding="utf-8") as f:
         f.write(json.dumps(entry, sort_keys=True) + "\n")

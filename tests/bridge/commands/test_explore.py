@@ -47,6 +47,21 @@ def test_one_file_for_two_roles_is_refused_before_anything_is_written(tmp_path, 
     assert list(tmp_path.iterdir()) == []
 
 
+def test_explore_1_at_the_prolog_prompt_refuses_one_file_for_two_roles_too(tmp_path):
+    import sqlite3
+
+    store = tmp_path / "x.sqlite"
+    with sqlite3.connect(store) as db:          # what must survive
+        db.execute("CREATE TABLE keep (x)")
+        db.execute("INSERT INTO keep VALUES (1)")
+    r = run_cli("prolog", "-g", f"explore([oracle(synthetic), budget(1), store('{store}'), "
+                                f"out('{tmp_path / 'sub' / '..' / 'x.sqlite'}')])")
+    assert r.code != 0
+    assert "store(...) and out(...) are the same file" in r.err and "Traceback" not in r.err
+    with sqlite3.connect(store) as db:
+        assert db.execute("SELECT x FROM keep").fetchall() == [(1,)]
+
+
 def test_explore_command_reports_what_it_wrote(tmp_path):
     out = tmp_path / "sub" / "learned.pl"
     r = run_cli("explore", *FAST, "--curiosity", "paper", "--budget", "3", "--batch", "12", "--no-general",
