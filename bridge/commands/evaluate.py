@@ -33,6 +33,23 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(run=evaluate, pin=True)
 
 
+def _require_apart(theory: Path, store: Path, out: Path) -> None:
+    """UserError when the theory, the store or a file of the report (its
+    README, evaluation.json, plots and pour GIFs) are one file: the report
+    would overwrite what it measures."""
+    import re
+
+    from pantarhei.bridge.evaluation.report import FILES
+    from pantarhei.bridge.files import require_distinct
+
+    require_distinct({"--theory": theory, "--store": store,
+                      **{f"the report's {name}": out / name for name in FILES}})
+    for flag, path in (("--theory", theory), ("--store", store)):
+        if re.fullmatch(r"pour_a\d+\.gif", path.name) and path.resolve().parent == out.resolve():
+            raise UserError(f"{flag} {path}: the report draws its pours as GIFs of that name in "
+                            f"{out}: give another path")
+
+
 def evaluate(args: argparse.Namespace) -> int:
     from pantarhei.bridge.evaluation.pipeline import Options, evaluate as run
     from pantarhei.bridge.evaluation.headline import headline
@@ -46,6 +63,7 @@ def evaluate(args: argparse.Namespace) -> int:
     if out.exists() and not out.is_dir():
         raise UserError(f"{out}: not a directory")
     require_writable_file(out / "evaluation.json", "--out")
+    _require_apart(theory, Path(args.store), out)
     ev = run(Options(theory=theory, store=Path(args.store), scenes=args.scenes, seed=args.seed,
                      verify=args.verify, paper_samples=args.paper_samples,
                      executor=args.executor, workers=args.workers,

@@ -242,6 +242,9 @@ def render(args: argparse.Namespace) -> int:
     if not str(args.out).lower().endswith(".gif"):
         raise UserError(f"--out must name a .gif file, not '{args.out}'")
     require_writable_file(args.out, "--out")
+    if args.params:
+        from pantarhei.bridge.files import require_distinct
+        require_distinct({"--params": args.params, "--out": args.out})
     if args.frames:
         require_writable_file(Path(args.frames) / "frame.png", "--frames")
     frames, outcome = draw(P[0], args.out, args.frames, fps=args.fps, width=width, height=height,

@@ -41,6 +41,12 @@ def gif_choices(ev: Evaluation, k: int = 3) -> list[int]:
     return picked[:k]
 
 
+#: The files the report writes into its folder, besides its pours' GIFs
+#: (pour_a<i>.gif, i an explored antecedent's number).
+FILES = ("README.md", "evaluation.json", "behaviours.png", "heldout.png", "expectations.png",
+         "exploration.png")
+
+
 def render_gifs(ev: Evaluation, out: Path, k: int = 3) -> list[tuple[int, Path]]:
     """Render the pours of `gif_choices` as GIFs in `out`: (index, path) each."""
     from pantarhei.oracle.render import render

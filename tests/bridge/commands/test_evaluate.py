@@ -19,3 +19,15 @@ def test_bad_theories_get_one_line(tmp_path, make, words):
                 "--out", str(tmp_path / "r"), "--no-progress")
     assert words in assert_one_line_error(r, code=r.code if r.code else 2)
     assert r.code != 0
+
+
+@pytest.mark.parametrize("store, words", [
+    ("evaluation.json", "--store and the report's evaluation.json are the same file"),
+    ("README.md", "--store and the report's README.md are the same file"),
+    ("pour_a2.gif", "the report draws its pours as GIFs of that name"),
+])
+def test_the_report_never_overwrites_the_store_it_measures(tmp_path, store, words):
+    r = run_cli("evaluate", "--store", str(tmp_path / store), "--out", str(tmp_path),
+                "--no-progress")
+    assert words in assert_one_line_error(r)
+    assert list(tmp_path.iterdir()) == []

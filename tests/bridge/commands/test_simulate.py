@@ -110,3 +110,12 @@ def test_bad_parameter_files_are_one_line(cli, tmp_path, content, words):
 def test_missing_parameter_file(cli, tmp_path):
     line = assert_one_line_error(cli("simulate", "--params", str(tmp_path / "nope.json")))
     assert "cannot read" in line
+
+
+def test_render_refuses_to_draw_over_the_pours_it_reads(cli, tmp_path):
+    f = tmp_path / "pour.gif"                  # parameterizations in a file named like a GIF
+    text = json.dumps([{"params": BASE}])
+    f.write_text(text)
+    r = cli("render", "--params", str(f), "--out", str(tmp_path / "sub" / ".." / "pour.gif"))
+    assert "--params and --out are the same file" in assert_one_line_error(r)
+    assert f.read_text() == text
