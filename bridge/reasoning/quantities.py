@@ -31,6 +31,8 @@ UNITS: dict[str, tuple[str, float]] = {
     **{w: ("length", 10.0) for w in ("cm", "centimetre", "centimetres", "centimeter",
                                      "centimeters")},
     **{w: ("length", 1000.0) for w in ("m", "metre", "metres", "meter", "meters")},
+    **{w: ("length", 25.4) for w in ("inch", "inches")},
+    **{w: ("length", 304.8) for w in ("foot", "feet", "ft")},
     **{w: ("angle", 1.0) for w in ("degree", "degrees", "deg", "degs")},
     **{w: ("time", 1.0) for w in ("ms", "millisecond", "milliseconds")},
     **{w: ("time", 1000.0) for w in ("s", "sec", "secs", "second", "seconds")},
@@ -48,6 +50,8 @@ CUES = {
     "offset": ("sideways", "offset"),
     "height": ("high", "above", "below", "height", "up", "rim"),
 }
+#: The words read with a number besides its cues: a roll is "tilted sideways".
+ALSO_READ = {"roll": ("tilt",)}
 #: How far from a number its cue words may stand.
 REACH = 4
 

@@ -43,7 +43,8 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.reasoning.quantities import CUES, REACH, UNITS, Quantity, parameter, proposition
+from pantarhei.bridge.reasoning.quantities import (ALSO_READ, CUES, REACH, UNITS, Quantity,
+                                                   parameter, proposition)
 from pantarhei.bridge.reasoning.words import FILLERS, UNCLEAR, rewrites
 from pantarhei.theory.lexicon import load_vocabulary
 
@@ -255,7 +256,7 @@ def _quantities(tokens: list[_Token], lex: _Lexicon) -> list[_Token]:
         return tokens
     stages = _stages(tokens)
     noun = _Nouns(tokens, _roles(tokens, lex), lex)
-    cue_of = {_stem(w): w for ws in CUES.values() for w in ws}     # stem -> cue word
+    cue_of = {_stem(w): w for ws in (*CUES.values(), *ALSO_READ.values()) for w in ws}
     read: dict[int, _Token] = {}
     dropped: set[int] = set()
     for i in numbers:
@@ -265,10 +266,11 @@ def _quantities(tokens: list[_Token], lex: _Lexicon) -> list[_Token]:
         near = [k for k in range(max(0, i - REACH), min(len(tokens), i + 2 + REACH))
                 if k not in (i, i + 1) and tokens[k].clause == tokens[i].clause
                 and tokens[k].word in cue_of and k not in dropped]
-        cues = {cue_of[tokens[k].word] for k in near}
+        cues = {cue_of[tokens[k].word] for k in near}         # "tilt" picks a pitch, as a cue
         param, by = parameter(q, _POSE[stages[i]], _MOVE[stages[i]], cues, noun(i, i + 1))
         read[i] = _Token(proposition(q, param, cues), q.text, tokens[i].clause)
-        dropped |= {i + 1} | {k for k in near if by and cue_of[tokens[k].word] in CUES[by]}
+        read_too = (*CUES.get(by, ()), *ALSO_READ.get(by, ()))
+        dropped |= {i + 1} | {k for k in near if cue_of[tokens[k].word] in read_too}
     return [read.get(i, t) for i, t in enumerate(tokens) if i not in dropped]
 
 

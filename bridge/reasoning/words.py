@@ -52,6 +52,7 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("near the rim", ("over the [destination|bowl] rim", "at the [destination|bowl] rim",
                       "from the [destination|bowl] rim",
                       "by the [destination|bowl] rim", "close to the [destination|bowl] rim")),
+    ("very", ("extremely", "super")),
     ("very high", ("very high up", "way up high", "way up", "from a great height")),
     ("high", ("high up", "up high")),
     ("low", ("low down", "down low", "just above", "close above")),
@@ -69,7 +70,8 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("upright", ("vertical", "straight up")),
     ("tilted", ("angled", "inclined")),
     ("steeply", ("sharply",)),
-    ("pour steeply tilted", (r"re:\bpour(?:s|ed|ing)? steeply\b(?! tilt)",)),
+    ("pour steeply tilted", (r"re:\bpour(?:s|ed|ing)?(?: it| the \w+)? steeply\b(?! tilt)",)),
+    ("steeply tilted", ("at a steep angle", "at a sharp angle")),
     ("slightly", ("gently", "barely")),
     ("halfway", ("half way",)),
     ("fast", ("quickly", "quick", "rapidly", "swiftly", "briskly")),
@@ -97,7 +99,8 @@ FILLERS = frozenset("""
     might must do does did is are was were be been being i we you it they me my our your its
     this that these those there here so as just really quite rather too also still only
     even keep hold turn make let use try get go put set move while during into onto out up down
-    take takes took taking
+    take takes took taking weigh weighs weighed weighing roughly about around approximately
+    nearly almost
     and or but then with without by for from at on in over above of to a an the please say
     tell suppose imagine case ever all both each one way thing
 """.split())
