@@ -18,8 +18,14 @@ from pantarhei.theory import THEORY_DIR, defaults
 DEFAULT_THEORY = THEORY_DIR / str(defaults()["theory"])
 DEFAULT_STORE = Path(str(defaults()["store"]))
 
-#: The oracles a command may simulate with.
-ORACLES = ("pybullet", "synthetic")
+
+
+def choices(option: str) -> tuple[str, ...]:
+    """The values an option of the option table (theory/defaults.pl) may
+    take: the oracles a command may simulate with, the executors..."""
+    from pantarhei.theory.option_table import option_table
+
+    return next(o.choices for o in option_table() if o.name == option)
 
 #: Seeds are 0 .. SEED_MAX: what SWI-Prolog, clingo (32-bit integers) and
 #: numpy all keep as they are.
@@ -71,7 +77,7 @@ seconds = number(0, 86400, above=True)
 
 def add_oracle(p: argparse.ArgumentParser) -> None:
     default = defaults()["oracle"]
-    p.add_argument("--oracle", choices=ORACLES, default=default,
+    p.add_argument("--oracle", choices=choices("oracle"), default=default,
                    help=f"the simulation (default {default}) or analytic test scores (synthetic)")
 
 
@@ -87,7 +93,7 @@ def add_theory_out(p: argparse.ArgumentParser, flag: str = "--out", extra: str =
 
 def add_execution(p: argparse.ArgumentParser, progress: str = "no progress bar") -> None:
     """--executor, --workers, --ray-address and --no-progress."""
-    p.add_argument("--executor", choices=("local", "ray", "inline"), default="local",
+    p.add_argument("--executor", choices=choices("executor"), default=defaults()["executor"],
                    help="worker processes here (default), a Ray cluster, or this process")
     add_workers(p)
     p.add_argument("--ray-address", metavar="ADDR",

@@ -19,6 +19,7 @@ from pantarhei.bridge.exploration.significance import Tested, permutation_test, 
 from pantarhei.bridge.exploration.checkpoints import ExplorationStore
 from pantarhei.bridge.exploration.weights import weights
 from pantarhei.oracle.generative import log_density
+from pantarhei.theory import defaults
 
 
 @dataclass
@@ -71,7 +72,7 @@ class Session:
         cached = self.plane_cache.get(aid)
         if cached is not None and _same_weights(cached[0], w):
             return cached[1]
-        planes = plane_fit(X, S, w, float(self.settings.get("ridge", 0.0)))
+        planes = plane_fit(X, S, w, float(self.settings.get("ridge", defaults()["ridge"])))
         self.plane_cache[aid] = (w.copy(), planes)
         return planes
 
@@ -83,7 +84,7 @@ class Session:
         if cached is not None and _same_weights(cached[0], w):
             return cached[1]
         used = int(((w > 0) & np.all(np.isfinite(S), axis=1)).sum())
-        tested = permutation_test(X, S, w, float(self.settings.get("ridge", 0.0)),
+        tested = permutation_test(X, S, w, float(self.settings.get("ridge", defaults()["ridge"])),
                                   int(self.settings["permutations"]),
                                   shuffle_seed(int(self.settings["seed"]), number, used))
         self.test_cache[aid] = (w.copy(), tested)
@@ -106,7 +107,7 @@ class Session:
     def verdicts(self, entries: Sequence[dict]) -> list[tuple[bool, ...]]:
         """The consequent of each explored antecedent as nine verdicts,
         qualified as the run's settings say."""
-        mode = str(self.settings.get("qualify", "weighted"))
+        mode = str(self.settings.get("qualify", defaults()["qualify"]))
         return [tuple(o["holds"] for o in c["outcomes"]) for c in self.consequents(entries, mode)]
 
 

@@ -11,6 +11,7 @@ from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.exploration.simulation import open_simulator, oracle_identity
 from pantarhei.oracle.generative import InvalidAntecedent, sample
 from pantarhei.oracle.store import DEFAULT_STORE
+from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
 
 
@@ -26,14 +27,14 @@ def oracle_sample(request: dict) -> dict:
 
 def oracle_simulate(request: dict) -> dict:
     """The oracle's scores of the rows given (failed ones as "nan")."""
-    oracle = str(request.get("oracle", "pybullet"))
+    oracle = str(request.get("oracle", defaults()["oracle"]))
     oracle_identity(oracle)
     P = np.asarray(request["rows"], dtype=float)
     n = len(load_vocabulary().parameters)
     if P.ndim != 2 or P.shape[1] != n:
         raise UserError(f"expected rows of {n} numbers")
     workers = request.get("workers")
-    sim = open_simulator(oracle, str(request.get("executor", "local")),
+    sim = open_simulator(oracle, str(request.get("executor", defaults()["executor"])),
                          int(workers) if workers is not None else None,
                          Path(str(request.get("store") or DEFAULT_STORE)).absolute())
     try:

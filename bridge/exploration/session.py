@@ -64,6 +64,7 @@ from pantarhei.bridge.exploration.trace import (append_trace, plot_path, plot_tr
                                                 write_trace)
 from pantarhei.oracle.generative import InvalidAntecedent, sample
 from pantarhei.oracle.store import DEFAULT_STORE
+from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
 
 __all__ = ["ALGORITHM_VERSION", "Host", "error_text", "install"]
@@ -155,7 +156,7 @@ class Host:
         if saved is not None:
             write_trace(trace_path(out), saved.trace)
         workers = request.get("workers")
-        simulator = open_simulator(oracle, str(request.get("executor", "local")),
+        simulator = open_simulator(oracle, str(request.get("executor", defaults()["executor"])),
                                    int(workers) if workers not in (None, "") else None,
                                    store_path, request.get("ray_address") or None, oracle_options)
         self.session = Session(
@@ -163,7 +164,7 @@ class Host:
             simulator=simulator, oracle_version=version,
             params=saved.params.copy() if saved else np.empty((0, n_par)),
             scores=saved.scores.copy() if saved else np.empty((0, n_exp)))
-        if truthy(request.get("progress", True)):
+        if truthy(request.get("progress", defaults()["progress"])):
             open_bar(self.session, saved.iteration if saved else 0)
         return {"state": saved.state if saved else "", "run": run,
                 "resumed": bool(saved), "iterations": saved.iteration if saved else 0}
@@ -254,7 +255,7 @@ class Host:
     def qualify(self, request: dict) -> dict:
         s = self.need_session()
         entries = request["antecedents"]
-        mode = str(request.get("mode", "weighted"))
+        mode = str(request.get("mode", defaults()["qualify"]))
         if mode not in QUALIFY:
             raise UserError(f"unknown qualify mode '{mode}' (choose {' or '.join(QUALIFY)})")
         out = ([{"id": str(e["id"]), **c} for e, c in zip(entries, s.consequents(entries, mode))]
@@ -294,7 +295,7 @@ class Host:
                           str(r["expectation"]) if truthy(r["holds"]) else f"neg({r['expectation']})",
                           int(r["confidence_permille"]) / 1000)
                    for r in request["rules"]]
-        progress = truthy(s.settings.get("progress", True))
+        progress = truthy(s.settings.get("progress", defaults()["progress"]))
         explored = None
         if "explored" in request:
             explored = [(str(e["id"]), [str(p) for p in e["antecedent"]])

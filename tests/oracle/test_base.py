@@ -36,3 +36,14 @@ def test_an_oracle_must_score_and_has_no_settings_by_default():
     a, b = Plain().score(None), Plain().score(None)
     a.record["x"] = 1
     assert b.record == {}           # every outcome its own record
+
+
+def test_the_option_table_offers_the_oracles_and_executors_there_are():
+    """The names a command offers are the option table's (theory/defaults.pl);
+    each is one this package builds: the oracles but the test-only faulty
+    one, and every executor."""
+    from pantarhei.bridge.commands.options import choices
+    from pantarhei.oracle.executors import EXECUTORS
+
+    assert set(choices("oracle")) == set(ORACLES) - {"faulty"}
+    assert choices("executor") == EXECUTORS
