@@ -158,3 +158,35 @@ def test_random_theories_exercise_every_kind_of_conclusion() -> None:
 
     collect()
     assert all(v > 0 for v in seen.values()), seen
+
+
+# -- what a theory costs clingo ------------------------------------------------
+
+def _ground_rules(theory: Theory) -> int:
+    import clingo
+
+    from pantarhei.theory import THEORY_DIR
+
+    ctl = clingo.Control(["-c", "steps=0", "-c", "acyclic=true", "--warn=none"])
+    for f in ("defeasible.lp", "conclusions.lp"):
+        ctl.load(str(THEORY_DIR / f))
+    ctl.add("base", [], theory.encoded())
+    ctl.ground([("base", [])])
+    ctl.solve()
+    return int(ctl.statistics["problem"]["lp"]["rules"])
+
+
+def _sharing(n: int, given: bool) -> Theory:
+    """n learned rules for p and neg(p) in turn, each body the literal b
+    they all share and one of its own; b (and with `given`, every literal)
+    a fact."""
+    rules = [Rule(f"r{i}", "defeasible", "p" if i % 2 else "neg(p)", ("b", f"c{i}"))
+             for i in range(n)]
+    facts = ["b"] + ([f"c{i}" for i in range(n)] if given else [])
+    return Theory(facts, rules, [], {r.id for r in rules})
+
+
+@pytest.mark.parametrize("given", [False, True])
+def test_grounding_grows_with_the_theory_not_with_its_pairs(given):
+    small, large = (_ground_rules(_sharing(n, given)) for n in (250, 1000))
+    assert large < 5 * small           # four times the rules: no sixteen times the ground rules
