@@ -501,7 +501,8 @@ def _refuse_unplaced(question: str, tokens: list[_Token], accepted, lex: _Lexico
     """UserError naming the words of the question that were not read: value
     words that fit nothing said ("pour light": the light what?) and, when
     something else was read, words the vocabulary does not know (a question
-    with nothing understood is the caller's to refuse)."""
+    with nothing read is understand's to answer as the ordinary pour or to
+    refuse)."""
     read = set().union(*(p for _, p in accepted))
     words: dict[str, None] = {}           # in order, each once
     for i, t in enumerate(tokens):
