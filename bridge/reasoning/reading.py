@@ -183,9 +183,10 @@ def _lexicon() -> _Lexicon:
 
 
 def understand(question: str) -> list[str]:
-    """The propositions the question names, sorted; UserError for a
-    question that negates or contradicts itself in a way not understood,
-    or holds a word that cannot be placed."""
+    """The propositions the question names, sorted (none: the ordinary
+    pour); UserError for a question that negates or contradicts itself in
+    a way not understood, holds a word that cannot be placed or a number
+    no proposition holds, or says nothing of a pour."""
     vocab = load_vocabulary()
     props = vocab.propositions
     lex = _lexicon()
