@@ -193,3 +193,22 @@ def test_facts_of_other_predicates_never_reach_clingo(tmp_path: Path, hostile: s
         signal.signal(signal.SIGALRM, old)
     assert asp == prolog_conclusions(theory, Semantics())
     assert asp["+D"] == ["bird", "penguin"] and "neg(flies)" not in asp["+d"]
+
+
+@pytest.mark.parametrize("command", [
+    ("conclusions", "{f}"), ("conclusions", "--engine", "asp", "{f}"), ("convert", "{f}"),
+    ("ask", "pour", "--theory", "{f}"), ("plan", "--goal", "no_spill", "--theory", "{f}"),
+    ("prolog", "--theory", "{f}", "-g", "true"),
+    ("evaluate", "--theory", "{f}", "--no-progress", "--out", "{dir}"),
+])
+@pytest.mark.parametrize("hostile", ["directive", "#include", "integer of 5,001 digits"])
+def test_every_command_that_reads_a_theory_refuses_the_corpus_in_one_line(
+        tmp_path: Path, command: tuple[str, ...], hostile: str) -> None:
+    from tests.conftest import assert_one_line_error, run_cli
+
+    content, line, message = CORPUS[hostile]
+    f = tmp_path / "hostile.pl"
+    f.write_bytes(content)
+    r = run_cli(*(a.format(f=f, dir=tmp_path / "report") for a in command))
+    assert assert_one_line_error(r).endswith(f"{f}:{line}: {message}")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["hostile.pl"]     # nothing written
