@@ -26,8 +26,10 @@ _IT = "[the source|the bowl|it]"
 UNCLEAR = "unclear"
 
 PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
-    ("", ("how much", "how many")),       # asks, does not say: "how much liquid spills"
-    (UNCLEAR, ("from above", r"re:\bfrom below\b(?! the (?:destination |bowl )?rim)",
+    ("", ("how much", "how many",         # asks, does not say: "how much liquid spills"
+          "nearly")),                      # a hedge (its stem would be "near")
+    (UNCLEAR, (r"re:\ba little (?=to |more |further |closer |higher |lower |away )",
+               "from above", r"re:\bfrom below\b(?! the (?:destination |bowl )?rim)",
                "from the top", "from the bottom", "overhead")),
     # the stages: the move into the pouring pose, the move out of it, the end pose
     ("end upright", (f"right {_IT} up", f"put {_IT} back upright", f"set {_IT} back upright",
@@ -100,7 +102,7 @@ FILLERS = frozenset("""
     this that these those there here so as just really quite rather too also still only
     even keep hold turn make let use try get go put set move while during into onto out up down
     take takes took taking weigh weighs weighed weighing roughly about around approximately
-    nearly almost
+    almost
     and or but then with without by for from at on in over above of to a an the please say
     tell suppose imagine case ever all both each one way thing
 """.split())

@@ -13,6 +13,8 @@ from pantarhei.bridge.reasoning.reading import understand
 
 #: question -> the propositions it means, sorted
 READ = {
+    'pour above the bowl': [],
+    'pour over the bowl': [],
     '30 cm above the bowl': ['pour_very_high'],
     '50 particles of liquid': ['some_liquid'],
     'I pour honey into a glass': ['sticky_liquid'],
@@ -118,6 +120,8 @@ READ = {
 
 #: questions to refuse in one line
 REFUSED = [
+    'pour near the bowl',
+    'pour a little to the side',
     'a bouncy ball',
     'a heavier liquid',
     'an empty cup',

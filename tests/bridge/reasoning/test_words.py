@@ -58,3 +58,16 @@ def test_negation_and_contradiction_in_everyday_words_are_still_refused(question
 
 def test_a_negation_in_everyday_words_beside_the_value_said():
     assert understand("a light bowl, not a heavy cup") == ["light_destination"]
+
+
+def test_no_filler_is_a_word_a_proposition_is_named_by():
+    """A filler is dropped from every question: one that shared its stem
+    with a word of a proposition's name ("nearly" with the "near" of
+    pour_near_rim) would silence that word. Those below are fillers on
+    purpose: "to", "in" and "down" say nothing alone, "move" is every
+    movement's verb."""
+    from pantarhei.bridge.reasoning.reading import _IGNORED, _stem
+    from pantarhei.theory.lexicon import load_vocabulary
+
+    named = {_stem(w) for n in load_vocabulary().propositions for w in n.split("_")}
+    assert named & _IGNORED == {_stem(w) for w in ("to", "in", "down", "move")}
