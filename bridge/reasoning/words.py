@@ -19,6 +19,9 @@ import re
 from functools import lru_cache
 
 _IT = "[the source|the bowl|it]"
+#: Words that begin a manner of pouring ("from the side", "with a light liquid").
+_MANNER = ("from|with|over|into|onto|low|high|very|steeply|slightly|halfway|tilted|"
+           "upside|centred|centered|far|near|below|above")
 
 #: The word that phrases too vague to read become ("pour from above": over
 #: the destination's middle, or high above it?): reading.py places it
@@ -36,6 +39,9 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
                      f"set {_IT} upright", f"stand {_IT} back up", f"stand {_IT} up",
                      "back upright")),
     ("end", (f"put {_IT} down", f"set {_IT} down", "at the end", "in the end", "finish")),
+    # "after pouring from the side": the manner after it is the pour's
+    ("retreat ; pour", (rf"re:\bafter pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",)),
+    ("approach ; pour", (rf"re:\bbefore pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",)),
     ("approach", (r"re:\b(?:move|bring)(?:s|d|ed|ing)? (?:it|the \w+) in\b",
                   "before pour", "move to the pour pose", "move into the pour pose",
                   "move in", "come in")),

@@ -13,6 +13,20 @@ from pantarhei.bridge.reasoning.reading import understand
 
 #: question -> the propositions it means, sorted
 READ = {
+    'move away slowly after pouring from the side': ['pour_to_side', 'slow_retreat'],
+    'move in fast before pouring from high up': ['fast_approach', 'pour_high'],
+    'move away after pouring and lift it': ['retreat_raising'],
+    'what if the source is light but the liquid is heavy?': ['heavy_liquid', 'light_source'],
+    'pour heavy liquid from a light cup into a heavy bowl': ['heavy_destination', 'heavy_liquid', 'light_source'],
+    'start far away and move closer before pouring': ['approach_moving_closer', 'start_far_away'],
+    'pour from mid height': ['pour_mid_height'],
+    'tilt the cup half way': ['pour_half_tilted'],
+    'keep the cup level': ['pour_level'],
+    'the liquid is not sticky': ['runny_liquid'],
+    'a slippery source and a grippy destination': ['grippy_destination', 'slippery_source'],
+    'slowly move in and then pour from the side': ['pour_to_side', 'slow_approach'],
+    'approach slowly from far away': ['slow_approach', 'start_far_away'],
+    'end far from the bowl, upright': ['end_far_away', 'end_upright'],
     'pour above the bowl': [],
     'pour over the bowl': [],
     '30 cm above the bowl': ['pour_very_high'],
@@ -120,6 +134,11 @@ READ = {
 
 #: questions to refuse in one line
 REFUSED = [
+    'pour with the cup level',
+    'pour straight down',
+    'liquid that is neither runny nor sticky',
+    'pour the liquid slowly into a slippery bowl',
+    'lift the cup high',
     'pour near the bowl',
     'pour a little to the side',
     'a bouncy ball',
