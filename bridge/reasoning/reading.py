@@ -83,9 +83,11 @@ def _stem(w: str) -> str:
 _MARKER_STEMS = {_stem(w): s for w, s in _MARKERS.items()}
 _OBJECT_STEMS = {_stem(o): o for o in _OBJECTS}
 _BOWL = _stem("bowl")
-#: (word, next word) before a bowl that the liquid is poured out of: "pour from a cup"
+#: (word, next word) before a bowl that the liquid is poured out of: "pour from a cup",
+#: "into a bowl from a cup" (not "far from the cup": the destination)
 _POURED_FROM = {(_stem(a), _stem(b))
-                for a, b in (("out", "of"), ("pour", "from"), ("liquid", "from"))}
+                for a, b in (("out", "of"), ("pour", "from"), ("liquid", "from"),
+                             ("bowl", "from"), ("destination", "from"))}
 _IGNORED = {_stem(w) for w in FILLERS}
 _NEGATION_STEMS = {_stem(w) for w in _NEGATIONS}
 

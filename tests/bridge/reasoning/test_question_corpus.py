@@ -13,6 +13,14 @@ from pantarhei.bridge.reasoning.reading import understand
 
 #: question -> the propositions it means, sorted
 READ = {
+    'pour into a heavy, grippy bowl from a light, slippery cup': ['grippy_destination', 'heavy_destination', 'light_source', 'slippery_source'],
+    'pour into the bowl from a heavy jug': ['heavy_source'],
+    'start upright, pour steeply tilted, end upright': ['end_upright', 'pour_steeply_tilted', 'start_upright'],
+    'pour and then lift the cup quickly': ['fast_retreat', 'retreat_raising'],
+    'pour, then lower the cup slowly': ['retreat_lowering', 'slow_retreat'],
+    'pour from a cup that is upside down': ['pour_upside_down'],
+    'move the cup in from the side': ['start_to_side'],
+    'retreat to the side': ['end_to_side'],
     'move away slowly after pouring from the side': ['pour_to_side', 'slow_retreat'],
     'move in fast before pouring from high up': ['fast_approach', 'pour_high'],
     'move away after pouring and lift it': ['retreat_raising'],
@@ -134,6 +142,12 @@ READ = {
 
 #: questions to refuse in one line
 REFUSED = [
+    "don't pour from high up",
+    'never pour upside down',
+    'pour more liquid',
+    'fill the bowl',
+    'end with the bowl upside down',
+    'pour so that the cup does not touch the bowl',
     'pour with the cup level',
     'pour straight down',
     'liquid that is neither runny nor sticky',
