@@ -167,7 +167,8 @@ def _lexicon() -> _Lexicon:
             ("stage", last) if last in _POSE else ("object", last))
     placeable = set().union(*phrases) - {"very"}
     texts = [*(p.gloss for p in props.values()), *(d.gloss for d in vocab.dimensions.values()),
-             *(e.gloss for e in vocab.expectations), *(p.gloss for p in vocab.parameters)]
+             *(f"{e.name.replace('_', ' ')} {e.gloss}" for e in vocab.expectations),
+             *(p.gloss for p in vocab.parameters)]
     known = {_stem(w) for t in texts for w in re.findall(r"[a-z]+", t.lower())}
     known |= {_stem(w) for _, words in rewrites() for w in words}
     known |= _IGNORED | slot_words | _NEGATION_STEMS | {"very"}

@@ -53,7 +53,7 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     # the containers: a bowl is the destination unless the question says otherwise
     ("bowl", ("cup", "container", "glass", "jug", "mug", "pot", "vessel", "jar", "beaker",
               "pitcher", "basin")),
-    ("liquid", ("water", "fluid")),
+    ("liquid", ("liquid particles", "water", "fluid", r"re:(?<!\d )\bparticles?\b")),
     ("destination", ("target", "receiving")),
     ("rim", ("edge", "lip", "brim")),
     # where the source is
@@ -107,6 +107,7 @@ FILLERS = frozenset("""
     might must do does did is are was were be been being i we you it they me my our your its
     this that these those there here so as just really quite rather too also still only
     even keep hold turn make let use try get go put set move while during into onto out up down
+    held robot arm gripper hand
     take takes took taking weigh weighs weighed weighing roughly about around approximately
     almost
     and or but then with without by for from at on in over above of to a an the please say

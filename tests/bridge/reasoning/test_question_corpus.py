@@ -13,6 +13,21 @@ from pantarhei.bridge.reasoning.reading import understand
 
 #: question -> the propositions it means, sorted
 READ = {
+    'Does the liquid spill when the source is held high above a light destination?': ['light_destination', 'pour_high'],
+    'What happens if the pouring container is tilted 90 degrees?': ['pour_steeply_tilted'],
+    'Will liquid remain in the destination if the destination is bouncy?': ['bouncy_destination'],
+    'Pour with a heavy source container and a light receiving container.': ['heavy_source', 'light_destination'],
+    'Is the source clear of the destination when pouring from below the rim?': ['pour_below_rim'],
+    'What if the liquid particles are heavy?': ['heavy_liquid'],
+    'What if the particles are bouncy?': ['bouncy_liquid'],
+    'The robot pours water from a cup into a bowl from high above.': ['pour_high'],
+    'The robot approaches quickly and pours from the side.': ['fast_approach', 'pour_to_side'],
+    'With the source held 5 cm above the rim, tilt it to 100 degrees.': ['pour_low', 'pour_steeply_tilted'],
+    'Approach in 1 second, pour, then retreat in 3 seconds.': ['moderate_approach', 'slow_retreat'],
+    'The destination weighs 50 g.': ['light_destination'],
+    'The source weighs 1.5 kg.': ['heavy_source'],
+    'Use 20 particles.': ['little_liquid'],
+    'What if the target is very light?': ['light_destination'],
     'pour into a heavy, grippy bowl from a light, slippery cup': ['grippy_destination', 'heavy_destination', 'light_source', 'slippery_source'],
     'pour into the bowl from a heavy jug': ['heavy_source'],
     'start upright, pour steeply tilted, end upright': ['end_upright', 'pour_steeply_tilted', 'start_upright'],
@@ -142,6 +157,8 @@ READ = {
 
 #: questions to refuse in one line
 REFUSED = [
+    'If I pour slowly from a low height, does the destination stay upright?',
+    'Pour viscous liquid from a tilted source.',
     "don't pour from high up",
     'never pour upside down',
     'pour more liquid',
