@@ -37,7 +37,8 @@ least two pours show). Medians over the seeds with their range; a table
 and a plot of the learning curves go to `--report` (report/), and every
 row measured to `knowledge-ORACLE.json` beside them, after each seed: a
 later run measures only the methods, seeds and budgets that file lacks
-(`--fresh` measures all again), so an interrupted run loses nothing. Every
+(`--fresh`: this run's again, the others kept), so an interrupted run
+loses nothing. Every
 pour goes through the store (pantarhei.sqlite), so a second run simulates
 nothing.
 """
@@ -300,7 +301,7 @@ def _rows(path: Path) -> list[dict]:
             raise ValueError("a row without its method, seed or pours")
     except (ValueError, TypeError, AttributeError) as e:
         raise SystemExit(f"{path}: not the rows of the knowledge benchmark ({e}); "
-                         "move it aside or run with --fresh") from None
+                         "move it aside to start a new one") from None
     return rows
 
 
@@ -330,7 +331,8 @@ def main(argv: Sequence[str] = ()) -> None:
     p.add_argument("--report", default="report",
                    help="folder for knowledge-ORACLE.md, .png and .json")
     p.add_argument("--fresh", action="store_true",
-                   help="measure every row again (default: keep the rows of knowledge-ORACLE.json)")
+                   help="measure this run's rows again (default: keep the rows of "
+                        "knowledge-ORACLE.json; the others are kept either way)")
     args = p.parse_args(list(argv))
     seeds, budgets = _numbers(args.seeds), sorted(_numbers(args.budgets))
     methods = [m for m in args.methods.split(",") if m]
@@ -341,7 +343,10 @@ def main(argv: Sequence[str] = ()) -> None:
     folder = Path(args.report)
     folder.mkdir(parents=True, exist_ok=True)
     md, png, data = (folder / f"knowledge-{args.oracle}.{x}" for x in ("md", "png", "json"))
-    known = [] if args.fresh else _rows(data)
+    known = _rows(data)
+    if args.fresh:          # measured again: the rows of this run's methods, seeds and budgets
+        known = [r for r in known if not (r["method"] in methods and r["seed"] in seeds
+                                          and r["pours"] in budgets)]
 
     def write(rows: list[dict]) -> None:        # after each seed: what is measured is kept
         data.write_text(json.dumps(sorted(rows, key=_order), indent=1) + "\n", encoding="utf-8")

@@ -70,8 +70,12 @@ def test_rows_measured_are_kept_and_not_measured_again(tmp_path, monkeypatch):
     try:
         knowledge.main(args)
     except SystemExit as e:
-        assert "knowledge-synthetic.json" in str(e) and "--fresh" in str(e)
+        assert "knowledge-synthetic.json" in str(e) and "move it aside" in str(e)
     else:
         raise AssertionError("a damaged rows file was read")
-    knowledge.main(args + ["--fresh"])
-    assert json.loads(data.read_text())[0]["seed"] == 101
+    data.write_text(json.dumps([{**rows[0], "method": "random", "contrast_accuracy": 0.5},
+                                {**rows[0], "contrast_accuracy": 0.123}]))
+    knowledge.main(args + ["--fresh"])      # this run's row again; another method's kept
+    again = json.loads(data.read_text())
+    assert [(r["method"], r["pours"]) for r in again] == [("random", 24), ("designed", 24)]
+    assert again[0]["contrast_accuracy"] == 0.5 and again[1]["contrast_accuracy"] != 0.123
