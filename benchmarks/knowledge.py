@@ -38,9 +38,8 @@ and a plot of the learning curves go to `--report` (report/), and every
 row measured to `knowledge-ORACLE.json` beside them, after each seed: a
 later run measures only the methods, seeds and budgets that file lacks
 (`--fresh`: this run's again, the others kept), so an interrupted run
-loses nothing. Every
-pour goes through the store (pantarhei.sqlite), so a second run simulates
-nothing.
+loses nothing. Every pour goes through the store (pantarhei.sqlite), so a
+second run simulates nothing.
 """
 from __future__ import annotations
 
@@ -343,23 +342,25 @@ def main(argv: Sequence[str] = ()) -> None:
     folder = Path(args.report)
     folder.mkdir(parents=True, exist_ok=True)
     md, png, data = (folder / f"knowledge-{args.oracle}.{x}" for x in ("md", "png", "json"))
-    known = _rows(data)
-    if args.fresh:          # measured again: the rows of this run's methods, seeds and budgets
-        known = [r for r in known if not (r["method"] in methods and r["seed"] in seeds
-                                          and r["pours"] in budgets)]
+
+    def ours(r: dict) -> bool:                  # a row of this run's methods, seeds, budgets
+        return r["method"] in methods and r["seed"] in seeds and r["pours"] in budgets
+
+    def this_run(rows: list[dict]) -> list[dict]:
+        return [r for r in rows if ours(r)]
+
+    known = [r for r in _rows(data) if not (args.fresh and ours(r))]   # --fresh: ours again
 
     def write(rows: list[dict]) -> None:        # after each seed: what is measured is kept
         data.write_text(json.dumps(sorted(rows, key=_order), indent=1) + "\n", encoding="utf-8")
-        shown = [r for r in rows if r["seed"] in seeds and r["pours"] in budgets
-                 and r["method"] in methods]
+        shown = this_run(rows)
         md.write_text(table(shown, args.oracle, sorted({r["seed"] for r in shown})),
                       encoding="utf-8")
         plot(shown, png)
 
     rows = measure(args.oracle, seeds, budgets, Path(args.store), methods, write, known)
     write(rows)
-    print(table([r for r in rows if r["seed"] in seeds and r["pours"] in budgets
-                 and r["method"] in methods], args.oracle, seeds))
+    print(table(this_run(rows), args.oracle, seeds))
     print(f"written: {md}, {png}, {data}")
 
 

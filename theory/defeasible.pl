@@ -57,7 +57,6 @@ theory/defeasible.lp computes the same conclusions with clingo.
 :- use_module(library(lists)).
 :- use_module(library(ordsets)).
 :- use_module(library(assoc)).
-:- use_module(library(pairs)).
 :- use_module(library(apply)).
 
 % SWI-Prolog 9.0 can reclaim an atom that a table's trie still holds

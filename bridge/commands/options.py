@@ -19,7 +19,6 @@ DEFAULT_THEORY = THEORY_DIR / str(defaults()["theory"])
 DEFAULT_STORE = Path(str(defaults()["store"]))
 
 
-
 def choices(option: str) -> tuple[str, ...]:
     """The values an option of the option table (theory/defaults.pl) may
     take: the oracles a command may simulate with, the executors..."""

@@ -68,6 +68,8 @@ _OBJECTS = ("source", "destination", "liquid")
 #: Words that may stand between a body's value word and its noun: "a light, slippery bowl".
 _BETWEEN = {"a", "an", "the", "and", "or", "very"}
 _ARTICLES = {"a", "an", "the"}
+#: A number as a question writes it ("45", "1.5"): one token.
+_NUMBER = r"\d+(?:\.\d+)?"
 #: The most other words between the words of one reading.
 _MAX_GAP = 4
 
@@ -108,7 +110,7 @@ def _tokens(text: str) -> list[_Token]:
     text = re.sub(r"'s?\b", "", text)                 # the destination's rim
     text = re.sub(r"(\d)\s*\u00b0", r"\1 degrees ", text)  # 45°
     text = re.sub(r"(\d)([a-z])", r"\1 \2", text)       # 30cm
-    pairs = [(w, w) for w in re.findall(r"\d+(?:\.\d+)?|[a-z0-9_]+|[,;.!?:()]", text)]
+    pairs = [(w, w) for w in re.findall(rf"{_NUMBER}|[a-z0-9_]+|[,;.!?:()]", text)]
     joined = " ".join(w for w, _ in pairs)
     for pattern, words in rewrites():
         if pattern.search(joined):
@@ -166,10 +168,12 @@ def _lexicon() -> _Lexicon:
         slots[n] = ("stage", first) if first in _POSE else (
             ("stage", last) if last in _POSE else ("object", last))
     placeable = set().union(*phrases) - {"very"}
+    # the expectations' words, by their names and glosses ("does the liquid spill?")
+    asked = {_stem(w) for e in vocab.expectations
+             for w in re.findall(r"[a-z]+", f"{e.name} {e.gloss}".lower())}
     texts = [*(p.gloss for p in props.values()), *(d.gloss for d in vocab.dimensions.values()),
-             *(f"{e.name.replace('_', ' ')} {e.gloss}" for e in vocab.expectations),
              *(p.gloss for p in vocab.parameters)]
-    known = {_stem(w) for t in texts for w in re.findall(r"[a-z]+", t.lower())}
+    known = {_stem(w) for t in texts for w in re.findall(r"[a-z]+", t.lower())} | asked
     known |= {_stem(w) for _, words in rewrites() for w in words}
     known |= _IGNORED | slot_words | _NEGATION_STEMS | {"very"}
     # the dimension whose gloss says the liquid is in the source: its values
@@ -178,8 +182,7 @@ def _lexicon() -> _Lexicon:
                and "source" in vocab.dimensions[p.dimension].gloss}
     # what a question of the ordinary pour may hold: its frame, the bodies,
     # pouring and the expectations it asks of ("does the liquid spill?")
-    asking = _IGNORED | set(_OBJECT_STEMS) | {_BOWL, "pour"} | {
-        _stem(w) for e in vocab.expectations for w in re.findall(r"[a-z]+", f"{e.name} {e.gloss}")}
+    asking = _IGNORED | set(_OBJECT_STEMS) | {_BOWL, "pour"} | asked
     return _Lexicon({k: frozenset(v) for k, v in phrases.items()}, slots,
                     frozenset(placeable | {UNCLEAR}), frozenset(known), frozenset(amounts),
                     frozenset(asking))
@@ -254,7 +257,7 @@ def _quantities(tokens: list[_Token], lex: _Lexicon) -> list[_Token]:
     """The tokens with each number and its unit ("45 degrees"), and the
     words beside it that picked its parameter ("tilted at"), read as one:
     the proposition whose range holds it (quantities.py)."""
-    numbers = [i for i, t in enumerate(tokens[:-1]) if re.fullmatch(r"\d+(?:\.\d+)?", t.word)
+    numbers = [i for i, t in enumerate(tokens[:-1]) if re.fullmatch(_NUMBER, t.word)
                and tokens[i + 1].raw in UNITS and tokens[i + 1].clause == t.clause]
     if not numbers:
         return tokens
@@ -429,9 +432,9 @@ def _roles(tokens: list[_Token], lex: _Lexicon) -> dict[int, str]:
             while j > 0 and (tokens[j].word in _BETWEEN or tokens[j].word in lex.placeable):
                 j -= 1
             before = (tokens[j - 1].word, tokens[j].word) if j > 0 else None
-            after = [t.word for t in tokens[i + 1:i + 4]]
-            as_source = after[:1] == ["as"] and _OBJECT_STEMS.get(
-                after[2] if after[1:2] in (["the"], ["a"]) else (after[1:2] or [""])[0]) == "source"
+            k = _past_articles(tokens, i + 2, 1)              # "a glass as the source"
+            as_source = (i + 1 < len(tokens) and tokens[i + 1].word == "as" and k < len(tokens)
+                         and _OBJECT_STEMS.get(tokens[k].word) == "source")
             roles[i] = "source" if before in _POURED_FROM or as_source else "destination"
     return roles
 
@@ -482,16 +485,11 @@ class _Nouns:
             return {"source", "destination"}
         out = set()
         for step in (-1, 1):            # "X and [the] <i>" and "<i> and [the] Y"
-            j = i + step
-            while 0 <= j < len(t) and t[j].word in _ARTICLES:
-                j += step
-            if not (0 <= j < len(t) and t[j].word == "and"):
-                continue
-            j += step
-            while 0 <= j < len(t) and t[j].word in _ARTICLES:
-                j += step
-            if j in self.roles:
-                out.add(self.roles[j])
+            j = _past_articles(t, i + step, step)
+            if 0 <= j < len(t) and t[j].word == "and":
+                j = _past_articles(t, j + step, step)
+                if j in self.roles:
+                    out.add(self.roles[j])
         return out
 
     def names_destination(self, i: int) -> bool:
@@ -499,6 +497,13 @@ class _Nouns:
         ("the destination", "a destination bowl"), not a bowl by default."""
         return self.roles.get(i) == "destination" and (
             self.tokens[i].word == "destination" or (i > 0 and self.tokens[i - 1].word == "destination"))
+
+
+def _past_articles(tokens: list[_Token], j: int, step: int) -> int:
+    """The first position from j on, going by `step`, that holds no article."""
+    while 0 <= j < len(tokens) and tokens[j].word in _ARTICLES:
+        j += step
+    return j
 
 
 def _refuse_unplaced(question: str, tokens: list[_Token], accepted, lex: _Lexicon) -> None:
