@@ -34,7 +34,8 @@ second run simulates nothing):
     PANTARHEI_BENCH_METHODS=discover,random python -m benchmarks discovery
 
 PANTARHEI_BENCH_EXPLORE gives the curiosities other options, as
-`pantarhei explore` takes them (for example "--jumps 310 --resample 0"; by
+`pantarhei explore` takes them, with a flag for each option of explore/1
+alone too (for example "--jumps 310 --resample 0"; by
 default the option table's), and PANTARHEI_BENCH_RULES the budget in
 batches of 31 (by default the project's 25, the paper's scale; every method
 gets as many pours).
@@ -115,7 +116,8 @@ def theory_consequents(path: Path) -> dict[str, tuple[bool, ...]]:
 
 def explore_options() -> dict:
     """The explore options PANTARHEI_BENCH_EXPLORE gives (flags as
-    `pantarhei explore` takes them, checked by its parser), the others the
+    `pantarhei explore` takes them, checked by its parser, and a flag for
+    each option of explore/1 alone too, as --jumps 310), the others the
     option table's defaults."""
     import argparse
     import shlex
@@ -123,8 +125,8 @@ def explore_options() -> dict:
     from pantarhei.bridge.commands import explore as command
 
     parser = argparse.ArgumentParser(prog="PANTARHEI_BENCH_EXPLORE")
-    command.register(parser.add_subparsers())
-    args = parser.parse_args(["explore", *shlex.split(os.environ.get("PANTARHEI_BENCH_EXPLORE", ""))])
+    command.add_flags(parser, every=True)
+    args = parser.parse_args(shlex.split(os.environ.get("PANTARHEI_BENCH_EXPLORE", "")))
     return command.option_values(args)
 
 

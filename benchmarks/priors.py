@@ -3,7 +3,7 @@ exploration's pours knows the scene where nothing is said (every parameter
 from its prior, as the parameters a question leaves unsaid are), and how
 the theory answers the one-phrase questions.
 
-    pantarhei explore --seed 2 --prior-batch 1 --out runs/prior2.pl
+    pantarhei explore --curiosity discover --seed 2 --out runs/prior2.pl
     python -m benchmarks.priors theory/learned/pouring.pl runs/prior2.pl
 
 For each learned theory: its explored antecedents and their distinct

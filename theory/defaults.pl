@@ -85,6 +85,25 @@ option(ray_address, text, none, none,
 option(progress, flag, none, true,
   "--no-progress: no progress bar").
 
+% The options explore/1 takes in its option list alone (prolog_only(Name):
+% `pantarhei explore` has no flag for them, docs/options.md lists them
+% apart): the tuning of the discovering and the paper's curiosity and the
+% paper's variants of the planes and of qualify, none of which the default
+% curiosity reads. docs/dropped.md says, with the figure, why each value
+% other than the default is not the default.
+prolog_only(significance).
+prolog_only(permutations).
+prolog_only(resample).
+prolog_only(novelty).
+prolog_only(jumps).
+prolog_only(probe).
+prolog_only(probe_attempts).
+prolog_only(prior_batch).
+prolog_only(slope).
+prolog_only(breadth).
+prolog_only(ridge).
+prolog_only(qualify).
+
 % The options that decide an exploration's course, hashed into its run
 % key (bridge/exploration/opening.py; a saved run resumes only with the
 % same): course(Name, When), When every (every run), discover, paper or

@@ -4,7 +4,9 @@ facts, read here for Python: the command line
 (bridge/commands/explore.py), the options Python passes to explore/1
 (bridge/exploration/running.py) and the reference page docs/options.md
 (`options_page`). SWI-Prolog checks explore/1's options against the same
-facts (theory/curiosity/settings.pl).
+facts (theory/curiosity/settings.pl). A row named by a `prolog_only/1` fact
+is an option of explore/1's option list alone: the command line has no
+flag for it (`Option.prolog_only`).
 """
 from __future__ import annotations
 
@@ -33,6 +35,8 @@ class Option:
     help: str
     #: The project's default(Key, _) the default is, if it is one (theory, store).
     ref: str | None = None
+    #: An option of explore/1's option list alone, without a flag (prolog_only/1).
+    prolog_only: bool = False
 
     @property
     def flag(self) -> str:
@@ -51,10 +55,17 @@ def option_table() -> tuple[Option, ...]:
     facts = read_facts([DEFAULTS_FILE])
     project = {k: v for k, v in facts.get("default", [])}
     project["initial"] = tuple(p for (p,) in facts.get("default_initial", []))
-    return tuple(_option(row, project) for row in facts.get("option", []))
+    prolog_only = {name for (name,) in facts.get("prolog_only", [])}
+    return tuple(_option(row, project, row[0] in prolog_only) for row in facts.get("option", []))
 
 
-def _option(row: tuple, project: dict) -> Option:
+def command_line_options() -> tuple[Option, ...]:
+    """The rows `pantarhei explore` has a flag for: every row but the
+    prolog_only ones, in file order."""
+    return tuple(o for o in option_table() if not o.prolog_only)
+
+
+def _option(row: tuple, project: dict, prolog_only: bool = False) -> Option:
     name, kind, rng, default, help_text = row
     low = high = ref = None
     choices: tuple = ()
@@ -73,7 +84,7 @@ def _option(row: tuple, project: dict) -> Option:
         default = default == "true"
     elif kind == "permille":
         default = default / 1000
-    return Option(name, kind, low, high, choices, default, help_text, ref)
+    return Option(name, kind, low, high, choices, default, help_text, ref, prolog_only)
 
 
 def option(name: str) -> Option:
@@ -87,15 +98,27 @@ def option(name: str) -> Option:
 def options_page() -> str:
     """docs/options.md as the table gives it (tests/theory/test_option_table.py
     keeps the file equal to it; `python -m pantarhei.theory.option_table`
-    writes it)."""
+    writes it): the flags of `pantarhei explore`, then the options of
+    explore/1's option list alone."""
     lines = ["# The options of `pantarhei explore`", "",
              "This page is written from the option table in `theory/defaults.pl`",
              "(`python -m pantarhei.theory.option_table`). The same names are the",
              "options of `explore/1` at the Prolog prompt (`seed(3)` for `--seed 3`,",
              "underscores for dashes, `progress(false)` for `--no-progress`).", "",
              "| flag | values | default | what it does |", "|---|---|---|---|"]
-    for o in option_table():
+    for o in command_line_options():
         lines.append(f"| `{o.flag}` | {_values(o)} | {_default_text(o)} | {o.help} |")
+    lines += ["", "## Options of explore/1 alone", "",
+              "These tune the discovering and the paper's curiosity, or choose the",
+              "paper's planes and qualify; the default curiosity reads none of them.",
+              "`explore/1` takes them in its option list (`pantarhei prolog`, then",
+              "`explore([curiosity(discover), probe(0)])`); the command line has no",
+              "flag for them. [Tried and dropped](dropped.md) gives, for each, the",
+              "figure that kept its default.", "",
+              "| option | values | default | what it does |", "|---|---|---|---|"]
+    for o in option_table():
+        if o.prolog_only:
+            lines.append(f"| `{o.name}(V)` | {_values(o)} | {_default_text(o)} | {o.help} |")
     return "\n".join(lines) + "\n"
 
 

@@ -11,13 +11,12 @@ from pantarhei.bridge.errors import UserError
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    from pantarhei.theory.option_table import option_table
-
     p = sub.add_parser("explore", help="learn a theory by curiosity-driven exploration (Algorithm 1)",
                        description="Every option is in the option table of theory/defaults.pl "
-                                   "(docs/options.md).")
-    for o in option_table():
-        options.add_table_option(p, o)
+                                   "(docs/options.md); those that tune the discovering and the "
+                                   "paper's curiosity are options of explore/1 at the Prolog "
+                                   "prompt (pantarhei prolog).")
+    add_flags(p)
     p.set_defaults(run=explore, pin=True)
 
     p = sub.add_parser("prolog", help="an interactive SWI-Prolog with the theory and the oracle "
@@ -57,13 +56,23 @@ def explore(args: argparse.Namespace) -> int:
     return 0
 
 
+def add_flags(p: argparse.ArgumentParser, every: bool = False) -> None:
+    """explore's flags: one per row of the option table that the command
+    line offers (`command_line_options`), or with `every`, one per row
+    (for a benchmark that sets the Prolog-only options as flags)."""
+    from pantarhei.theory.option_table import command_line_options, option_table
+
+    for o in option_table() if every else command_line_options():
+        options.add_table_option(p, o)
+
+
 def option_values(args: argparse.Namespace) -> dict:
-    """explore's parsed flags as the fields of its Options: one per row of
-    the option table, a_0 (--initial) checked, and left out when not given."""
+    """explore's parsed flags as the fields of its ExploreOptions: one per
+    flag parsed, a_0 (--initial) checked, and left out when not given."""
     from pantarhei.bridge.reasoning import scenes as validity
     from pantarhei.theory.option_table import option_table
 
-    values = {o.name: getattr(args, o.name) for o in option_table()}
+    values = {o.name: getattr(args, o.name) for o in option_table() if hasattr(args, o.name)}
     if args.initial is not None:
         values["initial"] = validity.require_valid([t.strip() for t in args.initial.split(",") if t.strip()])
     else:

@@ -96,7 +96,7 @@ BAD = [
     (("explore", "--out", "a_file/learned.pl"), "is not a directory"),
     (("explore", "--budget", "1000000000", "--out", "t.pl"), "--budget: must be at most"),
     (("explore", "--batch", "0", "--out", "t.pl"), "--batch: must be at least 1"),
-    (("explore", "--novelty", "1.5", "--out", "t.pl"), "--novelty: must be at most 1"),
+    (("explore", "--uncertainty", "-1", "--out", "t.pl"), "--uncertainty: must be at least 0"),
     (("evaluate", "--scenes", "10000000000"), "--scenes: must be at most"),
     (("plan", "--goal", "no_spill", "--verify", "1000000000000"), "--verify: must be at most"),
     (("render", "--antecedent", "pour_low", "--size", "100000x100000"), "--size"),

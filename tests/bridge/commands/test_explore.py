@@ -2,6 +2,7 @@
 user runs them. The oracle at the prompt: exploration/test_prompt_oracle.py."""
 from __future__ import annotations
 
+import re
 
 import pytest
 
@@ -14,17 +15,14 @@ FAST = ["--oracle", "synthetic", "--executor", "inline", "--no-progress"]
     (["--initial", "pour_sideways"], "unknown proposition 'pour_sideways'"),
     (["--initial", "pour_low,pour_high"], "invalid antecedent"),
     (["--budget", "0"], "argument --budget: must be at least 1, not 0"),
-    (["--slope", "-1"], "argument --slope: must be at least 0, not -1"),
+    (["--pours", "0"], "argument --pours: must be at least 1, not 0"),
     (["--oracle", "nope"], "invalid choice"),
-    (["--significance", "2"], "argument --significance: must be at most 1, not 2"),
     (["--curiosity", "wild"], "invalid choice"),
-    (["--permutations", "0"], "argument --permutations: must be at least 1, not 0"),
-    (["--resample", "-1"], "argument --resample: must be at least 0, not -1"),
-    (["--novelty", "1.5"], "argument --novelty: must be at most 1, not 1.5"),
-    (["--jumps", "0"], "argument --jumps: must be at least 1, not 0"),
-    (["--probe", "-1"], "argument --probe: must be at least 0, not -1"),
-    (["--probe-attempts", "0"], "argument --probe-attempts: must be at least 1, not 0"),
-    (["--prior-batch", "2"], "invalid choice"),
+    (["--body", "5"], "argument --body: must be at most 4, not 5"),
+    (["--queue", "0"], "argument --queue: must be at least 1, not 0"),
+    (["--uncertainty", "-1"], "argument --uncertainty: must be at least 0, not -1"),
+    # an option of explore/1 alone is no flag
+    (["--novelty", "0.5"], "unrecognized arguments: --novelty"),
 ])
 def test_bad_input_is_one_line_and_nonzero(tmp_path, args, words):
     r = run_cli("explore", *FAST, *args, "--out", str(tmp_path / "t.pl"),
@@ -33,6 +31,37 @@ def test_bad_input_is_one_line_and_nonzero(tmp_path, args, words):
     assert words in r.err
     assert len(r.err.strip().splitlines()) == 1 and "Traceback" not in r.err
     assert not (tmp_path / "t.pl").exists()
+
+
+def test_explore_has_at_most_20_flags():
+    r = run_cli("explore", "--help")
+    assert r.code == 0, r.err
+    flags = set(re.findall(r"(?<![\w-])(--[a-z][a-z-]*)", r.out)) - {"--help"}
+    assert 0 < len(flags) <= 20, sorted(flags)
+
+
+def test_each_option_the_command_line_leaves_is_explore_1_s_and_named_in_dropped():
+    """An option of explore/1 alone has no flag, is still an option of
+    explore/1, and docs/dropped.md names it (as `name(value)`) with the
+    figure that kept its default."""
+    from pantarhei.theory import THEORY_DIR
+    from pantarhei.theory.option_table import option_table
+
+    dropped = (THEORY_DIR.parent / "docs" / "dropped.md").read_text(encoding="utf-8")
+    help_text = run_cli("explore", "--help").out
+    alone = [o for o in option_table() if o.prolog_only]
+    assert alone
+    for o in alone:
+        assert o.flag not in help_text, o.flag
+        assert f"`{o.name}(" in dropped, f"docs/dropped.md does not name {o.name}"
+
+
+def test_explore_1_checks_an_option_of_its_own_in_one_line(tmp_path):
+    goal = (f"explore([curiosity(discover), oracle(synthetic), budget(1), novelty(1.5), "
+            f"out('{tmp_path / 'p.pl'}'), store('{tmp_path / 's.sqlite'}')])")
+    line = assert_one_line_error(run_cli("prolog", "-g", goal), code=1)
+    assert "novelty: expected a number from 0 to 1" in line, line
+    assert list(tmp_path.iterdir()) == []
 
 
 @pytest.mark.parametrize("store, out, words", [

@@ -70,7 +70,7 @@ BAD = [
     (("simulate", "--antecedent", "pour_low", "--timeout", "0"), "--timeout: must be more than 0"),
     (("simulate", "--antecedent", "pour_low", "--timeout", "-5"), "--timeout: must be more than 0"),
     (("simulate", "--antecedent", "pour_low", "--timeout", "nan"), "finite"),
-    (("explore", "--ridge", "inf"), "--ridge: must be a finite number"),
+    (("explore", "--uncertainty", "inf"), "--uncertainty: must be a finite number"),
     (("simulate", "--antecedent", "pour_low", "--ray-address", "1.2.3.4:6379"), "--executor ray"),
     (("render", "--antecedent", "pour_low", "--out", "x.png"), ".gif"),
     (("render", "--antecedent", "pour_low", "--size", "big"), "--size"),

@@ -18,17 +18,16 @@ from pantarhei.bridge.reasoning.scenes import violations
 from pantarhei.theory.lexicon import load_vocabulary
 from tests.conftest import run_cli
 
-FAST = ["--oracle", "synthetic", "--executor", "inline", "--no-progress"]
-
 
 @pytest.fixture(scope="module")
 def learned(tmp_path_factory) -> tuple[Path, Path]:
     d = tmp_path_factory.mktemp("learned")
     # without the priors' batch: with it, this small run's last antecedent ends
     # past the last whole batch both methods are compared at
-    r = run_cli("explore", *FAST, "--curiosity", "discover", "--prior-batch", "0", "--budget", "6",
-                "--batch", "12", "--out",
-                str(d / "t.pl"), "--store", str(d / "s.sqlite"))
+    # (prior_batch(0): an option of explore/1 alone, at the Prolog prompt)
+    r = run_cli("prolog", "-g", f"explore([oracle(synthetic), executor(inline), progress(false), "
+                f"curiosity(discover), prior_batch(0), budget(6), batch(12), "
+                f"out('{d / 't.pl'}'), store('{d / 's.sqlite'}')])")
     assert r.code == 0, r.err
     return d / "t.pl", d / "s.sqlite"
 

@@ -69,21 +69,26 @@ def test_killed_exploration_resumes_to_the_same_theory(tmp_path):
     assert trace == (tmp_path / "whole.trace.jsonl").read_text()
 
 
+def explore_at_the_prompt(budget: int, out: Path, store: Path, resume: bool = False):
+    """The discovering curiosity without the priors' batch (prior_batch(0),
+    an option of explore/1 alone), run by explore/1 at the Prolog prompt."""
+    options = (f"curiosity(discover), oracle(synthetic), executor(inline), progress(false), "
+               f"general(false), seed(4), prior_batch(0), budget({budget}), resume({str(resume).lower()}), "
+               f"out('{out}'), store('{store}')")
+    return run_cli("prolog", "-g", f"explore([{options}])")
+
+
 # Without the priors' batch, which is the last of the budget it was
 # explored in (below).
 def test_resume_of_a_finished_run_and_a_longer_one(tmp_path):
-    common = ["--out", str(tmp_path / "t.pl"), "--store", str(tmp_path / "s.sqlite")]
-    short = ["explore", "--curiosity", "discover", "--oracle", "synthetic", "--executor", "inline",
-             "--no-progress",
-             "--no-general", "--seed", "4", "--prior-batch", "0"]
-    assert run_cli(*short, "--budget", "4", *common).code == 0
+    out, store = tmp_path / "t.pl", tmp_path / "s.sqlite"
+    assert explore_at_the_prompt(4, out, store).code == 0
     # resuming with a larger budget continues where it stopped ...
-    longer = run_cli(*short, "--budget", "7", "--resume", *common)
+    longer = explore_at_the_prompt(7, out, store, resume=True)
     assert longer.code == 0, longer.err
-    continued = (tmp_path / "t.pl").read_text()
+    continued = out.read_text()
     # ... and ends where a run with that budget from scratch ends
-    fresh = run_cli(*short, "--budget", "7", "--out", str(tmp_path / "f.pl"),
-                    "--store", str(tmp_path / "f.sqlite"))
+    fresh = explore_at_the_prompt(7, tmp_path / "f.pl", tmp_path / "f.sqlite")
     assert fresh.code == 0
     assert continued == (tmp_path / "f.pl").read_text()
 
