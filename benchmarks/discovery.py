@@ -131,12 +131,12 @@ def explore_options() -> dict:
 
 
 def curiosity(mode: str, seed: int, rules: int, tmp: Path, oracle: str, store: Path) -> dict:
-    from pantarhei.bridge.exploration.running import Options, explore
+    from pantarhei.bridge.exploration.explore_call import ExploreOptions, explore
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen
 
     out = tmp / f"{mode}-{seed}.pl"
     inline = oracle == "synthetic"
-    r = explore(Options(**{**explore_options(), "curiosity": mode, "oracle": oracle,
+    r = explore(ExploreOptions(**{**explore_options(), "curiosity": mode, "oracle": oracle,
                            "budget": rules, "seed": seed, "out": out,
                            "store": tmp / f"{mode}-{seed}.sqlite" if inline else store,
                            "progress": False, "executor": "inline" if inline else "local",

@@ -39,17 +39,17 @@ def run_options(max_rules: int, tmp: Path, seed: int = 1, breadth: int = 3,
     process, with the option table's other defaults (for the paper's
     curiosity slope 0: it follows every plane, a run that never stops
     early)."""
-    from pantarhei.bridge.exploration.running import Options
+    from pantarhei.bridge.exploration.explore_call import ExploreOptions
 
     paper = {"slope": 0.0} if curiosity == "paper" else {}
-    return Options(curiosity=curiosity, oracle="synthetic", budget=max_rules, seed=seed,
+    return ExploreOptions(curiosity=curiosity, oracle="synthetic", budget=max_rules, seed=seed,
                    out=tmp / "t.pl", store=tmp / f"s{max_rules}-{seed}-{time.time_ns()}.sqlite",
                    progress=False, executor="inline", breadth=breadth, **paper)
 
 
 def overhead(max_rules: int, tmp: Path, seed: int = 1, breadth: int = 3,
              curiosity: str = "discover") -> tuple[float, int, dict]:
-    from pantarhei.bridge.exploration.running import explore
+    from pantarhei.bridge.exploration.explore_call import explore
 
     t = time.perf_counter()
     r = explore(run_options(max_rules, tmp, seed, breadth, curiosity))
@@ -76,7 +76,7 @@ def pour_seconds(n: int = 6) -> float:
 
 
 def qualify_accuracy(tmp: Path, seeds=(1, 2, 3)) -> dict[str, float]:
-    from pantarhei.bridge.exploration.running import Options, explore
+    from pantarhei.bridge.exploration.explore_call import ExploreOptions, explore
     from pantarhei.oracle.generative import sample
     from pantarhei.oracle.synthetic import scores
     from pantarhei.theory.lexicon import load_vocabulary
@@ -89,7 +89,7 @@ def qualify_accuracy(tmp: Path, seeds=(1, 2, 3)) -> dict[str, float]:
         ok = total = 0
         for seed in seeds:
             path = tmp / f"q-{mode}-{seed}.pl"
-            explore(Options(curiosity="paper", oracle="synthetic", seed=seed, qualify=mode,
+            explore(ExploreOptions(curiosity="paper", oracle="synthetic", seed=seed, qualify=mode,
                             out=path, store=tmp / "q.sqlite", progress=False, executor="inline"))
             f = read_facts([path])
             body = defaultdict(list)

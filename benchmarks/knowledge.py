@@ -80,12 +80,12 @@ def _batch() -> int:
 def curiosity(seed: int, budget: int, oracle: str, store: Path, run) -> Chosen:
     """The learning curiosity's pours and, at each prefix, the antecedents
     explored by then (from its trace)."""
-    from pantarhei.bridge.exploration.running import Options, explore
+    from pantarhei.bridge.exploration.explore_call import ExploreOptions, explore
     from pantarhei.bridge.exploration.trace import trace_path
 
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "learned.pl"
-        result = explore(Options(oracle=oracle, curiosity="learn", pours=budget, seed=seed,
+        result = explore(ExploreOptions(oracle=oracle, curiosity="learn", pours=budget, seed=seed,
                                  out=out, store=store, progress=False))
         trace = [json.loads(line) for line in trace_path(out).read_text().splitlines()]
     P, S = result["pours"]

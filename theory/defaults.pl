@@ -105,7 +105,7 @@ prolog_only(ridge).
 prolog_only(qualify).
 
 % The options that decide an exploration's course, hashed into its run
-% key (bridge/exploration/opening.py; a saved run resumes only with the
+% key (bridge/exploration/course.py; a saved run resumes only with the
 % same): course(Name, When), When every (every run), discover, paper or
 % learn (runs of that curiosity), other_than(C) (runs of another curiosity than
 % C) or nonzero(Option) (runs where Option is not 0:

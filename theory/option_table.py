@@ -2,7 +2,7 @@
 once in theory/defaults.pl as `option(Name, Type, Range, Default, Help)`
 facts, read here for Python: the command line
 (bridge/commands/explore.py), the options Python passes to explore/1
-(bridge/exploration/running.py) and the reference page docs/options.md
+(bridge/exploration/explore_call.py) and the reference page docs/options.md
 (`options_page`). SWI-Prolog checks explore/1's options against the same
 facts (theory/curiosity/settings.pl). A row named by a `prolog_only/1` fact
 is an option of explore/1's option list alone: the command line has no

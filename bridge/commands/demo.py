@@ -85,7 +85,7 @@ def demo(args: argparse.Namespace) -> int:
     from pantarhei.bridge.theories import loading
     from pantarhei.bridge.exploration.trace import require_distinct_outputs
     from pantarhei.bridge.commands.querying import answer, print_plans
-    from pantarhei.bridge.exploration.running import Options, budget_text, explore, stop_text
+    from pantarhei.bridge.exploration.explore_call import ExploreOptions, budget_text, explore, stop_text
 
     out = Path(args.out)
     require_writable_file(out, "--out")
@@ -95,7 +95,7 @@ def demo(args: argparse.Namespace) -> int:
     budget = int(defaults()["budget"])
     _heading(f"Learning the theory of pouring: curious exploration of the {args.oracle} "
              f"simulation, {budget_text(curiosity, budget, args.pours)} (Algorithm 1)")
-    result = explore(Options(
+    result = explore(ExploreOptions(
         oracle=args.oracle, pours=args.pours, seed=args.seed, out=out,
         store=Path(args.store), workers=args.workers, progress=not args.no_progress))
     theory = loading.load([out], pouring=True)      # read once, for every question below

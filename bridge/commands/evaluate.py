@@ -51,7 +51,7 @@ def _require_apart(theory: Path, store: Path, out: Path) -> None:
 
 
 def evaluate(args: argparse.Namespace) -> int:
-    from pantarhei.bridge.evaluation.pipeline import Options, evaluate as run
+    from pantarhei.bridge.evaluation.pipeline import EvaluationOptions, evaluate as run
     from pantarhei.bridge.evaluation.headline import headline
     from pantarhei.bridge.evaluation.report import write
     from pantarhei.bridge.files import require_writable_file
@@ -64,7 +64,7 @@ def evaluate(args: argparse.Namespace) -> int:
         raise UserError(f"{out}: not a directory")
     require_writable_file(out / "evaluation.json", "--out")
     _require_apart(theory, Path(args.store), out)
-    ev = run(Options(theory=theory, store=Path(args.store), scenes=args.scenes, seed=args.seed,
+    ev = run(EvaluationOptions(theory=theory, store=Path(args.store), scenes=args.scenes, seed=args.seed,
                      verify=args.verify, paper_samples=args.paper_samples,
                      executor=args.executor, workers=args.workers,
                      ray_address=args.ray_address, progress=not args.no_progress,

@@ -30,13 +30,13 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def explore(args: argparse.Namespace) -> int:
-    from pantarhei.bridge.exploration.running import Options, explore as run_exploration, stop_text
+    from pantarhei.bridge.exploration.explore_call import ExploreOptions, explore as run_exploration, stop_text
     from pantarhei.bridge.exploration.trace import require_distinct_outputs
     from pantarhei.bridge.files import require_writable_file
 
     require_writable_file(Path(args.out), "--out")
     require_distinct_outputs(Path(args.store), Path(args.out))
-    opts = Options(**option_values(args))
+    opts = ExploreOptions(**option_values(args))
     try:
         result = run_exploration(opts)
     except KeyboardInterrupt:

@@ -143,7 +143,7 @@ def _read_one_layer(path: Path, theory: Theory, settings: dict[str, list[Any]]) 
 # -- the run -------------------------------------------------------------------
 
 @dataclass
-class Options:
+class EvaluationOptions:
     theory: Path
     store: Path
     scenes: int = 150
@@ -262,7 +262,7 @@ class Pours:
         return sum(1 for e in self.ends if e <= pours)
 
 
-def evaluate(opts: Options) -> Evaluation:
+def evaluate(opts: EvaluationOptions) -> Evaluation:
     """Every stage of the evaluation, in order, through one simulator."""
     learned = read_learned(opts.theory)
     if opts.scenes < 1 or opts.verify < 0 or opts.paper_samples < 0:
@@ -393,7 +393,7 @@ def search_baselines(seed: int, budget: int, samples: int, run: Simulations) -> 
     return {"prior": behaviours_seen(prior), "map_elites": behaviours_seen(qd.S)}
 
 
-def heldout_scenes(opts: Options, explored: Sequence[tuple[str, ...]],
+def heldout_scenes(opts: EvaluationOptions, explored: Sequence[tuple[str, ...]],
                    random_ants: Sequence[tuple[str, ...]], run: Simulations
                    ) -> dict[str, tuple[list[tuple[str, ...]], np.ndarray]]:
     """Three sets of held-out scenes, one pour each, never explored by

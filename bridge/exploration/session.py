@@ -31,43 +31,142 @@ raises it as `exploration_error/1`) and is raised again, as it was, when the
 Prolog goal returns. All Prolog calls stay on the main thread.
 
 What Python holds while Prolog explores is owned by a `Host`, which the
-engine keeps (`install(engine)`): the running `Session`, the last error and
-the last run's result. Nothing lives at module level. The Session, its
-pours and what is fitted on them are bridge/exploration/pool.py; the run's
-course-deciding settings and the progress bar, bridge/exploration/opening.py.
+engine keeps (`install(engine)`): the running `Session` (its pours and
+what is cached on them), the last error and the last run's result.
+Nothing lives at module level. The run's course-deciding settings are
+bridge/exploration/course.py; the progress bar, bridge/exploration/progress.py.
 """
 from __future__ import annotations
 
+import sys
 import time
+from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any, Callable, Sequence
 
 import numpy as np
 
 from pantarhei.bridge.engines.swipl import Engine, engine as prolog_engine
 from pantarhei.bridge.engines.terms import foreign
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.exploration.novelty import PASS, known, novelties, probe_score
-from pantarhei.bridge.exploration.opening import (ALGORITHM_VERSION, course, note, open_bar,
-                                                  postfix, progress, truthy)
-from pantarhei.bridge.exploration.pool import Session
+from pantarhei.bridge.exploration.course import ALGORITHM_VERSION, course
+from pantarhei.bridge.exploration.novelty import PASS, Known, known, novelties, probe_score
+from pantarhei.bridge.exploration.planes import Planes, plane_fit
+from pantarhei.bridge.exploration.progress import open_bar, postfix, progress
 from pantarhei.bridge.exploration.prompt_oracle import (oracle_describe, oracle_sample,
                                                         oracle_simulate)
-from pantarhei.bridge.exploration.qualify import QUALIFY
-from pantarhei.bridge.exploration.significance import shuffle_seed
+from pantarhei.bridge.exploration.qualify import QUALIFY, consequent
+from pantarhei.bridge.exploration.significance import Tested, permutation_test, shuffle_seed
 from pantarhei.bridge.exploration.simulation import batch_seed, open_simulator, oracle_identity
 from pantarhei.bridge.exploration.checkpoints import ExplorationStore, run_key
 from pantarhei.bridge.exploration.steepest import best_plane
+from pantarhei.bridge.exploration.weights import weights
 from pantarhei.bridge.exploration.trace import (append_trace, plot_path, plot_trace,
                                                 require_distinct_outputs, rounded, trace_path,
                                                 write_trace)
-from pantarhei.oracle.generative import InvalidAntecedent, sample
+from pantarhei.oracle.generative import InvalidAntecedent, log_density, sample
 from pantarhei.oracle.store import DEFAULT_STORE
 from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
 
-__all__ = ["ALGORITHM_VERSION", "Host", "error_text", "install"]
+__all__ = ["ALGORITHM_VERSION", "Host", "Session", "error_text", "install"]
+
+
+@dataclass
+class Session:
+    """One exploration under way: its settings, run key, store and
+    simulator, every pour so far, and what is cached on them. The trace
+    is the store's (its checkpoints), the symbolic state Prolog's."""
+    settings: dict
+    run: str
+    store: ExplorationStore
+    simulator: Any
+    oracle_version: str
+    params: np.ndarray
+    scores: np.ndarray
+    pending: dict[int, tuple[np.ndarray, np.ndarray]] = field(default_factory=dict)
+    log_dens: dict[str, np.ndarray] = field(default_factory=dict)
+    plane_cache: dict[str, tuple[np.ndarray, Planes | None]] = field(default_factory=dict)
+    test_cache: dict[str, tuple[np.ndarray, Tested | None]] = field(default_factory=dict)
+    #: What the last novelty estimate knew: ((pours, antecedents), Known).
+    known: tuple[tuple[int, int], Known] | None = None
+    #: The learning curiosity's model of the pours: (pours it is fitted on, Meaning).
+    teacher: tuple[int, Any] | None = None
+    started: float = field(default_factory=time.monotonic)
+    bar: Any = None
+    timings: dict[str, float] = field(default_factory=dict)
+    #: Seconds since the start after each explored antecedent (kept out of the trace).
+    elapsed: list[float] = field(default_factory=list)
+    #: Pours already in the pool of each probed (iteration, attempt).
+    probed: dict[tuple[int, int], int] = field(default_factory=dict)
+
+    @property
+    def valid(self) -> np.ndarray:
+        return np.all(np.isfinite(self.scores), axis=1)
+
+    def log_density_of(self, aid: str, props: Sequence[str]) -> np.ndarray:
+        """log P(p|a) over every simulation so far, extended as they come."""
+        have = self.log_dens.get(aid)
+        n = len(self.params)
+        if have is None:
+            have = log_density(self.params, props) if n else np.empty(0)
+        elif len(have) < n:
+            have = np.concatenate([have, log_density(self.params[len(have):], props)])
+        self.log_dens[aid] = have
+        return have
+
+    def planes_of(self, aid: str, X: np.ndarray, S: np.ndarray, w: np.ndarray) -> Planes | None:
+        """The antecedent's planes, fitted again only when its weights
+        changed: an antecedent whose support holds none of the new
+        simulations, and none that a new antecedent shares, keeps its planes."""
+        cached = self.plane_cache.get(aid)
+        if cached is not None and _same_weights(cached[0], w):
+            return cached[1]
+        planes = plane_fit(X, S, w, float(self.settings.get("ridge", defaults()["ridge"])))
+        self.plane_cache[aid] = (w.copy(), planes)
+        return planes
+
+    def tested_of(self, number: int, aid: str, X: np.ndarray, S: np.ndarray,
+                  w: np.ndarray) -> Tested | None:
+        """The antecedent's planes and their permutation test, done again
+        only when its weights changed (as `planes_of`)."""
+        cached = self.test_cache.get(aid)
+        if cached is not None and _same_weights(cached[0], w):
+            return cached[1]
+        used = int(((w > 0) & np.all(np.isfinite(S), axis=1)).sum())
+        tested = permutation_test(X, S, w, float(self.settings.get("ridge", defaults()["ridge"])),
+                                  int(self.settings["permutations"]),
+                                  shuffle_seed(int(self.settings["seed"]), number, used))
+        self.test_cache[aid] = (w.copy(), tested)
+        return tested
+
+    def weight_matrix(self, entries: Sequence[dict]) -> np.ndarray:
+        """Equation (1) for the explored antecedents over the simulations
+        that did not fail: (antecedents, valid simulations)."""
+        valid = self.valid
+        ld = np.vstack([self.log_density_of(str(e["id"]), e["antecedent"])[valid] for e in entries])
+        return weights(ld)
+
+    def consequents(self, entries: Sequence[dict], mode: str) -> list[dict]:
+        """Qualify each explored antecedent from its weighted simulations
+        (`qualify.consequent`, in the order of `entries`)."""
+        W = self.weight_matrix(entries)
+        S = self.scores[self.valid]
+        return [consequent(S, W[i], mode) for i in range(len(entries))]
+
+    def verdicts(self, entries: Sequence[dict]) -> list[tuple[bool, ...]]:
+        """The consequent of each explored antecedent as nine verdicts,
+        qualified as the run's settings say."""
+        mode = str(self.settings.get("qualify", defaults()["qualify"]))
+        return [tuple(o["holds"] for o in c["outcomes"]) for c in self.consequents(entries, mode)]
+
+
+def _same_weights(w0: np.ndarray, w: np.ndarray) -> bool:
+    """Whether weights w over the simulations so far are those cached (w0)
+    with none on the simulations since: what was fitted on w0 still holds."""
+    k = len(w0)
+    return k <= len(w) and np.array_equal(w0, w[:k]) and not w[k:].any()
 
 
 class Host:
@@ -336,6 +435,17 @@ class Host:
             finally:
                 s.store.close()
         return written
+
+
+def note(text: str) -> None:
+    """A line for the person exploring, on stderr."""
+    print(f"pantarhei explore: {text}", file=sys.stderr)
+
+
+def truthy(v: Any) -> bool:
+    """A truth value of a request (a bool, as the foreign predicates read
+    true and false, or true and 1 as text) as a bool."""
+    return v in (True, "true", 1, "1")
 
 
 def error_text(e: BaseException) -> str:

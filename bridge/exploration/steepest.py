@@ -11,13 +11,17 @@ steepest plane.
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
 from pantarhei.bridge.exploration.planes import Planes, best_abs_slope
-from pantarhei.bridge.exploration.pool import Session
 from pantarhei.bridge.exploration.significance import Tested
 from pantarhei.oracle.generative import normalise
 from pantarhei.theory.lexicon import load_vocabulary
+
+if TYPE_CHECKING:
+    from pantarhei.bridge.exploration.session import Session
 
 
 def best_plane(s: Session, request: dict) -> dict:

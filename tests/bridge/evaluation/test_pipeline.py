@@ -35,7 +35,7 @@ def learned(tmp_path_factory) -> tuple[Path, Path]:
 @pytest.fixture(scope="module")
 def evaluated(learned, tmp_path_factory) -> tuple[E.Evaluation, Path]:
     theory, store = learned
-    opts = E.Options(theory=theory, store=store, scenes=25, seed=3, verify=4, paper_samples=5,
+    opts = E.EvaluationOptions(theory=theory, store=store, scenes=25, seed=3, verify=4, paper_samples=5,
                      executor="inline", progress=False)
     return E.evaluate(opts), store
 

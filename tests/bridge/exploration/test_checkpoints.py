@@ -18,7 +18,7 @@ import numpy as np
 from tests.conftest import run_cli
 
 # Algorithm 1's rules alone: the general layer is learned from the pours
-# once the loop ends, whether it ran at once or was resumed (test_running.py)
+# once the loop ends, whether it ran at once or was resumed (test_explore_call.py)
 ARGS = ["explore", "--curiosity", "discover", "--oracle", "synthetic", "--executor", "inline",
         "--budget", "10",
         "--seed", "3", "--no-progress", "--no-general"]

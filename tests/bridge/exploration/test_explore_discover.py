@@ -12,8 +12,8 @@ import numpy as np
 import pytest
 
 from pantarhei.bridge.engines.swipl import engine
-from pantarhei.bridge.exploration import running as exploration
-from pantarhei.bridge.exploration.running import Options
+from pantarhei.bridge.exploration import explore_call as exploration
+from pantarhei.bridge.exploration.explore_call import ExploreOptions
 from pantarhei.bridge.exploration.novelty import PASS
 from pantarhei.bridge.exploration.session import install
 from pantarhei.bridge.exploration.trace import probe_means
@@ -35,7 +35,7 @@ def run(tmp: Path, name: str = "t", **kw) -> dict:
                 prior_batch=0)                # the course the known answers below were found on
                                         # (with the priors' batch: test_priors.py)
     opts.update(kw)
-    return exploration.explore(Options(**opts))
+    return exploration.explore(ExploreOptions(**opts))
 
 
 def trace(result: dict) -> list[dict]:

@@ -13,8 +13,8 @@ import pytest
 
 from pantarhei.bridge.errors import UserError
 
-from pantarhei.bridge.exploration import running as exploration
-from pantarhei.bridge.exploration.running import Options
+from pantarhei.bridge.exploration import explore_call as exploration
+from pantarhei.bridge.exploration.explore_call import ExploreOptions
 from pantarhei.bridge.theories.loading import load
 from pantarhei.theory import read_facts
 from pantarhei.theory.lexicon import load_vocabulary
@@ -27,7 +27,7 @@ def run(tmp: Path, name: str, **kw) -> dict:
     opts = dict(curiosity="learn", oracle="synthetic", pours=POURS, out=tmp / f"{name}.pl",
                 store=tmp / "store.sqlite", progress=False, executor="inline")
     opts.update(kw)
-    return exploration.explore(Options(**opts))
+    return exploration.explore(ExploreOptions(**opts))
 
 
 @pytest.fixture(scope="module")

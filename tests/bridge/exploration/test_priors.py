@@ -44,10 +44,10 @@ def test_the_priors_take_the_last_batch_and_are_drawn_again_by_the_evaluation(tm
 
 
 def test_by_default_the_priors_are_explored(tmp_path):
-    from pantarhei.bridge.exploration import running as exploration
-    from pantarhei.bridge.exploration.running import Options
+    from pantarhei.bridge.exploration import explore_call as exploration
+    from pantarhei.bridge.exploration.explore_call import ExploreOptions
 
-    r = exploration.explore(Options(curiosity="discover", oracle="synthetic", budget=3,
+    r = exploration.explore(ExploreOptions(curiosity="discover", oracle="synthetic", budget=3,
                                     out=tmp_path / "d.pl",
                                     store=tmp_path / "d.sqlite", progress=False,
                                     executor="inline", general=False))

@@ -1,12 +1,17 @@
 """The session behind the exploration's foreign predicates
 (bridge/exploration/session.py), called from the real SWI-Prolog: an error
-in Python is one line in Prolog and is kept to be raised again as it was."""
+in Python is one line in Prolog and is kept to be raised again as it was.
+The session's pours: the log densities grow with the pours and equal those
+computed at once, and an antecedent's planes and tests are fitted again
+only when its weights change."""
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.exploration.session import install
+from pantarhei.bridge.exploration.session import Session, install
+from pantarhei.oracle.generative import log_density, normalise, sample
 
 
 @pytest.fixture(scope="module")
@@ -35,3 +40,47 @@ def test_the_prompt_oracle_answers_through_the_same_door(eng):
                    "_{antecedent: [pour_sideways], n: 1, seed: 1}, _), exploration_error(M), true)")
     assert "pour_sideways" in str(bad["M"])
     assert eng.exploration_host.take_error() is not None
+
+
+def session(P: np.ndarray) -> Session:
+    rng = np.random.default_rng(0)
+    return Session(settings={"ridge": 1.0, "permutations": 19, "seed": 1, "qualify": "weighted"},
+                   run="", store=None, simulator=None, oracle_version="", params=P,
+                   scores=rng.random((len(P), 9)))
+
+
+def test_log_densities_grow_with_the_pours():
+    P = np.vstack([sample(["pour_low"], 20, seed=1), sample([], 20, seed=2)])
+    s = session(P[:20])
+    s.log_density_of("a1", ["pour_low"])
+    s.params = P
+    assert np.array_equal(s.log_density_of("a1", ["pour_low"]), log_density(P, ["pour_low"]))
+
+
+def test_planes_are_fitted_again_only_when_the_weights_change():
+    P = sample([], 40, seed=3)
+    s = session(P)
+    X, w = normalise(P), np.ones(40)
+    first = s.planes_of("a1", X, s.scores, w)
+    assert s.planes_of("a1", X, s.scores, w.copy()) is first
+    more = np.concatenate([w, np.zeros(5)])            # new pours outside its support
+    X5 = np.vstack([X, X[:5]])
+    S5 = np.vstack([s.scores, s.scores[:5]])
+    assert s.planes_of("a1", X5, S5, more) is first
+    w2 = w.copy()
+    w2[0] = 0.5
+    assert s.planes_of("a1", X, s.scores, w2) is not first
+    tested = s.tested_of(1, "a1", X, s.scores, w2)
+    assert s.tested_of(1, "a1", X, s.scores, w2) is tested
+    assert s.tested_of(1, "a1", X, s.scores, w) is not tested
+
+
+def test_failed_pours_take_no_part_in_the_weights_or_the_verdicts():
+    P = np.vstack([sample(["pour_low"], 10, seed=4), sample(["pour_to_side"], 10, seed=5)])
+    s = session(P)
+    s.scores[3] = np.nan
+    entries = [{"id": "a1", "antecedent": ["pour_low"]}, {"id": "a2", "antecedent": ["pour_to_side"]}]
+    W = s.weight_matrix(entries)
+    assert W.shape == (2, 19) and np.allclose(W.sum(axis=0), 1.0)
+    verdicts = s.verdicts(entries)
+    assert len(verdicts) == 2 and all(len(v) == 9 for v in verdicts)

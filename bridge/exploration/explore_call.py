@@ -1,6 +1,6 @@
-"""Running Algorithm 1 from Python: the options of one exploration and
-`explore(options)`, which asks theory/curiosity.pl to explore and returns
-what it did. The options and their defaults are the option table of
+"""Calling explore/1 from Python: the options of one exploration
+(`ExploreOptions`) and `explore(options)`, which asks theory/curiosity.pl to
+explore and returns what it did. The options and their defaults are the option table of
 theory/defaults.pl."""
 from __future__ import annotations
 
@@ -41,7 +41,7 @@ def _prolog_value(o: Option, v: Any) -> str:
     return prolog_quote(v)
 
 
-def _prolog(self: "Options") -> str:
+def _prolog(self: "ExploreOptions") -> str:
     """The options as explore/1's option list: every option of the table
     that is set."""
     items = [f"{o.name}({_prolog_value(o, getattr(self, o.name))})" for o in option_table()
@@ -51,7 +51,7 @@ def _prolog(self: "Options") -> str:
     return "[" + ", ".join(items) + "]"
 
 
-def _paths(self: "Options") -> None:
+def _paths(self: "ExploreOptions") -> None:
     for o in option_table():
         if o.type == "path":
             setattr(self, o.name, Path(getattr(self, o.name)))
@@ -62,13 +62,13 @@ def _paths(self: "Options") -> None:
 #: (docs/options.md), with its default (None: explore/1 sets it: the pours
 #: of a batch, a_0, workers), and oracle_options, the
 #: keyword arguments of the oracle's constructor.
-Options = make_dataclass(
-    "Options", [*(_field(o) for o in option_table()),
+ExploreOptions = make_dataclass(
+    "ExploreOptions", [*(_field(o) for o in option_table()),
                 ("oracle_options", "dict | None", field(default=None))],
     namespace={"prolog": _prolog, "__post_init__": _paths, "__doc__": "The options of one exploration (the option table)."})
 
 
-def explore(options: Options) -> dict:
+def explore(options: ExploreOptions) -> dict:
     """Run an exploration to the end and return what it did: the output
     files, why it stopped, the number of rules and simulations, and where
     the time went. UserError for bad options; an interruption is raised
