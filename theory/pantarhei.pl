@@ -16,6 +16,7 @@ provides.
 :- use_module(validity).
 :- use_module(defeasible).
 :- use_module(queries).
+:- use_module(ask).
 :- use_module(curiosity).
 
 :- initialization(load_shipped_theory).

@@ -1,6 +1,7 @@
 :- module(theory_files,
           [ load_facts/2,              % +File, +Module
             load_theory_facts/2,       % +File, +Module
+            read_theory_file/2,        % +File, -LineFacts
             read_fact_file/2,          % +File, -LineFacts
             check_fact/1,              % +Term
             check_theory_fact/2,       % +Fact, -Problem
@@ -55,6 +56,16 @@ load_facts(File, Module) :-
 %
 %   @error theory_error(File, Line, Expected) naming the first offence.
 load_theory_facts(File, Module) :-
+    read_theory_file(File, LineFacts),
+    forall(member(_-F, LineFacts), add_fact(Module, F)).
+
+%!  read_theory_file(+File, -LineFacts:list) is det.
+%
+%   The facts of a theory file as Line-Fact pairs in file order, checked
+%   as load_theory_facts/2 checks them.
+%
+%   @error theory_error(File, Line, Expected) naming the first offence.
+read_theory_file(File, LineFacts) :-
     read_fact_file(File, LineFacts),
     empty_assoc(Rules0),
     foldl(check_theory_line(File), LineFacts, Rules0, Rules),
@@ -63,8 +74,7 @@ load_theory_facts(File, Module) :-
     ->  format(string(M), "body(~w, _) of a rule ~w that has no rule(~w, Kind, Head) fact", [R, R, R]),
         throw(theory_error(File, Line, M))
     ;   true
-    ),
-    forall(member(_-F, LineFacts), add_fact(Module, F)).
+    ).
 
 check_theory_line(File, Line-Fact, Rules0, Rules) :-
     (   check_theory_fact(Fact, Problem)

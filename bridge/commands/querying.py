@@ -7,7 +7,7 @@ import sys
 
 from pantarhei.bridge.commands import options
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.reasoning.scenes import known, require_valid
+from pantarhei.bridge.reasoning.scenes import known
 
 #: The engines of `conclusions` (bridge/reasoning/logic.py's ENGINES; named
 #: here so that declaring the flag does not start SWI-Prolog).
@@ -74,7 +74,7 @@ def _split(text: str | None) -> list[str]:
 # -- ask ----------------------------------------------------------------------
 
 def ask(args: argparse.Namespace) -> int:
-    from pantarhei.bridge.theories import loading
+    from pantarhei.bridge.reasoning.asking import Door
 
     for flag in ("question", "props", "why"):
         if getattr(args, flag) is not None:
@@ -83,16 +83,78 @@ def ask(args: argparse.Namespace) -> int:
         raise UserError("give the scene in words or with --props, not both")
     if args.why is not None and not args.why.strip():
         raise UserError("--why: give an expectation E or neg(E) (see `pantarhei vocab`)")
-    if args.props is None and args.question in (None, "-"):    # one question a line
-        return _ask_each_line(args, loading.load(args.theory, pouring=True), sys.stdin.buffer)
-    if args.props is not None:
-        props = known(_split(args.props))
-        if not props:
-            raise UserError("--props: no propositions given (see `pantarhei vocab`)")
-    else:
-        props = _understood(args.question)
-    props = require_valid(props)
-    return answer(loading.load(args.theory, pouring=True), props, args.why, args.json)
+    with _stand_ins(args.theory) as (files, source, unread):
+        with Door(files, source) as door:      # SWI-Prolog reads the theory meanwhile
+            if args.props is None and args.question in (None, "-"):    # one question a line
+                _theory_read(door, unread)
+                return _ask_each_line(args, door, sys.stdin.buffer)
+            if args.props is not None:
+                props = known(_split(args.props))
+                if not props:
+                    raise UserError("--props: no propositions given (see `pantarhei vocab`)")
+            else:
+                props = _understood(args.question)
+            props = known(props)
+            why = _why_literal(args.why)
+            return answer(door, props, why, args.json, unread=unread)
+
+
+def _theory_read(door, unread: str | None) -> None:
+    """UserError if the door's theory could not be read (its warnings
+    are printed)."""
+    warnings, error = door.status()
+    if unread:
+        raise UserError(unread)
+    if error:
+        raise UserError(error)
+
+
+def _why_literal(why: str | None) -> str | None:
+    """--why's literal (E, -E or neg(E)) as a native literal."""
+    if why is None:
+        return None
+    from pantarhei.bridge.reasoning.literals import goal_literal
+
+    return goal_literal(why)
+
+
+class _stand_ins:
+    """The theory files `ask` reads (the shipped theory for none): (path,
+    name, checked) each, their names, and why they cannot be read (None
+    when they can). A DFL file is read and checked here and written out
+    natively for SWI-Prolog to read; that file is removed on exit."""
+
+    def __init__(self, paths: list[str] | None) -> None:
+        self.paths = paths
+        self.temporary: list[str] = []
+
+    def __enter__(self):
+        from pantarhei.bridge.reasoning.asking import files_to_read
+        from pantarhei.bridge.theories.dfl import is_dfl
+
+        files, source, unread = files_to_read(self.paths)
+        if unread is None and any(is_dfl(p) for p, _, _ in files):
+            files = [self._native(p) if is_dfl(p) else (p, n, c) for p, n, c in files]
+        return files, source, unread
+
+    def _native(self, path: str) -> tuple[str, str, bool]:
+        import os
+        import tempfile
+
+        from pantarhei.bridge.theories import loading
+
+        theory = loading.checked_file(path)
+        fd, name = tempfile.mkstemp(suffix=".pl", prefix="pantarhei-theory-")
+        self.temporary.append(name)
+        with os.fdopen(fd, "w") as f:
+            f.write(theory.native())
+        return name, path, True
+
+    def __exit__(self, *exc) -> None:
+        import os
+
+        for name in self.temporary:
+            os.unlink(name)
 
 
 def utf8(text: bytes | str, what: str) -> str:
@@ -114,7 +176,7 @@ def _understood(question: str) -> list[str]:
     return understand(question)
 
 
-def _ask_each_line(args: argparse.Namespace, theory, lines) -> int:
+def _ask_each_line(args: argparse.Namespace, door, lines) -> int:
     """Answer each question of `lines` (bytes, UTF-8) as it comes (a blank
     line or one starting with # is skipped); a question not understood, or
     not UTF-8, gets its one line on stderr and the next is read. With
@@ -130,7 +192,7 @@ def _ask_each_line(args: argparse.Namespace, theory, lines) -> int:
         asked += 1
         try:
             question = utf8(question, "the question")
-            answer(theory, require_valid(_understood(question)), args.why, args.json,
+            answer(door, known(_understood(question)), _why_literal(args.why), args.json,
                    json_line={"line": number, "question": question})
         except UserError as e:
             failed += 1
@@ -142,13 +204,18 @@ def _ask_each_line(args: argparse.Namespace, theory, lines) -> int:
     return 1 if failed else 0
 
 
-def answer(theory, props: list[str], why: str | None = None, as_json: bool = False,
-           json_line: dict | None = None) -> int:
-    """Print what the theory says of the scene `props`, or with `why` (a
-    literal) the whole argument for it; as JSON with `as_json`, on one line
-    beginning with the keys of `json_line` when it is given (JSON Lines)."""
-    from pantarhei.bridge.reasoning import answers
+def answer(asker, props: list[str], why: str | None = None, as_json: bool = False,
+           json_line: dict | None = None, unread: str | None = None) -> int:
+    """Print what the theory `asker` asks (bridge/reasoning/asking.Door, or
+    a Theory held in Python) says of the scene `props`, or with `why` (a
+    native literal) the whole argument for it; as JSON with `as_json`, on
+    one line beginning with the keys of `json_line` when it is given (JSON
+    Lines). `unread`: why the theory could not be given (said once the
+    scene is found valid)."""
+    if not hasattr(asker, "answers"):         # a Theory: asked in this process
+        from pantarhei.bridge.reasoning.answers import InProcess
 
+        asker = InProcess(asker)
     def print_json(obj: dict) -> None:
         if json_line is None:
             print(json.dumps(obj, indent=1))
@@ -157,34 +224,31 @@ def answer(theory, props: list[str], why: str | None = None, as_json: bool = Fal
 
     scene = props
     if why:
-        from pantarhei.bridge.reasoning.planning import check_goals
-
-        (lit,) = check_goals([why], theory, reachable=False)
-        words = answers.explain(theory, scene, lit)
+        words = asker.why(scene, why, unread)
         if as_json:
-            print_json({"understood": props, "literal": lit, "why": words})
+            print_json({"understood": props, "literal": why, "why": words})
         else:
             _print_scene(props, glosses=False)
             print(words.replace("; ", "\n  "))
         return 0
-    outcomes = answers.what_happens(theory, scene)
+    outcomes = asker.answers(scene, unread)
     if as_json:
-        print_json({"understood": props, "theory": theory.source, "outcomes": {
+        print_json({"understood": props, "theory": asker.source, "outcomes": {
             o.expectation: {"verdict": o.value, "likelihood": o.likelihood, "rule": o.rule,
-                            "because": _because(theory, o)}
+                            "because": o.because}
             for o in outcomes}})
         return 0
     from pantarhei.theory.lexicon import load_vocabulary
 
     vocab = load_vocabulary()
     _print_scene(props, glosses=True)
-    print(f"theory: {theory.source}")
+    print(f"theory: {asker.source}")
     glosses = {e.name: e.gloss for e in vocab.expectations}
     said: dict[str, str] = {}     # a why-not already printed, with its expectation as E
     for o in outcomes:
         print(f"  [{answer_mark(o)}] {o.expectation:30} {glosses[o.expectation]}")
         if o.value != "unknown":
-            print(f"          {_because(theory, o)}")
+            print(f"          {o.because}")
             continue
         general = o.reason.replace(o.expectation, "E")
         if general in said:   # the same reasons as for an expectation above
@@ -208,18 +272,6 @@ def answer_mark(o) -> str:
     word = {"holds": "yes", "fails": "no", "uncertain": "maybe", "unknown": "?"}[o.value]
     share = f"{round(100 * o.likelihood):3d}%" if o.likelihood is not None else ""
     return f"{word:6}{share:>4}"
-
-
-def _because(theory, o) -> str:
-    """Why an answer is what it is, in one line: the deciding rule in
-    words, or for an undecided expectation the nearest reason."""
-    from pantarhei.bridge.reasoning import answers
-
-    if o.value == "unknown":
-        return f"why not: {'; '.join(o.reason.split('; ')[1:] or [o.reason])}"
-    if o.rule in ("fact", "none"):
-        return f"because {o.reason}" if o.reason else "given"
-    return f"because {answers.rule_words(theory, o.rule)}"
 
 
 def _print_scene(props: list[str], glosses: bool) -> None:

@@ -17,6 +17,7 @@ from pantarhei.theory import THEORY_DIR, VOCABULARY_FILES
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.theories.model import Theory, complement
+from pantarhei.bridge.reasoning.literals import goal_literal, parse_goal
 from pantarhei.bridge.reasoning.scenes import require_valid
 
 ENCODINGS = ("defeasible.lp", "validity.lp", "valid.lp", "plan.lp")
@@ -27,15 +28,6 @@ MAX_STEPS = 64
 class Plan:
     chosen: tuple[str, ...]      # the manner propositions the plan adds
     antecedent: tuple[str, ...]  # given + chosen, sorted
-
-
-def parse_goal(goal: str) -> str:
-    """`spill`, `-spill`, `neg(spill)`, `not spill` -> native literal text."""
-    g = goal.strip()
-    for prefix in ("-", "~", "not "):
-        if g.startswith(prefix):
-            return f"neg({g[len(prefix):].strip()})"
-    return g
 
 
 def goals_met(scores, goals: list[str]):
@@ -57,19 +49,9 @@ def goals_met(scores, goals: list[str]):
 def check_goals(goals: list[str], theory: Theory, reachable: bool = True) -> list[str]:
     """The goal literals; UserError for an unknown expectation, or for a
     goal literal that no rule of the theory can conclude."""
-    vocab = load_vocabulary()
-    known = vocab.expectation_names
     out = []
     for g in goals:
-        lit = parse_goal(g)
-        name = complement(lit) if lit.startswith("neg(") else lit
-        if name not in known:
-            import difflib
-
-            close = difflib.get_close_matches(name, known, n=3, cutoff=0.5)
-            hint = f" (did you mean {', '.join(close)}?)" if close else ""
-            where = f" in '{g}'" if g.strip() != name else ""
-            raise UserError(f"unknown expectation '{name}'{where}{hint}")
+        lit = goal_literal(g)
         if reachable and lit not in theory.facts and not any(r.head == lit and r.kind != "defeater"
                                                for r in theory.rules):
             raise UserError(f"unreachable goal: no rule of {theory.source} concludes {lit}")

@@ -65,15 +65,7 @@ def load(paths: Path | str | list | tuple | None = None, check: bool = True,
             raise UserError(f"{p}: not a regular file (a device or a pipe), not a theory file")
     theories = [read_theory(p) for p in paths]
     for t in theories:
-        if not (t.facts or t.rules or t.sup or t.settings or t.extra):
-            raise UserError(f"{t.source}: an empty theory (no facts and no rules)")
-        try:
-            check_general_rules(t)
-        except TheoryFileError as e:
-            raise UserError(str(e)) from None
-        if pouring:
-            for warning in unknown_names(t):
-                print(f"warning: {warning}", file=sys.stderr)
+        check_file(t, pouring)
     try:
         theory = merge(theories)
         if check:
@@ -82,6 +74,30 @@ def load(paths: Path | str | list | tuple | None = None, check: bool = True,
     except TheoryFileError as e:
         raise UserError(str(e)) from None
     return theory
+
+
+def check_file(t: Theory, pouring: bool = True) -> None:
+    """UserError for a theory file that is empty or whose general rules the
+    vocabulary cannot read; with `pouring`, a warning on stderr for each
+    name its rules use that the vocabulary does not know (theory/ask.pl's
+    load_theories/2 checks a native file the same way)."""
+    if not (t.facts or t.rules or t.sup or t.settings or t.extra):
+        raise UserError(f"{t.source}: an empty theory (no facts and no rules)")
+    try:
+        check_general_rules(t)
+    except TheoryFileError as e:
+        raise UserError(str(e)) from None
+    if pouring:
+        for warning in unknown_names(t):
+            print(f"warning: {warning}", file=sys.stderr)
+
+
+def checked_file(path: Path | str) -> Theory:
+    """One theory file read and checked as a theory of pouring on its own
+    (check_file), not yet merged with others."""
+    t = read_theory(path)
+    check_file(t)
+    return t
 
 
 def merge(theories: list[Theory]) -> Theory:

@@ -1,0 +1,192 @@
+"""`pantarhei ask`'s door to SWI-Prolog: one `swipl` process that reads the
+theory files as they are written and answers questions about scenes
+(theory/ask.pl, `serve/0`). Python turns words into propositions; the
+reading, checking, answering and the deciding rule's words are Prolog's.
+
+The process starts first, so that SWI-Prolog reads the theory while
+Python reads the question; a request is one line, its reply lines ending
+in `end`. No Python copy of the theory is made.
+"""
+from __future__ import annotations
+
+import shutil
+import subprocess
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+from pantarhei.bridge.errors import SWIPL_MISSING, UserError
+from pantarhei.theory import THEORY_DIR
+
+
+@dataclass(frozen=True)
+class Answer:
+    """What the theory says about one expectation in a scene."""
+    expectation: str
+    value: str          # "holds", "fails", "uncertain" or "unknown"
+    likelihood: float | None    # the share of such pours in which it holds
+    rule: str           # the rule named for it (ask:named_rule/2), "fact", or "none"
+    because: str        # why, in one line: the deciding rule in words, or why not
+    reason: str         # for an undecided expectation, its brief why-not
+
+
+def answer_of(fields: list[str]) -> Answer:
+    """An Answer from the fields of ask:answers/3's answer/6, as text."""
+    exp, value, p, rule, because, reason = fields
+    return Answer(exp, value, None if p == "none" else float(p), rule, because, reason)
+
+
+class Door:
+    """One swipl process serving questions to the theory of `files`:
+    (path read, name said, checked) each, `checked` for a file that
+    stands in for another that was read and checked already (a DFL file
+    written out natively). Use as a context manager."""
+
+    def __init__(self, files: list[tuple[str, str, bool]], source: str) -> None:
+        #: The theory's name: its files' names joined with " + ".
+        self.source = source
+        swipl = shutil.which("swipl")
+        if swipl is None:
+            raise UserError(SWIPL_MISSING)
+        args: list[str] = []
+        for path, name, checked in files:
+            args += [("checked:" if checked else "file:") + str(path), str(name)]
+        self._process = subprocess.Popen(
+            [swipl, "-q", "--no-signals", "-g", "ask:serve", "-t", "halt",
+             str(THEORY_DIR / "ask.pl"), "--", *args],
+            stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+            text=True, encoding="utf-8", errors="replace")
+        self._status: tuple[list[tuple[str, str, str]], str | None] | None = None
+
+    def __enter__(self) -> "Door":
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    def close(self) -> None:
+        p = self._process
+        if p.poll() is None:
+            try:
+                p.stdin.close()
+                p.wait(timeout=5)
+            except (OSError, subprocess.TimeoutExpired):
+                p.kill()
+                p.wait()
+        for f in (p.stdout, p.stderr):
+            f.close()
+
+    def _line(self) -> str:
+        line = self._process.stdout.readline()
+        if not line:
+            err = self._process.stderr.read().strip().splitlines()
+            raise UserError(f"SWI-Prolog stopped: {err[-1] if err else 'no reason given'}")
+        return line.rstrip("\n")
+
+    def status(self) -> tuple[list[tuple[str, str, str]], str | None]:
+        """The unknown names the theory's rules use, (where, what, name),
+        and the one line that says why the theory could not be read (None
+        when it was). The first call prints the warnings (print_warnings)."""
+        if self._status is None:
+            warnings = []
+            while True:
+                kind, *fields = self._line().split("\t")
+                if kind == "warning":
+                    warnings.append(tuple(fields))
+                    continue
+                self._status = (warnings, fields[0] if kind == "error" else None)
+                break
+            print_warnings(warnings)
+        return self._status
+
+    def _ask(self, request: str) -> list[list[str]]:
+        """The reply lines to one request, split at tabs."""
+        self.status()
+        try:
+            self._process.stdin.write(request + "\n")
+            self._process.stdin.flush()
+        except BrokenPipeError:
+            pass                                  # _line says why
+        out = []
+        while True:
+            line = self._line()
+            if line == "end":
+                return out
+            out.append(line.split("\t"))
+
+    def _reply(self, request: str, unread: str | None = None) -> list[list[str]]:
+        """The reply to a request about a scene: UserError naming the first
+        violated constraint if the scene is not valid, else `unread` (why
+        the theory was not given, if it was not), else why the theory could
+        not be read."""
+        reply = self._ask(request)
+        invalid = [r[1:] for r in reply if r[0] == "invalid"]
+        if invalid:
+            from pantarhei.bridge.reasoning.scenes import Violation
+
+            first = Violation(*invalid[0]).words()
+            more = f" (and {len(invalid) - 1} more)" if len(invalid) > 1 else ""
+            raise UserError(f"invalid antecedent: {first}{more}")
+        if unread:
+            raise UserError(unread)
+        errors = [r[1] for r in reply if r[0] == "error"]
+        if errors:
+            raise UserError(errors[0])
+        return reply
+
+    def answers(self, scene: list[str], unread: str | None = None) -> list[Answer]:
+        """One Answer per expectation for the scene (its propositions)."""
+        reply = self._reply(f"answer({_list(scene)}).", unread)
+        return [answer_of(r[1:]) for r in reply if r[0] == "answer"]
+
+    def why(self, scene: list[str], literal: str, unread: str | None = None) -> str:
+        """Why (or why not) the theory concludes `literal` in the scene, in
+        words, sentences separated by "; "."""
+        reply = self._reply(f"why({_list(scene)}, {literal}).", unread)
+        return next(r[1] for r in reply if r[0] == "why")
+
+
+def _list(names: list[str]) -> str:
+    """Names (checked: propositions of the vocabulary) as a Prolog list."""
+    return "[" + ", ".join(names) + "]"
+
+
+def print_warnings(warnings: list[tuple[str, str, str]]) -> None:
+    """`warning: file:line: ...` on stderr for each name of a rule that is
+    no proposition or expectation, with the nearest known name."""
+    if not warnings:
+        return
+    import difflib
+
+    from pantarhei.theory.lexicon import load_vocabulary
+
+    vocab = load_vocabulary()
+    known = sorted(set(vocab.propositions) | set(vocab.expectation_names))
+    for where, what, name in warnings:
+        near = difflib.get_close_matches(name, known, n=1, cutoff=0.6)
+        hint = f" (did you mean {near[0]}?)" if near else ""
+        print(f"warning: {where}: {what} {name} is not a proposition or expectation of pouring{hint}",
+              file=sys.stderr)
+
+
+def files_to_read(paths: list[str] | None) -> tuple[list[tuple[str, str, bool]], str, str | None]:
+    """The files the door reads for the theory files a user named (the
+    shipped theory for none), their names joined with " + ", and why they
+    cannot be read (None when they can): no such file, a directory, a
+    device. A DFL file is read here (its errors raised) and written out
+    natively for the door; `stand_ins` remove those files."""
+    from pantarhei.bridge.theories.loading import DEFAULT_THEORY, NO_THEORY
+
+    if not paths:
+        if not DEFAULT_THEORY.is_file():
+            return [], str(DEFAULT_THEORY), NO_THEORY
+        paths = [str(DEFAULT_THEORY)]
+    for p in paths:
+        path = Path(p)
+        if not path.exists():
+            return [], " + ".join(paths), f"{p}: no such theory file"
+        if path.is_dir():
+            return [], " + ".join(paths), f"{p}: a directory, not a theory file"
+        if not path.is_file():
+            return [], " + ".join(paths), f"{p}: not a regular file (a device or a pipe), not a theory file"
+    return [(p, p, False) for p in paths], " + ".join(paths), None

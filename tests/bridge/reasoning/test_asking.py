@@ -1,0 +1,110 @@
+"""`pantarhei ask` in one crossing (bridge/reasoning/asking.py and
+theory/ask.pl): Python reads the words, one swipl process reads the theory
+files as written and answers. What Python still does beside it is tested
+equal to it: the answers asked in this process (answers.what_happens, for
+theories held in Python) and the checks of a DFL file, which only Python
+reads."""
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.reasoning.answers import what_happens
+from pantarhei.bridge.reasoning.asking import Door
+from pantarhei.bridge.theories import loading
+from pantarhei.theory import THEORY_DIR
+
+EXAMPLES = THEORY_DIR.parent / "examples" / "extend_by_hand"
+SCENES = ([], ["pour_to_side"], ["light_liquid"], ["light_liquid", "end_upright", "end_low"],
+          ["pour_below_rim"], ["pour_steeply_tilted", "light_liquid", "slow_retreat"],
+          ["heavy_liquid", "light_destination"], ["pour_centred"])
+
+
+def test_ask_starts_no_prolog_in_python() -> None:
+    # the theory is read and asked by swipl alone: pyswip is never loaded
+    code = ("import sys; from pantarhei.bridge.cli import main; "
+            "c = main(['ask', 'pour from the side']); "
+            "assert 'pyswip' not in sys.modules, 'pyswip loaded'; sys.exit(c)")
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert p.returncode == 0, p.stderr
+    assert "[no      1%] no_spill" in p.stdout
+
+
+@pytest.mark.parametrize("files", [["theory/learned/pouring.pl"],
+                                   ["examples/extend_by_hand/learned.pl",
+                                    "examples/extend_by_hand/hand.pl"]])
+def test_the_door_answers_as_the_theory_asked_in_this_process(files: list[str]) -> None:
+    paths = [str(THEORY_DIR.parent / f) for f in files]
+    theory = loading.load(paths, pouring=True)
+    with Door([(p, p, False) for p in paths], " + ".join(paths)) as door:
+        for scene in SCENES:
+            assert door.answers(scene) == what_happens(theory, scene), scene
+
+
+def test_a_dfl_file_asked_through_its_stand_in_answers_as_its_native_twin() -> None:
+    from pantarhei.bridge.commands.querying import _stand_ins
+
+    learned = str(EXAMPLES / "learned.pl")
+    answers = []
+    for hand in ("hand.dfl", "hand.pl"):
+        with _stand_ins([learned, str(EXAMPLES / hand)]) as (files, source, unread):
+            assert unread is None and files[1][1] == str(EXAMPLES / hand)
+            with Door(files, source) as door:
+                answers.append([door.answers(s) for s in SCENES])
+    assert answers[0] == answers[1]
+
+
+#: Files the checks of a single theory file refuse or warn of.
+CHECKED = {
+    "empty": "% nothing but a comment\n",
+    "unknown body and head": ("rule(r1, defeasible, no_spill).\nbody(r1, pour_sidewise).\n"
+                              "rule(r2, defeasible, spilled).\nbody(r2, pour_to_side).\nfact(wet).\n"),
+    "own words pass": "rule(r1, defeasible, wet).\nbody(r1, pour_to_side).\nrule(r2, defeasible, no_spill).\nbody(r2, wet).\n",
+    "general body": "rule(g1, defeasible, no_spill).\nbody(g1, pour_sideways).\nprovenance(g1, layer, general).\n",
+    "general head": "rule(g1, defeasible, neg(spills)).\nprovenance(g1, layer, general).\n",
+    "general confidence": ("rule(g1, defeasible, no_spill).\nprovenance(g1, layer, general).\n"
+                           "provenance(g1, confidence_permille, 1200).\n"),
+    "general support": ("rule(g1, defeasible, no_spill).\nprovenance(g1, layer, general).\n"
+                        "provenance(g1, support, many).\n"),
+    "general kept": ("rule(g1, defeasible, no_spill).\nprovenance(g1, layer, general).\n"
+                     "provenance(g1, kept, 9).\nprovenance(g1, support, 4).\n"),
+    "fine": "rule(r1, defeasible, no_spill).\nbody(r1, pour_to_side).\n",
+}
+
+
+def _python_checks(path: Path, capsys) -> tuple[str, list[str]]:
+    try:
+        loading.check_file(loading.read_theory(path))
+        error = "loaded"
+    except UserError as e:
+        error = str(e)
+    warnings = [line.removeprefix("warning: ").split(" is not a proposition")[0]
+                for line in capsys.readouterr().err.splitlines()]
+    return error, warnings
+
+
+@pytest.mark.parametrize("name", sorted(CHECKED))
+def test_python_checks_a_file_as_prolog_does(name: str, tmp_path: Path, capsys) -> None:
+    # Python checks a file only where Prolog cannot read it (DFL): both
+    # checks say the same of the same theory
+    path = tmp_path / "theory.pl"
+    path.write_text(CHECKED[name])
+    with Door([(str(path), str(path), False)], str(path)) as door:
+        warnings, error = door.status()
+    capsys.readouterr()
+    prolog = (error or "loaded", [f"{w}: {what} {n}" for w, what, n in warnings])
+    assert _python_checks(path, capsys) == prolog
+
+
+def test_a_theory_error_comes_after_the_scenes(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.pl"
+    bad.write_text("rule(r1, defeasible, b).\nsup(r1, r9).\n")
+    with Door([(str(bad), str(bad), False)], str(bad)) as door:
+        with pytest.raises(UserError, match="invalid antecedent: pour_centred and pour_to_side"):
+            door.answers(["pour_centred", "pour_to_side"])
+        with pytest.raises(UserError, match=rf"{bad}:2: sup\(r1, r9\) names r9, which is not a rule"):
+            door.answers(["pour_to_side"])

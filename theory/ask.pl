@@ -1,0 +1,392 @@
+:- module(ask,
+          [ load_theories/2,        % +Files, -Warnings
+            answers/3,              % +Scene, +Options, -Answers
+            named_rule/2,           % +Rule, -Named
+            rule_in_words/2,        % +Rule, -Text
+            serve/0
+          ]).
+/** <module> Asking a theory of pouring: `pantarhei ask` in one crossing
+
+`pantarhei ask` turns words into propositions (Python) and hands them to
+this module, which does the rest on the theory files as written: reads
+them (theory_files.pl's validating reader, several files merged), checks
+them as a theory of pouring, answers each of the nine expectations and
+puts the deciding rule into words. serve/0 is the door `pantarhei ask`
+uses: one swipl process reads the files once and answers one request a
+line from standard input (see serve/0 for the protocol).
+
+A file is given as its path, or as =|file(Path, Name)|= to name it Name in
+errors and warnings, or =|file(Path, Name, checked)|= when the file read is
+a stand-in for another that was read and checked already (a DFL file that
+Python read and wrote out natively): then only what concerns the merged
+theory is checked.
+*/
+
+:- use_module(theory_files).
+:- use_module(default_values).
+:- use_module(vocabulary).
+:- use_module(validity).
+:- use_module(defeasible).
+:- use_module(queries).
+:- use_module(library(lists)).
+:- use_module(library(apply)).
+:- use_module(library(pairs)).
+
+                 /*******************************
+                 *        READING THEORIES      *
+                 *******************************/
+
+%!  load_theories(+Files:list, -Warnings:list) is det.
+%
+%   Make the facts of Files (native theory files, merged: a learned theory
+%   and rules added by hand) the current theory of defeasible.pl, checked
+%   as a theory of pouring: each file not empty; a general rule (its
+%   =|provenance(R, layer, general)|=) of the vocabulary's propositions and
+%   expectations, with evidence in range; a rule name defined in one file
+%   only; sup/2 naming rules; the superiority relation acyclic. Warnings
+%   holds =|unknown(Where, What, Name)|= for each literal that names
+%   nothing of the vocabulary and that no other rule uses (such a rule
+%   never fires, or concludes nothing a question asks for), in file order.
+%
+%   @error theory_error(Name, Line, Message), Line 0 where no line is meant.
+load_theories(Files, Warnings) :-
+    must_be(list, Files),
+    maplist(file_name, Files, Named),
+    maplist(read_theory, Named, Read),
+    maplist(check_read, Read, Warnings0),
+    append(Warnings0, Warnings),
+    clear_theory,
+    foldl(add_file, Read, [], _),
+    check_sup_names(Read),
+    defeasible:prepare,
+    (   defeasible:superiority_cycle(Cycle)
+    ->  clear_theory,
+        Cycle = [A, B|_],
+        sup_line(Read, A, B, Name, Line),
+        atomic_list_concat(Cycle, ' > ', Text),
+        format(string(M), "the superiority relation has a cycle, ~w: it must be acyclic", [Text]),
+        throw(theory_error(Name, Line, M))
+    ;   true
+    ).
+
+file_name(file(Path, Name, Kind), file(Path, Name, Kind)) :- !.
+file_name(file(Path, Name), file(Path, Name, file)) :- !.
+file_name(Path, file(Path, Path, file)).
+
+% read_theory(+file(Path, Name, Kind), -read(Name, LineFacts, Kind)):
+% errors name Name.
+read_theory(file(Path, Name, Kind), read(Name, LineFacts, Kind)) :-
+    catch(once(( defeasible:check_size(Path), read_theory_file(Path, LineFacts) )),
+          theory_error(_, Line, M),
+          throw(theory_error(Name, Line, M))).
+
+% check_read(+read(Name, LineFacts, Kind), -Warnings): one file's own
+% checks (none for a stand-in, =checked= before).
+check_read(read(_, _, checked), []) :- !.
+check_read(read(Name, LineFacts, _), Warnings) :-
+    (   member(_-F, LineFacts), \+ aside(F)
+    ->  true
+    ;   throw(theory_error(Name, 0, "an empty theory (no facts and no rules)"))
+    ),
+    check_general_rules(Name, LineFacts),
+    unknown_names(Name, LineFacts, Warnings).
+
+% aside(+Fact): a fact that alone makes no theory (it says something of a
+% rule).
+aside(body(_, _)).
+aside(learned(_)).
+aside(provenance(_, _, _)).
+
+% add_file(+Read, +Owners0, -Owners): its facts added to the current
+% theory; Owners pairs each rule name with the file that defines it.
+add_file(read(Name, LineFacts, _), Owners0, Owners) :-
+    foldl(add_line(Name), LineFacts, Owners0, Owners).
+
+add_line(Name, Line-F, Owners0, Owners) :-
+    (   F = rule(R, _, _)
+    ->  (   memberchk(R-Other, Owners0)
+        ->  format(string(M), "rule ~w is already defined in ~w", [R, Other]),
+            throw(theory_error(Name, Line, M))
+        ;   Owners = [R-Name|Owners0]
+        )
+    ;   Owners = Owners0
+    ),
+    (   F = fact(L), defeasible:fact(L)
+    ->  true
+    ;   add_theory_fact(F)
+    ).
+
+check_sup_names(Read) :-
+    forall(( member(read(Name, LineFacts, _), Read), member(Line-sup(A, B), LineFacts),
+             member(X, [A, B]), \+ defeasible:rule(X, _, _) ),
+           ( format(string(M), "sup(~w, ~w) names ~w, which is not a rule", [A, B, X]),
+             throw(theory_error(Name, Line, M)) )).
+
+sup_line(Read, A, B, Name, Line) :-
+    (   member(read(Name, LineFacts, _), Read), memberchk(Line-sup(A, B), LineFacts)
+    ->  true
+    ;   Read = [read(Name, _, _)|_], Line = 0
+    ).
+
+% check_general_rules(+Name, +LineFacts): a general rule speaks the
+% vocabulary's words, and its evidence is in range.
+check_general_rules(Name, LineFacts) :-
+    findall(R, member(_-provenance(R, layer, general), LineFacts), General0),
+    sort(General0, General),
+    (   General == []
+    ->  true
+    ;   forall(( member(Line-rule(R, _, H), LineFacts), memberchk(R, General) ),
+               check_general_rule(Name, LineFacts, Line, R, H)),
+        forall(( member(R, General), member(Key, [confidence_permille, support, kept]),
+                 last_provenance(LineFacts, R, Key, V) ),
+               check_evidence(Name, LineFacts, R, Key, V))
+    ).
+
+check_general_rule(Name, LineFacts, Line, R, H) :-
+    findall(B, member(_-body(R, B), LineFacts), Bs0),
+    list_to_set(Bs0, Bs),
+    (   member(B, Bs), \+ proposition(B, _, _, _)
+    ->  memberchk(BLine-body(R, B), LineFacts),
+        term_text(B, BT),
+        format(string(M), "general rule ~w: ~w is not a proposition of the vocabulary", [R, BT]),
+        throw(theory_error(Name, BLine, M))
+    ;   literal_atom(H, E), \+ expectation(E, _, _)
+    ->  term_text(E, ET),
+        format(string(M), "general rule ~w: ~w is not an expectation", [R, ET]),
+        throw(theory_error(Name, Line, M))
+    ;   true
+    ).
+
+last_provenance(LineFacts, R, Key, V) :-
+    findall(V0, member(_-provenance(R, Key, V0), LineFacts), Vs),
+    last(Vs, V).
+
+check_evidence(Name, LineFacts, R, Key, V) :-
+    (   Key == confidence_permille, \+ ( integer(V), between(0, 1000, V) )
+    ->  term_text(V, T),
+        format(string(Why), "a confidence in permille is 0 to 1000, not ~w", [T])
+    ;   memberchk(Key, [support, kept]), \+ ( integer(V), V >= 0 )
+    ->  term_text(V, T),
+        format(string(Why), "~w is a count of pours, not ~w", [Key, T])
+    ;   Key == kept, last_provenance(LineFacts, R, support, S), integer(S), V > S
+    ->  format(string(Why), "~w pours kept of ~w described", [V, S])
+    ;   fail
+    ),
+    !,
+    memberchk(Line-provenance(R, Key, _), LineFacts),
+    format(string(M), "general rule ~w: ~w", [R, Why]),
+    throw(theory_error(Name, Line, M)).
+check_evidence(_, _, _, _, _).
+
+% unknown_names(+Name, +LineFacts, -Warnings): unknown(Where, What,
+% LiteralName) for each literal naming nothing of the vocabulary that the
+% file's own rules do not use, by line.
+unknown_names(Name, LineFacts, Warnings) :-
+    findall(A, ( member(_-F, LineFacts), concluded(F, L), literal_atom(L, A) ), C0),
+    sort(C0, Concluded),
+    findall(A, ( member(_-body(_, L), LineFacts), literal_atom(L, A) ), U0),
+    sort(U0, Used),
+    findall(Line-W, unknown_name(Name, LineFacts, Concluded, Used, Line, W), Pairs),
+    sort(1, @=<, Pairs, Sorted),
+    pairs_values(Sorted, Warnings).
+
+concluded(rule(_, _, H), H).
+concluded(fact(F), F).
+
+unknown_name(Name, LineFacts, Concluded, Used, Line, unknown(Where, What, T)) :-
+    member(RLine-F, LineFacts),
+    (   F = rule(R, _, H),
+        (   findall(B, member(_-body(R, B), LineFacts), Bs0),
+            list_to_set(Bs0, Bs),
+            member(B, Bs), literal_atom(B, A),
+            \+ known_name(A), \+ memberchk(A, Concluded),
+            memberchk(Line-body(R, B), LineFacts),
+            format(string(What), "rule ~w: body", [R])
+        ;   literal_atom(H, A), \+ known_name(A), \+ memberchk(A, Used),
+            Line = RLine,
+            format(string(What), "rule ~w: head", [R])
+        )
+    ;   F = fact(L), literal_atom(L, A), \+ known_name(A), \+ memberchk(A, Used),
+        Line = RLine, What = "fact"
+    ),
+    term_text(A, T),
+    format(string(Where), "~w:~w", [Name, Line]).
+
+known_name(A) :- atom(A), ( proposition(A, _, _, _) -> true ; expectation(A, _, _) ).
+
+literal_atom(neg(A), A) :- !.
+literal_atom(A, A).
+
+                 /*******************************
+                 *           ANSWERS            *
+                 *******************************/
+
+%!  answers(+Scene:list, +Options:list, -Answers:list) is det.
+%
+%   One =|answer(Expectation, Value, Likelihood, Rule, Because, Reason)|=
+%   per expectation, in the vocabulary's order: queries:what_happens/3's
+%   outcome, with Rule the rule to name for it (named_rule/2), Because why
+%   the answer is what it is in one line ("because " and the deciding rule
+%   in words, "given", or for an undecided expectation "why not: " and the
+%   nearest reason) and Reason the brief why-not of an undecided one
+%   (queries:explain_brief/4; "" for the others).
+answers(Scene, Options, Answers) :-
+    what_happens(Scene, Options, Outcomes),
+    maplist(answer(Scene, Options), Outcomes, Answers).
+
+answer(Scene, Options, outcome(E, V, P, R0), answer(E, V, P, R, Because, Reason)) :-
+    (   V == unknown
+    ->  explain_brief(Scene, E, Options, Reason),
+        atomic_list_concat([_|Rest0], '; ', Reason),
+        (   Rest0 == [] -> Rest = [Reason] ; Rest = Rest0 ),
+        atomic_list_concat(Rest, '; ', Nearest),
+        format(string(Because), "why not: ~w", [Nearest]),
+        R = R0
+    ;   Reason = "",
+        named_rule(R0, R),
+        (   memberchk(R, [fact, none])
+        ->  Because = "given"
+        ;   rule_in_words(R, Words),
+            format(string(Because), "because ~w", [Words])
+        )
+    ).
+
+%!  named_rule(+Rule, -Named) is det.
+%
+%   The rule to name for a conclusion that Rule decides: where Rule is one
+%   of Algorithm 1's and the general layer has a rule with the same body
+%   and head (the empty body, when the priors were explored), the first
+%   such general rule, which ranks above it and whose evidence is every
+%   pour; Rule itself otherwise.
+named_rule(R, Named) :-
+    (   \+ defeasible:provenance(R, layer, general),
+        defeasible:rule(R, _, H),
+        defeasible:rule_body(R, Bs),
+        defeasible:rule(G, _, H), G \== R,
+        defeasible:provenance(G, layer, general),
+        defeasible:rule_body(G, Bs)
+    ->  Named = G
+    ;   Named = R
+    ).
+
+%!  rule_in_words(+Rule, -Text:string) is det.
+%
+%   The deciding rule in words: its body's glosses (or "an ordinary pour"
+%   for the empty body), the share of such pours in which its expectation
+%   holds, and its evidence, e.g. "pour from the side: holds in 45% of
+%   such pours (seen in 27 of 60 such pours; rule g3_no_spill)".
+rule_in_words(R, Text) :-
+    (   defeasible:rule(R, _, H)
+    ->  findall(B, defeasible:body(R, B), Bs0),
+        list_to_set(Bs0, Bs),
+        maplist(gloss, Bs, Gs),
+        (   Gs == [] -> Where = "an ordinary pour" ; atomic_list_concat(Gs, ', ', Where) ),
+        queries:likelihood(R, H, P),
+        (   P == none
+        ->  Said = ""
+        ;   percent(P, Pc),
+            format(string(Said), ": holds in ~w% of such pours", [Pc])
+        ),
+        evidence(R, Ev),
+        (   Ev == "" -> Also = "" ; format(string(Also), "~w; ", [Ev]) ),
+        format(string(Text), "~w~w (~wrule ~w)", [Where, Said, Also, R])
+    ;   format(string(Text), "~w", [R])
+    ).
+
+gloss(B, G) :-
+    (   proposition(B, _, _, G0) -> G = G0 ; term_text(B, G) ).
+
+% percent(+Share, -Percent): 100 x Share to the nearest integer, a half
+% to the even one (as the share is shown beside the answer).
+percent(P, Pc) :-
+    X is 100 * P,
+    F is floor(X),
+    (   X - F =:= 0.5
+    ->  (   F mod 2 =:= 0 -> Pc = F ; Pc is F + 1 )
+    ;   Pc is round(X)
+    ).
+
+% evidence(+Rule, -Text): the pours behind a learned rule, from its
+% provenance facts ("" when it records none).
+evidence(R, Text) :-
+    (   defeasible:provenance(R, support, S), defeasible:provenance(R, kept, K)
+    ->  (   S == 0
+        ->  Text = "no such pour simulated: estimated from the pours nearby"
+        ;   format(string(Text), "seen in ~w of ~w such pours", [K, S])
+        )
+    ;   defeasible:provenance(R, antecedent, A)
+    ->  format(string(Text), "the weighted pours of ~w", [A])
+    ;   Text = ""
+    ).
+
+                 /*******************************
+                 *            SERVING           *
+                 *******************************/
+
+%!  serve is det.
+%
+%   `pantarhei ask`'s door. The theory files are the command line's
+%   arguments after =|--|=, two for each: =|file:Path|= (or
+%   =|checked:Path|= for a stand-in checked before) and the name to say
+%   for it (see the module comment). Reads them (load_theories/2) and says, one line each,
+%   =|warning<TAB>Where<TAB>What<TAB>Name|= for each unknown name and then
+%   =|loaded|= or =|error<TAB>Message|=. Then reads one request a line,
+%   =|answer(Scene).|= or =|why(Scene, Literal).|=, until the end of
+%   input, and replies with lines ending in =|end|=:
+%   =|invalid<TAB>Constraint<TAB>P1<TAB>P2|= for each violated constraint
+%   (nothing more then), =|error<TAB>Message|= when the theory was not
+%   read, else =|answer<TAB>E<TAB>V<TAB>P<TAB>R<TAB>Because<TAB>Reason|=
+%   per expectation, or =|why<TAB>Text|=.
+serve :-
+    current_prolog_flag(argv, Argv),
+    (   append(_, ['--'|Args], Argv) -> true ; Args = Argv ),
+    file_args(Args, Files),
+    catch(( load_theories(Files, Warnings), Loaded = true ),
+          E, ( error_line(E, Loaded) )),
+    (   Loaded == true
+    ->  forall(member(unknown(W, What, N), Warnings),
+               format("warning\t~w\t~w\t~w~n", [W, What, N])),
+        format("loaded~n")
+    ;   format("error\t~w~n", [Loaded])
+    ),
+    flush_output,
+    serve_requests(Loaded).
+
+file_args([], []).
+file_args([Arg, Name|Args], [file(Path, Name, Kind)|Files]) :-
+    sub_atom(Arg, B, _, A, ':'), !,
+    sub_atom(Arg, 0, B, _, Kind), sub_atom(Arg, _, A, 0, Path),
+    file_args(Args, Files).
+
+error_line(theory_error(Name, 0, M), Line) :- !,
+    format(string(Line), "~w: ~w", [Name, M]).
+error_line(E, Line) :-
+    error_message(E, Line).
+
+serve_requests(Loaded) :-
+    read_term(user_input, Request, []),
+    (   Request == end_of_file
+    ->  true
+    ;   catch(reply(Request, Loaded), E,
+              ( error_message(E, M), format("error\t~w~n", [M]) )),
+        format("end~n"),
+        flush_output,
+        serve_requests(Loaded)
+    ).
+
+reply(Request, Loaded) :-
+    arg(1, Request, Scene),
+    findall(v(C, P1, P2), violation(Scene, C, P1, P2), Vs0),
+    sort(Vs0, Vs),
+    (   Vs \== []
+    ->  forall(member(v(C, P1, P2), Vs), format("invalid\t~w\t~w\t~w~n", [C, P1, P2]))
+    ;   Loaded \== true
+    ->  format("error\t~w~n", [Loaded])
+    ;   Request = answer(_)
+    ->  answers(Scene, [], As),
+        forall(member(answer(E, V, P, R, Because, Reason), As),
+               format("answer\t~w\t~w\t~w\t~w\t~w\t~w~n", [E, V, P, R, Because, Reason]))
+    ;   Request = why(_, Literal)
+    ->  explain(Scene, Literal, [], Text),
+        format("why\t~w~n", [Text])
+    ).

@@ -1,0 +1,90 @@
+:- begin_tests(ask).
+
+:- use_module(plunit_helpers).
+
+:- use_module(defeasible).
+:- use_module(queries).
+:- use_module(ask).
+
+example(Name, File) :-
+    module_property(ask, file(F)),
+    file_directory_name(F, Dir),
+    atomic_list_concat([Dir, '/../examples/extend_by_hand/', Name], File).
+
+load_error(Files, Message) :-
+    catch(( load_theories(Files, _), Message = loaded ), E,
+          ( E = theory_error(F, L, M), format(string(Message), "~w:~w: ~w", [F, L, M]) )).
+
+% with_files(+Texts, -Files, :Goal): Goal with Files holding Texts.
+with_files(Texts, Files, Goal) :-
+    maplist(text_file, Texts, Files),
+    call_cleanup(Goal, maplist(delete_file, Files)).
+
+% a learned theory and rules added by hand, in two files, are one theory
+test(two_files_merge, [true(R == h1)]) :-
+    example('learned.pl', Learned), example('hand.pl', Hand),
+    load_theories([Learned, Hand], []),
+    what_happens([light_liquid, pour_steeply_tilted, slow_retreat], Os),
+    memberchk(outcome(liquid_leaves_source, holds, _, R), Os).
+
+test(rule_defined_twice, [true(M == "F2:2: rule r1 is already defined in F1")]) :-
+    with_files(["fact(a).\nrule(r1, defeasible, b).\n", "fact(c).\nrule(r1, defeasible, d).\n"], [F1, F2], load_error([file(F1, 'F1'), file(F2, 'F2')], M)).
+
+test(sup_names_no_rule, [true(M == "T:2: sup(r1, r9) names r9, which is not a rule")]) :-
+    with_files(["rule(r1, defeasible, b).\nsup(r1, r9).\n"], [F], load_error([file(F, 'T')], M)).
+
+test(sup_cycle_across_files,
+     [true(M == "A:3: the superiority relation has a cycle, r1 > r2 > r1: it must be acyclic")]) :-
+    with_files(["rule(r1, defeasible, b).\nrule(r2, defeasible, neg(b)).\nsup(r1, r2).\n",
+                "sup(r2, r1).\n"], [F1, F2], load_error([file(F1, 'A'), file(F2, 'B')], M)).
+
+test(empty_file, [true(M == "E:0: an empty theory (no facts and no rules)")]) :-
+    with_files(["% nothing\n"], [F], load_error([file(F, 'E')], M)).
+
+test(general_rule_outside_the_vocabulary,
+     [true(M == "G:2: general rule g1: pour_sideways is not a proposition of the vocabulary")]) :-
+    with_files(["rule(g1, defeasible, no_spill).\nbody(g1, pour_sideways).\nprovenance(g1, layer, general).\n"], [F], load_error([file(F, 'G')], M)).
+
+test(general_rule_evidence_out_of_range,
+     [true(M == "G:3: general rule g1: 9 pours kept of 4 described")]) :-
+    with_files(["rule(g1, defeasible, no_spill).\nprovenance(g1, layer, general).\nprovenance(g1, kept, 9).\nprovenance(g1, support, 4).\n"], [F], load_error([file(F, 'G')], M)).
+
+% a name the vocabulary does not know, used by no other rule, is said
+test(unknown_names, [true(Ws == [unknown("U:2", "rule r1: body", "pour_sidewise"),
+                                 unknown("U:3", "rule r2: head", "spilled")])]) :-
+    with_files(["rule(r1, defeasible, no_spill).\nbody(r1, pour_sidewise).\nrule(r2, defeasible, spilled).\nbody(r2, pour_to_side).\n"], [F], load_theories([file(F, 'U')], Ws)).
+
+% a stand-in (a DFL file Python read and checked) is not checked again
+test(checked_stand_in_skips_file_checks, [true(Ws == [])]) :-
+    with_files(["rule(r1, defeasible, no_spill).\nbody(r1, pour_sidewise).\n"], [F], load_theories([file(F, 'D', checked)], Ws)).
+
+% the rule to name: the general rule of the same body and head
+test(named_rule_is_the_general_twin, [true(N-G == g1-g2)]) :-
+    once(load_theory_text("rule(r1, defeasible, no_spill).\nbody(r1, pour_to_side).\nrule(g1, defeasible, no_spill).\nbody(g1, pour_to_side).\nprovenance(g1, layer, general).\nrule(g2, defeasible, no_spill).\nprovenance(g2, layer, general).\n")),
+    defeasible:theory_loaded,
+    named_rule(r1, N),
+    named_rule(g2, G).
+
+test(rule_in_words,
+     [true(T == "pour from the side: holds in 12% of such pours (seen in 1 of 8 such pours; rule g1)")]) :-
+    once(load_theory_text("rule(g1, defeasible, neg(no_spill)).\nbody(g1, pour_to_side).\nprovenance(g1, layer, general).\nprovenance(g1, confidence_permille, 875).\nprovenance(g1, support, 8).\nprovenance(g1, kept, 1).\n")),
+    defeasible:theory_loaded,
+    rule_in_words(g1, T).
+
+test(rule_in_words_of_the_empty_body,
+     [true(T == "an ordinary pour: holds in 90% of such pours (the weighted pours of a0; rule r0)")]) :-
+    once(load_theory_text("rule(r0, defeasible, no_spill).\nprovenance(r0, confidence_permille, 900).\nprovenance(r0, antecedent, a0).\n")),
+    defeasible:theory_loaded,
+    rule_in_words(r0, T).
+
+test(answers_say_why, [true(B-R == "given"-"")]) :-
+    once(load_theory_text("fact(no_spill).\n")),
+    answers([], [], As),
+    memberchk(answer(no_spill, holds, _, _, B, R), As).
+
+test(answers_say_why_not, [true(sub_string(B, 0, _, _, "why not: "))]) :-
+    once(load_theory_text("fact(no_spill).\n")),
+    answers([], [], As),
+    memberchk(answer(source_clear, unknown, none, none, B, _), As).
+
+:- end_tests(ask).
