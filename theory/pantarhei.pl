@@ -15,6 +15,7 @@ provides.
 :- use_module(vocabulary).
 :- use_module(validity).
 :- use_module(defeasible).
+:- use_module(learned_rules).
 :- use_module(queries).
 :- use_module(ask).
 :- use_module(curiosity).

@@ -20,8 +20,8 @@ large theories: the rules that come nearest to deciding the literal.
 
 :- use_module(defeasible).
 :- use_module(vocabulary).
-:- use_module(default_values).
 :- use_module(validity).
+:- use_module(learned_rules, []).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
 :- use_module(library(aggregate)).
@@ -90,32 +90,36 @@ outcome(S, E, V, P, R) :-
     ).
 
 % likelihood(+Rule, +Literal, -P): the share of such pours in which the
-% expectation holds, as the rule that concludes Literal records it.
+% expectation holds, as the rule that concludes Literal records it
+% (learned_rules:likelihood/3).
 likelihood(fact, L, P) :-
     !,
     (   L = neg(_) -> P = 0.0 ; P = 1.0 ).
 likelihood(R, L, P) :-
-    (   defeasible:provenance(R, confidence_permille, C), number(C)
-    ->  (   L = neg(_) -> P is (1000 - C) / 1000 ; P is C / 1000 )
-    ;   P = none
+    confidence(R, C),
+    learned_rules:likelihood(C, L, P).
+
+% confidence(+Rule, -C): the rule's confidence in permille, or none.
+confidence(R, C) :-
+    (   defeasible:provenance(R, confidence_permille, C0), number(C0)
+    ->  C = C0
+    ;   C = none
     ).
 
-% verdict(+Concluded, +Likelihood, -Value): uncertain where such pours split.
-verdict(V, none, V) :- !.
+% verdict(+Concluded, +Likelihood, -Value): uncertain where such pours
+% split (learned_rules:verdict/3).
 verdict(V0, P, V) :-
-    default(uncertain_band, B),
-    (   abs(P - 0.5) < B - 1.0e-9 -> V = uncertain ; V = V0 ).
+    learned_rules:verdict(V0, P, V).
 
 % rank_key(+Rule, -Key): how the deciding rule is chosen among the
-% applicable, unbeaten rules for one literal (bridge/learning/layers.py
-% ranks the same way): the larger body, the general layer, the surer.
-rank_key(R, k(N, G, D, R)) :-
+% applicable, unbeaten rules for one literal (learned_rules:rank_key/2):
+% the larger body, the general layer, the surer, the id.
+rank_key(R, Key) :-
     rule_body(R, Bs), length(Bs, N),
-    (   defeasible:provenance(R, layer, general) -> G = 1 ; G = 0 ),
-    (   defeasible:provenance(R, confidence_permille, C), number(C)
-    ->  D is abs(C - 500)
-    ;   D = 0
-    ).
+    (   defeasible:provenance(R, layer, general) -> L = general ; L = rule ),
+    confidence(R, C),
+    (   C == none -> P = none ; P is C / 1000 ),
+    learned_rules:rank_key(rule(R, N, L, P), Key).
 
 % deciding_rule(+S, +L, -R): why L is concluded, in one rule.
 deciding_rule(S, L, R) :-

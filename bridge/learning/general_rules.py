@@ -7,7 +7,7 @@ keep its head (`confidence`) and its evidence (`support`, `kept`): see
 How a question is decided. A scene (a set of propositions) is decided, for
 each expectation, by the highest ranked rule whose body it holds. Rules rank
 by body size (more specific first), then by the distance of their confidence
-from one half, then by id. This is exactly standard defeasible logic
+from one half, then by id (`rank`, theory/learned_rules.pl's). This is exactly standard defeasible logic
 (theory/defeasible.pl in each of its eight variants) over the
 rules and `sup/2` facts: more specific learned rules beat less specific ones
 with the complementary head (specificity, which the engine derives), and
@@ -29,10 +29,27 @@ from pantarhei.bridge.evaluation.measures import FAILS, HOLDS, UNKNOWN
 from pantarhei.bridge.theories.model import Rule, Theory
 
 
-def rank(body: Sequence[str], confidence: float, rule_id: str) -> tuple:
+def rank(size: int, general: bool, confidence: float | None, rule_id: str) -> tuple:
     """How a learned rule ranks against a conflicting one that can apply in
-    the same scene; higher ranks win: more specific, then surer, then the id."""
-    return (len(body), round(abs(confidence - 0.5), 9), rule_id)
+    the same scene; higher ranks win: the larger body (`size`
+    propositions), the general layer's, the surer (`confidence` further
+    from one half; None as one half), then the id. This is
+    theory/learned_rules.pl's rank_key/2, read here without a call to
+    Prolog because the learner compares thousands of rules inside
+    explore/1 (tests/bridge/learning/test_general_rules.py keeps the two
+    equal)."""
+    c = 0.5 if confidence is None else confidence
+    return (size, int(general), round(abs(c - 0.5), 9), rule_id)
+
+
+def verdict(holds, likelihood, band: float):
+    """HOLDS or FAILS as concluded (`holds`), or UNKNOWN where the
+    likelihood that the expectation holds lies within `band` of one half:
+    theory/learned_rules.pl's verdict/4, for a number or arrays of them
+    (tests/bridge/learning/test_general_rules.py keeps the two equal)."""
+    x = np.asarray(likelihood, dtype=float)
+    out = np.where(np.abs(x - 0.5) < band - 1e-9, UNKNOWN, np.where(holds, HOLDS, FAILS))
+    return int(out) if out.ndim == 0 else out
 
 
 @dataclass(frozen=True)
@@ -53,7 +70,7 @@ class GeneralRule:
 
     @property
     def rank(self) -> tuple:
-        return rank(self.body, self.confidence, self.id)
+        return rank(len(self.body), True, self.confidence, self.id)
 
     @property
     def likelihood(self) -> float:
@@ -108,8 +125,7 @@ class General:
                 out[e] = (UNKNOWN, float("nan"), None)
                 continue
             p = rules[j].likelihood
-            v = UNKNOWN if abs(p - 0.5) < self.band - 1e-9 else HOLDS if rules[j].holds else FAILS
-            out[e] = (v, p, rules[j].id)
+            out[e] = (verdict(rules[j].holds, p, self.band), p, rules[j].id)
         return out
 
     def predict(self, scenes: Sequence[Iterable[str]]) -> np.ndarray:

@@ -31,9 +31,9 @@ from pantarhei.oracle.generative import in_support
 from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
 
-from pantarhei.bridge.evaluation.measures import FAILS, HOLDS, UNKNOWN, verdicts
+from pantarhei.bridge.evaluation.measures import verdicts
 from pantarhei.bridge.learning.askable import askable_bodies, together
-from pantarhei.bridge.learning.general_rules import General, GeneralRule, Sup
+from pantarhei.bridge.learning.general_rules import General, GeneralRule, Sup, verdict
 from pantarhei.bridge.learning.meaning import Meaning
 
 
@@ -66,11 +66,10 @@ class Settings:
 
     def verdict(self, likelihood):
         """HOLDS, FAILS or UNKNOWN (uncertain) for a likelihood that e holds
-        (a number or an array of them)."""
+        (a number or an array of them), as a rule of that likelihood would
+        answer (`general_rules.verdict`)."""
         x = np.asarray(likelihood, dtype=float)
-        out = np.where(x >= 0.5 + self.band - 1e-9, HOLDS,
-                       np.where(x <= 0.5 - self.band + 1e-9, FAILS, UNKNOWN))
-        return int(out) if out.ndim == 0 else out
+        return verdict(x >= 0.5, x, self.band)
 
 
 def generalize(P: np.ndarray, S: np.ndarray, settings: Settings = Settings(),

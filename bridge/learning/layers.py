@@ -44,8 +44,7 @@ class Ranked:
 
     @property
     def rank(self) -> tuple:
-        size, *rest = rank(self.body, self.confidence, self.id)
-        return (size, self.general, *rest)
+        return rank(len(self.body), self.general, self.confidence, self.id)
 
 
 def ranked_rules(theory: Theory, general: General) -> list[Ranked]:
