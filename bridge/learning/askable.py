@@ -1,31 +1,38 @@
 """Which bodies a person can ask about: the empty one, every proposition
-alone and every valid pair (one value per dimension, one proposition per
-parameter, no listed conflict); and whether two bodies can hold together
-in one scene."""
+alone and every valid pair; and whether two bodies can hold together in
+one scene.
+
+Validity is clingo's (theory/validity.lp), asked once: every constraint
+there is broken by a pair of propositions, whatever else the antecedent
+holds, so clingo names, with every proposition in, each pair that breaks
+one; an antecedent is valid when none of its pairs is among them. The
+learner asks this of thousands of bodies inside explore/1, where Prolog
+cannot be asked again; tests/bridge/learning/test_askable.py keeps it equal
+to Prolog's valid_antecedent/1."""
 from __future__ import annotations
 
 from functools import lru_cache
 from itertools import combinations
-from typing import Sequence
+from typing import Iterable, Sequence
 
 from pantarhei.theory.lexicon import load_vocabulary
 
 
 @lru_cache(maxsize=1)
-def _conflicts() -> frozenset[frozenset[str]]:
-    from pantarhei.theory import VOCABULARY_FILES, read_facts
+def clashing_pairs() -> frozenset[frozenset[str]]:
+    """The pairs of propositions that break a validity constraint, from one
+    call of clingo over the whole vocabulary (violated/3 of validity.lp)."""
+    from pantarhei.bridge.engines.asp import solve
 
-    return frozenset(frozenset(c[1:]) for c in read_facts(VOCABULARY_FILES).get("conflict", []))
+    every = "".join(f"in({p})." for p in sorted(load_vocabulary().propositions))
+    (shown,) = solve(["validity.lp"], every)
+    return frozenset(frozenset(str(a) for a in s.arguments[1:]) for s in shown if s.name == "violated")
 
 
-def _askable(body: Sequence[str]) -> bool:
-    """Whether a body is a valid antecedent: one value per dimension, one
-    proposition per parameter, no listed conflict."""
-    v = load_vocabulary()
-    props = [v.proposition(p) for p in body]
-    if len({p.dimension for p in props}) < len(props) or len({p.model.param for p in props}) < len(props):
-        return False
-    return not any(frozenset(pair) in _conflicts() for pair in combinations(body, 2))
+def valid(props: Iterable[str]) -> bool:
+    """Whether the propositions (known names) form a valid antecedent."""
+    clash = clashing_pairs()
+    return not any(frozenset(pair) in clash for pair in combinations(sorted(set(props)), 2))
 
 
 def askable_bodies(max_body: int) -> list[tuple[str, ...]]:
@@ -36,10 +43,10 @@ def askable_bodies(max_body: int) -> list[tuple[str, ...]]:
     if max_body >= 1:
         out += [(n,) for n in names]
     if max_body >= 2:
-        out += [b for b in combinations(names, 2) if _askable(b)]
+        out += [b for b in combinations(names, 2) if valid(b)]
     return out
 
 
 def together(a: Sequence[str], b: Sequence[str]) -> bool:
     """Whether one scene can hold both bodies."""
-    return _askable(tuple(sorted(set(a) | set(b))))
+    return valid([*a, *b])
