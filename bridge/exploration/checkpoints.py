@@ -57,9 +57,9 @@ CREATE TABLE IF NOT EXISTS exploration_simulations (
 """
 
 
-def run_key(settings: Mapping[str, Any]) -> str:
-    """The run's key: a hash of its course-deciding settings."""
-    text = json.dumps(settings, sort_keys=True, separators=(",", ":"))
+def run_key(course: Mapping[str, Any]) -> str:
+    """The run's key: a hash of its course (bridge/exploration/course.py)."""
+    text = json.dumps(course, sort_keys=True, separators=(",", ":"))
     return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 
@@ -92,14 +92,15 @@ class ExplorationStore:
     def __exit__(self, *exc: Any) -> None:
         self.close()
 
-    def start(self, run: str, settings: Mapping[str, Any]) -> None:
-        """Begin the run afresh, forgetting any saved state of it."""
+    def start(self, run: str, course: Mapping[str, Any]) -> None:
+        """Begin the run afresh, forgetting any saved state of it; its
+        course is kept as JSON (column `settings`)."""
         with self._transaction():
             self._forget(run)
             now = time.time()
             self._db.execute("INSERT INTO exploration_runs (run, settings, started, updated) "
                              "VALUES (?, ?, ?, ?)",
-                             (run, json.dumps(settings, sort_keys=True), now, now))
+                             (run, json.dumps(course, sort_keys=True), now, now))
 
     def forget(self, run: str) -> None:
         with self._transaction():

@@ -1,44 +1,53 @@
-"""The progress bar of a running exploration, counted in the budget's own
-unit."""
+"""The progress bar of a running exploration, counted in the unit of the
+curiosity's budget, which explore/1 names when it begins
+(`bar: _{total, unit}`): pours (the learning and the discovering
+curiosity: the pours spent, probes included) or explored antecedents,
+rules (the paper's)."""
 from __future__ import annotations
 
 import sys
-from typing import TYPE_CHECKING
-
-if TYPE_CHECKING:
-    from pantarhei.bridge.exploration.session import Session
+from dataclasses import dataclass
+from typing import Any
 
 
-def open_bar(s: Session, done: int) -> None:
-    """Show the session's progress bar, `done` iterations in."""
+@dataclass
+class Bar:
+    """A progress bar (tqdm) and its unit, `pour` or `rule`."""
+    bar: Any
+    unit: str
+
+    def show(self, iteration: int, pours: int, a_new: int | None = None) -> None:
+        """The bar after `iteration` iterations and `pours` pours, with the
+        candidates in A_new."""
+        self.bar.set_postfix_str(postfix(self.unit, iteration, pours, a_new), refresh=False)
+        self.bar.update(position(self.unit, iteration, pours) - self.bar.n)
+
+    def close(self) -> None:
+        self.bar.close()
+
+
+def open_bar(total: int, unit: str, iteration: int, pours: int) -> Bar:
+    """Show a progress bar to `total` in `unit`, `iteration` iterations
+    and `pours` pours in."""
     from tqdm import tqdm
 
-    total, unit, initial = progress(s, done)
-    s.bar = tqdm(total=total, initial=initial, unit=unit,
-                 desc="exploring", file=sys.stderr, dynamic_ncols=True)
-    s.bar.set_postfix_str(postfix(s, done))
+    bar = tqdm(total=total, initial=position(unit, iteration, pours), unit=unit,
+               desc="exploring", file=sys.stderr, dynamic_ncols=True)
+    bar.set_postfix_str(postfix(unit, iteration, pours))
+    return Bar(bar, unit)
 
 
-def progress(s: Session, iteration: int) -> tuple[int, str, int]:
-    """The progress bar's total, unit and position after `iteration`
-    iterations: for the learning curiosity, `pours` and the pours spent;
-    for the discovering one, whose budget is in pours, the pours of
-    `budget` batches and the pours spent (probes included); for the
-    paper's, `budget` explored antecedents."""
-    rules = int(s.settings["budget"])
-    if s.settings.get("curiosity") == "learn":
-        return int(s.settings["pours"]), "pour", len(s.params)
-    if s.settings.get("curiosity") == "discover":
-        return rules * int(s.settings["batch"]), "pour", len(s.params)
-    return rules, "rule", iteration
+def position(unit: str, iteration: int, pours: int) -> int:
+    """The bar's position after `iteration` iterations and `pours` pours:
+    the pours, or the explored antecedents (one an iteration)."""
+    return pours if unit == "pour" else iteration
 
 
-def postfix(s: Session, explored: int, a_new: int | None = None) -> str:
-    """The text after the progress bar: batches (discover) or simulations
-    and rules (paper) so far, and the candidates in A_new."""
-    text = (f"{explored} batch{'' if explored == 1 else 'es'}"
-            if s.settings.get("curiosity") in ("discover", "learn")
-            else f"{len(s.params)} simulations, {explored} rules")
+def postfix(unit: str, explored: int, pours: int, a_new: int | None = None) -> str:
+    """The text after the progress bar: batches so far (a bar of pours) or
+    simulations and rules (a bar of rules), and the candidates in A_new."""
+    text = (f"{explored} batch{'' if explored == 1 else 'es'}" if unit == "pour"
+            else f"{pours} simulations, {explored} rules")
     if a_new is not None:
         text += f", {a_new} in A_new"
     return text

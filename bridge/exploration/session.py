@@ -8,9 +8,10 @@ Prolog module `bridge`:
   saved state to resume from;
 * `exploration_simulate`: sample(a_c, n) and simulate the batch (in the
   simulator's worker processes);
-* `exploration_best_plane`: the weights of equation (1) over all
-  simulations, a weighted plane fit per explored antecedent, and the
-  steepest plane of all (bridge/exploration/steepest.py);
+* `exploration_steepest_plane`, `exploration_significant_planes`: the
+  weights of equation (1) over all simulations, a weighted plane fit per
+  explored antecedent, and the steepest plane of all, or the significant
+  ones (bridge/exploration/steepest.py);
 * `exploration_predict`: the novelty of candidates;
 * `exploration_probe`: simulate the first pours of a candidate's batch and
   say whether they show a new, reproducible consequent;
@@ -53,14 +54,14 @@ from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.exploration.course import ALGORITHM_VERSION, course
 from pantarhei.bridge.exploration.novelty import PASS, Known, known, novelties, probe_score
 from pantarhei.bridge.exploration.planes import Planes, plane_fit
-from pantarhei.bridge.exploration.progress import open_bar, postfix, progress
+from pantarhei.bridge.exploration.progress import Bar, open_bar
 from pantarhei.bridge.exploration.prompt_oracle import (oracle_describe, oracle_sample,
                                                         oracle_simulate)
 from pantarhei.bridge.exploration.qualify import QUALIFY, consequent
 from pantarhei.bridge.exploration.significance import Tested, permutation_test, shuffle_seed
 from pantarhei.bridge.exploration.simulation import batch_seed, open_simulator, oracle_identity
 from pantarhei.bridge.exploration.checkpoints import ExplorationStore, run_key
-from pantarhei.bridge.exploration.steepest import best_plane
+from pantarhei.bridge.exploration.steepest import significant_planes, steepest_plane
 from pantarhei.bridge.exploration.weights import weights
 from pantarhei.bridge.exploration.trace import (append_trace, plot_path, plot_trace,
                                                 require_distinct_outputs, rounded, trace_path,
@@ -75,31 +76,35 @@ __all__ = ["ALGORITHM_VERSION", "Host", "Session", "error_text", "install"]
 
 @dataclass
 class Session:
-    """One exploration under way: its settings, run key, store and
-    simulator, every pour so far, and what is cached on them. The trace
-    is the store's (its checkpoints), the symbolic state Prolog's."""
-    settings: dict
+    """One exploration under way: its run key, store and simulator, every
+    pour so far, and what is cached on them. It holds no setting of the
+    run: each request from Prolog carries those its handler needs
+    (Prolog's settings are the only ones). The trace is the store's (its
+    checkpoints), the symbolic state Prolog's."""
     run: str
     store: ExplorationStore
     simulator: Any
     oracle_version: str
     params: np.ndarray
     scores: np.ndarray
-    pending: dict[int, tuple[np.ndarray, np.ndarray]] = field(default_factory=dict)
+    #: How many of the pours the store holds: those after it are the
+    #: iteration's under way, which its checkpoint saves.
+    saved: int = 0
     log_dens: dict[str, np.ndarray] = field(default_factory=dict)
-    plane_cache: dict[str, tuple[np.ndarray, Planes | None]] = field(default_factory=dict)
-    test_cache: dict[str, tuple[np.ndarray, Tested | None]] = field(default_factory=dict)
-    #: What the last novelty estimate knew: ((pours, antecedents), Known).
-    known: tuple[tuple[int, int], Known] | None = None
-    #: The learning curiosity's model of the pours: (pours it is fitted on, Meaning).
-    teacher: tuple[int, Any] | None = None
+    #: Per antecedent: ((weights, ridge), its planes).
+    plane_cache: dict[str, tuple[tuple[np.ndarray, float], Planes | None]] = field(default_factory=dict)
+    #: Per antecedent: ((weights, ridge, shuffles, seed), its tested planes).
+    test_cache: dict[str, tuple[tuple[np.ndarray, float, int, int], Tested | None]] = \
+        field(default_factory=dict)
+    #: What the last novelty estimate knew: (what it was computed from, Known).
+    known: tuple[tuple, Known] | None = None
+    #: The learning curiosity's model of the pours: ((pours it is fitted on, seed), Meaning).
+    teacher: tuple[tuple[int, int], Any] | None = None
     started: float = field(default_factory=time.monotonic)
-    bar: Any = None
+    bar: Bar | None = None
     timings: dict[str, float] = field(default_factory=dict)
     #: Seconds since the start after each explored antecedent (kept out of the trace).
     elapsed: list[float] = field(default_factory=list)
-    #: Pours already in the pool of each probed (iteration, attempt).
-    probed: dict[tuple[int, int], int] = field(default_factory=dict)
 
     @property
     def valid(self) -> np.ndarray:
@@ -116,29 +121,31 @@ class Session:
         self.log_dens[aid] = have
         return have
 
-    def planes_of(self, aid: str, X: np.ndarray, S: np.ndarray, w: np.ndarray) -> Planes | None:
-        """The antecedent's planes, fitted again only when its weights
-        changed: an antecedent whose support holds none of the new
-        simulations, and none that a new antecedent shares, keeps its planes."""
+    def planes_of(self, aid: str, X: np.ndarray, S: np.ndarray, w: np.ndarray,
+                  ridge: float) -> Planes | None:
+        """The antecedent's planes (L2 penalty `ridge`), fitted again only
+        when its weights changed: an antecedent whose support holds none of
+        the new simulations, and none that a new antecedent shares, keeps
+        its planes."""
         cached = self.plane_cache.get(aid)
-        if cached is not None and _same_weights(cached[0], w):
+        if cached is not None and cached[0][1] == ridge and _same_weights(cached[0][0], w):
             return cached[1]
-        planes = plane_fit(X, S, w, float(self.settings.get("ridge", defaults()["ridge"])))
-        self.plane_cache[aid] = (w.copy(), planes)
+        planes = plane_fit(X, S, w, ridge)
+        self.plane_cache[aid] = ((w.copy(), ridge), planes)
         return planes
 
     def tested_of(self, number: int, aid: str, X: np.ndarray, S: np.ndarray,
-                  w: np.ndarray) -> Tested | None:
-        """The antecedent's planes and their permutation test, done again
-        only when its weights changed (as `planes_of`)."""
+                  w: np.ndarray, ridge: float, permutations: int, seed: int) -> Tested | None:
+        """The antecedent's planes and their permutation test (`permutations`
+        shuffles, seeded from the run's `seed`), done again only when its
+        weights changed (as `planes_of`)."""
         cached = self.test_cache.get(aid)
-        if cached is not None and _same_weights(cached[0], w):
+        if (cached is not None and cached[0][1:] == (ridge, permutations, seed)
+                and _same_weights(cached[0][0], w)):
             return cached[1]
         used = int(((w > 0) & np.all(np.isfinite(S), axis=1)).sum())
-        tested = permutation_test(X, S, w, float(self.settings.get("ridge", defaults()["ridge"])),
-                                  int(self.settings["permutations"]),
-                                  shuffle_seed(int(self.settings["seed"]), number, used))
-        self.test_cache[aid] = (w.copy(), tested)
+        tested = permutation_test(X, S, w, ridge, permutations, shuffle_seed(seed, number, used))
+        self.test_cache[aid] = ((w.copy(), ridge, permutations, seed), tested)
         return tested
 
     def weight_matrix(self, entries: Sequence[dict]) -> np.ndarray:
@@ -155,10 +162,9 @@ class Session:
         S = self.scores[self.valid]
         return [consequent(S, W[i], mode) for i in range(len(entries))]
 
-    def verdicts(self, entries: Sequence[dict]) -> list[tuple[bool, ...]]:
+    def verdicts(self, entries: Sequence[dict], mode: str) -> list[tuple[bool, ...]]:
         """The consequent of each explored antecedent as nine verdicts,
-        qualified as the run's settings say."""
-        mode = str(self.settings.get("qualify", defaults()["qualify"]))
+        qualified by `mode` (qualify.QUALIFY)."""
         return [tuple(o["holds"] for o in c["outcomes"]) for c in self.consequents(entries, mode)]
 
 
@@ -182,7 +188,8 @@ class Host:
         self.handlers: dict[str, Callable[[dict], dict]] = {
             "exploration_begin": self.begin,
             "exploration_simulate": self._timed("simulate", self.simulate),
-            "exploration_best_plane": self._timed("planes", self.best_plane),
+            "exploration_steepest_plane": self._timed("planes", self.steepest_plane),
+            "exploration_significant_planes": self._timed("planes", self.significant_planes),
             "exploration_predict": self._timed("planes", self.predict),
             "exploration_probe": self._timed("probe", self.probe),
             "exploration_teach": self._timed("planes", self.teach),
@@ -232,8 +239,8 @@ class Host:
         oracle = str(request["oracle"])
         oracle_options = dict(request.get("oracle_options") or {})
         version, oracle_settings = oracle_identity(oracle, oracle_options)
-        settings = course(request, version, oracle_settings)
-        run = run_key(settings)
+        decided_by = course(request, version, oracle_settings)
+        run = run_key(decided_by)
         store_path = Path(str(request.get("store") or DEFAULT_STORE))
         require_distinct_outputs(store_path, Path(str(request["out"])), names=("store(...)", "out(...)"))
         try:
@@ -248,7 +255,7 @@ class Host:
             if saved is None:
                 note("no saved exploration with these settings: starting afresh")
         if saved is None:
-            store.start(run, settings)
+            store.start(run, decided_by)
         out = Path(str(request["out"]))
         out.parent.mkdir(parents=True, exist_ok=True)
         trace_path(out).unlink(missing_ok=True)
@@ -259,27 +266,29 @@ class Host:
                                    int(workers) if workers not in (None, "") else None,
                                    store_path, request.get("ray_address") or None, oracle_options)
         self.session = Session(
-            settings=dict(request, store=str(store_path)), run=run, store=store,
-            simulator=simulator, oracle_version=version,
+            run=run, store=store, simulator=simulator, oracle_version=version,
             params=saved.params.copy() if saved else np.empty((0, n_par)),
-            scores=saved.scores.copy() if saved else np.empty((0, n_exp)))
+            scores=saved.scores.copy() if saved else np.empty((0, n_exp)),
+            saved=len(saved.params) if saved else 0)
         if truthy(request.get("progress", defaults()["progress"])):
-            open_bar(self.session, saved.iteration if saved else 0)
+            bar = request["bar"]
+            self.session.bar = open_bar(int(bar["total"]), str(bar["unit"]),
+                                        saved.iteration if saved else 0, len(self.session.params))
         return {"state": saved.state if saved else "", "run": run,
                 "resumed": bool(saved), "iterations": saved.iteration if saved else 0}
 
     def batch(self, request: dict, n: int) -> tuple[np.ndarray, np.ndarray]:
-        """The first n pours of the batch of an iteration's attempt
-        (attempt 0 is the iteration's own seed; a candidate probed after
-        others gets a seed of its own), simulated, and added to the pool
-        and to what the iteration's checkpoint saves, except those a probe
-        of the same batch already added."""
+        """The first n pours of the batch of `batch` pours of an iteration's
+        attempt (attempt 0 is the iteration's own seed; a candidate probed
+        after others gets a seed of its own; both from the run's `seed`),
+        simulated, and added to the pool, except the first `probed`, which
+        a probe of the same batch already added."""
         s = self.need_session()
         props = [str(p) for p in request["antecedent"]]
         iteration, attempt = int(request["iteration"]), int(request.get("attempt", 0))
-        samples = int(s.settings["batch"])
         try:
-            P = sample(props, samples, batch_seed(int(s.settings["seed"]), iteration, attempt))[:n]
+            P = sample(props, int(request["batch"]),
+                       batch_seed(int(request["seed"]), iteration, attempt))[:n]
         except InvalidAntecedent as e:
             raise UserError(f"cannot sample {', '.join(props)}: {e}") from None
         t = time.perf_counter()
@@ -287,17 +296,15 @@ class Host:
         s.timings["oracle"] = s.timings.get("oracle", 0.0) + time.perf_counter() - t
         if S.shape != (n, len(load_vocabulary().expectations)):
             raise RuntimeError(f"the simulator returned scores of shape {S.shape}")
-        have = s.probed.get((iteration, attempt), 0)
+        have = int(request.get("probed", 0))
         s.params = np.vstack([s.params, P[have:]])
         s.scores = np.vstack([s.scores, S[have:]])
-        s.probed[(iteration, attempt)] = max(have, n)
-        P0, S0 = s.pending.get(iteration, (P[:0], S[:0]))
-        s.pending[iteration] = (np.vstack([P0, P[have:]]), np.vstack([S0, S[have:]]))
         return P, S
 
     def simulate(self, request: dict) -> dict:
+        """A batch of `batch` pours of the request's antecedent (`batch`)."""
         s = self.need_session()
-        _, S = self.batch(request, int(s.settings["batch"]))
+        _, S = self.batch(request, int(request["batch"]))
         failed = int((~np.all(np.isfinite(S), axis=1)).sum())
         return {"simulations": len(s.params), "failed": failed}
 
@@ -305,32 +312,38 @@ class Host:
         """Simulate the first `probe` pours of a candidate's batch and say
         whether they show a new, reproducible consequent
         (novelty.probe_score against the explored antecedents' consequents,
-        at least novelty.PASS)."""
+        qualified by `qualify`, at least novelty.PASS)."""
         s = self.need_session()
-        samples = int(s.settings["batch"])
-        _, S = self.batch(request, min(int(s.settings["probe"]), samples))
+        samples = int(request["batch"])
+        _, S = self.batch(request, min(int(request["probe"]), samples))
         # rounded as the trace keeps it, so that a resumed run and another
         # machine read the same score from it
-        score = rounded(probe_score(S, samples, s.verdicts(request["antecedents"])))
+        score = rounded(probe_score(S, samples, s.verdicts(request["antecedents"],
+                                                           str(request["qualify"]))))
         passed = score >= PASS
         return {"score": score, "pass": passed, "simulations": len(s.params)}
 
-    def best_plane(self, request: dict) -> dict:
-        return best_plane(self.need_session(), request)
+    def steepest_plane(self, request: dict) -> dict:
+        return steepest_plane(self.need_session(), request)
+
+    def significant_planes(self, request: dict) -> dict:
+        return significant_planes(self.need_session(), request)
 
     def predict(self, request: dict) -> dict:
         """The novelty of each candidate antecedent (bridge/exploration/novelty.py)
         given every pour so far and the consequents of the explored
-        antecedents, and whether it reaches the novelty level to be queued."""
+        antecedents (qualified by `qualify`), and whether it reaches the
+        level `novelty` to be queued; the forest is seeded from `seed` and
+        predicts `batch` pours per candidate."""
         s = self.need_session()
         entries = request["antecedents"]
-        key = (len(s.params), len(entries))
+        seed, batch, mode = int(request["seed"]), int(request["batch"]), str(request["qualify"])
+        key = (len(s.params), len(entries), seed, batch, mode)
         if s.known is None or s.known[0] != key:
-            seed = int(s.settings["seed"])
-            s.known = (key, known(s.params, s.scores, s.verdicts(entries), int(s.settings["batch"]),
+            s.known = (key, known(s.params, s.scores, s.verdicts(entries, mode), batch,
                                   seed, shuffle_seed(seed, 0, len(s.params))))
         k = s.known[1]
-        level = float(s.settings["novelty"])
+        level = float(request["novelty"])
         found = novelties(k, [[str(p) for p in props] for props in request["candidates"]])
         return {"novelty": [f["novelty"] for f in found],
                 "queued": [f["novelty"] >= level for f in found]}
@@ -338,17 +351,18 @@ class Host:
     def teach(self, request: dict) -> dict:
         """The value of each candidate for the learning curiosity
         (bridge/exploration/teaching.py), given every pour so far and the
-        explored antecedents."""
+        explored antecedents: `uncertainty`, `batch` and `seed` as the
+        request says."""
         from pantarhei.bridge.exploration.teaching import fitted_on, model, teaching
 
         s = self.need_session()
-        seed = int(s.settings["seed"])
-        size = fitted_on(int(s.valid.sum()))
-        if s.teacher is None or s.teacher[0] != size:
-            s.teacher = (size, model(s.params, s.scores, seed))
+        seed = int(request["seed"])
+        key = (fitted_on(int(s.valid.sum())), seed)
+        if s.teacher is None or s.teacher[0] != key:
+            s.teacher = (key, model(s.params, s.scores, seed))
         found = teaching(s.params, s.scores, [e["antecedent"] for e in request["antecedents"]],
-                         request["candidates"], float(s.settings["uncertainty"]),
-                         int(s.settings["batch"]), seed, s.teacher[1])
+                         request["candidates"], float(request["uncertainty"]),
+                         int(request["batch"]), seed, s.teacher[1])
         return {"value": found.value}
 
     def qualify(self, request: dict) -> dict:
@@ -359,7 +373,7 @@ class Host:
             raise UserError(f"unknown qualify mode '{mode}' (choose {' or '.join(QUALIFY)})")
         out = ([{"id": str(e["id"]), **c} for e, c in zip(entries, s.consequents(entries, mode))]
                if entries else [])
-        if s.settings.get("curiosity") == "discover":   # batches of pours per antecedent
+        if truthy(request.get("batches")):      # batches of pours per antecedent, from the trace
             counts: dict[str, int] = {}
             for t in s.store.trace(s.run):
                 counts[str(t["id"])] = counts.get(str(t["id"]), 0) + 1
@@ -370,23 +384,26 @@ class Host:
                 "oracle_version": s.oracle_version}
 
     def checkpoint(self, request: dict) -> dict:
+        """Save the iteration: the pours since the last checkpoint, Prolog's
+        state and the trace line (appended to the trace beside `out`)."""
         s = self.need_session()
         iteration = int(request["iteration"])
-        P, S = s.pending.pop(iteration)
+        P, S = s.params[s.saved:], s.scores[s.saved:]
         trace = rounded(dict(request["trace"]))
         s.store.save(s.run, iteration, P, S, str(request["state"]), trace)
+        s.saved = len(s.params)
         s.elapsed.append(round(time.monotonic() - s.started, 3))
-        append_trace(Path(str(s.settings["out"])), trace)
+        append_trace(Path(str(request["out"])), trace)
         if s.bar is not None:
-            s.bar.set_postfix_str(postfix(s, iteration, int(request.get("a_new", 0))), refresh=False)
-            s.bar.update(progress(s, iteration)[2] - s.bar.n)
+            s.bar.show(iteration, len(s.params), int(request.get("a_new", 0)))
         return {}
 
     def general(self, request: dict) -> dict:
         """The general layer of every pour so far and of the pours the
         learner asks for where there are few (simulated as the
-        exploration's are), ranked with Algorithm 1's rules of the request
-        (id, expectation, holds, body, confidence_permille)."""
+        exploration's are, seeded from `seed`), ranked with Algorithm 1's
+        rules of the request (id, expectation, holds, body,
+        confidence_permille)."""
         from pantarhei.bridge.learning.layers import Ranked, general_layer
 
         s = self.need_session()
@@ -394,12 +411,12 @@ class Host:
                           str(r["expectation"]) if truthy(r["holds"]) else f"neg({r['expectation']})",
                           int(r["confidence_permille"]) / 1000)
                    for r in request["rules"]]
-        progress = truthy(s.settings.get("progress", defaults()["progress"]))
+        progress = s.bar is not None
         explored = None
         if "explored" in request:
             explored = [(str(e["id"]), [str(p) for p in e["antecedent"]])
                         for e in request["explored"]]
-        return general_layer(learned, s.params, s.scores, int(s.settings["seed"]),
+        return general_layer(learned, s.params, s.scores, int(request["seed"]),
                              lambda X: s.simulator.simulate(X, progress=progress), explored)
 
     def end(self, request: dict) -> dict:
@@ -415,7 +432,7 @@ class Host:
                 write_trace(trace_path(out), trace)
                 written["trace"] = str(trace_path(out))
                 try:
-                    plot_trace(plot_path(out), trace, s.settings)
+                    plot_trace(plot_path(out), trace, str(request["oracle"]), int(request["seed"]))
                     written["plot"] = str(plot_path(out))
                 except Exception as e:  # the theory and trace are written: say so and go on
                     note(f"could not plot the trace: {e}")

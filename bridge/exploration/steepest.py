@@ -1,13 +1,17 @@
-"""Which plane the loop follows next (`exploration_best_plane`).
+"""Which plane the loop follows next: `exploration_steepest_plane` and
+`exploration_significant_planes`, which the curiosity's module in
+theory/curiosity/ chooses between.
 
 The paper's curiosity takes the steepest plane of any explored antecedent
-(bestAbsSlope). The discovering one tests every explored antecedent's
-planes against shuffles and follows each antecedent with a significant
-component, steepest significant plane first, along each of its
-significant planes: its significant parameters, largest first, each with
-the antecedent's mean value and the value past which the plane's verdict
-flips (theory units). The first of them is the best, as the paper's
-steepest plane.
+(bestAbsSlope, `steepest_plane`). The discovering one tests every explored
+antecedent's planes against shuffles and follows each antecedent with a
+significant component, steepest significant plane first, along each of
+its significant planes: its significant parameters, largest first, each
+with the antecedent's mean value and the value past which the plane's
+verdict flips (theory units, `significant_planes`). The first of them is
+the best, as the paper's steepest plane. Each request carries the
+settings of its fits: `ridge`, and for the test `permutations`,
+`significance` and `seed`.
 """
 from __future__ import annotations
 
@@ -24,19 +28,18 @@ if TYPE_CHECKING:
     from pantarhei.bridge.exploration.session import Session
 
 
-def best_plane(s: Session, request: dict) -> dict:
-    """The steepest plane of the explored antecedents (the paper's), or the
-    significant ones (`significant_planes`) for the discovering curiosity."""
-    if s.settings.get("curiosity") == "discover":
-        return significant_planes(s, request)
+def steepest_plane(s: Session, request: dict) -> dict:
+    """The steepest plane of the explored antecedents (the paper's), their
+    planes fitted with L2 penalty `ridge`."""
     entries = request["antecedents"]
+    ridge = float(request["ridge"])
     W = s.weight_matrix(entries)
     valid = s.valid
     X = normalise(s.params[valid])
     S = s.scores[valid]
     best: tuple[float, int, int, Planes, np.ndarray] | None = None
     for i, e in enumerate(entries):
-        planes = s.planes_of(str(e["id"]), X, S, W[i])
+        planes = s.planes_of(str(e["id"]), X, S, W[i], ridge)
         if planes is None:
             continue
         slope = best_abs_slope(planes)
@@ -57,7 +60,8 @@ def significant_planes(s: Session, request: dict) -> dict:
     """The discovering curiosity's planes (see the module's text): every
     antecedent with a significant plane, followed, and the first of them."""
     entries = request["antecedents"]
-    alpha = float(s.settings["significance"])
+    alpha = float(request["significance"])
+    ridge, permutations, seed = float(request["ridge"]), int(request["permutations"]), int(request["seed"])
     W = s.weight_matrix(entries)
     valid = s.valid
     X = normalise(s.params[valid])
@@ -65,7 +69,7 @@ def significant_planes(s: Session, request: dict) -> dict:
     names, expectations = load_vocabulary().parameter_names, load_vocabulary().expectation_names
     found: list[tuple[float, int, Tested]] = []
     for i, e in enumerate(entries):
-        tested = s.tested_of(i + 1, str(e["id"]), X, S, W[i])
+        tested = s.tested_of(i + 1, str(e["id"]), X, S, W[i], ridge, permutations, seed)
         if tested is None:
             continue
         slope = float(tested.slopes(alpha).max())

@@ -78,10 +78,12 @@ def probe_means(trace: Sequence[dict]) -> list[float | None]:
     return out
 
 
-def plot_trace(path: Path, trace: Sequence[dict], settings: dict | None = None) -> None:
+def plot_trace(path: Path, trace: Sequence[dict], oracle: str | None = None,
+               seed: int | None = None) -> None:
     """|A_new| after each iteration and the antecedents each added (PNG);
     for a run with probes also their mean score so far, the evidence that
-    something new is still to be found."""
+    something new is still to be found. The title names the run's oracle
+    and seed when given."""
     plt = pyplot()
     it = [t["iteration"] for t in trace]
     added = [len(t["added"]) for t in trace]
@@ -106,8 +108,8 @@ def plot_trace(path: Path, trace: Sequence[dict], settings: dict | None = None) 
         right.set_ylabel("mean probe score")
         handles.append(probes)
     title = "Curiosity-driven exploration"
-    if settings:
-        title += f" ({settings.get('oracle')} oracle, seed {settings.get('seed')})"
+    if oracle is not None:
+        title += f" ({oracle} oracle, seed {seed})"
     ax.set_title(title)
     ax.legend(handles=handles, loc="upper right", fontsize="small")
     ax.grid(axis="y", alpha=0.3)

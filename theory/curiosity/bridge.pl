@@ -12,9 +12,11 @@ predicates of the module =bridge=, which `pantarhei explore` and
 
   - bridge:exploration_begin(+Settings, -Begun)
   - bridge:exploration_simulate(+Request, -Reply)
-  - bridge:exploration_best_plane(+Request, -Reply)
+  - bridge:exploration_steepest_plane(+Request, -Reply)
+  - bridge:exploration_significant_planes(+Request, -Reply)
   - bridge:exploration_probe(+Request, -Reply)
   - bridge:exploration_predict(+Request, -Reply)
+  - bridge:exploration_teach(+Request, -Reply)
   - bridge:exploration_qualify(+Request, -Reply)
   - bridge:exploration_checkpoint(+Request, -Reply)
   - bridge:exploration_general(+Request, -Reply)
@@ -23,8 +25,10 @@ predicates of the module =bridge=, which `pantarhei explore` and
     bridge:oracle_describe(+Request, -Reply): sample/4, simulate/3 and
     describe/2 of oracle.pl, the oracle at the Prolog prompt
 
-Requests and replies are dicts of atoms, strings, numbers, lists and
-dicts (strings come back as atoms, and the booleans as =true= and
+Python holds no setting of the run: each request carries those its
+handler needs (the batch, the seed, the ridge, ...), from the settings of
+explore/1 (settings.pl), the only ones. Requests and replies are dicts of
+atoms, strings, numbers, lists and dicts (strings come back as atoms, and the booleans as =true= and
 =false=); a reply =|_{error: Text}|= raises =|exploration_error(Text)|=,
 which prints as its Text.
 */

@@ -76,7 +76,10 @@ discover_queue(Best, Explored, Id, Props, Away, Rest, Settings, I, Added, Queue)
     ->  Added = [], Queue = []
     ;   maplist(entry, Explored, Entries),
         findall(P, member(cand(P, _, _), Pool), Cands),
-        call_bridge(exploration_predict, _{antecedents:Entries, candidates:Cands}, Reply),
+        call_bridge(exploration_predict, _{antecedents:Entries, candidates:Cands,
+                                           seed:Settings.seed, batch:Settings.batch,
+                                           qualify:Settings.qualify,
+                                           novelty:Settings.novelty}, Reply),
         findall(Key-C, ( nth1(K, Pool, C), nth1(K, Reply.queued, true),
                          nth1(K, Reply.novelty, N), Key is -N ),
                 Keyed),
@@ -99,7 +102,7 @@ jumps(Settings, I, Exclude, New) :-
 
 %   follow(+Explored, +F, +Exclude0-Acc0, -Exclude-Acc): the candidates
 %   of modify_past/4 for every move of the significant planes of one
-%   antecedent (F, from the reply of exploration_best_plane) added, the
+%   antecedent (F, from the reply of exploration_significant_planes) added, the
 %   new ones also to the exclusions.
 follow(Explored, F, Exclude0-Acc0, Exclude-[Added|Acc0]) :-
     get_dict(antecedent, F, AId),

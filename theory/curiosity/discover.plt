@@ -13,7 +13,7 @@ test(most_novel_first_above_the_level,
     Explored = [ant(a1, A, none, initial)],
     Low = [pour_low, pour_steeply_tilted],
     Below = [pour_below_rim, pour_steeply_tilted],
-    discover_queue(Best, Explored, a1, A, [], [], _{seed:1, batch:3, jumps:3},
+    discover_queue(Best, Explored, a1, A, [], [], _{seed:1, batch:3, jumps:3, qualify:weighted, novelty:0.1},
                              1, Added, Queue),
     % both moves past the flip, the most novel first, then a neighbour;
     % nothing else reaches the level
@@ -25,19 +25,21 @@ test(most_novel_first_above_the_level,
     % A_new as it was is scored again, in its place by novelty
     Old = cand(High, a0, near),
     discover_queue(_{followed:[]}, Explored, a1, A, [Old], [Old],
-                             _{seed:1, batch:3, jumps:3}, 1, Added1, Queue1),
+                             _{seed:1, batch:3, jumps:3, qualify:weighted, novelty:0.1}, 1, Added1, Queue1),
     Queue1 == [cand(Low, a1, near), cand(Below, a1, near), Old],
     Added1 == [cand(Low, a1, near), cand(Below, a1, near)],
     % an antecedent set aside after its probe is no candidate again
     discover_queue(_{followed:[]}, Explored, a1, A, [aside(1, 0, Low)], [],
-                             _{seed:1, batch:3, jumps:3}, 1, _, Queue3),
+                             _{seed:1, batch:3, jumps:3, qualify:weighted, novelty:0.1}, 1, _, Queue3),
     Queue3 == [cand(Below, a1, near), cand(High, a1, near)].
 
 %   A stand-in for the bridge's novelty, with known answers: pouring low is
 %   the most novel, below the rim next, pouring high a little; nothing else
 %   reaches the level (0.1).
 fake_predict(Req, Reply) :-
-    findall(N-Q, ( member(C, Req.candidates), fake_novelty(C, N), ( N >= 0.1 -> Q = true ; Q = false ) ),
+    % the level comes with the request (Python holds no setting)
+    findall(N-Q, ( member(C, Req.candidates), fake_novelty(C, N),
+                   ( N >= Req.novelty -> Q = true ; Q = false ) ),
             Pairs),
     pairs_keys_values(Pairs, Ns, Qs),
     Reply = _{novelty:Ns, queued:Qs}.

@@ -33,7 +33,8 @@ oracle's side too (aborted), then propagates.
 explore(Options) :-
     settings(Options, Settings),
     course_options(Settings, Course),
-    call_bridge(exploration_begin, Settings.put(course, Course), Begun),
+    progress_bar(Settings, Bar),
+    call_bridge(exploration_begin, Settings.put(_{course:Course, bar:Bar}), Begun),
     catch(explore_loop(Settings, Begun), E,
           ( catch(call_bridge(exploration_end, _{aborted:true}, _), _, true),
             throw(E) )).
@@ -47,15 +48,15 @@ explore_loop(Settings, Begun) :-
     length(ANew, Left),
     learned(Explored, SetAside, Settings, Stop, Left, Facts),
     (   Settings.curiosity == learn
-    ->  learned_layer(Explored, General)
+    ->  learned_layer(Explored, Settings, General)
     ;   Settings.general == true
-    ->  general_layer(Facts, General)
+    ->  general_layer(Facts, Settings, General)
     ;   General = []
     ),
     write_theory(Settings.out, Settings, Facts, General),
     length(Explored, N),
     call_bridge(exploration_end, _{out:Settings.out, stopped:Stop, explored:N,
-                                   a_new:Left}, _).
+                                   a_new:Left, oracle:Settings.oracle, seed:Settings.seed}, _).
 
 %!  explore_result(+Options:list, -Result) is det.
 %

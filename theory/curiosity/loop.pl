@@ -1,6 +1,8 @@
 :- module(curiosity_loop,
           [ loop/4,                   % +S0, +Settings, -S, -Stop
-            next_move/3               % +State, +Settings, -Move
+            next_move/3,              % +State, +Settings, -Move
+            progress_bar/2,           % +Settings, -Bar
+            probe_size/2              % +Settings, -Pours
           ]).
 /** <module> The loop of Algorithm 1 and its budget
 
@@ -98,6 +100,17 @@ budget(Settings, Pours) :-
     ;   Pours is Settings.budget * Settings.batch
     ).
 
+%!  progress_bar(+Settings:dict, -Bar:dict) is det.
+%
+%   Bar is what the progress bar counts, _{total:Total, unit:Unit}: the
+%   budget in pours (unit `pour`) for the learning and the discovering
+%   curiosity, in explored antecedents (unit `rule`) for the paper's.
+progress_bar(Settings, _{total:Total, unit:Unit}) :-
+    (   Settings.curiosity == paper
+    ->  Total = Settings.budget, Unit = rule
+    ;   budget(Settings, Total), Unit = pour
+    ).
+
 %   spent(+State, +Settings, -Pours): the pours spent so far: a batch per
 %   iteration and a probe per candidate set aside after its probe.
 spent(st(I, _, _, SetAside), Settings, Pours) :-
@@ -113,6 +126,10 @@ step_cost(Settings, Pours) :-
     probe_size(Settings, M),
     Pours is Settings.batch + (Settings.probe_attempts - 1) * M.
 
+%!  probe_size(+Settings:dict, -Pours:integer) is det.
+%
+%   Pours are those a probe simulates: the first `probe` of a batch (the
+%   discovering curiosity), or none.
 probe_size(Settings, M) :-
     (   Settings.curiosity == discover
     ->  M is min(Settings.probe, Settings.batch)
@@ -132,14 +149,19 @@ step(S0, Settings, st(I1, Explored1, ANew, SetAside)) :-
     findall(aside(I1, K, P), member(probe(P, _, false, K), Probes), NewAside),
     append(SetAside0, NewAside, SetAside),
     explored(Cand, Explored, Id, Explored1),
+    (   memberchk(probe(_, _, true, Attempt), Probes)
+    ->  probe_size(Settings, Probed)      % its probe's pours are the batch's first
+    ;   Probed = 0
+    ),
     call_bridge(exploration_simulate, _{id:Id, antecedent:Props, iteration:I1,
-                                        attempt:Attempt}, Sim),
+                                        attempt:Attempt, batch:Settings.batch,
+                                        seed:Settings.seed, probed:Probed}, Sim),
     (   Settings.curiosity == learn
     ->  teach_queue(Explored1, Id, Props, Rest, Settings, Added, ANew),
         length(ANew, Left),
         learn_trace(I1-Id, Cand, Sim, Added, ANew, Trace)
     ;   maplist(entry, Explored1, Entries),
-        call_bridge(exploration_best_plane, _{antecedents:Entries}, Best),
+        best_plane(Settings, Entries, Best),
         a_new(Best, Settings, Explored1, Id, Cand, Rest, SetAside, I1, Added, ANew),
         length(ANew, Left),
         step_trace(Best, Settings, I1-Id, Cand, Sim, Probes, Added, Left, Trace)
@@ -147,7 +169,21 @@ step(S0, Settings, st(I1, Explored1, ANew, SetAside)) :-
     S1 = st(I1, Explored1, ANew, SetAside),
     format(string(State), "~k", [S1]),
     call_bridge(exploration_checkpoint, _{iteration:I1, state:State, trace:Trace,
-                                          explored:I1, a_new:Left}, _).
+                                          explored:I1, a_new:Left, out:Settings.out}, _).
+
+%   best_plane(+Settings, +Entries, -Best): the plane the step follows:
+%   the significant planes of the explored antecedents (Entries) for the
+%   discovering curiosity (exploration_significant_planes), the steepest
+%   for the paper's (exploration_steepest_plane).
+best_plane(Settings, Entries, Best) :-
+    (   Settings.curiosity == discover
+    ->  call_bridge(exploration_significant_planes,
+                    _{antecedents:Entries, ridge:Settings.ridge, seed:Settings.seed,
+                      permutations:Settings.permutations,
+                      significance:Settings.significance}, Best)
+    ;   call_bridge(exploration_steepest_plane,
+                    _{antecedents:Entries, ridge:Settings.ridge}, Best)
+    ).
 
 %   explored(+Cand, +Explored, -Id, -Explored1): Explored with the
 %   candidate added as the next antecedent, Id (a<N>); for more pours of an

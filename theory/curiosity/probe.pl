@@ -55,7 +55,9 @@ unprobed(cand(_, _, Via), Settings) :-
 probe_loop([C|Rest], Entries, Settings, I1, K, Tried, Cand, Attempt, Rest1, Probes) :-
     C = cand(Props, _, _),
     call_bridge(exploration_probe, _{antecedents:Entries, antecedent:Props,
-                                     iteration:I1, attempt:K}, R),
+                                     iteration:I1, attempt:K, batch:Settings.batch,
+                                     seed:Settings.seed, probe:Settings.probe,
+                                     qualify:Settings.qualify}, R),
     Tried1 = [t(R.score, K, C)|Tried],
     K1 is K + 1,
     (   R.pass == true

@@ -4,7 +4,8 @@
 
 % A stand-in for the probes' simulations: pouring high passes (0.9), pouring
 % mid-height comes close (0.4), anything else finds nothing new (0.1).
-settings(_{curiosity:discover, probe:8, probe_attempts:3}).
+settings(_{curiosity:discover, probe:8, probe_attempts:3, batch:31, seed:1,
+            qualify:weighted}).
 
 test(the_first_candidate_whose_probe_passes_is_explored,
      [ setup(assertz((bridge:exploration_probe(Req, Reply) :- fake_probe(Req, Reply)))),
@@ -39,6 +40,8 @@ test(more_batches_and_a_0_are_explored_without_a_probe,
     choose(st(1, [], [C], []), S.put(probe, 0), C, 0, [], []).
 
 fake_probe(Req, Reply) :-
+    % the request carries the settings the probe needs: Python holds none
+    _{batch:31, seed:1, probe:8, qualify:weighted} :< Req,
     (   memberchk(pour_high, Req.antecedent) -> Score = 0.9
     ;   memberchk(pour_mid_height, Req.antecedent) -> Score = 0.4
     ;   Score = 0.1

@@ -1,8 +1,8 @@
 :- module(curiosity_rules,
           [ learned/6,                % +Explored, +SetAside, +Settings, +Stop, +Left, -Facts
             rule_facts/3,             % +Explored, +Qualified, -Facts
-            general_layer/2,          % +Facts, -General
-            learned_layer/2,          % +Explored, -Layer
+            general_layer/3,          % +Facts, +Settings, -General
+            learned_layer/3,          % +Explored, +Settings, -Layer
             write_theory/4            % +File, +Settings, +Facts, +General
           ]).
 /** <module> Qualify and the learned theory
@@ -11,7 +11,7 @@ At the end of the loop each explored antecedent is qualified (the outcome
 of its simulations, exploration_qualify) and becomes defeasible rules, one
 per expectation, with their provenance; the settings of the run and the
 candidates set aside are facts beside them. The general rules, learned
-from every pour, are the second layer (general_layer/2). write_theory/4
+from every pour, are the second layer (general_layer/3). write_theory/4
 writes both, once, in the common subset of Prolog and ASP.
 */
 
@@ -31,11 +31,13 @@ writes both, once, in the common subset of Prolog and ASP.
 %   (its rules are its one layer), and nothing is qualified.
 learned(Explored, SetAside, Settings, Stop, Left, Facts) :-
     (   Settings.curiosity == learn
-    ->  Qualified = []                  % its one layer: learned_layer/2
+    ->  Qualified = []                  % its one layer: learned_layer/3
     ;   Qualified = Explored
     ),
     maplist(entry, Qualified, Entries),
-    call_bridge(exploration_qualify, _{antecedents:Entries, mode:Settings.qualify}, Reply),
+    (   Settings.curiosity == discover -> Batches = true ; Batches = false ),
+    call_bridge(exploration_qualify, _{antecedents:Entries, mode:Settings.qualify,
+                                       batches:Batches}, Reply),
     setting_facts(Settings, Reply, Stop, Explored, Left, SettingFacts),
     findall(set_aside(I, K, P), ( member(aside(I, K, Ps), SetAside), member(P, Ps) ), AsideFacts),
     rule_facts(Qualified, Reply.antecedents, RuleFacts),
@@ -110,7 +112,7 @@ via_facts(Id, via(E, X, Sign), [ provenance(Id, followed, E),
                                  provenance(Id, direction, X),
                                  provenance(Id, sign, Sign) ]).
 
-%!  general_layer(+Facts:list, -General:list) is det.
+%!  general_layer(+Facts:list, +Settings:dict, -General:list) is det.
 %
 %   General are the facts of the general layer (bridge/learning/layers.py,
 %   exploration_general): rules learned from every pour of the
@@ -118,17 +120,17 @@ via_facts(Id, via(E, X, Sign), [ provenance(Id, followed, E),
 %   level, support, kept, confidence in permille), setting/2 facts of how
 %   many pours they rest on, and the sup/2 facts that order both layers
 %   (Algorithm 1's rules are those of Facts, with their confidence).
-general_layer(Facts, General) :-
+general_layer(Facts, Settings, General) :-
     findall(_{id:Id, expectation:E, holds:H, body:B, confidence_permille:C},
             ( member(rule(Id, _, Head), Facts),
               head_expectation(Head, E, H),
               findall(P, member(body(Id, P), Facts), B),
               memberchk(provenance(Id, confidence_permille, C), Facts)
             ), Rules),
-    call_bridge(exploration_general, _{rules:Rules}, Reply),
+    call_bridge(exploration_general, _{rules:Rules, seed:Settings.seed}, Reply),
     layer_facts(Reply, General).
 
-%!  learned_layer(+Explored:list, -Layer:list) is det.
+%!  learned_layer(+Explored:list, +Settings:dict, -Layer:list) is det.
 %
 %   Layer are the facts of the learning curiosity's theory, one layer
 %   (exploration_general with the explored antecedents): per expectation,
@@ -136,9 +138,9 @@ general_layer(Facts, General) :-
 %   the theory does not give, each naming its antecedent, with every pour
 %   of the run pooled for the likelihoods; the setting/2 facts of how many
 %   pours they rest on, and their sup/2 facts.
-learned_layer(Explored, Layer) :-
+learned_layer(Explored, Settings, Layer) :-
     maplist(entry, Explored, Entries),
-    call_bridge(exploration_general, _{rules:[], explored:Entries}, Reply),
+    call_bridge(exploration_general, _{rules:[], explored:Entries, seed:Settings.seed}, Reply),
     layer_facts(Reply, Layer).
 
 %   layer_facts(+Reply, -Facts): the rules of exploration_general's

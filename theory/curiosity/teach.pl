@@ -49,7 +49,9 @@ teach_queue(Explored, Id, Props, Rest, Settings, Added, Queue) :-
     ->  Added = [], Queue = []
     ;   maplist(entry, Explored, Entries),
         findall(P, member(cand(P, _, _), Pool), Cands),
-        call_bridge(exploration_teach, _{antecedents:Entries, candidates:Cands}, Reply),
+        call_bridge(exploration_teach, _{antecedents:Entries, candidates:Cands,
+                                         seed:Settings.seed, batch:Settings.batch,
+                                         uncertainty:Settings.uncertainty}, Reply),
         findall(Key-C, ( nth1(K, Pool, C), nth1(K, Reply.value, V), V > 0, Key is -V ),
                 Keyed),
         keysort(Keyed, Sorted),

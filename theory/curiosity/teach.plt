@@ -29,14 +29,14 @@ test(queue_most_valuable_first_bounded,
      [ setup(assertz((bridge:exploration_teach(Req, Reply) :- fake_teach(Req, Reply)))),
        cleanup(retractall(bridge:exploration_teach(_, _))) ]) :-
     Explored = [ant(a1, [], none, initial)],
-    teach_queue(Explored, a1, [], [], _{body:1, queue:2}, Added, Queue),
+    teach_queue(Explored, a1, [], [], _{body:1, queue:2, seed:1, batch:4, uncertainty:1.0}, Added, Queue),
     % the two most valuable children, the most valuable first
     Queue == [cand([pour_to_side], a1, near), cand([light_liquid], a1, near)],
     Added == Queue,
     % A_new as it was is valued again, and the explored antecedent is a
     % candidate for another batch; a value of 0 is never queued
     Old = cand([pour_to_side], a1, near),
-    teach_queue(Explored, a1, [], [Old], _{body:1, queue:10}, Added1, Queue1),
+    teach_queue(Explored, a1, [], [Old], _{body:1, queue:10, seed:1, batch:4, uncertainty:1.0}, Added1, Queue1),
     Queue1 = [Old, cand([light_liquid], a1, near), cand([], a1, again(a1))],
     Added1 == [cand([light_liquid], a1, near)].
 
@@ -44,6 +44,7 @@ test(queue_most_valuable_first_bounded,
 %   side teaches most, a light liquid next, another batch of the ordinary
 %   pour a little, anything else nothing.
 fake_teach(Req, _{value:Values}) :-
+    _{seed:1, batch:4, uncertainty:1.0} :< Req,    % the settings come with the request
     findall(V, ( member(C, Req.candidates), fake_value(C, V) ), Values).
 
 fake_value([pour_to_side], 3) :- !.

@@ -1,28 +1,28 @@
 """The progress bar (bridge/exploration/progress.py) counts the budget in
-its own unit."""
+the unit explore/1 names: pours, or explored antecedents (rules)."""
 from __future__ import annotations
 
-from types import SimpleNamespace
+import io
 
-import numpy as np
-
-from pantarhei.bridge.exploration.progress import postfix, progress
+from pantarhei.bridge.exploration.progress import open_bar, position, postfix
 
 
-def test_progress_counts_pours_for_discover_and_rules_for_the_paper():
-    pours = np.zeros((40, 30))
-    discover = SimpleNamespace(settings={"curiosity": "discover", "budget": 3, "batch": 31},
-                               params=pours)
-    assert progress(discover, 2) == (93, "pour", 40)
-    assert postfix(discover, 1, 5) == "1 batch, 5 in A_new"
-    paper = SimpleNamespace(settings={"curiosity": "paper", "budget": 3, "batch": 31}, params=pours)
-    assert progress(paper, 2) == (3, "rule", 2)
-    assert postfix(paper, 2) == "40 simulations, 2 rules"
+def test_a_bar_of_pours_counts_pours_and_says_batches():
+    assert position("pour", 2, 40) == 40
+    assert postfix("pour", 1, 40, 5) == "1 batch, 5 in A_new"
+    assert postfix("pour", 10, 40, 64) == "10 batches, 64 in A_new"
 
 
-def test_progress_counts_every_pour_for_the_learning_curiosity():
-    pours = np.zeros((40, 30))
-    learn = SimpleNamespace(settings={"curiosity": "learn", "budget": 3, "batch": 4,
-                                      "pours": 775}, params=pours)
-    assert progress(learn, 10) == (775, "pour", 40)
-    assert postfix(learn, 10, 64) == "10 batches, 64 in A_new"
+def test_a_bar_of_rules_counts_explored_antecedents_and_says_simulations():
+    assert position("rule", 2, 40) == 2
+    assert postfix("rule", 2, 40) == "40 simulations, 2 rules"
+
+
+def test_the_bar_moves_to_where_the_exploration_is(monkeypatch):
+    err = io.StringIO()
+    monkeypatch.setattr("sys.stderr", err)
+    bar = open_bar(93, "pour", 1, 31)
+    assert (bar.bar.total, bar.bar.n) == (93, 31)
+    bar.show(2, 62, 7)
+    assert bar.bar.n == 62 and "2 batches, 7 in A_new" in str(bar.bar)
+    bar.close()

@@ -44,8 +44,7 @@ def test_the_prompt_oracle_answers_through_the_same_door(eng):
 
 def session(P: np.ndarray) -> Session:
     rng = np.random.default_rng(0)
-    return Session(settings={"ridge": 1.0, "permutations": 19, "seed": 1, "qualify": "weighted"},
-                   run="", store=None, simulator=None, oracle_version="", params=P,
+    return Session(run="", store=None, simulator=None, oracle_version="", params=P,
                    scores=rng.random((len(P), 9)))
 
 
@@ -61,18 +60,20 @@ def test_planes_are_fitted_again_only_when_the_weights_change():
     P = sample([], 40, seed=3)
     s = session(P)
     X, w = normalise(P), np.ones(40)
-    first = s.planes_of("a1", X, s.scores, w)
-    assert s.planes_of("a1", X, s.scores, w.copy()) is first
+    first = s.planes_of("a1", X, s.scores, w, 1.0)
+    assert s.planes_of("a1", X, s.scores, w.copy(), 1.0) is first
     more = np.concatenate([w, np.zeros(5)])            # new pours outside its support
     X5 = np.vstack([X, X[:5]])
     S5 = np.vstack([s.scores, s.scores[:5]])
-    assert s.planes_of("a1", X5, S5, more) is first
+    assert s.planes_of("a1", X5, S5, more, 1.0) is first
+    assert s.planes_of("a1", X, s.scores, w, 0.0) is not first     # fitted on other settings
     w2 = w.copy()
     w2[0] = 0.5
-    assert s.planes_of("a1", X, s.scores, w2) is not first
-    tested = s.tested_of(1, "a1", X, s.scores, w2)
-    assert s.tested_of(1, "a1", X, s.scores, w2) is tested
-    assert s.tested_of(1, "a1", X, s.scores, w) is not tested
+    assert s.planes_of("a1", X, s.scores, w2, 1.0) is not first
+    tested = s.tested_of(1, "a1", X, s.scores, w2, 1.0, 19, 1)
+    assert s.tested_of(1, "a1", X, s.scores, w2, 1.0, 19, 1) is tested
+    assert s.tested_of(1, "a1", X, s.scores, w2, 1.0, 19, 2) is not tested
+    assert s.tested_of(1, "a1", X, s.scores, w, 1.0, 19, 2) is not tested
 
 
 def test_failed_pours_take_no_part_in_the_weights_or_the_verdicts():
@@ -82,5 +83,5 @@ def test_failed_pours_take_no_part_in_the_weights_or_the_verdicts():
     entries = [{"id": "a1", "antecedent": ["pour_low"]}, {"id": "a2", "antecedent": ["pour_to_side"]}]
     W = s.weight_matrix(entries)
     assert W.shape == (2, 19) and np.allclose(W.sum(axis=0), 1.0)
-    verdicts = s.verdicts(entries)
+    verdicts = s.verdicts(entries, "weighted")
     assert len(verdicts) == 2 and all(len(v) == 9 for v in verdicts)

@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 
 from pantarhei.bridge.exploration.session import Session
-from pantarhei.bridge.exploration.steepest import best_plane
+from pantarhei.bridge.exploration.steepest import significant_planes, steepest_plane
 from pantarhei.oracle.generative import sample
 from pantarhei.oracle.synthetic import DEPENDS, scores
 from pantarhei.theory.lexicon import load_vocabulary
@@ -17,24 +17,25 @@ NAMES = load_vocabulary().parameter_names
 ENTRIES = [{"id": "a1", "antecedent": []}, {"id": "a2", "antecedent": ["pour_low"]}]
 
 
-def session(curiosity: str) -> Session:
+#: What a request of the discovering curiosity carries beside the antecedents.
+TEST = {"significance": 0.05, "permutations": 99, "seed": 1, "ridge": 1.0}
+
+
+def session() -> Session:
     P = np.vstack([sample(e["antecedent"], 62, seed=i) for i, e in enumerate(ENTRIES)])
     S = np.array([scores(dict(zip(NAMES, p))) for p in P])
-    settings = {"curiosity": curiosity, "significance": 0.05, "permutations": 99, "seed": 1,
-                "ridge": 1.0}
-    return Session(settings=settings, run="", store=None, simulator=None, oracle_version="",
-                   params=P, scores=S)
+    return Session(run="", store=None, simulator=None, oracle_version="", params=P, scores=S)
 
 
 def test_the_papers_steepest_plane_follows_a_real_dependency():
-    best = best_plane(session("paper"), {"antecedents": ENTRIES})
+    best = steepest_plane(session(), {"antecedents": ENTRIES, "ridge": 1.0})
     top = max(best["gradient"], key=lambda n: abs(best["gradient"][n]))
     assert best["antecedent"] in ("a1", "a2") and best["slope"] > 0
     assert top in DEPENDS[best["expectation"]]
 
 
 def test_the_significant_planes_move_along_real_dependencies_towards_the_flip():
-    best = best_plane(session("discover"), {"antecedents": ENTRIES})
+    best = significant_planes(session(), {"antecedents": ENTRIES, **TEST})
     assert best["significant"] and best["followed"][0]["antecedent"] == best["antecedent"]
     assert best["directions"][0]["expectation"] == best["expectation"]
     slopes = [d["slope"] for d in best["directions"]]
@@ -48,8 +49,8 @@ def test_the_significant_planes_move_along_real_dependencies_towards_the_flip():
 
 
 def test_without_pours_enough_to_fit_nothing_is_significant():
-    s = session("discover")
+    s = session()
     s.params, s.scores = s.params[:1], s.scores[:1]
-    best = best_plane(s, {"antecedents": ENTRIES[:1]})
+    best = significant_planes(s, {"antecedents": ENTRIES[:1], **TEST})
     assert not best["significant"] and best["followed"] == [] and best["slope"] == 0.0
     assert best["antecedent"] == "a1"

@@ -38,5 +38,5 @@ def test_probe_means_run_over_every_probe_so_far():
 
 def test_the_plot_is_a_png(tmp_path):
     path = tmp_path / "t.trace.png"
-    plot_trace(path, TRACE, {"curiosity": "discover"})
+    plot_trace(path, TRACE, "synthetic", 3)
     assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
