@@ -50,9 +50,8 @@ def main(argv: Sequence[str] | None = None, pin_math: bool = False) -> int:
     """Run the command of `argv`; with `pin_math`, a command that computes
     with floats first restarts this process with the baseline math (the
     arguments are checked before, so that a bad one is refused at once)."""
-    try:        # the help texts read the theory's defaults: that needs clingo's parser
+    try:        # the help texts read the theory's defaults
         args = parser().parse_args(argv)
-        from pantarhei.oracle.store import StoreError   # its default path is one of the defaults
     except (MissingEngine, TheoryFileError) as e:
         print(f"pantarhei: {e}", file=sys.stderr)
         return 2
@@ -72,19 +71,28 @@ def main(argv: Sequence[str] | None = None, pin_math: bool = False) -> int:
     except (MissingEngine, TheoryFileError) as e:
         print(f"pantarhei {args.command}: {e}", file=sys.stderr)
         code = 2
-    except StoreError as e:     # the results it could not keep are in the file it names
-        print(f"pantarhei {args.command}: {e}", file=sys.stderr)
-        code = 1
     except KeyboardInterrupt:
         print(f"pantarhei {args.command}: interrupted", file=sys.stderr)
         code = 130
     except BrokenPipeError:
         code = 0
+    except Exception as e:
+        if not _store_error(e):
+            raise
+        print(f"pantarhei {args.command}: {e}", file=sys.stderr)   # the results it could not
+        code = 1                                                    # keep are in the file it names
     try:
         sys.stdout.flush()
     except BrokenPipeError:
         code = 0
     return code
+
+
+def _store_error(e: BaseException) -> bool:
+    """Is `e` the store's StoreError? (Only a command that opened the store
+    can raise one: the store's module is not imported for the others.)"""
+    store = sys.modules.get("pantarhei.oracle.store")
+    return store is not None and isinstance(e, store.StoreError)
 
 
 def entry() -> None:

@@ -1,12 +1,17 @@
 """Files written whole or not at all: into a temporary file beside the
 target, then renamed over it, so that a reader, or a crash half-way, never
-sees part of one."""
+sees part of one; and which format a theory file's name says it is in."""
 from __future__ import annotations
 
 import os
 import tempfile
 from pathlib import Path
 from typing import Callable
+
+
+def is_dfl(path: Path | str) -> bool:
+    """Is the theory file at `path` DFL (its name ends in .dfl), not native facts?"""
+    return str(path).lower().endswith(".dfl")
 
 
 def replace_with(path: Path | str, write: Callable[[Path], None]) -> None:

@@ -1,8 +1,8 @@
 """The theory files (Prolog and ASP), shipped as package data.
 
-The fact files are written in the common subset of Prolog and ASP, so Python
-reads them with clingo's own parser: one reader for ASP and Python, and the
-same files that SWI-Prolog consults.
+The fact files are written in the common subset of Prolog and ASP: SWI-Prolog
+and clingo read them as they are, and Python with its one reader of theory
+files (`read_facts`).
 """
 from __future__ import annotations
 
@@ -28,6 +28,13 @@ Value = Union[int, str, tuple]
 #: The project's defaults (exploration settings, a_0, where the learned
 #: theory and the store go), read by Prolog and Python alike.
 DEFAULTS_FILE = THEORY_DIR / "defaults.pl"
+
+
+def default_theory() -> Path:
+    """The learned theory that the exploration writes and questions ask
+    when no theory file is named (default(theory, F) of defaults.pl, under
+    theory/)."""
+    return THEORY_DIR / str(defaults()["theory"])
 
 
 @lru_cache(maxsize=None)
@@ -77,81 +84,26 @@ def clingo_module():
     """The clingo module, or MissingEngine saying how to install it."""
     try:
         import clingo
-        import clingo.ast  # noqa: F401  (loads the submodule)
     except ImportError:
         raise MissingEngine(CLINGO_MISSING) from None
     return clingo
 
 
 def read_facts(paths: Iterable[Path | str]) -> dict[str, list[tuple]]:
-    """Read ground facts with clingo's parser: predicate name -> argument tuples.
+    """The ground facts of theory files: predicate name -> argument tuples.
 
     Atoms and quoted text both come back as `str`, integers as `int`, and
     compound terms as tuples `(name, arg, ...)`. Facts keep file order.
-    Anything but a ground fact raises TheoryFileError naming file and line.
+    Read by the one Python reader of theory files
+    (bridge/theories/facts.py, which refuses what SWI-Prolog's
+    theory_files.pl refuses, with the same `file:line: what`).
     """
-    ast = clingo_module().ast
+    from pantarhei.bridge.theories.facts import read
+
     facts: dict[str, list[tuple]] = defaultdict(list)
-    messages: list[str] = []
-
-    def logger(_code, message: str) -> None:
-        messages.append(message)
-
-    def on_statement(stm) -> None:
-        if stm.ast_type in (ast.ASTType.Program, ast.ASTType.Comment):
-            return
-        line = f"{stm.location.begin.filename}:{stm.location.begin.line}"
-        head = getattr(stm, "head", None)
-        if (stm.ast_type != ast.ASTType.Rule or stm.body or head is None
-                or head.ast_type != ast.ASTType.Literal or head.sign != ast.Sign.NoSign
-                or head.atom.ast_type != ast.ASTType.SymbolicAtom):
-            raise TheoryFileError(f"{line}: expected a ground fact such as name(arg, 1).")
-        term = _term(head.atom.symbol, line)
-        if isinstance(term, str):
-            facts[term].append(())
-        else:
-            facts[term[0]].append(term[1:])
-
     for path in paths:
-        path = Path(path)
-        if not path.is_file():
-            raise TheoryFileError(f"{path}: no such file")
-        try:
-            ast.parse_files([str(path)], on_statement, logger=logger, message_limit=1)
-        except RuntimeError:
-            first = messages[0].splitlines()[0] if messages else f"{path}: cannot parse"
-            raise TheoryFileError(_clean_clingo_message(first)) from None
+        for f in read(path):
+            facts[f.name].append(tuple(f.args))
     return dict(facts)
 
 
-def _term(t, line: str) -> Value:
-    clingo = clingo_module()
-    SymbolType, ast = clingo.SymbolType, clingo.ast
-
-    kind = t.ast_type
-    if kind == ast.ASTType.SymbolicTerm:
-        sym = t.symbol
-        if sym.type == SymbolType.Number:
-            return sym.number
-        if sym.type == SymbolType.String:
-            return sym.string
-        if sym.type == SymbolType.Function and not sym.arguments and not sym.negative:
-            return sym.name
-    elif kind == ast.ASTType.UnaryOperation and t.operator_type == ast.UnaryOperator.Minus:
-        inner = _term(t.argument, line)
-        if isinstance(inner, int):
-            return -inner
-    elif kind == ast.ASTType.Function and not t.external and t.name:
-        args = tuple(_term(a, line) for a in t.arguments)
-        return (t.name, *args) if args else t.name
-    raise TheoryFileError(f"{line}: expected an atom, an integer, quoted text or a term of those")
-
-
-def _clean_clingo_message(message: str) -> str:
-    # "file:12:5-9: error: syntax error, unexpected ." -> "file:12: syntax error, unexpected ."
-    import re
-
-    m = re.match(r"^(.*?):(\d+):\d+(?:-\d+(?::\d+)?)?: (?:error|info): (.*)$", message)
-    if not m:
-        return message
-    return f"{m.group(1)}:{m.group(2)}: {m.group(3)}"

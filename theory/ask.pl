@@ -31,6 +31,8 @@ theory is checked.
 :- use_module(library(lists)).
 :- use_module(library(apply)).
 :- use_module(library(pairs)).
+:- use_module(library(assoc)).
+:- use_module(library(ordsets)).
 
                  /*******************************
                  *        READING THEORIES      *
@@ -56,7 +58,7 @@ load_theories(Files, Warnings) :-
     maplist(check_read, Read, Warnings0),
     append(Warnings0, Warnings),
     clear_theory,
-    foldl(add_file, Read, [], _),
+    forall(append(Earlier, [File|_], Read), add_file(File, Earlier)),
     check_sup_names(Read),
     defeasible:prepare,
     (   defeasible:superiority_cycle(Cycle)
@@ -97,21 +99,18 @@ aside(body(_, _)).
 aside(learned(_)).
 aside(provenance(_, _, _)).
 
-% add_file(+Read, +Owners0, -Owners): its facts added to the current
-% theory; Owners pairs each rule name with the file that defines it.
-add_file(read(Name, LineFacts, _), Owners0, Owners) :-
-    foldl(add_line(Name), LineFacts, Owners0, Owners).
+% add_file(+Read, +Earlier): its facts added to the current theory; a
+% rule name defined by one of the files read before it (Earlier) is
+% refused.
+add_file(read(Name, LineFacts, _), Earlier) :-
+    forall(member(Line-F, LineFacts), add_line(Name, Earlier, Line, F)).
 
-add_line(Name, Line-F, Owners0, Owners) :-
-    (   F = rule(R, _, _)
-    ->  (   memberchk(R-Other, Owners0)
-        ->  format(string(M), "rule ~w is already defined in ~w", [R, Other]),
-            throw(theory_error(Name, Line, M))
-        ;   Owners = [R-Name|Owners0]
-        )
-    ;   Owners = Owners0
-    ),
-    (   F = fact(L), defeasible:fact(L)
+add_line(Name, Earlier, Line, F) :-
+    (   F = rule(R, _, _), defeasible:rule(R, _, _)
+    ->  once(( member(read(Other, Facts, _), Earlier), memberchk(_-rule(R, _, _), Facts) )),
+        format(string(M), "rule ~w is already defined in ~w", [R, Other]),
+        throw(theory_error(Name, Line, M))
+    ;   F = fact(L), defeasible:fact(L)
     ->  true
     ;   add_theory_fact(F)
     ).
@@ -135,19 +134,37 @@ check_general_rules(Name, LineFacts) :-
     sort(General0, General),
     (   General == []
     ->  true
-    ;   forall(( member(Line-rule(R, _, H), LineFacts), memberchk(R, General) ),
-               check_general_rule(Name, LineFacts, Line, R, H)),
-        forall(( member(R, General), member(Key, [confidence_permille, support, kept]),
-                 last_provenance(LineFacts, R, Key, V) ),
-               check_evidence(Name, LineFacts, R, Key, V))
+    ;   bodies_by_rule(LineFacts, Bodies),
+        forall(( member(Line-rule(R, _, H), LineFacts), ord_memberchk(R, General) ),
+               check_general_rule(Name, Bodies, Line, R, H)),
+        evidence_by_rule(LineFacts, Evidence),
+        forall(( member(R, General), get_assoc(R, Evidence, Facts),
+                 member(Key, [confidence_permille, support, kept]),
+                 last(Facts, R, Key, V) ),
+               check_evidence(Name, Facts, R, Key, V))
     ).
 
-check_general_rule(Name, LineFacts, Line, R, H) :-
-    findall(B, member(_-body(R, B), LineFacts), Bs0),
-    list_to_set(Bs0, Bs),
-    (   member(B, Bs), \+ proposition(B, _, _, _)
-    ->  memberchk(BLine-body(R, B), LineFacts),
-        term_text(B, BT),
+% evidence_by_rule(+LineFacts, -Evidence): an assoc of each rule's
+% Line-provenance(R, Key, V) facts of its evidence, in file order.
+evidence_by_rule(LineFacts, Evidence) :-
+    findall(R-(Line-provenance(R, K, V)),
+            ( member(Line-provenance(R, K, V), LineFacts),
+              memberchk(K, [confidence_permille, support, kept]) ),
+            Pairs0),
+    sort(1, @=<, Pairs0, Pairs),
+    group_pairs_by_key(Pairs, Grouped),
+    list_to_assoc(Grouped, Evidence).
+
+% last(+Facts, +R, +Key, -V): the value the last provenance(R, Key, V)
+% of Facts gives.
+last(Facts, R, Key, V) :-
+    findall(V0, member(_-provenance(R, Key, V0), Facts), Vs),
+    last(Vs, V).
+
+check_general_rule(Name, Bodies, Line, R, H) :-
+    rule_bodies(Bodies, R, LineBodies),
+    (   member(BLine-B, LineBodies), \+ proposition(B, _, _, _)
+    ->  term_text(B, BT),
         format(string(M), "general rule ~w: ~w is not a proposition of the vocabulary", [R, BT]),
         throw(theory_error(Name, BLine, M))
     ;   literal_atom(H, E), \+ expectation(E, _, _)
@@ -157,9 +174,24 @@ check_general_rule(Name, LineFacts, Line, R, H) :-
     ;   true
     ).
 
-last_provenance(LineFacts, R, Key, V) :-
-    findall(V0, member(_-provenance(R, Key, V0), LineFacts), Vs),
-    last(Vs, V).
+% bodies_by_rule(+LineFacts, -Bodies): an assoc of each rule's body
+% literals, Line-Literal in file order, the first line of each literal.
+bodies_by_rule(LineFacts, Bodies) :-
+    findall(R-(Line-B), member(Line-body(R, B), LineFacts), Pairs0),
+    sort(1, @=<, Pairs0, Pairs),
+    group_pairs_by_key(Pairs, Grouped0),
+    maplist(first_lines, Grouped0, Grouped),
+    list_to_assoc(Grouped, Bodies).
+
+first_lines(R-LineBodies0, R-LineBodies) :-
+    foldl(first_line, LineBodies0, [], Rev),
+    reverse(Rev, LineBodies).
+
+first_line(Line-B, Seen, Out) :-
+    (   memberchk(_-B, Seen) -> Out = Seen ; Out = [Line-B|Seen] ).
+
+rule_bodies(Bodies, R, LineBodies) :-
+    (   get_assoc(R, Bodies, LineBodies) -> true ; LineBodies = [] ).
 
 check_evidence(Name, LineFacts, R, Key, V) :-
     (   Key == confidence_permille, \+ ( integer(V), between(0, 1000, V) )
@@ -168,7 +200,7 @@ check_evidence(Name, LineFacts, R, Key, V) :-
     ;   memberchk(Key, [support, kept]), \+ ( integer(V), V >= 0 )
     ->  term_text(V, T),
         format(string(Why), "~w is a count of pours, not ~w", [Key, T])
-    ;   Key == kept, last_provenance(LineFacts, R, support, S), integer(S), V > S
+    ;   Key == kept, last(LineFacts, R, support, S), integer(S), V > S
     ->  format(string(Why), "~w pours kept of ~w described", [V, S])
     ;   fail
     ),
@@ -183,30 +215,35 @@ check_evidence(_, _, _, _, _).
 % file's own rules do not use, by line.
 unknown_names(Name, LineFacts, Warnings) :-
     findall(A, ( member(_-F, LineFacts), concluded(F, L), literal_atom(L, A) ), C0),
-    sort(C0, Concluded),
+    set_assoc(C0, Concluded),
     findall(A, ( member(_-body(_, L), LineFacts), literal_atom(L, A) ), U0),
-    sort(U0, Used),
-    findall(Line-W, unknown_name(Name, LineFacts, Concluded, Used, Line, W), Pairs),
+    set_assoc(U0, Used),
+    bodies_by_rule(LineFacts, Bodies),
+    findall(Line-W, unknown_name(Name, LineFacts, Bodies, Concluded, Used, Line, W), Pairs),
     sort(1, @=<, Pairs, Sorted),
     pairs_values(Sorted, Warnings).
+
+% set_assoc(+List, -Assoc): the members of List as the keys of an assoc.
+set_assoc(List, Assoc) :-
+    sort(List, Set),
+    findall(X-t, member(X, Set), Pairs),
+    list_to_assoc(Pairs, Assoc).
 
 concluded(rule(_, _, H), H).
 concluded(fact(F), F).
 
-unknown_name(Name, LineFacts, Concluded, Used, Line, unknown(Where, What, T)) :-
+unknown_name(Name, LineFacts, Bodies, Concluded, Used, Line, unknown(Where, What, T)) :-
     member(RLine-F, LineFacts),
     (   F = rule(R, _, H),
-        (   findall(B, member(_-body(R, B), LineFacts), Bs0),
-            list_to_set(Bs0, Bs),
-            member(B, Bs), literal_atom(B, A),
-            \+ known_name(A), \+ memberchk(A, Concluded),
-            memberchk(Line-body(R, B), LineFacts),
+        (   rule_bodies(Bodies, R, LineBodies),
+            member(Line-B, LineBodies), literal_atom(B, A),
+            \+ known_name(A), \+ get_assoc(A, Concluded, _),
             format(string(What), "rule ~w: body", [R])
-        ;   literal_atom(H, A), \+ known_name(A), \+ memberchk(A, Used),
+        ;   literal_atom(H, A), \+ known_name(A), \+ get_assoc(A, Used, _),
             Line = RLine,
             format(string(What), "rule ~w: head", [R])
         )
-    ;   F = fact(L), literal_atom(L, A), \+ known_name(A), \+ memberchk(A, Used),
+    ;   F = fact(L), literal_atom(L, A), \+ known_name(A), \+ get_assoc(A, Used, _),
         Line = RLine, What = "fact"
     ),
     term_text(A, T),

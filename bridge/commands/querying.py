@@ -130,7 +130,7 @@ class _stand_ins:
 
     def __enter__(self):
         from pantarhei.bridge.reasoning.asking import files_to_read
-        from pantarhei.bridge.theories.dfl import is_dfl
+        from pantarhei.bridge.files import is_dfl
 
         files, source, unread = files_to_read(self.paths)
         if unread is None and any(is_dfl(p) for p, _, _ in files):

@@ -175,12 +175,15 @@ def files_to_read(paths: list[str] | None) -> tuple[list[tuple[str, str, bool]],
     cannot be read (None when they can): no such file, a directory, a
     device. A DFL file is read here (its errors raised) and written out
     natively for the door; `stand_ins` remove those files."""
-    from pantarhei.bridge.theories.loading import DEFAULT_THEORY, NO_THEORY
+    from pantarhei.theory import default_theory
 
     if not paths:
-        if not DEFAULT_THEORY.is_file():
-            return [], str(DEFAULT_THEORY), NO_THEORY
-        paths = [str(DEFAULT_THEORY)]
+        shipped = default_theory()
+        if not shipped.is_file():
+            from pantarhei.bridge.theories.loading import NO_THEORY
+
+            return [], str(shipped), NO_THEORY
+        paths = [str(shipped)]
     for p in paths:
         path = Path(p)
         if not path.exists():

@@ -43,6 +43,7 @@ from typing import Sequence
 from pantarhei.theory import TheoryFileError
 
 from pantarhei.bridge.theories import facts as theory_facts
+from pantarhei.bridge.files import is_dfl  # noqa: F401  (the format's test, with the format)
 from pantarhei.bridge.theories.model import Rule, Theory, complement, superiority_cycle
 from pantarhei.bridge.theories.native import from_facts
 from pantarhei.bridge.theories.well_formed import value_text
@@ -57,10 +58,6 @@ _DERIVED = re.compile(r"^\s*([a-z][A-Za-z0-9_]*)\s*>\s*([a-z][A-Za-z0-9_]*)\s*#\
 _ARROWS = (("->", "strict"), ("=>", "defeasible"), ("~>", "defeater"))
 _TERM = re.compile(r"^[a-z][A-Za-z0-9_]*(\((.*)\))?$")
 _ARG = re.compile(r"^(\?[A-Za-z_][A-Za-z0-9_]*|[A-Z][A-Za-z0-9_]*|[a-z][A-Za-z0-9_]*|-?[0-9]+)$")
-
-
-def is_dfl(path: Path | str) -> bool:
-    return str(path).lower().endswith(".dfl")
 
 
 def read_dfl(path: Path | str) -> Theory:

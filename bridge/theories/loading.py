@@ -12,10 +12,10 @@ from pantarhei.bridge.theories.dfl import is_dfl, read_dfl
 from pantarhei.bridge.theories.model import Theory
 from pantarhei.bridge.theories.native import read_native
 from pantarhei.bridge.theories.well_formed import source_line, source_text
-from pantarhei.theory import THEORY_DIR, TheoryFileError, defaults
+from pantarhei.theory import TheoryFileError, default_theory, defaults
 
 #: The theory the exploration writes, used when no theory file is named.
-DEFAULT_THEORY = THEORY_DIR / str(defaults()["theory"])
+DEFAULT_THEORY = default_theory()
 NO_THEORY = (f"no learned theory yet ({DEFAULT_THEORY} does not exist): run the exploration "
              f"(`pantarhei explore`) to learn one, or give a theory file with --theory FILE "
              f"(native facts or .dfl, e.g. examples/extend_by_hand/learned.pl)")
