@@ -4,7 +4,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Iterable, Sequence
 
-from pantarhei.theory import THEORY_DIR, VOCABULARY_FILES, _clean_clingo_message
+from pantarhei.theory import THEORY_DIR, VOCABULARY_FILES
 
 from pantarhei.theory import clingo_module
 
@@ -29,7 +29,7 @@ def solve(encodings: Sequence[str | Path], facts: str = "", *, files: Iterable[P
         ctl.ground([("base", [])])
     except RuntimeError:
         first = messages[0].splitlines()[0] if messages else "clingo could not read the theory"
-        raise UserError(_clean_clingo_message(first)) from None
+        raise UserError(clingo_message(first)) from None
     answers: list[list] = []
     with ctl.solve(yield_=True) as handle:
         for model in handle:
@@ -64,3 +64,14 @@ class Checker:
             for model in handle:
                 return list(model.symbols(shown=True))
         return []
+
+
+def clingo_message(message: str) -> str:
+    """clingo's message in one line as `file:line: what`:
+    "file:12:5-9: error: syntax error, unexpected ." -> "file:12: syntax error, unexpected ."."""
+    import re
+
+    m = re.match(r"^(.*?):(\d+):\d+(?:-\d+(?::\d+)?)?: (?:error|info): (.*)$", message)
+    if not m:
+        return message
+    return f"{m.group(1)}:{m.group(2)}: {m.group(3)}"

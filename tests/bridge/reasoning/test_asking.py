@@ -108,3 +108,28 @@ def test_a_theory_error_comes_after_the_scenes(tmp_path: Path) -> None:
             door.answers(["pour_centred", "pour_to_side"])
         with pytest.raises(UserError, match=rf"{bad}:2: sup\(r1, r9\) names r9, which is not a rule"):
             door.answers(["pour_to_side"])
+
+
+def test_a_compiled_state_answers_as_the_sources(tmp_path: Path, monkeypatch) -> None:
+    import shutil
+    import time
+
+    from pantarhei.bridge.reasoning.asking import compiled_state, serving
+
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    swipl = shutil.which("swipl")
+    state = compiled_state(swipl)
+    assert state is not None and state.parent == tmp_path / "pantarhei"
+    first = serving(swipl)                 # from the sources, compiling the state meanwhile
+    assert "-x" not in first
+    deadline = time.monotonic() + 120
+    while not state.is_file() and time.monotonic() < deadline:
+        time.sleep(0.2)
+    second = serving(swipl)
+    assert second[1:3] == ["-x", str(state)]
+    shipped = str(THEORY_DIR / "learned" / "pouring.pl")
+    request = "answer([pour_to_side]).\nwhy([light_liquid], neg(liquid_leaves_source)).\n"
+    said = [subprocess.run([*argv, "--", f"file:{shipped}", shipped], input=request,
+                           capture_output=True, text=True, timeout=120).stdout
+            for argv in (first, second)]
+    assert said[0] == said[1] and said[0].count("end\n") == 2
