@@ -43,11 +43,11 @@ from pantarhei.bridge.evaluation.heldout import (heldout_curves, heldout_theorie
 from pantarhei.bridge.evaluation.map_elites import behaviours_seen
 from pantarhei.bridge.evaluation.paper_rules import paper_rules
 from pantarhei.bridge.evaluation.plan_checks import plan_checks
-from pantarhei.bridge.evaluation.rule_building import consequents
+from pantarhei.bridge.evaluation.rule_building import consequents, rule_ids
 from pantarhei.bridge.exploration.simulation import batch_seed, iteration_seed
 from pantarhei.bridge.exploration.weights import log_densities, weights
 from pantarhei.bridge.theories import loading
-from pantarhei.bridge.theories.model import Theory, antecedent_index, literal_text, rule_id
+from pantarhei.bridge.theories.model import Theory, antecedent_index, literal_text
 
 @dataclass
 class Learned:
@@ -432,9 +432,8 @@ def _differing_rules(theory: Theory, heads: np.ndarray) -> list[str]:
     names = load_vocabulary().expectation_names
     have = {r.id: r.head for r in theory.rules}
     out = []
-    for i, row in enumerate(heads, start=1):
-        for e, holds in zip(names, row):
-            rid = rule_id(i, e)
+    for row, ids in zip(heads, rule_ids(len(heads))):
+        for e, holds, rid in zip(names, row, ids):
             if have.get(rid) != (e if holds else f"neg({e})"):
                 out.append(rid)
     return out

@@ -9,12 +9,12 @@ from typing import Sequence
 
 import numpy as np
 
-from pantarhei.bridge.engines.swipl import text as prolog_text
+from pantarhei.bridge.engines.swipl import engine, text as prolog_text
 from pantarhei.bridge.evaluation.measures import FAILS, HOLDS, UNKNOWN
 from pantarhei.bridge.exploration.qualify import consequent
 from pantarhei.bridge.exploration.weights import log_densities, weights
 from pantarhei.bridge.reasoning import logic
-from pantarhei.bridge.theories.model import Rule, Theory, rule_id
+from pantarhei.bridge.theories.model import Rule, Theory
 from pantarhei.theory.lexicon import load_vocabulary
 
 
@@ -29,14 +29,28 @@ def consequents(antecedents: Sequence[Sequence[str]], P: np.ndarray, S: np.ndarr
                      for i in range(len(antecedents))], dtype=bool).reshape(len(antecedents), -1)
 
 
+def rule_ids(count: int) -> list[list[str]]:
+    """The ids of Algorithm 1's rules for the explored antecedents 1 to
+    `count`, per antecedent one for each expectation in the vocabulary's
+    order, as explore/1 names them (learned_rules:rule_id/3)."""
+    if count < 1:
+        return []
+    e = engine()
+    e.use_module("learned_rules")
+    r = e.once("findall(Ids, (between(1, N, I), "
+               "findall(Id, (member(E, Es), learned_rules:rule_id(I, E, Id)), Ids)), Rows)",
+               N=int(count), Es=load_vocabulary().expectation_names)
+    return [[prolog_text(x) for x in row] for row in r["Rows"]]
+
+
 def theory_of(antecedents: Sequence[Sequence[str]], heads: np.ndarray, source: str) -> Theory:
     """A learned theory: for each antecedent, one defeasible rule per
     expectation, concluding it or its negation."""
     names = load_vocabulary().expectation_names
     t = Theory(source=source)
-    for i, (a, row) in enumerate(zip(antecedents, heads), start=1):
-        for e, holds in zip(names, row):
-            rid = rule_id(i, e)
+    ids = rule_ids(len(antecedents))
+    for a, row, row_ids in zip(antecedents, heads, ids):
+        for e, holds, rid in zip(names, row, row_ids):
             t.rules.append(Rule(rid, "defeasible", e if holds else f"neg({e})", tuple(sorted(a))))
             t.learned.add(rid)
     return t

@@ -236,12 +236,6 @@ class Theory:
                     raise TheoryFileError(f"{where}: sup({a}, {b}) names {x}, which is not a rule")
 
 
-def rule_id(antecedent: int, expectation: str) -> str:
-    """The id of Algorithm 1's rule for the i-th explored antecedent and an
-    expectation (theory/curiosity/rules.pl makes the same ids): `r<i>_<E>`."""
-    return f"r{int(antecedent)}_{expectation}"
-
-
 def antecedent_id(i: int) -> str:
     """The id of the i-th explored antecedent in provenance facts: `a<i>`."""
     return f"a{int(i)}"

@@ -20,6 +20,7 @@ writes both, once, in the common subset of Prolog and ASP.
 :- use_module(bridge).
 :- use_module(state).
 :- use_module(settings).
+:- use_module('../learned_rules', [rule_id/3]).
 
 %!  learned(+Explored:list, +SetAside:list, +Settings:dict, +Stop, +Left:integer, -Facts:list) is det.
 %
@@ -84,7 +85,8 @@ antecedent_facts(Qualified, ant(Id, Props, Parent, Via), Facts, Tail) :-
 %   rule of one outcome O of the antecedent AId, its body and provenance.
 outcome_facts(AId, Props, Parent, Via, Q, O, Facts, Tail) :-
     sub_atom(AId, 1, _, 0, Num),
-    atomic_list_concat([r, Num, '_', O.expectation], Id),
+    atom_number(Num, I),
+    rule_id(I, O.expectation, Id),
     (   O.holds == true -> Head = O.expectation ; Head = neg(O.expectation) ),
     findall(body(Id, P), member(P, Props), Bodies),
     via_facts(Id, Via, ViaFacts0),

@@ -81,3 +81,27 @@ def test_answers_are_what_swi_prolog_concludes_with_the_rules_likelihoods():
     assert (verdict[1] == UNKNOWN).all() and np.isnan(lik[1]).all()
     assert np.array_equal(predict(th, [["pour_to_side", "heavy_liquid"], ["pour_low"]]), verdict)
 
+
+
+def test_rules_are_named_as_explore_names_them():
+    """theory_of's rules for the antecedents and consequents of a theory
+    that explore/1 wrote are that theory's rules, ids included."""
+    from pathlib import Path
+
+    from pantarhei.bridge.theories.loading import read_theory
+
+    fixture = Path(__file__).parents[1] / "exploration" / "fixtures" / "paper_synthetic_seed3.pl"
+    written = read_theory(fixture)
+    by_antecedent: dict[int, dict[str, object]] = {}
+    for rid, key, value in written.provenance:
+        if key == "antecedent":
+            by_antecedent.setdefault(int(str(value)[1:]), {})[rid] = written.rule(rid)
+    ants, heads = [], []
+    for i in sorted(by_antecedent):
+        rules = {r.head.removeprefix("neg(").rstrip(")"): r for r in by_antecedent[i].values()}
+        ants.append(next(iter(rules.values())).body)
+        heads.append([not rules[e].head.startswith("neg(") for e in NAMES])
+    assert len(ants) > 3
+    rebuilt = theory_of(ants, np.array(heads), "rebuilt")
+    assert sorted((r.id, r.head, tuple(sorted(r.body))) for r in rebuilt.rules) == \
+        sorted((r.id, r.head, tuple(sorted(r.body))) for r in written.rules)
