@@ -69,7 +69,12 @@ def load(paths: Path | str | list | tuple | None = None, check: bool = True,
     try:
         theory = merge(theories)
         if check:
-            theory.check_superiority()
+            if len(theories) == 1:
+                theory.check_superiority()
+            else:           # sup/2 may cross files: said where each file says it
+                ids = {r.id for r in theory.rules}
+                for t in theories:
+                    t.check_superiority(ids)
         theory.check_acyclic()
     except TheoryFileError as e:
         raise UserError(str(e)) from None
@@ -113,8 +118,7 @@ def merge(theories: list[Theory]) -> Theory:
                 out.facts.append(f)
         for r in t.rules:
             if r.id in owner:
-                where = source_line(source_text(t.source), rf"{re.escape(r.id)}\b", t.source)
-                raise TheoryFileError(f"{where}: rule {r.id} is already defined in {owner[r.id]}")
+                raise TheoryFileError(f"{t.where(r.id)}: rule {r.id} is already defined in {owner[r.id]}")
             owner[r.id] = t.source
             out.rules.append(r)
         out.sup.extend(t.sup)

@@ -224,10 +224,11 @@ class Theory:
                     if set(s.body) < rb and (s.id, r.id) not in explicit and (r.id, s.id) not in explicit]
         return successors
 
-    def check_superiority(self) -> None:
-        """Raise TheoryFileError if sup/2 names a rule that does not exist."""
+    def check_superiority(self, ids: set[str] | None = None) -> None:
+        """Raise TheoryFileError if sup/2 names a rule that does not exist
+        (of `ids` when given: the rules of the theory this file is part of)."""
         text = source_text(self.source)
-        ids = {r.id for r in self.rules}
+        ids = {r.id for r in self.rules} if ids is None else ids
         for a, b in self.sup:
             for x in (a, b):
                 if x not in ids:

@@ -133,3 +133,30 @@ def test_a_compiled_state_answers_as_the_sources(tmp_path: Path, monkeypatch) ->
                            capture_output=True, text=True, timeout=120).stdout
             for argv in (first, second)]
     assert said[0] == said[1] and said[0].count("end\n") == 2
+
+
+#: Theories of several files (name -> texts) that Python's loader (plan,
+#: conclusions, convert) and ask's refuse alike.
+MERGED = {
+    "a rule defined twice": ["fact(a).\nrule(r1, defeasible, b).\n",
+                             "fact(c).\n% r1 again\nrule(r1, defeasible, d).\n"],
+    "sup across files": ["rule(r1, defeasible, b).\n", "rule(r2, defeasible, neg(b)).\nsup(r2, r1).\n"],
+    "sup naming no rule": ["rule(r1, defeasible, b).\n", "rule(r3, defeasible, b).\nsup(r3, r9).\n"],
+}
+
+
+@pytest.mark.parametrize("name", sorted(MERGED))
+def test_python_merges_files_as_prolog_does(name: str, tmp_path: Path, capsys) -> None:
+    paths = []
+    for i, text in enumerate(MERGED[name]):
+        paths.append(tmp_path / f"t{i}.pl")
+        paths[-1].write_text(text)
+    try:
+        loading.load(paths, pouring=True)
+        python = "loaded"
+    except UserError as e:
+        python = str(e)
+    with Door([(str(p), str(p), False) for p in paths], "") as door:
+        _, error = door.status()
+    capsys.readouterr()
+    assert python == (error or "loaded")
