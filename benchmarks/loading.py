@@ -1,8 +1,9 @@
-"""Loading a theory file and answering with it: Python's reader (what ask,
-plan, convert and conclusions read), SWI-Prolog's
+"""Loading a theory file and answering with it: Python's reader (what plan,
+convert and conclusions read), SWI-Prolog's
 (theory_files:load_theory_facts/2) and defeasible:load_theory/1 whole (read,
 checked, indexed), clingo's conclusions with one fact (defeasible.lp), and
-`pantarhei ask --theory` end to end, on random learned theories of pouring
+`pantarhei ask --theory` end to end (SWI-Prolog alone reads the file,
+theory/ask.pl), on random learned theories of pouring
 of 1,000 to 100,000 rules (bridge/theories/families.pouring, written in
 the native format: rule, body and learned facts).
 
