@@ -22,8 +22,11 @@ file, one module per concern, in the order of the loop:
   | state.pl    | the loop's state: A_new, the explored antecedents, those set aside |
   | loop.pl     | the loop, its budget, and one step of Algorithm 1 |
   | probe.pl    | which candidate a step explores: the probes |
-  | discover.pl | the discovering curiosity's A_new: candidates by novelty |
-  | teach.pl    | the learning curiosity's A_new: candidates by what they teach |
+  | interface.pl | the curiosities: the module of each, and their interface |
+  | teach.pl    | the learning curiosity: candidates by what they teach |
+  | discover.pl | the discovering curiosity: candidates by novelty |
+  | paper.pl    | the paper's curiosity: modify/5 along the steepest plane |
+  | plane_steps.pl | what the discovering and the paper's curiosity share |
   | modify.pl   | direction and modify: new antecedents from a plane |
   | rules.pl    | qualify, the general layer, and both written as one theory |
   | oracle.pl   | the oracle at the Prolog prompt: sample, describe, simulate |
@@ -38,7 +41,8 @@ candidates, the outcome of an antecedent's simulations) is done in Python
 behind foreign predicates of the module =bridge=, which `pantarhei
 explore` and `pantarhei prolog` register (bridge.pl lists them).
 
-Three curiosities share the loop (option curiosity/1):
+Three curiosities share the loop (option curiosity/1), each a module
+behind the interface of interface.pl, which names them:
 
   - `paper`: Algorithm 1 as the paper states it. The steepest plane of all
     explored antecedents is followed when its slope exceeds slope(X),
@@ -65,8 +69,11 @@ Three curiosities share the loop (option curiosity/1):
 :- use_module(curiosity/settings).
 :- use_module(curiosity/state).
 :- use_module(curiosity/modify).
+:- use_module(curiosity/plane_steps).
 :- use_module(curiosity/discover).
 :- use_module(curiosity/teach).
+:- use_module(curiosity/paper).
+:- use_module(curiosity/interface).
 :- use_module(curiosity/probe).
 :- use_module(curiosity/loop).
 :- use_module(curiosity/rules).

@@ -2,12 +2,13 @@
           [ discover_queue/10,        % +Best, +Explored, +Id, +Props, +Away, +Rest, +Settings, +I, -Added, -Queue
             more/7,                   % +Added, +Settings, +Id, +Props, +Parent, +Via, -More
             jumps/4,                  % +Settings, +Iteration, +Exclude, -New
-            neighbours/3              % +Props, +Exclude, -New
+            neighbours/3,             % +Props, +Exclude, -New
+            probe_entry/2             % +Probe, -Entry
           ]).
-/** <module> The discovering curiosity's queue A_new
+/** <module> The discovering curiosity
 
-After each explored antecedent, the discovering curiosity (option
-curiosity(discover)) makes A_new anew. A plane's slopes count only where
+Option curiosity(discover), behind the interface of interface.pl. After
+each explored antecedent, the discovering curiosity makes A_new anew. A plane's slopes count only where
 they beat shuffles of the same weighted pours (a permutation test at the
 significance level given as significance(X)). The candidates of a step are the
 antecedents that move the pours past the point where a significant plane's
@@ -23,6 +24,11 @@ reach the novelty level. When
 nothing reaches it, the antecedent just explored gets more pours
 (resample/1, more/7), which may change the forest's mind; when that is
 spent too and A_new is empty, the exploration stops.
+
+Before a candidate's batch, its first `probe` pours are simulated
+(probe.pl); the budget is `budget` batches' worth of pours, batches and
+probes together; with prior_batch(1) the priors take the budget's last
+batch (loop.pl). Its theory's second layer is the general rules.
 */
 
 :- use_module(library(apply)).
@@ -33,6 +39,61 @@ spent too and A_new is empty, the exploration stops.
 :- use_module(bridge).
 :- use_module(state).
 :- use_module(modify).
+:- use_module(plane_steps).
+
+% The interface of interface.pl.
+
+budget(Settings, Pours) :-
+    Pours is Settings.budget * Settings.batch.
+
+progress_bar(Settings, _{total:Total, unit:pour}) :-
+    budget(Settings, Total).
+
+probe_size(Settings, Pours) :-
+    Pours is min(Settings.probe, Settings.batch).
+
+%   A candidate is probed unless probes are off (probe(0)), or it is a_0,
+%   the priors or more pours of an explored antecedent.
+probed(cand(_, _, Via), Settings) :-
+    Settings.probe =\= 0,
+    Via \== initial,
+    Via \== prior,
+    Via \= more(_, _).
+
+priors_due(Explored, Settings) :-
+    Settings.prior_batch =:= 1,
+    \+ memberchk(ant(_, [], _, prior), Explored).
+
+after_batch(step(I1, Id, Cand, Explored, Rest, SetAside, Probes, Sim), Settings, ANew, Trace) :-
+    Cand = cand(Props, Parent, Via),
+    maplist(entry, Explored, Entries),
+    call_bridge(exploration_significant_planes,
+                _{antecedents:Entries, ridge:Settings.ridge, seed:Settings.seed,
+                  permutations:Settings.permutations,
+                  significance:Settings.significance}, Best),
+    append(Rest, SetAside, Away),
+    discover_queue(Best, Explored, Id, Props, Away, Rest, Settings, I1, Added, Queue),
+    more(Added, Settings, Id, Props, Parent, Via, More),
+    append(More, Queue, ANew),
+    length(ANew, Left),
+    plane_step_trace(Best, Best.significant, I1-Id, Cand, Sim, Added, Left, Trace0),
+    findall(_{expectation:E, parameters:Xs},
+            ( member(Dn, Best.directions), get_dict(expectation, Dn, E),
+              get_dict(moves, Dn, Ms),
+              findall(X, ( member(M, Ms), get_dict(parameter, M, X) ), Xs) ),
+            Planes),
+    maplist(probe_entry, Probes, ProbeTrace),
+    Trace = Trace0.put(_{best:Trace0.best.put(_{significant:Best.significant, planes:Planes}),
+                         probes:ProbeTrace}).
+
+second_layer(_, Facts, Settings, General) :-
+    general_layer_if_asked(Facts, Settings, General).
+
+%!  probe_entry(+Probe, -Entry:dict) is det.
+%
+%   Entry is a probe(Props, Score, Kept, Attempt) of probe.pl as the trace
+%   holds it.
+probe_entry(probe(P, Sc, K, _), _{antecedent:P, score:Sc, kept:K}).
 
 %!  more(+Added:list, +Settings:dict, +Id, +Props:list, +Parent, +Via, -More:list) is det.
 %

@@ -8,9 +8,10 @@ The entry of Algorithm 1: read the options (settings.pl), begin the
 exploration on the oracle's side, run the loop (loop.pl) from a_0 or the
 saved state (state.pl), qualify the explored antecedents, learn the
 general rules of every pour (unless general(false)) and write the learned
-theory with both layers, once (rules.pl), and end. The learning
-curiosity writes one layer: the rules of its explored antecedents. An error ends the exploration on the
-oracle's side too (aborted), then propagates.
+theory with both layers, once (rules.pl), and end. The second layer is
+the curiosity's (second_layer of interface.pl): the learning curiosity
+writes one layer, the rules of its explored antecedents. An error ends
+the exploration on the oracle's side too (aborted), then propagates.
 */
 
 :- use_module(library(lists)).
@@ -19,6 +20,7 @@ oracle's side too (aborted), then propagates.
 :- use_module(state).
 :- use_module(loop).
 :- use_module(rules).
+:- use_module(interface).
 
 %!  explore(+Options:list) is det.
 %
@@ -33,7 +35,7 @@ oracle's side too (aborted), then propagates.
 explore(Options) :-
     settings(Options, Settings),
     course_options(Settings, Course),
-    progress_bar(Settings, Bar),
+    by_curiosity(Settings, progress_bar(Settings, Bar)),
     call_bridge(exploration_begin, Settings.put(_{course:Course, bar:Bar}), Begun),
     catch(explore_loop(Settings, Begun), E,
           ( catch(call_bridge(exploration_end, _{aborted:true}, _), _, true),
@@ -47,12 +49,7 @@ explore_loop(Settings, Begun) :-
     S = st(_, Explored, ANew, SetAside),
     length(ANew, Left),
     learned(Explored, SetAside, Settings, Stop, Left, Facts),
-    (   Settings.curiosity == learn
-    ->  learned_layer(Explored, Settings, General)
-    ;   Settings.general == true
-    ->  general_layer(Facts, Settings, General)
-    ;   General = []
-    ),
+    by_curiosity(Settings, second_layer(Explored, Facts, Settings, General)),
     write_theory(Settings.out, Settings, Facts, General),
     length(Explored, N),
     call_bridge(exploration_end, _{out:Settings.out, stopped:Stop, explored:N,

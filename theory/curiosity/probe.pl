@@ -1,22 +1,22 @@
 :- module(curiosity_probe,
-          [ choose/6,                 % +State, +Settings, -Cand, -Attempt, -Rest, -Probes
-            probe_entry/2             % +Probe, -Entry
+          [ choose/6                  % +State, +Settings, -Cand, -Attempt, -Rest, -Probes
           ]).
 /** <module> Probes: which candidate of A_new a step explores
 
-For the discovering curiosity, the forest's guess that a candidate shows
+When the run's curiosity probes a candidate (its probe policy, probed of
+interface.pl: the discovering curiosity's), the guess that it shows
 something new is checked before a batch is spent on it: the first `probe`
 pours of the candidate's batch are simulated, and when they do not show a
 new, reproducible consequent the candidate is set aside and the next one
-probed, at most `probe_attempts` of them (choose/6). The budget is then
-in pours: `budget` batches' worth,
-batches and probes together (loop.pl).
+probed, at most `probe_attempts` of them (choose/6). The probes are spent
+from the budget (loop.pl).
 */
 
 :- use_module(library(apply)).
 :- use_module(library(lists)).
 :- use_module(bridge).
 :- use_module(state).
+:- use_module(interface).
 
 %!  choose(+State, +Settings:dict, -Cand, -Attempt:integer, -Rest:list, -Probes:list) is det.
 %
@@ -24,8 +24,9 @@ batches and probes together (loop.pl).
 %   whose pours its batch is (0: the iteration's own), Rest A_new
 %   without it and the candidates probed before it, and Probes, probe(Props,
 %   Score, Kept, Attempt) for each candidate probed, in the order of
-%   A_new. Without probes (the paper's curiosity,
-%   probe(0), a_0 and more batches) it is the head of A_new. Otherwise
+%   A_new. When the curiosity does not probe the head of A_new (probed
+%   of interface.pl: not the paper's or the learning curiosity, nor
+%   probe(0), a_0 and more batches) it is the head. Otherwise
 %   the first `probe` pours of the head's batch are simulated, and it
 %   is explored when they show a new, reproducible consequent
 %   (exploration_probe); else the next is probed, at most
@@ -39,14 +40,10 @@ choose(st(I, Explored, [C|Rest], _), Settings, Cand, Attempt, Rest1, Probes) :-
         probe_loop([C|Rest], Entries, Settings, I1, 0, [], Cand, Attempt, Rest1, Probes)
     ).
 
-%   unprobed(+Cand, +Settings): Cand is explored without a probe.
-unprobed(cand(_, _, Via), Settings) :-
-    (   Settings.curiosity \== discover
-    ;   Settings.probe =:= 0
-    ;   Via = initial
-    ;   Via = prior
-    ;   Via = more(_, _)
-    ), !.
+%   unprobed(+Cand, +Settings): Cand is explored without a probe, as the
+%   curiosity's probe policy says.
+unprobed(Cand, Settings) :-
+    \+ by_curiosity(Settings, probed(Cand, Settings)).
 
 %   probe_loop(+Cands, +Entries, +Settings, +I1, +K, +Tried, -Cand,
 %              -Attempt, -Rest, -Probes): probe the head of Cands as
@@ -85,8 +82,3 @@ best_probe(Tried, K) :-
     reverse(Tried, InOrder),
     findall(Key-A, ( member(t(Sc, A, _), InOrder), Key is -Sc ), Keyed),
     keysort(Keyed, [_-K|_]).
-
-%!  probe_entry(+Probe, -Entry:dict) is det.
-%
-%   Entry is a probe(Props, Score, Kept, Attempt) as the trace holds it.
-probe_entry(probe(P, Sc, K, _), _{antecedent:P, score:Sc, kept:K}).

@@ -2,10 +2,11 @@
           [ teach_queue/7,            % +Explored, +Id, +Props, +Rest, +Settings, -Added, -Queue
             children/4                % +Props, +Most, +Exclude, -New
           ]).
-/** <module> The learning curiosity's queue A_new
+/** <module> The learning curiosity
 
-The learning curiosity (option curiosity(learn)) explores what questions
-say: a_0 is the ordinary pour (the empty antecedent), and each explored
+Option curiosity(learn), behind the interface of interface.pl. It
+explores what questions say: a_0 is the ordinary pour (the empty
+antecedent), and each explored
 antecedent makes candidates of itself with one proposition more
 (children/4), up to `body` propositions. An explored antecedent means what
 a question with the same words means, so its pours are those a question
@@ -28,6 +29,43 @@ explored antecedents.
 :- use_module('../validity').
 :- use_module(bridge).
 :- use_module(state).
+:- use_module(rules).
+
+% The interface of interface.pl: the budget is every pour, pours(N);
+% nothing is probed; the theory is one layer, the rules of the explored
+% antecedents (learned_layer/3 of rules.pl).
+
+budget(Settings, Pours) :-
+    Pours = Settings.pours.
+
+progress_bar(Settings, _{total:Total, unit:pour}) :-
+    budget(Settings, Total).
+
+probe_size(_, 0).
+
+probed(_, _) :- fail.
+
+priors_due(_, _) :- fail.
+
+after_batch(step(I1, Id, Cand, Explored, Rest, _, _, Sim), Settings, ANew, Trace) :-
+    Cand = cand(Props, _, _),
+    teach_queue(Explored, Id, Props, Rest, Settings, Added, ANew),
+    learn_trace(I1-Id, Cand, Sim, Added, ANew, Trace).
+
+second_layer(Explored, _, Settings, Layer) :-
+    learned_layer(Explored, Settings, Layer).
+
+%   learn_trace(+I-Id, +Cand, +Sim, +Added, +ANew, -Trace): a step of the
+%   learning curiosity in the trace: what was explored, its simulations,
+%   the children queued and the head of A_new (the next to explore).
+learn_trace(I1-Id, cand(Props, Parent, Via), Sim, Added, ANew, Trace) :-
+    findall(P, member(cand(P, _, _), Added), AddedProps),
+    format(string(ViaText), "~w", [Via]),
+    length(ANew, Left),
+    (   ANew = [cand(Next, _, _)|_] -> true ; Next = [] ),
+    Trace = _{iteration:I1, id:Id, antecedent:Props, parent:Parent, via:ViaText,
+              simulations:Sim.simulations, failed:Sim.failed,
+              added:AddedProps, next:Next, a_new:Left}.
 
 %!  teach_queue(+Explored, +Id, +Props, +Rest, +Settings:dict, -Added:list, -Queue:list) is det.
 %
