@@ -85,3 +85,41 @@ def test_failed_pours_take_no_part_in_the_weights_or_the_verdicts():
     assert W.shape == (2, 19) and np.allclose(W.sum(axis=0), 1.0)
     verdicts = s.verdicts(entries, "weighted")
     assert len(verdicts) == 2 and all(len(v) == 9 for v in verdicts)
+
+
+class Synthetic:
+    """The synthetic oracle's scores, as a simulator gives them."""
+
+    def simulate(self, P: np.ndarray, progress: bool = False) -> np.ndarray:
+        from pantarhei.oracle.synthetic import scores
+        from pantarhei.theory.lexicon import load_vocabulary
+
+        names = load_vocabulary().parameter_names
+        return np.array([scores(dict(zip(names, p))) for p in P])
+
+
+def test_the_pours_come_from_the_requests_and_the_store_holds_each_step_s(tmp_path):
+    """The session keeps no setting nor a count of Prolog's: the batch, the
+    seed and the pours a probe added come with each request, and a
+    checkpoint saves the pours since the one before."""
+    from pantarhei.bridge.exploration.checkpoints import ExplorationStore
+    from pantarhei.bridge.exploration.session import Host
+    from pantarhei.bridge.exploration.simulation import batch_seed
+
+    store = ExplorationStore(tmp_path / "s.sqlite")
+    store.start("r", {})
+    host = Host()
+    host.session = Session(run="r", store=store, simulator=Synthetic(), oracle_version="",
+                           params=np.empty((0, 30)), scores=np.empty((0, 9)))
+    step = {"antecedent": ["pour_low"], "iteration": 1, "attempt": 0, "batch": 10, "seed": 7}
+    probed = host.probe({**step, "probe": 3, "qualify": "weighted",
+                         "antecedents": [{"id": "a1", "antecedent": ["pour_low"]}]})
+    assert probed["simulations"] == 3
+    assert host.simulate({**step, "probed": 3})["simulations"] == 10    # 7 more, not 10
+    assert np.array_equal(host.session.params, sample(["pour_low"], 10, batch_seed(7, 1, 0)))
+    checkpoint = {"state": "s", "trace": {}, "out": str(tmp_path / "t.pl")}
+    host.checkpoint({**checkpoint, "iteration": 1})
+    host.simulate({**step, "iteration": 2, "batch": 4})
+    host.checkpoint({**checkpoint, "iteration": 2})
+    assert store.latest("r", 30, 9).batches == [10, 4]
+    store.close()
