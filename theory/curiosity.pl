@@ -17,7 +17,7 @@
 The control flow of Algorithm 1 lives in the folder curiosity/ beside this
 file, one module per concern, in the order of the loop:
 
-  | explore.pl  | explore/1: the settings, the loop, the learned theory |
+  | run.pl      | explore/1: the settings, the loop, the learned theory |
   | settings.pl | the options of explore/1, checked, with their defaults |
   | state.pl    | the loop's state: A_new, the explored antecedents, those set aside |
   | loop.pl     | the loop, its budget, and one step of Algorithm 1 |
@@ -29,7 +29,7 @@ file, one module per concern, in the order of the loop:
   | plane_steps.pl | what the discovering and the paper's curiosity share |
   | modify.pl   | direction and modify: new antecedents from a plane |
   | rules.pl    | qualify, the general layer, and both written as one theory |
-  | oracle.pl   | the oracle at the Prolog prompt: sample, describe, simulate |
+  | oracle_prompt.pl | the oracle at the Prolog prompt: sample, describe, simulate |
   | bridge.pl   | calling the foreign predicates of Python's oracle |
 
 This module loads them and exports what callers outside use (as
@@ -77,5 +77,5 @@ behind the interface of interface.pl, which names them:
 :- use_module(curiosity/probe).
 :- use_module(curiosity/loop).
 :- use_module(curiosity/rules).
-:- use_module(curiosity/explore).
-:- use_module(curiosity/oracle).
+:- use_module(curiosity/run).
+:- use_module(curiosity/oracle_prompt).

@@ -57,7 +57,7 @@ def _paths(self: "ExploreOptions") -> None:
             setattr(self, o.name, Path(getattr(self, o.name)))
 
 
-#: The options of one exploration (see explore/1 in theory/curiosity/explore.pl):
+#: The options of one exploration (see explore/1 in theory/curiosity/run.pl):
 #: a field for each row of the option table of theory/defaults.pl
 #: (docs/options.md), with its default (None: explore/1 sets it: the pours
 #: of a batch, a_0, workers), and oracle_options, the

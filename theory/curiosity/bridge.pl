@@ -23,7 +23,7 @@ predicates of the module =bridge=, which `pantarhei explore` and
   - bridge:exploration_end(+Request, -Reply)
   - bridge:oracle_sample(+Request, -Reply), bridge:oracle_simulate(+Request, -Reply),
     bridge:oracle_describe(+Request, -Reply): sample/4, simulate/3 and
-    describe/2 of oracle.pl, the oracle at the Prolog prompt
+    describe/2 of oracle_prompt.pl, the oracle at the Prolog prompt
 
 Python holds no setting of the run: each request carries those its
 handler needs (the batch, the seed, the ridge, ...), from the settings of

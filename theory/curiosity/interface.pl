@@ -6,7 +6,7 @@
 
 Each curiosity (option curiosity/1) is one module, named here once
 (curiosity_module/2): the loop (loop.pl), the probes (probe.pl) and
-explore/1 (explore.pl) ask the run's curiosity through by_curiosity/2,
+explore/1 (run.pl) ask the run's curiosity through by_curiosity/2,
 and nowhere else is a curiosity named. A curiosity's module defines these
 predicates (unexported; called as Module:Goal):
 

@@ -23,7 +23,7 @@ setting/2 facts of its learned theory.
 
 %!  settings(+Options:list, -Settings:dict) is det.
 %
-%   Settings holds every option of explore/1 (see explore.pl), as the
+%   Settings holds every option of explore/1 (see run.pl), as the
 %   option table of theory/defaults.pl declares them: those of Options,
 %   checked against their type and range, the others their defaults. The
 %   curiosity is read first; store, workers, ray_address and

@@ -1,5 +1,5 @@
 """The oracle at the Prolog prompt (bridge/exploration/prompt_oracle.py,
-oracle.pl's sample/4, simulate/3 and describe/2), as `pantarhei prolog -g`
+theory/curiosity/oracle_prompt.pl's sample/4, simulate/3 and describe/2), as `pantarhei prolog -g`
 runs them."""
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-:- module(curiosity_oracle,
+:- module(curiosity_oracle_prompt,
           [ sample/4,                 % +Props, +N, +Seed, -Rows
             describe/2,               % +Row, -Props
             simulate/3                % +Rows, +Options, -Scores

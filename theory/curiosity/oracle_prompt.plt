@@ -1,6 +1,6 @@
-:- begin_tests(curiosity_oracle).
+:- begin_tests(curiosity_oracle_prompt).
 
-:- use_module(oracle).
+:- use_module(oracle_prompt).
 :- use_module('../vocabulary').
 
 % A stand-in for the foreign oracle_simulate, with known scores: one row
@@ -22,4 +22,4 @@ test(simulate_pairs_scores_with_expectations) :-
 test(sample_without_the_oracle, [throws(exploration_error(_))]) :-
     sample([pour_low], 1, 1, _).
 
-:- end_tests(curiosity_oracle).
+:- end_tests(curiosity_oracle_prompt).

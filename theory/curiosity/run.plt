@@ -1,6 +1,6 @@
-:- begin_tests(curiosity_explore).
+:- begin_tests(curiosity_run).
 
-:- use_module(explore).
+:- use_module(run).
 
 test(bad_curiosity, [true(R = error(_))]) :-
     explore_result([curiosity(wild)], R).
@@ -14,4 +14,4 @@ test(bad_option, [forall(member(O, [budget(0), novelty(2), jumps(0), probe(-1),
                   true(R = error(_))]) :-
     explore_result([O], R).
 
-:- end_tests(curiosity_explore).
+:- end_tests(curiosity_run).

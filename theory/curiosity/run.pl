@@ -1,4 +1,4 @@
-:- module(curiosity_explore,
+:- module(curiosity_run,
           [ explore/1,                % +Options
             explore_result/2          % +Options, -Result
           ]).
