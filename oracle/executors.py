@@ -11,7 +11,9 @@
   with the same failure handling.
 
 Each lives in a module of its own (`inline_executor`, `local_executor`,
-`ray_executor`), keeping to `execution.Executor`; this module names them.
+`ray_executor`), keeping to `execution.Executor`; this module names them,
+once (`EXECUTORS`; the option table of theory/defaults.pl offers the same
+names, and a test keeps the two equal).
 Workers only simulate: they get (index, parameterization) and send back
 the outcome; storing results is the caller's business (`on_result`). Every
 worker is started with the oracle's `environment()` (the baseline math of
@@ -19,22 +21,25 @@ worker is started with the oracle's `environment()` (the baseline math of
 """
 from __future__ import annotations
 
-from typing import Optional
+from types import MappingProxyType
+from typing import Callable, Mapping, Optional
 
 from pantarhei.oracle.execution import Executor
 from pantarhei.oracle.inline_executor import InlineExecutor
 from pantarhei.oracle.local_executor import LocalExecutor
 from pantarhei.oracle.ray_executor import RayExecutor
 
-EXECUTORS = ("local", "ray", "inline")
+#: Each executor by name, and how it starts (workers, a Ray cluster's address).
+EXECUTORS: Mapping[str, Callable[[Optional[int], Optional[str]], Executor]] = MappingProxyType({
+    "local": lambda workers, address: LocalExecutor(workers),
+    "ray": lambda workers, address: RayExecutor(address, workers),
+    "inline": lambda workers, address: InlineExecutor(),
+})
 
 
 def make_executor(name: str, workers: Optional[int] = None,
                   ray_address: Optional[str] = None) -> Executor:
-    if name == "local":
-        return LocalExecutor(workers)
-    if name == "ray":
-        return RayExecutor(ray_address, workers)
-    if name == "inline":
-        return InlineExecutor()
-    raise ValueError(f"unknown executor '{name}' (choose {', '.join(EXECUTORS)})")
+    """The executor named `name` (ValueError for an unknown name)."""
+    if name not in EXECUTORS:
+        raise ValueError(f"unknown executor '{name}' (choose {', '.join(EXECUTORS)})")
+    return EXECUTORS[name](workers, ray_address)

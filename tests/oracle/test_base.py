@@ -46,4 +46,4 @@ def test_the_option_table_offers_the_oracles_and_executors_there_are():
     from pantarhei.oracle.executors import EXECUTORS
 
     assert set(choices("oracle")) == set(ORACLES) - {"faulty"}
-    assert choices("executor") == EXECUTORS
+    assert choices("executor") == tuple(EXECUTORS)
