@@ -419,7 +419,7 @@ def _differing_layer(learned: Learned, P: np.ndarray, S: np.ndarray) -> list[str
     ok = np.all(np.isfinite(S), axis=1)
     g, _, _ = learn_general(P[ok], S[ok], int(learned.setting("seed")),
                             bodies=learned.antecedents)
-    conf = {str(r): int(v) for r, k, v in learned.theory.provenance if k == "confidence_permille"}
+    conf = learned.theory.confidences()
     have = {(r.id, r.head, tuple(sorted(r.body)), conf.get(r.id)) for r in learned.theory.rules}
     again = {(r.id, r.head, tuple(sorted(r.body)), int(round(1000 * r.confidence)))
              for r in g.rules}

@@ -50,7 +50,7 @@ class Ranked:
 def ranked_rules(theory: Theory, general: General) -> list[Ranked]:
     """Algorithm 1's learned rules of `theory` (confidence from their
     provenance) and the general rules, as one list."""
-    conf = {rid: int(v) / 1000 for rid, k, v in theory.provenance if k == "confidence_permille"}
+    conf = {rid: c / 1000 for rid, c in theory.confidences().items()}
     return with_general([Ranked(r.id, tuple(sorted(r.body)), r.head, conf.get(r.id, 0.5))
                          for r in theory.rules if r.id in theory.learned], general)
 

@@ -60,6 +60,13 @@ class Theory:
     #: DFL rules with variables, grounded when read: (`file:line`, label).
     schemas: list[tuple[str, str]] = field(default_factory=list, compare=False, repr=False)
 
+    def confidences(self) -> dict[str, int]:
+        """Each rule's confidence in permille, P(head | body), for the rules
+        whose provenance records one (`provenance(R, confidence_permille,
+        C)`); theory/learned_rules.pl gives the likelihood, rank and
+        verdict that follow from it."""
+        return {str(r): int(v) for r, k, v in self.provenance if k == "confidence_permille"}
+
     def rule(self, rule_id: str) -> Rule:
         for r in self.rules:
             if r.id == rule_id:
