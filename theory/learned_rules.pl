@@ -16,8 +16,9 @@ one half), then the id (rank_key/2). The rules' likelihood is the share
 of such pours in which the expectation holds (likelihood/3), and an
 answer is uncertain where it lies within theory/defaults.pl's
 uncertain_band of one half (verdict/3). Algorithm 1 names its rules by
-rule_id/3. queries.pl answers by these predicates, and so do the
-learners (bridge/learning/) and the evaluation.
+rule_id/3. queries.pl answers by these predicates; the learner
+(bridge/learning/general_rules.py) reads rank and verdict without calling
+Prolog, under tests that keep its reading equal to these.
 */
 
 :- use_module(default_values).

@@ -5,16 +5,16 @@ keep its head (`confidence`) and its evidence (`support`, `kept`): see
 `meaning` for what that share is, `generalize` for how rules are chosen.
 
 How a question is decided. A scene (a set of propositions) is decided, for
-each expectation, by the highest ranked rule whose body it holds. Rules rank
-by body size (more specific first), then by the distance of their confidence
-from one half, then by id (`rank`, theory/learned_rules.pl's). This is exactly standard defeasible logic
-(theory/defeasible.pl in each of its eight variants) over the
-rules and `sup/2` facts: more specific learned rules beat less specific ones
-with the complementary head (specificity, which the engine derives), and
-every other pair of conflicting rules that can apply together gets an
-explicit `sup/2` fact in rank order. The order is a linear one, so the
-superiority relation is acyclic, and no conflict stays undecided. The
-default's empty body makes every scene decided.
+each expectation, by the highest ranked rule whose body it holds. Rules
+rank by body size (more specific first), then by the distance of their
+confidence from one half, then by id (`rank`, theory/learned_rules.pl's).
+This is exactly standard defeasible logic (theory/defeasible.pl in each of
+its eight variants) over the rules and `sup/2` facts: more specific learned
+rules beat less specific ones with the complementary head (specificity,
+which the engine derives), and every other pair of conflicting rules that
+can apply together gets an explicit `sup/2` fact in rank order. The order
+is a linear one, so the superiority relation is acyclic, and no conflict
+stays undecided. The default's empty body makes every scene decided.
 """
 from __future__ import annotations
 
@@ -23,6 +23,7 @@ from typing import Iterable, Sequence
 
 import numpy as np
 
+from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
 
 from pantarhei.bridge.evaluation.measures import FAILS, HOLDS, UNKNOWN
@@ -103,7 +104,8 @@ class General:
     rules: list[GeneralRule] = field(default_factory=list)
     sup: list[Sup] = field(default_factory=list)
     #: answers whose likelihood lies within this of one half are uncertain
-    band: float = 0.0
+    #: (theory/defaults.pl's uncertain_band, which the Prolog answers read)
+    band: float = field(default_factory=lambda: float(defaults()["uncertain_band"]))
 
     def of(self, expectation: str) -> list[GeneralRule]:
         return [r for r in self.rules if r.expectation == expectation]
