@@ -14,7 +14,6 @@ from pathlib import Path
 
 from pantarhei.bridge.commands import options
 from pantarhei.bridge.errors import UserError
-from pantarhei.theory import defaults
 from pantarhei.theory.option_table import option
 
 #: The paper's three questions (section 3.2), as words and propositions.
@@ -85,23 +84,22 @@ def demo(args: argparse.Namespace) -> int:
     from pantarhei.bridge.theories import loading
     from pantarhei.bridge.exploration.trace import require_distinct_outputs
     from pantarhei.bridge.commands.querying import answer, print_plans
-    from pantarhei.bridge.exploration.explore_call import ExploreOptions, budget_text, explore, stop_text
+    from pantarhei.bridge.exploration.explore_call import ExploreOptions, explore, stop_text
 
     out = Path(args.out)
     require_writable_file(out, "--out")
     require_distinct_outputs(Path(args.store), out, dfl=True)
     started = time.monotonic()
-    curiosity = defaults()["curiosity"]
-    budget = int(defaults()["budget"])
+    # the default curiosity, whose budget is every pour (--pours)
     _heading(f"Learning the theory of pouring: curious exploration of the {args.oracle} "
-             f"simulation, {budget_text(curiosity, budget, args.pours)} (Algorithm 1)")
+             f"simulation, {args.pours} pours (Algorithm 1)")
     result = explore(ExploreOptions(
         oracle=args.oracle, pours=args.pours, seed=args.seed, out=out,
         store=Path(args.store), workers=args.workers, progress=not args.no_progress))
     theory = loading.load([out], pouring=True)      # read once, for every question below
     dfl = out.with_suffix(".dfl")
     write_text(dfl, write_dfl(theory, loading.provenance_lines(theory)))
-    why = stop_text(result, curiosity, budget, args.pours)
+    why = stop_text(result)
     print(f"explored {result['explored']} antecedents with {result['simulations']} simulations "
           f"({result['failed']} failed) in {result.get('wall', 0.0):.0f} s; stopped: {why}")
     print(f"theory: {out} ({len(theory.rules)} rules), in DFL: {dfl}")

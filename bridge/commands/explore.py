@@ -30,7 +30,8 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def explore(args: argparse.Namespace) -> int:
-    from pantarhei.bridge.exploration.explore_call import ExploreOptions, explore as run_exploration, stop_text
+    from pantarhei.bridge.exploration.explore_call import (ExploreOptions, stop_text,
+                                                           explore as run_exploration)
     from pantarhei.bridge.exploration.trace import require_distinct_outputs
     from pantarhei.bridge.files import require_writable_file
 
@@ -42,7 +43,7 @@ def explore(args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         raise UserError("interrupted: the state is saved after every explored antecedent; "
                         "the same command with --resume continues", exit_code=130) from None
-    why = stop_text(result, args.curiosity, args.budget, args.pours)
+    why = stop_text(result)
     print(f"explored {result['explored']} antecedents with {result['simulations']} simulations "
           f"({result['failed']} failed); stopped: {why}")
     wall, sim = result.get("wall", 0.0), result.get("timings", {}).get("oracle", 0.0)

@@ -94,20 +94,15 @@ def explore(options: ExploreOptions) -> dict:
     return dict(host.result)
 
 
-def budget_text(curiosity: str, budget: int, pours: int | None = None) -> str:
-    """What the budget counts: explored antecedents for the paper's
-    curiosity; for the discovering one, the pours of as many batches (its
-    batches and probes); for the learning one, `pours` in all."""
-    if curiosity == "learn":
-        return f"{pours} pours"
-    return f"{budget} rules" if curiosity == "paper" else f"the pours of {budget} batches"
-
-
-def stop_text(result: dict, curiosity: str, budget: int, pours: int | None = None) -> str:
-    """Why an exploration stopped, in words."""
+def stop_text(result: dict) -> str:
+    """Why an exploration stopped, in words: A_new empty, or its budget as
+    its curiosity counts it (`budget` of the result: pours, or explored
+    antecedents, rules)."""
     stopped = str(result.get("stopped", ""))
-    return {"a_new_empty": "A_new is empty",
-            "budget": budget_text(curiosity, budget, pours)}.get(stopped, stopped)
+    if stopped == "budget":
+        budget = result["budget"]
+        return f"{budget['total']} {budget['unit']}s"
+    return {"a_new_empty": "A_new is empty"}.get(stopped, stopped)
 
 
 def _result_text(result: Any) -> str:

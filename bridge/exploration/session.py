@@ -443,7 +443,9 @@ class Host:
                                     simulations=len(s.params),
                                     failed=int((~s.valid).sum()), timings=dict(s.timings),
                                     elapsed=list(s.elapsed), wall=time.monotonic() - s.started,
-                                    pours=(s.params.copy(), s.scores.copy()), **written)
+                                    pours=(s.params.copy(), s.scores.copy()),
+                                    budget={k: request["budget"][k] for k in ("total", "unit")},
+                                    **written)
         finally:
             if s.bar is not None:
                 s.bar.close()

@@ -52,8 +52,10 @@ explore_loop(Settings, Begun) :-
     by_curiosity(Settings, second_layer(Explored, Facts, Settings, General)),
     write_theory(Settings.out, Settings, Facts, General),
     length(Explored, N),
+    by_curiosity(Settings, progress_bar(Settings, Budget)),
     call_bridge(exploration_end, _{out:Settings.out, stopped:Stop, explored:N,
-                                   a_new:Left, oracle:Settings.oracle, seed:Settings.seed}, _).
+                                   a_new:Left, oracle:Settings.oracle, seed:Settings.seed,
+                                   budget:Budget}, _).
 
 %!  explore_result(+Options:list, -Result) is det.
 %

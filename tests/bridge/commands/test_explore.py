@@ -116,6 +116,7 @@ def test_progress_counts_the_budget_it_spends(tmp_path):
     last = [ln for ln in r.err.replace("\r", "\n").splitlines() if ln.startswith("exploring")][-1]
     spent = int(r.out.split(" simulations")[0].split()[-1])
     assert f"{spent}/36" in last and "pour" in last, last
+    assert "stopped: 36 pours" in r.out        # the budget as the curiosity counts it
     r = run_cli("explore", *base, "--curiosity", "paper", "--out", str(tmp_path / "p.pl"))
     assert r.code == 0, r.err
     last = [ln for ln in r.err.replace("\r", "\n").splitlines() if ln.startswith("exploring")][-1]

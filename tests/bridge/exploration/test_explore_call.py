@@ -193,3 +193,16 @@ def test_failed_simulations_are_left_out_and_counted(tmp_path):
     assert settings["failed_simulations"] == r["failed"]
     used = {v for rid, k, v in f["provenance"] if k == "simulations"}
     assert max(used) <= r["simulations"] - r["failed"]
+
+
+def test_why_it_stopped_is_said_in_the_budget_s_unit():
+    assert exploration.stop_text({"stopped": "budget", "budget": {"total": 25, "unit": "rule"}}) \
+        == "25 rules"
+    assert exploration.stop_text({"stopped": "budget", "budget": {"total": 775, "unit": "pour"}}) \
+        == "775 pours"
+    assert exploration.stop_text({"stopped": "a_new_empty"}) == "A_new is empty"
+
+
+def test_the_result_carries_the_budget_as_explore_1_counts_it(tmp_path):
+    r = run(tmp_path, budget=2, batch=8)
+    assert r["budget"] == {"total": 2, "unit": "rule"}
