@@ -101,7 +101,7 @@ def test_the_rank_is_the_one_prolog_ranks_by() -> None:
     position = {k: i for i, k in enumerate(sorted(set(keys)))}
     e = engine()
     e.use_module("learned_rules")
-    r = e.once("maplist([[I, N, L, C], rule(I, N, L, C)]>>true, Xs, Rules), "
+    r = e.once("findall(rule(I, N, L, C), member([I, N, L, C], Xs), Rules), "
                "learned_rules:rank_order(Rules, Ps)",
                Xs=[[rid, size, "general" if general else "rule", "none" if c is None else c]
                    for rid, size, general, c in rules])
@@ -123,7 +123,7 @@ def test_the_verdict_and_likelihood_are_the_ones_prolog_answers_by() -> None:
               for b in rng.random(300) / 2 for s in (-1, 1) for d in (-1e-15, 0.0, 1e-15) for h in (0, 1)]
     e = engine()
     e.use_module("learned_rules")
-    r = e.once("maplist([[H, P, B], V]>>(learned_rules:verdict(H, P, B, V)), Cs, Vs)",
+    r = e.once("findall(V, (member([H, P, B], Cs), learned_rules:verdict(H, P, B, V)), Vs)",
                Cs=[["holds" if h else "fails", p, b] for h, p, b in cases])
     code = {"holds": HOLDS, "fails": FAILS, "uncertain": UNKNOWN}
     assert [verdict(h, p, b) for h, p, b in cases] == [code[str(v)] for v in r["Vs"]]
