@@ -11,6 +11,7 @@ compiled state of the theory's modules, cached per source and swipl
 """
 from __future__ import annotations
 
+import os
 import shutil
 import subprocess
 import sys
@@ -51,12 +52,18 @@ class Door:
         if swipl is None:
             raise UserError(SWIPL_MISSING)
         args: list[str] = []
-        for path, name, checked in files:
-            args += [("checked:" if checked else "file:") + str(path), str(name)]
-        self._process = subprocess.Popen(
-            [*serving(swipl), "--", *args],
-            stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-            text=True, encoding="utf-8", errors="replace")
+        fds: list[int] = []
+        try:
+            for path, name, checked in files:
+                path = _utf8_path(path, fds)
+                args += [("checked:" if checked else "file:") + path, _utf8(str(name))]
+            self._process = subprocess.Popen(
+                [*serving(swipl), "--", *args], pass_fds=fds,
+                stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                text=True, encoding="utf-8", errors="replace")
+        finally:
+            for fd in fds:
+                os.close(fd)
         self._status: tuple[list[tuple[str, str, str]], str | None] | None = None
 
     def __enter__(self) -> "Door":
@@ -145,6 +152,25 @@ class Door:
         words, sentences separated by "; "."""
         reply = self._reply(f"why({_list(scene)}, {literal}).", unread)
         return next(r[1] for r in reply if r[0] == "why")
+
+
+def _utf8(text: str) -> str:
+    """Text that SWI-Prolog can take as an argument: a byte of a file name
+    that is not UTF-8 (held as a surrogate escape) shown as U+FFFD."""
+    return text.encode("utf-8", "replace").decode("utf-8")
+
+
+def _utf8_path(path: str, fds: list[int]) -> str:
+    """`path` as SWI-Prolog can take it: itself, or for a name that is not
+    UTF-8, the file opened here and handed over as /dev/fd/N (its
+    descriptor added to `fds`)."""
+    try:
+        str(path).encode("utf-8")
+        return str(path)
+    except UnicodeEncodeError:
+        fd = os.open(path, os.O_RDONLY)
+        fds.append(fd)
+        return f"/dev/fd/{fd}"
 
 
 def serving(swipl: str) -> list[str]:

@@ -160,3 +160,15 @@ def test_python_merges_files_as_prolog_does(name: str, tmp_path: Path, capsys) -
         _, error = door.status()
     capsys.readouterr()
     assert python == (error or "loaded")
+
+
+def test_a_file_name_that_is_not_utf8_is_read(tmp_path: Path) -> None:
+    import os
+    import shutil
+
+    name = os.fsdecode(bytes(tmp_path) + b"/learned\xff.pl")
+    shutil.copy(EXAMPLES / "learned.pl", name)
+    with Door([(name, name, False)], name) as door:
+        said = door.answers(["pour_to_side"])
+    with Door([(str(EXAMPLES / "learned.pl"),) * 2 + (False,)], "") as door:
+        assert said == door.answers(["pour_to_side"])
