@@ -147,7 +147,7 @@ discover_queue(Best, Explored, Id, Props, Away, Rest, Settings, I, Added, Queue)
         keysort(Keyed, Sorted),
         pairs_values(Sorted, Queue),
         append([Followed, Neighbours, Jumps], New),
-        include([C]>>memberchk(C, New), Queue, Added)
+        include(in_list(New), Queue, Added)
     ).
 
 %!  jumps(+Settings:dict, +Iteration:integer, +Exclude:list, -New:list) is det.
@@ -158,8 +158,13 @@ discover_queue(Best, Explored, Id, Props, Away, Rest, Settings, I, Added, Queue)
 jumps(Settings, I, Exclude, New) :-
     Seed is Settings.seed * 1000003 + I,
     random_antecedents(Seed, Settings.jumps, All),
-    exclude([P]>>memberchk(P, Exclude), All, New0),
+    exclude(in_list(Exclude), All, New0),
     list_to_set(New0, New).
+
+%   in_list(+List, +X): X is an element of List (no lambda: the
+%   candidates do not depend on whether library(yall) was loaded first).
+in_list(List, X) :-
+    memberchk(X, List).
 
 %   follow(+Explored, +F, +Exclude0-Acc0, -Exclude-Acc): the candidates
 %   of modify_past/4 for every move of the significant planes of one

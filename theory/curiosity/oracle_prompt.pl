@@ -37,7 +37,11 @@ sample(Props, N, Seed, Rows) :-
 describe(Row, Props) :-
     call_bridge(oracle_describe, _{rows:[Row]}, Reply),
     Reply.props = [Props0],
-    maplist([P0, P]>>atom_string(P, P0), Props0, Props).
+    maplist(text_atom, Props0, Props).
+
+%   text_atom(+Text, -Atom): a proposition of a reply (text) as an atom.
+text_atom(Text, Atom) :-
+    atom_string(Atom, Text).
 
 %!  simulate(+Rows:list, +Options:list, -Scores:list) is det.
 %

@@ -80,7 +80,7 @@ teach_queue(Explored, Id, Props, Rest, Settings, Added, Queue) :-
     exclusions(Explored, Rest, Exclude),
     children(Props, Settings.body, Exclude, Kids),
     findall(cand(P, Id, near), member(P, Kids), New),
-    exclude([cand(_, _, again(_))]>>true, Rest, Waiting),
+    exclude(again_cand, Rest, Waiting),
     findall(cand(P, A, again(A)), member(ant(A, P, _, _), Explored), Again),
     append([New, Waiting, Again], Pool),
     (   Pool == []
@@ -98,8 +98,16 @@ teach_queue(Explored, Id, Props, Rest, Settings, Added, Queue) :-
         Keep is min(N, Settings.queue),
         length(Queue, Keep),
         append(Queue, _, All),
-        include([C]>>memberchk(C, New), Queue, Added)
+        include(in_list(New), Queue, Added)
     ).
+
+%   again_cand(+Cand): Cand is another batch of an explored antecedent.
+again_cand(cand(_, _, again(_))).
+
+%   in_list(+List, +X): X is an element of List (helpers, not lambdas: the
+%   queue does not depend on whether library(yall) was loaded first).
+in_list(List, X) :-
+    memberchk(X, List).
 
 %!  children(+Props:list, +Most:integer, +Exclude:list, -New:list) is det.
 %

@@ -193,3 +193,33 @@ def test_paper_curiosity_writes_the_theory_it_wrote_before(tmp_path):
     assert Path(r["out"]).read_bytes() == (FIXTURES / "paper_synthetic_seed3.pl").read_bytes()
     assert (Path(r["out"]).with_suffix(".trace.jsonl").read_bytes()
             == (FIXTURES / "paper_synthetic_seed3.trace.jsonl").read_bytes())
+
+
+#: An exploration in a process of its own, with library(yall) loaded before
+#: theory/curiosity/ is (argv: yall or no, the theory file).
+IN_A_FRESH_PROCESS = """
+import sys
+from pathlib import Path
+from pantarhei.bridge.engines.swipl import engine
+from pantarhei.bridge.exploration import explore_call as ex
+if sys.argv[1] == "yall":
+    engine().succeeds("use_module(library(yall))")
+out = Path(sys.argv[2])
+ex.explore(ex.ExploreOptions(curiosity="discover", oracle="synthetic", budget=8, batch=12,
+                             seed=3, out=out, store=out.with_suffix(".sqlite"), progress=False,
+                             executor="inline", general=False))
+"""
+
+
+def test_the_exploration_is_the_same_whatever_prolog_loaded_before(tmp_path):
+    """Loading library(yall) before the curiosity's modules compiles their
+    lambdas otherwise; the candidates and the probes must not change."""
+    import subprocess
+    import sys
+
+    for how in ("no", "yall"):
+        p = subprocess.run([sys.executable, "-c", IN_A_FRESH_PROCESS, how, str(tmp_path / f"{how}.pl")],
+                           capture_output=True, text=True, timeout=600)
+        assert p.returncode == 0, p.stderr
+    assert (tmp_path / "yall.pl").read_text() == (tmp_path / "no.pl").read_text()
+    assert (tmp_path / "yall.trace.jsonl").read_text() == (tmp_path / "no.trace.jsonl").read_text()
