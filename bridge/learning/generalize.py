@@ -86,6 +86,14 @@ def generalize(P: np.ndarray, S: np.ndarray, settings: Settings = Settings(),
         return _generalize(P, S, settings, bodies)
 
 
+def learn(P: np.ndarray, S: np.ndarray, seed: int,
+          bodies: Sequence[Sequence[str]] | None = None) -> General:
+    """The general rules of pours P with scores S, with the default
+    `Settings` and `seed`, over `bodies` as `generalize`: this learner as
+    `learners.py` names it."""
+    return generalize(P, S, Settings(seed=int(seed)), bodies)
+
+
 def _generalize(P: np.ndarray, S: np.ndarray, settings: Settings,
                 among: Sequence[Sequence[str]] | None = None) -> General:
     vocab = load_vocabulary()

@@ -1,8 +1,9 @@
 """One theory of two layers: Algorithm 1's rules and the general rules.
 
 Algorithm 1 writes one rule per explored antecedent and expectation (its
-body is the antecedent, `r<i>_<E>`); `generalize` learns general rules from
-every pour of the exploration (`g<i>_<E>`). Both are learned rules, and a
+body is the antecedent, `r<i>_<E>`); a learner (learners.py; by default
+generalize.py) learns general rules from every pour of the exploration
+(`g<i>_<E>`). Both are learned rules, and a
 scene that both speak of is decided as within one layer: the most specific
 applicable rule wins (a body that holds another's), and between rules whose
 bodies do not hold each other, the higher ranked one: the larger body, then
@@ -29,7 +30,7 @@ import numpy as np
 
 from pantarhei.bridge.learning.askable import together
 from pantarhei.bridge.learning.general_rules import General, rank
-from pantarhei.bridge.learning.generalize import Settings, generalize
+from pantarhei.bridge.learning import learners
 from pantarhei.bridge.theories.model import Theory, complement
 
 
@@ -82,14 +83,16 @@ def superiority(rules: Sequence[Ranked]) -> list[tuple[str, str]]:
 
 def learn_general(P: np.ndarray, S: np.ndarray, seed: int, simulate=None,
                   per_body: int | None = None,
-                  bodies: Sequence[Sequence[str]] | None = None
+                  bodies: Sequence[Sequence[str]] | None = None,
+                  learner: str = learners.DEFAULT_LEARNER
                   ) -> tuple[General, np.ndarray, np.ndarray]:
-    """The general rules of the pours (P, S), after simulating (with
-    `simulate`: parameterizations to scores) the pours the learner asks
-    for where the exploration left it none (bridge/learning/gaps.py); the
-    pours it learned from are returned beside the rules. The rules'
-    bodies are among `bodies` (and the empty one) when given, else among
-    the askable ones."""
+    """The general rules of the pours (P, S) by the learner named
+    `learner` (learners.py), after simulating (with `simulate`:
+    parameterizations to scores) the pours the learner asks for where the
+    exploration left it none (bridge/learning/gaps.py); the pours it
+    learned from are returned beside the rules. The rules' bodies are
+    among `bodies` (and the empty one) when given, else among the askable
+    ones."""
     from pantarhei.bridge.learning.gaps import gap_pours
     from pantarhei.theory import defaults
 
@@ -101,7 +104,7 @@ def learn_general(P: np.ndarray, S: np.ndarray, seed: int, simulate=None,
         if len(extra):
             P = np.vstack([P, extra])
             S = np.vstack([S, np.asarray(simulate(extra), dtype=float)])
-    return generalize(P, S, Settings(seed=int(seed)), bodies), P, S
+    return learners.learner(learner)(P, S, int(seed), bodies), P, S
 
 
 def general_layer(learned: Sequence[Ranked], P: np.ndarray, S: np.ndarray, seed: int,
