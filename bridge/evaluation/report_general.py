@@ -10,6 +10,7 @@ from pantarhei.bridge.evaluation.headline import num, pct
 from pantarhei.bridge.evaluation.measures import question_misses
 from pantarhei.bridge.evaluation.pipeline import Evaluation
 from pantarhei.bridge.evaluation.report_sections import antecedent_words
+from pantarhei.bridge.learning.general_rules import likelihood
 
 _INTRODUCTION = (
     "General rules are learned from every pour of the exploration and from the learner's "
@@ -94,7 +95,7 @@ def _rules(g: dict) -> list[str]:
     for r in g["curiosity"]["rules"]:
         when = antecedent_words(r["body"]) if r["body"] else "(an ordinary pour)"
         holds = not r["head"].startswith("neg(")
-        lik = r["confidence"] if holds else 1 - r["confidence"]
+        lik = likelihood(holds, r["confidence"])
         L.append(f"| `{r['id']}` | {when} | `{r['head']}` | {lik:.2f} | "
                  f"{r['kept']} of {r['support']} |")
     return L

@@ -404,12 +404,13 @@ class Host:
         exploration's are, seeded from `seed`), ranked with Algorithm 1's
         rules of the request (id, expectation, holds, body,
         confidence_permille)."""
+        from pantarhei.bridge.learning.general_rules import confidence
         from pantarhei.bridge.learning.layers import Ranked, general_layer
 
         s = self.need_session()
         learned = [Ranked(str(r["id"]), tuple(sorted(str(b) for b in r["body"])),
                           str(r["expectation"]) if truthy(r["holds"]) else f"neg({r['expectation']})",
-                          int(r["confidence_permille"]) / 1000)
+                          confidence(r["confidence_permille"]))
                    for r in request["rules"]]
         progress = s.bar is not None
         explored = None

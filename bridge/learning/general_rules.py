@@ -53,6 +53,21 @@ def verdict(holds, likelihood, band: float):
     return int(out) if out.ndim == 0 else out
 
 
+def confidence(permille) -> float:
+    """A rule's confidence from the permille its provenance records
+    (confidence_permille): theory/learned_rules.pl's likelihood/3 of a rule
+    whose head holds (tests/bridge/learning/test_general_rules.py keeps the
+    two equal)."""
+    return int(permille) / 1000
+
+
+def likelihood(holds: bool, confidence: float) -> float:
+    """The likelihood that the expectation holds, for a rule that
+    concludes it (`holds`) or its negation with `confidence`: as
+    theory/learned_rules.pl's likelihood/3 (tests keep the two equal)."""
+    return confidence if holds else 1 - confidence
+
+
 @dataclass(frozen=True)
 class GeneralRule:
     """`body => expectation` (holds) or `body => neg(expectation)`."""
@@ -76,7 +91,7 @@ class GeneralRule:
     @property
     def likelihood(self) -> float:
         """The share of the body's pours in which the expectation holds."""
-        return self.confidence if self.holds else 1 - self.confidence
+        return likelihood(self.holds, self.confidence)
 
     def rule(self) -> Rule:
         return Rule(self.id, "defeasible", self.head, self.body)

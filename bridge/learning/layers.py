@@ -29,7 +29,7 @@ from typing import Sequence
 import numpy as np
 
 from pantarhei.bridge.learning.askable import together
-from pantarhei.bridge.learning.general_rules import General, rank
+from pantarhei.bridge.learning.general_rules import General, confidence, rank
 from pantarhei.bridge.learning import learners
 from pantarhei.bridge.theories.model import Theory, complement
 
@@ -51,7 +51,7 @@ class Ranked:
 def ranked_rules(theory: Theory, general: General) -> list[Ranked]:
     """Algorithm 1's learned rules of `theory` (confidence from their
     provenance) and the general rules, as one list."""
-    conf = {rid: c / 1000 for rid, c in theory.confidences().items()}
+    conf = {rid: confidence(c) for rid, c in theory.confidences().items()}
     return with_general([Ranked(r.id, tuple(sorted(r.body)), r.head, conf.get(r.id, 0.5))
                          for r in theory.rules if r.id in theory.learned], general)
 

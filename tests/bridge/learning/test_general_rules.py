@@ -128,12 +128,18 @@ def test_the_verdict_and_likelihood_are_the_ones_prolog_answers_by() -> None:
     code = {"holds": HOLDS, "fails": FAILS, "uncertain": UNKNOWN}
     assert [verdict(h, p, b) for h, p, b in cases] == [code[str(v)] for v in r["Vs"]]
     assert verdict([True, False], [0.6, 0.9], 0.15).tolist() == [UNKNOWN, FAILS]
-    # a learned rule's likelihood from its confidence in permille
+    # a learned rule's likelihood from its confidence in permille: the
+    # confidence read from permille is Prolog's likelihood of a rule whose
+    # head holds, to the last bit, and the likelihood of either head follows
+    from pantarhei.bridge.learning.general_rules import confidence, likelihood
+
     r = e.once("findall(P, (between(0, 1000, C), member(L, [no_spill, neg(no_spill)]), "
                "learned_rules:likelihood(C, L, P)), Ps)")
-    ours = [GeneralRule("g", (), E, holds, 0, 0, c / 1000, 0).likelihood
-            for c in range(1001) for holds in (True, False)]
+    assert [confidence(c) for c in range(1001)] == r["Ps"][::2]
+    ours = [likelihood(holds, confidence(c)) for c in range(1001) for holds in (True, False)]
     assert np.allclose(ours, r["Ps"], rtol=0, atol=1e-12)
+    assert [GeneralRule("g", (), E, h, 0, 0, 0.7, 0).likelihood for h in (True, False)] == \
+        [likelihood(h, 0.7) for h in (True, False)]
 
 
 def test_layers_rank_a_theory_as_its_questions_do() -> None:
