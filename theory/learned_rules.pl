@@ -4,7 +4,8 @@
             likelihood/3,           % +Confidence, +Literal, -Likelihood
             verdict/3,              % +Concluded, +Likelihood, -Value
             verdict/4,              % +Concluded, +Likelihood, +Band, -Value
-            rule_id/3               % +Antecedent, +Expectation, -Id
+            rule_id/3,              % +Antecedent, +Expectation, -Id
+            antecedent_id/2         % ?Antecedent, ?Id
           ]).
 /** <module> Learned rules: their rank, what they say, and their names
 
@@ -15,8 +16,9 @@ body, then the general layer's, then the surer (confidence further from
 one half), then the id (rank_key/2). The rules' likelihood is the share
 of such pours in which the expectation holds (likelihood/3), and an
 answer is uncertain where it lies within theory/defaults.pl's
-uncertain_band of one half (verdict/3). Algorithm 1 names its rules by
-rule_id/3. queries.pl answers by these predicates; the learner
+uncertain_band of one half (verdict/3). Algorithm 1 names the
+antecedents it explores by antecedent_id/2 and its rules by rule_id/3.
+queries.pl answers by these predicates; the learner
 (bridge/learning/general_rules.py) reads rank and verdict without calling
 Prolog, under tests that keep its reading equal to these.
 */
@@ -98,3 +100,25 @@ verdict(V0, P, B, V) :-
 %   (=|a<i>|=) and Expectation: =|r<i>_<E>|=.
 rule_id(I, E, Id) :-
     atomic_list_concat([r, I, '_', E], Id).
+
+%!  antecedent_id(+Antecedent:integer, -Id) is det.
+%!  antecedent_id(-Antecedent:integer, +Id) is semidet.
+%
+%   Id names the Antecedent-th explored antecedent in provenance facts
+%   and the trace: =|a<i>|=, i in decimal digits. Given Id, Antecedent is
+%   its number; it fails for an atom that names no antecedent (=none=).
+%   bridge/theories/model.py writes and reads the same names under a test
+%   that keeps the two equal.
+antecedent_id(I, Id) :-
+    integer(I), !,
+    format(atom(Id), "a~d", [I]).
+antecedent_id(I, Id) :-
+    atom(Id),
+    atom_concat(a, Digits, Id),
+    atom_codes(Digits, Cs),
+    Cs \== [],
+    maplist(ascii_digit, Cs),
+    number_codes(I, Cs).
+
+ascii_digit(C) :-
+    between(0'0, 0'9, C).

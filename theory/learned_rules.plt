@@ -53,4 +53,12 @@ test(the_band_of_the_defaults, V == uncertain) :-
 test(rule_id, Id == r12_no_spill) :-
     rule_id(12, no_spill, Id).
 
+test(antecedent_id, [Id, I] == [a12, 7]) :-
+    antecedent_id(12, Id),
+    antecedent_id(I, a7).
+
+test(antecedent_id_of_no_antecedent, fail) :-
+    member(Id, [none, a, b1, 'a-1', a1x, 'a 1']),
+    antecedent_id(_, Id).
+
 :- end_tests(learned_rules).

@@ -47,7 +47,7 @@ from pantarhei.bridge.evaluation.rule_building import consequents, rule_ids
 from pantarhei.bridge.exploration.simulation import batch_seed, iteration_seed
 from pantarhei.bridge.exploration.weights import log_densities, weights
 from pantarhei.bridge.theories import loading
-from pantarhei.bridge.theories.model import Theory, antecedent_index, literal_text
+from pantarhei.bridge.theories.model import Theory, antecedent_id, antecedent_index, literal_text
 
 @dataclass
 class Learned:
@@ -134,7 +134,7 @@ def _read_one_layer(path: Path, theory: Theory, settings: dict[str, list[Any]]) 
         raise UserError(f"{trace}: the trace of the learning curiosity's theory cannot be read "
                         f"({e})") from None
     order = list(dict.fromkeys(ids))
-    if order != [f"a{i}" for i in range(1, len(order) + 1)]:
+    if order != [antecedent_id(i) for i in range(1, len(order) + 1)]:
         raise UserError(f"{trace}: the explored antecedents are not a1..a{len(order)}")
     return Learned(path, theory, settings, [bodies[a] for a in order],
                    [ids.count(a) for a in order], {}, [order.index(a) for a in ids])

@@ -245,13 +245,17 @@ class Theory:
 
 
 def antecedent_id(i: int) -> str:
-    """The id of the i-th explored antecedent in provenance facts: `a<i>`."""
+    """The id of the i-th explored antecedent in provenance facts and the
+    trace: `a<i>`, as theory/learned_rules.pl's antecedent_id/2 writes it
+    (tests/bridge/theories/test_model.py keeps the two equal)."""
     return f"a{int(i)}"
 
 
 def antecedent_index(aid: str) -> int | None:
-    """i for an antecedent id `a<i>`, None for anything else (`none`)."""
-    return int(aid[1:]) if len(aid) > 1 and aid[0] == "a" and aid[1:].isdigit() else None
+    """i for an antecedent id `a<i>` (i in the digits 0 to 9), None for
+    anything else (`none`): as antecedent_id/2 reads it."""
+    digits = aid[1:]
+    return int(digits) if aid[:1] == "a" and digits.isascii() and digits.isdigit() else None
 
 
 

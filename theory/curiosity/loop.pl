@@ -34,6 +34,7 @@ it leaves the curiosity's course before it as it is without the priors
 :- use_module(bridge).
 :- use_module(probe).
 :- use_module(interface).
+:- use_module('../learned_rules', [antecedent_id/2]).
 
 %!  loop(+S0, +Settings, -S, -Stop) is det.
 %
@@ -124,6 +125,6 @@ explored(cand(Props, Parent, Via), Explored, Id, Explored1) :-
     ->  Explored1 = Explored
     ;   length(Explored, N0),
         N is N0 + 1,
-        format(atom(Id), "a~w", [N]),
+        antecedent_id(N, Id),
         append(Explored, [ant(Id, Props, Parent, Via)], Explored1)
     ).

@@ -20,7 +20,7 @@ writes both, once, in the common subset of Prolog and ASP.
 :- use_module(bridge).
 :- use_module(state).
 :- use_module(settings).
-:- use_module('../learned_rules', [rule_id/3]).
+:- use_module('../learned_rules', [rule_id/3, antecedent_id/2]).
 
 %!  learned(+Explored:list, +SetAside:list, +Settings:dict, +Stop, +Left:integer, -Facts:list) is det.
 %
@@ -84,8 +84,7 @@ antecedent_facts(Qualified, ant(Id, Props, Parent, Via), Facts, Tail) :-
 %   outcome_facts(+AId, +Props, +Parent, +Via, +Q, +O, -Facts, ?Tail): the
 %   rule of one outcome O of the antecedent AId, its body and provenance.
 outcome_facts(AId, Props, Parent, Via, Q, O, Facts, Tail) :-
-    sub_atom(AId, 1, _, 0, Num),
-    atom_number(Num, I),
+    antecedent_id(I, AId),
     rule_id(I, O.expectation, Id),
     (   O.holds == true -> Head = O.expectation ; Head = neg(O.expectation) ),
     findall(body(Id, P), member(P, Props), Bodies),
