@@ -75,7 +75,7 @@ def load(paths: Path | str | list | tuple | None = None, check: bool = True,
                 ids = {r.id for r in theory.rules}
                 for t in theories:
                     t.check_superiority(ids)
-        theory.check_acyclic()
+        theory.check_acyclic([t.source for t in theories])
     except TheoryFileError as e:
         raise UserError(str(e)) from None
     return theory

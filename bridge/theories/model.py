@@ -21,7 +21,7 @@ import re
 from collections import deque
 from dataclasses import dataclass, field
 from itertools import combinations
-from typing import Iterable
+from typing import Iterable, Sequence
 
 from pantarhei.bridge.theories.facts import term_text
 from pantarhei.bridge.theories.well_formed import (KIND, KINDS, NAME, RULE_NAME, SECOND_RULE,
@@ -195,13 +195,16 @@ class Theory:
         for f in self.facts:
             check_literal(f, f"{self.source}:0")
 
-    def check_acyclic(self) -> None:
+    def check_acyclic(self, sources: Sequence[str] | None = None) -> None:
         """Raise TheoryFileError if the superiority relation (sup/2 with
         specificity) has a cycle: a rule could then beat itself, and a
         literal and its complement both be concluded. Specificity alone
         never has one (it makes bodies strictly larger), so only cycles
         through sup/2 are looked for, with specificity's pairs found on
-        the way (never all of them: they may be quadratically many)."""
+        the way (never all of them: they may be quadratically many). The
+        error names the file of `sources` (the files the theory was read
+        from; its own source by default) and the line that says the
+        cycle's first pair."""
         if not self.sup:
             return
         cycle = superiority_cycle(self.sup, self._specific_successors())
@@ -209,7 +212,9 @@ class Theory:
             a, b = cycle[0], cycle[1]
             pattern = (rf"sup\(\s*{re.escape(a)}\s*,\s*{re.escape(b)}\s*\)"
                        rf"|\b{re.escape(a)}\s*>\s*{re.escape(b)}\b")
-            where = source_line(source_text(self.source), pattern, self.source)
+            files = list(sources or [self.source])
+            places = [source_line(source_text(f), pattern, f) for f in files]
+            where = next((w for w in places if not w.endswith(":0")), places[0])
             raise TheoryFileError(f"{where.removesuffix(':0')}: the superiority relation has a cycle, "
                                   f"{' > '.join(cycle)}: it must be acyclic")
 

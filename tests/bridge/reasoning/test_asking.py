@@ -142,6 +142,8 @@ MERGED = {
                              "fact(c).\n% r1 again\nrule(r1, defeasible, d).\n"],
     "sup across files": ["rule(r1, defeasible, b).\n", "rule(r2, defeasible, neg(b)).\nsup(r2, r1).\n"],
     "sup naming no rule": ["rule(r1, defeasible, b).\n", "rule(r3, defeasible, b).\nsup(r3, r9).\n"],
+    "a cycle across files": ["rule(r1, defeasible, b).\nrule(r2, defeasible, neg(b)).\n",
+                             "fact(c).\nsup(r2, r1).\nsup(r1, r2).\n"],
 }
 
 
