@@ -14,6 +14,19 @@ def is_dfl(path: Path | str) -> bool:
     return str(path).lower().endswith(".dfl")
 
 
+def theory_file_problem(path: Path | str) -> str | None:
+    """Why `path` cannot be read as a theory file (no such file, a
+    directory, a device or a pipe), or None."""
+    p = Path(path)
+    if not p.exists():
+        return f"{path}: no such theory file"
+    if p.is_dir():
+        return f"{path}: a directory, not a theory file"
+    if not p.is_file():
+        return f"{path}: not a regular file (a device or a pipe), not a theory file"
+    return None
+
+
 def replace_with(path: Path | str, write: Callable[[Path], None]) -> None:
     """Call `write(tmp)` to write a temporary file beside `path`, then
     rename it over `path`; the temporary file goes if `write` fails."""

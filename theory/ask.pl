@@ -65,8 +65,7 @@ load_theories(Files, Warnings) :-
     ->  clear_theory,
         Cycle = [A, B|_],
         sup_line(Read, A, B, Name, Line),
-        atomic_list_concat(Cycle, ' > ', Text),
-        format(string(M), "the superiority relation has a cycle, ~w: it must be acyclic", [Text]),
+        defeasible:cycle_message(Cycle, M),
         throw(theory_error(Name, Line, M))
     ;   true
     ).

@@ -198,11 +198,15 @@ theory_loaded :-
 check_superiority(File) :-
     (   superiority_cycle(Cycle)
     ->  clear_theory,
-        atomic_list_concat(Cycle, ' > ', Text),
-        format(string(M), "the superiority relation has a cycle, ~w: it must be acyclic", [Text]),
+        cycle_message(Cycle, M),
         throw(theory_error(File, 0, M))
     ;   true
     ).
+
+% cycle_message(+Cycle, -Message): what is said of a superiority cycle.
+cycle_message(Cycle, Message) :-
+    atomic_list_concat(Cycle, ' > ', Text),
+    format(string(Message), "the superiority relation has a cycle, ~w: it must be acyclic", [Text]).
 
 % superiority_cycle(-Cycle): a shortest cycle [R, ..., R] of superior/2
 % through the first rule (in standard order) of sup/2 that lies on one.

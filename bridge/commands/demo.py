@@ -84,6 +84,7 @@ def demo(args: argparse.Namespace) -> int:
     from pantarhei.bridge.theories import loading
     from pantarhei.bridge.exploration.trace import require_distinct_outputs
     from pantarhei.bridge.commands.querying import answer, print_plans
+    from pantarhei.bridge.reasoning.answers import InProcess
     from pantarhei.bridge.exploration.explore_call import ExploreOptions, explore, stop_text
 
     out = Path(args.out)
@@ -108,7 +109,7 @@ def demo(args: argparse.Namespace) -> int:
 
     for question, props in QUESTIONS:
         _heading(question)
-        answer(theory, props)
+        answer(InProcess(theory), props)
 
     given, goals, missed = chosen_plan(theory)
     _heading(f"How should I pour so that {', '.join(goals)}"

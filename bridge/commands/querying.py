@@ -84,29 +84,17 @@ def ask(args: argparse.Namespace) -> int:
     if args.why is not None and not args.why.strip():
         raise UserError("--why: give an expectation E or neg(E) (see `pantarhei vocab`)")
     with _stand_ins(args.theory) as (files, source, unread):
-        with Door(files, source) as door:      # SWI-Prolog reads the theory meanwhile
+        with Door(files, source, unread) as door:    # SWI-Prolog reads the theory meanwhile
             if args.props is None and args.question in (None, "-"):    # one question a line
-                _theory_read(door, unread)
+                door.require_theory()
                 return _ask_each_line(args, door, sys.stdin.buffer)
             if args.props is not None:
                 props = known(_split(args.props))
                 if not props:
                     raise UserError("--props: no propositions given (see `pantarhei vocab`)")
             else:
-                props = _understood(args.question)
-            props = known(props)
-            why = _why_literal(args.why)
-            return answer(door, props, why, args.json, unread=unread)
-
-
-def _theory_read(door, unread: str | None) -> None:
-    """UserError if the door's theory could not be read (its warnings
-    are printed)."""
-    warnings, error = door.status()
-    if unread:
-        raise UserError(unread)
-    if error:
-        raise UserError(error)
+                props = known(_understood(args.question))
+            return answer(door, props, _why_literal(args.why), args.json)
 
 
 def _why_literal(why: str | None) -> str | None:
@@ -205,17 +193,12 @@ def _ask_each_line(args: argparse.Namespace, door, lines) -> int:
 
 
 def answer(asker, props: list[str], why: str | None = None, as_json: bool = False,
-           json_line: dict | None = None, unread: str | None = None) -> int:
+           json_line: dict | None = None) -> int:
     """Print what the theory `asker` asks (bridge/reasoning/asking.Door, or
-    a Theory held in Python) says of the scene `props`, or with `why` (a
-    native literal) the whole argument for it; as JSON with `as_json`, on
-    one line beginning with the keys of `json_line` when it is given (JSON
-    Lines). `unread`: why the theory could not be given (said once the
-    scene is found valid)."""
-    if not hasattr(asker, "answers"):         # a Theory: asked in this process
-        from pantarhei.bridge.reasoning.answers import InProcess
-
-        asker = InProcess(asker)
+    answers.InProcess for a theory held in Python) says of the scene
+    `props`, or with `why` (a native literal) the whole argument for it;
+    as JSON with `as_json`, on one line beginning with the keys of
+    `json_line` when it is given (JSON Lines)."""
     def print_json(obj: dict) -> None:
         if json_line is None:
             print(json.dumps(obj, indent=1))
@@ -224,14 +207,14 @@ def answer(asker, props: list[str], why: str | None = None, as_json: bool = Fals
 
     scene = props
     if why:
-        words = asker.why(scene, why, unread)
+        words = asker.why(scene, why)
         if as_json:
             print_json({"understood": props, "literal": why, "why": words})
         else:
             _print_scene(props, glosses=False)
             print(words.replace("; ", "\n  "))
         return 0
-    outcomes = asker.answers(scene, unread)
+    outcomes = asker.answers(scene)
     if as_json:
         print_json({"understood": props, "theory": asker.source, "outcomes": {
             o.expectation: {"verdict": o.value, "likelihood": o.likelihood, "rule": o.rule,

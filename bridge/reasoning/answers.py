@@ -40,10 +40,10 @@ class InProcess:
         self.theory = theory
         self.source = theory.source
 
-    def answers(self, scene: list[str], unread: str | None = None) -> list[Answer]:
+    def answers(self, scene: list[str]) -> list[Answer]:
         return what_happens(self.theory, scene)
 
-    def why(self, scene: list[str], literal: str, unread: str | None = None) -> str:
+    def why(self, scene: list[str], literal: str) -> str:
         return explain(self.theory, scene, literal)
 
 

@@ -43,11 +43,16 @@ class Door:
     """One swipl process serving questions to the theory of `files`:
     (path read, name said, checked) each, `checked` for a file that
     stands in for another that was read and checked already (a DFL file
-    written out natively). Use as a context manager."""
+    written out natively); with none and `unread`, it checks scenes only.
+    Use as a context manager."""
 
-    def __init__(self, files: list[tuple[str, str, bool]], source: str) -> None:
+    def __init__(self, files: list[tuple[str, str, bool]], source: str,
+                 unread: str | None = None) -> None:
         #: The theory's name: its files' names joined with " + ".
         self.source = source
+        #: Why the theory was not given (no such file...), said once a
+        #: question's scene is found valid; None when it was.
+        self.unread = unread
         swipl = shutil.which("swipl")
         if swipl is None:
             raise UserError(SWIPL_MISSING)
@@ -107,6 +112,13 @@ class Door:
             print_warnings(warnings)
         return self._status
 
+    def require_theory(self) -> None:
+        """UserError if the theory was not given or could not be read (its
+        warnings are printed)."""
+        _, error = self.status()
+        if self.unread or error:
+            raise UserError(self.unread or error)
+
     def _ask(self, request: str) -> list[list[str]]:
         """The reply lines to one request, split at tabs."""
         self.status()
@@ -122,35 +134,32 @@ class Door:
                 return out
             out.append(line.split("\t"))
 
-    def _reply(self, request: str, unread: str | None = None) -> list[list[str]]:
+    def _reply(self, request: str) -> list[list[str]]:
         """The reply to a request about a scene: UserError naming the first
-        violated constraint if the scene is not valid, else `unread` (why
-        the theory was not given, if it was not), else why the theory could
-        not be read."""
+        violated constraint if the scene is not valid, else why the theory
+        was not given (`unread`), else why it could not be read."""
         reply = self._ask(request)
-        invalid = [r[1:] for r in reply if r[0] == "invalid"]
-        if invalid:
-            from pantarhei.bridge.reasoning.scenes import Violation
+        bad = [r[1:] for r in reply if r[0] == "invalid"]
+        if bad:
+            from pantarhei.bridge.reasoning.scenes import Violation, invalid
 
-            first = Violation(*invalid[0]).words()
-            more = f" (and {len(invalid) - 1} more)" if len(invalid) > 1 else ""
-            raise UserError(f"invalid antecedent: {first}{more}")
-        if unread:
-            raise UserError(unread)
+            raise UserError(invalid([Violation(*v) for v in bad]))
+        if self.unread:
+            raise UserError(self.unread)
         errors = [r[1] for r in reply if r[0] == "error"]
         if errors:
             raise UserError(errors[0])
         return reply
 
-    def answers(self, scene: list[str], unread: str | None = None) -> list[Answer]:
+    def answers(self, scene: list[str]) -> list[Answer]:
         """One Answer per expectation for the scene (its propositions)."""
-        reply = self._reply(f"answer({_list(scene)}).", unread)
+        reply = self._reply(f"answer({_list(scene)}).")
         return [answer_of(r[1:]) for r in reply if r[0] == "answer"]
 
-    def why(self, scene: list[str], literal: str, unread: str | None = None) -> str:
+    def why(self, scene: list[str], literal: str) -> str:
         """Why (or why not) the theory concludes `literal` in the scene, in
         words, sentences separated by "; "."""
-        reply = self._reply(f"why({_list(scene)}, {literal}).", unread)
+        reply = self._reply(f"why({_list(scene)}, {literal}).")
         return next(r[1] for r in reply if r[0] == "why")
 
 
@@ -194,7 +203,6 @@ def compiled_state(swipl: str) -> Path | None:
     binary, so that a changed source or another SWI-Prolog never uses an
     old state. None when there is no cache folder to write."""
     import hashlib
-    import os
 
     base = Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "pantarhei"
     h = hashlib.sha1()
@@ -213,8 +221,6 @@ def _compile_state(swipl: str, state: Path) -> None:
     """Compile the state in the background, into a file of its own that
     is renamed to `state` when whole (nothing is written if the cache
     folder cannot be made)."""
-    import os
-
     try:
         state.parent.mkdir(parents=True, exist_ok=True)
     except OSError:
@@ -252,10 +258,10 @@ def print_warnings(warnings: list[tuple[str, str, str]]) -> None:
 
 def files_to_read(paths: list[str] | None) -> tuple[list[tuple[str, str, bool]], str, str | None]:
     """The files the door reads for the theory files a user named (the
-    shipped theory for none), their names joined with " + ", and why they
-    cannot be read (None when they can): no such file, a directory, a
-    device. A DFL file is read here (its errors raised) and written out
-    natively for the door; `stand_ins` remove those files."""
+    shipped theory for none), (path, name, False) each, their names joined
+    with " + ", and why they cannot be read (None when they can; then no
+    file: the door checks scenes only)."""
+    from pantarhei.bridge.files import theory_file_problem
     from pantarhei.theory import default_theory
 
     if not paths:
@@ -266,11 +272,7 @@ def files_to_read(paths: list[str] | None) -> tuple[list[tuple[str, str, bool]],
             return [], str(shipped), NO_THEORY
         paths = [str(shipped)]
     for p in paths:
-        path = Path(p)
-        if not path.exists():
-            return [], " + ".join(paths), f"{p}: no such theory file"
-        if path.is_dir():
-            return [], " + ".join(paths), f"{p}: a directory, not a theory file"
-        if not path.is_file():
-            return [], " + ".join(paths), f"{p}: not a regular file (a device or a pipe), not a theory file"
+        problem = theory_file_problem(p)
+        if problem:
+            return [], " + ".join(paths), problem
     return [(p, p, False) for p in paths], " + ".join(paths), None

@@ -64,9 +64,15 @@ def require_valid(props: Iterable[str]) -> list[str]:
     props = known(props)
     bad = violations(props)
     if bad:
-        more = f" (and {len(bad) - 1} more)" if len(bad) > 1 else ""
-        raise UserError(f"invalid antecedent: {bad[0].words()}{more}")
+        raise UserError(invalid(bad))
     return props
+
+
+def invalid(bad: list[Violation]) -> str:
+    """The one line for an antecedent that breaks the constraints `bad`
+    (sorted): the first, and how many more."""
+    more = f" (and {len(bad) - 1} more)" if len(bad) > 1 else ""
+    return f"invalid antecedent: {bad[0].words()}{more}"
 
 
 def random_antecedents(seed: int, n: int) -> list[tuple[str, ...]]:

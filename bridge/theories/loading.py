@@ -8,6 +8,7 @@ import sys
 from pathlib import Path
 
 from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.files import theory_file_problem
 from pantarhei.bridge.theories.dfl import is_dfl, read_dfl
 from pantarhei.bridge.theories.model import Theory
 from pantarhei.bridge.theories.native import read_native
@@ -56,13 +57,9 @@ def load(paths: Path | str | list | tuple | None = None, check: bool = True,
     if not isinstance(paths, (list, tuple)):
         paths = [paths]
     for p in paths:
-        path = Path(p)
-        if not path.exists():
-            raise UserError(f"{p}: no such theory file")
-        if path.is_dir():
-            raise UserError(f"{p}: a directory, not a theory file")
-        if not path.is_file():
-            raise UserError(f"{p}: not a regular file (a device or a pipe), not a theory file")
+        problem = theory_file_problem(p)
+        if problem:
+            raise UserError(problem)
     theories = [read_theory(p) for p in paths]
     for t in theories:
         check_file(t, pouring)
