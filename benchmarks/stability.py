@@ -17,7 +17,7 @@ import sys
 
 def agreement(paths: list[str], scenes: int = 150, seed: int = 1) -> dict[tuple[str, str], float]:
     from pantarhei.bridge.evaluation.heldout import random_exploration, uniform_scenes
-    from pantarhei.bridge.evaluation.pipeline import read_learned
+    from pantarhei.bridge.evaluation.explored_pours import read_learned
     from pantarhei.bridge.evaluation.rule_building import predict
     from pantarhei.bridge.theories.loading import load
 

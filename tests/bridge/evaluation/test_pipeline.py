@@ -9,7 +9,6 @@ import numpy as np
 import pytest
 
 from pantarhei.bridge.evaluation import pipeline as E
-from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.evaluation.heldout import near_antecedents
 from pantarhei.bridge.evaluation.measures import distinct_behaviours
 from pantarhei.bridge.evaluation.plan_checks import goal_sets
@@ -38,23 +37,6 @@ def evaluated(learned, tmp_path_factory) -> tuple[E.Evaluation, Path]:
     opts = E.EvaluationOptions(theory=theory, store=store, scenes=25, seed=3, verify=4, paper_samples=5,
                      executor="inline", progress=False)
     return E.evaluate(opts), store
-
-
-def test_read_learned_finds_the_explored_antecedents_in_order(learned):
-    theory, _ = learned
-    L = E.read_learned(theory)
-    trace = [json.loads(line) for line in theory.with_suffix(".trace.jsonl").read_text().splitlines()]
-    # a batch per iteration; an antecedent whose planes were undecided got more than one
-    assert len(trace) == sum(L.batches) and len(L.batches) == len(L.antecedents)
-    # the candidates set aside after their probe, by iteration and attempt
-    aside = {t["iteration"]: [tuple(sorted(p["antecedent"])) for p in t.get("probes", [])
-                              if not p["kept"]] for t in trace}
-    assert any(aside.values())
-    assert {i: list(by.values()) for i, by in L.set_aside.items()} == {i: a for i, a in aside.items() if a}
-    firsts = [t for t in trace if not t["via"].startswith("more")]
-    assert [tuple(sorted(t["antecedent"])) for t in firsts] == L.antecedents
-    assert [sum(1 for t in trace if t["id"] == f"a{i}") for i in range(1, len(firsts) + 1)] == L.batches
-    assert L.setting("oracle") == "synthetic" and L.setting("batch") == 12
 
 
 def test_rules_rebuilt_from_the_store_are_the_theory_prolog_wrote(evaluated, learned):
@@ -207,27 +189,3 @@ def test_the_command_end_to_end_simulates_nothing_the_second_time_and_gives_the_
     figures = json.loads(json.dumps(ev.as_dict()))
     figures.pop("simulations"), figures.pop("seconds"), again.pop("seconds")
     assert again == figures
-
-
-def test_read_learned_refuses_a_hand_written_theory(tmp_path):
-    p = tmp_path / "hand.pl"
-    p.write_text("rule(r1, defeasible, no_spill).\nbody(r1, pour_low).\n")
-    with pytest.raises(UserError, match="not a theory written by"):
-        E.read_learned(p)
-
-
-def test_the_theory_is_reproduced_from_its_pours_or_the_report_says_not(evaluated, learned, tmp_path):
-    ev, store = evaluated
-    assert ev.reproduced
-    text = learned[0].read_text()
-    edited = tmp_path / "edited.pl"
-    head = next(line for line in text.splitlines() if line.startswith("rule(r2_no_spill,"))
-    flipped = (head.replace("neg(no_spill)", "no_spill") if "neg(" in head
-               else head.replace(", no_spill)", ", neg(no_spill))"))
-    edited.write_text(text.replace(head, flipped))
-    from pantarhei.bridge.exploration.simulation import open_simulator
-
-    again = E.Evaluation(theory=str(edited), oracle="synthetic", settings={}, budget=0)
-    with open_simulator("synthetic", "inline", None, store) as sim:
-        E.exploration_pours(E.read_learned(edited), E.Simulations(sim, again, False), again)
-    assert not again.reproduced

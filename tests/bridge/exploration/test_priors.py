@@ -9,7 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
-from pantarhei.bridge.evaluation.pipeline import exploration_draws, read_learned
+from pantarhei.bridge.evaluation.explored_pours import exploration_draws, read_learned
 from pantarhei.oracle.generative import log_density
 
 from tests.bridge.exploration.test_explore_discover import A0, run, trace

@@ -63,7 +63,8 @@ def test_an_unknown_learner_is_named_with_the_known_ones():
 
 def test_the_exploration_and_the_evaluation_learn_through_the_registry_s_default(monkeypatch):
     from pantarhei.bridge.evaluation.general_answers import general_theories
-    from pantarhei.bridge.evaluation.pipeline import Evaluation, Learned, Pours, _differing_layer
+    from pantarhei.bridge.evaluation.explored_pours import Learned
+    from pantarhei.bridge.evaluation.pipeline import Evaluation, Pours, _differing_layer
     from pantarhei.bridge.evaluation.rule_building import theory_of
     from pantarhei.bridge.exploration.session import Host, Session
     from pantarhei.bridge.theories.model import Theory

@@ -1,0 +1,69 @@
+"""What a learned theory says of its exploration (explored_pours.py): the
+antecedents it explored, in order, and their pours drawn again as the
+exploration simulated them, on theories learned from the synthetic oracle."""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.evaluation import pipeline as E
+from pantarhei.bridge.evaluation.explored_pours import read_learned
+from tests.conftest import run_cli
+
+
+@pytest.fixture(scope="module")
+def learned(tmp_path_factory) -> tuple[Path, Path]:
+    d = tmp_path_factory.mktemp("learned")
+    # the discovering curiosity probes candidates and sets some aside
+    r = run_cli("prolog", "-g", f"explore([oracle(synthetic), executor(inline), progress(false), "
+                f"curiosity(discover), prior_batch(0), budget(6), batch(12), "
+                f"out('{d / 't.pl'}'), store('{d / 's.sqlite'}')])")
+    assert r.code == 0, r.err
+    return d / "t.pl", d / "s.sqlite"
+
+
+def test_read_learned_finds_the_explored_antecedents_in_order(learned):
+    theory, _ = learned
+    L = read_learned(theory)
+    trace = [json.loads(line) for line in theory.with_suffix(".trace.jsonl").read_text().splitlines()]
+    # a batch per iteration; an antecedent whose planes were undecided got more than one
+    assert len(trace) == sum(L.batches) and len(L.batches) == len(L.antecedents)
+    # the candidates set aside after their probe, by iteration and attempt
+    aside = {t["iteration"]: [tuple(sorted(p["antecedent"])) for p in t.get("probes", [])
+                              if not p["kept"]] for t in trace}
+    assert any(aside.values())
+    assert {i: list(by.values()) for i, by in L.set_aside.items()} == {i: a for i, a in aside.items() if a}
+    firsts = [t for t in trace if not t["via"].startswith("more")]
+    assert [tuple(sorted(t["antecedent"])) for t in firsts] == L.antecedents
+    assert [sum(1 for t in trace if t["id"] == f"a{i}") for i in range(1, len(firsts) + 1)] == L.batches
+    assert L.setting("oracle") == "synthetic" and L.setting("batch") == 12
+
+
+def test_read_learned_refuses_a_hand_written_theory(tmp_path):
+    p = tmp_path / "hand.pl"
+    p.write_text("rule(r1, defeasible, no_spill).\nbody(r1, pour_low).\n")
+    with pytest.raises(UserError, match="not a theory written by"):
+        read_learned(p)
+
+
+def test_the_theory_is_reproduced_from_its_pours_or_the_evaluation_says_not(learned, tmp_path):
+    theory, store = learned
+    from pantarhei.bridge.exploration.simulation import open_simulator
+
+    def reproduced(path: Path) -> bool:
+        ev = E.Evaluation(theory=str(path), oracle="synthetic", settings={}, budget=0)
+        with open_simulator("synthetic", "inline", None, store) as sim:
+            E.exploration_pours(read_learned(path), E.Simulations(sim, ev, False), ev)
+        return ev.reproduced
+
+    assert reproduced(theory)
+    text = theory.read_text()
+    edited = tmp_path / "edited.pl"
+    head = next(line for line in text.splitlines() if line.startswith("rule(r2_no_spill,"))
+    flipped = (head.replace("neg(no_spill)", "no_spill") if "neg(" in head
+               else head.replace(", no_spill)", ", neg(no_spill))"))
+    edited.write_text(text.replace(head, flipped))
+    assert not reproduced(edited)
