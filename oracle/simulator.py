@@ -95,6 +95,24 @@ class Simulator:
         self.last_simulated = len(todo)
         return scores
 
+    def recall(self, P: np.ndarray) -> np.ndarray:
+        """Scores (n, 9) of pours simulated before, as the store holds
+        them (a failure, whatever stopped it, a row of NaN); a pour it
+        does not hold is simulated."""
+        P = np.atleast_2d(np.asarray(P, dtype=float))
+        keys = self.keys(P)
+        stored = self.store.get_many(keys) if self.store else {}
+        scores = np.full((len(P), len(load_vocabulary().expectations)), np.nan)
+        lost = []
+        for i, k in enumerate(keys):
+            if k in stored:
+                scores[i] = stored[k].scores
+            else:
+                lost.append(i)
+        if lost:
+            scores[lost] = self.simulate(P[lost])
+        return scores
+
     def _schedule(self, todo: list[tuple[int, np.ndarray]]) -> None:
         """StoreError if the store cannot take the results of `todo` (before
         the first pour); then `todo` longest first."""

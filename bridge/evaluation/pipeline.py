@@ -4,8 +4,8 @@ from, on scenes exploration never explored.
 Everything is simulated by the same oracle, through the same store, so a
 second run simulates nothing:
 
-* the exploration's own simulations, drawn again with the seeds the
-  exploration used (all found in the store when it is the same store);
+* the exploration's own simulations, drawn again as its trace's draws
+  record them (all found in the store when it is the same store);
 * held-out scenes: random valid antecedents, one pour each, in three sets:
   `uniform` (uniformly random valid antecedents), `near` (an explored
   antecedent with one or two propositions added: where the theory speaks)
@@ -220,7 +220,7 @@ def evaluate(opts: EvaluationOptions) -> Evaluation:
 
 
 def exploration_pours(learned: Learned, run: Simulations, ev: Evaluation) -> Pours:
-    """The exploration's simulations, drawn again with its seeds; whether
+    """The exploration's simulations, drawn again from its trace; whether
     they give the theory's rules, and per explored antecedent the share of
     its own pours that kept every expectation."""
     mode = str(learned.setting("qualify", "weighted"))

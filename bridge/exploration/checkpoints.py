@@ -9,12 +9,15 @@ of their own in WAL mode, beside the simulator's results:
   those settings as JSON;
 * `exploration_checkpoints`: after every explored antecedent, the state of
   the loop (the explored antecedents and A_new, as Prolog term text) and
-  that iteration's trace line;
-* `exploration_simulations`: the simulations of every iteration
-  (parameterizations and scores as float64 arrays).
+  that iteration's trace line, whose draws say which pours it simulated.
 
-An iteration's simulations and its checkpoint are committed in one
-transaction, so a run killed at any moment resumes from a consistent state.
+The pours themselves are the simulator's rows of `simulation_results`,
+each committed as it arrives: a checkpoint is written after its pours, so
+a run killed at any moment resumes from a consistent state, its pours
+drawn again from the trace and their scores read from the store
+(bridge/exploration/session.py). A table `exploration_simulations` of an
+older layout (a second copy of those pours) is dropped when the store is
+opened.
 """
 from __future__ import annotations
 
@@ -25,8 +28,6 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Mapping
-
-import numpy as np
 
 from pantarhei.oracle.store_file import connect
 
@@ -46,14 +47,7 @@ CREATE TABLE IF NOT EXISTS exploration_checkpoints (
     trace TEXT NOT NULL,
     PRIMARY KEY (run, iteration)
 );
-CREATE TABLE IF NOT EXISTS exploration_simulations (
-    run TEXT NOT NULL,
-    iteration INTEGER NOT NULL,
-    rows INTEGER NOT NULL,
-    params BLOB NOT NULL,
-    scores BLOB NOT NULL,
-    PRIMARY KEY (run, iteration)
-);
+DROP TABLE IF EXISTS exploration_simulations;
 """
 
 
@@ -65,12 +59,10 @@ def run_key(course: Mapping[str, Any]) -> str:
 
 @dataclass
 class Checkpoint:
-    """The latest saved state of a run."""
+    """The latest saved state of a run: the loop's state and the trace up
+    to it (its draws are every pour so far)."""
     iteration: int
     state: str
-    params: np.ndarray          # (n, 30), every simulation so far, in order
-    scores: np.ndarray          # (n, 9)
-    batches: list[int]          # the number of simulations of each iteration
     trace: list[dict]
     finished: bool
 
@@ -107,18 +99,13 @@ class ExplorationStore:
             self._forget(run)
 
     def _forget(self, run: str) -> None:
-        for table in ("exploration_runs", "exploration_checkpoints", "exploration_simulations"):
+        for table in ("exploration_runs", "exploration_checkpoints"):
             self._db.execute(f"DELETE FROM {table} WHERE run = ?", (run,))
 
-    def save(self, run: str, iteration: int, params: np.ndarray, scores: np.ndarray,
-             state: str, trace: Mapping[str, Any]) -> None:
-        """Commit one iteration: its simulations, the loop's state after it,
-        and its trace line."""
-        params = np.ascontiguousarray(params, dtype=np.float64)
-        scores = np.ascontiguousarray(scores, dtype=np.float64)
+    def save(self, run: str, iteration: int, state: str, trace: Mapping[str, Any]) -> None:
+        """Commit one iteration: the loop's state after it and its trace
+        line (its pours are in the store already)."""
         with self._transaction():
-            self._db.execute("INSERT OR REPLACE INTO exploration_simulations VALUES (?, ?, ?, ?, ?)",
-                             (run, iteration, len(params), params.tobytes(), scores.tobytes()))
             self._db.execute("INSERT OR REPLACE INTO exploration_checkpoints VALUES (?, ?, ?, ?)",
                              (run, iteration, state, json.dumps(trace, sort_keys=True)))
             self._db.execute("UPDATE exploration_runs SET iterations = ?, updated = ? WHERE run = ?",
@@ -146,9 +133,8 @@ class ExplorationStore:
             f"SELECT trace FROM exploration_checkpoints WHERE run = ?{upto} ORDER BY iteration",
             (run,) if last is None else (run, last))]
 
-    def latest(self, run: str, n_params: int, n_scores: int) -> Checkpoint | None:
-        """The run's latest checkpoint with every simulation up to it, or
-        None when nothing of it is saved."""
+    def latest(self, run: str) -> Checkpoint | None:
+        """The run's latest checkpoint, or None when nothing of it is saved."""
         row = self._db.execute("SELECT iterations, finished FROM exploration_runs WHERE run = ?",
                                (run,)).fetchone()
         if row is None or row[0] == 0:
@@ -156,17 +142,7 @@ class ExplorationStore:
         last, finished = int(row[0]), bool(row[1])
         (state,) = self._db.execute("SELECT state FROM exploration_checkpoints "
                                     "WHERE run = ? AND iteration = ?", (run, last)).fetchone()
-        trace = self.trace(run, last)
-        P, S, batches = [], [], []
-        for rows, p, s in self._db.execute(
-                "SELECT rows, params, scores FROM exploration_simulations "
-                "WHERE run = ? AND iteration <= ? ORDER BY iteration", (run, last)):
-            P.append(np.frombuffer(p, dtype=np.float64).reshape(rows, n_params))
-            S.append(np.frombuffer(s, dtype=np.float64).reshape(rows, n_scores))
-            batches.append(rows)
-        params = np.vstack(P) if P else np.empty((0, n_params))
-        scores = np.vstack(S) if S else np.empty((0, n_scores))
-        return Checkpoint(last, state, params, scores, batches, trace, finished)
+        return Checkpoint(last, state, self.trace(run, last), finished)
 
     def _transaction(self) -> "_Transaction":
         return _Transaction(self._db)

@@ -59,7 +59,8 @@ from pantarhei.bridge.exploration.prompt_oracle import (oracle_describe, oracle_
                                                         oracle_simulate)
 from pantarhei.bridge.exploration.qualify import QUALIFY, consequent
 from pantarhei.bridge.exploration.significance import Tested, permutation_test, shuffle_seed
-from pantarhei.bridge.exploration.simulation import batch_seed, open_simulator, oracle_identity
+from pantarhei.bridge.exploration.simulation import (batch_seed, drawn_pours, open_simulator,
+                                                     oracle_identity, trace_draws)
 from pantarhei.bridge.exploration.checkpoints import ExplorationStore, run_key
 from pantarhei.bridge.exploration.steepest import significant_planes, steepest_plane
 from pantarhei.bridge.exploration.weights import weights
@@ -85,11 +86,12 @@ class Session:
     store: ExplorationStore
     simulator: Any
     oracle_version: str
+    #: Every pour so far and its scores, in the order simulated: the
+    #: numbers the planes, weights and models are fitted on. The record of
+    #: them is the store's (the trace's draws and the simulator's results),
+    #: from which a resumed run reads them back.
     params: np.ndarray
     scores: np.ndarray
-    #: How many of the pours the store holds: those after it are the
-    #: iteration's under way, which its checkpoint saves.
-    saved: int = 0
     log_dens: dict[str, np.ndarray] = field(default_factory=dict)
     #: Per antecedent: ((weights, ridge), its planes).
     plane_cache: dict[str, tuple[tuple[np.ndarray, float], Planes | None]] = field(default_factory=dict)
@@ -247,13 +249,17 @@ class Host:
             store = ExplorationStore(store_path)
         except Exception as e:
             raise UserError(f"cannot open the store {store_path}: {e}") from None
-        vocab = load_vocabulary()
-        n_par, n_exp = len(vocab.parameters), len(vocab.expectations)
-        saved = None
+        saved, draws = None, []
         if truthy(request.get("resume")):
-            saved = store.latest(run, n_par, n_exp)
+            saved = store.latest(run)
             if saved is None:
                 note("no saved exploration with these settings: starting afresh")
+            else:
+                try:
+                    draws = trace_draws(saved.trace)
+                except ValueError as e:
+                    note(f"the saved exploration's trace cannot be read back ({e}): starting afresh")
+                    saved = None
         if saved is None:
             store.start(run, decided_by)
         out = Path(str(request["out"]))
@@ -265,11 +271,15 @@ class Host:
         simulator = open_simulator(oracle, str(request.get("executor", defaults()["executor"])),
                                    int(workers) if workers not in (None, "") else None,
                                    store_path, request.get("ray_address") or None, oracle_options)
-        self.session = Session(
-            run=run, store=store, simulator=simulator, oracle_version=version,
-            params=saved.params.copy() if saved else np.empty((0, n_par)),
-            scores=saved.scores.copy() if saved else np.empty((0, n_exp)),
-            saved=len(saved.params) if saved else 0)
+        try:
+            P = drawn_pours(draws, int(request["seed"]), int(request["batch"]))
+            S = simulator.recall(P) if len(P) else np.empty((0, len(load_vocabulary().expectations)))
+        except BaseException:
+            simulator.close()
+            store.close()
+            raise
+        self.session = Session(run=run, store=store, simulator=simulator, oracle_version=version,
+                               params=P, scores=S)
         if truthy(request.get("progress", defaults()["progress"])):
             bar = request["bar"]
             self.session.bar = open_bar(int(bar["total"]), str(bar["unit"]),
@@ -384,14 +394,13 @@ class Host:
                 "oracle_version": s.oracle_version}
 
     def checkpoint(self, request: dict) -> dict:
-        """Save the iteration: the pours since the last checkpoint, Prolog's
-        state and the trace line (appended to the trace beside `out`)."""
+        """Save the iteration: Prolog's state and the trace line, whose
+        draws record its pours (in the store already); the line is appended
+        to the trace beside `out`."""
         s = self.need_session()
         iteration = int(request["iteration"])
-        P, S = s.params[s.saved:], s.scores[s.saved:]
         trace = rounded(dict(request["trace"]))
-        s.store.save(s.run, iteration, P, S, str(request["state"]), trace)
-        s.saved = len(s.params)
+        s.store.save(s.run, iteration, str(request["state"]), trace)
         s.elapsed.append(round(time.monotonic() - s.started, 3))
         append_trace(Path(str(request["out"])), trace)
         if s.bar is not None:

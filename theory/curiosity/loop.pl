@@ -1,6 +1,7 @@
 :- module(curiosity_loop,
           [ loop/4,                   % +S0, +Settings, -S, -Stop
-            next_move/3               % +State, +Settings, -Move
+            next_move/3,              % +State, +Settings, -Move
+            draws/6                   % +Probes, +Settings, +Props, +Attempt, +Probed, -Draws
           ]).
 /** <module> The loop of Algorithm 1 and its budget
 
@@ -109,12 +110,31 @@ step(S0, Settings, st(I1, Explored1, ANew, SetAside)) :-
                                         attempt:Attempt, batch:Settings.batch,
                                         seed:Settings.seed, probed:Probed}, Sim),
     by_curiosity(Settings, after_batch(step(I1, Id, Cand, Explored1, Rest, SetAside, Probes, Sim),
-                                       Settings, ANew, Trace)),
+                                       Settings, ANew, Trace0)),
+    draws(Probes, Settings, Props, Attempt, Probed, Draws),
+    Trace = Trace0.put(draws, Draws),
     length(ANew, Left),
     S1 = st(I1, Explored1, ANew, SetAside),
     format(string(State), "~k", [S1]),
     call_bridge(exploration_checkpoint, _{iteration:I1, state:State, trace:Trace,
                                           explored:I1, a_new:Left, out:Settings.out}, _).
+
+%!  draws(+Probes:list, +Settings:dict, +Props:list, +Attempt:integer,
+%!        +Probed:integer, -Draws:list) is det.
+%
+%   Draws are the step's pours as its trace records them, in the order
+%   they were simulated: for each candidate probed, the first pours of its
+%   attempt's batch, then the pours of the explored antecedent's batch
+%   that its probe had not simulated. A draw is antecedent (its
+%   propositions), attempt and pours [From, To]: pours From to To - 1 of
+%   the batch of `batch` pours sampled with the seed of the iteration and
+%   the attempt. The trace is the record of every pour of the run: a
+%   resumed exploration and the evaluation draw them again from it, and
+%   read their scores from the store.
+draws(Probes, Settings, Props, Attempt, Probed, Draws) :-
+    by_curiosity(Settings, probe_size(Settings, M)),
+    findall(_{antecedent:P, attempt:K, pours:[0, M]}, member(probe(P, _, _, K), Probes), Probing),
+    append(Probing, [_{antecedent:Props, attempt:Attempt, pours:[Probed, Settings.batch]}], Draws).
 
 %   explored(+Cand, +Explored, -Id, -Explored1): Explored with the
 %   candidate added as the next antecedent, Id (a<N>); for more pours of an

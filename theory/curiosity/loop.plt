@@ -30,4 +30,17 @@ test(the_priors_take_the_last_batch_once) :-
     next_move(st(2, [A1], [C], []), Settings.put(curiosity, paper), step),
     initial_state(_{}, Settings.put(prior_batch, 0), S0).
 
+% A step's draws: each probe's first pours of its attempt's batch, in the
+% order probed, then what the explored antecedent's probe left of its batch;
+% without probes, the whole batch of attempt 0.
+test(a_step_records_its_pours_as_draws) :-
+    Settings = _{curiosity:discover, batch:10, probe:3},
+    draws([probe([pour_low], 0.2, false, 0), probe([pour_high], 0.9, true, 1)], Settings,
+          [pour_high], 1, 3, Draws),
+    Draws = [_{antecedent:[pour_low], attempt:0, pours:[0, 3]},
+              _{antecedent:[pour_high], attempt:1, pours:[0, 3]},
+              _{antecedent:[pour_high], attempt:1, pours:[3, 10]}],
+    draws([], Settings.put(curiosity, learn), [], 0, 0, Alone),
+    Alone = [_{antecedent:[], attempt:0, pours:[0, 10]}].
+
 :- end_tests(curiosity_loop).

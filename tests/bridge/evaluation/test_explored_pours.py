@@ -10,7 +10,7 @@ import pytest
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.evaluation import pipeline as E
-from pantarhei.bridge.evaluation.explored_pours import read_learned
+from pantarhei.bridge.evaluation.explored_pours import exploration_draws, read_learned
 from tests.conftest import run_cli
 
 
@@ -31,15 +31,37 @@ def test_read_learned_finds_the_explored_antecedents_in_order(learned):
     trace = [json.loads(line) for line in theory.with_suffix(".trace.jsonl").read_text().splitlines()]
     # a batch per iteration; an antecedent whose planes were undecided got more than one
     assert len(trace) == sum(L.batches) and len(L.batches) == len(L.antecedents)
-    # the candidates set aside after their probe, by iteration and attempt
-    aside = {t["iteration"]: [tuple(sorted(p["antecedent"])) for p in t.get("probes", [])
-                              if not p["kept"]] for t in trace}
-    assert any(aside.values())
-    assert {i: list(by.values()) for i, by in L.set_aside.items()} == {i: a for i, a in aside.items() if a}
+    # the candidates set aside after their probe, iteration by iteration
+    aside = [tuple(sorted(p["antecedent"])) for t in trace for p in t.get("probes", [])
+             if not p["kept"]]
+    assert aside
+    assert [tuple(sorted(d.antecedent)) for d in L.draws if not d.explored] == aside
     firsts = [t for t in trace if not t["via"].startswith("more")]
     assert [tuple(sorted(t["antecedent"])) for t in firsts] == L.antecedents
     assert [sum(1 for t in trace if t["id"] == f"a{i}") for i in range(1, len(firsts) + 1)] == L.batches
     assert L.setting("oracle") == "synthetic" and L.setting("batch") == 12
+    # every pour of the run, probes too: as many as it simulated, each in its store
+    P, drawn, of, ends = exploration_draws(L)
+    assert len(P) == len(drawn) == len(of) == trace[-1]["simulations"] == ends[-1]
+    assert sorted(set(of.tolist())) == [-1, *range(len(L.antecedents))]
+    from pantarhei.bridge.exploration.simulation import open_simulator
+
+    with open_simulator("synthetic", "inline", None, learned[1]) as sim:
+        assert len(sim.store.get_many(sim.keys(P))) == len(set(sim.keys(P)))
+
+
+def test_a_trace_without_its_draws_is_refused_in_one_line(learned, tmp_path):
+    theory, _ = learned
+    copy = tmp_path / "copy.pl"
+    copy.write_text(theory.read_text())
+    lines = [json.loads(line) for line in theory.with_suffix(".trace.jsonl").read_text().splitlines()]
+    del lines[1]["draws"]
+    copy.with_suffix(".trace.jsonl").write_text("".join(json.dumps(t) + "\n" for t in lines))
+    with pytest.raises(UserError, match="line 2 of the trace does not record its draws"):
+        read_learned(copy)
+    copy.with_suffix(".trace.jsonl").unlink()
+    with pytest.raises(UserError, match="trace"):
+        read_learned(copy)
 
 
 def test_read_learned_refuses_a_hand_written_theory(tmp_path):
@@ -66,4 +88,5 @@ def test_the_theory_is_reproduced_from_its_pours_or_the_evaluation_says_not(lear
     flipped = (head.replace("neg(no_spill)", "no_spill") if "neg(" in head
                else head.replace(", no_spill)", ", neg(no_spill))"))
     edited.write_text(text.replace(head, flipped))
+    edited.with_suffix(".trace.jsonl").write_text(theory.with_suffix(".trace.jsonl").read_text())
     assert not reproduced(edited)

@@ -122,26 +122,31 @@ def test_resume_with_nothing_saved_starts_afresh(tmp_path):
 
 
 def test_the_store_gives_back_every_iteration_it_committed(tmp_path):
+    import sqlite3
+
     from pantarhei.bridge.exploration.checkpoints import ExplorationStore, run_key
 
     settings = {"seed": 3, "oracle": "synthetic", "initial": ["pour_low"]}
     run = run_key(settings)
     assert run == run_key(dict(reversed(settings.items())))      # order does not matter
     assert run != run_key({**settings, "seed": 4})
-    rng = np.random.default_rng(0)
-    batches = [(rng.random((2, 30)), rng.random((2, 9))), (rng.random((3, 30)), rng.random((3, 9)))]
+    # a store of the older layout, with a second copy of the pours
+    with sqlite3.connect(tmp_path / "s.sqlite") as db:
+        db.execute("CREATE TABLE exploration_simulations (run TEXT, iteration INTEGER, rows INTEGER, "
+                   "params BLOB, scores BLOB)")
     with ExplorationStore(tmp_path / "s.sqlite") as store:
-        assert store.latest(run, 30, 9) is None
+        assert store.latest(run) is None
         store.start(run, settings)
-        for i, (P, S) in enumerate(batches, start=1):
-            store.save(run, i, P, S, f"st({i})", {"iteration": i})
+        for i in (1, 2):
+            store.save(run, i, f"st({i})", {"iteration": i})
     with ExplorationStore(tmp_path / "s.sqlite") as store:            # read back from the file
-        saved = store.latest(run, 30, 9)
-        assert (saved.iteration, saved.state, saved.batches, saved.finished) == (2, "st(2)", [2, 3], False)
-        assert np.array_equal(saved.params, np.vstack([b[0] for b in batches]))
-        assert np.array_equal(saved.scores, np.vstack([b[1] for b in batches]))
+        saved = store.latest(run)
+        assert (saved.iteration, saved.state, saved.finished) == (2, "st(2)", False)
         assert saved.trace == store.trace(run) == [{"iteration": 1}, {"iteration": 2}]
         store.finish(run)
-        assert store.latest(run, 30, 9).finished
+        assert store.latest(run).finished
         store.start(run, settings)                                  # afresh: the saved state goes
-        assert store.latest(run, 30, 9) is None and store.exists(run)
+        assert store.latest(run) is None and store.exists(run)
+    with sqlite3.connect(tmp_path / "s.sqlite") as db:               # the pours once: the simulator's
+        tables = {t for (t,) in db.execute("SELECT name FROM sqlite_master WHERE type = 'table'")}
+    assert "exploration_simulations" not in tables

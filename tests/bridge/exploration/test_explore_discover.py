@@ -188,10 +188,15 @@ def test_paper_curiosity_writes_the_theory_it_wrote_before(tmp_path):
     seed 3, 12 rules, as written when the priors became the ordinary pour
     (before, with the same code, it explored 12 antecedents; the ordinary
     pour empties A_new after 5), with the trace's numbers kept to
-    trace.DIGITS significant digits, the same on every machine."""
+    trace.DIGITS significant digits, the same on every machine. The trace
+    now also records each step's draws (one batch of attempt 0: nothing
+    is probed); without them, it is the one written before."""
     r = run(tmp_path, name="p", curiosity="paper", seed=3, budget=12)
     assert Path(r["out"]).read_bytes() == (FIXTURES / "paper_synthetic_seed3.pl").read_bytes()
-    assert (Path(r["out"]).with_suffix(".trace.jsonl").read_bytes()
+    lines = [json.loads(t) for t in Path(r["out"]).with_suffix(".trace.jsonl").read_text().splitlines()]
+    assert [t.pop("draws") for t in lines] == \
+        [[{"antecedent": t["antecedent"], "attempt": 0, "pours": [0, 31]}] for t in lines]
+    assert ("".join(json.dumps(t, sort_keys=True) + "\n" for t in lines).encode()
             == (FIXTURES / "paper_synthetic_seed3.trace.jsonl").read_bytes())
 
 

@@ -100,8 +100,8 @@ class Synthetic:
 
 def test_the_pours_come_from_the_requests_and_the_store_holds_each_step_s(tmp_path):
     """The session keeps no setting nor a count of Prolog's: the batch, the
-    seed and the pours a probe added come with each request, and a
-    checkpoint saves the pours since the one before."""
+    seed and the pours a probe added come with each request; a checkpoint
+    saves Prolog's state and trace line, no copy of the pours."""
     from pantarhei.bridge.exploration.checkpoints import ExplorationStore
     from pantarhei.bridge.exploration.session import Host
     from pantarhei.bridge.exploration.simulation import batch_seed
@@ -117,9 +117,11 @@ def test_the_pours_come_from_the_requests_and_the_store_holds_each_step_s(tmp_pa
     assert probed["simulations"] == 3
     assert host.simulate({**step, "probed": 3})["simulations"] == 10    # 7 more, not 10
     assert np.array_equal(host.session.params, sample(["pour_low"], 10, batch_seed(7, 1, 0)))
-    checkpoint = {"state": "s", "trace": {}, "out": str(tmp_path / "t.pl")}
+    checkpoint = {"state": "s", "trace": {"draws": []}, "out": str(tmp_path / "t.pl")}
     host.checkpoint({**checkpoint, "iteration": 1})
     host.simulate({**step, "iteration": 2, "batch": 4})
-    host.checkpoint({**checkpoint, "iteration": 2})
-    assert store.latest("r", 30, 9).batches == [10, 4]
+    host.checkpoint({**checkpoint, "iteration": 2, "state": "s2"})
+    saved = store.latest("r")
+    assert (saved.iteration, saved.state, saved.trace) == (2, "s2", [{"draws": []}] * 2)
+    assert len(host.session.params) == 14
     store.close()

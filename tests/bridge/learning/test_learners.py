@@ -93,7 +93,7 @@ def test_the_exploration_and_the_evaluation_learn_through_the_registry_s_default
 
     # the evaluation: the learning curiosity's layer learned again, and the
     # general theory of curiosity's pours
-    learned = Learned(Path("t.pl"), Theory(), {"seed": [3]}, list(BODIES))
+    learned = Learned(Path("t.pl"), Theory(), {"seed": [3]}, list(BODIES), [], [])
     assert _differing_layer(learned, P, S)        # an empty theory: every rule differs
     ev = Evaluation("t", "synthetic", {}, len(P))
     general_theories(ev, theory_of([], np.ones((0, 9), dtype=bool), "shipped"),
