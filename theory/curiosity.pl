@@ -10,7 +10,7 @@
             modify_past/4,            % +Props, +Moves, +Exclude, -New
             parameter_mean/3,         % +Props, +Param, -Mean
             rule_facts/3,             % +Learned, +Qualified, -Facts
-            write_theory/4            % +File, +Settings, +Facts, +General
+            write_theory/5            % +File, +Settings, +Layout, +Facts, +General
           ]).
 /** <module> Curiosity-driven exploration: Algorithm 1 of the paper
 

@@ -89,6 +89,13 @@ after_batch(step(I1, Id, Cand, Explored, Rest, SetAside, Probes, Sim), Settings,
 second_layer(_, Facts, Settings, General) :-
     general_layer_if_asked(Facts, Settings, General).
 
+theory_layout(_{rules:true, batches:true,
+                header:[ "%   setting(Key, Value): how the exploration ran;",
+                         "%   set_aside(Iteration, Attempt, Prop): a proposition of a candidate whose",
+                         "%   probe (the Attempt-th of the Iteration, from 0) set it aside." ],
+                layer_header:Lines}) :-
+    general_layer_header(Lines).
+
 %!  probe_entry(+Probe, -Entry:dict) is det.
 %
 %   Entry is a probe(Props, Score, Kept, Attempt) of probe.pl as the trace

@@ -28,7 +28,13 @@ predicates (unexported; called as Module:Goal):
     the reply of its simulation. ANew is the new A_new (the candidates),
     Trace the step's line of the trace (what a step records);
   - second_layer(+Explored, +Facts, +Settings, -General): the facts the
-    theory writes after those of Algorithm 1's rules (rules.pl).
+    theory writes after those of Algorithm 1's rules (rules.pl);
+  - theory_layout(-Layout): what its theory file holds (rules.pl writes
+    it): _{rules:R, batches:B, header:H, layer_header:L}, R true when
+    Algorithm 1's rules of the explored antecedents are written, B true
+    when their provenance counts their batches, H the lines the file's
+    header ends with (what its setting/2 and other facts mean) and L the
+    header of the second layer.
 
 The modules: teach.pl (`learn`), discover.pl (`discover`), paper.pl
 (`paper`).

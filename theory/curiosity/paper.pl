@@ -45,6 +45,11 @@ after_batch(step(I1, Id, Cand, Explored, Rest, _, _, Sim), Settings, ANew, Trace
 second_layer(_, Facts, Settings, General) :-
     general_layer_if_asked(Facts, Settings, General).
 
+theory_layout(_{rules:true, batches:false,
+                header:["%   setting(Key, Value): how the exploration ran."],
+                layer_header:Lines}) :-
+    general_layer_header(Lines).
+
 %!  paper_added(+Best:dict, +Settings:dict, +Explored:list, +Rest:list, -Added:list) is det.
 %
 %   The paper's step: modify/5 along the steepest plane's signed

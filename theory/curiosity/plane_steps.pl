@@ -1,6 +1,7 @@
 :- module(curiosity_plane_steps,
           [ plane_step_trace/8,       % +Best, +Followed, +I-Id, +Cand, +Sim, +Added, +Left, -Trace
-            general_layer_if_asked/3  % +Facts, +Settings, -General
+            general_layer_if_asked/3, % +Facts, +Settings, -General
+            general_layer_header/1    % -Lines
           ]).
 /** <module> What the curiosities that follow planes share
 
@@ -52,3 +53,16 @@ general_layer_if_asked(Facts, Settings, General) :-
     ->  general_layer(Facts, Settings, General)
     ;   General = []
     ).
+
+%!  general_layer_header(-Lines:list) is det.
+%
+%   The header of the general layer in the theory file (layer_header of
+%   the curiosity's theory_layout).
+general_layer_header([ "% General rules, learned from every pour of the exploration",
+                       "% and the learner's own pours (bridge/learning/gaps.py), by",
+                       "% bridge/learning/generalize.py: a default per expectation and the",
+                       "% contrasts that move it. provenance(Id, support, N): the pours whose",
+                       "% description holds the body; kept: how many of them keep the head;",
+                       "% confidence_permille: P(head | body), the share of the pours sampled",
+                       "% for the body (the rest an ordinary pour) that keep the head.",
+                       "% sup/2 below orders both layers (see bridge/learning/layers.py)." ]).

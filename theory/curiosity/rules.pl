@@ -1,9 +1,9 @@
 :- module(curiosity_rules,
-          [ learned/6,                % +Explored, +SetAside, +Settings, +Stop, +Left, -Facts
+          [ learned/7,                % +Explored, +SetAside, +Settings, +Layout, +Stop, +Left, -Facts
             rule_facts/3,             % +Explored, +Qualified, -Facts
             general_layer/3,          % +Facts, +Settings, -General
             learned_layer/3,          % +Explored, +Settings, -Layer
-            write_theory/4            % +File, +Settings, +Facts, +General
+            write_theory/5            % +File, +Settings, +Layout, +Facts, +General
           ]).
 /** <module> Qualify and the learned theory
 
@@ -11,8 +11,10 @@ At the end of the loop each explored antecedent is qualified (the outcome
 of its simulations, exploration_qualify) and becomes defeasible rules, one
 per expectation, with their provenance; the settings of the run and the
 candidates set aside are facts beside them. The general rules, learned
-from every pour, are the second layer (general_layer/3). write_theory/4
-writes both, once, in the common subset of Prolog and ASP.
+from every pour, are the second layer (general_layer/3). write_theory/5
+writes both, once, in the common subset of Prolog and ASP. What the
+run's curiosity writes (whether Algorithm 1's rules, their batches, the
+headers) is its theory_layout of interface.pl.
 */
 
 :- use_module(library(apply)).
@@ -22,23 +24,25 @@ writes both, once, in the common subset of Prolog and ASP.
 :- use_module(settings).
 :- use_module('../learned_rules', [rule_id/3, antecedent_id/2]).
 
-%!  learned(+Explored:list, +SetAside:list, +Settings:dict, +Stop, +Left:integer, -Facts:list) is det.
+%!  learned(+Explored:list, +SetAside:list, +Settings:dict, +Layout:dict, +Stop,
+%!          +Left:integer, -Facts:list) is det.
 %
 %   Facts are those of the learned theory: the settings of the run (with
 %   why it stopped, Stop, and how many candidates were left in A_new,
 %   Left), set_aside/3 for each proposition of a candidate set aside after
 %   its probe, and the rules of the explored antecedents, qualified by
-%   exploration_qualify (rule_facts/3); for the learning curiosity none
-%   (its rules are its one layer), and nothing is qualified.
-learned(Explored, SetAside, Settings, Stop, Left, Facts) :-
-    (   Settings.curiosity == learn
-    ->  Qualified = []                  % its one layer: learned_layer/3
-    ;   Qualified = Explored
+%   exploration_qualify (rule_facts/3), when the curiosity's Layout
+%   (theory_layout of interface.pl) writes them (`rules`; the learning
+%   curiosity's rules are its one layer, and nothing is qualified), with
+%   their batches of pours when it says so (`batches`).
+learned(Explored, SetAside, Settings, Layout, Stop, Left, Facts) :-
+    (   Layout.rules == true
+    ->  Qualified = Explored
+    ;   Qualified = []                  % its one layer: learned_layer/3
     ),
     maplist(entry, Qualified, Entries),
-    (   Settings.curiosity == discover -> Batches = true ; Batches = false ),
     call_bridge(exploration_qualify, _{antecedents:Entries, mode:Settings.qualify,
-                                       batches:Batches}, Reply),
+                                       batches:Layout.batches}, Reply),
     setting_facts(Settings, Reply, Stop, Explored, Left, SettingFacts),
     findall(set_aside(I, K, P), ( member(aside(I, K, Ps), SetAside), member(P, Ps) ), AsideFacts),
     rule_facts(Qualified, Reply.antecedents, RuleFacts),
@@ -68,8 +72,8 @@ setting_facts(Settings, Reply, Stop, Explored, Left, Facts) :-
 %   ant(Id, Props, Parent, Via) and its qualified outcome (a dict with
 %   `outcomes`, a list of dicts with expectation, holds, confidence_permille
 %   and score_permille, and the antecedent's `simulations` and
-%   `weight_mass_permille`, and for the discovering curiosity `batches`,
-%   its batches of pours), one defeasible rule per outcome literal, its
+%   `weight_mass_permille`, and `batches`, its batches of pours, when the
+%   curiosity's layout records them), one defeasible rule per outcome literal, its
 %   body facts, learned/1 and its provenance.
 rule_facts(Explored, Qualified, Facts) :-
     foldl(antecedent_facts(Qualified), Explored, Fs, []),
@@ -179,27 +183,29 @@ general_rule_facts(R, Facts) :-
     ;   Antecedent = []
     ).
 
-%!  write_theory(+File, +Settings:dict, +Facts:list, +General:list) is det.
+%!  write_theory(+File, +Settings:dict, +Layout:dict, +Facts:list, +General:list) is det.
 %
 %   Write Facts (Algorithm 1's) and General (the general layer, if any) to
 %   File, in the common subset of Prolog and ASP, each with a header
-%   saying what it is. The file is written beside under a temporary name
+%   saying what it is (the lines of the curiosity's Layout: `header`,
+%   `layer_header`). The file is written beside under a temporary name
 %   and renamed, so File is never half-written.
-write_theory(File, Settings, Facts, General) :-
+write_theory(File, Settings, Layout, Facts, General) :-
     file_directory_name(File, Dir),
     make_directory_path(Dir),
     current_prolog_flag(pid, Pid),
     format(atom(Tmp), "~w.~w.tmp", [File, Pid]),
     setup_call_cleanup(
         open(Tmp, write, Out, [encoding(utf8)]),
-        ( write_facts(Out, Settings, Facts),
-          write_general(Out, Settings, General) ),
+        ( write_facts(Out, Settings, Layout.header, Facts),
+          write_general(Out, Layout.layer_header, General) ),
         close(Out)),
     rename_file(Tmp, File).
 
-%   write_facts(+Out, +Settings, +Facts): the header, then each fact, a
-%   blank line before each rule.
-write_facts(Out, Settings, Facts) :-
+%   write_facts(+Out, +Settings, +Header, +Facts): the header (its common
+%   lines, then the curiosity's Header lines and a blank line), then each
+%   fact, a blank line before each rule.
+write_facts(Out, Settings, Header, Facts) :-
     format(Out, "% A theory of pouring learned by curiosity-driven exploration~n", []),
     format(Out, "% (pantarhei explore, oracle ~w, seed ~w).~n", [Settings.oracle, Settings.seed]),
     format(Out, "%~n", []),
@@ -211,49 +217,20 @@ write_facts(Out, Settings, Facts) :-
     format(Out, "%   parent antecedent, simulations with a weight, their weight mass and the~n", []),
     format(Out, "%   verdict's confidence in permille, and the plane, parameter and sign~n", []),
     format(Out, "%   that produced the antecedent);~n", []),
-    (   get_dict(curiosity, Settings, discover)
-    ->  format(Out, "%   setting(Key, Value): how the exploration ran;~n", []),
-        format(Out, "%   set_aside(Iteration, Attempt, Prop): a proposition of a candidate whose~n", []),
-        format(Out, "%   probe (the Attempt-th of the Iteration, from 0) set it aside.~n~n", [])
-    ;   format(Out, "%   setting(Key, Value): how the exploration ran.~n~n", [])
-    ),
+    forall(member(Line, Header), format(Out, "~w~n", [Line])),
+    nl(Out),
     forall(member(F, Facts),
            (   ( F = rule(_, _, _) -> nl(Out) ; true ),
                write_fact(Out, F)
            )).
 
-%   write_general(+Out, +Settings, +General): the general layer (the
-%   learning curiosity's one layer) after a blank line, its header, then
-%   each fact.
+%   write_general(+Out, +Header, +General): the general layer (the
+%   learning curiosity's one layer) after a blank line, its Header lines,
+%   then each fact.
 write_general(_, _, []) :- !.
-write_general(Out, Settings, General) :-
-    general_header(Settings.curiosity, Header),
+write_general(Out, Header, General) :-
     forall(member(Line, ["" | Header]), format(Out, "~w~n", [Line])),
     forall(member(F, General), write_fact(Out, F)).
-
-%   general_header(+Curiosity, -Lines): what the header of the rules after
-%   Algorithm 1's says: the learning curiosity's one layer, or the others'
-%   general layer.
-general_header(learn, Lines) :- !,
-    Lines = [ "% The rules curiosity learned: per expectation, a default (the",
-              "% ordinary pour, the empty antecedent) and the explored antecedents",
-              "% whose likelihoods the rest of the theory does not give",
-              "% (bridge/learning/generalize.py over the explored antecedents).",
-              "% provenance(Id, antecedent, A): the explored antecedent of its body;",
-              "% support: the pours whose description holds the body; kept: how",
-              "% many of them keep the head; confidence_permille: P(head | body), the",
-              "% share of the pours sampled for the body (the rest an ordinary pour)",
-              "% that keep the head, every pour of the run pooled to estimate it.",
-              "% sup/2 below orders the rules that one scene can hold (see",
-              "% bridge/learning/layers.py)." ].
-general_header(_, [ "% General rules, learned from every pour of the exploration",
-                    "% and the learner's own pours (bridge/learning/gaps.py), by",
-                    "% bridge/learning/generalize.py: a default per expectation and the",
-                    "% contrasts that move it. provenance(Id, support, N): the pours whose",
-                    "% description holds the body; kept: how many of them keep the head;",
-                    "% confidence_permille: P(head | body), the share of the pours sampled",
-                    "% for the body (the rest an ordinary pour) that keep the head.",
-                    "% sup/2 below orders both layers (see bridge/learning/layers.py)." ]).
 
 write_fact(Out, F) :-
     write_term(Out, F, [quoted(true), spacing(next_argument)]),

@@ -12,7 +12,10 @@ test(rule_facts_and_theory_file, [setup(tmp_file(theory, F)), cleanup(delete_fil
     memberchk(learned(r2_no_spill), Facts),
     memberchk(provenance(r2_no_spill, direction, pour_x), Facts),
     memberchk(provenance(r2_no_spill, parent, a1), Facts),
-    write_theory(F, _{oracle:synthetic, seed:1}, [setting(oracle_version, "1")|Facts], []),
+    write_theory(F, _{oracle:synthetic, seed:1}, _{header:["%   setting(Key, Value): it ran."], layer_header:[]},
+                 [setting(oracle_version, "1")|Facts], []),
+    read_file_to_string(F, Text, []),
+    once(sub_string(Text, _, _, _, "that produced the antecedent);\n%   setting(Key, Value): it ran.\n\n")),
     theory_files:load_facts(F, explore_plt_theory),
     explore_plt_theory:rule(r2_no_spill, defeasible, neg(no_spill)),
     explore_plt_theory:setting(oracle_version, "1").

@@ -55,6 +55,20 @@ after_batch(step(I1, Id, Cand, Explored, Rest, _, _, Sim), Settings, ANew, Trace
 second_layer(Explored, _, Settings, Layer) :-
     learned_layer(Explored, Settings, Layer).
 
+theory_layout(_{rules:false, batches:false,
+                header:["%   setting(Key, Value): how the exploration ran."],
+                layer_header:[ "% The rules curiosity learned: per expectation, a default (the",
+                               "% ordinary pour, the empty antecedent) and the explored antecedents",
+                               "% whose likelihoods the rest of the theory does not give",
+                               "% (bridge/learning/generalize.py over the explored antecedents).",
+                               "% provenance(Id, antecedent, A): the explored antecedent of its body;",
+                               "% support: the pours whose description holds the body; kept: how",
+                               "% many of them keep the head; confidence_permille: P(head | body), the",
+                               "% share of the pours sampled for the body (the rest an ordinary pour)",
+                               "% that keep the head, every pour of the run pooled to estimate it.",
+                               "% sup/2 below orders the rules that one scene can hold (see",
+                               "% bridge/learning/layers.py)." ]}).
+
 %   learn_trace(+I-Id, +Cand, +Sim, +Added, +ANew, -Trace): a step of the
 %   learning curiosity in the trace: what was explored, its simulations,
 %   the children queued and the head of A_new (the next to explore).
