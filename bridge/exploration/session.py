@@ -59,7 +59,7 @@ from pantarhei.bridge.exploration.prompt_oracle import (oracle_describe, oracle_
                                                         oracle_simulate)
 from pantarhei.bridge.exploration.qualify import QUALIFY, consequent
 from pantarhei.bridge.exploration.significance import Tested, permutation_test, shuffle_seed
-from pantarhei.bridge.exploration.simulation import (batch_seed, drawn_pours, open_simulator,
+from pantarhei.bridge.exploration.simulation import (batch_pours, drawn_pours, open_simulator,
                                                      oracle_identity, trace_draws)
 from pantarhei.bridge.exploration.checkpoints import ExplorationStore, run_key
 from pantarhei.bridge.exploration.steepest import significant_planes, steepest_plane
@@ -67,7 +67,7 @@ from pantarhei.bridge.exploration.weights import weights
 from pantarhei.bridge.exploration.trace import (append_trace, plot_path, plot_trace,
                                                 require_distinct_outputs, rounded, trace_path,
                                                 write_trace)
-from pantarhei.oracle.generative import InvalidAntecedent, log_density, sample
+from pantarhei.oracle.generative import InvalidAntecedent, log_density
 from pantarhei.oracle.store import DEFAULT_STORE
 from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
@@ -297,8 +297,8 @@ class Host:
         props = [str(p) for p in request["antecedent"]]
         iteration, attempt = int(request["iteration"]), int(request.get("attempt", 0))
         try:
-            P = sample(props, int(request["batch"]),
-                       batch_seed(int(request["seed"]), iteration, attempt))[:n]
+            P = batch_pours(props, int(request["batch"]), int(request["seed"]), iteration,
+                            attempt)[:n]
         except InvalidAntecedent as e:
             raise UserError(f"cannot sample {', '.join(props)}: {e}") from None
         t = time.perf_counter()

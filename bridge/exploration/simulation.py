@@ -28,6 +28,15 @@ def batch_seed(seed: int, iteration: int, attempt: int = 0) -> int:
     return s if not attempt else int(np.random.SeedSequence([s, int(attempt)]).generate_state(1)[0])
 
 
+def batch_pours(antecedent: Sequence[str], batch: int, seed: int, iteration: int,
+                attempt: int = 0) -> np.ndarray:
+    """The batch of `batch` pours of an iteration's attempt: sampled for
+    the antecedent with batch_seed's seed (the run's `seed`); a probe and
+    the rest of its batch, or a draw read back from the trace, are slices
+    of it."""
+    return sample(list(antecedent), batch, batch_seed(seed, iteration, attempt))
+
+
 @dataclass(frozen=True)
 class Draw:
     """Pours of one step of a run as its trace line records them (`draws`,
@@ -67,7 +76,7 @@ def trace_draws(trace: Sequence[dict]) -> list[Draw]:
 def drawn_pours(draws: Sequence[Draw], seed: int, batch: int) -> np.ndarray:
     """The pours of `draws`, drawn again as the run drew them (its `seed`,
     `batch` pours a batch), in order: (pours, parameters)."""
-    rows = [sample(list(d.antecedent), batch, batch_seed(seed, d.iteration, d.attempt))[d.first:d.last]
+    rows = [batch_pours(d.antecedent, batch, seed, d.iteration, d.attempt)[d.first:d.last]
             for d in draws]
     if not rows:
         return np.empty((0, len(load_vocabulary().parameters)))

@@ -13,7 +13,6 @@ import sys
 import time
 from pathlib import Path
 
-import numpy as np
 
 from tests.conftest import run_cli
 
@@ -119,6 +118,27 @@ def test_resume_with_nothing_saved_starts_afresh(tmp_path):
     assert r.code == 0
     assert "starting afresh" in r.err
     assert (tmp_path / "t.pl").exists()
+
+
+def test_a_saved_run_whose_trace_lacks_its_draws_starts_afresh(tmp_path):
+    """A run saved before traces recorded their draws cannot have its pours
+    drawn again: --resume says so in one line and explores afresh."""
+    out, store = tmp_path / "t.pl", tmp_path / "s.sqlite"
+    args = [*ARGS[:ARGS.index("--budget") + 1], "3", *ARGS[ARGS.index("--budget") + 2:],
+            "--out", str(out), "--store", str(store)]
+    assert run_cli(*args).code == 0
+    expected = out.read_text()
+    with sqlite3.connect(store) as db:
+        for run, iteration, trace in db.execute("SELECT run, iteration, trace FROM "
+                                                "exploration_checkpoints").fetchall():
+            line = json.loads(trace)
+            del line["draws"]
+            db.execute("UPDATE exploration_checkpoints SET trace = ? WHERE run = ? AND iteration = ?",
+                       (json.dumps(line), run, iteration))
+    again = run_cli(*args, "--resume")
+    assert again.code == 0, again.err
+    assert "does not record its draws" in again.err and "starting afresh" in again.err
+    assert out.read_text() == expected
 
 
 def test_the_store_gives_back_every_iteration_it_committed(tmp_path):
