@@ -6,23 +6,29 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.evaluation import pipeline as E
 from pantarhei.bridge.evaluation.explored_pours import exploration_draws, read_learned
-from tests.conftest import run_cli
+from pantarhei.bridge.exploration.explore_call import ExploreOptions, explore
 
 
 @pytest.fixture(scope="module")
-def learned(tmp_path_factory) -> tuple[Path, Path]:
+def explored(tmp_path_factory) -> tuple[Path, Path, tuple[np.ndarray, np.ndarray]]:
+    """The discovering curiosity, which probes candidates and sets some
+    aside: its theory, its store and every pour it simulated."""
     d = tmp_path_factory.mktemp("learned")
-    # the discovering curiosity probes candidates and sets some aside
-    r = run_cli("prolog", "-g", f"explore([oracle(synthetic), executor(inline), progress(false), "
-                f"curiosity(discover), prior_batch(0), budget(6), batch(12), "
-                f"out('{d / 't.pl'}'), store('{d / 's.sqlite'}')])")
-    assert r.code == 0, r.err
-    return d / "t.pl", d / "s.sqlite"
+    r = explore(ExploreOptions(oracle="synthetic", executor="inline", progress=False,
+                               curiosity="discover", prior_batch=0, budget=6, batch=12,
+                               out=d / "t.pl", store=d / "s.sqlite"))
+    return d / "t.pl", d / "s.sqlite", r["pours"]
+
+
+@pytest.fixture(scope="module")
+def learned(explored) -> tuple[Path, Path]:
+    return explored[0], explored[1]
 
 
 def test_read_learned_finds_the_explored_antecedents_in_order(learned):
@@ -40,14 +46,18 @@ def test_read_learned_finds_the_explored_antecedents_in_order(learned):
     assert [tuple(sorted(t["antecedent"])) for t in firsts] == L.antecedents
     assert [sum(1 for t in trace if t["id"] == f"a{i}") for i in range(1, len(firsts) + 1)] == L.batches
     assert L.setting("oracle") == "synthetic" and L.setting("batch") == 12
-    # every pour of the run, probes too: as many as it simulated, each in its store
-    P, drawn, of, ends = exploration_draws(L)
-    assert len(P) == len(drawn) == len(of) == trace[-1]["simulations"] == ends[-1]
-    assert sorted(set(of.tolist())) == [-1, *range(len(L.antecedents))]
-    from pantarhei.bridge.exploration.simulation import open_simulator
 
-    with open_simulator("synthetic", "inline", None, learned[1]) as sim:
-        assert len(sim.store.get_many(sim.keys(P))) == len(set(sim.keys(P)))
+
+def test_the_pours_drawn_again_are_the_very_pours_of_the_run(explored):
+    """Every pour of the run, probes too, in the order simulated: read from
+    the trace's draws, not from a restatement of the probe schedule."""
+    theory, _, (params, scores) = explored
+    L = read_learned(theory)
+    P, drawn, of, ends = exploration_draws(L)
+    assert np.array_equal(P, params)
+    assert len(drawn) == len(of) == ends[-1] == len(P)
+    assert sorted(set(of.tolist())) == [-1, *range(len(L.antecedents))]
+    assert [a for a, i in zip(drawn, of) if i >= 0] == [L.antecedents[i] for i in of if i >= 0]
 
 
 def test_a_trace_without_its_draws_is_refused_in_one_line(learned, tmp_path):
