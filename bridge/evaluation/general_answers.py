@@ -2,7 +2,8 @@
 bridge/evaluation/questions.json (20 pours each) and the uniform held-out
 scenes, for the general rules of each method's pours beside gradient
 boosting of the same pours and the defaults-only theory, and the shipped
-theory as SWI-Prolog answers. Part of `pantarhei evaluate` (pipeline.py)."""
+theory as SWI-Prolog answers. The measure's stage and headline rows are
+here; its report section is report_general.py's."""
 from __future__ import annotations
 
 import time
@@ -13,12 +14,22 @@ import numpy as np
 
 from pantarhei.theory.lexicon import load_vocabulary
 
+from pantarhei.bridge.evaluation.formats import num, pct
 from pantarhei.bridge.evaluation.measures import (accuracy, contrast_keys, defaults_only,
                                                   question_key, question_measures,
                                                   question_shares, verdicts)
+from pantarhei.bridge.evaluation.pipeline import Evaluation, Inputs
 from pantarhei.bridge.evaluation.questions import question_pours, questions
 from pantarhei.bridge.evaluation.rule_building import answer_matrix, predict
 from pantarhei.bridge.theories.model import Theory
+
+#: The targets of the shipped theory on the questions: coverage and
+#: accuracy of the clear keys, accuracy of the contrast keys and coherent
+#: answers, at the least; calibration at most, and at most this far behind
+#: boosting's (`MODEL_GAP`); general rules per expectation, at most.
+COVERAGE, ACCURACY, CONTRAST_ACCURACY, COHERENT = 0.95, 0.95, 0.85, 0.95
+CALIBRATION, MODEL_GAP = 0.08, 0.02
+RULES_PER_EXPECTATION = 12
 
 
 @dataclass
@@ -43,6 +54,47 @@ class _Keys:
         if pred_held is not None:
             entry["uniform"] = accuracy(pred_held, self.held_y).as_dict()
         return entry
+
+
+def general_stage(ev: Evaluation, inputs: Inputs) -> None:
+    """The general theory's stage of `pantarhei evaluate` (`general_theories`
+    of the pipeline's `Inputs`): `ev.general`."""
+    learned = inputs.learned
+    general_theories(ev, learned.theory, inputs.methods, inputs.held, inputs.run,
+                     inputs.opts.seed, int(learned.setting("seed", inputs.opts.seed)),
+                     learned.antecedents if learned.one_layer else None)
+
+
+def general_headline(ev: Evaluation) -> list[tuple[str, str, str, bool]]:
+    """The general theory's rows, on the questions a person would type:
+    the shipped theory beside the defaults-only theory and gradient
+    boosting of the same pours; accuracy on the contrast keys apart."""
+    g = ev.general
+    if not g:
+        return []
+    q = g["shipped"]["questions"]
+    base = g["curiosity"]["defaults"]["questions"]
+    gbm = g["curiosity"]["boosting"]["questions"]
+    n = g["curiosity"]["rules_per_expectation"]
+    cal, cal_g, cal_b = q["calibration"], gbm["calibration"], base["calibration"]
+    return [
+        (f"questions ({len(g['questions'])}): coverage of the {q['clear']} clear keys",
+         pct(q["coverage"]), "at least 95%", q["coverage"] >= COVERAGE),
+        (f"questions: accuracy on the clear keys (defaults only: {pct(base['accuracy'])})",
+         pct(q["accuracy"]), "at least 95%", q["accuracy"] >= ACCURACY),
+        (f"questions: accuracy on the {q['contrast']} contrast keys, where the defaults-only "
+         f"answer is wrong ({pct(q['contrast']/max(q['clear'], 1))} of the clear keys; "
+         f"covered {pct(q['contrast_coverage'])})",
+         pct(q["contrast_accuracy"]), "at least 85%", q["contrast_accuracy"] >= CONTRAST_ACCURACY),
+        (f"calibration: mean |likelihood - share of the pours| (boosting on the same pours "
+         f"{num(cal_g)}, defaults only {num(cal_b)})", num(cal),
+         "at most 0.08, within 0.02 of boosting",
+         cal is not None and cal <= CALIBRATION and (cal_g is None or cal - cal_g <= MODEL_GAP)),
+        ("coherent answers: the decided verdicts are a behaviour one of the question's pours "
+         "shows", pct(q["coherent"]), "at least 95%", q["coherent"] >= COHERENT),
+        ("general rules per expectation (from curiosity's pours)", f"{n:.1f}", "at most 12",
+         n <= RULES_PER_EXPECTATION),
+    ]
 
 
 def general_theories(ev, theory: Theory, methods: dict, held: dict,

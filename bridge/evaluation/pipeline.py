@@ -19,34 +19,31 @@ second run simulates nothing:
 * plans for goal sets a user would ask, verified and measured on fresh
   pours (plan_checks.py).
 
-This module runs the stages in order through one simulator; what the
-theory says of its exploration, and its pours, are explored_pours.py's;
-held-out prediction is heldout.py's. The numbers go into an `Evaluation` (and
-JSON); `bridge/evaluation/report.py` writes them up.
+This module draws the pours every measure reads (the exploration's and
+random exploration's, and the held-out scenes) and runs each measure's
+stage in the order of `registry.MEASURES`, through one simulator; what the
+theory says of its exploration, and its pours, are explored_pours.py's.
+The numbers go into an `Evaluation` (and JSON);
+`bridge/evaluation/report.py` writes them up.
 """
 from __future__ import annotations
 
 import sys
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
+from functools import cached_property
 from pathlib import Path
 from typing import Any, Sequence
 
 import numpy as np
 
-from pantarhei.oracle.generative import sample
 from pantarhei.theory.lexicon import load_vocabulary
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.evaluation.explored_pours import Learned, exploration_draws, read_learned
-from pantarhei.bridge.evaluation.general_answers import general_theories
-from pantarhei.bridge.evaluation.heldout import (heldout_curves, heldout_theories, near_antecedents, random_exploration, scene_pours,
+from pantarhei.bridge.evaluation.heldout import (near_antecedents, random_exploration, scene_pours,
                                                  simulated, uniform_scenes)
-from pantarhei.bridge.evaluation.map_elites import behaviours_seen
-from pantarhei.bridge.evaluation.paper_rules import paper_rules
-from pantarhei.bridge.evaluation.plan_checks import plan_checks
 from pantarhei.bridge.evaluation.rule_building import consequents, rule_ids
-from pantarhei.bridge.exploration.simulation import iteration_seed
 from pantarhei.bridge.exploration.weights import log_densities, weights
 from pantarhei.bridge.theories.model import Theory
 
@@ -91,15 +88,26 @@ class Evaluation:
     plans: list[dict[str, Any]] = field(default_factory=list)
     simulations: dict[str, int] = field(default_factory=dict)
     seconds: dict[str, float] = field(default_factory=dict)
+    #: The figures of a measure without a field of its own, by its name
+    #: (in the JSON after the plans).
+    figures: dict[str, Any] = field(default_factory=dict)
     #: Not in the JSON: what the report draws from.
     explored: list[tuple[str, ...]] = field(default_factory=list, repr=False)
     explored_consequents: np.ndarray | None = field(default=None, repr=False)
     best_samples: list[np.ndarray] = field(default_factory=list, repr=False)
 
     def as_dict(self) -> dict[str, Any]:
-        return {k: getattr(self, k) for k in
-                ("theory", "oracle", "settings", "budget", "reproduced", "kept_all", "heldout", "curves", "behaviours",
-                 "behaviours_seen", "general", "paper_rules", "plans", "simulations", "seconds")}
+        return {**{k: getattr(self, k) for k in
+                   ("theory", "oracle", "settings", "budget", "reproduced", "kept_all", "heldout",
+                    "curves", "behaviours", "behaviours_seen", "general", "paper_rules", "plans")},
+                **self.figures, "simulations": self.simulations, "seconds": self.seconds}
+
+    @classmethod
+    def from_dict(cls, d: dict[str, Any]) -> Evaluation:
+        """An evaluation from its `as_dict`."""
+        own = {f.name for f in fields(cls)}
+        return cls(**{k: v for k, v in d.items() if k in own},
+                   figures={k: v for k, v in d.items() if k not in own})
 
     @property
     def plan_rate(self) -> float | None:
@@ -117,7 +125,8 @@ def _shown(path: Path) -> str:
         return str(path)
 
 
-def _say(text: str) -> None:
+def tell(text: str) -> None:
+    """Tell the user, on stderr, what the evaluation is doing."""
     print(f"pantarhei evaluate: {text}", file=sys.stderr, flush=True)
 
 
@@ -138,7 +147,7 @@ class Simulations:
             secs.setdefault(label, 0.0)
             return np.empty((0, self.width))
         if say:
-            _say(f"{label}: {len(P)} pours")
+            tell(f"{label}: {len(P)} pours")
         S = np.asarray(self.sim.simulate(P, progress=self.progress and say), dtype=float)
         sims[label] = sims.get(label, 0) + int(self.sim.last_simulated)
         secs[label] = round(secs.get(label, 0.0) + time.monotonic() - t, 1)
@@ -158,6 +167,9 @@ class Pours:
     #: The antecedent each pour was drawn from (a candidate set aside after
     #: its probe is none of `antecedents`).
     drawn: list[tuple[str, ...]] = field(default_factory=list)
+    #: The index in `antecedents` of the antecedent each pour belongs to
+    #: (-1 for a probe of a candidate set aside): the exploration's.
+    of: np.ndarray | None = None
 
     def __post_init__(self) -> None:
         if not self.ends and self.antecedents:
@@ -172,8 +184,37 @@ class Pours:
         return sum(1 for e in self.ends if e <= pours)
 
 
+@dataclass
+class Inputs:
+    """What every measure's stage is given: the options, the learned
+    theory, the simulator (`run`), the pours of each way of choosing
+    antecedents at the same budget (`methods`: curiosity's, then random
+    exploration's; `samples` pours a batch) and the held-out scenes
+    (`held`, simulated when a stage first asks for them)."""
+    opts: EvaluationOptions
+    learned: Learned
+    run: Simulations
+    methods: dict[str, Pours]
+    samples: int
+
+    @property
+    def mode(self) -> str:
+        """How the theory's rules were qualified (equation (1), then this)."""
+        return str(self.learned.setting("qualify", "weighted"))
+
+    @cached_property
+    def held(self) -> dict[str, tuple[list[tuple[str, ...]], np.ndarray]]:
+        """The three sets of held-out scenes (`heldout_scenes`)."""
+        return heldout_scenes(self.opts, self.methods["curiosity"].antecedents,
+                              self.methods["random"].antecedents, self.run)
+
+
 def evaluate(opts: EvaluationOptions) -> Evaluation:
-    """Every stage of the evaluation, in order, through one simulator."""
+    """The pours every measure reads, then every measure's stage in
+    order, through one simulator."""
+    # the measures' modules read this module's types: imported when run
+    from pantarhei.bridge.evaluation import registry
+
     learned = read_learned(opts.theory)
     if opts.scenes < 1 or opts.verify < 0 or opts.paper_samples < 0:
         raise UserError("--scenes must be at least 1, --verify and --paper-samples at least 0")
@@ -186,8 +227,8 @@ def evaluate(opts: EvaluationOptions) -> Evaluation:
 
     version, _ = oracle_identity(oracle)
     if str(learned.setting("oracle_version", version)) != version:
-        _say(f"the theory was learned with {oracle} version {learned.setting('oracle_version')}, "
-             f"the oracle here is version {version}: its simulations are not reused")
+        tell(f"the theory was learned with {oracle} version {learned.setting('oracle_version')}, "
+            f"the oracle here is version {version}: its simulations are not reused")
     sim = open_simulator(oracle, opts.executor, opts.workers, opts.store, opts.ray_address)
     try:
         run = Simulations(sim, ev, opts.progress)
@@ -195,34 +236,17 @@ def evaluate(opts: EvaluationOptions) -> Evaluation:
         # the same budget: as many pours as the exploration's (probes too), in whole batches
         ev.budget = max(1, round(len(curiosity.P) / samples)) * samples
         rnd = random_exploration_pours(opts.seed, ev.budget // samples, samples, run)
-        ev.behaviours_seen = {"curiosity": behaviours_seen(curiosity.S),
-                              "random": behaviours_seen(rnd.S)}
-        if opts.baselines:
-            ev.behaviours_seen.update(search_baselines(opts.seed, ev.budget, samples, run))
-        held = heldout_scenes(opts, curiosity.antecedents, rnd.antecedents, run)
-        t = time.monotonic()
-        _say("predicting the held-out scenes with every theory along the budget")
-        mode = str(learned.setting("qualify", "weighted"))
-        heldout_curves(ev, {"curiosity": curiosity, "random": rnd}, held, samples, mode)
-        heldout_theories(ev, learned.theory, {"curiosity": curiosity, "random": rnd}, held,
-                       samples, mode, opts.seed)
-        ev.seconds["predicting"] = round(time.monotonic() - t, 1)
-        general_theories(ev, learned.theory, {"curiosity": curiosity, "random": rnd}, held,
-                         run, opts.seed, int(learned.setting("seed", opts.seed)),
-                         learned.antecedents if learned.one_layer else None)
-        ev.paper_rules = paper_rules(learned.theory, lambda X: run("the paper's rules", X),
-                                     opts.paper_samples, opts.seed)
-        ev.plans = plan_checks(learned.theory, lambda X: run("plans", X, say=False),
-                               opts.verify, opts.seed)
+        inputs = Inputs(opts, learned, run, {"curiosity": curiosity, "random": rnd}, samples)
+        for measure in registry.MEASURES:
+            measure.stage(ev, inputs)
     finally:
         sim.close()
     return ev
 
 
 def exploration_pours(learned: Learned, run: Simulations, ev: Evaluation) -> Pours:
-    """The exploration's simulations, drawn again from its trace; whether
-    they give the theory's rules, and per explored antecedent the share of
-    its own pours that kept every expectation."""
+    """The exploration's simulations, drawn again from its trace, and
+    whether they give the theory's rules."""
     mode = str(learned.setting("qualify", "weighted"))
     explored = learned.antecedents
     P, drawn, of, ends = exploration_draws(learned)
@@ -231,18 +255,13 @@ def exploration_pours(learned: Learned, run: Simulations, ev: Evaluation) -> Pou
     ok = np.all(np.isfinite(S), axis=1)
     W = weights(log_densities(P[ok], [list(a) for a in explored]))
     ev.best_samples = [P[ok][int(np.argmax(W[i]))] for i in range(len(explored))]
-    ev.kept_all = []
-    for i in range(len(explored)):
-        rows = S[of == i]
-        rows = rows[np.all(np.isfinite(rows), axis=1)]
-        ev.kept_all.append(float((rows > 0.5).all(axis=1).mean()) if len(rows) else None)
     differ = (_differing_layer(learned, P, S) if learned.one_layer
               else _differing_rules(learned.theory, ev.explored_consequents))
     ev.reproduced = not differ
     if differ:
-        _say(f"{len(differ)} rules of the theory differ from those its own pours give here "
+        tell(f"{len(differ)} rules of the theory differ from those its own pours give here "
              f"(first: {differ[0]}): another oracle build, or a theory edited by hand")
-    return Pours(list(explored), P, S, [int(e) for e in ends], drawn)
+    return Pours(list(explored), P, S, [int(e) for e in ends], drawn, of)
 
 
 def random_exploration_pours(seed: int, count: int, samples: int, run: Simulations) -> Pours:
@@ -250,18 +269,6 @@ def random_exploration_pours(seed: int, count: int, samples: int, run: Simulatio
     antecedents, `samples` pours each."""
     ants, P = random_exploration(seed, count, samples)
     return Pours(ants, P, run("random exploration", P))
-
-
-def search_baselines(seed: int, budget: int, samples: int, run: Simulations) -> dict[str, int]:
-    """Behaviours seen by two searches that build no theory, with the same
-    budget: random pours from the prior, and MAP-Elites (pyribs) over the
-    30 parameters with the nine verdicts as its cells."""
-    from pantarhei.bridge.evaluation.map_elites import map_elites
-
-    prior = run("random pours", sample([], budget, iteration_seed(seed + 7919, 0)))
-    _say(f"MAP-Elites: {budget} pours in batches of {samples}")
-    qd = map_elites(lambda P: run("MAP-Elites", P, say=False), budget, seed, batch=samples)
-    return {"prior": behaviours_seen(prior), "map_elites": behaviours_seen(qd.S)}
 
 
 def heldout_scenes(opts: EvaluationOptions, explored: Sequence[tuple[str, ...]],

@@ -1,8 +1,9 @@
 """Plans for goal sets a user would ask, as `pantarhei plan` prints them
-(verified in simulation), measured again on fresh pours. Part of
-`pantarhei evaluate` (pipeline.py)."""
+(verified in simulation), measured again on fresh pours. The measure's
+stage, headline row and report section."""
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any, Callable
 
 import numpy as np
@@ -11,8 +12,13 @@ from pantarhei.oracle.generative import sample
 from pantarhei.theory.lexicon import load_vocabulary
 
 from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.evaluation.formats import pct
+from pantarhei.bridge.evaluation.pipeline import Evaluation, Inputs
 from pantarhei.bridge.exploration.simulation import iteration_seed
 from pantarhei.bridge.theories.model import Theory
+
+#: The share of a plan's fresh pours meeting its goals, at the least, for every goal set.
+MET = 0.90
 
 #: Goal sets a user would ask a plan for, with their words.
 GOAL_SETS = (
@@ -73,3 +79,39 @@ def plan_checks(theory: Theory, simulate: Callable[[np.ndarray], np.ndarray], ve
                      simulated=int(len(rows)), met=int(goals_met(rows, goals).sum()))
         out.append(entry)
     return out
+
+
+def plans_stage(ev: Evaluation, inputs: Inputs) -> None:
+    """The plan for each goal set, verified with `--verify` pours and
+    measured on twice as many: `ev.plans`."""
+    ev.plans = plan_checks(inputs.learned.theory, lambda X: inputs.run("plans", X, say=False),
+                           inputs.opts.verify, inputs.opts.seed)
+
+
+def plans_headline(ev: Evaluation) -> list[tuple[str, str, str, bool]]:
+    """The lowest share of fresh pours meeting their goals among the goal
+    sets (a goal set without a plan: none); no row when none was asked."""
+    rates = [p["met"] / p["simulated"] if p.get("simulated") else 0.0 for p in ev.plans]
+    if not rates:
+        return []
+    return [(f"plans for {len(rates)} goal sets a user would ask, measured on fresh pours: "
+             f"the lowest share meeting the goals",
+             pct(min(rates)), "at least 90% on each", min(rates) >= MET)]
+
+
+def plans_section(ev: Evaluation, out: Path) -> list[str]:
+    """The plans for the goal sets, measured on fresh pours."""
+    L = ["", "## Plans", "",
+         "For each goal set a user would ask, the plan `pantarhei plan` prints: the first of "
+         "the theory's plans whose goals were met in at least 90% of the pours that verify "
+         "it; then measured again on twice as many fresh pours.", "",
+         "| goals | plan (manners chosen) | fresh pours meeting the goals |", "|---|---|---|"]
+    for p in ev.plans:
+        if "plan" not in p:
+            L.append(f"| {p['words']} | none found: {p.get('none', '')} | - |")
+            continue
+        met = f"{p['met']} of {p['simulated']}" if "simulated" in p else "not simulated"
+        L.append(f"| {p['words']} | {', '.join(p['plan']) or '(an ordinary pour)'} | {met} |")
+    if not ev.plans:
+        L.append("| (not verified) | | |")
+    return L

@@ -4,26 +4,26 @@
 their targets, the curves, the held-out tables, the paper's three rules, the
 plans, the learned rules in words), `evaluation.json`, the plots, the
 exploration trace plot and, for the PyBullet oracle, GIFs of the pours
-behind three rules. The headline is `headline`'s, the sections are
-`report_sections`' and `report_general`'s; `load` reads an evaluation.json
-back, so that a report can be written again without measuring.
+behind three rules. The headline is `headline`'s; each measure writes its
+section (and its plots), in the report's order of `registry`; the opening,
+the pours drawn and the time are `report_sections`'. `load` reads an
+evaluation.json back, so that a report can be written again without
+measuring.
 """
 from __future__ import annotations
 
 import json
-import shutil
 from pathlib import Path
 
 from pantarhei.bridge.evaluation import report_sections as sections
 from pantarhei.bridge.evaluation.pipeline import Evaluation
-from pantarhei.bridge.evaluation.plots import plot_behaviours, plot_expectations, plot_heldout
-from pantarhei.bridge.evaluation.report_general import general_section
+from pantarhei.bridge.evaluation.registry import report_order
 from pantarhei.bridge.files import write_text
 
 
 def load(path: Path | str) -> Evaluation:
     """An evaluation as `write` saved it (evaluation.json)."""
-    return Evaluation(**json.loads(Path(path).read_text(encoding="utf-8")))
+    return Evaluation.from_dict(json.loads(Path(path).read_text(encoding="utf-8")))
 
 
 def gif_choices(ev: Evaluation, k: int = 3) -> list[int]:
@@ -60,21 +60,14 @@ def render_gifs(ev: Evaluation, out: Path, k: int = 3) -> list[tuple[int, Path]]
 
 
 def write(ev: Evaluation, out: Path, gifs: bool = True, command: str = "make evaluate") -> Path:
-    """Write the report into `out`: evaluation.json, the plots, the GIFs
-    and README.md; returns README.md's path."""
+    """Write the report into `out`: evaluation.json, the GIFs, README.md
+    and each measure's plots; returns README.md's path."""
     out.mkdir(parents=True, exist_ok=True)
     write_text(out / "evaluation.json", json.dumps(ev.as_dict(), indent=1) + "\n")
-    plot_behaviours(ev, out / "behaviours.png")
-    plot_heldout(ev, out / "heldout.png")
-    if "near" in ev.heldout and ev.heldout["near"]["scenes"]:
-        plot_expectations(ev, out / "expectations.png")
-    trace = Path(ev.theory).with_suffix(".trace.png")
-    if trace.exists():
-        shutil.copyfile(trace, out / "exploration.png")
     drawn = render_gifs(ev, out) if gifs and ev.oracle == "pybullet" else []
-    L = (sections.opening(ev, command) + sections.against_random(ev) + general_section(ev)
-         + sections.heldout_section(ev, out) + sections.paper_rules_section(ev)
-         + sections.plans_section(ev) + sections.learned_rules_section(ev, out)
-         + sections.pours_section(ev, drawn) + sections.time_section(ev))
+    L = sections.opening(ev, command)
+    for measure in report_order():
+        L += measure.section(ev, out)
+    L += sections.pours_section(ev, drawn) + sections.time_section(ev)
     write_text(out / "README.md", "\n".join(L) + "\n")
     return out / "README.md"

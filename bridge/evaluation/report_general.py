@@ -4,12 +4,13 @@ questions a person would ask; each question as the shipped theory answers
 it; the general rules learned from curiosity's pours, in words."""
 from __future__ import annotations
 
+from pathlib import Path
+
 from pantarhei.theory.lexicon import load_vocabulary
 
-from pantarhei.bridge.evaluation.headline import num, pct
+from pantarhei.bridge.evaluation.formats import antecedent_words, num, pct
 from pantarhei.bridge.evaluation.measures import question_misses
 from pantarhei.bridge.evaluation.pipeline import Evaluation
-from pantarhei.bridge.evaluation.report_sections import antecedent_words
 from pantarhei.bridge.learning.general_rules import likelihood
 
 _INTRODUCTION = (
@@ -30,7 +31,7 @@ _INTRODUCTION = (
     "*uniform*: uniformly random held-out scenes, one pour each.")
 
 
-def general_section(ev: Evaluation) -> list[str]:
+def general_section(ev: Evaluation, out: Path) -> list[str]:
     """The report's section on the general theory."""
     g = ev.general
     if not g:

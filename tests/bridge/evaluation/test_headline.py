@@ -1,19 +1,14 @@
 """bridge/evaluation/headline.py: the headline rows (each figure, its
-target and whether it is met) of an evaluation built by hand, the Markdown
-table report/README.md opens with, and how a share or a number is written."""
+target and whether it is met) of an evaluation built by hand, every
+measure's in the registry's order, and the Markdown table report/README.md
+opens with; the general theory's rows (general_answers.py)."""
 from __future__ import annotations
 
 import dataclasses
 
-from pantarhei.bridge.evaluation.headline import (general_headline, headline, headline_markdown,
-                                                  num, pct)
+from pantarhei.bridge.evaluation.general_answers import general_headline
+from pantarhei.bridge.evaluation.headline import headline, headline_markdown
 from tests.bridge.evaluation.evaluations import general_figures, small_evaluation
-
-
-def test_a_share_is_a_percentage_and_a_number_has_three_decimals():
-    assert pct(0.875) == "87.5%" and pct(1) == "100.0%" and pct(0.0) == "0.0%"
-    assert num(0.04) == "0.040" and num(1 / 3) == "0.333"
-    assert pct(None) == "n/a" and num(None) == "n/a"
 
 
 def test_the_rows_of_a_hand_built_evaluation_against_their_targets():

@@ -2,14 +2,16 @@
 of a small hand-built theory (its learned rules for each, what it says) and
 simulated by a stand-in oracle whose verdicts are known: the share of pours
 where the paper's literal holds, the oracle's majority and whether the
-theory agrees with it; failed pours are not counted."""
+theory agrees with it; failed pours are not counted. And the report's
+section of a hand-built evaluation."""
 from __future__ import annotations
 
 import numpy as np
 
-from pantarhei.bridge.evaluation.paper_rules import PAPER_RULES, paper_rules
+from pantarhei.bridge.evaluation.paper_rules import PAPER_RULES, paper_rules, paper_rules_section
 from pantarhei.bridge.evaluation.rule_building import theory_of
 from pantarhei.theory.lexicon import load_vocabulary
+from tests.bridge.evaluation.evaluations import small_evaluation
 
 NAMES = load_vocabulary().expectation_names
 
@@ -81,3 +83,22 @@ def test_a_scene_whose_pours_all_failed_has_no_share_and_no_majority():
     for r in out:
         assert r["simulated"] == 0 and r["oracle_share"] is None and r["oracle_majority"] is None
         assert r["agrees_with_oracle"] is False
+
+
+def test_the_papers_rules_with_the_learned_rules_and_the_oracles_answer(tmp_path):
+    ev = small_evaluation()
+    L = paper_rules_section(ev, tmp_path)
+    assert L[-3:] == [
+        "| pouring from the side will result in spillage: `pour_to_side` → `neg(no_spill)` | "
+        "`r2_no_spill` (with nothing else) | `neg(no_spill)` | 90.0% of 20 | `neg(no_spill)` | yes |",
+        "| too light a liquid will not entirely leave the source: `light_liquid` → "
+        "`neg(liquid_leaves_source)` | `r7_liquid_leaves_source` (with pour_low) | "
+        "`liquid_leaves_source` | 25.0% of 20 | `liquid_leaves_source` (the oracle disagrees "
+        "with the paper) | yes |",
+        "| the liquid does not remain in the destination: `light_liquid`, `end_upright`, "
+        "`end_low` → `neg(liquid_remains_in_destination)` | no rule | `unknown` | 60.0% of 19 | "
+        "`neg(liquid_remains_in_destination)` | **no** |"]
+    ev.paper_rules = [{k: v for k, v in r.items()
+                       if k not in ("simulated", "oracle_share", "oracle_majority",
+                                    "agrees_with_oracle")} for r in ev.paper_rules]
+    assert paper_rules_section(ev, tmp_path)[-3].endswith("| `neg(no_spill)` | not simulated | n/a | **no** |")

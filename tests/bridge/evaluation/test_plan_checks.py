@@ -2,14 +2,16 @@
 expectation for "everything goes well"), and for each the plan a small
 hand-built theory proposes (clingo), verified and measured again on twice
 as many fresh pours of a stand-in oracle; a goal set no rule reaches, or no
-plan meets, says why; failed pours are not counted."""
+plan meets, says why; failed pours are not counted. And the report's
+section of a hand-built evaluation."""
 from __future__ import annotations
 
 import numpy as np
 
-from pantarhei.bridge.evaluation.plan_checks import GOAL_SETS, goal_sets, plan_checks
+from pantarhei.bridge.evaluation.plan_checks import GOAL_SETS, goal_sets, plan_checks, plans_section
 from pantarhei.bridge.evaluation.rule_building import theory_of
 from pantarhei.theory.lexicon import load_vocabulary
+from tests.bridge.evaluation.evaluations import small_evaluation
 
 NAMES = load_vocabulary().expectation_names
 
@@ -74,3 +76,16 @@ def test_failed_fresh_pours_are_not_counted():
     assert first["goals"] == ["no_spill"] and calls[:2] == [4, 8]
     # 8 fresh pours, 4 of them failed, one of the others spilled
     assert (first["simulated"], first["met"]) == (4, 3)
+
+
+def test_the_plans_found_measured_or_why_none(tmp_path):
+    ev = small_evaluation()
+    assert plans_section(ev, tmp_path)[-2:] == ["| no spill | pour_low | 8 of 8 |",
+                                        "| everything goes well | (an ordinary pour) | 7 of 8 |"]
+    ev.plans = [{"words": "carry", "goals": [], "none": "unreachable goal: no rule concludes it"},
+                {"words": "no spill", "goals": [], "plan": ["pour_low", "pour_centred"]}]
+    assert plans_section(ev, tmp_path)[-2:] == [
+        "| carry | none found: unreachable goal: no rule concludes it | - |",
+        "| no spill | pour_low, pour_centred | not simulated |"]
+    ev.plans = []
+    assert plans_section(ev, tmp_path)[-1] == "| (not verified) | | |"

@@ -7,6 +7,7 @@ the expectation holds."""
 from __future__ import annotations
 
 import dataclasses
+from pathlib import Path
 
 from pantarhei.bridge.evaluation.report_general import general_section
 from tests.bridge.evaluation.evaluations import general_figures, small_evaluation
@@ -14,11 +15,11 @@ from tests.bridge.evaluation.evaluations import general_figures, small_evaluatio
 
 def section(**changes) -> list[str]:
     g = {**general_figures(), **changes}
-    return general_section(dataclasses.replace(small_evaluation(), general=g))
+    return general_section(dataclasses.replace(small_evaluation(), general=g), Path("."))
 
 
 def test_no_general_figures_no_section():
-    assert general_section(small_evaluation(general=False)) == []
+    assert general_section(small_evaluation(general=False), Path(".")) == []
 
 
 def test_a_row_per_theory_or_model_with_its_figures():
@@ -50,7 +51,7 @@ def test_each_question_with_the_clear_keys_the_shipped_theory_misses():
     # without contrast keys nothing is starred
     g = general_figures()
     del g["contrast"]
-    L = general_section(dataclasses.replace(small_evaluation(), general=g))
+    L = general_section(dataclasses.replace(small_evaluation(), general=g), Path("."))
     assert "| pour from the side | 8 | 0 | liquid_leaves_source | - |" in L
 
 
