@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Callable
 
 from pantarhei.bridge.evaluation import (behaviours, general_answers, heldout_accuracy,
-                                         learned_rules, paper_rules, plan_checks, report_general)
+                                         paper_rules, plan_checks, report_general, rule_table)
 from pantarhei.bridge.evaluation.pipeline import Evaluation, Inputs
 
 #: A headline row: the measure in words, what was measured, the target, whether it is met.
@@ -57,7 +57,7 @@ MEASURES = (
             paper_rules.paper_rules_headline),
     Measure("plans", plan_checks.plans_stage, plan_checks.plans_section,
             plan_checks.plans_headline),
-    Measure("kept_all", learned_rules.kept_all_stage, learned_rules.learned_rules_section),
+    Measure("kept_all", rule_table.kept_all_stage, rule_table.learned_rules_section),
 )
 
 

@@ -1,9 +1,9 @@
-"""bridge/evaluation/learned_rules.py: the learned rules in words, a row
+"""bridge/evaluation/rule_table.py: the learned rules in words, a row
 per explored antecedent with the share of its pours that kept every
 expectation, and the exploration's trace when there is one."""
 from __future__ import annotations
 
-from pantarhei.bridge.evaluation.learned_rules import learned_rules_section, rules_table
+from pantarhei.bridge.evaluation.rule_table import learned_rules_section, rules_table
 from tests.bridge.evaluation.evaluations import small_evaluation
 
 
