@@ -13,6 +13,8 @@ from typing import Any
 
 import numpy as np
 
+from pantarhei.theory import defaults
+
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.exploration.simulation import Draw, drawn_pours, trace_draws
 from pantarhei.bridge.exploration.trace import trace_path
@@ -39,6 +41,12 @@ class Learned:
     def one_layer(self) -> bool:
         """Whether the theory is the learning curiosity's one layer."""
         return [str(c) for c in self.settings.get("curiosity", [])] == ["learn"]
+
+    @property
+    def qualify(self) -> str:
+        """How the exploration qualified its explored antecedents (its
+        setting, else the default of theory/defaults.pl)."""
+        return str(self.setting("qualify", defaults()["qualify"]))
 
     @property
     def batches(self) -> list[int]:

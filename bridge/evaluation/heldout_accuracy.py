@@ -24,9 +24,10 @@ def heldout_stage(ev: Evaluation, inputs: Inputs) -> None:
     held = inputs.held
     t = time.monotonic()
     tell("predicting the held-out scenes with every theory along the budget")
-    heldout_curves(ev, inputs.methods, held, inputs.samples, inputs.mode)
-    heldout_theories(ev, inputs.learned.theory, inputs.methods, held, inputs.samples,
-                     inputs.mode, inputs.opts.seed)
+    mode = inputs.learned.qualify
+    heldout_curves(ev, inputs.methods, held, inputs.samples, mode)
+    heldout_theories(ev, inputs.learned.theory, inputs.methods, held, inputs.samples, mode,
+                     inputs.opts.seed)
     ev.seconds["predicting"] = round(time.monotonic() - t, 1)
 
 

@@ -197,11 +197,6 @@ class Inputs:
     methods: dict[str, Pours]
     samples: int
 
-    @property
-    def mode(self) -> str:
-        """How the theory's rules were qualified (equation (1), then this)."""
-        return str(self.learned.setting("qualify", "weighted"))
-
     @cached_property
     def held(self) -> dict[str, tuple[list[tuple[str, ...]], np.ndarray]]:
         """The three sets of held-out scenes (`heldout_scenes`)."""
@@ -247,11 +242,10 @@ def evaluate(opts: EvaluationOptions) -> Evaluation:
 def exploration_pours(learned: Learned, run: Simulations, ev: Evaluation) -> Pours:
     """The exploration's simulations, drawn again from its trace, and
     whether they give the theory's rules."""
-    mode = str(learned.setting("qualify", "weighted"))
     explored = learned.antecedents
     P, drawn, of, ends = exploration_draws(learned)
     S = run("exploration", P)
-    ev.explored_consequents = consequents(explored, P, S, mode)
+    ev.explored_consequents = consequents(explored, P, S, learned.qualify)
     ok = np.all(np.isfinite(S), axis=1)
     W = weights(log_densities(P[ok], [list(a) for a in explored]))
     ev.best_samples = [P[ok][int(np.argmax(W[i]))] for i in range(len(explored))]

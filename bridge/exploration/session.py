@@ -273,7 +273,7 @@ class Host:
                                    store_path, request.get("ray_address") or None, oracle_options)
         try:
             P = drawn_pours(draws, int(request["seed"]), int(request["batch"]))
-            S = simulator.recall(P) if len(P) else np.empty((0, len(load_vocabulary().expectations)))
+            S = simulator.recall(P)
         except BaseException:
             simulator.close()
             store.close()
