@@ -12,23 +12,6 @@ import pytest
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.evaluation import pipeline as E
 from pantarhei.bridge.evaluation.explored_pours import exploration_draws, read_learned
-from pantarhei.bridge.exploration.explore_call import ExploreOptions, explore
-
-
-@pytest.fixture(scope="module")
-def explored(tmp_path_factory) -> tuple[Path, Path, tuple[np.ndarray, np.ndarray]]:
-    """The discovering curiosity, which probes candidates and sets some
-    aside: its theory, its store and every pour it simulated."""
-    d = tmp_path_factory.mktemp("learned")
-    r = explore(ExploreOptions(oracle="synthetic", executor="inline", progress=False,
-                               curiosity="discover", prior_batch=0, budget=6, batch=12,
-                               out=d / "t.pl", store=d / "s.sqlite"))
-    return d / "t.pl", d / "s.sqlite", r["pours"]
-
-
-@pytest.fixture(scope="module")
-def learned(explored) -> tuple[Path, Path]:
-    return explored[0], explored[1]
 
 
 def test_read_learned_finds_the_explored_antecedents_in_order(learned):
