@@ -18,7 +18,7 @@ import importlib
 import sys
 from typing import Sequence
 
-from pantarhei.bridge.errors import MissingEngine, TheoryFileError, UserError
+from pantarhei.bridge.errors import MissingEngine, TheoryFileError, UserError, safe_line
 
 #: Modules of pantarhei.bridge.commands, in the order `--help` lists them.
 COMMANDS = ("vocab", "demo", "simulate", "explore", "querying", "evaluate")
@@ -26,7 +26,7 @@ COMMANDS = ("vocab", "demo", "simulate", "explore", "querying", "evaluate")
 
 class _Parser(argparse.ArgumentParser):
     def error(self, message: str) -> None:  # one line, exit 2
-        self.exit(2, f"{self.prog}: {message}\n")
+        self.exit(2, safe_line(f"{self.prog}: {message}") + "\n")
 
 
 def parser() -> argparse.ArgumentParser:
@@ -53,7 +53,7 @@ def main(argv: Sequence[str] | None = None, pin_math: bool = False) -> int:
     try:        # the help texts read the theory's defaults
         args = parser().parse_args(argv)
     except (MissingEngine, TheoryFileError) as e:
-        print(f"pantarhei: {e}", file=sys.stderr)
+        _say("pantarhei", e)
         return 2
     try:
         if pin_math and pinned(args):
@@ -66,10 +66,16 @@ def main(argv: Sequence[str] | None = None, pin_math: bool = False) -> int:
                                 f"start it with {' '.join(f'{k}={v!r}' for k, v in baseline.ENVIRONMENT.items())}") from None
         code = args.run(args)
     except UserError as e:
-        print(f"pantarhei {args.command}: {e}", file=sys.stderr)
+        _say(f"pantarhei {args.command}", e)
         code = e.exit_code
     except (MissingEngine, TheoryFileError) as e:
-        print(f"pantarhei {args.command}: {e}", file=sys.stderr)
+        _say(f"pantarhei {args.command}", e)
+        code = 2
+    except RecursionError:     # a backstop: every reader bounds its nesting first
+        _say(f"pantarhei {args.command}", "an input nested too deeply to read")
+        code = 2
+    except MemoryError:        # a backstop: every reader bounds what it holds first
+        _say(f"pantarhei {args.command}", "out of memory: the input is too large to read")
         code = 2
     except KeyboardInterrupt:
         print(f"pantarhei {args.command}: interrupted", file=sys.stderr)
@@ -79,13 +85,19 @@ def main(argv: Sequence[str] | None = None, pin_math: bool = False) -> int:
     except Exception as e:
         if not _store_error(e):
             raise
-        print(f"pantarhei {args.command}: {e}", file=sys.stderr)   # the results it could not
+        _say(f"pantarhei {args.command}", e)      # the results it could not
         code = 1                                                    # keep are in the file it names
     try:
         sys.stdout.flush()
     except BrokenPipeError:
         code = 0
     return code
+
+
+def _say(who: str, message: object) -> None:
+    """Print an error as one safe line (control characters escaped, long
+    inputs cut): the message may quote any input."""
+    print(f"{who}: {safe_line(str(message))}", file=sys.stderr)
 
 
 def _store_error(e: BaseException) -> bool:

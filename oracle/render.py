@@ -13,6 +13,34 @@ from pantarhei.oracle.stepping import run
 from pantarhei.oracle.world import World
 
 
+#: The most memory render's frames may take (bytes): it holds every frame
+#: (3 bytes a pixel) and the GIF's palette copy of it (1 byte a pixel)
+#: until the GIF is written, so frames x width x height x 4 bytes must stay
+#: within this bound; a larger --size or --fps is refused before simulating.
+FRAME_BYTES_AT_MOST = 512 * 2**20
+
+#: Bytes a pixel of a frame takes while the GIF is made (see FRAME_BYTES_AT_MOST).
+BYTES_A_PIXEL = 4
+
+
+def frames_at_most(p: np.ndarray, fps: int,
+                   fidelity: physics.Fidelity = physics.CHOSEN_FIDELITY) -> int:
+    """The most frames a render of the pour `p` draws at `fps` frames per
+    simulated second: its approach, retreat and longest settling, the first
+    and the last frame."""
+    from pantarhei.oracle import generative
+
+    d = generative.to_dict(p)
+    seconds = (d["approach_duration"] + d["retreat_duration"] + fidelity.settle_ms) / 1000.0
+    return int(seconds * fps) + 2
+
+
+def frame_bytes(p: np.ndarray, fps: int, width: int, height: int,
+                fidelity: physics.Fidelity = physics.CHOSEN_FIDELITY) -> int:
+    """The memory the frames of a render take at most (bytes)."""
+    return frames_at_most(p, fps, fidelity) * width * height * BYTES_A_PIXEL
+
+
 def _camera(client: Any, width: int, height: int) -> tuple[list[float], list[float]]:
     # from the side (-y), a little above the rim, looking at the space between the bowls
     view = client.computeViewMatrix(cameraEyePosition=[0.08, -0.62, 0.24],

@@ -15,6 +15,16 @@ from pantarhei.bridge.reasoning import scenes as validity
 from pantarhei.bridge.commands import options
 from pantarhei.bridge.errors import UserError
 
+#: The most pours `simulate` takes at once: it holds each pour's
+#: parameters, scores and record and prints them at the end, some 8 KB a
+#: pour, so that 65,536 pours stay within 512 MiB.
+POURS_AT_MOST = 65_536
+
+#: The largest --params file read (bytes): JSON takes some ten times its
+#: size in memory while it is parsed.
+PARAMS_BYTES_AT_MOST = 16 * 2**20
+
+
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("simulate", help="simulate pours sampled from an antecedent (or given) "
                                         "and print their scores")
@@ -24,7 +34,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     source.add_argument("--params", metavar="FILE.json",
                         help="simulate the parameterizations in FILE (a list of objects with "
                              "'params': name to value)")
-    p.add_argument("-n", type=options.count(1, options.COUNT_MAX), default=10, help="parameterizations to sample (default 10)")
+    p.add_argument("-n", type=options.count(1, POURS_AT_MOST), default=10,
+                   help=f"parameterizations to sample (default 10, at most {POURS_AT_MOST})")
     options.add_seed(p, 0, "the sampling")
     p.add_argument("--json", action="store_true", help="print JSON")
     _simulation_options(p)
@@ -82,7 +93,12 @@ def read_params(path: str) -> np.ndarray:
     from pantarhei.oracle import generative
 
     try:
-        text = Path(path).read_text(encoding="utf-8")
+        with open(path, "rb") as f:
+            raw = f.read(PARAMS_BYTES_AT_MOST + 1)
+        if len(raw) > PARAMS_BYTES_AT_MOST:
+            raise UserError(f"{path}: larger than {PARAMS_BYTES_AT_MOST // 2**20} MiB: give at "
+                            f"most {POURS_AT_MOST} pours in a smaller file")
+        text = raw.decode("utf-8")
     except OSError as e:
         raise UserError(f"cannot read {path}: {e.strerror or e}") from None
     except UnicodeDecodeError as e:
@@ -91,10 +107,15 @@ def read_params(path: str) -> np.ndarray:
         data = json.loads(text, parse_int=_json_int)
     except json.JSONDecodeError as e:
         raise UserError(f"{path}: malformed JSON at line {e.lineno} column {e.colno}: {e.msg}") from None
+    except RecursionError:
+        raise UserError(f"{path}: JSON nested too deeply for parameterizations") from None
     if isinstance(data, dict):
         data = [data]
     if not isinstance(data, list) or not data:
         raise UserError(f"{path}: expected a non-empty list of objects with 'params'")
+    if len(data) > POURS_AT_MOST:
+        raise UserError(f"{path}: {len(data)} parameterizations, more than the {POURS_AT_MOST} "
+                        f"simulate holds at once")
     rows = []
     for k, item in enumerate(data, 1):
         if not isinstance(item, dict):
@@ -227,10 +248,34 @@ def simulate(args: argparse.Namespace) -> int:
     return 0
 
 
+def _require_not_a_frame(params: Path, frames: Path) -> None:
+    """UserError when the --params file lies in the --frames folder under a
+    name render gives a frame (frame_NNNN.png): it would be written over."""
+    import re
+
+    try:
+        same_dir = params.resolve().parent == frames.resolve()
+    except OSError:
+        return
+    named = same_dir and re.fullmatch(r"frame_\d{4,}\.png", params.name)
+    linked = frames.is_dir() and any(_same_file(params, f) for f in frames.glob("frame_*.png"))
+    if named or linked:
+        raise UserError(f"--params {params}: render writes its frames under that name in "
+                        f"{frames}: give the parameters another name or the frames another folder")
+
+
+def _same_file(a: Path, b: Path) -> bool:
+    try:
+        return a.samefile(b)
+    except OSError:
+        return False
+
+
 def render(args: argparse.Namespace) -> int:
     from pantarhei.bridge.files import require_writable_file
     from pantarhei.oracle.physics import FIDELITIES
-    from pantarhei.oracle.render import render as draw
+    from pantarhei.oracle.render import (FRAME_BYTES_AT_MOST, frame_bytes, frames_at_most,
+                                         render as draw)
 
     try:
         width, height = (int(v) for v in args.size.lower().split("x"))
@@ -247,6 +292,14 @@ def render(args: argparse.Namespace) -> int:
         require_distinct({"--params": args.params, "--out": args.out})
     if args.frames:
         require_writable_file(Path(args.frames) / "frame.png", "--frames")
+        if args.params:
+            _require_not_a_frame(Path(args.params), Path(args.frames))
+    need = frame_bytes(P[0], args.fps, width, height, FIDELITIES[args.fidelity])
+    if need > FRAME_BYTES_AT_MOST:
+        raise UserError(f"--size {width}x{height} at --fps {args.fps}: this pour's "
+                        f"{frames_at_most(P[0], args.fps, FIDELITIES[args.fidelity])} frames would "
+                        f"take {need / 2**20:.0f} MiB, more than the {FRAME_BYTES_AT_MOST // 2**20} "
+                        f"MiB render holds at most: give a smaller --size or --fps")
     frames, outcome = draw(P[0], args.out, args.frames, fps=args.fps, width=width, height=height,
                            fidelity=FIDELITIES[args.fidelity])
     names = load_vocabulary().expectation_names
