@@ -259,32 +259,82 @@ literal_atom(A, A).
 
 %!  answers(+Scene:list, +Options:list, -Answers:list) is det.
 %
-%   One =|answer(Expectation, Value, Likelihood, Rule, Because, Reason)|=
-%   per expectation, in the vocabulary's order: queries:what_happens/3's
-%   outcome, with Rule the rule to name for it (named_rule/2), Because why
-%   the answer is what it is in one line ("because " and the deciding rule
-%   in words, "given", or for an undecided expectation "why not: " and the
-%   nearest reason) and Reason the brief why-not of an undecided one
-%   (queries:explain_brief/4; "" for the others).
+%   One =|answer(Expectation, Value, Likelihood, Rule, Because, Reason,
+%   Evidence)|= per expectation, in the vocabulary's order:
+%   queries:what_happens/3's outcome, with Rule the rule to name for it
+%   (named_rule/2; =none= for an undecided expectation), Because why the
+%   answer is what it is in one line ("because " and the deciding rule in
+%   words, "given", or for an undecided expectation "why not: " and the
+%   nearest reason), Reason the brief why-not of an undecided one
+%   (queries:explain_brief/4; "" for the others) and Evidence the pours
+%   behind the answer (evidence/4).
 answers(Scene, Options, Answers) :-
     what_happens(Scene, Options, Outcomes),
     maplist(answer(Scene, Options), Outcomes, Answers).
 
-answer(Scene, Options, outcome(E, V, P, R0), answer(E, V, P, R, Because, Reason)) :-
+answer(Scene, Options, outcome(E, V, P, R0),
+       answer(E, V, P, R, Because, Reason, Evidence)) :-
     (   V == unknown
     ->  explain_brief(Scene, E, Options, Reason),
         atomic_list_concat([_|Rest0], '; ', Reason),
         (   Rest0 == [] -> Rest = [Reason] ; Rest = Rest0 ),
         atomic_list_concat(Rest, '; ', Nearest),
         format(string(Because), "why not: ~w", [Nearest]),
-        R = R0
+        R = R0, Evidence = none
     ;   Reason = "",
         named_rule(R0, R),
         (   memberchk(R, [fact, none])
-        ->  Because = "given"
-        ;   rule_in_words(R, Words),
-            format(string(Because), "because ~w", [Words])
+        ->  Because = "given", Evidence = none
+        ;   evidence(R, E, Scene, Evidence),
+            rule_in_words(R, Words),
+            unruled_words(Evidence, Unruled),
+            format(string(Because), "because ~w~w", [Words, Unruled])
         )
+    ).
+
+%!  evidence(+Rule, +Expectation, +Scene, -Evidence) is det.
+%
+%   The pours behind an answer that Rule decides, counted for the
+%   Expectation holding (the polarity of the likelihood shown beside the
+%   answer, whatever the rule's head):
+%   =|pours(Held, Of, Body, Unruled)|=, Held of the Of pours learned from
+%   that could have been drawn for the rule's Body (its provenance
+%   support and kept, the latter counting the pours that keep its head),
+%   Unruled the propositions of the Scene that the rule's body does not
+%   hold (the rule answers for them as for its body: no rule of their own
+%   decides); or =|none(Body, Unruled)|= for a rule that records no pours
+%   (a rule written by hand, or one of Algorithm 1's).
+evidence(R, E, Scene, Evidence) :-
+    rule_body_set(R, Body),
+    msort(Scene, Scene1),
+    list_to_set(Scene1, SceneSet),
+    subtract(SceneSet, Body, Unruled),
+    (   defeasible:provenance(R, support, S), integer(S),
+        defeasible:provenance(R, kept, K), integer(K),
+        defeasible:rule(R, _, H)
+    ->  (   H == neg(E) -> Held is S - K ; Held = K ),
+        Evidence = pours(Held, S, Body, Unruled)
+    ;   Evidence = none(Body, Unruled)
+    ).
+
+rule_body_set(R, Body) :-
+    findall(B, defeasible:body(R, B), Bs0),
+    list_to_set(Bs0, Body).
+
+% unruled_words(+Evidence, -Text): "" or, for the scene's propositions
+% that the deciding rule's body does not hold, that no rule of their own
+% decides the answer.
+unruled_words(Evidence, Text) :-
+    (   ( Evidence = pours(_, _, Body, Unruled) ; Evidence = none(Body, Unruled) ),
+        Unruled \== []
+    ->  maplist(gloss, Unruled, Gs),
+        atomic_list_concat(Gs, ', ', Said),
+        where(Body, Where),
+        (   Unruled = [_] -> Own = "its own decides this, so it is"
+        ;   Own = "their own decides this, so they are"
+        ),
+        format(string(Text), "; ~w: no rule of ~w answered as ~w", [Said, Own, Where])
+    ;   Text = ""
     ).
 
 %!  named_rule(+Rule, -Named) is det.
@@ -307,27 +357,34 @@ named_rule(R, Named) :-
 
 %!  rule_in_words(+Rule, -Text:string) is det.
 %
-%   The deciding rule in words: its body's glosses (or "an ordinary pour"
-%   for the empty body), the share of such pours in which its expectation
-%   holds, and its evidence, e.g. "pour from the side: holds in 45% of
-%   such pours (seen in 27 of 60 such pours; rule g3_no_spill)".
+%   The deciding rule in words, its evidence in one voice: its body's
+%   glosses (or "an ordinary pour" for the empty body), the likelihood
+%   that its expectation holds in such pours (the estimate pooled from
+%   every pour), and the pours of its body counted for the expectation
+%   holding, e.g. "pour from the side: holds in 2% of such pours (the
+%   pooled estimate); held in 0 of 12 pours of pour from the side (rule
+%   g5_no_spill)".
 rule_in_words(R, Text) :-
     (   defeasible:rule(R, _, H)
-    ->  findall(B, defeasible:body(R, B), Bs0),
-        list_to_set(Bs0, Bs),
-        maplist(gloss, Bs, Gs),
-        (   Gs == [] -> Where = "an ordinary pour" ; atomic_list_concat(Gs, ', ', Where) ),
+    ->  rule_body_set(R, Body),
+        where(Body, Where),
         queries:likelihood(R, H, P),
         (   P == none
         ->  Said = ""
         ;   percent(P, Pc),
-            format(string(Said), ": holds in ~w% of such pours", [Pc])
+            format(string(Said), ": holds in ~w% of such pours (the pooled estimate)", [Pc])
         ),
-        evidence(R, Ev),
-        (   Ev == "" -> Also = "" ; format(string(Also), "~w; ", [Ev]) ),
-        format(string(Text), "~w~w (~wrule ~w)", [Where, Said, Also, R])
+        literal_atom(H, E),
+        evidence_words(R, E, Body, Ev),
+        (   Ev == "" -> Also = " (" ; format(string(Also), "; ~w (", [Ev]) ),
+        format(string(Text), "~w~w~wrule ~w)", [Where, Said, Also, R])
     ;   format(string(Text), "~w", [R])
     ).
+
+% where(+Body, -Text): a body in words, "an ordinary pour" for the empty one.
+where(Body, Where) :-
+    maplist(gloss, Body, Gs),
+    (   Gs == [] -> Where = "an ordinary pour" ; atomic_list_concat(Gs, ', ', Where) ).
 
 gloss(B, G) :-
     (   proposition(B, _, _, G0) -> G = G0 ; term_text(B, G) ).
@@ -342,13 +399,17 @@ percent(P, Pc) :-
     ;   Pc is round(X)
     ).
 
-% evidence(+Rule, -Text): the pours behind a learned rule, from its
-% provenance facts ("" when it records none).
-evidence(R, Text) :-
-    (   defeasible:provenance(R, support, S), defeasible:provenance(R, kept, K)
+% evidence_words(+Rule, +Expectation, +Body, -Text): the pours behind a
+% learned rule counted for the expectation holding ("" when it records
+% none).
+evidence_words(R, E, Body, Text) :-
+    (   evidence(R, E, [], pours(Held, S, _, _))
     ->  (   S == 0
         ->  Text = "no such pour simulated: estimated from the pours nearby"
-        ;   format(string(Text), "seen in ~w of ~w such pours", [K, S])
+        ;   Body == []
+        ->  format(string(Text), "held in ~w of ~w ordinary pours", [Held, S])
+        ;   where(Body, Where),
+            format(string(Text), "held in ~w of ~w pours of ~w", [Held, S, Where])
         )
     ;   defeasible:provenance(R, antecedent, A)
     ->  format(string(Text), "the weighted pours of ~w", [A])
@@ -371,8 +432,8 @@ evidence(R, Text) :-
 %   input, and replies with lines ending in =|end|=:
 %   =|invalid<TAB>Constraint<TAB>P1<TAB>P2|= for each violated constraint
 %   (nothing more then), =|error<TAB>Message|= when the theory was not
-%   read, else =|answer<TAB>E<TAB>V<TAB>P<TAB>R<TAB>Because<TAB>Reason|=
-%   per expectation, or =|why<TAB>Text|=.
+%   read, else =|answer<TAB>E<TAB>V<TAB>P<TAB>R<TAB>Because<TAB>Reason<TAB>Held<TAB>Of<TAB>Body<TAB>Unruled|=
+%   per expectation (evidence_fields/5), or =|why<TAB>Text|=.
 serve :-
     current_prolog_flag(argv, Argv),
     (   append(_, ['--'|Args], Argv) -> true ; Args = Argv ),
@@ -399,6 +460,14 @@ error_line(theory_error(Name, 0, M), Line) :- !,
 error_line(E, Line) :-
     error_message(E, Line).
 
+% evidence_fields(+Evidence, -Held, -Of, -Body, -Unruled): an answer's
+% evidence as the reply's fields (none for no count, lists comma-joined).
+evidence_fields(none, none, none, '', '').
+evidence_fields(pours(H, S, B, U), H, S, BT, UT) :-
+    atomic_list_concat(B, ',', BT), atomic_list_concat(U, ',', UT).
+evidence_fields(none(B, U), none, none, BT, UT) :-
+    atomic_list_concat(B, ',', BT), atomic_list_concat(U, ',', UT).
+
 serve_requests(Loaded) :-
     read_term(user_input, Request, []),
     (   Request == end_of_file
@@ -420,8 +489,10 @@ reply(Request, Loaded) :-
     ->  format("error\t~w~n", [Loaded])
     ;   Request = answer(_)
     ->  answers(Scene, [], As),
-        forall(member(answer(E, V, P, R, Because, Reason), As),
-               format("answer\t~w\t~w\t~w\t~w\t~w\t~w~n", [E, V, P, R, Because, Reason]))
+        forall(member(answer(E, V, P, R, Because, Reason, Evidence), As),
+               ( evidence_fields(Evidence, Held, Of, Body, Unruled),
+                 format("answer\t~w\t~w\t~w\t~w\t~w\t~w\t~w\t~w\t~w\t~w~n",
+                        [E, V, P, R, Because, Reason, Held, Of, Body, Unruled]) ))
     ;   Request = why(_, Literal)
     ->  explain(Scene, Literal, [], Text),
         format("why\t~w~n", [Text])

@@ -6,6 +6,7 @@ import json
 import sys
 
 from pantarhei.bridge.commands import options
+from pantarhei.bridge.commands.answering import answer    # demo asks through it too
 from pantarhei.bridge.errors import UserError, safe_line
 from pantarhei.bridge.reasoning.scenes import known
 
@@ -28,7 +29,14 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="explain why the theory concludes LITERAL in the scene, or why not "
                         "(an expectation, or neg(E))")
     p.add_argument("--json", action="store_true", help="print JSON")
-    p.set_defaults(run=ask)
+    p.add_argument("--check", type=options.count(0, options.VERIFY_MAX), default=0, metavar="N",
+                   help="also simulate N pours of the question (seeded, kept in --store, with the "
+                        "oracle the theory was learned from) and show the share observed beside "
+                        "each answer, flagging those the pours contradict (default 0: none)")
+    options.add_seed(p, 0, "--check's sampling")
+    p.add_argument("--store", default="pantarhei.sqlite",
+                   help="SQLite file of simulations for --check (default pantarhei.sqlite)")
+    p.set_defaults(run=ask, pin=lambda args: args.check > 0)     # --check simulates
 
     p = sub.add_parser("plan", help="how to pour to reach a goal? (clingo)")
     p.add_argument("--goal", required=True,
@@ -83,18 +91,36 @@ def ask(args: argparse.Namespace) -> int:
         raise UserError("give the scene in words or with --props, not both")
     if args.why is not None and not args.why.strip():
         raise UserError("--why: give an expectation E or neg(E) (see `pantarhei vocab`)")
+    if args.check and args.why is not None:
+        raise UserError("--check checks the answers: ask without --why")
     with _stand_ins(args.theory) as (files, source, unread):
         with Door(files, source, unread) as door:    # SWI-Prolog reads the theory meanwhile
-            if args.props is None and args.question in (None, "-"):    # one question a line
-                door.require_theory()
-                return _ask_each_line(args, door, bounded_lines(sys.stdin.buffer))
-            if args.props is not None:
-                props = known(_split(args.props))
-                if not props:
-                    raise UserError("--props: no propositions given (see `pantarhei vocab`)")
-            else:
-                props = known(_understood(args.question))
-            return answer(door, props, _why_literal(args.why), args.json)
+            with _checker(args, files) as check:
+                args.checker = check
+                if args.props is None and args.question in (None, "-"):    # one question a line
+                    door.require_theory()
+                    return _ask_each_line(args, door, bounded_lines(sys.stdin.buffer))
+                if args.props is not None:
+                    props = known(_split(args.props))
+                    if not props:
+                        raise UserError("--props: no propositions given (see `pantarhei vocab`)")
+                else:
+                    props = known(_understood(args.question))
+                if check is not None:
+                    door.require_theory()
+                return answer(door, props, _why_literal(args.why), args.json, check=check)
+
+
+def _checker(args: argparse.Namespace, files):
+    """--check's simulator (answering.Checker), or a context of None."""
+    import contextlib
+
+    if not args.check:
+        return contextlib.nullcontext()
+    from pantarhei.bridge.commands.answering import Checker
+    from pantarhei.bridge.reasoning.checking import checking_oracle
+
+    return Checker(args.check, args.seed, args.store, checking_oracle([p for p, _, _ in files]))
 
 
 def _why_literal(why: str | None) -> str | None:
@@ -207,7 +233,8 @@ def _ask_each_line(args: argparse.Namespace, door, lines) -> int:
         try:
             question = utf8(question, "the question")
             answer(door, known(_understood(question)), _why_literal(args.why), args.json,
-                   json_line={"line": number, "question": question})
+                   json_line={"line": number, "question": question},
+                   check=getattr(args, "checker", None))
         except UserError as e:
             failed += 1
             print(safe_line(f"pantarhei ask: line {number}: {e}"), file=sys.stderr, flush=True)
@@ -216,82 +243,6 @@ def _ask_each_line(args: argparse.Namespace, door, lines) -> int:
         raise UserError("give a scene: a question in words, --props P1,P2, or questions one a "
                         "line on standard input")
     return 1 if failed else 0
-
-
-def answer(asker, props: list[str], why: str | None = None, as_json: bool = False,
-           json_line: dict | None = None) -> int:
-    """Print what the theory `asker` asks (bridge/reasoning/asking.Door, or
-    answers.InProcess for a theory held in Python) says of the scene
-    `props`, or with `why` (a native literal) the whole argument for it;
-    as JSON with `as_json`, on one line beginning with the keys of
-    `json_line` when it is given (JSON Lines)."""
-    def print_json(obj: dict) -> None:
-        if json_line is None:
-            print(json.dumps(obj, indent=1))
-        else:
-            print(json.dumps({**json_line, **obj}, separators=(",", ":")))
-
-    scene = props
-    if why:
-        words = asker.why(scene, why)
-        if as_json:
-            print_json({"understood": props, "literal": why, "why": words})
-        else:
-            _print_scene(props, glosses=False)
-            print(words.replace("; ", "\n  "))
-        return 0
-    outcomes = asker.answers(scene)
-    if as_json:
-        print_json({"understood": props, "theory": asker.source, "outcomes": {
-            o.expectation: {"verdict": o.value, "likelihood": o.likelihood, "rule": o.rule,
-                            "because": o.because}
-            for o in outcomes}})
-        return 0
-    from pantarhei.theory.lexicon import load_vocabulary
-
-    vocab = load_vocabulary()
-    _print_scene(props, glosses=True)
-    print(f"theory: {asker.source}")
-    glosses = {e.name: e.gloss for e in vocab.expectations}
-    said: dict[str, str] = {}     # a why-not already printed, with its expectation as E
-    for o in outcomes:
-        print(f"  [{answer_mark(o)}] {o.expectation:30} {glosses[o.expectation]}")
-        if o.value != "unknown":
-            print(f"          {o.because}")
-            continue
-        general = o.reason.replace(o.expectation, "E")
-        if general in said:   # the same reasons as for an expectation above
-            print(f"          why not: as for {said[general]}")
-            continue
-        said[general] = o.expectation
-        first, *more = o.reason.split("; ")[1:] or [o.reason]
-        print(f"          why not: {first}")
-        for line in more:
-            print(f"            {line}")
-    print("(yes / no: what such pours do, and the share of them in which the expectation holds; "
-          "maybe: such pours split; ?: the theory does not say. Ask again with --why E for the "
-          "whole argument)")
-    return 0
-
-
-def answer_mark(o) -> str:
-    """The verdict and its likelihood, 10 characters: "yes    92%",
-    "no      8%", "maybe  55%", "?" for an expectation the theory leaves
-    undecided."""
-    word = {"holds": "yes", "fails": "no", "uncertain": "maybe", "unknown": "?"}[o.value]
-    share = f"{round(100 * o.likelihood):3d}%" if o.likelihood is not None else ""
-    return f"{word:6}{share:>4}"
-
-
-def _print_scene(props: list[str], glosses: bool) -> None:
-    """The propositions understood from the question."""
-    from pantarhei.theory.lexicon import load_vocabulary
-
-    vocab = load_vocabulary()
-    print(f"understood: {', '.join(props)}")
-    if glosses:
-        for p in props:
-            print(f"  {p}: {vocab.propositions[p].gloss}")
 
 
 # -- plan ---------------------------------------------------------------------

@@ -26,10 +26,12 @@ def what_happens(theory: Theory, props: list[str],
     e = prolog_load(theory)
     e.use_module("ask")
     goal = (f"ask:answers(Scene, {semantics.options()}, As), "
-            "findall(S, (member(answer(E, V, P, R, B, T), As), "
-            "format(string(S), '~w\\t~w\\t~w\\t~w\\t~w\\t~w', [E, V, P, R, B, T])), Ss)")
+            "findall(S, (member(answer(E, V, P, R, B, T, Ev), As), "
+            "ask:evidence_fields(Ev, H, O, Bd, U), "
+            "format(string(S), '~w\\t~w\\t~w\\t~w\\t~w\\t~w\\t~w\\t~w\\t~w\\t~w', "
+            "[E, V, P, R, B, T, H, O, Bd, U])), Ss)")
     r = e.once(goal, Scene=list(props))
-    return [answer_of(prolog_text(line).split("\t", 5)) for line in r["Ss"]]
+    return [answer_of(prolog_text(line).split("\t")) for line in r["Ss"]]
 
 
 class InProcess:

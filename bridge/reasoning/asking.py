@@ -23,20 +23,51 @@ from pantarhei.theory import THEORY_DIR
 
 
 @dataclass(frozen=True)
+class Evidence:
+    """The pours behind an answer, counted for the expectation holding
+    (the polarity of the answer's likelihood, whatever the deciding
+    rule's head): `held` of the `pours` learned from that could have been
+    drawn for the deciding rule's `body` (None where the rule records no
+    pours: written by hand, or one of Algorithm 1's), and `unruled`, the
+    propositions of the scene its body does not hold (no rule of their own
+    decides: they are answered as the body)."""
+    held: int | None
+    pours: int | None
+    body: tuple[str, ...]
+    unruled: tuple[str, ...]
+
+    def as_json(self) -> dict:
+        return {"held": self.held, "pours": self.pours, "body": list(self.body),
+                "unruled": list(self.unruled)}
+
+
+@dataclass(frozen=True)
 class Answer:
     """What the theory says about one expectation in a scene."""
     expectation: str
     value: str          # "holds", "fails", "uncertain" or "unknown"
-    likelihood: float | None    # the share of such pours in which it holds
-    rule: str           # the rule named for it (ask:named_rule/2), "fact", or "none"
+    #: the share of such pours in which the expectation holds: the
+    #: deciding rule's estimate, pooled from every pour learned from
+    likelihood: float | None
+    rule: str | None    # the rule named for it (ask:named_rule/2), "fact", or None (unknown)
     because: str        # why, in one line: the deciding rule in words, or why not
     reason: str         # for an undecided expectation, its brief why-not
+    evidence: Evidence | None = None    # the pours behind it (None: given, or unknown)
 
 
 def answer_of(fields: list[str]) -> Answer:
-    """An Answer from the fields of ask:answers/3's answer/6, as text."""
-    exp, value, p, rule, because, reason = fields
-    return Answer(exp, value, None if p == "none" else float(p), rule, because, reason)
+    """An Answer from the fields of ask:answers/3's answer/7, as text
+    (serve/0's reply: the evidence as ask:evidence_fields/5 writes it)."""
+    exp, value, p, rule, because, reason, *ev = fields
+    evidence = None
+    if value != "unknown" and rule not in ("fact", "none"):
+        held, of, body, unruled = ev
+        evidence = Evidence(None if held == "none" else int(held),
+                            None if of == "none" else int(of),
+                            tuple(x for x in body.split(",") if x),
+                            tuple(x for x in unruled.split(",") if x))
+    return Answer(exp, value, None if p == "none" else float(p),
+                  None if value == "unknown" else rule, because, reason, evidence)
 
 
 class Door:

@@ -255,9 +255,13 @@ def test_ask_asks_the_question_as_given(cli, ordinary: str) -> None:
 
 
 def test_ask_says_the_deciding_rule_in_words_with_its_evidence(cli, tmp_path: Path) -> None:
+    # one voice: the likelihood that the expectation holds (the pooled
+    # estimate), and the pours of the deciding rule's body counted for the
+    # expectation holding, whatever the polarity of the rule's head
     f = tmp_path / "general.pl"
     f.write_text("rule(g0_no_spill, defeasible, no_spill).\nlearned(g0_no_spill).\n"
                  "provenance(g0_no_spill, support, 60).\nprovenance(g0_no_spill, kept, 50).\n"
+                 "provenance(g0_no_spill, confidence_permille, 830).\n"
                  "rule(g1_no_spill, defeasible, neg(no_spill)).\nbody(g1_no_spill, pour_to_side).\n"
                  "learned(g1_no_spill).\nprovenance(g1_no_spill, support, 52).\n"
                  "provenance(g1_no_spill, kept, 41).\n"
@@ -265,18 +269,29 @@ def test_ask_says_the_deciding_rule_in_words_with_its_evidence(cli, tmp_path: Pa
     r = cli("ask", "pour from the side", "--theory", str(f))
     assert r.code == 0, r.err
     assert "[no      9%] no_spill" in r.out
-    assert ("because pour from the side: holds in 9% of such pours (seen in 41 of 52 such "
-            "pours; rule g1_no_spill)") in r.out
+    # a failing head: 41 of its 52 pours kept neg(no_spill), so it held in 11
+    assert ("because pour from the side: holds in 9% of such pours (the pooled estimate)\n"
+            "            held in 11 of 52 pours of pour from the side (rule g1_no_spill)\n") in r.out
+    # a holding head, and a proposition asked that has no rule of its own
     light = cli("ask", "--props", "light_liquid", "--theory", str(f))
-    assert "[yes       ] no_spill" in light.out
-    assert "because an ordinary pour (seen in 50 of 60 such pours; rule g0_no_spill)" in light.out
+    assert "[yes    83%] no_spill" in light.out
+    assert ("because an ordinary pour: holds in 83% of such pours (the pooled estimate)\n"
+            "            held in 50 of 60 ordinary pours (rule g0_no_spill)\n"
+            "            a light liquid: no rule of its own decides this, so it is answered as "
+            "an ordinary pour\n") in light.out
+    out = json.loads(cli("ask", "--props", "light_liquid", "--theory", str(f), "--json").out)
+    assert out["outcomes"]["no_spill"]["evidence"] == {
+        "held": 50, "pours": 60, "body": [], "unruled": ["light_liquid"]}
+    assert out["outcomes"]["source_clear"]["rule"] is None      # unknown: no rule
+    assert out["outcomes"]["source_clear"]["evidence"] is None
     # where such pours split, the answer says so
     f.write_text(f.read_text().replace("confidence_permille, 912", "confidence_permille, 550"))
     maybe = json.loads(cli("ask", "pour from the side", "--theory", str(f), "--json").out)
     assert maybe["outcomes"]["no_spill"] == {
         "verdict": "uncertain", "likelihood": 0.45, "rule": "g1_no_spill",
-        "because": "because pour from the side: holds in 45% of such pours (seen in 41 of 52 "
-                   "such pours; rule g1_no_spill)"}
+        "because": "because pour from the side: holds in 45% of such pours (the pooled estimate); "
+                   "held in 11 of 52 pours of pour from the side (rule g1_no_spill)",
+        "evidence": {"held": 11, "pours": 52, "body": ["pour_to_side"], "unruled": []}}
 
 
 def test_ask_why_in_words(cli, ordinary: str) -> None:
