@@ -55,7 +55,24 @@ import numpy as np
 
 METHODS = ("curiosity", "random", "designed", "uncertainty", "map_elites")
 MEASURES = (("contrast_accuracy", "contrast accuracy"), ("accuracy", "clear accuracy"),
-            ("calibration", "calibration"), ("coherent", "coherent"))
+            ("calibration", "calibration"), ("coherent", "coherent"),
+            ("askable_contrast_accuracy", "contrast accuracy, every askable body"),
+            ("interaction_contrast_accuracy", "interactions: contrast accuracy"),
+            ("interaction_calibration", "interactions: calibration"),
+            ("interaction_confident_errors", "interactions: confident errors"),
+            ("askable_interaction_contrast_accuracy",
+             "interactions: contrast accuracy, every askable body"),
+            ("random_contrast_accuracy", "random scenes: contrast accuracy"),
+            ("random_calibration", "random scenes: calibration"),
+            ("theory_behaviours", "behaviours in the theory"))
+#: The measures that are counts.
+COUNTS = ("behaviours", "theory_behaviours", "interaction_confident_errors")
+#: The measures printed as each row is measured.
+SHOWN = (("contrast_accuracy", "contrast"), ("calibration", "calibration"),
+         ("interaction_contrast_accuracy", "interactions"),
+         ("interaction_confident_errors", "confident errors"),
+         ("random_contrast_accuracy", "random scenes"), ("behaviours", "behaviours seen"),
+         ("theory_behaviours", "in the theory"))
 
 
 @dataclass
@@ -169,18 +186,14 @@ def measure(oracle: str, seeds: Sequence[int], budgets: Sequence[int], store: Pa
     the questions, and the behaviours its pours show; the rows of `known`
     are kept and not measured again; `done` is given the rows so far after
     each seed."""
-    from pantarhei.bridge.evaluation.map_elites import behaviours_seen
     from pantarhei.bridge.evaluation.measures import (contrast_keys, defaults_only,
-                                                      question_key, question_measures,
-                                                      question_shares, verdicts)
+                                                      question_key, question_shares, verdicts)
+    from pantarhei.bridge.evaluation.question_sets import (Keyed, interaction_questions, keyed,
+                                                           random_scenes)
     from pantarhei.bridge.evaluation.questions import question_pours, questions
     from pantarhei.bridge.exploration.simulation import open_simulator
-    from pantarhei.bridge.learning.generalize import Settings, generalize
-    from pantarhei.theory.lexicon import load_vocabulary
 
-    names = load_vocabulary().expectation_names
     asked = questions()
-    scenes = [q.antecedent for q in asked]
     sim = open_simulator(oracle, "local", None, store.absolute())
     run = lambda P: np.asarray(sim.simulate(P, progress=False), dtype=float)  # noqa: E731
     rows = list(known)
@@ -192,7 +205,11 @@ def measure(oracle: str, seeds: Sequence[int], budgets: Sequence[int], store: Pa
         key, clear = question_key(S_q[ok], of[ok], len(asked))
         share = question_shares(S_q[ok], of[ok], len(asked))
         V, of_ok = verdicts(S_q[ok]), of[ok]
-        contrast = contrast_keys(key, clear, defaults_only(V, len(asked))[0])
+        project = Keyed("questions", [q.antecedent for q in asked], key, clear, share,
+                        contrast_keys(key, clear, defaults_only(V, len(asked))[0]), V, of_ok)
+        sets = {"": project,
+                "interaction_": keyed("interactions", interaction_questions(), run),
+                "random_": keyed("random scenes", random_scenes(), run)}
         top = max(budgets)
         for seed in seeds:
             for method in methods:
@@ -206,22 +223,41 @@ def measure(oracle: str, seeds: Sequence[int], budgets: Sequence[int], store: Pa
                             "uncertainty": uncertainty, "map_elites": map_elites_pours}[method]
                     chosen = make(seed, top, run)
                 for n in wanted:
-                    P, S = chosen.P[:n], chosen.S[:n]
-                    good = np.all(np.isfinite(S), axis=1)
-                    g = generalize(P[good], S[good], Settings(seed=seed), chosen.bodies(n))
-                    lik = np.array([[g.answer(q)[e][1] for e in names] for q in scenes])
-                    m = question_measures(g.predict(scenes), lik, share, key, clear,
-                                          contrast, V, of_ok)
-                    rows.append({"method": method, "seed": seed, "pours": n,
-                                 "behaviours": behaviours_seen(S), **m})
+                    row = {"method": method, "seed": seed, "pours": n,
+                           **theory_row(chosen, n, seed, sets)}
+                    rows.append(row)
                     print(f"{method:11} seed {seed} {n:4} pours: " + ", ".join(
-                        f"{label} {_num(m.get(k))}" for k, label in MEASURES)
-                        + f", behaviours {behaviours_seen(S)}", flush=True)
+                        f"{label} {_num(row.get(k))}" for k, label in SHOWN), flush=True)
             if done is not None:
                 done(rows)
     finally:
         sim.close()
     return rows
+
+
+def theory_row(chosen: Chosen, n: int, seed: int, sets: dict) -> dict:
+    """The measures of the theories learned from a method's first n pours:
+    over its own bodies (unprefixed) and over every askable body
+    (`askable_`; the same for a method whose own bodies are every askable
+    one), each on every question set (`sets`: prefix -> Keyed), with the
+    behaviours its pours show and those its theory gives."""
+    from pantarhei.bridge.evaluation.map_elites import behaviours_seen
+    from pantarhei.bridge.evaluation.question_sets import answers, theory_behaviours
+    from pantarhei.bridge.learning.generalize import Settings, generalize
+
+    P, S = chosen.P[:n], chosen.S[:n]
+    good = np.all(np.isfinite(S), axis=1)
+    own = chosen.bodies(n)
+    theories = {"": generalize(P[good], S[good], Settings(seed=seed), own)}
+    theories["askable_"] = (theories[""] if own is None else
+                            generalize(P[good], S[good], Settings(seed=seed), None))
+    row: dict = {"behaviours": behaviours_seen(S)}
+    for tag, g in theories.items():
+        row[f"{tag}theory_behaviours"] = theory_behaviours(g)
+        for prefix, ks in sets.items():
+            m = ks.measures(*answers(g, ks.scenes))
+            row.update({f"{tag}{prefix}{k}": v for k, v in m.items()})
+    return row
 
 
 def _num(x) -> str:
@@ -252,7 +288,7 @@ def table(rows: list[dict], oracle: str, seeds: Sequence[int]) -> str:
             cells = []
             for k, _ in cols:
                 s = summary(rows, k, m, n)
-                fmt = "{:.0f}" if k == "behaviours" else "{:.3f}"
+                fmt = "{:.0f}" if k in COUNTS else "{:.3f}"
                 cells.append("n/a" if s is None else
                              f"{fmt.format(s[0])} [{fmt.format(s[1])}-{fmt.format(s[2])}]")
             out.append(f"| {m} | {n} | " + " | ".join(cells) + " |")
@@ -268,7 +304,12 @@ def plot(rows: list[dict], path: Path) -> None:
 
     budgets = sorted({r["pours"] for r in rows})
     methods = [m for m in METHODS if any(r["method"] == m for r in rows)]
-    fig, axes = plt.subplots(1, len(MEASURES), figsize=(4 * len(MEASURES), 3.4))
+    cols = 4
+    rows_ = -(-len(MEASURES) // cols)
+    fig, grid = plt.subplots(rows_, cols, figsize=(4 * cols, 3.2 * rows_))
+    axes = grid.ravel()
+    for ax in axes[len(MEASURES):]:
+        ax.set_visible(False)
     for ax, (k, label) in zip(axes, MEASURES):
         for m in methods:
             s = [summary(rows, k, m, n) for n in budgets]
@@ -279,7 +320,7 @@ def plot(rows: list[dict], path: Path) -> None:
             ax.plot(xs, med, marker="o", label=m)
             ax.fill_between(xs, [v[1] for v in s if v], [v[2] for v in s if v], alpha=0.15)
         ax.set_xlabel("pours simulated")
-        ax.set_title(label)
+        ax.set_title(label, fontsize=9)
     axes[0].legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(path, dpi=90)
