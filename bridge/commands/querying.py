@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import re
 import sys
 
 from pantarhei.bridge.commands import options
@@ -37,6 +38,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--store", default="pantarhei.sqlite",
                    help="SQLite file of simulations for --check (default pantarhei.sqlite)")
     p.set_defaults(run=ask, pin=lambda args: args.check > 0)     # --check simulates
+    # a negated expectation after --why (-no_spill) is its value, not an option:
+    # argparse takes an argument that this matches for a value (every
+    # expectation's name holds an underscore, no option of ask does)
+    p._negative_number_matcher = re.compile(r"^-\d+$|^-\d*\.\d+$|^-[a-z][a-z0-9]*_[a-z0-9_]+$")
 
     p = sub.add_parser("plan", help="how to pour to reach a goal? (clingo)")
     p.add_argument("--goal", required=True,

@@ -47,3 +47,17 @@ def test_check_is_refused_with_why(cli, tmp_path: Path) -> None:
     r = cli("ask", "pour from the side", "--theory", str(theory), "--check", "3",
             "--why", "no_spill", "--store", str(tmp_path / "s.sqlite"))
     assert "--check" in assert_one_line_error(r)
+
+
+def test_why_takes_a_negated_expectation_and_gives_its_steps_in_json(cli, tmp_path: Path) -> None:
+    theory = tmp_path / "t.pl"
+    theory.write_text(THEORY)
+    r = cli("ask", "pour from the side", "--theory", str(theory), "--why", "-liquid_enters_destination")
+    assert r.code == 0, r.err
+    assert "neg(liquid_enters_destination) by rule r2" in r.out
+    out = json.loads(cli("ask", "pour from the side", "--theory", str(theory), "--why",
+                         "-liquid_enters_destination", "--json").out)
+    assert out["literal"] == "neg(liquid_enters_destination)"
+    assert out["steps"][0].startswith("neg(liquid_enters_destination) by rule r2")
+    assert "; ".join(out["steps"]) == out["why"]
+    assert cli("ask", "-h").code == 0
