@@ -19,9 +19,13 @@ no duration of its own), is refused naming the ranges there are.
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.reasoning.nouns import Nouns, roles
+from pantarhei.bridge.reasoning.stages import MOVE, POSE, stages
+from pantarhei.bridge.reasoning.wording import NUMBER, Token, stem
 from pantarhei.theory.lexicon import load_vocabulary
 
 #: unit word (as written, lower case) -> (what it measures, factor to the parameter's unit)
@@ -39,21 +43,34 @@ UNITS: dict[str, tuple[str, float]] = {
     **{w: ("mass", 1.0) for w in ("g", "gram", "grams", "gramme", "grammes")},
     **{w: ("mass", 1000.0) for w in ("kg", "kilo", "kilos", "kilogram", "kilograms")},
     **{w: ("count", 1.0) for w in ("particle", "particles")},
+    # said, and refused naming what would be read: an amount of liquid by
+    # its volume, a speed (wording.py writes "0.5 m/s" as "0.5 speed")
+    **{w: ("volume", 1.0) for w in ("ml", "millilitre", "millilitres", "milliliter",
+                                    "milliliters", "cl", "dl", "l", "litre", "litres", "liter",
+                                    "liters", "oz", "ounce", "ounces")},
+    "speed": ("speed", 1.0),
 }
+#: What cannot be negative, in words.
+_POSITIVE = {"mass": "a mass", "time": "a time", "count": "a number of particles",
+             "volume": "an amount of liquid", "speed": "a speed"}
 
 #: The words beside a number that pick its parameter, by what they choose;
 #: they are read with the number (a height's with the rim it is measured from).
 CUES = {
     "roll": ("roll", "sideways"),
     "pitch": ("tilt", "pitch", "angle"),
-    "side": ("side", "away", "far", "off", "distance"),
-    "offset": ("sideways", "offset"),
+    "side": ("side", "away", "far", "off", "distance", "axis"),
+    "offset": ("sideways", "offset", "axis"),
     "height": ("high", "above", "below", "height", "up", "rim"),
 }
 #: The words read with a number besides its cues: a roll is "tilted sideways".
 ALSO_READ = {"roll": ("tilt",)}
 #: How far from a number its cue words may stand.
 REACH = 4
+#: Words that may stand between a number and the cue beside it: "a height of 20 cm",
+#: "tilted at 45 degrees", "20 cm to the side".
+_BESIDE = {stem(w) for w in ("of", "a", "an", "the", "at", "to", "from", "by", "about", "around",
+                              "roughly", "approximately", "some")}
 
 
 @dataclass(frozen=True)
@@ -68,14 +85,24 @@ def parameter(q: Quantity, pose: str, move: str | None, cues: set[str],
     """(the parameter `q` gives, the cue it was chosen by: a key of CUES, or
     "") for a quantity said in the stage with pose `pose` and movement
     `move` (reading.py's _POSE and _MOVE), beside the cue words `cues`, of
-    the body `body`; UserError for a measure no parameter takes there."""
+    the body `body`; UserError for a measure no parameter takes there, or
+    a negative one where nothing can be negative."""
+    if q.value < 0 and q.measures in _POSITIVE:
+        raise UserError(f"\"{q.text}\": {_POSITIVE[q.measures]} cannot be negative")
+    if q.measures == "speed":
+        raise UserError(f"\"{q.text}\" is a speed, which the vocabulary says by how long the "
+                        "source takes to move in or away: say \"move in fast\", \"move in slowly\", "
+                        "\"move in over 2 seconds\" or \"move away fast\"")
+    if q.measures == "volume":
+        raise UserError(_AMOUNT.format(q.text))
     if q.measures == "angle":
         return (f"{pose}_roll", "roll") if cues & set(CUES["roll"]) else (f"{pose}_pitch", "pitch")
     if q.measures == "length":
+        if cues & {"offset"} or (cues & {"sideways"} and not cues & set(CUES["height"])
+                                 and not cues & set(CUES["side"])):
+            return f"{pose}_y", "offset"
         if cues & set(CUES["side"]):
             return f"{pose}_x", "side"
-        if cues & {"offset"} or (cues & {"sideways"} and not cues & set(CUES["height"])):
-            return f"{pose}_y", "offset"
         if not cues & set(CUES["height"]):
             raise UserError(f"\"{q.text}\": above the destination, or to its side? say "
                             f"\"{q.text} above\" or \"{q.text} to the side\"")
@@ -94,12 +121,19 @@ def parameter(q: Quantity, pose: str, move: str | None, cues: set[str],
     return "particle_count", ""
 
 
+_AMOUNT = ("\"{}\" of liquid: the vocabulary counts the liquid in particles; say \"with 50 "
+           "particles\", \"a little liquid\", \"some liquid\", \"much liquid\" or \"a full cup\"")
+
+
 def proposition(q: Quantity, param: str, cues: set[str]) -> str:
     """The proposition whose range of `param` holds `q` (a height said
     "below" the rim is under it: negative); UserError naming the ranges
     there are if none does."""
     vocab = load_vocabulary()
     unit = next(p.unit for p in vocab.parameters if p.name == param)
+    if param.endswith("_z") and "below" in cues and q.value < 0:
+        raise UserError(f"\"{q.text}\" below: say \"{q.text[1:]} below the rim\" or \"{q.text} "
+                        "above the rim\", not both a minus and below")
     v = -q.value if param.endswith("_z") and "below" in cues else q.value
     ranges = sorted((p.model.low, p.model.high, n) for n, p in vocab.propositions.items()
                     if p.model.kind == "uniform" and p.model.param == param)
@@ -110,3 +144,50 @@ def proposition(q: Quantity, param: str, cues: set[str]) -> str:
     raise UserError(f"\"{q.text}\" is {v:g} {unit} of {param}, which no proposition holds"
                     + (f" ({said}): say one of these" if said else
                        ": the vocabulary has no proposition of it"))
+
+
+def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
+    """The tokens with each number and its unit ("45 degrees"), and the
+    words beside it that picked its parameter ("tilted at"), read as one:
+    the proposition whose range holds it. The cue that stands beside the
+    number ("at 10 cm height", "20 cm to the side") picks the parameter
+    before the others of its clause ("from the side at 10 cm height" is
+    a height, and the side is the pour's)."""
+    numbers = [i for i, t in enumerate(tokens[:-1]) if re.fullmatch(NUMBER, t.word)
+               and tokens[i + 1].raw in UNITS and tokens[i + 1].clause == t.clause]
+    if not numbers:
+        return tokens
+    stage = stages(tokens)
+    noun = Nouns(tokens, roles(tokens, placeable), placeable)
+    cue_of = {stem(w): w for ws in (*CUES.values(), *ALSO_READ.values()) for w in ws}
+    read: dict[int, Token] = {}
+    dropped: set[int] = set()
+    for i in numbers:
+        unit = tokens[i + 1].raw
+        q = Quantity(float(tokens[i].word) * UNITS[unit][1], UNITS[unit][0],
+                     f"{tokens[i].raw} {unit}")
+        k = _past(tokens, i + 2, 1, _BESIDE)
+        if UNITS[unit][0] == "mass" and i + 2 < len(tokens) and tokens[i + 2].word == "of" \
+                and k < len(tokens) and tokens[k].word == "liquid":
+            raise UserError(_AMOUNT.format(q.text))
+        near = [k for k in range(max(0, i - REACH), min(len(tokens), i + 2 + REACH))
+                if k not in (i, i + 1) and tokens[k].clause == tokens[i].clause
+                and tokens[k].word in cue_of and k not in dropped]
+        beside = [k for k in (_past(tokens, i + 2, 1, _BESIDE), _past(tokens, i - 1, -1, _BESIDE))
+                  if k in near]
+        cues = {cue_of[tokens[k].word] for k in near}        # "tilt" picks a pitch, as a cue
+        choosing = {cue_of[tokens[beside[0]].word]} | (cues & {"below", "offset"}) if beside else cues
+        param, by = parameter(q, POSE[stage[i]], MOVE[stage[i]], choosing, noun(i, i + 1))
+        read_too = (*CUES.get(by, ()), *ALSO_READ.get(by, ()))
+        used = {k for k in near if cue_of[tokens[k].word] in read_too}
+        raw = " ".join(tokens[k].raw for k in sorted({i, i + 1} | used))
+        read[i] = Token(proposition(q, param, cues), raw, tokens[i].clause)
+        dropped |= {i + 1} | used
+    return [read.get(i, t) for i, t in enumerate(tokens) if i not in dropped]
+
+
+def _past(tokens: list[Token], j: int, step: int, words: set[str]) -> int:
+    """The first position from j on, going by `step`, that holds none of `words`."""
+    while 0 <= j < len(tokens) and tokens[j].word in words:
+        j += step
+    return j

@@ -28,9 +28,40 @@ _MANNER = ("from|with|over|into|onto|low|high|very|steeply|slightly|halfway|tilt
 #: nowhere, so a question that says one is refused naming the phrase.
 UNCLEAR = "unclear"
 
+#: Materials: what a bowl is made of is not in the vocabulary (read as nothing, said back).
+_MATERIALS = ("plastic|ceramic|metal|metallic|steel|stainless steel|aluminium|aluminum|tin|copper|"
+              "iron|wooden|wood|paper|cardboard|porcelain|china|clay|stone|silicone|rubber|"
+              "styrofoam|crystal|enamel|enamelled|earthenware|terracotta|bamboo")
+_CONTAINERS = ("cup|container|glass|jug|mug|pot|vessel|jar|beaker|pitcher|basin|bottle|flask|"
+               "carafe|kettle|teapot|tumbler|saucepan|pan|bucket|can|ladle|dish|tub")
+#: Liquids by name, read as the vocabulary's ordinary liquid (and said back).
+_LIQUIDS = ("milk|oil|olive oil|cooking oil|juice|orange juice|coffee|tea|soup|wine|beer|broth|"
+            "stock|sauce|soda|vinegar|lemonade|cola|coke|ink|paint|cream|smoothie|liquor|"
+            "alcohol|petrol|gasoline|water")
+
 PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
-    ("", ("how much", "how many",         # asks, does not say: "how much liquid spills"
-          "nearly")),                      # a hedge (its stem would be "near")
+    ("hedge", ("how much", "how many",    # asks, does not say: "how much liquid spills"
+               "nearly")),                 # a hedge (its stem would be "near")
+    ("material", (rf"re:\b(?:{_MATERIALS})\b", rf"re:\bglass(?= (?:{_CONTAINERS}|bowl)s?\b)",
+                  "made of", "made from")),
+    # leaving the source as it was poured: the end pose is the pour's
+    ("end same_tilt", (r"re:\b(?:leave|leaves|leaving|left|keep|keeps|keeping|kept) (?:it|the \w+)"
+                       r" (?:tilted|tipped|angled|inclined)(?= *(?:$|[,;.!?]|\b(?:and|then|at the end"
+                       r"|afterwards|after\w*)\b))",)),
+    ("end same_pose", (r"re:\b(?:leave|leaves|leaving|left|keep|keeps|keeping|kept) (?:it|the \w+)"
+                       r" (?:there|in place|where it is|like that|as it is|as is|in that pose)\b",)),
+    # a contrast: "near the rim instead of the middle" excludes the middle
+    ("rather not", ("instead of", "rather than", "as opposed to")),
+    # "not tilted at all" is upright; "not tilted much" is slightly tilted or upright
+    ("upright", (r"re:\b(?:not|without) (?:be |being |any )?(?:tilt|tip|lean)\w*\b(?!(?: (?:it|the \w+))?"
+                 r" (?:much|a lot|far|too|very|so|that|sideways|back|steeply|slightly|halfway|half|a bit"
+                 r"|a little|away|over|towards|at \d|\d)\b)(?: (?:it|the \w+))?(?: at all)?",
+                 r"re:\bno tilt(?: at all)?\b")),
+    (UNCLEAR, (r"re:\b(?:not|without) (?:be |being )?(?:tilt|tip|lean)\w*\b(?: (?:it|the \w+))?"
+               r" (?:too |very |so |that )?(?:much|a lot|far)\b",
+               # pouring has no speed of its own: the moves in and out have
+               r"re:(?<!after )(?<!before )\bpour(?:s|ed|ing)?(?: (?:it|the \w+|really|very|too|more|a bit|quite))*"
+               r" (?:slow(?:ly|er)?|fast(?:er)?|quick(?:ly|er)?|gently|carefully|rapidly)\b",)),
     (UNCLEAR, (r"re:\ba little (?=to |more |further |closer |higher |lower |away )",
                "from above", r"re:\bfrom below\b(?! the (?:destination |bowl )?rim)",
                "from the top", "from the bottom", "overhead")),
@@ -51,11 +82,15 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
                  "back off", "withdraw")),
     ("start", ("begin", "at first", "at the start", "initially")),
     # the containers: a bowl is the destination unless the question says otherwise
-    ("bowl", ("cup", "container", "glass", "jug", "mug", "pot", "vessel", "jar", "beaker",
-              "pitcher", "basin")),
-    ("liquid", ("liquid particles", "water", "fluid", r"re:(?<!\d )\bparticles?\b")),
+    ("bowl", (rf"re:\b(?:{_CONTAINERS})s?\b",)),
+    ("liquid", ("liquid particles", rf"re:\b(?:{_LIQUIDS})\b", "fluid",
+                r"re:(?<!\d )\bparticles?\b")),
+    # where the source is measured from: "offset 10 cm from the centre"
+    ("axis", (r"re:\bfrom (?:the )?(?:destination |bowl |cup )?(?:centre|center|middle|axis)\b",)),
     ("destination", ("target", "receiving")),
     ("rim", ("edge", "lip", "brim")),
+    ("low", (r"re:\b(?:just|right|slightly|barely|a bit|a little) (?:above|over) (?:the )?"
+             r"(?:destination |bowl )?rim\b",)),
     # where the source is
     ("near the rim", ("over the [destination|bowl] rim", "at the [destination|bowl] rim",
                       "from the [destination|bowl] rim",
@@ -65,7 +100,7 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("high", ("high up", "up high")),
     ("low", ("low down", "down low", "just above", "close above")),
     ("below", ("beneath", "underneath", "under")),
-    ("centred", ("centered", "center", "central", "in the middle", "middle")),
+    ("centred", ("centered", "center", "centre", "central", "in the middle", "middle")),
     ("far", ("far off", "distant", "a long way", "from a distance", "at a distance")),
     ("offset sideways", ("offset to the side", "offset to one side")),
     ("side", ("off to one side", "off to the side", "to one side")),
@@ -93,7 +128,7 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("grippy", ("rough",)),
     ("runny", ("thin", "watery")),
     ("sticky", ("viscous", "thick", "syrupy", "gooey")),
-    ("sticky liquid", ("honey", "syrup", "molasses", "treacle")),
+    ("sticky liquid", ("honey", "syrup", "molasses", "treacle", "maple syrup", "golden syrup")),
     ("bouncy", ("springy", "elastic")),
     # last, a bare "up" or "down" (not "high up", "upside down"): a move up or down
     ("raise", ("lift", "rise", "up")),
@@ -107,12 +142,39 @@ FILLERS = frozenset("""
     might must do does did is are was were be been being i we you it they me my our your its
     this that these those there here so as just really quite rather too also still only
     even keep hold turn make let use try get go put set move while during into onto out up down
+    like fully completely totally entirely absolutely pretty fairly somewhat
+    anything something everything outcome hedge
     held robot arm gripper hand
     take takes took taking weigh weighs weighed weighing roughly about around approximately
     almost
     and or but then with without by for from at on in over above of to a an the please say
     tell suppose imagine case ever all both each one way thing
 """.split())
+
+#: Everyday words said back with how they were read: (pattern in the
+#: question's lower case, what is said of it).
+SAID_BACK: tuple[tuple[str, str], ...] = (
+    (rf"\b(?:{_LIQUIDS.replace('|water', '')})\b", "read as an ordinary liquid (the vocabulary says a "
+                                                  "liquid's weight, stickiness and bounce, not its name)"),
+    (r"\b(?:honey|maple syrup|golden syrup|syrup|molasses|treacle)\b", "read as a sticky liquid"),
+    (rf"\b(?:{_MATERIALS})\b|\bglass(?= (?:{_CONTAINERS}|bowl)s?\b)",
+     "ignored: what a bowl is made of is not in the vocabulary (its weight, friction and "
+     "bounce are)"),
+)
+
+#: Phrasings that would be read, for words that could not be placed: (pattern
+#: of the words as written, what to say).
+HINTS: tuple[tuple[str, str], ...] = (
+    (r"\bpour\w*\b.*\b(?:slow|fast|quick|gentl|careful|rapid)",
+     'pouring has no speed of its own: say how fast the source moves in or away ("move in '
+     'slowly", "move away fast")'),
+    (r"\b(?:not|without)\b.*\b(?:tilt|tip|lean)",
+     'not tilted much: say "slightly tilted" or "upright"'),
+    (r"^from above$|^overhead$|^from the top$",
+     'above: how high, or where? say "high above the bowl" or "centred over the bowl"'),
+    (r"^(?:tilt|tilted|tipped)$", 'tilted how far? say "slightly tilted", "tilted halfway", '
+                                  '"steeply tilted" or "upside down"'),
+)
 
 _FUNCTION_WORDS = {"a", "an", "the", "it", "of", "to", "in", "at", "on", "by", "from", "into",
                    "over", "with", "and", "up", "down", "way"}

@@ -123,7 +123,7 @@ def test_each_word_is_read_in_the_stage_it_is_said_in(question, props):
 
 @pytest.mark.parametrize("question,words", [
     ("pour light", '"light"'),                                   # the light what?
-    ("pour fast", '"fast"'),                                     # pouring has no speed
+    ("pour fast", '"pour fast"'),                                # pouring has no speed
     ("pour from the side, tilted", '"tilted"'),                  # tilted how far?
     ("pour from the side with a purple bowl", '"purple"'),       # a word not known
     ("pour a heavy liquid from 45 furlongs", '"45", "furlongs"'),     # no unit known

@@ -66,7 +66,8 @@ def test_no_filler_is_a_word_a_proposition_is_named_by():
     pour_near_rim) would silence that word. Those below are fillers on
     purpose: "to", "in" and "down" say nothing alone, "move" is every
     movement's verb."""
-    from pantarhei.bridge.reasoning.reading import _IGNORED, _stem
+    from pantarhei.bridge.reasoning.reading import _IGNORED
+    from pantarhei.bridge.reasoning.wording import stem as _stem
     from pantarhei.theory.lexicon import load_vocabulary
 
     named = {_stem(w) for n in load_vocabulary().propositions for w in n.split("_")}

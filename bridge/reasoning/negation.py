@@ -1,0 +1,41 @@
+"""Where a negation reaches in a question: "not", "never", "no",
+"without", "don't" ... cover the rest of their clause, up to the next
+"and", "or", "yet"."""
+from __future__ import annotations
+
+from pantarhei.bridge.reasoning.wording import CLAUSE_ENDS, Token, stem
+
+#: Words that end the scope of a negation within a clause.
+_SCOPE_ENDS = CLAUSE_ENDS | {"and", "or", "yet"}
+#: Words that negate what follows them in their clause.
+NEGATIONS = {"not", "never", "no", "without", "nor", "neither", "cannot", "none", "nothing"}
+NEGATION_STEMS = {stem(w) for w in NEGATIONS}
+
+
+def scope_ends(tokens: list[Token]) -> list[int]:
+    """For each position i, where the scope of a negation at i ends: the
+    end of its clause, or the next "and", "or", "yet"... after it."""
+    ends = [len(tokens)] * len(tokens)
+    for j in range(len(tokens) - 2, -1, -1):
+        nxt = tokens[j + 1]
+        ends[j] = j + 1 if nxt.clause != tokens[j].clause or nxt.word in _SCOPE_ENDS else ends[j + 1]
+    return ends
+
+
+def scope(tokens: list[Token], i: int, ends: list[int]) -> set[int]:
+    """The positions a negation at i covers: the rest of its clause, up to
+    the next "and", "or", "yet"..., its negations left out."""
+    return {j for j in range(i + 1, ends[i]) if tokens[j].word not in NEGATION_STEMS}
+
+
+def covered(tokens: list[Token], cues: list[int], ends: list[int]) -> set[int]:
+    """The positions the negations at `cues` cover, together (each position
+    is looked at once: a scope that starts inside another ends with it)."""
+    out: set[int] = set()
+    reach = 0
+    for i in cues:                            # in order
+        for j in range(max(i + 1, reach), ends[i]):
+            if tokens[j].word not in NEGATION_STEMS:
+                out.add(j)
+        reach = max(reach, ends[i])
+    return out

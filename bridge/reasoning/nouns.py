@@ -1,0 +1,112 @@
+"""The bodies a question speaks of: each noun's body (a bowl is the
+destination unless it is a source bowl or what is poured from: "pour
+from a cup", "out of a cup", "a glass as the source"), and the noun that
+value words qualify (the one they stand before, through other value
+words: "a light, slippery bowl"; or else the one before them: "the liquid
+is very light")."""
+from __future__ import annotations
+
+import re
+
+from pantarhei.bridge.reasoning.wording import Token, stem
+
+OBJECTS = ("source", "destination", "liquid")
+OBJECT_STEMS = {stem(o): o for o in OBJECTS}
+BOWL = stem("bowl")
+#: Words that may stand between a body's value word and its noun: "a light, slippery bowl".
+BETWEEN = {"a", "an", "the", "and", "or", "very", "material"}
+ARTICLES = {"a", "an", "the"}
+#: (word, next word) before a bowl that the liquid is poured out of: "pour from a cup",
+#: "into a bowl from a cup" (not "far from the cup": the destination)
+_POURED_FROM = {(stem(a), stem(b))
+                for a, b in (("out", "of"), ("pour", "from"), ("liquid", "from"),
+                             ("bowl", "from"), ("destination", "from"))}
+
+
+def roles(tokens: list[Token], placeable: frozenset[str]) -> dict[int, str]:
+    """The body each noun names: a bowl is the destination, unless it is a
+    source bowl or what is poured from ("pour from a cup", "out of a cup")."""
+    roles: dict[int, str] = {}
+    for i, t in enumerate(tokens):
+        if t.word in OBJECT_STEMS:
+            roles[i] = OBJECT_STEMS[t.word]
+        elif t.word == BOWL:
+            if roles.get(i - 1) in ("source", "destination"):
+                roles[i] = roles[i - 1]
+                continue
+            j = i - 1
+            while j > 0 and (tokens[j].word in BETWEEN or tokens[j].word in placeable):
+                j -= 1
+            before = (tokens[j - 1].word, tokens[j].word) if j > 0 else None
+            k = past_articles(tokens, i + 2, 1)              # "a glass as the source"
+            as_source = (i + 1 < len(tokens) and tokens[i + 1].word == "as" and k < len(tokens)
+                         and OBJECT_STEMS.get(tokens[k].word) == "source")
+            roles[i] = "source" if before in _POURED_FROM or as_source else "destination"
+    return roles
+
+
+class Nouns:
+    """`noun(first, last)`: the body the value words from `first` to `last`
+    qualify: the noun they stand before, through other value words ("a
+    light, slippery bowl"), or else the nearest noun before them in their
+    clause ("the liquid is very light"). Where each search ends is found
+    once for the whole question, so that a long one is read in linear time."""
+
+    def __init__(self, tokens: list[Token], roles: dict[int, str], placeable: frozenset[str]):
+        n = len(tokens)
+        self.roles, self.tokens = roles, tokens
+        # stop[j]: the first position from j on that is a noun or a word
+        # that cannot stand between a value word and its noun
+        self.stop = [n] * (n + 1)
+        for j in range(n - 1, -1, -1):
+            passes = j not in roles and (tokens[j].word in BETWEEN or tokens[j].word in placeable)
+            if tokens[j].word in ("and", "or") and j + 1 < n and tokens[j + 1].word in ARTICLES:
+                passes = False          # "heavy and the destination ...": a new noun's words
+            self.stop[j] = self.stop[j + 1] if passes else j
+        # before[i]: the nearest noun before i in its clause, or None
+        self.before: list[int | None] = []
+        last = None
+        for i, t in enumerate(tokens):
+            if last is not None and tokens[last].clause != t.clause:
+                last = None
+            self.before.append(last)
+            if i in roles:
+                last = i
+
+    def __call__(self, first: int, last: int) -> str | None:
+        at = self.at(first, last)
+        return None if at is None else self.roles[at]
+
+    def at(self, first: int, last: int) -> int | None:
+        """The position of the noun the words from `first` to `last` qualify."""
+        j = self.stop[last + 1]
+        return j if j in self.roles else self.before[first]
+
+    def partners(self, i: int) -> set[str]:
+        """The bodies the noun at `i` names with others: those of the nouns
+        coordinated with it ("the source and the destination"), or both
+        bowls for bowls in the plural ("both cups")."""
+        t = self.tokens
+        if t[i].word == BOWL and (re.search(r"[^s]s$", t[i].raw) or (i > 0 and t[i - 1].word == "both")):
+            return {"source", "destination"}
+        out = set()
+        for step in (-1, 1):            # "X and [the] <i>" and "<i> and [the] Y"
+            j = past_articles(t, i + step, step)
+            if 0 <= j < len(t) and t[j].word == "and":
+                j = past_articles(t, j + step, step)
+                if j in self.roles:
+                    out.add(self.roles[j])
+        return out
+
+    def names_destination(self, i: int) -> bool:
+        """Whether the noun at `i` says the destination in so many words
+        ("the destination", "a destination bowl"), not a bowl by default."""
+        return self.roles.get(i) == "destination" and (
+            self.tokens[i].word == "destination" or (i > 0 and self.tokens[i - 1].word == "destination"))
+
+
+def past_articles(tokens: list[Token], j: int, step: int) -> int:
+    """The first position from j on, going by `step`, that holds no article."""
+    while 0 <= j < len(tokens) and tokens[j].word in ARTICLES:
+        j += step
+    return j

@@ -1,0 +1,131 @@
+"""What a question asks, heard apart from the scene it describes.
+
+A clause that asks about the outcome ("will it spill?", "does the bowl
+slide?", "is it messy", "does anything come out", "is it safe", "does it
+all go in") names the expectations it asks about: the answer puts them
+first, and the clause is taken out of the scene's words, its subject left
+in ("will a light bowl tip over?" still says a light bowl). A clause
+about what the person or the robot does ("do I tip the cup") is no
+outcome. A goal said with the scene ("without spilling", "so that it all
+goes in", "so that the cup does not touch the bowl") is what the person
+wants: an expectation that should hold (or, rarely, fail), for the answer
+to say whether the theory expects it and to point to `plan` for how.
+
+`hear(text)` takes normalised text (wording.normalised) and gives the
+expectations asked, the goals as literals ("no_spill", "neg(no_spill)"),
+the phrases heard and the text left for the scene.
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from functools import lru_cache
+
+_STILL = ("destination_still_approach", "destination_still_retreat", "destination_still_settle")
+_ALL_IN = ("liquid_enters_destination",)
+
+#: (verb phrase, the expectations it speaks of, whether it happening makes them fail)
+OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
+    (r"overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*) over(?: the (?:rim|edge|top|side)s?)?"
+     r"|flood\w*", ("liquid_remains_in_destination", "no_spill"), True),
+    (r"spill\w*|splash\w*|splatter\w*|slosh\w*|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
+     r"|make (?:a|any) mess|makes (?:a|any) mess|(?:go|goes|going|went|get|gets) everywhere",
+     ("no_spill",), True),
+    (r"(?:stay|stays|remain|remains|keep|keeps|be|is) upright", ("destination_upright",), False),
+    (r"tip(?:s|ped|ping)?(?: over)?|topple\w*|fall(?:s|ing)? over|fell over|knock\w* over"
+     r"|turn\w* over|flip\w*", ("destination_upright",), True),
+    (r"(?:stay|stays|remain|remains|keep|keeps|be|is) (?:still|put|in place|steady)", _STILL, False),
+    (r"slid\w*|slip(?:s|ped|ping)?\b|shift\w*|budg\w*|wobbl\w*|skid\w*"
+     r"|mov(?:e|es|ed|ing)\b(?! (?:in|away|closer|to|out|back|up|down|over|into|off|towards?)\b)",
+     _STILL, True),
+    (r"bump\w*|hit(?:s|ting)?|touch\w*|collid\w*|crash\w*|knock\w*|clip(?:s|ped)?|strike\w*"
+     r"|(?:is|be|stay|stays) clear", ("source_clear",), True),
+    (r"(?:come|comes|coming|came|get|gets|pour|pours|flow|flows|run|runs|drain\w*) out"
+     r"|empt(?:y|ies|ied)(?: out)?", ("liquid_leaves_source",), False),
+    (r"(?:stay|stays|remain|remains|stop|stops|end up|ends up) in(?:side)?(?: the \w+)?",
+     ("liquid_remains_in_destination",), False),
+    (r"(?:go|goes|going|went|get|gets|land|lands|end up|ends up|make it|makes it|fall|falls|"
+     r"reach\w*|arrive\w*) (?:in|into|inside)\b", _ALL_IN, False),
+    (r"miss(?:es|ed|ing)?", _ALL_IN, True),
+    (r"safe(?:ly)?", ("no_spill", "destination_upright", "source_clear"), False),
+)
+#: Words that ask: an auxiliary before its subject ("will it spill"), or a
+#: quantifier that needs none ("anything come out", "how much spills").
+_AUX = r"will|would|does|do|did|could|can|might|may|is|are|was|were|should|shall"
+#: Who acts: a clause with one of these as its subject says what is done, not what happens.
+_ACTORS = {"i", "we", "you", "robot", "arm", "gripper", "he", "she", "they"}
+#: Where a clause of the outcome ends: what follows is the scene's again.
+_END = r"(?=[,;.!?()]|\b(?:if|when|whenever|while|after|before|as|because|with|from|at|using|and|but|or|then|so)\b|$)"
+
+
+@dataclass(frozen=True)
+class Heard:
+    asked: tuple[str, ...]      # the expectations asked about, in the order said
+    goals: tuple[str, ...]      # literals wanted: "no_spill", or "neg(no_spill)"
+    phrases: tuple[str, ...]    # the phrases heard, as written (normalised)
+    scene: str                  # the text left for the scene
+
+
+@lru_cache(maxsize=None)
+def _patterns() -> tuple[re.Pattern, re.Pattern, re.Pattern]:
+    verbs = "|".join(f"(?P<v{k}>{v})" for k, (v, _, _) in enumerate(OUTCOMES))
+    subject = r"(?P<subject>(?: (?!(?:if|when|while|not)\b)[a-z]+){0,4}?)"
+    asked = re.compile(
+        rf"\b(?:(?P<aux>{_AUX})(?P<neg> not)?{subject}|(?P<quant>how much(?: \w+)?|anything|"
+        rf"something|everything|nothing|any (?:liquid|water)|all of it|it all))"
+        rf" (?:all |any |ever |even |still |not )?(?:{verbs})\b(?P<rest>[^,;.!?()]*?){_END}")
+    nominal = re.compile(r"\b(?:(?:is|will) there (?:be )?)?(?:any|a|no|some) (?P<v1>spill(?:s|age)?"
+                         r"|splash(?:es)?|mess|drips?)\b")
+    goal = re.compile(
+        rf"\b(?:without (?P<gneg>any |a |making (?:a |any )?)?|so(?: that| as)?(?P<gsub>(?: (?!not\b)"
+        rf"[a-z]+){{0,4}}?)(?P<gnot> not| never)? (?:(?:to|will|does|do|would|can|could|all|"
+        rf"any) )?)(?:{verbs})\b(?P<rest>[^,;.!?()]*?){_END}")
+    return asked, nominal, goal
+
+
+def _which(m: re.Match) -> tuple[tuple[str, ...], bool]:
+    k = next(k for k in range(len(OUTCOMES)) if m.groupdict().get(f"v{k}"))
+    return OUTCOMES[k][1], OUTCOMES[k][2]
+
+
+def hear(text: str) -> Heard:
+    """The expectations `text` asks about and the goals it says (see the
+    module's docstring)."""
+    asked: list[str] = []
+    goals: list[str] = []
+    phrases: list[str] = []
+    pattern, nominal, goal = _patterns()
+
+    def take(m: re.Match, keep: str = "") -> str:
+        phrases.append(m.group(0).strip())
+        return f" {keep} outcome "
+
+    def as_goal(m: re.Match) -> str:
+        subject = (m.group("gsub") or "").split()
+        if subject and subject[0] in _ACTORS:
+            return m.group(0)
+        names, bad = _which(m)
+        negated = m.group(0).startswith("without") or bool(m.group("gnot"))
+        holds = bad == negated or (not bad and not negated)
+        holds = (not bad) != negated
+        goals.extend(n if holds else f"neg({n})" for n in names if n not in
+                     {g.removeprefix("neg(").rstrip(")") for g in goals})
+        return take(m, " ".join(subject))
+
+    def as_asked(m: re.Match) -> str:
+        subject = (m.group("subject") or "").split()
+        if subject and subject[0] in _ACTORS:
+            return m.group(0)
+        names, _ = _which(m)
+        asked.extend(n for n in names if n not in asked)
+        kept = " ".join(subject) if m.group("aux") else ""
+        return take(m, kept)
+
+    def as_nominal(m: re.Match) -> str:
+        asked.extend(n for n in ("no_spill",) if n not in asked)
+        return take(m)
+
+    text = goal.sub(as_goal, text)
+    text = pattern.sub(as_asked, text)
+    text = nominal.sub(as_nominal, text)
+    return Heard(tuple(asked), tuple(goals), tuple(phrases), text)

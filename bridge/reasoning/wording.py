@@ -1,0 +1,95 @@
+"""A question's words as reading.py reads them: lower case, stemmed, each
+with its clause and as it was written, the everyday phrases of words.py
+rewritten into the vocabulary's words.
+
+A number keeps its sign: "-10 degrees", "\u221210 degrees" (a Unicode minus)
+and "minus 10 degrees" are one token "-10"; a hyphen between two numbers
+("10-20 cm") is a range ("10 to 20"), never a sign. A speed ("0.5 m/s",
+"2 km/h") becomes the number and the unit "speed", which quantities.py
+refuses naming what would be read.
+"""
+from __future__ import annotations
+
+import re
+from bisect import bisect_left
+from dataclasses import dataclass
+
+from pantarhei.bridge.reasoning.words import rewrites
+
+#: Words that end a clause (besides punctuation): negation stops there.
+CLAUSE_ENDS = {"but", "then", "while", "whereas", "instead", "rather", "except", "so"}
+#: A number as a question writes it ("45", "1.5", "-10"): one token.
+NUMBER = r"-?\d+(?:\.\d+)?"
+#: The minus signs a number may be written with: ASCII, U+2212 and the en dash.
+_MINUS = "-\u2212\u2013"
+#: The stage words: an "and" before one starts a new clause ("tilt it and end upright").
+STAGE_WORDS = ("start", "pour", "end", "finally", "final", "approach", "retreat", "then")
+
+
+def stem(w: str) -> str:
+    for suffix in ("ing", "ly", "ed", "es", "s"):
+        if len(w) > len(suffix) + 2 and w.endswith(suffix):
+            w = w[: -len(suffix)]
+            break
+    return w[:-1] if len(w) > 3 and w.endswith("e") else w
+
+
+@dataclass(frozen=True)
+class Token:
+    word: str        # stemmed, lower case (a proposition's name as written)
+    raw: str         # as written
+    clause: int
+
+
+def normalised(text: str) -> str:
+    """`text` in lower case with its apostrophes, negative contractions,
+    signs, degrees and speeds written one way."""
+    text = text.lower().replace("\u2019", "'")
+    text = re.sub(rf"(\d)\s*[{_MINUS}]\s*(?=\d)", r"\1 to ", text)          # 10-20 cm: a range
+    text = re.sub(rf"(?<![\w.])[{_MINUS}]\s?(?=\d)", "-", text)             # -10, \u221210
+    text = re.sub(r"\bminus\s+(?=\d)", "-", text)
+    text = re.sub(r"\bcan't\b|\bcannot\b", "can not", text)
+    text = re.sub(r"\bwon't\b", "will not", text)
+    text = re.sub(r"n't\b|\b(do|does|did|is|are|was|were)nt\b", r"\1 not", text)
+    text = re.sub(r"'s?\b", "", text)                 # the destination's rim
+    text = re.sub(r"(\d)\s*\u00b0", r"\1 degrees ", text)  # 45\u00b0
+    text = re.sub(r"(\d)\s*(?:(?:k?m|cm|mm)\s*/\s*(?:s|sec|h|hr)|(?:k?m|cm|mm|metres?|meters?|"
+                  r"centimet(?:re|er)s?|inch(?:es)?|feet|foot) per (?:second|sec|hour|minute)|"
+                  r"mph|kph|km/h)\b", r"\1 speed", text)
+    return re.sub(r"(\d)([a-z])", r"\1 \2", text)       # 30cm
+
+
+def tokens(text: str) -> list[Token]:
+    """The words of `text` in the vocabulary's words, stemmed, each with its clause."""
+    pairs = [(w, w) for w in re.findall(rf"{NUMBER}|[a-z0-9_]+|[,;.!?:()]", normalised(text))]
+    joined = " ".join(w for w, _ in pairs)
+    for pattern, words in rewrites():
+        if pattern.search(joined):
+            pairs = _rewrite(pairs, pattern, words)
+            joined = " ".join(w for w, _ in pairs)
+    out, clause = [], 0
+    for k, (word, raw) in enumerate(pairs):
+        if (not re.match(r"[-a-z0-9_]", word) or word in CLAUSE_ENDS
+                or (word == "and" and k + 1 < len(pairs) and pairs[k + 1][0] in STAGE_WORDS)):
+            clause += 1
+            if not re.match(r"[-a-z0-9_]", word):
+                continue
+        out.append(Token(word if "_" in word or word[0] == "-" else stem(word), raw, clause))
+    return out
+
+
+def _rewrite(pairs: list[tuple[str, str]], pattern: re.Pattern, words: tuple[str, ...]):
+    """(word, as written) pairs with each match of `pattern` read as `words`."""
+    starts, at = [], 0
+    for w, _ in pairs:
+        starts.append(at)
+        at += len(w) + 1
+    out, last = [], 0
+    for m in pattern.finditer(" ".join(w for w, _ in pairs)):
+        i, j = bisect_left(starts, m.start()), bisect_left(starts, m.end())
+        if i < last or i == len(starts) or starts[i] != m.start():
+            continue
+        raw = " ".join(r for _, r in pairs[i:j])
+        out += pairs[last:i] + [(w, raw) for w in words]
+        last = j
+    return out + pairs[last:]
