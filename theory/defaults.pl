@@ -72,7 +72,7 @@ option(general, flag, none, true,
   "--no-general: write Algorithm 1's rules only, without the general rules learned from every pour (discover and paper; learn writes one layer)").
 option(store, path, none, default(store),
   "SQLite file of simulations and exploration state").
-option(out, path, none, default(theory),
+option(out, path, none, default(explore_out),
   "the learned theory; the trace (.trace.jsonl) and its plot (.trace.png) go beside it").
 option(resume, flag, none, false,
   "continue the saved exploration with the same settings").
@@ -172,4 +172,8 @@ default(theory_bytes_at_most, 33554432).
 % Where the learned theory is written (relative to theory/) and the store
 % of simulations (relative to the working directory).
 default(theory, "learned/pouring.pl").
+% Where an exploration writes its theory when not told (relative to the
+% working directory): never over the shipped theory, which `pantarhei demo`
+% writes by name.
+default(explore_out, "explore.pl").
 default(store, "pantarhei.sqlite").

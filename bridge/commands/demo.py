@@ -65,13 +65,29 @@ def register(sub: argparse._SubParsersAction) -> None:
     options.add_oracle(p)
     options.add_table_option(p, option("pours"))     # as explore's
     options.add_seed(p)
-    options.add_theory_out(p, extra="; the DFL version goes beside it as .dfl")
+    p.add_argument("--out", default=None,
+                   help=f"the learned theory (default {options._shown(options.DEFAULT_THEORY)}, "
+                        f"the shipped theory, which the default oracle, pours and seed write "
+                        f"again; with others {option('out').default}); the DFL version goes "
+                        f"beside it as .dfl")
     options.add_store(p)
     p.add_argument("--verify", type=options.count(0, options.VERIFY_MAX), default=10,
                    help="pours simulated to check the plan (default 10; 0: none)")
     options.add_workers(p)
     p.add_argument("--no-progress", action="store_true", help="no progress bar")
     p.set_defaults(run=demo, pin=True)
+
+
+def default_out(args: argparse.Namespace) -> Path:
+    """Where the demo writes its theory when not told: the shipped theory
+    for the run that writes it again (the default oracle, pours and seed),
+    else where an exploration writes by default, so that a smaller or
+    synthetic run never replaces the shipped theory."""
+    from pantarhei.theory import defaults
+
+    shipped = (args.oracle == defaults()["oracle"] and args.pours == option("pours").default
+               and args.seed == int(defaults()["seed"]))
+    return options.DEFAULT_THEORY if shipped else Path(str(option("out").default))
 
 
 def _heading(text: str) -> None:
@@ -87,7 +103,7 @@ def demo(args: argparse.Namespace) -> int:
     from pantarhei.bridge.reasoning.answers import InProcess
     from pantarhei.bridge.exploration.explore_call import ExploreOptions, explore, stop_text
 
-    out = Path(args.out)
+    out = Path(args.out) if args.out is not None else default_out(args)
     require_writable_file(out, "--out")
     require_distinct_outputs(Path(args.store), out, dfl=True)
     started = time.monotonic()

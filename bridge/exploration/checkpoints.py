@@ -57,6 +57,21 @@ def run_key(course: Mapping[str, Any]) -> str:
     return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 
+def other_settings(saved: Mapping[str, Any], wanted: Mapping[str, Any], store: Path) -> str:
+    """The line refusing --resume when the store's saved exploration was run
+    with other settings than these: it names both (the settings that
+    differ), so that resuming never starts afresh over --out unasked."""
+    wanted = json.loads(json.dumps(wanted, sort_keys=True))
+
+    def shown(course: Mapping[str, Any], keys: list[str]) -> str:
+        return ", ".join(f"{k}={json.dumps(course.get(k))}" for k in keys)
+
+    keys = sorted(k for k in set(saved) | set(wanted) if saved.get(k) != wanted.get(k))
+    return (f"--resume: the exploration saved in {store} was run with {shown(saved, keys)}, "
+            f"not {shown(wanted, keys)}: give its settings to resume it, or leave out "
+            f"--resume to start afresh")
+
+
 @dataclass
 class Checkpoint:
     """The latest saved state of a run: the loop's state and the trace up
@@ -143,6 +158,16 @@ class ExplorationStore:
         (state,) = self._db.execute("SELECT state FROM exploration_checkpoints "
                                     "WHERE run = ? AND iteration = ?", (run, last)).fetchone()
         return Checkpoint(last, state, self.trace(run, last), finished)
+
+    def latest_course(self) -> dict | None:
+        """The course of the run saved last (None when no run is saved)."""
+        row = self._db.execute("SELECT settings FROM exploration_runs WHERE iterations > 0 "
+                               "ORDER BY updated DESC LIMIT 1").fetchone()
+        try:
+            course = json.loads(row[0]) if row else None
+        except (TypeError, ValueError):
+            return None
+        return course if isinstance(course, dict) else None
 
     def _transaction(self) -> "_Transaction":
         return _Transaction(self._db)

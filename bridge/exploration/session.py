@@ -61,7 +61,7 @@ from pantarhei.bridge.exploration.qualify import QUALIFY, consequent
 from pantarhei.bridge.exploration.significance import Tested, permutation_test, shuffle_seed
 from pantarhei.bridge.exploration.simulation import (batch_pours, drawn_pours, open_simulator,
                                                      oracle_identity, trace_draws)
-from pantarhei.bridge.exploration.checkpoints import ExplorationStore, run_key
+from pantarhei.bridge.exploration.checkpoints import ExplorationStore, other_settings, run_key
 from pantarhei.bridge.exploration.steepest import significant_planes, steepest_plane
 from pantarhei.bridge.exploration.weights import weights
 from pantarhei.bridge.exploration.trace import (append_trace, plot_path, plot_trace,
@@ -252,6 +252,10 @@ class Host:
         saved, draws = None, []
         if truthy(request.get("resume")):
             saved = store.latest(run)
+            other = store.latest_course() if saved is None else None
+            if other is not None and run_key(other) != run:
+                store.close()
+                raise UserError(other_settings(other, decided_by, store_path))
             if saved is None:
                 note("no saved exploration with these settings: starting afresh")
             else:

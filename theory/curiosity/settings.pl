@@ -205,14 +205,12 @@ option_error(Key, Format, Args) :-
     format(string(M), "~w: ~s", [Key, Why]),
     throw(exploration_error(M)).
 
-%   default_out(-File): the default learned theory, relative to theory/
-%   (the folder above this one).
+%   default_out(-File): where an exploration writes its theory when not
+%   told (default(explore_out, F), relative to the working directory):
+%   never the shipped theory.
 default_out(File) :-
-    module_property(curiosity_settings, file(Here)),
-    file_directory_name(Here, CuriosityDir),
-    file_directory_name(CuriosityDir, Dir),
-    default(theory, Relative),
-    directory_file_path(Dir, Relative, File).
+    default(explore_out, Relative),
+    absolute_file_name(Relative, File).
 
 %   check_initial(+Props, -Set): Props, a list of propositions, sorted, is
 %   a valid antecedent (the first reason it is not is the error).
