@@ -94,16 +94,19 @@ def _batch() -> int:
     return int(defaults()["learn_batch"])
 
 
-def curiosity(seed: int, budget: int, oracle: str, store: Path, run) -> Chosen:
+def curiosity(seed: int, budget: int, oracle: str, store: Path, run,
+              settings: dict | None = None) -> Chosen:
     """The learning curiosity's pours and, at each prefix, the antecedents
-    explored by then (from its trace)."""
+    explored by then (from its trace); `settings` are options of explore
+    other than their defaults."""
     from pantarhei.bridge.exploration.explore_call import ExploreOptions, explore
     from pantarhei.bridge.exploration.trace import trace_path
 
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "learned.pl"
         result = explore(ExploreOptions(oracle=oracle, curiosity="learn", pours=budget, seed=seed,
-                                 out=out, store=store, progress=False))
+                                        out=out, store=store, progress=False,
+                                        **(settings or {})))
         trace = [json.loads(line) for line in trace_path(out).read_text().splitlines()]
     P, S = result["pours"]
     batch = _batch()
@@ -181,11 +184,12 @@ def map_elites_pours(seed: int, budget: int, run) -> Chosen:
 def measure(oracle: str, seeds: Sequence[int], budgets: Sequence[int], store: Path,
             methods: Sequence[str] = METHODS,
             done: Callable[[list[dict]], None] | None = None,
-            known: Sequence[dict] = ()) -> list[dict]:
+            known: Sequence[dict] = (), settings: dict | None = None) -> list[dict]:
     """One row per method, seed and budget: the measures of its theory on
     the questions, and the behaviours its pours show; the rows of `known`
     are kept and not measured again; `done` is given the rows so far after
-    each seed."""
+    each seed; `settings` are the curiosity's options other than their
+    defaults."""
     from pantarhei.bridge.evaluation.measures import (contrast_keys, defaults_only,
                                                       question_key, question_shares, verdicts)
     from pantarhei.bridge.evaluation.question_sets import (Keyed, interaction_questions, keyed,
@@ -217,7 +221,7 @@ def measure(oracle: str, seeds: Sequence[int], budgets: Sequence[int], store: Pa
                 if not wanted:
                     continue
                 if method == "curiosity":
-                    chosen = curiosity(seed, top, oracle, store, run)
+                    chosen = curiosity(seed, top, oracle, store, run, settings)
                 else:
                     make = {"random": random_bodies, "designed": designed,
                             "uncertainty": uncertainty, "map_elites": map_elites_pours}[method]
@@ -373,6 +377,8 @@ def main(argv: Sequence[str] = ()) -> None:
     p.add_argument("--fresh", action="store_true",
                    help="measure this run's rows again (default: keep the rows of "
                         "knowledge-ORACLE.json; the others are kept either way)")
+    p.add_argument("--explore", default="", metavar="NAME=VALUE,...",
+                   help="the curiosity's options other than their defaults, e.g. doubt=0,reach=0")
     args = p.parse_args(list(argv))
     seeds, budgets = _numbers(args.seeds), sorted(_numbers(args.budgets))
     methods = [m for m in args.methods.split(",") if m]
@@ -399,7 +405,12 @@ def main(argv: Sequence[str] = ()) -> None:
                       encoding="utf-8")
         plot(shown, png)
 
-    rows = measure(args.oracle, seeds, budgets, Path(args.store), methods, write, known)
+    try:
+        settings = {k.strip(): float(v) if "." in v else int(v)
+                    for k, v in (x.split("=") for x in args.explore.split(",") if x.strip())}
+    except ValueError:
+        raise SystemExit(f"--explore: not NAME=VALUE,...: {args.explore!r}") from None
+    rows = measure(args.oracle, seeds, budgets, Path(args.store), methods, write, known, settings)
     write(rows)
     print(table(this_run(rows), args.oracle, seeds))
     print(f"written: {md}, {png}, {data}")

@@ -42,6 +42,12 @@ option(queue, count, range(1, 100000), 64,
   "learn: the candidates A_new keeps, the most valuable first").
 option(uncertainty, permille, range(0, none), 1000,
   "learn: the weight of a candidate's uncertain likelihoods beside how far its answer would move").
+option(doubt, permille, range(0, none), 1000,
+  "learn: the weight of the model's doubt (entropy, in bits) about the pours of a candidate's next batch, less as its own pours pile up").
+option(newness, permille, range(0, none), 1000,
+  "learn: the weight of the chance that a pour of a candidate's next batch shows a behaviour no two pours have shown").
+option(reach, count, range(0, 100000), 16,
+  "learn: random valid antecedents of 2 to `body` propositions drawn as candidates each step, beyond the children of what was explored").
 option(significance, permille, range(0, 1000), 50,
   "discover: the significance level of the permutation test of the planes").
 option(permutations, count, range(1, 1000000), 199,
@@ -133,6 +139,9 @@ course(pours, learn).
 course(body, learn).
 course(queue, learn).
 course(uncertainty, learn).
+course(doubt, learn).
+course(newness, learn).
+course(reach, learn).
 
 % The learned theory's setting/2 facts say how it was learned: the options
 % of the run's course/2 above and these, which decide what the theory says

@@ -365,18 +365,20 @@ class Host:
     def teach(self, request: dict) -> dict:
         """The value of each candidate for the learning curiosity
         (bridge/exploration/teaching.py), given every pour so far and the
-        explored antecedents: `uncertainty`, `batch` and `seed` as the
-        request says."""
-        from pantarhei.bridge.exploration.teaching import fitted_on, model, teaching
+        explored antecedents: the weights, `batch`, `seed` and the
+        `iteration` to explore at as the request says."""
+        from pantarhei.bridge.exploration.teaching import Weights, fitted_on, model, teaching
 
         s = self.need_session()
         seed = int(request["seed"])
         key = (fitted_on(int(s.valid.sum())), seed)
         if s.teacher is None or s.teacher[0] != key:
             s.teacher = (key, model(s.params, s.scores, seed))
+        weights = Weights(float(request["uncertainty"]), float(request["doubt"]),
+                          float(request["newness"]))
         found = teaching(s.params, s.scores, [e["antecedent"] for e in request["antecedents"]],
-                         request["candidates"], float(request["uncertainty"]),
-                         int(request["batch"]), seed, s.teacher[1])
+                         request["candidates"], weights, int(request["batch"]), seed,
+                         int(request["iteration"]), s.teacher[1])
         return {"value": found.value}
 
     def qualify(self, request: dict) -> dict:

@@ -39,6 +39,27 @@ another batch by this term alone.
 asked(B) is how often B is asked, as the learner weighs the bodies it
 answers (generalize.Settings: the empty antecedent most, a proposition
 alone 1, a pair less).
+
+Beside what the theory would learn about B itself, a batch of B is worth
+what its very pours would teach the model of every pour, and what they may
+show that no pour has shown. The batch B would get if explored next is
+known (the pours `batch_pours` samples for B with the next iteration's
+seed), so for its pours x the model gives Q_e(x), and
+
+    doubt(B) = mean_x sum_e h(Q_e(x)) * drop(n_B) / drop(0)
+
+where h is the binary entropy in bits: where the model of the pours cannot
+tell what happens (as uncertainty sampling chooses pours), less as B's own
+pours pile up (what stays uncertain after many pours is noise, not
+something to learn: the curiosity leaves it), and
+
+    newness(B) = mean_x (1 - sum_{v seen} prod_e P(verdict_e(x) = v_e))
+
+the chance that a pour of the batch shows a nine-verdict behaviour no two
+pours so far have shown (the paper's criterion: behaviours not seen
+before). The value adds `doubt` times the first and `newness` times the
+second, neither weighed by how often B is asked: what they teach the model
+serves every question.
 """
 from __future__ import annotations
 
@@ -82,6 +103,19 @@ class Teaching:
     value: list[float]
     departure: list[float]
     uncertainty: list[float]
+    doubt: list[float]
+    newness: list[float]
+
+
+@dataclass(frozen=True)
+class Weights:
+    """The weights of a value's parts beside how far B's answer would move:
+    its uncertain likelihoods, the model's doubt on its next batch, and the
+    new behaviours that batch may show (the options `uncertainty`, `doubt`
+    and `newness` of theory/defaults.pl)."""
+    uncertainty: float = 1.0
+    doubt: float = 0.0
+    newness: float = 0.0
 
 
 def model(P: np.ndarray, S: np.ndarray, seed: int):
@@ -110,12 +144,12 @@ def _valid(P: np.ndarray, S: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
-             candidates: Sequence[Sequence[str]], weight: float, batch: int,
-             seed: int, meaning=None) -> Teaching:
-    """The value of exploring each candidate next with a batch of `batch`
-    pours, given the pours so far (P, S; failed ones are left out) and the
-    explored antecedents; `meaning` is model(P, S, seed), when the caller
-    keeps it."""
+             candidates: Sequence[Sequence[str]], weights: Weights, batch: int,
+             seed: int, iteration: int = 1, meaning=None) -> Teaching:
+    """The value of exploring each candidate next, at `iteration`, with a
+    batch of `batch` pours, given the pours so far (P, S; failed ones are
+    left out) and the explored antecedents; `meaning` is model(P, S,
+    seed), when the caller keeps it."""
     from threadpoolctl import threadpool_limits
 
     from pantarhei.bridge.learning.generalize import Settings
@@ -126,7 +160,7 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
     cands = [tuple(sorted(str(p) for p in c)) for c in candidates]
     done = {tuple(sorted(str(p) for p in e)) for e in explored}
     if not cands:
-        return Teaching([], [], [])
+        return Teaching([], [], [], [], [])
     parents = {c: [tuple(q for q in c if q != p) for p in c] for c in cands}
     bodies = list(dict.fromkeys(cands + [a for c in cands for a in parents[c]]))
     index = {b: i for i, b in enumerate(bodies)}
@@ -137,8 +171,13 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
         M = np.full((len(bodies), len(load_vocabulary().expectations)), 0.5)
     learner = Settings()
     asked = {0: learner.default_weight, 1: 1.0}
+    if weights.doubt or weights.newness:
+        with threadpool_limits(1):
+            doubts, news = batch_doubt(meaning, S, cands, batch, seed, iteration)
+    else:
+        doubts = news = np.zeros(len(cands))
     value, dep, unc = [], [], []
-    for c in cands:
+    for c, h, new in zip(cands, doubts, news):
         m = M[index[c]]
         explored = c in done
         if explored or not c:
@@ -151,8 +190,39 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
         drop = 1 / np.sqrt(n + 1) - 1 / np.sqrt(n + batch + 1)
         uncertainty = (float(np.sqrt(q * (1 - q)).sum() * drop)
                        if explored or len(c) <= 1 else 0.0)
+        doubt = float(h) * drop / (1 - 1 / np.sqrt(batch + 1))
         dep.append(round(departure, 6))
         unc.append(round(uncertainty, 6))
         value.append(round(asked.get(len(c), learner.pair_weight)
-                           * (departure + weight * uncertainty), 6))
-    return Teaching(value, dep, unc)
+                           * (departure + weights.uncertainty * uncertainty)
+                           + weights.doubt * doubt + weights.newness * float(new), 6))
+    return Teaching(value, dep, unc, [round(float(d), 6) for d in doubts],
+                    [round(float(x), 6) for x in news])
+
+
+def batch_doubt(meaning, S: np.ndarray, cands: Sequence[tuple[str, ...]], batch: int,
+                seed: int, iteration: int) -> tuple[np.ndarray, np.ndarray]:
+    """Per candidate, over the pours of the batch it would get at
+    `iteration`: the model's mean entropy in bits, summed over the
+    expectations, and the mean chance that a pour shows a behaviour that no
+    two pours of S have shown (nine verdicts); both 0 without a model."""
+    from pantarhei.bridge.evaluation.measures import verdicts
+    from pantarhei.bridge.exploration.simulation import batch_pours
+    from pantarhei.oracle.generative import normalise
+
+    if meaning is None or not cands:
+        return np.zeros(len(cands)), np.zeros(len(cands))
+    X = normalise(np.vstack([batch_pours(c, batch, seed, iteration) for c in cands]))
+    Q = np.clip(meaning.shares(X), 1e-9, 1 - 1e-9)
+    H = -(Q * np.log2(Q) + (1 - Q) * np.log2(1 - Q)).sum(axis=1)
+    rows, counts = np.unique(verdicts(S), axis=0, return_counts=True) if len(S) else ([], [])
+    seen = np.asarray([r for r, k in zip(rows, counts) if k >= 2], dtype=bool)
+    if len(seen):
+        # P(pour shows v) for every seen v: prod_e of Q_e or 1 - Q_e
+        logs = np.log(Q) @ seen.T.astype(float) + np.log(1 - Q) @ (~seen).T.astype(float)
+        new = 1 - np.exp(logs).sum(axis=1)
+    else:
+        new = np.ones(len(Q))
+    per = np.repeat(np.arange(len(cands)), batch)
+    return (np.bincount(per, H, len(cands)) / batch,
+            np.clip(np.bincount(per, new, len(cands)) / batch, 0.0, 1.0))

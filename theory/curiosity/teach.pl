@@ -1,6 +1,7 @@
 :- module(curiosity_teach,
           [ teach_queue/7,            % +Explored, +Id, +Props, +Rest, +Settings, -Added, -Queue
-            children/4                % +Props, +Most, +Exclude, -New
+            children/4,               % +Props, +Most, +Exclude, -New
+            reach/5                   % +Seed, +N, +Most, +Exclude, -Bodies
           ]).
 /** <module> The learning curiosity
 
@@ -12,11 +13,18 @@ antecedent makes candidates of itself with one proposition more
 a question with the same words means, so its pours are those a question
 draws, and the rule written for it is one a question can use.
 
+Beyond the children, each step draws `reach` random valid antecedents of
+2 to `body` propositions (reach/5, seeded by the run's seed and the
+iteration): pairs whose propositions no explored antecedent has met, where
+an interaction hides as well as anywhere.
+
 After each batch every candidate, the new ones, those already in A_new
 and every explored antecedent (for another batch, again(Id)), is valued by
 what its pours would teach the theory (exploration_teach,
 bridge/exploration/teaching.py): how far its answer would move from the
-one the theory gives it now, and how uncertain its likelihoods still are.
+one the theory gives it now, how uncertain its likelihoods still are, how
+unsure the model of every pour is about the very pours of its next batch,
+and the chance that they show a behaviour no pour has shown yet.
 A_new keeps the `queue` most valuable, the most valuable first; the
 candidates a step values are so at most `queue`, the new children and the
 explored antecedents.
@@ -25,6 +33,7 @@ explored antecedents.
 :- use_module(library(apply)).
 :- use_module(library(lists)).
 :- use_module(library(pairs)).
+:- use_module(library(random)).
 :- use_module('../vocabulary').
 :- use_module('../validity').
 :- use_module(bridge).
@@ -49,7 +58,7 @@ priors_due(_, _) :- fail.
 
 after_batch(step(I1, Id, Cand, Explored, Rest, _, _, Sim), Settings, ANew, Trace) :-
     Cand = cand(Props, _, _),
-    teach_queue(Explored, Id, Props, Rest, Settings, Added, ANew),
+    teach_queue(Explored, Id, Props, Rest, Settings.put(iteration, I1), Added, ANew),
     learn_trace(I1-Id, Cand, Sim, Added, ANew, Trace).
 
 second_layer(Explored, _, Settings, Layer) :-
@@ -83,17 +92,24 @@ learn_trace(I1-Id, cand(Props, Parent, Via), Sim, Added, ANew, Trace) :-
 
 %!  teach_queue(+Explored, +Id, +Props, +Rest, +Settings:dict, -Added:list, -Queue:list) is det.
 %
-%   The learning step after the antecedent Id (Props) was explored: the
-%   candidates are its children (children/4; not explored, not in Rest),
-%   Rest (A_new without what was just explored) and each explored
-%   antecedent for another batch (again(Id)); each is valued
+%   The learning step after the antecedent Id (Props) was explored at
+%   iteration Settings.iteration: the candidates are its children
+%   (children/4; not explored, not in Rest), `reach` random antecedents
+%   (reach/5, seeded by the run's seed and the iteration), Rest (A_new
+%   without what was just explored) and each explored antecedent for
+%   another batch (again(Id)); each is valued, for the next iteration,
 %   (exploration_teach) and Queue holds the `queue` most valuable with a
 %   value above 0, the most valuable first (ties in the order above).
 %   Added are Queue's new children, in its order.
 teach_queue(Explored, Id, Props, Rest, Settings, Added, Queue) :-
     exclusions(Explored, Rest, Exclude),
     children(Props, Settings.body, Exclude, Kids),
-    findall(cand(P, Id, near), member(P, Kids), New),
+    Seed is Settings.seed * 1000003 + Settings.iteration,
+    append([Props|Kids], Exclude, Known),
+    reach(Seed, Settings.reach, Settings.body, Known, Far),
+    findall(cand(P, Id, near), member(P, Kids), Near),
+    findall(cand(P, Id, reach), member(P, Far), Reached),
+    append(Near, Reached, New),
     exclude(again_cand, Rest, Waiting),
     findall(cand(P, A, again(A)), member(ant(A, P, _, _), Explored), Again),
     append([New, Waiting, Again], Pool),
@@ -101,9 +117,13 @@ teach_queue(Explored, Id, Props, Rest, Settings, Added, Queue) :-
     ->  Added = [], Queue = []
     ;   maplist(entry, Explored, Entries),
         findall(P, member(cand(P, _, _), Pool), Cands),
+        Next is Settings.iteration + 1,
         call_bridge(exploration_teach, _{antecedents:Entries, candidates:Cands,
                                          seed:Settings.seed, batch:Settings.batch,
-                                         uncertainty:Settings.uncertainty}, Reply),
+                                         iteration:Next,
+                                         uncertainty:Settings.uncertainty,
+                                         doubt:Settings.doubt, newness:Settings.newness},
+                    Reply),
         findall(Key-C, ( nth1(K, Pool, C), nth1(K, Reply.value, V), V > 0, Key is -V ),
                 Keyed),
         keysort(Keyed, Sorted),
@@ -114,6 +134,33 @@ teach_queue(Explored, Id, Props, Rest, Settings, Added, Queue) :-
         append(Queue, _, All),
         include(in_list(New), Queue, Added)
     ).
+
+%!  reach(+Seed:integer, +N:integer, +Most:integer, +Exclude:list, -Bodies:list) is det.
+%
+%   Bodies are N random valid antecedents of 2 to Most propositions (none
+%   when Most is below 2), none in Exclude, each once, in the order drawn:
+%   each a random part of a uniformly random valid antecedent of the whole
+%   vocabulary (random_antecedents/3), its size uniform. The same Seed
+%   gives the same Bodies.
+reach(_, _, Most, _, []) :-
+    Most < 2, !.
+reach(Seed, N, Most, Exclude, Bodies) :-
+    random_antecedents(Seed, N, Wholes),
+    setup_call_cleanup(
+        ( random_property(state(Saved)), set_random(seed(Seed)) ),
+        maplist(random_part(Most), Wholes, Parts),
+        set_random(state(Saved))),
+    exclude(in_list(Exclude), Parts, Parts1),
+    list_to_set(Parts1, Bodies).
+
+random_part(Most, Whole, Part) :-
+    length(Whole, L),
+    Top is min(Most, L),
+    random_between(2, Top, K),
+    random_permutation(Whole, Shuffled),
+    length(Part0, K),
+    append(Part0, _, Shuffled),
+    sort(Part0, Part).
 
 %   again_cand(+Cand): Cand is another batch of an explored antecedent.
 again_cand(cand(_, _, again(_))).

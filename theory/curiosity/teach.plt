@@ -29,14 +29,14 @@ test(queue_most_valuable_first_bounded,
      [ setup(assertz((bridge:exploration_teach(Req, Reply) :- fake_teach(Req, Reply)))),
        cleanup(retractall(bridge:exploration_teach(_, _))) ]) :-
     Explored = [ant(a1, [], none, initial)],
-    teach_queue(Explored, a1, [], [], _{body:1, queue:2, seed:1, batch:4, uncertainty:1.0}, Added, Queue),
+    teach_queue(Explored, a1, [], [], _{body:1, queue:2, seed:1, batch:4, uncertainty:1.0, doubt:0.0, newness:0.0, reach:4, iteration:1}, Added, Queue),
     % the two most valuable children, the most valuable first
     Queue == [cand([pour_to_side], a1, near), cand([light_liquid], a1, near)],
     Added == Queue,
     % A_new as it was is valued again, and the explored antecedent is a
     % candidate for another batch; a value of 0 is never queued
     Old = cand([pour_to_side], a1, near),
-    teach_queue(Explored, a1, [], [Old], _{body:1, queue:10, seed:1, batch:4, uncertainty:1.0}, Added1, Queue1),
+    teach_queue(Explored, a1, [], [Old], _{body:1, queue:10, seed:1, batch:4, uncertainty:1.0, doubt:0.0, newness:0.0, reach:4, iteration:1}, Added1, Queue1),
     Queue1 = [Old, cand([light_liquid], a1, near), cand([], a1, again(a1))],
     Added1 == [cand([light_liquid], a1, near)].
 
@@ -44,12 +44,28 @@ test(queue_most_valuable_first_bounded,
 %   side teaches most, a light liquid next, another batch of the ordinary
 %   pour a little, anything else nothing.
 fake_teach(Req, _{value:Values}) :-
-    _{seed:1, batch:4, uncertainty:1.0} :< Req,    % the settings come with the request
+    _{seed:1, batch:4, uncertainty:1.0, doubt:0.0, newness:0.0, iteration:2} :< Req,
+                                        % the settings and the next iteration come with the request
     findall(V, ( member(C, Req.candidates), fake_value(C, V) ), Values).
 
 fake_value([pour_to_side], 3) :- !.
 fake_value([light_liquid], 2) :- !.
 fake_value([], 1) :- !.
 fake_value(_, 0).
+
+test(reach_draws_valid_seeded_bodies_of_two_to_most) :-
+    reach(7, 12, 3, [], Bodies),
+    Bodies \== [],
+    forall(member(B, Bodies),
+           ( length(B, L), between(2, 3, L), valid_antecedent(B), msort(B, B) )),
+    reach(7, 12, 3, [], Again),
+    Again == Bodies,
+    reach(8, 12, 3, [], Other),
+    Other \== Bodies,
+    % what is excluded is never drawn, and a body of one proposition draws nothing
+    Bodies = [First|_],
+    reach(7, 12, 3, [First], Without),
+    \+ memberchk(First, Without),
+    reach(7, 12, 1, [], []).
 
 :- end_tests(curiosity_teach).

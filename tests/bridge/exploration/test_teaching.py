@@ -6,9 +6,14 @@ from __future__ import annotations
 
 import numpy as np
 
-from pantarhei.bridge.exploration.teaching import fitted_on, model, teaching
+from pantarhei.bridge.exploration.teaching import Weights, fitted_on, model, teaching
 from pantarhei.oracle.generative import sample, to_dict
 from pantarhei.oracle.synthetic import scores
+
+
+#: How far a candidate's answers would move and how uncertain its
+#: likelihoods are, nothing for its batch's doubt and new behaviours.
+ONLY_ANSWERS = Weights(1.0, 0.0, 0.0)
 
 
 def pours(body, n, seed):
@@ -30,7 +35,7 @@ def test_the_model_is_fitted_again_as_the_pours_grow_by_a_fifth():
 
 def test_a_proposition_that_changes_what_happens_teaches_more():
     P, S = pooled(pours([], 40, 1), pours(["pour_to_side"], 8, 2), pours(["bouncy_source"], 8, 3))
-    found = teaching(P, S, [()], [("pour_to_side",), ("bouncy_source",)], 1.0, 4, 1)
+    found = teaching(P, S, [()], [("pour_to_side",), ("bouncy_source",)], ONLY_ANSWERS, 4, 1)
     side, bouncy = found.departure
     # pouring from the side spills: its answers move from the ordinary pour's
     assert side > 1.0 and bouncy < 0.3
@@ -40,19 +45,20 @@ def test_a_proposition_that_changes_what_happens_teaches_more():
 def test_an_explored_antecedent_is_valued_by_its_uncertainty_alone():
     P, S = pooled(pours([], 40, 1), pours(["pour_to_side"], 8, 2))
     found = teaching(P, S, [(), ("pour_to_side",)], [("pour_to_side",), ("light_liquid",)],
-                     1.0, 4, 1)
+                     ONLY_ANSWERS, 4, 1)
     assert found.departure[0] == 0.0
     # an antecedent without pours of its own is the least certain
     assert found.uncertainty[1] > found.uncertainty[0] > 0
     # and without the weight of uncertainty, another batch of it teaches nothing
-    assert teaching(P, S, [(), ("pour_to_side",)], [("pour_to_side",)], 0.0, 4, 1).value == [0.0]
+    assert teaching(P, S, [(), ("pour_to_side",)], [("pour_to_side",)], Weights(0.0), 4, 1).value == [0.0]
 
 
 def test_the_same_pours_give_the_same_values():
     P, S = pooled(pours([], 24, 5), pours(["light_liquid"], 8, 6))
     cands = [("light_liquid",), ("pour_far_away",), ("light_liquid", "pour_high")]
-    a = teaching(P, S, [(), ("light_liquid",)], cands, 1.0, 4, 7)
-    b = teaching(P, S, [(), ("light_liquid",)], cands, 1.0, 4, 7, model(P, S, 7))
+    w = Weights(1.0, 1.0, 1.0)
+    a = teaching(P, S, [(), ("light_liquid",)], cands, w, 4, 7, 3)
+    b = teaching(P, S, [(), ("light_liquid",)], cands, w, 4, 7, 3, model(P, S, 7))
     assert a == b
 
 
@@ -62,5 +68,36 @@ def test_a_pair_teaches_only_where_its_propositions_interact():
     pair never explored is no candidate for its uncertainty."""
     P, S = pooled(pours([], 40, 1), pours(["pour_to_side"], 8, 2), pours(["bouncy_source"], 8, 3))
     found = teaching(P, S, [(), ("pour_to_side",), ("bouncy_source",)],
-                     [("bouncy_source", "pour_to_side")], 1.0, 4, 1)
+                     [("bouncy_source", "pour_to_side")], ONLY_ANSWERS, 4, 1)
     assert found.departure[0] < 0.3 and found.uncertainty == [0.0]
+
+
+def test_doubt_is_where_the_model_cannot_tell_and_fades_with_own_pours():
+    """The synthetic oracle spills past the rim: pours near the rim sit on
+    the boundary, where the model of the pours is unsure; the ordinary
+    pour, with many pours of its own, is known."""
+    P, S = pooled(pours([], 40, 1), pours(["pour_to_side"], 8, 2), pours(["pour_near_rim"], 8, 4))
+    found = teaching(P, S, [()], [(), ("pour_near_rim",), ("bouncy_source",)],
+                     Weights(0.0, 1.0, 0.0), 4, 1, 5)
+    ordinary, rim, bouncy = found.doubt
+    assert rim > ordinary and rim > bouncy
+    # with the doubt weighed alone, the value is the doubt less the share
+    # of the candidate's own pours already known
+    assert found.value[1] > found.value[0]
+    # another 40 pours of the rim: less left to learn there
+    P2, S2 = pooled((P, S), pours(["pour_near_rim"], 40, 9))
+    again = teaching(P2, S2, [(), ("pour_near_rim",)], [("pour_near_rim",)],
+                     Weights(0.0, 1.0, 0.0), 4, 1, 5)
+    assert again.value[0] < found.value[1]
+
+
+def test_newness_is_the_chance_of_a_behaviour_no_two_pours_showed():
+    """A model that knows pouring far away misses the bowl, and only
+    ordinary pours seen: a batch from far away would show a new behaviour;
+    another batch of the ordinary pour would not."""
+    P, S = pours([], 40, 1)
+    knows = model(*pooled((P, S), pours(["pour_far_away"], 24, 3)), 1)
+    found = teaching(P, S, [()], [(), ("pour_far_away",)], Weights(0.0, 0.0, 1.0), 4, 1, 2,
+                     knows)
+    assert found.newness[0] < 0.2 < found.newness[1]
+    assert found.value[1] > found.value[0]
