@@ -40,6 +40,11 @@ def answer(asker, props: list[str], why: str | None = None, as_json: bool = Fals
             print(words.replace("; ", "\n  "))
         return 0
     outcomes = asker.answers(scene)
+    reading = getattr(props, "reading", None)      # a question in words: reading.Scene
+    if reading is not None:                        # what it asks, or wants, first
+        first = [*reading.asked, *(g.removeprefix("neg(").rstrip(")") for g in reading.goals)]
+        outcomes = sorted(outcomes, key=lambda o: first.index(o.expectation)
+                          if o.expectation in first else len(first))
     observed = check(scene) if check is not None else None
     if as_json:
         from pantarhei.bridge.reasoning.checking import contradicts
@@ -53,7 +58,9 @@ def answer(asker, props: list[str], why: str | None = None, as_json: bool = Fals
                 out["check"] = {**seen.as_json(), "contradicts": contradicts(o.value, seen)}
             return out
 
-        print_json({"understood": props, "theory": asker.source,
+        heard = {k: list(getattr(reading, k)) for k in ("asked", "goals", "notes", "ignored")
+                 if reading is not None and getattr(reading, k)}
+        print_json({"understood": props, **heard, "theory": asker.source,
                     **({"check": check.settings()} if observed is not None else {}),
                     "outcomes": {o.expectation: one(o) for o in outcomes}})
         return 0
@@ -61,6 +68,8 @@ def answer(asker, props: list[str], why: str | None = None, as_json: bool = Fals
 
     vocab = load_vocabulary()
     _print_scene(props, glosses=True)
+    if reading is not None:
+        _print_heard(reading)
     print(f"theory: {asker.source}")
     glosses = {e.name: e.gloss for e in vocab.expectations}
     said: dict[str, str] = {}     # a why-not already printed, with its expectation as E
@@ -128,6 +137,22 @@ def _print_scene(props: list[str], glosses: bool) -> None:
     if glosses:
         for p in props:
             print(f"  {p}: {vocab.propositions[p].gloss}")
+
+
+def _print_heard(reading) -> None:
+    """What else the question said: its everyday words as read, the words
+    read as nothing, the expectations it asks about and its goals, with
+    how `plan` would pour for them."""
+    for note in reading.notes:
+        print(f"  {note}")
+    if reading.ignored:
+        print(f"  ignored: {', '.join(repr(w) for w in reading.ignored)}")
+    if reading.asked:
+        print(f"asked: {', '.join(reading.asked)} (answered first)")
+    if reading.goals:
+        given = f" --given {','.join(reading.scene)}" if reading.scene else ""
+        print(f"wanted: {', '.join(reading.goals)} (answered first; how to pour for it: "
+              f"pantarhei plan --goal {','.join(reading.goals)}{given})")
 
 
 class Checker:

@@ -54,8 +54,13 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
 _AUX = r"will|would|does|do|did|could|can|might|may|is|are|was|were|should|shall"
 #: Who acts: a clause with one of these as its subject says what is done, not what happens.
 _ACTORS = {"i", "we", "you", "robot", "arm", "gripper", "he", "she", "they"}
-#: Where a clause of the outcome ends: what follows is the scene's again.
-_END = r"(?=[,;.!?()]|\b(?:if|when|whenever|while|after|before|as|because|with|from|at|using|and|but|or|then|so)\b|$)"
+#: The words that may follow an outcome's verb and are heard with it ("drip on the
+#: table", "spill out of the cup", "go into the bowl"): the scene's words stay the scene's.
+_REST = ("on|onto|over|out|of|in|into|inside|outside|the|a|an|table|floor|counter|worktop|top|"
+         "ground|everywhere|anywhere|at|all|any|anything|it|its|liquid|water|bowl|cup|glass|"
+         "destination|source|target|container|rim|edge|sides?|much|too|even|ever|really|very|"
+         "up|down|off|away|again|then")
+_END = rf"(?P<rest>(?: (?:{_REST})\b)*)"
 
 
 @dataclass(frozen=True)
@@ -67,20 +72,24 @@ class Heard:
 
 
 @lru_cache(maxsize=None)
-def _patterns() -> tuple[re.Pattern, re.Pattern, re.Pattern]:
+def _patterns() -> tuple[re.Pattern, re.Pattern, re.Pattern, re.Pattern]:
     verbs = "|".join(f"(?P<v{k}>{v})" for k, (v, _, _) in enumerate(OUTCOMES))
     subject = r"(?P<subject>(?: (?!(?:if|when|while|not)\b)[a-z]+){0,4}?)"
     asked = re.compile(
         rf"\b(?:(?P<aux>{_AUX})(?P<neg> not)?{subject}|(?P<quant>how much(?: \w+)?|anything|"
         rf"something|everything|nothing|any (?:liquid|water)|all of it|it all))"
-        rf" (?:all |any |ever |even |still |not )?(?:{verbs})\b(?P<rest>[^,;.!?()]*?){_END}")
+        rf" (?:all |any |ever |even |still |not )?(?:{verbs})\b{_END}")
     nominal = re.compile(r"\b(?:(?:is|will) there (?:be )?)?(?:any|a|no|some) (?P<v1>spill(?:s|age)?"
                          r"|splash(?:es)?|mess|drips?)\b")
     goal = re.compile(
         rf"\b(?:without (?P<gneg>any |a |making (?:a |any )?)?|so(?: that| as)?(?P<gsub>(?: (?!not\b)"
         rf"[a-z]+){{0,4}}?)(?P<gnot> not| never)? (?:(?:to|will|does|do|would|can|could|all|"
-        rf"any) )?)(?:{verbs})\b(?P<rest>[^,;.!?()]*?){_END}")
-    return asked, nominal, goal
+        rf"any) )?)(?:{verbs})\b{_END}")
+    # what is asked, or wanted, next to it: "will it spill or overflow?", "without spilling or
+    # tipping the bowl over"
+    more = re.compile(rf"\boutcome (?:,|or|and|nor)? ?(?:(?:will|does|do|would|even) )?(?:it |the \w+ )?"
+                      rf"(?:{verbs})\b{_END}")
+    return asked, nominal, goal, more
 
 
 def _which(m: re.Match) -> tuple[tuple[str, ...], bool]:
@@ -94,20 +103,22 @@ def hear(text: str) -> Heard:
     asked: list[str] = []
     goals: list[str] = []
     phrases: list[str] = []
-    pattern, nominal, goal = _patterns()
+    negations: list[bool] = []          # whether each goal said was negated ("without ...")
+    pattern, nominal, goal, more = _patterns()
 
     def take(m: re.Match, keep: str = "") -> str:
         phrases.append(m.group(0).strip())
-        return f" {keep} outcome "
+        return f" {keep} outcome " if keep else " outcome "
 
     def as_goal(m: re.Match) -> str:
         subject = (m.group("gsub") or "").split()
         if subject and subject[0] in _ACTORS:
             return m.group(0)
         names, bad = _which(m)
-        negated = m.group(0).startswith("without") or bool(m.group("gnot"))
-        holds = bad == negated or (not bad and not negated)
+        negated = (m.group(0).startswith("without") or bool(m.group("gnot"))
+                   or any(w in ("nothing", "none", "no", "never") for w in subject))
         holds = (not bad) != negated
+        negations.append(negated)
         goals.extend(n if holds else f"neg({n})" for n in names if n not in
                      {g.removeprefix("neg(").rstrip(")") for g in goals})
         return take(m, " ".join(subject))
@@ -125,7 +136,34 @@ def hear(text: str) -> Heard:
         asked.extend(n for n in ("no_spill",) if n not in asked)
         return take(m)
 
-    text = goal.sub(as_goal, text)
-    text = pattern.sub(as_asked, text)
+    def as_more(m: re.Match) -> str:
+        names, bad = _which(m)
+        if was_goal:                  # wanted as the one before it: "without spilling or tipping"
+            holds = (not bad) != negations[-1]
+            goals.extend(n if holds else f"neg({n})" for n in names if n not in goals)
+        else:
+            asked.extend(n for n in names if n not in asked)
+        return take(m)
+
+    was_goal = True
+    text = _spaced(goal.sub(as_goal, text))
+    if goals:
+        text = _repeat(more, as_more, text)
+    was_goal = False
+    text = _repeat(more, as_more, _spaced(pattern.sub(as_asked, text)))
     text = nominal.sub(as_nominal, text)
     return Heard(tuple(asked), tuple(goals), tuple(phrases), text)
+
+
+def _repeat(pattern: re.Pattern, replace, text: str) -> str:
+    """`text` with `pattern` replaced until it no longer matches (each
+    replacement takes words away, so this ends)."""
+    while True:
+        new = _spaced(pattern.sub(replace, text, count=1))
+        if new == text:
+            return new
+        text = new
+
+
+def _spaced(text: str) -> str:
+    return re.sub(r" {2,}", " ", text)

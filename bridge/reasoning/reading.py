@@ -123,10 +123,20 @@ def _lexicon() -> _Lexicon:
                     frozenset(asking), {w: tuple(g) for w, g in saying.items()})
 
 
-def understand(question: str) -> list[str]:
+class Scene(list):
+    """The propositions of a question, sorted, as a list; `reading` holds
+    what else it said (what it asks, its goals, the words said back or
+    ignored), for `ask` to print beside the answers."""
+
+    def __init__(self, reading: Reading) -> None:
+        super().__init__(reading.scene)
+        self.reading = reading
+
+
+def understand(question: str) -> Scene:
     """The propositions the question names, sorted (none: the ordinary
-    pour); UserError as read_question's."""
-    return list(read_question(question).scene)
+    pour), with its whole reading; UserError as read_question's."""
+    return Scene(read_question(question))
 
 
 def read_question(question: str) -> Reading:
@@ -192,8 +202,11 @@ def read_question(question: str) -> Reading:
     ignored = [t.raw for i, t in enumerate(tokens) if i not in taken and t.word not in structural
                and t.word not in _SAME]
     heard = [t.raw for i, t in enumerate(tokens) if t.raw not in ignored]
-    return Reading(tuple(sorted(set(out))), outcome.asked, outcome.goals, _notes(text),
-                   tuple(dict.fromkeys(ignored)), tuple([*heard, *outcome.phrases]))
+    notes = _notes(text)
+    noted = {n.split(":")[0] for n in notes}
+    return Reading(tuple(sorted(set(out))), outcome.asked, outcome.goals, notes,
+                   tuple(dict.fromkeys(w for w in ignored if w not in noted)),
+                   tuple([*heard, *outcome.phrases]))
 
 
 def _same_at_the_end(tokens: list[Token], scene: list[str], vocab) -> list[str]:

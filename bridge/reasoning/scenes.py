@@ -25,13 +25,19 @@ class Violation:
 
 
 def known(props: Iterable[str]) -> list[str]:
-    """The names as a sorted set; UserError naming the closest known ones
-    for the first unknown name."""
+    """The names as a sorted set (a question's reading kept with them:
+    reading.Scene); UserError naming the closest known ones for the first
+    unknown name."""
+    reading = getattr(props, "reading", None)
     props = sorted(set(props))
     try:
         load_vocabulary().check_names(props)
     except UnknownProposition as e:
         raise UserError(str(e)) from None
+    if reading is not None:
+        from pantarhei.bridge.reasoning.reading import Scene
+
+        return Scene(reading)
     return props
 
 
