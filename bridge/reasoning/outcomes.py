@@ -39,7 +39,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|mov(?:e|es|ed|ing)\b(?! (?:in|away|closer|to|out|back|up|down|over|into|off|towards?)\b)",
      _STILL, True),
     (r"bump\w*|hit(?:s|ting)?|touch\w*|collid\w*|crash\w*|knock\w*|clip(?:s|ped)?|strike\w*"
-     r"|(?:is|be|stay|stays) clear", ("source_clear",), True),
+     , ("source_clear",), True),
+    (r"(?:stay|stays|keep|keeps|be|is)? ?clear(?: of)?", ("source_clear",), False),
     (r"(?:come|comes|coming|came|get|gets|pour|pours|flow|flows|run|runs|drain\w*) out"
      r"|empt(?:y|ies|ied)(?: out)?", ("liquid_leaves_source",), False),
     (r"(?:stay|stays|remain|remains|stop|stops|end up|ends up) in(?:side)?(?: the \w+)?",

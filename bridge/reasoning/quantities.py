@@ -173,8 +173,10 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
         near = [k for k in range(max(0, i - REACH), min(len(tokens), i + 2 + REACH))
                 if k not in (i, i + 1) and tokens[k].clause == tokens[i].clause
                 and tokens[k].word in cue_of and k not in dropped]
-        beside = [k for k in (_past(tokens, i + 2, 1, _BESIDE), _past(tokens, i - 1, -1, _BESIDE))
-                  if k in near]
+        sides = [_past(tokens, i + 2, 1, _BESIDE), _past(tokens, i - 1, -1, _BESIDE)]
+        if i > 0 and tokens[i - 1].word == "of":            # "a height of 20 cm"
+            sides.reverse()
+        beside = [k for k in sides if k in near]
         cues = {cue_of[tokens[k].word] for k in near}        # "tilt" picks a pitch, as a cue
         choosing = {cue_of[tokens[beside[0]].word]} | (cues & {"below", "offset"}) if beside else cues
         param, by = parameter(q, POSE[stage[i]], MOVE[stage[i]], choosing, noun(i, i + 1))

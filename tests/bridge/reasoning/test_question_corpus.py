@@ -6,10 +6,13 @@ vague, said of a body it cannot qualify, or beyond the vocabulary). Grow
 it with every misreading found."""
 from __future__ import annotations
 
+import re
+
 import pytest
 
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.reasoning.reading import understand
+from pantarhei.bridge.reasoning.reading import read_question, understand
+from pantarhei.bridge.reasoning.words import FILLERS
 
 #: question -> the propositions it means, sorted
 READ = {
@@ -179,7 +182,6 @@ REFUSED = [
     'end with the cup tilted back',
     'move in slow then pour fast',
     'not a heavy liquid but a light one',
-    'pour -5 cm below the rim',
     'pour 10 to 20 cm above',
     'pour a 1 kg liquid',
     'pour a lot',
@@ -224,3 +226,131 @@ def test_refused_in_one_line(question):
     with pytest.raises(UserError) as e:
         understand(question)
     assert "\n" not in str(e.value)
+
+
+#: Questions as people type them, by kind (issue wordings): question -> (scene,
+#: the expectations asked, the goals wanted)
+HEARD = {
+    # outcome clauses: which expectations are asked, never blocking the scene
+    'does it splash?': ([], ['no_spill'], []),
+    'will it drip on the table?': ([], ['no_spill'], []),
+    'is it messy if I pour really high': (['pour_high'], ['no_spill'], []),
+    'will the bowl slide?': ([], ['destination_still_approach', 'destination_still_retreat',
+                                  'destination_still_settle'], []),
+    'will it overflow?': ([], ['liquid_remains_in_destination', 'no_spill'], []),
+    'anything come out?': ([], ['liquid_leaves_source'], []),
+    'does anything come out if I pour upside down?': (['pour_upside_down'],
+                                                       ['liquid_leaves_source'], []),
+    'is it safe to pour honey from high up?': (['pour_high', 'sticky_liquid'],
+                                               ['no_spill', 'destination_upright', 'source_clear'], []),
+    'does it all go in?': ([], ['liquid_enters_destination'], []),
+    'will a light bowl tip over?': (['light_destination'], ['destination_upright'], []),
+    'will it make a mess if I pour from the side?': (['pour_to_side'], ['no_spill'], []),
+    'does the cup hit the bowl when I pour low?': (['pour_low'], ['source_clear'], []),
+    # goals said with the scene: what is wanted
+    'pour without spilling': ([], [], ['no_spill']),
+    'pour from the side so that it all goes in': (['pour_to_side'], [], ['liquid_enters_destination']),
+    'pour so that the cup does not touch the bowl': ([], [], ['source_clear']),
+    'pour from high up without spilling or tipping the bowl over': (
+        ['pour_high'], [], ['no_spill', 'destination_upright']),
+    # a clause about what is done is no outcome
+    'does the source move in fast?': (['fast_approach'], [], []),
+}
+
+#: Wordings of the scene (issue wordings), read as meant
+READ_TOO = {
+    # signs kept: ASCII and Unicode minus
+    'tilted at -10 degrees': ['pour_tilted_back'],
+    'tilted at \u221210 degrees': ['pour_tilted_back'],
+    'pour -3 cm above the rim': ['pour_below_rim'],
+    'pour \u22123 cm above the rim': ['pour_below_rim'],
+    'pour minus 2 cm above the rim': ['pour_below_rim'],
+    'start tilted at -20 degrees': ['start_tilted_back'],
+    # nothing dropped: each stage keeps its words
+    'tilt the source halfway and end with the source tilted halfway': ['end_half_tilted', 'pour_half_tilted'],
+    'tilt the jug halfway and leave it there': ['end_half_tilted', 'pour_half_tilted'],
+    'pour from the side, steeply tilted, and leave it tilted': ['end_steeply_tilted', 'pour_steeply_tilted', 'pour_to_side'],
+    # everyday words
+    'pour milk into a light plastic cup': ['light_destination'],
+    'pour oil from high up': ['pour_high'],
+    'a liquid like honey': ['sticky_liquid'],
+    'pour into a heavy ceramic bowl': ['heavy_destination'],
+    'a light glass bowl': ['light_destination'],
+    'a completely full jug': ['very_much_liquid'],
+    'tilt it barely': ['pour_slightly_tilted'],
+    # negation, contrast, reference
+    'not tilted at all': ['pour_upright'],
+    "don't tilt the cup at all": ['pour_upright'],
+    'pour without tilting': ['pour_upright'],
+    'pour near the edge instead of the middle': ['pour_near_rim'],
+    'pour from the side rather than far away': ['pour_to_side'],
+    'pour just above the rim': ['pour_low'],
+    'offset 10 cm from the centre': ['pour_offset_sideways'],
+    "pour offset 10 cm from the bowl's centre": ['pour_offset_sideways'],
+    # numbers bound to the words next to them
+    'pour from the side at 10 cm height': ['pour_mid_height', 'pour_to_side'],
+    'pour at a height of 20 cm from the side': ['pour_high', 'pour_to_side'],
+}
+
+#: Refused in one line, naming what would be read: question -> words the refusal holds
+REFUSED_SAYING = {
+    # where nothing can be negative
+    'a destination bowl of -500 g': 'cannot be negative',
+    'take -2 seconds to move in': 'cannot be negative',
+    'with -50 particles': 'cannot be negative',
+    'with \u221250 particles': 'cannot be negative',
+    # below the rim, but deeper than any proposition's range: the ranges named
+    'pour -5 cm above the bowl': 'which no proposition holds (pour_below_rim -40 to 0 mm',
+    'pour -5 cm below the rim': 'not both a minus and below',
+    # a quantity no proposition takes, named
+    'move in at 0.5 m/s': 'is a speed',
+    'pour 100 grams of water': 'counts the liquid in particles',
+    'pour 200 ml of milk': 'counts the liquid in particles',
+    # near a proposition but not it: the phrasing that would be read
+    'pour slowly': 'move in slowly',
+    'pour fast': 'move in slowly',
+    'pour it gently': 'move in slowly',
+    'without tilting it much': '"slightly tilted" or "upright"',
+    'leave it tilted': 'tilted how far?',
+    'pour from the side, tilted': 'tilted how far?',
+}
+
+
+@pytest.mark.parametrize("question", sorted(HEARD))
+def test_the_question_is_heard_as_well_as_the_scene(question):
+    r = read_question(question)
+    scene, asked, goals = HEARD[question]
+    assert (list(r.scene), sorted(r.asked), list(r.goals)) == (scene, sorted(asked), goals)
+
+
+@pytest.mark.parametrize("question", sorted(READ_TOO))
+def test_issue_wordings_read_as_meant(question):
+    assert understand(question) == READ_TOO[question]
+
+
+@pytest.mark.parametrize("question", sorted(REFUSED_SAYING))
+def test_refused_naming_what_would_be_read(question):
+    with pytest.raises(UserError) as e:
+        understand(question)
+    assert REFUSED_SAYING[question] in str(e.value) and "\n" not in str(e.value)
+
+
+def test_everyday_words_are_said_back():
+    r = read_question("pour milk into a light plastic cup")
+    assert any(n.startswith("milk: read as an ordinary liquid") for n in r.notes)
+    assert any(n.startswith("plastic: ignored") for n in r.notes)
+
+
+@pytest.mark.parametrize("question", sorted({*READ, *READ_TOO, *HEARD}))
+def test_no_word_is_dropped_silently(question):
+    """Every word of a question read is read, heard as what it asks, said
+    back, shown as ignored, or a word of a question's frame ("what", "if",
+    "the"): none is lost without a word."""
+    r = read_question(question)
+    accounted = {w for phrase in (*r.heard, *r.ignored) for w in re.findall(r"[a-z]+", phrase.lower())}
+    accounted |= {n.split(":")[0] for n in r.notes}
+    frame = set(FILLERS) | {"s", "minus"}          # what's; minus: read as its number's sign
+    said = re.sub(r"n't\b", " not", question.lower().replace("\u2019", "'"))
+    lost = [w for w in re.findall(r"[a-z]+", said)
+            if w not in accounted and w not in frame]
+    assert lost == []
