@@ -17,8 +17,9 @@ SWIPL_MISSING = ("SWI-Prolog is not installed (or pyswip cannot find libswipl): 
 
 
 #: The longest error line printed (characters): a message quoting a long
-#: input is cut in its middle, so that a 5 MB question is not echoed whole.
-LINE_AT_MOST = 400
+#: input is cut in its middle, so that a 5 MB question is not echoed whole
+#: (room for two paths of the longest a system takes).
+LINE_AT_MOST = 8192
 
 #: The longest quotation of an input in a message (`quoted`).
 QUOTE_AT_MOST = 80

@@ -33,7 +33,8 @@ from typing import TYPE_CHECKING, Any, Iterable, Optional
 
 from pantarhei.oracle import store_recovery
 from pantarhei.oracle.result_keys import canonical
-from pantarhei.oracle.store_file import StoreError, check, damaged, open_file, read_only, reason
+from pantarhei.oracle.store_file import (StoreError, check, damaged, open_file, read_only, reason,
+                                         require_ours)
 from pantarhei.oracle.store_schema import COLUMNS, SCHEMA, has_table, migrate, missing_columns
 from pantarhei.theory import defaults
 
@@ -74,6 +75,36 @@ def _nan_json(x: Any) -> Any:
     return x
 
 
+def _result(row: tuple, n: int) -> Optional[Result]:
+    """A row of simulation_results as a Result, or None when it is not one
+    a simulation wrote: an ok row's scores must be `n` finite numbers in
+    [0, 1] (a row edited to 1e999, -7 or 5, or with another number of
+    scores, is refused), its record an object; a failed row's scores are
+    NaN whatever it holds."""
+    import numpy as np
+
+    k, status, scores, record, error, attempts = row
+    try:
+        rec = json.loads(record) if record else None
+        values = json.loads(scores) if status == "ok" else None
+    except (TypeError, ValueError, RecursionError):
+        return None
+    if status == "failed":
+        return Result(k, status, np.full(n, np.nan), rec if isinstance(rec, dict) else None,
+                      error if isinstance(error, str) else None, _attempts(attempts))
+    if status != "ok" or not isinstance(rec, (dict, type(None))) or not isinstance(values, list) \
+            or len(values) != n:
+        return None
+    if not all(type(v) in (int, float) and math.isfinite(v) and 0.0 <= v <= 1.0 for v in values):
+        return None
+    return Result(k, status, np.array(values, dtype=float), rec,
+                  error if isinstance(error, str) else None, _attempts(attempts))
+
+
+def _attempts(v: Any) -> int:
+    return v if type(v) is int and 0 <= v < 2**31 else 1
+
+
 class Store:
     """Results of simulations in one SQLite file (or in memory for ':memory:').
 
@@ -88,6 +119,8 @@ class Store:
         self.unsaved: list[tuple] = []
         #: Why writing failed mid-run (None while it works).
         self.failure: Optional[str] = None
+        #: Rows read that were not results (`_result`): left out, so simulated again.
+        self.refused = 0
         if Path(self.path).is_dir():
             raise StoreError(f"{self.path}: a directory, not a store file (give a file with --store)")
         try:
@@ -139,6 +172,7 @@ class Store:
                 continue
             try:
                 check(db, self.path)
+                require_ours(db, self.path)
                 if not has_table(db):
                     raise StoreError(f"the store {self.path} cannot be written "
                                      f"({self.read_only_why}) and holds no simulations yet: give "
@@ -175,12 +209,13 @@ class Store:
                 rows = self.db.execute(
                     "SELECT key, status, scores, record, error, attempts FROM simulation_results "
                     f"WHERE key IN ({','.join('?' * len(chunk))})", chunk).fetchall()
-                for k, status, scores, record, error, attempts in rows:
-                    s = np.array([np.nan if v is None else v for v in json.loads(scores)], dtype=float) \
-                        if scores else np.full(len(load_vocabulary().expectations), np.nan)
-                    found[k] = Result(k, status, s, json.loads(record) if record else None, error,
-                                      attempts)
-        except (sqlite3.DatabaseError, ValueError) as e:
+                for row in rows:
+                    result = _result(row, len(load_vocabulary().expectations))
+                    if result is None:      # not a result: simulated again, never counted
+                        self.refused += 1
+                    else:
+                        found[result.key] = result
+        except sqlite3.DatabaseError as e:
             raise StoreError(f"cannot read the store {self.path} ({reason(e)})") from None
         return found
 

@@ -12,13 +12,37 @@ class StoreError(RuntimeError):
     what happened and what to do."""
 
 
+#: The prefixes of the project's tables (the simulations' and the
+#: explorations'): a database that holds tables, none of them these, is
+#: another program's and is never written to.
+OWN_TABLES = ("simulation_", "exploration_")
+
+
+def require_ours(db: sqlite3.Connection, path: str) -> None:
+    """StoreError when the database holds tables and none of the project's
+    (`OWN_TABLES`): an unrelated SQLite file given as --store is refused
+    before anything is added to it (SQLite's own error for a file that is
+    not a database)."""
+    names = [n for (n,) in db.execute("SELECT name FROM sqlite_master WHERE type = 'table'")
+             if not str(n).startswith("sqlite_")]
+    if names and not any(str(n).startswith(OWN_TABLES) for n in names):
+        shown = ", ".join(str(n)[:40] for n in names[:3]) + (", ..." if len(names) > 3 else "")
+        raise StoreError(f"the store {path} is another program's database (tables {shown}; "
+                         f"none of pantarhei's): give another --store")
+
+
 def open_file(path: str | Path, timeout: float = 60.0) -> sqlite3.Connection:
     """`connect` without its StoreError: SQLite's or the OS's own error if
-    the file cannot be opened."""
+    the file cannot be opened (StoreError for another program's database)."""
     path = str(path)
     if path != ":memory:":
         Path(path).parent.mkdir(parents=True, exist_ok=True)
     db = sqlite3.connect(path, timeout=timeout, isolation_level=None)
+    try:
+        require_ours(db, path)
+    except BaseException:
+        db.close()
+        raise
     db.execute("PRAGMA journal_mode=WAL")
     db.execute("PRAGMA synchronous=NORMAL")
     return db
