@@ -99,7 +99,8 @@ def demo(args: argparse.Namespace) -> int:
     from pantarhei.bridge.files import require_writable_file, write_text
     from pantarhei.bridge.theories import loading
     from pantarhei.bridge.exploration.trace import require_distinct_outputs
-    from pantarhei.bridge.commands.querying import answer, print_plans
+    from pantarhei.bridge.commands.plan import print_plans
+    from pantarhei.bridge.commands.querying import answer
     from pantarhei.bridge.reasoning.answers import InProcess
     from pantarhei.bridge.exploration.explore_call import ExploreOptions, explore, stop_text
 

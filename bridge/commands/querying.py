@@ -1,4 +1,5 @@
-"""`pantarhei ask`, `plan`, `conclusions`: questions to a defeasible theory."""
+"""`pantarhei ask`, `conclusions`, `convert`: questions to a defeasible theory
+(`plan` is plan.py)."""
 from __future__ import annotations
 
 import argparse
@@ -42,26 +43,6 @@ def register(sub: argparse._SubParsersAction) -> None:
     # argparse takes an argument that this matches for a value (every
     # expectation's name holds an underscore, no option of ask does)
     p._negative_number_matcher = re.compile(r"^-\d+$|^-\d*\.\d+$|^-[a-z][a-z0-9]*_[a-z0-9_]+$")
-
-    p = sub.add_parser("plan", help="how to pour to reach a goal? (clingo)")
-    p.add_argument("--goal", required=True,
-                   help="goal literals G1,G2: expectations, negated as neg(E) or -E")
-    p.add_argument("--given", default="", help="context propositions P1,P2 (liquid, amount, bowls...)")
-    p.add_argument("--theory", action="append", metavar="FILE", help=THEORY_HELP)
-    p.add_argument("--alternatives", type=options.count(0, options.COUNT_MAX), default=4, metavar="K",
-                   help="list up to K plans after the best (default 4)")
-    p.add_argument("--verify", type=options.count(0, options.VERIFY_MAX), default=10, metavar="N",
-                   help="sample each plan the theory proposes N times and simulate it; only the "
-                        "plans that met the goals often enough are shown (default 10; 0: show "
-                        "the theory's plans unverified)")
-    p.add_argument("--min-success", type=float, default=0.9, metavar="SHARE",
-                   help="the share of a plan's verifying pours that must meet every goal "
-                        "(default 0.9)")
-    options.add_seed(p, 0, "--verify's sampling")
-    p.add_argument("--store", default="pantarhei.sqlite",
-                   help="SQLite file of simulations for --verify (default pantarhei.sqlite)")
-    p.add_argument("--json", action="store_true", help="print JSON")
-    p.set_defaults(run=plan, pin=lambda args: args.verify > 0)     # --verify simulates
 
     p = sub.add_parser("conclusions", help="all conclusions (+D, -D, +d, -d) of a theory file")
     p.add_argument("file", nargs="+", metavar="FILE", help="theory file(s), native facts or .dfl")
@@ -248,102 +229,6 @@ def _ask_each_line(args: argparse.Namespace, door, lines) -> int:
         raise UserError("give a scene: a question in words, --props P1,P2, or questions one a "
                         "line on standard input")
     return 1 if failed else 0
-
-
-# -- plan ---------------------------------------------------------------------
-
-def plan(args: argparse.Namespace) -> int:
-    from pantarhei.bridge.theories import loading
-
-    goals = _split(utf8(args.goal, "--goal"))
-    utf8(args.given, "--given")
-    if not goals:
-        raise UserError("--goal: give at least one goal literal")
-    given = known(_split(args.given))
-    if not 0 < args.min_success <= 1:
-        raise UserError("--min-success: a share above 0 and at most 1")
-    theory = loading.load(args.theory, pouring=True)
-    if args.verify:
-        from pantarhei.oracle.base import ORACLES, REAL_ORACLES
-
-        oracle = _verifying_oracle(theory)
-        if oracle in ORACLES and oracle not in REAL_ORACLES:
-            raise UserError(f"{theory.source}: setting(oracle, {oracle}) names a test-only oracle: "
-                            f"plans are verified in a real simulation only ({', '.join(REAL_ORACLES)}); "
-                            f"--verify 0 shows the theory's plans unverified")
-    return print_plans(theory, goals, given, args.alternatives,
-                       args.verify, args.min_success, args.seed, args.store, args.json)
-
-
-def _verifying_oracle(theory) -> str:
-    """The oracle a theory's plans are verified with: the one it was
-    learned from (its setting(oracle, O)), PyBullet otherwise."""
-    from pantarhei.bridge.theories import loading
-
-    return str((loading.settings(theory).get("oracle") or ["pybullet"])[0])
-
-
-def print_plans(theory, goals: list[str], given: list[str], alternatives: int, verify: int,
-                min_success: float, seed: int, store, as_json: bool = False) -> int:
-    """Print the theory's plans for `goals` given `given`: the best and up
-    to `alternatives` more, each met in at least `min_success` of `verify`
-    pours (simulated, kept in `store`; 0: not simulated)."""
-    from pantarhei.bridge.reasoning.planning import check_goals, plan as make_plans
-
-    verified: list[dict | None]
-    if verify:
-        plans, verified = _verified(theory, goals, given, alternatives, verify, min_success, seed,
-                                    store)
-    else:
-        plans = make_plans(theory, goals, given, alternatives)
-        verified = [None] * len(plans)
-    goal_lits = check_goals(goals, theory)
-    if as_json:
-        print(json.dumps({"goals": goal_lits, "given": given,
-                          "plans": [{"chosen": list(p.chosen), "antecedent": list(p.antecedent),
-                                     **({"verified": v} if v is not None else {})}
-                                    for p, v in zip(plans, verified)]}, indent=1))
-        return 0
-    from pantarhei.theory.lexicon import load_vocabulary
-
-    vocab = load_vocabulary()
-    print(f"goals: {', '.join(goal_lits)}" + (f"  given: {', '.join(given)}" if given else ""))
-    for i, (p, v) in enumerate(zip(plans, verified)):
-        title = "best plan" if i == 0 else f"alternative {i}"
-        n = len(p.chosen)
-        print(f"{title} ({n} proposition{'s' if n != 1 else ''}):")
-        if not p.chosen:
-            print("  nothing to choose: the given context already reaches the goals")
-        for c in p.chosen:
-            print(f"  {c:26} {vocab.propositions[c].gloss}")
-        if v is not None:
-            print(f"  verified: goals met in {v['met']} of {v['simulated']} simulations "
-                  f"({v['rate']:.0%})" + (f", {v['failed']} failed" if v["failed"] else ""))
-    return 0
-
-
-def _verified(theory, goals: list[str], given: list[str], alternatives: int, verify: int,
-              min_success: float, seed: int, store) -> tuple[list, list[dict]]:
-    """The theory's plans that met the goals in at least `min_success` of
-    `verify` pours each (simulated with the oracle the theory was learned
-    from, stored); UserError when none did."""
-    from pantarhei.bridge.exploration.simulation import open_simulator, oracle_identity
-    from pantarhei.bridge.reasoning.planning import verified_plans
-
-    oracle = _verifying_oracle(theory)
-    oracle_identity(oracle)     # UserError for an oracle that is unknown or cannot load
-    with open_simulator(oracle, store=store) as sim:
-        good, tried = verified_plans(theory, goals, given, sim.simulate, verify, seed,
-                                     min_success, 1 + alternatives)
-    if not good:
-        best = max(tried, key=lambda v: v.rate)
-        raise UserError(f"no plan found: none of the {len(tried)} plans the theory proposes met "
-                        f"the goals in {min_success:.0%} of {verify} pours (the best, "
-                        f"{', '.join(best.plan.chosen) or 'the context alone'}, in {best.met} of "
-                        f"{best.simulated})")
-    return [v.plan for v in good], [{"simulated": v.simulated, "met": v.met,
-                                     "failed": verify - v.simulated, "rate": v.rate}
-                                    for v in good]
 
 
 # -- conclusions --------------------------------------------------------------

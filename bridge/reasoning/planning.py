@@ -11,6 +11,7 @@ merely add propositions to a plan already found.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Sequence
 
 from pantarhei.theory.lexicon import load_vocabulary
 from pantarhei.theory import THEORY_DIR, VOCABULARY_FILES
@@ -46,6 +47,21 @@ def goals_met(scores, goals: list[str]):
     return met
 
 
+#: The goal a pour has unless a goal says otherwise: the liquid leaves the source.
+POURS = "liquid_leaves_source"
+
+
+def pouring_goals(goals: list[str]) -> tuple[list[str], list[str]]:
+    """The goal literals of "how should I pour so that ...", with the
+    liquid leaving the source added where no goal speaks of it (a goal of
+    liquid_leaves_source or its negation says otherwise): a pour pours.
+    Returns the goals and those added."""
+    lits = [goal_literal(g) for g in goals]
+    if POURS in lits or complement(POURS) in lits:
+        return lits, []
+    return lits + [POURS], [POURS]
+
+
 def check_goals(goals: list[str], theory: Theory, reachable: bool = True) -> list[str]:
     """The goal literals; UserError for an unknown expectation, or for a
     goal literal that no rule of the theory can conclude."""
@@ -59,13 +75,16 @@ def check_goals(goals: list[str], theory: Theory, reachable: bool = True) -> lis
     return out
 
 
-def plan(theory: Theory, goals: list[str], given: list[str] = (), alternatives: int = 5) -> list[Plan]:
-    """Plans for the goals, cheapest first (at most 1 + alternatives).
-    UserError if no valid choice of manners reaches them, naming the goal."""
+def plan(theory: Theory, goals: list[str], given: list[str] = (), alternatives: int = 5,
+         exclude: Sequence[Sequence[str]] = ()) -> list[Plan]:
+    """Plans for the goals, cheapest first (at most 1 + alternatives), none
+    of whose chosen propositions are exactly a set of `exclude` (an empty
+    list when only those reach the goals). UserError if no valid choice of
+    manners reaches them, naming the goal."""
     goals = check_goals(list(goals), theory)
     given = require_valid(given) if given else []
-    plans = _solve(theory, goals, given, 1 + alternatives)
-    if plans:
+    plans = _solve(theory, goals, given, 1 + alternatives, exclude=exclude)
+    if plans or (exclude and _solve(theory, goals, given, 1)):
         return plans
     for g in goals:    # which goal cannot be reached even alone?
         if not _solve(theory, [g], given, 1):
@@ -101,8 +120,14 @@ def relevant(theory: Theory, goals: list[str]) -> Theory:
                               if p[0] in ids and p[1] == "confidence_permille"])
 
 
+def _excluded(chosen: Sequence[str]) -> str:
+    """An ASP constraint against choosing exactly the propositions `chosen`."""
+    body = "".join(f"chosen({p}), " for p in chosen)
+    return f":- {body}#count {{ P : chosen(P) }} = {len(chosen)}."
+
+
 def _solve(theory: Theory, goals: list[str], given: list[str], count: int,
-           steps: int = 4) -> list[Plan]:
+           steps: int = 4, exclude: Sequence[Sequence[str]] = ()) -> list[Plan]:
     """Up to `count` plans; the alternation steps double until the models
     found have converged (more steps only make more goals provable)."""
     import clingo
@@ -119,7 +144,7 @@ def _solve(theory: Theory, goals: list[str], given: list[str], count: int,
         for e in ENCODINGS:
             ctl.load(str(THEORY_DIR / e))
         facts = theory.encoded() + "".join(f"goal({g})." for g in goals) \
-            + "".join(f"context({p})." for p in given)
+            + "".join(f"context({p})." for p in given) + "".join(_excluded(c) for c in exclude)
         ctl.add("base", [], facts)
         ctl.ground([("base", [])])
         plans: list[Plan] = []

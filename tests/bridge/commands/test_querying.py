@@ -1,4 +1,5 @@
-"""`pantarhei ask`, `plan` and `conclusions` (bridge/commands/querying.py),
+"""`pantarhei ask` and `conclusions` (bridge/commands/querying.py; `plan`
+is tests/bridge/commands/test_plan.py),
 run as a user runs them: their output, their one-line errors, and the
 answers, plans and conclusions of bridge/reasoning (answers.py,
 planning.py, logic.py) and bridge/reasoning/reading.py as the commands give
@@ -52,81 +53,6 @@ def test_ask_why_and_why_not(cli) -> None:
     assert "rule r2 (pour_centred => no_spill) does not apply" in why_not["why"]
 
 
-def test_plan_best_first_then_alternatives(cli) -> None:
-    args = ("plan", "--goal", "liquid_leaves_source,no_spill", "--given", "light_liquid", "--json",
-            "--verify", "0")
-    before = json.loads(cli(*args, "--theory", LEARNED).out)
-    after = json.loads(cli(*args, "--theory", LEARNED, "--theory", HAND).out)
-    assert [p["chosen"] for p in before["plans"]] == [["pour_centred", "pour_upside_down"]]
-    plans = [p["chosen"] for p in after["plans"]]
-    assert plans[0] == ["pour_centred", "pour_upside_down"]
-    assert ["pour_centred", "pour_steeply_tilted", "slow_retreat"] in plans
-    assert all(len(a) <= len(b) for a, b in zip(plans, plans[1:]))
-    assert all("light_liquid" in p["antecedent"] for p in after["plans"])
-
-
-CONFIDENT = """rule(r1, defeasible, no_spill).
-learned(r1).
-provenance(r1, confidence_permille, 550).
-rule(r2, defeasible, no_spill).
-body(r2, pour_centred).
-learned(r2).
-provenance(r2, confidence_permille, 950).
-"""
-
-
-def test_plan_rests_on_the_most_confident_rules_first(cli, tmp_path: Path) -> None:
-    # the default already concludes no spill, but only just: the plan that
-    # pours centred rests on a rule of 95%, and comes first
-    f = tmp_path / "confident.pl"
-    f.write_text(CONFIDENT)
-    r = cli("plan", "--goal", "no_spill", "--theory", str(f), "--json", "--verify", "0")
-    assert r.code == 0, r.err
-    assert [p["chosen"] for p in json.loads(r.out)["plans"]] == [["pour_centred"], []]
-    # without confidences the cheapest plan comes first
-    f.write_text("\n".join(line for line in CONFIDENT.splitlines() if "provenance" not in line))
-    r = cli("plan", "--goal", "no_spill", "--theory", str(f), "--json", "--verify", "0")
-    assert [p["chosen"] for p in json.loads(r.out)["plans"]] == [[]]
-
-
-def test_plan_negated_goal(cli) -> None:
-    for goal in ("--goal=neg(no_spill)", "--goal=-no_spill"):
-        r = cli("plan", goal, "--theory", LEARNED, "--json", "--verify", "0")
-        assert r.code == 0, r.err
-        assert json.loads(r.out)["goals"] == ["neg(no_spill)"]
-        assert json.loads(r.out)["plans"][0]["chosen"] == ["pour_to_side"]
-
-
-WISHFUL = """rule(r1, defeasible, neg(liquid_enters_destination)).
-rule(r2, defeasible, liquid_enters_destination).
-body(r2, pour_far_away).
-rule(r3, defeasible, liquid_enters_destination).
-body(r3, pour_centred).
-sup(r2, r1).
-sup(r3, r1).
-"""
-
-
-def test_plan_shows_only_plans_that_hold_in_simulation(cli, tmp_path: Path) -> None:
-    """A theory that thinks pouring far away fills the destination: its
-    first plan fails every verifying pour and is not shown; pouring centred
-    holds. Asked for more than any plan gives, it says so in one line."""
-    f = tmp_path / "wishful.pl"
-    f.write_text(WISHFUL)
-    args = ("plan", "--goal", "liquid_enters_destination", "--theory", str(f), "--verify", "4",
-            "--store", str(tmp_path / "s.sqlite"))
-    proposed = json.loads(cli(*args[:5], "--verify", "0", "--json").out)["plans"]
-    assert {tuple(p["chosen"]) for p in proposed} == {("pour_far_away",), ("pour_centred",)}
-    r = cli(*args, "--min-success", "0.75", "--json")
-    assert r.code == 0, r.err
-    plans = json.loads(r.out)["plans"]
-    assert [p["chosen"] for p in plans] == [["pour_centred"]]
-    assert plans[0]["verified"]["met"] >= 3
-    f.write_text(WISHFUL.replace("pour_centred", "pour_upright"))
-    line = assert_one_line_error(cli(*args))
-    assert line.startswith("pantarhei plan: no plan found") and "in 0 of 4" in line, line
-
-
 def test_conclusions_of_both_engines_agree_and_use_dfl_literals(cli, tmp_path: Path) -> None:
     f = tmp_path / "t.dfl"
     f.write_text(">> bird\n>> penguin\nr1: bird => flies\nr2: penguin => -flies\nr2 > r1\n")
@@ -163,11 +89,6 @@ def test_a_theory_of_facts_only_from_the_command_line(cli, engine: str, text: st
     (("ask", "--props", "pour_to_side,pour_centred", "--theory", LEARNED), "one_value_per_dimension"),
     (("ask", "--props", "pour_below_rim,pour_centred", "--theory", LEARNED), "inside_destination"),
     (("ask", "sing me a song", "--theory", LEARNED), "understood none"),
-    (("plan", "--goal", "destination_still_settle", "--theory", LEARNED), "no rule of"),
-    (("plan", "--goal", "liquid_leaves_source", "--given", "light_liquid,pour_steeply_tilted,pour_level",
-      "--theory", LEARNED), "unreachable goal"),
-    (("plan", "--goal", "no_spil", "--theory", LEARNED), "did you mean no_spill"),
-    (("plan", "--goal", "no_spill", "--min-success", "1.5"), "--min-success"),
     (("conclusions", "/nonexistent/theory.dfl"), "no such theory file"),
 ])
 def test_bad_input_gets_one_line_and_a_non_zero_exit(cli, args, words: str) -> None:
@@ -482,21 +403,3 @@ def test_one_long_line_on_standard_input_is_answered_in_time_linear_in_it() -> N
     r = _ask_stdin(line, "--json", timeout=20)
     assert r.code == 1 and "line 1: " in r.err
     assert json.loads(r.out)["understood"] == ["pour_low"]
-
-
-@pytest.mark.parametrize("oracle", ["synthetic", "faulty"])
-def test_plan_verifies_with_a_real_oracle_only(cli, tmp_path: Path, oracle: str) -> None:
-    """A theory that names a test-only oracle (analytic scores, or faults)
-    has no plan "verified" by it; --verify 0 still shows its plans."""
-    f = tmp_path / "wishful.pl"
-    f.write_text(f"setting(oracle, {oracle}).\n" + WISHFUL)
-    store = tmp_path / "s.sqlite"
-    line = assert_one_line_error(cli("plan", "--goal", "liquid_enters_destination", "--theory", str(f),
-                                     "--verify", "2", "--store", str(store)))
-    assert line == (f"pantarhei plan: {f}: setting(oracle, {oracle}) names a test-only oracle: plans "
-                    f"are verified in a real simulation only (pybullet); --verify 0 shows the "
-                    f"theory's plans unverified"), line
-    assert not store.exists()
-    r = cli("plan", "--goal", "liquid_enters_destination", "--theory", str(f), "--verify", "0", "--json")
-    assert r.code == 0, r.err
-    assert "verified" not in json.loads(r.out)["plans"][0]

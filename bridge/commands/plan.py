@@ -1,0 +1,175 @@
+"""`pantarhei plan`: how should I pour so that ...? (clingo, verified in
+the simulation, learning from the plans it refutes)."""
+from __future__ import annotations
+
+import argparse
+import json
+
+from pantarhei.bridge.commands import options
+from pantarhei.bridge.errors import UserError
+
+#: Pours a plan is verified with, the share of them that must meet every
+#: goal, and the pours a search may simulate in all.
+VERIFY = 10
+MIN_SUCCESS = 0.9
+BUDGET = 80
+
+THEORY_HELP = ("theory file, native facts or .dfl (repeat to add hand-written rules to a learned "
+               "theory; default: the shipped learned theory theory/learned/pouring.pl)")
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("plan", help="how to pour to reach a goal? (clingo, verified in the "
+                                    "simulation)")
+    p.add_argument("context", nargs="?",
+                   help='the given context in words, e.g. "pour very high with a light liquid" '
+                        "(or --given)")
+    p.add_argument("--goal", required=True,
+                   help="goal literals G1,G2: expectations, negated as neg(E) or -E; the liquid "
+                        "leaving the source is added unless a goal speaks of it (a pour pours)")
+    p.add_argument("--given", default="", help="context propositions P1,P2 (liquid, amount, bowls...)")
+    p.add_argument("--theory", action="append", metavar="FILE", help=THEORY_HELP)
+    p.add_argument("--alternatives", type=options.count(0, options.COUNT_MAX), default=None,
+                   metavar="K", help="list up to K plans after the best (default: 4 unverified, "
+                                     "0 verified)")
+    p.add_argument("--verify", type=options.count(0, options.VERIFY_MAX), default=VERIFY,
+                   metavar="N",
+                   help=f"simulate N pours of each plan tried; a plan is shown only when its goals "
+                        f"were met often enough (default {VERIFY}; 0: show the theory's plans "
+                        f"unverified)")
+    p.add_argument("--min-success", type=float, default=MIN_SUCCESS, metavar="SHARE",
+                   help=f"the share of a plan's verifying pours that must meet every goal "
+                        f"(default {MIN_SUCCESS})")
+    p.add_argument("--pours", type=options.count(1, options.COUNT_MAX), default=BUDGET,
+                   metavar="BUDGET",
+                   help=f"pours the search may simulate in all: plans refuted are learned from and "
+                        f"the search goes on until a plan is verified or these are spent "
+                        f"(default {BUDGET})")
+    p.add_argument("--learned-out", metavar="FILE",
+                   help="write the theory the search leaves (the theory with the rules learned "
+                        "from its pours) to FILE; without it nothing is written")
+    p.add_argument("--oracle", choices=options.choices("oracle"), default=None,
+                   help="verify with this oracle (default: the one the theory was learned from; "
+                        "synthetic: analytic test scores, not a simulation)")
+    options.add_seed(p, 0, "--verify's sampling")
+    p.add_argument("--store", default="pantarhei.sqlite",
+                   help="SQLite file of simulations for --verify (default pantarhei.sqlite)")
+    p.add_argument("--json", action="store_true", help="print JSON")
+    p.set_defaults(run=plan, pin=lambda args: args.verify > 0)     # --verify simulates
+
+
+def _split(text: str | None) -> list[str]:
+    return [x.strip() for x in (text or "").split(",") if x.strip()]
+
+
+def plan(args: argparse.Namespace) -> int:
+    from pantarhei.bridge.commands.querying import utf8
+    from pantarhei.bridge.reasoning.scenes import known
+    from pantarhei.bridge.theories import loading
+
+    goals = _split(utf8(args.goal, "--goal"))
+    utf8(args.given, "--given")
+    if not goals:
+        raise UserError("--goal: give at least one goal literal")
+    if args.context is not None and args.given.strip():
+        raise UserError("give the context in words or with --given, not both")
+    if args.context is not None:
+        from pantarhei.bridge.reasoning.reading import understand
+
+        given = known(understand(utf8(args.context, "the context")))
+    else:
+        given = known(_split(args.given))
+    if not 0 < args.min_success <= 1:
+        raise UserError("--min-success: a share above 0 and at most 1")
+    if args.learned_out is not None:
+        _require_out(args.learned_out)
+    theory = loading.load(args.theory, pouring=True)
+    oracle = None
+    if args.verify:
+        oracle = args.oracle or _verifying_oracle(theory)
+        from pantarhei.oracle.base import ORACLES, REAL_ORACLES
+
+        if args.oracle is None and oracle in ORACLES and oracle not in REAL_ORACLES:
+            raise UserError(f"{theory.source}: setting(oracle, {oracle}) names a test-only oracle: "
+                            f"plans are verified in a real simulation only ({', '.join(REAL_ORACLES)}); "
+                            f"--verify 0 shows the theory's plans unverified")
+    alternatives = args.alternatives if args.alternatives is not None else (0 if args.verify else 4)
+    return print_plans(theory, goals, given, alternatives, args.verify, args.min_success,
+                       args.seed, args.store, args.json, budget=args.pours, oracle=oracle,
+                       learned_out=args.learned_out)
+
+
+def _require_out(path: str) -> None:
+    from pathlib import Path
+
+    from pantarhei.bridge.files import require_writable_file
+    from pantarhei.bridge.theories.loading import DEFAULT_THEORY
+
+    out = Path(path)
+    if out.resolve() == Path(DEFAULT_THEORY).resolve():
+        raise UserError(f"--learned-out {path}: that is the shipped theory; name another file")
+    if not out.parent.is_dir():
+        raise UserError(f"--learned-out {path}: no such directory {out.parent}")
+    require_writable_file(out, "--learned-out")
+
+
+def _verifying_oracle(theory) -> str:
+    """The oracle a theory's plans are verified with: the one it was
+    learned from (its setting(oracle, O)), PyBullet otherwise."""
+    from pantarhei.bridge.theories import loading
+
+    return str((loading.settings(theory).get("oracle") or ["pybullet"])[0])
+
+
+def print_plans(theory, goals: list[str], given: list[str], alternatives: int, verify: int,
+                min_success: float, seed: int, store, as_json: bool = False, *,
+                budget: int = BUDGET, oracle: str | None = None,
+                learned_out: str | None = None) -> int:
+    """Print plans for `goals` given `given`, each with its numbers: with
+    `verify` pours, the search's verified plans (the best and up to
+    `alternatives` more, each met in at least `min_success` of `verify`
+    pours, simulated with `oracle` and kept in `store`, within `budget`
+    pours in all; UserError saying why when none is found); with 0, the
+    theory's plans unverified."""
+    from pantarhei.bridge.commands.plan_text import plan_json, print_search, print_unverified
+    from pantarhei.bridge.reasoning.planning import check_goals, plan as make_plans, pouring_goals
+
+    if not verify:
+        lits, added = pouring_goals(goals)
+        asked = [g for g in lits if g not in added or _concludes(theory, g)]
+        plans = make_plans(theory, check_goals(asked, theory), given, alternatives)
+        if as_json:
+            print(json.dumps(plan_json(theory, lits, added, given, [(p, None) for p in plans]),
+                             indent=1))
+            return 0
+        print_unverified(theory, lits, added, given, plans)
+        return 0
+    found = _search(theory, goals, given, alternatives, verify, min_success, seed, store, budget,
+                    oracle or _verifying_oracle(theory))
+    if learned_out is not None and found.learned:
+        from pantarhei.bridge.files import write_text
+
+        write_text(learned_out, found.theory.native())
+    if not found.verified:
+        raise UserError(f"no plan found: {found.reason}")
+    if as_json:
+        print(json.dumps(plan_json(found.theory, found.goals, found.added, found.given,
+                                   [(t.plan, t) for t in found.verified], found, oracle,
+                                   learned_out), indent=1))
+        return 0
+    print_search(found, oracle, learned_out)
+    return 0
+
+
+def _concludes(theory, lit: str) -> bool:
+    return lit in theory.facts or any(r.head == lit and r.kind != "defeater" for r in theory.rules)
+
+
+def _search(theory, goals, given, alternatives, verify, min_success, seed, store, budget, oracle):
+    from pantarhei.bridge.exploration.simulation import open_simulator, oracle_identity
+    from pantarhei.bridge.reasoning.plan_search import search
+
+    oracle_identity(oracle)     # UserError for an oracle that is unknown or cannot load
+    with open_simulator(oracle, store=store) as sim:
+        return search(theory, goals, given, sim.simulate, verify_pours=verify,
+                      min_success=min_success, seed=seed, budget=budget, want=1 + alternatives)

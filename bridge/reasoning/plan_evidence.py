@@ -1,0 +1,119 @@
+"""What a plan's verifying pours teach the theory.
+
+A plan the simulation refutes is evidence: its pours say what happens in
+its scene. The theory learns from them with the learner the exploration
+uses (bridge/learning/learners.py's default, through its interface): the
+learner models every pour of the planning run together (likelihoods
+pooled), and its answer for each plan tried (its antecedent: the given
+context and the manners chosen) becomes, per expectation, a learned rule
+with that antecedent as its body, and its provenance: the layer (plans),
+the support and kept pours, the confidence in permille. A planned rule
+beats a rule of the theory it conflicts with in a scene both can hold
+where neither body holds the other strictly (among learned rules
+specificity decides the rest): the larger body first, and for bodies of
+one size the planned rule, which rests on pours of that very scene.
+Every round learns again from the original theory and every pour so far,
+so rules are not stacked on rules.
+"""
+from __future__ import annotations
+
+from typing import Mapping, Sequence
+
+import numpy as np
+
+from pantarhei.theory.lexicon import load_vocabulary
+
+from pantarhei.bridge.theories.model import Rule, Theory, complement
+
+#: The layer the planned rules' provenance names.
+LAYER = "plans"
+
+
+def rule_id(k: int, expectation: str) -> str:
+    """The id of the planned rule for the k-th antecedent tried."""
+    return f"p{k}_{expectation}"
+
+
+def with_evidence(theory: Theory, pours: Mapping[tuple[str, ...], tuple[np.ndarray, np.ndarray]],
+                  seed: int) -> Theory:
+    """`theory` with a planned rule per expectation for each antecedent
+    tried (`pours`: antecedent to the parameterizations and scores drawn
+    for it, in the order tried; failed pours left out)."""
+    return with_rules(theory, [planned_rules(k, body, P, S, seed)
+                               for k, (body, (P, S)) in enumerate(pours.items())])
+
+
+Planned = tuple[list[Rule], list[tuple[str, str, "str | int"]]]
+
+
+def planned_rules(k: int, body: Sequence[str], P: np.ndarray, S: np.ndarray,
+                  seed: int) -> Planned:
+    """The planned rules of the k-th antecedent tried, `body`, learned from
+    the pours drawn for it (P, S), and their provenance; none when no pour
+    finished."""
+    from pantarhei.bridge.evaluation.measures import verdicts
+    from pantarhei.bridge.learning import learners
+
+    names = load_vocabulary().expectation_names
+    P = np.atleast_2d(np.asarray(P, dtype=float))
+    S = np.atleast_2d(np.asarray(S, dtype=float))
+    done = np.all(np.isfinite(S), axis=1)
+    P, S = P[done], S[done]
+    rules: list[Rule] = []
+    provenance: list[tuple[str, str, str | int]] = []
+    if not len(P):
+        return rules, provenance
+    body = tuple(sorted(body))
+    Y = verdicts(S)
+    general = learners.learner(learners.DEFAULT_LEARNER)(P, S, int(seed), [body])
+    for e, (_, like, _) in general.answer(body).items():
+        if not np.isfinite(like):
+            continue
+        holds = like >= 0.5
+        rid = rule_id(k, e)
+        rules.append(Rule(rid, "defeasible", e if holds else complement(e), body))
+        provenance += [(rid, "layer", LAYER), (rid, "support", len(P)),
+                       (rid, "kept", int((Y[:, names.index(e)] == holds).sum())),
+                       (rid, "confidence_permille",
+                        int(round(1000 * (like if holds else 1 - like))))]
+    return rules, provenance
+
+
+def with_rules(theory: Theory, planned: Sequence[Planned]) -> Theory:
+    """`theory` with the planned rules and their provenance, and the
+    sup/2 pairs that order them (the theory itself for none)."""
+    new = [r for rules, _ in planned for r in rules]
+    if not new:
+        return theory
+    provenance = [x for _, prov in planned for x in prov]
+    return Theory(list(theory.facts), list(theory.rules) + new,
+                  list(theory.sup) + _sup(theory, new), set(theory.learned) | {r.id for r in new},
+                  list(theory.extra), theory.source, {k: list(v) for k, v in theory.settings.items()},
+                  list(theory.provenance) + provenance)
+
+
+def _sup(theory: Theory, new: Sequence[Rule]) -> list[tuple[str, str]]:
+    """sup/2 pairs for the planned rules `new` against every conflicting
+    rule of the theory and against each other (see the module's text)."""
+    from pantarhei.bridge.learning.askable import together
+
+    out = []
+    for r in new:
+        for q in theory.rules:
+            if q.head != complement(r.head):
+                continue
+            rb, qb = set(r.body), set(q.body)
+            if q.id in theory.learned and (rb < qb or qb < rb):
+                continue                    # specificity decides
+            if qb < rb:
+                out.append((r.id, q.id))
+            elif together(r.body, q.body):
+                out.append((r.id, q.id) if len(rb) >= len(qb) else (q.id, r.id))
+    for i, r in enumerate(new):
+        for q in new[i + 1:]:
+            rb, qb = set(r.body), set(q.body)
+            if q.head != complement(r.head) or rb < qb or qb < rb or not together(r.body, q.body):
+                continue
+            hi, lo = (r, q) if (len(rb), r.id) > (len(qb), q.id) else (q, r)
+            out.append((hi.id, lo.id))
+    return out
