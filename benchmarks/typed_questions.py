@@ -1,0 +1,108 @@
+"""Questions as people type them, held out (benchmarks/heldout_questions.txt:
+written by a writer who had not seen the vocabulary, annotated afterwards,
+never tuned on): of the questions the vocabulary can express, the share
+read as meant (the scene, and the expectations asked or wanted where the
+reader hears them); the misreads (a question answered as another scene,
+or one the vocabulary cannot express answered at all); the silent drops
+(a word of a question answered neither read, said back, shown as ignored
+nor a word of its frame); and the refusals, each one line.
+
+Against an older reader (one without `read_question`), the scene alone is
+compared and silent drops are not counted: it does not say what it read.
+"""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.reasoning import reading
+from pantarhei.bridge.reasoning.words import FILLERS
+
+QUESTIONS = Path(__file__).with_name("heldout_questions.txt")
+
+
+def annotated() -> list[tuple[str, dict[str, str] | None]]:
+    """(question, what it should be read as: "scene", "asked", "goals"; None: cannot be said)."""
+    out = []
+    for line in QUESTIONS.read_text(encoding="utf-8").splitlines():
+        if not line.strip() or line.startswith("#"):
+            continue
+        question, meant = line.split("\t")
+        out.append((question, None if meant == "cannot" else
+                    dict(part.strip().split("=", 1) for part in meant.split(";"))))
+    return out
+
+
+def _names(text: str) -> list[str]:
+    return sorted(n for n in text.split(",") if n)
+
+
+def _lost(question: str, heard) -> list[str]:
+    """The words of `question` that its reading neither read, said back nor ignored."""
+    words = {w for phrase in (*heard.heard, *heard.ignored) for w in re.findall(r"[a-z]+", phrase)}
+    words |= {n.split(":")[0] for n in heard.notes} | set(FILLERS) | {"s", "minus"}
+    said = re.sub(r"n't\b", " not", question.lower().replace("\u2019", "'"))
+    return [w for w in re.findall(r"[a-z]+", said) if w not in words]
+
+
+def measure() -> dict:
+    full = hasattr(reading, "read_question")
+    counts = {"questions": 0, "expressible": 0, "read as meant": 0, "refused though expressible": 0,
+              "misread": 0, "silent drops": 0 if full else None, "refused in one line": 0,
+              "refused": 0, "asked heard wrong": 0 if full else None}
+    wrong: list[str] = []
+    for question, meant in annotated():
+        counts["questions"] += 1
+        counts["expressible"] += meant is not None
+        try:
+            heard = reading.read_question(question) if full else None
+            scene = list(heard.scene) if full else reading.understand(question)
+        except UserError as e:
+            counts["refused"] += 1
+            counts["refused in one line"] += "\n" not in str(e)
+            if meant is not None:
+                counts["refused though expressible"] += 1
+                wrong.append(f"refused (expressible): {question}  -- {e}")
+            continue
+        if full and _lost(question, heard):
+            counts["silent drops"] += 1
+            wrong.append(f"dropped {_lost(question, heard)}: {question}")
+        if meant is None:
+            counts["misread"] += 1
+            wrong.append(f"answered (cannot be said) as {scene}: {question}")
+            continue
+        if sorted(scene) not in [_names(s) for s in meant["scene"].split("|")]:
+            counts["misread"] += 1
+            wrong.append(f"misread as {scene} (meant {meant['scene']}): {question}")
+            continue
+        ok = True
+        if full:
+            for key in ("asked", "goals"):
+                said = sorted(getattr(heard, key))
+                if meant.get(key, "") != "-" and said != _names(meant.get(key, "")):
+                    ok = False
+                    wrong.append(f"{key} {said} (meant {meant.get(key, '')}): {question}")
+        counts["read as meant"] += ok
+        counts["asked heard wrong"] = (counts["asked heard wrong"] or 0) + (not ok) if full else None
+    return {**counts, "wrong": wrong}
+
+
+def main() -> None:
+    m = measure()
+    share = m["read as meant"] / m["expressible"] if m["expressible"] else 0.0
+    print(f"held-out questions typed by a writer who had not seen the vocabulary: {m['questions']}, "
+          f"{m['expressible']} expressible")
+    print(f"  read as meant:               {m['read as meant']} of {m['expressible']} "
+          f"({100 * share:.0f}%; target at least 90%)")
+    print(f"  refused though expressible:  {m['refused though expressible']}")
+    print(f"  asked or wanted heard wrong: {m['asked heard wrong']}")
+    print(f"  misread (target 0):          {m['misread']}")
+    print(f"  silent drops (target 0):     {m['silent drops']}")
+    print(f"  refusals in one line:        {m['refused in one line']} of {m['refused']}")
+    for line in m["wrong"]:
+        print(f"    {line}")
+
+
+if __name__ == "__main__":
+    main()
