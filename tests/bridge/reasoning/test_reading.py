@@ -9,6 +9,7 @@ everyday words read as the vocabulary's are words.py's: test_words.py.)"""
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 
 import pytest
@@ -259,3 +260,35 @@ def test_a_number_no_proposition_holds_is_refused_naming_the_ranges(question, wo
     with pytest.raises(UserError) as e:
         understand(question)
     assert words in str(e.value) and "\n" not in str(e.value)
+
+
+def _answer_lines(out: str) -> list[str]:
+    """The expectation of each answer line of `ask`'s output, in order."""
+    return [m.group(1) for m in re.finditer(r"^  \[[^\]]*\]\s+(\w+)", out, re.M)]
+
+
+def test_ask_answers_the_expectations_asked_first():
+    r = run_cli("ask", "will it overflow if I pour from the side, and will the bowl tip?")
+    assert r.code == 0, r.err
+    assert "understood: pour_to_side" in r.out
+    asked = ["liquid_remains_in_destination", "no_spill", "destination_upright"]
+    assert f"asked: {', '.join(asked)}" in r.out
+    assert _answer_lines(r.out)[:3] == asked and len(_answer_lines(r.out)) == 9
+
+
+def test_ask_hears_a_goal_and_points_to_plan():
+    r = run_cli("ask", "pour from the side without spilling")
+    assert r.code == 0, r.err
+    assert "wanted: no_spill" in r.out
+    assert "pantarhei plan --goal no_spill --given pour_to_side" in r.out
+    assert _answer_lines(r.out)[0] == "no_spill"
+
+
+def test_ask_says_back_everyday_words_and_shows_what_it_ignored():
+    r = run_cli("ask", "--json", "will it overflow if I pour milk into a very light plastic cup?")
+    assert r.code == 0, r.err
+    out = json.loads(r.out)
+    assert out["understood"] == ["light_destination"]
+    assert out["asked"] == ["liquid_remains_in_destination", "no_spill"]
+    assert any(n.startswith("milk: read as an ordinary liquid") for n in out["notes"])
+    assert out["ignored"] == ["very"]
