@@ -413,6 +413,8 @@ evidence_words(R, E, Body, Text) :-
         )
     ;   defeasible:provenance(R, antecedent, A)
     ->  format(string(Text), "the weighted pours of ~w", [A])
+    ;   \+ defeasible:learned(R)
+    ->  Text = "written by hand: no pours recorded"
     ;   Text = ""
     ).
 

@@ -25,10 +25,11 @@ A theory is a set of ground facts (see theory_files.pl):
     fact(L).  rule(Id, Kind, Head).  body(Id, L).  sup(R1, R2).  learned(Id).
 
 Kind is =strict=, =defeasible= or =defeater=; a literal is an atom or a
-term with constant arguments, or its negation =|neg(L)|=. Among learned
-rules, a rule whose body strictly contains the body of a rule with the
-complementary head is superior to it (specificity), unless sup/2 says the
-opposite.
+term with constant arguments, or its negation =|neg(L)|=. A rule whose
+body strictly contains the body of a learned rule with the complementary
+head is superior to it (specificity), unless sup/2 says the opposite: a
+learned rule is overridden by any more specific rule, learned or written
+by hand; a rule written by hand (no learned/1 fact) only by sup/2.
 
 The logic is the defeasible logic of Antoniou, Billington, Governatori
 and Maher, given by its meta-program (Antoniou et al., "Embedding
@@ -66,7 +67,7 @@ theory/defeasible.lp computes the same conclusions with clingo.
 
 :- dynamic fact/1, rule/3, body/2, sup/2, learned/1, provenance/3, given_theory/1,
    scene_fact/1, rule_body/2, theory_literal/1, loaded/0,
-   generation/1, head_key/3, fact_key/2, learned_key/2, learned_literal_key/2.
+   generation/1, head_key/3, fact_key/2, learned_key/2, literal_key/2.
 
 % Tables are keyed by a generation number that changes with the theory
 % (and with the facts of a scene), instead of being abolished: abolishing
@@ -159,7 +160,7 @@ clear_theory :-
     retractall(sup(_, _)), retractall(learned(_)), retractall(provenance(_, _, _)),
     retractall(scene_fact(_)),
     retractall(rule_body(_, _)), retractall(learned_key(_, _)),
-    retractall(learned_literal_key(_, _)),
+    retractall(literal_key(_, _)),
     retractall(theory_literal(_)), retractall(loaded),
     retractall(given_theory(_)),
     next_generation.
@@ -238,7 +239,7 @@ cycle_back([[N|P]|Queue], Next, R, Seen, Cycle) :-
 
 prepare :-
     retractall(rule_body(_, _)), retractall(learned_key(_, _)),
-    retractall(learned_literal_key(_, _)),
+    retractall(literal_key(_, _)),
     retractall(theory_literal(_)), retractall(head_key(_, _, _)),
     retractall(fact_key(_, _)),
     % literals such as neg(a) all share a functor, so clause indexing on
@@ -257,9 +258,9 @@ prepare :-
 
 %!  superior(?R1, ?R2) is nondet.
 %
-%   R1 is superior to R2: sup(R1, R2), or R1 and R2 are learned rules with
-%   complementary heads and the body of R1 strictly contains that of R2
-%   (specificity), unless sup(R2, R1). Specificity is looked up when
+%   R1 is superior to R2: sup(R1, R2), or R2 is a learned rule, R1 a rule
+%   (learned or not) with the complementary head whose body strictly
+%   contains that of R2 (specificity), unless sup(R2, R1). Specificity is looked up when
 %   asked, through the indexes learned_index/0 builds, never held pair by
 %   pair: the pairs grow with the square of the rules, the indexes with
 %   the rules.
@@ -269,12 +270,13 @@ superior(R, S) :-
     ->  more_specific(R, S)
     ;   nonvar(S)
     ->  less_specific(S, R)
-    ;   learned(R), more_specific(R, S)
+    ;   \+ \+ learned(_),            % no learned rule: no specificity
+        rule(R, _, _), more_specific(R, S)
     ).
 
-% more_specific(+R, ?S): R is learned and more specific than the learned S.
+% more_specific(+R, ?S): R is more specific than the learned S.
 more_specific(R, S) :-
-    learned(R), rule(R, _, H), complement(H, NH), rule_body(R, BR),
+    rule(R, _, H), complement(H, NH), rule_body(R, BR),
     (   nonvar(S)
     ->  learned(S), rule(S, _, NH), rule_body(S, BS),
         ord_subset(BS, BR), BS \== BR
@@ -287,27 +289,29 @@ more_specific(R, S) :-
     ),
     \+ sup(S, R).
 
-% less_specific(+S, -R): R is learned and more specific than the learned S:
-% among the learned rules for the complementary head that hold the first
-% literal of S's body (or, for S without a body, all those with one).
+% less_specific(+S, -R): R is more specific than the learned S: among the
+% rules for the complementary head that hold the first literal of S's
+% body (or, for S without a body, all those with one).
 less_specific(S, R) :-
     learned(S), rule(S, _, NH), complement(NH, H), rule_body(S, BS),
     (   BS = [L|_]
-    ->  term_hash(H-L, Key), learned_literal_key(Key, R),
+    ->  term_hash(H-L, Key), literal_key(Key, R),
         rule(R, _, H), rule_body(R, BR)
-    ;   rule_for(H, R, _), learned(R), rule_body(R, BR)
+    ;   rule_for(H, R, _), rule_body(R, BR)
     ),
     ord_subset(BS, BR), BS \== BR,
     \+ sup(S, R).
 
 % learned_index: each learned rule under a hash of its head and body, and
-% under a hash of its head and each literal of its body, so that the rules
-% a learned rule is more or less specific than are looked up, not searched
-% for among all the rules.
+% each rule under a hash of its head and each literal of its body, so that
+% the learned rules a rule is more specific than, and the rules more
+% specific than a learned rule, are looked up, not searched for among all
+% the rules.
 learned_index :-
     forall(( learned(S), rule(S, _, H), rule_body(S, Bs) ),
-           ( term_hash(H-Bs, Key), assertz(learned_key(Key, S)),
-             forall(member(L, Bs), ( term_hash(H-L, K), assertz(learned_literal_key(K, S)) )) )).
+           ( term_hash(H-Bs, Key), assertz(learned_key(Key, S)) )),
+    forall(( rule(S, _, H), rule_body(S, Bs) ),
+           forall(member(L, Bs), ( term_hash(H-L, K), assertz(literal_key(K, S)) ))).
 
 subsequence([], []).
 subsequence([X|Xs], [X|Ys]) :- subsequence(Xs, Ys).

@@ -30,9 +30,9 @@ What DFL has no form for (`learned/1`, `setting/2`, `provenance/3` and any
 other fact of a native theory) is written as a comment that holds the
 native fact, `# pantarhei: learned(r1).`, read back as in a native file
 (SPINdle and silkie skip it). The superiority that specificity gives
-learned rules is written out too (`r4 > r3 # specificity`), so that those
-tools conclude the same; it is read back as specificity again when both
-rules are learned.
+over learned rules is written out too (`r4 > r3 # specificity`), so that
+those tools conclude the same; it is read back as specificity again when
+the rule beaten is learned.
 """
 from __future__ import annotations
 
@@ -92,7 +92,7 @@ def parse_dfl(text: str, source: str = "<dfl>") -> Theory:
         t.lines[r.id] = seen.get(origin[r.id], 0)
     if annotations:
         from_facts(annotations, source, t)
-        t.sup = [p for p in t.sup if not (p in derived and p[0] in t.learned and p[1] in t.learned)]
+        t.sup = [p for p in t.sup if not (p in derived and p[1] in t.learned)]
     return t
 
 

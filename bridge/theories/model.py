@@ -123,9 +123,10 @@ class Theory:
                       provenance=self.provenance).native()
 
     def specificity(self) -> list[tuple[str, str]]:
-        """The superiority that specificity gives among learned rules: R
-        beats S when their heads conflict, S's body is strictly inside R's,
-        and sup/2 does not say S beats R (as theory/defeasible.pl)."""
+        """The superiority that specificity gives over learned rules: a rule
+        R (learned or written by hand) beats a learned rule S when their
+        heads conflict, S's body is strictly inside R's, and sup/2 does not
+        say S beats R (as theory/defeasible.pl)."""
         explicit = set(self.sup)
         learned = [r for r in self.rules if r.id in self.learned]
         by_head: dict[str, list[Rule]] = {}
@@ -134,7 +135,7 @@ class Theory:
             by_head.setdefault(r.head, []).append(r)
             by_body.setdefault((r.head, frozenset(r.body)), []).append(r)
         out = []
-        for r in learned:
+        for r in self.rules:
             rb = frozenset(r.body)
             against = complement(r.head)
             rivals = by_head.get(against, ())
@@ -222,10 +223,11 @@ class Theory:
         """rule id -> the learned rules it beats by specificity (sup/2 not
         saying otherwise), computed when asked."""
         explicit = set(self.sup)
-        rules = {r.id: r for r in self.rules if r.id in self.learned}
+        rules = {r.id: r for r in self.rules}
         by_head: dict[str, list[Rule]] = {}
-        for r in rules.values():
-            by_head.setdefault(r.head, []).append(r)
+        for r in self.rules:
+            if r.id in self.learned:
+                by_head.setdefault(r.head, []).append(r)
 
         def successors(rid: str) -> list[str]:
             r = rules.get(rid)

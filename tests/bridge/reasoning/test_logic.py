@@ -81,9 +81,15 @@ def test_specificity_among_learned_rules_and_sup_overrides_it(engine: str) -> No
     assert "neg(leaves)" in conclusions(theory([]), DEFAULT, engine)["+d"]
     assert "leaves" in conclusions(theory([("r1", "r2")]), DEFAULT, engine)["+d"]
     not_learned = theory([])
-    not_learned.learned = {"r2"}           # specificity only among learned rules
+    not_learned.learned = {"r2"}           # a rule written by hand is beaten by sup/2 only
     c = conclusions(not_learned, DEFAULT, engine)
     assert {"leaves", "neg(leaves)"} <= set(c["-d"])
+    by_hand = theory([])
+    by_hand.learned = {"r1"}               # ... and beats the learned rules it is more specific than
+    assert "neg(leaves)" in conclusions(by_hand, DEFAULT, engine)["+d"]
+    assert by_hand.specificity() == [("r2", "r1")]     # as DFL writes it out
+    by_hand.sup = [("r1", "r2")]           # unless sup/2 says otherwise
+    assert "leaves" in conclusions(by_hand, DEFAULT, engine)["+d"]
 
 
 # -- a cyclic superiority relation ---------------------------------------------
