@@ -44,7 +44,7 @@ option(uncertainty, permille, range(0, none), 1000,
   "learn: the weight of a candidate's uncertain likelihoods beside how far its answer would move").
 option(doubt, permille, range(0, none), 1000,
   "learn: the weight of the model's doubt (entropy, in bits) about the pours of a candidate's next batch, less as its own pours pile up").
-option(newness, permille, range(0, none), 1000,
+option(newness, permille, range(0, none), 2000,
   "learn: the weight of the chance that a pour of a candidate's next batch shows a behaviour no two pours have shown").
 option(reach, count, range(0, 100000), 16,
   "learn: random valid antecedents of 2 to `body` propositions drawn as candidates each step, beyond the children of what was explored").
