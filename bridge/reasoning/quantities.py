@@ -16,6 +16,12 @@ parameter's unit (theory/vocabulary/parameters.pl) and read as the
 proposition of that parameter whose range holds it; a number no range
 holds, or a measure no parameter takes ("pour for 3 seconds": pouring has
 no duration of its own), is refused naming the ranges there are.
+
+A number keeps its sign (wording.py): "tilted at -10 degrees" is tilted
+back, "-3 cm above the rim" below it; a negative mass, time, count or
+amount is refused, as is a minus said with "below" ("-5 cm below the
+rim"). A speed ("0.5 m/s") and an amount of liquid in millilitres or
+grams ("100 grams of water") are refused naming what would be read.
 """
 from __future__ import annotations
 
