@@ -61,6 +61,7 @@ def answer(asker, props: list[str], why: str | None = None, as_json: bool = Fals
         heard = {k: list(getattr(reading, k)) for k in ("asked", "goals", "notes", "ignored")
                  if reading is not None and getattr(reading, k)}
         print_json({"understood": props, **heard, "theory": asker.source,
+                    "replaces_shipped": bool(getattr(asker, "replaces", None)),
                     **({"check": check.settings()} if observed is not None else {}),
                     "outcomes": {o.expectation: one(o) for o in outcomes}})
         return 0
@@ -71,6 +72,10 @@ def answer(asker, props: list[str], why: str | None = None, as_json: bool = Fals
     if reading is not None:
         _print_heard(reading)
     print(f"theory: {asker.source}")
+    replaces = getattr(asker, "replaces", None)
+    if replaces:
+        print(f"  (in place of the shipped theory, which is not read: add --theory {replaces} "
+              f"to ask it with these rules)")
     glosses = {e.name: e.gloss for e in vocab.expectations}
     said: dict[str, str] = {}     # a why-not already printed, with its expectation as E
     flagged = 0

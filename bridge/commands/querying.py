@@ -16,8 +16,9 @@ from pantarhei.bridge.reasoning.scenes import known
 #: here so that declaring the flag does not start SWI-Prolog).
 ENGINES = ("prolog", "asp")
 
-THEORY_HELP = ("theory file, native facts or .dfl (repeat to add hand-written rules to a learned "
-               "theory; default: the shipped learned theory theory/learned/pouring.pl)")
+THEORY_HELP = ("theory file, native facts or .dfl, in place of the shipped learned theory "
+               "theory/learned/pouring.pl (the default); repeat to merge files, e.g. the shipped "
+               "theory and rules written by hand")
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -68,7 +69,7 @@ def _split(text: str | None) -> list[str]:
 # -- ask ----------------------------------------------------------------------
 
 def ask(args: argparse.Namespace) -> int:
-    from pantarhei.bridge.reasoning.asking import Door
+    from pantarhei.bridge.reasoning.asking import Door, replaced_shipped
 
     for flag in ("question", "props", "why"):
         if getattr(args, flag) is not None:
@@ -81,6 +82,7 @@ def ask(args: argparse.Namespace) -> int:
         raise UserError("--check checks the answers: ask without --why")
     with _stand_ins(args.theory) as (files, source, unread):
         with Door(files, source, unread) as door:    # SWI-Prolog reads the theory meanwhile
+            door.replaces = replaced_shipped(args.theory)
             with _checker(args, files) as check:
                 args.checker = check
                 if args.props is None and args.question in (None, "-"):    # one question a line

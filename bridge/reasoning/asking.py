@@ -84,6 +84,9 @@ class Door:
         #: Why the theory was not given (no such file...), said once a
         #: question's scene is found valid; None when it was.
         self.unread = unread
+        #: The shipped theory's path when the files named stand in place of
+        #: it (it is not among them): the answers say so; None otherwise.
+        self.replaces: str | None = None
         swipl = shutil.which("swipl")
         if swipl is None:
             raise UserError(SWIPL_MISSING)
@@ -307,3 +310,21 @@ def files_to_read(paths: list[str] | None) -> tuple[list[tuple[str, str, bool]],
         if problem:
             return [], " + ".join(paths), problem
     return [(p, p, False) for p in paths], " + ".join(paths), None
+
+
+def replaced_shipped(paths: list[str] | None) -> str | None:
+    """The shipped theory's path when theory files are named and it is not
+    among them (they replace it), else None."""
+    from pantarhei.theory import default_theory
+
+    if not paths:
+        return None
+    shipped = default_theory()
+    for p in paths:
+        try:
+            if Path(p).resolve() == shipped.resolve():
+                return None
+        except (OSError, RuntimeError, ValueError):
+            continue
+    relative = os.path.relpath(shipped)
+    return str(shipped) if relative.startswith("..") else relative

@@ -61,3 +61,19 @@ def test_why_takes_a_negated_expectation_and_gives_its_steps_in_json(cli, tmp_pa
     assert out["steps"][0].startswith("neg(liquid_enters_destination) by rule r2")
     assert "; ".join(out["steps"]) == out["why"]
     assert cli("ask", "-h").code == 0
+
+
+def test_theory_files_named_say_they_replace_the_shipped_theory(cli, tmp_path: Path) -> None:
+    from pantarhei.theory import default_theory
+
+    theory = tmp_path / "t.pl"
+    theory.write_text(THEORY)
+    alone = cli("ask", "pour from the side", "--theory", str(theory))
+    assert alone.code == 0, alone.err
+    assert "in place of the shipped theory, which is not read" in alone.out
+    assert json.loads(cli("ask", "pour from the side", "--theory", str(theory), "--json").out)[
+        "replaces_shipped"] is True
+    both = cli("ask", "pour from the side", "--theory", str(default_theory()), "--theory", str(theory))
+    assert both.code == 0, both.err
+    assert "in place of" not in both.out
+    assert "in place of" not in cli("ask", "pour from the side").out
