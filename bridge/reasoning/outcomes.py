@@ -31,7 +31,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"spill\w*|splash\w*|splatter\w*|slosh\w*|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
      r"|make (?:a|any) mess|makes (?:a|any) mess|(?:go|goes|going|went|get|gets) everywhere",
      ("no_spill",), True),
-    (r"(?:stay|stays|remain|remains|keep|keeps|be|is) upright", ("destination_upright",), False),
+    (r"(?:stay|stays|remain|remains|keep|keeps) upright", ("destination_upright",), False),
     (r"tip(?:s|ped|ping)?(?: over)?|topple\w*|fall(?:s|ing)? over|fell over|knock\w* over"
      r"|turn\w* over|flip\w*", ("destination_upright",), True),
     (r"(?:stay|stays|remain|remains|keep|keeps|be|is) (?:still|put|in place|steady)", _STILL, False),
@@ -53,8 +53,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
 #: Words that ask: an auxiliary before its subject ("will it spill"), or a
 #: quantifier that needs none ("anything come out", "how much spills").
 _AUX = r"will|would|does|do|did|could|can|might|may|is|are|was|were|should|shall"
-#: Who acts: a clause with one of these as its subject says what is done, not what happens.
-_ACTORS = {"i", "we", "you", "robot", "arm", "gripper", "he", "she", "they"}
+#: Who acts: a clause with one of these in its subject says what is done, not what happens
+#: ("do I tip the cup"); the source moving is the scene's too ("does the source move slowly").
+_ACTORS = {"i", "we", "you", "robot", "arm", "gripper", "hand", "he", "she", "they"}
 #: The words that may follow an outcome's verb and are heard with it ("drip on the
 #: table", "spill out of the cup", "go into the bowl"): the scene's words stay the scene's.
 _REST = ("on|onto|over|out|of|in|into|inside|outside|the|a|an|table|floor|counter|worktop|top|"
@@ -77,7 +78,7 @@ def _patterns() -> tuple[re.Pattern, re.Pattern, re.Pattern, re.Pattern]:
     verbs = "|".join(f"(?P<v{k}>{v})" for k, (v, _, _) in enumerate(OUTCOMES))
     subject = r"(?P<subject>(?: (?!(?:if|when|while|not)\b)[a-z]+){0,4}?)"
     asked = re.compile(
-        rf"\b(?:(?P<aux>{_AUX})(?P<neg> not)?{subject}|(?P<quant>how much(?: \w+)?|anything|"
+        rf"(?<!that )(?<!which )\b(?:(?P<aux>{_AUX})(?P<neg> not)?{subject}|(?P<quant>how much(?: \w+)?|anything|"
         rf"something|everything|nothing|any (?:liquid|water)|all of it|it all))"
         rf" (?:all |any |ever |even |still |not )?(?:{verbs})\b{_END}")
     nominal = re.compile(r"\b(?:(?:is|will) there (?:be )?)?(?:any|a|no|some) (?P<v1>spill(?:s|age)?"
@@ -98,6 +99,11 @@ def _which(m: re.Match) -> tuple[tuple[str, ...], bool]:
     return OUTCOMES[k][1], OUTCOMES[k][2]
 
 
+def _acts(subject: list[str], names: tuple[str, ...]) -> bool:
+    """Whether a clause with `subject` says what is done rather than what happens."""
+    return bool(_ACTORS.intersection(subject)) or (names == _STILL and "source" in subject)
+
+
 def hear(text: str) -> Heard:
     """The expectations `text` asks about and the goals it says (see the
     module's docstring)."""
@@ -113,9 +119,9 @@ def hear(text: str) -> Heard:
 
     def as_goal(m: re.Match) -> str:
         subject = (m.group("gsub") or "").split()
-        if subject and subject[0] in _ACTORS:
-            return m.group(0)
         names, bad = _which(m)
+        if _acts(subject, names):
+            return m.group(0)
         negated = (m.group(0).startswith("without") or bool(m.group("gnot"))
                    or any(w in ("nothing", "none", "no", "never") for w in subject))
         holds = (not bad) != negated
@@ -126,9 +132,9 @@ def hear(text: str) -> Heard:
 
     def as_asked(m: re.Match) -> str:
         subject = (m.group("subject") or "").split()
-        if subject and subject[0] in _ACTORS:
-            return m.group(0)
         names, _ = _which(m)
+        if _acts(subject, names):
+            return m.group(0)
         asked.extend(n for n in names if n not in asked)
         kept = " ".join(subject) if m.group("aux") else ""
         return take(m, kept)

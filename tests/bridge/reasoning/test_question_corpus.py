@@ -253,8 +253,10 @@ HEARD = {
     'pour so that the cup does not touch the bowl': ([], [], ['source_clear']),
     'pour from high up without spilling or tipping the bowl over': (
         ['pour_high'], [], ['no_spill', 'destination_upright']),
+    'does the source bump into the bowl?': ([], ['source_clear'], []),
     # a clause about what is done is no outcome
     'does the source move in fast?': (['fast_approach'], [], []),
+    'pour so the cup is upright at the end': (['end_upright'], [], []),
 }
 
 #: Wordings of the scene (issue wordings), read as meant
@@ -310,6 +312,7 @@ REFUSED_SAYING = {
     'pour slowly': 'move in slowly',
     'pour fast': 'move in slowly',
     'pour it gently': 'move in slowly',
+    'will the source move slowly?': '"move to the pouring pose slowly"',
     'without tilting it much': '"slightly tilted" or "upright"',
     'leave it tilted': 'tilted how far?',
     'pour from the side, tilted': 'tilted how far?',
