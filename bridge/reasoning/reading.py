@@ -99,9 +99,9 @@ def _lexicon() -> _Lexicon:
         slots[n] = ("stage", first) if first in POSE else (
             ("stage", last) if last in POSE else ("object", last))
     placeable = set().union(*phrases) - {"very"}
-    # the expectations' words, by their names and glosses ("does the liquid spill?")
-    asked = {stem(w) for e in vocab.expectations
-             for w in re.findall(r"[a-z]+", f"{e.name} {e.gloss}".lower())}
+    # the expectations' words, by their names ("does the liquid spill?"); the
+    # clauses that ask about them are outcomes.py's
+    asked = {stem(w) for e in vocab.expectations for w in e.name.split("_")}
     texts = [*(p.gloss for p in props.values()), *(d.gloss for d in vocab.dimensions.values()),
              *(p.gloss for p in vocab.parameters)]
     known = {stem(w) for t in texts for w in re.findall(r"[a-z]+", t.lower())} | asked
