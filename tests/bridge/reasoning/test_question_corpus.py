@@ -357,3 +357,37 @@ def test_no_word_is_dropped_silently(question):
     lost = [w for w in re.findall(r"[a-z]+", said)
             if w not in accounted and w not in frame]
     assert lost == []
+
+
+def _middles(param: str) -> list[tuple[float, str]]:
+    """(the middle of its range, the proposition) for each proposition of `param`."""
+    from pantarhei.theory.lexicon import load_vocabulary
+
+    return [((p.model.low + p.model.high) / 2, n)
+            for n, p in load_vocabulary().propositions.items()
+            if p.model.kind == "uniform" and p.model.param == param]
+
+
+@pytest.mark.parametrize("minus", ["-", "\u2212", "minus "])
+@pytest.mark.parametrize("template,param,scale", [
+    ("pour with the source tilted at {} degrees", "pour_pitch", 1),
+    ("end tilted at {} degrees", "end_pitch", 1),
+    ("pour {} cm above the rim", "pour_z", 10),
+    ("start {} mm above the rim", "start_z", 1),
+])
+def test_a_number_is_read_with_its_sign_as_the_proposition_whose_range_holds_it(
+        template, param, scale, minus):
+    """Whatever the vocabulary's ranges, the middle of each, negative or
+    not, written with any minus, is read as its proposition."""
+    for value, name in _middles(param):
+        number = f"{abs(value) / scale:g}"
+        said = template.format(f"{minus}{number}" if value < 0 else number)
+        assert understand(said) == [name], said
+
+
+@pytest.mark.parametrize("minus", ["-", "\u2212"])
+@pytest.mark.parametrize("question", ["a source bowl of {}300 g", "move in over {}2 seconds",
+                                      "with {}50 particles", "pour {}100 ml of water"])
+def test_nothing_that_cannot_be_negative_is_read_negative(question, minus):
+    with pytest.raises(UserError, match="cannot be negative"):
+        understand(question.format(minus))
