@@ -72,7 +72,8 @@ def vocab(args: argparse.Namespace) -> int:
         for name in d.values:
             p = v.propositions[name]
             print(f"    {p.rank}. {p.name:26} \"{p.gloss}\"  {model_words(p.model)}")
-    print(f"\n{len(v.expectations)} expectations")
+    print(f"\n{len(v.expectations)} expectations (each holds in a pour when its score is above "
+          f"one half: of the liquid, a majority, not all of it)")
     for e in v.expectations:
         print(f"  {e.name:30} ({e.stage}) {e.gloss}")
     return 0

@@ -7,14 +7,16 @@
 %
 % expectation(Name, Stage, Gloss): Stage is approach, retreat, settle, or
 %   whole (over the whole pour). The oracle scores each in [0, 1]: 1 when
-%   the expectation plainly holds, 0 when it plainly fails.
+%   the expectation plainly holds, 0 when it plainly fails; it holds in a
+%   pour when its score is above one half (of the liquid: a majority, not
+%   all of it), and the gloss says so.
 
 expectation(destination_still_approach, approach, "the destination stays still while the source moves into the pouring pose").
 expectation(destination_still_retreat, retreat, "the destination stays still while the source moves away").
 expectation(destination_still_settle, settle, "the destination stays still while everything settles").
 expectation(destination_upright, whole, "the destination does not tip over").
 expectation(source_clear, whole, "the source does not bump into the destination").
-expectation(liquid_leaves_source, whole, "all the liquid leaves the source").
-expectation(liquid_enters_destination, whole, "all the liquid enters the destination").
-expectation(liquid_remains_in_destination, settle, "all the liquid remains in the destination").
-expectation(no_spill, whole, "no liquid is spilled outside both bowls").
+expectation(liquid_leaves_source, whole, "most of the liquid leaves the source (more than half)").
+expectation(liquid_enters_destination, whole, "most of the liquid enters the destination (more than half)").
+expectation(liquid_remains_in_destination, settle, "most of what enters the destination stays in it (also when none enters)").
+expectation(no_spill, whole, "less than half of the liquid is spilled outside both bowls").
