@@ -21,7 +21,7 @@ from typing import Sequence
 from pantarhei.bridge.errors import MissingEngine, TheoryFileError, UserError, safe_line
 
 #: Modules of pantarhei.bridge.commands, in the order `--help` lists them.
-COMMANDS = ("vocab", "demo", "simulate", "explore", "querying", "plan", "evaluate")
+COMMANDS = ("vocab", "demo", "simulate", "explore", "querying", "plan", "rules", "evaluate")
 
 
 class _Parser(argparse.ArgumentParser):
