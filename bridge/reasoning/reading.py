@@ -51,6 +51,7 @@ from pantarhei.bridge.reasoning.outcomes import hear
 from pantarhei.bridge.reasoning.quantities import read_numbers
 from pantarhei.bridge.reasoning.stages import MARKER_STEMS, MOVE, POSE, stages
 from pantarhei.bridge.reasoning.wording import Token, normalised, stem, tokens as words_of
+from pantarhei.bridge.reasoning.suggestions import misspelt
 from pantarhei.bridge.reasoning.words import FILLERS, HINTS, SAID_BACK, UNCLEAR, rewrites
 from pantarhei.theory.lexicon import load_vocabulary
 
@@ -195,8 +196,9 @@ def read_question(question: str) -> Reading:
     _refuse_unplaced(question, tokens, accepted, lex)
     out += _same_at_the_end(tokens, out, vocab)
     if not accepted and not _ordinary(tokens, lex, bool(outcome.asked or outcome.goals)):
-        raise UserError(f"understood none of \"{question}\": describe the scene with the "
-                        f"words of `pantarhei vocab`, or give --props P1,P2")
+        hint = misspelt([t.raw for t in tokens if t.word not in lex.known])
+        raise UserError(f"understood none of \"{question}\": " + (hint[0] if hint else (
+            "describe the scene with the words of `pantarhei vocab`, or give --props P1,P2")))
     taken = set().union(set(), *(p for _, p in accepted))
     structural = _IGNORED | NEGATION_STEMS | set(OBJECT_STEMS) | {BOWL} | set(MARKER_STEMS)
     ignored = [t.raw for i, t in enumerate(tokens) if i not in taken and t.word not in structural
@@ -379,6 +381,7 @@ def _refuse_unplaced(question: str, tokens: list[Token], accepted, lex: _Lexicon
         glosses = list(dict.fromkeys(g for w in value_words for g in lex.saying[w]))
         if len(glosses) <= 4:
             hints = ["would be read: " + ", ".join(f'"{g}"' for g in glosses)]
+    hints += misspelt([t.raw for t in tokens if t.word not in lex.known])
     hint = "; ".join(hints) if hints else ("describe the scene with the words of `pantarhei "
                                           "vocab`, or give --props P1,P2")
     raise UserError(f"could not place {said} in \"{question}\": {hint}")

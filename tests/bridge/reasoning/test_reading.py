@@ -292,3 +292,13 @@ def test_ask_says_back_everyday_words_and_shows_what_it_ignored():
     assert out["asked"] == ["liquid_remains_in_destination", "no_spill"]
     assert any(n.startswith("milk: read as an ordinary liquid") for n in out["notes"])
     assert out["ignored"] == ["very"]
+
+
+@pytest.mark.parametrize("question,words", [
+    ("pour from the side, tilded steeply", "did you mean 'tilted' for 'tilded'?"),
+    ("pour a havy liquid from the sde", "did you mean 'heavy' for 'havy', 'side' for 'sde'?"),
+])
+def test_a_misspelt_word_is_refused_with_the_word_it_is_close_to(question, words):
+    with pytest.raises(UserError) as e:
+        understand(question)
+    assert words in str(e.value) and "\n" not in str(e.value)

@@ -1,0 +1,28 @@
+"""Words a refusal offers for a word it could not read: the vocabulary's
+word it is close to ("tilded": "tilted"), as the glosses and the everyday
+phrases of words.py write them."""
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+from pantarhei.bridge.reasoning.words import PHRASES
+from pantarhei.theory.lexicon import load_vocabulary
+
+
+@lru_cache(maxsize=None)
+def _spelt() -> tuple[str, ...]:
+    """The words of four letters or more of the glosses and the phrases."""
+    texts = [p.gloss for p in load_vocabulary().propositions.values()] + [
+        " ".join(re.findall(r"[a-z]+", p)) for _, ps in PHRASES for p in ps if not p.startswith("re:")]
+    return tuple(sorted({w for t in texts for w in re.findall(r"[a-z]{4,}", t.lower())}))
+
+
+def misspelt(words: list[str]) -> list[str]:
+    """One "did you mean" for those of `words` close to one of the
+    vocabulary's, or none."""
+    import difflib
+
+    near = {w: difflib.get_close_matches(w.lower(), _spelt(), n=1, cutoff=0.8) for w in words}
+    return [f'did you mean {", ".join(f"{m[0]!r} for {w!r}" for w, m in near.items() if m)}?'
+            ] if any(near.values()) else []
