@@ -287,7 +287,7 @@ check_fact_text(Term, Pos, Comments, Text) :-
     ;   true
     ),
     check_top(Term),
-    check_text(Pos, Term, Text, top),
+    check_text(Pos, Term, Text, top-0),
     (   member(_-C, Comments), sub_string(C, 0, 2, _, "/*")
     ->  bad(expected)
     ;   true
@@ -300,9 +300,10 @@ term_start(_, 0).
 bad(expected) :- !, throw(bad_fact("expected a fact such as name(arg, 1).")).
 bad(M) :- throw(bad_fact(M)).
 
-% check_text(+Pos, +Term, +Text, +Where): Term is written in Text as the
-% language writes it (an unquoted name, a decimal integer, "..." with the
-% three escapes, name(...) without layout before the parenthesis).
+% check_text(+Pos, +Term, +Text, +Where-Depth): Term is written in Text as
+% the language writes it (an unquoted name, a decimal integer, "..." with
+% the three escapes, name(...) without layout before the parenthesis),
+% nested at most nesting_at_most/1 deep (Depth: the terms it lies in).
 check_top(Term) :-
     (   var(Term)
     ->  true                                    % check_text/4 says so
@@ -324,7 +325,7 @@ check_text(_, T, _, _) :-
 check_text(_, T, _, _) :-
     ( T == [] ; T = [_|_] ), !,
     bad("an atom, integer, text or term, not a list").
-check_text(From-To, T, Text, Where) :-
+check_text(From-To, T, Text, Where-_) :-
     !,
     (   atom(T)
     ->  atom_length(T, N),
@@ -335,7 +336,7 @@ check_text(From-To, T, Text, Where) :-
         check_integer(Raw, T)
     ;   bad(expected)
     ).
-check_text(string_position(From, To), T, Text, arg) :-
+check_text(string_position(From, To), T, Text, arg-_) :-
     string(T), !,
     Len is To - From,
     sub_string(Text, From, Len, _, Raw),
@@ -346,7 +347,7 @@ check_text(string_position(From, To), T, Text, arg) :-
         )
     ;   bad(expected)
     ).
-check_text(term_position(From, _, From, FTo, ArgsPos), T, Text, _) :-
+check_text(term_position(From, _, From, FTo, ArgsPos), T, Text, _-Depth) :-
     compound(T),
     compound_name_arguments(T, Name, Args),
     Args \== [],
@@ -355,13 +356,24 @@ check_text(term_position(From, _, From, FTo, ArgsPos), T, Text, _) :-
     lower_name(Name),
     sub_string(Text, FTo, 1, _, "("),
     !,
-    foldl(check_arg_text(Text), ArgsPos, Args, 0, _).
+    nesting_at_most(Most),
+    (   Depth >= Most
+    ->  format(string(M), "a term nested at most ~d deep", [Most]),
+        bad(M)
+    ;   Depth1 is Depth + 1
+    ),
+    foldl(check_arg_text(Text, Depth1), ArgsPos, Args, 0, _).
 check_text(_, _, _, _) :-
     bad(expected).
 
-check_arg_text(Text, Pos, Arg, N, N1) :-
+check_arg_text(Text, Depth, Pos, Arg, N, N1) :-
     N1 is N + 1,
-    check_text(Pos, Arg, Text, arg).
+    check_text(Pos, Arg, Text, arg-Depth).
+
+% nesting_at_most(-Most): how deep a term may nest (a theory's facts nest
+% two or three deep), so that every reader after this one may recurse on
+% terms (bridge/theories/facts.py's NESTING_AT_MOST).
+nesting_at_most(32).
 
 check_integer(Raw, N) :-
     (   string_codes(Raw, Cs),

@@ -48,6 +48,13 @@ from pantarhei.bridge.theories.model import Rule, Theory, complement, superiorit
 from pantarhei.bridge.theories.native import from_facts
 from pantarhei.bridge.theories.well_formed import value_text
 
+#: The most rule instances grounding a file's rules with variables may give,
+#: and the most partial bindings it may try on the way (all rounds of its
+#: fixpoint together): past either, the file is refused at the rule's line,
+#: so that a small file cannot ask for |facts|^variables instances.
+GROUND_AT_MOST = 100_000
+GROUND_STEPS_AT_MOST = 2_000_000
+
 #: A comment holding a native fact DFL has no form for.
 ANNOTATION = "# pantarhei: "
 #: The native predicates DFL has a form for, which no such comment holds.
@@ -256,6 +263,7 @@ def _ground(schemas: list[tuple[Rule, int]], facts: list[str],
     rules: list[Rule] = []
     origin: dict[str, str] = {}
     open_rules = []
+    lines: dict[str, int] = {}
     for r, n in schemas:
         vars_ = set().union(*(_variables(x) for x in (r.head, *r.body)))
         if not vars_:
@@ -265,7 +273,9 @@ def _ground(schemas: list[tuple[Rule, int]], facts: list[str],
         if not _variables(r.head) <= set().union(*(_variables(b) for b in r.body), set()):
             raise TheoryFileError(f"{source}:{n}: every variable of the head must occur in the body")
         open_rules.append(r)
+        lines[r.id] = n
     known = set(facts) | {r.head for r in rules}
+    budget = [GROUND_STEPS_AT_MOST]
     done: set[str] = set()
     changed = True
     while changed and open_rules:
@@ -275,7 +285,13 @@ def _ground(schemas: list[tuple[Rule, int]], facts: list[str],
             key, args = _args(lit)
             index.setdefault(key, []).append(args)
         for r in open_rules:
-            for binding in _matches(r.body, index):
+            for binding in _matches(r.body, index, budget):
+                if budget[0] < 0 or len(rules) >= GROUND_AT_MOST:
+                    raise TheoryFileError(
+                        f"{source}:{lines[r.id]}: grounding the rules with variables over the "
+                        f"facts passes {GROUND_AT_MOST:,} instances or {GROUND_STEPS_AT_MOST:,} "
+                        f"bindings tried (at rule {r.id}): write fewer variables or facts, or "
+                        f"the instances themselves")
                 inst = Rule(f"{r.id}_{'_'.join(binding[v] for v in sorted(binding))}".replace("-", "m"),
                             r.kind, _subst(r.head, binding), tuple(_subst(b, binding) for b in r.body))
                 if inst.id not in done:
@@ -288,13 +304,20 @@ def _ground(schemas: list[tuple[Rule, int]], facts: list[str],
     return rules, origin
 
 
-def _matches(body: tuple[str, ...], index: dict[str, list[tuple[str, ...]]]):
+def _matches(body: tuple[str, ...], index: dict[str, list[tuple[str, ...]]], budget: list[int]):
+    """The bindings of the body's variables that make every body literal
+    one of `index`; every binding tried takes one from budget[0], and when
+    it runs out one more binding is given, for the caller to refuse."""
     def go(i: int, binding: dict[str, str]):
         if i == len(body):
             yield dict(binding)
             return
         key, pattern = _args(body[i])
         for args in index.get(key, ()):
+            budget[0] -= 1
+            if budget[0] < 0:
+                yield binding
+                return
             b = dict(binding)
             if all(_bind(p, a, b) for p, a in zip(pattern, args)):
                 yield from go(i + 1, b)

@@ -41,6 +41,10 @@ INT_RANGE = "an integer from -2147483648 to 2147483647, not {}"
 INT_FORM = "an integer in decimal digits without leading zeros, not {}"
 TEXT_ESCAPE = "quoted text with \\\\, \\\" and \\n as its only escapes"
 NAME = "a name in lower case letters, digits and _, not '{}'"
+#: How deep a term may nest (a theory's facts nest two or three deep): every
+#: reader after this one may then recurse on terms without running out.
+NESTING_AT_MOST = 32
+NESTING = f"a term nested at most {NESTING_AT_MOST} deep"
 
 
 class Text(str):
@@ -290,6 +294,8 @@ class _Tokens:
         if state == "value":
             if kind == "name":
                 if text.startswith("(", after):
+                    if len(self.stack) >= NESTING_AT_MOST:
+                        self.fail(NESTING)
                     self.stack.append([tok])
                     self.state = "open"
                     return

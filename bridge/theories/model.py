@@ -270,7 +270,10 @@ def superiority_cycle(pairs: Iterable[tuple[str, str]], more=None) -> list[str] 
     """A shortest cycle [r, ..., r] of the relation `pairs` through the
     first rule (in sorted order) that lies on one; None if it is acyclic.
     `more(r)`, if given, lists further successors of r (a relation too
-    large to list whole); then only cycles through `pairs` are looked for."""
+    large to list whole); then only cycles through `pairs` are looked for.
+    Linear in the rules and pairs: the rules on a cycle are those of the
+    relation's strongly connected components (Tarjan's, without recursion),
+    and one breadth-first search from the first of them gives the cycle."""
     succ: dict[str, list[str]] = {}
     for a, b in pairs:
         succ.setdefault(a, []).append(b)
@@ -282,18 +285,76 @@ def superiority_cycle(pairs: Iterable[tuple[str, str]], more=None) -> list[str] 
         if node not in cache:
             cache[node] = succ.get(node, []) + more(node)
         return cache[node]
-    for start in sorted(succ):
-        paths = {b: [start, b] for b in succ[start]}
-        queue = deque(paths)
-        while queue:
-            node = queue.popleft()
-            if node == start:
-                return paths[node]
-            for nxt in following(node):
-                if nxt not in paths:
-                    paths[nxt] = paths[node] + [nxt]
-                    queue.append(nxt)
+    component = _components(sorted(succ), following)
+    start = next((r for r in sorted(succ)
+                  if any(component[b] == component[r] for b in succ[r])), None)
+    if start is None:
+        return None
+    parent: dict[str, str] = {}
+    queue = deque()
+    for b in succ[start]:
+        if b not in parent:
+            parent[b] = start
+            queue.append(b)
+    while queue:
+        node = queue.popleft()
+        if node == start:
+            path = [start]
+            node = parent[start]
+            while node != start:
+                path.append(node)
+                node = parent[node]
+            path.append(start)
+            return path[::-1]
+        for nxt in following(node):
+            if nxt not in parent:
+                parent[nxt] = node
+                queue.append(nxt)
     return None
+
+
+def _components(roots: list[str], following) -> dict[str, int]:
+    """The strongly connected component of each node reachable from `roots`
+    in the relation `following` (Tarjan's, iteratively): two nodes lie on
+    a cycle together when they have the same."""
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    on_stack: set[str] = set()
+    component: dict[str, int] = {}
+    for root in roots:
+        if root in index:
+            continue
+        index[root] = low[root] = len(index)
+        stack.append(root)
+        on_stack.add(root)
+        work = [(root, iter(following(root)))]
+        while work:
+            node, edges = work[-1]
+            pushed = False
+            for nxt in edges:
+                if nxt not in index:
+                    index[nxt] = low[nxt] = len(index)
+                    stack.append(nxt)
+                    on_stack.add(nxt)
+                    work.append((nxt, iter(following(nxt))))
+                    pushed = True
+                    break
+                if nxt in on_stack:
+                    low[node] = min(low[node], index[nxt])
+            if pushed:
+                continue
+            work.pop()
+            if work:
+                low[work[-1][0]] = min(low[work[-1][0]], low[node])
+            if low[node] == index[node]:
+                while True:
+                    x = stack.pop()
+                    on_stack.discard(x)
+                    component[x] = index[node]
+                    if x == node:
+                        break
+    return component
 
 
 def _strict_subsets(items: list[str]):
