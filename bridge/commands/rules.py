@@ -107,3 +107,23 @@ def rules(args: argparse.Namespace) -> int:
           "estimate pooled from every pour; held in K of N: the pours learned from that could "
           "have been drawn for its body, and in how many the expectation held)")
     return 0
+
+
+def rule_antecedent(paths: list[str] | None, rule_id: str, seed: int) -> str:
+    """`render --rule R`: the antecedent of rule R of the theory of `paths`
+    (the shipped theory for none), comma-separated, said on stdout with
+    the rule; UserError naming the nearest ids for a rule it lacks."""
+    from pantarhei.bridge.errors import UserError
+    from pantarhei.bridge.theories import loading
+
+    theory = loading.load(paths)
+    rule = next((r for r in theory.rules if r.id == rule_id), None)
+    if rule is None:
+        import difflib
+
+        near = difflib.get_close_matches(rule_id, [r.id for r in theory.rules], n=3, cutoff=0.6)
+        hint = f" (did you mean {', '.join(near)}?)" if near else ""
+        raise UserError(f"--rule: {theory.source} has no rule {rule_id}{hint}; see `pantarhei rules`")
+    print(f"rule {rule.id}: {', '.join(rule.body) or '(an ordinary pour)'} => {rule.head}: a pour "
+          f"of its body sampled with seed {seed}, as the pours it rests on were drawn")
+    return ",".join(rule.body)

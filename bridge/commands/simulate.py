@@ -47,6 +47,11 @@ def register(sub: argparse._SubParsersAction) -> None:
                         help="propositions describing the pour, comma-separated ('' for none)")
     source.add_argument("--params", metavar="FILE.json",
                         help="render the first parameterization in FILE")
+    source.add_argument("--rule", metavar="R",
+                        help="render a pour of rule R's body, sampled as the pours it rests on "
+                             "were drawn (see `pantarhei rules`)")
+    p.add_argument("--theory", action="append", metavar="FILE",
+                   help="with --rule: the theory file(s) R is in (default: the shipped theory)")
     options.add_seed(p, 0, "the sampling")
     p.add_argument("--out", default="pour.gif", help="the GIF to write (default pour.gif)")
     p.add_argument("--frames", metavar="DIR", help="also write each frame as a PNG into DIR")
@@ -283,6 +288,12 @@ def render(args: argparse.Namespace) -> int:
             raise ValueError
     except ValueError:
         raise UserError(f"--size must be WxH with both from 16 to 4096, not '{args.size}'") from None
+    if args.theory and args.rule is None:
+        raise UserError("--theory goes with --rule: the theory the rule is in")
+    if args.rule is not None:             # a pour of the rule's body
+        from pantarhei.bridge.commands.rules import rule_antecedent
+
+        args.antecedent = rule_antecedent(args.theory, args.rule, args.seed)
     P, props = _parameterizations(args, 1)
     if not str(args.out).lower().endswith(".gif"):
         raise UserError(f"--out must name a .gif file, not '{args.out}'")

@@ -47,3 +47,17 @@ def test_rules_of_the_shipped_theory_count_pours_as_ask_does(cli) -> None:
 def test_rules_refuses_an_unknown_expectation_in_one_line(cli) -> None:
     line = assert_one_line_error(cli("rules", "--expectation", "no_spil"))
     assert "did you mean no_spill" in line
+
+
+def test_render_draws_a_pour_of_a_rules_body(cli, tmp_path: Path) -> None:
+    f, gif = tmp_path / "t.pl", tmp_path / "r.gif"
+    f.write_text(THEORY)
+    r = cli("render", "--rule", "g1_no_spill", "--theory", str(f), "--out", str(gif),
+            "--size", "64x48", "--fps", "2")
+    assert r.code == 0, r.err
+    assert r.out.startswith("rule g1_no_spill: pour_to_side => neg(no_spill): a pour of its body")
+    assert gif.read_bytes()[:6] in (b"GIF87a", b"GIF89a")
+    line = assert_one_line_error(cli("render", "--rule", "g1_nospill", "--theory", str(f),
+                                     "--out", str(gif)))
+    assert "did you mean g1_no_spill" in line
+    assert_one_line_error(cli("render", "--antecedent", "", "--theory", str(f), "--out", str(gif)))
