@@ -18,6 +18,20 @@ every pair that holds it and has no rule of its own; a pair gets a rule
 where the two propositions interact: where neither proposition's rule
 gives the pair's likelihood. Every pair of conflicting rules that can
 apply together is ordered by rank (`Sup`).
+
+Where sure rules meet (`doubt_support`). Two rules that conclude
+opposite heads, each sure of it (`doubt_confidence`), and can apply
+together, neither body holding the other, say nothing of a scene that
+holds both: the rank that orders them is no evidence. For the union of
+their bodies (at most `max_body` propositions) the learner asks the
+pours. Where fewer than `doubt_support` of them lie in its support, it
+adds a rule whose likelihood, the model's estimate held within the
+uncertain band, answers `maybe`: the theory says it does not know, and
+which way it leans, instead of one part's sure verdict. Where more do,
+and the model's verdict for the union is not the higher ranked part's, it
+adds a rule with the model's likelihood: a rule wherever the pours
+support one. These rules come after the contrasts, within
+`rules_per_expectation`, the most conflicting pair first.
 """
 from __future__ import annotations
 
@@ -55,14 +69,20 @@ class Settings:
     pair_weight: float = 0.2
     #: the weighted cost a new rule must remove
     min_gain: float = 0.1
+    #: the pours of their own below which the union of two conflicting
+    #: rules' bodies, each rule at least `doubt_confidence` sure of its
+    #: head, gets an uncertain rule (0: never)
+    doubt_support: int = 4
+    doubt_confidence: float = 0.8
 
     def __post_init__(self) -> None:
         if self.rules_per_expectation < 1 or not 0 <= self.max_body <= 2:
             raise ValueError("rules_per_expectation must be at least 1 and max_body 0 to 2")
         if not 0 <= self.band < 0.5 or self.draws < 1:
             raise ValueError("band in [0, 1/2), draws at least 1")
-        if min(self.miss, self.default_weight, self.pair_weight, self.min_gain) < 0:
-            raise ValueError("miss, weights and min_gain at least 0")
+        if min(self.miss, self.default_weight, self.pair_weight, self.min_gain,
+               self.doubt_support) < 0:
+            raise ValueError("miss, weights, min_gain and doubt_support at least 0")
 
     def verdict(self, likelihood):
         """HOLDS, FAILS or UNKNOWN (uncertain) for a likelihood that e holds
@@ -108,12 +128,14 @@ def _generalize(P: np.ndarray, S: np.ndarray, settings: Settings,
         bodies = askable_bodies(settings.max_body)
     else:
         bodies = list(dict.fromkeys([()] + [tuple(sorted(str(p) for p in b)) for b in among]))
-    T = Meaning(P, Y, settings)(bodies)
+    meaning = Meaning(P, Y, settings)
+    T = meaning(bodies)
     known = np.isfinite(T[:, 0])
     bodies, T = [b for b, k in zip(bodies, known) if k], T[known]
     out = General(band=settings.band)
     for k, e in enumerate(vocab.expectation_names):
         rules = _Contrasts(e, bodies, T[:, k], settings).learn()
+        rules += _doubts(rules, k, meaning, P, settings)
         out.rules.extend(_with_evidence(r, P, Y[:, k]) for r in rules)
     for e in vocab.expectation_names:
         out.sup.extend(_superiority(out.of(e)))
@@ -193,6 +215,55 @@ class _Contrasts:
             answered[at] = rule.likelihood
             now[at] = self.cost(answered[at], at)
         return chosen
+
+
+def _doubts(rules: list[GeneralRule], k: int, meaning: Meaning, P: np.ndarray,
+            s: Settings) -> list[GeneralRule]:
+    """The rules for the unions of sure, conflicting rules' bodies (at most
+    `max_body` propositions), the most conflicting pair first, as many as
+    `rules_per_expectation` leaves room for: where fewer than
+    `doubt_support` pours lie in a union's support, a rule whose likelihood
+    is the model's (expectation k) held within the uncertain band (the
+    pours do not tell); where more do, a rule with the model's likelihood
+    when the part that ranks higher answers otherwise."""
+    room = s.rules_per_expectation - len(rules)
+    if room <= 0 or not s.doubt_support:
+        return []
+    have = {tuple(sorted(r.body)) for r in rules}
+    pairs = []
+    for r, q in combinations(rules, 2):
+        a, b = set(r.body), set(q.body)
+        union = tuple(sorted(a | b))
+        if (r.holds == q.holds or not a or not b or a <= b or b <= a
+                or len(union) > s.max_body or union in have or not together(r.body, q.body)
+                or min(r.confidence, q.confidence) < s.doubt_confidence):
+            continue
+        pairs.append((-abs(r.likelihood - q.likelihood), union, max(r, q, key=lambda x: x.rank)))
+    seen: set = set()
+    todo = []
+    for _, union, top in sorted(pairs, key=lambda x: (x[0], x[1])):
+        if union not in seen:
+            seen.add(union)
+            todo.append((union, top))
+    if not todo:
+        return []
+    inside = s.band - 0.002          # strictly within the band, once written in permille
+    out: list[GeneralRule] = []
+    M = meaning([u for u, _ in todo])[:, k]
+    for (union, top), m in zip(todo, M):
+        if len(out) >= room or not np.isfinite(m):
+            continue
+        if int(in_support(P, union).sum()) < s.doubt_support:
+            p = float(np.clip(m, 0.5 - inside, 0.5 + inside))
+        elif s.verdict(m) != s.verdict(top.likelihood):
+            p = float(m)
+        else:
+            continue
+        holds = p >= 0.5
+        rule = GeneralRule(f"g{len(rules) + len(out)}_{rules[0].expectation}", union,
+                           rules[0].expectation, holds, 0, 0, p if holds else 1 - p, 0)
+        out.append(replace(rule, level=_level(union, holds, rules + out)))
+    return out
 
 
 def _level(body, r_holds: bool, chosen: Sequence[GeneralRule]) -> int:

@@ -13,10 +13,12 @@ import numpy as np
 import pytest
 
 from pantarhei.bridge.evaluation.heldout import random_exploration
-from pantarhei.bridge.evaluation.measures import FAILS, HOLDS, UNKNOWN
+from pantarhei.bridge.evaluation.measures import FAILS, HOLDS, UNKNOWN, verdicts
 from pantarhei.bridge.evaluation.rule_building import answer_matrix
 from pantarhei.bridge.learning.gaps import gap_pours
-from pantarhei.bridge.learning.generalize import Settings, generalize
+from pantarhei.bridge.learning.general_rules import General, GeneralRule
+from pantarhei.bridge.learning.generalize import Settings, _doubts, generalize
+from pantarhei.bridge.learning.meaning import Meaning
 from pantarhei.bridge.reasoning.scenes import random_antecedents
 from pantarhei.oracle.generative import sample, to_dict
 from pantarhei.oracle.simulator import make_simulator
@@ -230,3 +232,45 @@ def test_every_variant_of_the_logic_decides_alike(synthetic):
             said = {o.expectation: {"holds": HOLDS, "fails": FAILS}.get(o.value, UNKNOWN)
                     for o in what_happens(theory, list(scene), sem)}
             assert said == ours, (scene, sem)
+
+
+def centred_unless_light(p) -> bool:
+    """Spills unless poured over the centre with a liquid that is not light."""
+    return not (abs(p["pour_x"]) <= 20 and p["particle_mass"] > 800)
+
+
+def test_two_sure_rules_that_conflict_say_what_the_pours_of_both_show_or_maybe():
+    """Over the centre nothing spills, and a light liquid spills: each is a
+    sure rule of its own. For a scene of both, the rank that orders the two
+    is no evidence: where pours of light liquids poured over the centre
+    were learned from, the theory says what they show (a spill); where
+    none were, it says maybe."""
+    P, S = pours(centred_unless_light, 4, [("pour_centred",)] * 3 + [("light_liquid",)] * 3)
+    pair = ("light_liquid", "pour_centred")
+    bodies = [(), ("pour_centred",), ("light_liquid",)]
+    covered = generalize(P, S, FAST, bodies)
+    parts = {r.body: r for r in covered.of(E)}
+    assert parts[("pour_centred",)].holds and not parts[("light_liquid",)].holds
+    assert min(parts[("pour_centred",)].confidence, parts[("light_liquid",)].confidence) >= 0.8
+    assert covered.decide(set(pair))[E][0] == FAILS
+    # no pour of the pair's support: the two sure rules say maybe together
+    apart = ~((np.abs(P[:, _index("pour_x")]) <= 20) & (P[:, _index("particle_mass")] <= 800))
+    sure = [GeneralRule("g0_no_spill", (), E, False, 0, 0, 0.75, 0),
+            GeneralRule("g1_no_spill", ("pour_centred",), E, True, 0, 0, 0.99, 1),
+            GeneralRule("g2_no_spill", ("light_liquid",), E, False, 0, 0, 0.99, 1)]
+    k = NAMES.index(E)
+    meaning = Meaning(P[apart], verdicts(S[apart]), FAST)
+    (doubted,) = _doubts(sure, k, meaning, P[apart], FAST)
+    assert doubted.body == pair and FAST.verdict(doubted.likelihood) == UNKNOWN
+    theory = General(rules=sure + [doubted])
+    assert theory.decide(set(pair))[E] == (UNKNOWN, doubted.id)
+    assert General(rules=sure).decide(set(pair))[E][0] != UNKNOWN    # one part, for sure
+    # nor for sure rules whose bodies nest, or with doubt_support 0
+    assert not _doubts(sure, k, meaning, P[apart], Settings(seed=3, draws=24, doubt_support=0))
+    nested = sure[:2] + [GeneralRule("g2_no_spill", ("light_liquid", "pour_centred"), E, False,
+                                     0, 0, 0.99, 2)]
+    assert not _doubts(nested, k, meaning, P[apart], FAST)
+
+
+def _index(name: str) -> int:
+    return [p.name for p in load_vocabulary().parameters].index(name)
