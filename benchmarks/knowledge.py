@@ -284,7 +284,19 @@ def table(rows: list[dict], oracle: str, seeds: Sequence[int]) -> str:
            f"Written by `python -m benchmarks knowledge --oracle {oracle}`; seeds "
            f"{', '.join(map(str, seeds))}, medians [lowest-highest]. Each method learns the "
            "same kind of theory from its own pours only, every pour counted "
-           "(benchmarks/knowledge.py says how each chooses).", "",
+           "(benchmarks/knowledge.py says how each chooses): over its own bodies (the "
+           "antecedents it explored; every askable body for uncertainty sampling and "
+           "MAP-Elites) and, so that the choice of pours is compared apart from the choice of "
+           "bodies, over every askable body (*every askable body*). The questions are those of "
+           "bridge/evaluation/questions.json (contrast keys: where the defaults-only answer is "
+           "wrong); *interactions* are the 64 pairs of pose propositions of "
+           "bridge/evaluation/interactions.json and *random scenes* 40 uniformly random valid "
+           "scenes of 5 to 8 propositions, each keyed by the majority of 20 pours (contrast "
+           "keys: clear keys that depart from the ordinary pour's verdict). A confident error "
+           "states a likelihood of 80% or more on the side a clear key contradicts. Behaviours "
+           "seen: distinct nine-verdict vectors that two or more of the method's pours show; "
+           "in the theory: distinct nine-verdict answers, all decided, for its rules' bodies.",
+           "",
            "| method | pours | " + " | ".join(label for _, label in cols) + " |",
            "|---|---|" + "---|" * len(cols)]
     for n in budgets:
