@@ -18,6 +18,7 @@ provides.
 :- use_module(learned_rules).
 :- use_module(queries).
 :- use_module(ask).
+:- use_module(theory_view).
 :- use_module(curiosity).
 
 :- initialization(load_shipped_theory).
