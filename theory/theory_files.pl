@@ -52,12 +52,15 @@ load_facts(File, Module) :-
 %   As load_facts/2, for a theory: the facts of its predicates (fact/1,
 %   rule/3, body/2, sup/2, learned/1, setting/2, provenance/3) must also be
 %   of their forms (check_theory_fact/2), a rule name is given once, and
-%   every body/2 belongs to a rule.
+%   every body/2 belongs to a rule. Facts of other predicates are read and
+%   checked but not added: one named like a built-in (=|halt.|=,
+%   =|call(a).|=) is data like any other, as Python's reader keeps it.
 %
 %   @error theory_error(File, Line, Expected) naming the first offence.
 load_theory_facts(File, Module) :-
     read_theory_file(File, LineFacts),
-    forall(member(_-F, LineFacts), add_fact(Module, F)).
+    forall(( member(_-F, LineFacts), functor(F, Name, Arity), theory_form(Name, _, Arity) ),
+           add_fact(Module, F)).
 
 %!  read_theory_file(+File, -LineFacts:list) is det.
 %
@@ -325,6 +328,9 @@ check_text(_, T, _, _) :-
 check_text(_, T, _, _) :-
     ( T == [] ; T = [_|_] ), !,
     bad("an atom, integer, text or term, not a list").
+check_text(_-_, not, _, _) :-
+    !,
+    bad("a name other than not (clingo reads it as negation)").
 check_text(From-To, T, Text, Where-_) :-
     !,
     (   atom(T)
@@ -356,6 +362,10 @@ check_text(term_position(From, _, From, FTo, ArgsPos), T, Text, _-Depth) :-
     lower_name(Name),
     sub_string(Text, FTo, 1, _, "("),
     !,
+    (   Name == not
+    ->  bad("a name other than not (clingo reads it as negation)")
+    ;   true
+    ),
     nesting_at_most(Most),
     (   Depth >= Most
     ->  format(string(M), "a term nested at most ~d deep", [Most]),

@@ -43,6 +43,7 @@ from typing import Sequence
 from pantarhei.theory import TheoryFileError
 
 from pantarhei.bridge.theories import facts as theory_facts
+from pantarhei.bridge.errors import quoted
 from pantarhei.bridge.files import is_dfl  # noqa: F401  (the format's test, with the format)
 from pantarhei.bridge.theories.model import Rule, Theory, complement, superiority_cycle
 from pantarhei.bridge.theories.native import from_facts
@@ -220,13 +221,19 @@ def _literal(text: str, where: str, ground: bool = False) -> str:
         negated, s = True, s[1:].strip()
     m = _TERM.match(s.replace(" ", ""))
     if not m or re.search(r"[A-Za-z0-9_)]\s+[A-Za-z0-9_(?]", s):
-        raise TheoryFileError(f"{where}: expected a literal such as p, -p or bird(tweety), not '{text.strip()}'")
+        raise TheoryFileError(f"{where}: expected a literal such as p, -p or bird(tweety), "
+                              f"not {quoted(text.strip())}")
     s = s.replace(" ", "")
+    if s.split("(", 1)[0] == "not":
+        raise TheoryFileError(f"{where}: {theory_facts.NOT_NAME}")
     if m.group(1):
         args = _split(m.group(2), where)
         for a in args:
             if not _ARG.match(a):
-                raise TheoryFileError(f"{where}: expected a constant or a variable ?x as argument, not '{a}'")
+                raise TheoryFileError(f"{where}: expected a constant or a variable ?x as argument, "
+                                      f"not {quoted(a)}")
+            if a == "not":
+                raise TheoryFileError(f"{where}: {theory_facts.NOT_NAME}")
             if a[0] in "-0123456789" and (problem := theory_facts.integer_problem(a)):
                 raise TheoryFileError(f"{where}: {problem}")     # clingo would wrap it
             if ground and _is_var(a):

@@ -45,6 +45,8 @@ NAME = "a name in lower case letters, digits and _, not '{}'"
 #: reader after this one may then recurse on terms without running out.
 NESTING_AT_MOST = 32
 NESTING = f"a term nested at most {NESTING_AT_MOST} deep"
+#: clingo reads `not` as its negation, never as a name.
+NOT_NAME = "a name other than not (clingo reads it as negation)"
 
 
 class Text(str):
@@ -101,9 +103,11 @@ _TOKEN = re.compile(r"""
 """, re.X | re.S)
 # A line holding one fact whose arguments are names, integers or terms of
 # those (the usual case), read without the tokenizer.
-_A0 = r"(?:[a-z][A-Za-z0-9_]*|-?[0-9]+)"
-_A1 = rf"(?:[a-z][A-Za-z0-9_]*\({_A0}(?:[ \t]*,[ \t]*{_A0})*\)|{_A0})"
-_FLAT = re.compile(rf"^[ \t]*([a-z][A-Za-z0-9_]*)\(({_A1}(?:[ \t]*,[ \t]*{_A1})*)\)\.[ \t\r]*(?:%[^\n]*)?$",
+# (never the name not, which the tokenizer refuses)
+_NAME = r"(?!not(?![A-Za-z0-9_]))[a-z][A-Za-z0-9_]*"
+_A0 = rf"(?:{_NAME}|-?[0-9]+)"
+_A1 = rf"(?:{_NAME}\({_A0}(?:[ \t]*,[ \t]*{_A0})*\)|{_A0})"
+_FLAT = re.compile(rf"^[ \t]*({_NAME})\(({_A1}(?:[ \t]*,[ \t]*{_A1})*)\)\.[ \t\r]*(?:%[^\n]*)?$",
                    re.M)
 _FLAT_ARG = re.compile(r"([a-z][A-Za-z0-9_]*)(?:\(([^()]*)\))?|(-?[0-9]+)")
 _COMMA = re.compile(r"[ \t]*,[ \t]*")
@@ -292,6 +296,8 @@ class _Tokens:
             self.fail(LIST)
         state = self.state
         if state == "value":
+            if kind == "name" and tok == "not":
+                self.fail(NOT_NAME)
             if kind == "name":
                 if text.startswith("(", after):
                     if len(self.stack) >= NESTING_AT_MOST:
