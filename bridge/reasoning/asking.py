@@ -223,11 +223,28 @@ def serving(swipl: str) -> list[str]:
     compiling the state meanwhile for the next question."""
     goal = ["-q", "--no-signals", "-g", "ask:serve", "-t", "halt"]
     state = compiled_state(swipl)
-    if state is not None and state.is_file():
+    if state is not None and _usable(state):
         return [swipl, "-x", str(state), *goal]
     if state is not None:
         _compile_state(swipl, state)
     return [swipl, *goal, str(THEORY_DIR / "ask.pl")]
+
+
+def _usable(state: Path) -> bool:
+    """Is the cached state there and whole (a ZIP archive, as SWI-Prolog
+    saves it)? One that is not (cut short, overwritten) is removed, so that
+    it is compiled again; a cache folder that cannot be read is no cache."""
+    import zipfile
+
+    try:
+        if not state.is_file():
+            return False
+        if zipfile.is_zipfile(state):
+            return True
+        state.unlink()
+    except OSError:
+        pass
+    return False
 
 
 def compiled_state(swipl: str) -> Path | None:
@@ -257,6 +274,8 @@ def _compile_state(swipl: str, state: Path) -> None:
     folder cannot be made)."""
     try:
         state.parent.mkdir(parents=True, exist_ok=True)
+        if not os.access(state.parent, os.W_OK | os.X_OK):
+            return
     except OSError:
         return
     tmp = state.with_name(f".{state.name}.{os.getpid()}")
