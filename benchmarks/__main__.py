@@ -13,8 +13,8 @@ import time
 #: The benchmark modules: the front door (start-up, questions as typed), then in the order the
 #: loop runs: the world, the exploration and what it discovers, the
 #: reasoning, the general theory.
-MODULES = ("startup", "typed_questions", "oracle", "exploration", "discovery", "knowledge",
-           "reasoning", "loading", "generalization")
+MODULES = ("startup", "typed_questions", "checking", "oracle", "exploration", "discovery",
+           "knowledge", "reasoning", "loading", "generalization")
 
 
 def main() -> int:
