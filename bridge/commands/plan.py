@@ -151,6 +151,10 @@ def print_plans(theory, goals: list[str], given: list[str], alternatives: int, v
 
         write_text(learned_out, found.theory.native())
     if not found.verified:
+        if as_json:         # the search for a program, and the reason in one line
+            print(json.dumps({**plan_json(found.theory, found.goals, found.added, found.given, [],
+                                          found, oracle, learned_out), "none": found.reason},
+                             indent=1))
         raise UserError(f"no plan found: {found.reason}")
     if as_json:
         print(json.dumps(plan_json(found.theory, found.goals, found.added, found.given,

@@ -79,9 +79,12 @@ def print_search(found, oracle: str, learned_out: str | None) -> None:
     for line in _goals_line(found.goals, found.added, found.given):
         print(line)
     kept = (f"written to {learned_out}" if learned_out else "not written: --learned-out FILE keeps them")
+    from pantarhei.oracle.base import REAL_ORACLES
+
+    where = oracle if oracle in REAL_ORACLES else f"{oracle}: analytic test scores, not a simulation"
     print(f"searched: {len(found.tried)} plan{'s' if len(found.tried) != 1 else ''} in "
           f"{found.rounds} round{'s' if found.rounds != 1 else ''}, {found.pours} of "
-          f"{found.budget} pours ({oracle}); {found.learned} rules learned from them ({kept})")
+          f"{found.budget} pours ({where}); {found.learned} rules learned from them ({kept})")
     for t in found.tried:
         if not t.verified:
             print(f"  refuted: {', '.join(t.plan.chosen) or 'the context alone'} ({t.origin}, "

@@ -8,10 +8,12 @@ pooled), and its answer for each plan tried (its antecedent: the given
 context and the manners chosen) becomes, per expectation, a learned rule
 with that antecedent as its body, and its provenance: the layer (plans),
 the support and kept pours, the confidence in permille. A planned rule
-beats a rule of the theory it conflicts with in a scene both can hold
-where neither body holds the other strictly (among learned rules
-specificity decides the rest): the larger body first, and for bodies of
-one size the planned rule, which rests on pours of that very scene.
+beats a conflicting rule of the theory whose body its own holds (the
+same body included: it rests on pours of that very scene), and loses to
+one whose body holds a proposition its own does not (that rule speaks of
+what the plan's pours left to the ordinary pour); among learned rules
+specificity is the engines'. Between planned rules, the larger body wins,
+then the later id.
 Every round learns again from the original theory and every pour so far,
 so rules are not stacked on rules.
 """
@@ -105,10 +107,10 @@ def _sup(theory: Theory, new: Sequence[Rule]) -> list[tuple[str, str]]:
             rb, qb = set(r.body), set(q.body)
             if q.id in theory.learned and (rb < qb or qb < rb):
                 continue                    # specificity decides
-            if qb < rb:
+            if qb <= rb:
                 out.append((r.id, q.id))
             elif together(r.body, q.body):
-                out.append((r.id, q.id) if len(rb) >= len(qb) else (q.id, r.id))
+                out.append((q.id, r.id))
     for i, r in enumerate(new):
         for q in new[i + 1:]:
             rb, qb = set(r.body), set(q.body)

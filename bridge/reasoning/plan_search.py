@@ -132,13 +132,15 @@ def verify(p: Plan, goals: list[str], simulate: Callable, n: int, seed: int,
 
 def search(theory: Theory, goals: Sequence[str], given: Sequence[str], simulate: Callable, *,
            verify_pours: int, min_success: float, seed: int, budget: int, want: int = 1,
-           pour: bool = True, learn: bool = True, explore: bool = True) -> Search:
+           pour: bool = True, learn: bool = True, explore: bool = True,
+           use_theory: bool = True) -> Search:
     """Search for `want` plans reaching `goals` given `given` (see the
     module's text) within `budget` pours; `pour`: add the goal that the
     liquid leaves the source unless a goal speaks of it; `learn`: learn
     from refuted plans; `explore`: search manners in the simulation when
-    the theory proposes none. UserError for an unknown goal or invalid
-    context."""
+    the theory proposes none; `use_theory` False: search the simulation
+    alone (the manners alone and in pairs, ordered as the theory predicts).
+    UserError for an unknown goal or invalid context."""
     from pantarhei.bridge.reasoning.plan_evidence import planned_rules, with_rules
     from pantarhei.bridge.reasoning.plan_numbers import rests_on
     from pantarhei.bridge.reasoning.scenes import require_valid
@@ -154,7 +156,8 @@ def search(theory: Theory, goals: Sequence[str], given: Sequence[str], simulate:
         tried = {t.plan.chosen for t in out.tried}
         origin, proposed = "theory", []
         try:
-            proposed = _proposals(current, asked, given, tried)
+            if use_theory:
+                proposed = _proposals(current, asked, given, tried)
         except UserError as e:
             if out.rounds == 0:
                 out.unreachable = str(e)

@@ -6,7 +6,9 @@ defeasibly concludes every goal literal. Plans come cheapest first (fewest
 chosen propositions) among those whose goals rest on the most confident
 rules (the sum over the goals of the largest confidence of a rule for the
 goal that applies); each further plan is the best one that does not
-merely add propositions to a plan already found.
+merely add propositions to a plan already found. Verifying plans in the
+simulation, learning from those refuted and planning again is
+plan_search.py.
 """
 from __future__ import annotations
 
@@ -171,39 +173,3 @@ def _solve(theory: Theory, goals: list[str], given: list[str], count: int,
             steps *= 2
             continue
         return plans
-
-
-@dataclass(frozen=True)
-class Verified:
-    """A plan and how often its goals were met in simulated pours."""
-    plan: Plan
-    met: int
-    simulated: int
-
-    @property
-    def rate(self) -> float:
-        return self.met / self.simulated if self.simulated else 0.0
-
-
-def verified_plans(theory: Theory, goals: list[str], given: list[str], simulate, n: int,
-                   seed: int, min_success: float, want: int = 1, candidates: int = 8
-                   ) -> tuple[list[Verified], list[Verified]]:
-    """Plans whose goals were met in at least `min_success` of `n` pours
-    sampled for each (`simulate`: parameterizations to scores), best first,
-    at most `want` of them; and every candidate tried with its figures.
-    The theory proposes up to `candidates` plans (UserError when it can
-    propose none); each is sampled with a seed of its own."""
-    import numpy as np
-
-    from pantarhei.oracle.generative import sample
-
-    proposed = plan(theory, goals, given, max(candidates, want) - 1)
-    P = np.vstack([sample(list(p.antecedent), n, seed + i) for i, p in enumerate(proposed)])
-    S = np.asarray(simulate(P), dtype=float)
-    tried = []
-    for i, p in enumerate(proposed):
-        rows = S[i * n:(i + 1) * n]
-        done = np.all(np.isfinite(rows), axis=1)
-        tried.append(Verified(p, int(goals_met(rows, goals).sum()), int(done.sum())))
-    good = [v for v in tried if v.simulated and v.rate >= min_success]
-    return good[:want], tried

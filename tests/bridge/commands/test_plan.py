@@ -154,6 +154,10 @@ def test_no_plan_found_says_why_in_one_line(cli, tmp_path: Path) -> None:
     assert r.out == ""                               # nothing printed as a plan
     assert line.startswith("pantarhei plan: no plan found: every candidate refuted: none of the "), line
     assert "(the budget of 8 pours is spent)" in line and "met them in 0 of" in line, line
+    r = cli(*args, "--pours", "8", "--json")          # for a program: the search, no plan
+    out = json.loads(r.out)
+    assert r.code == 2 and out["plans"] == [] and f"no plan found: {out['none']}" in r.err
+    assert out["search"]["tried"] and not any(t["verified"] for t in out["search"]["tried"])
     # a goal no rule concludes: unreachable in the theory, and not found by searching either
     g = tmp_path / "silent.pl"
     g.write_text("rule(r1, defeasible, liquid_leaves_source).\n")

@@ -8,7 +8,7 @@ import pytest
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.logic import conclusions
-from pantarhei.bridge.reasoning.planning import Plan, parse_goal, plan
+from pantarhei.bridge.reasoning.planning import Plan, parse_goal, plan, pouring_goals
 from pantarhei.bridge.theories.model import Rule, Theory
 
 #: pouring spills, unless poured centred
@@ -37,3 +37,23 @@ def test_a_goal_that_no_valid_manner_reaches_is_refused() -> None:
     with pytest.raises(UserError, match="^unreachable goal: no valid choice of manners makes the "
                                         "theory conclude no_spill given pour_to_side$"):
         plan(THEORY, ["no_spill"], ["pour_to_side"])
+
+
+@pytest.mark.parametrize("goals,out,added", [
+    (["source_clear"], ["source_clear", "liquid_leaves_source"], ["liquid_leaves_source"]),
+    (["-no_spill"], ["neg(no_spill)", "liquid_leaves_source"], ["liquid_leaves_source"]),
+    (["liquid_leaves_source", "no_spill"], ["liquid_leaves_source", "no_spill"], []),
+    (["-liquid_leaves_source"], ["neg(liquid_leaves_source)"], []),
+])
+def test_a_pour_pours_unless_a_goal_says_otherwise(goals, out, added) -> None:
+    assert pouring_goals(goals) == (out, added)
+
+
+def test_a_plan_chosen_exactly_is_excluded_but_not_what_adds_to_it() -> None:
+    plans = plan(THEORY, ["no_spill"], ["light_liquid"], exclude=[("pour_centred",)])
+    assert plans and all(p.chosen != ("pour_centred",) and "pour_centred" in p.chosen
+                         and len(p.chosen) == 2 and "light_liquid" in p.antecedent for p in plans)
+    # the theory reaches the negated goal with nothing chosen; excluded, it
+    # adds a manner that keeps the default deciding
+    plans = plan(THEORY, ["-no_spill"], exclude=[()], alternatives=2)
+    assert plans and all(p.chosen and "pour_centred" not in p.chosen for p in plans)

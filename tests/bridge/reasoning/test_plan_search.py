@@ -1,0 +1,119 @@
+"""Plan, verify, learn, plan again (bridge/reasoning/plan_search.py,
+plan_evidence.py) with the synthetic oracle and clingo; and a plan's
+numbers (plan_numbers.py) from the generative models."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from pantarhei.bridge.reasoning.logic import conclusions
+from pantarhei.bridge.reasoning.plan_evidence import with_evidence
+from pantarhei.bridge.reasoning.plan_numbers import fixed_ranges, ordinary_ranges
+from pantarhei.bridge.reasoning.plan_search import Trial, pour_seed, search, verify
+from pantarhei.bridge.reasoning.planning import Plan, plan
+from pantarhei.bridge.theories.model import Rule, Theory
+from pantarhei.oracle.generative import sample
+from pantarhei.theory.lexicon import load_vocabulary
+
+#: Pours far away fill the destination, thinks this theory (they do not).
+WISHFUL = Theory(rules=[Rule("r0", "defeasible", "liquid_leaves_source"),
+                        Rule("r1", "defeasible", "neg(liquid_enters_destination)"),
+                        Rule("r2", "defeasible", "liquid_enters_destination", ("pour_far_away",)),
+                        Rule("r3", "defeasible", "liquid_enters_destination", ("pour_centred",))],
+                 sup=[("r2", "r1"), ("r3", "r1")], source="wishful.pl")
+GOAL = ["liquid_enters_destination"]
+
+
+@pytest.fixture
+def synthetic(tmp_path):
+    from pantarhei.bridge.exploration.simulation import open_simulator
+
+    with open_simulator("synthetic", store=tmp_path / "s.sqlite") as sim:
+        yield sim.simulate
+
+
+def test_a_plan_is_verified_in_steps_its_pours_one_seeded_sample(synthetic) -> None:
+    goals = ["liquid_enters_destination", "liquid_leaves_source"]
+    far, centred = Plan(("pour_far_away",), ("pour_far_away",)), Plan(("pour_centred",), ("pour_centred",))
+    t = Trial(far, "theory", 1)
+    P, _ = verify(far, goals, synthetic, 9, 5, 0.9, t)
+    assert not t.verified and t.simulated == len(P) == 3 and t.per_goal == {goals[0]: 0, goals[1]: 3}
+    t = Trial(centred, "theory", 1)
+    P, S = verify(centred, goals, synthetic, 9, 5, 0.9, t)
+    assert t.verified and t.met == t.simulated == 9
+    assert np.array_equal(P, sample(["pour_centred"], 9, pour_seed(5, ("pour_centred",))))
+
+
+def test_a_refuted_plan_is_learned_from_and_the_next_is_verified(synthetic) -> None:
+    out = search(WISHFUL, GOAL, [], synthetic, verify_pours=6, min_success=0.9, seed=3, budget=60)
+    assert out.added == ["liquid_leaves_source"]
+    assert [(t.plan.chosen, t.verified) for t in out.tried] == [(("pour_far_away",), False),
+                                                                 (("pour_centred",), True)]
+    assert [t.plan.chosen for t in out.verified] == [("pour_centred",)]
+    assert out.reason is None and out.pours == sum(len_of(t) for t in out.tried) <= 60
+    # the theory it leaves: the refuted plan is known for what it is
+    far = out.theory.rule("p0_liquid_enters_destination")
+    assert far.head == "neg(liquid_enters_destination)" and far.body == ("pour_far_away",)
+    assert ("p0_liquid_enters_destination", "layer", "plans") in out.theory.provenance
+    assert "neg(liquid_enters_destination)" in \
+        conclusions(out.theory.with_facts(["pour_far_away"]))["+d"]
+    assert [p.chosen for p in plan(out.theory, GOAL, [])] == [("pour_centred",)]
+    # same seed, same search
+    again = search(WISHFUL, GOAL, [], synthetic, verify_pours=6, min_success=0.9, seed=3, budget=60)
+    assert [t.as_dict() for t in again.tried] == [t.as_dict() for t in out.tried]
+
+
+def len_of(t: Trial) -> int:
+    return t.simulated + t.failed
+
+
+def test_the_simulation_is_searched_when_the_theory_has_no_plan_left(synthetic) -> None:
+    theory = Theory(rules=WISHFUL.rules[:3], sup=WISHFUL.sup[:1], source="wishful.pl")
+    out = search(theory, GOAL, [], synthetic, verify_pours=4, min_success=0.9, seed=3, budget=80)
+    assert out.tried[0].origin == "theory" and not out.tried[0].verified
+    assert out.verified and out.verified[0].origin == "search"
+    alone = search(theory, GOAL, [], synthetic, verify_pours=4, min_success=0.9, seed=3,
+                   budget=80, explore=False)
+    assert not alone.verified and alone.reason.startswith("every candidate refuted: none of the 1 ")
+    assert "no candidate is left" in alone.reason and "met them in 0 of" in alone.reason
+
+
+def test_unreachable_in_the_theory_says_so(synthetic) -> None:
+    out = search(WISHFUL, GOAL, ["pour_to_side"], synthetic, verify_pours=4, min_success=0.9,
+                 seed=3, budget=40, explore=False)
+    assert out.tried == [] and out.pours == 0
+    assert out.reason == ("unreachable in the theory (unreachable goal: no valid choice of manners "
+                          "makes the theory conclude liquid_enters_destination given pour_to_side)")
+
+
+def test_a_planned_rule_wins_in_its_scene_and_loses_to_what_it_did_not_vary() -> None:
+    P = sample(["pour_far_away"], 4, 1)
+    S = np.zeros((4, 9))
+    theory = with_evidence(WISHFUL, {("pour_far_away",): (P, S)}, seed=1)
+    assert "neg(liquid_enters_destination)" in conclusions(theory.with_facts(["pour_far_away"]))["+d"]
+    # a rule that speaks of what the plan's pours left to the ordinary pour wins
+    hand = Theory(theory.facts, theory.rules + [Rule("h", "defeasible", "liquid_enters_destination",
+                                                     ("slow_retreat",))],
+                  theory.sup, theory.learned, source="t")
+    from pantarhei.bridge.reasoning.plan_evidence import planned_rules, with_rules
+
+    mixed = with_rules(Theory(hand.facts, [r for r in hand.rules if not r.id.startswith("p")],
+                              [s for s in hand.sup if not s[0].startswith("p")], set(), source="t"),
+                       [planned_rules(0, ("pour_far_away",), P, S, 1)])
+    assert ("h", "p0_liquid_enters_destination") in mixed.sup
+    assert "liquid_enters_destination" in \
+        conclusions(mixed.with_facts(["pour_far_away", "slow_retreat"]))["+d"]
+
+
+def test_a_plans_numbers_are_the_generative_models_ranges() -> None:
+    vocab = load_vocabulary()
+    fixed = {r.parameter: r for r in fixed_ranges(["pour_centred", "approach_moving_away"])}
+    assert (fixed["pour_x"].low, fixed["pour_x"].high, fixed["pour_x"].by) == (-20, 20, "pour_centred")
+    start = fixed["start_x"]
+    assert (start.base, start.low, start.high) == ("pour_x", -150, -20)
+    assert start.words() == "start_x pour_x - 150 to - 20 mm"
+    left = ordinary_ranges(["pour_centred", "approach_moving_away"])
+    assert {r.parameter for r in left} == set(vocab.parameter_names) - {"pour_x", "start_x"}
+    pitch = next(r for r in left if r.parameter == "pour_pitch")
+    prm = vocab.parameter("pour_pitch")
+    assert (pitch.low, pitch.high, pitch.by) == (prm.prior_low, prm.prior_high, None)
