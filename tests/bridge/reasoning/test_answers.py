@@ -22,3 +22,19 @@ def test_an_answer_names_the_general_twin_of_algorithm_1s_rule():
     # a rule of Algorithm 1 with no general twin is named as it is
     said = {a.expectation: a for a in what_happens(t, ["pour_low"])}
     assert said["no_spill"].value == "fails" and said["no_spill"].rule == "r2_no_spill"
+
+
+def test_the_python_example_of_the_docs_runs(capsys) -> None:
+    # docs/questions.md's "From Python" example, run as written
+    import re
+
+    from pantarhei.theory import THEORY_DIR
+
+    page = (THEORY_DIR.parent / "docs" / "questions.md").read_text()
+    section = page[page.index("## From Python"):]
+    code = re.search(r"```python\n(.*?)```", section, flags=re.S).group(1)
+    exec(compile(code, "docs/questions.md", "exec"), {})
+    out = capsys.readouterr().out
+    assert re.search(r"^no_spill (holds|fails|uncertain|unknown) ", out, flags=re.M)
+    assert re.search(r"^  held in \d+ of \d+ pours$", out, flags=re.M)
+    assert "no_spill" in out.splitlines()[-1]          # the argument explained
