@@ -49,7 +49,8 @@ def main() -> None:
     median = statistics.median(times)
     verdict = "met" if median <= TARGET_S else "MISSED"
     print(f'pantarhei ask "{QUESTION}" --check {POURS}: median {median:.2f} s of {REPEAT} runs '
-          f"(each {', '.join(f'{t:.2f}' for t in times)} s), {os.cpu_count()} cores; "
+          f"(each {', '.join(f'{t:.2f}' for t in times)} s), {os.cpu_count()} cores, "
+          f"load average {os.getloadavg()[0]:.1f}; "
           f"target {TARGET_S:.0f} s: {verdict}")
 
 
