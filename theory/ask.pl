@@ -3,6 +3,7 @@
             answers/3,              % +Scene, +Options, -Answers
             named_rule/2,           % +Rule, -Named
             rule_in_words/2,        % +Rule, -Text
+            proof_json/2,           % +Proof, -Dict
             serve/0
           ]).
 /** <module> Asking a theory of pouring: `pantarhei ask` in one crossing
@@ -33,6 +34,7 @@ theory is checked.
 :- use_module(library(pairs)).
 :- use_module(library(assoc)).
 :- use_module(library(ordsets)).
+:- use_module(library(http/json)).
 
                  /*******************************
                  *        READING THEORIES      *
@@ -518,6 +520,48 @@ reply(Request, Loaded) :-
                  format("answer\t~w\t~w\t~w\t~w\t~w\t~w\t~w\t~w\t~w\t~w~n",
                         [E, V, P, R, Because, Reason, Held, Of, Body, Unruled]) ))
     ;   Request = why(_, Literal)
-    ->  explain(Scene, Literal, [], Text),
-        format("why\t~w~n", [Text])
+    ->  why(Scene, Literal, [], Proof),
+        proof_text(Proof, Text),
+        format("why\t~w~n", [Text]),
+        proof_json(Proof, Dict),
+        atom_json_dict(Json, Dict, [width(0)]),
+        format("proof\t~w~n", [Json])
     ).
+
+%!  proof_json(+Proof, -Dict) is det.
+%
+%   A proof of queries:why/4 as a dict for JSON: =kind= (given, definite,
+%   defeasible or not_concluded), =literal= and =text= (its words, as
+%   proof_text/2 says them), and as the kind has them =rule= (the rule that
+%   concludes it), =body= (the proofs of its body's literals),
+%   =rebuttals= (each rule for the complement and why it does not win) or
+%   =reasons= (why it is not concluded), each with =kind=, =rules= (the
+%   rules it names), =literals= (those it names) and =text=.
+proof_json(Proof, Dict) :-
+    proof_text(Proof, Text0),
+    atomic_list_concat([Text|_], '; ', Text0),
+    proof_parts(Proof, Kind, L, Parts),
+    term_text(L, LT),
+    dict_pairs(Dict, json, [kind-Kind, literal-LT, text-Text|Parts]).
+
+proof_parts(given(L), given, L, []).
+proof_parts(definite(R, L, Ps), definite, L, [rule-R, body-Js]) :-
+    maplist(proof_json, Ps, Js).
+proof_parts(defeasible(R, L, Ps, Rebs), defeasible, L, [rule-R, body-Js, rebuttals-RJs]) :-
+    maplist(proof_json, Ps, Js),
+    maplist(part_json(rebuttal_text), Rebs, RJs).
+proof_parts(not_concluded(L, Reasons), not_concluded, L, [reasons-RJs]) :-
+    maplist(part_json(reason_text), Reasons, RJs).
+
+% part_json(+Words, +Part, -Dict): a rebuttal or reason: its kind, the
+% rules and literals it names, and its words (queries:Words/2).
+part_json(Words, Part, _{kind:Kind, rules:Rules, literals:Literals, text:Text}) :-
+    Part =.. [Kind|Args],
+    partition(is_rule, Args, Rules0, Others),
+    maplist(term_text, Rules0, Rules),
+    findall(T, ( member(A, Others), \+ is_list(A), term_text(A, T) ), Ls0),
+    findall(T, ( member(A, Others), is_list(A), member(X, A), term_text(X, T) ), Ls1),
+    append(Ls0, Ls1, Literals),
+    (   catch(queries:call(Words, Part, Text0), _, fail) -> Text = Text0 ; term_text(Part, Text) ).
+
+is_rule(A) :- atom(A), defeasible:rule(A, _, _).

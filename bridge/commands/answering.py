@@ -32,9 +32,14 @@ def answer(asker, props: list[str], why: str | None = None, as_json: bool = Fals
 
     scene = props
     if why:
-        words = asker.why(scene, why)
+        proof = None
+        if as_json and hasattr(asker, "why_proof"):
+            words, proof = asker.why_proof(scene, why)
+        else:
+            words = asker.why(scene, why)
         if as_json:
-            print_json({"understood": props, "literal": why, **why_json(words)})
+            print_json({"understood": props, "literal": why, **why_json(words),
+                        **({"proof": proof} if proof is not None else {})})
         else:
             _print_scene(props, glosses=False)
             print(words.replace("; ", "\n  "))

@@ -193,8 +193,19 @@ class Door:
     def why(self, scene: list[str], literal: str) -> str:
         """Why (or why not) the theory concludes `literal` in the scene, in
         words, sentences separated by "; "."""
+        return self.why_proof(scene, literal)[0]
+
+    def why_proof(self, scene: list[str], literal: str) -> tuple[str, dict]:
+        """`why`'s words, and the argument as a structure
+        (theory/ask.pl's proof_json/2): its kind, literal, rule, the proofs
+        of the rule's body, and the rules against it and why each loses,
+        or why it is not concluded."""
+        import json
+
         reply = self._reply(f"why({_list(scene)}, {literal}).")
-        return next(r[1] for r in reply if r[0] == "why")
+        text = next(r[1] for r in reply if r[0] == "why")
+        proof = next(("\t".join(r[1:]) for r in reply if r[0] == "proof"), "null")
+        return text, json.loads(proof)
 
 
 def _utf8(text: str) -> str:

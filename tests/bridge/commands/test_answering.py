@@ -60,6 +60,16 @@ def test_why_takes_a_negated_expectation_and_gives_its_steps_in_json(cli, tmp_pa
     assert out["literal"] == "neg(liquid_enters_destination)"
     assert out["steps"][0].startswith("neg(liquid_enters_destination) by rule r2")
     assert "; ".join(out["steps"]) == out["why"]
+    proof = out["proof"]                  # the argument as a structure
+    assert (proof["kind"], proof["rule"], proof["literal"]) == (
+        "defeasible", "r2", "neg(liquid_enters_destination)")
+    assert proof["body"] == [{"kind": "given", "literal": "pour_to_side",
+                              "text": "pour_to_side is given"}]
+    assert proof["text"] == out["steps"][0]
+    why_not = json.loads(cli("ask", "--props", "pour_low", "--theory", str(theory), "--why",
+                             "no_spill", "--json").out)["proof"]
+    assert why_not["kind"] == "not_concluded" and why_not["reasons"]
+    assert all({"kind", "rules", "literals", "text"} <= set(r) for r in why_not["reasons"])
     assert cli("ask", "-h").code == 0
 
 
