@@ -2,20 +2,23 @@
 
 A plan the simulation refutes is evidence: its pours say what happens in
 its scene. The theory learns from them with the learner the exploration
-uses (bridge/learning/learners.py's default, through its interface): the
-learner models every pour of the planning run together (likelihoods
-pooled), and its answer for each plan tried (its antecedent: the given
-context and the manners chosen) becomes, per expectation, a learned rule
-with that antecedent as its body, and its provenance: the layer (plans),
-the support and kept pours, the confidence in permille. A planned rule
+uses (bridge/learning/learners.py's default, through its interface): for
+each plan tried (its antecedent: the given context and the manners
+chosen) the learner models every pour drawn for it (likelihoods pooled
+over them), and its answer for the antecedent becomes, per expectation, a
+rule with that antecedent as its body, and its provenance: the layer
+(plans), the support and kept pours, the confidence in permille. A planned rule
 beats a conflicting rule of the theory whose body its own holds (the
 same body included: it rests on pours of that very scene), and loses to
 one whose body holds a proposition its own does not (that rule speaks of
-what the plan's pours left to the ordinary pour); among learned rules
-specificity is the engines'. Between planned rules, the larger body wins,
-then the later id.
-Every round learns again from the original theory and every pour so far,
-so rules are not stacked on rules.
+what the plan's pours left to the ordinary pour); between planned rules,
+the larger body wins, then the later id. Every such pair is an explicit
+sup/2 fact (planned rules are not marked learned, so the engines derive
+no specificity for them), and a pair that would close a cycle with the
+theory's own superiority is left out.
+Each plan's rules are learned once; the theory of each round is the
+original one with the rules of every plan tried so far, so rules are not
+stacked on rules.
 """
 from __future__ import annotations
 
@@ -88,10 +91,31 @@ def with_rules(theory: Theory, planned: Sequence[Planned]) -> Theory:
     if not new:
         return theory
     provenance = [x for _, prov in planned for x in prov]
-    return Theory(list(theory.facts), list(theory.rules) + new,
-                  list(theory.sup) + _sup(theory, new), set(theory.learned) | {r.id for r in new},
-                  list(theory.extra), theory.source, {k: list(v) for k, v in theory.settings.items()},
-                  list(theory.provenance) + provenance)
+    out = Theory(list(theory.facts), list(theory.rules) + new, list(theory.sup),
+                 set(theory.learned), list(theory.extra), theory.source,
+                 {k: list(v) for k, v in theory.settings.items()},
+                 list(theory.provenance) + provenance)
+    out.sup += _acyclic(out, _sup(theory, new), {r.id for r in new})
+    return out
+
+
+def _acyclic(theory: Theory, pairs: list[tuple[str, str]], planned: set[str]
+             ) -> list[tuple[str, str]]:
+    """`pairs` without those that would close a superiority cycle with the
+    theory's own (sup/2 and specificity): on each cycle found, the pair in
+    which a planned rule loses is dropped first, else one it wins (the
+    conflict is then left undecided, and no goal rests on it)."""
+    from pantarhei.bridge.theories.model import superiority_cycle
+
+    pairs = list(pairs)
+    while True:
+        trial = Theory(theory.facts, theory.rules, theory.sup + pairs, theory.learned)
+        cycle = superiority_cycle(trial.sup, trial._specific_successors())
+        if not cycle:
+            return pairs
+        steps = [p for p in zip(cycle, cycle[1:]) if p in pairs]
+        losing = [p for p in steps if p[1] in planned]
+        pairs.remove((losing or steps)[0])
 
 
 def _sup(theory: Theory, new: Sequence[Rule]) -> list[tuple[str, str]]:
@@ -105,8 +129,6 @@ def _sup(theory: Theory, new: Sequence[Rule]) -> list[tuple[str, str]]:
             if q.head != complement(r.head):
                 continue
             rb, qb = set(r.body), set(q.body)
-            if q.id in theory.learned and (rb < qb or qb < rb):
-                continue                    # specificity decides
             if qb <= rb:
                 out.append((r.id, q.id))
             elif together(r.body, q.body):
@@ -114,7 +136,7 @@ def _sup(theory: Theory, new: Sequence[Rule]) -> list[tuple[str, str]]:
     for i, r in enumerate(new):
         for q in new[i + 1:]:
             rb, qb = set(r.body), set(q.body)
-            if q.head != complement(r.head) or rb < qb or qb < rb or not together(r.body, q.body):
+            if q.head != complement(r.head) or not together(r.body, q.body):
                 continue
             hi, lo = (r, q) if (len(rb), r.id) > (len(qb), q.id) else (q, r)
             out.append((hi.id, lo.id))

@@ -117,3 +117,19 @@ def test_a_plans_numbers_are_the_generative_models_ranges() -> None:
     pitch = next(r for r in left if r.parameter == "pour_pitch")
     prm = vocab.parameter("pour_pitch")
     assert (pitch.low, pitch.high, pitch.by) == (prm.prior_low, prm.prior_high, None)
+
+
+def test_a_planned_rule_never_closes_a_superiority_cycle() -> None:
+    """q would lose to the planned rule (its very scene), which would lose
+    to t (it speaks of pouring low), while the theory has q > s > t."""
+    e = "liquid_enters_destination"
+    theory = Theory(rules=[Rule("q", "defeasible", e, ("pour_far_away",)),
+                           Rule("s", "defeasible", f"neg({e})", ("slow_retreat",)),
+                           Rule("t", "defeasible", e, ("end_low",))],
+                    sup=[("q", "s"), ("s", "t")], source="t.pl")
+    P = sample(["pour_far_away"], 4, 1)
+    out = with_evidence(theory, {("pour_far_away",): (P, np.zeros((4, 9)))}, seed=1)
+    out.check_acyclic()
+    assert ("p0_liquid_enters_destination", "q") in out.sup
+    assert ("t", "p0_liquid_enters_destination") not in out.sup
+    assert f"neg({e})" in conclusions(out.with_facts(["pour_far_away"]))["+d"]
