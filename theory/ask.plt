@@ -58,45 +58,4 @@ test(unknown_names, [true(Ws == [unknown("U:2", "rule r1: body", "pour_sidewise"
 test(checked_stand_in_skips_file_checks, [true(Ws == [])]) :-
     with_files(["rule(r1, defeasible, no_spill).\nbody(r1, pour_sidewise).\n"], [F], load_theories([file(F, 'D', checked)], Ws)).
 
-% the rule to name: the general rule of the same body and head
-test(named_rule_is_the_general_twin, [true(N-G == g1-g2)]) :-
-    once(load_theory_text("rule(r1, defeasible, no_spill).\nbody(r1, pour_to_side).\nrule(g1, defeasible, no_spill).\nbody(g1, pour_to_side).\nprovenance(g1, layer, general).\nrule(g2, defeasible, no_spill).\nprovenance(g2, layer, general).\n")),
-    defeasible:theory_loaded,
-    named_rule(r1, N),
-    named_rule(g2, G).
-
-% one voice: the likelihood that the expectation holds, and the pours of
-% the body counted for it holding (of a rule for its failure, the pours
-% that did not keep the head)
-test(rule_in_words,
-     [true(T == "pour from the side: holds in 12% of such pours (the pooled estimate); held in 7 of 8 pours of pour from the side (rule g1)")]) :-
-    once(load_theory_text("rule(g1, defeasible, neg(no_spill)).\nbody(g1, pour_to_side).\nprovenance(g1, layer, general).\nprovenance(g1, confidence_permille, 875).\nprovenance(g1, support, 8).\nprovenance(g1, kept, 1).\n")),
-    defeasible:theory_loaded,
-    rule_in_words(g1, T).
-
-test(rule_in_words_of_the_empty_body,
-     [true(T == "an ordinary pour: holds in 90% of such pours (the pooled estimate); the weighted pours of a0 (rule r0)")]) :-
-    once(load_theory_text("rule(r0, defeasible, no_spill).\nprovenance(r0, confidence_permille, 900).\nprovenance(r0, antecedent, a0).\n")),
-    defeasible:theory_loaded,
-    rule_in_words(r0, T).
-
-test(answers_say_why, [true(B-R-Ev == "given"-""-none)]) :-
-    once(load_theory_text("fact(no_spill).\n")),
-    answers([], [], As),
-    memberchk(answer(no_spill, holds, _, _, B, R, Ev), As).
-
-test(answers_say_why_not, [true(sub_string(B, 0, _, _, "why not: "))]) :-
-    once(load_theory_text("fact(no_spill).\n")),
-    answers([], [], As),
-    memberchk(answer(source_clear, unknown, none, none, B, _, none), As).
-
-% the evidence of a holding head counts the pours that kept it; a scene's
-% proposition that the deciding rule's body does not hold is said
-test(answers_count_pours_for_the_expectation_holding,
-     [true(Ev-Ws == pours(50, 60, [], [light_liquid])-"an ordinary pour: holds in 90% of such pours (the pooled estimate); held in 50 of 60 ordinary pours (rule g0); a light liquid: no rule of its own decides this, so it is answered as an ordinary pour")]) :-
-    once(load_theory_text("rule(g0, defeasible, no_spill).\nlearned(g0).\nprovenance(g0, support, 60).\nprovenance(g0, kept, 50).\nprovenance(g0, confidence_permille, 900).\n")),
-    answers([light_liquid], [], As),
-    memberchk(answer(no_spill, holds, _, g0, B, _, Ev), As),
-    sub_string(B, 8, _, 0, Ws).
-
 :- end_tests(ask).

@@ -17,6 +17,7 @@ provides.
 :- use_module(defeasible).
 :- use_module(learned_rules).
 :- use_module(queries).
+:- use_module(answer_words).
 :- use_module(ask).
 :- use_module(theory_view).
 :- use_module(curiosity).
