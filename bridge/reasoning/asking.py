@@ -313,11 +313,19 @@ def print_warnings(warnings: list[tuple[str, str, str]]) -> None:
 
     vocab = load_vocabulary()
     known = sorted(set(vocab.propositions) | set(vocab.expectation_names))
-    for where, what, name in warnings:
+    for where, what, name in warnings[:WARNINGS_AT_MOST]:
         near = difflib.get_close_matches(name, known, n=1, cutoff=0.6)
         hint = f" (did you mean {near[0]}?)" if near else ""
         print(f"warning: {where}: {what} {name} is not a proposition or expectation of pouring{hint}",
               file=sys.stderr)
+    if len(warnings) > WARNINGS_AT_MOST:
+        print(f"warning: and {len(warnings) - WARNINGS_AT_MOST} more names that are not propositions "
+              f"or expectations of pouring", file=sys.stderr)
+
+
+#: The most names print_warnings shows one a line (a file of 20,000 unknown
+#: names would print 20,000 lines, each matched against the vocabulary).
+WARNINGS_AT_MOST = 20
 
 
 def files_to_read(paths: list[str] | None) -> tuple[list[tuple[str, str, bool]], str, str | None]:
