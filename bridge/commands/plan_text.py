@@ -16,8 +16,8 @@ def _goals_line(goals: list[str], added: list[str], given: list[str]) -> list[st
     return out
 
 
-def _pct(x: float | None) -> str:
-    return "?" if x is None else f"{round(100 * x)}%"
+def _pct(x: float) -> str:
+    return f"{round(100 * x)}%"
 
 
 def plan_lines(p, given: list[str], said, trial=None) -> list[str]:
@@ -39,7 +39,8 @@ def plan_lines(p, given: list[str], said, trial=None) -> list[str]:
     L.append("  the goals rest on:")
     for s in said:
         rule = f"rule {s.rule}" if s.rule else "no rule"
-        L.append(f"    {s.goal:30} {rule}, likelihood {_pct(s.likelihood)} ({s.verdict})")
+        like = "no likelihood recorded" if s.likelihood is None else f"likelihood {_pct(s.likelihood)}"
+        L.append(f"    {s.goal:30} {rule}, {like} ({s.verdict})")
     L.append("  numbers, fixed by the plan:")
     for r in fixed_ranges(p.antecedent):
         L.append(f"    {r.words():42} {r.by}" + (" (given)" if r.by in given else ""))
