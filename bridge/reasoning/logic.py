@@ -118,6 +118,13 @@ def prolog_conclusions_batch(jobs: list[tuple[Theory, Semantics]]) -> list[dict[
 
 # -- ASP --------------------------------------------------------------------
 
+#: The most theory bytes clingo's alternating fixpoint grounds in all (two
+#: layers an alternation step, the steps doubled until they suffice): some
+#: ten seconds. Past it asp_conclusions refuses; SWI-Prolog, whose fixpoint
+#: is not grounded, answers.
+ALTERNATION_BYTES_AT_MOST = 2_000_000
+
+
 def asp_conclusions(theory: Theory, semantics: Semantics = Semantics(),
                     steps: int = 8) -> dict[str, list[str]]:
     """Solve defeasible.lp: in one layer for an acyclic theory, else
@@ -135,7 +142,15 @@ def asp_conclusions(theory: Theory, semantics: Semantics = Semantics(),
     acyclic = theory.acyclic()
     if acyclic:
         steps = 0
+    grounded = 0
     while True:
+        grounded += 0 if acyclic else 2 * steps * len(text)
+        if grounded > ALTERNATION_BYTES_AT_MOST:
+            raise UserError(f"{theory.source}: clingo grounds a theory whose rules depend on "
+                            f"themselves once per alternation of its fixpoint, and this one "
+                            f"({len(text):,} bytes) needs more than {steps // 2 or steps} of them, "
+                            f"past the {ALTERNATION_BYTES_AT_MOST:,} bytes it grounds at most: "
+                            f"ask it with --engine prolog (the same conclusions)")
         consts = {**semantics.asp_constants(), "steps": str(steps), "acyclic": str(acyclic).lower()}
         (model,) = solve(["defeasible.lp", "conclusions.lp"], text, files=(),
                          args=[f"-c{k}={v}" for k, v in consts.items()])

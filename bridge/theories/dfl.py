@@ -53,7 +53,7 @@ from pantarhei.bridge.theories.well_formed import value_text
 #: and the most partial bindings it may try on the way (all rounds of its
 #: fixpoint together): past either, the file is refused at the rule's line,
 #: so that a small file cannot ask for |facts|^variables instances.
-GROUND_AT_MOST = 100_000
+GROUND_AT_MOST = 20_000
 GROUND_STEPS_AT_MOST = 2_000_000
 
 #: A comment holding a native fact DFL has no form for.

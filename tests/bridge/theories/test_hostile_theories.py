@@ -78,6 +78,12 @@ CORPUS: dict[str, tuple[bytes, int, str]] = {
                                 "a second rule named r1"),
     "body without its rule": (b"rule(r1, defeasible, b).\nbody(r9, a).\n", 2,
                               "body(r9, _) of a rule r9 that has no rule(r9, Kind, Head) fact"),
+    "a term nested 33 deep": (b"fact(a).\nfact(" + b"f(" * 32 + b"a" + b")" * 33 + b".\n", 2,
+                              facts.NESTING),
+    "a term nested 33 deep, the first line of a fact": (
+        b"fact(p(a)).\nsetting(x,\n" + b"f(" * 32 + b"a" + b")" * 32 + b").\n", 2, facts.NESTING),
+    "the name not": (b"rule(r1, defeasible, a).\nbody(r1, not).\n", 2, facts.NOT_NAME),
+    "the name not as a functor": (b"fact(not(a)).\n", 1, facts.NOT_NAME),
 }
 
 
@@ -212,3 +218,61 @@ def test_every_command_that_reads_a_theory_refuses_the_corpus_in_one_line(
     r = run_cli(*(a.format(f=f, dir=tmp_path / "report") for a in command))
     assert assert_one_line_error(r).endswith(f"{f}:{line}: {message}")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["hostile.pl"]     # nothing written
+
+
+def test_a_term_nested_32_deep_is_read_by_both(tmp_path: Path) -> None:
+    f = tmp_path / "deep.pl"
+    f.write_bytes(b"setting(x, " + b"f(" * 30 + b"a" + b")" * 30 + b").\n")
+    assert _python_error(f) == "ok" and _prolog_errors([f]) == ["ok"]
+
+
+def test_facts_named_like_built_ins_are_data_to_both_readers(tmp_path: Path) -> None:
+    """halt., true. and call(a). are facts of other predicates, kept aside
+    by Python's reader and never added by SWI-Prolog's (which could not
+    add them: they are built-ins)."""
+    f = tmp_path / "builtins.pl"
+    f.write_bytes(b"halt.\ntrue.\ncall(a).\nrule(r1, defeasible, b).\n")
+    assert _python_error(f) == "ok" and _prolog_errors([f]) == ["ok"]
+    assert sorted(prolog_conclusions(read_native(f))["+d"]) == ["b"]
+
+
+def _costly():
+    from benchmarks.hostile import CORPUS, READERS
+    return [(name, engine) for name in CORPUS for engine in READERS]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name, engine", _costly())
+def test_every_costly_file_is_answered_or_refused_under_the_caps(tmp_path: Path, name: str,
+                                                                 engine: str) -> None:
+    """benchmarks/hostile.py's corpus (files built to cost a reader more
+    than their size), each read by each engine's command with its memory
+    capped and killed past its time cap: an answer or one safe line, no
+    traceback. (`make bench` prints their times and memory.)"""
+    from benchmarks.hostile import CAP_BYTES, CAP_S, CORPUS, command, read_capped
+
+    file, make = CORPUS[name]
+    path = tmp_path / file
+    path.write_bytes(make())
+    r = read_capped(command(engine, path))
+    assert r.code is not None, f"killed after {CAP_S} s"
+    assert r.code in (0, 1, 2) and "Traceback" not in r.err and "MemoryError" not in r.err, r.err[-2000:]
+    assert r.peak_bytes < CAP_BYTES
+    errors = [line for line in r.err.splitlines() if not line.startswith("warning:")]
+    if r.code:
+        assert len(errors) == 1 and str(path) in errors[0], r.err[-2000:]
+    assert not any(c in r.err for c in "\x1b\x07\r"), r.err[-2000:]
+
+
+@pytest.mark.slow
+def test_a_50_mb_line_on_asks_standard_input_is_skipped_in_bounded_memory() -> None:
+    import sys
+
+    from benchmarks.hostile import read_capped
+
+    line = b"pour " * (10 * 2**20) + b"\npour from the side\n"
+    r = read_capped([sys.executable, "-m", "pantarhei.bridge", "ask"], stdin=line,
+                    memory=1 * 2**30)
+    assert r.code == 1 and "Traceback" not in r.err, r.err[-2000:]
+    assert r.err.strip() == "pantarhei ask: line 1: longer than 65536 bytes: not read"
+    assert r.peak_bytes < 300 * 2**20
