@@ -37,16 +37,11 @@ def roles(tokens: list[Token], placeable: frozenset[str]) -> dict[int, str]:
             j = i - 1
             while j > 0 and (tokens[j].word in BETWEEN or tokens[j].word in placeable):
                 j -= 1
-            poured = False          # "the spout of a jug", "the contents of a jug": its part's
-            if tokens[j].word == "of" and j > 1 and tokens[j - 1].word not in placeable and \
-                    tokens[j - 1].word not in OBJECT_STEMS and tokens[j - 1].word != BOWL:
-                j = past_articles(tokens, j - 2, -1)
-                poured = j >= 0 and tokens[j].word == "pour"
             before = (tokens[j - 1].word, tokens[j].word) if j > 0 else None
             k = past_articles(tokens, i + 2, 1)              # "a glass as the source"
             as_source = (i + 1 < len(tokens) and tokens[i + 1].word == "as" and k < len(tokens)
                          and OBJECT_STEMS.get(tokens[k].word) == "source")
-            roles[i] = "source" if before in _POURED_FROM or as_source or poured else "destination"
+            roles[i] = "source" if before in _POURED_FROM or as_source else "destination"
     return roles
 
 

@@ -33,14 +33,9 @@ question in five steps:
    "does it splash?") reads as no propositions: the ordinary pour; a
    question that says nothing of a pour is refused.
 
-A word the vocabulary does not know is judged by the part it plays
-(unknown_words.py): refused naming why where it bears on the pour ("pour
-jerkily", "a heavier liquid", "I drizzle"), ignored where it does not
-("pour milk onto my cereal", "okay").
-
-Nothing is dropped silently: a word read as nothing (a material: "a
-plastic cup"; "cereal") is in `Reading.ignored`, for `ask` to show on its
-`understood:` line.
+Nothing is dropped silently: a word known to the vocabulary that is read
+as nothing (a material: "a plastic cup") is in `Reading.ignored`, for
+`ask` to show on its `understood:` line.
 """
 from __future__ import annotations
 
@@ -57,7 +52,6 @@ from pantarhei.bridge.reasoning.quantities import read_numbers
 from pantarhei.bridge.reasoning.stages import MARKER_STEMS, MOVE, POSE, stages
 from pantarhei.bridge.reasoning.wording import Token, normalised, stem, tokens as words_of
 from pantarhei.bridge.reasoning.suggestions import misspelt
-from pantarhei.bridge.reasoning.unknown_words import MISTYPED, compounds, judged, unknown
 from pantarhei.bridge.reasoning.words import FILLERS, HINTS, SAID_BACK, UNCLEAR, rewrites
 from pantarhei.theory.lexicon import load_vocabulary
 
@@ -156,8 +150,7 @@ def read_question(question: str) -> Reading:
     lex = _lexicon()
     text = normalised(question)
     outcome = hear(text)
-    tokens = read_numbers(compounds(words_of(outcome.scene), lex.placeable, lex.known),
-                          lex.placeable)
+    tokens = read_numbers(words_of(outcome.scene), lex.placeable)
     accepted = _read(tokens, lex)
     cues = [i for i, t in enumerate(tokens) if t.word in NEGATION_STEMS]
     ends = scope_ends(tokens)
@@ -249,11 +242,9 @@ def _ordinary(tokens: list[Token], lex: _Lexicon, asks: bool) -> bool:
     """Whether a question that names no proposition asks of the ordinary
     pour: it says pouring ("what happens if I pour water into a cup?"), or
     asks about an outcome ("does it splash?"), in words the vocabulary
-    knows and words it ignores (unknown_words.py), and nothing else."""
+    knows, and nothing else."""
     return ((asks or any(t.word == "pour" for t in tokens))
-            and all(t.word in lex.asking or unknown(t, lex.known, lex.placeable) for t in tokens))
-
-
+            and all(t.word in lex.asking for t in tokens))
 
 
 def _read(tokens: list[Token], lex: _Lexicon) -> list[tuple[str, frozenset[int]]]:
@@ -370,29 +361,22 @@ def _agrees(name: str, first: int, last: int, noun: Nouns, lex: _Lexicon) -> boo
 
 def _refuse_unplaced(question: str, tokens: list[Token], accepted, lex: _Lexicon) -> None:
     """UserError naming the words of the question that were not read: value
-    words that fit nothing said ("pour light": the light what?) and words
-    the vocabulary does not know that bear on the pour (unknown_words.py),
-    with why and the phrasings that would be read, where there are some."""
+    words that fit nothing said ("pour light": the light what?) and, when
+    something else was read, words the vocabulary does not know (a question
+    with nothing read is read_question's to answer as the ordinary pour or
+    to refuse); with the phrasings that would be read, where there are some."""
     read = set().union(*(p for _, p in accepted))
     words: dict[str, None] = {}           # in order, each once
     value_words: dict[str, None] = {}
-    why: dict[str, None] = {}             # why the unknown words bear on the pour
     for i, t in enumerate(tokens):
-        reason = judged(tokens, i, lex.known, lex.placeable) if unknown(
-            t, lex.known, lex.placeable) else None
-        if i not in read and (t.word in lex.placeable or reason):
+        if i not in read and (t.word in lex.placeable or (accepted and t.word not in lex.known)):
             words.setdefault(t.raw)
-            why.setdefault(reason or "")
             if t.word in lex.saying:
                 value_words.setdefault(t.word)
     if not words:
         return
     said = ", ".join(f'"{w}"' for w in words)
-    hints = [w for w in why if w and w != MISTYPED]
-    if not accepted and not any(t.word in lex.placeable for t in tokens):
-        hints += misspelt([t.raw for t in tokens if t.word not in lex.known])
-        raise UserError(f"understood none of \"{question}\": " + "; ".join(hints))
-    hints += [h for pattern, h in HINTS if any(re.search(pattern, w) for w in words)]
+    hints = [h for pattern, h in HINTS if any(re.search(pattern, w) for w in words)]
     if not hints and value_words:
         glosses = list(dict.fromkeys(g for w in value_words for g in lex.saying[w]))
         if len(glosses) <= 4:

@@ -26,21 +26,10 @@ _MINUS = "-\u2212\u2013"
 STAGE_WORDS = ("start", "pour", "end", "finally", "final", "approach", "retreat", "then")
 
 
-#: Contractions written out: "I'm", "we're", "I've", "I'll", "I'd".
-_CONTRACTED = {"m": "am", "re": "are", "ve": "have", "ll": "will", "d": "would"}
-
-
 def stem(w: str) -> str:
-    """`w` without its inflection: "tilted", "tilts", "tilting" are "tilt";
-    a doubled consonant is undone ("tipped", "tipping": "tip") and -ies,
-    -ied, -ily end in -y ("emptied": "empty", "heavily": "heavy")."""
-    if len(w) > 4 and w.endswith(("ies", "ied", "ily")):
-        return w[:-3] + "y"
     for suffix in ("ing", "ly", "ed", "es", "s"):
         if len(w) > len(suffix) + 2 and w.endswith(suffix):
             w = w[: -len(suffix)]
-            if suffix in ("ing", "ed") and len(w) > 3 and w[-1] == w[-2] and w[-1] in "bdgmnprt":
-                w = w[:-1]
             break
     return w[:-1] if len(w) > 3 and w.endswith("e") else w
 
@@ -62,7 +51,6 @@ def normalised(text: str) -> str:
     text = re.sub(r"\bcan't\b|\bcannot\b", "can not", text)
     text = re.sub(r"\bwon't\b", "will not", text)
     text = re.sub(r"n't\b|\b(do|does|did|is|are|was|were)nt\b", r"\1 not", text)
-    text = re.sub(r"'(m|re|ve|ll|d)\b", lambda m: " " + _CONTRACTED[m.group(1)], text)
     text = re.sub(r"'s?\b", "", text)                 # the destination's rim
     text = re.sub(r"(\d)\s*\u00b0", r"\1 degrees ", text)  # 45\u00b0
     text = re.sub(r"(\d)\s*(?:(?:k?m|cm|mm)\s*/\s*(?:s|sec|h|hr)|(?:k?m|cm|mm|metres?|meters?|"

@@ -124,7 +124,6 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("full", ("filled", "brimming", "full up")),
     ("much", ("a lot of", "lots of", "plenty of")),
     ("little", ("a few drops of", "a few drops", "a drop of", "a drop")),
-    ("light", ("weightless", "featherweight")),
     ("slippery", ("slick", "smooth")),
     ("grippy", ("rough",)),
     ("runny", ("thin", "watery")),
@@ -137,8 +136,7 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
 )
 
 #: Words that say nothing about the scene: a question's frame, not its facts
-#: ("very" is not one: it sets "very high" apart from "high"); "m", "re",
-#: "ve", "ll", "d" are what is left of a contraction ("I'm"), written out.
+#: ("very" is not one: it sets "very high" apart from "high").
 FILLERS = frozenset("""
     what which how why when where whether if happen happens would will could should can may
     might must do does did is are was were be been being i we you it they me my our your its
@@ -151,7 +149,6 @@ FILLERS = frozenset("""
     almost
     and or but then with without by for from at on in over above of to a an the please say
     tell suppose imagine case ever all both each one way thing
-    am have has had m re ve ll d
 """.split())
 
 #: Everyday words said back with how they were read: (pattern in the
