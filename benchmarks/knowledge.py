@@ -184,12 +184,14 @@ def map_elites_pours(seed: int, budget: int, run) -> Chosen:
 def measure(oracle: str, seeds: Sequence[int], budgets: Sequence[int], store: Path,
             methods: Sequence[str] = METHODS,
             done: Callable[[list[dict]], None] | None = None,
-            known: Sequence[dict] = (), settings: dict | None = None) -> list[dict]:
+            known: Sequence[dict] = (), settings: dict | None = None,
+            executor: dict | None = None) -> list[dict]:
     """One row per method, seed and budget: the measures of its theory on
     the questions, and the behaviours its pours show; the rows of `known`
     are kept and not measured again; `done` is given the rows so far after
     each seed; `settings` are the curiosity's options other than their
-    defaults."""
+    defaults; `executor` the executor options of every pour (executor,
+    workers, ray_address: as explore's)."""
     from pantarhei.bridge.evaluation.measures import (contrast_keys, defaults_only,
                                                       question_key, question_shares, verdicts)
     from pantarhei.bridge.evaluation.question_sets import (Keyed, interaction_questions, keyed,
@@ -198,7 +200,10 @@ def measure(oracle: str, seeds: Sequence[int], budgets: Sequence[int], store: Pa
     from pantarhei.bridge.exploration.simulation import open_simulator
 
     asked = questions()
-    sim = open_simulator(oracle, "local", None, store.absolute())
+    how = {k: v for k, v in (executor or {}).items() if v is not None}
+    sim = open_simulator(oracle, how.get("executor", "local"), how.get("workers"),
+                         store.absolute(), how.get("ray_address"))
+    settings = {**how, **(settings or {})}
     run = lambda P: np.asarray(sim.simulate(P, progress=False), dtype=float)  # noqa: E731
     rows = list(known)
     have = {(r["method"], r["seed"], r["pours"]) for r in rows}
@@ -389,6 +394,11 @@ def main(argv: Sequence[str] = ()) -> None:
     p.add_argument("--fresh", action="store_true",
                    help="measure this run's rows again (default: keep the rows of "
                         "knowledge-ORACLE.json; the others are kept either way)")
+    p.add_argument("--executor", choices=("local", "ray", "inline"), default="local",
+                   help="where the pours are simulated, as explore's --executor (ray: a cluster)")
+    p.add_argument("--workers", type=int, default=None, help="worker processes (default: one per core)")
+    p.add_argument("--ray-address", default=None, metavar="ADDR",
+                   help="Ray cluster to join (with --executor ray)")
     p.add_argument("--explore", default="", metavar="NAME=VALUE,...",
                    help="the curiosity's options other than their defaults, e.g. doubt=0,reach=0")
     args = p.parse_args(list(argv))
@@ -422,7 +432,9 @@ def main(argv: Sequence[str] = ()) -> None:
                     for k, v in (x.split("=") for x in args.explore.split(",") if x.strip())}
     except ValueError:
         raise SystemExit(f"--explore: not NAME=VALUE,...: {args.explore!r}") from None
-    rows = measure(args.oracle, seeds, budgets, Path(args.store), methods, write, known, settings)
+    executor = {"executor": args.executor, "workers": args.workers, "ray_address": args.ray_address}
+    rows = measure(args.oracle, seeds, budgets, Path(args.store), methods, write, known, settings,
+                   executor)
     write(rows)
     print(table(this_run(rows), args.oracle, seeds))
     print(f"written: {md}, {png}, {data}")

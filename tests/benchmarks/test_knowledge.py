@@ -30,6 +30,14 @@ def test_curves_table_and_plot(tmp_path):
     assert [r.split(" | ")[:2] for r in rows] == [["| curiosity", "24"], ["| designed", "24"],
                                                   ["| curiosity", "48"], ["| designed", "48"]]
     assert (tmp_path / "knowledge-synthetic.png").stat().st_size > 1000
+    import json
+    rows = json.loads((tmp_path / "knowledge-synthetic.json").read_text())
+    for r in rows:       # each theory on every question set, over its bodies and every askable one
+        for tag in ("", "askable_"):
+            for prefix in ("", "interaction_", "random_"):
+                assert 0 <= r[f"{tag}{prefix}accuracy"] <= 1
+                assert r[f"{tag}{prefix}confident_errors"] >= 0
+            assert r[f"{tag}theory_behaviours"] <= r["behaviours"] + 40
 
 
 def test_the_curiositys_theory_at_a_budget_has_what_it_explored_by_then(tmp_path):
