@@ -14,7 +14,8 @@ import time
 #: loop runs: the world, the exploration and what it discovers, the
 #: reasoning, the general theory.
 MODULES = ("startup", "typed_questions", "checking", "oracle", "exploration", "discovery",
-           "knowledge", "reasoning", "loading", "generalization")
+           "knowledge", "reasoning", "loading", "generalization",
+           "hostile")
 
 
 def main() -> int:
