@@ -205,11 +205,19 @@ bodies_by_rule(LineFacts, Bodies) :-
     list_to_assoc(Grouped, Bodies).
 
 first_lines(R-LineBodies0, R-LineBodies) :-
-    foldl(first_line, LineBodies0, [], Rev),
-    reverse(Rev, LineBodies).
+    empty_assoc(Seen),
+    first_line(LineBodies0, Seen, LineBodies).
 
-first_line(Line-B, Seen, Out) :-
-    (   memberchk(_-B, Seen) -> Out = Seen ; Out = [Line-B|Seen] ).
+% first_line(+LineBodies0, +Seen, -LineBodies): each literal once, at its
+% first line (the literals seen in an assoc: a body of 20,000 literals
+% searched a list for each).
+first_line([], _, []).
+first_line([Line-B|T], Seen, Out) :-
+    (   get_assoc(B, Seen, _)
+    ->  Out = Rest, Seen1 = Seen
+    ;   Out = [Line-B|Rest], put_assoc(B, Seen, t, Seen1)
+    ),
+    first_line(T, Seen1, Rest).
 
 rule_bodies(Bodies, R, LineBodies) :-
     (   get_assoc(R, Bodies, LineBodies) -> true ; LineBodies = [] ).
