@@ -6,10 +6,11 @@ antecedent (a seed of its own, from the run's seed and the antecedent, so
 the same plan has the same pours in every run and the store simulates
 them once), in steps, until its goals were met in `min_success` of
 `verify` pours or can no longer be. When no plan of the round is
-verified, the theory learns from every pour of the run
-(plan_evidence.py) and the next round plans with what it learned. When
-the theory proposes nothing new (every plan it has was refuted, or it
-cannot reach the goals at all), plans are searched in the simulation: every
+verified, the theory learns from the pours of the plans it refuted
+(plan_evidence.py) and the next round plans with what it learned. Beside
+the theory's plans (at most THEORY_PER_ROUND a round), and in their place
+when it proposes nothing new (every plan it has was refuted, or it cannot
+reach the goals at all), plans are searched in the simulation: every
 manner proposition alone with the given context, then the pairs of the
 most promising, most promising first (as the learned theory predicts the
 goals). The search ends with a verified plan, when the budget of pours is
@@ -31,8 +32,10 @@ from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.planning import Plan, check_goals, goals_met, plan, pouring_goals
 from pantarhei.bridge.theories.model import Theory, complement
 
-#: Plans the theory proposes, or the search takes, per round.
+#: Plans verified per round: the theory's (at most THEORY_PER_ROUND), then
+#: the search's.
 PER_ROUND = 4
+THEORY_PER_ROUND = 2
 #: The singles whose pairs the search tries.
 PAIRED = 8
 
@@ -154,22 +157,25 @@ def search(theory: Theory, goals: Sequence[str], given: Sequence[str], simulate:
     pool: list[Plan] | None = None
     while True:
         tried = {t.plan.chosen for t in out.tried}
-        origin, proposed = "theory", []
+        proposed: list[tuple[str, Plan]] = []
         try:
             if use_theory:
-                proposed = _proposals(current, asked, given, tried)
+                proposed = [("theory", p) for p in _proposals(current, asked, given, tried)]
         except UserError as e:
             if out.rounds == 0:
                 out.unreachable = str(e)
-        if not proposed and explore:
+        proposed = proposed[:THEORY_PER_ROUND]
+        if explore and len(proposed) < PER_ROUND:
             if pool is None or learn:
                 pool = _candidates(current, lits, given)
-            origin, proposed = "search", [p for p in pool if p.chosen not in tried][:PER_ROUND]
+            theirs = {p.chosen for _, p in proposed}
+            proposed += [("search", p) for p in pool if p.chosen not in tried
+                         and p.chosen not in theirs][:PER_ROUND - len(proposed)]
         if not proposed:
             break
         out.rounds += 1
         spent = False
-        for p in proposed:
+        for origin, p in proposed:
             if out.pours + verify_pours > budget:
                 spent = True
                 break
