@@ -82,6 +82,8 @@ class Evaluation:
     #: The general theory (both layers as shipped, and the general rules alone)
     #: against the models, per method's pours: held-out and one-phrase questions.
     general: dict[str, Any] = field(default_factory=dict)
+    #: The shipped theory on interaction questions and random scenes (beyond.py).
+    beyond: dict[str, Any] = field(default_factory=dict)
     #: Per search method: distinct nine-verdict vectors among its pours, each seen twice.
     behaviours_seen: dict[str, int] = field(default_factory=dict)
     paper_rules: list[dict[str, Any]] = field(default_factory=list)
@@ -99,7 +101,8 @@ class Evaluation:
     def as_dict(self) -> dict[str, Any]:
         return {**{k: getattr(self, k) for k in
                    ("theory", "oracle", "settings", "budget", "reproduced", "kept_all", "heldout",
-                    "curves", "behaviours", "behaviours_seen", "general", "paper_rules", "plans")},
+                    "curves", "behaviours", "behaviours_seen", "general", "beyond", "paper_rules",
+                    "plans")},
                 **self.figures, "simulations": self.simulations, "seconds": self.seconds}
 
     @classmethod

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
 
-from pantarhei.bridge.evaluation import (behaviours, general_answers, heldout_accuracy,
+from pantarhei.bridge.evaluation import (behaviours, beyond, general_answers, heldout_accuracy,
                                          paper_rules, plan_checks, report_general, rule_table)
 from pantarhei.bridge.evaluation.pipeline import Evaluation, Inputs
 
@@ -53,6 +53,8 @@ MEASURES = (
             heldout_accuracy.heldout_headline),
     Measure("general", general_answers.general_stage, report_general.general_section,
             general_answers.general_headline, report_before="heldout"),
+    Measure("beyond", beyond.beyond_stage, beyond.beyond_section, beyond.beyond_headline,
+            report_before="heldout"),
     Measure("paper_rules", paper_rules.paper_rules_stage, paper_rules.paper_rules_section,
             paper_rules.paper_rules_headline),
     Measure("plans", plan_checks.plans_stage, plan_checks.plans_section,
