@@ -111,6 +111,9 @@ check_theory_fact(Fact, Problem) :-
     ;   Fact = rule(R, K, _), \+ memberchk(K, [strict, defeasible, defeater])
     ->  term_text(K, T),
         format(string(Problem), "rule ~w: kind strict, defeasible or defeater, not ~w", [R, T])
+    ;   Fact = provenance(R, confidence_permille, C), \+ ( integer(C), between(1, 1000, C) )
+    ->  term_text(C, T),            % some of its pours keep its head, or it concludes the other
+        format(string(Problem), "rule ~w: a confidence is the permille of its pours that keep its head, 1 to 1000, not ~w", [R, T])
     ;   theory_literal_arg(Fact, L),
         literal_problem(L, Problem)
     ->  true

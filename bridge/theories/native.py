@@ -9,8 +9,8 @@ from pathlib import Path
 from pantarhei.bridge.theories import facts as theory_facts
 from pantarhei.bridge.theories.facts import Fact, term_text
 from pantarhei.bridge.theories.model import Rule, Theory
-from pantarhei.bridge.theories.well_formed import (ARITY, DANGLING_BODY, KIND, KINDS, NAME,
-                                                   NAME_ARG, SECOND_RULE, check_literal)
+from pantarhei.bridge.theories.well_formed import (ARITY, CONFIDENCE, DANGLING_BODY, KIND, KINDS,
+                                                   NAME, NAME_ARG, SECOND_RULE, check_literal)
 from pantarhei.theory import TheoryFileError
 
 
@@ -48,6 +48,9 @@ def check_fact(f: Fact, source: str, checked: set | None = None) -> None:
             raise TheoryFileError(f"{source}:{f.line}: " + NAME_ARG.format(form, term_text(a[i])))
     if f.name == "rule" and a[1] not in KINDS:
         raise TheoryFileError(f"{source}:{f.line}: " + KIND.format(a[0], term_text(a[1])))
+    if f.name == "provenance" and a[1] == "confidence_permille" \
+            and not (type(a[2]) is int and 1 <= a[2] <= 1000):
+        raise TheoryFileError(f"{source}:{f.line}: " + CONFIDENCE.format(a[0], term_text(a[2])))
     i = _LITERAL_AT.get(f.name)
     if i is not None:
         lit = a[i] if type(a[i]) is str else term_text(a[i])

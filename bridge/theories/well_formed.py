@@ -22,6 +22,10 @@ _LITERAL = re.compile(rf"^(?:{_ATOM}|neg\({_ATOM}\))$")
 RULE_NAME = "a rule name in lower case letters, digits and _, not '{}'"
 KIND = "rule {}: kind strict, defeasible or defeater, not {}"
 SECOND_RULE = "a second rule named {}"
+#: A rule's recorded confidence is the permille of its pours that keep its
+#: head: some keep it, or the rule would conclude the other head.
+CONFIDENCE = ("rule {}: a confidence is the permille of its pours that keep its head, "
+              "1 to 1000, not {}")
 DANGLING_BODY = "body({0}, _) of a rule {0} that has no rule({0}, Kind, Head) fact"
 LITERAL = "a literal such as p, bird(tweety) or neg(p) (names and integers as arguments), not {}"
 DOUBLE_NEG = "a literal or its negation neg(L), not a double negation {}"

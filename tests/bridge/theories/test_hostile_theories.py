@@ -84,6 +84,16 @@ CORPUS: dict[str, tuple[bytes, int, str]] = {
         b"fact(p(a)).\nsetting(x,\n" + b"f(" * 32 + b"a" + b")" * 32 + b").\n", 2, facts.NESTING),
     "the name not": (b"rule(r1, defeasible, a).\nbody(r1, not).\n", 2, facts.NOT_NAME),
     "the name not as a functor": (b"fact(not(a)).\n", 1, facts.NOT_NAME),
+    "a confidence of 0 for a rule's head": (
+        b"rule(r1, defeasible, no_spill).\nprovenance(r1, confidence_permille, 0).\n", 2,
+        "rule r1: a confidence is the permille of its pours that keep its head, 1 to 1000, not 0"),
+    "a confidence past 1000": (
+        b"rule(g1, defeasible, no_spill).\nprovenance(g1, layer, general).\n"
+        b"provenance(g1, confidence_permille, 1200).\n", 3,
+        "rule g1: a confidence is the permille of its pours that keep its head, 1 to 1000, not 1200"),
+    "a confidence in words": (
+        b"rule(r1, defeasible, no_spill).\nprovenance(r1, confidence_permille, high).\n", 2,
+        "rule r1: a confidence is the permille of its pours that keep its head, 1 to 1000, not high"),
 }
 
 
