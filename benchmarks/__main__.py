@@ -12,9 +12,9 @@ import time
 
 #: The benchmark modules: the front door (start-up, questions as typed), then in the order the
 #: loop runs: the world, the exploration and what it discovers, the
-#: reasoning, the general theory.
+#: reasoning (and planning with re-planning), the general theory.
 MODULES = ("startup", "typed_questions", "checking", "oracle", "exploration", "discovery",
-           "knowledge", "reasoning", "loading", "generalization",
+           "knowledge", "reasoning", "replanning", "loading", "generalization",
            "hostile")
 
 
