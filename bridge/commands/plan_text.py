@@ -32,7 +32,7 @@ def plan_lines(p, given: list[str], said, trial=None) -> list[str]:
     for c in p.chosen:
         L.append(f"  {c:26} {vocab.propositions[c].gloss}")
     if trial is not None:
-        L.append(f"  verified: every goal met in {trial.met} of {trial.simulated} pours "
+        L.append(f"  verified: goals met in {trial.met} of {trial.simulated} simulations "
                  f"({trial.rate:.0%})" + (f", {trial.failed} failed" if trial.failed else "")
                  + "; per goal: " + ", ".join(f"{g} {n} of {trial.simulated}"
                                               for g, n in trial.per_goal.items()))
