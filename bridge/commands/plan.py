@@ -81,6 +81,9 @@ def plan(args: argparse.Namespace) -> int:
         given = known(_split(args.given))
     if not 0 < args.min_success <= 1:
         raise UserError("--min-success: a share above 0 and at most 1")
+    if args.verify and args.pours < args.verify:
+        raise UserError(f"--pours {args.pours}: the budget must hold one plan's --verify "
+                        f"{args.verify} pours at least")
     if args.learned_out is not None:
         _require_out(args.learned_out)
     theory = loading.load(args.theory, pouring=True)

@@ -243,6 +243,7 @@ def test_negated_goal(cli) -> None:
       "--theory", LEARNED, "--verify", "0"), "unreachable goal"),
     (("plan", "--goal", "no_spil", "--theory", LEARNED), "did you mean no_spill"),
     (("plan", "--goal", "no_spill", "--min-success", "1.5"), "--min-success"),
+    (("plan", "--goal", "no_spill", "--pours", "5"), "--pours 5: the budget must hold one plan's"),
     (("plan", "sing me a song", "--goal", "no_spill", "--verify", "0"), "understood none"),
 ])
 def test_bad_input_gets_one_line_and_a_non_zero_exit(cli, args, words: str) -> None:
