@@ -109,6 +109,9 @@ prolog_only(slope).
 prolog_only(breadth).
 prolog_only(ridge).
 prolog_only(qualify).
+prolog_only(doubt).
+prolog_only(newness).
+prolog_only(reach).
 
 % The options that decide an exploration's course, hashed into its run
 % key (bridge/exploration/course.py; a saved run resumes only with the
