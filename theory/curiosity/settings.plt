@@ -27,7 +27,7 @@ test(course_options_learn) :-
     settings([], S),
     S.curiosity == learn, S.initial == [], once(default(learn_batch, B)), S.batch =:= B,
     course_options(S, [oracle, seed, batch, pours, curiosity, body, queue, uncertainty,
-                       breadth, ridge, initial]),
+                       doubt, newness, reach, breadth, ridge, initial]),
     recorded_settings(S, "9", Facts, []),
     once(default(pours, Pours)),
     memberchk(setting(pours, Pours), Facts),

@@ -170,7 +170,7 @@ def test_the_command_end_to_end_simulates_nothing_the_second_time_and_gives_the_
                 str(tmp_path / "r"), "--scenes", "25", "--seed", "3", "--verify", "4",
                 "--paper-samples", "5", "--executor", "inline", "--no-progress")
     assert r.code == 0, r.err
-    assert "distinct behaviours" in r.out and f"report: {tmp_path / 'r' / 'README.md'}" in r.out
+    assert "behaviours in the theory" in r.out and f"report: {tmp_path / 'r' / 'README.md'}" in r.out
     again = json.loads((tmp_path / "r" / "evaluation.json").read_text())
     assert sum(again.pop("simulations").values()) == 0      # every pour from the store
     figures = json.loads(json.dumps(ev.as_dict()))
