@@ -280,8 +280,9 @@ def summary(rows: list[dict], key: str, method: str, pours: int) -> tuple[float,
     return (float(np.median(v)), float(min(v)), float(max(v))) if v else None
 
 
-def table(rows: list[dict], oracle: str, seeds: Sequence[int]) -> str:
-    """The report: one row per method and budget, medians [range]."""
+def table(rows: list[dict], oracle: str, seeds: Sequence[int], note: str = "") -> str:
+    """The report: one row per method and budget, medians [range]; `note`
+    a paragraph after the opening."""
     budgets = sorted({r["pours"] for r in rows})
     methods = [m for m in METHODS if any(r["method"] == m for r in rows)]
     cols = [*MEASURES, ("behaviours", "behaviours seen")]
@@ -301,7 +302,7 @@ def table(rows: list[dict], oracle: str, seeds: Sequence[int]) -> str:
            "states a likelihood of 80% or more on the side a clear key contradicts. Behaviours "
            "seen: distinct nine-verdict vectors that two or more of the method's pours show; "
            "in the theory: distinct nine-verdict answers, all decided, for its rules' bodies.",
-           "",
+           "", *([note, ""] if note else []),
            "| method | pours | " + " | ".join(label for _, label in cols) + " |",
            "|---|---|" + "---|" * len(cols)]
     for n in budgets:
