@@ -70,9 +70,12 @@ REACH_TIMEOUT = 5.0
 
 
 def reach(address: str, timeout: float = REACH_TIMEOUT) -> None:
-    """RuntimeError in one line unless something listens at the Ray
-    cluster `address` (HOST:PORT or ray://HOST:PORT; "auto" and other
-    forms are left to ray.init)."""
+    """RuntimeError in one line unless a Ray cluster answers at `address`
+    (HOST:PORT or ray://HOST:PORT; "auto" and other forms are left to
+    ray.init): something listens there, and it speaks gRPC, as Ray's
+    servers do (its first frame, after the client's HTTP/2 preface, is
+    the server's SETTINGS). ray.init waits minutes, deaf to SIGTERM, on a
+    port that is not Ray's."""
     import socket
 
     hostport = address.removeprefix("ray://")
@@ -80,14 +83,35 @@ def reach(address: str, timeout: float = REACH_TIMEOUT) -> None:
     if not sep or not port.isdigit() or not host:
         return
     try:
-        with socket.create_connection((host.strip("[]"), int(port)), timeout=timeout):
-            pass
+        with socket.create_connection((host.strip("[]"), int(port)), timeout=timeout) as c:
+            c.sendall(HTTP2_PREFACE + HTTP2_SETTINGS)
+            frame = _read(c, 9)
     except socket.gaierror:
         raise RuntimeError(f"cannot reach a Ray cluster at {address}: no such host {host}") from None
     except OSError as e:
         why = "no answer" if isinstance(e, TimeoutError) else (e.strerror or str(e))
         raise RuntimeError(f"cannot reach a Ray cluster at {address}: {why} "
                            f"(within {timeout:g} s)") from None
+    if len(frame) < 9 or frame[3] != 0x4:
+        raise RuntimeError(f"cannot reach a Ray cluster at {address}: what listens there does "
+                           "not speak gRPC, as Ray's servers do (is it the cluster's address?)")
+
+
+#: The client's connection preface of HTTP/2 (RFC 9113, 3.4) and an empty
+#: SETTINGS frame: a gRPC server answers with a SETTINGS frame of its own.
+HTTP2_PREFACE = b"PRI * HTTP/2.0\r\n\r\nSM\r\n\r\n"
+HTTP2_SETTINGS = bytes([0, 0, 0, 0x4, 0, 0, 0, 0, 0])
+
+
+def _read(conn, n: int) -> bytes:
+    """Up to n bytes from a connection, fewer if it closes first."""
+    out = b""
+    while len(out) < n:
+        part = conn.recv(n - len(out))
+        if not part:
+            break
+        out += part
+    return out
 
 
 class RayExecutor(Executor):

@@ -145,8 +145,43 @@ def test_a_ray_address_that_does_not_answer_is_refused_in_seconds_naming_it():
         reach(f"127.0.0.1:{free}", timeout=2)
     with pytest.raises(RuntimeError, match="no such host nosuchhost.invalid"):
         reach("ray://nosuchhost.invalid:10001", timeout=2)
-    with socket.socket() as s:                  # something listens: left to ray.init
+    with socket.socket() as s:                  # something listens and says nothing
         s.bind(("127.0.0.1", 0))
         s.listen()
-        reach(f"127.0.0.1:{s.getsockname()[1]}", timeout=2)
+        with pytest.raises(RuntimeError, match="no answer"):
+            reach(f"127.0.0.1:{s.getsockname()[1]}", timeout=1)
     reach("auto")
+
+
+@pytest.mark.parametrize("answer, ray", [(b"HTTP/1.1 400 Bad Request\r\n\r\n", False),
+                                         (bytes([0, 0, 6, 0x4, 0, 0, 0, 0, 0]) + b"\0" * 6, True)])
+def test_a_ray_address_is_refused_unless_it_speaks_grpc(answer, ray):
+    """A port that answers but is not Ray's (a web server) is refused in
+    seconds, before ray.init waits on it; one that answers the HTTP/2
+    preface with a SETTINGS frame, as Ray's gRPC servers do, passes."""
+    import socket
+    import threading
+
+    from pantarhei.oracle.ray_executor import HTTP2_PREFACE, reach
+
+    heard = []
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        s.listen()
+
+        def serve():
+            conn, _ = s.accept()
+            with conn:
+                heard.append(conn.recv(len(HTTP2_PREFACE)))
+                conn.sendall(answer)
+
+        t = threading.Thread(target=serve, daemon=True)
+        t.start()
+        address = f"127.0.0.1:{s.getsockname()[1]}"
+        if ray:
+            reach(address, timeout=5)
+        else:
+            with pytest.raises(RuntimeError, match="does not speak gRPC"):
+                reach(address, timeout=5)
+        t.join(5)
+    assert heard == [HTTP2_PREFACE]
