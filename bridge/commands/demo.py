@@ -30,7 +30,6 @@ QUESTIONS = (
 PLANS = (
     (["light_liquid"], "liquid_leaves_source"),
     (["pour_to_side"], "liquid_enters_destination,no_spill"),
-    (["pour_far_away"], "liquid_enters_destination,no_spill"),
     (["heavy_liquid", "light_destination"], "destination_upright,no_spill"),
     (["pour_low"], "source_clear,destination_still_approach"),
     ([], "liquid_leaves_source,liquid_remains_in_destination,no_spill"),

@@ -147,8 +147,9 @@ def print_plans(theory, goals: list[str], given: list[str], alternatives: int, v
             return 0
         print_unverified(theory, lits, added, given, plans)
         return 0
+    oracle = oracle or _verifying_oracle(theory)     # the oracle the pours are simulated with
     found = _search(theory, goals, given, alternatives, verify, min_success, seed, store, budget,
-                    oracle or _verifying_oracle(theory))
+                    oracle)
     if learned_out is not None and found.learned:
         from pantarhei.bridge.files import write_text
 
