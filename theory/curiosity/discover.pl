@@ -163,7 +163,7 @@ discover_queue(Best, Explored, Id, Props, Away, Rest, Settings, I, Added, Queue)
 %   (validity:random_antecedents/3, seeded by the run's seed and the
 %   iteration), none in Exclude, each once.
 jumps(Settings, I, Exclude, New) :-
-    Seed is Settings.seed * 1000003 + I,
+    step_seed(Settings, I, Seed),
     random_antecedents(Seed, Settings.jumps, All),
     exclude(in_list(Exclude), All, New0),
     list_to_set(New0, New).

@@ -1,7 +1,8 @@
 :- module(curiosity_state,
           [ initial_state/3,          % +Begun, +Settings, -State
             exclusions/3,             % +Explored, +Away, -Exclude
-            entry/2                   % +Ant, -Entry
+            entry/2,                  % +Ant, -Entry
+            step_seed/3               % +Settings, +Iteration, -Seed
           ]).
 /** <module> The state of the exploration loop
 
@@ -48,3 +49,12 @@ exclusions(Explored, Away, Exclude) :-
 %   Entry is the explored antecedent Ant (ant/4) as the foreign
 %   predicates take it: its id and propositions.
 entry(ant(Id, Props, _, _), _{id:Id, antecedent:Props}).
+
+%!  step_seed(+Settings:dict, +Iteration:integer, -Seed:integer) is det.
+%
+%   Seed is the seed of a step's random candidates (the discovering
+%   curiosity's jumps, the learning curiosity's reach): derived from the
+%   run's seed and the iteration, so a resumed run draws what the
+%   uninterrupted one drew.
+step_seed(Settings, I, Seed) :-
+    Seed is Settings.seed * 1000003 + I.

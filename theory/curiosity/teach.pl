@@ -104,7 +104,7 @@ learn_trace(I1-Id, cand(Props, Parent, Via), Sim, Added, ANew, Trace) :-
 teach_queue(Explored, Id, Props, Rest, Settings, Added, Queue) :-
     exclusions(Explored, Rest, Exclude),
     children(Props, Settings.body, Exclude, Kids),
-    Seed is Settings.seed * 1000003 + Settings.iteration,
+    step_seed(Settings, Settings.iteration, Seed),
     append([Props|Kids], Exclude, Known),
     reach(Seed, Settings.reach, Settings.body, Known, Far),
     findall(cand(P, Id, near), member(P, Kids), Near),
