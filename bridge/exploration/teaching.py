@@ -176,7 +176,7 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
             doubts, news = batch_doubt(meaning, S, cands, batch, seed, iteration)
     else:
         doubts = news = np.zeros(len(cands))
-    value, dep, unc = [], [], []
+    value, dep, unc, doubt_of = [], [], [], []
     for c, h, new in zip(cands, doubts, news):
         m = M[index[c]]
         explored = c in done
@@ -193,11 +193,11 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
         doubt = float(h) * drop / (1 - 1 / np.sqrt(batch + 1))
         dep.append(round(departure, 6))
         unc.append(round(uncertainty, 6))
+        doubt_of.append(round(doubt, 6))
         value.append(round(asked.get(len(c), learner.pair_weight)
                            * (departure + weights.uncertainty * uncertainty)
                            + weights.doubt * doubt + weights.newness * float(new), 6))
-    return Teaching(value, dep, unc, [round(float(d), 6) for d in doubts],
-                    [round(float(x), 6) for x in news])
+    return Teaching(value, dep, unc, doubt_of, [round(float(x), 6) for x in news])
 
 
 def batch_doubt(meaning, S: np.ndarray, cands: Sequence[tuple[str, ...]], batch: int,

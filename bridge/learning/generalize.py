@@ -239,18 +239,15 @@ def _doubts(rules: list[GeneralRule], k: int, meaning: Meaning, P: np.ndarray,
                 or min(r.confidence, q.confidence) < s.doubt_confidence):
             continue
         pairs.append((-abs(r.likelihood - q.likelihood), union, max(r, q, key=lambda x: x.rank)))
-    seen: set = set()
-    todo = []
+    todo: dict[tuple[str, ...], GeneralRule] = {}     # each union once, with its first pair's top
     for _, union, top in sorted(pairs, key=lambda x: (x[0], x[1])):
-        if union not in seen:
-            seen.add(union)
-            todo.append((union, top))
+        todo.setdefault(union, top)
     if not todo:
         return []
     inside = s.band - 0.002          # strictly within the band, once written in permille
     out: list[GeneralRule] = []
-    M = meaning([u for u, _ in todo])[:, k]
-    for (union, top), m in zip(todo, M):
+    M = meaning(list(todo))[:, k]
+    for (union, top), m in zip(todo.items(), M):
         if len(out) >= room or not np.isfinite(m):
             continue
         if int(in_support(P, union).sum()) < s.doubt_support:
