@@ -13,8 +13,9 @@ from pantarhei.bridge.reasoning.wording import Token, stem
 OBJECTS = ("source", "destination", "liquid")
 OBJECT_STEMS = {stem(o): o for o in OBJECTS}
 BOWL = stem("bowl")
-#: Words that may stand between a body's value word and its noun: "a light, slippery bowl".
-BETWEEN = {"a", "an", "the", "and", "or", "very", "material"}
+#: Words that may stand between a body's value word and its noun: "a light, slippery bowl",
+#: "a heavy ceramic bowl", "the spout of a light jug" (everyday.txt's materials, context, parts).
+BETWEEN = {"a", "an", "the", "and", "or", "very", "material", "context", "part"}
 ARTICLES = {"a", "an", "the"}
 #: (word, next word) before a bowl that the liquid is poured out of: "pour from a cup",
 #: "into a bowl from a cup" (not "far from the cup": the destination)

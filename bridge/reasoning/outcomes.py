@@ -4,7 +4,10 @@ A clause that asks about the outcome ("will it spill?", "does the bowl
 slide?", "is it messy", "does anything come out", "is it safe", "does it
 all go in") names the expectations it asks about: the answer puts them
 first, and the clause is taken out of the scene's words, its subject left
-in ("will a light bowl tip over?" still says a light bowl). A clause
+in ("will a light bowl tip over?" still says a light bowl), but not how
+much of the liquid it asks of ("does most of it go in"). "What if the
+bowl moves?" asks what follows an outcome, which the vocabulary cannot
+say: it is refused. A clause
 about what the person or the robot does ("do I tip the cup") is no
 outcome. A goal said with the scene ("without spilling", "so that it all
 goes in", "so that the cup does not touch the bowl") is what the person
@@ -21,6 +24,8 @@ import re
 from dataclasses import dataclass
 from functools import lru_cache
 
+from pantarhei.bridge.reasoning.everyday import Matcher, names
+
 _STILL = ("destination_still_approach", "destination_still_retreat", "destination_still_settle")
 _ALL_IN = ("liquid_enters_destination",)
 
@@ -29,30 +34,41 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*) over(?: the (?:rim|edge|top|side)s?)?"
      r"|flood\w*", ("liquid_remains_in_destination", "no_spill"), True),
     (r"spill\w*|splash\w*|splatter\w*|slosh\w*|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
-     r"|make (?:a|any) mess|makes (?:a|any) mess|(?:go|goes|going|went|get|gets) everywhere",
+     r"|make (?:a|any) mess|makes (?:a|any) mess|(?:go|goes|going|went|get|gets) everywhere"
+     r"|slop\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)"
+     r"|(?:go|goes|going|went|get|gets|got|land|lands|landed|landing) (?:on|onto|all over)",
      ("no_spill",), True),
-    (r"(?:stay|stays|remain|remains|keep|keeps) upright", ("destination_upright",), False),
-    (r"tip(?:s|ped|ping)?(?: over)?|topple\w*|fall(?:s|ing)? over|fell over|knock\w* over"
-     r"|turn\w* over|flip\w*", ("destination_upright",), True),
-    (r"(?:stay|stays|remain|remains|keep|keeps|be|is) (?:still|put|in place|steady)", _STILL, False),
-    (r"slid\w*|slip(?:s|ped|ping)?\b|shift\w*|budg\w*|wobbl\w*|skid\w*"
+    (r"(?:stay|stays|remain|remains|keep|keeps) (?:upright|standing)", ("destination_upright",), False),
+    (r"tip(?:s|ped|ping)?(?: over)?|topple\w*|(?:fall|falls|falling|fell) (?:over|down)|knock\w* over"
+     r"|turn\w* over|flip\w*|capsiz\w*|overturn\w*|keel\w* over|tumbl\w*"
+     r"|(?:fall|falls|fell)\b(?! (?:in|into|inside|out|off|on|onto)\b)", ("destination_upright",), True),
+    (r"(?:stay|stays|remain|remains|keep|keeps|be|is) (?:still|put|in place|steady|stable|stationary"
+     r"|where it is)", _STILL, False),
+    (r"slid\w*|slip(?:s|ped|ping)?\b|shift\w*|budg\w*|wobbl\w*|skid\w*|wiggl\w*|jiggl\w*"
+     r"|jostl\w*|rock(?:s|ed|ing)?|shak(?:e|es|ing)|shook|translat\w*|drift\w*|creep\w*|scoot\w*"
+     r"|displac\w*|(?:go|goes|going|get|gets|getting) (?:wiggly|wobbly|shaky|jiggly)"
      r"|mov(?:e|es|ed|ing)\b(?! (?:in|away|closer|to|out|back|up|down|over|into|off|towards?)\b)",
      _STILL, True),
     (r"bump\w*|hit(?:s|ting)?|touch\w*|collid\w*|crash\w*|knock\w*|clip(?:s|ped)?|strike\w*"
-     , ("source_clear",), True),
+     r"|bonk\w*|bang\w*|intersect\w*|clash\w*|graz(?:e|es|ed|ing)|scrap(?:e|es|ed|ing)|nudg\w*"
+     r"|smash\w*|whack\w*|(?:run|runs|ran|running) into|(?:come|comes|came) into contact"
+     r"|make contact|makes contact", ("source_clear",), True),
     (r"(?:stay|stays|keep|keeps|be|is)? ?clear(?: of)?", ("source_clear",), False),
     (r"(?:come|comes|coming|came|get|gets|pour|pours|flow|flows|run|runs|drain\w*) out"
-     r"|empt(?:y|ies|ied)(?: out)?", ("liquid_leaves_source",), False),
-    (r"(?:stay|stays|remain|remains|stop|stops|end up|ends up) in(?:side)?(?: the \w+)?",
+     r"|empt(?:y|ies|ied)(?: out)?|leav(?:e|es|ing) the|exit\w*", ("liquid_leaves_source",), False),
+    (r"(?:end|ends|ended|ending) up in(?:side)?", (*_ALL_IN, "liquid_remains_in_destination"), False),
+    (r"(?:stay|stays|remain|remains|stop|stops) in(?:side)?(?: the \w+)?",
      ("liquid_remains_in_destination",), False),
-    (r"(?:go|goes|going|went|get|gets|land|lands|end up|ends up|make it|makes it|fall|falls|"
-     r"reach\w*|arrive\w*) (?:in|into|inside)\b", _ALL_IN, False),
+    (r"(?:go|goes|going|went|get|gets|land|lands|make it|makes it|fall|falls|"
+     r"arrive\w*) (?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)", _ALL_IN, False),
     (r"miss(?:es|ed|ing)?", _ALL_IN, True),
-    (r"safe(?:ly)?", ("no_spill", "destination_upright", "source_clear"), False),
+    (r"safe(?:ly)?|(?:be |is )?(?:fine|ok|okay|alright|all right)\b",
+     ("no_spill", "destination_upright", "source_clear"), False),
 )
 #: Words that ask: an auxiliary before its subject ("will it spill"), or a
 #: quantifier that needs none ("anything come out", "how much spills").
-_AUX = r"will|would|does|do|did|could|can|might|may|is|are|was|were|should|shall"
+_MODALS = r"will|would|does|do|did|could|can|might|may|should|shall"
+_AUX = rf"{_MODALS}|is|are|was|were"
 #: Who acts: a clause with one of these in its subject says what is done, not what happens
 #: ("do I tip the cup"); the source moving is the scene's too ("does the source move slowly").
 _ACTORS = {"i", "we", "you", "robot", "arm", "gripper", "hand", "he", "she", "they"}
@@ -62,6 +78,10 @@ _REST = ("on|onto|over|out|of|in|into|inside|outside|the|a|an|table|floor|counte
          "ground|everywhere|anywhere|at|all|any|anything|it|its|liquid|water|bowl|cup|glass|"
          "destination|source|target|container|rim|edge|sides?|much|too|even|ever|really|very|"
          "up|down|off|away|again|then")
+#: How much of the liquid an outcome is asked of ("does most of it spill"): the outcome's
+#: words, not the scene's ("some of it" is no some_liquid).
+_PART_OF = re.compile(r"\b(?:most|all|any|some|much|half|none|part|a lot|a bit|a little|little|"
+                      r"the rest|each) of\b")
 _END = rf"(?P<rest>(?: (?:{_REST})\b)*)"
 
 
@@ -74,17 +94,19 @@ class Heard:
 
 
 @lru_cache(maxsize=None)
-def _patterns() -> tuple[re.Pattern, re.Pattern, re.Pattern, re.Pattern]:
+def _patterns() -> tuple[re.Pattern, ...]:
     verbs = "|".join(f"(?P<v{k}>{v})" for k, (v, _, _) in enumerate(OUTCOMES))
-    subject = r"(?P<subject>(?: (?!(?:if|when|while|not)\b)[a-z]+){0,4}?)"
+    # (not holding another auxiliary: "do you think it will spill" asks "will it spill")
+    subject = rf"(?P<subject>(?: (?!(?:if|when|while|not|{_MODALS})\b)[a-z]+){{0,5}}?)"
     asked = re.compile(
         rf"(?<!that )(?<!which )\b(?:(?P<aux>{_AUX})(?P<neg> not)?{subject}|(?P<quant>how much(?: \w+)?|anything|"
         rf"something|everything|nothing|any (?:liquid|water)|all of it|it all))"
         rf" (?:all |any |ever |even |still |not )?(?:{verbs})\b{_END}")
     nominal = re.compile(r"\b(?:(?:is|will) there (?:be )?)?(?:any|a|no|some) (?P<v1>spill(?:s|age)?"
-                         r"|splash(?:es)?|mess|drips?)\b")
+                         r"|splash(?:es)?|mess|drips?)\b(?! of\b)")
     goal = re.compile(
-        rf"\b(?:without (?P<gneg>any |a |making (?:a |any )?)?|so(?: that| as)?(?P<gsub>(?: (?!not\b)"
+        rf"\b(?:without (?P<gneg>any |a |making (?:a |any )?)?(?P<gwho>(?:it|them|the [a-z]+) )?"
+        rf"|so(?: that| as)?(?P<gsub>(?: (?!not\b)"
         rf"[a-z]+){{0,4}}?)(?P<gnot> not| never)? (?:(?:to|will|does|do|would|can|could|all|"
         rf"any) )?)(?:{verbs})\b{_END}")
     # what is asked, or wanted, next to it: "will it spill or overflow?", "without spilling or
@@ -100,8 +122,17 @@ def _which(m: re.Match) -> tuple[tuple[str, ...], bool]:
 
 
 def _acts(subject: list[str], names: tuple[str, ...]) -> bool:
-    """Whether a clause with `subject` says what is done rather than what happens."""
-    return bool(_ACTORS.intersection(subject)) or (names == _STILL and "source" in subject)
+    """Whether a clause with `subject` says what is done rather than what
+    happens, or what happens to something the scene does not hold ("is
+    the table wobbly": everyday.txt's context nouns)."""
+    return (bool(_ACTORS.intersection(subject)) or (names == _STILL and "source" in subject)
+            or bool(_around().spans(subject)))
+
+
+@lru_cache(maxsize=None)
+def _around() -> Matcher:
+    """The context nouns of the everyday word list: what is around a pour."""
+    return Matcher(names("context"))
 
 
 def hear(text: str) -> Heard:
@@ -118,7 +149,7 @@ def hear(text: str) -> Heard:
         return f" {keep} outcome " if keep else " outcome "
 
     def as_goal(m: re.Match) -> str:
-        subject = (m.group("gsub") or "").split()
+        subject = (m.group("gsub") or m.group("gwho") or "").split()
         names, bad = _which(m)
         if _acts(subject, names):
             return m.group(0)
@@ -133,11 +164,13 @@ def hear(text: str) -> Heard:
     def as_asked(m: re.Match) -> str:
         subject = (m.group("subject") or "").split()
         names, _ = _which(m)
-        if _acts(subject, names):
+        # "the table is wobbly": the subject before its verb, not the scene's
+        before = m.string[:m.start()].split()[-3:] if not subject else []
+        if _acts(subject, names) or _around().spans(before):
             return m.group(0)
         asked.extend(n for n in names if n not in asked)
         kept = " ".join(subject) if m.group("aux") else ""
-        return take(m, kept)
+        return take(m, _PART_OF.sub("", kept))
 
     def as_nominal(m: re.Match) -> str:
         asked.extend(n for n in ("no_spill",) if n not in asked)

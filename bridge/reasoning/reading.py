@@ -52,7 +52,7 @@ from pantarhei.bridge.reasoning.quantities import read_numbers
 from pantarhei.bridge.reasoning.stages import MARKER_STEMS, MOVE, POSE, stages
 from pantarhei.bridge.reasoning.wording import Token, normalised, stem, tokens as words_of
 from pantarhei.bridge.reasoning.suggestions import misspelt
-from pantarhei.bridge.reasoning.words import FILLERS, HINTS, SAID_BACK, UNCLEAR, rewrites
+from pantarhei.bridge.reasoning.words import FILLERS, UNCLEAR, hints as phrasings, rewrites
 from pantarhei.theory.lexicon import load_vocabulary
 
 #: The most other words between the words of one reading.
@@ -61,6 +61,9 @@ _IGNORED = {stem(w) for w in FILLERS}
 #: Words words.py writes for "leave it tilted" and "leave it there": the end
 #: pose keeps the pour's tilt, or its whole pose.
 _SAME = {"same_tilt": ("tilt",), "same_pose": ("height", "alignment", "tilt", "roll")}
+#: Words the everyday word list reads as nothing, said back with the reason
+#: ("plastic", "table", "spout"): a question may hold them and ask of the ordinary pour.
+_SAID_AS_NOTHING = frozenset({"material", "context", "part"})
 
 
 @dataclass(frozen=True)
@@ -106,7 +109,7 @@ def _lexicon() -> _Lexicon:
     texts = [*(p.gloss for p in props.values()), *(d.gloss for d in vocab.dimensions.values()),
              *(p.gloss for p in vocab.parameters)]
     known = {stem(w) for t in texts for w in re.findall(r"[a-z]+", t.lower())} | asked
-    known |= {stem(w) for _, words in rewrites() for w in words}
+    known |= {stem(w) for _, words, _ in rewrites() for w in words}
     known |= _IGNORED | slot_words | NEGATION_STEMS | {"very"} | set(_SAME)
     # the dimension whose gloss says the liquid is in the source: its values
     # may be said of the source ("a full cup")
@@ -114,7 +117,7 @@ def _lexicon() -> _Lexicon:
                and "source" in vocab.dimensions[p.dimension].gloss}
     # what a question of the ordinary pour may hold: its frame, the bodies,
     # pouring and the expectations it asks of ("does the liquid spill?")
-    asking = _IGNORED | set(OBJECT_STEMS) | {BOWL, "pour"} | asked
+    asking = _IGNORED | set(OBJECT_STEMS) | {BOWL, "pour"} | asked | _SAID_AS_NOTHING
     saying: dict[str, list[str]] = {}
     for words, names in phrases.items():
         for w in words:
@@ -196,15 +199,17 @@ def read_question(question: str) -> Reading:
     _refuse_unplaced(question, tokens, accepted, lex)
     out += _same_at_the_end(tokens, out, vocab)
     if not accepted and not _ordinary(tokens, lex, bool(outcome.asked or outcome.goals)):
-        hint = misspelt([t.raw for t in tokens if t.word not in lex.known])
-        raise UserError(f"understood none of \"{question}\": " + (hint[0] if hint else (
+        unknown = list(dict.fromkeys(t.raw for t in tokens if t.word not in lex.known))
+        hint = misspelt(unknown)
+        said = f"could not place {', '.join(f'{w!r}' for w in unknown)}: " if unknown else ""
+        raise UserError(f"understood none of \"{question}\": {said}" + (hint[0] if hint else (
             "describe the scene with the words of `pantarhei vocab`, or give --props P1,P2")))
     taken = set().union(set(), *(p for _, p in accepted))
     structural = _IGNORED | NEGATION_STEMS | set(OBJECT_STEMS) | {BOWL} | set(MARKER_STEMS)
     ignored = [t.raw for i, t in enumerate(tokens) if i not in taken and t.word not in structural
                and t.word not in _SAME]
     heard = [t.raw for i, t in enumerate(tokens) if t.raw not in ignored]
-    notes = _notes(text)
+    notes = _notes(tokens)
     noted = {n.split(":")[0] for n in notes}
     return Reading(tuple(sorted(set(out))), outcome.asked, outcome.goals, notes,
                    tuple(dict.fromkeys(w for w in ignored if w not in noted)),
@@ -232,10 +237,10 @@ def _same_at_the_end(tokens: list[Token], scene: list[str], vocab) -> list[str]:
     return out
 
 
-def _notes(text: str) -> tuple[str, ...]:
+def _notes(tokens: list[Token]) -> tuple[str, ...]:
     """The everyday words of the question said back: how each was read."""
-    return tuple(dict.fromkeys(f"{m.group(0)}: {note}" for pattern, note in SAID_BACK
-                               for m in re.finditer(pattern, text)))
+    return tuple(dict.fromkeys(f"{t.raw.removesuffix(' of')}: {t.said_back}" for t in tokens
+                               if t.said_back))
 
 
 def _ordinary(tokens: list[Token], lex: _Lexicon, asks: bool) -> bool:
@@ -376,7 +381,8 @@ def _refuse_unplaced(question: str, tokens: list[Token], accepted, lex: _Lexicon
     if not words:
         return
     said = ", ".join(f'"{w}"' for w in words)
-    hints = [h for pattern, h in HINTS if any(re.search(pattern, w) for w in words)]
+    hints = list(dict.fromkeys(h for pattern, h in phrasings()
+                               if any(re.search(pattern, w) for w in words)))
     if not hints and value_words:
         glosses = list(dict.fromkeys(g for w in value_words for g in lex.saying[w]))
         if len(glosses) <= 4:

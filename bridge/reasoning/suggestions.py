@@ -1,11 +1,12 @@
 """Words a refusal offers for a word it could not read: the vocabulary's
-word it is close to ("tilded": "tilted"), as the glosses and the everyday
-phrases of words.py write them."""
+word it is close to ("tilded": "tilted"), as the glosses, the everyday
+phrases of words.py and the everyday word list (everyday.txt) write them."""
 from __future__ import annotations
 
 import re
 from functools import lru_cache
 
+from pantarhei.bridge.reasoning.everyday import sections
 from pantarhei.bridge.reasoning.words import PHRASES
 from pantarhei.theory.lexicon import load_vocabulary
 
@@ -14,7 +15,8 @@ from pantarhei.theory.lexicon import load_vocabulary
 def _spelt() -> tuple[str, ...]:
     """The words of four letters or more of the glosses and the phrases."""
     texts = [p.gloss for p in load_vocabulary().propositions.values()] + [
-        " ".join(re.findall(r"[a-z]+", p)) for _, ps in PHRASES for p in ps if not p.startswith("re:")]
+        " ".join(re.findall(r"[a-z]+", p)) for ps in (*(ps for _, ps in PHRASES), *(s.phrases for s in sections()))
+        for p in ps if not p.startswith("re:")]
     return tuple(sorted({w for t in texts for w in re.findall(r"[a-z]{4,}", t.lower())}))
 
 

@@ -22,6 +22,8 @@ CLAUSE_ENDS = {"but", "then", "while", "whereas", "instead", "rather", "except",
 NUMBER = r"-?\d+(?:\.\d+)?"
 #: The minus signs a number may be written with: ASCII, U+2212 and the en dash.
 _MINUS = "-\u2212\u2013"
+#: What the contractions other than "n't" and "'s" stand for: "it'll", "I'm".
+_CONTRACTED = {"ll": "will", "re": "are", "m": "am", "ve": "have", "d": "would"}
 #: The stage words: an "and" before one starts a new clause ("tilt it and end upright").
 STAGE_WORDS = ("start", "pour", "end", "finally", "final", "approach", "retreat", "then")
 
@@ -39,6 +41,7 @@ class Token:
     word: str        # stemmed, lower case (a proposition's name as written)
     raw: str         # as written
     clause: int
+    said_back: str = ""   # what `ask` says of an everyday word ("read as an ordinary liquid ...")
 
 
 def normalised(text: str) -> str:
@@ -51,6 +54,8 @@ def normalised(text: str) -> str:
     text = re.sub(r"\bcan't\b|\bcannot\b", "can not", text)
     text = re.sub(r"\bwon't\b", "will not", text)
     text = re.sub(r"n't\b|\b(do|does|did|is|are|was|were)nt\b", r"\1 not", text)
+    text = re.sub(r"'(ll|re|m|ve|d)\b", lambda m: " " + _CONTRACTED[m.group(1)], text)
+    text = text.replace("%", " percent ")
     text = re.sub(r"'s?\b", "", text)                 # the destination's rim
     text = re.sub(r"(\d)\s*\u00b0", r"\1 degrees ", text)  # 45\u00b0
     text = re.sub(r"(\d)\s*(?:(?:k?m|cm|mm)\s*/\s*(?:s|sec|h|hr)|(?:k?m|cm|mm|metres?|meters?|"
@@ -61,35 +66,53 @@ def normalised(text: str) -> str:
 
 def tokens(text: str) -> list[Token]:
     """The words of `text` in the vocabulary's words, stemmed, each with its clause."""
-    pairs = [(w, w) for w in re.findall(rf"{NUMBER}|[a-z0-9_]+|[,;.!?:()]", normalised(text))]
-    joined = " ".join(w for w, _ in pairs)
-    for pattern, words in rewrites():
-        if pattern.search(joined):
-            pairs = _rewrite(pairs, pattern, words)
-            joined = " ".join(w for w, _ in pairs)
+    pairs = [(w, w, "") for w in re.findall(rf"{NUMBER}|[a-z0-9_]+|[,;.!?:()]", normalised(text))]
+    joined = " ".join(w for w, _, _ in pairs)
+    for pattern, words, said in rewrites():
+        if isinstance(pattern, re.Pattern):
+            if not pattern.search(joined):
+                continue
+            spans = _spans(pattern, joined, pairs)
+        else:
+            spans = pattern.spans([w for w, _, _ in pairs])
+        if spans:
+            pairs = _rewrite(pairs, spans, words, said)
+            joined = " ".join(w for w, _, _ in pairs)
     out, clause = [], 0
-    for k, (word, raw) in enumerate(pairs):
+    for k, (word, raw, said) in enumerate(pairs):
         if (not re.match(r"[-a-z0-9_]", word) or word in CLAUSE_ENDS
                 or (word == "and" and k + 1 < len(pairs) and pairs[k + 1][0] in STAGE_WORDS)):
             clause += 1
             if not re.match(r"[-a-z0-9_]", word):
                 continue
-        out.append(Token(word if "_" in word or word[0] == "-" else stem(word), raw, clause))
+        out.append(Token(word if "_" in word or word[0] == "-" else stem(word), raw, clause, said))
     return out
 
 
-def _rewrite(pairs: list[tuple[str, str]], pattern: re.Pattern, words: tuple[str, ...]):
-    """(word, as written) pairs with each match of `pattern` read as `words`."""
+def _spans(pattern: re.Pattern, joined: str, pairs) -> list[tuple[int, int]]:
+    """(first, end) of the words each match of `pattern` in `joined` (the
+    words of `pairs`, spaced) covers: matches that start on a word."""
     starts, at = [], 0
-    for w, _ in pairs:
+    for w, _, _ in pairs:
         starts.append(at)
         at += len(w) + 1
     out, last = [], 0
-    for m in pattern.finditer(" ".join(w for w, _ in pairs)):
+    for m in pattern.finditer(joined):
         i, j = bisect_left(starts, m.start()), bisect_left(starts, m.end())
         if i < last or i == len(starts) or starts[i] != m.start():
             continue
-        raw = " ".join(r for _, r in pairs[i:j])
-        out += pairs[last:i] + [(w, raw) for w in words]
+        out.append((i, j))
+        last = j
+    return out
+
+
+def _rewrite(pairs: list[tuple[str, str, str]], spans: list[tuple[int, int]],
+             words: tuple[str, ...], said: str):
+    """(word, as written, said back) triples with the words of each span
+    read as `words`, said back as `said`."""
+    out, last = [], 0
+    for i, j in spans:
+        raw = " ".join(r for _, r, _ in pairs[i:j])
+        out += pairs[last:i] + [(w, raw, said) for w in words]
         last = j
     return out + pairs[last:]

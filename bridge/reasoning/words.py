@@ -10,6 +10,12 @@ in" matches "moving in"); "[the source|it]" is an optional part, and a
 pattern starting with "re:" is a regular expression. Entries apply in
 order, so a longer phrase comes before a word it holds.
 
+The names of things (liquids, containers, materials, what is around a
+pour), hedges, degree phrases and the words the vocabulary cannot say
+are data: the everyday word list, everyday.txt, read by everyday.py and
+applied after the first entry of PHRASES; each of its phrases carries
+what `ask` says back of it ("milk: read as an ordinary liquid ...").
+
 The stage words ("start", "pour", "end", "approach", "retreat") are
 read by reading.py: the rewrites here only bring other words to them.
 """
@@ -17,6 +23,8 @@ from __future__ import annotations
 
 import re
 from functools import lru_cache
+
+from pantarhei.bridge.reasoning.everyday import Matcher, alternation, names, sections
 
 _IT = "[the source|the bowl|it]"
 #: Words that begin a manner of pouring ("from the side", "with a light liquid").
@@ -28,22 +36,13 @@ _MANNER = ("from|with|over|into|onto|low|high|very|steeply|slightly|halfway|tilt
 #: nowhere, so a question that says one is refused naming the phrase.
 UNCLEAR = "unclear"
 
-#: Materials: what a bowl is made of is not in the vocabulary (read as nothing, said back).
-_MATERIALS = ("plastic|ceramic|metal|metallic|steel|stainless steel|aluminium|aluminum|tin|copper|"
-              "iron|wooden|wood|paper|cardboard|porcelain|china|clay|stone|silicone|rubber|"
-              "styrofoam|crystal|enamel|enamelled|earthenware|terracotta|bamboo")
-_CONTAINERS = ("cup|container|glass|jug|mug|pot|vessel|jar|beaker|pitcher|basin|bottle|flask|"
-               "carafe|kettle|teapot|tumbler|saucepan|pan|bucket|can|ladle|dish|tub")
-#: Liquids by name, read as the vocabulary's ordinary liquid (and said back).
-_LIQUIDS = ("milk|oil|olive oil|cooking oil|juice|orange juice|coffee|tea|soup|wine|beer|broth|"
-            "stock|sauce|soda|vinegar|lemonade|cola|coke|ink|paint|cream|smoothie|liquor|"
-            "alcohol|petrol|gasoline|water")
-
 PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("hedge", ("how much", "how many",    # asks, does not say: "how much liquid spills"
                "nearly")),                 # a hedge (its stem would be "near")
-    ("material", (rf"re:\b(?:{_MATERIALS})\b", rf"re:\bglass(?= (?:{_CONTAINERS}|bowl)s?\b)",
-                  "made of", "made from")),
+    # (the everyday word list, everyday.txt, is read here: see rewrites())
+    # a bowl full of what is around the pour ("a bowl full of cereal") is not a full bowl
+    ("hedge", (r"re:\b(?:full|filled) (?:up )?(?:with|of)(?= (?:the )?context\b)",)),
+    ("material", ("made of", "made from")),
     # leaving the source as it was poured: the end pose is the pour's
     ("end same_tilt", (r"re:\b(?:leave|leaves|leaving|left|keep|keeps|keeping|kept) (?:it|the \w+)"
                        r" (?:tilted|tipped|angled|inclined)(?= *(?:$|[,;.!?]|\b(?:and|then|at the end"
@@ -52,6 +51,8 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
                        r" (?:there|in place|where it is|like that|as it is|as is|in that pose)\b",)),
     # a contrast: "near the rim instead of the middle" excludes the middle
     ("rather not", ("instead of", "rather than", "as opposed to")),
+    # where the liquid ends up is an outcome (outcomes.py), never the end pose raised
+    (UNCLEAR, (r"re:\bend(?:s|ed|ing)? up\b(?= (?:on|onto|in|into|inside|all|everywhere|outside)\b)",)),
     # "not tilted at all" is upright; "not tilted much" is slightly tilted or upright
     ("upright", (r"re:\b(?:not|without) (?:be |being |any )?(?:tilt|tip|lean)\w*\b(?!(?: (?:it|the \w+))?"
                  r" (?:much|a lot|far|too|very|so|that|sideways|back|steeply|slightly|halfway|half|a bit"
@@ -81,10 +82,7 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
                  "after pour", "afterwards", "move away", "pull away", "pull back",
                  "back off", "withdraw")),
     ("start", ("begin", "at first", "at the start", "initially")),
-    # the containers: a bowl is the destination unless the question says otherwise
-    ("bowl", (rf"re:\b(?:{_CONTAINERS})s?\b",)),
-    ("liquid", ("liquid particles", rf"re:\b(?:{_LIQUIDS})\b", "fluid",
-                r"re:(?<!\d )\bparticles?\b")),
+    ("liquid", ("liquid particles", r"re:(?<!\d )\bparticles?\b")),
     # where the source is measured from: "offset 10 cm from the centre"
     ("axis", (r"re:\bfrom (?:the )?(?:destination |bowl |cup )?(?:centre|center|middle|axis)\b",)),
     ("destination", ("target", "receiving")),
@@ -103,13 +101,17 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("centred", ("centered", "center", "centre", "central", "in the middle", "middle")),
     ("far", ("far off", "distant", "a long way", "from a distance", "at a distance")),
     ("offset sideways", ("offset to the side", "offset to one side")),
+    ("sideways", ("lateral", "laterally", "sidewise")),
     ("side", ("off to one side", "off to the side", "to one side")),
     # how the source is tilted and moved
     ("upside down", ("inverted", "upturned", "turned over")),
+    # tipping the source is tilting it ("tip it a bit"); the bowl tipping over is outcomes.py's
+    ("tilt", (r"re:\btip(?:s|ped|ping)?\b",)),
     ("rolled sideways", (r"re:\b(?:tilt|tip|lean)(?:s|ed|ing)?(?: (?:it|the \w+))? sideways\b",)),
     ("tilted away from the destination", ("tilted back", "tilted backwards", "leaning back")),
     ("slightly tilted", (r"re:\btilt(?:s|ed|ing)?(?: (?:it|the \w+))?(?: only)? "
                          r"(?:a (?:little )?bit|a little)\b",)),
+    ("slightly", (r"re:\b(?:a (?:little )?bit|a little)(?= (?:tilt|angled|inclined))",)),
     ("upright", ("vertical", "straight up")),
     ("tilted", ("angled", "inclined")),
     ("steeply", ("sharply",)),
@@ -128,7 +130,6 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("grippy", ("rough",)),
     ("runny", ("thin", "watery")),
     ("sticky", ("viscous", "thick", "syrupy", "gooey")),
-    ("sticky liquid", ("honey", "syrup", "molasses", "treacle", "maple syrup", "golden syrup")),
     ("bouncy", ("springy", "elastic")),
     # last, a bare "up" or "down" (not "high up", "upside down"): a move up or down
     ("raise", ("lift", "rise", "up")),
@@ -136,7 +137,9 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
 )
 
 #: Words that say nothing about the scene: a question's frame, not its facts
-#: ("very" is not one: it sets "very high" apart from "high").
+#: ("very" is not one: it sets "very high" apart from "high"); "ll", "re", "ve", "m" and
+#: "d" are what is left of "it'll", "we're", "I've", "I'm" and "I'd" (wording.py reads them
+#: as will, are, have, am and would). The everyday list's hedges ("okay") are read as "hedge".
 FILLERS = frozenset("""
     what which how why when where whether if happen happens would will could should can may
     might must do does did is are was were be been being i we you it they me my our your its
@@ -148,19 +151,9 @@ FILLERS = frozenset("""
     take takes took taking weigh weighs weighed weighing roughly about around approximately
     almost
     and or but then with without by for from at on in over above of to a an the please say
-    tell suppose imagine case ever all both each one way thing
+    tell suppose imagine case ever all both each one way thing any
+    ll re ve m d
 """.split())
-
-#: Everyday words said back with how they were read: (pattern in the
-#: question's lower case, what is said of it).
-SAID_BACK: tuple[tuple[str, str], ...] = (
-    (rf"\b(?:{_LIQUIDS.replace('|water', '')})\b", "read as an ordinary liquid (the vocabulary says a "
-                                                  "liquid's weight, stickiness and bounce, not its name)"),
-    (r"\b(?:honey|maple syrup|golden syrup|syrup|molasses|treacle)\b", "read as a sticky liquid"),
-    (rf"\b(?:{_MATERIALS})\b|\bglass(?= (?:{_CONTAINERS}|bowl)s?\b)",
-     "ignored: what a bowl is made of is not in the vocabulary (its weight, friction and "
-     "bounce are)"),
-)
 
 #: Phrasings that would be read, for words that could not be placed: (pattern
 #: of the words as written, what to say).
@@ -172,7 +165,7 @@ HINTS: tuple[tuple[str, str], ...] = (
      'not tilted much: say "slightly tilted" or "upright"'),
     (r"^from above$|^overhead$|^from the top$",
      'above: how high, or where? say "high above the bowl" or "centred over the bowl"'),
-    (r"^(?:tilt|tilted|tipped)$", 'tilted how far? say "slightly tilted", "tilted halfway", '
+    (r"^(?:tilt|tilted|tip|tipped|tipping)$", 'tilted how far? say "slightly tilted", "tilted halfway", '
                                   '"steeply tilted" or "upside down"'),
 )
 
@@ -202,8 +195,40 @@ def _pattern(phrase: str) -> str:
     return r"\b" + "".join(parts)[:-1] + r"\b"
 
 
+def _everyday() -> list[tuple[Matcher, str, str]]:
+    """(matcher, the words it is read as, what is said back) for each
+    section of the everyday word list: a liquid's or a context noun's name
+    before a container's is part of its name ("a milk carton"), and
+    "glass" before a container is what it is made of ("a glass jug")."""
+    out = []
+    for s in sections():
+        if s.words == "material":
+            matcher = Matcher(s.phrases, glass_before=names("bowl"))
+        elif s.words == "bowl":
+            matcher = Matcher(s.phrases, before=names("liquid", "context"))
+        else:
+            matcher = Matcher(s.phrases)
+        out.append((matcher, UNCLEAR if s.words == "unclear" else s.words,
+                    "" if s.words == "unclear" else s.said_back))
+    return out
+
+
 @lru_cache(maxsize=None)
-def rewrites() -> tuple[tuple[re.Pattern, tuple[str, ...]], ...]:
-    """Each entry's phrases as one compiled pattern, with the words they are read as."""
-    return tuple((re.compile("|".join(f"(?:{_pattern(p)})" for p in ps)), tuple(words.split()))
-                 for words, ps in PHRASES)
+def rewrites() -> tuple[tuple[re.Pattern | Matcher, tuple[str, ...], str], ...]:
+    """Each rewrite in the order applied, with the words it is read as and
+    what is said back: the first entry of PHRASES (hedges), the everyday
+    word list, then the rest of PHRASES; an entry's phrases as one compiled
+    pattern, a section of the list as a Matcher."""
+    def compiled(words: str, phrases: tuple[str, ...]):
+        return re.compile("|".join(f"(?:{_pattern(p)})" for p in phrases)), tuple(words.split()), ""
+
+    first, *rest = PHRASES
+    return (compiled(*first), *((m, tuple(w.split()), said) for m, w, said in _everyday()),
+            *(compiled(*entry) for entry in rest))
+
+
+@lru_cache(maxsize=None)
+def hints() -> tuple[tuple[str, str], ...]:
+    """HINTS and, for each word the everyday list refuses, why and what would be read."""
+    return HINTS + tuple((rf"^(?:{alternation(s.phrases)})$", s.said_back)
+                         for s in sections() if s.words == "unclear")
