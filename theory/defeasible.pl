@@ -65,7 +65,8 @@ theory/defeasible.lp computes the same conclusions with clingo.
 % theories have few atoms, so keep them.
 :- set_prolog_flag(agc_margin, 0).
 
-:- dynamic fact/1, rule/3, body/2, sup/2, learned/1, provenance/3, given_theory/1,
+:- dynamic fact/1, rule/3, body/2, sup/2, learned/1, provenance/3, explored/2, held/4,
+   given_theory/1,
    scene_fact/1, rule_body/2, theory_literal/1, loaded/0,
    generation/1, head_key/3, fact_key/2, learned_key/2, literal_key/2.
 
@@ -93,7 +94,9 @@ internal(S, S).
 %!  load_theory(+File) is det.
 %
 %   Replace the current theory by the facts of File (native format).
-%   provenance/3 facts are kept (a learned rule's confidence and layer);
+%   provenance/3 facts are kept (a learned rule's confidence and layer),
+%   and explored/2 and held/4 (the pours of the explored antecedents,
+%   which answers cite);
 %   facts of other predicates (settings, set_aside) are ignored.
 %
 %   @error theory_error(File, Line, Expected) for a malformed file.
@@ -138,6 +141,8 @@ theory_predicate(body, 2).
 theory_predicate(sup, 2).
 theory_predicate(learned, 1).
 theory_predicate(provenance, 3).
+theory_predicate(explored, 2).
+theory_predicate(held, 4).
 
 check_theory(File) :-
     (   rule(R, K, _), \+ memberchk(K, [strict, defeasible, defeater])
@@ -158,6 +163,7 @@ check_theory(File) :-
 clear_theory :-
     retractall(fact(_)), retractall(rule(_, _, _)), retractall(body(_, _)),
     retractall(sup(_, _)), retractall(learned(_)), retractall(provenance(_, _, _)),
+    retractall(explored(_, _)), retractall(held(_, _, _, _)),
     retractall(scene_fact(_)),
     retractall(rule_body(_, _)), retractall(learned_key(_, _)),
     retractall(literal_key(_, _)),
@@ -167,7 +173,8 @@ clear_theory :-
 
 %!  add_theory_fact(+Fact) is det.
 %
-%   Add one fact (fact/1, rule/3, body/2, sup/2, learned/1 or provenance/3) to the
+%   Add one fact (fact/1, rule/3, body/2, sup/2, learned/1, provenance/3,
+%   explored/2 or held/4) to the
 %   current theory. Call load_theory/1, or add facts and then query:
 %   derived tables are rebuilt on the next query.
 add_theory_fact(F) :-

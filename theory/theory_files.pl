@@ -50,7 +50,8 @@ load_facts(File, Module) :-
 %!  load_theory_facts(+File, +Module) is det.
 %
 %   As load_facts/2, for a theory: the facts of its predicates (fact/1,
-%   rule/3, body/2, sup/2, learned/1, setting/2, provenance/3) must also be
+%   rule/3, body/2, sup/2, learned/1, setting/2, provenance/3, explored/2,
+%   held/4) must also be
 %   of their forms (check_theory_fact/2), a rule name is given once, and
 %   every body/2 belongs to a rule. Facts of other predicates are read and
 %   checked but not added: one named like a built-in (=|halt.|=,
@@ -111,6 +112,9 @@ check_theory_fact(Fact, Problem) :-
     ;   Fact = rule(R, K, _), \+ memberchk(K, [strict, defeasible, defeater])
     ->  term_text(K, T),
         format(string(Problem), "rule ~w: kind strict, defeasible or defeater, not ~w", [R, T])
+    ;   Fact = held(A, E, K, N), \+ ( integer(K), integer(N), 0 =< K, K =< N )
+    ->  term_text(K, KT), term_text(N, NT),
+        format(string(Problem), "held(~w, ~w, Held, Pours): Held of Pours pours, whole numbers with 0 <= Held <= Pours, not ~w of ~w", [A, E, KT, NT])
     ;   Fact = provenance(R, confidence_permille, C), \+ ( integer(C), between(1, 1000, C) )
     ->  term_text(C, T),            % some of its pours keep its head, or it concludes the other
         format(string(Problem), "rule ~w: a confidence is the permille of its pours that keep its head, 1 to 1000, not ~w", [R, T])
@@ -126,6 +130,8 @@ theory_form(sup, "sup(R1, R2)", 2).
 theory_form(learned, "learned(Id)", 1).
 theory_form(setting, "setting(Key, Value)", 2).
 theory_form(provenance, "provenance(Id, Key, Value)", 3).
+theory_form(explored, "explored(Antecedent, Proposition)", 2).
+theory_form(held, "held(Antecedent, Expectation, Held, Pours)", 4).
 
 theory_names(rule, [0]).
 theory_names(body, [0]).
@@ -133,6 +139,8 @@ theory_names(sup, [0, 1]).
 theory_names(learned, [0]).
 theory_names(setting, [0]).
 theory_names(provenance, [0, 1]).
+theory_names(explored, [0, 1]).
+theory_names(held, [0, 1]).
 theory_names(fact, []).
 
 theory_literal_arg(fact(L), L).

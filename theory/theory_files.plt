@@ -104,4 +104,17 @@ test(print_message_prints_the_one_line, S == "f.pl:3: a fact\n") :-
     '$messages':translate_message(theory_error('f.pl', 3, "a fact"), Lines, []),
     with_output_to(string(S), print_message_lines(current_output, '', Lines)).
 
+% the pours of an explored antecedent: counts in range, read and kept
+test(explored_antecedents_are_read, [true(F == [explored(a2, light_liquid), held(a2, no_spill, 11, 12)])]) :-
+    write_tmp("fact(a).\nexplored(a2, light_liquid).\nheld(a2, no_spill, 11, 12).\n", File),
+    read_theory_file(File, LineFacts),
+    delete_file(File),
+    findall(X, ( member(_-X, LineFacts), X \= fact(_) ), F).
+
+test(pours_held_past_those_counted_are_refused, [Line, Expected] == [2, "held(a2, no_spill, Held, Pours): Held of Pours pours, whole numbers with 0 <= Held <= Pours, not 13 of 12"]) :-
+    theory_error("fact(a).\nheld(a2, no_spill, 13, 12).\n", Line, Expected).
+
+test(an_explored_fact_of_another_arity_is_refused, [Line, Expected] == [1, "expected explored(Antecedent, Proposition), not a explored/1 fact"]) :-
+    theory_error("explored(a2).\n", Line, Expected).
+
 :- end_tests(theory_files).

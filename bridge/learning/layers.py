@@ -135,4 +135,30 @@ def general_layer(learned: Sequence[Ranked], P: np.ndarray, S: np.ndarray, seed:
     return {"pours": int(np.all(np.isfinite(np.atleast_2d(S)), axis=1).sum()),
             "own_pours": len(P) - n0,
             "rules": rules,
-            "sup": [[a, b] for a, b in superiority(with_general(learned, general))]}
+            "sup": [[a, b] for a, b in superiority(with_general(learned, general))],
+            "explored": explored_pours(explored or [], P, S)}
+
+
+def explored_pours(explored: Sequence[tuple[str, Sequence[str]]], P: np.ndarray,
+                   S: np.ndarray) -> list[dict]:
+    """For each explored antecedent (id, propositions), its propositions
+    and, per expectation, the pours (P, S) that could have been drawn for
+    it (as a rule's support counts them: the antecedent as asked,
+    everything else an ordinary pour) and how many of them hold the
+    expectation: what an answer cites for an antecedent explored that has
+    no rule of its own. Pours with a failed simulation are left out."""
+    from pantarhei.bridge.evaluation.measures import verdicts
+    from pantarhei.oracle.generative import in_support
+    from pantarhei.theory.lexicon import load_vocabulary
+
+    P = np.atleast_2d(np.asarray(P, dtype=float))
+    S = np.atleast_2d(np.asarray(S, dtype=float))
+    ok = np.all(np.isfinite(S), axis=1)
+    P, Y = P[ok], verdicts(S[ok])
+    names = load_vocabulary().expectation_names
+    out = []
+    for a, body in explored:
+        m = in_support(P, list(body)) if len(P) else np.zeros(0, dtype=bool)
+        out.append({"id": str(a), "body": sorted(str(b) for b in body),
+                    "held": [[e, int(Y[m, k].sum()), int(m.sum())] for k, e in enumerate(names)]})
+    return out

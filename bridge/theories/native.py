@@ -1,7 +1,9 @@
 """The native theory format read: the facts of a file (`fact/1`,
 `rule/3`, `body/2`, `sup/2`, `learned/1`, `setting/2`, `provenance/3`, any
 other kept aside) checked against their forms and gathered into a
-`Theory`. `Theory.native()` writes it back."""
+`Theory`; `explored/2` and `held/4` (the explored antecedents' pours,
+which answers cite) are checked and kept aside. `Theory.native()` writes
+it back."""
 from __future__ import annotations
 
 from pathlib import Path
@@ -9,8 +11,9 @@ from pathlib import Path
 from pantarhei.bridge.theories import facts as theory_facts
 from pantarhei.bridge.theories.facts import Fact, term_text
 from pantarhei.bridge.theories.model import Rule, Theory
-from pantarhei.bridge.theories.well_formed import (ARITY, CONFIDENCE, DANGLING_BODY, KIND, KINDS,
-                                                   NAME, NAME_ARG, SECOND_RULE, check_literal)
+from pantarhei.bridge.theories.well_formed import (ARITY, CONFIDENCE, DANGLING_BODY, HELD, KIND,
+                                                   KINDS, NAME, NAME_ARG, SECOND_RULE,
+                                                   check_literal)
 from pantarhei.theory import TheoryFileError
 
 
@@ -24,12 +27,14 @@ def read_native(path: Path | str) -> Theory:
 #: The predicates of a theory, with the form each is written in.
 FORMS = {("fact", 1): "fact(L)", ("rule", 3): "rule(Id, Kind, Head)", ("body", 2): "body(Id, L)",
          ("sup", 2): "sup(R1, R2)", ("learned", 1): "learned(Id)",
-         ("setting", 2): "setting(Key, Value)", ("provenance", 3): "provenance(Id, Key, Value)"}
+         ("setting", 2): "setting(Key, Value)", ("provenance", 3): "provenance(Id, Key, Value)",
+         ("explored", 2): "explored(Antecedent, Proposition)",
+         ("held", 4): "held(Antecedent, Expectation, Held, Pours)"}
 _FORM_OF = {name: form for (name, _), form in FORMS.items()}
 
 
 _NAMES_AT = {"rule": (0,), "body": (0,), "sup": (0, 1), "learned": (0,), "setting": (0,),
-             "provenance": (0, 1), "fact": ()}
+             "provenance": (0, 1), "explored": (0, 1), "held": (0, 1), "fact": ()}
 _LITERAL_AT = {"fact": 0, "rule": 2, "body": 1}
 
 
@@ -48,6 +53,9 @@ def check_fact(f: Fact, source: str, checked: set | None = None) -> None:
             raise TheoryFileError(f"{source}:{f.line}: " + NAME_ARG.format(form, term_text(a[i])))
     if f.name == "rule" and a[1] not in KINDS:
         raise TheoryFileError(f"{source}:{f.line}: " + KIND.format(a[0], term_text(a[1])))
+    if f.name == "held" and not (type(a[2]) is int and type(a[3]) is int and 0 <= a[2] <= a[3]):
+        raise TheoryFileError(f"{source}:{f.line}: "
+                              + HELD.format(a[0], a[1], term_text(a[2]), term_text(a[3])))
     if f.name == "provenance" and a[1] == "confidence_permille" \
             and not (type(a[2]) is int and 1 <= a[2] <= 1000):
         raise TheoryFileError(f"{source}:{f.line}: " + CONFIDENCE.format(a[0], term_text(a[2])))

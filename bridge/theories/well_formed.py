@@ -31,6 +31,8 @@ LITERAL = "a literal such as p, bird(tweety) or neg(p) (names and integers as ar
 DOUBLE_NEG = "a literal or its negation neg(L), not a double negation {}"
 ARITY = "expected {}, not a {}/{} fact"
 NAME_ARG = "{}: a name in lower case letters, digits and _, not {}"
+HELD = ("held({}, {}, Held, Pours): Held of Pours pours, whole numbers with 0 <= Held <= Pours, "
+        "not {} of {}")
 
 
 def is_literal(lit: str) -> bool:

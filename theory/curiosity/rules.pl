@@ -150,16 +150,35 @@ learned_layer(Explored, Settings, Layer) :-
 
 %   layer_facts(+Reply, -Facts): the rules of exploration_general's
 %   reply as facts, after the setting/2 facts of their pours and before
-%   their sup/2 facts.
+%   their sup/2 facts, and then those of the explored antecedents
+%   (explored_facts/2).
 layer_facts(Reply, General) :-
     length(Reply.rules, N),
     maplist(general_rule_facts, Reply.rules, RuleFacts),
     findall(sup(A, B), member([A, B], Reply.sup), Sups),
     append(RuleFacts, Rules1),
+    (   get_dict(explored, Reply, Explored) -> true ; Explored = [] ),
+    explored_facts(Explored, ExploredFacts),
     append([ [ setting(general_pours, Reply.pours),
                setting(general_own_pours, Reply.own_pours),
                setting(general_rules, N) ],
-             Rules1, Sups ], General).
+             Rules1, Sups, ExploredFacts ], General).
+
+%!  explored_facts(+Explored:list, -Facts:list) is det.
+%
+%   The facts of the explored antecedents of exploration_general's reply
+%   (each a dict: id, body, held, a list of [Expectation, Held, Pours]):
+%   explored(A, Prop) for each proposition of antecedent A, and
+%   held(A, E, Held, Pours) for each expectation E: of the Pours pours
+%   that could have been drawn for A, Held held E. What an answer cites
+%   for an antecedent asked that was explored but has no rule of its own
+%   (theory/answer_words.pl).
+explored_facts(Explored, Facts) :-
+    findall(F, ( member(X, Explored),
+                 (   member(P, X.body), F = explored(X.id, P)
+                 ;   member([E, K, N], X.held), F = held(X.id, E, K, N)
+                 ) ),
+            Facts).
 
 head_expectation(neg(E), E, false) :- !.
 head_expectation(E, E, true).
@@ -230,7 +249,22 @@ write_facts(Out, Settings, Header, Facts) :-
 write_general(_, _, []) :- !.
 write_general(Out, Header, General) :-
     forall(member(Line, ["" | Header]), format(Out, "~w~n", [Line])),
-    forall(member(F, General), write_fact(Out, F)).
+    partition(explored_fact, General, Explored, Rules),
+    forall(member(F, Rules), write_fact(Out, F)),
+    (   Explored == []
+    ->  true
+    ;   forall(member(Line, [ "",
+              "% The explored antecedents, with or without a rule of their own:",
+              "% explored(A, Prop): the antecedent A says Prop (the ordinary pour,",
+              "% which says nothing, has none); held(A, E, Held, Pours): of the Pours",
+              "% pours that could have been drawn for A, Held held E. An answer for",
+              "% a scene explored cites them (docs/theory-formats.md)." ]),
+                 format(Out, "~w~n", [Line])),
+        forall(member(F, Explored), write_fact(Out, F))
+    ).
+
+explored_fact(explored(_, _)).
+explored_fact(held(_, _, _, _)).
 
 write_fact(Out, F) :-
     write_term(Out, F, [quoted(true), spacing(next_argument)]),

@@ -132,3 +132,42 @@ def test_evaluate_reads_it_from_its_trace_and_learns_the_same_layer_again(learne
     (tmp_path / "edited.trace.jsonl").unlink()
     with pytest.raises(UserError, match="trace"):
         E.read_learned(edited)
+
+
+def test_it_records_the_pours_of_every_explored_antecedent(learned, cli):
+    """explored/2 and held/4: each antecedent of the trace with its
+    propositions and, per expectation, its pours counted for the
+    expectation holding, as the rules count theirs; ask cites them for an
+    antecedent explored that has no rule of its own."""
+    _, result, trace = learned
+    facts = read_facts([Path(result["out"])])
+    props: dict[str, set] = {}
+    for a, p in facts["explored"]:
+        props.setdefault(str(a), set()).add(str(p))
+    held = {(str(a), str(e)): (k, n) for a, e, k, n in facts["held"]}
+    for t in trace:
+        assert props.get(str(t["id"]), set()) == set(t["antecedent"])
+        for e in V.expectation_names:
+            k, n = held[(str(t["id"]), e)]
+            assert 0 <= k <= n and n >= 1
+    # a rule of an explored antecedent rests on the very pours held/4 counts
+    prov = {(str(r), str(key)): v for r, key, v in facts["provenance"]}
+    theory = load([Path(result["out"])])
+    for r in theory.rules:
+        e = r.head.removeprefix("neg(").rstrip(")")
+        k, n = held[(prov[(r.id, "antecedent")], e)]
+        kept = prov[(r.id, "kept")]
+        assert (n, k) == (prov[(r.id, "support")], kept if r.head == e else n - kept)
+    # an explored antecedent without a rule of its own for an expectation
+    ruled = {(prov[(r.id, "antecedent")], r.head.removeprefix("neg(").rstrip(")"))
+             for r in theory.rules}
+    a, e = next((str(t["id"]), e) for t in trace if t["antecedent"]
+                for e in V.expectation_names if (str(t["id"]), e) not in ruled)
+    k, n = held[(a, e)]
+    asked = ",".join(sorted(props[a]))
+    out = json.loads(cli("ask", "--props", asked, "--theory", result["out"], "--json").out)
+    answer = out["outcomes"][e]
+    assert answer["evidence"]["explored"] == a
+    assert (answer["evidence"]["held"], answer["evidence"]["pours"]) == (k, n)
+    assert f"held in {k} of {n} pours of " in answer["because"]
+    assert "(explored, no rule of its own: " in answer["because"]

@@ -94,6 +94,26 @@ CORPUS: dict[str, tuple[bytes, int, str]] = {
     "a confidence in words": (
         b"rule(r1, defeasible, no_spill).\nprovenance(r1, confidence_permille, high).\n", 2,
         "rule r1: a confidence is the permille of its pours that keep its head, 1 to 1000, not high"),
+    "pours held past those counted": (
+        b"rule(g0, defeasible, no_spill).\nexplored(a2, light_liquid).\n"
+        b"held(a2, no_spill, 13, 12).\n", 3,
+        "held(a2, no_spill, Held, Pours): Held of Pours pours, whole numbers with "
+        "0 <= Held <= Pours, not 13 of 12"),
+    "pours held in words": (
+        b"fact(a).\nheld(a2, no_spill, many, 12).\n", 2,
+        "held(a2, no_spill, Held, Pours): Held of Pours pours, whole numbers with "
+        "0 <= Held <= Pours, not many of 12"),
+    "pours held of no expectation": (
+        b"fact(a).\nheld(a2, 3, 1, 2).\n", 2,
+        "held(Antecedent, Expectation, Held, Pours): a name in lower case letters, digits and _, "
+        "not 3"),
+    "pours held without their count": (
+        b"fact(a).\nheld(a2, no_spill, 11).\n", 2,
+        "expected held(Antecedent, Expectation, Held, Pours), not a held/3 fact"),
+    "an explored proposition as text": (
+        b"fact(a).\nexplored(a2, \"light\").\n", 2,
+        "explored(Antecedent, Proposition): a name in lower case letters, digits and _, "
+        "not \"light\""),
 }
 
 

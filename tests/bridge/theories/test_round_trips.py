@@ -23,8 +23,9 @@ EXAMPLES = Path(__file__).resolve().parents[3] / "examples" / "extend_by_hand"
 
 #: A learned theory with one of everything: settings (one with quoted text
 #: that reads as a program when unquoted), rules of each kind, bodies,
-#: learned rules, provenance, explicit superiority, facts, set_aside/3 and
-#: a fact of a predicate no reader knows.
+#: learned rules, provenance, explicit superiority, facts, set_aside/3,
+#: the explored antecedents' explored/2 and held/4, and a fact of a
+#: predicate no reader knows.
 EVERYTHING = r"""% a learned theory
 setting(oracle, synthetic).
 setting(seed, 7).
@@ -51,6 +52,9 @@ sup(s1, d1).
 set_aside(0, 1, pour_to_side).
 set_aside(0, 1, light_liquid).
 probe(1, 2, "text", 2147483647).
+explored(a2, pour_low).
+held(a2, no_spill, 11, 12).
+held(a0, no_spill, 0, 3).
 """
 
 
@@ -144,3 +148,31 @@ def test_convert_command_writes_whole_files(cli, tmp_path: Path) -> None:
     assert conclusions(load(back)) == conclusions(load(EXAMPLES / "learned.pl"))
     assert "rule(h1, defeasible, liquid_leaves_source)." in cli("convert", str(EXAMPLES / "hand.dfl"),
                                                               "--to", "native").out
+
+
+def test_the_explored_antecedents_pours_change_no_conclusion(tmp_path: Path) -> None:
+    """explored/2 and held/4 are read by every reader and reach no
+    reasoner: SWI-Prolog, clingo through Python and clingo alone with the
+    encodings conclude the same with them as without."""
+    import subprocess
+    import sys
+
+    from pantarhei.theory import THEORY_DIR
+
+    with_them = tmp_path / "with.pl"
+    with_them.write_text(EVERYTHING)
+    without = tmp_path / "without.pl"
+    without.write_text("".join(line + "\n" for line in EVERYTHING.splitlines()
+                               if not line.startswith(("explored(", "held("))))
+    assert "held(" not in without.read_text()
+    for engine in ("prolog", "asp"):
+        assert conclusions(load([with_them]), engine=engine) \
+            == conclusions(load([without]), engine=engine), engine
+
+    def clingo(path: Path) -> list[str]:
+        p = subprocess.run([sys.executable, "-m", "clingo", "-V0", "--warn=none",
+                            str(THEORY_DIR / "defeasible.lp"), str(THEORY_DIR / "conclusions.lp"),
+                            str(path)], capture_output=True, text=True, timeout=120)
+        assert "SATISFIABLE" in p.stdout, p.stdout + p.stderr
+        return sorted(p.stdout.split())
+    assert clingo(with_them) == clingo(without)
