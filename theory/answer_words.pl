@@ -19,6 +19,7 @@ structure (proof_json/2).
 :- use_module(queries).
 :- use_module(vocabulary).
 :- use_module(theory_files, [term_text/2]).
+:- use_module(learned_rules, [verdict/3]).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
 
@@ -52,11 +53,32 @@ answer(Scene, Options, outcome(E, V, P, R0),
         (   memberchk(R, [fact, none])
         ->  Because = "given", Evidence = none
         ;   evidence(R, E, Scene, Evidence),
-            rule_in_words(R, Words),
-            unruled_words(Evidence, Unruled),
-            format(string(Because), "because ~w~w", [Words, Unruled])
+            because(R, V, Evidence, Because)
         )
     ).
+
+% because(+Rule, +Value, +Evidence, -Because): why an answer of Value
+% that Rule decides is what it is, in one line: the rule in words, with
+% the pours of the antecedent asked when it was explored, else of the
+% rule's body, and the propositions asked that no rule of their own
+% decides.
+because(R, V, explored(_, Of, Held, N, _, _), Because) :- !,
+    rule_said(R, Where, Said),
+    where(Of, Asked),
+    Share is Held / N,
+    (   Share >= 0.5 -> V0 = holds ; V0 = fails ),
+    verdict(V0, Share, Seen),
+    (   Seen == V
+    ->  format(string(Agree), "its pours agree with rule ~w", [R])
+    ;   format(string(Agree), "rule ~w decides, though its pours differ", [R])
+    ),
+    format(string(Because),
+           "because ~w~w; held in ~w of ~w pours of ~w (explored, no rule of its own: ~w)",
+           [Where, Said, Held, N, Asked, Agree]).
+because(R, _, Evidence, Because) :-
+    rule_in_words(R, Words),
+    unruled_words(Evidence, Unruled),
+    format(string(Because), "because ~w~w", [Words, Unruled]).
 
 %!  evidence(+Rule, +Expectation, +Scene, -Evidence) is det.
 %
@@ -69,19 +91,37 @@ answer(Scene, Options, outcome(E, V, P, R0),
 %   Unruled the propositions of the Scene that the rule's body does not
 %   hold (the rule answers for them as for its body: no rule of their own
 %   decides); or =|none(Body, Unruled)|= for a rule that records no pours
-%   (a rule written by hand, or one of Algorithm 1's).
+%   (a rule written by hand, or one of Algorithm 1's). Where the Scene
+%   holds more than the rule's body and is an explored antecedent A
+%   (explored/2, with held/4 facts of some pours for the Expectation), it
+%   is =|explored(A, Scene, Held, Of, Body, Unruled)|=: Held of the Of
+%   pours that could have been drawn for the Scene, as the theory records
+%   them.
 evidence(R, E, Scene, Evidence) :-
     rule_body_set(R, Body),
     msort(Scene, Scene1),
     list_to_set(Scene1, SceneSet),
     subtract(SceneSet, Body, Unruled),
-    (   defeasible:provenance(R, support, S), integer(S),
+    (   Unruled \== [],
+        explored_antecedent(SceneSet, A),
+        defeasible:held(A, E, Held, Of), integer(Of), Of > 0
+    ->  Evidence = explored(A, SceneSet, Held, Of, Body, Unruled)
+    ;   defeasible:provenance(R, support, S), integer(S),
         defeasible:provenance(R, kept, K), integer(K),
         defeasible:rule(R, _, H)
     ->  (   H == neg(E) -> Held is S - K ; Held = K ),
         Evidence = pours(Held, S, Body, Unruled)
     ;   Evidence = none(Body, Unruled)
     ).
+
+% explored_antecedent(+Props, -A): A is an explored antecedent that says
+% exactly the propositions Props (a sorted set, not empty).
+explored_antecedent([P|Ps], A) :-
+    defeasible:explored(A, P),
+    findall(Q, defeasible:explored(A, Q), Qs0),
+    sort(Qs0, Qs),
+    Qs == [P|Ps],
+    !.
 
 rule_body_set(R, Body) :-
     findall(B, defeasible:body(R, B), Bs0),
@@ -133,18 +173,25 @@ named_rule(R, Named) :-
 rule_in_words(R, Text) :-
     (   defeasible:rule(R, _, H)
     ->  rule_body_set(R, Body),
-        where(Body, Where),
-        queries:likelihood(R, H, P),
-        (   P == none
-        ->  Said = ""
-        ;   percent(P, Pc),
-            format(string(Said), ": holds in ~w% of such pours (the pooled estimate)", [Pc])
-        ),
+        rule_said(R, Where, Said),
         literal_atom(H, E),
         evidence_words(R, E, Body, Ev),
         (   Ev == "" -> Also = " (" ; format(string(Also), "; ~w (", [Ev]) ),
         format(string(Text), "~w~w~wrule ~w)", [Where, Said, Also, R])
     ;   format(string(Text), "~w", [R])
+    ).
+
+% rule_said(+Rule, -Where, -Said): the rule's body in words, and the
+% likelihood that its expectation holds in such pours ("" for none).
+rule_said(R, Where, Said) :-
+    defeasible:rule(R, _, H),
+    rule_body_set(R, Body),
+    where(Body, Where),
+    queries:likelihood(R, H, P),
+    (   P == none
+    ->  Said = ""
+    ;   percent(P, Pc),
+        format(string(Said), ": holds in ~w% of such pours (the pooled estimate)", [Pc])
     ).
 
 % where(+Body, -Text): a body in words, "an ordinary pour" for the empty one.

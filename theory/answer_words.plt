@@ -55,4 +55,26 @@ test(proof_json, [true(K-R-Kinds == defeasible-g1-[beaten])]) :-
     K = D.kind, R = D.rule,
     findall(X, ( member(Reb, D.rebuttals), X = Reb.kind ), Kinds).
 
+% a scene that is an explored antecedent without a rule of its own: the
+% pours cited are its own (held/4), for the expectation holding, and the
+% words say whether they agree with the rule that decides
+explored_theory("rule(g0, defeasible, neg(no_spill)).\nprovenance(g0, layer, general).\nprovenance(g0, confidence_permille, 900).\nprovenance(g0, support, 20).\nprovenance(g0, kept, 18).\nexplored(a2, light_liquid).\nheld(a2, no_spill, 1, 8).\nexplored(a3, heavy_liquid).\nheld(a3, no_spill, 7, 8).\n").
+
+test(evidence_of_an_explored_antecedent,
+     [true(Ev-Ev0 == explored(a2, [light_liquid], 1, 8, [], [light_liquid])-pours(2, 20, [], [pour_centred]))]) :-
+    explored_theory(T),
+    once(load_theory_text(T)),
+    defeasible:theory_loaded,
+    evidence(g0, no_spill, [light_liquid], Ev),
+    evidence(g0, no_spill, [pour_centred], Ev0).
+
+test(answers_cite_the_pours_of_an_explored_antecedent,
+     [true(B-B2 == "because an ordinary pour: holds in 10% of such pours (the pooled estimate); held in 1 of 8 pours of a light liquid (explored, no rule of its own: its pours agree with rule g0)"-"because an ordinary pour: holds in 10% of such pours (the pooled estimate); held in 7 of 8 pours of a heavy liquid (explored, no rule of its own: rule g0 decides, though its pours differ)")]) :-
+    explored_theory(T),
+    once(load_theory_text(T)),
+    answers([light_liquid], [], As),
+    memberchk(answer(no_spill, fails, _, g0, B, _, _), As),
+    answers([heavy_liquid], [], As2),
+    memberchk(answer(no_spill, fails, _, g0, B2, _, _), As2).
+
 :- end_tests(answer_words).

@@ -299,8 +299,8 @@ literal_atom(A, A).
 %   input, and replies with lines ending in =|end|=:
 %   =|invalid<TAB>Constraint<TAB>P1<TAB>P2|= for each violated constraint
 %   (nothing more then), =|error<TAB>Message|= when the theory was not
-%   read, else =|answer<TAB>E<TAB>V<TAB>P<TAB>R<TAB>Because<TAB>Reason<TAB>Held<TAB>Of<TAB>Body<TAB>Unruled|=
-%   per expectation (evidence_fields/5), or =|why<TAB>Text|=.
+%   read, else =|answer<TAB>E<TAB>V<TAB>P<TAB>R<TAB>Because<TAB>Reason<TAB>Held<TAB>Of<TAB>Body<TAB>Unruled<TAB>Explored<TAB>Counted|=
+%   per expectation (evidence_fields/7), or =|why<TAB>Text|=.
 serve :-
     current_prolog_flag(argv, Argv),
     (   append(_, ['--'|Args], Argv) -> true ; Args = Argv ),
@@ -327,13 +327,18 @@ error_line(theory_error(Name, 0, M), Line) :- !,
 error_line(E, Line) :-
     error_message(E, Line).
 
-% evidence_fields(+Evidence, -Held, -Of, -Body, -Unruled): an answer's
-% evidence as the reply's fields (none for no count, lists comma-joined).
-evidence_fields(none, none, none, '', '').
-evidence_fields(pours(H, S, B, U), H, S, BT, UT) :-
+% evidence_fields(+Evidence, -Held, -Of, -Body, -Unruled, -Explored, -Counted):
+% an answer's evidence as the reply's fields (none for no count, lists
+% comma-joined): Held of Of pours counted of the propositions Counted
+% (the explored antecedent Explored asked, or none and the rule's Body).
+evidence_fields(none, none, none, '', '', none, '').
+evidence_fields(pours(H, S, B, U), H, S, BT, UT, none, BT) :-
     atomic_list_concat(B, ',', BT), atomic_list_concat(U, ',', UT).
-evidence_fields(none(B, U), none, none, BT, UT) :-
+evidence_fields(none(B, U), none, none, BT, UT, none, BT) :-
     atomic_list_concat(B, ',', BT), atomic_list_concat(U, ',', UT).
+evidence_fields(explored(A, Of, H, N, B, U), H, N, BT, UT, A, OfT) :-
+    atomic_list_concat(B, ',', BT), atomic_list_concat(U, ',', UT),
+    atomic_list_concat(Of, ',', OfT).
 
 serve_requests(Loaded) :-
     read_term(user_input, Request, []),
@@ -357,9 +362,10 @@ reply(Request, Loaded) :-
     ;   Request = answer(_)
     ->  answers(Scene, [], As),
         forall(member(answer(E, V, P, R, Because, Reason, Evidence), As),
-               ( evidence_fields(Evidence, Held, Of, Body, Unruled),
-                 format("answer\t~w\t~w\t~w\t~w\t~w\t~w\t~w\t~w\t~w\t~w~n",
-                        [E, V, P, R, Because, Reason, Held, Of, Body, Unruled]) ))
+               ( evidence_fields(Evidence, Held, Of, Body, Unruled, Explored, Counted),
+                 format("answer\t~w\t~w\t~w\t~w\t~w\t~w\t~w\t~w\t~w\t~w\t~w\t~w~n",
+                        [E, V, P, R, Because, Reason, Held, Of, Body, Unruled,
+                         Explored, Counted]) ))
     ;   Request = why(_, Literal)
     ->  why(Scene, Literal, [], Proof),
         proof_text(Proof, Text),

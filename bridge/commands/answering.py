@@ -12,7 +12,8 @@ from typing import Callable
 LEGEND = ("(yes / no: what such pours do, and the share of them in which the expectation holds, "
           "as the deciding rule estimates it from every pour, pooled; maybe: such pours split; "
           "?: the theory does not say. \"held in K of N pours of B\": the pours learned from that "
-          "could have been drawn for the rule's body B, and in how many the expectation held. "
+          "could have been drawn for B (the rule's body, or what was asked when it was explored), "
+          "and in how many the expectation held. "
           "Ask again with --why E for the whole argument)")
 
 
@@ -37,12 +38,19 @@ def answer(asker, props: list[str], why: str | None = None, as_json: bool = Fals
             words, proof = asker.why_proof(scene, why)
         else:
             words = asker.why(scene, why)
+        said = answered(asker, scene, why)
         if as_json:
             print_json({"understood": props, "literal": why, **why_json(words),
-                        **({"proof": proof} if proof is not None else {})})
+                        **({"proof": proof} if proof is not None else {}),
+                        **({"answer": answer_json(said)} if said is not None else {})})
         else:
             _print_scene(props, glosses=False)
             print(words.replace("; ", "\n  "))
+            if said is not None and said.value != "unknown":
+                first, *more = said.because.split("; ")
+                print(f"answered [{answer_mark(said).rstrip()}] {first}")
+                for line in more:
+                    print(f"  {line}")
         return 0
     outcomes = asker.answers(scene)
     reading = getattr(props, "reading", None)      # a question in words: reading.Scene
@@ -55,9 +63,7 @@ def answer(asker, props: list[str], why: str | None = None, as_json: bool = Fals
         from pantarhei.bridge.reasoning.checking import contradicts
 
         def one(o) -> dict:
-            out = {"verdict": o.value, "likelihood": o.likelihood, "rule": o.rule,
-                   "because": o.because,
-                   "evidence": o.evidence.as_json() if o.evidence is not None else None}
+            out = answer_json(o)
             if observed is not None:
                 seen = observed[o.expectation]
                 out["check"] = {**seen.as_json(), "contradicts": contradicts(o.value, seen)}
@@ -109,6 +115,22 @@ def answer(asker, props: list[str], why: str | None = None, as_json: bool = Fals
     if observed is not None:
         print(check.summary(flagged))
     return 0
+
+
+def answer_json(o) -> dict:
+    """One answer for programs: its verdict, likelihood, rule, why in one
+    line and the pours behind it."""
+    return {"verdict": o.value, "likelihood": o.likelihood, "rule": o.rule,
+            "because": o.because,
+            "evidence": o.evidence.as_json() if o.evidence is not None else None}
+
+
+def answered(asker, scene: list[str], literal: str):
+    """The answer `ask` gives for the expectation of `literal` (a native
+    literal, neg(E) for E) in the scene, with its evidence; None when the
+    literal is no expectation."""
+    expectation = literal[4:-1] if literal.startswith("neg(") else literal
+    return next((o for o in asker.answers(scene) if o.expectation == expectation), None)
 
 
 def why_json(words: str) -> dict:

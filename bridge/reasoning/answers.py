@@ -27,9 +27,9 @@ def what_happens(theory: Theory, props: list[str],
     e.use_module("ask")
     goal = (f"ask:answers(Scene, {semantics.options()}, As), "
             "findall(S, (member(answer(E, V, P, R, B, T, Ev), As), "
-            "ask:evidence_fields(Ev, H, O, Bd, U), "
-            "format(string(S), '~w\\t~w\\t~w\\t~w\\t~w\\t~w\\t~w\\t~w\\t~w\\t~w', "
-            "[E, V, P, R, B, T, H, O, Bd, U])), Ss)")
+            "ask:evidence_fields(Ev, H, O, Bd, U, X, C), "
+            "format(string(S), '~w\\t~w\\t~w\\t~w\\t~w\\t~w\\t~w\\t~w\\t~w\\t~w\\t~w\\t~w', "
+            "[E, V, P, R, B, T, H, O, Bd, U, X, C])), Ss)")
     r = e.once(goal, Scene=list(props))
     return [answer_of(prolog_text(line).split("\t")) for line in r["Ss"]]
 

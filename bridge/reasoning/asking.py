@@ -27,17 +27,22 @@ class Evidence:
     """The pours behind an answer, counted for the expectation holding
     (the polarity of the answer's likelihood, whatever the deciding
     rule's head): `held` of the `pours` learned from that could have been
-    drawn for the deciding rule's `body` (None where the rule records no
-    pours: written by hand, or one of Algorithm 1's), and `unruled`, the
-    propositions of the scene its body does not hold (no rule of their own
-    decides: they are answered as the body)."""
+    drawn for the propositions `of`: the scene asked when it is an
+    antecedent `explored` (its id) without a rule of its own for the
+    expectation, else the deciding rule's `body` (None where the rule
+    records no pours: written by hand, or one of Algorithm 1's); and
+    `unruled`, the propositions of the scene the rule's body does not hold
+    (no rule of their own decides: they are answered as the body)."""
     held: int | None
     pours: int | None
     body: tuple[str, ...]
     unruled: tuple[str, ...]
+    explored: str | None = None
+    of: tuple[str, ...] = ()
 
     def as_json(self) -> dict:
-        return {"held": self.held, "pours": self.pours, "body": list(self.body),
+        return {"held": self.held, "pours": self.pours, "of": list(self.of),
+                "explored": self.explored, "body": list(self.body),
                 "unruled": list(self.unruled)}
 
 
@@ -57,15 +62,17 @@ class Answer:
 
 def answer_of(fields: list[str]) -> Answer:
     """An Answer from the fields of ask:answers/3's answer/7, as text
-    (serve/0's reply: the evidence as ask:evidence_fields/5 writes it)."""
+    (serve/0's reply: the evidence as ask:evidence_fields/7 writes it)."""
     exp, value, p, rule, because, reason, *ev = fields
     evidence = None
     if value != "unknown" and rule not in ("fact", "none"):
-        held, of, body, unruled = ev
+        held, of, body, unruled, explored, counted = ev
         evidence = Evidence(None if held == "none" else int(held),
                             None if of == "none" else int(of),
                             tuple(x for x in body.split(",") if x),
-                            tuple(x for x in unruled.split(",") if x))
+                            tuple(x for x in unruled.split(",") if x),
+                            None if explored == "none" else explored,
+                            tuple(x for x in counted.split(",") if x))
     return Answer(exp, value, None if p == "none" else float(p),
                   None if value == "unknown" else rule, because, reason, evidence)
 

@@ -202,7 +202,8 @@ def test_ask_says_the_deciding_rule_in_words_with_its_evidence(cli, tmp_path: Pa
             "an ordinary pour\n") in light.out
     out = json.loads(cli("ask", "--props", "light_liquid", "--theory", str(f), "--json").out)
     assert out["outcomes"]["no_spill"]["evidence"] == {
-        "held": 50, "pours": 60, "body": [], "unruled": ["light_liquid"]}
+        "held": 50, "pours": 60, "of": [], "explored": None, "body": [],
+        "unruled": ["light_liquid"]}
     assert out["outcomes"]["source_clear"]["rule"] is None      # unknown: no rule
     assert out["outcomes"]["source_clear"]["evidence"] is None
     # where such pours split, the answer says so
@@ -212,7 +213,74 @@ def test_ask_says_the_deciding_rule_in_words_with_its_evidence(cli, tmp_path: Pa
         "verdict": "uncertain", "likelihood": 0.45, "rule": "g1_no_spill",
         "because": "because pour from the side: holds in 45% of such pours (the pooled estimate); "
                    "held in 11 of 52 pours of pour from the side (rule g1_no_spill)",
-        "evidence": {"held": 11, "pours": 52, "body": ["pour_to_side"], "unruled": []}}
+        "evidence": {"held": 11, "pours": 52, "of": ["pour_to_side"], "explored": None,
+                     "body": ["pour_to_side"], "unruled": []}}
+
+
+EXPLORED = """\
+rule(g0_no_spill, defeasible, no_spill).
+learned(g0_no_spill).
+provenance(g0_no_spill, support, 60).
+provenance(g0_no_spill, kept, 50).
+provenance(g0_no_spill, confidence_permille, 830).
+rule(g1_no_spill, defeasible, neg(no_spill)).
+body(g1_no_spill, pour_to_side).
+learned(g1_no_spill).
+provenance(g1_no_spill, support, 52).
+provenance(g1_no_spill, kept, 41).
+provenance(g1_no_spill, confidence_permille, 912).
+held(a1, no_spill, 50, 60).
+explored(a2, light_liquid).
+held(a2, no_spill, 11, 12).
+explored(a3, heavy_liquid).
+held(a3, no_spill, 2, 12).
+explored(a4, light_liquid).
+explored(a4, pour_to_side).
+held(a4, no_spill, 1, 9).
+"""
+
+
+def test_ask_cites_the_pours_of_an_antecedent_explored_without_a_rule_of_its_own(
+        cli, tmp_path: Path) -> None:
+    # light_liquid and heavy_liquid were explored (held/4) but have no rule
+    # for no_spill: the answer is the ordinary pour's, and the pours it
+    # cites are those of the antecedent asked, in the likelihood's polarity
+    f = tmp_path / "explored.pl"
+    f.write_text(EXPLORED)
+    light = cli("ask", "--props", "light_liquid", "--theory", str(f))
+    assert light.code == 0, light.err
+    assert ("[yes    83%] no_spill" in light.out and
+            "because an ordinary pour: holds in 83% of such pours (the pooled estimate)\n"
+            "            held in 11 of 12 pours of a light liquid (explored, no rule of its own: "
+            "its pours agree with rule g0_no_spill)\n") in light.out
+    assert "no rule of its own decides this" not in light.out
+    # where its pours say otherwise than the rule that decides, it says so
+    heavy = cli("ask", "--props", "heavy_liquid", "--theory", str(f))
+    assert ("held in 2 of 12 pours of a heavy liquid (explored, no rule of its own: "
+            "rule g0_no_spill decides, though its pours differ)\n") in heavy.out
+    # an antecedent of two, under a failing head: counted for no_spill holding
+    side = cli("ask", "--props", "light_liquid,pour_to_side", "--theory", str(f))
+    assert ("because pour from the side: holds in 9% of such pours (the pooled estimate)\n"
+            "            held in 1 of 9 pours of a light liquid, pour from the side (explored, "
+            "no rule of its own: its pours agree with rule g1_no_spill)\n") in side.out
+    out = json.loads(cli("ask", "--props", "light_liquid", "--theory", str(f), "--json").out)
+    assert out["outcomes"]["no_spill"]["evidence"] == {
+        "held": 11, "pours": 12, "of": ["light_liquid"], "explored": "a2", "body": [],
+        "unruled": ["light_liquid"]}
+    # an antecedent not explored is answered as before
+    tilted = cli("ask", "--props", "pour_steeply_tilted", "--theory", str(f))
+    assert "held in 50 of 60 ordinary pours (rule g0_no_spill)\n" in tilted.out
+    assert ": no rule of its own decides this, so it is answered as an ordinary pour" in tilted.out
+    # --why gives the same answer with its evidence, in words and as JSON
+    why = cli("ask", "--props", "light_liquid", "--theory", str(f), "--why", "no_spill")
+    assert why.code == 0, why.err
+    assert "no_spill by rule g0_no_spill" in why.out
+    assert ("\n  held in 11 of 12 pours of a light liquid (explored, no rule of its own: "
+            "its pours agree with rule g0_no_spill)\n") in why.out
+    why_json = json.loads(cli("ask", "--props", "light_liquid", "--theory", str(f),
+                              "--why", "neg(no_spill)", "--json").out)
+    assert why_json["answer"]["evidence"]["explored"] == "a2"
+    assert why_json["answer"]["because"] == out["outcomes"]["no_spill"]["because"]
 
 
 def test_ask_why_in_words(cli, ordinary: str) -> None:
