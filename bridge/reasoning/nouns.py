@@ -14,23 +14,29 @@ OBJECTS = ("source", "destination", "liquid")
 OBJECT_STEMS = {stem(o): o for o in OBJECTS}
 BOWL = stem("bowl")
 #: Words that may stand between a body's value word and its noun: "a light, slippery bowl",
-#: "a heavy ceramic bowl", "the spout of a light jug" (everyday.txt's materials, context, parts).
-BETWEEN = {"a", "an", "the", "and", "or", "very", "material", "context", "part"}
+#: "a heavy ceramic bowl", "the spout of a light jug" (everyday.txt's materials and parts).
+BETWEEN = {"a", "an", "the", "and", "or", "very", "material", "part"}
 ARTICLES = {"a", "an", "the"}
+#: What everyday.txt's context nouns are read as: a noun, but of nothing in the scene
+#: ("a slippery counter" says nothing of a bowl).
+CONTEXT = "context"
 #: (word, next word) before a bowl that the liquid is poured out of: "pour from a cup",
 #: "into a bowl from a cup" (not "far from the cup": the destination)
 _POURED_FROM = {(stem(a), stem(b))
                 for a, b in (("out", "of"), ("pour", "from"), ("liquid", "from"),
-                             ("bowl", "from"), ("destination", "from"))}
+                             ("bowl", "from"), ("destination", "from"), (CONTEXT, "from"))}
 
 
 def roles(tokens: list[Token], placeable: frozenset[str]) -> dict[int, str]:
     """The body each noun names: a bowl is the destination, unless it is a
-    source bowl or what is poured from ("pour from a cup", "out of a cup")."""
+    source bowl or what is poured from ("pour from a cup", "out of a cup");
+    a context noun ("the table") names CONTEXT, no body of the scene."""
     roles: dict[int, str] = {}
     for i, t in enumerate(tokens):
         if t.word in OBJECT_STEMS:
             roles[i] = OBJECT_STEMS[t.word]
+        elif t.word == CONTEXT:
+            roles[i] = CONTEXT
         elif t.word == BOWL:
             if roles.get(i - 1) in ("source", "destination"):
                 roles[i] = roles[i - 1]
@@ -79,9 +85,15 @@ class Nouns:
         return None if at is None else self.roles[at]
 
     def at(self, first: int, last: int) -> int | None:
-        """The position of the noun the words from `first` to `last` qualify."""
+        """The position of the noun the words from `first` to `last` qualify:
+        the one they stand before ("a light, slippery cup"), unless it is
+        past the end of their clause and they are said of a noun before them
+        in it ("the table is slippery, the bowl ...": the table)."""
         j = self.stop[last + 1]
-        return j if j in self.roles else self.before[first]
+        t = self.tokens
+        ahead = j in self.roles and (t[j].clause == t[last].clause or self.before[first] is None
+                                     or (first > 0 and t[first - 1].word in BETWEEN))
+        return j if ahead else self.before[first]
 
     def partners(self, i: int) -> set[str]:
         """The bodies the noun at `i` names with others: those of the nouns

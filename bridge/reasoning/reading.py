@@ -46,7 +46,7 @@ from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.negation import NEGATION_STEMS, covered, scope, scope_ends
-from pantarhei.bridge.reasoning.nouns import ARTICLES, BOWL, OBJECT_STEMS, Nouns, roles
+from pantarhei.bridge.reasoning.nouns import ARTICLES, BOWL, CONTEXT, OBJECT_STEMS, Nouns, roles
 from pantarhei.bridge.reasoning.outcomes import hear
 from pantarhei.bridge.reasoning.quantities import read_numbers
 from pantarhei.bridge.reasoning.stages import MARKER_STEMS, MOVE, POSE, stages
@@ -352,6 +352,8 @@ def _agrees(name: str, first: int, last: int, noun: Nouns, lex: _Lexicon) -> boo
     if at is None:
         return True
     body = noun.roles[at]
+    if body == CONTEXT:             # "a sticky counter": said of no body of the scene
+        return False
     if kind == "stage":             # only "with the <destination> ..." says it of the destination
         t = noun.tokens
         said_with = at == first - 1 and any(

@@ -43,6 +43,9 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     # a bowl full of what is around the pour ("a bowl full of cereal") is not a full bowl
     ("hedge", (r"re:\b(?:full|filled) (?:up )?(?:with|of)(?= (?:the )?context\b)",)),
     ("material", ("made of", "made from")),
+    # poured into the sink, onto the table: a place the vocabulary has no bowl for
+    (UNCLEAR, (r"re:\b(?:(?:pour(?:s|ed|ing)?|spill(?:s|ed|ing)?)(?: it| them| the \w+| \w+)? "
+               r"(?:on|onto|into|in|over|down)|into|onto) (?:the |a |hedge )?context\b",)),
     # leaving the source as it was poured: the end pose is the pour's
     ("end same_tilt", (r"re:\b(?:leave|leaves|leaving|left|keep|keeps|keeping|kept) (?:it|the \w+)"
                        r" (?:tilted|tipped|angled|inclined)(?= *(?:$|[,;.!?]|\b(?:and|then|at the end"
@@ -163,6 +166,9 @@ HINTS: tuple[tuple[str, str], ...] = (
      'slowly", "move away fast")'),
     (r"\b(?:not|without)\b.*\b(?:tilt|tip|lean)",
      'not tilted much: say "slightly tilted" or "upright"'),
+    (r"^(?:\w+ )*(?:on|onto|into|in|over|down) (?:the |a |my |our )?\w+$",
+     'the vocabulary pours into a bowl: say "into a bowl", or where the bowl stands is not '
+     'read ("a bowl on the table")'),
     (r"^from above$|^overhead$|^from the top$",
      'above: how high, or where? say "high above the bowl" or "centred over the bowl"'),
     (r"^(?:tilt|tilted|tip|tipped|tipping)$", 'tilted how far? say "slightly tilted", "tilted halfway", '
