@@ -34,7 +34,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*) over(?: the (?:rim|edge|top|side)s?)?"
      r"|flood\w*", ("liquid_remains_in_destination", "no_spill"), True),
     (r"spill\w*|splash\w*|splatter\w*|slosh\w*|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
-     r"|make (?:a|any) mess|makes (?:a|any) mess|(?:go|goes|going|went|get|gets) everywhere"
+     r"|makes? (?:a|any) (?:big |huge |bit of a |real |total )?mess|(?:go|goes|going|went|get|gets) everywhere"
      r"|slop\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)"
      r"|(?:go|goes|going|went|get|gets|got|land|lands|landed|landing) (?:on|onto|all over)",
      ("no_spill",), True),

@@ -42,7 +42,8 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     # (the everyday word list, everyday.txt, is read here: see rewrites())
     # a bowl full of what is around the pour ("a bowl full of cereal") is not a full bowl
     ("hedge", (r"re:\b(?:full|filled) (?:up )?(?:with|of)(?= (?:the )?context\b)",)),
-    ("material", ("made of", "made from")),
+    # poured into a liquid ("milk into the coffee"): the vocabulary's destination is empty
+    (UNCLEAR, (r"re:\b(?:into|onto) (?:the |a |hedge |some )?(?:sticky |heavy )?liquid\b(?! particles)",)),
     # poured into the sink, onto the table: a place the vocabulary has no bowl for
     (UNCLEAR, (r"re:\b(?:(?:pour(?:s|ed|ing)?|spill(?:s|ed|ing)?)(?: it| them| the \w+| \w+)? "
                r"(?:on|onto|into|in|over|down)|into|onto) (?:the |a |hedge )?context\b",)),
@@ -166,9 +167,6 @@ HINTS: tuple[tuple[str, str], ...] = (
      'slowly", "move away fast")'),
     (r"\b(?:not|without)\b.*\b(?:tilt|tip|lean)",
      'not tilted much: say "slightly tilted" or "upright"'),
-    (r"^(?:\w+ )*(?:on|onto|into|in|over|down) (?:the |a |my |our )?\w+$",
-     'the vocabulary pours into a bowl: say "into a bowl", or where the bowl stands is not '
-     'read ("a bowl on the table")'),
     (r"^from above$|^overhead$|^from the top$",
      'above: how high, or where? say "high above the bowl" or "centred over the bowl"'),
     (r"^(?:tilt|tilted|tip|tipped|tipping)$", 'tilted how far? say "slightly tilted", "tilted halfway", '
@@ -235,6 +233,14 @@ def rewrites() -> tuple[tuple[re.Pattern | Matcher, tuple[str, ...], str], ...]:
 
 @lru_cache(maxsize=None)
 def hints() -> tuple[tuple[str, str], ...]:
-    """HINTS and, for each word the everyday list refuses, why and what would be read."""
+    """HINTS and, for each word the everyday list refuses, why and what
+    would be read; and for a pour into a place or into a liquid, why not."""
+    onto = r"^(?:\w+ )*(?:on|onto|into|in|over|down) (?:the |a |my |our |some )?"
     return HINTS + tuple((rf"^(?:{alternation(s.phrases)})$", s.said_back)
-                         for s in sections() if s.words == "unclear")
+                         for s in sections() if s.words == "unclear") + (
+        (rf"{onto}(?:{alternation(names('context'))})$",
+         'the vocabulary pours into a bowl: say "into a bowl" (where the bowl stands is not '
+         'read: "a bowl on the table")'),
+        (rf"{onto}(?:{alternation(names('liquid'))})$",
+         "the destination is empty before the pour: the vocabulary says nothing of pouring "
+         "into a liquid"))

@@ -126,7 +126,7 @@ def test_each_word_is_read_in_the_stage_it_is_said_in(question, props):
     ("pour light", '"light"'),                                   # the light what?
     ("pour fast", '"pour fast"'),                                # pouring has no speed
     ("pour from the side, tilted", '"tilted"'),                  # tilted how far?
-    ("pour from the side with a purple bowl", '"purple"'),       # a word not known
+    ("pour from the side with a furry bowl", '"furry"'),         # a word not known
     ("pour a heavy liquid from 45 furlongs", '"45", "furlongs"'),     # no unit known
 ])
 def test_a_word_that_cannot_be_placed_is_refused_naming_it(question, words):
@@ -150,8 +150,8 @@ def test_the_words_of_a_question_are_not_refused(question, props):
 
 
 def test_ask_refuses_a_word_it_cannot_place_in_one_line():
-    r = run_cli("ask", "pour from the side with a purple bowl")
-    assert "purple" in assert_one_line_error(r)
+    r = run_cli("ask", "pour from the side with a furry bowl")
+    assert "furry" in assert_one_line_error(r)
     assert r.out == ""
 
 
