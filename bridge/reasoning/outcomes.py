@@ -32,7 +32,7 @@ _ALL_IN = ("liquid_enters_destination",)
 #: (verb phrase, the expectations it speaks of, whether it happening makes them fail)
 OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*) over(?: the (?:rim|edge|top|side)s?)?"
-     r"|flood\w*", ("liquid_remains_in_destination", "no_spill"), True),
+     r"|bounc\w* (?:over|out of)|flood\w*", ("liquid_remains_in_destination", "no_spill"), True),
     (r"spill\w*|splash\w*|splatter\w*|slosh\w*|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
      r"|makes? (?:a|any) (?:big |huge |bit of a |real |total )?mess|(?:go|goes|going|went|get|gets) everywhere"
      r"|slop\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)"
@@ -74,7 +74,7 @@ _AUX = rf"{_MODALS}|is|are|was|were"
 _ACTORS = {"i", "we", "you", "robot", "arm", "gripper", "hand", "he", "she", "they"}
 #: The words that may follow an outcome's verb and are heard with it ("drip on the
 #: table", "spill out of the cup", "go into the bowl"): the scene's words stay the scene's.
-_REST = ("on|onto|over|out|of|in|into|inside|outside|the|a|an|table|floor|counter|worktop|top|"
+_REST = ("at all times|all the time|the whole time|at any point|at any time|throughout|on|onto|over|out|of|in|into|inside|outside|the|a|an|table|floor|counter|worktop|top|"
          "ground|everywhere|anywhere|at|all|any|anything|it|its|liquid|water|bowl|cup|glass|"
          "destination|source|target|container|rim|edge|sides?|much|too|even|ever|really|very|"
          "up|down|off|away|again|then")
@@ -82,6 +82,8 @@ _REST = ("on|onto|over|out|of|in|into|inside|outside|the|a|an|table|floor|counte
 #: words, not the scene's ("some of it" is no some_liquid).
 _PART_OF = re.compile(r"\b(?:most|all|any|some|much|half|none|part|a lot|a bit|a little|little|"
                       r"the rest|each) of\b")
+#: How much of the liquid, asked: "what fraction of the liquid spills".
+_SHARE = r"(?:what|which) (?:fraction|proportion|share|percentage|part|amount)(?: of (?:it|the \w+))?"
 _END = rf"(?P<rest>(?: (?:{_REST})\b)*)"
 
 
@@ -99,7 +101,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
     # (not holding another auxiliary: "do you think it will spill" asks "will it spill")
     subject = rf"(?P<subject>(?: (?!(?:if|when|while|not|{_MODALS})\b)[a-z]+){{0,5}}?)"
     asked = re.compile(
-        rf"(?<!that )(?<!which )\b(?:(?P<aux>{_AUX})(?P<neg> not)?{subject}|(?P<quant>how much(?: \w+)?|anything|"
+        rf"(?<!that )(?<!which )\b(?:(?P<aux>{_AUX})(?P<neg> not)?{subject}|(?P<quant>how much(?: \w+)?|{_SHARE}|anything|"
         rf"something|everything|nothing|any (?:liquid|water)|all of it|it all))"
         rf" (?:all |any |ever |even |still |not )?(?:{verbs})\b{_END}")
     nominal = re.compile(r"\b(?:(?:is|will) there (?:be )?)?(?:any|a|no|some) (?P<v1>spill(?:s|age)?"

@@ -22,9 +22,10 @@ def _spelt() -> tuple[str, ...]:
 
 def misspelt(words: list[str]) -> list[str]:
     """One "did you mean" for those of `words` close to one of the
-    vocabulary's, or none."""
+    vocabulary's (and not one of them), or none."""
     import difflib
 
-    near = {w: difflib.get_close_matches(w.lower(), _spelt(), n=1, cutoff=0.8) for w in words}
+    near = {w: difflib.get_close_matches(w.lower(), _spelt(), n=1, cutoff=0.8) for w in words
+            if w.lower() not in _spelt()}      # a word spelt right is not misspelt
     return [f'did you mean {", ".join(f"{m[0]!r} for {w!r}" for w, m in near.items() if m)}?'
             ] if any(near.values()) else []

@@ -13,7 +13,7 @@ order, so a longer phrase comes before a word it holds.
 The names of things (liquids, containers, materials, what is around a
 pour), hedges, degree phrases and the words the vocabulary cannot say
 are data: the everyday word list, everyday.txt, read by everyday.py and
-applied after the first entry of PHRASES; each of its phrases carries
+applied before PHRASES; each of its phrases carries
 what `ask` says back of it ("milk: read as an ordinary liquid ...").
 
 The stage words ("start", "pour", "end", "approach", "retreat") are
@@ -76,9 +76,12 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
                      "back upright")),
     ("end", (f"put {_IT} down", f"set {_IT} down", "at the end", "in the end", "finish")),
     # "after pouring from the side": the manner after it is the pour's
+    # emptying a bowl into another, decanting, dumping: pouring
+    ("pour", (r"re:\bempt(?:y|ies|ied|ying)(?= (?:it|the \w+|a \w+) (?:into|in|onto)\b)",
+              "decant", "dump")),
     ("retreat ; pour", (rf"re:\bafter pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",)),
     ("approach ; pour", (rf"re:\bbefore pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",)),
-    ("approach", (r"re:\b(?:move|bring)(?:s|d|ed|ing)? (?:it|the \w+) in\b",
+    ("approach", (r"re:\b(?:move|bring)(?:s|d|ed|ing)? (?:it|the \w+) (?:in|over)\b",
                   "before pour", "move to the pour pose", "move into the pour pose",
                   "move in", "come in")),
     ("away from", ("move away from", "pull away from")),    # a direction, not the retreat
@@ -102,18 +105,21 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("high", ("high up", "up high")),
     ("low", ("low down", "down low", "just above", "close above")),
     ("below", ("beneath", "underneath", "under")),
-    ("centred", ("centered", "center", "centre", "central", "in the middle", "middle")),
+    ("centred", ("centered", "center", "centre", "central", "in the middle", "middle",
+                 r"re:\b(?:directly|straight|right) (?:above|over)(?= (?:the )?(?:destination|bowl)\b)")),
     ("far", ("far off", "distant", "a long way", "from a distance", "at a distance")),
     ("offset sideways", ("offset to the side", "offset to one side")),
     ("sideways", ("lateral", "laterally", "sidewise")),
     ("side", ("off to one side", "off to the side", "to one side")),
     # how the source is tilted and moved
     ("upside down", ("inverted", "upturned", "turned over")),
-    # tipping the source is tilting it ("tip it a bit"); the bowl tipping over is outcomes.py's
+    # tipping the source is tilting it ("tip it a bit"); the bowl tipping over is outcomes.py's;
+    # forward is the way a tilt goes (towards the destination)
     ("tilt", (r"re:\btip(?:s|ped|ping)?\b",)),
+    ("tilt", (r"re:\btilt(?:s|ed|ing)?(?: it| the \w+)? forwards?\b",)),
     ("rolled sideways", (r"re:\b(?:tilt|tip|lean)(?:s|ed|ing)?(?: (?:it|the \w+))? sideways\b",)),
     ("tilted away from the destination", ("tilted back", "tilted backwards", "leaning back")),
-    ("slightly tilted", (r"re:\btilt(?:s|ed|ing)?(?: (?:it|the \w+))?(?: only)? "
+    ("slightly tilted", (r"re:\btilt(?:s|ed|ing)?(?: (?:it|the \w+))?(?: only| just)? "
                          r"(?:a (?:little )?bit|a little)\b",)),
     ("slightly", (r"re:\b(?:a (?:little )?bit|a little)(?= (?:tilt|angled|inclined))",)),
     ("upright", ("vertical", "straight up")),
@@ -130,7 +136,7 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("full", ("filled", "brimming", "full up")),
     ("much", ("a lot of", "lots of", "plenty of")),
     ("little", ("a few drops of", "a few drops", "a drop of", "a drop")),
-    ("slippery", ("slick", "smooth")),
+    ("slippery", ("slick", "smooth", "greasy")),
     ("grippy", ("rough",)),
     ("runny", ("thin", "watery")),
     ("sticky", ("viscous", "thick", "syrupy", "gooey")),
@@ -220,15 +226,13 @@ def _everyday() -> list[tuple[Matcher, str, str]]:
 @lru_cache(maxsize=None)
 def rewrites() -> tuple[tuple[re.Pattern | Matcher, tuple[str, ...], str], ...]:
     """Each rewrite in the order applied, with the words it is read as and
-    what is said back: the first entry of PHRASES (hedges), the everyday
-    word list, then the rest of PHRASES; an entry's phrases as one compiled
-    pattern, a section of the list as a Matcher."""
+    what is said back: the everyday word list, then PHRASES; an entry's
+    phrases as one compiled pattern, a section of the list as a Matcher."""
     def compiled(words: str, phrases: tuple[str, ...]):
         return re.compile("|".join(f"(?:{_pattern(p)})" for p in phrases)), tuple(words.split()), ""
 
-    first, *rest = PHRASES
-    return (compiled(*first), *((m, tuple(w.split()), said) for m, w, said in _everyday()),
-            *(compiled(*entry) for entry in rest))
+    return (*((m, tuple(w.split()), said) for m, w, said in _everyday()),
+            *(compiled(*entry) for entry in PHRASES))
 
 
 @lru_cache(maxsize=None)
