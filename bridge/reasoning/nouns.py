@@ -7,7 +7,9 @@ is very light")."""
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 
+from pantarhei.bridge.reasoning.everyday import names
 from pantarhei.bridge.reasoning.wording import Token, stem
 
 OBJECTS = ("source", "destination", "liquid")
@@ -100,7 +102,9 @@ class Nouns:
         coordinated with it ("the source and the destination"), or both
         bowls for bowls in the plural ("both cups")."""
         t = self.tokens
-        if t[i].word == BOWL and (re.search(r"[^s]s$", t[i].raw) or (i > 0 and t[i - 1].word == "both")):
+        last = t[i].raw.split()[-1]
+        plural = re.search(r"[^s]s$", last) and last not in _singular()      # not "a thermos"
+        if t[i].word == BOWL and (plural or (i > 0 and t[i - 1].word == "both")):
             return {"source", "destination"}
         out = set()
         for step in (-1, 1):            # "X and [the] <i>" and "<i> and [the] Y"
@@ -116,6 +120,12 @@ class Nouns:
         ("the destination", "a destination bowl"), not a bowl by default."""
         return self.roles.get(i) == "destination" and (
             self.tokens[i].word == "destination" or (i > 0 and self.tokens[i - 1].word == "destination"))
+
+
+@lru_cache(maxsize=None)
+def _singular() -> frozenset[str]:
+    """The last words of the containers' names (everyday.txt), in the singular."""
+    return frozenset(p.split()[-1] for p in names("bowl"))
 
 
 def past_articles(tokens: list[Token], j: int, step: int) -> int:

@@ -208,7 +208,7 @@ def read_question(question: str) -> Reading:
     structural = _IGNORED | NEGATION_STEMS | set(OBJECT_STEMS) | {BOWL} | set(MARKER_STEMS)
     ignored = [t.raw for i, t in enumerate(tokens) if i not in taken and t.word not in structural
                and t.word not in _SAME]
-    heard = [t.raw for i, t in enumerate(tokens) if t.raw not in ignored]
+    heard = [t.raw for t in tokens if t.raw not in ignored or t.said_back]    # said back: heard
     notes = _notes(tokens)
     noted = {n.split(":")[0] for n in notes}
     return Reading(tuple(sorted(set(out))), outcome.asked, outcome.goals, notes,

@@ -1,0 +1,107 @@
+"""The everyday word list (bridge/reasoning/everyday.txt), word by word:
+each phrase of it, said in a question, is read as its section says (a
+liquid's name as the liquid it is, a container as a bowl, a material or
+what is around the pour said back as ignored with the reason), or refused
+naming why; and its plurals with it."""
+from __future__ import annotations
+
+import pytest
+
+from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.reasoning.everyday import Matcher, forms, sections
+from pantarhei.bridge.reasoning.reading import read_question
+
+#: The kinds of section the reader knows what to do with.
+KINDS = {"hedge", "material", "bowl", "sticky liquid", "heavy liquid", "liquid", "context", "part",
+         "unclear", "a bit", "little", "much", "full"}
+
+
+def _phrases(*kinds: str) -> list[tuple[str, str]]:
+    return [(p, s.said_back) for s in sections() if s.words in kinds for p in s.phrases]
+
+
+def test_every_section_is_of_a_kind_the_reader_knows_and_says_why_when_it_ignores():
+    assert {s.words for s in sections()} <= KINDS
+    for s in sections():
+        assert s.phrases, s.words
+        if s.words in ("material", "context", "part", "unclear"):
+            assert s.said_back, s.words            # ignored or refused: the reason is said
+
+
+def _noted(question: str, phrase: str, said: str) -> bool:
+    return f"{phrase.removesuffix(' of')}: {said}" in read_question(question).notes
+
+
+@pytest.mark.parametrize("phrase,said", _phrases("liquid", "sticky liquid", "heavy liquid"))
+def test_a_liquid_by_its_name_is_read_as_the_liquid_it_is(phrase, said):
+    kind = next(s.words for s in sections() if phrase in s.phrases)
+    scene = {"liquid": [], "sticky liquid": ["sticky_liquid"], "heavy liquid": ["heavy_liquid"]}[kind]
+    question = f"pour {phrase} from the side"
+    assert list(read_question(question).scene) == sorted(["pour_to_side", *scene])
+    assert not said or _noted(question, phrase, said)
+
+
+@pytest.mark.parametrize("phrase,said", _phrases("bowl"))
+def test_a_container_is_a_bowl_the_source_when_poured_from(phrase, said):
+    assert list(read_question(f"pour from a heavy {phrase}").scene) == ["heavy_source"]
+    assert list(read_question(f"pour into a light {phrase}").scene) == ["light_destination"]
+
+
+@pytest.mark.parametrize("phrase,said", _phrases("material"))
+def test_a_material_or_colour_is_said_back_as_ignored_and_takes_nothing_down(phrase, said):
+    question = (f"pour into a light bowl {phrase}" if phrase.startswith("made ")
+                else f"pour into a light {phrase} bowl")
+    assert list(read_question(question).scene) == ["light_destination"]
+    assert said.startswith("ignored") and _noted(question, phrase, said)
+
+
+@pytest.mark.parametrize("phrase,said", _phrases("context"))
+def test_what_is_around_the_pour_is_said_back_as_ignored(phrase, said):
+    question = f"pour from the side into a bowl by the {phrase}"
+    assert list(read_question(question).scene) == ["pour_to_side"]
+    assert said.startswith("ignored") and _noted(question, phrase, said)
+
+
+@pytest.mark.parametrize("phrase,said", _phrases("part"))
+def test_a_part_of_a_bowl_is_said_back_as_ignored_and_the_bowl_read(phrase, said):
+    question = f"pour from the {phrase} a heavy jug" if phrase.endswith(" of") else \
+        f"pour from the {phrase} of a heavy jug"
+    assert list(read_question(question).scene) == ["heavy_source"]
+    assert _noted(question, phrase, said)
+
+
+@pytest.mark.parametrize("phrase,said", _phrases("hedge"))
+def test_a_hedge_is_read_as_nothing(phrase, said):
+    assert list(read_question(f"{phrase}, pour from the side").scene) == ["pour_to_side"]
+
+
+@pytest.mark.parametrize("phrase,said", _phrases("unclear"))
+def test_a_word_the_vocabulary_cannot_say_is_refused_naming_why(phrase, said):
+    with pytest.raises(UserError) as e:
+        read_question(f"pour from the side, {phrase}")
+    assert f'"{phrase}"' in str(e.value) and said in str(e.value) and "\n" not in str(e.value)
+
+
+@pytest.mark.parametrize("phrase,template,props", [
+    *((p, "tilt the jug {}", ["pour_slightly_tilted"]) for p, _ in _phrases("a bit")),
+    *((p, "pour {} milk" if p.endswith(" of") else "pour from a {} jug", ["little_liquid"])
+      for p, _ in _phrases("little")),
+    *((p, "pour {} milk", ["much_liquid"]) for p, _ in _phrases("much")),
+    *((p, "pour from a jug {}", ["very_much_liquid"]) for p, _ in _phrases("full")),
+])
+def test_a_degree_phrase_is_read_as_the_degree_it_says(phrase, template, props):
+    assert list(read_question(template.format(phrase)).scene) == props
+
+
+def test_a_phrase_matches_its_plurals_and_nothing_longer():
+    assert forms("jug") == (("jug",), ("jugs",), ("juges",))
+    assert ("glasses",) in forms("glass") and ("parties",) in forms("party")
+    m = Matcher(["gravy boat", "jug"], before=["milk"])
+    words = "pour the milk jugs into two gravy boats not a jugged boat".split()
+    assert [words[i:j] for i, j in m.spans(words)] == [["milk", "jugs"], ["gravy", "boats"]]
+
+
+def test_glass_is_a_material_only_before_a_container():
+    m = Matcher(["plastic"], glass_before=["jug"])
+    words = "a glass jug a glass a plastic glass".split()
+    assert [words[i:j] for i, j in m.spans(words)] == [["glass"], ["plastic"]]
