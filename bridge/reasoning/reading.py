@@ -201,7 +201,7 @@ def read_question(question: str) -> Reading:
     if not accepted and not _ordinary(tokens, lex, bool(outcome.asked or outcome.goals)):
         unknown = list(dict.fromkeys(t.raw for t in tokens if t.word not in lex.known))
         hint = misspelt(unknown)
-        said = f"could not place {', '.join(f'{w!r}' for w in unknown)}: " if unknown else ""
+        said = ("could not place " + ", ".join(f'"{w}"' for w in unknown) + ": ") if unknown else ""
         raise UserError(f"understood none of \"{question}\": {said}" + (hint[0] if hint else (
             "describe the scene with the words of `pantarhei vocab`, or give --props P1,P2")))
     taken = set().union(set(), *(p for _, p in accepted))

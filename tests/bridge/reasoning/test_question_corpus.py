@@ -400,10 +400,10 @@ REFUSED_SAYING = {
     'the table is slippery, will the bowl slide?': 'could not place "slippery"',
     'if I tip the cup, will it spill?': 'tilted how far?',
     'pour batter slowly into a pan': '"move to the pouring pose slowly"',
-    'what if the jug bonks the bowl?': "could not place 'bonks'",
+    'what if the jug bonks the bowl?': 'could not place "bonks"',
     'what if the milk ends up on the floor?': 'could not place "ends up"',
-    'will the beer foam?': "could not place 'foam'",
-    'pour syrup onto a plate': "could not place 'plate'",       # a plate holds no pour
+    'will the beer foam?': 'could not place "foam"',
+    'pour syrup onto a plate': 'could not place "plate"',       # a plate holds no pour
 }
 
 
