@@ -38,13 +38,14 @@ def run_options(max_rules: int, tmp: Path, seed: int = 1, breadth: int = 3,
     """The options of one measured run: the synthetic oracle, in this
     process, with the option table's other defaults (for the paper's
     curiosity slope 0: it follows every plane, a run that never stops
-    early)."""
+    early, and the breadth given, which the discovering curiosity does
+    not read)."""
     from pantarhei.bridge.exploration.explore_call import ExploreOptions
 
-    paper = {"slope": 0.0} if curiosity == "paper" else {}
+    paper = {"slope": 0.0, "breadth": breadth} if curiosity == "paper" else {}
     return ExploreOptions(curiosity=curiosity, oracle="synthetic", budget=max_rules, seed=seed,
                    out=tmp / "t.pl", store=tmp / f"s{max_rules}-{seed}-{time.time_ns()}.sqlite",
-                   progress=False, executor="inline", breadth=breadth, **paper)
+                   progress=False, executor="inline", **paper)
 
 
 def overhead(max_rules: int, tmp: Path, seed: int = 1, breadth: int = 3,

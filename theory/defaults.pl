@@ -146,6 +146,39 @@ course(doubt, learn).
 course(newness, learn).
 course(reach, learn).
 
+% The options that some curiosities read and others do not: used_by(Name,
+% Curiosity), one fact for each curiosity that reads it; an option without
+% such facts is read by every curiosity. explore/1 refuses, in one line,
+% an option that the run's curiosity does not read (theory/curiosity/
+% settings.pl), and Python passes it only such options as it reads, or
+% set to another value than the default (bridge/exploration/explore_call.py).
+% A curiosity's budget is the one of budget and pours that it reads.
+used_by(budget, discover).
+used_by(budget, paper).
+used_by(pours, learn).
+used_by(body, learn).
+used_by(queue, learn).
+used_by(uncertainty, learn).
+used_by(doubt, learn).
+used_by(newness, learn).
+used_by(reach, learn).
+used_by(significance, discover).
+used_by(permutations, discover).
+used_by(resample, discover).
+used_by(novelty, discover).
+used_by(jumps, discover).
+used_by(probe, discover).
+used_by(probe_attempts, discover).
+used_by(prior_batch, discover).
+used_by(slope, paper).
+used_by(breadth, paper).
+used_by(ridge, discover).
+used_by(ridge, paper).
+used_by(qualify, discover).
+used_by(qualify, paper).
+used_by(general, discover).
+used_by(general, paper).
+
 % The learned theory's setting/2 facts say how it was learned: the options
 % of the run's course/2 above and these, which decide what the theory says
 % without changing the course (a run resumes with a larger budget). A

@@ -37,6 +37,12 @@ class Option:
     ref: str | None = None
     #: An option of explore/1's option list alone, without a flag (prolog_only/1).
     prolog_only: bool = False
+    #: The curiosities that read it (used_by/2); empty: every curiosity.
+    curiosities: tuple = ()
+
+    def read_by(self, curiosity: str) -> bool:
+        """Does the curiosity read this option?"""
+        return not self.curiosities or curiosity in self.curiosities
 
     @property
     def flag(self) -> str:
@@ -56,7 +62,11 @@ def option_table() -> tuple[Option, ...]:
     project = {k: v for k, v in facts.get("default", [])}
     project["initial"] = tuple(p for (p,) in facts.get("default_initial", []))
     prolog_only = {name for (name,) in facts.get("prolog_only", [])}
-    return tuple(_option(row, project, row[0] in prolog_only) for row in facts.get("option", []))
+    used: dict[str, tuple] = {}
+    for name, curiosity in facts.get("used_by", []):
+        used[name] = used.get(name, ()) + (curiosity,)
+    return tuple(_option(row, project, row[0] in prolog_only, used.get(row[0], ()))
+                 for row in facts.get("option", []))
 
 
 def command_line_options() -> tuple[Option, ...]:
@@ -65,7 +75,8 @@ def command_line_options() -> tuple[Option, ...]:
     return tuple(o for o in option_table() if not o.prolog_only)
 
 
-def _option(row: tuple, project: dict, prolog_only: bool = False) -> Option:
+def _option(row: tuple, project: dict, prolog_only: bool = False,
+            curiosities: tuple = ()) -> Option:
     name, kind, rng, default, help_text = row
     low = high = ref = None
     choices: tuple = ()
@@ -84,7 +95,7 @@ def _option(row: tuple, project: dict, prolog_only: bool = False) -> Option:
         default = default == "true"
     elif kind == "permille":
         default = default / 1000
-    return Option(name, kind, low, high, choices, default, help_text, ref, prolog_only)
+    return Option(name, kind, low, high, choices, default, help_text, ref, prolog_only, curiosities)
 
 
 def option(name: str) -> Option:
@@ -104,22 +115,33 @@ def options_page() -> str:
              "This page is written from the option table in `theory/defaults.pl`",
              "(`python -m pantarhei.theory.option_table`). The same names are the",
              "options of `explore/1` at the Prolog prompt (`seed(3)` for `--seed 3`,",
-             "underscores for dashes, `progress(false)` for `--no-progress`).", "",
-             "| flag | values | default | what it does |", "|---|---|---|---|"]
+             "underscores for dashes, `progress(false)` for `--no-progress`).",
+             "An option is read by the curiosities its row names (`used_by/2` of",
+             "`theory/defaults.pl`); one that the chosen curiosity does not read",
+             "is refused in one line, at the prompt and on the command line",
+             "(given at its default value on the command line, it changes nothing",
+             "and is not passed on).", "",
+             "| flag | values | default | read by | what it does |", "|---|---|---|---|---|"]
     for o in command_line_options():
-        lines.append(f"| `{o.flag}` | {_values(o)} | {_default_text(o)} | {o.help} |")
+        lines.append(f"| `{o.flag}` | {_values(o)} | {_default_text(o)} | {_readers(o)} | {o.help} |")
     lines += ["", "## Options of explore/1 alone", "",
-              "These tune the discovering and the paper's curiosity, or choose the",
-              "paper's planes and qualify; the default curiosity reads none of them.",
-              "`explore/1` takes them in its option list (`pantarhei prolog`, then",
-              "`explore([curiosity(discover), probe(0)])`); the command line has no",
-              "flag for them. [Tried and dropped](dropped.md) gives, for each, the",
-              "figure that kept its default.", "",
-              "| option | values | default | what it does |", "|---|---|---|---|"]
+              "These tune each curiosity's choices beyond its defaults, or choose",
+              "the paper's planes and qualify. `explore/1` takes them in its option",
+              "list (`pantarhei prolog`, then `explore([curiosity(discover),",
+              "probe(0)])`); the command line has no flag for them. [Tried and",
+              "dropped](dropped.md) gives, for each, the figure that kept its",
+              "default.", "",
+              "| option | values | default | read by | what it does |", "|---|---|---|---|---|"]
     for o in option_table():
         if o.prolog_only:
-            lines.append(f"| `{o.name}(V)` | {_values(o)} | {_default_text(o)} | {o.help} |")
+            lines.append(f"| `{o.name}(V)` | {_values(o)} | {_default_text(o)} | {_readers(o)} "
+                         f"| {o.help} |")
     return "\n".join(lines) + "\n"
+
+
+def _readers(o: Option) -> str:
+    """The curiosities that read the option, as the page names them."""
+    return ", ".join(f"`{c}`" for c in o.curiosities) if o.curiosities else "every"
 
 
 def _values(o: Option) -> str:

@@ -106,7 +106,7 @@ def prolog(args: argparse.Namespace) -> int:
         return 0 if ok else 1
     print("Panta Rhei: the theory and the oracle are loaded. Try\n"
           "  ?- what_happens([pour_to_side], O).\n"
-          "  ?- explore([oracle(synthetic), budget(5), out('/tmp/learned.pl')]).\n"
+          "  ?- explore([oracle(synthetic), pours(40), out('/tmp/learned.pl')]).\n"
           "  ?- sample([pour_to_side], 3, 1, Rows), simulate(Rows, [oracle(synthetic)], Scores).\n"
           "  ?- validity:valid_antecedent([pour_to_side, pour_low]).\n"
           "End with halt. or Ctrl-D.", file=sys.stderr)

@@ -43,12 +43,27 @@ def _prolog_value(o: Option, v: Any) -> str:
 
 def _prolog(self: "ExploreOptions") -> str:
     """The options as explore/1's option list: every option of the table
-    that is set."""
+    that is set and that the chosen curiosity reads (used_by/2 of
+    theory/defaults.pl), or that is set to another value than its
+    default; explore/1 refuses the latter in one line."""
+    def passed(o: Option) -> bool:
+        v = getattr(self, o.name)
+        return v not in (None, "") and (o.read_by(str(self.curiosity)) or not _default(o, v))
+
     items = [f"{o.name}({_prolog_value(o, getattr(self, o.name))})" for o in option_table()
-             if getattr(self, o.name) not in (None, "")]
+             if passed(o)]
     if self.oracle_options:
         items.append(f"oracle_options({prolog_quote(self.oracle_options)})")
     return "[" + ", ".join(items) + "]"
+
+
+def _default(o: Option, v: Any) -> bool:
+    """Is `v` the option's default?"""
+    if o.type == "path":
+        return Path(v) == _field(o)[2].default_factory()
+    if o.type == "antecedent":
+        return o.default is not None and sorted(v) == sorted(o.default)
+    return v == o.default
 
 
 def _paths(self: "ExploreOptions") -> None:

@@ -69,7 +69,7 @@ def test_another_programs_database_is_refused_and_left_as_it_was(tmp_path):
     r = run_cli("simulate", "--antecedent", "pour_low", "-n", "1", "--executor", "inline",
                 "--store", str(db))
     assert "another program's database (tables albums" in assert_one_line_error(r, 1)
-    r = run_cli("explore", "--oracle", "synthetic", "--budget", "1", "--executor", "inline",
+    r = run_cli("explore", "--oracle", "synthetic", "--pours", "4", "--executor", "inline",
                 "--no-progress", "--store", str(db), "--out", str(tmp_path / "t.pl"))
     assert r.code != 0 and "another program's database" in r.err and "Traceback" not in r.err
     assert _digest(db) == before and not (tmp_path / "t.pl").exists()

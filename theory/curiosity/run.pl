@@ -26,8 +26,10 @@ the exploration on the oracle's side too (aborted), then propagates.
 %
 %   Run Algorithm 1 and write the learned theory. Options: those of the
 %   option table of theory/defaults.pl (docs/options.md), each as
-%   Name(Value), e.g. explore([oracle(synthetic), budget(5), out(File)]):
-%   their types, ranges and defaults are there. Besides them:
+%   Name(Value), e.g. explore([oracle(synthetic), pours(40), out(File)]):
+%   their types, ranges and defaults are there, and used_by/2 there says
+%   which curiosity reads which (another is refused: the learning
+%   curiosity's budget is pours(N), the others' budget(N)). Besides them:
 %
 %     - oracle_options(+Dict): arguments of the oracle (a dict)
 %

@@ -20,6 +20,7 @@ setting/2 facts of its learned theory.
 :- use_module('../validity').
 :- use_module('../default_values').
 :- use_module(library(aggregate)).
+:- use_module(library(yall)).
 
 %!  settings(+Options:list, -Settings:dict) is det.
 %
@@ -34,6 +35,7 @@ settings(Options, S) :-
     must_be(list, Options),
     maplist(known_option, Options),
     setting_value(curiosity, Options, discover, Curiosity),
+    maplist(option_of_curiosity(Curiosity), Options),
     findall(Key-Value,
             ( table_option(Key, _, _, _),
               Key \== curiosity,
@@ -119,6 +121,39 @@ known_option(Option) :-
                [Option]),
         throw(exploration_error(M))
     ).
+
+%   option_of_curiosity(+Curiosity, +Option): Option (known_option/1) is
+%   one that Curiosity reads: used_by/2 of theory/defaults.pl names it for
+%   Curiosity, or names it for none. Else the error names the option, the
+%   curiosity, the curiosity's budget when the option is the other's, and
+%   the options the curiosity reads that not every curiosity reads.
+option_of_curiosity(Curiosity, Option) :-
+    (   Option = (Name = _) -> true ; compound_name_arity(Option, Name, 1) ),
+    (   \+ defaults:used_by(Name, _)
+    ->  true
+    ;   defaults:used_by(Name, Curiosity)
+    ->  true
+    ;   findall(O, ( table_option(O, _, _, _), defaults:used_by(O, Curiosity) ), Own),
+        (   memberchk(Name, [budget, pours]),
+            member(B, [budget, pours]), memberchk(B, Own)
+        ->  format(string(Budget), ", whose budget is ~w(N)", [B])
+        ;   Budget = ""
+        ),
+        findall(C, defaults:used_by(Name, C), Cs),
+        maplist([C, T]>>format(string(T), "curiosity(~w)", [C]), Cs, Ts),
+        words_and(Own, OwnText),
+        words_and(Ts, ReadersText),
+        format(string(M), "~w: not an option of curiosity(~w)~w; its own options are ~w (~w is read by ~w)",
+               [Name, Curiosity, Budget, OwnText, Name, ReadersText]),
+        throw(exploration_error(M))
+    ).
+
+%   words_and(+Words, -Text): "a", "a and b", "a, b and c".
+words_and([W], Text) :- !, format(string(Text), "~w", [W]).
+words_and(Ws, Text) :-
+    append(First, [Last], Ws),
+    atomic_list_concat(First, ', ', F),
+    format(string(Text), "~w and ~w", [F, Last]).
 
 %   table_option(?Key, ?Type, ?Range, ?Default): a row of the option
 %   table (theory/defaults.pl).

@@ -3,6 +3,7 @@
 :- use_module('../default_values').
 :- use_module('../validity').
 :- use_module(settings).
+:- use_module(interface, [curiosity_module/2]).
 
 % a_0, the default of initial(Props), is a valid antecedent
 test(default_initial_is_valid) :-
@@ -66,5 +67,36 @@ test(unknown_option_is_refused, [forall(member(O, [ouy('/tmp/x.pl'), outt = '/tm
     catch(settings([oracle(synthetic), O], _), exploration_error(M), true),
     format(string(Want), "unknown option ~q", [O]),
     string(M), sub_string(M, 0, _, _, Want).
+
+% an option that the curiosity does not read (used_by/2 of
+% theory/defaults.pl) is refused in one line naming it, the curiosity, its
+% budget and its own options; given as Name = Value too
+test(an_option_the_curiosity_does_not_read_is_refused,
+     [true(M == "budget: not an option of curiosity(learn), whose budget is pours(N); its own options are pours, body, queue, uncertainty, doubt, newness and reach (budget is read by curiosity(discover) and curiosity(paper))")]) :-
+    catch(settings([curiosity(learn), budget(5)], _), exploration_error(M), true),
+    catch(settings([budget = 5], _), exploration_error(M2), true),
+    M2 == M.
+
+test(each_curiosity_reads_its_options_and_refuses_the_others,
+     [forall(( defaults:used_by(Name, _), curiosity_module(C, _) ))]) :-
+    defaults:option(Name, _, _, _, _),
+    O =.. [Name, _],
+    (   catch(( settings([curiosity(C), O], _), Said = read ),
+              exploration_error(M), Said = M)
+    ->  true
+    ;   Said = read
+    ),
+    (   defaults:used_by(Name, C)
+    ->  (   string(Said) -> \+ sub_string(Said, _, _, _, "not an option of") ; true )
+    ;   string(Said),
+        format(string(Want), "~w: not an option of curiosity(~w)", [Name, C]),
+        sub_string(Said, 0, _, _, Want)
+    ).
+
+test(options_every_curiosity_reads_are_read_by_each,
+     [forall(curiosity_module(C, _))]) :-
+    settings([curiosity(C), seed(3), oracle(synthetic), batch(5), executor(inline),
+              progress(false), initial([pour_low])], S),
+    S.seed == 3.
 
 :- end_tests(curiosity_settings).

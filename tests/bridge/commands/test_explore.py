@@ -64,13 +64,54 @@ def test_explore_1_checks_an_option_of_its_own_in_one_line(tmp_path):
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.parametrize("args, words", [
+    (["--curiosity", "learn", "--budget", "5"],
+     "budget: not an option of curiosity(learn), whose budget is pours(N); its own options are "
+     "pours, body, queue, uncertainty, doubt, newness and reach (budget is read by "
+     "curiosity(discover) and curiosity(paper))"),
+    (["--budget", "5"], "budget: not an option of curiosity(learn), whose budget is pours(N)"),
+    (["--curiosity", "discover", "--pours", "40"],
+     "pours: not an option of curiosity(discover), whose budget is budget(N)"),
+    (["--curiosity", "paper", "--body", "1"], "body: not an option of curiosity(paper); "),
+    (["--curiosity", "learn", "--no-general"], "general: not an option of curiosity(learn); "),
+])
+def test_a_flag_the_curiosity_does_not_read_is_refused_in_one_line(tmp_path, args, words):
+    r = run_cli("explore", *FAST, *args, "--out", str(tmp_path / "t.pl"),
+                "--store", str(tmp_path / "s.sqlite"))
+    assert words in assert_one_line_error(r)
+    assert not (tmp_path / "t.pl").exists()
+
+
+def test_python_passes_explore_1_the_options_its_curiosity_reads():
+    """The options Python passes: those the chosen curiosity reads, and
+    another only when set to another value than its default (which
+    explore/1 refuses)."""
+    from pantarhei.bridge.exploration.explore_call import ExploreOptions
+    from pantarhei.theory.option_table import option_table
+
+    for curiosity in ("learn", "discover", "paper"):
+        passed = {item.split("(")[0] for item in ExploreOptions(curiosity=curiosity).prolog()
+                  .strip("[]").split(", ")}
+        assert passed and all(o.read_by(curiosity) for o in option_table() if o.name in passed)
+        assert {"pours" if curiosity == "learn" else "budget", "seed", "out"} <= passed
+    assert "budget(5)" in ExploreOptions(curiosity="learn", budget=5).prolog()
+    assert "budget(" not in ExploreOptions(curiosity="learn", budget=25).prolog()
+    # and explore/1 takes them
+    from pantarhei.bridge.exploration.session import install
+
+    for curiosity in ("learn", "discover", "paper"):
+        o = ExploreOptions(curiosity=curiosity, oracle="synthetic")
+        r = install().once(f"curiosity_settings:settings({o.prolog()}, S), get_dict(curiosity, S, C)")
+        assert str(r["C"]) == curiosity
+
+
 @pytest.mark.parametrize("store, out, words", [
     ("x.sqlite", "x.sqlite", "--store and --out are the same file"),
     ("x.trace.jsonl", "x.pl", "--store and --out's trace are the same file"),
     ("x.trace.png", "x.pl", "--store and --out's trace plot are the same file"),
 ])
 def test_one_file_for_two_roles_is_refused_before_anything_is_written(tmp_path, store, out, words):
-    r = run_cli("explore", *FAST, "--budget", "1", "--batch", "4", "--no-general",
+    r = run_cli("explore", *FAST, "--pours", "4", "--batch", "4",
                 "--store", str(tmp_path / store), "--out", str(tmp_path / "sub" / ".." / out))
     assert words in assert_one_line_error(r)
     assert list(tmp_path.iterdir()) == []
@@ -83,7 +124,7 @@ def test_explore_1_at_the_prolog_prompt_refuses_one_file_for_two_roles_too(tmp_p
     with sqlite3.connect(store) as db:          # what must survive
         db.execute("CREATE TABLE keep (x)")
         db.execute("INSERT INTO keep VALUES (1)")
-    r = run_cli("prolog", "-g", f"explore([oracle(synthetic), budget(1), store('{store}'), "
+    r = run_cli("prolog", "-g", f"explore([oracle(synthetic), pours(4), store('{store}'), "
                                 f"out('{tmp_path / 'sub' / '..' / 'x.sqlite'}')])")
     assert r.code != 0
     assert "store(...) and out(...) are the same file" in r.err and "Traceback" not in r.err

@@ -35,6 +35,8 @@ def run(tmp: Path, name: str = "t", **kw) -> dict:
                 prior_batch=0)                # the course the known answers below were found on
                                         # (with the priors' batch: test_priors.py)
     opts.update(kw)
+    if opts["curiosity"] != "discover":      # an option of the discovering curiosity alone
+        del opts["prior_batch"]
     return exploration.explore(ExploreOptions(**opts))
 
 
