@@ -20,4 +20,26 @@ test(rule_facts_and_theory_file, [setup(tmp_file(theory, F)), cleanup(delete_fil
     explore_plt_theory:rule(r2_no_spill, defeasible, neg(no_spill)),
     explore_plt_theory:setting(oracle_version, "1").
 
+% the learning curiosity's layer ends with its explored antecedents: their
+% propositions and their pours per expectation, under a header saying what
+% they mean, read back by the theory reader
+test(explored_antecedents_written_and_read, [setup(tmp_file(theory, F)), cleanup(delete_file(F))]) :-
+    Reply = _{pours:8, own_pours:0, sup:[],
+              rules:[_{id:g0_no_spill, expectation:no_spill, holds:true, body:[], level:0,
+                       support:8, kept:7, confidence_permille:875, antecedent:a1}],
+              explored:[_{id:a1, body:[], held:[[no_spill, 7, 8]]},
+                        _{id:a2, body:[pour_low, light_liquid], held:[[no_spill, 1, 4]]}]},
+    once(curiosity_rules:layer_facts(Reply, General)),
+    write_theory(F, _{oracle:synthetic, seed:1}, _{header:[], layer_header:["% the layer"]},
+                 [], General),
+    read_file_to_string(F, Text, []),
+    once(sub_string(Text, _, _, _, "% explored(A, Prop): the antecedent A says Prop")),
+    read_theory_file(F, LineFacts),
+    findall(X, ( member(_-X, LineFacts), functor(X, N, _), memberchk(N, [explored, held]) ), Xs),
+    Xs == [held(a1, no_spill, 7, 8), explored(a2, pour_low), explored(a2, light_liquid),
+           held(a2, no_spill, 1, 4)],
+    % a reply without them (the other curiosities' general layer) writes none
+    once(curiosity_rules:layer_facts(Reply.put(explored, []), G0)),
+    \+ memberchk(held(_, _, _, _), G0).
+
 :- end_tests(curiosity_rules).
