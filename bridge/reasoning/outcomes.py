@@ -39,7 +39,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:go|goes|going|went|get|gets|got|land|lands|landed|landing) (?:on|onto|all over)",
      ("no_spill",), True),
     (r"(?:stay|stays|remain|remains|keep|keeps) (?:upright|standing)", ("destination_upright",), False),
-    (r"tip(?:s|ped|ping)?(?: over)?|topple\w*|(?:fall|falls|falling|fell) (?:over|down)|knock\w* over"
+    (r"tip(?:s|ped|ping)?(?: over)?|topple\w*|(?:fall|falls|falling|fell) (?:over|down)|knock\w*(?: it| the \w+)? over"
      r"|turn\w* over|flip\w*|capsiz\w*|overturn\w*|keel\w* over|tumbl\w*"
      r"|(?:fall|falls|fell)\b(?! (?:in|into|inside|out|off|on|onto)\b)", ("destination_upright",), True),
     (r"(?:stay|stays|remain|remains|keep|keeps|be|is) (?:still|put|in place|steady|stable|stationary"

@@ -210,7 +210,7 @@ def read_question(question: str) -> Reading:
                and t.word not in _SAME]
     heard = [t.raw for t in tokens if t.raw not in ignored or t.said_back]    # said back: heard
     notes = _notes(tokens)
-    noted = {n.split(":")[0] for n in notes}
+    noted = {t.raw for t in tokens if t.said_back}
     return Reading(tuple(sorted(set(out))), outcome.asked, outcome.goals, notes,
                    tuple(dict.fromkeys(w for w in ignored if w not in noted)),
                    tuple([*heard, *outcome.phrases]))
@@ -239,8 +239,7 @@ def _same_at_the_end(tokens: list[Token], scene: list[str], vocab) -> list[str]:
 
 def _notes(tokens: list[Token]) -> tuple[str, ...]:
     """The everyday words of the question said back: how each was read."""
-    return tuple(dict.fromkeys(f"{t.raw.removesuffix(' of')}: {t.said_back}" for t in tokens
-                               if t.said_back))
+    return tuple(dict.fromkeys(f"{t.raw}: {t.said_back}" for t in tokens if t.said_back))
 
 
 def _ordinary(tokens: list[Token], lex: _Lexicon, asks: bool) -> bool:
