@@ -106,13 +106,14 @@ def _spans(pattern: re.Pattern, joined: str, pairs) -> list[tuple[int, int]]:
     return out
 
 
-def _rewrite(pairs: list[tuple[str, str, str]], spans: list[tuple[int, int]],
+def _rewrite(pairs: list[tuple[str, str, str]], spans: list[tuple],
              words: tuple[str, ...], said: str):
     """(word, as written, said back) triples with the words of each span
-    read as `words`, said back as `said`."""
+    (first, end) read as `words`, said back as `said`; a span (first, end,
+    its own words) is read as its own words."""
     out, last = [], 0
-    for i, j in spans:
+    for i, j, *own in spans:
         raw = " ".join(r for _, r, _ in pairs[i:j])
-        out += pairs[last:i] + [(w, raw, said) for w in words]
+        out += pairs[last:i] + [(w, raw, said) for w in (own[0] if own else words)]
         last = j
     return out + pairs[last:]

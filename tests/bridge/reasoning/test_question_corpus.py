@@ -344,6 +344,16 @@ READ_TOO = {
     'what if the cup is tilted just a little': ['pour_slightly_tilted'],
     'okay so actually pour from high up': ['pour_high'],
     "I'm gonna pour from the side": ['pour_to_side'],
+    # a property by its parameter's name and a level: never a height
+    'friction of the destination is low': ['slippery_destination'],
+    'low friction destination': ['slippery_destination'],
+    'a high friction bowl': ['grippy_destination'],
+    'bounciness of the liquid is high': ['bouncy_liquid'],
+    'a high-restitution liquid': ['bouncy_liquid'],
+    'the cup has a low mass': ['light_destination'],
+    'the coefficient of friction of the bowl is very low': ['slippery_destination'],
+    'pour a low viscosity liquid from high up': ['pour_high', 'runny_liquid'],
+    'the weight of the liquid is high and pour low': ['heavy_liquid', 'pour_low'],
     # everyday verbs and phrasings of the scene
     'tilt it forward 30 degrees': ['pour_slightly_tilted'],
     'pour from directly above the bowl': ['pour_centred'],
