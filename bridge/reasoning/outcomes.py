@@ -35,7 +35,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|bounc\w* (?:over|out of)|flood\w*", ("liquid_remains_in_destination", "no_spill"), True),
     (r"spill\w*|splash\w*|splatter\w*|slosh\w*|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
      r"|makes? (?:a|any) (?:big |huge |bit of a |real |total )?mess|(?:go|goes|going|went|get|gets) everywhere"
-     r"|slop\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)"
+     r"|slop\w*|splat\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)"
      r"|(?:go|goes|going|went|get|gets|got|land|lands|landed|landing) (?:on|onto|all over)",
      ("no_spill",), True),
     (r"(?:stay|stays|remain|remains|keep|keeps) (?:upright|standing)", ("destination_upright",), False),
@@ -60,7 +60,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:stay|stays|remain|remains|stop|stops) in(?:side)?(?: the \w+)?",
      ("liquid_remains_in_destination",), False),
     (r"(?:go|goes|going|went|get|gets|land|lands|make it|makes it|fall|falls|"
-     r"arrive\w*) (?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)", _ALL_IN, False),
+     r"arrive\w*) (?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*",
+     _ALL_IN, False),
     (r"miss(?:es|ed|ing)?", _ALL_IN, True),
     (r"safe(?:ly)?|(?:be |is )?(?:fine|ok|okay|alright|all right)\b",
      ("no_spill", "destination_upright", "source_clear"), False),
@@ -72,16 +73,20 @@ _AUX = rf"{_MODALS}|is|are|was|were"
 #: Who acts: a clause with one of these in its subject says what is done, not what happens
 #: ("do I tip the cup"); the source moving is the scene's too ("does the source move slowly").
 _ACTORS = {"i", "we", "you", "robot", "arm", "gripper", "hand", "he", "she", "they"}
+#: What holds the source: it hitting the bowl is the source hitting it ("does the arm hit the bowl").
+_HOLDING = {"robot", "arm", "gripper", "hand"}
 #: The words that may follow an outcome's verb and are heard with it ("drip on the
 #: table", "spill out of the cup", "go into the bowl"): the scene's words stay the scene's.
 _REST = ("at all times|all the time|the whole time|at any point|at any time|throughout|on|onto|over|out|of|in|into|inside|outside|the|a|an|table|floor|counter|worktop|top|"
-         "ground|everywhere|anywhere|at|all|any|anything|it|its|liquid|water|bowl|cup|glass|"
+         "ground|place|everywhere|anywhere|at|all|any|anything|it|its|liquid|water|bowl|cup|glass|"
          "destination|source|target|container|rim|edge|sides?|much|too|even|ever|really|very|"
          "up|down|off|away|again|then")
-#: How much of the liquid an outcome is asked of ("does most of it spill"): the outcome's
-#: words, not the scene's ("some of it" is no some_liquid).
+#: How much of the liquid an outcome is asked of ("does most of it spill"), or its odds ("is
+#: the risk of spilling high"): the outcome's words, not the scene's ("some of it" is no
+#: some_liquid).
 _PART_OF = re.compile(r"\b(?:most|all|any|some|much|half|none|part|a lot|a bit|a little|little|"
-                      r"the rest|each) of\b")
+                      r"the rest|each) of\b|\b(?:the |a )?(?:chance|chances|probability|likelihood|"
+                      r"odds|risk)(?: of| that)?\b")
 #: How much of the liquid, asked: "what fraction of the liquid spills".
 _SHARE = r"(?:what|which) (?:fraction|proportion|share|percentage|part|amount)(?: of (?:it|the \w+))?"
 _END = rf"(?P<rest>(?: (?:{_REST})\b)*)"
@@ -100,14 +105,19 @@ def _patterns() -> tuple[re.Pattern, ...]:
     verbs = "|".join(f"(?P<v{k}>{v})" for k, (v, _, _) in enumerate(OUTCOMES))
     # (not holding another auxiliary: "do you think it will spill" asks "will it spill")
     subject = rf"(?P<subject>(?: (?!(?:if|when|while|not|{_MODALS})\b)[a-z]+){{0,5}}?)"
+    # the odds of an outcome: "what is the chance the bowl tips", "the risk of spilling"
+    chance = rf"(?P<chance>(?:chance|chances|probability|likelihood|odds|risk)(?: of| that)?)"
     asked = re.compile(
-        rf"(?<!that )(?<!which )\b(?:(?P<aux>{_AUX})(?P<neg> not)?{subject}|(?P<quant>how much(?: \w+)?|{_SHARE}|anything|"
-        rf"something|everything|nothing|any (?:liquid|water)|all of it|it all))"
-        rf" (?:all |any |ever |even |still |not )?(?:{verbs})\b{_END}")
+        rf"(?<!that )(?<!which )\b(?:(?P<aux>{_AUX})(?P<neg> not)?{subject}|(?P<quant>how much(?: \w+)?"
+        rf"|{_SHARE}|anything|something|everything|nothing|any (?:liquid|water)|all of it|it all)"
+        rf"|{chance}{subject.replace('<subject>', '<csubject>')})"
+        rf" (?:all |any |ever |even |still |not )?(?:{verbs})\b{_END}"
+        rf"(?P<odds> (?:very |really |quite |too )?(?:high|low|big|small|great|likely|unlikely)\b)?")
     nominal = re.compile(r"\b(?:(?:is|will) there (?:be )?)?(?:any|a|no|some) (?P<v1>spill(?:s|age)?"
                          r"|splash(?:es)?|mess|drips?)\b(?! of\b)")
     goal = re.compile(
         rf"\b(?:without (?P<gneg>any |a |making (?:a |any )?)?(?P<gwho>(?:it|them|the [a-z]+) )?"
+        rf"(?:getting |being )?"
         rf"|so(?: that| as)?(?P<gsub>(?: (?!not\b)"
         rf"[a-z]+){{0,4}}?)(?P<gnot> not| never)? (?:(?:to|will|does|do|would|can|could|all|"
         rf"any) )?)(?:{verbs})\b{_END}")
@@ -127,7 +137,8 @@ def _acts(subject: list[str], names: tuple[str, ...]) -> bool:
     """Whether a clause with `subject` says what is done rather than what
     happens, or what happens to something the scene does not hold ("is
     the table wobbly": everyday.txt's context nouns)."""
-    return (bool(_ACTORS.intersection(subject)) or (names == _STILL and "source" in subject)
+    actors = _ACTORS - _HOLDING if names == ("source_clear",) else _ACTORS
+    return (bool(actors.intersection(subject)) or (names == _STILL and "source" in subject)
             or bool(_around().spans(subject)))
 
 
@@ -164,15 +175,18 @@ def hear(text: str) -> Heard:
         return take(m, " ".join(subject))
 
     def as_asked(m: re.Match) -> str:
-        subject = (m.group("subject") or "").split()
+        subject = (m.group("subject") or m.group("csubject") or "").split()
         names, _ = _which(m)
         # "the table is wobbly": the subject before its verb, not the scene's
         before = m.string[:m.start()].split()[-3:] if not subject else []
         if _acts(subject, names) or _around().spans(before):
             return m.group(0)
         asked.extend(n for n in names if n not in asked)
-        kept = " ".join(subject) if m.group("aux") else ""
-        return take(m, _PART_OF.sub("", kept))
+        kept = " ".join(subject) if m.group("aux") or m.group("chance") else ""
+        # "is the chance of spilling high": the odds, heard; "does it splash high": the scene's
+        odds = m.group("odds") or ""
+        said_odds = bool(m.group("chance") or _PART_OF.search(kept))
+        return take(m, _PART_OF.sub("", kept)) + ("" if said_odds else odds)
 
     def as_nominal(m: re.Match) -> str:
         asked.extend(n for n in ("no_spill",) if n not in asked)

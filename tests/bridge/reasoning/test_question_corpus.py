@@ -288,6 +288,15 @@ HEARD = {
     'will it make a big mess?': ([], ['no_spill'], []),
     'do you think it will spill?': ([], ['no_spill'], []),
     'will some of the milk spill?': ([], ['no_spill'], []),
+    'is it going to splash all over the place?': ([], ['no_spill'], []),
+    'will the juice go splat?': ([], ['no_spill'], []),
+    'does the liquid enter the target?': ([], ['liquid_enters_destination'], []),
+    'does the robot arm hit the bowl when it moves in?': ([], ['source_clear'], []),
+    'can the robot pour without the cup getting knocked?': ([], [], ['source_clear']),
+    "what's the chance the bowl tips if the bowl weighs 30 grams?": (
+        ['light_destination'], ['destination_upright'], []),
+    'is the chance of spilling high if I pour from the side?': (['pour_to_side'], ['no_spill'], []),
+    'what is the probability of spilling at 90 degrees?': (['pour_steeply_tilted'], ['no_spill'], []),
     'can I pour cream without it dripping down the side?': ([], [], ['no_spill']),
     # a clause about what is done is no outcome
     'does the source move in fast?': (['fast_approach'], [], []),
@@ -360,6 +369,7 @@ READ_TOO = {
     'empty the jug into the bowl': [],
     'bring it over quickly and pour': ['fast_approach'],
     'a lateral offset of 5 cm': ['pour_offset_sideways'],
+    'approach duration 2.5 s, retreat duration 0.4 s': ['fast_retreat', 'slow_approach'],
     # negation, contrast, reference
     'not tilted at all': ['pour_upright'],
     "don't tilt the cup at all": ['pour_upright'],
