@@ -4,7 +4,12 @@ liquid", "the friction of the bowl is high", "the cup's weight is low".
 Each is read as the vocabulary's value word ("slippery", "bouncy",
 "grippy", "light"), so that "low" or "high" is never read as a height.
 
-A rewrite of words.py's kind (see wording.py): `spans(words)` gives the
+A value said by the parameter's name and a number ("a friction of 0.1",
+"restitution 0.9", "particle count 120") is the number with the
+parameter as its unit ("0.1 unit_friction"), for quantities.py to read
+as the proposition whose range holds it.
+
+Each is a rewrite of words.py's kind (see wording.py): `spans(words)` gives the
 words each such phrase covers and the words they are read as; a name
 apart from its level ("the friction of the bowl is high") is read as
 nothing and its level as the value word, the words between kept.
@@ -28,6 +33,11 @@ _BETWEEN = {"of", "for", "the", "a", "an", "its", "is", "are", "was", "be", "bei
             "liquid", "target", "bowl", "cup", "both", "fairly"}
 #: How many words may stand between a name and its level.
 _GAP = 5
+#: A parameter's name said with a number -> the unit word quantities.py reads it with.
+UNIT_OF = {"friction": "unit_friction", "restitution": "unit_restitution",
+           "bounciness": "unit_restitution", "elasticity": "unit_restitution"}
+#: Words that may stand between a name and its number: "a friction of 0.1", "friction = 0.1".
+_TO_NUMBER = {"of", "is", "at", "to", "equal", "equals", "about", "around", "roughly"}
 
 
 class Levels:
@@ -58,3 +68,31 @@ class Levels:
             if words[j] not in _BETWEEN:
                 return []
         return []
+
+
+class Values:
+    """The rewrite of a parameter's name with a number (see the module's docstring)."""
+
+    def spans(self, words: list[str]) -> list[tuple[int, int, tuple[str, ...]]]:
+        out: list[tuple[int, int, tuple[str, ...]]] = []
+        for i, w in enumerate(words):
+            if out and i < out[-1][1]:
+                continue            # (a name inside the last phrase)
+            unit = UNIT_OF.get(w) or ("unit_particles" if words[i:i + 2] in (["particle", "count"],
+                                                                              ["particles", "count"])
+                                      else None)
+            if unit is None:
+                continue
+            j = i + (2 if unit == "unit_particles" else 1)
+            while j < len(words) and words[j] in _TO_NUMBER:
+                j += 1
+            if j < len(words) and _number(words[j]):
+                # "coefficient of friction", and the body after: "0.9 for the liquid"
+                first = i - 2 if words[max(0, i - 2):i] == ["coefficient", "of"] else i
+                end = j + 2 if words[j + 1:j + 2] in (["for"], ["of"]) else j + 1
+                out.append((first, end, (words[j], unit)))
+        return out
+
+
+def _number(word: str) -> bool:
+    return bool(word) and word.lstrip("-").replace(".", "", 1).isdigit()

@@ -55,9 +55,13 @@ UNITS: dict[str, tuple[str, float]] = {
                                     "milliliters", "cl", "dl", "l", "litre", "litres", "liter",
                                     "liters", "oz", "ounce", "ounces")},
     "speed": ("speed", 1.0),
+    # a property's name said with a number (properties.py): "a friction of 0.1"
+    "unit_friction": ("friction", 1000.0), "unit_restitution": ("restitution", 1000.0),
+    "unit_particles": ("count", 1.0),
 }
 #: What cannot be negative, in words.
 _POSITIVE = {"mass": "a mass", "time": "a time", "count": "a number of particles",
+             "friction": "a friction", "restitution": "a bounciness",
              "volume": "an amount of liquid", "speed": "a speed"}
 
 #: The words beside a number that pick its parameter, by what they choose;
@@ -119,6 +123,12 @@ def parameter(q: Quantity, pose: str, move: str | None, cues: set[str],
                             "the source takes to move in (before pouring) or to move away "
                             "(after pouring)")
         return f"{move}_duration", ""
+    if q.measures in ("friction", "restitution"):
+        owner = {"source": "source", "destination": "destination", "liquid": "particle"}.get(body)
+        if owner is None:
+            raise UserError(f"\"{q.text}\": the {q.measures} of which? say \"a destination bowl "
+                            f"with a {q.measures} of ...\", \"a source bowl ...\" or \"a liquid ...\"")
+        return f"{owner}_{q.measures}", ""
     if q.measures == "mass":
         if body not in ("source", "destination"):
             raise UserError(f"\"{q.text}\": the mass of which bowl? say \"a source bowl of "
@@ -160,7 +170,7 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
     before the others of its clause ("from the side at 10 cm height" is
     a height, and the side is the pour's)."""
     numbers = [i for i, t in enumerate(tokens[:-1]) if re.fullmatch(NUMBER, t.word)
-               and tokens[i + 1].raw in UNITS and tokens[i + 1].clause == t.clause]
+               and _unit(tokens[i + 1]) and tokens[i + 1].clause == t.clause]
     if not numbers:
         return tokens
     stage = stages(tokens)
@@ -169,9 +179,9 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
     read: dict[int, Token] = {}
     dropped: set[int] = set()
     for i in numbers:
-        unit = tokens[i + 1].raw
-        q = Quantity(float(tokens[i].word) * UNITS[unit][1], UNITS[unit][0],
-                     f"{tokens[i].raw} {unit}")
+        unit = _unit(tokens[i + 1])
+        said = tokens[i].raw if tokens[i].raw == tokens[i + 1].raw else f"{tokens[i].raw} {unit}"
+        q = Quantity(float(tokens[i].word) * UNITS[unit][1], UNITS[unit][0], said)
         k = _past(tokens, i + 2, 1, _BESIDE)
         if UNITS[unit][0] == "mass" and i + 2 < len(tokens) and tokens[i + 2].word == "of" \
                 and k < len(tokens) and tokens[k].word == "liquid":
@@ -192,6 +202,11 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
         read[i] = Token(proposition(q, param, cues), raw, tokens[i].clause)
         dropped |= {i + 1} | used
     return [read.get(i, t) for i, t in enumerate(tokens) if i not in dropped]
+
+
+def _unit(t: Token) -> str | None:
+    """The key of UNITS that `t` says: as written ("cm"), or as properties.py writes it."""
+    return t.raw if t.raw in UNITS else (t.word if t.word in UNITS else None)
 
 
 def _past(tokens: list[Token], j: int, step: int, words: set[str]) -> int:

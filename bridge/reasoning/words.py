@@ -25,7 +25,7 @@ import re
 from functools import lru_cache
 
 from pantarhei.bridge.reasoning.everyday import Matcher, alternation, names, sections
-from pantarhei.bridge.reasoning.properties import Levels
+from pantarhei.bridge.reasoning.properties import Levels, Values
 
 _IT = "[the source|the bowl|it]"
 #: Words that begin a manner of pouring ("from the side", "with a light liquid").
@@ -225,16 +225,18 @@ def _everyday() -> list[tuple[Matcher, str, str]]:
 
 
 @lru_cache(maxsize=None)
-def rewrites() -> tuple[tuple[re.Pattern | Matcher | Levels, tuple[str, ...], str], ...]:
+def rewrites() -> tuple[tuple[re.Pattern | Matcher | Levels | Values, tuple[str, ...], str], ...]:
     """Each rewrite in the order applied, with the words it is read as and
-    what is said back: a property by its level ("low friction":
-    properties.py, which gives the words of each phrase itself), the
+    what is said back: a property by its level or its number ("low
+    friction", "a friction of 0.1": properties.py, which gives the words
+    of each phrase itself), the
     everyday word list, then PHRASES; an entry's phrases as one compiled
     pattern, a section of the list as a Matcher."""
     def compiled(words: str, phrases: tuple[str, ...]):
         return re.compile("|".join(f"(?:{_pattern(p)})" for p in phrases)), tuple(words.split()), ""
 
-    return ((Levels(), (), ""), *((m, tuple(w.split()), said) for m, w, said in _everyday()),
+    return ((Levels(), (), ""), (Values(), (), ""),
+            *((m, tuple(w.split()), said) for m, w, said in _everyday()),
             *(compiled(*entry) for entry in PHRASES))
 
 

@@ -363,6 +363,11 @@ READ_TOO = {
     'the coefficient of friction of the bowl is very low': ['slippery_destination'],
     'pour a low viscosity liquid from high up': ['pour_high', 'runny_liquid'],
     'the weight of the liquid is high and pour low': ['heavy_liquid', 'pour_low'],
+    # ... or by its name and a number, read as the proposition whose range holds it
+    'a destination with a friction of 0.1': ['slippery_destination'],
+    'restitution 0.9 for the liquid': ['bouncy_liquid'],
+    "the source's coefficient of friction is 1.0": ['grippy_source'],
+    'particle count 120': ['much_liquid'],
     # everyday verbs and phrasings of the scene
     'tilt it forward 30 degrees': ['pour_slightly_tilted'],
     'pour from directly above the bowl': ['pour_centred'],
@@ -426,6 +431,9 @@ REFUSED_SAYING = {
     'what if the jug bonks the bowl?': 'could not place "bonks"',
     'what if the milk ends up on the floor?': 'could not place "ends up"',
     'will the beer foam?': 'could not place "foam"',
+    'a bowl with a friction of 0.5': 'which no proposition holds',
+    'friction of 0.1': 'the friction of which?',
+    'a destination with a restitution of -0.2': 'cannot be negative',
     'pour syrup onto a plate': 'could not place "plate"',       # a plate holds no pour
 }
 
