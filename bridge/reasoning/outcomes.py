@@ -92,6 +92,16 @@ _SHARE = r"(?:what|which) (?:fraction|proportion|share|percentage|part|amount)(?
 _END = rf"(?P<rest>(?: (?:{_REST})\b)*)"
 
 
+#: Other ways of saying a goal, said as "so that ...": "keep the cup still" (not "keep the
+#: source upright": how it is held), "don't let it overflow", "make sure it does not spill"
+#: (the words they drop are fillers).
+_WANTING = tuple((re.compile(p), r) for p, r in (
+    (r"\bkeep(?:s|ing)? (the (?!source\b)[a-z]+) (still|steady|in place|put)\b", r"so that \1 stays \2"),
+    (r"\b(?:do not|never) let (it|them|the [a-z]+|any(?: of it)?) ", r"so that \1 does not "),
+    (r"\bmake sure(?: that)? ", "make sure so that "),
+))
+
+
 @dataclass(frozen=True)
 class Heard:
     asked: tuple[str, ...]      # the expectations asked about, in the order said
@@ -202,6 +212,8 @@ def hear(text: str) -> Heard:
         return take(m)
 
     was_goal = True
+    for said, wanted in _WANTING:
+        text = said.sub(wanted, text)
     text = _spaced(goal.sub(as_goal, text))
     if goals:
         text = _repeat(more, as_more, text)

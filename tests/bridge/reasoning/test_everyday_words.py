@@ -13,7 +13,7 @@ from pantarhei.bridge.reasoning.reading import read_question
 
 #: The kinds of section the reader knows what to do with.
 KINDS = {"hedge", "material", "bowl", "sticky liquid", "heavy liquid", "liquid", "context", "part",
-         "unclear", "a bit", "little", "much", "full"}
+         "unclear", "a bit", "little", "much", "full", "slightly tilted"}
 
 
 def _phrases(*kinds: str) -> list[tuple[str, str]]:
@@ -84,6 +84,8 @@ def test_a_word_the_vocabulary_cannot_say_is_refused_naming_why(phrase, said):
 
 @pytest.mark.parametrize("phrase,template,props", [
     *((p, "tilt the jug {}", ["pour_slightly_tilted"]) for p, _ in _phrases("a bit")),
+    *((p, "pour with the source held {}", ["pour_slightly_tilted"])
+      for p, _ in _phrases("slightly tilted")),
     *((p, "pour {} milk" if p.endswith(" of") else "pour from a {} jug", ["little_liquid"])
       for p, _ in _phrases("little")),
     *((p, "pour {} milk", ["much_liquid"]) for p, _ in _phrases("much")),

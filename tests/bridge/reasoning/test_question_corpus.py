@@ -298,6 +298,12 @@ HEARD = {
     'is the chance of spilling high if I pour from the side?': (['pour_to_side'], ['no_spill'], []),
     'what is the probability of spilling at 90 degrees?': (['pour_steeply_tilted'], ['no_spill'], []),
     'can I pour cream without it dripping down the side?': ([], [], ['no_spill']),
+    "pour milk into the cup but don't let it overflow": (
+        [], [], ['liquid_remains_in_destination', 'no_spill']),
+    'keep the mug still while pouring': ([], [], ['destination_still_approach',
+                                                  'destination_still_retreat',
+                                                  'destination_still_settle']),
+    "make sure it doesn't spill when I pour from high up": (['pour_high'], [], ['no_spill']),
     # a clause about what is done is no outcome
     'does the source move in fast?': (['fast_approach'], [], []),
     'pour so the cup is upright at the end': (['end_upright'], [], []),
@@ -349,6 +355,7 @@ READ_TOO = {
     'pour loads of milk': ['much_liquid'],
     'pour from a jug filled to the brim': ['very_much_liquid'],
     'tip it a bit': ['pour_slightly_tilted'],
+    'hold the jug at a slight angle': ['pour_slightly_tilted'],
     'pour the olive oil from the bottle, just a tiny bit tilted': ['pour_slightly_tilted'],
     'what if the cup is tilted just a little': ['pour_slightly_tilted'],
     'okay so actually pour from high up': ['pour_high'],
