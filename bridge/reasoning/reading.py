@@ -7,9 +7,12 @@ question in five steps:
    ("without spilling") is heard apart (outcomes.py): the expectations it
    asks about, or wants, and the rest is the scene.
 2. Everyday phrases become the vocabulary's words (words.py: "a full cup",
-   "move in fast", "right it up", "over the rim", milk an ordinary liquid),
-   and a number with its unit, its sign kept, the proposition whose range
-   holds it (quantities.py: "tilted at 45 degrees", "-3 cm above the rim").
+   "move in fast", "right it up", "over the rim"; the everyday word list,
+   everyday.txt: milk an ordinary liquid, a saucepan a bowl, plastic and
+   the table ignored and said back, "hot" refused; properties.py: "low
+   friction" slippery), and a number with its unit, its sign kept, the
+   proposition whose range holds it (quantities.py: "tilted at 45
+   degrees", "-3 cm above the rim").
 3. Each word gets the stage it speaks of (stages.py).
 4. Each proposition is said by its value words: the words of its gloss
    or of its name, without its stage or body ("far" for `pour_far_away`,
@@ -33,9 +36,11 @@ question in five steps:
    "does it splash?") reads as no propositions: the ordinary pour; a
    question that says nothing of a pour is refused.
 
-Nothing is dropped silently: a word known to the vocabulary that is read
-as nothing (a material: "a plastic cup") is in `Reading.ignored`, for
-`ask` to show on its `understood:` line.
+Nothing is dropped silently: an everyday word is said back with how it
+was read (`Reading.notes`: "plastic: ignored: what a bowl is made of is
+not in the vocabulary ..."), and any other word known to the vocabulary
+that is read as nothing is in `Reading.ignored`, for `ask` to show on its
+`understood:` line.
 """
 from __future__ import annotations
 
