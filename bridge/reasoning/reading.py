@@ -6,13 +6,10 @@ question in five steps:
 1. A clause that asks about the outcome ("will it spill?") or says a goal
    ("without spilling") is heard apart (outcomes.py): the expectations it
    asks about, or wants, and the rest is the scene.
-2. Everyday phrases become the vocabulary's words (words.py: "a full cup",
-   "move in fast", "right it up", "over the rim"; the everyday word list,
-   everyday.txt: milk an ordinary liquid, a saucepan a bowl, plastic and
-   the table ignored and said back, "hot" refused; properties.py: "low
-   friction" slippery), and a number with its unit, its sign kept, the
-   proposition whose range holds it (quantities.py: "tilted at 45
-   degrees", "-3 cm above the rim").
+2. Everyday phrases become the vocabulary's words (words.py, everyday.txt,
+   properties.py: "a full cup", milk an ordinary liquid, plastic ignored,
+   "low friction" slippery), and a number with its unit, its sign kept,
+   the proposition whose range holds it (quantities.py: "-3 cm above").
 3. Each word gets the stage it speaks of (stages.py).
 4. Each proposition is said by its value words: the words of its gloss
    or of its name, without its stage or body ("far" for `pour_far_away`,
@@ -37,10 +34,8 @@ question in five steps:
    question that says nothing of a pour is refused.
 
 Nothing is dropped silently: an everyday word is said back with how it
-was read (`Reading.notes`: "plastic: ignored: what a bowl is made of is
-not in the vocabulary ..."), and any other word known to the vocabulary
-that is read as nothing is in `Reading.ignored`, for `ask` to show on its
-`understood:` line.
+was read (`Reading.notes`), any other word read as nothing is in
+`Reading.ignored`, for `ask` to show on its `understood:` line.
 """
 from __future__ import annotations
 
