@@ -69,9 +69,10 @@ _POSITIVE = {"mass": "a mass", "time": "a time", "count": "a number of particles
 CUES = {
     "roll": ("roll", "sideways"),
     "pitch": ("tilt", "pitch", "angle"),
-    "side": ("side", "away", "far", "off", "distance", "axis"),
-    "offset": ("sideways", "offset", "axis"),
-    "height": ("high", "above", "below", "height", "up", "rim"),
+    "yaw": ("yaw", "turn", "rotate", "spin", "twist"),
+    "side": ("side", "away", "far", "off", "distance", "axis", "x"),
+    "offset": ("sideways", "offset", "axis", "y"),
+    "height": ("high", "above", "below", "height", "up", "rim", "z"),
 }
 #: The words read with a number besides its cues: a roll is "tilted sideways".
 ALSO_READ = {"roll": ("tilt",)}
@@ -106,9 +107,13 @@ def parameter(q: Quantity, pose: str, move: str | None, cues: set[str],
     if q.measures == "volume":
         raise UserError(_AMOUNT.format(q.text))
     if q.measures == "angle":
-        return (f"{pose}_roll", "roll") if cues & set(CUES["roll"]) else (f"{pose}_pitch", "pitch")
+        if cues & set(CUES["roll"]):
+            return f"{pose}_roll", "roll"
+        if cues & set(CUES["yaw"]) and not cues & set(CUES["pitch"]):    # no proposition holds it
+            return f"{pose}_yaw", "yaw"
+        return f"{pose}_pitch", "pitch"
     if q.measures == "length":
-        if cues & {"offset"} or (cues & {"sideways"} and not cues & set(CUES["height"])
+        if cues & {"offset", "y"} or (cues & {"sideways"} and not cues & set(CUES["height"])
                                  and not cues & set(CUES["side"])):
             return f"{pose}_y", "offset"
         if cues & set(CUES["side"]):
@@ -130,6 +135,8 @@ def parameter(q: Quantity, pose: str, move: str | None, cues: set[str],
                             f"with a {q.measures} of ...\", \"a source bowl ...\" or \"a liquid ...\"")
         return f"{owner}_{q.measures}", ""
     if q.measures == "mass":
+        if body == "particle":          # "the particles weigh 0.5 g each"
+            return "particle_mass", ""
         if body not in ("source", "destination"):
             raise UserError(f"\"{q.text}\": the mass of which bowl? say \"a source bowl of "
                             f"{q.text}\" or \"a destination bowl of {q.text}\"")
@@ -195,7 +202,13 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
         beside = [k for k in sides if k in near]
         cues = {cue_of[tokens[k].word] for k in near}        # "tilt" picks a pitch, as a cue
         choosing = {cue_of[tokens[beside[0]].word]} | (cues & {"below", "offset"}) if beside else cues
-        param, by = parameter(q, POSE[stage[i]], MOVE[stage[i]], choosing, noun(i, i + 1))
+        at = noun.at(i, i + 1)
+        body = None if at is None else noun.roles[at]
+        if body == "liquid" and "particle" in tokens[at].raw:
+            body = "particle"                  # the mass of a particle of liquid
+        param, by = parameter(q, POSE[stage[i]], MOVE[stage[i]], choosing, body)
+        if param == "particle_mass":
+            q = Quantity(q.value * 1000, q.measures, q.text)     # g to the parameter's mg
         read_too = (*CUES.get(by, ()), *ALSO_READ.get(by, ()))
         used = {k for k in near if cue_of[tokens[k].word] in read_too}
         raw = " ".join(tokens[k].raw for k in sorted({i, i + 1} | used))

@@ -375,6 +375,10 @@ READ_TOO = {
     'restitution 0.9 for the liquid': ['bouncy_liquid'],
     "the source's coefficient of friction is 1.0": ['grippy_source'],
     'particle count 120': ['much_liquid'],
+    'particle mass 2 g': ['medium_liquid'],
+    'the particles weigh 0.5 g each': ['light_liquid'],
+    'pour from x = 120 mm, z = 100 mm': ['pour_mid_height', 'pour_to_side'],
+    'the end effector tilts 45 degrees': ['pour_half_tilted'],
     # everyday verbs and phrasings of the scene
     'tilt it forward 30 degrees': ['pour_slightly_tilted'],
     'pour from directly above the bowl': ['pour_centred'],
@@ -440,6 +444,8 @@ REFUSED_SAYING = {
     'will the beer foam?': 'could not place "foam"',
     'a bowl with a friction of 0.5': 'which no proposition holds',
     'friction of 0.1': 'the friction of which?',
+    'pour with a yaw of 30 degrees': 'no proposition of it',
+    'turn the cup 30 degrees': 'no proposition of it',
     'a destination with a restitution of -0.2': 'cannot be negative',
     'pour syrup onto a plate': 'could not place "plate"',       # a plate holds no pour
 }
