@@ -115,6 +115,14 @@ class Nouns:
                     out.add(self.roles[j])
         return out
 
+    def poured_into(self, i: int) -> bool:
+        """Whether the bowl at `i` is said as what is poured into ("into a
+        full cup"), past the words that may stand before it."""
+        j = i - 1
+        while j >= 0 and self.stop[j] != j:     # value words and articles
+            j -= 1
+        return j >= 0 and self.tokens[j].word in ("into", "onto")
+
     def names_destination(self, i: int) -> bool:
         """Whether the noun at `i` says the destination in so many words
         ("the destination", "a destination bowl"), not a bowl by default."""

@@ -343,7 +343,7 @@ def _agrees(name: str, first: int, last: int, noun: Nouns, lex: _Lexicon) -> boo
     """Whether the proposition `name`, said by the words from `first` to
     `last`, fits the noun they qualify: a property of the liquid said of a
     bowl ("a sticky bowl"), how full the source is said of the destination
-    ("the destination is full"), or a pose of the source said of the
+    ("the destination is full", "into a full cup"), or a pose of the source said of the
     destination ("with the cup upside down": a bowl is the destination) is
     no reading, and the words are refused as not placed."""
     kind, which = lex.slots[name]
@@ -362,7 +362,8 @@ def _agrees(name: str, first: int, last: int, noun: Nouns, lex: _Lexicon) -> boo
     if body == which:
         return True
     # how much liquid there is, said of the source: "a full cup", "a source full of liquid"
-    return which == "liquid" and name in lex.amounts and not noun.names_destination(at)
+    return (which == "liquid" and name in lex.amounts and not noun.names_destination(at)
+            and not noun.poured_into(at))
 
 
 def _refuse_unplaced(question: str, tokens: list[Token], accepted, lex: _Lexicon) -> None:

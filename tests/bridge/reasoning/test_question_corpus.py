@@ -348,6 +348,7 @@ READ_TOO = {
     'pour milk into a bowl full of cereal': [],
     'pour into a bowl on the counter from a light jug': ['light_source'],
     'pour into a greasy bowl': ['slippery_destination'],
+    'pour into a light bowl from a full jug': ['light_destination', 'very_much_liquid'],
     # degree phrases and hedges
     'pour a tiny bit of water': ['little_liquid'],
     'pour a splash of milk': ['little_liquid'],
@@ -447,7 +448,9 @@ REFUSED_SAYING = {
     'pour with a yaw of 30 degrees': 'no proposition of it',
     'turn the cup 30 degrees': 'no proposition of it',
     'a destination with a restitution of -0.2': 'cannot be negative',
-    'pour syrup onto a plate': 'could not place "plate"',       # a plate holds no pour
+    'pour syrup onto a plate': 'could not place "plate"',
+    'pour into a full cup': 'could not place "full"',           # the destination is empty
+    'pour milk into a cup full of milk': 'could not place "full"',       # a plate holds no pour
 }
 
 
