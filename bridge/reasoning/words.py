@@ -40,6 +40,9 @@ UNCLEAR = "unclear"
 PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("hedge", ("how much", "how many",    # asks, does not say: "how much liquid spills"
                "nearly")),                 # a hedge (its stem would be "near")
+    # asks for a value, which is a plan's to find, not a scene's to say: "how high should I pour?"
+    (UNCLEAR, (r"re:\bhow (?:very |really )?(?:high|low|far|fast|quick|quickly|slow|slowly|steep|"
+               r"steeply|heavy|light|long|close|near|tilted|full|sticky|slippery|grippy|bouncy)\b",)),
     # (the everyday word list, everyday.txt, is read here: see rewrites())
     # a bowl full of what is around the pour ("a bowl full of cereal") is not a full bowl
     ("hedge", (r"re:\b(?:full|filled) (?:up )?(?:with|of)(?= (?:the )?context\b)",)),
@@ -174,6 +177,8 @@ HINTS: tuple[tuple[str, str], ...] = (
      'slowly", "move away fast")'),
     (r"\b(?:not|without)\b.*\b(?:tilt|tip|lean)",
      'not tilted much: say "slightly tilted" or "upright"'),
+    (r"^how ", 'asks for a value: say one ("pour high", "tilted halfway") and `ask` answers '
+               'what happens, or give `pantarhei plan` the outcome wanted and it finds a pour'),
     (r"^from above$|^overhead$|^from the top$",
      'above: how high, or where? say "high above the bowl" or "centred over the bowl"'),
     (r"^(?:tilt|tilted|tip|tipped|tipping)$", 'tilted how far? say "slightly tilted", "tilted halfway", '

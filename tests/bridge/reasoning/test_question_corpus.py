@@ -450,6 +450,10 @@ REFUSED_SAYING = {
     'a destination with a restitution of -0.2': 'cannot be negative',
     'pour syrup onto a plate': 'could not place "plate"',
     'pour into a full cup': 'could not place "full"',           # the destination is empty
+    # asks for a value: a plan's to find, not a scene
+    'how high should I hold the jug?': 'asks for a value',
+    'how fast can I move in?': 'asks for a value',
+    'how far away can I pour from?': 'asks for a value',
     'pour milk into a cup full of milk': 'could not place "full"',       # a plate holds no pour
 }
 
