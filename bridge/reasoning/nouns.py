@@ -31,9 +31,11 @@ _POURED_FROM = {(stem(a), stem(b))
 
 def roles(tokens: list[Token], placeable: frozenset[str]) -> dict[int, str]:
     """The body each noun names: a bowl is the destination, unless it is a
-    source bowl or what is poured from ("pour from a cup", "out of a cup");
-    a context noun ("the table") names CONTEXT, no body of the scene."""
+    source bowl or what is poured from ("pour from a cup", "out of a cup"),
+    or named again ("pour from a carton ... the carton is light"); a
+    context noun ("the table") names CONTEXT, no body of the scene."""
     roles: dict[int, str] = {}
+    sources: dict[str, bool] = {}       # a bowl's name -> whether it names the source alone
     for i, t in enumerate(tokens):
         if t.word in OBJECT_STEMS:
             roles[i] = OBJECT_STEMS[t.word]
@@ -50,7 +52,11 @@ def roles(tokens: list[Token], placeable: frozenset[str]) -> dict[int, str]:
             k = past_articles(tokens, i + 2, 1)              # "a glass as the source"
             as_source = (i + 1 < len(tokens) and tokens[i + 1].word == "as" and k < len(tokens)
                          and OBJECT_STEMS.get(tokens[k].word) == "source")
-            roles[i] = "source" if before in _POURED_FROM or as_source else "destination"
+            name = t.raw.split()[-1]
+            again = tokens[i - 1].word == "the" and sources.get(name)   # "the carton" again
+            roles[i] = "source" if before in _POURED_FROM or as_source or again else "destination"
+            # (a name said of both bowls, "from a cup into a cup", refers to neither again)
+            sources[name] = roles[i] == "source" and sources.get(name, True)
     return roles
 
 

@@ -349,6 +349,8 @@ READ_TOO = {
     'pour into a bowl on the counter from a light jug': ['light_source'],
     'pour into a greasy bowl': ['slippery_destination'],
     'pour into a light bowl from a full jug': ['light_destination', 'very_much_liquid'],
+    'pour milk from the carton into a glass; the carton is light': ['light_source'],
+    'pour into a cup from a jug; the jug is light': ['light_source'],
     # degree phrases and hedges
     'pour a tiny bit of water': ['little_liquid'],
     'pour a splash of milk': ['little_liquid'],
