@@ -9,7 +9,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from pantarhei.bridge.reasoning.everyday import names
+from pantarhei.bridge.reasoning.everyday import forms, names, sections
 from pantarhei.bridge.reasoning.wording import Token, stem
 
 OBJECTS = ("source", "destination", "liquid")
@@ -24,6 +24,8 @@ ARTICLES = {"a", "an", "the"}
 CONTEXT = "context"
 #: (word, next word) before a bowl that the liquid is poured out of: "pour from a cup",
 #: "into a bowl from a cup" (not "far from the cup": the destination)
+#: Words before a bowl poured into: "into a jug", "in the kettle".
+_INTO = {"into", "onto", "in", "to"}
 _POURED_FROM = {(stem(a), stem(b))
                 for a, b in (("out", "of"), ("pour", "from"), ("liquid", "from"),
                              ("bowl", "from"), ("destination", "from"), (CONTEXT, "from"))}
@@ -32,7 +34,8 @@ _POURED_FROM = {(stem(a), stem(b))
 def roles(tokens: list[Token], placeable: frozenset[str]) -> dict[int, str]:
     """The body each noun names: a bowl is the destination, unless it is a
     source bowl or what is poured from ("pour from a cup", "out of a cup"),
-    or named again ("pour from a carton ... the carton is light"); a
+    or named again ("pour from a carton ... the carton is light"), or one
+    people pour from ("a heavy jug", everyday.txt) and not poured into; a
     context noun ("the table") names CONTEXT, no body of the scene."""
     roles: dict[int, str] = {}
     sources: dict[str, bool] = {}       # a bowl's name -> whether it names the source alone
@@ -54,7 +57,11 @@ def roles(tokens: list[Token], placeable: frozenset[str]) -> dict[int, str]:
                          and OBJECT_STEMS.get(tokens[k].word) == "source")
             name = t.raw.split()[-1]
             again = tokens[i - 1].word == "the" and sources.get(name)   # "the carton" again
-            roles[i] = "source" if before in _POURED_FROM or as_source or again else "destination"
+            # a jug, a bottle is poured from, unless poured into ("into a jug")
+            usual = ((t.raw in _poured_from() or name in _poured_from())
+                     and not (j >= 0 and tokens[j].word in _INTO))
+            roles[i] = ("source" if before in _POURED_FROM or as_source or again or usual
+                        else "destination")
             # (a name said of both bowls, "from a cup into a cup", refers to neither again)
             sources[name] = roles[i] == "source" and sources.get(name, True)
     return roles
@@ -134,6 +141,15 @@ class Nouns:
         ("the destination", "a destination bowl"), not a bowl by default."""
         return self.roles.get(i) == "destination" and (
             self.tokens[i].word == "destination" or (i > 0 and self.tokens[i - 1].word == "destination"))
+
+
+@lru_cache(maxsize=None)
+def _poured_from() -> frozenset[str]:
+    """The names of the containers people pour from (everyday.txt), singular
+    and plural: whole ("measuring cup") or, for a one-word name, as the last
+    word of the bowl's ("milk carton")."""
+    return frozenset(" ".join(f) for s in sections() if s.words == "bowl poured from"
+                     for p in s.phrases for f in forms(p))
 
 
 @lru_cache(maxsize=None)

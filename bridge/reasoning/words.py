@@ -220,12 +220,12 @@ def _everyday() -> list[tuple[Matcher, str, str]]:
     for s in sections():
         if s.words == "material":
             matcher = Matcher(s.phrases, glass_before=names("bowl"))
-        elif s.words == "bowl":
+        elif s.words.startswith("bowl"):        # a bowl, or one poured from (nouns.py)
             matcher = Matcher(s.phrases, before=names("liquid", "context"))
         else:
             matcher = Matcher(s.phrases)
-        out.append((matcher, UNCLEAR if s.words == "unclear" else s.words,
-                    "" if s.words == "unclear" else s.said_back))
+        words = {"unclear": UNCLEAR, "bowl poured from": "bowl"}.get(s.words, s.words)
+        out.append((matcher, words, "" if s.words == "unclear" else s.said_back))
     return out
 
 

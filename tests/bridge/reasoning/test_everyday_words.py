@@ -12,7 +12,7 @@ from pantarhei.bridge.reasoning.everyday import Matcher, forms, sections
 from pantarhei.bridge.reasoning.reading import read_question
 
 #: The kinds of section the reader knows what to do with.
-KINDS = {"hedge", "material", "bowl", "sticky liquid", "heavy liquid", "liquid", "context", "part",
+KINDS = {"hedge", "material", "bowl", "bowl poured from", "sticky liquid", "heavy liquid", "liquid", "context", "part",
          "unclear", "a bit", "little", "much", "full", "slightly tilted"}
 
 
@@ -41,10 +41,18 @@ def test_a_liquid_by_its_name_is_read_as_the_liquid_it_is(phrase, said):
     assert not said or _noted(question, phrase, said)
 
 
-@pytest.mark.parametrize("phrase,said", _phrases("bowl"))
+@pytest.mark.parametrize("phrase,said", _phrases("bowl", "bowl poured from"))
 def test_a_container_is_a_bowl_the_source_when_poured_from(phrase, said):
     assert list(read_question(f"pour from a heavy {phrase}").scene) == ["heavy_source"]
     assert list(read_question(f"pour into a light {phrase}").scene) == ["light_destination"]
+
+
+@pytest.mark.parametrize("phrase,said", _phrases("bowl", "bowl poured from"))
+def test_a_container_said_alone_is_the_bowl_people_use_it_as(phrase, said):
+    """A jug, a bottle, a kettle is poured from; a cup, a glass, a pot poured into."""
+    kind = next(s.words for s in sections() if phrase in s.phrases)
+    body = "source" if kind == "bowl poured from" else "destination"
+    assert list(read_question(f"what if the {phrase} is heavy?").scene) == [f"heavy_{body}"]
 
 
 @pytest.mark.parametrize("phrase,said", _phrases("material"))

@@ -202,7 +202,6 @@ REFUSED = [
     'pour slowly',
     'pour up side down',
     'pour with the cup upside down',
-    'pour with the jug tilted only a little',
     'the destination is full',
     'the destination is not light, not heavy',
     'the source bumps into the destination',
@@ -359,6 +358,10 @@ READ_TOO = {
     'pour from a jug filled to the brim': ['very_much_liquid'],
     'tip it a bit': ['pour_slightly_tilted'],
     'hold the jug at a slight angle': ['pour_slightly_tilted'],
+    'pour with the jug tilted only a little': ['pour_slightly_tilted'],     # a jug is poured from
+    'what if the jug is really heavy?': ['heavy_source'],
+    'will the bowl tip if the pitcher is heavy?': ['heavy_source'],
+    'pour water into a heavy jug': ['heavy_destination'],
     'pour the olive oil from the bottle, just a tiny bit tilted': ['pour_slightly_tilted'],
     'what if the cup is tilted just a little': ['pour_slightly_tilted'],
     'okay so actually pour from high up': ['pour_high'],
