@@ -63,7 +63,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"arrive\w*) (?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*",
      _ALL_IN, False),
     (r"miss(?:es|ed|ing)?", _ALL_IN, True),
-    (r"safe(?:ly)?|(?:be |is )?(?:fine|ok|okay|alright|all right)\b",
+    (r"safe(?:ly)?|(?:be |is )?(?:fine|ok|okay|alright|all right)\b|(?:a )?(?:good|bad) idea|risky"
+     r"|dangerous|(?:a )?problem",
      ("no_spill", "destination_upright", "source_clear"), False),
 )
 #: Words that ask: an auxiliary before its subject ("will it spill"), or a
