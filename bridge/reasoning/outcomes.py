@@ -139,6 +139,18 @@ def _patterns() -> tuple[re.Pattern, ...]:
     return asked, nominal, goal, more
 
 
+#: Why a question of what follows an outcome is refused, and what would be read.
+FOLLOWS = ("asks what follows an outcome, which the vocabulary cannot say; it answers whether it "
+           "happens: \"will it spill?\", \"does the bowl move?\"")
+
+
+def follows(text: str) -> bool:
+    """Whether normalised `text` asks what follows an outcome ("what if the
+    milk spills?"), which the vocabulary cannot say."""
+    verbs = "|".join(f"(?:{v})" for v, _, _ in OUTCOMES)
+    return bool(re.search(rf"\b(?:what if|suppose|imagine)(?: [a-z]+){{0,4}}? (?:{verbs})\b", text))
+
+
 def _which(m: re.Match) -> tuple[tuple[str, ...], bool]:
     k = next(k for k in range(len(OUTCOMES)) if m.groupdict().get(f"v{k}"))
     return OUTCOMES[k][1], OUTCOMES[k][2]

@@ -47,7 +47,7 @@ from functools import lru_cache
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.negation import NEGATION_STEMS, covered, scope, scope_ends
 from pantarhei.bridge.reasoning.nouns import ARTICLES, BOWL, CONTEXT, OBJECT_STEMS, Nouns, roles
-from pantarhei.bridge.reasoning.outcomes import hear
+from pantarhei.bridge.reasoning.outcomes import FOLLOWS, follows, hear
 from pantarhei.bridge.reasoning.quantities import read_numbers
 from pantarhei.bridge.reasoning.stages import MARKER_STEMS, MOVE, POSE, stages
 from pantarhei.bridge.reasoning.wording import Token, normalised, stem, tokens as words_of
@@ -200,7 +200,7 @@ def read_question(question: str) -> Reading:
     out += _same_at_the_end(tokens, out, vocab)
     if not accepted and not _ordinary(tokens, lex, bool(outcome.asked or outcome.goals)):
         unknown = list(dict.fromkeys(t.raw for t in tokens if t.word not in lex.known))
-        hint = misspelt(unknown)
+        hint = ([FOLLOWS] if follows(text) else []) + misspelt(unknown)
         said = ("could not place " + ", ".join(f'"{w}"' for w in unknown) + ": ") if unknown else ""
         raise UserError(f"understood none of \"{question}\": {said}" + (hint[0] if hint else (
             "describe the scene with the words of `pantarhei vocab`, or give --props P1,P2")))

@@ -450,6 +450,7 @@ REFUSED_SAYING = {
     'if I tip the cup, will it spill?': 'tilted how far?',
     'pour batter slowly into a pan': '"move to the pouring pose slowly"',
     'what if the jug bonks the bowl?': 'could not place "bonks"',
+    'what if the milk spills?': 'asks what follows an outcome',
     'what if the milk ends up on the floor?': 'could not place "ends up"',
     'will the beer foam?': 'could not place "foam"',
     'a bowl with a friction of 0.5': 'which no proposition holds',
