@@ -117,7 +117,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
     # (not holding another auxiliary: "do you think it will spill" asks "will it spill")
     subject = rf"(?P<subject>(?: (?!(?:if|when|while|not|{_MODALS})\b)[a-z]+){{0,5}}?)"
     # the odds of an outcome: "what is the chance the bowl tips", "the risk of spilling"
-    chance = rf"(?P<chance>(?:chance|chances|probability|likelihood|odds|risk)(?: of| that)?)"
+    chance = r"(?P<chance>(?:chance|chances|probability|likelihood|odds|risk)(?: of| that)?)"
     asked = re.compile(
         rf"(?<!that )(?<!which )\b(?:(?P<aux>{_AUX})(?P<neg> not)?{subject}|(?P<quant>how much(?: \w+)?"
         rf"|{_SHARE}|anything|something|everything|nothing|any (?:liquid|water)|all of it|it all)"
