@@ -122,7 +122,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
         rf"(?<!that )(?<!which )\b(?:(?P<aux>{_AUX})(?P<neg> not)?{subject}|(?P<quant>how much(?: \w+)?"
         rf"|{_SHARE}|anything|something|everything|nothing|any (?:liquid|water)|all of it|it all)"
         rf"|{chance}{subject.replace('<subject>', '<csubject>')})"
-        rf" (?:all |any |ever |even |still |not )?(?:{verbs})\b{_END}"
+        rf" (?:all |any |ever |even |still |not )?(?:(?:end|ends|ended) up )?(?:{verbs})\b{_END}"
         rf"(?P<odds> (?:very |really |quite |too )?(?:high|low|big|small|great|likely|unlikely)\b)?")
     nominal = re.compile(r"\b(?:(?:is|will) there (?:be )?)?(?:any|a|no|some) (?P<v1>spill(?:s|age)?"
                          r"|splash(?:es)?|mess|drips?)\b(?! of\b)")

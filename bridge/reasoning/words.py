@@ -60,7 +60,8 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     # a contrast: "near the rim instead of the middle" excludes the middle
     ("rather not", ("instead of", "rather than", "as opposed to")),
     # where the liquid ends up is an outcome (outcomes.py), never the end pose raised
-    (UNCLEAR, (r"re:\bend(?:s|ed|ing)? up\b(?= (?:on|onto|in|into|inside|all|everywhere|outside)\b)",)),
+    (UNCLEAR, (r"re:\bend(?:s|ed|ing)? up\b(?= (?:on|onto|in|into|inside|all|everywhere|outside|over"
+               r"|above|below|under|underneath|beside|near|next|against|touching|\w+ing|outcome)\b)",)),
     # "not tilted at all" is upright; "not tilted much" is slightly tilted or upright
     ("upright", (r"re:\b(?:not|without) (?:be |being |any )?(?:tilt|tip|lean)\w*\b(?!(?: (?:it|the \w+))?"
                  r" (?:much|a lot|far|too|very|so|that|sideways|back|steeply|slightly|halfway|half|a bit"

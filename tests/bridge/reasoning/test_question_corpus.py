@@ -256,6 +256,9 @@ HEARD = {
     # everyday outcome verbs, and subjects of everyday words
     'will the milk splash if I pour it from high up?': (['pour_high'], ['no_spill'], []),
     'does any soup end up on the stove?': ([], ['no_spill'], []),
+    # "end up" says where an outcome leads, never the end pose raised
+    'pour below the rim: does the source end up hitting the bowl?': (['pour_below_rim'],
+                                                                     ['source_clear'], []),
     'will the soup slop over the edge of the bowl?': ([], ['no_spill'], []),
     'will the liquid bounce out of the bowl?': ([], ['liquid_remains_in_destination', 'no_spill'], []),
     'will the mug fall over if I pour cream into it?': ([], ['destination_upright'], []),
@@ -452,6 +455,7 @@ REFUSED_SAYING = {
     'what if the jug bonks the bowl?': 'could not place "bonks"',
     'what if the milk spills?': 'asks what follows an outcome',
     'what if the milk ends up on the floor?': 'could not place "ends up"',
+    'does the source end up over the bowl?': 'could not place "end up"',
     'will the beer foam?': 'could not place "foam"',
     'a bowl with a friction of 0.5': 'which no proposition holds',
     'friction of 0.1': 'the friction of which?',
