@@ -109,8 +109,7 @@ def curiosity(seed: int, budget: int, oracle: str, store: Path, run,
                                         **(settings or {})))
         trace = [json.loads(line) for line in trace_path(out).read_text().splitlines()]
     P, S = result["pours"]
-    batch = _batch()
-    steps = [(int(t["iteration"]) * batch, tuple(sorted(t["antecedent"]))) for t in trace]
+    steps = [(int(t["simulations"]), tuple(sorted(t["antecedent"]))) for t in trace]
 
     def bodies(n: int) -> list[tuple[str, ...]]:
         return list(dict.fromkeys(b for end, b in steps if end <= n))

@@ -199,7 +199,7 @@ default(pours_per_proposition, 12).
 default(uncertain_band_permille, 150).
 
 % The pours of a batch of the learning curiosity (the others': parameters + 1).
-default(learn_batch, 4).
+default(learn_batch, 2).
 
 % a_0, the initial antecedent of the discovering and the paper's curiosity:
 % an ordinary pour (from mid height, near the destination's rim, steeply

@@ -57,7 +57,13 @@ something to learn: the curiosity leaves it), and
 
 the chance that a pour of the batch shows a nine-verdict behaviour no two
 pours so far have shown (the paper's criterion: behaviours not seen
-before). The value adds `doubt` times the first and `newness` times the
+before). For an antecedent of two propositions or more, each counts only
+what exceeds the most that one of its parts (B with one proposition less)
+gets: the doubt and the new behaviours its interaction brings, not those
+of a part whose own pours already show them (a proposition whose pours no
+number of them makes predictable would otherwise pass its doubt to every
+pair it is in, one after the other: what the curiosity cannot learn, it
+leaves). The value adds `doubt` times the first and `newness` times the
 second, neither weighed by how often B is asked: what they teach the model
 serves every question.
 """
@@ -173,7 +179,10 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
     asked = {0: learner.default_weight, 1: 1.0}
     if weights.doubt or weights.newness:
         with threadpool_limits(1):
-            doubts, news = batch_doubt(meaning, S, cands, batch, seed, iteration)
+            h, new = batch_doubt(meaning, S, bodies, batch, seed, iteration)
+        doubts, news = (np.array([max(0.0, x[index[c]] - max((x[index[a]] for a in parents[c]
+                                                               if a), default=0.0))
+                                  for c in cands]) for x in (h, new))
     else:
         doubts = news = np.zeros(len(cands))
     value, dep, unc, doubt_of = [], [], [], []
