@@ -13,7 +13,6 @@ reads the same corpus under its caps.
 from __future__ import annotations
 
 import os
-import resource
 import signal
 import subprocess
 import sys
@@ -124,22 +123,46 @@ def command(engine: str, path: Path) -> list[str]:
             *(a.replace("{file}", str(path)) for a in READERS[engine])]
 
 
+#: The small process between the caller and the command read: a process made
+#: by fork counts its parent's resident memory in its own peak (Linux keeps it
+#: across exec), so the command is forked from this one, capped, and its own
+#: peak (kB) written to the file named first; its exit is the command's.
+_LAUNCH = """
+import os, resource, signal, sys
+peak, memory, argv = sys.argv[1], int(sys.argv[2]), sys.argv[3:]
+pid = os.fork()
+if pid == 0:
+    try:
+        resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
+        os.execvp(argv[0], argv)
+    finally:
+        os._exit(127)
+_, status, usage = os.wait4(pid, 0)
+with open(peak, "w") as f:
+    f.write(str(usage.ru_maxrss))
+if os.WIFSIGNALED(status):
+    signal.signal(os.WTERMSIG(status), signal.SIG_DFL)
+    os.kill(os.getpid(), os.WTERMSIG(status))
+sys.exit(os.waitstatus_to_exitcode(status))
+"""
+
+
 def read_capped(argv: list[str], stdin: bytes | None = None, seconds: float = CAP_S,
                 memory: int = CAP_BYTES, cwd: str | None = None) -> Reading:
     """Run `argv` with its address space capped at `memory` bytes and
     killed (its whole process group) past `seconds`: its exit, wall time
-    and the peak resident memory of its processes."""
-    def limit() -> None:
-        resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
-        os.setsid()
-
-    with tempfile.TemporaryFile() as err, tempfile.TemporaryFile() as feed:
+    and the peak resident memory of its processes (the caller's own
+    memory not counted, however large)."""
+    with tempfile.TemporaryFile() as err, tempfile.TemporaryFile() as feed, \
+            tempfile.NamedTemporaryFile("r") as peak:
         if stdin is not None:
             feed.write(stdin)
             feed.seek(0)
         start = time.monotonic()
-        p = subprocess.Popen(argv, stdin=feed if stdin is not None else subprocess.DEVNULL,
-                             stdout=subprocess.DEVNULL, stderr=err, preexec_fn=limit, cwd=cwd)
+        p = subprocess.Popen([sys.executable, "-c", _LAUNCH, peak.name, str(memory), *argv],
+                             stdin=feed if stdin is not None else subprocess.DEVNULL,
+                             stdout=subprocess.DEVNULL, stderr=err, start_new_session=True,
+                             cwd=cwd)
         code: int | None = None
         while True:
             pid, status, usage = os.wait4(p.pid, os.WNOHANG)
@@ -154,8 +177,9 @@ def read_capped(argv: list[str], stdin: bytes | None = None, seconds: float = CA
         wall = time.monotonic() - start
         err.seek(0)
         text = err.read(200_000).decode("utf-8", "replace")
-    # wait4's peak is the largest of the process and the children it waited for
-    return Reading(code, wall, usage.ru_maxrss * 1024, text)
+        kb = peak.read().strip()
+    # the command's peak and its children's, or the launcher's when it was killed
+    return Reading(code, wall, int(kb or usage.ru_maxrss) * 1024, text)
 
 
 def readings(folder: Path, engines=tuple(READERS)) -> list[tuple[str, str, Reading]]:
