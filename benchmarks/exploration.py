@@ -79,6 +79,7 @@ def pour_seconds(n: int = 6) -> float:
 def qualify_accuracy(tmp: Path, seeds=(1, 2, 3)) -> dict[str, float]:
     from pantarhei.bridge.exploration.explore_call import ExploreOptions, explore
     from pantarhei.oracle.generative import sample
+    from pantarhei.bridge.evaluation.measures import verdicts
     from pantarhei.oracle.synthetic import scores
     from pantarhei.theory.lexicon import load_vocabulary
     from pantarhei.theory import read_facts
@@ -100,7 +101,7 @@ def qualify_accuracy(tmp: Path, seeds=(1, 2, 3)) -> dict[str, float]:
                 neg = isinstance(head, tuple)
                 k = expectations.index(head[1] if neg else head)
                 for p in sample(body[rid], 100, seed=12345):
-                    ok += (scores(dict(zip(names, p)))[k] > 0.5) != neg
+                    ok += verdicts(scores(dict(zip(names, p)))[k]) != neg
                     total += 1
         out[mode] = ok / total
     return out

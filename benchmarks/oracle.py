@@ -64,16 +64,18 @@ NUDGE_MM = 0.01
 
 
 def fidelity(P: np.ndarray) -> None:
+    from pantarhei.bridge.evaluation.measures import verdicts
     from pantarhei.oracle import physics
+    from pantarhei.theory import defaults
     from pantarhei.theory.lexicon import load_vocabulary
 
     n = P.size // P.shape[1] * 9
-    print(f"fidelity: {len(P)} parameterizations, {n} verdicts (score > 0.5)")
+    print(f"fidelity: {len(P)} parameterizations, {n} verdicts (score > {defaults()['verdict_threshold']:g})")
     S0, t0, _ = run_inline(P, physics.DEFAULT_FIDELITY)
     nudged = P.copy()
     nudged[:, 0] += NUDGE_MM
     Sn, _, _ = run_inline(nudged, physics.DEFAULT_FIDELITY)
-    stable = (Sn > 0.5) == (S0 > 0.5)
+    stable = verdicts(Sn) == verdicts(S0)
     print(f"  {'settings':<62} {'median s':>8} {'total s':>8} {'speed-up':>8} "
           f"{'agree':>12} {'of stable':>10}")
     print(f"  {'PyBullet defaults: ' + physics.DEFAULT_FIDELITY.describe():<62} "
@@ -89,7 +91,7 @@ def fidelity(P: np.ndarray) -> None:
                   ("  but PyBullet's 20 mm contact threshold", replace(c, contact_mm=20.0))]
     for label, f in candidates:
         S, t, _ = run_inline(P, f)
-        same = (S > 0.5) == (S0 > 0.5)
+        same = verdicts(S) == verdicts(S0)
         agree = int(same.sum())
         print(f"  {label:<62} {statistics.median(t):8.3f} {sum(t):8.1f} "
               f"{sum(t0) / sum(t):8.1f}x {agree:4d}/{S.size} {agree / S.size:4.0%} "

@@ -24,6 +24,7 @@ from typing import Any, Mapping
 import numpy as np
 
 from pantarhei.oracle.base import Oracle, Outcome
+from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
 
 #: Expectation -> {parameter: +1 if the score rises with it, -1 if it falls}.
@@ -88,7 +89,8 @@ class SyntheticOracle(Oracle):
         names = load_vocabulary().parameter_names
         v = dict(zip(names, (float(x) for x in np.asarray(p, dtype=float))))
         s = scores(v)
+        holds = float(defaults()["verdict_threshold"])
         record: dict[str, Any] = {"oracle": "synthetic",
-                                  "verdicts": {e: bool(x > 0.5) for e, x in
+                                  "verdicts": {e: bool(x > holds) for e, x in
                                                zip(load_vocabulary().expectation_names, s)}}
         return Outcome(s, record)

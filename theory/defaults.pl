@@ -188,6 +188,12 @@ used_by(general, paper).
 recorded(budget).
 recorded(qualify).
 
+% The verdict of a pour: an expectation holds where its score (0 to 1,
+% oracle/scoring.py) is above this, and fails otherwise. Read by Python
+% (pantarhei.bridge.evaluation.measures.verdicts) and Prolog
+% (theory/curiosity/modify.pl) alike.
+default(verdict_threshold_permille, 500).
+
 % After Algorithm 1, the general rules are learned from every pour of the
 % exploration (option general above; bridge/learning/).
 % Before learning them, the learner simulates pours of its own for the

@@ -193,6 +193,13 @@ def _fmt(v: float) -> str:
     return str(int(v)) if float(v).is_integer() else f"{v:.1f}"
 
 
+def _verdict(score: float) -> str:
+    """'holds' or 'fails': the verdict of a score (measures.verdicts)."""
+    from pantarhei.bridge.evaluation.measures import verdicts
+
+    return "holds" if verdicts(score) else "fails"
+
+
 def print_results(P: np.ndarray, S: np.ndarray, records: list, errors: list,
                   props: Optional[list[str]]) -> None:
     import numpy as np
@@ -211,7 +218,7 @@ def print_results(P: np.ndarray, S: np.ndarray, records: list, errors: list,
             print(f"  FAILED: {err}")
             continue
         for e, v in zip(vocab.expectation_names, s):
-            print(f"  {e:<32} {v:5.2f}  {'holds' if v > 0.5 else 'fails'}")
+            print(f"  {e:<32} {v:5.2f}  {_verdict(v)}")
         if rec is not None and "fractions" in rec:
             f = rec["fractions"]
             print(f"  {'liquid at the end:':<32} {f['source']:.0%} in the source, "
@@ -317,5 +324,5 @@ def render(args: argparse.Namespace) -> int:
     print(f"wrote {args.out} ({frames} frames)" + (f" and {frames} PNGs in {args.frames}"
                                                    if args.frames else ""))
     for e, v in zip(names, outcome.scores):
-        print(f"  {e:<32} {v:5.2f}  {'holds' if v > 0.5 else 'fails'}")
+        print(f"  {e:<32} {v:5.2f}  {_verdict(v)}")
     return 0

@@ -19,6 +19,7 @@ from typing import Callable
 
 import numpy as np
 
+from pantarhei.bridge.evaluation.measures import verdicts
 from pantarhei.bridge.exploration.novelty import shown
 from pantarhei.oracle.generative import normalise, sample
 from pantarhei.theory.lexicon import load_vocabulary
@@ -80,7 +81,7 @@ def map_elites(simulate: Callable[[np.ndarray], np.ndarray], budget: int, seed: 
         S = np.asarray(simulate(P), dtype=float)
         ok = np.all(np.isfinite(S), axis=1)
         clear = np.where(ok, np.abs(np.nan_to_num(S, nan=0.5) - 0.5).mean(axis=1), -1.0)
-        measures = [[bool(x) for x in row] for row in (np.nan_to_num(S, nan=0.0) > 0.5)]
+        measures = [[bool(x) for x in row] for row in verdicts(np.nan_to_num(S, nan=0.0))]
         if len(Z) < batch:      # the last, short batch: added to the archive directly
             archive.add(Z, clear, measures)
         else:

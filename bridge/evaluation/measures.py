@@ -16,14 +16,17 @@ from typing import Sequence
 
 import numpy as np
 
+from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
 
 HOLDS, FAILS, UNKNOWN = 1, 0, -1
 
 
 def verdicts(scores: np.ndarray) -> np.ndarray:
-    """The qualitative verdicts of scores: True where a score exceeds 1/2."""
-    return np.asarray(scores, dtype=float) > 0.5
+    """The qualitative verdicts of scores: True where a score is above the
+    verdict threshold (default(verdict_threshold_permille, _) of
+    theory/defaults.pl, one half)."""
+    return np.asarray(scores, dtype=float) > float(defaults()["verdict_threshold"])
 
 
 @dataclass(frozen=True)

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
+from pantarhei.bridge.evaluation.measures import verdicts
 from pantarhei.bridge.evaluation.formats import antecedent_words, consequent_words, pct
 from pantarhei.bridge.evaluation.pipeline import Evaluation, Inputs
 
@@ -22,7 +23,7 @@ def kept_all_stage(ev: Evaluation, inputs: Inputs) -> None:
     for i in range(len(m.antecedents)):
         rows = m.S[m.of == i]
         rows = rows[np.all(np.isfinite(rows), axis=1)]
-        ev.kept_all.append(float((rows > 0.5).all(axis=1).mean()) if len(rows) else None)
+        ev.kept_all.append(float(verdicts(rows).all(axis=1).mean()) if len(rows) else None)
 
 
 def rules_table(ev: Evaluation) -> list[str]:

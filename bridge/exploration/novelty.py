@@ -38,6 +38,7 @@ import numpy as np
 from scipy.stats import binom
 from sklearn.ensemble import RandomForestClassifier
 
+from pantarhei.bridge.evaluation.measures import verdicts
 from pantarhei.oracle.generative import normalise, sample
 
 #: Trees of the forest; its leaves hold at least this many pours.
@@ -69,7 +70,7 @@ def shown(S: np.ndarray, at_least: int = 2) -> frozenset:
     least `at_least` pours."""
     S = np.asarray(S, dtype=float)
     S = S[np.all(np.isfinite(S), axis=1)]
-    counts = Counter(tuple(bool(v) for v in row) for row in S > 0.5)
+    counts = Counter(tuple(bool(v) for v in row) for row in verdicts(S))
     return frozenset(k for k, c in counts.items() if c >= at_least)
 
 
@@ -79,7 +80,7 @@ def known(params: np.ndarray, scores: np.ndarray, consequents: Sequence[tuple[bo
     theory units, scores (n, 9)) and gather the behaviours seen and the
     explored antecedents' consequents."""
     ok = np.all(np.isfinite(scores), axis=1)
-    P, V = params[ok], scores[ok] > 0.5
+    P, V = params[ok], verdicts(scores[ok])
     seen = shown(scores)
     columns = np.full(V.shape[1], -1)
     forest = None
@@ -172,6 +173,6 @@ def probe_score(S: np.ndarray, n: int, consequents: Sequence[tuple[bool, ...]]) 
     probe scores at most about one half, a probe that shows an explored
     antecedent's consequent about 0."""
     S = np.asarray(S, dtype=float)
-    V = S[np.all(np.isfinite(S), axis=1)] > 0.5
+    V = verdicts(S[np.all(np.isfinite(S), axis=1)])
     q = (V.sum(axis=0) + 1.0) / (len(V) + 2.0)
     return new_reproduced(q, n, verdict_rows(consequents, S.shape[1]))

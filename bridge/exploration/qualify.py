@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from pantarhei.bridge.evaluation.measures import verdicts
 from pantarhei.bridge.exploration.planes import MIN_WEIGHT
 from pantarhei.theory.lexicon import load_vocabulary
 
@@ -19,7 +20,7 @@ def consequent(S: np.ndarray, w: np.ndarray, mode: str) -> dict:
     expectation, the verdict of the larger weight. The confidence of a
     verdict is the weighted share of simulations that agree with it."""
     expectations = load_vocabulary().expectation_names
-    holds = S > 0.5
+    holds = verdicts(S)
     mass = float(w.sum())
     used = int((w > MIN_WEIGHT).sum())
     if mass <= 0:

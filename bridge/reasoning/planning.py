@@ -35,8 +35,10 @@ class Plan:
 
 def goals_met(scores, goals: list[str]):
     """Per row of oracle scores (n x 9): whether every goal literal was met
-    (an expectation's score above 1/2, or for neg(E) at most 1/2)."""
+    (an expectation's verdict holds, measures.verdicts, or for neg(E) fails)."""
     import numpy as np
+
+    from pantarhei.bridge.evaluation.measures import verdicts
 
     names = load_vocabulary().expectation_names
     scores = np.atleast_2d(np.asarray(scores, dtype=float))
@@ -45,7 +47,8 @@ def goals_met(scores, goals: list[str]):
         lit = parse_goal(g)
         negated = lit.startswith("neg(")
         col = names.index(complement(lit) if negated else lit)
-        met &= (scores[:, col] <= 0.5) if negated else (scores[:, col] > 0.5)
+        holds = verdicts(scores[:, col])
+        met &= ~holds if negated else holds
     return met
 
 

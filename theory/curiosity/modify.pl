@@ -23,15 +23,18 @@ an antecedent, by which both judge a move.
 :- use_module(library(pairs)).
 :- use_module('../vocabulary').
 :- use_module('../validity').
+:- use_module('../default_values').
 
 %!  direction(+Gradient:list, +MeanScore:number, -Direction:list) is det.
 %
 %   Gradient is a list Param-Component of a plane (score per normalised
 %   unit). Direction is the same line, signed towards the other verdict:
-%   where the antecedent's weighted mean score is above one half (the
-%   expectation mostly holds), against the gradient, else along it.
+%   where the antecedent's weighted mean score is above the verdict
+%   threshold (theory/defaults.pl; the expectation mostly holds), against
+%   the gradient, else along it.
 direction(Gradient, Mean, Direction) :-
-    (   Mean > 0.5 -> Sign = -1 ; Sign = 1 ),
+    once(default(verdict_threshold, Holds)),
+    (   Mean > Holds -> Sign = -1 ; Sign = 1 ),
     findall(X-D, ( member(X-G, Gradient), D is Sign * G ), Direction).
 
 %!  modify(+Props:list, +Direction:list, +Breadth:integer, +Exclude:list, -New:list) is det.
