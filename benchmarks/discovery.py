@@ -91,7 +91,7 @@ def simulator(oracle: str, store: Path) -> Callable[[np.ndarray], np.ndarray]:
         return lambda P: np.array([o.score(p).scores for p in P])
     from pantarhei.bridge.exploration.simulation import open_simulator
 
-    sim = open_simulator(oracle, "local", None, store)
+    sim = open_simulator(oracle, None, None, store)
     return lambda P: np.asarray(sim.simulate(P, progress=False), dtype=float)
 
 
@@ -133,13 +133,14 @@ def explore_options() -> dict:
 def curiosity(mode: str, seed: int, rules: int, tmp: Path, oracle: str, store: Path) -> dict:
     from pantarhei.bridge.exploration.explore_call import ExploreOptions, explore
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen
+    from pantarhei.theory import defaults
 
     out = tmp / f"{mode}-{seed}.pl"
     inline = oracle == "synthetic"
     r = explore(ExploreOptions(**{**explore_options(), "curiosity": mode, "oracle": oracle,
                            "budget": rules, "seed": seed, "out": out,
                            "store": tmp / f"{mode}-{seed}.sqlite" if inline else store,
-                           "progress": False, "executor": "inline" if inline else "local",
+                           "progress": False, "executor": "inline" if inline else defaults()["executor"],
                            "general": False}))
     trace = [json.loads(line) for line in out.with_suffix(".trace.jsonl").read_text().splitlines()]
     P, S = r["pours"]                       # every pour of the exploration, as it simulated them

@@ -63,8 +63,9 @@ def simulate(sets: dict[str, Pours], store: Path = STORE, workers: int = WORKERS
              progress: bool = True) -> dict[str, Pours]:
     """Score every pour with PyBullet through the store; failed pours dropped."""
     from pantarhei.bridge.exploration.simulation import open_simulator
+    from pantarhei.oracle.physics import PouringOracle
 
-    sim = open_simulator("pybullet", "local", workers, store)
+    sim = open_simulator(PouringOracle.name, None, workers, store)
     try:
         for name, s in sets.items():
             S = np.asarray(sim.simulate(s.P, progress=progress), dtype=float)
@@ -105,7 +106,9 @@ def speed(n: int = 10_000, seed: int = SEED) -> tuple[int, float]:
 def scored(sets: dict[str, Pours], oracle: str, store: Path | None) -> dict[str, Pours]:
     """Every set scored: by PyBullet through the store, or by another
     oracle inline without one."""
-    if oracle == "pybullet":
+    from pantarhei.oracle.base import REAL_ORACLES
+
+    if oracle in REAL_ORACLES:
         return simulate(sets, store)
     from pantarhei.oracle.simulator import make_simulator
 
@@ -116,13 +119,15 @@ def scored(sets: dict[str, Pours], oracle: str, store: Path | None) -> dict[str,
     return sets
 
 
-def run(oracle: str = "pybullet", store: Path | None = STORE, seed: int = SEED,
+def run(oracle: str | None = None, store: Path | None = STORE, seed: int = SEED,
         prolog_sample: int = 60) -> dict:
     from pantarhei.bridge.evaluation.measures import question_key, verdicts
     from pantarhei.bridge.evaluation.rule_building import predict
     from pantarhei.bridge.learning.generalize import Settings, generalize
     from pantarhei.oracle.generative import describe
+    from pantarhei.theory import defaults
 
+    oracle = str(defaults()["oracle"]) if oracle is None else oracle
     sets = scored(draw(seed), oracle, store)
     tr, ho, qs = sets["train"], sets["heldout"], sets["questions"]
     report: dict = {"oracle": oracle, "pours": {k: len(v.P) for k, v in sets.items()}}

@@ -117,13 +117,15 @@ def _peak_rss_mb(pid: int) -> Optional[float]:
 
 
 def parallel(P: np.ndarray) -> None:
+    from pantarhei.oracle.local_executor import LocalExecutor
+    from pantarhei.oracle.physics import PouringOracle
     from pantarhei.oracle.simulator import make_simulator
 
     print(f"parallel: {len(P)} pours at the chosen settings, worker processes, no store "
           f"({os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f} before)")
     walls, peaks, steps, inside, busy, per = {}, [], 0.0, 0.0, {}, {}
     for workers in (1, 2):
-        with make_simulator("pybullet", executor="local", workers=workers, store=None) as sim:
+        with make_simulator(PouringOracle.name, executor=LocalExecutor.name, workers=workers, store=None) as sim:
             sim.simulate(P[:workers])                      # start the workers
             t = time.perf_counter()
             S = sim.simulate(P)

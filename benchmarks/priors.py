@@ -40,6 +40,7 @@ def measure(path: Path, pours: int, seed: int, report: Path) -> dict:
     from pantarhei.bridge.theories.loading import load
     from pantarhei.oracle.generative import normalise, sample
     from pantarhei.oracle.store import DEFAULT_STORE
+    from pantarhei.theory import defaults
     from pantarhei.theory.lexicon import load_vocabulary
 
     from benchmarks.discovery import theory_consequents
@@ -47,7 +48,7 @@ def measure(path: Path, pours: int, seed: int, report: Path) -> dict:
     learned = read_learned(path)
     P, _, _, _ = exploration_draws(learned)
     Q = sample([], pours, seed)
-    sim = open_simulator(str(learned.setting("oracle", "pybullet")), "local", None,
+    sim = open_simulator(str(learned.setting("oracle", defaults()["oracle"])), None, None,
                          Path(DEFAULT_STORE).absolute())
     try:
         S = np.asarray(sim.simulate(P, progress=False), dtype=float)

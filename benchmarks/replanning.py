@@ -25,12 +25,13 @@ def main() -> None:
     from pantarhei.bridge.exploration.simulation import open_simulator
     from pantarhei.bridge.reasoning.plan_search import search
     from pantarhei.bridge.theories import loading
+    from pantarhei.oracle.physics import PouringOracle
 
     theory = loading.load(None, pouring=True)
     worst = 0.0
     with tempfile.TemporaryDirectory() as d:
         store = Path(d) / "plans.sqlite"
-        with open_simulator("pybullet", store=store, workers=os.cpu_count()) as sim:
+        with open_simulator(PouringOracle.name, store=store, workers=os.cpu_count()) as sim:
             for words, given, goals in goal_sets()[:SETS]:
                 started = time.perf_counter()
                 found = search(theory, goals, given, sim.simulate, verify_pours=VERIFY,

@@ -21,7 +21,8 @@ from pantarhei.oracle.base import Oracle, make_oracle
 from pantarhei.oracle.execution import Done, Executor, OnResult
 from pantarhei.oracle.executors import make_executor
 from pantarhei.oracle.result_keys import key, oracle_tag
-from pantarhei.oracle.store import Store
+from pantarhei.oracle.store import DEFAULT_STORE, Store
+from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
 
 #: Seconds a single simulation may take before it counts as hung.
@@ -163,13 +164,16 @@ def _progress_bar(n: int, done: int) -> Any:
     return tqdm(total=n, initial=done, unit="sim", desc="simulating", dynamic_ncols=True)
 
 
-def make_simulator(oracle: str | Oracle = "pybullet", executor: str = "local",
-                   workers: Optional[int] = None, store: str | Path | Store | None = "pantarhei.sqlite",
+def make_simulator(oracle: str | Oracle | None = None, executor: str | None = None,
+                   workers: Optional[int] = None, store: str | Path | Store | None = DEFAULT_STORE,
                    ray_address: Optional[str] = None, timeout: Optional[float] = DEFAULT_TIMEOUT,
                    retry_failed: bool = False, **oracle_options: Any) -> Simulator:
     """A simulator of the named oracle (built with `oracle_options`) on the
     named executor ("local" worker processes, "ray", or "inline"), storing
-    results in the SQLite file `store` (None: nothing stored)."""
+    results in the SQLite file `store` (None: nothing stored). The oracle,
+    the executor and the store are by default theory/defaults.pl's."""
+    oracle = str(defaults()["oracle"]) if oracle is None else oracle
+    executor = str(defaults()["executor"]) if executor is None else executor
     o = make_oracle(oracle, **oracle_options) if isinstance(oracle, str) else oracle
     st = store if isinstance(store, Store) or store is None else Store(store)
     try:

@@ -52,8 +52,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="verify with this oracle (default: the one the theory was learned from; "
                         "synthetic: analytic test scores, not a simulation)")
     options.add_seed(p, 0, "--verify's sampling")
-    p.add_argument("--store", default="pantarhei.sqlite",
-                   help="SQLite file of simulations for --verify (default pantarhei.sqlite)")
+    options.add_store(p, "simulations for --verify")
     p.add_argument("--json", action="store_true", help="print JSON")
     p.set_defaults(run=plan, pin=lambda args: args.verify > 0)     # --verify simulates
 
@@ -118,10 +117,12 @@ def _require_out(path: str) -> None:
 
 def _verifying_oracle(theory) -> str:
     """The oracle a theory's plans are verified with: the one it was
-    learned from (its setting(oracle, O)), PyBullet otherwise."""
+    learned from (its setting(oracle, O)), the default oracle
+    (theory/defaults.pl) otherwise."""
     from pantarhei.bridge.theories import loading
+    from pantarhei.theory import defaults
 
-    return str((loading.settings(theory).get("oracle") or ["pybullet"])[0])
+    return str((loading.settings(theory).get("oracle") or [defaults()["oracle"]])[0])
 
 
 def print_plans(theory, goals: list[str], given: list[str], alternatives: int, verify: int,

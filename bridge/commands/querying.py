@@ -37,8 +37,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                         "oracle the theory was learned from) and show the share observed beside "
                         "each answer, flagging those the pours contradict (default 0: none)")
     options.add_seed(p, 0, "--check's sampling")
-    p.add_argument("--store", default="pantarhei.sqlite",
-                   help="SQLite file of simulations for --check (default pantarhei.sqlite)")
+    options.add_store(p, "simulations for --check")
     p.set_defaults(run=ask, pin=lambda args: args.check > 0)     # --check simulates
     # a negated expectation after --why (-no_spill) is its value, not an option:
     # argparse takes an argument that this matches for a value (every

@@ -231,6 +231,7 @@ def print_results(P: np.ndarray, S: np.ndarray, records: list, errors: list,
 def simulate(args: argparse.Namespace) -> int:
     import numpy as np
 
+    from pantarhei.oracle.physics import PouringOracle
     from pantarhei.oracle.simulator import make_simulator
     from pantarhei.oracle.store import StoreError
 
@@ -238,7 +239,7 @@ def simulate(args: argparse.Namespace) -> int:
     if args.ray_address and args.executor != "ray":
         raise UserError("--ray-address needs --executor ray")
     try:
-        sim = make_simulator("pybullet", executor=args.executor, workers=args.workers,
+        sim = make_simulator(PouringOracle.name, executor=args.executor, workers=args.workers,
                              store=None if args.no_store else args.store,
                              ray_address=args.ray_address, timeout=args.timeout,
                              fidelity=args.fidelity)

@@ -37,6 +37,7 @@ from typing import Any, Sequence
 
 import numpy as np
 
+from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
 
 from pantarhei.bridge.errors import UserError
@@ -57,7 +58,7 @@ class EvaluationOptions:
     seed: int = 1
     verify: int = 10
     paper_samples: int = 20
-    executor: str = "local"
+    executor: str = field(default_factory=lambda: str(defaults()["executor"]))
     workers: int | None = None
     ray_address: str | None = None
     progress: bool = True
@@ -216,7 +217,7 @@ def evaluate(opts: EvaluationOptions) -> Evaluation:
     learned = read_learned(opts.theory)
     if opts.scenes < 1 or opts.verify < 0 or opts.paper_samples < 0:
         raise UserError("--scenes must be at least 1, --verify and --paper-samples at least 0")
-    oracle = str(learned.setting("oracle", "pybullet"))
+    oracle = str(learned.setting("oracle", defaults()["oracle"]))
     samples = int(learned.setting("batch"))
     ev = Evaluation(theory=_shown(opts.theory), oracle=oracle,
                     settings={k: (v if len(v) > 1 else v[0]) for k, v in learned.settings.items()},

@@ -19,6 +19,7 @@ from pantarhei.bridge.evaluation import report_sections as sections
 from pantarhei.bridge.evaluation.pipeline import Evaluation
 from pantarhei.bridge.evaluation.registry import report_order
 from pantarhei.bridge.files import write_text
+from pantarhei.oracle.base import REAL_ORACLES
 
 
 def load(path: Path | str) -> Evaluation:
@@ -64,7 +65,7 @@ def write(ev: Evaluation, out: Path, gifs: bool = True, command: str = "make eva
     and each measure's plots; returns README.md's path."""
     out.mkdir(parents=True, exist_ok=True)
     write_text(out / "evaluation.json", json.dumps(ev.as_dict(), indent=1) + "\n")
-    drawn = render_gifs(ev, out) if gifs and ev.oracle == "pybullet" else []
+    drawn = render_gifs(ev, out) if gifs and ev.oracle in REAL_ORACLES else []
     L = sections.opening(ev, command)
     for measure in report_order():
         L += measure.section(ev, out)

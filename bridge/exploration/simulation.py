@@ -83,11 +83,12 @@ def drawn_pours(draws: Sequence[Draw], seed: int, batch: int) -> np.ndarray:
     return np.vstack(rows)
 
 
-def open_simulator(oracle: str, executor: str = "local", workers: int | None = None,
+def open_simulator(oracle: str, executor: str | None = None, workers: int | None = None,
                    store: str | Path | None = None, ray_address: str | None = None,
                    oracle_options: dict | None = None) -> Any:
     """The simulator: `simulate(P) -> scores` with NaN rows for failures,
-    every result kept in the store and never simulated twice."""
+    every result kept in the store and never simulated twice; the executor
+    by default theory/defaults.pl's (make_simulator)."""
     from pantarhei.oracle.simulator import make_simulator
 
     return make_simulator(oracle, executor=executor, workers=workers, store=str(store),

@@ -65,10 +65,11 @@ def contradicts(verdict: str, observed: Observed) -> bool:
 def checking_oracle(files: Sequence[str]) -> str:
     """The oracle a theory's answers are checked with: the one it was
     learned from (the first `setting(oracle, O)` of its native files),
-    PyBullet otherwise."""
+    the default oracle (theory/defaults.pl) otherwise."""
     import re
 
     from pantarhei.bridge.files import is_dfl
+    from pantarhei.theory import defaults
 
     pattern = re.compile(r"^setting\(\s*oracle\s*,\s*([a-z][A-Za-z0-9_]*)\s*\)\s*\.", re.M)
     for path in files:
@@ -81,4 +82,4 @@ def checking_oracle(files: Sequence[str]) -> str:
             continue
         if m:
             return m.group(1)
-    return "pybullet"
+    return str(defaults()["oracle"])

@@ -47,13 +47,14 @@ text_atom(Text, Atom) :-
 %
 %   Scores are the 9 expectation scores of each row (a list of
 %   Expectation-Score pairs per row; a failed simulation scores nan).
-%   Options: oracle(Name) (default: theory/defaults.pl), store(File), executor(E),
-%   workers(N). Results are kept in the store, and stored ones are not
+%   Options: oracle(Name) and executor(E) (defaults: theory/defaults.pl),
+%   store(File), workers(N). Results are kept in the store, and stored ones are not
 %   simulated again.
 simulate(Rows, Options, Scores) :-
     default(oracle, DefaultOracle),
     option(oracle(Oracle), Options, DefaultOracle),
-    option(executor(Executor), Options, local),
+    default(executor, DefaultExecutor),
+    option(executor(Executor), Options, DefaultExecutor),
     Request0 = _{rows:Rows, oracle:Oracle, executor:Executor},
     (   option(store(Store), Options)
     ->  absolute_file_name(Store, Abs), put_dict(store, Request0, Abs, Request1)
