@@ -65,8 +65,9 @@ def pour_seconds(n: int = 6) -> float:
     from pantarhei.bridge.reasoning.scenes import random_antecedents
     from pantarhei.oracle.base import make_oracle
     from pantarhei.oracle.generative import sample
+    from pantarhei.oracle.physics import PouringOracle
 
-    oracle = make_oracle("pybullet")
+    oracle = make_oracle(PouringOracle.name)
     times = []
     for i, a in enumerate(random_antecedents(11, n)):
         p = sample(list(a), 1, seed=11 + i)[0]
@@ -83,11 +84,12 @@ def qualify_accuracy(tmp: Path, seeds=(1, 2, 3)) -> dict[str, float]:
     from pantarhei.oracle.synthetic import scores
     from pantarhei.theory.lexicon import load_vocabulary
     from pantarhei.theory import read_facts
+    from pantarhei.theory.option_table import option
 
     v = load_vocabulary()
     names, expectations = v.parameter_names, list(v.expectation_names)
     out = {}
-    for mode in ("weighted", "argmax"):
+    for mode in option("qualify").choices:
         ok = total = 0
         for seed in seeds:
             path = tmp / f"q-{mode}-{seed}.pl"

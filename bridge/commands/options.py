@@ -11,6 +11,7 @@ from pathlib import Path
 from typing import Callable
 
 from pantarhei.theory import THEORY_DIR, defaults
+from pantarhei.theory.option_table import option
 
 #: The shipped learned theory and the store, as bridge.theories.loading and
 #: oracle.store name them (read here from theory/defaults.pl alone, so that
@@ -19,18 +20,16 @@ DEFAULT_THEORY = THEORY_DIR / str(defaults()["theory"])
 DEFAULT_STORE = Path(str(defaults()["store"]))
 
 
-def choices(option: str) -> tuple[str, ...]:
+def choices(name: str) -> tuple[str, ...]:
     """The values an option of the option table (theory/defaults.pl) may
     take: the oracles a command may simulate with, the executors..."""
-    from pantarhei.theory.option_table import option_table
-
-    return next(o.choices for o in option_table() if o.name == option)
+    return option(name).choices
 
 #: Seeds are 0 .. SEED_MAX: what SWI-Prolog, clingo (32-bit integers) and
-#: numpy all keep as they are.
-SEED_MAX = 2**31 - 1
-#: Most workers a command starts.
-WORKERS_MAX = 1024
+#: numpy all keep as they are (the seed's row of the option table).
+SEED_MAX = int(option("seed").high)
+#: Most workers a command starts (the workers' row of the option table).
+WORKERS_MAX = int(option("workers").high)
 #: Bounds of counts: pours simulated to verify, and any other count (scenes,
 #: pours, shuffles); explore's are in its option table (theory/defaults.pl).
 VERIFY_MAX = 10_000
@@ -95,20 +94,18 @@ def add_execution(p: argparse.ArgumentParser, progress: str = "no progress bar")
     p.add_argument("--executor", choices=choices("executor"), default=defaults()["executor"],
                    help="worker processes here (default), a Ray cluster, or this process")
     add_workers(p)
-    p.add_argument("--ray-address", metavar="ADDR",
-                   help="Ray cluster to join (with --executor ray; default: start a local Ray "
-                        "on this machine)")
+    p.add_argument("--ray-address", metavar="ADDR", help=option("ray_address").help)
     p.add_argument("--no-progress", action="store_true", help=progress)
 
 
 def add_workers(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--workers", type=count(1, WORKERS_MAX),
-                   help="worker processes (default: one per core)")
+    p.add_argument("--workers", type=count(int(option("workers").low), WORKERS_MAX),
+                   help=option("workers").help)
 
 
 def add_seed(p: argparse.ArgumentParser, default: int | None = None, what: str = "every random choice") -> None:
     value = int(defaults()["seed"]) if default is None else default
-    p.add_argument("--seed", type=count(0, SEED_MAX), default=value,
+    p.add_argument("--seed", type=count(int(option("seed").low), SEED_MAX), default=value,
                    help=f"seed of {what}, 0 to {SEED_MAX} (default {value})")
 
 

@@ -7,9 +7,11 @@ import numpy as np
 from pantarhei.bridge.evaluation.measures import verdicts
 from pantarhei.bridge.exploration.planes import MIN_WEIGHT
 from pantarhei.theory.lexicon import load_vocabulary
+from pantarhei.theory.option_table import option
 
-#: Qualify modes: the weighted vote (default) and the paper's rule.
-QUALIFY = ("weighted", "argmax")
+#: Qualify modes, the choices of the option table's qualify row
+#: (theory/defaults.pl): the weighted vote (default) and the paper's rule.
+QUALIFY = option("qualify").choices
 
 
 def consequent(S: np.ndarray, w: np.ndarray, mode: str) -> dict:
