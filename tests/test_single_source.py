@@ -1,0 +1,156 @@
+"""Each fact once: the verdict threshold (a score above it holds), the
+default oracle, executor and store, and the bounds and choices of the
+options are written in theory/defaults.pl and taken from there; the source
+files (Python and Prolog, docs and tests aside) hold no copy of them."""
+from __future__ import annotations
+
+import ast
+import io
+import re
+import tokenize
+from pathlib import Path
+
+import pytest
+
+from pantarhei.theory import defaults
+from pantarhei.theory.option_table import option
+
+ROOT = Path(__file__).resolve().parents[1]
+#: The folders of the source, as the package maps them.
+SOURCE = ("bridge", "oracle", "theory", "benchmarks")
+#: The one home of the facts below.
+HOME = ROOT / "theory" / "defaults.pl"
+
+#: Comparisons with one half that are not a score's verdict: a share of
+#: pours (the majority of a weighted vote, or of the pours that held) and a
+#: predicted probability that an expectation holds.
+NOT_A_SCORE = {"share", "p[i]"}
+
+#: The registries that name an oracle or an executor as itself: the table
+#: of oracles and of executors, and each one's own name.
+NAMED_HERE = {"oracle/base.py", "oracle/physics.py", "oracle/executors.py",
+              "oracle/local_executor.py"}
+#: A module whose copies are known and left for now: its --oracle and
+#: --executor flags are its own.
+KNOWN = {"benchmarks/knowledge.py"}
+
+
+def _files(suffix: str) -> list[Path]:
+    return sorted(p for d in SOURCE for p in (ROOT / d).rglob(f"*{suffix}")
+                  if "learned" not in p.relative_to(ROOT).parts and p != HOME)
+
+
+def _rel(p: Path) -> str:
+    return p.relative_to(ROOT).as_posix()
+
+
+def threshold_copies_py(text: str) -> list[str]:
+    """The comparisons of a Python source against one half in the verdict's
+    form (`x > 0.5`, `x <= 0.5`, `0.5 < x`, `0.5 >= x`), but of a share."""
+    toks = [t for t in tokenize.generate_tokens(io.StringIO(text).readline)
+            if t.type not in (tokenize.COMMENT, tokenize.NL, tokenize.NEWLINE)]
+    found = []
+    for i in range(1, len(toks) - 1):
+        t, nxt = toks[i], toks[i + 1]
+        half = nxt.type == tokenize.NUMBER and ast.literal_eval(nxt.string) == 0.5
+        if t.type == tokenize.OP and t.string in (">", "<=") and half:
+            left = re.search(r"[\w.\[\]]+\s*$", t.line[: t.start[1]])
+            if left is None or left.group(0).strip() not in NOT_A_SCORE:
+                found.append(f"{t.start[0]}: {t.line.strip()}")
+        back = toks[i - 1]
+        if (t.type == tokenize.OP and t.string in ("<", ">=") and back.type == tokenize.NUMBER
+                and ast.literal_eval(back.string) == 0.5):
+            found.append(f"{t.start[0]}: {t.line.strip()}")
+    return found
+
+
+def threshold_copies_pl(text: str) -> list[str]:
+    """The comparisons of a Prolog source against one half in the verdict's
+    form (`X > 0.5`, `X =< 0.5`), comments aside."""
+    found = []
+    for n, line in enumerate(text.splitlines(), 1):
+        code = line.split("%", 1)[0]
+        if re.search(r"(?<![=<])(>|=<)\s*0\.50*(?![\d])|0\.50*\s*(<|>=)(?!=)", code):
+            found.append(f"{n}: {line.strip()}")
+    return found
+
+
+def literal_copies(text: str, literals: set) -> list[str]:
+    """The string constants of a Python source among `literals`, docstrings
+    aside."""
+    tree = ast.parse(text)
+    docs = {id(n.body[0].value) for n in ast.walk(tree)
+            if isinstance(n, (ast.Module, ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef))
+            and n.body and isinstance(n.body[0], ast.Expr)
+            and isinstance(n.body[0].value, ast.Constant)}
+    return [f"{n.lineno}: {n.value!r}" for n in ast.walk(tree)
+            if isinstance(n, ast.Constant) and isinstance(n.value, str)
+            and n.value in literals and id(n) not in docs]
+
+
+def test_the_verdict_threshold_lives_in_defaults_pl():
+    assert defaults()["verdict_threshold"] == 0.5
+    assert "default(verdict_threshold_permille, 500)." in HOME.read_text(encoding="utf-8")
+
+
+def test_no_source_compares_a_score_with_one_half_of_its_own():
+    copies = {_rel(p): c for p in _files(".py")
+              if (c := threshold_copies_py(p.read_text(encoding="utf-8")))}
+    copies.update({_rel(p): c for p in _files(".pl")
+                   if (c := threshold_copies_pl(p.read_text(encoding="utf-8")))})
+    assert copies == {}, "the verdict threshold is theory/defaults.pl's (measures.verdicts)"
+
+
+def test_no_source_names_the_default_oracle_executor_or_store():
+    literals = {str(defaults()["oracle"]), str(defaults()["executor"]), str(defaults()["store"])}
+    copies = {_rel(p): c for p in _files(".py")
+              if _rel(p) not in NAMED_HERE | KNOWN
+              and (c := literal_copies(p.read_text(encoding="utf-8"), literals))}
+    assert copies == {}, "the defaults are theory/defaults.pl's (pantarhei.theory.defaults)"
+
+
+def test_no_prolog_module_names_the_default_executor_or_oracle():
+    atoms = {str(defaults()["oracle"]), str(defaults()["executor"])}
+    copies = {}
+    for p in _files(".pl"):
+        for n, line in enumerate(p.read_text(encoding="utf-8").splitlines(), 1):
+            code = re.sub(r'"[^"]*"', "", line.split("%", 1)[0])
+            if any(re.search(rf"\b{a}\b", code) for a in atoms):
+                copies.setdefault(_rel(p), []).append(f"{n}: {line.strip()}")
+    assert copies == {}
+
+
+def test_the_shared_flags_take_their_bounds_and_choices_from_the_option_table():
+    from pantarhei.bridge.commands import options
+    from pantarhei.bridge.exploration.qualify import QUALIFY
+
+    assert QUALIFY == option("qualify").choices
+    assert (0, options.SEED_MAX) == (option("seed").low, option("seed").high)
+    assert (1, options.WORKERS_MAX) == (option("workers").low, option("workers").high)
+    bounds = {str(int(option(name).high)) for name in ("seed", "workers")} | {"2**31", "2 ** 31"}
+    for p in _files(".py"):
+        text = p.read_text(encoding="utf-8")
+        if _rel(p).startswith("bridge/commands/"):
+            found = [b for b in bounds if re.search(rf"(?<![\w*]){re.escape(b)}(?![\w*])", text)]
+            assert found == [], f"{_rel(p)} copies an option's bound"
+        assert '("weighted", "argmax")' not in text, f"{_rel(p)} copies qualify's choices"
+
+
+@pytest.mark.parametrize("copy, py", [
+    ("ok = S > 0.5\n", True), ("ok = scores[:, k] <= 0.5\n", True), ("ok = 0.5 < x\n", True),
+    ("    (   Mean > 0.5 -> S = 1 ; S = 0 ),\n", False), ("    X =< 0.5,\n", False)])
+def test_a_copy_of_the_threshold_is_found(copy, py):
+    found = threshold_copies_py(copy) if py else threshold_copies_pl(copy)
+    assert len(found) == 1
+
+
+@pytest.mark.parametrize("fine, py", [
+    ("ok = share > 0.5\nm = like >= 0.5\nc = abs(x - 0.5)\n", True),
+    ("    (   Share >= 0.5 -> V = holds ; V = fails ),  % above 0.5\n", False)])
+def test_a_majority_or_a_centre_is_not_the_threshold(fine, py):
+    assert (threshold_copies_py(fine) if py else threshold_copies_pl(fine)) == []
+
+
+def test_a_copy_of_a_default_is_found_but_not_in_a_docstring():
+    src = '"""make_simulator("pybullet")"""\ndef f(executor="local"):\n    """local"""\n'
+    assert literal_copies(src, {"pybullet", "local"}) == ["2: 'local'"]
