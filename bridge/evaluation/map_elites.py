@@ -22,6 +22,7 @@ import numpy as np
 from pantarhei.bridge.evaluation.measures import verdicts
 from pantarhei.bridge.exploration.novelty import shown
 from pantarhei.oracle.generative import normalise, sample
+from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
 
 #: The Gaussian emitter's step, in normalised units (a tenth of each range).
@@ -80,7 +81,8 @@ def map_elites(simulate: Callable[[np.ndarray], np.ndarray], budget: int, seed: 
         P = denormalise(Z)
         S = np.asarray(simulate(P), dtype=float)
         ok = np.all(np.isfinite(S), axis=1)
-        clear = np.where(ok, np.abs(np.nan_to_num(S, nan=0.5) - 0.5).mean(axis=1), -1.0)
+        half = float(defaults()["verdict_threshold"])
+        clear = np.where(ok, np.abs(np.nan_to_num(S, nan=half) - half).mean(axis=1), -1.0)
         measures = [[bool(x) for x in row] for row in verdicts(np.nan_to_num(S, nan=0.0))]
         if len(Z) < batch:      # the last, short batch: added to the archive directly
             archive.add(Z, clear, measures)

@@ -22,6 +22,7 @@ import numpy as np
 from pantarhei.bridge.exploration.planes import Planes, best_abs_slope
 from pantarhei.bridge.exploration.significance import Tested
 from pantarhei.oracle.generative import normalise
+from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
 
 if TYPE_CHECKING:
@@ -111,8 +112,10 @@ def _directions(tested: Tested, alpha: float) -> list[dict]:
 def _moves(tested: Tested, alpha: float, k: int) -> list[dict]:
     """Plane k's significant parameters, largest component first, each with
     the antecedent's mean value and the value past which the plane through
-    that mean crosses 1/2 (theory units), and the component's p-value."""
+    that mean crosses the verdict threshold (theory units), and the
+    component's p-value."""
     vocab = load_vocabulary()
+    half = float(defaults()["verdict_threshold"])
     names = vocab.parameter_names
     lo = np.array([p.low for p in vocab.parameters], dtype=float)
     hi = np.array([p.high for p in vocab.parameters], dtype=float)
@@ -123,10 +126,10 @@ def _moves(tested: Tested, alpha: float, k: int) -> list[dict]:
         if not sig[k, j]:
             break
         g = float(tested.coef[k, j])
-        # the plane through the antecedent's mean crosses 1/2 along j here
-        flip = float(tested.centre[j]) + (0.5 - m) / g
+        # the plane through the antecedent's mean crosses the threshold along j here
+        flip = float(tested.centre[j]) + (half - m) / g
         moves.append({"parameter": names[j], "component": g,
-                      "sign": "up" if (0.5 - m) / g > 0 else "down",
+                      "sign": "up" if (half - m) / g > 0 else "down",
                       "mean": float(lo[j] + tested.centre[j] * (hi[j] - lo[j])),
                       "flip": float(lo[j] + flip * (hi[j] - lo[j])),
                       "p": float(tested.p[k, j])})
