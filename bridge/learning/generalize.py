@@ -74,6 +74,9 @@ class Settings:
     #: head, gets an uncertain rule (0: never)
     doubt_support: int = 4
     doubt_confidence: float = 0.8
+    #: how many pours the model's estimate counts as beside a body's own
+    #: (the pours in its support), for a body of one proposition or more
+    model_pours: float = 4.0
 
     def __post_init__(self) -> None:
         if self.rules_per_expectation < 1 or not 0 <= self.max_body <= 2:
@@ -81,8 +84,8 @@ class Settings:
         if not 0 <= self.band < 0.5 or self.draws < 1:
             raise ValueError("band in [0, 1/2), draws at least 1")
         if min(self.miss, self.default_weight, self.pair_weight, self.min_gain,
-               self.doubt_support) < 0:
-            raise ValueError("miss, weights, min_gain and doubt_support at least 0")
+               self.doubt_support, self.model_pours) < 0:
+            raise ValueError("miss, weights, min_gain, doubt_support and model_pours at least 0")
 
     def verdict(self, likelihood):
         """HOLDS, FAILS or UNKNOWN (uncertain) for a likelihood that e holds
@@ -132,6 +135,7 @@ def _generalize(P: np.ndarray, S: np.ndarray, settings: Settings,
     T = meaning(bodies)
     known = np.isfinite(T[:, 0])
     bodies, T = [b for b, k in zip(bodies, known) if k], T[known]
+    T = _with_own_pours(T, bodies, P, Y, settings.model_pours)
     out = General(band=settings.band)
     for k, e in enumerate(vocab.expectation_names):
         rules = _Contrasts(e, bodies, T[:, k], settings).learn()
@@ -140,6 +144,24 @@ def _generalize(P: np.ndarray, S: np.ndarray, settings: Settings,
     for e in vocab.expectation_names:
         out.sup.extend(_superiority(out.of(e)))
     return out
+
+
+def _with_own_pours(T: np.ndarray, bodies: Sequence[tuple[str, ...]], P: np.ndarray,
+                    Y: np.ndarray, k: float) -> np.ndarray:
+    """The likelihoods T of `bodies` with each body's own pours (those in
+    its support) counted beside the model's estimate, which counts as `k`
+    pours: (kept + k T) / (n + k). The model smooths over a region a few
+    pours hold (a leaf holds at least 10): 2 of 2 pours that fail are not
+    answered `yes` 96%, but `maybe`; many pours of its own outweigh it.
+    The empty body keeps the model's: its support holds every pour."""
+    T = T.copy()
+    for i, b in enumerate(bodies):
+        if b:
+            m = in_support(P, b)
+            n = int(m.sum())
+            if n:
+                T[i] = (Y[m].sum(axis=0) + k * T[i]) / (n + k)
+    return T
 
 
 def _with_evidence(r: GeneralRule, P: np.ndarray, y: np.ndarray) -> GeneralRule:
