@@ -46,7 +46,7 @@ setting(a_new_left, 64).
 % bridge/learning/layers.py).
 setting(general_pours, 774).
 setting(general_own_pours, 0).
-setting(general_rules, 81).
+setting(general_rules, 84).
 rule(g0_destination_still_approach, defeasible, destination_still_approach).
 learned(g0_destination_still_approach).
 provenance(g0_destination_still_approach, layer, general).
@@ -62,17 +62,17 @@ provenance(g1_destination_still_approach, layer, general).
 provenance(g1_destination_still_approach, level, 1).
 provenance(g1_destination_still_approach, support, 210).
 provenance(g1_destination_still_approach, kept, 195).
-provenance(g1_destination_still_approach, confidence_permille, 905).
+provenance(g1_destination_still_approach, confidence_permille, 928).
 provenance(g1_destination_still_approach, antecedent, a4).
 rule(g2_destination_still_approach, defeasible, destination_still_approach).
-body(g2_destination_still_approach, pour_low).
+body(g2_destination_still_approach, start_below_rim).
 learned(g2_destination_still_approach).
 provenance(g2_destination_still_approach, layer, general).
 provenance(g2_destination_still_approach, level, 1).
-provenance(g2_destination_still_approach, support, 37).
-provenance(g2_destination_still_approach, kept, 22).
-provenance(g2_destination_still_approach, confidence_permille, 589).
-provenance(g2_destination_still_approach, antecedent, a42).
+provenance(g2_destination_still_approach, support, 20).
+provenance(g2_destination_still_approach, kept, 13).
+provenance(g2_destination_still_approach, confidence_permille, 664).
+provenance(g2_destination_still_approach, antecedent, a2).
 rule(g3_destination_still_approach, defeasible, destination_still_approach).
 body(g3_destination_still_approach, pour_far_away).
 learned(g3_destination_still_approach).
@@ -80,26 +80,28 @@ provenance(g3_destination_still_approach, layer, general).
 provenance(g3_destination_still_approach, level, 1).
 provenance(g3_destination_still_approach, support, 10).
 provenance(g3_destination_still_approach, kept, 10).
-provenance(g3_destination_still_approach, confidence_permille, 999).
+provenance(g3_destination_still_approach, confidence_permille, 1000).
 provenance(g3_destination_still_approach, antecedent, a20).
-rule(g4_destination_still_approach, defeasible, destination_still_approach).
-body(g4_destination_still_approach, start_below_rim).
+rule(g4_destination_still_approach, defeasible, neg(destination_still_approach)).
+body(g4_destination_still_approach, approach_raising).
+body(g4_destination_still_approach, pour_low).
 learned(g4_destination_still_approach).
 provenance(g4_destination_still_approach, layer, general).
 provenance(g4_destination_still_approach, level, 1).
-provenance(g4_destination_still_approach, support, 20).
-provenance(g4_destination_still_approach, kept, 13).
-provenance(g4_destination_still_approach, confidence_permille, 732).
-provenance(g4_destination_still_approach, antecedent, a2).
-rule(g5_destination_still_approach, defeasible, destination_still_approach).
-body(g5_destination_still_approach, pour_to_side).
+provenance(g4_destination_still_approach, support, 16).
+provenance(g4_destination_still_approach, kept, 14).
+provenance(g4_destination_still_approach, confidence_permille, 857).
+provenance(g4_destination_still_approach, antecedent, a81).
+rule(g5_destination_still_approach, defeasible, neg(destination_still_approach)).
+body(g5_destination_still_approach, pour_low).
+body(g5_destination_still_approach, start_low).
 learned(g5_destination_still_approach).
 provenance(g5_destination_still_approach, layer, general).
 provenance(g5_destination_still_approach, level, 1).
-provenance(g5_destination_still_approach, support, 23).
-provenance(g5_destination_still_approach, kept, 23).
-provenance(g5_destination_still_approach, confidence_permille, 999).
-provenance(g5_destination_still_approach, antecedent, a18).
+provenance(g5_destination_still_approach, support, 13).
+provenance(g5_destination_still_approach, kept, 10).
+provenance(g5_destination_still_approach, confidence_permille, 727).
+provenance(g5_destination_still_approach, antecedent, a80).
 rule(g6_destination_still_approach, defeasible, neg(destination_still_approach)).
 body(g6_destination_still_approach, pour_low).
 body(g6_destination_still_approach, start_below_rim).
@@ -108,58 +110,58 @@ provenance(g6_destination_still_approach, layer, general).
 provenance(g6_destination_still_approach, level, 2).
 provenance(g6_destination_still_approach, support, 12).
 provenance(g6_destination_still_approach, kept, 12).
-provenance(g6_destination_still_approach, confidence_permille, 840).
+provenance(g6_destination_still_approach, confidence_permille, 960).
 provenance(g6_destination_still_approach, antecedent, a85).
-rule(g7_destination_still_approach, defeasible, neg(destination_still_approach)).
-body(g7_destination_still_approach, approach_raising).
-body(g7_destination_still_approach, pour_low).
+rule(g7_destination_still_approach, defeasible, destination_still_approach).
+body(g7_destination_still_approach, pour_below_rim).
+body(g7_destination_still_approach, pour_slightly_tilted).
 learned(g7_destination_still_approach).
 provenance(g7_destination_still_approach, layer, general).
 provenance(g7_destination_still_approach, level, 2).
-provenance(g7_destination_still_approach, support, 16).
-provenance(g7_destination_still_approach, kept, 14).
-provenance(g7_destination_still_approach, confidence_permille, 784).
-provenance(g7_destination_still_approach, antecedent, a81).
+provenance(g7_destination_still_approach, support, 4).
+provenance(g7_destination_still_approach, kept, 3).
+provenance(g7_destination_still_approach, confidence_permille, 594).
+provenance(g7_destination_still_approach, antecedent, a59).
 rule(g8_destination_still_approach, defeasible, destination_still_approach).
-body(g8_destination_still_approach, pour_low).
-body(g8_destination_still_approach, pour_slightly_tilted).
+body(g8_destination_still_approach, pour_below_rim).
+body(g8_destination_still_approach, pour_upright).
 learned(g8_destination_still_approach).
 provenance(g8_destination_still_approach, layer, general).
-provenance(g8_destination_still_approach, level, 1).
-provenance(g8_destination_still_approach, support, 7).
-provenance(g8_destination_still_approach, kept, 7).
-provenance(g8_destination_still_approach, confidence_permille, 943).
-provenance(g8_destination_still_approach, antecedent, a57).
-rule(g9_destination_still_approach, defeasible, neg(destination_still_approach)).
+provenance(g8_destination_still_approach, level, 2).
+provenance(g8_destination_still_approach, support, 6).
+provenance(g8_destination_still_approach, kept, 4).
+provenance(g8_destination_still_approach, confidence_permille, 563).
+provenance(g8_destination_still_approach, antecedent, a63).
+rule(g9_destination_still_approach, defeasible, destination_still_approach).
 body(g9_destination_still_approach, pour_below_rim).
-body(g9_destination_still_approach, pour_slightly_tilted).
+body(g9_destination_still_approach, pour_tilted_back).
 learned(g9_destination_still_approach).
 provenance(g9_destination_still_approach, layer, general).
-provenance(g9_destination_still_approach, level, 1).
-provenance(g9_destination_still_approach, support, 4).
-provenance(g9_destination_still_approach, kept, 1).
-provenance(g9_destination_still_approach, confidence_permille, 561).
-provenance(g9_destination_still_approach, antecedent, a59).
-rule(g10_destination_still_approach, defeasible, destination_still_approach).
-body(g10_destination_still_approach, pour_half_tilted).
-body(g10_destination_still_approach, pour_low).
+provenance(g9_destination_still_approach, level, 2).
+provenance(g9_destination_still_approach, support, 6).
+provenance(g9_destination_still_approach, kept, 4).
+provenance(g9_destination_still_approach, confidence_permille, 553).
+provenance(g9_destination_still_approach, antecedent, a60).
+rule(g10_destination_still_approach, defeasible, neg(destination_still_approach)).
+body(g10_destination_still_approach, heavy_destination).
+body(g10_destination_still_approach, pour_below_rim).
 learned(g10_destination_still_approach).
 provenance(g10_destination_still_approach, layer, general).
 provenance(g10_destination_still_approach, level, 1).
-provenance(g10_destination_still_approach, support, 9).
-provenance(g10_destination_still_approach, kept, 8).
-provenance(g10_destination_still_approach, confidence_permille, 903).
-provenance(g10_destination_still_approach, antecedent, a94).
+provenance(g10_destination_still_approach, support, 2).
+provenance(g10_destination_still_approach, kept, 0).
+provenance(g10_destination_still_approach, confidence_permille, 548).
+provenance(g10_destination_still_approach, antecedent, a87).
 rule(g11_destination_still_approach, defeasible, neg(destination_still_approach)).
 body(g11_destination_still_approach, pour_below_rim).
-body(g11_destination_still_approach, pour_upright).
+body(g11_destination_still_approach, pour_half_tilted).
 learned(g11_destination_still_approach).
 provenance(g11_destination_still_approach, layer, general).
 provenance(g11_destination_still_approach, level, 1).
-provenance(g11_destination_still_approach, support, 6).
-provenance(g11_destination_still_approach, kept, 2).
-provenance(g11_destination_still_approach, confidence_permille, 593).
-provenance(g11_destination_still_approach, antecedent, a63).
+provenance(g11_destination_still_approach, support, 10).
+provenance(g11_destination_still_approach, kept, 6).
+provenance(g11_destination_still_approach, confidence_permille, 624).
+provenance(g11_destination_still_approach, antecedent, a64).
 rule(g0_destination_still_retreat, defeasible, destination_still_retreat).
 learned(g0_destination_still_retreat).
 provenance(g0_destination_still_retreat, layer, general).
@@ -175,105 +177,106 @@ provenance(g1_destination_still_retreat, layer, general).
 provenance(g1_destination_still_retreat, level, 1).
 provenance(g1_destination_still_retreat, support, 210).
 provenance(g1_destination_still_retreat, kept, 155).
-provenance(g1_destination_still_retreat, confidence_permille, 741).
+provenance(g1_destination_still_retreat, confidence_permille, 738).
 provenance(g1_destination_still_retreat, antecedent, a4).
 rule(g2_destination_still_retreat, defeasible, destination_still_retreat).
-body(g2_destination_still_retreat, pour_far_away).
+body(g2_destination_still_retreat, end_below_rim).
 learned(g2_destination_still_retreat).
 provenance(g2_destination_still_retreat, layer, general).
 provenance(g2_destination_still_retreat, level, 1).
-provenance(g2_destination_still_retreat, support, 10).
-provenance(g2_destination_still_retreat, kept, 10).
-provenance(g2_destination_still_retreat, confidence_permille, 998).
-provenance(g2_destination_still_retreat, antecedent, a20).
+provenance(g2_destination_still_retreat, support, 8).
+provenance(g2_destination_still_retreat, kept, 4).
+provenance(g2_destination_still_retreat, confidence_permille, 604).
+provenance(g2_destination_still_retreat, antecedent, a7).
 rule(g3_destination_still_retreat, defeasible, destination_still_retreat).
-body(g3_destination_still_retreat, pour_low).
+body(g3_destination_still_retreat, pour_far_away).
 learned(g3_destination_still_retreat).
 provenance(g3_destination_still_retreat, layer, general).
 provenance(g3_destination_still_retreat, level, 1).
-provenance(g3_destination_still_retreat, support, 37).
-provenance(g3_destination_still_retreat, kept, 25).
-provenance(g3_destination_still_retreat, confidence_permille, 812).
-provenance(g3_destination_still_retreat, antecedent, a42).
+provenance(g3_destination_still_retreat, support, 10).
+provenance(g3_destination_still_retreat, kept, 10).
+provenance(g3_destination_still_retreat, confidence_permille, 999).
+provenance(g3_destination_still_retreat, antecedent, a20).
 rule(g4_destination_still_retreat, defeasible, destination_still_retreat).
-body(g4_destination_still_retreat, end_below_rim).
+body(g4_destination_still_retreat, approach_raising).
+body(g4_destination_still_retreat, pour_below_rim).
 learned(g4_destination_still_retreat).
 provenance(g4_destination_still_retreat, layer, general).
-provenance(g4_destination_still_retreat, level, 1).
-provenance(g4_destination_still_retreat, support, 8).
-provenance(g4_destination_still_retreat, kept, 4).
-provenance(g4_destination_still_retreat, confidence_permille, 812).
-provenance(g4_destination_still_retreat, antecedent, a7).
+provenance(g4_destination_still_retreat, level, 2).
+provenance(g4_destination_still_retreat, support, 7).
+provenance(g4_destination_still_retreat, kept, 5).
+provenance(g4_destination_still_retreat, confidence_permille, 678).
+provenance(g4_destination_still_retreat, antecedent, a68).
 rule(g5_destination_still_retreat, defeasible, destination_still_retreat).
-body(g5_destination_still_retreat, approach_raising).
 body(g5_destination_still_retreat, pour_below_rim).
+body(g5_destination_still_retreat, pour_slightly_tilted).
 learned(g5_destination_still_retreat).
 provenance(g5_destination_still_retreat, layer, general).
 provenance(g5_destination_still_retreat, level, 2).
-provenance(g5_destination_still_retreat, support, 7).
-provenance(g5_destination_still_retreat, kept, 5).
-provenance(g5_destination_still_retreat, confidence_permille, 613).
-provenance(g5_destination_still_retreat, antecedent, a68).
+provenance(g5_destination_still_retreat, support, 4).
+provenance(g5_destination_still_retreat, kept, 3).
+provenance(g5_destination_still_retreat, confidence_permille, 672).
+provenance(g5_destination_still_retreat, antecedent, a59).
 rule(g6_destination_still_retreat, defeasible, destination_still_retreat).
 body(g6_destination_still_retreat, pour_below_rim).
-body(g6_destination_still_retreat, pour_slightly_tilted).
+body(g6_destination_still_retreat, start_below_rim).
 learned(g6_destination_still_retreat).
 provenance(g6_destination_still_retreat, layer, general).
 provenance(g6_destination_still_retreat, level, 2).
-provenance(g6_destination_still_retreat, support, 4).
-provenance(g6_destination_still_retreat, kept, 3).
-provenance(g6_destination_still_retreat, confidence_permille, 595).
-provenance(g6_destination_still_retreat, antecedent, a59).
+provenance(g6_destination_still_retreat, support, 8).
+provenance(g6_destination_still_retreat, kept, 5).
+provenance(g6_destination_still_retreat, confidence_permille, 573).
+provenance(g6_destination_still_retreat, antecedent, a76).
 rule(g7_destination_still_retreat, defeasible, destination_still_retreat).
 body(g7_destination_still_retreat, pour_below_rim).
-body(g7_destination_still_retreat, pour_upright).
+body(g7_destination_still_retreat, pour_half_tilted).
 learned(g7_destination_still_retreat).
 provenance(g7_destination_still_retreat, layer, general).
 provenance(g7_destination_still_retreat, level, 2).
-provenance(g7_destination_still_retreat, support, 6).
-provenance(g7_destination_still_retreat, kept, 3).
-provenance(g7_destination_still_retreat, confidence_permille, 542).
-provenance(g7_destination_still_retreat, antecedent, a63).
+provenance(g7_destination_still_retreat, support, 10).
+provenance(g7_destination_still_retreat, kept, 6).
+provenance(g7_destination_still_retreat, confidence_permille, 561).
+provenance(g7_destination_still_retreat, antecedent, a64).
 rule(g8_destination_still_retreat, defeasible, destination_still_retreat).
 body(g8_destination_still_retreat, pour_below_rim).
-body(g8_destination_still_retreat, pour_tilted_back).
+body(g8_destination_still_retreat, pour_upright).
 learned(g8_destination_still_retreat).
 provenance(g8_destination_still_retreat, layer, general).
 provenance(g8_destination_still_retreat, level, 2).
 provenance(g8_destination_still_retreat, support, 6).
 provenance(g8_destination_still_retreat, kept, 3).
-provenance(g8_destination_still_retreat, confidence_permille, 538).
-provenance(g8_destination_still_retreat, antecedent, a60).
-rule(g9_destination_still_retreat, defeasible, neg(destination_still_retreat)).
+provenance(g8_destination_still_retreat, confidence_permille, 517).
+provenance(g8_destination_still_retreat, antecedent, a63).
+rule(g9_destination_still_retreat, defeasible, destination_still_retreat).
 body(g9_destination_still_retreat, pour_below_rim).
-body(g9_destination_still_retreat, start_below_rim).
+body(g9_destination_still_retreat, pour_tilted_back).
 learned(g9_destination_still_retreat).
 provenance(g9_destination_still_retreat, layer, general).
-provenance(g9_destination_still_retreat, level, 1).
-provenance(g9_destination_still_retreat, support, 8).
+provenance(g9_destination_still_retreat, level, 2).
+provenance(g9_destination_still_retreat, support, 6).
 provenance(g9_destination_still_retreat, kept, 3).
-provenance(g9_destination_still_retreat, confidence_permille, 532).
-provenance(g9_destination_still_retreat, antecedent, a76).
+provenance(g9_destination_still_retreat, confidence_permille, 515).
+provenance(g9_destination_still_retreat, antecedent, a60).
 rule(g10_destination_still_retreat, defeasible, neg(destination_still_retreat)).
+body(g10_destination_still_retreat, light_liquid).
 body(g10_destination_still_retreat, pour_below_rim).
-body(g10_destination_still_retreat, pour_half_tilted).
 learned(g10_destination_still_retreat).
 provenance(g10_destination_still_retreat, layer, general).
 provenance(g10_destination_still_retreat, level, 1).
-provenance(g10_destination_still_retreat, support, 10).
-provenance(g10_destination_still_retreat, kept, 4).
-provenance(g10_destination_still_retreat, confidence_permille, 537).
-provenance(g10_destination_still_retreat, antecedent, a64).
+provenance(g10_destination_still_retreat, support, 2).
+provenance(g10_destination_still_retreat, kept, 0).
+provenance(g10_destination_still_retreat, confidence_permille, 513).
+provenance(g10_destination_still_retreat, antecedent, a82).
 rule(g11_destination_still_retreat, defeasible, neg(destination_still_retreat)).
+body(g11_destination_still_retreat, approach_lowering).
 body(g11_destination_still_retreat, pour_below_rim).
-body(g11_destination_still_retreat, start_low).
 learned(g11_destination_still_retreat).
 provenance(g11_destination_still_retreat, layer, general).
 provenance(g11_destination_still_retreat, level, 1).
-provenance(g11_destination_still_retreat, support, 8).
-provenance(g11_destination_still_retreat, kept, 5).
-provenance(g11_destination_still_retreat, confidence_permille, 586).
-provenance(g11_destination_still_retreat, antecedent, a75).
+provenance(g11_destination_still_retreat, support, 49).
+provenance(g11_destination_still_retreat, kept, 25).
+provenance(g11_destination_still_retreat, confidence_permille, 516).
+provenance(g11_destination_still_retreat, antecedent, a104).
 rule(g0_destination_still_settle, defeasible, destination_still_settle).
 learned(g0_destination_still_settle).
 provenance(g0_destination_still_settle, layer, general).
@@ -283,14 +286,15 @@ provenance(g0_destination_still_settle, kept, 18).
 provenance(g0_destination_still_settle, confidence_permille, 999).
 provenance(g0_destination_still_settle, antecedent, a1).
 rule(g1_destination_still_settle, defeasible, destination_still_settle).
+body(g1_destination_still_settle, grippy_destination).
 body(g1_destination_still_settle, pour_below_rim).
 learned(g1_destination_still_settle).
 provenance(g1_destination_still_settle, layer, general).
 provenance(g1_destination_still_settle, level, 1).
-provenance(g1_destination_still_settle, support, 210).
-provenance(g1_destination_still_settle, kept, 162).
-provenance(g1_destination_still_settle, confidence_permille, 852).
-provenance(g1_destination_still_settle, antecedent, a4).
+provenance(g1_destination_still_settle, support, 6).
+provenance(g1_destination_still_settle, kept, 3).
+provenance(g1_destination_still_settle, confidence_permille, 611).
+provenance(g1_destination_still_settle, antecedent, a74).
 rule(g0_destination_upright, defeasible, destination_upright).
 learned(g0_destination_upright).
 provenance(g0_destination_upright, layer, general).
@@ -301,13 +305,33 @@ provenance(g0_destination_upright, confidence_permille, 999).
 provenance(g0_destination_upright, antecedent, a1).
 rule(g1_destination_upright, defeasible, destination_upright).
 body(g1_destination_upright, pour_below_rim).
+body(g1_destination_upright, retreat_moving_closer).
 learned(g1_destination_upright).
 provenance(g1_destination_upright, layer, general).
 provenance(g1_destination_upright, level, 1).
-provenance(g1_destination_upright, support, 210).
-provenance(g1_destination_upright, kept, 162).
-provenance(g1_destination_upright, confidence_permille, 873).
-provenance(g1_destination_upright, antecedent, a4).
+provenance(g1_destination_upright, support, 2).
+provenance(g1_destination_upright, kept, 0).
+provenance(g1_destination_upright, confidence_permille, 542).
+provenance(g1_destination_upright, antecedent, a62).
+rule(g2_destination_upright, defeasible, destination_upright).
+body(g2_destination_upright, end_below_rim).
+learned(g2_destination_upright).
+provenance(g2_destination_upright, layer, general).
+provenance(g2_destination_upright, level, 1).
+provenance(g2_destination_upright, support, 8).
+provenance(g2_destination_upright, kept, 6).
+provenance(g2_destination_upright, confidence_permille, 822).
+provenance(g2_destination_upright, antecedent, a7).
+rule(g3_destination_upright, defeasible, destination_upright).
+body(g3_destination_upright, end_tilted_back).
+body(g3_destination_upright, pour_below_rim).
+learned(g3_destination_upright).
+provenance(g3_destination_upright, layer, general).
+provenance(g3_destination_upright, level, 1).
+provenance(g3_destination_upright, support, 2).
+provenance(g3_destination_upright, kept, 0).
+provenance(g3_destination_upright, confidence_permille, 590).
+provenance(g3_destination_upright, antecedent, a73).
 rule(g0_source_clear, defeasible, source_clear).
 learned(g0_source_clear).
 provenance(g0_source_clear, layer, general).
@@ -323,7 +347,7 @@ provenance(g1_source_clear, layer, general).
 provenance(g1_source_clear, level, 1).
 provenance(g1_source_clear, support, 210).
 provenance(g1_source_clear, kept, 210).
-provenance(g1_source_clear, confidence_permille, 997).
+provenance(g1_source_clear, confidence_permille, 1000).
 provenance(g1_source_clear, antecedent, a4).
 rule(g2_source_clear, defeasible, neg(source_clear)).
 body(g2_source_clear, pour_low).
@@ -332,7 +356,7 @@ provenance(g2_source_clear, layer, general).
 provenance(g2_source_clear, level, 1).
 provenance(g2_source_clear, support, 37).
 provenance(g2_source_clear, kept, 25).
-provenance(g2_source_clear, confidence_permille, 657).
+provenance(g2_source_clear, confidence_permille, 674).
 provenance(g2_source_clear, antecedent, a42).
 rule(g3_source_clear, defeasible, neg(source_clear)).
 body(g3_source_clear, end_below_rim).
@@ -341,7 +365,7 @@ provenance(g3_source_clear, layer, general).
 provenance(g3_source_clear, level, 1).
 provenance(g3_source_clear, support, 8).
 provenance(g3_source_clear, kept, 6).
-provenance(g3_source_clear, confidence_permille, 501).
+provenance(g3_source_clear, confidence_permille, 667).
 provenance(g3_source_clear, antecedent, a7).
 rule(g4_source_clear, defeasible, source_clear).
 body(g4_source_clear, start_below_rim).
@@ -350,7 +374,7 @@ provenance(g4_source_clear, layer, general).
 provenance(g4_source_clear, level, 1).
 provenance(g4_source_clear, support, 20).
 provenance(g4_source_clear, kept, 10).
-provenance(g4_source_clear, confidence_permille, 585).
+provenance(g4_source_clear, confidence_permille, 514).
 provenance(g4_source_clear, antecedent, a2).
 rule(g5_source_clear, defeasible, source_clear).
 body(g5_source_clear, pour_to_side).
@@ -359,7 +383,7 @@ provenance(g5_source_clear, layer, general).
 provenance(g5_source_clear, level, 1).
 provenance(g5_source_clear, support, 23).
 provenance(g5_source_clear, kept, 23).
-provenance(g5_source_clear, confidence_permille, 992).
+provenance(g5_source_clear, confidence_permille, 999).
 provenance(g5_source_clear, antecedent, a18).
 rule(g6_source_clear, defeasible, source_clear).
 body(g6_source_clear, pour_below_rim).
@@ -369,38 +393,36 @@ provenance(g6_source_clear, layer, general).
 provenance(g6_source_clear, level, 2).
 provenance(g6_source_clear, support, 12).
 provenance(g6_source_clear, kept, 12).
-provenance(g6_source_clear, confidence_permille, 986).
+provenance(g6_source_clear, confidence_permille, 996).
 provenance(g6_source_clear, antecedent, a55).
 rule(g7_source_clear, defeasible, source_clear).
-body(g7_source_clear, pour_low).
 body(g7_source_clear, pour_slightly_tilted).
 learned(g7_source_clear).
 provenance(g7_source_clear, layer, general).
-provenance(g7_source_clear, level, 2).
-provenance(g7_source_clear, support, 7).
+provenance(g7_source_clear, level, 1).
+provenance(g7_source_clear, support, 6).
 provenance(g7_source_clear, kept, 6).
-provenance(g7_source_clear, confidence_permille, 809).
-provenance(g7_source_clear, antecedent, a57).
+provenance(g7_source_clear, confidence_permille, 999).
+provenance(g7_source_clear, antecedent, a45).
 rule(g8_source_clear, defeasible, source_clear).
 body(g8_source_clear, pour_half_tilted).
-body(g8_source_clear, pour_low).
 learned(g8_source_clear).
 provenance(g8_source_clear, layer, general).
-provenance(g8_source_clear, level, 2).
-provenance(g8_source_clear, support, 9).
-provenance(g8_source_clear, kept, 7).
-provenance(g8_source_clear, confidence_permille, 685).
-provenance(g8_source_clear, antecedent, a94).
+provenance(g8_source_clear, level, 1).
+provenance(g8_source_clear, support, 13).
+provenance(g8_source_clear, kept, 13).
+provenance(g8_source_clear, confidence_permille, 999).
+provenance(g8_source_clear, antecedent, a48).
 rule(g9_source_clear, defeasible, neg(source_clear)).
-body(g9_source_clear, end_below_rim).
-body(g9_source_clear, pour_offset_sideways).
+body(g9_source_clear, pour_low).
+body(g9_source_clear, slippery_source).
 learned(g9_source_clear).
 provenance(g9_source_clear, layer, general).
 provenance(g9_source_clear, level, 1).
-provenance(g9_source_clear, support, 6).
-provenance(g9_source_clear, kept, 4).
-provenance(g9_source_clear, confidence_permille, 651).
-provenance(g9_source_clear, antecedent, a103).
+provenance(g9_source_clear, support, 3).
+provenance(g9_source_clear, kept, 1).
+provenance(g9_source_clear, confidence_permille, 528).
+provenance(g9_source_clear, antecedent, a96).
 rule(g10_source_clear, defeasible, neg(source_clear)).
 body(g10_source_clear, pour_low).
 body(g10_source_clear, pour_steeply_tilted).
@@ -409,8 +431,17 @@ provenance(g10_source_clear, layer, general).
 provenance(g10_source_clear, level, 1).
 provenance(g10_source_clear, support, 19).
 provenance(g10_source_clear, kept, 11).
-provenance(g10_source_clear, confidence_permille, 515).
+provenance(g10_source_clear, confidence_permille, 568).
 provenance(g10_source_clear, antecedent, a105).
+rule(g11_source_clear, defeasible, source_clear).
+body(g11_source_clear, dull_destination).
+learned(g11_source_clear).
+provenance(g11_source_clear, layer, general).
+provenance(g11_source_clear, level, 1).
+provenance(g11_source_clear, support, 4).
+provenance(g11_source_clear, kept, 3).
+provenance(g11_source_clear, confidence_permille, 849).
+provenance(g11_source_clear, antecedent, a11).
 rule(g0_liquid_leaves_source, defeasible, liquid_leaves_source).
 learned(g0_liquid_leaves_source).
 provenance(g0_liquid_leaves_source, layer, general).
@@ -462,7 +493,7 @@ provenance(g5_liquid_leaves_source, layer, general).
 provenance(g5_liquid_leaves_source, level, 1).
 provenance(g5_liquid_leaves_source, support, 23).
 provenance(g5_liquid_leaves_source, kept, 16).
-provenance(g5_liquid_leaves_source, confidence_permille, 791).
+provenance(g5_liquid_leaves_source, confidence_permille, 710).
 provenance(g5_liquid_leaves_source, antecedent, a53).
 rule(g0_liquid_enters_destination, defeasible, liquid_enters_destination).
 learned(g0_liquid_enters_destination).
@@ -479,26 +510,26 @@ provenance(g1_liquid_enters_destination, layer, general).
 provenance(g1_liquid_enters_destination, level, 1).
 provenance(g1_liquid_enters_destination, support, 23).
 provenance(g1_liquid_enters_destination, kept, 15).
-provenance(g1_liquid_enters_destination, confidence_permille, 828).
+provenance(g1_liquid_enters_destination, confidence_permille, 678).
 provenance(g1_liquid_enters_destination, antecedent, a18).
 rule(g2_liquid_enters_destination, defeasible, neg(liquid_enters_destination)).
-body(g2_liquid_enters_destination, pour_offset_sideways).
+body(g2_liquid_enters_destination, pour_far_away).
 learned(g2_liquid_enters_destination).
 provenance(g2_liquid_enters_destination, layer, general).
 provenance(g2_liquid_enters_destination, level, 1).
-provenance(g2_liquid_enters_destination, support, 32).
-provenance(g2_liquid_enters_destination, kept, 20).
-provenance(g2_liquid_enters_destination, confidence_permille, 665).
-provenance(g2_liquid_enters_destination, antecedent, a34).
+provenance(g2_liquid_enters_destination, support, 10).
+provenance(g2_liquid_enters_destination, kept, 10).
+provenance(g2_liquid_enters_destination, confidence_permille, 991).
+provenance(g2_liquid_enters_destination, antecedent, a20).
 rule(g3_liquid_enters_destination, defeasible, neg(liquid_enters_destination)).
-body(g3_liquid_enters_destination, pour_far_away).
+body(g3_liquid_enters_destination, pour_offset_sideways).
 learned(g3_liquid_enters_destination).
 provenance(g3_liquid_enters_destination, layer, general).
 provenance(g3_liquid_enters_destination, level, 1).
-provenance(g3_liquid_enters_destination, support, 10).
-provenance(g3_liquid_enters_destination, kept, 10).
-provenance(g3_liquid_enters_destination, confidence_permille, 968).
-provenance(g3_liquid_enters_destination, antecedent, a20).
+provenance(g3_liquid_enters_destination, support, 32).
+provenance(g3_liquid_enters_destination, kept, 20).
+provenance(g3_liquid_enters_destination, confidence_permille, 629).
+provenance(g3_liquid_enters_destination, antecedent, a34).
 rule(g4_liquid_enters_destination, defeasible, neg(liquid_enters_destination)).
 body(g4_liquid_enters_destination, pour_slightly_tilted).
 learned(g4_liquid_enters_destination).
@@ -506,35 +537,35 @@ provenance(g4_liquid_enters_destination, layer, general).
 provenance(g4_liquid_enters_destination, level, 1).
 provenance(g4_liquid_enters_destination, support, 6).
 provenance(g4_liquid_enters_destination, kept, 6).
-provenance(g4_liquid_enters_destination, confidence_permille, 962).
+provenance(g4_liquid_enters_destination, confidence_permille, 985).
 provenance(g4_liquid_enters_destination, antecedent, a45).
 rule(g5_liquid_enters_destination, defeasible, neg(liquid_enters_destination)).
-body(g5_liquid_enters_destination, pour_half_tilted).
+body(g5_liquid_enters_destination, pour_upright).
 learned(g5_liquid_enters_destination).
 provenance(g5_liquid_enters_destination, layer, general).
 provenance(g5_liquid_enters_destination, level, 1).
-provenance(g5_liquid_enters_destination, support, 13).
-provenance(g5_liquid_enters_destination, kept, 13).
-provenance(g5_liquid_enters_destination, confidence_permille, 890).
-provenance(g5_liquid_enters_destination, antecedent, a48).
+provenance(g5_liquid_enters_destination, support, 4).
+provenance(g5_liquid_enters_destination, kept, 4).
+provenance(g5_liquid_enters_destination, confidence_permille, 982).
+provenance(g5_liquid_enters_destination, antecedent, a47).
 rule(g6_liquid_enters_destination, defeasible, neg(liquid_enters_destination)).
-body(g6_liquid_enters_destination, pour_upright).
+body(g6_liquid_enters_destination, pour_tilted_back).
 learned(g6_liquid_enters_destination).
 provenance(g6_liquid_enters_destination, layer, general).
 provenance(g6_liquid_enters_destination, level, 1).
 provenance(g6_liquid_enters_destination, support, 4).
 provenance(g6_liquid_enters_destination, kept, 4).
-provenance(g6_liquid_enters_destination, confidence_permille, 964).
-provenance(g6_liquid_enters_destination, antecedent, a47).
+provenance(g6_liquid_enters_destination, confidence_permille, 981).
+provenance(g6_liquid_enters_destination, antecedent, a43).
 rule(g7_liquid_enters_destination, defeasible, neg(liquid_enters_destination)).
-body(g7_liquid_enters_destination, pour_tilted_back).
+body(g7_liquid_enters_destination, pour_half_tilted).
 learned(g7_liquid_enters_destination).
 provenance(g7_liquid_enters_destination, layer, general).
 provenance(g7_liquid_enters_destination, level, 1).
-provenance(g7_liquid_enters_destination, support, 4).
-provenance(g7_liquid_enters_destination, kept, 4).
-provenance(g7_liquid_enters_destination, confidence_permille, 962).
-provenance(g7_liquid_enters_destination, antecedent, a43).
+provenance(g7_liquid_enters_destination, support, 13).
+provenance(g7_liquid_enters_destination, kept, 13).
+provenance(g7_liquid_enters_destination, confidence_permille, 974).
+provenance(g7_liquid_enters_destination, antecedent, a48).
 rule(g8_liquid_enters_destination, defeasible, liquid_enters_destination).
 body(g8_liquid_enters_destination, pour_below_rim).
 learned(g8_liquid_enters_destination).
@@ -542,28 +573,28 @@ provenance(g8_liquid_enters_destination, layer, general).
 provenance(g8_liquid_enters_destination, level, 1).
 provenance(g8_liquid_enters_destination, support, 210).
 provenance(g8_liquid_enters_destination, kept, 150).
-provenance(g8_liquid_enters_destination, confidence_permille, 765).
+provenance(g8_liquid_enters_destination, confidence_permille, 715).
 provenance(g8_liquid_enters_destination, antecedent, a4).
-rule(g9_liquid_enters_destination, defeasible, neg(liquid_enters_destination)).
+rule(g9_liquid_enters_destination, defeasible, liquid_enters_destination).
 body(g9_liquid_enters_destination, pour_below_rim).
-body(g9_liquid_enters_destination, start_below_rim).
+body(g9_liquid_enters_destination, pour_half_tilted).
 learned(g9_liquid_enters_destination).
 provenance(g9_liquid_enters_destination, layer, general).
 provenance(g9_liquid_enters_destination, level, 2).
-provenance(g9_liquid_enters_destination, support, 8).
-provenance(g9_liquid_enters_destination, kept, 8).
-provenance(g9_liquid_enters_destination, confidence_permille, 943).
-provenance(g9_liquid_enters_destination, antecedent, a76).
-rule(g10_liquid_enters_destination, defeasible, neg(liquid_enters_destination)).
-body(g10_liquid_enters_destination, approach_raising).
-body(g10_liquid_enters_destination, pour_low).
+provenance(g9_liquid_enters_destination, support, 10).
+provenance(g9_liquid_enters_destination, kept, 10).
+provenance(g9_liquid_enters_destination, confidence_permille, 898).
+provenance(g9_liquid_enters_destination, antecedent, a64).
+rule(g10_liquid_enters_destination, defeasible, liquid_enters_destination).
+body(g10_liquid_enters_destination, pour_below_rim).
+body(g10_liquid_enters_destination, pour_slightly_tilted).
 learned(g10_liquid_enters_destination).
 provenance(g10_liquid_enters_destination, layer, general).
-provenance(g10_liquid_enters_destination, level, 1).
-provenance(g10_liquid_enters_destination, support, 16).
-provenance(g10_liquid_enters_destination, kept, 12).
-provenance(g10_liquid_enters_destination, confidence_permille, 723).
-provenance(g10_liquid_enters_destination, antecedent, a81).
+provenance(g10_liquid_enters_destination, level, 2).
+provenance(g10_liquid_enters_destination, support, 4).
+provenance(g10_liquid_enters_destination, kept, 4).
+provenance(g10_liquid_enters_destination, confidence_permille, 829).
+provenance(g10_liquid_enters_destination, antecedent, a59).
 rule(g11_liquid_enters_destination, defeasible, neg(liquid_enters_destination)).
 body(g11_liquid_enters_destination, pour_low).
 body(g11_liquid_enters_destination, start_below_rim).
@@ -572,7 +603,7 @@ provenance(g11_liquid_enters_destination, layer, general).
 provenance(g11_liquid_enters_destination, level, 1).
 provenance(g11_liquid_enters_destination, support, 12).
 provenance(g11_liquid_enters_destination, kept, 10).
-provenance(g11_liquid_enters_destination, confidence_permille, 713).
+provenance(g11_liquid_enters_destination, confidence_permille, 803).
 provenance(g11_liquid_enters_destination, antecedent, a85).
 rule(g0_liquid_remains_in_destination, defeasible, liquid_remains_in_destination).
 learned(g0_liquid_remains_in_destination).
@@ -589,38 +620,38 @@ provenance(g1_liquid_remains_in_destination, layer, general).
 provenance(g1_liquid_remains_in_destination, level, 1).
 provenance(g1_liquid_remains_in_destination, support, 210).
 provenance(g1_liquid_remains_in_destination, kept, 124).
-provenance(g1_liquid_remains_in_destination, confidence_permille, 634).
+provenance(g1_liquid_remains_in_destination, confidence_permille, 591).
 provenance(g1_liquid_remains_in_destination, antecedent, a4).
 rule(g2_liquid_remains_in_destination, defeasible, neg(liquid_remains_in_destination)).
-body(g2_liquid_remains_in_destination, pour_below_rim).
-body(g2_liquid_remains_in_destination, pour_slightly_tilted).
+body(g2_liquid_remains_in_destination, pour_half_tilted).
+body(g2_liquid_remains_in_destination, pour_low).
 learned(g2_liquid_remains_in_destination).
 provenance(g2_liquid_remains_in_destination, layer, general).
-provenance(g2_liquid_remains_in_destination, level, 2).
-provenance(g2_liquid_remains_in_destination, support, 4).
-provenance(g2_liquid_remains_in_destination, kept, 4).
-provenance(g2_liquid_remains_in_destination, confidence_permille, 843).
-provenance(g2_liquid_remains_in_destination, antecedent, a59).
+provenance(g2_liquid_remains_in_destination, level, 1).
+provenance(g2_liquid_remains_in_destination, support, 9).
+provenance(g2_liquid_remains_in_destination, kept, 6).
+provenance(g2_liquid_remains_in_destination, confidence_permille, 567).
+provenance(g2_liquid_remains_in_destination, antecedent, a94).
 rule(g3_liquid_remains_in_destination, defeasible, neg(liquid_remains_in_destination)).
 body(g3_liquid_remains_in_destination, pour_below_rim).
-body(g3_liquid_remains_in_destination, pour_tilted_back).
+body(g3_liquid_remains_in_destination, pour_half_tilted).
 learned(g3_liquid_remains_in_destination).
 provenance(g3_liquid_remains_in_destination, layer, general).
 provenance(g3_liquid_remains_in_destination, level, 2).
-provenance(g3_liquid_remains_in_destination, support, 6).
-provenance(g3_liquid_remains_in_destination, kept, 4).
-provenance(g3_liquid_remains_in_destination, confidence_permille, 841).
-provenance(g3_liquid_remains_in_destination, antecedent, a60).
+provenance(g3_liquid_remains_in_destination, support, 10).
+provenance(g3_liquid_remains_in_destination, kept, 10).
+provenance(g3_liquid_remains_in_destination, confidence_permille, 951).
+provenance(g3_liquid_remains_in_destination, antecedent, a64).
 rule(g4_liquid_remains_in_destination, defeasible, neg(liquid_remains_in_destination)).
 body(g4_liquid_remains_in_destination, pour_below_rim).
-body(g4_liquid_remains_in_destination, pour_half_tilted).
+body(g4_liquid_remains_in_destination, pour_slightly_tilted).
 learned(g4_liquid_remains_in_destination).
 provenance(g4_liquid_remains_in_destination, layer, general).
 provenance(g4_liquid_remains_in_destination, level, 2).
-provenance(g4_liquid_remains_in_destination, support, 10).
-provenance(g4_liquid_remains_in_destination, kept, 10).
-provenance(g4_liquid_remains_in_destination, confidence_permille, 829).
-provenance(g4_liquid_remains_in_destination, antecedent, a64).
+provenance(g4_liquid_remains_in_destination, support, 4).
+provenance(g4_liquid_remains_in_destination, kept, 4).
+provenance(g4_liquid_remains_in_destination, confidence_permille, 922).
+provenance(g4_liquid_remains_in_destination, antecedent, a59).
 rule(g5_liquid_remains_in_destination, defeasible, neg(liquid_remains_in_destination)).
 body(g5_liquid_remains_in_destination, pour_below_rim).
 body(g5_liquid_remains_in_destination, pour_upright).
@@ -629,28 +660,28 @@ provenance(g5_liquid_remains_in_destination, layer, general).
 provenance(g5_liquid_remains_in_destination, level, 2).
 provenance(g5_liquid_remains_in_destination, support, 6).
 provenance(g5_liquid_remains_in_destination, kept, 5).
-provenance(g5_liquid_remains_in_destination, confidence_permille, 802).
+provenance(g5_liquid_remains_in_destination, confidence_permille, 821).
 provenance(g5_liquid_remains_in_destination, antecedent, a63).
 rule(g6_liquid_remains_in_destination, defeasible, liquid_remains_in_destination).
-body(g6_liquid_remains_in_destination, approach_raising).
 body(g6_liquid_remains_in_destination, pour_below_rim).
+body(g6_liquid_remains_in_destination, pour_far_away).
 learned(g6_liquid_remains_in_destination).
 provenance(g6_liquid_remains_in_destination, layer, general).
 provenance(g6_liquid_remains_in_destination, level, 1).
-provenance(g6_liquid_remains_in_destination, support, 7).
-provenance(g6_liquid_remains_in_destination, kept, 7).
-provenance(g6_liquid_remains_in_destination, confidence_permille, 954).
-provenance(g6_liquid_remains_in_destination, antecedent, a68).
+provenance(g6_liquid_remains_in_destination, support, 12).
+provenance(g6_liquid_remains_in_destination, kept, 12).
+provenance(g6_liquid_remains_in_destination, confidence_permille, 985).
+provenance(g6_liquid_remains_in_destination, antecedent, a55).
 rule(g7_liquid_remains_in_destination, defeasible, liquid_remains_in_destination).
+body(g7_liquid_remains_in_destination, approach_raising).
 body(g7_liquid_remains_in_destination, pour_below_rim).
-body(g7_liquid_remains_in_destination, pour_far_away).
 learned(g7_liquid_remains_in_destination).
 provenance(g7_liquid_remains_in_destination, layer, general).
 provenance(g7_liquid_remains_in_destination, level, 1).
-provenance(g7_liquid_remains_in_destination, support, 12).
-provenance(g7_liquid_remains_in_destination, kept, 12).
-provenance(g7_liquid_remains_in_destination, confidence_permille, 941).
-provenance(g7_liquid_remains_in_destination, antecedent, a55).
+provenance(g7_liquid_remains_in_destination, support, 7).
+provenance(g7_liquid_remains_in_destination, kept, 7).
+provenance(g7_liquid_remains_in_destination, confidence_permille, 983).
+provenance(g7_liquid_remains_in_destination, antecedent, a68).
 rule(g8_liquid_remains_in_destination, defeasible, liquid_remains_in_destination).
 body(g8_liquid_remains_in_destination, pour_below_rim).
 body(g8_liquid_remains_in_destination, start_below_rim).
@@ -659,7 +690,7 @@ provenance(g8_liquid_remains_in_destination, layer, general).
 provenance(g8_liquid_remains_in_destination, level, 1).
 provenance(g8_liquid_remains_in_destination, support, 8).
 provenance(g8_liquid_remains_in_destination, kept, 8).
-provenance(g8_liquid_remains_in_destination, confidence_permille, 899).
+provenance(g8_liquid_remains_in_destination, confidence_permille, 966).
 provenance(g8_liquid_remains_in_destination, antecedent, a76).
 rule(g9_liquid_remains_in_destination, defeasible, liquid_remains_in_destination).
 body(g9_liquid_remains_in_destination, pour_below_rim).
@@ -669,28 +700,28 @@ provenance(g9_liquid_remains_in_destination, layer, general).
 provenance(g9_liquid_remains_in_destination, level, 1).
 provenance(g9_liquid_remains_in_destination, support, 8).
 provenance(g9_liquid_remains_in_destination, kept, 8).
-provenance(g9_liquid_remains_in_destination, confidence_permille, 896).
+provenance(g9_liquid_remains_in_destination, confidence_permille, 965).
 provenance(g9_liquid_remains_in_destination, antecedent, a75).
-rule(g10_liquid_remains_in_destination, defeasible, liquid_remains_in_destination).
-body(g10_liquid_remains_in_destination, approach_lowering).
+rule(g10_liquid_remains_in_destination, defeasible, neg(liquid_remains_in_destination)).
 body(g10_liquid_remains_in_destination, pour_below_rim).
+body(g10_liquid_remains_in_destination, pour_tilted_back).
 learned(g10_liquid_remains_in_destination).
 provenance(g10_liquid_remains_in_destination, layer, general).
-provenance(g10_liquid_remains_in_destination, level, 1).
-provenance(g10_liquid_remains_in_destination, support, 49).
-provenance(g10_liquid_remains_in_destination, kept, 42).
-provenance(g10_liquid_remains_in_destination, confidence_permille, 847).
-provenance(g10_liquid_remains_in_destination, antecedent, a104).
+provenance(g10_liquid_remains_in_destination, level, 2).
+provenance(g10_liquid_remains_in_destination, support, 6).
+provenance(g10_liquid_remains_in_destination, kept, 4).
+provenance(g10_liquid_remains_in_destination, confidence_permille, 737).
+provenance(g10_liquid_remains_in_destination, antecedent, a60).
 rule(g11_liquid_remains_in_destination, defeasible, liquid_remains_in_destination).
+body(g11_liquid_remains_in_destination, approach_lowering).
 body(g11_liquid_remains_in_destination, pour_below_rim).
-body(g11_liquid_remains_in_destination, retreat_lowering).
 learned(g11_liquid_remains_in_destination).
 provenance(g11_liquid_remains_in_destination, layer, general).
 provenance(g11_liquid_remains_in_destination, level, 1).
-provenance(g11_liquid_remains_in_destination, support, 4).
-provenance(g11_liquid_remains_in_destination, kept, 1).
-provenance(g11_liquid_remains_in_destination, confidence_permille, 804).
-provenance(g11_liquid_remains_in_destination, antecedent, a69).
+provenance(g11_liquid_remains_in_destination, support, 49).
+provenance(g11_liquid_remains_in_destination, kept, 42).
+provenance(g11_liquid_remains_in_destination, confidence_permille, 856).
+provenance(g11_liquid_remains_in_destination, antecedent, a104).
 rule(g0_no_spill, defeasible, no_spill).
 learned(g0_no_spill).
 provenance(g0_no_spill, layer, general).
@@ -706,7 +737,7 @@ provenance(g1_no_spill, layer, general).
 provenance(g1_no_spill, level, 1).
 provenance(g1_no_spill, support, 210).
 provenance(g1_no_spill, kept, 128).
-provenance(g1_no_spill, confidence_permille, 571).
+provenance(g1_no_spill, confidence_permille, 609).
 provenance(g1_no_spill, antecedent, a4).
 rule(g2_no_spill, defeasible, neg(no_spill)).
 body(g2_no_spill, pour_to_side).
@@ -715,7 +746,7 @@ provenance(g2_no_spill, layer, general).
 provenance(g2_no_spill, level, 1).
 provenance(g2_no_spill, support, 23).
 provenance(g2_no_spill, kept, 15).
-provenance(g2_no_spill, confidence_permille, 792).
+provenance(g2_no_spill, confidence_permille, 673).
 provenance(g2_no_spill, antecedent, a18).
 rule(g3_no_spill, defeasible, neg(no_spill)).
 body(g3_no_spill, pour_far_away).
@@ -724,7 +755,7 @@ provenance(g3_no_spill, layer, general).
 provenance(g3_no_spill, level, 1).
 provenance(g3_no_spill, support, 10).
 provenance(g3_no_spill, kept, 10).
-provenance(g3_no_spill, confidence_permille, 961).
+provenance(g3_no_spill, confidence_permille, 989).
 provenance(g3_no_spill, antecedent, a20).
 rule(g4_no_spill, defeasible, neg(no_spill)).
 body(g4_no_spill, pour_offset_sideways).
@@ -733,7 +764,7 @@ provenance(g4_no_spill, layer, general).
 provenance(g4_no_spill, level, 1).
 provenance(g4_no_spill, support, 32).
 provenance(g4_no_spill, kept, 20).
-provenance(g4_no_spill, confidence_permille, 632).
+provenance(g4_no_spill, confidence_permille, 626).
 provenance(g4_no_spill, antecedent, a34).
 rule(g5_no_spill, defeasible, no_spill).
 body(g5_no_spill, pour_half_tilted).
@@ -742,7 +773,7 @@ provenance(g5_no_spill, layer, general).
 provenance(g5_no_spill, level, 1).
 provenance(g5_no_spill, support, 13).
 provenance(g5_no_spill, kept, 13).
-provenance(g5_no_spill, confidence_permille, 999).
+provenance(g5_no_spill, confidence_permille, 1000).
 provenance(g5_no_spill, antecedent, a48).
 rule(g6_no_spill, defeasible, no_spill).
 body(g6_no_spill, pour_upright).
@@ -751,7 +782,7 @@ provenance(g6_no_spill, layer, general).
 provenance(g6_no_spill, level, 1).
 provenance(g6_no_spill, support, 4).
 provenance(g6_no_spill, kept, 4).
-provenance(g6_no_spill, confidence_permille, 999).
+provenance(g6_no_spill, confidence_permille, 1000).
 provenance(g6_no_spill, antecedent, a47).
 rule(g7_no_spill, defeasible, no_spill).
 body(g7_no_spill, pour_slightly_tilted).
@@ -760,85 +791,92 @@ provenance(g7_no_spill, layer, general).
 provenance(g7_no_spill, level, 1).
 provenance(g7_no_spill, support, 6).
 provenance(g7_no_spill, kept, 6).
-provenance(g7_no_spill, confidence_permille, 999).
+provenance(g7_no_spill, confidence_permille, 1000).
 provenance(g7_no_spill, antecedent, a45).
-rule(g8_no_spill, defeasible, neg(no_spill)).
-body(g8_no_spill, approach_raising).
-body(g8_no_spill, pour_low).
+rule(g8_no_spill, defeasible, no_spill).
+body(g8_no_spill, pour_very_high).
 learned(g8_no_spill).
 provenance(g8_no_spill, layer, general).
 provenance(g8_no_spill, level, 1).
-provenance(g8_no_spill, support, 16).
-provenance(g8_no_spill, kept, 12).
-provenance(g8_no_spill, confidence_permille, 671).
-provenance(g8_no_spill, antecedent, a81).
-rule(g9_no_spill, defeasible, no_spill).
-body(g9_no_spill, pour_tilted_back).
+provenance(g8_no_spill, support, 4).
+provenance(g8_no_spill, kept, 2).
+provenance(g8_no_spill, confidence_permille, 713).
+provenance(g8_no_spill, antecedent, a6).
+rule(g9_no_spill, defeasible, neg(no_spill)).
+body(g9_no_spill, pour_low).
+body(g9_no_spill, start_below_rim).
 learned(g9_no_spill).
 provenance(g9_no_spill, layer, general).
 provenance(g9_no_spill, level, 1).
-provenance(g9_no_spill, support, 4).
-provenance(g9_no_spill, kept, 4).
-provenance(g9_no_spill, confidence_permille, 999).
-provenance(g9_no_spill, antecedent, a43).
+provenance(g9_no_spill, support, 12).
+provenance(g9_no_spill, kept, 10).
+provenance(g9_no_spill, confidence_permille, 781).
+provenance(g9_no_spill, antecedent, a85).
 rule(g10_no_spill, defeasible, neg(no_spill)).
+body(g10_no_spill, approach_raising).
 body(g10_no_spill, pour_low).
-body(g10_no_spill, start_below_rim).
 learned(g10_no_spill).
 provenance(g10_no_spill, layer, general).
 provenance(g10_no_spill, level, 1).
-provenance(g10_no_spill, support, 12).
-provenance(g10_no_spill, kept, 10).
-provenance(g10_no_spill, confidence_permille, 623).
-provenance(g10_no_spill, antecedent, a85).
-rule(g11_no_spill, defeasible, neg(no_spill)).
-body(g11_no_spill, pour_below_rim).
-body(g11_no_spill, start_below_rim).
+provenance(g10_no_spill, support, 16).
+provenance(g10_no_spill, kept, 12).
+provenance(g10_no_spill, confidence_permille, 734).
+provenance(g10_no_spill, antecedent, a81).
+rule(g11_no_spill, defeasible, no_spill).
+body(g11_no_spill, pour_tilted_back).
 learned(g11_no_spill).
 provenance(g11_no_spill, layer, general).
 provenance(g11_no_spill, level, 1).
-provenance(g11_no_spill, support, 8).
-provenance(g11_no_spill, kept, 7).
-provenance(g11_no_spill, confidence_permille, 933).
-provenance(g11_no_spill, antecedent, a76).
-sup(g10_destination_still_approach, g6_destination_still_approach).
-sup(g10_destination_still_approach, g7_destination_still_approach).
+provenance(g11_no_spill, support, 4).
+provenance(g11_no_spill, kept, 4).
+provenance(g11_no_spill, confidence_permille, 1000).
+provenance(g11_no_spill, antecedent, a43).
+sup(g10_destination_still_approach, g2_destination_still_approach).
+sup(g10_destination_still_approach, g3_destination_still_approach).
 sup(g10_destination_still_retreat, g2_destination_still_retreat).
-sup(g10_destination_still_retreat, g4_destination_still_retreat).
-sup(g10_liquid_remains_in_destination, g2_liquid_remains_in_destination).
-sup(g10_liquid_remains_in_destination, g3_liquid_remains_in_destination).
-sup(g10_liquid_remains_in_destination, g4_liquid_remains_in_destination).
-sup(g10_liquid_remains_in_destination, g5_liquid_remains_in_destination).
+sup(g10_destination_still_retreat, g3_destination_still_retreat).
+sup(g10_liquid_enters_destination, g2_liquid_enters_destination).
+sup(g10_liquid_enters_destination, g3_liquid_enters_destination).
+sup(g10_no_spill, g11_no_spill).
 sup(g10_no_spill, g5_no_spill).
 sup(g10_no_spill, g6_no_spill).
 sup(g10_no_spill, g7_no_spill).
-sup(g10_no_spill, g9_no_spill).
+sup(g10_source_clear, g11_source_clear).
 sup(g10_source_clear, g4_source_clear).
 sup(g10_source_clear, g5_source_clear).
+sup(g11_destination_still_approach, g2_destination_still_approach).
 sup(g11_destination_still_approach, g3_destination_still_approach).
-sup(g11_destination_still_approach, g4_destination_still_approach).
 sup(g11_destination_still_retreat, g2_destination_still_retreat).
-sup(g11_destination_still_retreat, g4_destination_still_retreat).
-sup(g11_destination_still_retreat, g7_destination_still_retreat).
-sup(g11_destination_still_retreat, g8_destination_still_retreat).
+sup(g11_destination_still_retreat, g3_destination_still_retreat).
+sup(g11_destination_still_retreat, g9_destination_still_retreat).
+sup(g11_liquid_remains_in_destination, g10_liquid_remains_in_destination).
 sup(g11_liquid_remains_in_destination, g5_liquid_remains_in_destination).
-sup(g11_no_spill, g5_no_spill).
-sup(g11_no_spill, g6_no_spill).
-sup(g11_no_spill, g7_no_spill).
-sup(g11_no_spill, g9_no_spill).
-sup(g1_destination_still_approach, g4_destination_still_approach).
+sup(g11_no_spill, g1_no_spill).
+sup(g11_no_spill, g2_no_spill).
+sup(g11_no_spill, g3_no_spill).
+sup(g11_no_spill, g4_no_spill).
+sup(g11_source_clear, g2_source_clear).
+sup(g11_source_clear, g3_source_clear).
+sup(g1_destination_still_approach, g2_destination_still_approach).
+sup(g1_destination_still_retreat, g2_destination_still_retreat).
+sup(g1_source_clear, g11_source_clear).
 sup(g1_source_clear, g4_source_clear).
-sup(g2_destination_still_retreat, g1_destination_still_retreat).
-sup(g2_liquid_remains_in_destination, g11_liquid_remains_in_destination).
+sup(g1_source_clear, g7_source_clear).
+sup(g1_source_clear, g8_source_clear).
+sup(g2_liquid_enters_destination, g8_liquid_enters_destination).
 sup(g2_source_clear, g4_source_clear).
 sup(g3_destination_still_approach, g1_destination_still_approach).
-sup(g3_liquid_enters_destination, g8_liquid_enters_destination).
+sup(g3_destination_still_retreat, g1_destination_still_retreat).
 sup(g3_liquid_remains_in_destination, g11_liquid_remains_in_destination).
-sup(g4_destination_still_retreat, g1_destination_still_retreat).
+sup(g3_no_spill, g8_no_spill).
+sup(g3_source_clear, g4_source_clear).
+sup(g4_destination_still_approach, g3_destination_still_approach).
+sup(g4_destination_still_retreat, g10_destination_still_retreat).
 sup(g4_liquid_enters_destination, g8_liquid_enters_destination).
 sup(g4_liquid_remains_in_destination, g11_liquid_remains_in_destination).
-sup(g4_source_clear, g3_source_clear).
+sup(g5_destination_still_approach, g3_destination_still_approach).
 sup(g5_destination_still_retreat, g10_destination_still_retreat).
+sup(g5_destination_still_retreat, g11_destination_still_retreat).
 sup(g5_liquid_enters_destination, g8_liquid_enters_destination).
 sup(g5_no_spill, g1_no_spill).
 sup(g5_no_spill, g2_no_spill).
@@ -847,11 +885,9 @@ sup(g5_no_spill, g4_no_spill).
 sup(g5_source_clear, g2_source_clear).
 sup(g5_source_clear, g3_source_clear).
 sup(g6_destination_still_approach, g3_destination_still_approach).
-sup(g6_destination_still_approach, g5_destination_still_approach).
-sup(g6_destination_still_retreat, g11_destination_still_retreat).
-sup(g6_destination_still_retreat, g9_destination_still_retreat).
+sup(g6_destination_still_retreat, g10_destination_still_retreat).
 sup(g6_liquid_enters_destination, g8_liquid_enters_destination).
-sup(g6_liquid_remains_in_destination, g2_liquid_remains_in_destination).
+sup(g6_liquid_remains_in_destination, g10_liquid_remains_in_destination).
 sup(g6_liquid_remains_in_destination, g3_liquid_remains_in_destination).
 sup(g6_liquid_remains_in_destination, g4_liquid_remains_in_destination).
 sup(g6_liquid_remains_in_destination, g5_liquid_remains_in_destination).
@@ -860,12 +896,11 @@ sup(g6_no_spill, g2_no_spill).
 sup(g6_no_spill, g3_no_spill).
 sup(g6_no_spill, g4_no_spill).
 sup(g6_source_clear, g3_source_clear).
-sup(g6_source_clear, g9_source_clear).
-sup(g7_destination_still_approach, g3_destination_still_approach).
-sup(g7_destination_still_approach, g5_destination_still_approach).
-sup(g7_destination_still_retreat, g9_destination_still_retreat).
+sup(g7_destination_still_approach, g10_destination_still_approach).
+sup(g7_destination_still_retreat, g10_destination_still_retreat).
+sup(g7_destination_still_retreat, g11_destination_still_retreat).
 sup(g7_liquid_enters_destination, g8_liquid_enters_destination).
-sup(g7_liquid_remains_in_destination, g2_liquid_remains_in_destination).
+sup(g7_liquid_remains_in_destination, g10_liquid_remains_in_destination).
 sup(g7_liquid_remains_in_destination, g3_liquid_remains_in_destination).
 sup(g7_liquid_remains_in_destination, g4_liquid_remains_in_destination).
 sup(g7_liquid_remains_in_destination, g5_liquid_remains_in_destination).
@@ -873,36 +908,37 @@ sup(g7_no_spill, g1_no_spill).
 sup(g7_no_spill, g2_no_spill).
 sup(g7_no_spill, g3_no_spill).
 sup(g7_no_spill, g4_no_spill).
+sup(g7_source_clear, g2_source_clear).
 sup(g7_source_clear, g3_source_clear).
-sup(g7_source_clear, g9_source_clear).
-sup(g8_destination_still_approach, g6_destination_still_approach).
-sup(g8_destination_still_approach, g7_destination_still_approach).
-sup(g8_destination_still_retreat, g9_destination_still_retreat).
-sup(g8_liquid_enters_destination, g2_liquid_enters_destination).
-sup(g8_liquid_remains_in_destination, g2_liquid_remains_in_destination).
+sup(g8_destination_still_approach, g10_destination_still_approach).
+sup(g8_destination_still_retreat, g10_destination_still_retreat).
+sup(g8_destination_still_retreat, g11_destination_still_retreat).
+sup(g8_liquid_enters_destination, g3_liquid_enters_destination).
+sup(g8_liquid_remains_in_destination, g10_liquid_remains_in_destination).
 sup(g8_liquid_remains_in_destination, g3_liquid_remains_in_destination).
 sup(g8_liquid_remains_in_destination, g4_liquid_remains_in_destination).
 sup(g8_liquid_remains_in_destination, g5_liquid_remains_in_destination).
-sup(g8_no_spill, g5_no_spill).
-sup(g8_no_spill, g6_no_spill).
-sup(g8_no_spill, g7_no_spill).
-sup(g8_no_spill, g9_no_spill).
+sup(g8_no_spill, g2_no_spill).
+sup(g8_no_spill, g4_no_spill).
+sup(g8_source_clear, g2_source_clear).
 sup(g8_source_clear, g3_source_clear).
-sup(g8_source_clear, g9_source_clear).
-sup(g9_destination_still_approach, g3_destination_still_approach).
-sup(g9_destination_still_approach, g4_destination_still_approach).
-sup(g9_destination_still_retreat, g2_destination_still_retreat).
-sup(g9_destination_still_retreat, g4_destination_still_retreat).
-sup(g9_liquid_remains_in_destination, g2_liquid_remains_in_destination).
+sup(g9_destination_still_approach, g10_destination_still_approach).
+sup(g9_destination_still_retreat, g10_destination_still_retreat).
+sup(g9_liquid_enters_destination, g2_liquid_enters_destination).
+sup(g9_liquid_enters_destination, g3_liquid_enters_destination).
+sup(g9_liquid_remains_in_destination, g10_liquid_remains_in_destination).
 sup(g9_liquid_remains_in_destination, g3_liquid_remains_in_destination).
 sup(g9_liquid_remains_in_destination, g4_liquid_remains_in_destination).
 sup(g9_liquid_remains_in_destination, g5_liquid_remains_in_destination).
-sup(g9_no_spill, g1_no_spill).
-sup(g9_no_spill, g2_no_spill).
-sup(g9_no_spill, g3_no_spill).
-sup(g9_no_spill, g4_no_spill).
+sup(g9_no_spill, g11_no_spill).
+sup(g9_no_spill, g5_no_spill).
+sup(g9_no_spill, g6_no_spill).
+sup(g9_no_spill, g7_no_spill).
+sup(g9_source_clear, g11_source_clear).
 sup(g9_source_clear, g4_source_clear).
 sup(g9_source_clear, g5_source_clear).
+sup(g9_source_clear, g7_source_clear).
+sup(g9_source_clear, g8_source_clear).
 
 % The explored antecedents, with or without a rule of their own:
 % explored(A, Prop): the antecedent A says Prop (the ordinary pour,
