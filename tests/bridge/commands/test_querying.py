@@ -339,19 +339,19 @@ def test_the_shipped_theory_is_current_and_its_dfl_twin_agrees() -> None:
 
 
 def test_the_same_why_not_is_said_once(cli, tmp_path: Path) -> None:
-    """On the shipped theory's rules that say something (a body), less
-    those of pouring from the side, nothing applies to pouring from the
-    side: the nine "?" share why-nots (no rule concludes two of the
-    expectations that the default alone decided), each printed once with
-    the rules it names; the others point back to it."""
-    from pantarhei.bridge.theories.loading import load
-    from pantarhei.bridge.theories.model import Theory
+    """A theory whose rules need pouring high or centred (and, for no_spill,
+    pouring low): nothing applies to pouring from the side, and the nine "?"
+    share why-nots, each printed once with the rules it names; the others
+    point back to it."""
+    from pantarhei.theory.lexicon import load_vocabulary
 
-    shipped = load()
-    kept = [r for r in shipped.rules if r.body and "pour_to_side" not in r.body]
-    first = Theory(rules=kept, learned={r.id for r in kept})
+    lines = []
+    for e in load_vocabulary().expectation_names:
+        yes, no = ("pour_low", "pour_centred") if e == "no_spill" else ("pour_high", "pour_centred")
+        lines += [f"rule(h_{e}, defeasible, {e}).", f"body(h_{e}, {yes}).",
+                  f"rule(c_{e}, defeasible, neg({e})).", f"body(c_{e}, {no})."]
     f = tmp_path / "bodies.pl"
-    f.write_text(first.native())
+    f.write_text("\n".join(lines) + "\n")
     r = cli("ask", "pour from the side", "--theory", str(f))
     assert r.code == 0, r.err
     assert r.out.count("[?         ]") == 9
