@@ -197,10 +197,11 @@ def measure(oracle: str, seeds: Sequence[int], budgets: Sequence[int], store: Pa
                                                            random_scenes)
     from pantarhei.bridge.evaluation.questions import question_pours, questions
     from pantarhei.bridge.exploration.simulation import open_simulator
+    from pantarhei.theory import defaults
 
     asked = questions()
     how = {k: v for k, v in (executor or {}).items() if v is not None}
-    sim = open_simulator(oracle, how.get("executor", "local"), how.get("workers"),
+    sim = open_simulator(oracle, how.get("executor", defaults()["executor"]), how.get("workers"),
                          store.absolute(), how.get("ray_address"))
     settings = {**how, **(settings or {})}
     run = lambda P: np.asarray(sim.simulate(P, progress=False), dtype=float)  # noqa: E731
@@ -380,11 +381,13 @@ def _numbers(text: str) -> list[int]:
 def main(argv: Sequence[str] = ()) -> None:
     """The benchmark with the options `argv` (none: its defaults, as `make
     bench` runs it)."""
+    from pantarhei.bridge.commands.options import choices
     from pantarhei.oracle.store import DEFAULT_STORE
+    from pantarhei.theory import defaults
 
     p = argparse.ArgumentParser(prog="python -m benchmarks knowledge", description=__doc__,
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--oracle", default="pybullet")
+    p.add_argument("--oracle", default=defaults()["oracle"])
     p.add_argument("--seeds", default="101-105", help="seeds, e.g. 101-105 or 101,103")
     p.add_argument("--budgets", default="200,400,775", help="total pours, e.g. 200,400,775")
     p.add_argument("--methods", default=",".join(METHODS))
@@ -394,7 +397,7 @@ def main(argv: Sequence[str] = ()) -> None:
     p.add_argument("--fresh", action="store_true",
                    help="measure this run's rows again (default: keep the rows of "
                         "knowledge-ORACLE.json; the others are kept either way)")
-    p.add_argument("--executor", choices=("local", "ray", "inline"), default="local",
+    p.add_argument("--executor", choices=choices("executor"), default=defaults()["executor"],
                    help="where the pours are simulated, as explore's --executor (ray: a cluster)")
     p.add_argument("--workers", type=int, default=None, help="worker processes (default: one per core)")
     p.add_argument("--ray-address", default=None, metavar="ADDR",

@@ -30,9 +30,6 @@ NOT_A_SCORE = {"share", "p[i]"}
 #: of oracles and of executors, and each one's own name.
 NAMED_HERE = {"oracle/base.py", "oracle/physics.py", "oracle/executors.py",
               "oracle/local_executor.py"}
-#: A module whose copies are known and left for now: its --oracle and
-#: --executor flags are its own.
-KNOWN = {"benchmarks/knowledge.py"}
 
 
 def _files(suffix: str) -> list[Path]:
@@ -104,7 +101,7 @@ def test_no_source_compares_a_score_with_one_half_of_its_own():
 def test_no_source_names_the_default_oracle_executor_or_store():
     literals = {str(defaults()["oracle"]), str(defaults()["executor"]), str(defaults()["store"])}
     copies = {_rel(p): c for p in _files(".py")
-              if _rel(p) not in NAMED_HERE | KNOWN
+              if _rel(p) not in NAMED_HERE
               and (c := literal_copies(p.read_text(encoding="utf-8"), literals))}
     assert copies == {}, "the defaults are theory/defaults.pl's (pantarhei.theory.defaults)"
 
