@@ -179,10 +179,7 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
     asked = {0: learner.default_weight, 1: 1.0}
     if weights.doubt or weights.newness:
         with threadpool_limits(1):
-            h, new = batch_doubt(meaning, S, bodies, batch, seed, iteration)
-        doubts, news = (np.array([max(0.0, x[index[c]] - max((x[index[a]] for a in parents[c]
-                                                               if a), default=0.0))
-                                  for c in cands]) for x in (h, new))
+            doubts, news = beyond_parts(meaning, S, cands, parents, batch, seed, iteration)
     else:
         doubts = news = np.zeros(len(cands))
     value, dep, unc, doubt_of = [], [], [], []
@@ -207,6 +204,20 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
                            * (departure + weights.uncertainty * uncertainty)
                            + weights.doubt * doubt + weights.newness * float(new), 6))
     return Teaching(value, dep, unc, doubt_of, [round(float(x), 6) for x in news])
+
+
+def beyond_parts(meaning, S: np.ndarray, cands: Sequence[tuple[str, ...]],
+                 parents: dict[tuple[str, ...], list[tuple[str, ...]]], batch: int, seed: int,
+                 iteration: int) -> tuple[np.ndarray, np.ndarray]:
+    """Per candidate, its batch's doubt and newness (batch_doubt) less the
+    most that one of its parts (`parents`: the candidate with one
+    proposition less) gets, at least 0; the empty body is no part."""
+    parts = {c: [a for a in parents[c] if a] for c in cands}
+    bodies = list(dict.fromkeys([*cands, *(a for c in cands for a in parts[c])]))
+    index = {b: i for i, b in enumerate(bodies)}
+    h, new = batch_doubt(meaning, S, bodies, batch, seed, iteration)
+    return tuple(np.array([max(0.0, x[index[c]] - max((x[index[a]] for a in parts[c]), default=0.0))
+                           for c in cands]) for x in (h, new))
 
 
 def batch_doubt(meaning, S: np.ndarray, cands: Sequence[tuple[str, ...]], batch: int,

@@ -48,7 +48,7 @@ from pantarhei.theory.lexicon import load_vocabulary
 from pantarhei.bridge.evaluation.measures import verdicts
 from pantarhei.bridge.learning.askable import askable_bodies, together
 from pantarhei.bridge.learning.general_rules import General, GeneralRule, Sup, verdict
-from pantarhei.bridge.learning.meaning import Meaning
+from pantarhei.bridge.learning.meaning import Meaning, held_in_support
 
 
 @dataclass(frozen=True)
@@ -157,10 +157,9 @@ def _with_own_pours(T: np.ndarray, bodies: Sequence[tuple[str, ...]], P: np.ndar
     T = T.copy()
     for i, b in enumerate(bodies):
         if b:
-            m = in_support(P, b)
-            n = int(m.sum())
+            held, n = held_in_support(P, Y, b)
             if n:
-                T[i] = (Y[m].sum(axis=0) + k * T[i]) / (n + k)
+                T[i] = (held + k * T[i]) / (n + k)
     return T
 
 

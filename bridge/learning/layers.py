@@ -148,7 +148,7 @@ def explored_pours(explored: Sequence[tuple[str, Sequence[str]]], P: np.ndarray,
     expectation: what an answer cites for an antecedent explored that has
     no rule of its own. Pours with a failed simulation are left out."""
     from pantarhei.bridge.evaluation.measures import verdicts
-    from pantarhei.oracle.generative import in_support
+    from pantarhei.bridge.learning.meaning import held_in_support
     from pantarhei.theory.lexicon import load_vocabulary
 
     P = np.atleast_2d(np.asarray(P, dtype=float))
@@ -158,7 +158,7 @@ def explored_pours(explored: Sequence[tuple[str, Sequence[str]]], P: np.ndarray,
     names = load_vocabulary().expectation_names
     out = []
     for a, body in explored:
-        m = in_support(P, list(body)) if len(P) else np.zeros(0, dtype=bool)
+        held, n = held_in_support(P, Y, body)
         out.append({"id": str(a), "body": sorted(str(b) for b in body),
-                    "held": [[e, int(Y[m, k].sum()), int(m.sum())] for k, e in enumerate(names)]})
+                    "held": [[e, int(h), n] for e, h in zip(names, held)]})
     return out

@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING, Sequence
 
 import numpy as np
 
-from pantarhei.oracle.generative import InvalidAntecedent, normalise, sample
+from pantarhei.oracle.generative import InvalidAntecedent, in_support, normalise, sample
 
 if TYPE_CHECKING:
     from pantarhei.bridge.learning.generalize import Settings
@@ -32,6 +32,14 @@ if TYPE_CHECKING:
 def _seed(seed: int, body: Sequence[str]) -> int:
     return int(np.random.SeedSequence([int(seed), zlib.crc32(" ".join(body).encode())])
                .generate_state(1)[0])
+
+
+def held_in_support(P: np.ndarray, Y: np.ndarray, body: Sequence[str]) -> tuple[np.ndarray, int]:
+    """The evidence of pours P (verdicts Y) for `body`: per expectation,
+    how many of the pours that could have been drawn for it (in the
+    support of P(.|B)) hold it, and how many such pours there are."""
+    m = in_support(P, list(body)) if len(P) else np.zeros(0, dtype=bool)
+    return Y[m].sum(axis=0), int(m.sum())
 
 
 class Meaning:
