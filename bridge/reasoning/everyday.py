@@ -99,12 +99,11 @@ class Matcher:
 
 
 def plural(phrase: str) -> str:
-    """A regular expression for `phrase` and its plural (see the module's docstring)."""
-    *head, last = phrase.split()
-    stem = re.escape(last)
-    forms = rf"{re.escape(last[:-1])}(?:y|ies)" if last.endswith("y") and len(last) > 2 \
-        else rf"{stem}(?:e?s)?"
-    return " ".join([*(re.escape(w) for w in head), forms])
+    """A regular expression for `phrase` and its plurals: the words of
+    forms(), which the lookups match."""
+    *head, _ = phrase.split()
+    ends = "|".join(re.escape(f[-1]) for f in forms(phrase))
+    return " ".join([*(re.escape(w) for w in head), f"(?:{ends})"])
 
 
 def names(*words: str) -> tuple[str, ...]:
