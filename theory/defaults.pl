@@ -207,6 +207,16 @@ default(uncertain_band_permille, 150).
 % The pours of a batch of the learning curiosity (the others': parameters + 1).
 default(learn_batch, 2).
 
+% Plans (`pantarhei plan`, the report's plans; bridge/reasoning/plan_search.py):
+% a plan tried is verified on plan_verify pours, and one whose goals were
+% met in plan_min_success of them is confirmed on as many fresh pours (a
+% seed of their own): it is verified only if its goals were met in
+% plan_min_success of all its pours, pooled (docs/questions.md says why).
+% A search simulates plan_pours at most.
+default(plan_verify, 10).
+default(plan_min_success_permille, 900).
+default(plan_pours, 80).
+
 % a_0, the initial antecedent of the discovering and the paper's curiosity:
 % an ordinary pour (from mid height, near the destination's rim, steeply
 % tilted). The learning curiosity starts from the empty antecedent, the

@@ -58,6 +58,8 @@ def chosen_plan(theory) -> tuple[list[str], list[str], bool]:
 
 
 def register(sub: argparse._SubParsersAction) -> None:
+    from pantarhei.bridge.reasoning.planning import plan_defaults
+
     p = sub.add_parser("demo", help="the main job: learn the theory of pouring (PyBullet, "
                                     "every pour counted), write it, ask it the paper's "
                                     "questions and plan a pour the ordinary pour fails")
@@ -70,8 +72,10 @@ def register(sub: argparse._SubParsersAction) -> None:
                         f"again; with others {option('out').default}); the DFL version goes "
                         f"beside it as .dfl")
     options.add_store(p)
-    p.add_argument("--verify", type=options.count(0, options.VERIFY_MAX), default=10,
-                   help="pours simulated to check the plan (default 10; 0: none)")
+    verify = plan_defaults()[0]
+    p.add_argument("--verify", type=options.count(0, options.VERIFY_MAX), default=verify,
+                   help=f"pours simulated to check the plan, and as many to confirm it "
+                        f"(default {verify}; 0: none)")
     options.add_workers(p)
     p.add_argument("--no-progress", action="store_true", help="no progress bar")
     p.set_defaults(run=demo, pin=True)
@@ -99,6 +103,7 @@ def demo(args: argparse.Namespace) -> int:
     from pantarhei.bridge.theories import loading
     from pantarhei.bridge.exploration.trace import require_distinct_outputs
     from pantarhei.bridge.commands.plan import print_plans
+    from pantarhei.bridge.reasoning.planning import plan_defaults
     from pantarhei.bridge.commands.querying import answer
     from pantarhei.bridge.reasoning.answers import InProcess
     from pantarhei.bridge.exploration.explore_call import ExploreOptions, explore, stop_text
@@ -135,7 +140,7 @@ def demo(args: argparse.Namespace) -> int:
              else " already reaches these goals, as the theory says"))
     try:
         print_plans(theory, goals, given, alternatives=2, verify=args.verify,
-                    min_success=0.9, seed=args.seed, store=args.store)
+                    min_success=plan_defaults()[1], seed=args.seed, store=args.store)
     except UserError as e:     # a theory that cannot reach the goal: say so, and finish
         print(f"no plan: {e}")
     print(f"\ndone in {time.monotonic() - started:.0f} s. Ask more: pantarhei ask \"pour high "

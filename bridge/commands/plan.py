@@ -8,17 +8,14 @@ import json
 from pantarhei.bridge.commands import options
 from pantarhei.bridge.errors import UserError
 
-#: Pours a plan is verified with, the share of them that must meet every
-#: goal, and the pours a search may simulate in all.
-VERIFY = 10
-MIN_SUCCESS = 0.9
-BUDGET = 80
-
 THEORY_HELP = ("theory file, native facts or .dfl (repeat to add hand-written rules to a learned "
                "theory; default: the shipped learned theory theory/learned/pouring.pl)")
 
 
 def register(sub: argparse._SubParsersAction) -> None:
+    from pantarhei.bridge.reasoning.planning import plan_defaults
+
+    verify, min_success, budget = plan_defaults()
     p = sub.add_parser("plan", help="how to pour to reach a goal? (clingo, verified in the "
                                     "simulation)")
     p.add_argument("context", nargs="?",
@@ -32,19 +29,20 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--alternatives", type=options.count(0, options.COUNT_MAX), default=None,
                    metavar="K", help="list up to K plans after the best (default: 4 unverified, "
                                      "0 verified)")
-    p.add_argument("--verify", type=options.count(0, options.VERIFY_MAX), default=VERIFY,
+    p.add_argument("--verify", type=options.count(0, options.VERIFY_MAX), default=verify,
                    metavar="N",
-                   help=f"simulate N pours of each plan tried; a plan is shown only when its goals "
-                        f"were met often enough (default {VERIFY}; 0: show the theory's plans "
+                   help=f"simulate N pours of each plan tried, and N fresh ones more of a plan "
+                        f"that passes them; a plan is shown only when its goals were met often "
+                        f"enough in all of them (default {verify}; 0: show the theory's plans "
                         f"unverified)")
-    p.add_argument("--min-success", type=float, default=MIN_SUCCESS, metavar="SHARE",
-                   help=f"the share of a plan's verifying pours that must meet every goal "
-                        f"(default {MIN_SUCCESS})")
-    p.add_argument("--pours", type=options.count(1, options.COUNT_MAX), default=BUDGET,
+    p.add_argument("--min-success", type=float, default=min_success, metavar="SHARE",
+                   help=f"the share of a plan's verifying pours, first the N and then all 2N, "
+                        f"that must meet every goal (default {min_success})")
+    p.add_argument("--pours", type=options.count(1, options.COUNT_MAX), default=budget,
                    metavar="BUDGET",
                    help=f"pours the search may simulate in all: plans refuted are learned from and "
                         f"the search goes on until a plan is verified or these are spent "
-                        f"(default {BUDGET})")
+                        f"(default {budget})")
     p.add_argument("--learned-out", metavar="FILE",
                    help="write the theory the search leaves (the theory with the rules learned "
                         "from its pours) to FILE; without it nothing is written")
@@ -80,9 +78,9 @@ def plan(args: argparse.Namespace) -> int:
         given = known(_split(args.given))
     if not 0 < args.min_success <= 1:
         raise UserError("--min-success: a share above 0 and at most 1")
-    if args.verify and args.pours < args.verify:
+    if args.verify and args.pours < 2 * args.verify:
         raise UserError(f"--pours {args.pours}: the budget must hold one plan's --verify "
-                        f"{args.verify} pours at least")
+                        f"{args.verify} pours and as many confirming them, {2 * args.verify} at least")
     if args.learned_out is not None:
         _require_out(args.learned_out)
     theory = loading.load(args.theory, pouring=True)
@@ -127,14 +125,15 @@ def _verifying_oracle(theory) -> str:
 
 def print_plans(theory, goals: list[str], given: list[str], alternatives: int, verify: int,
                 min_success: float, seed: int, store, as_json: bool = False, *,
-                budget: int = BUDGET, oracle: str | None = None,
+                budget: int | None = None, oracle: str | None = None,
                 learned_out: str | None = None) -> int:
     """Print plans for `goals` given `given`, each with its numbers: with
     `verify` pours, the search's verified plans (the best and up to
     `alternatives` more, each met in at least `min_success` of `verify`
-    pours, simulated with `oracle` and kept in `store`, within `budget`
-    pours in all; UserError saying why when none is found); with 0, the
-    theory's plans unverified."""
+    pours and of as many more confirming them, simulated with `oracle` and
+    kept in `store`, within `budget` pours in all, the default of
+    theory/defaults.pl when None; UserError saying why when none is
+    found); with 0, the theory's plans unverified."""
     from pantarhei.bridge.commands.plan_text import plan_json, print_search, print_unverified
     from pantarhei.bridge.reasoning.planning import check_goals, plan as make_plans, pouring_goals
 
@@ -149,6 +148,10 @@ def print_plans(theory, goals: list[str], given: list[str], alternatives: int, v
         print_unverified(theory, lits, added, given, plans)
         return 0
     oracle = oracle or _verifying_oracle(theory)     # the oracle the pours are simulated with
+    if budget is None:
+        from pantarhei.bridge.reasoning.planning import plan_defaults
+
+        budget = plan_defaults()[2]
     found = _search(theory, goals, given, alternatives, verify, min_success, seed, store, budget,
                     oracle)
     if learned_out is not None and found.learned:

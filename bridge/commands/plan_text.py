@@ -34,8 +34,10 @@ def plan_lines(p, given: list[str], said, trial=None) -> list[str]:
     if trial is not None:
         L.append(f"  verified: goals met in {trial.met} of {trial.simulated} simulations "
                  f"({trial.rate:.0%})" + (f", {trial.failed} failed" if trial.failed else "")
-                 + "; per goal: " + ", ".join(f"{g} {n} of {trial.simulated}"
-                                              for g, n in trial.per_goal.items()))
+                 + _batches(trial))
+        L.extend(_wrapped("  per goal, of every verifying pour: ",
+                          [f"{g} {n} of {trial.simulated} ({trial.shares[g]:.0%})"
+                           for g, n in trial.per_goal.items()], "    "))
     L.append("  the goals rest on:")
     for s in said:
         rule = f"rule {s.rule}" if s.rule else "no rule"
@@ -47,6 +49,16 @@ def plan_lines(p, given: list[str], said, trial=None) -> list[str]:
     L.extend(_wrapped("  left to the ordinary pour: ",
                       [r.words() for r in ordinary_ranges(p.antecedent)], "    "))
     return L
+
+
+def _batches(trial) -> str:
+    """How a trial's pours came: the first batch, then the fresh ones
+    confirming it."""
+    if len(trial.batches) < 2:
+        return ""
+    first, confirming = trial.batches[:2]
+    return (f": {first.met} of the first {first.simulated}, then {confirming.met} of "
+            f"{confirming.simulated} fresh ones confirming it")
 
 
 def _wrapped(first: str, items: list[str], indent: str, width: int = 100) -> list[str]:
@@ -89,7 +101,8 @@ def print_search(found, oracle: str, learned_out: str | None) -> None:
     for t in found.tried:
         if not t.verified:
             print(f"  refuted: {', '.join(t.plan.chosen) or 'the context alone'} ({t.origin}, "
-                  f"round {t.round}): every goal met in {t.met} of {t.simulated} pours; "
+                  f"round {t.round}): every goal met in {t.met} of {t.simulated} pours"
+                  + (_batches(t) + " (not confirmed)" if t.unconfirmed else "") + "; "
                   + ", ".join(f"{g} {n}" for g, n in t.per_goal.items()))
     for i, t in enumerate(found.verified):
         n = len(t.plan.chosen)
@@ -117,10 +130,13 @@ def plan_json(theory, goals, added, given, plans, found=None, oracle=None,
             entry["origin"] = trial.origin
             entry["verified"] = {"simulated": trial.simulated, "met": trial.met,
                                  "failed": trial.failed, "rate": round(trial.rate, 3),
-                                 "per_goal": dict(trial.per_goal)}
+                                 "per_goal": dict(trial.per_goal),
+                                 "per_goal_share": {g: round(x, 3) for g, x in trial.shares.items()},
+                                 "batches": [b.as_dict() for b in trial.batches]}
         out["plans"].append(entry)
     if found is not None:
         out["search"] = {"oracle": oracle, "pours": found.pours, "budget": found.budget,
+                         "confirm": found.confirm,
                          "rounds": found.rounds, "learned_rules": found.learned,
                          "learned_out": learned_out, "unreachable": found.unreachable,
                          "tried": [t.as_dict() for t in found.tried]}

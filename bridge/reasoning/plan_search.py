@@ -5,16 +5,22 @@ and verifies each in the simulation: its pours are sampled from its
 antecedent (a seed of its own, from the run's seed and the antecedent, so
 the same plan has the same pours in every run and the store simulates
 them once), in steps, until its goals were met in `min_success` of
-`verify` pours or can no longer be. When no plan of the round is
-verified, the theory learns from the pours of the plans it refuted
+`verify` pours or can no longer be. A plan that passes is confirmed on
+`confirm` fresh pours (a second seed of its own; as many as `verify`
+unless told), drawn only after it was chosen: chosen among many for a
+lucky first batch, it must meet its goals in `min_success` of all its
+pours, pooled, or it is refuted like any other. When no plan of the round
+is verified, the theory learns from the pours of the plans it refuted
 (plan_evidence.py) and the next round plans with what it learned. Beside
 the theory's plans (at most THEORY_PER_ROUND a round), and in their place
 when it proposes nothing new (every plan it has was refuted, or it cannot
 reach the goals at all), plans are searched in the simulation: every
-manner proposition alone with the given context, then the pairs of the
-most promising, most promising first (as the learned theory predicts the
-goals). The search ends with a verified plan, when the budget of pours is
-spent, or when no candidate is left; it then says why no plan was found.
+manner proposition alone with the given context, most promising first (as
+the learned theory predicts the goals), then the pairs of the PAIRED best
+singles (a single tried counts by the share of its pours that met the
+goals). A plan is tried only when the budget holds both its batches. The
+search ends with a verified plan, when the budget of pours is spent, or
+when no candidate is left; it then says why no plan was found.
 """
 from __future__ import annotations
 
@@ -55,17 +61,44 @@ class Trial:
     verified: bool = False
     #: what the theory of its round said of each goal in its scene (plan_numbers.Support)
     said: list = field(default_factory=list)
+    #: per batch (the first, then the confirming one): its pours and how many met every goal
+    batches: list[Batch] = field(default_factory=list)
 
     @property
     def rate(self) -> float:
         return self.met / self.simulated if self.simulated else 0.0
 
+    @property
+    def shares(self) -> dict[str, float]:
+        """Each goal's share of every verifying pour (both batches)."""
+        return {g: n / self.simulated if self.simulated else 0.0 for g, n in self.per_goal.items()}
+
+    @property
+    def unconfirmed(self) -> bool:
+        """Passed its first batch and failed the confirming one."""
+        return len(self.batches) > 1 and not self.verified
+
     def as_dict(self) -> dict:
         return {"chosen": list(self.plan.chosen), "antecedent": list(self.plan.antecedent),
                 "origin": self.origin, "round": self.round, "simulated": self.simulated,
                 "failed": self.failed, "met": self.met, "rate": round(self.rate, 3),
-                "per_goal": dict(self.per_goal), "verified": self.verified,
+                "per_goal": dict(self.per_goal),
+                "per_goal_share": {g: round(x, 3) for g, x in self.shares.items()},
+                "batches": [b.as_dict() for b in self.batches], "verified": self.verified,
                 "rests_on": [x.as_dict() for x in self.said]}
+
+
+@dataclass(frozen=True)
+class Batch:
+    """A batch of a plan's verifying pours: `first` (chosen on it) or
+    `confirming` (fresh pours after); the pours that finished, and how many
+    met every goal."""
+    kind: str
+    simulated: int
+    met: int
+
+    def as_dict(self) -> dict:
+        return {"batch": self.kind, "simulated": self.simulated, "met": self.met}
 
 
 @dataclass
@@ -87,34 +120,77 @@ class Search:
     learned: int = 0
     unreachable: str | None = None
     reason: str | None = None
+    #: the pours of a plan's confirming batch
+    confirm: int = 0
 
     @property
     def verified(self) -> list[Trial]:
         return [t for t in self.tried if t.verified]
 
 
-def pour_seed(seed: int, antecedent: Sequence[str]) -> int:
+def pour_seed(seed: int, antecedent: Sequence[str], batch: int = 0) -> int:
     """The seed of a plan's verifying pours: the run's seed and the
-    antecedent."""
-    return int(np.random.SeedSequence([int(seed), zlib.crc32(" ".join(antecedent).encode())])
-               .generate_state(1)[0])
+    antecedent (and for the confirming batch, 1, a seed apart)."""
+    key = [int(seed), zlib.crc32(" ".join(antecedent).encode())] + ([batch] if batch else [])
+    return int(np.random.SeedSequence(key).generate_state(1)[0])
+
+
+def passes(met: int, simulated: int, min_success: float) -> bool:
+    """Does a plan whose goals were met in `met` of `simulated` pours meet
+    the bar? The one criterion of a verified plan, for every batch."""
+    return simulated > 0 and met >= min_success * simulated - 1e-9
 
 
 def verify(p: Plan, goals: list[str], simulate: Callable, n: int, seed: int,
-           min_success: float, trial: Trial) -> tuple[np.ndarray, np.ndarray]:
+           min_success: float, trial: Trial, confirm: int | None = None
+           ) -> tuple[np.ndarray, np.ndarray]:
     """Simulate the plan's pours in steps until its goals were met in
-    `min_success` of `n` or can no longer be; fill in `trial`; the pours
-    simulated and their scores. The pours are the first of one seeded
-    sample, so that a plan verified to the end has the same pours however
-    it was stepped."""
+    `min_success` of `n` or can no longer be; if they were, confirm it on
+    `confirm` fresh pours (n when None; 0: not confirmed) in steps, until
+    its goals were met in `min_success` of all its pours, pooled, or can
+    no longer be. Fill in `trial` (pooled over both batches); the pours
+    simulated and their scores. Each batch's pours are the first of one
+    seeded sample, so that a plan verified to the end has the same pours
+    however it was stepped."""
+    confirm = n if confirm is None else confirm
+    batches = [("first", n, 0)] + ([("confirming", confirm, 1)] if confirm else [])
+    Ps, Ss, tally = [], [], []
+    total = misses = 0
+    for kind, size, batch in batches:
+        P, S, missed = _batch(p.antecedent, goals, simulate, size, pour_seed(seed, p.antecedent, batch),
+                              total + size, misses, min_success)
+        Ps.append(P)
+        Ss.append(S)
+        ok = np.all(np.isfinite(S), axis=1)
+        tally.append(Batch(kind, int(ok.sum()), int(goals_met(S[ok], goals).sum()) if ok.any() else 0))
+        total, misses = total + size, missed
+        if len(P) < size or not passes(sum(b.met for b in tally), sum(b.simulated for b in tally),
+                                       min_success):
+            break
+    P, S = np.vstack(Ps), np.vstack(Ss)
+    ok = np.all(np.isfinite(S), axis=1)
+    trial.batches = tally
+    trial.simulated, trial.failed = int(ok.sum()), int((~ok).sum())
+    trial.met = int(goals_met(S[ok], goals).sum()) if ok.any() else 0
+    trial.per_goal = {g: int(goals_met(S[ok], [g]).sum()) if ok.any() else 0 for g in goals}
+    trial.verified = len(tally) == len(batches) and len(P) == total \
+        and passes(trial.met, trial.simulated, min_success)
+    return P, S
+
+
+def _batch(antecedent: Sequence[str], goals: list[str], simulate: Callable, size: int, seed: int,
+           total: int, misses: int, min_success: float) -> tuple[np.ndarray, np.ndarray, int]:
+    """One batch of `size` pours, in steps, stopped once the misses so far
+    (`misses` before it) are more than `total` pours may have and still
+    meet the bar; its pours, scores and the misses after it."""
     from pantarhei.oracle.generative import sample
 
-    P = sample(list(p.antecedent), n, pour_seed(seed, p.antecedent))
-    allowed = n - math.ceil(min_success * n - 1e-9)      # misses that still verify
-    step = max(2, math.ceil(n / 3))
+    P = sample(list(antecedent), size, seed)
+    allowed = total - math.ceil(min_success * total - 1e-9)      # misses that still verify
+    step = max(2, math.ceil(size / 3))
     Ps, Ss = [], []
-    done = misses = 0
-    while done < n:
+    done = 0
+    while done < size:
         rows = P[done:done + step]
         S = np.atleast_2d(np.asarray(simulate(rows), dtype=float))
         Ps.append(rows)
@@ -124,21 +200,16 @@ def verify(p: Plan, goals: list[str], simulate: Callable, n: int, seed: int,
         misses += int((ok & ~goals_met(S, goals)).sum())
         if misses > allowed:
             break
-    P, S = np.vstack(Ps), np.vstack(Ss)
-    ok = np.all(np.isfinite(S), axis=1)
-    trial.simulated, trial.failed = int(ok.sum()), int((~ok).sum())
-    trial.met = int(goals_met(S[ok], goals).sum()) if ok.any() else 0
-    trial.per_goal = {g: int(goals_met(S[ok], [g]).sum()) if ok.any() else 0 for g in goals}
-    trial.verified = done >= n and trial.simulated > 0 and trial.rate >= min_success - 1e-9
-    return P, S
+    return np.vstack(Ps), np.vstack(Ss), misses
 
 
 def search(theory: Theory, goals: Sequence[str], given: Sequence[str], simulate: Callable, *,
            verify_pours: int, min_success: float, seed: int, budget: int, want: int = 1,
            pour: bool = True, learn: bool = True, explore: bool = True,
-           use_theory: bool = True) -> Search:
+           use_theory: bool = True, confirm: int | None = None) -> Search:
     """Search for `want` plans reaching `goals` given `given` (see the
-    module's text) within `budget` pours; `pour`: add the goal that the
+    module's text) within `budget` pours, each verified with `verify_pours`
+    and confirmed with `confirm` more (None: as many); `pour`: add the goal that the
     liquid leaves the source unless a goal speaks of it; `learn`: learn
     from refuted plans; `explore`: search manners in the simulation when
     the theory proposes none; `use_theory` False: search the simulation
@@ -150,11 +221,12 @@ def search(theory: Theory, goals: Sequence[str], given: Sequence[str], simulate:
 
     lits, added = pouring_goals(list(goals)) if pour else ([*map(_literal, goals)], [])
     given = require_valid(given) if given else []
-    out = Search(lits, added, given, budget=budget, theory=theory)
+    confirm = verify_pours if confirm is None else confirm
+    out = Search(lits, added, given, budget=budget, theory=theory, confirm=confirm)
     # the theory plans for the goals it has rules for among those added
     asked = [g for g in lits if g not in added or _concludes(theory, g)]
     current, planned = theory, []
-    pool: list[Plan] | None = None
+    singles: list[tuple[float, tuple[str, ...]]] | None = None
     while True:
         tried = {t.plan.chosen for t in out.tried}
         proposed: list[tuple[str, Plan]] = []
@@ -166,8 +238,9 @@ def search(theory: Theory, goals: Sequence[str], given: Sequence[str], simulate:
                 out.unreachable = str(e)
         proposed = proposed[:THEORY_PER_ROUND]
         if explore and len(proposed) < PER_ROUND:
-            if pool is None or learn:
-                pool = _candidates(current, lits, given)
+            if singles is None or learn:
+                singles = _singles(current, lits, given)
+            pool = _candidates(given, singles, out.tried)
             theirs = {p.chosen for _, p in proposed}
             proposed += [("search", p) for p in pool if p.chosen not in tried
                          and p.chosen not in theirs][:PER_ROUND - len(proposed)]
@@ -176,11 +249,11 @@ def search(theory: Theory, goals: Sequence[str], given: Sequence[str], simulate:
         out.rounds += 1
         spent = False
         for origin, p in proposed:
-            if out.pours + verify_pours > budget:
+            if out.pours + verify_pours + confirm > budget:     # room for both batches
                 spent = True
                 break
             trial = Trial(p, origin, out.rounds, said=rests_on(current, p.antecedent, lits))
-            P, S = verify(p, lits, simulate, verify_pours, seed, min_success, trial)
+            P, S = verify(p, lits, simulate, verify_pours, seed, min_success, trial, confirm)
             out.tried.append(trial)
             out.pours += len(P)
             if learn:
@@ -216,34 +289,54 @@ def _proposals(theory: Theory, goals: list[str], given: list[str], tried: set) -
     return plan(theory, goals, given, PER_ROUND - 1, exclude=sorted(tried))
 
 
-def _candidates(theory: Theory, goals: list[str], given: list[str]) -> list[Plan]:
-    """Every manner proposition alone with the given context, then the pairs
-    of the PAIRED most promising, each valid; most promising first (the
-    theory's likelihoods of the goals multiplied; an undecided goal one
-    half), then in the vocabulary's order."""
-    from pantarhei.bridge.reasoning.answers import what_happens
+def _singles(theory: Theory, goals: list[str], given: list[str]
+             ) -> list[tuple[float, tuple[str, ...]]]:
+    """Every manner proposition alone with the given context, each valid,
+    with its promise (the theory's likelihoods of the goals multiplied; an
+    undecided goal one half); most promising first, then in the
+    vocabulary's order."""
     from pantarhei.bridge.reasoning.scenes import violations
 
     vocab = load_vocabulary()
     taken = {vocab.propositions[p].dimension for p in given}
     manners = [p for p, x in vocab.propositions.items()
                if vocab.dimensions[x.dimension].role == "manner" and x.dimension not in taken]
-
-    def score(chosen: tuple[str, ...]) -> float:
-        said = {a.expectation: a.likelihood for a in what_happens(theory, [*given, *chosen])}
-        s = 1.0
-        for g in goals:
-            negated = g.startswith("neg(")
-            like = said.get(complement(g) if negated else g)
-            s *= 0.5 if like is None else (1 - like if negated else like)
-        return s
-
     singles = [(p,) for p in manners if not violations([*given, p])]
-    scored = sorted(((-score(c), i, c) for i, c in enumerate(singles)))
-    top = [c[0] for _, _, c in scored[:PAIRED]]
-    pairs = [tuple(sorted(pair)) for pair in combinations(top, 2) if not violations([*given, *pair])]
-    scored_pairs = sorted(((-score(c), i, c) for i, c in enumerate(pairs)))
-    return [Plan(c, tuple(sorted([*given, *c]))) for _, _, c in [*scored, *scored_pairs]]
+    scored = sorted((-_promise(theory, goals, given, c), i, c) for i, c in enumerate(singles))
+    return [(-s, c) for s, _, c in scored]
+
+
+def _promise(theory: Theory, goals: list[str], given: list[str], chosen: tuple[str, ...]) -> float:
+    """The theory's likelihoods of the goals given the context and `chosen`,
+    multiplied (an undecided goal one half)."""
+    from pantarhei.bridge.reasoning.answers import what_happens
+
+    said = {a.expectation: a.likelihood for a in what_happens(theory, [*given, *chosen])}
+    s = 1.0
+    for g in goals:
+        negated = g.startswith("neg(")
+        like = said.get(complement(g) if negated else g)
+        s *= 0.5 if like is None else (1 - like if negated else like)
+    return s
+
+
+def _candidates(given: list[str], singles: list[tuple[float, tuple[str, ...]]],
+                tried: Sequence[Trial]) -> list[Plan]:
+    """The singles (_singles), then the valid pairs of the PAIRED best: a
+    single tried counts by the share of its pours that met every goal, one
+    not tried by its promise; the pairs of the best first."""
+    from pantarhei.bridge.reasoning.scenes import violations
+
+    seen = {t.plan.chosen: t.rate for t in tried}
+    value = {c: seen.get(c, promise) for promise, c in singles}
+    ranked = sorted(range(len(singles)), key=lambda i: (-value[singles[i][1]], i))
+    top = [singles[i][1][0] for i in ranked[:PAIRED]]
+    rank = {p: k for k, p in enumerate(top)}
+    pairs = sorted((tuple(sorted(pair)) for pair in combinations(top, 2)
+                    if not violations([*given, *pair])),
+                   key=lambda c: (-(value[(c[0],)] + value[(c[1],)]),
+                                  sorted(rank[p] for p in c)))
+    return [Plan(c, tuple(sorted([*given, *c]))) for c in [*(c for _, c in singles), *pairs]]
 
 
 def _why_none(out: Search, min_success: float, n: int) -> str:
@@ -251,14 +344,23 @@ def _why_none(out: Search, min_success: float, n: int) -> str:
     best = max(out.tried, key=lambda t: (t.rate, -len(t.plan.chosen)), default=None)
     seen = "" if best is None else (
         f"; the best, {', '.join(best.plan.chosen) or 'the context alone'}, met them in "
-        f"{best.met} of {best.simulated}")
-    spent = out.pours + n > out.budget
+        + (f"{best.batches[0].met} of {best.batches[0].simulated}, then in {best.batches[1].met} "
+           f"of {best.batches[1].simulated} fresh pours confirming it"
+           if best.unconfirmed else f"{best.met} of {best.simulated}"))
+    spent = out.pours + n + out.confirm > out.budget
     why = (f"the budget of {out.budget} pours is spent" if spent else "no candidate is left")
     if out.unreachable and not any(t.origin == "theory" for t in out.tried):
         head = f"unreachable in the theory ({out.unreachable})"
         if not out.tried:
             return head
         return (f"{head}, and none of the {len(out.tried)} plans searched in the simulation met "
-                f"the goals in {min_success:.0%} of {n} pours ({why}){seen}")
+                f"the goals in {_bar(min_success, n, out.confirm)} ({why}){seen}")
     return (f"every candidate refuted: none of the {len(out.tried)} plans tried met the goals in "
-            f"{min_success:.0%} of {n} pours ({why}){seen}")
+            f"{_bar(min_success, n, out.confirm)} ({why}){seen}")
+
+
+def _bar(min_success: float, n: int, confirm: int) -> str:
+    """The bar a verified plan meets, in words."""
+    if not confirm:
+        return f"{min_success:.0%} of {n} pours"
+    return f"{min_success:.0%} of {n} pours and of {n + confirm} with {confirm} fresh ones"

@@ -52,6 +52,16 @@ def goals_met(scores, goals: list[str]):
     return met
 
 
+def plan_defaults() -> tuple[int, float, int]:
+    """The defaults of plans (theory/defaults.pl): the pours a plan is
+    verified with (and confirmed with), the share of them that must meet
+    every goal, and the pours a search may simulate."""
+    from pantarhei.theory import defaults
+
+    d = defaults()
+    return int(d["plan_verify"]), float(d["plan_min_success"]), int(d["plan_pours"])
+
+
 #: The goal a pour has unless a goal says otherwise: the liquid leaves the source.
 POURS = "liquid_leaves_source"
 
