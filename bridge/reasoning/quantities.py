@@ -54,7 +54,7 @@ UNITS: dict[str, tuple[str, float]] = {
     **{w: ("volume", 1.0) for w in ("ml", "millilitre", "millilitres", "milliliter",
                                     "milliliters", "cl", "dl", "l", "litre", "litres", "liter",
                                     "liters", "oz", "ounce", "ounces")},
-    "speed": ("speed", 1.0),
+    "speed": ("speed", 1.0), "unit_turn_speed": ("turn speed", 1.0),
     # a property's name said with a number (properties.py): "a friction of 0.1"
     "unit_friction": ("friction", 1000.0), "unit_restitution": ("restitution", 1000.0),
     "unit_particles": ("count", 1.0),
@@ -62,7 +62,7 @@ UNITS: dict[str, tuple[str, float]] = {
 #: What cannot be negative, in words.
 _POSITIVE = {"mass": "a mass", "time": "a time", "count": "a number of particles",
              "friction": "a friction", "restitution": "a bounciness",
-             "volume": "an amount of liquid", "speed": "a speed"}
+             "volume": "an amount of liquid", "speed": "a speed", "turn speed": "a speed"}
 
 #: The words beside a number that pick its parameter, by what they choose;
 #: they are read with the number (a height's with the rim it is measured from).
@@ -104,6 +104,11 @@ def parameter(q: Quantity, pose: str, move: str | None, cues: set[str],
         raise UserError(f"\"{q.text}\" is a speed, which the vocabulary says by how long the "
                         "source takes to move in or away: say \"move in fast\", \"move in slowly\", "
                         "\"move in over 2 seconds\" or \"move away fast\"")
+    if q.measures == "turn speed":
+        raise UserError(f"\"{q.value:g} degrees a second\" is a speed of tilting, which the vocabulary has no "
+                        "proposition of: it says how far the source is tilted (\"tilted "
+                        "halfway\", \"tilted at 45 degrees\") and how fast it moves in or away "
+                        "(\"move in slowly\")")
     if q.measures == "volume":
         raise UserError(_AMOUNT.format(q.text))
     if q.measures == "angle":
@@ -148,25 +153,30 @@ _AMOUNT = ("\"{}\" of liquid: the vocabulary counts the liquid in particles; say
            "particles\", \"a little liquid\", \"some liquid\", \"much liquid\" or \"a full cup\"")
 
 
-def proposition(q: Quantity, param: str, cues: set[str]) -> str:
+def proposition(q: Quantity, param: str, cues: set[str], low: float | None = None) -> str:
     """The proposition whose range of `param` holds `q` (a height said
-    "below" the rim is under it: negative); UserError naming the ranges
+    "below" the rim is under it: negative), or all of the range from `low`
+    to `q` where one is said ("8 to 10 cm"); UserError naming the ranges
     there are if none does."""
     vocab = load_vocabulary()
     unit = next(p.unit for p in vocab.parameters if p.name == param)
     if param.endswith("_z") and "below" in cues and q.value < 0:
         raise UserError(f"\"{q.text}\" below: say \"{q.text[1:]} below the rim\" or \"{q.text} "
                         "above the rim\", not both a minus and below")
-    v = -q.value if param.endswith("_z") and "below" in cues else q.value
+    sign = -1 if param.endswith("_z") and "below" in cues else 1
+    ends = [sign * q.value] if low is None else sorted({sign * low, sign * q.value})
     ranges = sorted((p.model.low, p.model.high, n) for n, p in vocab.propositions.items()
                     if p.model.kind == "uniform" and p.model.param == param)
-    holding = [name for low, high, name in ranges if low <= v <= high]
-    if holding:     # on the bound of two ranges, the upper: 0 mm above the rim is low
-        return holding[-1]
+    # on the bound of two ranges, the upper: 0 mm above the rim is low
+    holding = {([n for lo, hi, n in ranges if lo <= v <= hi] or [None])[-1] for v in ends}
+    if len(holding) == 1 and None not in holding:
+        return holding.pop()
     said = "; ".join(f"{n} {lo} to {hi} {unit}" for lo, hi, n in ranges)
-    raise UserError(f"\"{q.text}\" is {v:g} {unit} of {param}, which no proposition holds"
-                    + (f" ({said}): say one of these" if said else
-                       ": the vocabulary has no proposition of it"))
+    value = " to ".join(f"{v:g}" for v in ends)
+    raise UserError(f"\"{q.text}\" is {value} {unit} of {param}, which no "
+                    f"{'one ' if len(ends) > 1 else ''}proposition holds"
+                    + (f" ({said}): say {'a value within ' if len(ends) > 1 else ''}one of these"
+                       if said else ": the vocabulary has no proposition of it"))
 
 
 def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
@@ -211,10 +221,28 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
             q = Quantity(q.value * 1000, q.measures, q.text)     # g to the parameter's mg
         read_too = (*CUES.get(by, ()), *ALSO_READ.get(by, ()))
         used = {k for k in near if cue_of[tokens[k].word] in read_too}
-        raw = " ".join(tokens[k].raw for k in sorted({i, i + 1} | used))
-        read[i] = Token(proposition(q, param, cues), raw, tokens[i].clause)
+        low = _low_end(tokens, i)          # "8 to 10 cm": the range, read only if one holds it
+        if low is not None:
+            used |= {i - 2, i - 1}
+            q = Quantity(q.value, q.measures, f"{tokens[i - 2].raw} to {said}"
+                         if tokens[i - 2].raw != tokens[i].raw else said)
+        raw = " ".join(dict.fromkeys(tokens[k].raw for k in sorted({i, i + 1} | used)))
+        at_low = None if low is None else float(tokens[low].word) * q.value / float(tokens[i].word)
+        read[i] = Token(proposition(q, param, cues, at_low), raw, tokens[i].clause)
         dropped |= {i + 1} | used
     return [read.get(i, t) for i, t in enumerate(tokens) if i not in dropped]
+
+
+def _low_end(tokens: list[Token], i: int) -> int | None:
+    """The position of the first number of a range said "8 to 10 cm" (or
+    "between 8 and 10 cm") whose
+    second number is at `i`; None if the number at `i` begins none."""
+    said = tokens[i - 1].word == "to" or (tokens[i - 1].word == "and" and i >= 3
+                                          and tokens[i - 3].raw == "between")
+    if i >= 2 and said and re.fullmatch(NUMBER, tokens[i - 2].word) \
+            and tokens[i - 2].clause == tokens[i].clause and float(tokens[i].word) != 0:
+        return i - 2
+    return None
 
 
 def _unit(t: Token) -> str | None:

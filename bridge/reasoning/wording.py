@@ -5,8 +5,9 @@ rewritten into the vocabulary's words.
 A number keeps its sign: "-10 degrees", "\u221210 degrees" (a Unicode minus)
 and "minus 10 degrees" are one token "-10"; a hyphen between two numbers
 ("10-20 cm") is a range ("10 to 20"), never a sign. A speed ("0.5 m/s",
-"2 km/h") becomes the number and the unit "speed", which quantities.py
-refuses naming what would be read.
+"2 km/h") becomes the number and the unit "speed", a speed of tilting
+("30 deg/s") the unit "unit_turn_speed": quantities.py refuses both,
+naming what would be read.
 """
 from __future__ import annotations
 
@@ -58,6 +59,8 @@ def normalised(text: str) -> str:
     text = text.replace("%", " percent ")
     text = re.sub(r"'s?\b", "", text)                 # the destination's rim
     text = re.sub(r"(\d)\s*\u00b0", r"\1 degrees ", text)  # 45\u00b0
+    text = re.sub(r"(\d)\s*(?:(?:deg|degs|degrees?)\s*(?:/\s*(?:s|sec)\b|per (?:second|sec)\b)"
+                  r"|rpm\b)", r"\1 unit_turn_speed", text)        # 30 deg/s: a speed of tilting
     text = re.sub(r"(\d)\s*(?:(?:k?m|cm|mm)\s*/\s*(?:s|sec|h|hr)|(?:k?m|cm|mm|metres?|meters?|"
                   r"centimet(?:re|er)s?|inch(?:es)?|feet|foot) per (?:second|sec|hour|minute)|"
                   r"mph|kph|km/h)\b", r"\1 speed", text)

@@ -37,9 +37,47 @@ _MANNER = ("from|with|over|into|onto|low|high|very|steeply|slightly|halfway|tilt
 #: nowhere, so a question that says one is refused naming the phrase.
 UNCLEAR = "unclear"
 
+#: Value words an intensifier may raise to "very" ("incredibly high" is very high; a value
+#: with no "very" of its own is the value: "incredibly heavy" is heavy). "really" is a
+#: hedge as often as a degree ("is it really high?"): it raises nothing.
+_INTENSIFIED = ("high|low|fast|quick|quickly|slow|slowly|heavy|light|sticky|runny|thick|thin|"
+                "bouncy|slippery|grippy|steep|steeply|far|close|near|tilted")
+#: A reference point a comparison may be made to: the destination's rim.
+_RIM = (r"(?:the )?(?:destination |bowl )?(?:rim|edge|lip|brim|top)\b(?: of (?:the |a )?"
+        r"(?:destination|bowl)\b)?")
+#: Degree words before a comparative: "a bit lower".
+_DEGREE = r"(?:just|only|slightly|barely|a (?:little |tiny )?bit|a little|a tad|somewhat)"
+#: Comparatives of the vocabulary's values, said of nothing they are measured from.
+_COMPARATIVES = ("higher|heavier|lighter|faster|quicker|slower|steeper|stickier|runnier|thicker|"
+                 "thinner|bouncier|grippier|slipperier|fuller|emptier")
+
 PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("hedge", ("how much", "how many",    # asks, does not say: "how much liquid spills"
-               "nearly")),                 # a hedge (its stem would be "near")
+               "nearly",                   # a hedge (its stem would be "near")
+               r"re:\bbetween(?= -?\d+(?:\.\d+)? and -?\d)")),   # a range: quantities.py's
+    ("very", (rf"re:\b(?:super|extremely|incredibly|insanely|ridiculously|awfully|terribly"
+              rf"|exceptionally|unusually|crazy|way)(?= (?:{_INTENSIFIED})\b)",)),
+    # a comparison with the rim is where it puts the source: "higher than the rim" is above it
+    # (as "above the bowl": the ordinary pour), "slightly higher than the rim" just above it
+    # (low), "lower than the rim" below it; with a number, the number's ("2 cm higher than
+    # the rim")
+    ("low", (rf"re:\b{_DEGREE} (?:higher|above) than {_RIM}",)),
+    ("above", (rf"re:\b(?:higher|above) than {_RIM}",)),
+    ("below rim", (rf"re:\b(?:{_DEGREE} )?(?:lower|below) than {_RIM}",)),
+    # a comparison with nothing it is measured from: higher than what?
+    (UNCLEAR, (rf"re:\b(?:{_DEGREE} |much |even |far |a lot |any |no )?(?:more |less )?"
+               rf"(?:{_COMPARATIVES})\b(?: than (?:before|usual|normal|that|it|the \w+))?",
+               rf"re:\b(?:{_DEGREE}|much|even|far|a lot|any|no) lower\b",
+               r"re:\b(?:pour(?:s|ed|ing)?|hold(?:s|ing)?|held)(?: it| the \w+)? lower\b",
+               r"re:\b(?:lower|closer|nearer|further|farther) than\b(?: (?:before|usual|normal|that"
+               r"|it|the \w+))?",
+               r"re:\b(?:more|less|fewer) than\b(?: (?:before|usual|normal|that|halfway"
+               r"|half way|half))?", r"re:\bat (?:least|most)(?= -?\d)")),
+    # tilting has no speed in the vocabulary: how far, not how fast
+    (UNCLEAR, (r"re:\b(?:tilt|tip|rotat|turn)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
+               r" (?:slow(?:ly|er)?|fast(?:er)?|quick(?:ly|er)?|rapidly|gradually|steadily)\b",
+               r"re:\b(?:slowly|quickly|fast|gradually|rapidly|steadily) (?:tilt|tip)\w*\b",
+               r"re:\b(?:tilt|tip|tilting|tipping|rotation|pour|pouring) (?:rate|speed|velocity)\b")),
     # asks for a value, which is a plan's to find, not a scene's to say: "how high should I pour?"
     (UNCLEAR, (r"re:\bhow (?:very |really )?(?:high|low|far|fast|quick|quickly|slow|slowly|steep|"
                r"steeply|heavy|light|long|close|near|tilted|full|sticky|slippery|grippy|bouncy)\b",)),
@@ -83,10 +121,10 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     # "after pouring from the side": the manner after it is the pour's
     # emptying a bowl into another, decanting, dumping: pouring
     ("pour", (r"re:\bempt(?:y|ies|ied|ying)(?= (?:it|the \w+|a \w+) (?:into|in|onto)\b)",
-              "decant", "dump")),
+              "decant", "dump", "free pour")),
     ("retreat ; pour", (rf"re:\bafter pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",)),
     ("approach ; pour", (rf"re:\bbefore pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",)),
-    ("approach", (r"re:\b(?:move|bring)(?:s|d|ed|ing)? (?:it|the \w+) (?:in|over)\b",
+    ("approach", (r"re:\b(?:mov(?:e|es|ed|ing)|bring(?:s|ing)?|brought) (?:it|the \w+) (?:in|over)\b",
                   "before pour", "move to the pour pose", "move into the pour pose",
                   "move in", "come in")),
     ("away from", ("move away from", "pull away from")),    # a direction, not the retreat
@@ -118,6 +156,11 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("side", ("off to one side", "off to the side", "to one side")),
     # how the source is tilted and moved
     ("upside down", ("inverted", "upturned", "turned over")),
+    # tipped all the way over: upside down (the bowl it is said of is nouns.py's to place)
+    ("upside down", ("all the way over", "all the way upside down")),
+    # "tip the jug upside down": how it is held, as "hold the jug upside down" says
+    ("hedge", (r"re:\b(?:tilt|tip|turn|flip)(?:s|ed|ped|ing|ping)?\b(?= (?:it |the \w+ |a \w+ )?"
+               r"upside down\b)",)),
     # tipping the source is tilting it ("tip it a bit"); the bowl tipping over is outcomes.py's;
     # forward is the way a tilt goes (towards the destination)
     ("tilt", (r"re:\btip(?:s|ped|ping)?\b",)),
@@ -140,6 +183,22 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("dull", ("[does|do|will] not bounce",)),
     ("full", ("filled", "brimming", "full up")),
     ("much", ("a lot of", "lots of", "plenty of")),
+    # an amount said with no liquid after it: "pour a lot", "with a lot in it"
+    ("pour much liquid", (r"re:\bpour(?:s|ed|ing)?(?: out)? (?:a lot|lots|loads|plenty|tons|heaps)\b"
+                          r"(?! (?:of|more|higher|lower|further|closer)\b)",)),
+    ("much liquid", (r"re:\b(?:a lot|lots|loads|plenty)(?= (?:in|inside) (?:it|the \w+)\b)",)),
+    ("slowly", (r"re:\b(?:tak(?:e|es|ing)|took) (?:your|its|my|our|their|the|his|her) time\b",)),
+    # lengths by hand: a finger's width, a hand's width, a few centimetres (a range,
+    # read only where one proposition holds all of it)
+    ("1.5 to 2 cm", ("a finger width", "a finger breadth", "a fingerbreadth", "one finger width")),
+    ("7 to 10 cm", ("a hand width", "a hand breadth", "a handbreadth", "a palm width",
+                    "one hand width")),
+    ("1 to 2 inches", ("an inch or two", "one or two inches")),
+    ("1 to 2 cm", ("a centimetre or two", "a centimeter or two", "a cm or two")),
+    ("2 to 3 cm", (r"re:\ba couple of (?:cm|centimet(?:re|er)s)\b",)),
+    ("2 to 5 cm", (r"re:\ba few (?:cm|centimet(?:re|er)s)\b",)),
+    ("2 to 3 inches", (r"re:\ba couple of inches\b",)),
+    ("2 to 5 inches", (r"re:\ba few inches\b",)),
     ("little", ("a few drops of", "a few drops", "a drop of", "a drop")),
     ("slippery", ("slick", "smooth", "greasy")),
     ("grippy", ("rough",)),
@@ -161,7 +220,7 @@ FILLERS = frozenset("""
     this that these those there here so as just really quite rather too also still only
     even keep hold turn make let use try get go put set move while during into onto out up down
     like fully completely totally entirely absolutely pretty fairly somewhat
-    anything something everything outcome hedge
+    anything something everything outcome hedge instead
     held robot arm gripper hand
     take takes took taking weigh weighs weighed weighing roughly about around approximately
     almost
@@ -178,6 +237,28 @@ HINTS: tuple[tuple[str, str], ...] = (
      'slowly", "move away fast")'),
     (r"\b(?:not|without)\b.*\b(?:tilt|tip|lean)",
      'not tilted much: say "slightly tilted" or "upright"'),
+    (r"\b(?:tilt|tip|rotat|turn|pour)\w* (?:rate|speed|velocity)\b|\b(?:slow|fast|quick|gradual|rapid|steadi)"
+     r"\w* (?:tilt|tip)|\b(?:tilt|tip|rotat|turn)\w*(?: \w+)*? (?:slow|fast|quick|gradual|rapid|steadi)",
+     'the vocabulary has no speed of tilting: it says how far the source is tilted ("tilted '
+     'halfway") and how fast it moves in or away ("move in slowly", "move away fast")'),
+    *((rf"\b(?:{words})\b", f'{said}: than what? the vocabulary says values, not changes: say '
+       + (f'{value}, a number ("10 cm above the rim") or the rim ("{said} than the rim")'
+          if said in ("higher", "lower") else f'{value}'))
+      for words, said, value in (
+          ("higher", "higher", '"pour high"'), ("lower", "lower", '"pour low"'),
+          ("heavier|lighter", "heavier or lighter", '"a heavy bowl" or "a light bowl"'),
+          ("faster|quicker|slower", "faster or slower", '"move in fast" or "move in slowly"'),
+          ("steeper", "steeper", '"steeply tilted"'),
+          ("closer|nearer|further|farther", "closer or further",
+           '"centred over the bowl", "near the rim", "from the side" or "far from the bowl"'),
+          ("stickier|thicker|runnier|thinner", "thicker or thinner",
+           '"a sticky liquid" or "a runny liquid"'),
+          ("bouncier|grippier|slipperier", "bouncier, grippier or slipperier",
+           '"a bouncy bowl", "a grippy bowl" or "a slippery bowl"'),
+          ("fuller|emptier", "fuller or emptier", '"a full cup" or "a little liquid"'))),
+    (r"\b(?:more|less|fewer) than\b|\bat (?:least|most)\b",
+     'a bound leaves the value open: say the value ("tilted halfway", "pour high") or a range '
+     'with both ends ("10 to 20 cm above the rim", "30 to 40 degrees")'),
     (r"^how ", 'asks for a value: say one ("pour high", "tilted halfway") and `ask` answers '
                'what happens, or give `pantarhei plan` the outcome wanted and it finds a pour'),
     (r"^from above$|^overhead$|^from the top$",

@@ -184,7 +184,6 @@ REFUSED = [
     'not a heavy liquid but a light one',
     'pour 10 to 20 cm above',
     'pour a 1 kg liquid',
-    'pour a lot',
     'pour a medium amount of liquid',
     'pour at an angle',
     'pour carefully',
@@ -208,7 +207,6 @@ REFUSED = [
     'the source is heavier than the destination',
     "what if I don't move in fast?",
     'what if I pour really slowly?',
-    'what if I tip the cup all the way over?',
     'what if the bowl moves?',
     'what if the cup is only half full?',
     'with 100 drops',
@@ -411,6 +409,9 @@ READ_TOO = {
     # numbers bound to the words next to them
     'pour from the side at 10 cm height': ['pour_mid_height', 'pour_to_side'],
     'pour at a height of 20 cm from the side': ['pour_high', 'pour_to_side'],
+    # an amount with no liquid after it; tipped all the way over
+    'pour a lot': ['much_liquid'],
+    'what if I tip the cup all the way over?': ['pour_upside_down'],
 }
 
 #: Refused in one line, naming what would be read: question -> words the refusal holds

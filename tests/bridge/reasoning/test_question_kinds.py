@@ -1,0 +1,84 @@
+"""Questions as people type them, by kind (question_kinds.tsv): each read
+as meant (its scene, the expectations it asks, the goals it wants) or, where
+the vocabulary cannot say it, refused in one line naming what could not be
+read and what would be; and, whatever the vocabulary's ranges, a range of
+numbers read as the proposition that holds all of it, or refused."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.reasoning.reading import read_question, understand
+from pantarhei.theory.lexicon import load_vocabulary
+
+DATA = Path(__file__).with_name("question_kinds.tsv")
+
+
+def _rows() -> list[tuple[str, str, str | None, str]]:
+    """(kind, question, meaning or None where it must be refused, what the refusal holds)."""
+    rows, kind = [], ""
+    for line in DATA.read_text(encoding="utf-8").splitlines():
+        if line.startswith("## "):
+            kind = line[3:]
+        elif line.strip() and not line.startswith("#"):
+            question, meant, *says = line.split("\t")
+            rows.append((kind, question, None if meant == "cannot" else meant, "".join(says)))
+    return rows
+
+
+ROWS = _rows()
+
+
+def _names(text: str) -> list[str]:
+    return sorted(n for n in text.split(",") if n)
+
+
+def test_every_kind_of_wording_is_in_the_corpus():
+    kinds = {k for k, *_ in ROWS}
+    assert {"negation and contrast", "comparatives, to a reference point or to none", "amounts",
+            "speeds", "outcomes asked", "lengths by hand"} <= kinds
+    assert all(says for _, _, meant, says in ROWS if meant is None)
+
+
+@pytest.mark.parametrize("question,meant", [(q, m) for _, q, m, _ in ROWS if m is not None])
+def test_read_as_meant(question, meant):
+    parts = dict(part.split("=", 1) for part in meant.split(";"))
+    r = read_question(question)
+    assert list(r.scene) in [_names(s) for s in parts["scene"].split("|")]
+    assert sorted(r.asked) == _names(parts.get("asked", ""))
+    assert sorted(r.goals) == _names(parts.get("goals", ""))
+
+
+@pytest.mark.parametrize("question,says", [(q, s) for _, q, m, s in ROWS if m is None])
+def test_refused_in_one_line_naming_what_would_be_read(question, says):
+    with pytest.raises(UserError) as e:
+        read_question(question)
+    assert says in str(e.value) and "\n" not in str(e.value)
+
+
+def _ranges(param: str) -> list[tuple[float, float, str]]:
+    return sorted((p.model.low, p.model.high, n) for n, p in load_vocabulary().propositions.items()
+                  if p.model.kind == "uniform" and p.model.param == param)
+
+
+@pytest.mark.parametrize("template,param,scale", [
+    ("pour {} cm above the rim", "pour_z", 10),
+    ("tilt it {} degrees", "pour_pitch", 1),
+    ("move in over {} seconds", "approach_duration", 1000),
+    ("between {} mm above the rim", "pour_z", 1),
+])
+def test_a_range_is_read_as_the_proposition_that_holds_all_of_it(template, param, scale):
+    """Whatever the vocabulary's ranges: a range inside one proposition's is
+    that proposition; one across two is refused naming them."""
+    join = " and " if template.startswith("between") else " to "
+    ranges = _ranges(param)
+    for low, high, name in ranges:
+        inner = (low + (high - low) / 4) / scale, (high - (high - low) / 4) / scale
+        assert understand(template.format(join.join(f"{v:g}" for v in inner))) == [name]
+    for (_, high_a, a), (low_b, _, b) in zip(ranges, ranges[1:]):
+        across = (high_a - 1) / scale, (low_b + 1) / scale
+        with pytest.raises(UserError, match="which no one proposition holds") as e:
+            understand(template.format(join.join(f"{v:g}" for v in across)))
+        assert a in str(e.value) and b in str(e.value)
