@@ -116,7 +116,8 @@ def _rewrite(pairs: list[tuple[str, str, str]], spans: list[tuple],
     its own words) is read as its own words."""
     out, last = [], 0
     for i, j, *own in spans:
-        raw = " ".join(r for _, r, _ in pairs[i:j])
+        raw = " ".join(r for k, (_, r, _) in enumerate(pairs[i:j], i)    # a word read as two once
+                       if k == i or r != pairs[k - 1][1])
         out += pairs[last:i] + [(w, raw, said) for w in (own[0] if own else words)]
         last = j
     return out + pairs[last:]

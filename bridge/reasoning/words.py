@@ -109,7 +109,11 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
                r" (?:too |very |so |that )?(?:much|a lot|far)\b",
                # pouring has no speed of its own: the moves in and out have
                r"re:(?<!after )(?<!before )\bpour(?:s|ed|ing)?(?: (?:it|the \w+|really|very|too|more|a bit|quite))*"
-               r" (?:slow(?:ly|er)?|fast(?:er)?|quick(?:ly|er)?|gently|carefully|rapidly)\b",)),
+               r" (?:slow(?:ly|er)?|fast(?:er)?|quick(?:ly|er)?|gently|carefully|rapidly)\b",
+               # with what is poured between: "pouring honey slowly" (not "pour, then move in slowly")
+               r"re:(?<!after )(?<!before )\bpour(?:s|ed|ing)?(?: (?!(?:then|and|move|moving|bring|"
+               r"approach|retreat|in|away|out|before|after|lift|lower|raise|pose|position)\b)[a-z]+){1,3}"
+               r" (?:slow(?:ly|er)?|fast(?:er)?|quick(?:ly|er)?|gently|carefully|rapidly)\b")),
     (UNCLEAR, (r"re:\ba little (?=to |more |further |closer |higher |lower |away )",
                "from above", r"re:\bfrom below\b(?! the (?:destination |bowl )?rim)",
                "from the top", "from the bottom", "overhead")),
@@ -163,7 +167,9 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
                r"upside down\b)",)),
     # tipping the source is tilting it ("tip it a bit"); the bowl tipping over is outcomes.py's;
     # forward is the way a tilt goes (towards the destination)
-    ("tilt", (r"re:\btip(?:s|ped|ping)?\b",)),
+    ("tilted", (r"re:\btipped\b",)),
+    ("tilting", (r"re:\btipping\b",)),
+    ("tilt", (r"re:\btips?\b",)),
     ("tilt", (r"re:\btilt(?:s|ed|ing)?(?: it| the \w+)? forwards?\b",)),
     ("rolled sideways", (r"re:\b(?:tilt|tip|lean)(?:s|ed|ing)?(?: (?:it|the \w+))? sideways\b",)),
     ("tilted away from the destination", ("tilted back", "tilted backwards", "leaning back")),

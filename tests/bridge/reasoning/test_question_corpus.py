@@ -452,7 +452,7 @@ REFUSED_SAYING = {
     'what if the bowl is on a slippery counter?': 'could not place "slippery"',
     'the table is slippery, will the bowl slide?': 'could not place "slippery"',
     'if I tip the cup, will it spill?': 'tilted how far?',
-    'pour batter slowly into a pan': '"move to the pouring pose slowly"',
+    'pour batter slowly into a pan': 'pouring has no speed of its own',
     'what if the jug bonks the bowl?': 'could not place "bonks"',
     'what if the milk spills?': 'asks what follows an outcome',
     'what if the milk ends up on the floor?': 'could not place "ends up"',
