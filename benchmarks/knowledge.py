@@ -6,8 +6,8 @@ chooses knows, at the same total of pours, every pour counted.
 
 The methods, each spending the same budget on pours of its own choice and
 learning the same kind of theory from its own pours only (no pours of the
-learner's own, bridge/learning/generalize.py, likelihoods from every pour
-pooled):
+learner's own; `--learner`, by default bridge/learning/generalize.py,
+likelihoods from every pour pooled):
 
 * `curiosity`: the learning curiosity (`explore --curiosity learn`); the
   rules' bodies are the antecedents it explored;
@@ -184,13 +184,14 @@ def measure(oracle: str, seeds: Sequence[int], budgets: Sequence[int], store: Pa
             methods: Sequence[str] = METHODS,
             done: Callable[[list[dict]], None] | None = None,
             known: Sequence[dict] = (), settings: dict | None = None,
-            executor: dict | None = None) -> list[dict]:
+            executor: dict | None = None, learner: str | None = None) -> list[dict]:
     """One row per method, seed and budget: the measures of its theory on
     the questions, and the behaviours its pours show; the rows of `known`
     are kept and not measured again; `done` is given the rows so far after
     each seed; `settings` are the curiosity's options other than their
     defaults; `executor` the executor options of every pour (executor,
-    workers, ray_address: as explore's)."""
+    workers, ray_address: as explore's); `learner` the learner every
+    method's theory is learned by (None: the option table's default)."""
     from pantarhei.bridge.evaluation.measures import (contrast_keys, defaults_only,
                                                       question_key, question_shares, verdicts)
     from pantarhei.bridge.evaluation.question_sets import (Keyed, interaction_questions, keyed,
@@ -233,7 +234,7 @@ def measure(oracle: str, seeds: Sequence[int], budgets: Sequence[int], store: Pa
                     chosen = make(seed, top, run)
                 for n in wanted:
                     row = {"method": method, "seed": seed, "pours": n,
-                           **theory_row(chosen, n, seed, sets)}
+                           **theory_row(chosen, n, seed, sets, learner)}
                     rows.append(row)
                     print(f"{method:11} seed {seed} {n:4} pours: " + ", ".join(
                         f"{label} {_num(row.get(k))}" for k, label in SHOWN), flush=True)
@@ -244,22 +245,25 @@ def measure(oracle: str, seeds: Sequence[int], budgets: Sequence[int], store: Pa
     return rows
 
 
-def theory_row(chosen: Chosen, n: int, seed: int, sets: dict) -> dict:
-    """The measures of the theories learned from a method's first n pours:
+def theory_row(chosen: Chosen, n: int, seed: int, sets: dict,
+               learner: str | None = None) -> dict:
+    """The measures of the theories learned by `learner` (learners.py;
+    None: the option table's default) from a method's first n pours:
     over its own bodies (unprefixed) and over every askable body
     (`askable_`; the same for a method whose own bodies are every askable
     one), each on every question set (`sets`: prefix -> Keyed), with the
     behaviours its pours show and those its theory gives."""
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen
     from pantarhei.bridge.evaluation.question_sets import answers, theory_behaviours
-    from pantarhei.bridge.learning.generalize import Settings, generalize
+    from pantarhei.bridge.learning.learners import learner as named
 
+    learn = named(learner)
     P, S = chosen.P[:n], chosen.S[:n]
     good = np.all(np.isfinite(S), axis=1)
     own = chosen.bodies(n)
-    theories = {"": generalize(P[good], S[good], Settings(seed=seed), own)}
+    theories = {"": learn(P[good], S[good], seed, own)}
     theories["askable_"] = (theories[""] if own is None else
-                            generalize(P[good], S[good], Settings(seed=seed), None))
+                            learn(P[good], S[good], seed, None))
     row: dict = {"behaviours": behaviours_seen(S)}
     for tag, g in theories.items():
         row[f"{tag}theory_behaviours"] = theory_behaviours(g)
@@ -402,6 +406,8 @@ def main(argv: Sequence[str] = ()) -> None:
     p.add_argument("--workers", type=int, default=None, help="worker processes (default: one per core)")
     p.add_argument("--ray-address", default=None, metavar="ADDR",
                    help="Ray cluster to join (with --executor ray)")
+    p.add_argument("--learner", choices=choices("learner"), default=defaults()["learner"],
+                   help="the learner of every method's theory, as explore's --learner")
     p.add_argument("--explore", default="", metavar="NAME=VALUE,...",
                    help="the curiosity's options other than their defaults, e.g. doubt=0,reach=0")
     args = p.parse_args(list(argv))
@@ -437,7 +443,7 @@ def main(argv: Sequence[str] = ()) -> None:
         raise SystemExit(f"--explore: not NAME=VALUE,...: {args.explore!r}") from None
     executor = {"executor": args.executor, "workers": args.workers, "ray_address": args.ray_address}
     rows = measure(args.oracle, seeds, budgets, Path(args.store), methods, write, known, settings,
-                   executor)
+                   executor, args.learner)
     write(rows)
     print(table(this_run(rows), args.oracle, seeds))
     print(f"written: {md}, {png}, {data}")

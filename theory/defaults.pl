@@ -76,6 +76,8 @@ option(initial, antecedent, none, none,
   "the initial antecedent a_0, propositions separated by commas").
 option(general, flag, none, true,
   "--no-general: write Algorithm 1's rules only, without the general rules learned from every pour (discover and paper; learn writes one layer)").
+option(learner, choice, one_of(general), general,
+  "the learner of the general rules from every pour (bridge/learning/learners.py; the theory records it, and the evaluation learns again with it)").
 option(store, path, none, default(store),
   "SQLite file of simulations and exploration state").
 option(out, path, none, default(explore_out),
@@ -187,6 +189,7 @@ used_by(general, paper).
 % antecedent one fact each, after the run's own facts.
 recorded(budget).
 recorded(qualify).
+recorded(learner).
 
 % The verdict of a pour: an expectation holds where its score (0 to 1,
 % oracle/scoring.py) is above this, and fails otherwise. Read by Python

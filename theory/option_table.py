@@ -147,7 +147,7 @@ def _readers(o: Option) -> str:
 def _values(o: Option) -> str:
     if o.choices:
         shown = [f"`{c}`" for c in o.choices]
-        return ", ".join(shown[:-1]) + " or " + shown[-1]
+        return shown[0] if len(shown) == 1 else ", ".join(shown[:-1]) + " or " + shown[-1]
     if o.type in ("count", "permille"):
         what = "whole number" if o.type == "count" else "number"
         return f"{what} from {_number(o.low)}" + (f" to {_number(o.high)}" if o.high is not None else "")

@@ -49,6 +49,15 @@ class Learned:
         return str(self.setting("qualify", defaults()["qualify"]))
 
     @property
+    def learner(self) -> str:
+        """The learner that wrote the theory's general rules (its setting,
+        else the default of theory/defaults.pl): the one the evaluation
+        learns with again."""
+        from pantarhei.bridge.learning.learners import recorded_learner
+
+        return recorded_learner(self.settings)
+
+    @property
     def batches(self) -> list[int]:
         """Per explored antecedent, how many iterations explored it."""
         return [self.steps.count(i) for i in range(len(self.antecedents))]
@@ -68,6 +77,7 @@ def read_learned(path: Path | str) -> Learned:
     if not settings.get("seed") or not settings.get("batch"):
         raise UserError(f"{path}: not a theory written by `pantarhei explore` "
                         f"(no setting/2 facts to evaluate it by)")
+    _require_known_learner(path, settings)
     trace = trace_path(path)
     try:
         lines = [json.loads(line) for line in trace.read_text(encoding="utf-8").splitlines()]
@@ -81,6 +91,16 @@ def read_learned(path: Path | str) -> Learned:
         raise UserError(f"{trace}: the explored antecedents are not a1..a{len(order)}")
     return Learned(path, theory, settings, [bodies[a] for a in order],
                    [order.index(a) for a in ids], draws)
+
+
+def _require_known_learner(path: Path, settings: dict[str, list[Any]]) -> None:
+    """UserError when the theory names a learner this version does not know."""
+    from pantarhei.bridge.learning.learners import learner, recorded_learner
+
+    try:
+        learner(recorded_learner(settings))
+    except ValueError as e:
+        raise UserError(f"{path}: setting(learner, _): {e}") from None
 
 
 def exploration_draws(learned: Learned) -> tuple[np.ndarray, list[tuple[str, ...]], np.ndarray,

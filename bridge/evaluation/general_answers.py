@@ -62,7 +62,7 @@ def general_stage(ev: Evaluation, inputs: Inputs) -> None:
     learned = inputs.learned
     general_theories(ev, learned.theory, inputs.methods, inputs.held, inputs.run,
                      inputs.opts.seed, int(learned.setting("seed", inputs.opts.seed)),
-                     learned.antecedents if learned.one_layer else None)
+                     learned.antecedents if learned.one_layer else None, learned.learner)
 
 
 def general_headline(ev: Evaluation) -> list[tuple[str, str, str, bool]]:
@@ -99,7 +99,7 @@ def general_headline(ev: Evaluation) -> list[tuple[str, str, str, bool]]:
 
 def general_theories(ev, theory: Theory, methods: dict, held: dict,
                      run: Callable[..., np.ndarray], seed: int, explored_seed: int,
-                     explored: list | None = None) -> None:
+                     explored: list | None = None, learner: str | None = None) -> None:
     """Fill `ev.general`: for each method's pours (`methods`: name -> Pours),
     the general rules learned from them (and from the learner's own pours,
     as `explore` learns them), gradient boosting on the same pours (the
@@ -112,7 +112,9 @@ def general_theories(ev, theory: Theory, methods: dict, held: dict,
     keys are the clear keys where the defaults-only theory of curiosity's
     pours is wrong. For the learning curiosity's theory, `explored` are its
     explored antecedents: curiosity's rules are learned over them from its
-    pours alone, as `explore` wrote them."""
+    pours alone, as `explore` wrote them. Every method's rules are learned
+    by the learner named `learner` (the theory's; None: the option
+    table's default)."""
     t = time.monotonic()
     asked = questions()
     P_q, of = question_pours(asked, seed)
@@ -130,7 +132,8 @@ def general_theories(ev, theory: Theory, methods: dict, held: dict,
     for method, m in methods.items():
         out[method] = _method(k, m, explored_seed if method == "curiosity" else seed, run,
                               first=method == "curiosity",
-                              bodies=explored if method == "curiosity" else None)
+                              bodies=explored if method == "curiosity" else None,
+                              learner=learner)
         if method == "curiosity":
             out["contrast"] = k.contrast.astype(int).tolist()
     pred, lik = answer_matrix(theory, k.scenes)
@@ -142,7 +145,7 @@ def general_theories(ev, theory: Theory, methods: dict, held: dict,
 
 
 def _method(k: _Keys, m, seed: int, run: Callable[..., np.ndarray], first: bool,
-            bodies: list | None = None) -> dict[str, Any]:
+            bodies: list | None = None, learner: str | None = None) -> dict[str, Any]:
     """One method's entry: its general rules, boosting and defaults-only; the
     first method's defaults-only theory sets the contrast keys. With
     `bodies`, the rules are learned over them from the method's pours alone
@@ -156,7 +159,8 @@ def _method(k: _Keys, m, seed: int, run: Callable[..., np.ndarray], first: bool,
     okm = np.all(np.isfinite(m.S), axis=1)
     g, P, S = learn_general(m.P[okm], m.S[okm], seed,
                             None if bodies is not None else
-                            lambda X: run("the learner's own pours", X), bodies=bodies)
+                            lambda X: run("the learner's own pours", X), bodies=bodies,
+                            learner=learner)
     Y = verdicts(S)
     base, base_p = defaults_only(Y, len(k.scenes))
     if first:

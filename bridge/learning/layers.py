@@ -1,8 +1,8 @@
 """One theory of two layers: Algorithm 1's rules and the general rules.
 
 Algorithm 1 writes one rule per explored antecedent and expectation (its
-body is the antecedent, `r<i>_<E>`); a learner (learners.py; by default
-generalize.py) learns general rules from every pour of the exploration
+body is the antecedent, `r<i>_<E>`); a learner (learners.py; the run's
+`learner` setting, by default generalize.py) learns general rules from every pour of the exploration
 (`g<i>_<E>`). Both are learned rules, and a
 scene that both speak of is decided as within one layer: the most specific
 applicable rule wins (a body that holds another's), and between rules whose
@@ -84,10 +84,10 @@ def superiority(rules: Sequence[Ranked]) -> list[tuple[str, str]]:
 def learn_general(P: np.ndarray, S: np.ndarray, seed: int, simulate=None,
                   per_body: int | None = None,
                   bodies: Sequence[Sequence[str]] | None = None,
-                  learner: str = learners.DEFAULT_LEARNER
+                  learner: str | None = None
                   ) -> tuple[General, np.ndarray, np.ndarray]:
     """The general rules of the pours (P, S) by the learner named
-    `learner` (learners.py), after simulating (with `simulate`:
+    `learner` (learners.py; None: the option table's default), after simulating (with `simulate`:
     parameterizations to scores) the pours the learner asks for where the
     exploration left it none (bridge/learning/gaps.py); the pours it
     learned from are returned beside the rules. The rules' bodies are
@@ -108,8 +108,8 @@ def learn_general(P: np.ndarray, S: np.ndarray, seed: int, simulate=None,
 
 
 def general_layer(learned: Sequence[Ranked], P: np.ndarray, S: np.ndarray, seed: int,
-                  simulate=None, explored: Sequence[tuple[str, Sequence[str]]] | None = None
-                  ) -> dict:
+                  simulate=None, explored: Sequence[tuple[str, Sequence[str]]] | None = None,
+                  learner: str | None = None) -> dict:
     """The general layer of an exploration's pours (P, S) and the
     learner's own (simulated with `simulate`), as explore/1 writes it
     beside Algorithm 1's rules `learned`: the pours it learned from (those
@@ -118,11 +118,13 @@ def general_layer(learned: Sequence[Ranked], P: np.ndarray, S: np.ndarray, seed:
     pairs that make both layers one linear order. With `explored` (id,
     antecedent) pairs, the learning curiosity's: the rules' bodies are the
     explored antecedents (and the empty one), each rule names the
-    antecedent whose body it has, and no pour is the learner's own."""
+    antecedent whose body it has, and no pour is the learner's own. The
+    rules are learned by the learner named `learner` (the run's setting;
+    None: the option table's default)."""
     n0 = len(np.atleast_2d(P))
     among = None if explored is None else [tuple(sorted(b)) for _, b in explored]
     general, P, S = learn_general(P, S, seed, simulate if explored is None else None,
-                                  bodies=among)
+                                  bodies=among, learner=learner)
     ids = {tuple(sorted(b)): str(a) for a, b in reversed(list(explored or []))}
     rules = []
     for g in general.rules:

@@ -11,9 +11,14 @@ expectation a default with the empty body (`g0_<E>`) and further rules
 
 `layers.learn_general` is the one door to a learner: the exploration
 (`general_layer`, which explore/1 calls) and the evaluation
-(`bridge/evaluation/pipeline.py`, `general_answers.py`) learn through it,
-with `DEFAULT_LEARNER`. Adding a learner is a module in this folder with a
-function of that interface, named in `LEARNERS`.
+(`bridge/evaluation/pipeline.py`, `general_answers.py`) learn through it.
+Which learner is a setting: the `learner` row of the option table
+(theory/defaults.pl), whose choices are the names of `LEARNERS` and whose
+default is `default_learner()`; a learned theory records it
+(`setting(learner, Name)`), and what learns a theory again reads it there
+(`recorded_learner`). Adding a learner is a module in this folder with a
+function of that interface, named in `LEARNERS` and among the choices of
+the `learner` row.
 """
 from __future__ import annotations
 
@@ -38,12 +43,29 @@ LEARNERS: Mapping[str, Learner] = MappingProxyType({
     "general": generalize.learn,
 })
 
-#: The learner the exploration and the evaluation use.
-DEFAULT_LEARNER = "general"
 
 
-def learner(name: str) -> Learner:
-    """The learner named `name` (ValueError for an unknown name)."""
+def default_learner() -> str:
+    """The name of the learner used where none is chosen: the default of
+    the `learner` row of the option table (theory/defaults.pl)."""
+    from pantarhei.theory import defaults
+
+    return str(defaults()["learner"])
+
+
+def learner(name: str | None = None) -> Learner:
+    """The learner named `name` (None: `default_learner()`; ValueError for
+    an unknown name)."""
+    name = default_learner() if name is None else str(name)
     if name not in LEARNERS:
         raise ValueError(f"unknown learner '{name}' (choose {', '.join(LEARNERS)})")
     return LEARNERS[name]
+
+
+def recorded_learner(settings: Mapping[str, Sequence]) -> str:
+    """The learner a learned theory's setting/2 facts name (`settings`:
+    key to values, as `bridge/theories/loading.settings` reads them), else
+    `default_learner()` (a theory written before the learner was
+    recorded, or by hand)."""
+    values = settings.get("learner") or ()
+    return str(values[0]) if values else default_learner()

@@ -121,7 +121,8 @@ via_facts(Id, via(E, X, Sign), [ provenance(Id, followed, E),
 %
 %   General are the facts of the general layer (bridge/learning/layers.py,
 %   exploration_general): rules learned from every pour of the
-%   exploration and the learner's own, each with its provenance (layer,
+%   exploration and the learner's own, by the run's learner (the learner
+%   setting), each with its provenance (layer,
 %   level, support, kept, confidence in permille), setting/2 facts of how
 %   many pours they rest on, and the sup/2 facts that order both layers
 %   (Algorithm 1's rules are those of Facts, with their confidence).
@@ -132,7 +133,8 @@ general_layer(Facts, Settings, General) :-
               findall(P, member(body(Id, P), Facts), B),
               memberchk(provenance(Id, confidence_permille, C), Facts)
             ), Rules),
-    call_bridge(exploration_general, _{rules:Rules, seed:Settings.seed}, Reply),
+    call_bridge(exploration_general, _{rules:Rules, seed:Settings.seed,
+                                       learner:Settings.learner}, Reply),
     layer_facts(Reply, General).
 
 %!  learned_layer(+Explored:list, +Settings:dict, -Layer:list) is det.
@@ -145,7 +147,8 @@ general_layer(Facts, Settings, General) :-
 %   pours they rest on, and their sup/2 facts.
 learned_layer(Explored, Settings, Layer) :-
     maplist(entry, Explored, Entries),
-    call_bridge(exploration_general, _{rules:[], explored:Entries, seed:Settings.seed}, Reply),
+    call_bridge(exploration_general, _{rules:[], explored:Entries, seed:Settings.seed,
+                                       learner:Settings.learner}, Reply),
     layer_facts(Reply, Layer).
 
 %   layer_facts(+Reply, -Facts): the rules of exploration_general's

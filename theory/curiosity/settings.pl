@@ -217,6 +217,8 @@ check_option(choice, Range, Key, V, V) :- !,
     Range =.. [one_of|Choices],
     (   memberchk(V, Choices)
     ->  true
+    ;   Choices = [Only]
+    ->  option_error(Key, "expected ~w", [Only])
     ;   append(First, [Last], Choices),
         atomic_list_concat(First, ', ', Text),
         option_error(Key, "expected ~w or ~w", [Text, Last])

@@ -1,6 +1,8 @@
 """The learners (bridge/learning/learners.py): every learner named in
-LEARNERS has the one interface and gives general rules, and the
-exploration and the evaluation learn through the registry's default."""
+LEARNERS has the one interface and gives general rules; which one learns
+is the `learner` option of theory/defaults.pl, whose choices are LEARNERS'
+names; the exploration and the evaluation learn through the registry, the
+evaluation with the learner the theory records."""
 from __future__ import annotations
 
 import inspect
@@ -13,9 +15,11 @@ import pytest
 
 from pantarhei.bridge.learning import learners
 from pantarhei.bridge.learning.general_rules import General
-from pantarhei.bridge.learning.learners import DEFAULT_LEARNER, LEARNERS
+from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.learning.learners import LEARNERS, default_learner, recorded_learner
 from pantarhei.oracle.generative import sample
 from pantarhei.theory.lexicon import load_vocabulary
+from pantarhei.theory.option_table import option
 
 NAMES = load_vocabulary().expectation_names
 SPILL = NAMES.index("no_spill")
@@ -57,8 +61,56 @@ def test_every_learner_takes_pours_and_gives_general_rules(name):
 
 
 def test_an_unknown_learner_is_named_with_the_known_ones():
-    with pytest.raises(ValueError, match=f"unknown learner 'nope'.*{DEFAULT_LEARNER}"):
+    with pytest.raises(ValueError, match=f"unknown learner 'nope'.*{default_learner()}"):
         learners.learner("nope")
+
+
+def test_the_learner_is_an_option_of_the_table_whose_choices_are_the_learners():
+    row = option("learner")
+    assert row.type == "choice" and not row.prolog_only and not row.curiosities
+    assert set(row.choices) == set(LEARNERS)
+    assert row.default == default_learner() and learners.learner() is LEARNERS[row.default]
+
+
+def test_a_theory_s_learner_is_its_setting_else_the_default():
+    assert recorded_learner({"learner": ["toy"], "seed": [1]}) == "toy"
+    assert recorded_learner({"seed": [1]}) == default_learner()
+    assert recorded_learner({"learner": []}) == default_learner()
+
+
+def test_a_theory_naming_a_learner_unknown_here_is_refused_in_one_line(tmp_path):
+    from pantarhei.bridge.evaluation.explored_pours import read_learned
+
+    theory = tmp_path / "t.pl"
+    theory.write_text("setting(seed, 1).\nsetting(batch, 2).\nsetting(learner, nope).\n",
+                      encoding="utf-8")
+    with pytest.raises(UserError, match=r"t\.pl: setting\(learner, _\): unknown learner 'nope'"):
+        read_learned(theory)
+
+
+def test_the_evaluation_learns_again_with_the_learner_the_theory_names(monkeypatch):
+    from pantarhei.bridge.evaluation.explored_pours import Learned
+    from pantarhei.bridge.evaluation.pipeline import _differing_layer
+    from pantarhei.bridge.theories.model import Theory
+
+    default = LEARNERS[default_learner()]
+    used: list[str] = []
+
+    def named(name):
+        def learn(P, S, seed, bodies):
+            used.append(name)
+            return default(P, S, seed, bodies)
+        return learn
+
+    monkeypatch.setattr(learners, "LEARNERS", MappingProxyType(
+        {name: named(name) for name in [*LEARNERS, "toy"]}))
+    P, S = pours()
+    for settings, want in (({"seed": [3], "learner": ["toy"]}, "toy"),
+                           ({"seed": [3]}, default_learner())):
+        learned = Learned(Path("t.pl"), Theory(), settings, list(BODIES), [], [])
+        assert learned.learner == want
+        _differing_layer(learned, P, S)
+        assert used.pop() == want and not used
 
 
 def test_the_exploration_and_the_evaluation_learn_through_the_registry_s_default(monkeypatch):
@@ -69,7 +121,7 @@ def test_the_exploration_and_the_evaluation_learn_through_the_registry_s_default
     from pantarhei.bridge.exploration.session import Host, Session
     from pantarhei.bridge.theories.model import Theory
 
-    default = LEARNERS[DEFAULT_LEARNER]
+    default = LEARNERS[default_learner()]
     calls: list[set[str]] = []        # per call, the files of its callers
 
     def recording(P, S, seed, bodies):
@@ -77,7 +129,7 @@ def test_the_exploration_and_the_evaluation_learn_through_the_registry_s_default
         return default(P, S, seed, bodies)
 
     monkeypatch.setattr(learners, "LEARNERS",
-                        MappingProxyType({**LEARNERS, DEFAULT_LEARNER: recording}))
+                        MappingProxyType({**LEARNERS, default_learner(): recording}))
     P, S = pours()
     ok = np.all(np.isfinite(S), axis=1)
     alone = default(P[ok], S[ok], 3, BODIES)
