@@ -167,10 +167,11 @@ def proposition(q: Quantity, param: str, cues: set[str], low: float | None = Non
     ends = [sign * q.value] if low is None else sorted({sign * low, sign * q.value})
     ranges = sorted((p.model.low, p.model.high, n) for n, p in vocab.propositions.items()
                     if p.model.kind == "uniform" and p.model.param == param)
-    # on the bound of two ranges, the upper: 0 mm above the rim is low
-    holding = {([n for lo, hi, n in ranges if lo <= v <= hi] or [None])[-1] for v in ends}
-    if len(holding) == 1 and None not in holding:
-        return holding.pop()
+    # on the bound of two ranges, the upper: 0 mm above the rim is low; a range, the one
+    # holding all of it: 30 to 40 degrees is slightly tilted (5 to 40)
+    holding = [n for lo, hi, n in ranges if lo <= ends[0] and ends[-1] <= hi]
+    if holding:
+        return holding[-1]
     said = "; ".join(f"{n} {lo} to {hi} {unit}" for lo, hi, n in ranges)
     value = " to ".join(f"{v:g}" for v in ends)
     raise UserError(f"\"{q.text}\" is {value} {unit} of {param}, which no "
@@ -235,9 +236,9 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
 
 def _low_end(tokens: list[Token], i: int) -> int | None:
     """The position of the first number of a range said "8 to 10 cm" (or
-    "between 8 and 10 cm") whose
+    "8 or 10 cm", "between 8 and 10 cm") whose
     second number is at `i`; None if the number at `i` begins none."""
-    said = tokens[i - 1].word == "to" or (tokens[i - 1].word == "and" and i >= 3
+    said = tokens[i - 1].word in ("to", "or") or (tokens[i - 1].word == "and" and i >= 3
                                           and tokens[i - 3].raw == "between")
     if i >= 2 and said and re.fullmatch(NUMBER, tokens[i - 2].word) \
             and tokens[i - 2].clause == tokens[i].clause and float(tokens[i].word) != 0:
@@ -245,9 +246,14 @@ def _low_end(tokens: list[Token], i: int) -> int | None:
     return None
 
 
+#: A unit's stem -> the unit: a unit a rewrite gives ("an inch or two") is read by its stem.
+_STEMS = {stem(k): k for k in UNITS}
+
+
 def _unit(t: Token) -> str | None:
-    """The key of UNITS that `t` says: as written ("cm"), or as properties.py writes it."""
-    return t.raw if t.raw in UNITS else (t.word if t.word in UNITS else None)
+    """The key of UNITS that `t` says: as written ("cm"), as properties.py
+    writes it, or as a rewrite gives it (its stem)."""
+    return t.raw if t.raw in UNITS else (t.word if t.word in UNITS else _STEMS.get(t.word))
 
 
 def _past(tokens: list[Token], j: int, step: int, words: set[str]) -> int:

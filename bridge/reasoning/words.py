@@ -25,6 +25,7 @@ import re
 from functools import lru_cache
 
 from pantarhei.bridge.reasoning.everyday import Matcher, alternation, names, sections
+from pantarhei.bridge.reasoning.numerals import NumberWords
 from pantarhei.bridge.reasoning.properties import Levels, Values
 
 _IT = "[the source|the bowl|it]"
@@ -63,7 +64,7 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     # the rim")
     ("low", (rf"re:\b{_DEGREE} (?:higher|above) than {_RIM}",)),
     ("above", (rf"re:\b(?:higher|above) than {_RIM}",)),
-    ("below rim", (rf"re:\b(?:{_DEGREE} )?(?:lower|below) than {_RIM}",)),
+    ("below the rim", (rf"re:\b(?:{_DEGREE} )?(?:lower|below) than {_RIM}",)),
     # a comparison with nothing it is measured from: higher than what?
     (UNCLEAR, (rf"re:\b(?:{_DEGREE} |much |even |far |a lot |any |no )?(?:more |less )?"
                rf"(?:{_COMPARATIVES})\b(?: than (?:before|usual|normal|that|it|the \w+))?",
@@ -194,17 +195,12 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
                           r"(?! (?:of|more|higher|lower|further|closer)\b)",)),
     ("much liquid", (r"re:\b(?:a lot|lots|loads|plenty)(?= (?:in|inside) (?:it|the \w+)\b)",)),
     ("slowly", (r"re:\b(?:tak(?:e|es|ing)|took) (?:your|its|my|our|their|the|his|her) time\b",)),
-    # lengths by hand: a finger's width, a hand's width, a few centimetres (a range,
-    # read only where one proposition holds all of it)
+    # lengths by hand: a finger's width, a hand's width (a range, read only where one
+    # proposition holds all of it; "a few cm" is numerals.py's)
     ("1.5 to 2 cm", ("a finger width", "a finger breadth", "a fingerbreadth", "one finger width")),
     ("7 to 10 cm", ("a hand width", "a hand breadth", "a handbreadth", "a palm width",
                     "one hand width")),
-    ("1 to 2 inches", ("an inch or two", "one or two inches")),
-    ("1 to 2 cm", ("a centimetre or two", "a centimeter or two", "a cm or two")),
-    ("2 to 3 cm", (r"re:\ba couple of (?:cm|centimet(?:re|er)s)\b",)),
-    ("2 to 5 cm", (r"re:\ba few (?:cm|centimet(?:re|er)s)\b",)),
-    ("2 to 3 inches", (r"re:\ba couple of inches\b",)),
-    ("2 to 5 inches", (r"re:\ba few inches\b",)),
+
     ("little", ("a few drops of", "a few drops", "a drop of", "a drop")),
     ("slippery", ("slick", "smooth", "greasy")),
     ("grippy", ("rough",)),
@@ -320,7 +316,8 @@ def _everyday() -> list[tuple[Matcher, str, str]]:
 @lru_cache(maxsize=None)
 def rewrites() -> tuple[tuple[re.Pattern | Matcher | Levels | Values, tuple[str, ...], str], ...]:
     """Each rewrite in the order applied, with the words it is read as and
-    what is said back: a property by its level or its number ("low
+    what is said back: a number said in words ("two inches": numerals.py),
+    a property by its level or its number ("low
     friction", "a friction of 0.1": properties.py, which gives the words
     of each phrase itself), the
     everyday word list, then PHRASES; an entry's phrases as one compiled
@@ -328,7 +325,7 @@ def rewrites() -> tuple[tuple[re.Pattern | Matcher | Levels | Values, tuple[str,
     def compiled(words: str, phrases: tuple[str, ...]):
         return re.compile("|".join(f"(?:{_pattern(p)})" for p in phrases)), tuple(words.split()), ""
 
-    return ((Levels(), (), ""), (Values(), (), ""),
+    return ((NumberWords(), (), ""), (Levels(), (), ""), (Values(), (), ""),
             *((m, tuple(w.split()), said) for m, w, said in _everyday()),
             *(compiled(*entry) for entry in PHRASES))
 
