@@ -32,7 +32,8 @@ class NumberWords:
         i = 0
         while i < len(words):
             found = _number_at(words, i)
-            if found is not None and found[0] < len(words) and words[found[0]] in UNITS:
+            if found is not None and found[0] < len(words) and words[found[0]] in UNITS and not (
+                    words[i] in _ONE and UNITS[words[found[0]]][0] == "count"):   # a particle of it
                 end, value = found
                 said = tuple(f"{v:g}" if isinstance(v, float) else v for v in value)
                 if words[end + 1:end + 2] == ["or"] and end + 2 < len(words) \
