@@ -11,8 +11,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from pantarhei.bridge.evaluation.plan_checks import (GOAL_SETS, MET, goal_sets, plan_checks,
-                                                     plans_headline, plans_section)
+from pantarhei.bridge.evaluation.plan_checks import (GOAL_SETS, MET, SEARCH_BUDGET, goal_sets,
+                                                     plan_checks, planner_budget, plans_headline,
+                                                     plans_section)
 from pantarhei.bridge.evaluation.rule_building import theory_of
 from pantarhei.bridge.reasoning.plan_numbers import fixed_ranges
 from pantarhei.bridge.reasoning.scenes import violations
@@ -56,13 +57,18 @@ def test_each_goal_set_gets_a_verified_plan_with_its_numbers_or_says_why(synthet
     for p, (_, given, goals) in zip(out, goal_sets()):
         assert p["goals"] == goals + ["liquid_leaves_source"] and p["given"] == given
         assert 0 <= p["ordinary"]["met"] <= p["ordinary"]["simulated"] == verify
-        assert p["pours"] <= 6 * verify and p["search"]["pours"] <= 8 * verify
+        assert p["pours"] <= planner_budget() * verify
+        assert p["search"]["pours"] <= p["search"]["budget"] == SEARCH_BUDGET * verify
+        if p["search"]["plan"] is not None:      # verified alike: confirmed on fresh pours
+            assert p["search"]["met"] >= 0.9 * p["search"]["simulated"] == 0.9 * 2 * verify
         if "plan" not in p:
             assert p["none"].startswith(("every candidate refuted", "unreachable in the theory"))
             continue
         assert set(given) <= set(p["antecedent"]) and not violations(p["antecedent"])
         v = p["verified"]
-        assert v["met"] >= 0.9 * v["simulated"] > 0
+        assert v["met"] >= 0.9 * v["simulated"] > 0 and v["simulated"] == 2 * verify
+        assert [(b["batch"], b["simulated"]) for b in v["batches"]] == [("first", verify),
+                                                                          ("confirming", verify)]
         assert set(v["per_goal"]) == set(p["goals"]) and min(v["per_goal"].values()) >= v["met"]
         assert p["numbers"] == [r.words() for r in fixed_ranges(p["antecedent"])]
         assert [r["goal"] for r in p["rests_on"]] == p["goals"]
@@ -86,6 +92,20 @@ def test_a_refuted_plan_is_never_reported(synthetic):
     assert all(p["none"].startswith(("every candidate refuted", "unreachable in the theory"))
                and "the best" in p["none"] for p in spills)
     assert all(p["search"]["plan"] is None for p in spills)
+    # the simulation alone: every manner alone first, then pairs, until
+    # its budget is spent (each plan tried takes 2 pours, with room for 4)
+    for p in spills:
+        s = p["search"]
+        assert s["tried"] == s["singles"] + s["pairs"] and s["pours"] == 2 * s["tried"]
+        assert s["pours"] + 4 > s["budget"] == SEARCH_BUDGET * 2
+        assert s["pairs"] == 0 or s["singles"] == len(valid_singles(p["given"]))
+
+
+def valid_singles(given):
+    vocab = load_vocabulary()
+    taken = {vocab.propositions[g].dimension for g in given}
+    return [m for m, x in vocab.propositions.items() if vocab.dimensions[x.dimension].role == "manner"
+            and x.dimension not in taken and not violations([*given, m])]
 
 
 def test_the_plans_found_with_their_numbers_or_why_none(tmp_path):
@@ -101,14 +121,18 @@ def test_the_plans_found_with_their_numbers_or_why_none(tmp_path):
          "ordinary": {"simulated": 4, "met": 0}, "plan": ["pour_low"], "tried": 2, "pours": 8,
          "numbers": ["pour_z 0 to 60 mm"],
          "rests_on": [{"goal": "no_spill", "rule": "g3_no_spill", "likelihood": 0.91}],
-         "verified": {"simulated": 4, "met": 4, "per_goal": {"no_spill": 4}},
+         "verified": {"simulated": 4, "met": 4, "per_goal": {"no_spill": 4},
+                      "batches": [{"batch": "first", "simulated": 2, "met": 2},
+                                  {"batch": "confirming", "simulated": 2, "met": 2}]},
          "simulated": 8, "met": 7,
-         "search": {"tried": 3, "pours": 12, "plan": ["pour_low"], "met": 4, "simulated": 4}}]
+         "search": {"tried": 3, "pours": 12, "plan": ["pour_low"], "met": 4, "simulated": 4,
+                    "singles": 3, "pairs": 0}}]
     assert plans_section(ev, tmp_path)[-2:] == [
         "| high (pour_high) | 1 of 4 | none found: every candidate refuted: ... | - | - | - | "
         "20 (5 plans) | - | none in 30 pours |",
         "| side (pour_to_side) | 0 of 4 | pour_low | pour_z 0 to 60 mm | no_spill: g3_no_spill "
-        "(91%) | no_spill 4/4 | 8 (2 plans) | 7 of 8 | pour_low: 4 of 4 (12 pours) |"]
+        "(91%) | no_spill 4/4 (every goal: 2/2, then 2/2 fresh) | 8 (2 plans) | 7 of 8 | "
+        "pour_low: 4 of 4 (12 pours; 3 alone, 0 pairs tried) |"]
     ev.plans = []
     assert plans_section(ev, tmp_path)[-1] == "| (not verified) | | | | | | | | |"
 
