@@ -70,7 +70,7 @@ def planned_rules(k: int, body: Sequence[str], P: np.ndarray, S: np.ndarray,
         return rules, provenance
     body = tuple(sorted(body))
     Y = verdicts(S)
-    general = learners.learner(learners.DEFAULT_LEARNER)(P, S, int(seed), [body])
+    general = learners.learner()(P, S, int(seed), [body])
     for e, (_, like, _) in general.answer(body).items():
         if not np.isfinite(like):
             continue
