@@ -314,19 +314,21 @@ def _everyday() -> list[tuple[Matcher, str, str]]:
 
 
 @lru_cache(maxsize=None)
-def rewrites() -> tuple[tuple[re.Pattern | Matcher | Levels | Values, tuple[str, ...], str], ...]:
+def rewrites() -> tuple[tuple[re.Pattern | Matcher | Levels | Values | NumberWords, tuple[str, ...],
+                                 str], ...]:
     """Each rewrite in the order applied, with the words it is read as and
-    what is said back: a number said in words ("two inches": numerals.py),
-    a property by its level or its number ("low
+    what is said back: a property by its level or its number ("low
     friction", "a friction of 0.1": properties.py, which gives the words
     of each phrase itself), the
-    everyday word list, then PHRASES; an entry's phrases as one compiled
+    everyday word list, a number said in words ("two inches": numerals.py),
+    then PHRASES; an entry's phrases as one compiled
     pattern, a section of the list as a Matcher."""
     def compiled(words: str, phrases: tuple[str, ...]):
         return re.compile("|".join(f"(?:{_pattern(p)})" for p in phrases)), tuple(words.split()), ""
 
-    return ((NumberWords(), (), ""), (Levels(), (), ""), (Values(), (), ""),
+    return ((Levels(), (), ""), (Values(), (), ""),
             *((m, tuple(w.split()), said) for m, w, said in _everyday()),
+            (NumberWords(), (), ""),
             *(compiled(*entry) for entry in PHRASES))
 
 
