@@ -73,7 +73,8 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
                r"re:\b(?:lower|closer|nearer|further|farther) than\b(?: (?:before|usual|normal|that"
                r"|it|the \w+))?",
                r"re:\b(?:more|less|fewer) than\b(?: (?:before|usual|normal|that|halfway"
-               r"|half way|half))?", r"re:\bat (?:least|most)(?= -?\d)")),
+               r"|half way|half))?",
+               r"re:\b(?:at (?:least|most)|past|beyond|up to|no (?:more|less) than)(?= -?\d)")),
     # tilting has no speed in the vocabulary: how far, not how fast
     (UNCLEAR, (r"re:\b(?:tilt|tip|rotat|turn)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
                r" (?:slow(?:ly|er)?|fast(?:er)?|quick(?:ly|er)?|rapidly|gradually|steadily)\b",
@@ -104,7 +105,8 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     # "not tilted at all" is upright; "not tilted much" is slightly tilted or upright
     ("upright", (r"re:\b(?:not|without) (?:be |being |any )?(?:tilt|tip|lean)\w*\b(?!(?: (?:it|the \w+))?"
                  r" (?:much|a lot|far|too|very|so|that|sideways|back|steeply|slightly|halfway|half|a bit"
-                 r"|a little|away|over|towards|at \d|\d)\b)(?: (?:it|the \w+))?(?: at all)?",
+                 r"|a little|away|over|towards|past|beyond|more|up to|unclear|at \d|\d)\b)(?: (?:it|the \w+))?"
+                 r"(?: at all)?",
                  r"re:\bno tilt(?: at all)?\b")),
     (UNCLEAR, (r"re:\b(?:not|without) (?:be |being )?(?:tilt|tip|lean)\w*\b(?: (?:it|the \w+))?"
                r" (?:too |very |so |that )?(?:much|a lot|far)\b",
@@ -145,7 +147,11 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("low", (r"re:\b(?:just|right|slightly|barely|a bit|a little) (?:above|over) (?:the )?"
              r"(?:destination |bowl )?rim\b",)),
     # where the source is
-    ("near the rim", ("over the [destination|bowl] rim", "at the [destination|bowl] rim",
+    # (a length before it says how far over: "5 cm over the rim" is above it, quantities.py's)
+    ("near the rim", (r"re:\b(?<!cm )(?<!mm )(?<! m )(?<!inch )(?<!inches )(?<!centimetre )"
+                      r"(?<!centimetres )(?<!centimeter )(?<!centimeters )(?<!millimetres )"
+                      r"(?<!millimeters )(?<!feet )(?<!foot )over the (?:destination |bowl )?rim\b",
+                      "at the [destination|bowl] rim",
                       "from the [destination|bowl] rim",
                       "by the [destination|bowl] rim", "close to the [destination|bowl] rim")),
     ("very", ("extremely", "super")),
@@ -258,7 +264,7 @@ HINTS: tuple[tuple[str, str], ...] = (
           ("bouncier|grippier|slipperier", "bouncier, grippier or slipperier",
            '"a bouncy bowl", "a grippy bowl" or "a slippery bowl"'),
           ("fuller|emptier", "fuller or emptier", '"a full cup" or "a little liquid"'))),
-    (r"\b(?:more|less|fewer) than\b|\bat (?:least|most)\b",
+    (r"\b(?:more|less|fewer) than\b|\bat (?:least|most)\b|^(?:past|beyond|up to)$",
      'a bound leaves the value open: say the value ("tilted halfway", "pour high") or a range '
      'with both ends ("10 to 20 cm above the rim", "30 to 40 degrees")'),
     (r"^how ", 'asks for a value: say one ("pour high", "tilted halfway") and `ask` answers '
