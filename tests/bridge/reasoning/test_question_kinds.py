@@ -5,12 +5,14 @@ read and what would be; and, whatever the vocabulary's ranges, a range of
 numbers read as the proposition that holds all of it, or refused."""
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.reading import read_question, understand
+from pantarhei.bridge.reasoning.words import FILLERS
 from pantarhei.theory.lexicon import load_vocabulary
 
 DATA = Path(__file__).with_name("question_kinds.tsv")
@@ -49,6 +51,17 @@ def test_read_as_meant(question, meant):
     assert list(r.scene) in [_names(s) for s in parts["scene"].split("|")]
     assert sorted(r.asked) == _names(parts.get("asked", ""))
     assert sorted(r.goals) == _names(parts.get("goals", ""))
+
+
+@pytest.mark.parametrize("question", [q for _, q, m, _ in ROWS if m is not None])
+def test_no_word_is_dropped_silently(question):
+    """Each word is read, heard as what is asked, said back, shown as
+    ignored, or a word of the question's frame."""
+    r = read_question(question)
+    accounted = {w for phrase in (*r.heard, *r.ignored) for w in re.findall(r"[a-z]+", phrase.lower())}
+    accounted |= {n.split(":")[0] for n in r.notes} | set(FILLERS) | {"s", "minus"}
+    said = re.sub(r"n't\b", " not", question.lower().replace("\u2019", "'"))
+    assert [w for w in re.findall(r"[a-z]+", said) if w not in accounted] == []
 
 
 @pytest.mark.parametrize("question,says", [(q, s) for _, q, m, s in ROWS if m is None])
