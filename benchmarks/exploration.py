@@ -80,7 +80,7 @@ def pour_seconds(n: int = 6) -> float:
 def qualify_accuracy(tmp: Path, seeds=(1, 2, 3)) -> dict[str, float]:
     from pantarhei.bridge.exploration.explore_call import ExploreOptions, explore
     from pantarhei.oracle.generative import sample
-    from pantarhei.bridge.evaluation.measures import verdicts
+    from pantarhei.bridge.verdicts import verdicts
     from pantarhei.oracle.synthetic import scores
     from pantarhei.theory.lexicon import load_vocabulary
     from pantarhei.theory import read_facts

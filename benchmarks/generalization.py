@@ -121,7 +121,8 @@ def scored(sets: dict[str, Pours], oracle: str, store: Path | None) -> dict[str,
 
 def run(oracle: str | None = None, store: Path | None = STORE, seed: int = SEED,
         prolog_sample: int = 60) -> dict:
-    from pantarhei.bridge.evaluation.measures import question_key, verdicts
+    from pantarhei.bridge.evaluation.measures import question_key
+    from pantarhei.bridge.verdicts import verdicts
     from pantarhei.bridge.evaluation.rule_building import predict
     from pantarhei.bridge.learning.generalize import Settings, generalize
     from pantarhei.oracle.generative import describe

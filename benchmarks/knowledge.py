@@ -149,7 +149,7 @@ def designed(seed: int, budget: int, run) -> Chosen:
 
 def uncertainty(seed: int, budget: int, run) -> Chosen:
     """Uncertainty sampling on a boosting model of the pours so far."""
-    from pantarhei.bridge.evaluation.measures import verdicts
+    from pantarhei.bridge.verdicts import verdicts
     from pantarhei.bridge.learning.askable import askable_bodies
     from pantarhei.bridge.learning.generalize import Settings
     from pantarhei.bridge.learning.meaning import Meaning
@@ -192,8 +192,9 @@ def measure(oracle: str, seeds: Sequence[int], budgets: Sequence[int], store: Pa
     defaults; `executor` the executor options of every pour (executor,
     workers, ray_address: as explore's); `learner` the learner every
     method's theory is learned by (None: the option table's default)."""
-    from pantarhei.bridge.evaluation.measures import (contrast_keys, defaults_only,
-                                                      question_key, question_shares, verdicts)
+    from pantarhei.bridge.evaluation.measures import (contrast_keys, defaults_only, question_key,
+                                                      question_shares)
+    from pantarhei.bridge.verdicts import verdicts
     from pantarhei.bridge.evaluation.question_sets import (Keyed, interaction_questions, keyed,
                                                            random_scenes)
     from pantarhei.bridge.evaluation.questions import question_pours, questions

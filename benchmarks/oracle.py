@@ -64,7 +64,7 @@ NUDGE_MM = 0.01
 
 
 def fidelity(P: np.ndarray) -> None:
-    from pantarhei.bridge.evaluation.measures import verdicts
+    from pantarhei.bridge.verdicts import verdicts
     from pantarhei.oracle import physics
     from pantarhei.theory import defaults
     from pantarhei.theory.lexicon import load_vocabulary

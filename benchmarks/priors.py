@@ -31,7 +31,8 @@ REPORT = Path(__file__).resolve().parents[1] / "report" / "evaluation.json"
 
 def measure(path: Path, pours: int, seed: int, report: Path) -> dict:
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen
-    from pantarhei.bridge.evaluation.measures import question_misses, question_scores, verdicts
+    from pantarhei.bridge.evaluation.measures import question_misses, question_scores
+    from pantarhei.bridge.verdicts import verdicts
     from pantarhei.bridge.evaluation.explored_pours import exploration_draws, read_learned
     from pantarhei.bridge.evaluation.rule_building import predict
     from pantarhei.bridge.exploration.simulation import open_simulator

@@ -7,5 +7,7 @@ simulation), and the `pantarhei` command. One folder per concern:
 - `exploration/`: the foreign predicates Algorithm 1 calls, and its state;
 - `learning/`: learners that generalize pours into rules;
 - `evaluation/`: held-out scenes, measures, baselines and the report;
-- `commands/`: the command line only.
+- `commands/`: the command line only;
+- `verdicts.py`: a pour's verdicts and the codes of an answer, which the
+  folders above share.
 """

@@ -95,7 +95,7 @@ def test_no_source_compares_a_score_with_one_half_of_its_own():
               if (c := threshold_copies_py(p.read_text(encoding="utf-8")))}
     copies.update({_rel(p): c for p in _files(".pl")
                    if (c := threshold_copies_pl(p.read_text(encoding="utf-8")))})
-    assert copies == {}, "the verdict threshold is theory/defaults.pl's (measures.verdicts)"
+    assert copies == {}, "the verdict threshold is theory/defaults.pl's (bridge/verdicts.py)"
 
 
 def test_no_source_names_the_default_oracle_executor_or_store():

@@ -193,7 +193,7 @@ recorded(learner).
 
 % The verdict of a pour: an expectation holds where its score (0 to 1,
 % oracle/scoring.py) is above this, and fails otherwise. Read by Python
-% (pantarhei.bridge.evaluation.measures.verdicts) and Prolog
+% (pantarhei.bridge.verdicts.verdicts) and Prolog
 % (theory/curiosity/modify.pl) alike.
 default(verdict_threshold_permille, 500).
 

@@ -194,8 +194,8 @@ def _fmt(v: float) -> str:
 
 
 def _verdict(score: float) -> str:
-    """'holds' or 'fails': the verdict of a score (measures.verdicts)."""
-    from pantarhei.bridge.evaluation.measures import verdicts
+    """'holds' or 'fails': the verdict of a score (bridge/verdicts.py)."""
+    from pantarhei.bridge.verdicts import verdicts
 
     return "holds" if verdicts(score) else "fails"
 

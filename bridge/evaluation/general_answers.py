@@ -15,9 +15,9 @@ import numpy as np
 from pantarhei.theory.lexicon import load_vocabulary
 
 from pantarhei.bridge.evaluation.formats import num, pct
-from pantarhei.bridge.evaluation.measures import (accuracy, contrast_keys, defaults_only,
-                                                  question_key, question_measures,
-                                                  question_shares, verdicts)
+from pantarhei.bridge.evaluation.measures import (accuracy, contrast_keys, defaults_only, question_key,
+                                                  question_measures, question_shares)
+from pantarhei.bridge.verdicts import verdicts
 from pantarhei.bridge.evaluation.pipeline import Evaluation, Inputs
 from pantarhei.bridge.evaluation.questions import question_pours, questions
 from pantarhei.bridge.evaluation.rule_building import answer_matrix, predict

@@ -8,8 +8,8 @@ from typing import Any, Sequence
 
 import numpy as np
 
-from pantarhei.bridge.evaluation.measures import (accuracy, distinct_behaviours, tree_predictions,
-                                                  verdicts)
+from pantarhei.bridge.evaluation.measures import accuracy, distinct_behaviours, tree_predictions
+from pantarhei.bridge.verdicts import verdicts
 from pantarhei.bridge.evaluation.rule_building import consequents, predict, theory_of
 from pantarhei.bridge.exploration.simulation import iteration_seed
 from pantarhei.bridge.reasoning.scenes import random_antecedents, violations

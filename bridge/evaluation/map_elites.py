@@ -19,7 +19,7 @@ from typing import Callable
 
 import numpy as np
 
-from pantarhei.bridge.evaluation.measures import verdicts
+from pantarhei.bridge.verdicts import verdicts
 from pantarhei.bridge.exploration.novelty import shown
 from pantarhei.oracle.generative import normalise, sample
 from pantarhei.theory import defaults

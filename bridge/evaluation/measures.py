@@ -5,9 +5,9 @@ Everything here takes the oracle's scores and a theory's predictions as
 arrays, so the same measures serve the learned theory, the decision tree and
 the theory built from random exploration.
 
-Predictions are integer arrays (scenes x 9 expectations): 1 where the theory
-concludes the expectation holds, 0 where it concludes its negation, -1 where
-it decides neither. Verdicts are the oracle's scores against one half.
+Predictions are integer arrays (scenes x 9 expectations) of the answer
+codes HOLDS, FAILS and UNKNOWN; verdicts are the oracle's scores against
+the verdict threshold. Both are bridge/verdicts.py's.
 """
 from __future__ import annotations
 
@@ -16,17 +16,9 @@ from typing import Sequence
 
 import numpy as np
 
-from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
 
-HOLDS, FAILS, UNKNOWN = 1, 0, -1
-
-
-def verdicts(scores: np.ndarray) -> np.ndarray:
-    """The qualitative verdicts of scores: True where a score is above the
-    verdict threshold (default(verdict_threshold_permille, _) of
-    theory/defaults.pl, one half)."""
-    return np.asarray(scores, dtype=float) > float(defaults()["verdict_threshold"])
+from pantarhei.bridge.verdicts import FAILS, HOLDS, UNKNOWN, verdicts
 
 
 @dataclass(frozen=True)

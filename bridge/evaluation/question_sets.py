@@ -15,8 +15,8 @@ from typing import Callable, Sequence
 
 import numpy as np
 
-from pantarhei.bridge.evaluation.measures import (question_key, question_measures,
-                                                  question_shares, verdicts)
+from pantarhei.bridge.evaluation.measures import question_key, question_measures, question_shares
+from pantarhei.bridge.verdicts import verdicts
 from pantarhei.bridge.evaluation.questions import KEY_POURS, Question, question_pours
 
 #: The likelihood, on the side a key contradicts, of a confident error.
@@ -119,7 +119,7 @@ def theory_behaviours(theory) -> int:
     """The distinct nine-verdict answers, every verdict decided, that a
     learned theory gives for the bodies of its rules (the empty one
     included): the behaviours in the theory."""
-    from pantarhei.bridge.evaluation.measures import UNKNOWN
+    from pantarhei.bridge.verdicts import UNKNOWN
 
     bodies = list(dict.fromkeys([()] + [tuple(sorted(r.body)) for r in theory.rules]))
     rows = theory.predict(bodies)

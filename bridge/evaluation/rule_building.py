@@ -10,7 +10,7 @@ from typing import Sequence
 import numpy as np
 
 from pantarhei.bridge.engines.swipl import engine, text as prolog_text
-from pantarhei.bridge.evaluation.measures import FAILS, HOLDS, UNKNOWN
+from pantarhei.bridge.verdicts import FAILS, HOLDS, UNKNOWN
 from pantarhei.bridge.exploration.qualify import consequent
 from pantarhei.bridge.exploration.weights import log_densities, weights
 from pantarhei.bridge.reasoning import logic

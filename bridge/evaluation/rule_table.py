@@ -9,7 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
-from pantarhei.bridge.evaluation.measures import verdicts
+from pantarhei.bridge.verdicts import verdicts
 from pantarhei.bridge.evaluation.formats import antecedent_words, consequent_words, pct
 from pantarhei.bridge.evaluation.pipeline import Evaluation, Inputs
 

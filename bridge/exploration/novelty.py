@@ -38,7 +38,7 @@ import numpy as np
 from scipy.stats import binom
 from sklearn.ensemble import RandomForestClassifier
 
-from pantarhei.bridge.evaluation.measures import verdicts
+from pantarhei.bridge.verdicts import verdicts
 from pantarhei.oracle.generative import normalise, sample
 
 #: Trees of the forest; its leaves hold at least this many pours.

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pantarhei.bridge.evaluation.measures import verdicts
+from pantarhei.bridge.verdicts import verdicts
 from pantarhei.bridge.exploration.planes import MIN_WEIGHT
 from pantarhei.theory.lexicon import load_vocabulary
 from pantarhei.theory.option_table import option

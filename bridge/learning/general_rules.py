@@ -26,7 +26,7 @@ import numpy as np
 from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
 
-from pantarhei.bridge.evaluation.measures import FAILS, HOLDS, UNKNOWN
+from pantarhei.bridge.verdicts import FAILS, HOLDS, UNKNOWN
 from pantarhei.bridge.theories.model import Rule, Theory
 
 

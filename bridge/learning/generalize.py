@@ -45,7 +45,7 @@ from pantarhei.oracle.generative import in_support
 from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
 
-from pantarhei.bridge.evaluation.measures import verdicts
+from pantarhei.bridge.verdicts import verdicts
 from pantarhei.bridge.learning.askable import askable_bodies, together
 from pantarhei.bridge.learning.general_rules import General, GeneralRule, Sup, verdict
 from pantarhei.bridge.learning.meaning import Meaning, held_in_support

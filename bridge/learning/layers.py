@@ -149,7 +149,7 @@ def explored_pours(explored: Sequence[tuple[str, Sequence[str]]], P: np.ndarray,
     everything else an ordinary pour) and how many of them hold the
     expectation: what an answer cites for an antecedent explored that has
     no rule of its own. Pours with a failed simulation are left out."""
-    from pantarhei.bridge.evaluation.measures import verdicts
+    from pantarhei.bridge.verdicts import verdicts
     from pantarhei.bridge.learning.meaning import held_in_support
     from pantarhei.theory.lexicon import load_vocabulary
 

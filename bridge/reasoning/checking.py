@@ -34,7 +34,7 @@ def observe(scene: Sequence[str], n: int, seed: int,
     """Per expectation (the vocabulary's order), what `n` pours sampled for
     the scene with `seed` did (`simulate`: parameterizations to scores,
     NaN rows for failures)."""
-    from pantarhei.bridge.evaluation.measures import verdicts
+    from pantarhei.bridge.verdicts import verdicts
     from pantarhei.oracle.generative import sample
     from pantarhei.theory.lexicon import load_vocabulary
 

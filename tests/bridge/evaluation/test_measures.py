@@ -2,8 +2,8 @@
 import numpy as np
 import pytest
 
-from pantarhei.bridge.evaluation.measures import (FAILS, HOLDS, UNKNOWN, accuracy, distinct_behaviours,
-                                         one_hot, tree_predictions, verdicts)
+from pantarhei.bridge.evaluation.measures import accuracy, distinct_behaviours, one_hot, tree_predictions
+from pantarhei.bridge.verdicts import FAILS, HOLDS, UNKNOWN, verdicts
 
 
 def test_accuracy_counts_only_decided_predictions():
@@ -72,7 +72,8 @@ def test_calibration_is_the_mean_gap_over_the_keys_with_a_likelihood():
 
 
 def test_an_answer_is_coherent_when_one_of_its_pours_shows_it():
-    from pantarhei.bridge.evaluation.measures import FAILS, HOLDS, UNKNOWN, coherent
+    from pantarhei.bridge.evaluation.measures import coherent
+    from pantarhei.bridge.verdicts import FAILS, HOLDS, UNKNOWN
 
     # question 0's pours: (leaves, enters) = (1, 1) and (1, 0); question 1's: (0, 0)
     V = np.array([[1, 1], [1, 0], [0, 0]], dtype=bool)

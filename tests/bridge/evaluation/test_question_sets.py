@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pantarhei.bridge.evaluation.measures import FAILS, HOLDS
+from pantarhei.bridge.verdicts import FAILS, HOLDS
 from pantarhei.bridge.evaluation.question_sets import (confident_errors,
                                                        interaction_questions, keyed,
                                                        random_scenes, theory_behaviours)

@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from pantarhei.bridge.evaluation.measures import FAILS, HOLDS, UNKNOWN
+from pantarhei.bridge.verdicts import FAILS, HOLDS, UNKNOWN
 from pantarhei.bridge.evaluation.rule_building import answer_matrix, consequents, predict, theory_of
 from pantarhei.oracle.generative import sample
 from pantarhei.theory.lexicon import load_vocabulary

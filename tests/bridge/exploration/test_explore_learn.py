@@ -82,7 +82,7 @@ def test_swi_prolog_answers_its_explored_antecedents_as_the_synthetic_oracle_doe
     they agree (at least 90%)."""
     import numpy as np
 
-    from pantarhei.bridge.evaluation.measures import FAILS, HOLDS, UNKNOWN
+    from pantarhei.bridge.verdicts import FAILS, HOLDS, UNKNOWN
     from pantarhei.bridge.evaluation.rule_building import answer_matrix
     from pantarhei.oracle.generative import sample, to_dict
     from pantarhei.oracle.synthetic import scores

@@ -11,7 +11,7 @@ import math
 import numpy as np
 import pytest
 
-from pantarhei.bridge.evaluation.measures import FAILS, HOLDS, UNKNOWN
+from pantarhei.bridge.verdicts import FAILS, HOLDS, UNKNOWN
 from pantarhei.bridge.learning.general_rules import General, GeneralRule, Sup
 from pantarhei.bridge.reasoning.logic import ENGINES, Semantics, conclusions
 from pantarhei.theory.lexicon import load_vocabulary

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from pantarhei.bridge.evaluation.heldout import random_exploration
-from pantarhei.bridge.evaluation.measures import FAILS, HOLDS, UNKNOWN, verdicts
+from pantarhei.bridge.verdicts import FAILS, HOLDS, UNKNOWN, verdicts
 from pantarhei.bridge.evaluation.rule_building import answer_matrix
 from pantarhei.bridge.learning.gaps import gap_pours
 from pantarhei.bridge.learning.general_rules import General, GeneralRule
