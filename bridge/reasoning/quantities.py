@@ -217,7 +217,10 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
         body = None if at is None else noun.roles[at]
         if body == "liquid" and "particle" in tokens[at].raw:
             body = "particle"                  # the mass of a particle of liquid
-        param, by = parameter(q, POSE[stage[i]], MOVE[stage[i]], choosing, body)
+        # where a move before pouring goes to is the pouring pose: "raise it to 20 cm before pouring"
+        pose = "pour" if stage[i] == "approach" and q.measures == "length" and i > 0 \
+            and tokens[i - 1].word == "to" and _low_end(tokens, i) is None else POSE[stage[i]]
+        param, by = parameter(q, pose, MOVE[stage[i]], choosing, body)
         if param == "particle_mass":
             q = Quantity(q.value * 1000, q.measures, q.text)     # g to the parameter's mg
         read_too = (*CUES.get(by, ()), *ALSO_READ.get(by, ()))

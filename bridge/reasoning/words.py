@@ -160,7 +160,8 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("low", ("low down", "down low", "just above", "close above")),
     ("below", ("beneath", "underneath", "under")),
     ("centred", ("centered", "center", "centre", "central", "in the middle", "middle",
-                 r"re:\b(?:directly|straight|right) (?:above|over)(?= (?:the )?(?:destination|bowl)\b)")),
+                 r"re:\b(?:directly|straight|right) (?:above|over)(?= (?:the )?(?:destination|bowl"
+                 r"|centre|center|middle)\b)")),
     ("far", ("far off", "distant", "a long way", "from a distance", "at a distance")),
     ("offset sideways", ("offset to the side", "offset to one side")),
     ("sideways", ("lateral", "laterally", "sidewise")),
@@ -179,7 +180,8 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("tilt", (r"re:\btips?\b",)),
     ("tilt", (r"re:\btilt(?:s|ed|ing)?(?: it| the \w+)? forwards?\b",)),
     ("rolled sideways", (r"re:\b(?:tilt|tip|lean)(?:s|ed|ing)?(?: (?:it|the \w+))? sideways\b",)),
-    ("tilted away from the destination", ("tilted back", "tilted backwards", "leaning back")),
+    ("tilted away from the destination", ("tilted back", "tilted backwards", "leaning back",
+                                          r"re:\btilt(?:s|ed|ing)?(?: it| the \w+)? backwards?\b")),
     ("slightly tilted", (r"re:\btilt(?:s|ed|ing)?(?: (?:it|the \w+))?(?: only| just)? "
                          r"(?:a (?:little )?bit|a little)\b",)),
     ("slightly", (r"re:\b(?:a (?:little )?bit|a little)(?= (?:tilt|angled|inclined))",)),
