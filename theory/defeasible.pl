@@ -211,10 +211,11 @@ check_superiority(File) :-
     ;   true
     ).
 
-% cycle_message(+Cycle, -Message): what is said of a superiority cycle.
+% cycle_message(+Cycle, -Message): what is said of a superiority cycle
+% (its text is theory/check_messages.pl's, which Python says too).
 cycle_message(Cycle, Message) :-
     atomic_list_concat(Cycle, ' > ', Text),
-    format(string(Message), "the superiority relation has a cycle, ~w: it must be acyclic", [Text]).
+    check_message(superiority_cycle, [Text], Message).
 
 % superiority_cycle(-Cycle): a shortest cycle [R, ..., R] of superior/2
 % through the first rule (in standard order) of sup/2 that lies on one.

@@ -7,7 +7,8 @@
             check_theory_fact/2,       % +Fact, -Problem
             term_text/2,               % +Term, -Text
             theory_error_message/2,    % +Error, -Message
-            error_message/2            % +Error, -Message
+            error_message/2,           % +Error, -Message
+            check_message/3            % +Key, +Args, -Message
           ]).
 /** <module> Reading theory files: the common subset of Prolog and ASP
 
@@ -526,3 +527,20 @@ error_message(Error, Message) :-
     ;   format(string(Message0), "~p", [Error])
     ),
     (   string(Message0) -> Message = Message0 ; atom_string(Message0, Message) ).
+
+
+%!  check_message(+Key, +Args:list, -Message:string) is det.
+%
+%   The message of the check Key of a theory file, from its one text in
+%   theory/check_messages.pl (which Python reads too:
+%   pantarhei.theory.check_message), with Args in place of its ~w.
+check_message(Key, Args, Message) :-
+    once(check_messages:check_message(Key, Format)),
+    format(string(Message), Format, Args).
+
+load_check_messages :-
+    prolog_load_context(directory, Dir),
+    directory_file_path(Dir, 'check_messages.pl', File),
+    load_facts(File, check_messages).
+
+:- load_check_messages.

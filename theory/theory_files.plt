@@ -117,4 +117,11 @@ test(pours_held_past_those_counted_are_refused, [Line, Expected] == [2, "held(a2
 test(an_explored_fact_of_another_arity_is_refused, [Line, Expected] == [1, "expected explored(Antecedent, Proposition), not a explored/1 fact"]) :-
     theory_error("explored(a2).\n", Line, Expected).
 
+% a check's message is theory/check_messages.pl's text with its arguments
+test(check_message_from_the_table, M == "the superiority relation has a cycle, r1 > r2 > r1: it must be acyclic") :-
+    check_message(superiority_cycle, ['r1 > r2 > r1'], M).
+
+test(check_message_of_no_check, fail) :-
+    check_message(no_such_check, [], _).
+
 :- end_tests(theory_files).

@@ -132,9 +132,11 @@ def asp_conclusions(theory: Theory, semantics: Semantics = Semantics(),
     from pantarhei.bridge.engines.asp import solve
 
     try:
-        # defeasible.lp weighs specificity only among the rules that may
-        # apply (the pairs of all would grow with the square of the rules):
-        # a cycle among the others is found here, without the pairs
+        # the one check of a cycle on this side (check_acyclic, its message
+        # theory/check_messages.pl's): defeasible.lp's superiority is a part
+        # of the relation checked here (specificity only among the rules
+        # that may apply), so its sup_cycle/1, which is for clingo alone,
+        # finds none that this did not
         theory.check_acyclic()
     except TheoryFileError as e:
         raise UserError(str(e)) from None
@@ -154,10 +156,6 @@ def asp_conclusions(theory: Theory, semantics: Semantics = Semantics(),
         consts = {**semantics.asp_constants(), "steps": str(steps), "acyclic": str(acyclic).lower()}
         (model,) = solve(["defeasible.lp", "conclusions.lp"], text, files=(),
                          args=[f"-c{k}={v}" for k, v in consts.items()])
-        cycle = sorted(str(s.arguments[0]) for s in model if s.name == "sup_cycle")
-        if cycle:
-            raise UserError(f"{theory.source}: the superiority relation has a cycle through "
-                            f"{', '.join(cycle)}: it must be acyclic")
         if not any(s.name == "changed" for s in model):
             break
         steps *= 2

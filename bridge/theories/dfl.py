@@ -40,7 +40,7 @@ import re
 from pathlib import Path
 from typing import Sequence
 
-from pantarhei.theory import TheoryFileError
+from pantarhei.theory import TheoryFileError, check_message
 
 from pantarhei.bridge.theories import facts as theory_facts
 from pantarhei.bridge.errors import quoted
@@ -85,8 +85,8 @@ def parse_dfl(text: str, source: str = "<dfl>") -> Theory:
     cycle = superiority_cycle((a, b) for a, b, _ in sups)
     if cycle:
         n = next(n for a, b, n in sups if (a, b) == (cycle[0], cycle[1]))
-        raise TheoryFileError(f"{source}:{n}: the superiority relation has a cycle, "
-                              f"{' > '.join(cycle)}: it must be acyclic")
+        raise TheoryFileError(f"{source}:{n}: "
+                              + check_message("superiority_cycle", " > ".join(cycle)))
     t.rules, origin = _ground(schemas, t.facts, source)
     _add_superiority(t, sups, schemas, origin, source)
     seen: dict[str, int] = {}

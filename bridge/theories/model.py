@@ -27,7 +27,7 @@ from pantarhei.bridge.theories.facts import term_text
 from pantarhei.bridge.theories.well_formed import (KIND, KINDS, NAME, RULE_NAME, SECOND_RULE,
                                                    check_literal, source_line, source_text,
                                                    value_text)
-from pantarhei.theory import TheoryFileError
+from pantarhei.theory import TheoryFileError, check_message
 
 
 @dataclass(frozen=True)
@@ -216,8 +216,8 @@ class Theory:
             files = list(sources or [self.source])
             places = [source_line(source_text(f), pattern, f) for f in files]
             where = next((w for w in places if not w.endswith(":0")), places[0])
-            raise TheoryFileError(f"{where.removesuffix(':0')}: the superiority relation has a cycle, "
-                                  f"{' > '.join(cycle)}: it must be acyclic")
+            raise TheoryFileError(f"{where.removesuffix(':0')}: "
+                                  + check_message("superiority_cycle", " > ".join(cycle)))
 
     def _specific_successors(self):
         """rule id -> the learned rules it beats by specificity (sup/2 not

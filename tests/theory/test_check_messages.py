@@ -1,0 +1,106 @@
+"""The messages of the checks of a theory file that both readers make
+(theory/check_messages.pl): each text is written once, and SWI-Prolog
+(check_message/3 of theory_files.pl, ask's load_theories/2) and Python
+(pantarhei.theory.check_message, the theory loader) say the same of the
+same bad file."""
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.theories import loading
+from pantarhei.theory import CHECK_MESSAGES_FILE, THEORY_DIR, check_message, read_facts
+
+#: Bad files (name -> their texts, one file each, read as one theory) and
+#: the file and line the message names.
+CYCLIC = {
+    "a cycle in one file": (
+        ["rule(r1, defeasible, b).\nrule(r2, defeasible, neg(b)).\nsup(r1, r2).\nsup(r2, r1).\n"],
+        0, 3),
+    "a cycle across two files": (
+        ["rule(r1, defeasible, b).\nrule(r2, defeasible, neg(b)).\nsup(r1, r2).\n",
+         "fact(a).\nsup(r2, r1).\n"], 0, 3),
+    "a rule superior to itself": (
+        ["rule(r1, defeasible, b).\nfact(a).\nsup(r1, r1).\n"], 0, 3),
+    "a cycle through specificity": (
+        ["rule(r1, defeasible, p).\nbody(r1, a).\nrule(r2, defeasible, p).\nbody(r2, a).\n"
+         "body(r2, b).\nrule(r3, defeasible, neg(p)).\nbody(r3, a).\nlearned(r2).\nlearned(r3).\n"
+         "sup(r1, r2).\nsup(r3, r1).\n"], 0, 10),
+}
+
+
+def _swipl(goal: str) -> list[str]:
+    swipl = shutil.which("swipl")
+    assert swipl, "SWI-Prolog is needed"
+    p = subprocess.run([swipl, "-q", "-g", goal, "-t", "halt"], capture_output=True, text=True,
+                       timeout=120)
+    assert p.returncode == 0, p.stderr
+    return p.stdout.splitlines()
+
+
+def _quoted(path: Path) -> str:
+    return "'" + str(path).replace("\\", "\\\\").replace("'", "\\'") + "'"
+
+
+def _prolog_errors(theories: list[list[Path]]) -> list[str]:
+    """What ask's load_theories/2 says of each theory (its files), in one swipl."""
+    lists = ", ".join("[" + ", ".join(map(_quoted, files)) + "]" for files in theories)
+    return _swipl(f"use_module({_quoted(THEORY_DIR / 'ask')}), "
+                  f"use_module({_quoted(THEORY_DIR / 'theory_files')}), "
+                  f"forall(member(Fs, [{lists}]), "
+                  "(catch((ask:load_theories(Fs, _), M = ok), E, theory_files:error_message(E, M)), "
+                  "format('~w~n', [M])))")
+
+
+def _python_error(files: list[Path]) -> str:
+    try:
+        loading.load(files)
+    except UserError as e:
+        return str(e)
+    return "ok"
+
+
+def test_every_message_is_one_text_with_its_arguments_as_w():
+    rows = read_facts([CHECK_MESSAGES_FILE])["check_message"]
+    assert rows and len({key for key, _ in rows}) == len(rows)
+    for key, text in rows:
+        # format/2's ~w alone, which Python writes as SWI-Prolog does
+        assert re.sub("~w", "", text).count("~") == 0, key
+
+
+def test_both_languages_render_every_message_alike():
+    rows = read_facts([CHECK_MESSAGES_FILE])["check_message"]
+    args = {key: [f"x{i} > y" for i in range(text.count("~w"))] for key, text in rows}
+    calls = ", ".join(f"{key}-[{', '.join(_quoted(Path(a)) for a in args[key])}]" for key, _ in rows)
+    prolog = _swipl(f"use_module({_quoted(THEORY_DIR / 'theory_files')}), "
+                    f"forall(member(K-As, [{calls}]), "
+                    "(check_message(K, As, M), format('~w~n', [M])))")
+    assert prolog == [check_message(key, *args[key]) for key, _ in rows]
+
+
+def test_both_readers_say_the_same_of_the_same_cyclic_theory(tmp_path: Path):
+    theories = []
+    for i, (texts, _, _) in enumerate(CYCLIC.values()):
+        files = []
+        for j, text in enumerate(texts):
+            f = tmp_path / f"t{i}_{j}.pl"
+            f.write_text(text, encoding="utf-8")
+            files.append(f)
+        theories.append(files)
+    prolog = _prolog_errors(theories)
+    for (name, (_, k, line)), files, said in zip(CYCLIC.items(), theories, prolog):
+        python = _python_error(files)
+        assert python == said, name
+        assert python.startswith(f"{files[k]}:{line}: the superiority relation has a cycle, "), name
+
+
+def test_an_unknown_check_or_a_wrong_count_of_arguments_is_refused():
+    with pytest.raises(KeyError):
+        check_message("no_such_check", "x")
+    with pytest.raises(ValueError, match="takes 1 arguments, not 2"):
+        check_message("superiority_cycle", "a", "b")
