@@ -7,6 +7,28 @@
 % tests/theory/test_check_messages.py gives both readers the same bad
 % files and compares what they say.
 
+% A fact of a theory predicate not of its form (its Form, its name and arity).
+check_message(arity, "expected ~w, not a ~w/~w fact").
+% An argument that must be a name (the fact's form, the argument).
+check_message(name_argument, "~w: a name in lower case letters, digits and _, not ~w").
+% A rule's kind (the rule, the kind).
+check_message(kind, "rule ~w: kind strict, defeasible or defeater, not ~w").
+% held/4's counts (the antecedent, the expectation, held, pours).
+check_message(held,
+  "held(~w, ~w, Held, Pours): Held of Pours pours, whole numbers with 0 <= Held <= Pours, not ~w of ~w").
+% A rule's recorded confidence (the rule, the value): some of its pours keep
+% its head, or the rule would conclude the other head.
+check_message(confidence,
+  "rule ~w: a confidence is the permille of its pours that keep its head, 1 to 1000, not ~w").
+% A literal (the literal as written).
+check_message(double_negation, "a literal or its negation neg(L), not a double negation ~w").
+check_message(literal,
+  "a literal such as p, bird(tweety) or neg(p) (names and integers as arguments), not ~w").
+% A rule named twice in one file (the rule).
+check_message(second_rule, "a second rule named ~w").
+% body/2 of no rule (the rule, three times).
+check_message(dangling_body, "body(~w, _) of a rule ~w that has no rule(~w, Kind, Head) fact").
+
 % A rule could beat itself (and a literal and its complement both be
 % concluded): the cycle's rules, joined by " > ", first and last the same.
 check_message(superiority_cycle,

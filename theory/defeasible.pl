@@ -146,10 +146,10 @@ theory_predicate(held, 4).
 
 check_theory(File) :-
     (   rule(R, K, _), \+ memberchk(K, [strict, defeasible, defeater])
-    ->  format(string(M), "rule ~w: kind strict, defeasible or defeater, not ~w", [R, K]),
+    ->  check_message(kind, [R, K], M),
         throw(theory_error(File, 0, M))
     ;   body(R, _), \+ rule(R, _, _)
-    ->  format(string(M), "body(~w, _) of a rule ~w that has no rule(~w, Kind, Head) fact", [R, R, R]),
+    ->  check_message(dangling_body, [R, R, R], M),
         throw(theory_error(File, 0, M))
     ;   rule(R, K1, H1), rule(R, K2, H2), (K1-H1) \== (K2-H2)
     ->  format(string(M), "two rules named ~w", [R]),

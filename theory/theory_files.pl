@@ -76,7 +76,7 @@ read_theory_file(File, LineFacts) :-
     foldl(check_theory_line(File), LineFacts, Rules0, Rules),
     (   member(Line-body(R, _), LineFacts),
         \+ get_assoc(R, Rules, _)
-    ->  format(string(M), "body(~w, _) of a rule ~w that has no rule(~w, Kind, Head) fact", [R, R, R]),
+    ->  check_message(dangling_body, [R, R, R], M),
         throw(theory_error(File, Line, M))
     ;   true
     ).
@@ -88,7 +88,7 @@ check_theory_line(File, Line-Fact, Rules0, Rules) :-
     ),
     (   Fact = rule(R, _, _)
     ->  (   get_assoc(R, Rules0, _)
-        ->  format(string(M), "a second rule named ~w", [R]),
+        ->  check_message(second_rule, [R], M),
             throw(theory_error(File, Line, M))
         ;   put_assoc(R, Rules0, Line, Rules)
         )
@@ -104,21 +104,21 @@ check_theory_fact(Fact, Problem) :-
     functor(Fact, Name, Arity),
     theory_form(Name, Form, _),
     (   \+ theory_form(Name, _, Arity)
-    ->  format(string(Problem), "expected ~w, not a ~w/~w fact", [Form, Name, Arity])
+    ->  check_message(arity, [Form, Name, Arity], Problem)
     ;   Fact =.. [_|Args],
         theory_names(Name, Ns),
         member(I, Ns), nth0(I, Args, A), \+ plain_name(A)
     ->  term_text(A, T),
-        format(string(Problem), "~w: a name in lower case letters, digits and _, not ~w", [Form, T])
+        check_message(name_argument, [Form, T], Problem)
     ;   Fact = rule(R, K, _), \+ memberchk(K, [strict, defeasible, defeater])
     ->  term_text(K, T),
-        format(string(Problem), "rule ~w: kind strict, defeasible or defeater, not ~w", [R, T])
+        check_message(kind, [R, T], Problem)
     ;   Fact = held(A, E, K, N), \+ ( integer(K), integer(N), 0 =< K, K =< N )
     ->  term_text(K, KT), term_text(N, NT),
-        format(string(Problem), "held(~w, ~w, Held, Pours): Held of Pours pours, whole numbers with 0 <= Held <= Pours, not ~w of ~w", [A, E, KT, NT])
+        check_message(held, [A, E, KT, NT], Problem)
     ;   Fact = provenance(R, confidence_permille, C), \+ ( integer(C), between(1, 1000, C) )
     ->  term_text(C, T),            % some of its pours keep its head, or it concludes the other
-        format(string(Problem), "rule ~w: a confidence is the permille of its pours that keep its head, 1 to 1000, not ~w", [R, T])
+        check_message(confidence, [R, T], Problem)
     ;   theory_literal_arg(Fact, L),
         literal_problem(L, Problem)
     ->  true
@@ -154,10 +154,10 @@ plain_name(A) :- atom(A).
 literal_problem(L, Problem) :-
     (   L = neg(neg(_))
     ->  term_text(L, T),
-        format(string(Problem), "a literal or its negation neg(L), not a double negation ~w", [T])
+        check_message(double_negation, [T], Problem)
     ;   \+ literal(L)
     ->  term_text(L, T),
-        format(string(Problem), "a literal such as p, bird(tweety) or neg(p) (names and integers as arguments), not ~w", [T])
+        check_message(literal, [T], Problem)
     ).
 
 literal(neg(A)) :- !, literal_atom(A).

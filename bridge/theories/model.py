@@ -24,9 +24,8 @@ from itertools import combinations
 from typing import Iterable, Sequence
 
 from pantarhei.bridge.theories.facts import term_text
-from pantarhei.bridge.theories.well_formed import (KIND, KINDS, NAME, RULE_NAME, SECOND_RULE,
-                                                   check_literal, source_line, source_text,
-                                                   value_text)
+from pantarhei.bridge.theories.well_formed import (KINDS, NAME, RULE_NAME, check_literal,
+                                                   source_line, source_text, value_text)
 from pantarhei.theory import TheoryFileError, check_message
 
 
@@ -187,9 +186,9 @@ class Theory:
             if not NAME.match(r.id):
                 raise TheoryFileError(f"{where}: " + RULE_NAME.format(r.id))
             if r.kind not in KINDS:
-                raise TheoryFileError(f"{where}: " + KIND.format(r.id, r.kind))
+                raise TheoryFileError(f"{where}: " + check_message("kind", r.id, r.kind))
             if r.id in ids:
-                raise TheoryFileError(f"{where}: " + SECOND_RULE.format(r.id))
+                raise TheoryFileError(f"{where}: " + check_message("second_rule", r.id))
             ids.add(r.id)
             for lit in (r.head, *r.body):
                 check_literal(lit, where)

@@ -11,10 +11,8 @@ from pathlib import Path
 from pantarhei.bridge.theories import facts as theory_facts
 from pantarhei.bridge.theories.facts import Fact, term_text
 from pantarhei.bridge.theories.model import Rule, Theory
-from pantarhei.bridge.theories.well_formed import (ARITY, CONFIDENCE, DANGLING_BODY, HELD, KIND,
-                                                   KINDS, NAME, NAME_ARG, SECOND_RULE,
-                                                   check_literal)
-from pantarhei.theory import TheoryFileError
+from pantarhei.bridge.theories.well_formed import KINDS, NAME, check_literal
+from pantarhei.theory import TheoryFileError, check_message
 
 
 def read_native(path: Path | str) -> Theory:
@@ -47,18 +45,20 @@ def check_fact(f: Fact, source: str, checked: set | None = None) -> None:
         return
     a = f.args
     if (f.name, len(a)) not in FORMS:
-        raise TheoryFileError(f"{source}:{f.line}: " + ARITY.format(form, f.name, len(a)))
+        raise TheoryFileError(f"{source}:{f.line}: " + check_message("arity", form, f.name, len(a)))
     for i in _NAMES_AT[f.name]:
         if not (type(a[i]) is str and NAME.match(a[i])):
-            raise TheoryFileError(f"{source}:{f.line}: " + NAME_ARG.format(form, term_text(a[i])))
+            raise TheoryFileError(f"{source}:{f.line}: "
+                                  + check_message("name_argument", form, term_text(a[i])))
     if f.name == "rule" and a[1] not in KINDS:
-        raise TheoryFileError(f"{source}:{f.line}: " + KIND.format(a[0], term_text(a[1])))
+        raise TheoryFileError(f"{source}:{f.line}: " + check_message("kind", a[0], term_text(a[1])))
     if f.name == "held" and not (type(a[2]) is int and type(a[3]) is int and 0 <= a[2] <= a[3]):
         raise TheoryFileError(f"{source}:{f.line}: "
-                              + HELD.format(a[0], a[1], term_text(a[2]), term_text(a[3])))
+                              + check_message("held", a[0], a[1], term_text(a[2]), term_text(a[3])))
     if f.name == "provenance" and a[1] == "confidence_permille" \
             and not (type(a[2]) is int and 1 <= a[2] <= 1000):
-        raise TheoryFileError(f"{source}:{f.line}: " + CONFIDENCE.format(a[0], term_text(a[2])))
+        raise TheoryFileError(f"{source}:{f.line}: "
+                              + check_message("confidence", a[0], term_text(a[2])))
     i = _LITERAL_AT.get(f.name)
     if i is not None:
         lit = a[i] if type(a[i]) is str else term_text(a[i])
@@ -100,7 +100,7 @@ def from_facts(facts: list[Fact], source: str, t: Theory | None = None) -> Theor
         elif name == "rule":
             rid = a[0]
             if rid in lines:
-                raise TheoryFileError(f"{source}:{f.line}: " + SECOND_RULE.format(rid))
+                raise TheoryFileError(f"{source}:{f.line}: " + check_message("second_rule", rid))
             lines[rid] = f.line
             heads.append((rid, a[1], a[2] if type(a[2]) is str else term_text(a[2])))
         elif name == "learned":
@@ -118,7 +118,8 @@ def from_facts(facts: list[Fact], source: str, t: Theory | None = None) -> Theor
             t.extra.append(f.text + ".")
     for rid, line in first_body.items():
         if rid not in t.lines:
-            raise TheoryFileError(f"{source}:{line}: " + DANGLING_BODY.format(rid))
+            raise TheoryFileError(f"{source}:{line}: "
+                                  + check_message("dangling_body", rid, rid, rid))
     t.rules.extend(Rule(rid, kind, head, tuple(dict.fromkeys(bodies.get(rid, ()))))
                    for rid, kind, head in heads)
     return t

@@ -1,6 +1,7 @@
 """What a theory file may hold, and where it goes wrong: rule names, kinds
-and literals as the native format and both engines read them, the messages
-for what they cannot read (word for word those of theory/theory_files.pl),
+and literals as the native format and both engines read them, the checks of
+what they cannot read (their messages theory/check_messages.pl's, as
+SWI-Prolog's),
 how a setting's or provenance's value is written so that it reads back as
 one value, and the line of a file an error is on."""
 from __future__ import annotations
@@ -10,7 +11,7 @@ from pathlib import Path
 
 from pantarhei.bridge.theories import facts as theory_facts
 from pantarhei.bridge.theories.facts import Text, term_text
-from pantarhei.theory import TheoryFileError
+from pantarhei.theory import TheoryFileError, check_message
 
 KINDS = ("strict", "defeasible", "defeater")
 NAME = re.compile(r"^[a-z][A-Za-z0-9_]*$")
@@ -18,21 +19,10 @@ _ARG = r"(?:[a-z][A-Za-z0-9_]*|-?[0-9]+)"
 _ATOM = rf"[a-z][A-Za-z0-9_]*(?:\({_ARG}(?:,{_ARG})*\))?"
 _LITERAL = re.compile(rf"^(?:{_ATOM}|neg\({_ATOM}\))$")
 
-# The messages, word for word those of theory/theory_files.pl.
+# The messages of the checks both readers make are theory/check_messages.pl's
+# (pantarhei.theory.check_message); this one is Python's alone (a rule
+# named by a DFL file or by code, which the fact reader cannot give).
 RULE_NAME = "a rule name in lower case letters, digits and _, not '{}'"
-KIND = "rule {}: kind strict, defeasible or defeater, not {}"
-SECOND_RULE = "a second rule named {}"
-#: A rule's recorded confidence is the permille of its pours that keep its
-#: head: some keep it, or the rule would conclude the other head.
-CONFIDENCE = ("rule {}: a confidence is the permille of its pours that keep its head, "
-              "1 to 1000, not {}")
-DANGLING_BODY = "body({0}, _) of a rule {0} that has no rule({0}, Kind, Head) fact"
-LITERAL = "a literal such as p, bird(tweety) or neg(p) (names and integers as arguments), not {}"
-DOUBLE_NEG = "a literal or its negation neg(L), not a double negation {}"
-ARITY = "expected {}, not a {}/{} fact"
-NAME_ARG = "{}: a name in lower case letters, digits and _, not {}"
-HELD = ("held({}, {}, Held, Pours): Held of Pours pours, whole numbers with 0 <= Held <= Pours, "
-        "not {} of {}")
 
 
 def is_literal(lit: str) -> bool:
@@ -44,9 +34,9 @@ def is_literal(lit: str) -> bool:
 def check_literal(lit: str, where: str) -> None:
     """TheoryFileError (`where: what`) unless `lit` is a literal."""
     if lit.startswith("neg(neg("):
-        raise TheoryFileError(f"{where}: " + DOUBLE_NEG.format(lit))
+        raise TheoryFileError(f"{where}: " + check_message("double_negation", lit))
     if not _LITERAL.match(lit):
-        raise TheoryFileError(f"{where}: " + LITERAL.format(lit))
+        raise TheoryFileError(f"{where}: " + check_message("literal", lit))
 
 
 def value_text(value) -> str:

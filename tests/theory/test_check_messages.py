@@ -2,7 +2,7 @@
 (theory/check_messages.pl): each text is written once, and SWI-Prolog
 (check_message/3 of theory_files.pl, ask's load_theories/2) and Python
 (pantarhei.theory.check_message, the theory loader) say the same of the
-same bad file."""
+same bad file: each message of the table has one here."""
 from __future__ import annotations
 
 import re
@@ -31,6 +31,23 @@ CYCLIC = {
         ["rule(r1, defeasible, p).\nbody(r1, a).\nrule(r2, defeasible, p).\nbody(r2, a).\n"
          "body(r2, b).\nrule(r3, defeasible, neg(p)).\nbody(r3, a).\nlearned(r2).\nlearned(r3).\n"
          "sup(r1, r2).\nsup(r3, r1).\n"], 0, 10),
+}
+
+
+#: A bad file for each other message of the table: key -> (its text, the
+#: line the message names, the message's arguments).
+BAD = {
+    "arity": ("fact(a).\nrule(r1, defeasible).\n", 2, ("rule(Id, Kind, Head)", "rule", 2)),
+    "name_argument": ('fact(a).\nrule("r1", defeasible, b).\n', 2,
+                      ("rule(Id, Kind, Head)", '"r1"')),
+    "kind": ("rule(r1, sometimes, b).\n", 1, ("r1", "sometimes")),
+    "held": ("fact(a).\nheld(a2, no_spill, 13, 12).\n", 2, ("a2", "no_spill", 13, 12)),
+    "confidence": ("rule(r1, defeasible, b).\nprovenance(r1, confidence_permille, 0).\n", 2,
+                   ("r1", 0)),
+    "double_negation": ("fact(a).\nrule(r1, defeasible, neg(neg(b))).\n", 2, ("neg(neg(b))",)),
+    "literal": ("fact(p(f(a))).\n", 1, ("p(f(a))",)),
+    "second_rule": ("rule(r1, defeasible, b).\nrule(r1, defeasible, c).\n", 2, ("r1",)),
+    "dangling_body": ("fact(a).\nbody(r9, a).\n", 2, ("r9", "r9", "r9")),
 }
 
 
@@ -93,6 +110,7 @@ def test_both_readers_say_the_same_of_the_same_cyclic_theory(tmp_path: Path):
             files.append(f)
         theories.append(files)
     prolog = _prolog_errors(theories)
+    assert len(prolog) == len(theories)
     for (name, (_, k, line)), files, said in zip(CYCLIC.items(), theories, prolog):
         python = _python_error(files)
         assert python == said, name
@@ -104,3 +122,22 @@ def test_an_unknown_check_or_a_wrong_count_of_arguments_is_refused():
         check_message("no_such_check", "x")
     with pytest.raises(ValueError, match="takes 1 arguments, not 2"):
         check_message("superiority_cycle", "a", "b")
+
+
+def test_every_message_has_a_bad_file_here():
+    keys = {key for key, _ in read_facts([CHECK_MESSAGES_FILE])["check_message"]}
+    assert keys == set(BAD) | {"superiority_cycle"}
+
+
+def test_both_readers_say_each_message_of_the_table_of_its_bad_file(tmp_path: Path):
+    theories = []
+    for key, (text, _, _) in BAD.items():
+        f = tmp_path / f"{key}.pl"
+        f.write_text(text, encoding="utf-8")
+        theories.append([f])
+    prolog = _prolog_errors(theories)
+    assert len(prolog) == len(theories)
+    for (key, (_, line, args)), files, said in zip(BAD.items(), theories, prolog):
+        expected = f"{files[0]}:{line}: " + check_message(key, *args)
+        assert _python_error(files) == expected, key
+        assert said == expected, key
