@@ -12,6 +12,10 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Iterable, Mapping, Union
 
+# The error of a malformed theory file is its reader's (which imports
+# nothing of this package, so that the two make no import cycle).
+from pantarhei.bridge.theories.facts import TheoryFileError  # noqa: F401  (re-exported)
+
 #: The folder that holds the theory files.
 THEORY_DIR = Path(__file__).resolve().parent
 #: The vocabulary fact files, read by SWI-Prolog and by clingo alike.
@@ -90,10 +94,6 @@ def prolog_modules() -> tuple[str, ...]:
 
     text = PROLOG_ENTRY.read_text(encoding="utf-8")
     return tuple(re.findall(r"^:- use_module\(([a-z_]+)\)\.", text, flags=re.M))
-
-
-class TheoryFileError(ValueError):
-    """A theory file that is not in the common subset; str() is `file:line: what`."""
 
 
 class MissingEngine(RuntimeError):

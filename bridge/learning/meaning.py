@@ -19,14 +19,23 @@ pours lie in the support of P(.|B) for most B.
 from __future__ import annotations
 
 import zlib
-from typing import TYPE_CHECKING, Sequence
+from typing import Protocol, Sequence
 
 import numpy as np
 
 from pantarhei.oracle.generative import InvalidAntecedent, in_support, normalise, sample
 
-if TYPE_CHECKING:
-    from pantarhei.bridge.learning.generalize import Settings
+
+class Drawing(Protocol):
+    """What the model reads of the learner's settings (generalize.Settings,
+    which it does not import: the learner imports the model): the seed of
+    its boosting and of its draws, and the draws per body."""
+
+    @property
+    def seed(self) -> int: ...
+
+    @property
+    def draws(self) -> int: ...
 
 
 def _seed(seed: int, body: Sequence[str]) -> int:
@@ -47,7 +56,7 @@ class Meaning:
     gradient-boosted classifier per expectation, on the 30 parameters),
     averaged over parameterizations drawn from P(.|B)."""
 
-    def __init__(self, P: np.ndarray, Y: np.ndarray, settings: Settings,
+    def __init__(self, P: np.ndarray, Y: np.ndarray, settings: Drawing,
                  iterations: int = 150):
         """The model of pours P with verdicts Y; `iterations` rounds of
         boosting at a learning rate of 15 / iterations (fewer, coarser

@@ -23,7 +23,13 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import NamedTuple
 
-from pantarhei.theory import TheoryFileError
+
+class TheoryFileError(ValueError):
+    """A theory file that is not in the common subset; str() is `file:line:
+    what`. Defined with the reader that raises it, which imports nothing
+    of the project (pantarhei.theory, whose `read_facts` is this reader,
+    names it too)."""
+
 
 #: The integers clingo holds (32-bit); theory files stay within them.
 INT_MIN, INT_MAX = -2 ** 31, 2 ** 31 - 1
