@@ -182,16 +182,17 @@ def _batch(antecedent: Sequence[str], goals: list[str], simulate: Callable, size
            total: int, misses: int, min_success: float) -> tuple[np.ndarray, np.ndarray, int]:
     """One batch of `size` pours, in steps, stopped once the misses so far
     (`misses` before it) are more than `total` pours may have and still
-    meet the bar; its pours, scores and the misses after it."""
+    meet the bar; its pours, scores and the misses after it. Each step is
+    the fewest pours that could refute the plan (two at the least), so a
+    plan that misses from the start costs few pours."""
     from pantarhei.oracle.generative import sample
 
     P = sample(list(antecedent), size, seed)
     allowed = total - math.ceil(min_success * total - 1e-9)      # misses that still verify
-    step = max(2, math.ceil(size / 3))
     Ps, Ss = [], []
     done = 0
     while done < size:
-        rows = P[done:done + step]
+        rows = P[done:done + max(2, allowed - misses + 1)]
         S = np.atleast_2d(np.asarray(simulate(rows), dtype=float))
         Ps.append(rows)
         Ss.append(S)

@@ -176,15 +176,16 @@ def test_a_plan_passing_its_first_pours_by_luck_is_not_printed_as_verified(cli, 
         assert v["met"] >= 0.9 * v["simulated"]
         assert v["per_goal_share"] == {g: round(n / 20, 3) for g, n in v["per_goal"].items()}
     text = cli(*args).out
-    assert (f"refuted: approach_raising (theory, round 1): every goal met in "
-            f"{10 + confirming['met']} of 20 pours: 10 of the first 10, then {confirming['met']} of "
-            f"10 fresh ones confirming it (not confirmed)") in text
+    k, n = confirming["met"], confirming["simulated"]     # stopped once it can no longer pass
+    assert (f"refuted: approach_raising (theory, round 1): every goal met in {10 + k} of {10 + n} "
+            f"pours: 10 of the first 10, then {k} of {n} fresh ones confirming it (not "
+            f"confirmed)") in text
     assert "\n  approach_raising" not in text        # not among a plan's propositions
     assert "per goal, of every verifying pour: source_clear 20 of 20 (100%)" in text
     # with no budget left for another plan, none is found, and the line says why
     line = assert_one_line_error(cli(*args, "--pours", "20"))
-    assert line.endswith(f"the best, approach_raising, met them in 10 of 10, then in "
-                         f"{confirming['met']} of 10 fresh pours confirming it"), line
+    assert line.endswith(f"the best, approach_raising, met them in 10 of 10, then in {k} of {n} "
+                         f"fresh pours confirming it"), line
 
 
 def test_no_plan_found_says_why_in_one_line(cli, tmp_path: Path) -> None:

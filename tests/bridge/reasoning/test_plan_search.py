@@ -37,7 +37,8 @@ def test_a_plan_is_verified_in_steps_its_pours_one_seeded_sample(synthetic) -> N
     far, centred = Plan(("pour_far_away",), ("pour_far_away",)), Plan(("pour_centred",), ("pour_centred",))
     t = Trial(far, "theory", 1)
     P, _ = verify(far, goals, synthetic, 9, 5, 0.9, t)
-    assert not t.verified and t.simulated == len(P) == 3 and t.per_goal == {goals[0]: 0, goals[1]: 3}
+    # 9 pours at 90% allow no miss: two pours, both missing, refute it
+    assert not t.verified and t.simulated == len(P) == 2 and t.per_goal == {goals[0]: 0, goals[1]: 2}
     t = Trial(centred, "theory", 1)
     P, S = verify(centred, goals, synthetic, 9, 5, 0.9, t)
     assert t.verified and t.met == t.simulated == 18          # 9, then 9 fresh confirming it
