@@ -87,7 +87,8 @@ check_read(read(_, _, checked), []) :- !.
 check_read(read(Name, LineFacts, _), Warnings) :-
     (   member(_-F, LineFacts), \+ aside(F)
     ->  true
-    ;   throw(theory_error(Name, 0, "an empty theory (no facts and no rules)"))
+    ;   check_message(empty_theory, [], M),
+        throw(theory_error(Name, 0, M))
     ),
     check_general_rules(Name, LineFacts),
     unknown_names(Name, LineFacts, Warnings).
@@ -107,7 +108,7 @@ add_file(read(Name, LineFacts, _), Earlier) :-
 add_line(Name, Earlier, Line, F) :-
     (   F = rule(R, _, _), defeasible:rule(R, _, _)
     ->  once(( member(read(Other, Facts, _), Earlier), memberchk(_-rule(R, _, _), Facts) )),
-        format(string(M), "rule ~w is already defined in ~w", [R, Other]),
+        check_message(already_defined, [R, Other], M),
         throw(theory_error(Name, Line, M))
     ;   F = fact(L), defeasible:fact(L)
     ->  true
@@ -118,7 +119,7 @@ check_sup_names(Read) :-
     forall(( member(read(Name, LineFacts, Kind), Read), member(Line0-sup(A, B), LineFacts),
              member(X, [A, B]), \+ defeasible:rule(X, _, _) ),
            ( written_line(Kind, Name, Line0, A, B, Line),
-             format(string(M), "sup(~w, ~w) names ~w, which is not a rule", [A, B, X]),
+             check_message(sup_not_a_rule, [A, B, X], M),
              throw(theory_error(Name, Line, M)) )).
 
 sup_line(Read, A, B, Name, Line) :-
@@ -186,11 +187,11 @@ check_general_rule(Name, Bodies, Line, R, H) :-
     rule_bodies(Bodies, R, LineBodies),
     (   member(BLine-B, LineBodies), \+ proposition(B, _, _, _)
     ->  term_text(B, BT),
-        format(string(M), "general rule ~w: ~w is not a proposition of the vocabulary", [R, BT]),
+        check_message(general_body, [R, BT], M),
         throw(theory_error(Name, BLine, M))
     ;   literal_atom(H, E), \+ expectation(E, _, _)
     ->  term_text(E, ET),
-        format(string(M), "general rule ~w: ~w is not an expectation", [R, ET]),
+        check_message(general_head, [R, ET], M),
         throw(theory_error(Name, Line, M))
     ;   true
     ).
@@ -225,17 +226,17 @@ rule_bodies(Bodies, R, LineBodies) :-
 check_evidence(Name, LineFacts, R, Key, V) :-
     (   Key == confidence_permille, \+ ( integer(V), between(0, 1000, V) )
     ->  term_text(V, T),
-        format(string(Why), "a confidence in permille is 0 to 1000, not ~w", [T])
+        Check = general_confidence, Args = [R, T]
     ;   memberchk(Key, [support, kept]), \+ ( integer(V), V >= 0 )
     ->  term_text(V, T),
-        format(string(Why), "~w is a count of pours, not ~w", [Key, T])
+        Check = general_count, Args = [R, Key, T]
     ;   Key == kept, last(LineFacts, R, support, S), integer(S), V > S
-    ->  format(string(Why), "~w pours kept of ~w described", [V, S])
+    ->  Check = general_kept, Args = [R, V, S]
     ;   fail
     ),
     !,
     memberchk(Line-provenance(R, Key, _), LineFacts),
-    format(string(M), "general rule ~w: ~w", [R, Why]),
+    check_message(Check, Args, M),
     throw(theory_error(Name, Line, M)).
 check_evidence(_, _, _, _, _).
 

@@ -29,6 +29,21 @@ check_message(second_rule, "a second rule named ~w").
 % body/2 of no rule (the rule, three times).
 check_message(dangling_body, "body(~w, _) of a rule ~w that has no rule(~w, Kind, Head) fact").
 
+% A theory of several files: a rule a file before defined (the rule, that file).
+check_message(already_defined, "rule ~w is already defined in ~w").
+% sup/2 of a name no rule has (the pair, the name).
+check_message(sup_not_a_rule, "sup(~w, ~w) names ~w, which is not a rule").
+% A file with nothing of a theory.
+check_message(empty_theory, "an empty theory (no facts and no rules)").
+% A general rule (provenance(R, layer, general)) the vocabulary cannot
+% read: its body, its head, its evidence (the rule first).
+check_message(general_body, "general rule ~w: ~w is not a proposition of the vocabulary").
+check_message(general_head, "general rule ~w: ~w is not an expectation").
+check_message(general_confidence,
+  "general rule ~w: a confidence in permille is 0 to 1000, not ~w").
+check_message(general_count, "general rule ~w: ~w is a count of pours, not ~w").
+check_message(general_kept, "general rule ~w: ~w pours kept of ~w described").
+
 % A rule could beat itself (and a literal and its complement both be
 % concluded): the cycle's rules, joined by " > ", first and last the same.
 check_message(superiority_cycle,

@@ -13,7 +13,7 @@ from pantarhei.bridge.theories.dfl import is_dfl, read_dfl
 from pantarhei.bridge.theories.model import Theory
 from pantarhei.bridge.theories.native import read_native
 from pantarhei.bridge.theories.well_formed import source_line, source_text
-from pantarhei.theory import TheoryFileError, default_theory, defaults
+from pantarhei.theory import TheoryFileError, check_message, default_theory, defaults
 
 #: The theory the exploration writes, used when no theory file is named.
 DEFAULT_THEORY = default_theory()
@@ -84,7 +84,7 @@ def check_file(t: Theory, pouring: bool = True) -> None:
     name its rules use that the vocabulary does not know (theory/ask.pl's
     load_theories/2 checks a native file the same way)."""
     if not (t.facts or t.rules or t.sup or t.settings or t.extra):
-        raise UserError(f"{t.source}: an empty theory (no facts and no rules)")
+        raise UserError(f"{t.source}: " + check_message("empty_theory"))
     try:
         check_general_rules(t)
     except TheoryFileError as e:
@@ -115,7 +115,8 @@ def merge(theories: list[Theory]) -> Theory:
                 out.facts.append(f)
         for r in t.rules:
             if r.id in owner:
-                raise TheoryFileError(f"{t.where(r.id)}: rule {r.id} is already defined in {owner[r.id]}")
+                raise TheoryFileError(f"{t.where(r.id)}: "
+                                      + check_message("already_defined", r.id, owner[r.id]))
             owner[r.id] = t.source
             out.rules.append(r)
         out.sup.extend(t.sup)
@@ -251,23 +252,22 @@ def check_general_rules(theory: Theory) -> None:
         for b in r.body:
             if b not in vocab.propositions:
                 where = source_line(text, rf"body\(\s*{re.escape(r.id)}\s*,\s*{re.escape(b)}\s*\)", theory.source)
-                raise TheoryFileError(f"{where}: general rule {r.id}: {b} is not a proposition "
-                                      f"of the vocabulary")
+                raise TheoryFileError(f"{where}: " + check_message("general_body", r.id, b))
         head = r.head[4:-1] if r.head.startswith("neg(") else r.head
         if head not in expectations:
             where = source_line(text, rf"rule\(\s*{re.escape(r.id)}\s*,", theory.source)
-            raise TheoryFileError(f"{where}: general rule {r.id}: {head} is not an expectation")
+            raise TheoryFileError(f"{where}: " + check_message("general_head", r.id, head))
     facts = {(rid, k): v for rid, k, v in theory.provenance if rid in general}
     for (rid, key), v in facts.items():
         if key == "confidence_permille" and not (isinstance(v, int) and 0 <= v <= 1000):
-            why = f"a confidence in permille is 0 to 1000, not {v}"
+            why = check_message("general_confidence", rid, v)
         elif key in ("support", "kept") and not (isinstance(v, int) and v >= 0):
-            why = f"{key} is a count of pours, not {v}"
+            why = check_message("general_count", rid, key, v)
         elif key == "kept" and isinstance(facts.get((rid, "support")), int) and v > facts[(rid, "support")]:
-            why = f"{v} pours kept of {facts[(rid, 'support')]} described"
+            why = check_message("general_kept", rid, v, facts[(rid, "support")])
         else:
             continue
         # the line is looked for only to say where: a search per fact costs
         # more than reading the theory
         where = source_line(text, rf"provenance\(\s*{re.escape(rid)}\s*,\s*{key}\s*,", theory.source)
-        raise TheoryFileError(f"{where}: general rule {rid}: {why}")
+        raise TheoryFileError(f"{where}: {why}")

@@ -247,7 +247,7 @@ class Theory:
                 if x not in ids:
                     where = source_line(text, rf"sup\(\s*{re.escape(a)}\s*,\s*{re.escape(b)}\b"
                                               rf"|\b{re.escape(a)}\s*>\s*{re.escape(b)}\b", self.source)
-                    raise TheoryFileError(f"{where}: sup({a}, {b}) names {x}, which is not a rule")
+                    raise TheoryFileError(f"{where}: " + check_message("sup_not_a_rule", a, b, x))
 
 
 def antecedent_id(i: int) -> str:
