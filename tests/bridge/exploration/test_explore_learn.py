@@ -15,6 +15,7 @@ from pantarhei.bridge.errors import UserError
 
 from pantarhei.bridge.exploration import explore_call as exploration
 from pantarhei.bridge.exploration.explore_call import ExploreOptions
+from pantarhei.bridge.learning.learners import default_learner
 from pantarhei.bridge.theories.loading import load
 from pantarhei.theory import read_facts
 from pantarhei.theory.lexicon import load_vocabulary
@@ -46,6 +47,13 @@ def test_every_pour_is_in_the_budget(learned):
     settings = {str(a[0]): a[1] for a in facts["setting"]}
     assert settings["general_own_pours"] == 0 and settings["general_pours"] == POURS
     assert settings["simulations"] == POURS and settings["pours"] == POURS
+    # the theory says which learner wrote it (the option table's default here)
+    assert settings["learner"] == default_learner()
+
+
+def test_a_learner_the_option_table_does_not_offer_is_refused_in_one_line(tmp_path):
+    with pytest.raises(UserError, match=r"^learner: expected general"):
+        run(tmp_path, "nope", learner="nope")
 
 
 def test_it_starts_from_the_ordinary_pour_and_explores_what_questions_say(learned):
