@@ -29,6 +29,10 @@ check_message(second_rule, "a second rule named ~w").
 % body/2 of no rule (the rule, three times).
 check_message(dangling_body, "body(~w, _) of a rule ~w that has no rule(~w, Kind, Head) fact").
 
+% A file past theory_bytes_at_most of theory/defaults.pl (its size, the
+% most, each in digits grouped by commas).
+check_message(too_large,
+  "~w bytes, past the ~w a theory file may have (theory_bytes_at_most, theory/defaults.pl)").
 % A theory of several files: a rule a file before defined (the rule, that file).
 check_message(already_defined, "rule ~w is already defined in ~w").
 % sup/2 of a name no rule has (the pair, the name).

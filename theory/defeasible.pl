@@ -129,8 +129,9 @@ load_theory(File) :-
 check_size(File) :-
     default(theory_bytes_at_most, Most),
     (   exists_file(File), size_file(File, Size), Size > Most
-    ->  format(string(M), "~D bytes, past the ~D a theory file may have (theory_bytes_at_most, theory/defaults.pl)",
-               [Size, Most]),
+    ->  format(string(S), "~D", [Size]),
+        format(string(T), "~D", [Most]),
+        check_message(too_large, [S, T], M),
         throw(theory_error(File, 0, M))
     ;   true
     ).

@@ -25,8 +25,7 @@ NO_THEORY = (f"no learned theory yet ({DEFAULT_THEORY} does not exist): run the 
 def too_large(size: int) -> str | None:
     """Why a theory file of `size` bytes is not read, or None."""
     most = int(defaults()["theory_bytes_at_most"])
-    return (f"{size:,} bytes, past the {most:,} a theory file may have (theory_bytes_at_most, "
-            f"theory/defaults.pl)" if size > most else None)
+    return check_message("too_large", f"{size:,}", f"{most:,}") if size > most else None
 
 
 def read_theory(path: Path | str) -> Theory:
