@@ -241,9 +241,9 @@ def _bar() -> str:
     """The criterion of a verified plan, in words, with the defaults."""
     from pantarhei.bridge.reasoning.planning import plan_defaults
 
-    pours, share, _ = plan_defaults()
-    return (f"at least {share:.0%} of its first {pours} pours (`--verify`) and again of all "
-            f"{2 * pours}, with {pours} fresh ones drawn after it passed the first")
+    share = plan_defaults()[1]
+    return (f"at least {share:.0%} of its first `--verify` pours and again of all of them with "
+            f"as many fresh ones, drawn after it passed the first")
 
 
 def _like(x) -> str:
