@@ -102,7 +102,8 @@ def print_search(found, oracle: str, learned_out: str | None) -> None:
         if not t.verified:
             print(f"  refuted: {', '.join(t.plan.chosen) or 'the context alone'} ({t.origin}, "
                   f"round {t.round}): every goal met in {t.met} of {t.simulated} pours"
-                  + (_batches(t) + " (not confirmed)" if t.unconfirmed else "") + "; "
+                  + (_batches(t) + " (not confirmed)" if t.unconfirmed else "")
+                  + (" (too few pours left to confirm it)" if t.short else "") + "; "
                   + ", ".join(f"{g} {n}" for g, n in t.per_goal.items()))
     for i, t in enumerate(found.verified):
         n = len(t.plan.chosen)

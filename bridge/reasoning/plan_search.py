@@ -18,8 +18,9 @@ reach the goals at all), plans are searched in the simulation: every
 manner proposition alone with the given context, most promising first (as
 the learned theory predicts the goals), then the pairs of the PAIRED best
 singles (a single tried counts by the share of its pours that met the
-goals). A plan is tried only when the budget holds both its batches. The
-search ends with a verified plan, when the budget of pours is spent, or
+goals). A plan is tried while the budget holds its first batch; one that
+passes it when the budget cannot hold its confirming batch is not
+verified, and the search ends there. The search ends with a verified plan, when the budget of pours is spent, or
 when no candidate is left; it then says why no plan was found.
 """
 from __future__ import annotations
@@ -63,6 +64,8 @@ class Trial:
     said: list = field(default_factory=list)
     #: per batch (the first, then the confirming one): its pours and how many met every goal
     batches: list[Batch] = field(default_factory=list)
+    #: passed its first batch, and the budget held too few pours to confirm it
+    short: bool = False
 
     @property
     def rate(self) -> float:
@@ -85,6 +88,7 @@ class Trial:
                 "per_goal": dict(self.per_goal),
                 "per_goal_share": {g: round(x, 3) for g, x in self.shares.items()},
                 "batches": [b.as_dict() for b in self.batches], "verified": self.verified,
+                "unconfirmed_for_budget": self.short,
                 "rests_on": [x.as_dict() for x in self.said]}
 
 
@@ -142,13 +146,15 @@ def passes(met: int, simulated: int, min_success: float) -> bool:
 
 
 def verify(p: Plan, goals: list[str], simulate: Callable, n: int, seed: int,
-           min_success: float, trial: Trial, confirm: int | None = None
-           ) -> tuple[np.ndarray, np.ndarray]:
+           min_success: float, trial: Trial, confirm: int | None = None,
+           room: int | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Simulate the plan's pours in steps until its goals were met in
     `min_success` of `n` or can no longer be; if they were, confirm it on
     `confirm` fresh pours (n when None; 0: not confirmed) in steps, until
     its goals were met in `min_success` of all its pours, pooled, or can
-    no longer be. Fill in `trial` (pooled over both batches); the pours
+    no longer be; with fewer than the two batches' pours left in `room`
+    (None: no bound), a plan that passes its first batch is left
+    unconfirmed, and not verified. Fill in `trial` (pooled over both batches); the pours
     simulated and their scores. Each batch's pours are the first of one
     seeded sample, so that a plan verified to the end has the same pours
     however it was stepped."""
@@ -157,6 +163,9 @@ def verify(p: Plan, goals: list[str], simulate: Callable, n: int, seed: int,
     Ps, Ss, tally = [], [], []
     total = misses = 0
     for kind, size, batch in batches:
+        if room is not None and total + size > room:
+            trial.short = True
+            break
         P, S, missed = _batch(p.antecedent, goals, simulate, size, pour_seed(seed, p.antecedent, batch),
                               total + size, misses, min_success)
         Ps.append(P)
@@ -250,16 +259,20 @@ def search(theory: Theory, goals: Sequence[str], given: Sequence[str], simulate:
         out.rounds += 1
         spent = False
         for origin, p in proposed:
-            if out.pours + verify_pours + confirm > budget:     # room for both batches
+            if out.pours + verify_pours > budget:
                 spent = True
                 break
             trial = Trial(p, origin, out.rounds, said=rests_on(current, p.antecedent, lits))
-            P, S = verify(p, lits, simulate, verify_pours, seed, min_success, trial, confirm)
+            P, S = verify(p, lits, simulate, verify_pours, seed, min_success, trial, confirm,
+                          room=budget - out.pours)
             out.tried.append(trial)
             out.pours += len(P)
             if learn:
                 planned.append(planned_rules(len(out.tried) - 1, p.antecedent, P, S, seed))
             if len(out.verified) >= want:
+                break
+            if trial.short:          # no plan could be confirmed now
+                spent = True
                 break
         if len(out.verified) >= want or spent:
             break
@@ -342,13 +355,21 @@ def _candidates(given: list[str], singles: list[tuple[float, tuple[str, ...]]],
 
 def _why_none(out: Search, min_success: float, n: int) -> str:
     """Why no plan was found, in one line."""
+    short = next((t for t in out.tried if t.short), None)
+    if short is not None:       # passed its first pours, with no pours left to confirm it
+        return (f"the budget of {out.budget} pours is spent: "
+                f"{', '.join(short.plan.chosen) or 'the context alone'} met the goals in "
+                f"{short.met} of {short.simulated} pours, too few pours were left to confirm it on "
+                f"{out.confirm} fresh ones (more --pours would), and none of the "
+                f"{len(out.tried) - 1} other plans tried met them in "
+                f"{_bar(min_success, n, out.confirm)}")
     best = max(out.tried, key=lambda t: (t.rate, -len(t.plan.chosen)), default=None)
     seen = "" if best is None else (
         f"; the best, {', '.join(best.plan.chosen) or 'the context alone'}, met them in "
         + (f"{best.batches[0].met} of {best.batches[0].simulated}, then in {best.batches[1].met} "
            f"of {best.batches[1].simulated} fresh pours confirming it"
            if best.unconfirmed else f"{best.met} of {best.simulated}"))
-    spent = out.pours + n + out.confirm > out.budget
+    spent = out.pours + n > out.budget
     why = (f"the budget of {out.budget} pours is spent" if spent else "no candidate is left")
     if out.unreachable and not any(t.origin == "theory" for t in out.tried):
         head = f"unreachable in the theory ({out.unreachable})"

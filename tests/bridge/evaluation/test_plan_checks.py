@@ -62,7 +62,8 @@ def test_each_goal_set_gets_a_verified_plan_with_its_numbers_or_says_why(synthet
         if p["search"]["plan"] is not None:      # verified alike: confirmed on fresh pours
             assert p["search"]["met"] >= 0.9 * p["search"]["simulated"] == 0.9 * 2 * verify
         if "plan" not in p:
-            assert p["none"].startswith(("every candidate refuted", "unreachable in the theory"))
+            assert p["none"].startswith(("every candidate refuted", "unreachable in the theory",
+                                         "the budget of"))
             continue
         assert set(given) <= set(p["antecedent"]) and not violations(p["antecedent"])
         v = p["verified"]
@@ -93,11 +94,11 @@ def test_a_refuted_plan_is_never_reported(synthetic):
                and "the best" in p["none"] for p in spills)
     assert all(p["search"]["plan"] is None for p in spills)
     # the simulation alone: every manner alone first, then pairs, until
-    # its budget is spent (each plan tried takes 2 pours, with room for 4)
+    # its budget is spent (each plan tried takes 2 pours)
     for p in spills:
         s = p["search"]
         assert s["tried"] == s["singles"] + s["pairs"] and s["pours"] == 2 * s["tried"]
-        assert s["pours"] + 4 > s["budget"] == SEARCH_BUDGET * 2
+        assert s["pours"] + 2 > s["budget"] == SEARCH_BUDGET * 2
         assert s["pairs"] == 0 or s["singles"] == len(valid_singles(p["given"]))
 
 

@@ -103,6 +103,22 @@ def test_a_refuted_plan_is_learned_from_and_the_next_is_verified(synthetic) -> N
     assert [t.as_dict() for t in again.tried] == [t.as_dict() for t in out.tried]
 
 
+def test_a_plan_the_budget_cannot_confirm_is_not_verified(synthetic) -> None:
+    # pouring far away is refuted in 2 pours, pouring centred passes its 6,
+    # and 2 pours are left of 10: too few to confirm it on 6 fresh ones
+    out = search(WISHFUL, GOAL, [], synthetic, verify_pours=6, min_success=0.9, seed=3, budget=10)
+    far, centred = out.tried
+    assert not far.verified and not far.short and centred.short and not centred.verified
+    assert [(b.kind, b.simulated, b.met) for b in centred.batches] == [("first", 6, 6)]
+    assert out.pours == 8 and not out.verified
+    assert out.reason == ("the budget of 10 pours is spent: pour_centred met the goals in 6 of 6 "
+                          "pours, too few pours were left to confirm it on 6 fresh ones (more "
+                          "--pours would), and none of the 1 other plans tried met them in 90% of "
+                          "6 pours and of 12 with 6 fresh ones")
+    assert search(WISHFUL, GOAL, [], synthetic, verify_pours=6, min_success=0.9, seed=3,
+                  budget=14).verified[0].plan.chosen == ("pour_centred",)
+
+
 def len_of(t: Trial) -> int:
     return t.simulated + t.failed
 
