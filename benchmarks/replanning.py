@@ -44,7 +44,7 @@ def main() -> None:
                           if found.verified else "no plan")
                 confirmed = sum(len(t.batches) > 1 for t in found.tried)
                 print(f"  {words}: {seconds:.1f} s, {found.pours} pours in {len(found.tried)} "
-                      f"plans ({confirmed} passed their first pours and met fresh ones), "
+                      f"plans ({confirmed} passed their first pours and reached fresh ones), "
                       f"{found.rounds} rounds: {answer}", flush=True)
     print(f"planning with re-planning, slowest of {SETS} goal sets on {os.cpu_count()} cores: "
           f"{worst:.1f} s (target <= {TARGET:.0f} s: {'met' if worst <= TARGET else 'MISSED'})")
