@@ -12,9 +12,11 @@ from pathlib import Path
 from types import MappingProxyType
 from typing import Iterable, Mapping, Union
 
-# The error of a malformed theory file is its reader's (which imports
-# nothing of this package, so that the two make no import cycle).
-from pantarhei.bridge.theories.facts import TheoryFileError  # noqa: F401  (re-exported)
+# The error of a malformed theory file and the messages of its checks are
+# its reader's (which imports nothing of this package, so that the two
+# make no import cycle).
+from pantarhei.bridge.theories.facts import (CHECK_MESSAGES, TheoryFileError,  # noqa: F401
+                                             check_message)
 
 #: The folder that holds the theory files.
 THEORY_DIR = Path(__file__).resolve().parent
@@ -35,26 +37,9 @@ DEFAULTS_FILE = THEORY_DIR / "defaults.pl"
 
 
 #: The messages of the checks of a theory file that both readers make
-#: (`check_message`; SWI-Prolog's check_message/3 of theory_files.pl).
-CHECK_MESSAGES_FILE = THEORY_DIR / "check_messages.pl"
-
-
-def check_message(key: str, *args: object) -> str:
-    """The message of the check `key` of a theory file, as
-    theory/check_messages.pl writes it once for both readers: each `~w`
-    of its text is the next of `args`, written as it is (as SWI-Prolog's
-    format/2 writes it). KeyError for a check the table lacks, ValueError
-    for as many arguments as the text does not take."""
-    parts = _check_messages()[key].split("~w")
-    if len(parts) != len(args) + 1:
-        raise ValueError(f"check message {key} takes {len(parts) - 1} arguments, not {len(args)}")
-    return "".join(part + str(arg) for part, arg in zip(parts, args)) + parts[-1]
-
-
-@lru_cache(maxsize=None)
-def _check_messages() -> Mapping[str, str]:
-    return MappingProxyType({str(k): str(v) for k, v in
-                             read_facts([CHECK_MESSAGES_FILE]).get("check_message", [])})
+#: (`check_message`, the reader's; SWI-Prolog's check_message/3 of
+#: theory_files.pl).
+CHECK_MESSAGES_FILE = THEORY_DIR / CHECK_MESSAGES
 
 
 def default_theory() -> Path:

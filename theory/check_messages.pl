@@ -7,6 +7,27 @@
 % tests/theory/test_check_messages.py gives both readers the same bad
 % files and compares what they say.
 
+% The language of theory files (theory_files.pl; bridge/theories/facts.py):
+% what a file holds that is not a ground fact as both engines read it.
+check_message(no_such_file, "no such file").
+% A byte (its code in hexadecimal, 0x and two digits).
+check_message(not_ascii,
+  "byte ~w is not printable ASCII: a theory file is ASCII text (no other characters, no invalid UTF-8)").
+check_message(expected_fact, "expected a fact such as name(arg, 1).").
+check_message(directive, "a fact, not a directive: a theory file is data").
+check_message(hash_directive, "a fact, not a directive (#include, #script, ...): a theory file is data").
+check_message(rule_not_fact, "a fact, not a rule").
+check_message(variable, "a ground fact (no variables)").
+check_message(float, "an integer, not a float (use integer units such as mm or permille)").
+check_message(list, "an atom, integer, text or term, not a list").
+check_message(not_name, "a name other than not (clingo reads it as negation)").
+check_message(text_escape, "quoted text with \\\\, \\\" and \\n as its only escapes").
+% A term nested too deep (how deep a term may nest).
+check_message(nesting, "a term nested at most ~w deep").
+% An integer (as shown: whole, or by its ends and its count of digits).
+check_message(int_range, "an integer from -2147483648 to 2147483647, not ~w").
+check_message(int_form, "an integer in decimal digits without leading zeros, not ~w").
+
 % A fact of a theory predicate not of its form (its Form, its name and arity).
 check_message(arity, "expected ~w, not a ~w/~w fact").
 % An argument that must be a name (the fact's form, the argument).

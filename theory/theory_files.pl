@@ -27,7 +27,7 @@ term against the text it was read from (so that =|'a'|=, =|0x1F|= or
 =|"\x41\"|=, which SWI-Prolog reads but clingo does not, are refused), and
 adds the facts to a module. Python reads the same language
 (bridge/theories/facts.py): both refuse the same files with the same
-message, naming the line where the offending fact starts (or of the
+message (its words theory/check_messages.pl's, check_message/3), naming the line where the offending fact starts (or of the
 offending byte). A malformed file raises
 =|theory_error(File, Line, Expected)|=, which theory_error_message/2 turns
 into one line =|File:Line: Expected|=.
@@ -215,7 +215,8 @@ add_fact(Module, Fact) :-
 read_fact_file(File, LineFacts) :-
     (   exists_file(File)
     ->  true
-    ;   throw(theory_error(File, 0, "no such file"))
+    ;   check_message(no_such_file, [], M),
+        throw(theory_error(File, 0, M))
     ),
     read_file_to_string(File, Text, [encoding(octet)]),
     check_bytes(File, Text),
@@ -243,7 +244,8 @@ check_bytes(File, Text) :-
         sub_string(Text, 0, N, _, Before),
         split_string(Before, "\n", "", Lines),
         length(Lines, Line),
-        format(string(M), "byte 0x~|~`0t~16r~2+ is not printable ASCII: a theory file is ASCII text (no other characters, no invalid UTF-8)", [C]),
+        format(string(Byte), "0x~|~`0t~16r~2+", [C]),
+        check_message(not_ascii, [Byte], M),
         throw(theory_error(File, Line, M))
     ).
 
@@ -268,9 +270,11 @@ read_facts(In, Text, File, Facts) :-
               error(syntax_error(_), _),
               Term = '$syntax_error'),
         (   C0 == '#'
-        ->  throw(theory_error(File, Line, "a fact, not a directive (#include, #script, ...): a theory file is data"))
+        ->  check_message(hash_directive, [], M),
+            throw(theory_error(File, Line, M))
         ;   Term == '$syntax_error'
-        ->  throw(theory_error(File, Line, "expected a fact such as name(arg, 1)."))
+        ->  check_message(expected_fact, [], M),
+            throw(theory_error(File, Line, M))
         ;   catch(( check_fact_text(Term, Pos, Comments, Text), Expected = none ),
                   bad_fact(Expected), true),
             Expected \== none
@@ -312,8 +316,13 @@ term_start(From-_, From) :- !.
 term_start(P, From) :- compound(P), arg(1, P, From), integer(From), !.
 term_start(_, 0).
 
-bad(expected) :- !, throw(bad_fact("expected a fact such as name(arg, 1).")).
-bad(M) :- throw(bad_fact(M)).
+% bad(+Check), bad(+Check, +Args): raise bad_fact(Message), the message
+% of Check (theory/check_messages.pl; expected: expected_fact).
+bad(expected) :- !, bad(expected_fact, []).
+bad(Check) :- bad(Check, []).
+bad(Check, Args) :-
+    check_message(Check, Args, M),
+    throw(bad_fact(M)).
 
 % check_text(+Pos, +Term, +Text, +Where-Depth): Term is written in Text as
 % the language writes it (an unquoted name, a decimal integer, "..." with
@@ -323,26 +332,26 @@ check_top(Term) :-
     (   var(Term)
     ->  true                                    % check_text/4 says so
     ;   Term = (:- _)
-    ->  bad("a fact, not a directive: a theory file is data")
+    ->  bad(directive)
     ;   Term = (?- _)
-    ->  bad("a fact, not a directive: a theory file is data")
+    ->  bad(directive)
     ;   Term = (_ :- _)
-    ->  bad("a fact, not a rule")
+    ->  bad(rule_not_fact)
     ;   true
     ).
 
 check_text(_, T, _, _) :-
     var(T), !,
-    bad("a ground fact (no variables)").
+    bad(variable).
 check_text(_, T, _, _) :-
     float(T), !,
-    bad("an integer, not a float (use integer units such as mm or permille)").
+    bad(float).
 check_text(_, T, _, _) :-
     ( T == [] ; T = [_|_] ), !,
-    bad("an atom, integer, text or term, not a list").
+    bad(list).
 check_text(_-_, not, _, _) :-
     !,
-    bad("a name other than not (clingo reads it as negation)").
+    bad(not_name).
 check_text(From-To, T, Text, Where-_) :-
     !,
     (   atom(T)
@@ -361,7 +370,7 @@ check_text(string_position(From, To), T, Text, arg-_) :-
     string_codes(Raw, Codes),
     (   phrase(quoted(Escapes), Codes)
     ->  (   Escapes == ok -> true
-        ;   bad("quoted text with \\\\, \\\" and \\n as its only escapes")
+        ;   bad(text_escape)
         )
     ;   bad(expected)
     ).
@@ -375,13 +384,12 @@ check_text(term_position(From, _, From, FTo, ArgsPos), T, Text, _-Depth) :-
     sub_string(Text, FTo, 1, _, "("),
     !,
     (   Name == not
-    ->  bad("a name other than not (clingo reads it as negation)")
+    ->  bad(not_name)
     ;   true
     ),
     nesting_at_most(Most),
     (   Depth >= Most
-    ->  format(string(M), "a term nested at most ~d deep", [Most]),
-        bad(M)
+    ->  bad(nesting, [Most])
     ;   Depth1 is Depth + 1
     ),
     foldl(check_arg_text(Text, Depth1), ArgsPos, Args, 0, _).
@@ -407,11 +415,9 @@ check_integer(Raw, N) :-
         (   N >= -2147483648, N =< 2147483647
         ->  (   number_string(N, Raw) , format(string(Raw), "~d", [N])
             ->  true
-            ;   format(string(M), "an integer in decimal digits without leading zeros, not ~w", [Shown]),
-                bad(M)
+            ;   bad(int_form, [Shown])
             )
-        ;   format(string(M), "an integer from -2147483648 to 2147483647, not ~w", [Shown]),
-            bad(M)
+        ;   bad(int_range, [Shown])
         )
     ;   bad(expected)
     ).
@@ -447,17 +453,17 @@ quoted_codes(E, E) --> [].
 %   @error bad_fact(Expected) saying what was expected instead.
 check_fact(Term) :-
     (   var(Term)
-    ->  bad("a ground fact (no variables)")
+    ->  bad(variable)
     ;   Term = (:- _)
-    ->  bad("a fact, not a directive: a theory file is data")
+    ->  bad(directive)
     ;   Term = (?- _)
-    ->  bad("a fact, not a directive: a theory file is data")
+    ->  bad(directive)
     ;   Term = (_ :- _)
-    ->  bad("a fact, not a rule")
+    ->  bad(rule_not_fact)
     ;   Term = [_|_]
-    ->  bad("an atom, integer, text or term, not a list")
+    ->  bad(list)
     ;   Term == []
-    ->  bad("an atom, integer, text or term, not a list")
+    ->  bad(list)
     ;   callable(Term)
     ->  true
     ;   bad(expected)
@@ -469,13 +475,13 @@ check_fact(Term) :-
     ).
 
 check_arg(A) :- var(A), !,
-    bad("a ground fact (no variables)").
+    bad(variable).
 check_arg(A) :- integer(A), !.
 check_arg(A) :- string(A), !.
 check_arg(A) :- float(A), !,
-    bad("an integer, not a float (use integer units such as mm or permille)").
+    bad(float).
 check_arg(A) :- ( A == [] ; A = [_|_] ), !,
-    bad("an atom, integer, text or term, not a list").
+    bad(list).
 check_arg(A) :- atom(A), !.
 check_arg(A) :- compound(A), !,
     compound_name_arguments(A, _, Args),

@@ -225,7 +225,7 @@ def _literal(text: str, where: str, ground: bool = False) -> str:
                               f"not {quoted(text.strip())}")
     s = s.replace(" ", "")
     if s.split("(", 1)[0] == "not":
-        raise TheoryFileError(f"{where}: {theory_facts.NOT_NAME}")
+        raise TheoryFileError(f"{where}: " + theory_facts.check_message("not_name"))
     if m.group(1):
         args = _split(m.group(2), where)
         for a in args:
@@ -233,7 +233,7 @@ def _literal(text: str, where: str, ground: bool = False) -> str:
                 raise TheoryFileError(f"{where}: expected a constant or a variable ?x as argument, "
                                       f"not {quoted(a)}")
             if a == "not":
-                raise TheoryFileError(f"{where}: {theory_facts.NOT_NAME}")
+                raise TheoryFileError(f"{where}: " + theory_facts.check_message("not_name"))
             if a[0] in "-0123456789" and (problem := theory_facts.integer_problem(a)):
                 raise TheoryFileError(f"{where}: {problem}")     # clingo would wrap it
             if ground and _is_var(a):

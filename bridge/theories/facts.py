@@ -7,7 +7,8 @@ with `\\\\`, `\\"` and `\\n` as its only escapes) or a term of
 those; `%` starts a comment to the end of the line. That is the subset of
 Prolog and ASP that both engines read the same way, and theory/theory_files.pl
 reads the same language in SWI-Prolog: the two reject the same files with
-the same `file:line: what` (the line where the offending fact starts, or of
+the same `file:line: what` (its words theory/check_messages.pl's,
+`check_message`; the line where the offending fact starts, or of
 the offending byte). Directives (`:- ...`, `#include`, `#script`, ...),
 rules, variables, quoted atoms, lists, floats, block comments and anything
 else are refused: a theory file is data.
@@ -20,8 +21,10 @@ from __future__ import annotations
 import gc
 import re
 from contextlib import contextmanager
+from functools import lru_cache
 from pathlib import Path
-from typing import NamedTuple
+from types import MappingProxyType
+from typing import Mapping, NamedTuple
 
 
 class TheoryFileError(ValueError):
@@ -34,25 +37,40 @@ class TheoryFileError(ValueError):
 #: The integers clingo holds (32-bit); theory files stay within them.
 INT_MIN, INT_MAX = -2 ** 31, 2 ** 31 - 1
 
-# The messages, word for word those of theory/theory_files.pl.
-EXPECTED_FACT = "expected a fact such as name(arg, 1)."
-NOT_ASCII = "byte {:#04x} is not printable ASCII: a theory file is ASCII text (no other characters, no invalid UTF-8)"
-DIRECTIVE = "a fact, not a directive: a theory file is data"
-HASH_DIRECTIVE = "a fact, not a directive (#include, #script, ...): a theory file is data"
-RULE = "a fact, not a rule"
-VARIABLE = "a ground fact (no variables)"
-FLOAT = "an integer, not a float (use integer units such as mm or permille)"
-LIST = "an atom, integer, text or term, not a list"
-INT_RANGE = "an integer from -2147483648 to 2147483647, not {}"
-INT_FORM = "an integer in decimal digits without leading zeros, not {}"
-TEXT_ESCAPE = "quoted text with \\\\, \\\" and \\n as its only escapes"
+# The messages of what this reader and SWI-Prolog's refuse are
+# theory/check_messages.pl's (`check_message`); this one is Python's alone.
 NAME = "a name in lower case letters, digits and _, not '{}'"
 #: How deep a term may nest (a theory's facts nest two or three deep): every
 #: reader after this one may then recurse on terms without running out.
 NESTING_AT_MOST = 32
-NESTING = f"a term nested at most {NESTING_AT_MOST} deep"
-#: clingo reads `not` as its negation, never as a name.
-NOT_NAME = "a name other than not (clingo reads it as negation)"
+
+#: The table of the messages of the checks both readers make, in the
+#: folder of the package pantarhei.theory (theory/).
+CHECK_MESSAGES = "check_messages.pl"
+
+
+def check_message(key: str, *args: object) -> str:
+    """The message of the check `key` of a theory file, as
+    theory/check_messages.pl writes it once for both readers: each `~w`
+    of its text is the next of `args`, written as it is (as SWI-Prolog's
+    format/2 writes it). KeyError for a check the table lacks, ValueError
+    for as many arguments as the text does not take."""
+    parts = _check_messages()[key].split("~w")
+    if len(parts) != len(args) + 1:
+        raise ValueError(f"check message {key} takes {len(parts) - 1} arguments, not {len(args)}")
+    return "".join(part + str(arg) for part, arg in zip(parts, args)) + parts[-1]
+
+
+@lru_cache(maxsize=None)
+def _check_messages() -> Mapping[str, str]:
+    """The table, read by this reader (found where pantarhei.theory is,
+    without importing it: it imports this module)."""
+    from importlib.util import find_spec
+
+    spec = find_spec("pantarhei.theory")
+    table = Path(spec.origin).parent / CHECK_MESSAGES
+    return MappingProxyType({str(f.args[0]): str(f.args[1]) for f in read(table)
+                             if f.name == "check_message" and len(f.args) == 2})
 
 
 class Text(str):
@@ -126,7 +144,7 @@ def read(path: Path | str) -> list[Fact]:
     try:
         data = path.read_bytes()
     except FileNotFoundError:
-        raise TheoryFileError(f"{path}: no such file") from None
+        raise TheoryFileError(f"{path}: " + check_message("no_such_file")) from None
     except IsADirectoryError:
         raise TheoryFileError(f"{path}: a directory, not a theory file") from None
     except OSError as e:
@@ -140,7 +158,7 @@ def check_bytes(data: bytes, source: str, first_line: int = 1) -> str:
     m = _BAD_BYTE.search(data)
     if m:
         line = first_line + data.count(b"\n", 0, m.start())
-        raise TheoryFileError(f"{source}:{line}: " + NOT_ASCII.format(data[m.start()]))
+        raise TheoryFileError(f"{source}:{line}: " + check_message("not_ascii", f"{data[m.start()]:#04x}"))
     return data.decode("ascii")
 
 
@@ -218,9 +236,9 @@ def integer_problem(token: str) -> str | None:
     sign = "-" if token[:1] == "-" else ""
     significant = token[len(sign):].lstrip("0") or "0"
     if len(significant) > 10 or not INT_MIN <= int(sign + significant) <= INT_MAX:
-        return INT_RANGE.format(integer_shown(token))
+        return check_message("int_range", integer_shown(token))
     if str(int(sign + significant)) != token:
-        return INT_FORM.format(integer_shown(token))
+        return check_message("int_form", integer_shown(token))
     return None
 
 
@@ -243,8 +261,8 @@ def _unescape(token: str, source: str, line: int) -> Text:
             nxt = body[i + 1]
             if nxt not in '\\"n':
                 # an escape SWI-Prolog reads (but clingo does not), or none at all
-                raise TheoryFileError(f"{source}:{line}: "
-                                      f"{TEXT_ESCAPE if nxt in _SWI_ESCAPES else EXPECTED_FACT}")
+                raise TheoryFileError(f"{source}:{line}: " + check_message(
+                    "text_escape" if nxt in _SWI_ESCAPES else "expected_fact"))
             out.append("\n" if nxt == "n" else nxt)
             i += 2
         else:
@@ -263,8 +281,9 @@ class _Tokens:
         self.stack: list[list] = []     # open terms [name, arg, ...]
         self.state = "value"            # value (a value may come) | open | after
 
-    def fail(self, what: str = EXPECTED_FACT):
-        raise TheoryFileError(f"{self.source}:{self.start}: {what}")
+    def fail(self, check: str = "expected_fact", *args: object):
+        """Raise the message of `check` (theory/check_messages.pl)."""
+        raise TheoryFileError(f"{self.source}:{self.start}: " + check_message(check, *args))
 
     def run(self, pos: int, line: int) -> tuple[int, int]:
         """Read from pos (at line) until a newline between facts, or the
@@ -282,9 +301,9 @@ class _Tokens:
                 if not self.start:
                     self.start = line
                     if tok == "#":
-                        self.fail(HASH_DIRECTIVE)
+                        self.fail("hash_directive")
                     if kind == "neck":
-                        self.fail(DIRECTIVE)
+                        self.fail("directive")
                 self.token(kind, tok, text, m.end())
                 if kind == "text":
                     line += tok.count("\n")
@@ -295,19 +314,19 @@ class _Tokens:
 
     def token(self, kind: str, tok: str, text: str, after: int) -> None:
         if kind == "var":
-            self.fail(VARIABLE)
+            self.fail("variable")
         if kind == "float":
-            self.fail(FLOAT)
+            self.fail("float")
         if kind == "list":
-            self.fail(LIST)
+            self.fail("list")
         state = self.state
         if state == "value":
             if kind == "name" and tok == "not":
-                self.fail(NOT_NAME)
+                self.fail("not_name")
             if kind == "name":
                 if text.startswith("(", after):
                     if len(self.stack) >= NESTING_AT_MOST:
-                        self.fail(NESTING)
+                        self.fail("nesting", NESTING_AT_MOST)
                     self.stack.append([tok])
                     self.state = "open"
                     return
@@ -329,7 +348,7 @@ class _Tokens:
                 self.state = "value"
                 self.start = 0
             elif kind == "neck" and tok == ":-" and not self.stack:
-                self.fail(RULE)
+                self.fail("rule_not_fact")
             else:
                 self.fail()
 

@@ -63,9 +63,12 @@ BAD = {
 #: Messages no native file can bring out of both readers: a general rule's
 #: confidence past 0 to 1000 is refused first as any rule's (`confidence`).
 NO_NATIVE_FILE = {"general_confidence"}
-#: Messages whose bad file another test writes: a file past 32 MiB
-#: (tests/bridge/theories/test_loading.py, both readers).
-ELSEWHERE = {"too_large"}
+#: Messages whose bad files other tests give both readers: a file past 32
+#: MiB (tests/bridge/theories/test_loading.py), and the language of theory
+#: files (the hostile corpus of tests/bridge/theories/test_hostile_theories.py).
+ELSEWHERE = {"too_large", "not_ascii", "expected_fact", "directive",
+             "hash_directive", "rule_not_fact", "variable", "float", "list", "not_name",
+             "text_escape", "nesting", "int_range", "int_form"}
 #: Two files whose second defines the first's rule again (the message
 #: names the second's line and the first file).
 TWICE = ("rule(r1, defeasible, b).\n", "fact(c).\nrule(r1, defeasible, d).\n")
@@ -146,7 +149,8 @@ def test_an_unknown_check_or_a_wrong_count_of_arguments_is_refused():
 
 def test_every_message_has_a_bad_file_here():
     keys = {key for key, _ in read_facts([CHECK_MESSAGES_FILE])["check_message"]}
-    assert keys == set(BAD) | {"superiority_cycle", "already_defined"} | NO_NATIVE_FILE | ELSEWHERE
+    assert keys == (set(BAD) | {"superiority_cycle", "already_defined", "no_such_file"}
+                    | NO_NATIVE_FILE | ELSEWHERE)
 
 
 def test_both_readers_say_each_message_of_the_table_of_its_bad_file(tmp_path: Path):
@@ -171,3 +175,15 @@ def test_both_readers_say_a_rule_is_already_defined_in_an_earlier_file(tmp_path:
     (said,) = _prolog_errors([files])
     assert _python_error(files) == said == f"{files[1]}:2: " + check_message(
         "already_defined", "r1", files[0])
+
+
+def test_both_fact_readers_say_a_file_is_missing_alike(tmp_path: Path):
+    from pantarhei.bridge.theories import facts
+
+    missing = tmp_path / "missing.pl"
+    (said,) = _swipl(f"use_module({_quoted(THEORY_DIR / 'theory_files')}), "
+                     f"catch(read_fact_file({_quoted(missing)}, _), E, "
+                     "(theory_files:theory_error_message(E, M), writeln(M)))")
+    with pytest.raises(facts.TheoryFileError) as e:
+        facts.read(missing)
+    assert said.replace(":0:", ":") == str(e.value) == f"{missing}: " + check_message("no_such_file")
