@@ -433,7 +433,8 @@ class Host:
             explored = [(str(e["id"]), [str(p) for p in e["antecedent"]])
                         for e in request["explored"]]
         return general_layer(learned, s.params, s.scores, int(request["seed"]),
-                             lambda X: s.simulator.simulate(X, progress=progress), explored)
+                             lambda X: s.simulator.simulate(X, progress=progress), explored,
+                             str(request["learner"]))
 
     def end(self, request: dict) -> dict:
         s = self.session

@@ -32,9 +32,14 @@ model's likelihood, drawn to one half where B has few pours of its own:
 the model's guess for an antecedent it never saw is no knowledge), and
 drop(n) = 1/sqrt(n + 1) - 1/sqrt(n + b + 1), large for an antecedent
 without pours and small once it has many. A pair never explored gets
-none (its pours would sweep the pairs at random: it is explored for an
-interaction or not at all); an explored antecedent is a candidate for
-another batch by this term alone.
+none unless its propositions set parameters of one group (one pose, the
+liquid, a bowl, the motion; `suspect`), where physics makes them
+interact (height and position together decide where the stream lands, as
+neither alone does): the model has no pours of such a pair's region and
+cannot see the interaction it may hide, so its guess is no knowledge.
+Other pairs are explored for an interaction the model shows or not at
+all (their pours would sweep the pairs at random). An explored
+antecedent is a candidate for another batch by this term alone.
 
 asked(B) is how often B is asked, as the learner weighs the bodies it
 answers (generalize.Settings: the empty antecedent most, a proposition
@@ -57,7 +62,11 @@ something to learn: the curiosity leaves it), and
 
 the chance that a pour of the batch shows a nine-verdict behaviour no two
 pours so far have shown (the paper's criterion: behaviours not seen
-before). For an antecedent of two propositions or more, each counts only
+before), as learning progress (Oudeyer and Kaplan): the model's chance
+counts as `model_pours` pours beside B's own, each of which counts 1 if
+it showed a behaviour new when it was simulated (`shown_new`), so that a
+region whose pours stay unpredictable without showing anything new is
+left. For an antecedent of two propositions or more, each counts only
 what exceeds the most that one of its parts (B with one proposition less)
 gets: the doubt and the new behaviours its interaction brings, not those
 of a part whose own pours already show them (a proposition whose pours no
@@ -130,7 +139,7 @@ def model(P: np.ndarray, S: np.ndarray, seed: int):
     fail; None when there are none."""
     from threadpoolctl import threadpool_limits
 
-    from pantarhei.bridge.evaluation.measures import verdicts
+    from pantarhei.bridge.verdicts import verdicts
     from pantarhei.bridge.learning.generalize import Settings
     from pantarhei.bridge.learning.meaning import Meaning
 
@@ -177,9 +186,11 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
         M = np.full((len(bodies), len(load_vocabulary().expectations)), 0.5)
     learner = Settings()
     asked = {0: learner.default_weight, 1: 1.0}
+    suspects = {c for c in cands if suspect(c)}
     if weights.doubt or weights.newness:
         with threadpool_limits(1):
-            doubts, news = beyond_parts(meaning, S, cands, parents, batch, seed, iteration)
+            doubts, news = beyond_parts(meaning, P, S, cands, parents, batch, seed, iteration,
+                                        learner.model_pours)
     else:
         doubts = news = np.zeros(len(cands))
     value, dep, unc, doubt_of = [], [], [], []
@@ -195,7 +206,7 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
         q = (n * m + 1) / (n + 2)
         drop = 1 / np.sqrt(n + 1) - 1 / np.sqrt(n + batch + 1)
         uncertainty = (float(np.sqrt(q * (1 - q)).sum() * drop)
-                       if explored or len(c) <= 1 else 0.0)
+                       if explored or len(c) <= 1 or c in suspects else 0.0)
         doubt = float(h) * drop / (1 - 1 / np.sqrt(batch + 1))
         dep.append(round(departure, 6))
         unc.append(round(uncertainty, 6))
@@ -206,18 +217,64 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
     return Teaching(value, dep, unc, doubt_of, [round(float(x), 6) for x in news])
 
 
-def beyond_parts(meaning, S: np.ndarray, cands: Sequence[tuple[str, ...]],
+def suspect(body: Sequence[str]) -> bool:
+    """Whether a pair may interact as physics goes: its propositions set
+    parameters of one group (one pose, the liquid, a bowl, the motion),
+    a relative model's base parameter counted with its own."""
+    if len(body) != 2:
+        return False
+    vocabulary = load_vocabulary()
+    group = {p.name: p.group for p in vocabulary.parameters}
+
+    def groups(name: str) -> set[str]:
+        m = vocabulary.propositions[name].model
+        return {group[m.param]} | ({group[m.base]} if m.base else set())
+    return bool(groups(body[0]) & groups(body[1]))
+
+
+def beyond_parts(meaning, P: np.ndarray, S: np.ndarray, cands: Sequence[tuple[str, ...]],
                  parents: dict[tuple[str, ...], list[tuple[str, ...]]], batch: int, seed: int,
-                 iteration: int) -> tuple[np.ndarray, np.ndarray]:
-    """Per candidate, its batch's doubt and newness (batch_doubt) less the
-    most that one of its parts (`parents`: the candidate with one
-    proposition less) gets, at least 0; the empty body is no part."""
+                 iteration: int, model_pours: float) -> tuple[np.ndarray, np.ndarray]:
+    """Per candidate, its batch's doubt (batch_doubt) and newness (as
+    realized: shown_new) less the most that one of its parts (`parents`:
+    the candidate with one proposition less) gets, at least 0; the empty
+    body is no part."""
     parts = {c: [a for a in parents[c] if a] for c in cands}
     bodies = list(dict.fromkeys([*cands, *(a for c in cands for a in parts[c])]))
     index = {b: i for i, b in enumerate(bodies)}
     h, new = batch_doubt(meaning, S, bodies, batch, seed, iteration)
+    new = shown_new(new, P, S, bodies, model_pours)
     return tuple(np.array([max(0.0, x[index[c]] - max((x[index[a]] for a in parts[c]), default=0.0))
                            for c in cands]) for x in (h, new))
+
+
+def shown_new(new: np.ndarray, P: np.ndarray, S: np.ndarray,
+              bodies: Sequence[tuple[str, ...]], model_pours: float) -> np.ndarray:
+    """Newness as learning progress: the model's chance that a pour of B's
+    next batch shows a new behaviour (`new`), counted as `model_pours`
+    pours beside the n_B pours in B's support, of which k_B showed a
+    behaviour new when simulated (fewer than two earlier pours had shown
+    its nine verdicts): (model_pours * new + k_B) / (model_pours + n_B).
+    What B's pours keep failing to show, B is no longer credited with: a
+    region whose pours stay unpredictable keeps a high modelled newness
+    although its pours show behaviours seen already."""
+    from pantarhei.bridge.verdicts import verdicts
+
+    if not len(P):
+        return new
+    V = verdicts(S)
+    _, inverse = np.unique(V, axis=0, return_inverse=True)
+    inverse = np.asarray(inverse).ravel()
+    earlier = np.zeros(inverse.max() + 1, dtype=int)
+    fresh = np.zeros(len(V), dtype=bool)
+    for i, v in enumerate(inverse):
+        fresh[i] = earlier[v] < 2
+        earlier[v] += 1
+    out = np.array(new, dtype=float)
+    for j, b in enumerate(bodies):
+        held = in_support(P, b)
+        out[j] = (model_pours * out[j] + fresh[held].sum()) / (model_pours + held.sum())
+    return out
 
 
 def batch_doubt(meaning, S: np.ndarray, cands: Sequence[tuple[str, ...]], batch: int,
@@ -226,7 +283,7 @@ def batch_doubt(meaning, S: np.ndarray, cands: Sequence[tuple[str, ...]], batch:
     `iteration`: the model's mean entropy in bits, summed over the
     expectations, and the mean chance that a pour shows a behaviour that no
     two pours of S have shown (nine verdicts); both 0 without a model."""
-    from pantarhei.bridge.evaluation.measures import verdicts
+    from pantarhei.bridge.verdicts import verdicts
     from pantarhei.bridge.exploration.simulation import batch_pours
     from pantarhei.oracle.generative import normalise
 

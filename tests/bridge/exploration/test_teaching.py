@@ -5,8 +5,10 @@ nothing."""
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
-from pantarhei.bridge.exploration.teaching import Weights, fitted_on, model, teaching
+from pantarhei.bridge.exploration.teaching import Weights, fitted_on, model, shown_new, teaching
+from pantarhei.bridge.verdicts import verdicts
 from pantarhei.oracle.generative import sample, to_dict
 from pantarhei.oracle.synthetic import scores
 
@@ -101,3 +103,32 @@ def test_newness_is_the_chance_of_a_behaviour_no_two_pours_showed():
                      knows)
     assert found.newness[0] < 0.2 < found.newness[1]
     assert found.value[1] > found.value[0]
+
+
+def test_a_pair_of_one_pose_is_a_suspect_before_it_has_pours():
+    """Height and position both set the pouring pose: the pair may interact
+    where neither alone shows it, so before any pour of its region it is
+    valued by its uncertain likelihoods; a pair of a pose and the source's
+    material is not, and the suspect's uncertainty fades once it has
+    pours."""
+    P, S = pooled(pours([], 40, 1), pours(["pour_centred"], 8, 2), pours(["pour_very_high"], 8, 3),
+                  pours(["bouncy_source"], 8, 4))
+    explored = [(), ("pour_centred",), ("pour_very_high",), ("bouncy_source",)]
+    cands = [("pour_centred", "pour_very_high"), ("bouncy_source", "pour_very_high")]
+    found = teaching(P, S, explored, cands, ONLY_ANSWERS, 4, 1)
+    assert found.uncertainty[0] > 0 and found.uncertainty[1] == 0.0
+    P2, S2 = pooled((P, S), pours(["pour_centred", "pour_very_high"], 16, 5))
+    again = teaching(P2, S2, explored, cands[:1], ONLY_ANSWERS, 4, 1)
+    assert 0 < again.uncertainty[0] < found.uncertainty[0]
+
+
+def test_newness_fades_where_pours_keep_showing_what_was_seen():
+    """Learning progress: 40 ordinary pours of the synthetic oracle show two
+    behaviours, so 4 of them showed one new when simulated (the first two
+    of each): whatever the model says, the ordinary pour's newness is near
+    that share; a region without pours keeps the model's chance."""
+    P, S = pours([], 40, 1)
+    behaviours = np.unique(verdicts(S), axis=0).shape[0]
+    out = shown_new(np.array([0.9, 0.9]), P, S, [(), ("pour_far_away",)], 4.0)
+    assert out[0] == pytest.approx((4 * 0.9 + 2 * behaviours) / 44)
+    assert out[1] == 0.9
