@@ -28,23 +28,18 @@ from __future__ import annotations
 import math
 import zlib
 from dataclasses import dataclass, field
-from itertools import combinations
 from typing import Callable, Sequence
 
 import numpy as np
 
-from pantarhei.theory.lexicon import load_vocabulary
-
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.planning import Plan, check_goals, goals_met, plan, pouring_goals
-from pantarhei.bridge.theories.model import Theory, complement
+from pantarhei.bridge.theories.model import Theory
 
 #: Plans verified per round: the theory's (at most THEORY_PER_ROUND), then
 #: the search's.
 PER_ROUND = 4
 THEORY_PER_ROUND = 2
-#: The singles whose pairs the search tries.
-PAIRED = 8
 
 
 @dataclass
@@ -227,6 +222,7 @@ def search(theory: Theory, goals: Sequence[str], given: Sequence[str], simulate:
     UserError for an unknown goal or invalid context."""
     from pantarhei.bridge.reasoning.plan_evidence import planned_rules, with_rules
     from pantarhei.bridge.reasoning.plan_numbers import rests_on
+    from pantarhei.bridge.reasoning.plan_order import next_plan, ranked_singles
     from pantarhei.bridge.reasoning.scenes import require_valid
 
     lits, added = pouring_goals(list(goals)) if pour else ([*map(_literal, goals)], [])
@@ -237,28 +233,38 @@ def search(theory: Theory, goals: Sequence[str], given: Sequence[str], simulate:
     asked = [g for g in lits if g not in added or _concludes(theory, g)]
     current, planned = theory, []
     singles: list[tuple[float, tuple[str, ...]]] | None = None
+    seen: list[tuple[np.ndarray, np.ndarray]] = []       # every pour verified, for plan_order
     while True:
         tried = {t.plan.chosen for t in out.tried}
-        proposed: list[tuple[str, Plan]] = []
+        theirs: list[Plan] = []
         try:
             if use_theory:
-                proposed = [("theory", p) for p in _proposals(current, asked, given, tried)]
+                theirs = _proposals(current, asked, given, tried)[:THEORY_PER_ROUND]
         except UserError as e:
             if out.rounds == 0:
                 out.unreachable = str(e)
-        proposed = proposed[:THEORY_PER_ROUND]
-        if explore and len(proposed) < PER_ROUND:
-            if singles is None or learn:
-                singles = _singles(current, lits, given)
-            pool = _candidates(given, singles, out.tried)
-            theirs = {p.chosen for _, p in proposed}
-            proposed += [("search", p) for p in pool if p.chosen not in tried
-                         and p.chosen not in theirs][:PER_ROUND - len(proposed)]
-        if not proposed:
+        searching = explore and len(theirs) < PER_ROUND
+        if searching and (singles is None or learn):
+            singles = ranked_singles(current, lits, given)
+
+        def following(k: int) -> tuple[str, Plan] | None:
+            """The round's k-th plan: the theory's, then the search's most
+            promising untried one, ranked with every pour seen so far."""
+            if k < len(theirs):
+                return "theory", theirs[k]
+            if not searching or k >= PER_ROUND:
+                return None
+            p = next_plan(given, singles, lits, seen, out.tried, {q.chosen for q in theirs})
+            return None if p is None else ("search", p)
+
+        step = following(0)
+        if step is None:
             break
         out.rounds += 1
         spent = False
-        for origin, p in proposed:
+        k = 0
+        while step is not None:
+            origin, p = step
             if out.pours + verify_pours > budget:
                 spent = True
                 break
@@ -267,6 +273,7 @@ def search(theory: Theory, goals: Sequence[str], given: Sequence[str], simulate:
                           room=budget - out.pours)
             out.tried.append(trial)
             out.pours += len(P)
+            seen.append((P, S))
             if learn:
                 planned.append(planned_rules(len(out.tried) - 1, p.antecedent, P, S, seed))
             if len(out.verified) >= want:
@@ -274,6 +281,8 @@ def search(theory: Theory, goals: Sequence[str], given: Sequence[str], simulate:
             if trial.short:          # no plan could be confirmed now
                 spent = True
                 break
+            k += 1
+            step = following(k)
         if len(out.verified) >= want or spent:
             break
         if learn:
@@ -301,56 +310,6 @@ def _proposals(theory: Theory, goals: list[str], given: list[str], tried: set) -
     theory cannot reach the goals)."""
     check_goals(goals, theory)
     return plan(theory, goals, given, PER_ROUND - 1, exclude=sorted(tried))
-
-
-def _singles(theory: Theory, goals: list[str], given: list[str]
-             ) -> list[tuple[float, tuple[str, ...]]]:
-    """Every manner proposition alone with the given context, each valid,
-    with its promise (the theory's likelihoods of the goals multiplied; an
-    undecided goal one half); most promising first, then in the
-    vocabulary's order."""
-    from pantarhei.bridge.reasoning.scenes import violations
-
-    vocab = load_vocabulary()
-    taken = {vocab.propositions[p].dimension for p in given}
-    manners = [p for p, x in vocab.propositions.items()
-               if vocab.dimensions[x.dimension].role == "manner" and x.dimension not in taken]
-    singles = [(p,) for p in manners if not violations([*given, p])]
-    scored = sorted((-_promise(theory, goals, given, c), i, c) for i, c in enumerate(singles))
-    return [(-s, c) for s, _, c in scored]
-
-
-def _promise(theory: Theory, goals: list[str], given: list[str], chosen: tuple[str, ...]) -> float:
-    """The theory's likelihoods of the goals given the context and `chosen`,
-    multiplied (an undecided goal one half)."""
-    from pantarhei.bridge.reasoning.answers import what_happens
-
-    said = {a.expectation: a.likelihood for a in what_happens(theory, [*given, *chosen])}
-    s = 1.0
-    for g in goals:
-        negated = g.startswith("neg(")
-        like = said.get(complement(g) if negated else g)
-        s *= 0.5 if like is None else (1 - like if negated else like)
-    return s
-
-
-def _candidates(given: list[str], singles: list[tuple[float, tuple[str, ...]]],
-                tried: Sequence[Trial]) -> list[Plan]:
-    """The singles (_singles), then the valid pairs of the PAIRED best: a
-    single tried counts by the share of its pours that met every goal, one
-    not tried by its promise; the pairs of the best first."""
-    from pantarhei.bridge.reasoning.scenes import violations
-
-    seen = {t.plan.chosen: t.rate for t in tried}
-    value = {c: seen.get(c, promise) for promise, c in singles}
-    ranked = sorted(range(len(singles)), key=lambda i: (-value[singles[i][1]], i))
-    top = [singles[i][1][0] for i in ranked[:PAIRED]]
-    rank = {p: k for k, p in enumerate(top)}
-    pairs = sorted((tuple(sorted(pair)) for pair in combinations(top, 2)
-                    if not violations([*given, *pair])),
-                   key=lambda c: (-(value[(c[0],)] + value[(c[1],)]),
-                                  sorted(rank[p] for p in c)))
-    return [Plan(c, tuple(sorted([*given, *c]))) for c in [*(c for _, c in singles), *pairs]]
 
 
 def _why_none(out: Search, min_success: float, n: int) -> str:
