@@ -14,11 +14,12 @@ is verified, the theory learns from the pours of the plans it refuted
 (plan_evidence.py) and the next round plans with what it learned. Beside
 the theory's plans (at most THEORY_PER_ROUND a round), and in their place
 when it proposes nothing new (every plan it has was refuted, or it cannot
-reach the goals at all), plans are searched in the simulation: every
-manner proposition alone with the given context, most promising first (as
-the learned theory predicts the goals), then the pairs of the PAIRED best
-singles (a single tried counts by the share of its pours that met the
-goals). A plan is tried while the budget holds its first batch; one that
+reach the goals at all), plans are searched in the simulation, one at a
+time after the round's theory plans were verified: every manner
+proposition alone with the given context, then the pairs of the best
+singles, in plan_order.py's order (most promising first as the learned
+theory predicts the goals; those it rates alike, as the pours seen so far
+predict them). A plan is tried while the budget holds its first batch; one that
 passes it when the budget cannot hold its confirming batch is not
 verified, and the search ends there. The search ends with a verified plan, when the budget of pours is spent, or
 when no candidate is left; it then says why no plan was found.
