@@ -7,12 +7,15 @@ predicts the goals (its likelihoods multiplied). Where the theory rates
 candidates alike (as it does for every manner when its rules of the
 context outweigh those of the manners), the pours the search has seen
 order them: every plan verified leaves pours drawn for its antecedent
-that met the goals or did not, and those that could have been drawn for
-a candidate (in the support of P(.|context, manner)) estimate its share,
-shrunk towards the share of all the pours seen (the mean of a beta
-posterior). A manner whose range holds the pours that met the goals comes
-first, one whose range holds those that missed last; each candidate
-refuted adds its pours, and the order is drawn again before every plan.
+that met the goals or did not, and those lying where a candidate sets
+its parameters apart from the context estimate its share (the others
+varying as the pours seen vary them), shrunk towards the share of all
+the pours seen by PRIOR pours' weight (the mean of a beta posterior);
+each goal's share, multiplied, orders those alike still. A manner whose
+range holds the pours that met the goals comes first, one whose range
+holds those that missed last, one no pour seen lies in between; each
+candidate refuted adds its pours, and the order is drawn again before
+every plan. Where the theory tells candidates apart, it orders them.
 """
 from __future__ import annotations
 
