@@ -2,7 +2,8 @@
 
 A plan the simulation refutes is evidence: its pours say what happens in
 its scene. The theory learns from them with the learner the exploration
-uses (bridge/learning/learners.py's default, through its interface): for
+recorded in the theory (setting(learner, Name); bridge/learning/learners.py's
+default for a theory that records none, through its interface): for
 each plan tried (its antecedent: the given context and the manners
 chosen) the learner models every pour drawn for it (likelihoods pooled
 over them), and its answer for the antecedent becomes, per expectation, a
@@ -44,19 +45,34 @@ def with_evidence(theory: Theory, pours: Mapping[tuple[str, ...], tuple[np.ndarr
     """`theory` with a planned rule per expectation for each antecedent
     tried (`pours`: antecedent to the parameterizations and scores drawn
     for it, in the order tried; failed pours left out)."""
-    return with_rules(theory, [planned_rules(k, body, P, S, seed)
+    name = theory_learner(theory)
+    return with_rules(theory, [planned_rules(k, body, P, S, seed, name)
                                for k, (body, (P, S)) in enumerate(pours.items())])
+
+
+def theory_learner(theory: Theory) -> str:
+    """The name of the learner `theory` records, the default where it
+    records none; UserError for a learner unknown here."""
+    from pantarhei.bridge.errors import UserError
+    from pantarhei.bridge.learning.learners import LEARNERS, recorded_learner
+    from pantarhei.bridge.theories.loading import settings
+
+    name = recorded_learner(settings(theory))
+    if name not in LEARNERS:
+        raise UserError(f"{theory.source} was learned by the learner '{name}', unknown here "
+                        f"(known: {', '.join(LEARNERS)}): its refuted plans cannot be learned from")
+    return name
 
 
 Planned = tuple[list[Rule], list[tuple[str, str, "str | int"]]]
 
 
 def planned_rules(k: int, body: Sequence[str], P: np.ndarray, S: np.ndarray,
-                  seed: int) -> Planned:
+                  seed: int, learner: str | None = None) -> Planned:
     """The planned rules of the k-th antecedent tried, `body`, learned from
-    the pours drawn for it (P, S), and their provenance; none when no pour
-    finished."""
-    from pantarhei.bridge.evaluation.measures import verdicts
+    the pours drawn for it (P, S) by the learner named `learner` (None:
+    the default), and their provenance; none when no pour finished."""
+    from pantarhei.bridge.verdicts import verdicts
     from pantarhei.bridge.learning import learners
 
     names = load_vocabulary().expectation_names
@@ -70,7 +86,7 @@ def planned_rules(k: int, body: Sequence[str], P: np.ndarray, S: np.ndarray,
         return rules, provenance
     body = tuple(sorted(body))
     Y = verdicts(S)
-    general = learners.learner()(P, S, int(seed), [body])
+    general = learners.learner(learner)(P, S, int(seed), [body])
     for e, (_, like, _) in general.answer(body).items():
         if not np.isfinite(like):
             continue

@@ -221,7 +221,7 @@ def search(theory: Theory, goals: Sequence[str], given: Sequence[str], simulate:
     the theory proposes none; `use_theory` False: search the simulation
     alone (the manners alone and in pairs, ordered as the theory predicts).
     UserError for an unknown goal or invalid context."""
-    from pantarhei.bridge.reasoning.plan_evidence import planned_rules, with_rules
+    from pantarhei.bridge.reasoning.plan_evidence import planned_rules, theory_learner, with_rules
     from pantarhei.bridge.reasoning.plan_numbers import rests_on
     from pantarhei.bridge.reasoning.plan_order import next_plan, ranked_singles
     from pantarhei.bridge.reasoning.scenes import require_valid
@@ -233,6 +233,7 @@ def search(theory: Theory, goals: Sequence[str], given: Sequence[str], simulate:
     # the theory plans for the goals it has rules for among those added
     asked = [g for g in lits if g not in added or _concludes(theory, g)]
     current, planned = theory, []
+    learner = theory_learner(theory)
     singles: list[tuple[float, tuple[str, ...]]] | None = None
     seen: list[tuple[np.ndarray, np.ndarray]] = []       # every pour verified, for plan_order
     while True:
@@ -276,7 +277,8 @@ def search(theory: Theory, goals: Sequence[str], given: Sequence[str], simulate:
             out.pours += len(P)
             seen.append((P, S))
             if learn:
-                planned.append(planned_rules(len(out.tried) - 1, p.antecedent, P, S, seed))
+                planned.append(planned_rules(len(out.tried) - 1, p.antecedent, P, S, seed,
+                                             learner))
             if len(out.verified) >= want:
                 break
             if trial.short:          # no plan could be confirmed now

@@ -35,10 +35,10 @@ class Plan:
 
 def goals_met(scores, goals: list[str]):
     """Per row of oracle scores (n x 9): whether every goal literal was met
-    (an expectation's verdict holds, measures.verdicts, or for neg(E) fails)."""
+    (an expectation's verdict holds, bridge/verdicts.py's verdicts, or for neg(E) fails)."""
     import numpy as np
 
-    from pantarhei.bridge.evaluation.measures import verdicts
+    from pantarhei.bridge.verdicts import verdicts
 
     names = load_vocabulary().expectation_names
     scores = np.atleast_2d(np.asarray(scores, dtype=float))

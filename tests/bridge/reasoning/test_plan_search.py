@@ -189,3 +189,20 @@ def test_a_planned_rule_never_closes_a_superiority_cycle() -> None:
     assert ("p0_liquid_enters_destination", "q") in out.sup
     assert ("t", "p0_liquid_enters_destination") not in out.sup
     assert f"neg({e})" in conclusions(out.with_facts(["pour_far_away"]))["+d"]
+
+
+def test_refuted_plans_are_learned_from_by_the_learner_the_theory_records() -> None:
+    from pantarhei.bridge.errors import UserError
+    from pantarhei.bridge.learning.learners import LEARNERS
+
+    P = sample(["pour_far_away"], 4, 1)
+    known = next(iter(LEARNERS))
+    for name, refused in ((known, False), ("nonesuch", True)):
+        theory = Theory(WISHFUL.facts, WISHFUL.rules, WISHFUL.sup, set(), source="wishful.pl",
+                        settings={"learner": [name]})
+        if refused:
+            with pytest.raises(UserError, match="learner 'nonesuch', unknown here"):
+                with_evidence(theory, {("pour_far_away",): (P, np.zeros((4, 9)))}, seed=1)
+        else:
+            out = with_evidence(theory, {("pour_far_away",): (P, np.zeros((4, 9)))}, seed=1)
+            assert any(r.id.startswith("p0_") for r in out.rules)
