@@ -138,7 +138,7 @@ def test_the_exploration_and_the_evaluation_learn_through_the_registry_s_default
     host = Host()
     host.session = Session(run="", store=None, simulator=None, oracle_version="",
                            params=P, scores=S)
-    layer = host.general({"rules": [], "seed": 3, "explored": [
+    layer = host.general({"rules": [], "seed": 3, "learner": default_learner(), "explored": [
         {"id": f"a{i + 1}", "antecedent": list(b)} for i, b in enumerate(BODIES)]})
     assert [(r["id"], r["confidence_permille"]) for r in layer["rules"]] == \
         [(r.id, int(round(1000 * r.confidence))) for r in alone.rules]
