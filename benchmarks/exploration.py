@@ -62,7 +62,7 @@ def pour_seconds(n: int = 6) -> float:
     """Mean seconds of one PyBullet pour (one worker) of the kind the
     discovering curiosity simulates: one pour each of n uniformly random
     valid antecedents (seeded)."""
-    from pantarhei.bridge.reasoning.scenes import random_antecedents
+    from pantarhei.bridge.reasoning.valid_scenes import random_antecedents
     from pantarhei.oracle.base import make_oracle
     from pantarhei.oracle.generative import sample
     from pantarhei.oracle.physics import PouringOracle

@@ -35,7 +35,7 @@ def _median(f, repeat: int) -> float:
 
 def _scenes(n: int, seed: int) -> list[list[str]]:
     """Random valid scenes: one proposition from each of 6 random dimensions."""
-    from pantarhei.bridge.reasoning.scenes import violations
+    from pantarhei.bridge.reasoning.valid_scenes import violations
 
     vocab = load_vocabulary()
     rng = random.Random(seed)

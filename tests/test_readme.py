@@ -8,7 +8,7 @@ from pathlib import Path
 import pytest
 
 from pantarhei.bridge.commands.vocab import markdown_tables
-from pantarhei.bridge.reasoning.scenes import count_valid
+from pantarhei.bridge.reasoning.valid_scenes import count_valid
 
 ROOT = Path(__file__).resolve().parents[1]
 DOCS = ROOT / "docs"

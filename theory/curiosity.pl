@@ -23,14 +23,14 @@ file, one module per concern, in the order of the loop:
   | loop.pl     | the loop, its budget, and one step of Algorithm 1 |
   | probe.pl    | which candidate a step explores: the probes |
   | interface.pl | the curiosities: the module of each, and their interface |
-  | teach.pl    | the learning curiosity: candidates by what they teach |
+  | learn.pl    | the learning curiosity: candidates by what they teach |
   | discover.pl | the discovering curiosity: candidates by novelty |
   | paper.pl    | the paper's curiosity: modify/5 along the steepest plane |
   | plane_steps.pl | what the discovering and the paper's curiosity share |
   | modify.pl   | direction and modify: new antecedents from a plane |
-  | rules.pl    | qualify, the general layer, and both written as one theory |
+  | writer.pl   | qualify, the general layer, and both written as one theory |
   | oracle_prompt.pl | the oracle at the Prolog prompt: sample, describe, simulate |
-  | bridge.pl   | calling the foreign predicates of Python's oracle |
+  | foreign.pl  | calling the foreign predicates of Python's oracle |
 
 This module loads them and exports what callers outside use (as
 curiosity:explore/1, curiosity:modify/5, ...); each module's plunit tests
@@ -39,7 +39,7 @@ are in the .plt beside it. The modules are named curiosity_<file>
 weights of equation (1), the weighted plane fits, the novelty of
 candidates, the outcome of an antecedent's simulations) is done in Python
 behind foreign predicates of the module =bridge=, which `pantarhei
-explore` and `pantarhei prolog` register (bridge.pl lists them).
+explore` and `pantarhei prolog` register (foreign.pl lists them).
 
 Three curiosities share the loop (option curiosity/1), each a module
 behind the interface of interface.pl, which names them:
@@ -60,22 +60,22 @@ behind the interface of interface.pl, which names them:
   - `learn`: from the ordinary pour (the empty antecedent), explore what
     questions say: antecedents of one proposition more than one explored,
     up to body(N), the one whose pours would change the theory most first
-    (teach.pl); the budget is every pour, pours(N). The theory is one
-    layer: the rules of the explored antecedents (rules.pl).
+    (learn.pl); the budget is every pour, pours(N). The theory is one
+    layer: the rules of the explored antecedents (writer.pl).
 */
 
 :- use_module(default_values).
-:- use_module(curiosity/bridge).
+:- use_module(curiosity/foreign).
 :- use_module(curiosity/settings).
 :- use_module(curiosity/state).
 :- use_module(curiosity/modify).
 :- use_module(curiosity/plane_steps).
 :- use_module(curiosity/discover).
-:- use_module(curiosity/teach).
+:- use_module(curiosity/learn).
 :- use_module(curiosity/paper).
 :- use_module(curiosity/interface).
 :- use_module(curiosity/probe).
 :- use_module(curiosity/loop).
-:- use_module(curiosity/rules).
+:- use_module(curiosity/writer).
 :- use_module(curiosity/run).
 :- use_module(curiosity/oracle_prompt).

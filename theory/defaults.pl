@@ -8,7 +8,7 @@
 % command line (--name, underscores as dashes; --no-name for a flag whose
 % default is true), the checks of explore/1's options
 % (theory/curiosity/settings.pl), the options Python passes to explore/1,
-% the setting/2 facts of the learned theory (theory/curiosity/rules.pl),
+% the setting/2 facts of the learned theory (theory/curiosity/writer.pl),
 % the reference page docs/options.md, and default(Name, Value) for Prolog
 % and Python (theory/default_values.pl, pantarhei.theory.defaults).
 % The rows are in the order of the help and of the setting/2 facts.

@@ -70,7 +70,7 @@ def add_flags(p: argparse.ArgumentParser, every: bool = False) -> None:
 def option_values(args: argparse.Namespace) -> dict:
     """explore's parsed flags as the fields of its ExploreOptions: one per
     flag parsed, a_0 (--initial) checked, and left out when not given."""
-    from pantarhei.bridge.reasoning import scenes as validity
+    from pantarhei.bridge.reasoning import valid_scenes as validity
     from pantarhei.theory.option_table import option_table
 
     values = {o.name: getattr(args, o.name) for o in option_table() if hasattr(args, o.name)}

@@ -61,7 +61,7 @@ def _split(text: str | None) -> list[str]:
 
 def plan(args: argparse.Namespace) -> int:
     from pantarhei.bridge.commands.querying import utf8
-    from pantarhei.bridge.reasoning.scenes import known
+    from pantarhei.bridge.reasoning.valid_scenes import known
     from pantarhei.bridge.theories import loading
 
     goals = _split(utf8(args.goal, "--goal"))

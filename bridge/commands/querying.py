@@ -10,7 +10,7 @@ import sys
 from pantarhei.bridge.commands import options
 from pantarhei.bridge.commands.answering import answer    # demo asks through it too
 from pantarhei.bridge.errors import UserError, safe_line
-from pantarhei.bridge.reasoning.scenes import known
+from pantarhei.bridge.reasoning.valid_scenes import known
 
 #: The engines of `conclusions` (bridge/reasoning/logic.py's ENGINES; named
 #: here so that declaring the flag does not start SWI-Prolog).

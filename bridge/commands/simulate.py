@@ -11,7 +11,7 @@ from typing import Any, Optional
 
 from pantarhei.theory.lexicon import load_vocabulary
 
-from pantarhei.bridge.reasoning import scenes as validity
+from pantarhei.bridge.reasoning import valid_scenes as validity
 from pantarhei.bridge.commands import options
 from pantarhei.bridge.errors import UserError
 

@@ -6,7 +6,7 @@ import json
 
 from pantarhei.theory.lexicon import load_vocabulary
 
-from pantarhei.bridge.reasoning import scenes as validity
+from pantarhei.bridge.reasoning import valid_scenes as validity
 
 
 def register(sub: argparse._SubParsersAction) -> None:

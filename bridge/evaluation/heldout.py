@@ -12,7 +12,7 @@ from pantarhei.bridge.evaluation.measures import accuracy, distinct_behaviours, 
 from pantarhei.bridge.verdicts import verdicts
 from pantarhei.bridge.evaluation.rule_building import consequents, predict, theory_of
 from pantarhei.bridge.exploration.simulation import iteration_seed
-from pantarhei.bridge.reasoning.scenes import random_antecedents, violations
+from pantarhei.bridge.reasoning.valid_scenes import random_antecedents, violations
 from pantarhei.bridge.theories.model import Theory
 from pantarhei.oracle.generative import sample
 from pantarhei.theory.lexicon import load_vocabulary

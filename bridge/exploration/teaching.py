@@ -1,6 +1,6 @@
 """What a batch of pours would teach the theory: the learning curiosity's
 choice of the next antecedent (option curiosity(learn),
-theory/curiosity/teach.pl).
+theory/curiosity/learn.pl).
 
 The learning curiosity explores what questions say: the ordinary pour
 first (the empty antecedent), then antecedents of one proposition more

@@ -18,7 +18,7 @@ of conflicting rules that one scene can hold together gets an explicit
 relation is acyclic and no conflict is left undecided.
 
 `general_layer` gives the general layer to explore/1, which writes it into
-the theory file beside Algorithm 1's rules (theory/curiosity/rules.pl);
+the theory file beside Algorithm 1's rules (theory/curiosity/writer.pl);
 both engines read that file.
 """
 from __future__ import annotations

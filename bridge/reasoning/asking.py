@@ -182,7 +182,7 @@ class Door:
         reply = self._ask(request)
         bad = [r[1:] for r in reply if r[0] == "invalid"]
         if bad:
-            from pantarhei.bridge.reasoning.scenes import Violation, invalid
+            from pantarhei.bridge.reasoning.valid_scenes import Violation, invalid
 
             raise UserError(invalid([Violation(*v) for v in bad]))
         if self.unread:

@@ -46,7 +46,7 @@ def ranked_singles(theory: Theory, goals: list[str], given: list[str]
     with its promise (the theory's likelihoods of the goals multiplied; an
     undecided goal one half); most promising first, then in the
     vocabulary's order."""
-    from pantarhei.bridge.reasoning.scenes import violations
+    from pantarhei.bridge.reasoning.valid_scenes import violations
 
     vocab = load_vocabulary()
     taken = {vocab.propositions[p].dimension for p in given}
@@ -102,7 +102,7 @@ def candidates(given: list[str], singles: list[tuple[float, tuple[str, ...]]],
     best: a single tried counts by the share of its pours that met every
     goal, one not tried by its promise; the pairs of the best first, those
     alike in the order of their chance by the pours `seen` (chances)."""
-    from pantarhei.bridge.reasoning.scenes import violations
+    from pantarhei.bridge.reasoning.valid_scenes import violations
 
     rates = {t.plan.chosen: t.rate for t in tried}
     value = {c: rates.get(c, theirs) for theirs, c in singles}

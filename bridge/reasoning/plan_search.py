@@ -224,7 +224,7 @@ def search(theory: Theory, goals: Sequence[str], given: Sequence[str], simulate:
     from pantarhei.bridge.reasoning.plan_evidence import planned_rules, theory_learner, with_rules
     from pantarhei.bridge.reasoning.plan_numbers import rests_on
     from pantarhei.bridge.reasoning.plan_order import next_plan, ranked_singles
-    from pantarhei.bridge.reasoning.scenes import require_valid
+    from pantarhei.bridge.reasoning.valid_scenes import require_valid
 
     lits, added = pouring_goals(list(goals)) if pour else ([*map(_literal, goals)], [])
     given = require_valid(given) if given else []

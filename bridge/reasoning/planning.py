@@ -21,7 +21,7 @@ from pantarhei.theory import THEORY_DIR, VOCABULARY_FILES
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.theories.model import Theory, complement
 from pantarhei.bridge.reasoning.literals import goal_literal, parse_goal
-from pantarhei.bridge.reasoning.scenes import require_valid
+from pantarhei.bridge.reasoning.valid_scenes import require_valid
 
 ENCODINGS = ("defeasible.lp", "validity.lp", "valid.lp", "plan.lp")
 MAX_STEPS = 64

@@ -153,7 +153,7 @@ def test_same_seed_same_samples_and_order_does_not_matter():
 # -- describe(P): the generative models read backwards --------------------------------------
 
 def random_valid(seed: int) -> tuple[str, ...]:
-    from pantarhei.bridge.reasoning.scenes import random_antecedents
+    from pantarhei.bridge.reasoning.valid_scenes import random_antecedents
 
     return random_antecedents(seed, 1)[0]
 

@@ -36,7 +36,7 @@ batch (loop.pl). Its theory's second layer is the general rules.
 :- use_module(library(pairs)).
 :- use_module('../vocabulary').
 :- use_module('../validity').
-:- use_module(bridge).
+:- use_module(foreign).
 :- use_module(state).
 :- use_module(modify).
 :- use_module(plane_steps).

@@ -28,26 +28,26 @@ predicates (unexported; called as Module:Goal):
     the reply of its simulation. ANew is the new A_new (the candidates),
     Trace the step's line of the trace (what a step records);
   - second_layer(+Explored, +Facts, +Settings, -General): the facts the
-    theory writes after those of Algorithm 1's rules (rules.pl);
-  - theory_layout(-Layout): what its theory file holds (rules.pl writes
+    theory writes after those of Algorithm 1's rules (writer.pl);
+  - theory_layout(-Layout): what its theory file holds (writer.pl writes
     it): _{rules:R, batches:B, header:H, layer_header:L}, R true when
     Algorithm 1's rules of the explored antecedents are written, B true
     when their provenance counts their batches, H the lines the file's
     header ends with (what its setting/2 and other facts mean) and L the
     header of the second layer.
 
-The modules: teach.pl (`learn`), discover.pl (`discover`), paper.pl
+The modules: learn.pl (`learn`), discover.pl (`discover`), paper.pl
 (`paper`).
 */
 
-:- use_module(teach).
+:- use_module(learn).
 :- use_module(discover).
 :- use_module(paper).
 
 %!  curiosity_module(?Curiosity:atom, ?Module:atom) is nondet.
 %
 %   Module implements Curiosity, a value of the option curiosity/1.
-curiosity_module(learn, curiosity_teach).
+curiosity_module(learn, curiosity_learn).
 curiosity_module(discover, curiosity_discover).
 curiosity_module(paper, curiosity_paper).
 

@@ -53,7 +53,7 @@ test(only_the_discovering_curiosity_explores_the_priors) :-
 test(the_loop_names_no_curiosity) :-
     module_property(curiosity_interface, file(Here)),
     file_directory_name(Here, Dir),
-    forall(member(F, ['loop.pl', 'probe.pl', 'run.pl', 'rules.pl']),
+    forall(member(F, ['loop.pl', 'probe.pl', 'run.pl', 'writer.pl']),
            ( directory_file_path(Dir, F, Path),
              read_file_to_string(Path, Text, []),
              forall(member(C, ["== learn", "== discover", "== paper", "\\== discover",

@@ -11,7 +11,7 @@ simulations) and lets the run's curiosity queue what comes next and say
 what the step records (after_batch of interface.pl: the steepest plane
 and modify/5 for the paper's curiosity, paper.pl; the significant planes
 and candidates by novelty for the discovering one, discover.pl; what the
-pours would teach for the learning one, teach.pl). The state (state.pl)
+pours would teach for the learning one, learn.pl). The state (state.pl)
 and a trace of the step are saved after each step
 (exploration_checkpoint).
 
@@ -32,7 +32,7 @@ it leaves the curiosity's course before it as it is without the priors
 */
 
 :- use_module(library(lists)).
-:- use_module(bridge).
+:- use_module(foreign).
 :- use_module(probe).
 :- use_module(interface).
 :- use_module('../learned_rules', [antecedent_id/2]).

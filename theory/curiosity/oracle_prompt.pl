@@ -8,7 +8,7 @@
 Draw parameterizations of an antecedent, describe a parameterization by
 its propositions, and simulate pours, from Prolog (`pantarhei prolog`):
 the same oracle the exploration calls, through the foreign predicates
-oracle_sample, oracle_describe and oracle_simulate (bridge.pl).
+oracle_sample, oracle_describe and oracle_simulate (foreign.pl).
 */
 
 :- use_module(library(apply)).
@@ -17,7 +17,7 @@ oracle_sample, oracle_describe and oracle_simulate (bridge.pl).
 :- use_module(library(pairs)).
 :- use_module('../vocabulary').
 :- use_module('../default_values').
-:- use_module(bridge).
+:- use_module(foreign).
 
 %!  sample(+Props:list, +N:integer, +Seed:integer, -Rows:list) is det.
 %

@@ -14,7 +14,7 @@ of A_new. Nothing is probed; the budget is `budget` explored antecedents
 
 :- use_module(library(apply)).
 :- use_module(library(lists)).
-:- use_module(bridge).
+:- use_module(foreign).
 :- use_module(state).
 :- use_module(modify).
 :- use_module(plane_steps).

@@ -13,7 +13,7 @@ pour (unless general(false)).
 
 :- use_module(library(lists)).
 :- use_module(modify).
-:- use_module(rules).
+:- use_module(writer).
 
 %!  plane_step_trace(+Best:dict, +Followed, +Step, +Cand, +Sim:dict, +Added:list,
 %!                   +Left:integer, -Trace:dict) is det.
@@ -46,7 +46,7 @@ plane_trace(Best, Followed, BestT) :-
 %!  general_layer_if_asked(+Facts:list, +Settings:dict, -General:list) is det.
 %
 %   General is the general layer after Algorithm 1's rules Facts
-%   (general_layer/3 of rules.pl) when Settings ask for it (general(true),
+%   (general_layer/3 of writer.pl) when Settings ask for it (general(true),
 %   the default), else empty.
 general_layer_if_asked(Facts, Settings, General) :-
     (   Settings.general == true

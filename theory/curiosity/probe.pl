@@ -14,7 +14,7 @@ from the budget (loop.pl).
 
 :- use_module(library(apply)).
 :- use_module(library(lists)).
-:- use_module(bridge).
+:- use_module(foreign).
 :- use_module(state).
 :- use_module(interface).
 

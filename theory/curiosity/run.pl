@@ -8,18 +8,18 @@ The entry of Algorithm 1: read the options (settings.pl), begin the
 exploration on the oracle's side, run the loop (loop.pl) from a_0 or the
 saved state (state.pl), qualify the explored antecedents, learn the
 general rules of every pour (unless general(false)) and write the learned
-theory with both layers, once (rules.pl), and end. The second layer is
+theory with both layers, once (writer.pl), and end. The second layer is
 the curiosity's (second_layer of interface.pl): the learning curiosity
 writes one layer, the rules of its explored antecedents. An error ends
 the exploration on the oracle's side too (aborted), then propagates.
 */
 
 :- use_module(library(lists)).
-:- use_module(bridge).
+:- use_module(foreign).
 :- use_module(settings).
 :- use_module(state).
 :- use_module(loop).
-:- use_module(rules).
+:- use_module(writer).
 :- use_module(interface).
 
 %!  explore(+Options:list) is det.

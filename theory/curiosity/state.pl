@@ -16,7 +16,7 @@ parameter and sign (up or down) that produced it; `near` for a neighbour
 of the antecedent explored before it; `jump` for a random valid
 antecedent; more(Id, K) for the K-th more batch of an explored
 antecedent; or again(Id) for another batch of an explored antecedent
-chosen by the learning curiosity (teach.pl). SetAside lists aside(Iteration, Attempt, Props) for each
+chosen by the learning curiosity (learn.pl). SetAside lists aside(Iteration, Attempt, Props) for each
 candidate set aside after its probe (probe.pl). The state is saved after
 every explored antecedent, so an exploration can resume.
 */

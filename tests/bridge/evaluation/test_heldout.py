@@ -14,7 +14,7 @@ from pantarhei.bridge.evaluation.heldout import (heldout_curves, heldout_theorie
                                                  scene_pours, simulated, uniform_scenes)
 from pantarhei.bridge.evaluation.pipeline import Evaluation, Pours
 from pantarhei.bridge.evaluation.rule_building import theory_of
-from pantarhei.bridge.reasoning.scenes import violations
+from pantarhei.bridge.reasoning.valid_scenes import violations
 from pantarhei.oracle.generative import in_support, sample
 from pantarhei.theory.lexicon import load_vocabulary
 

@@ -13,7 +13,7 @@ from pantarhei.bridge.evaluation.heldout import near_antecedents
 from pantarhei.bridge.evaluation.measures import distinct_behaviours
 from pantarhei.bridge.evaluation.plan_checks import goal_sets
 from pantarhei.bridge.evaluation.rule_building import predict, theory_of
-from pantarhei.bridge.reasoning.scenes import violations
+from pantarhei.bridge.reasoning.valid_scenes import violations
 from pantarhei.theory.lexicon import load_vocabulary
 from tests.conftest import run_cli
 

@@ -16,7 +16,7 @@ from pantarhei.bridge.evaluation.plan_checks import (GOAL_SETS, MET, SEARCH_BUDG
                                                      plans_section)
 from pantarhei.bridge.evaluation.rule_building import theory_of
 from pantarhei.bridge.reasoning.plan_numbers import fixed_ranges
-from pantarhei.bridge.reasoning.scenes import violations
+from pantarhei.bridge.reasoning.valid_scenes import violations
 from pantarhei.theory.lexicon import load_vocabulary
 from tests.bridge.evaluation.evaluations import small_evaluation
 

@@ -11,7 +11,7 @@ import numpy as np
 
 from pantarhei.bridge.evaluation import questions as Q
 from pantarhei.bridge.evaluation.questions import KEY_POURS, Question, question_pours, questions
-from pantarhei.bridge.reasoning.scenes import violations
+from pantarhei.bridge.reasoning.valid_scenes import violations
 from pantarhei.oracle.generative import in_support
 
 

@@ -16,7 +16,7 @@ from pantarhei.bridge.exploration import explore_call as exploration, session
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.exploration.explore_call import ExploreOptions
 from pantarhei.bridge.engines.swipl import engine
-from pantarhei.bridge.reasoning.scenes import violations
+from pantarhei.bridge.reasoning.valid_scenes import violations
 from pantarhei.oracle.synthetic import DEPENDS
 from pantarhei.theory.lexicon import load_vocabulary
 from pantarhei.theory import read_facts

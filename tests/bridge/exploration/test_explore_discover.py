@@ -17,7 +17,7 @@ from pantarhei.bridge.exploration.explore_call import ExploreOptions
 from pantarhei.bridge.exploration.novelty import PASS
 from pantarhei.bridge.exploration.session import install
 from pantarhei.bridge.exploration.trace import probe_means
-from pantarhei.bridge.reasoning.scenes import violations
+from pantarhei.bridge.reasoning.valid_scenes import violations
 from pantarhei.oracle.generative import normalise, sample
 from pantarhei.oracle.synthetic import DEPENDS, scores
 from pantarhei.theory.lexicon import load_vocabulary

@@ -10,7 +10,7 @@ import pytest
 
 from pantarhei.bridge.exploration.session import install
 from pantarhei.bridge.engines.swipl import text
-from pantarhei.bridge.reasoning.scenes import violations
+from pantarhei.bridge.reasoning.valid_scenes import violations
 from pantarhei.oracle.generative import distribution
 from pantarhei.theory.lexicon import load_vocabulary
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 from itertools import combinations
 
 from pantarhei.bridge.learning.askable import askable_bodies, together, valid
-from pantarhei.bridge.reasoning.scenes import violations
+from pantarhei.bridge.reasoning.valid_scenes import violations
 from pantarhei.theory.lexicon import load_vocabulary
 
 NAMES = sorted(load_vocabulary().propositions)

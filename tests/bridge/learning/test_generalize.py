@@ -19,7 +19,7 @@ from pantarhei.bridge.learning.gaps import gap_pours
 from pantarhei.bridge.learning.general_rules import General, GeneralRule
 from pantarhei.bridge.learning.generalize import Settings, _doubts, generalize
 from pantarhei.bridge.learning.meaning import Meaning
-from pantarhei.bridge.reasoning.scenes import random_antecedents
+from pantarhei.bridge.reasoning.valid_scenes import random_antecedents
 from pantarhei.oracle.generative import sample, to_dict
 from pantarhei.oracle.simulator import make_simulator
 from pantarhei.theory.lexicon import load_vocabulary

@@ -1,6 +1,6 @@
-:- begin_tests(curiosity_teach).
+:- begin_tests(curiosity_learn).
 
-:- use_module(teach).
+:- use_module(learn).
 :- use_module('../vocabulary').
 :- use_module('../validity').
 
@@ -68,4 +68,4 @@ test(reach_draws_valid_seeded_bodies_of_two_to_most) :-
     \+ memberchk(First, Without),
     reach(7, 12, 1, [], []).
 
-:- end_tests(curiosity_teach).
+:- end_tests(curiosity_learn).

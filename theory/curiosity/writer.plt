@@ -1,6 +1,6 @@
-:- begin_tests(curiosity_rules).
+:- begin_tests(curiosity_writer).
 
-:- use_module(rules).
+:- use_module(writer).
 :- use_module('../theory_files').
 
 test(rule_facts_and_theory_file, [setup(tmp_file(theory, F)), cleanup(delete_file(F))]) :-
@@ -29,7 +29,7 @@ test(explored_antecedents_written_and_read, [setup(tmp_file(theory, F)), cleanup
                        support:8, kept:7, confidence_permille:875, antecedent:a1}],
               explored:[_{id:a1, body:[], held:[[no_spill, 7, 8]]},
                         _{id:a2, body:[pour_low, light_liquid], held:[[no_spill, 1, 4]]}]},
-    once(curiosity_rules:layer_facts(Reply, General)),
+    once(curiosity_writer:layer_facts(Reply, General)),
     write_theory(F, _{oracle:synthetic, seed:1}, _{header:[], layer_header:["% the layer"]},
                  [], General),
     read_file_to_string(F, Text, []),
@@ -39,7 +39,7 @@ test(explored_antecedents_written_and_read, [setup(tmp_file(theory, F)), cleanup
     Xs == [held(a1, no_spill, 7, 8), explored(a2, pour_low), explored(a2, light_liquid),
            held(a2, no_spill, 1, 4)],
     % a reply without them (the other curiosities' general layer) writes none
-    once(curiosity_rules:layer_facts(Reply.put(explored, []), G0)),
+    once(curiosity_writer:layer_facts(Reply.put(explored, []), G0)),
     \+ memberchk(held(_, _, _, _), G0).
 
-:- end_tests(curiosity_rules).
+:- end_tests(curiosity_writer).

@@ -1,6 +1,6 @@
-:- begin_tests(curiosity_bridge).
+:- begin_tests(curiosity_foreign).
 
-:- use_module(bridge).
+:- use_module(foreign).
 
 % Stand-ins for foreign predicates, written in Prolog with known replies:
 % the protocol of call_bridge/3 is the same whoever answers.
@@ -26,4 +26,4 @@ test(string_value) :-
     string_value(abc, S1), S1 == "abc",
     string_value("abc", S2), S2 == "abc".
 
-:- end_tests(curiosity_bridge).
+:- end_tests(curiosity_foreign).

@@ -1,4 +1,4 @@
-:- module(curiosity_teach,
+:- module(curiosity_learn,
           [ teach_queue/7,            % +Explored, +Id, +Props, +Rest, +Settings, -Added, -Queue
             children/4,               % +Props, +Most, +Exclude, -New
             reach/5                   % +Seed, +N, +Most, +Exclude, -Bodies
@@ -36,13 +36,13 @@ explored antecedents.
 :- use_module(library(random)).
 :- use_module('../vocabulary').
 :- use_module('../validity').
-:- use_module(bridge).
+:- use_module(foreign).
 :- use_module(state).
-:- use_module(rules).
+:- use_module(writer).
 
 % The interface of interface.pl: the budget is every pour, pours(N);
 % nothing is probed; the theory is one layer, the rules of the explored
-% antecedents (learned_layer/3 of rules.pl).
+% antecedents (learned_layer/3 of writer.pl).
 
 budget(Settings, Pours) :-
     Pours = Settings.pours.

@@ -1,4 +1,4 @@
-:- module(curiosity_rules,
+:- module(curiosity_writer,
           [ learned/7,                % +Explored, +SetAside, +Settings, +Layout, +Stop, +Left, -Facts
             rule_facts/3,             % +Explored, +Qualified, -Facts
             general_layer/3,          % +Facts, +Settings, -General
@@ -19,7 +19,7 @@ headers) is its theory_layout of interface.pl.
 
 :- use_module(library(apply)).
 :- use_module(library(lists)).
-:- use_module(bridge).
+:- use_module(foreign).
 :- use_module(state).
 :- use_module(settings).
 :- use_module('../learned_rules', [rule_id/3, antecedent_id/2]).

@@ -1,4 +1,4 @@
-:- module(curiosity_bridge,
+:- module(curiosity_foreign,
           [ call_bridge/3,            % +Name, +Request, -Reply
             string_value/2            % +Value, -String
           ]).

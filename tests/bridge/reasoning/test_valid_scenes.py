@@ -1,4 +1,4 @@
-"""Validity of antecedents (bridge/reasoning/scenes.py): Prolog and clingo
+"""Validity of antecedents (bridge/reasoning/valid_scenes.py): Prolog and clingo
 agree, and the count is right. The `check`, `count` and `vocab` commands
 that report them: tests/bridge/commands/test_vocab.py."""
 from __future__ import annotations
@@ -6,7 +6,7 @@ from __future__ import annotations
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from pantarhei.bridge.reasoning import scenes as validity
+from pantarhei.bridge.reasoning import valid_scenes as validity
 from pantarhei.bridge.engines.asp import solve
 from pantarhei.bridge.engines.swipl import engine
 from pantarhei.theory.lexicon import load_vocabulary
