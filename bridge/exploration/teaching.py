@@ -258,22 +258,22 @@ def shown_new(new: np.ndarray, P: np.ndarray, S: np.ndarray,
     What B's pours keep failing to show, B is no longer credited with: a
     region whose pours stay unpredictable keeps a high modelled newness
     although its pours show behaviours seen already."""
+    from pantarhei.bridge.learning.meaning import held_in_support
     from pantarhei.bridge.verdicts import verdicts
 
     if not len(P):
         return new
-    V = verdicts(S)
-    _, inverse = np.unique(V, axis=0, return_inverse=True)
+    _, inverse = np.unique(verdicts(S), axis=0, return_inverse=True)
     inverse = np.asarray(inverse).ravel()
     earlier = np.zeros(inverse.max() + 1, dtype=int)
-    fresh = np.zeros(len(V), dtype=bool)
+    fresh = np.zeros((len(P), 1), dtype=int)
     for i, v in enumerate(inverse):
         fresh[i] = earlier[v] < 2
         earlier[v] += 1
     out = np.array(new, dtype=float)
     for j, b in enumerate(bodies):
-        held = in_support(P, b)
-        out[j] = (model_pours * out[j] + fresh[held].sum()) / (model_pours + held.sum())
+        shown, n = held_in_support(P, fresh, b)
+        out[j] = (model_pours * out[j] + shown[0]) / (model_pours + n)
     return out
 
 
