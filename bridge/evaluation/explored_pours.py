@@ -71,13 +71,15 @@ def read_learned(path: Path | str) -> Learned:
     """Read a learned theory and its trace; UserError if the file lacks
     the exploration's settings (a hand-written theory, say) or its trace
     cannot be read."""
+    from pantarhei.bridge.learning.learners import known_recorded_learner
+
     path = Path(path)
     theory = loading.load([path])
     settings = loading.settings(theory)
     if not settings.get("seed") or not settings.get("batch"):
         raise UserError(f"{path}: not a theory written by `pantarhei explore` "
                         f"(no setting/2 facts to evaluate it by)")
-    _require_known_learner(path, settings)
+    known_recorded_learner(settings, path)
     trace = trace_path(path)
     try:
         lines = [json.loads(line) for line in trace.read_text(encoding="utf-8").splitlines()]
@@ -91,16 +93,6 @@ def read_learned(path: Path | str) -> Learned:
         raise UserError(f"{trace}: the explored antecedents are not a1..a{len(order)}")
     return Learned(path, theory, settings, [bodies[a] for a in order],
                    [order.index(a) for a in ids], draws)
-
-
-def _require_known_learner(path: Path, settings: dict[str, list[Any]]) -> None:
-    """UserError when the theory names a learner this version does not know."""
-    from pantarhei.bridge.learning.learners import learner, recorded_learner
-
-    try:
-        learner(recorded_learner(settings))
-    except ValueError as e:
-        raise UserError(f"{path}: setting(learner, _): {e}") from None
 
 
 def exploration_draws(learned: Learned) -> tuple[np.ndarray, list[tuple[str, ...]], np.ndarray,

@@ -44,7 +44,6 @@ LEARNERS: Mapping[str, Learner] = MappingProxyType({
 })
 
 
-
 def default_learner() -> str:
     """The name of the learner used where none is chosen: the default of
     the `learner` row of the option table (theory/defaults.pl)."""
@@ -69,3 +68,18 @@ def recorded_learner(settings: Mapping[str, Sequence]) -> str:
     recorded, or by hand)."""
     values = settings.get("learner") or ()
     return str(values[0]) if values else default_learner()
+
+
+def known_recorded_learner(settings: Mapping[str, Sequence], source: object) -> str:
+    """recorded_learner, refused in one line (UserError naming `source`,
+    the theory) when this version knows no learner of that name: what
+    learns a theory's pours again (the evaluation, plan's refuted plans)
+    reads its learner here."""
+    from pantarhei.bridge.errors import UserError
+
+    name = recorded_learner(settings)
+    try:
+        learner(name)
+    except ValueError as e:
+        raise UserError(f"{source}: setting(learner, _): {e}") from None
+    return name

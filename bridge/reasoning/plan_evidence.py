@@ -53,15 +53,10 @@ def with_evidence(theory: Theory, pours: Mapping[tuple[str, ...], tuple[np.ndarr
 def theory_learner(theory: Theory) -> str:
     """The name of the learner `theory` records, the default where it
     records none; UserError for a learner unknown here."""
-    from pantarhei.bridge.errors import UserError
-    from pantarhei.bridge.learning.learners import LEARNERS, recorded_learner
+    from pantarhei.bridge.learning.learners import known_recorded_learner
     from pantarhei.bridge.theories.loading import settings
 
-    name = recorded_learner(settings(theory))
-    if name not in LEARNERS:
-        raise UserError(f"{theory.source} was learned by the learner '{name}', unknown here "
-                        f"(known: {', '.join(LEARNERS)}): its refuted plans cannot be learned from")
-    return name
+    return known_recorded_learner(settings(theory), theory.source)
 
 
 Planned = tuple[list[Rule], list[tuple[str, str, "str | int"]]]

@@ -201,7 +201,7 @@ def test_refuted_plans_are_learned_from_by_the_learner_the_theory_records() -> N
         theory = Theory(WISHFUL.facts, WISHFUL.rules, WISHFUL.sup, set(), source="wishful.pl",
                         settings={"learner": [name]})
         if refused:
-            with pytest.raises(UserError, match="learner 'nonesuch', unknown here"):
+            with pytest.raises(UserError, match=r"wishful\.pl: setting\(learner, _\): unknown learner 'nonesuch'"):
                 with_evidence(theory, {("pour_far_away",): (P, np.zeros((4, 9)))}, seed=1)
         else:
             out = with_evidence(theory, {("pour_far_away",): (P, np.zeros((4, 9)))}, seed=1)
