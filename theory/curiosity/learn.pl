@@ -22,9 +22,11 @@ After each batch every candidate, the new ones, those already in A_new
 and every explored antecedent (for another batch, again(Id)), is valued by
 what its pours would teach the theory (exploration_teach,
 bridge/exploration/teaching.py): how far its answer would move from the
-one the theory gives it now, how uncertain its likelihoods still are, how
-unsure the model of every pour is about the very pours of its next batch,
-and the chance that they show a behaviour no pour has shown yet.
+one the theory gives it now, how uncertain its likelihoods still are (a
+pair of one pose, liquid or bowl, which may interact, so before it has
+pours), how unsure the model of every pour is about the very pours of its
+next batch, and the chance that they show a behaviour no pour has shown
+yet, as learning progress (less where its pours have shown nothing new).
 A_new keeps the `queue` most valuable, the most valuable first; the
 candidates a step values are so at most `queue`, the new children and the
 explored antecedents.
