@@ -32,6 +32,11 @@ and the model's verdict for the union is not the higher ranked part's, it
 adds a rule with the model's likelihood: a rule wherever the pours
 support one. These rules come after the contrasts, within
 `rules_per_expectation`, the most conflicting pair first.
+
+Where the pours contradict an answer (`_exceptions`). A body with
+`doubt_support` pours of its own or more that the rules answer in another
+band than its own likelihood says gets a rule of its own,
+beyond `rules_per_expectation`: a rule wherever the pours support one.
 """
 from __future__ import annotations
 
@@ -140,6 +145,7 @@ def _generalize(P: np.ndarray, S: np.ndarray, settings: Settings,
     for k, e in enumerate(vocab.expectation_names):
         rules = _Contrasts(e, bodies, T[:, k], settings).learn()
         rules += _doubts(rules, k, meaning, P, settings)
+        rules += _exceptions(rules, bodies, T[:, k], P, settings)
         out.rules.extend(_with_evidence(r, P, Y[:, k]) for r in rules)
     for e in vocab.expectation_names:
         out.sup.extend(_superiority(out.of(e)))
@@ -281,6 +287,41 @@ def _doubts(rules: list[GeneralRule], k: int, meaning: Meaning, P: np.ndarray,
         rule = GeneralRule(f"g{len(rules) + len(out)}_{rules[0].expectation}", union,
                            rules[0].expectation, holds, 0, 0, p if holds else 1 - p, 0)
         out.append(replace(rule, level=_level(union, holds, rules + out)))
+    return out
+
+
+def _exceptions(rules: list[GeneralRule], bodies: Sequence[tuple[str, ...]], target: np.ndarray,
+                P: np.ndarray, s: Settings) -> list[GeneralRule]:
+    """The rules for bodies whose own pours contradict the answer: a
+    body with at least `doubt_support` pours of its own in its support,
+    which the rules so far answer in another band (holds, uncertain,
+    fails) than its own likelihood (`target`, its pours counted), gets a rule with that
+    likelihood, beyond `rules_per_expectation`: the cap keeps the theory
+    readable, not wrong where its pours say otherwise. Smaller bodies
+    first (a proposition's rule may answer its pairs); each rule decides
+    the bodies that hold it before the next is weighed."""
+    from pantarhei.bridge.learning.general_rules import deciding
+
+    if not s.doubt_support:
+        return []
+    out: list[GeneralRule] = []
+    order = sorted(range(len(bodies)), key=lambda i: (len(bodies[i]), bodies[i]))
+    for i in order:
+        b = bodies[i]
+        if not b or any(tuple(sorted(r.body)) == b for r in rules + out):
+            continue
+        t = float(target[i])
+        j = deciding(rules + out, set(b))
+        if j is None:
+            continue
+        answered = (rules + out)[j].likelihood
+        if (s.verdict(answered) == s.verdict(t)
+                or int(in_support(P, b).sum()) < s.doubt_support):
+            continue
+        holds = t >= 0.5
+        rule = GeneralRule(f"g{len(rules) + len(out)}_{rules[0].expectation}", b,
+                           rules[0].expectation, holds, 0, 0, t if holds else 1 - t, 0)
+        out.append(replace(rule, level=_level(b, holds, rules + out)))
     return out
 
 

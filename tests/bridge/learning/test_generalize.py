@@ -274,3 +274,24 @@ def test_two_sure_rules_that_conflict_say_what_the_pours_of_both_show_or_maybe()
 
 def _index(name: str) -> int:
     return [p.name for p in load_vocabulary().parameters].index(name)
+
+
+def test_pours_that_contradict_an_answer_get_a_rule_beyond_the_cap():
+    """With room for the default alone, a light liquid poured far away
+    (explored, all of its pours spill) would be answered by the default's
+    sure `no spill`; its own pours contradict it, so it gets a rule of its
+    own, with its likelihood, beyond `rules_per_expectation`, and a body
+    without pours of its own gets none."""
+    pair = ("light_liquid", "pour_far_away")
+    P, S = pours(light_and_far, 2, [pair] * 2)
+    one = Settings(seed=3, draws=24, rules_per_expectation=1)
+    g = generalize(P, S, one, [(), pair, ("pour_centred", "pour_high")])
+    rules = {r.body: r for r in g.of(E)}
+    assert set(rules) == {(), pair}
+    assert rules[()].holds and not rules[pair].holds and rules[pair].likelihood < 0.2
+    assert g.decide(set(pair))[E][0] == FAILS
+    # with doubt_support 0 the cap holds, and the default answers the pair wrong
+    capped = generalize(P, S, Settings(seed=3, draws=24, rules_per_expectation=1,
+                                       doubt_support=0), [(), pair])
+    assert [r.body for r in capped.of(E)] == [()]
+    assert capped.decide(set(pair))[E][0] == HOLDS
