@@ -1,11 +1,12 @@
-"""Questions as people type them, held out (benchmarks/heldout_questions.txt:
-written by a writer who had not seen the vocabulary, annotated afterwards,
-never tuned on): of the questions the vocabulary can express, the share
-read as meant (the scene, and the expectations asked or wanted where the
-reader hears them); the misreads (a question answered as another scene,
-or one the vocabulary cannot express answered at all); the silent drops
-(a word of a question answered neither read, said back, shown as ignored
-nor a word of its frame); and the refusals, each one line.
+"""Questions as people type them, held out (benchmarks/heldout_questions*.txt,
+each written by a writer who had not seen the vocabulary, annotated
+afterwards, never tuned on), per file and pooled: of the questions the
+vocabulary can express, the share read as meant (the scene, and the
+expectations asked or wanted where the reader hears them); the misreads (a
+question answered as another scene, or one the vocabulary cannot express
+answered at all); the silent drops (a word of a question answered neither
+read, said back, shown as ignored nor a word of its frame); and the
+refusals, each one line.
 
 Against an older reader (one without `read_question`), the scene alone is
 compared and silent drops are not counted: it does not say what it read.
@@ -19,13 +20,16 @@ from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning import reading
 from pantarhei.bridge.reasoning.words import FILLERS
 
-QUESTIONS = Path(__file__).with_name("heldout_questions.txt")
+
+def question_files() -> list[Path]:
+    """The held-out question files, each written and annotated apart."""
+    return sorted(Path(__file__).parent.glob("heldout_questions*.txt"))
 
 
-def annotated() -> list[tuple[str, dict[str, str] | None]]:
+def annotated(path: Path) -> list[tuple[str, dict[str, str] | None]]:
     """(question, what it should be read as: "scene", "asked", "goals"; None: cannot be said)."""
     out = []
-    for line in QUESTIONS.read_text(encoding="utf-8").splitlines():
+    for line in path.read_text(encoding="utf-8").splitlines():
         if not line.strip() or line.startswith("#"):
             continue
         question, meant = line.split("\t")
@@ -46,13 +50,13 @@ def _lost(question: str, heard) -> list[str]:
     return [w for w in re.findall(r"[a-z]+", said) if w not in words]
 
 
-def measure() -> dict:
+def measure(path: Path) -> dict:
     full = hasattr(reading, "read_question")
     counts = {"questions": 0, "expressible": 0, "read as meant": 0, "refused though expressible": 0,
               "misread": 0, "silent drops": 0 if full else None, "refused in one line": 0,
               "refused": 0, "asked heard wrong": 0 if full else None}
     wrong: list[str] = []
-    for question, meant in annotated():
+    for question, meant in annotated(path):
         counts["questions"] += 1
         counts["expressible"] += meant is not None
         try:
@@ -88,11 +92,26 @@ def measure() -> dict:
     return {**counts, "wrong": wrong}
 
 
+def pooled(measures: list[dict]) -> dict:
+    """The counts of several files' measures added up (a count not kept stays None)."""
+    keys = [k for k in measures[0] if k != "wrong"]
+    return {k: None if measures[0][k] is None else sum(m[k] for m in measures) for k in keys}
+
+
 def main() -> None:
-    m = measure()
+    measures = []
+    for path in question_files():
+        measures.append(measure(path))
+        report(f"held-out questions typed by a writer who had not seen the vocabulary "
+               f"({path.name})", measures[-1])
+    if len(measures) > 1:
+        report("all held-out questions, pooled", {**pooled(measures), "wrong": []})
+
+
+def report(title: str, m: dict) -> None:
+    """Print one measure's figures under `title`, then what it got wrong."""
     share = m["read as meant"] / m["expressible"] if m["expressible"] else 0.0
-    print(f"held-out questions typed by a writer who had not seen the vocabulary: {m['questions']}, "
-          f"{m['expressible']} expressible")
+    print(f"{title}: {m['questions']}, {m['expressible']} expressible")
     print(f"  read as meant:               {m['read as meant']} of {m['expressible']} "
           f"({100 * share:.0f}%; target at least 90%)")
     print(f"  refused though expressible:  {m['refused though expressible']}")
