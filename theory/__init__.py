@@ -6,40 +6,22 @@ files (`read_facts`).
 """
 from __future__ import annotations
 
-from collections import defaultdict
 from functools import lru_cache
 from pathlib import Path
 from types import MappingProxyType
-from typing import Iterable, Mapping, Union
+from typing import Mapping, Union
 
-# The error of a malformed theory file and the messages of its checks are
-# its reader's (which imports nothing of this package, so that the two
-# make no import cycle).
-from pantarhei.bridge.theories.facts import (CHECK_MESSAGES, TheoryFileError,  # noqa: F401
-                                             check_message)
-
-#: The folder that holds the theory files.
-THEORY_DIR = Path(__file__).resolve().parent
-#: The vocabulary fact files, read by SWI-Prolog and by clingo alike.
-VOCABULARY_FILES = tuple(THEORY_DIR / "vocabulary" / f"{name}.pl"
-                         for name in ("parameters", "propositions", "expectations", "constraints"))
-
-#: The file that loads every Prolog module of the theory (and the shipped
-#: theory) into a plain SWI-Prolog: the one list of the Prolog modules.
-PROLOG_ENTRY = THEORY_DIR / "pantarhei.pl"
+# The error of a malformed theory file, the messages of its checks and the
+# reading of its facts are its reader's (which imports nothing of this
+# package, so that the two make no import cycle); where the files are is
+# theory/locations.py's, which the option table reads too (the
+# table imports nothing of this package).
+from pantarhei.bridge.theories.facts import (TheoryFileError, check_message,  # noqa: F401
+                                             read_facts)
+from pantarhei.theory.locations import (CHECK_MESSAGES_FILE, DEFAULTS_FILE,  # noqa: F401
+                                        PROLOG_ENTRY, THEORY_DIR, VOCABULARY_FILES)
 
 Value = Union[int, str, tuple]
-
-
-#: The project's defaults (exploration settings, a_0, where the learned
-#: theory and the store go), read by Prolog and Python alike.
-DEFAULTS_FILE = THEORY_DIR / "defaults.pl"
-
-
-#: The messages of the checks of a theory file that both readers make
-#: (`check_message`, the reader's; SWI-Prolog's check_message/3 of
-#: theory_files.pl).
-CHECK_MESSAGES_FILE = THEORY_DIR / CHECK_MESSAGES
 
 
 def default_theory() -> Path:
@@ -56,6 +38,10 @@ def defaults() -> Mapping[str, object]:
     float), the defaults of the option table (`option/5`, as
     pantarhei.theory.option_table reads them), and `initial`, the tuple of
     default_initial/1 propositions in file order."""
+    # The option table imports nothing of this package (it reads the file
+    # that locations.py names); it is imported here, when first asked, and
+    # not as the package loads, so that `python -m
+    # pantarhei.theory.option_table` runs that module once.
     from pantarhei.theory.option_table import option_table
 
     facts = read_facts([DEFAULTS_FILE])
@@ -95,23 +81,3 @@ def clingo_module():
     except ImportError:
         raise MissingEngine(CLINGO_MISSING) from None
     return clingo
-
-
-def read_facts(paths: Iterable[Path | str]) -> dict[str, list[tuple]]:
-    """The ground facts of theory files: predicate name -> argument tuples.
-
-    Atoms and quoted text both come back as `str`, integers as `int`, and
-    compound terms as tuples `(name, arg, ...)`. Facts keep file order.
-    Read by the one Python reader of theory files
-    (bridge/theories/facts.py, which refuses what SWI-Prolog's
-    theory_files.pl refuses, with the same `file:line: what`).
-    """
-    from pantarhei.bridge.theories.facts import read
-
-    facts: dict[str, list[tuple]] = defaultdict(list)
-    for path in paths:
-        for f in read(path):
-            facts[f.name].append(tuple(f.args))
-    return dict(facts)
-
-

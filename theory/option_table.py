@@ -14,7 +14,8 @@ from dataclasses import dataclass
 from functools import lru_cache
 from typing import Any
 
-from pantarhei.theory import DEFAULTS_FILE, THEORY_DIR, read_facts
+from pantarhei.bridge.theories.facts import read_facts
+from pantarhei.theory.locations import DEFAULTS_FILE, THEORY_DIR
 
 #: The reference page the table gives (`options_page`).
 OPTIONS_PAGE = THEORY_DIR.parent / "docs" / "options.md"

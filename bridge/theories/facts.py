@@ -20,11 +20,12 @@ from __future__ import annotations
 
 import gc
 import re
+from collections import defaultdict
 from contextlib import contextmanager
 from functools import lru_cache
 from pathlib import Path
 from types import MappingProxyType
-from typing import Mapping, NamedTuple
+from typing import Iterable, Mapping, NamedTuple
 
 
 class TheoryFileError(ValueError):
@@ -150,6 +151,20 @@ def read(path: Path | str) -> list[Fact]:
     except OSError as e:
         raise TheoryFileError(f"{path}: cannot be read ({e.strerror})") from None
     return parse(data, str(path))
+
+
+def read_facts(paths: Iterable[Path | str]) -> dict[str, list[tuple]]:
+    """The ground facts of theory files: predicate name -> argument tuples.
+
+    Atoms and quoted text both come back as `str`, integers as `int`, and
+    compound terms as tuples `(name, arg, ...)`. Facts keep file order.
+    This reader refuses what SWI-Prolog's theory_files.pl refuses, with
+    the same `file:line: what` (pantarhei.theory names it too)."""
+    facts: dict[str, list[tuple]] = defaultdict(list)
+    for path in paths:
+        for f in read(path):
+            facts[f.name].append(tuple(f.args))
+    return dict(facts)
 
 
 def check_bytes(data: bytes, source: str, first_line: int = 1) -> str:
