@@ -65,24 +65,24 @@ NUDGE_MM = 0.01
 
 def fidelity(P: np.ndarray) -> None:
     from pantarhei.bridge.verdicts import verdicts
-    from pantarhei.oracle import physics
+    from pantarhei.oracle.fidelity import CHOSEN_FIDELITY, DEFAULT_FIDELITY
     from pantarhei.theory import defaults
     from pantarhei.theory.lexicon import load_vocabulary
 
     n = P.size // P.shape[1] * 9
     print(f"fidelity: {len(P)} parameterizations, {n} verdicts (score > {defaults()['verdict_threshold']:g})")
-    S0, t0, _ = run_inline(P, physics.DEFAULT_FIDELITY)
+    S0, t0, _ = run_inline(P, DEFAULT_FIDELITY)
     nudged = P.copy()
     nudged[:, 0] += NUDGE_MM
-    Sn, _, _ = run_inline(nudged, physics.DEFAULT_FIDELITY)
+    Sn, _, _ = run_inline(nudged, DEFAULT_FIDELITY)
     stable = verdicts(Sn) == verdicts(S0)
     print(f"  {'settings':<62} {'median s':>8} {'total s':>8} {'speed-up':>8} "
           f"{'agree':>12} {'of stable':>10}")
-    print(f"  {'PyBullet defaults: ' + physics.DEFAULT_FIDELITY.describe():<62} "
+    print(f"  {'PyBullet defaults: ' + DEFAULT_FIDELITY.describe():<62} "
           f"{statistics.median(t0):8.3f} {sum(t0):8.1f} {1:8.1f}x {'-':>12} {'-':>10}")
     print(f"  {f'  the same, start_x nudged by {NUDGE_MM:g} mm (noise floor)':<62} {'':8} {'':8} {'':8} "
           f"{int(stable.sum()):4d}/{n} {stable.mean():4.0%} {'-':>10}")
-    c = physics.CHOSEN_FIDELITY
+    c = CHOSEN_FIDELITY
     candidates = [("chosen: " + c.describe(), c),
                   ("  but 240 Hz", replace(c, rate_hz=240)),
                   ("  but 120 Hz", replace(c, rate_hz=120)),

@@ -7,8 +7,9 @@ from typing import Any, Optional
 
 import numpy as np
 
-from . import physics, scoring
+from . import scoring
 from pantarhei.oracle.base import Outcome
+from pantarhei.oracle.fidelity import CHOSEN_FIDELITY, Fidelity
 from pantarhei.oracle.stepping import run
 from pantarhei.oracle.world import World
 
@@ -24,7 +25,7 @@ BYTES_A_PIXEL = 4
 
 
 def frames_at_most(p: np.ndarray, fps: int,
-                   fidelity: physics.Fidelity = physics.CHOSEN_FIDELITY) -> int:
+                   fidelity: Fidelity = CHOSEN_FIDELITY) -> int:
     """The most frames a render of the pour `p` draws at `fps` frames per
     simulated second: its approach, retreat and longest settling, the first
     and the last frame."""
@@ -36,7 +37,7 @@ def frames_at_most(p: np.ndarray, fps: int,
 
 
 def frame_bytes(p: np.ndarray, fps: int, width: int, height: int,
-                fidelity: physics.Fidelity = physics.CHOSEN_FIDELITY) -> int:
+                fidelity: Fidelity = CHOSEN_FIDELITY) -> int:
     """The memory the frames of a render take at most (bytes)."""
     return frames_at_most(p, fps, fidelity) * width * height * BYTES_A_PIXEL
 
@@ -52,7 +53,7 @@ def _camera(client: Any, width: int, height: int) -> tuple[list[float], list[flo
 
 def render(p: np.ndarray, out: str | Path, frames_dir: Optional[str | Path] = None, fps: int = 15,
            width: int = 480, height: int = 360,
-           fidelity: physics.Fidelity = physics.CHOSEN_FIDELITY) -> tuple[int, Outcome]:
+           fidelity: Fidelity = CHOSEN_FIDELITY) -> tuple[int, Outcome]:
     """Simulate the pour `p` and write it as a GIF to `out` (and PNGs to
     `frames_dir`); the number of frames and the outcome."""
     from PIL import Image

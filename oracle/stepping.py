@@ -7,18 +7,16 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, Callable, Optional
+from typing import Any, Callable, Optional
 
 import numpy as np
 
 from pantarhei.oracle import scoring
+from pantarhei.oracle.fidelity import Fidelity
 from pantarhei.oracle.rotations import tilt_deg, to_local
 from pantarhei.oracle.scene import MM
 from pantarhei.oracle.world import Pour, World, build, drive
 from pantarhei.theory.lexicon import load_vocabulary
-
-if TYPE_CHECKING:
-    from pantarhei.oracle.physics import Fidelity
 
 #: Record fields that measure the machine, not the pour.
 TIMING_FIELDS = ("step_seconds", "seconds")

@@ -10,15 +10,13 @@ import os
 import sys
 from contextlib import contextmanager
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Iterator
+from typing import Any, Iterator
 
 import numpy as np
 
+from pantarhei.oracle.fidelity import Fidelity
 from pantarhei.oracle.rotations import qmul, quat, slerp, smoothstep
 from pantarhei.oracle.scene import MM, Geometry, bowl_shape, geometry, packing
-
-if TYPE_CHECKING:
-    from pantarhei.oracle.physics import Fidelity
 
 GRAVITY = 9.81
 

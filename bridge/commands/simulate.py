@@ -286,7 +286,7 @@ def _same_file(a: Path, b: Path) -> bool:
 
 def render(args: argparse.Namespace) -> int:
     from pantarhei.bridge.files import require_writable_file
-    from pantarhei.oracle.physics import FIDELITIES
+    from pantarhei.oracle.fidelity import FIDELITIES
     from pantarhei.oracle.render import (FRAME_BYTES_AT_MOST, frame_bytes, frames_at_most,
                                          render as draw)
 

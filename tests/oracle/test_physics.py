@@ -8,7 +8,8 @@ import pytest
 
 from pantarhei.oracle import baseline
 from pantarhei.oracle.base import make_oracle
-from pantarhei.oracle.physics import CHOSEN_FIDELITY, PouringOracle
+from pantarhei.oracle.fidelity import CHOSEN_FIDELITY
+from pantarhei.oracle.physics import PouringOracle
 from pantarhei.oracle.result_keys import key, oracle_tag
 from pantarhei.oracle.simulator import make_simulator
 from pantarhei.oracle.stepping import TIMING_FIELDS

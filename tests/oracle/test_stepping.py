@@ -8,7 +8,7 @@ from dataclasses import replace
 import pytest
 
 from pantarhei.oracle import scoring
-from pantarhei.oracle.physics import CHOSEN_FIDELITY
+from pantarhei.oracle.fidelity import CHOSEN_FIDELITY
 from pantarhei.oracle.stepping import TIMING_FIELDS, run
 
 from .pours import pour

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from pantarhei.oracle.physics import CHOSEN_FIDELITY
+from pantarhei.oracle.fidelity import CHOSEN_FIDELITY
 from pantarhei.oracle.rotations import tilt_deg
 from pantarhei.oracle.scene import MM
 from pantarhei.oracle.world import Pour, build, drive
