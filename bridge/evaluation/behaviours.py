@@ -9,8 +9,9 @@ from pathlib import Path
 
 from pantarhei.oracle.generative import sample
 
+from pantarhei.bridge.evaluation.figures import Evaluation
+from pantarhei.bridge.evaluation.inputs import Inputs, Simulations, tell
 from pantarhei.bridge.evaluation.map_elites import behaviours_seen, map_elites
-from pantarhei.bridge.evaluation.pipeline import Evaluation, Inputs, Simulations, tell
 from pantarhei.bridge.evaluation.plots import plot_behaviours
 from pantarhei.bridge.exploration.simulation import iteration_seed
 

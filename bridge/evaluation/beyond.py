@@ -12,8 +12,9 @@ from typing import Any, Callable
 
 import numpy as np
 
+from pantarhei.bridge.evaluation.figures import Evaluation
 from pantarhei.bridge.evaluation.formats import num, pct
-from pantarhei.bridge.evaluation.pipeline import Evaluation, Inputs
+from pantarhei.bridge.evaluation.inputs import Inputs
 from pantarhei.bridge.evaluation.question_sets import (interaction_questions, keyed,
                                                        random_scenes)
 from pantarhei.bridge.evaluation.rule_building import answer_matrix

@@ -14,11 +14,12 @@ import numpy as np
 
 from pantarhei.theory.lexicon import load_vocabulary
 
+from pantarhei.bridge.evaluation.figures import Evaluation
 from pantarhei.bridge.evaluation.formats import num, pct
+from pantarhei.bridge.evaluation.inputs import Inputs
 from pantarhei.bridge.evaluation.measures import (accuracy, contrast_keys, defaults_only, question_key,
                                                   question_measures, question_shares)
 from pantarhei.bridge.verdicts import verdicts
-from pantarhei.bridge.evaluation.pipeline import Evaluation, Inputs
 from pantarhei.bridge.evaluation.questions import question_pours, questions
 from pantarhei.bridge.evaluation.rule_building import answer_matrix, predict
 from pantarhei.bridge.theories.model import Theory
@@ -58,7 +59,7 @@ class _Keys:
 
 def general_stage(ev: Evaluation, inputs: Inputs) -> None:
     """The general theory's stage of `pantarhei evaluate` (`general_theories`
-    of the pipeline's `Inputs`): `ev.general`."""
+    of the stage's `Inputs`): `ev.general`."""
     learned = inputs.learned
     general_theories(ev, learned.theory, inputs.methods, inputs.held, inputs.run,
                      inputs.opts.seed, int(learned.setting("seed", inputs.opts.seed)),

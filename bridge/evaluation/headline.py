@@ -4,7 +4,7 @@ with). The rows and their targets are each measure's (registry.py)."""
 from __future__ import annotations
 
 from pantarhei.bridge.evaluation import registry
-from pantarhei.bridge.evaluation.pipeline import Evaluation
+from pantarhei.bridge.evaluation.figures import Evaluation
 from pantarhei.bridge.evaluation.registry import Row
 
 

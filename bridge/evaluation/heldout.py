@@ -79,7 +79,7 @@ def near_antecedents(explored: Sequence[Sequence[str]], n: int, seed: int,
 def heldout_curves(ev, methods: dict, held: dict, samples: int, mode: str) -> None:
     """Behaviours, coverage and accuracy of each method's theory after each
     explored antecedent (the curves over the budget): `ev.curves`, and
-    `ev.behaviours` at the end (`methods`: name -> pipeline.Pours)."""
+    `ev.behaviours` at the end (`methods`: name -> inputs.Pours)."""
     R = min(len(m.P) for m in methods.values()) // samples
     out: dict[str, Any] = {"budget": [k * samples for k in range(1, R + 1)]}
     for method, m in methods.items():

@@ -7,9 +7,10 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
+from pantarhei.bridge.evaluation.figures import Evaluation
 from pantarhei.bridge.evaluation.formats import pct
 from pantarhei.bridge.evaluation.heldout import heldout_curves, heldout_theories
-from pantarhei.bridge.evaluation.pipeline import Evaluation, Inputs, tell
+from pantarhei.bridge.evaluation.inputs import Inputs, tell
 from pantarhei.bridge.evaluation.plots import plot_expectations, plot_heldout
 
 #: The theory's accuracy where it decides, and how often it decides, at the least.

@@ -10,8 +10,9 @@ import numpy as np
 
 from pantarhei.oracle.generative import sample
 
+from pantarhei.bridge.evaluation.figures import Evaluation
 from pantarhei.bridge.evaluation.formats import pct
-from pantarhei.bridge.evaluation.pipeline import Evaluation, Inputs
+from pantarhei.bridge.evaluation.inputs import Inputs
 from pantarhei.bridge.exploration.simulation import iteration_seed
 from pantarhei.bridge.reasoning import answers
 from pantarhei.bridge.theories.model import Theory, complement

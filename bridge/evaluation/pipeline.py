@@ -22,18 +22,14 @@ second run simulates nothing:
 This module draws the pours every measure reads (the exploration's and
 random exploration's, and the held-out scenes) and runs each measure's
 stage in the order of `registry.MEASURES`, through one simulator; what the
-theory says of its exploration, and its pours, are explored_pours.py's.
-The numbers go into an `Evaluation` (and JSON);
-`bridge/evaluation/report.py` writes them up.
+theory says of its exploration, and its pours, are explored_pours.py's;
+what a stage is given is inputs.py's (`Inputs`). The numbers go into an
+`Evaluation` (figures.py, and JSON); `bridge/evaluation/report.py` writes
+them up.
 """
 from __future__ import annotations
 
-import sys
-import time
-from dataclasses import dataclass, field, fields
-from functools import cached_property
 from pathlib import Path
-from typing import Any, Sequence
 
 import numpy as np
 
@@ -41,85 +37,17 @@ from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
 
 from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.evaluation import registry
 from pantarhei.bridge.evaluation.explored_pours import Learned, exploration_draws, read_learned
-from pantarhei.bridge.evaluation.heldout import (near_antecedents, random_exploration, scene_pours,
-                                                 simulated, uniform_scenes)
+from pantarhei.bridge.evaluation.figures import Evaluation
+from pantarhei.bridge.evaluation.heldout import random_exploration
+from pantarhei.bridge.evaluation.inputs import EvaluationOptions, Inputs, Pours, Simulations, tell
 from pantarhei.bridge.evaluation.rule_building import consequents, rule_ids
 from pantarhei.bridge.exploration.weights import log_densities, weights
 from pantarhei.bridge.theories.model import Theory
 
+
 # -- the run -------------------------------------------------------------------
-
-@dataclass
-class EvaluationOptions:
-    theory: Path
-    store: Path
-    scenes: int = 150
-    seed: int = 1
-    verify: int = 10
-    paper_samples: int = 20
-    executor: str = field(default_factory=lambda: str(defaults()["executor"]))
-    workers: int | None = None
-    ray_address: str | None = None
-    progress: bool = True
-    #: Also spend the budget on random pours from the prior and on MAP-Elites.
-    baselines: bool = True
-
-
-@dataclass
-class Evaluation:
-    """Every figure of an evaluation, JSON-ready (`as_dict`)."""
-    theory: str
-    oracle: str
-    settings: dict[str, Any]
-    budget: int
-    #: Whether the exploration's pours, simulated here, give the theory's rules.
-    reproduced: bool = True
-    #: Per explored antecedent: the share of its own pours that kept every expectation.
-    kept_all: list[float | None] = field(default_factory=list)
-    heldout: dict[str, Any] = field(default_factory=dict)
-    curves: dict[str, Any] = field(default_factory=dict)
-    behaviours: dict[str, int] = field(default_factory=dict)
-    #: The general theory (both layers as shipped, and the general rules alone)
-    #: against the models, per method's pours: held-out and one-phrase questions.
-    general: dict[str, Any] = field(default_factory=dict)
-    #: The shipped theory on interaction questions and random scenes (beyond.py).
-    beyond: dict[str, Any] = field(default_factory=dict)
-    #: Per search method: distinct nine-verdict vectors among its pours, each seen twice.
-    behaviours_seen: dict[str, int] = field(default_factory=dict)
-    paper_rules: list[dict[str, Any]] = field(default_factory=list)
-    plans: list[dict[str, Any]] = field(default_factory=list)
-    simulations: dict[str, int] = field(default_factory=dict)
-    seconds: dict[str, float] = field(default_factory=dict)
-    #: The figures of a measure without a field of its own, by its name
-    #: (in the JSON after the plans).
-    figures: dict[str, Any] = field(default_factory=dict)
-    #: Not in the JSON: what the report draws from.
-    explored: list[tuple[str, ...]] = field(default_factory=list, repr=False)
-    explored_consequents: np.ndarray | None = field(default=None, repr=False)
-    best_samples: list[np.ndarray] = field(default_factory=list, repr=False)
-
-    def as_dict(self) -> dict[str, Any]:
-        return {**{k: getattr(self, k) for k in
-                   ("theory", "oracle", "settings", "budget", "reproduced", "kept_all", "heldout",
-                    "curves", "behaviours", "behaviours_seen", "general", "beyond", "paper_rules",
-                    "plans")},
-                **self.figures, "simulations": self.simulations, "seconds": self.seconds}
-
-    @classmethod
-    def from_dict(cls, d: dict[str, Any]) -> Evaluation:
-        """An evaluation from its `as_dict`."""
-        own = {f.name for f in fields(cls)}
-        return cls(**{k: v for k, v in d.items() if k in own},
-                   figures={k: v for k, v in d.items() if k not in own})
-
-    @property
-    def plan_rate(self) -> float | None:
-        """The share of the plans' pours that met their goals (None: none simulated)."""
-        met = sum(p["met"] for p in self.plans if "met" in p)
-        done = sum(p["simulated"] for p in self.plans if "simulated" in p)
-        return met / done if done else None
-
 
 def _shown(path: Path) -> str:
     """A path as the report shows it: relative to here when inside it."""
@@ -129,91 +57,9 @@ def _shown(path: Path) -> str:
         return str(path)
 
 
-def tell(text: str) -> None:
-    """Tell the user, on stderr, what the evaluation is doing."""
-    print(f"pantarhei evaluate: {text}", file=sys.stderr, flush=True)
-
-
-class Simulations:
-    """Every pour of an evaluation goes through one simulator (and so one
-    store); each call is a stage whose pours and seconds are recorded."""
-
-    def __init__(self, sim: Any, ev: Evaluation, progress: bool) -> None:
-        self.sim, self.ev, self.progress = sim, ev, progress
-        self.width = len(load_vocabulary().expectations)
-
-    def __call__(self, label: str, P: np.ndarray, say: bool = True) -> np.ndarray:
-        """Simulate P as (part of) the stage `label`: its pours and seconds add up."""
-        t = time.monotonic()
-        sims, secs = self.ev.simulations, self.ev.seconds
-        if not len(P):
-            sims.setdefault(label, 0)
-            secs.setdefault(label, 0.0)
-            return np.empty((0, self.width))
-        if say:
-            tell(f"{label}: {len(P)} pours")
-        S = np.asarray(self.sim.simulate(P, progress=self.progress and say), dtype=float)
-        sims[label] = sims.get(label, 0) + int(self.sim.last_simulated)
-        secs[label] = round(secs.get(label, 0.0) + time.monotonic() - t, 1)
-        return S
-
-
-@dataclass
-class Pours:
-    """The pours of one way of choosing antecedents: the antecedents in
-    order, their pours in that order, and their scores. `ends[k]` is the
-    number of pours of the first k + 1 antecedents (`samples` each unless
-    an antecedent had more batches)."""
-    antecedents: list[tuple[str, ...]]
-    P: np.ndarray
-    S: np.ndarray
-    ends: list[int] = field(default_factory=list)
-    #: The antecedent each pour was drawn from (a candidate set aside after
-    #: its probe is none of `antecedents`).
-    drawn: list[tuple[str, ...]] = field(default_factory=list)
-    #: The index in `antecedents` of the antecedent each pour belongs to
-    #: (-1 for a probe of a candidate set aside): the exploration's.
-    of: np.ndarray | None = None
-
-    def __post_init__(self) -> None:
-        if not self.ends and self.antecedents:
-            each = len(self.P) // len(self.antecedents)
-            self.ends = [each * (k + 1) for k in range(len(self.antecedents))]
-        if not self.drawn:
-            self.drawn = [a for a, n in zip(self.antecedents, np.diff([0, *self.ends]))
-                          for _ in range(int(n))]
-
-    def upto(self, pours: int) -> int:
-        """How many antecedents have all their pours among the first `pours`."""
-        return sum(1 for e in self.ends if e <= pours)
-
-
-@dataclass
-class Inputs:
-    """What every measure's stage is given: the options, the learned
-    theory, the simulator (`run`), the pours of each way of choosing
-    antecedents at the same budget (`methods`: curiosity's, then random
-    exploration's; `samples` pours a batch) and the held-out scenes
-    (`held`, simulated when a stage first asks for them)."""
-    opts: EvaluationOptions
-    learned: Learned
-    run: Simulations
-    methods: dict[str, Pours]
-    samples: int
-
-    @cached_property
-    def held(self) -> dict[str, tuple[list[tuple[str, ...]], np.ndarray]]:
-        """The three sets of held-out scenes (`heldout_scenes`)."""
-        return heldout_scenes(self.opts, self.methods["curiosity"].antecedents,
-                              self.methods["random"].antecedents, self.run)
-
-
 def evaluate(opts: EvaluationOptions) -> Evaluation:
     """The pours every measure reads, then every measure's stage in
     order, through one simulator."""
-    # the measures' modules read this module's types: imported when run
-    from pantarhei.bridge.evaluation import registry
-
     learned = read_learned(opts.theory)
     if opts.scenes < 1 or opts.verify < 0 or opts.paper_samples < 0:
         raise UserError("--scenes must be at least 1, --verify and --paper-samples at least 0")
@@ -267,23 +113,6 @@ def random_exploration_pours(seed: int, count: int, samples: int, run: Simulatio
     antecedents, `samples` pours each."""
     ants, P = random_exploration(seed, count, samples)
     return Pours(ants, P, run("random exploration", P))
-
-
-def heldout_scenes(opts: EvaluationOptions, explored: Sequence[tuple[str, ...]],
-                   random_ants: Sequence[tuple[str, ...]], run: Simulations
-                   ) -> dict[str, tuple[list[tuple[str, ...]], np.ndarray]]:
-    """Three sets of held-out scenes, one pour each, never explored by
-    either method: per set, the scenes whose pour did not fail and their
-    verdicts."""
-    known = set(explored) | set(random_ants)
-    uniform = uniform_scenes(opts.seed, opts.scenes, known)
-    near = near_antecedents(explored, opts.scenes, opts.seed, known | set(uniform))
-    near_random = near_antecedents(random_ants, opts.scenes, opts.seed + 1,
-                                   known | set(uniform) | set(near))
-    held = {}
-    for name, scenes in {"uniform": uniform, "near": near, "near_random": near_random}.items():
-        held[name] = simulated(scenes, run(f"held-out ({name})", scene_pours(scenes, opts.seed)))
-    return held
 
 
 def _differing_layer(learned: Learned, P: np.ndarray, S: np.ndarray) -> list[str]:

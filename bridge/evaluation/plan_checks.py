@@ -21,8 +21,9 @@ import numpy as np
 from pantarhei.oracle.generative import sample
 
 from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.evaluation.figures import Evaluation
 from pantarhei.bridge.evaluation.formats import pct
-from pantarhei.bridge.evaluation.pipeline import Evaluation, Inputs
+from pantarhei.bridge.evaluation.inputs import Inputs
 from pantarhei.bridge.exploration.simulation import iteration_seed
 from pantarhei.bridge.theories.model import Theory
 

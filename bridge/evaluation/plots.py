@@ -6,7 +6,7 @@ from pathlib import Path
 
 import numpy as np
 
-from pantarhei.bridge.evaluation.pipeline import Evaluation
+from pantarhei.bridge.evaluation.figures import Evaluation
 from pantarhei.bridge.files import pyplot, save_figure
 
 #: How the report names the held-out sets.

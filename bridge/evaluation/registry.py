@@ -18,7 +18,8 @@ from typing import Callable
 
 from pantarhei.bridge.evaluation import (behaviours, beyond, general_answers, heldout_accuracy,
                                          paper_rules, plan_checks, report_general, rule_table)
-from pantarhei.bridge.evaluation.pipeline import Evaluation, Inputs
+from pantarhei.bridge.evaluation.figures import Evaluation
+from pantarhei.bridge.evaluation.inputs import Inputs
 
 #: A headline row: the measure in words, what was measured, the target, whether it is met.
 Row = tuple[str, str, str, bool]

@@ -16,7 +16,7 @@ import json
 from pathlib import Path
 
 from pantarhei.bridge.evaluation import report_sections as sections
-from pantarhei.bridge.evaluation.pipeline import Evaluation
+from pantarhei.bridge.evaluation.figures import Evaluation
 from pantarhei.bridge.evaluation.registry import report_order
 from pantarhei.bridge.files import write_text
 from pantarhei.oracle.base import REAL_ORACLES

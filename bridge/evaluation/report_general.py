@@ -8,9 +8,9 @@ from pathlib import Path
 
 from pantarhei.theory.lexicon import load_vocabulary
 
+from pantarhei.bridge.evaluation.figures import Evaluation
 from pantarhei.bridge.evaluation.formats import antecedent_words, num, pct
 from pantarhei.bridge.evaluation.measures import question_misses
-from pantarhei.bridge.evaluation.pipeline import Evaluation
 from pantarhei.bridge.learning.general_rules import likelihood
 
 _INTRODUCTION = (

@@ -6,9 +6,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from pantarhei.bridge.evaluation.figures import Evaluation
 from pantarhei.bridge.evaluation.formats import antecedent_words, consequent_words
 from pantarhei.bridge.evaluation.headline import headline_markdown
-from pantarhei.bridge.evaluation.pipeline import Evaluation
 
 
 def opening(ev: Evaluation, command: str) -> list[str]:

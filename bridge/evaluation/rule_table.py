@@ -10,8 +10,9 @@ from pathlib import Path
 import numpy as np
 
 from pantarhei.bridge.verdicts import verdicts
+from pantarhei.bridge.evaluation.figures import Evaluation
 from pantarhei.bridge.evaluation.formats import antecedent_words, consequent_words, pct
-from pantarhei.bridge.evaluation.pipeline import Evaluation, Inputs
+from pantarhei.bridge.evaluation.inputs import Inputs
 
 
 def kept_all_stage(ev: Evaluation, inputs: Inputs) -> None:
