@@ -1,8 +1,10 @@
 """Import cycles, as a static tool sees them: every import of a module
 (at its top, inside a function or under TYPE_CHECKING alike) is an edge of
-the graph of the project's modules. The cycles broken stay broken: the
-learner (generalize) and the model of the pours (meaning), and the theory
-package and the reader of theory files (facts), lie on no cycle together."""
+the graph of the project's modules, and the graph of the whole `pantarhei`
+package has no cycle but the ones named in `KNOWN_CYCLES`. The cycles
+broken stay broken: the learner (generalize) and the model of the pours
+(meaning), and the theory package and the reader of theory files (facts),
+lie on no cycle together."""
 from __future__ import annotations
 
 import ast
@@ -18,6 +20,23 @@ PACKAGES = {"pantarhei.theory": ROOT / "theory", "pantarhei.bridge": ROOT / "bri
 #: Pairs of modules that must not import each other, however indirectly.
 APART = [("pantarhei.bridge.learning.generalize", "pantarhei.bridge.learning.meaning"),
          ("pantarhei.theory", "pantarhei.bridge.theories.facts")]
+
+
+#: Cycles not broken yet, each by the modules on it: a cycle among exactly
+#: these modules (or some of them) is not reported, any other is.
+KNOWN_CYCLES = {
+    # The exploration's session and the steepest-ascent curiosity's
+    # Python side call each other.
+    "session and steepest": {"pantarhei.bridge.exploration.session",
+                             "pantarhei.bridge.exploration.steepest"},
+    # The plan search and the order in which it tries manners.
+    "plan search and its order": {"pantarhei.bridge.reasoning.plan_order",
+                                  "pantarhei.bridge.reasoning.plan_search"},
+    # The reading of questions: words, numbers in words and quantities.
+    "words, numerals and quantities": {f"pantarhei.bridge.reasoning.{m}" for m in
+                                       ("nouns", "numerals", "quantities", "stages",
+                                        "wording", "words")},
+}
 
 
 def module_files(packages: dict[str, Path]) -> dict[str, Path]:
@@ -65,6 +84,71 @@ def reaches(graph: dict[str, set[str]], start: str, goal: str) -> bool:
     return False
 
 
+def cycles(graph: dict[str, set[str]]) -> list[set[str]]:
+    """The strongly connected components of two or more modules: each is
+    the set of modules that lie on a cycle together (Tarjan's algorithm,
+    without recursion)."""
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    on_stack: set[str] = set()
+    out = []
+    for root in sorted(graph):
+        if root in index:
+            continue
+        work = [(root, iter(sorted(graph[root])))]
+        index[root] = low[root] = len(index)
+        stack.append(root)
+        on_stack.add(root)
+        while work:
+            node, edges = work[-1]
+            nxt = next(edges, None)
+            if nxt is not None:
+                if nxt not in index:
+                    index[nxt] = low[nxt] = len(index)
+                    stack.append(nxt)
+                    on_stack.add(nxt)
+                    work.append((nxt, iter(sorted(graph[nxt]))))
+                elif nxt in on_stack:
+                    low[node] = min(low[node], index[nxt])
+                continue
+            work.pop()
+            if work:
+                low[work[-1][0]] = min(low[work[-1][0]], low[node])
+            if low[node] == index[node]:
+                component = set()
+                while True:
+                    m = stack.pop()
+                    on_stack.discard(m)
+                    component.add(m)
+                    if m == node:
+                        break
+                if len(component) > 1:
+                    out.append(component)
+    return out
+
+
+def unknown_cycles(graph: dict[str, set[str]]) -> list[list[str]]:
+    """The cycles of the graph that no entry of KNOWN_CYCLES holds."""
+    return [sorted(c) for c in cycles(graph)
+            if not any(c <= known for known in KNOWN_CYCLES.values())]
+
+
+def test_the_package_has_no_import_cycle_but_the_known_ones():
+    found = unknown_cycles(import_graph(PACKAGES))
+    assert not found, "modules that import each other, however indirectly: " + \
+        "; ".join(", ".join(c) for c in found)
+
+
+@pytest.mark.parametrize("name", sorted(KNOWN_CYCLES))
+def test_a_known_cycle_is_still_one(name):
+    """A known cycle that is broken leaves KNOWN_CYCLES (so that it cannot
+    come back unnoticed)."""
+    graph = import_graph(PACKAGES)
+    assert any(c <= KNOWN_CYCLES[name] for c in cycles(graph)), \
+        f"the cycle '{name}' is broken: take it out of KNOWN_CYCLES"
+
+
 @pytest.mark.parametrize("a, b", APART)
 def test_the_broken_cycles_stay_broken(a, b):
     graph = import_graph(PACKAGES)
@@ -80,3 +164,17 @@ def test_a_cycle_through_a_function_s_import_is_found(tmp_path):
     (pkg / "b.py").write_text("def f():\n    from p import a\n")
     graph = import_graph({"p": pkg})
     assert reaches(graph, "p.a", "p.b") and reaches(graph, "p.b", "p.a")
+
+
+def test_a_new_cycle_is_reported_and_a_chain_is_not(tmp_path):
+    pkg = tmp_path / "p"
+    pkg.mkdir()
+    (pkg / "__init__.py").write_text("")
+    (pkg / "a.py").write_text("from p import b\n")
+    (pkg / "b.py").write_text("import p.c\n")
+    (pkg / "c.py").write_text("")
+    (pkg / "d.py").write_text("from p.a import x\n")
+    assert cycles(import_graph({"p": pkg})) == []
+    (pkg / "c.py").write_text("if False:\n    from p.a import y\n")
+    assert cycles(import_graph({"p": pkg})) == [{"p.a", "p.b", "p.c"}]
+    assert unknown_cycles(import_graph({"p": pkg})) == [["p.a", "p.b", "p.c"]]
