@@ -81,7 +81,7 @@ _HOLDING = {"robot", "arm", "gripper", "hand"}
 _REST = ("at all times|all the time|the whole time|at any point|at any time|throughout|on|onto|over|out|of|in|into|inside|outside|the|a|an|table|floor|counter|worktop|top|"
          "ground|place|everywhere|anywhere|at|all|any|anything|it|its|liquid|water|bowl|cup|glass|"
          "destination|source|target|container|rim|edge|sides?|much|too|even|ever|really|very|"
-         "up|down|off|away|again|then")
+         "up|down|off|away|again|then|across|along|around")
 #: How much of the liquid an outcome is asked of ("does most of it spill"), or its odds ("is
 #: the risk of spilling high"): the outcome's words, not the scene's ("some of it" is no
 #: some_liquid).
@@ -171,6 +171,13 @@ def _around() -> Matcher:
     return Matcher(names("context"))
 
 
+def _state(m: re.Match) -> bool:
+    """Whether an asked clause says how full the source is, not what happens:
+    "the jug is almost empty" (the scene's), not "will it empty"."""
+    verb = next((v for g, v in m.groupdict().items() if g[0] == "v" and v), "")
+    return m.group("aux") in ("is", "are", "was", "were") and verb.startswith("empt")
+
+
 def hear(text: str) -> Heard:
     """The expectations `text` asks about and the goals it says (see the
     module's docstring)."""
@@ -202,7 +209,7 @@ def hear(text: str) -> Heard:
         names, _ = _which(m)
         # "the table is wobbly": the subject before its verb, not the scene's
         before = m.string[:m.start()].split()[-3:] if not subject else []
-        if _acts(subject, names) or _around().spans(before):
+        if _acts(subject, names) or _around().spans(before) or _state(m):
             return m.group(0)
         asked.extend(n for n in names if n not in asked)
         kept = " ".join(subject) if m.group("aux") or m.group("chance") else ""

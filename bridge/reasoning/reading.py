@@ -33,8 +33,9 @@ question in five steps:
    "does it splash?") reads as no propositions: the ordinary pour; a
    question that says nothing of a pour is refused.
 
-Nothing is dropped silently: an everyday word is said back with how it
-was read (`Reading.notes`), any other word read as nothing is in
+A word mistyped is read as the one word it is near (spelling.py: "hihg"
+is high) and said back. Nothing is dropped silently: an everyday word is
+said back with how it was read (`Reading.notes`), any other word read as nothing is in
 `Reading.ignored`, for `ask` to show on its `understood:` line.
 """
 from __future__ import annotations
@@ -49,6 +50,7 @@ from pantarhei.bridge.reasoning.negation import NEGATION_STEMS, covered, scope, 
 from pantarhei.bridge.reasoning.nouns import ARTICLES, BOWL, CONTEXT, OBJECT_STEMS, Nouns, roles
 from pantarhei.bridge.reasoning.outcomes import FOLLOWS, follows, hear
 from pantarhei.bridge.reasoning.quantities import read_numbers
+from pantarhei.bridge.reasoning.spelling import corrected
 from pantarhei.bridge.reasoning.stages import MARKER_STEMS, MOVE, POSE, stages
 from pantarhei.bridge.reasoning.wording import Token, normalised, stem, tokens as words_of
 from pantarhei.bridge.reasoning.suggestions import misspelt
@@ -151,7 +153,7 @@ def read_question(question: str) -> Reading:
     vocab = load_vocabulary()
     props = vocab.propositions
     lex = _lexicon()
-    text = normalised(question)
+    text, typed = corrected(normalised(question))
     outcome = hear(text)
     tokens = read_numbers(words_of(outcome.scene), lex.placeable)
     accepted = _read(tokens, lex)
@@ -209,7 +211,7 @@ def read_question(question: str) -> Reading:
     ignored = [t.raw for i, t in enumerate(tokens) if i not in taken and t.word not in structural
                and t.word not in _SAME]
     heard = [t.raw for t in tokens if t.raw not in ignored or t.said_back]    # said back: heard
-    notes = _notes(tokens)
+    notes = typed + _notes(tokens)
     noted = {t.raw for t in tokens if t.said_back}
     return Reading(tuple(sorted(set(out))), outcome.asked, outcome.goals, notes,
                    tuple(dict.fromkeys(w for w in ignored if w not in noted)),

@@ -15,7 +15,7 @@ from pantarhei.theory.lexicon import load_vocabulary
 def _spelt() -> tuple[str, ...]:
     """The words of four letters or more of the glosses and the phrases."""
     texts = [p.gloss for p in load_vocabulary().propositions.values()] + [
-        " ".join(re.findall(r"[a-z]+", p)) for ps in (*(ps for _, ps in PHRASES), *(s.phrases for s in sections()))
+        " ".join(re.findall(r"[a-z]+", p)) for ps in (*(ps for _, ps, *_ in PHRASES), *(s.phrases for s in sections()))
         for p in ps if not p.startswith("re:")]
     return tuple(sorted({w for t in texts for w in re.findall(r"[a-z]{4,}", t.lower())}))
 

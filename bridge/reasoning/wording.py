@@ -27,6 +27,9 @@ _MINUS = "-\u2212\u2013"
 _CONTRACTED = {"ll": "will", "re": "are", "m": "am", "ve": "have", "d": "would"}
 #: The stage words: an "and" before one starts a new clause ("tilt it and end upright").
 STAGE_WORDS = ("start", "pour", "end", "finally", "final", "approach", "retreat", "then")
+#: The words an "and" before which starts a new clause: the stage words, and a move up or
+#: down, said in its own stage ("pour low and bring it back up afterwards").
+_NEW_CLAUSE = (*STAGE_WORDS, "raise", "lower")
 
 
 def stem(w: str) -> str:
@@ -84,7 +87,7 @@ def tokens(text: str) -> list[Token]:
     out, clause = [], 0
     for k, (word, raw, said) in enumerate(pairs):
         if (not re.match(r"[-a-z0-9_]", word) or word in CLAUSE_ENDS
-                or (word == "and" and k + 1 < len(pairs) and pairs[k + 1][0] in STAGE_WORDS)):
+                or (word == "and" and k + 1 < len(pairs) and pairs[k + 1][0] in _NEW_CLAUSE)):
             clause += 1
             if not re.match(r"[-a-z0-9_]", word):
                 continue

@@ -4,7 +4,8 @@ The vocabulary (theory/vocabulary/propositions.pl) says each proposition
 once, in its own words; people say the same things in others ("a full
 cup", "move in fast", "right it up after pouring"). `PHRASES` rewrites
 such phrases into the vocabulary's words before a question (or a gloss) is
-read: each entry is (the vocabulary's words, the phrases that mean them).
+read: each entry is (the vocabulary's words, the phrases that mean them),
+and what `ask` says back of them where it reads them as nothing.
 A phrase is written in plain words and matches their inflections ("move
 in" matches "moving in"); "[the source|it]" is an optional part, and a
 pattern starting with "re:" is a regular expression. Entries apply in
@@ -48,16 +49,21 @@ _RIM = (r"(?:the )?(?:destination |bowl )?(?:rim|edge|lip|brim|top)\b(?: of (?:t
         r"(?:destination|bowl)\b)?")
 #: Degree words before a comparative: "a bit lower".
 _DEGREE = r"(?:just|only|slightly|barely|a (?:little |tiny )?bit|a little|a tad|somewhat)"
+#: Units of length, as a question writes them after a number.
+_LENGTHS = ("mm", "cm", "m", "inch", "inches", "foot", "feet", "ft", "metre", "metres", "meter",
+            "meters", "centimetre", "centimetres", "centimeter", "centimeters")
 #: Comparatives of the vocabulary's values, said of nothing they are measured from.
 _COMPARATIVES = ("higher|heavier|lighter|faster|quicker|slower|steeper|stickier|runnier|thicker|"
                  "thinner|bouncier|grippier|slipperier|fuller|emptier")
 
-PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
+PHRASES: tuple[tuple, ...] = (
     ("hedge", ("how much", "how many",    # asks, does not say: "how much liquid spills"
                "nearly",                   # a hedge (its stem would be "near")
                r"re:\bbetween(?= -?\d+(?:\.\d+)? and -?\d)")),   # a range: quantities.py's
     ("very", (rf"re:\b(?:super|extremely|incredibly|insanely|ridiculously|awfully|terribly"
               rf"|exceptionally|unusually|crazy|way)(?= (?:{_INTENSIFIED})\b)",)),
+    # a length said "up" is a height above the destination ("hold it 20 cm up")
+    ("above", ("re:(?:" + "|".join(rf"(?<=\d {u} )" for u in _LENGTHS) + r")\bup\b",)),
     # a comparison with the rim is where it puts the source: "higher than the rim" is above it
     # (as "above the bowl": the ordinary pour), "slightly higher than the rim" just above it
     # (low), "lower than the rim" below it; with a number, the number's ("2 cm higher than
@@ -86,6 +92,15 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     # (the everyday word list, everyday.txt, is read here: see rewrites())
     # a bowl full of what is around the pour ("a bowl full of cereal") is not a full bowl
     ("hedge", (r"re:\b(?:full|filled) (?:up )?(?:with|of)(?= (?:the )?context\b)",)),
+    # an empty destination is every pour's; an empty source pours nothing, nor is a bowl
+    # that already holds liquid the vocabulary's: refused (HINTS say why)
+    ("hedge", ("re:" + "|".join(rf"(?<={w} )empty(?= bowl\b)" for w in (
+        "into", "into an", "into the", "into a", "onto", "onto an", "onto the", "onto a")),),
+     "read as nothing: every pour's destination is empty before it"),
+    (UNCLEAR, (r"re:\balready (?:hedge|holds?|contains?|with|full|filled|half)\b",
+               r"re:\bempty\b(?! (?:it|the \w+|a \w+|them|out)\b)",
+               # the source is held throughout: nothing drops it
+               r"re:\b(?:drop(?:s|ped|ping)?|let(?:s|ting)? go of) (?:it|them|the \w+)\b")),
     # poured into a liquid ("milk into the coffee"): the vocabulary's destination is empty
     (UNCLEAR, (r"re:\b(?:into|onto) (?:the |a |hedge |some )?(?:sticky |heavy )?liquid\b(?! particles)",)),
     # poured into the sink, onto the table: a place the vocabulary has no bowl for
@@ -130,12 +145,21 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("pour", (r"re:\bempt(?:y|ies|ied|ying)(?= (?:it|the \w+|a \w+) (?:into|in|onto)\b)",
               "decant", "dump", "free pour")),
     ("retreat ; pour", (rf"re:\bafter pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",)),
+    # "bring it back up", "lift it back down": up and down, in the stage they are said in
+    ("raise", (r"re:\b(?:bring|brings|bringing|brought|lift|lifts|lifted|lifting|mov(?:e|es|ed|ing)"
+               r"|tak(?:e|es|ing)|took|pull(?:s|ed|ing)?)(?: it| the \w+| them)? back up\b",)),
+    ("lower", (r"re:\b(?:bring|brings|bringing|brought|lift|lifts|lifted|lifting|mov(?:e|es|ed|ing)"
+               r"|tak(?:e|es|ing)|took)(?: it| the \w+| them)? back down\b",)),
+    # "once it's poured", "when done": after pouring
+    ("afterwards", (r"re:\b(?:when|once|after) (?:(?:it|you|i|we|they|the \w+) )?(?:(?:is|are|am|has"
+                    r"|have|was|were|been) )*(?:done|finished|poured|emptied|through)\b(?: pour\w*)?",)),
     ("approach ; pour", (rf"re:\bbefore pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",)),
     ("approach", (r"re:\b(?:mov(?:e|es|ed|ing)|bring(?:s|ing)?|brought) (?:it|the \w+) (?:in|over)\b",
                   "before pour", "move to the pour pose", "move into the pour pose",
                   "move in", "come in")),
     ("away from", ("move away from", "pull away from")),    # a direction, not the retreat
     ("retreat", (r"re:\bpull(?:s|ed|ing)? (?:it|the \w+) (?:back|away)\b",
+                 r"re:\bmov(?:e|es|ed|ing) (?:it|the \w+|them) (?:away|back|out)\b(?! from)",
                  "after pour", "afterwards", "move away", "pull away", "pull back",
                  "back off", "withdraw")),
     ("start", ("begin", "at first", "at the start", "initially")),
@@ -145,7 +169,9 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("destination", ("target", "receiving")),
     ("rim", ("edge", "lip", "brim")),
     ("low", (r"re:\b(?:just|right|slightly|barely|a bit|a little) (?:above|over) (?:the )?"
-             r"(?:destination |bowl )?rim\b",)),
+             r"(?:destination |bowl )?rim\b",
+             r"re:\b(?:slightly|barely|a bit|a little|a tad)(?= (?:above|over) (?:the )?(?:destination"
+             r"|bowl|it)\b)")),
     # where the source is
     # (a length before it says how far over: "5 cm over the rim" is above it, quantities.py's)
     ("near the rim", (r"re:\b(?<!cm )(?<!mm )(?<! m )(?<!inch )(?<!inches )(?<!centimetre )"
@@ -167,7 +193,13 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("sideways", ("lateral", "laterally", "sidewise")),
     ("side", ("off to one side", "off to the side", "to one side")),
     # how the source is tilted and moved
-    ("upside down", ("inverted", "upturned", "turned over")),
+    ("upside down", ("inverted", "upturned", "turned over",
+                     r"re:\b(?:turn|flip)(?:s|ed|ing|ped|ping)? (?:it|the \w+|them) over\b")),
+    # tipped out: poured ("tip the milk out into a bowl")
+    ("pour", (r"re:\btip(?:s|ped|ping)?\b(?= (?:(?:it|them|the \w+|a \w+) )?out\b)",)),
+    # tilted all the way: how far, steeply or upside down?
+    (UNCLEAR, (r"re:\ball the way\b(?! (?:over|upside|up|down|in|into|to|from|across|back|around"
+               r"|round|through)\b)",)),
     # tipped all the way over: upside down (the bowl it is said of is nouns.py's to place)
     ("upside down", ("all the way over", "all the way upside down")),
     # "tip the jug upside down": how it is held, as "hold the jug upside down" says
@@ -182,6 +214,8 @@ PHRASES: tuple[tuple[str, tuple[str, ...]], ...] = (
     ("rolled sideways", (r"re:\b(?:tilt|tip|lean)(?:s|ed|ing)?(?: (?:it|the \w+))? sideways\b",)),
     ("tilted away from the destination", ("tilted back", "tilted backwards", "leaning back",
                                           r"re:\btilt(?:s|ed|ing)?(?: it| the \w+)? backwards?\b")),
+    # leaning, angling, inclining the source: tilting it
+    ("tilt", (r"re:\b(?:lean|angle|incline)(?:s|d|ed|ing|t)?\b(?= (?:it|them|the \w+)\b)",)),
     ("slightly tilted", (r"re:\btilt(?:s|ed|ing)?(?: (?:it|the \w+))?(?: only| just)? "
                          r"(?:a (?:little )?bit|a little)\b",)),
     ("slightly", (r"re:\b(?:a (?:little )?bit|a little)(?= (?:tilt|angled|inclined))",)),
@@ -273,6 +307,14 @@ HINTS: tuple[tuple[str, str], ...] = (
                'what happens, or give `pantarhei plan` the outcome wanted and it finds a pour'),
     (r"^from above$|^overhead$|^from the top$",
      'above: how high, or where? say "high above the bowl" or "centred over the bowl"'),
+    (r"^all the way$", 'all the way: tilted how far? say "steeply tilted" (about 90 degrees) or '
+                       '"upside down"'),
+    (r"\bempty$", 'empty: the source holds liquid (say "a little liquid" or "almost empty"), and '
+                   'the destination is empty before every pour ("into an empty bowl")'),
+    (r"^already ", 'the destination is empty before the pour: the vocabulary says nothing of '
+                   'pouring into a bowl that holds liquid'),
+    (r"^(?:drop|let)", 'dropping: the source is held throughout the pour; the vocabulary says '
+                       'nothing of letting it go'),
     (r"^(?:tilt|tilted|tip|tipped|tipping)$", 'tilted how far? say "slightly tilted", "tilted halfway", '
                                   '"steeply tilted" or "upside down"'),
 )
@@ -331,8 +373,8 @@ def rewrites() -> tuple[tuple[re.Pattern | Matcher | Levels | Values | NumberWor
     everyday word list, a number said in words ("two inches": numerals.py),
     then PHRASES; an entry's phrases as one compiled
     pattern, a section of the list as a Matcher."""
-    def compiled(words: str, phrases: tuple[str, ...]):
-        return re.compile("|".join(f"(?:{_pattern(p)})" for p in phrases)), tuple(words.split()), ""
+    def compiled(words: str, phrases: tuple[str, ...], said: str = ""):
+        return re.compile("|".join(f"(?:{_pattern(p)})" for p in phrases)), tuple(words.split()), said
 
     return ((Levels(), (), ""), (Values(), (), ""),
             *((m, tuple(w.split()), said) for m, w, said in _everyday()),

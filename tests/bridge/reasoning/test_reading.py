@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.reasoning.reading import understand
+from pantarhei.bridge.reasoning.reading import read_question, understand
 from pantarhei.theory.lexicon import load_vocabulary
 from tests.conftest import assert_one_line_error, run_cli
 
@@ -295,10 +295,22 @@ def test_ask_says_back_everyday_words_and_shows_what_it_ignored():
 
 
 @pytest.mark.parametrize("question,words", [
-    ("pour from the side, tilded steeply", "did you mean 'tilted' for 'tilded'?"),
-    ("pour a havy liquid from the sde", "did you mean 'heavy' for 'havy', 'side' for 'sde'?"),
+    ("pour from the sde", "did you mean 'side' for 'sde'?"),           # too short to read as side
+    ("pour a havy liquid from the sde", "did you mean 'side' for 'sde'?"),
+    ("pour from the left", '"left"'),        # an English word: never read as "lift"
 ])
 def test_a_misspelt_word_is_refused_with_the_word_it_is_close_to(question, words):
     with pytest.raises(UserError) as e:
         understand(question)
     assert words in str(e.value) and "\n" not in str(e.value)
+
+
+@pytest.mark.parametrize("question,scene,said", [
+    ("pour from the side, tilded steeply", ["pour_steeply_tilted", "pour_to_side"],
+     "tilded: read as tilted"),
+    ("pour a havy liquid from the side", ["heavy_liquid", "pour_to_side"], "havy: read as heavy"),
+    ("pour it verry high", ["pour_very_high"], "verry: read as very"),     # not "jerry"
+])
+def test_a_mistyped_word_near_one_word_is_read_as_it_and_said_back(question, scene, said):
+    r = read_question(question)
+    assert list(r.scene) == scene and said in r.notes

@@ -1,0 +1,101 @@
+"""Words a person mistyped, read as the word meant: "will it spil if I
+pour from hihg up?" is "will it spill if I pour from high up?", and `ask`
+says so ("spil: read as spill").
+
+A word is read as another only when nothing else is near: the reader
+does not know it, an English dictionary does not hold it (pyspellchecker's
+word list, loaded only when a question holds a word the reader does not
+know), and one word the reader reads is one edit away (a letter left
+out, added, changed, or two swapped), or, for a word of six letters or
+more with none one edit away, two edits; where several are, a word that
+says something before a word of the question's frame ("havy": heavy, not
+have), and of those the one far commoner in English than the others
+("verry": very, not jerry). A real word the reader does
+not know ("pour from the left") is never read as one it knows ("lift"),
+and a word near two ("tilr": tilt or tile?) is left as written, for the
+reader to refuse with its "did you mean".
+
+The words the reader reads are those of the vocabulary's glosses, the
+everyday word list (everyday.txt), the phrases of words.py and
+outcomes.py, the units and numbers, and the question's frame (FILLERS).
+"""
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+from pantarhei.bridge.reasoning.everyday import sections
+from pantarhei.bridge.reasoning.negation import NEGATIONS
+from pantarhei.bridge.reasoning.numerals import NUMBER_WORDS
+from pantarhei.bridge.reasoning.outcomes import OUTCOMES
+from pantarhei.bridge.reasoning.properties import LEVELS, NAMES
+from pantarhei.bridge.reasoning.quantities import UNITS
+from pantarhei.bridge.reasoning.stages import MARKERS
+from pantarhei.bridge.reasoning.words import FILLERS, PHRASES
+from pantarhei.theory.lexicon import load_vocabulary
+
+#: The shortest word read as another: "tlt" could be too many things.
+_SHORTEST = 4
+#: The shortest word read as one two edits away.
+_SHORTEST_TWO = 6
+#: How many times more common in English the word read must be than the next one near
+#: ("verry": very, not jerry; "spil": spill, not spilt).
+_COMMONER = 5
+
+
+@lru_cache(maxsize=None)
+def _words() -> tuple[frozenset[str], frozenset[str], frozenset[str]]:
+    """(the whole words the reader reads, the letters of its patterns, the
+    words of a question's frame): the second may hold parts of words
+    ("dribbl" of "dribbl\\w*")."""
+    vocab = load_vocabulary()
+    texts = [*(f"{n.replace('_', ' ')} {p.gloss}" for n, p in vocab.propositions.items()),
+             *(d.gloss for d in vocab.dimensions.values()), *(p.gloss for p in vocab.parameters),
+             *(e.name.replace("_", " ") for e in vocab.expectations),
+             *(p for s in sections() for p in s.phrases), *FILLERS, *NEGATIONS, *MARKERS,
+             *UNITS, *NUMBER_WORDS, *NAMES, *LEVELS,
+             *(p for _, phrases, *_ in PHRASES for p in phrases if not p.startswith("re:"))]
+    patterns = [*(p for _, phrases, *_ in PHRASES for p in phrases if p.startswith("re:")),
+                *(verb for verb, _, _ in OUTCOMES)]
+    whole = {w for t in texts for w in re.findall(r"[a-z]+", t.lower())}
+    parts = {w for t in patterns for w in re.findall(r"[a-z]+", t.lower())}
+    frame = {w for s in sections() if s.words == "hedge" for p in s.phrases for w in p.split()}
+    return frozenset(whole), frozenset(parts), frozenset(frame | FILLERS)
+
+
+@lru_cache(maxsize=None)
+def _dictionary():
+    from spellchecker import SpellChecker       # only for a question with a word not known
+
+    return SpellChecker(language="en", distance=1)
+
+
+def corrected(text: str) -> tuple[str, tuple[str, ...]]:
+    """`text` (normalised: wording.normalised) with its mistyped words read
+    as the words meant, and what is said back of each ("spil: read as
+    spill"); see the module's docstring."""
+    whole, parts, frame = _words()
+    unknown = [w for w in dict.fromkeys(re.findall(r"(?<![\w-])[a-z]+(?![\w-])", text))
+               if len(w) >= _SHORTEST and w not in whole and w not in parts]
+    if not unknown:
+        return text, ()
+    english = _dictionary()
+    meant: dict[str, str] = {}
+    for w in unknown:
+        if w in english:
+            continue
+        targets = {t for t in english.edit_distance_1(w) if t in whole or (t in parts and t in english)}
+        if not targets and len(w) >= _SHORTEST_TWO:
+            targets = {t for t in english.edit_distance_2(w)
+                       if t in whole or (t in parts and t in english)}
+        # a word that says something before one of the question's frame: "havy" is heavy, not have
+        saying = {t for t in targets if t in whole and t not in frame}
+        best = sorted(saying or targets, key=lambda t: (-english.word_frequency[t], t))
+        if len(best) == 1 or (best and english.word_frequency[best[0]]
+                              >= _COMMONER * english.word_frequency[best[1]]):
+            meant[w] = best[0]
+    if not meant:
+        return text, ()
+    text = re.sub(r"(?<![\w-])(?:" + "|".join(map(re.escape, meant)) + r")(?![\w-])",
+                  lambda m: meant[m.group(0)], text)
+    return text, tuple(f"{w}: read as {c}" for w, c in meant.items())
