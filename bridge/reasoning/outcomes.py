@@ -161,6 +161,8 @@ def _acts(subject: list[str], names: tuple[str, ...]) -> bool:
     happens, or what happens to something the scene does not hold ("is
     the table wobbly": everyday.txt's context nouns)."""
     actors = _ACTORS - _HOLDING if names == ("source_clear",) else _ACTORS
+    if names in (_STILL, ("destination_upright",)):      # "will they slide": the bowls
+        actors = actors - {"they"}
     return (bool(actors.intersection(subject)) or (names == _STILL and "source" in subject)
             or bool(_around().spans(subject)))
 

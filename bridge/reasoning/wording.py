@@ -7,7 +7,9 @@ and "minus 10 degrees" are one token "-10"; a hyphen between two numbers
 ("10-20 cm") is a range ("10 to 20"), never a sign. A speed ("0.5 m/s",
 "2 km/h") becomes the number and the unit "speed", a speed of tilting
 ("30 deg/s") the unit "unit_turn_speed": quantities.py refuses both,
-naming what would be read.
+naming what would be read. A number said with tilting and no unit is an
+angle ("tilt it 45"), and one said "tilted back" is negative ("tilted back
+by 20 degrees" is -20 degrees, read with the words "tilted back").
 """
 from __future__ import annotations
 
@@ -23,6 +25,11 @@ CLAUSE_ENDS = {"but", "then", "while", "whereas", "instead", "rather", "except",
 NUMBER = r"-?\d+(?:\.\d+)?"
 #: The minus signs a number may be written with: ASCII, U+2212 and the en dash.
 _MINUS = "-\u2212\u2013"
+#: The first letters of the units a number may be said in (quantities.py's): a number
+#: said with none is an angle when said with tilting.
+_UNIT_WORDS = (r"mm|cm|m|ft|inch\w*|feet|foot|met(?:re|er)\w*|centimet\w*|millimet\w*|deg\w*|s|secs?"
+               r"|second\w*|ms|milli\w*|g|kg|gram\w*|kilo\w*|particle\w*|percent|rad\w*|speed"
+               r"|unit_\w+|%|ml|l|cl|dl|oz|ounce\w*|lit(?:re|er)\w*")
 #: What the contractions other than "n't" and "'s" stand for: "it'll", "I'm".
 _CONTRACTED = {"ll": "will", "re": "are", "m": "am", "ve": "have", "d": "would"}
 #: The stage words: an "and" before one starts a new clause ("tilt it and end upright").
@@ -62,6 +69,13 @@ def normalised(text: str) -> str:
     text = text.replace("%", " percent ")
     text = re.sub(r"'s?\b", "", text)                 # the destination's rim
     text = re.sub(r"(\d)\s*\u00b0", r"\1 degrees ", text)  # 45\u00b0
+    # tilted back by an angle: the angle back, negative ("tilted back 20 degrees")
+    text = re.sub(r"\b((?:tilt|tip|lean)\w*(?: (?:it|the \w+))?) back(?:wards?)?(?: (?:by|at|to|about|around))*"
+                  r" (\d+(?:\.\d+)?)(?= ?(?:degrees?|degs?)?\b(?! ?[-\d]))", r"\1 back at -\2", text)
+    # a number said with tilting and no unit is an angle: "tilt it 45", "tilted to 30 to 40"
+    text = re.sub(r"\b((?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|the \w+))?(?: (?:to|by|at|about|around"
+                  r"|roughly|approximately|some))*) (-?\d+(?:\.\d+)?(?: (?:to|or) -?\d+(?:\.\d+)?)?)"
+                  rf"(?![\w.%\u00b0-]| ?(?:{_UNIT_WORDS}|to|or|and)\b)", r"\1 \2 degrees", text)
     text = re.sub(r"(\d)\s*(?:(?:deg|degs|degrees?)\s*(?:/\s*(?:s|sec)\b|per (?:second|sec)\b)"
                   r"|rpm\b)", r"\1 unit_turn_speed", text)        # 30 deg/s: a speed of tilting
     text = re.sub(r"(\d)\s*(?:(?:k?m|cm|mm)\s*/\s*(?:s|sec|h|hr)|(?:k?m|cm|mm|metres?|meters?|"

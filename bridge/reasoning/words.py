@@ -153,6 +153,8 @@ PHRASES: tuple[tuple, ...] = (
     # "once it's poured", "when done": after pouring
     ("afterwards", (r"re:\b(?:when|once|after) (?:(?:it|you|i|we|they|the \w+) )?(?:(?:is|are|am|has"
                     r"|have|was|were|been) )*(?:done|finished|poured|emptied|through)\b(?: pour\w*)?",)),
+    ("afterwards", (r"re:\bafter(?= *(?:$|[,;.!?]))",)),
+    ("before pour", (r"re:\bbefore(?= *(?:$|[,;.!?]))",)),
     ("approach ; pour", (rf"re:\bbefore pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",)),
     ("approach", (r"re:\b(?:mov(?:e|es|ed|ing)|bring(?:s|ing)?|brought) (?:it|the \w+) (?:in|over)\b",
                   "before pour", "move to the pour pose", "move into the pour pose",
@@ -167,6 +169,11 @@ PHRASES: tuple[tuple, ...] = (
     # where the source is measured from: "offset 10 cm from the centre"
     ("axis", (r"re:\bfrom (?:the )?(?:destination |bowl |cup )?(?:centre|center|middle|axis)\b",)),
     ("destination", ("target", "receiving")),
+    # a length from the rim: inside it or outside? (from the centre is the vocabulary's)
+    (UNCLEAR, ("re:(?:" + "|".join(rf"(?<=\d {u} )" for u in _LENGTHS) + r")(?:away )?from (?:the )?"
+               r"(?:destination |bowl )?(?:rim|edge|lip|brim)\b",
+               # close to the bowl: above it, low, or near its rim?
+               r"re:\b(?:right )?(?:close|next) to (?:the )?(?:destination|bowl)\b(?! rim)")),
     ("rim", ("edge", "lip", "brim")),
     ("low", (r"re:\b(?:just|right|slightly|barely|a bit|a little) (?:above|over) (?:the )?"
              r"(?:destination |bowl )?rim\b",
@@ -213,7 +220,9 @@ PHRASES: tuple[tuple, ...] = (
     ("tilt", (r"re:\btilt(?:s|ed|ing)?(?: it| the \w+)? forwards?\b",)),
     ("rolled sideways", (r"re:\b(?:tilt|tip|lean)(?:s|ed|ing)?(?: (?:it|the \w+))? sideways\b",)),
     ("tilted away from the destination", ("tilted back", "tilted backwards", "leaning back",
-                                          r"re:\btilt(?:s|ed|ing)?(?: it| the \w+)? backwards?\b")),
+                                          r"re:\btilt(?:s|ed|ing)?(?: it| the \w+)? (?:backwards?|back(?= at -\d))\b")),
+    # "give it a little tilt": tilt it a little
+    ("hedge", (r"re:\b(?:give|gives|gave|giving) (?:it|the \w+)(?= (?:a|an) (?:\w+ )?tilt\b)",)),
     # leaning, angling, inclining the source: tilting it
     ("tilt", (r"re:\b(?:lean|angle|incline)(?:s|d|ed|ing|t)?\b(?= (?:it|them|the \w+)\b)",)),
     ("slightly tilted", (r"re:\btilt(?:s|ed|ing)?(?: (?:it|the \w+))?(?: only| just)? "
@@ -313,6 +322,10 @@ HINTS: tuple[tuple[str, str], ...] = (
                    'the destination is empty before every pour ("into an empty bowl")'),
     (r"^already ", 'the destination is empty before the pour: the vocabulary says nothing of '
                    'pouring into a bowl that holds liquid'),
+    (r"\b(?:rim|edge|lip|brim)$", 'measured from the rim: inside it or outside? say how far from '
+                                  'the centre ("5 cm from the centre"), "near the rim" or "to the side"'),
+    (r"\b(?:close|next) to", 'close to the bowl: say "just above the rim", "low above the bowl" or '
+                             '"near the rim"'),
     (r"^(?:drop|let)", 'dropping: the source is held throughout the pour; the vocabulary says '
                        'nothing of letting it go'),
     (r"^(?:tilt|tilted|tip|tipped|tipping)$", 'tilted how far? say "slightly tilted", "tilted halfway", '
