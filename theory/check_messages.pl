@@ -1,5 +1,5 @@
 % The messages of the checks of a theory file that both readers make,
-% written once and read by SWI-Prolog (theory/defeasible.pl:
+% written once and read by SWI-Prolog (theory/fact_reader.pl:
 % check_message/3) and by Python (pantarhei.theory.check_message), so that
 % a bad file gets the same words from either, after its `file:line: `.
 % check_message(Key, Format): Format is format/2's, with ~w alone (each
@@ -7,7 +7,7 @@
 % tests/theory/test_check_messages.py gives both readers the same bad
 % files and compares what they say.
 
-% The language of theory files (theory_files.pl; bridge/theories/facts.py):
+% The language of theory files (fact_reader.pl; bridge/theories/facts.py):
 % what a file holds that is not a ground fact as both engines read it.
 check_message(no_such_file, "no such file").
 % A byte (its code in hexadecimal, 0x and two digits).

@@ -25,5 +25,5 @@ DEFAULTS_FILE = THEORY_DIR / "defaults.pl"
 
 #: The messages of the checks of a theory file that both readers make
 #: (`check_message` of bridge/theories/facts.py; SWI-Prolog's
-#: check_message/3 of theory_files.pl).
+#: check_message/3 of fact_reader.pl).
 CHECK_MESSAGES_FILE = THEORY_DIR / CHECK_MESSAGES

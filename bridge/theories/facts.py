@@ -5,7 +5,7 @@ argument is a name (`[a-z][A-Za-z0-9_]*`), an integer in decimal from
 -2147483648 to 2147483647 (what clingo can hold), quoted text `"..."` (on
 with `\\\\`, `\\"` and `\\n` as its only escapes) or a term of
 those; `%` starts a comment to the end of the line. That is the subset of
-Prolog and ASP that both engines read the same way, and theory/theory_files.pl
+Prolog and ASP that both engines read the same way, and theory/fact_reader.pl
 reads the same language in SWI-Prolog: the two reject the same files with
 the same `file:line: what` (its words theory/check_messages.pl's,
 `check_message`; the line where the offending fact starts, or of
@@ -158,7 +158,7 @@ def read_facts(paths: Iterable[Path | str]) -> dict[str, list[tuple]]:
 
     Atoms and quoted text both come back as `str`, integers as `int`, and
     compound terms as tuples `(name, arg, ...)`. Facts keep file order.
-    This reader refuses what SWI-Prolog's theory_files.pl refuses, with
+    This reader refuses what SWI-Prolog's fact_reader.pl refuses, with
     the same `file:line: what` (pantarhei.theory names it too)."""
     facts: dict[str, list[tuple]] = defaultdict(list)
     for path in paths:
