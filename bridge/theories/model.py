@@ -125,7 +125,7 @@ class Theory:
         """The superiority that specificity gives over learned rules: a rule
         R (learned or written by hand) beats a learned rule S when their
         heads conflict, S's body is strictly inside R's, and sup/2 does not
-        say S beats R (as theory/defeasible.pl)."""
+        say S beats R (as theory/superiority.pl)."""
         explicit = set(self.sup)
         learned = [r for r in self.rules if r.id in self.learned]
         by_head: dict[str, list[Rule]] = {}
