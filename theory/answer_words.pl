@@ -17,6 +17,7 @@ structure (proof_json/2).
 
 :- use_module(defeasible, []).
 :- use_module(queries).
+:- use_module(proof_words, []).
 :- use_module(vocabulary).
 :- use_module(theory_files, [term_text/2]).
 :- use_module(learned_rules, [verdict/3]).
@@ -257,7 +258,7 @@ proof_parts(not_concluded(L, Reasons), not_concluded, L, [reasons-RJs]) :-
     maplist(part_json(reason_text), Reasons, RJs).
 
 % part_json(+Words, +Part, -Dict): a rebuttal or reason: its kind, the
-% rules and literals it names, and its words (queries:Words/2).
+% rules and literals it names, and its words (proof_words:Words/2).
 part_json(Words, Part, _{kind:Kind, rules:Rules, literals:Literals, text:Text}) :-
     Part =.. [Kind|Args],
     partition(is_rule, Args, Rules0, Others),
@@ -265,7 +266,7 @@ part_json(Words, Part, _{kind:Kind, rules:Rules, literals:Literals, text:Text}) 
     findall(T, ( member(A, Others), \+ is_list(A), term_text(A, T) ), Ls0),
     findall(T, ( member(A, Others), is_list(A), member(X, A), term_text(X, T) ), Ls1),
     append(Ls0, Ls1, Literals),
-    (   catch(queries:call(Words, Part, Text0), _, fail) -> Text = Text0 ; term_text(Part, Text) ).
+    (   catch(proof_words:call(Words, Part, Text0), _, fail) -> Text = Text0 ; term_text(Part, Text) ).
 
 is_rule(A) :- atom(A), defeasible:rule(A, _, _).
 
