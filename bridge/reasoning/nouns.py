@@ -58,8 +58,11 @@ def roles(tokens: list[Token], placeable: frozenset[str]) -> dict[int, str]:
             name = t.raw.split()[-1]
             again = tokens[i - 1].word == "the" and sources.get(name)   # "the carton" again
             # a jug, a bottle is poured from, unless poured into ("into a jug")
+            # (the liquid in a jug is held in it: "lots of water in a light jug", not "pour water in")
+            held = (j >= 1 and tokens[j].word == "in" and tokens[j - 1].word == "liquid"
+                    and all(tokens[m].word != "pour" for m in range(max(0, j - 4), j - 1)))
             usual = ((t.raw in _poured_from() or name in _poured_from())
-                     and not (j >= 0 and tokens[j].word in _INTO))
+                     and (held or not (j >= 0 and tokens[j].word in _INTO)))
             roles[i] = ("source" if before in _POURED_FROM or as_source or again or usual
                         else "destination")
             # (a name said of both bowls, "from a cup into a cup", refers to neither again)

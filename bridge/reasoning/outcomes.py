@@ -32,7 +32,8 @@ _ALL_IN = ("liquid_enters_destination",)
 #: (verb phrase, the expectations it speaks of, whether it happening makes them fail)
 OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*) over(?: the (?:rim|edge|top|side)s?)?"
-     r"|(?:bounc|jump|leap|hop)\w* (?:over|out of)|flood\w*", ("liquid_remains_in_destination", "no_spill"), True),
+     r"|(?:bounc|jump|leap|hop)\w* (?:over|out(?: of)?)|flood\w*"
+     r"|(?:go|goes|going|went|get|gets|come|comes|came) over(?= the (?:rim|edge|top|side|brim|lip)s?\b)", ("liquid_remains_in_destination", "no_spill"), True),
     (r"spill\w*|spilt|splash\w*|splatter\w*|slosh\w*|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
      r"|makes? (?:a|any) (?:big |huge |bit of a |real |total )?mess|(?:go|goes|going|went|get|gets) everywhere"
      r"|slop\w*|splat\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)"

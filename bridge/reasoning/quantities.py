@@ -202,9 +202,11 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
         q = Quantity(float(tokens[i].word) * UNITS[unit][1], UNITS[unit][0], said)
         k = _past(tokens, i + 2, 1, _BESIDE)
         if UNITS[unit][0] == "mass" and i + 2 < len(tokens) and tokens[i + 2].word == "of" \
-                and k < len(tokens) and tokens[k].word == "liquid":
+                and any(tokens[m].word == "liquid" for m in range(k, min(k + 2, len(tokens)))):
             raise UserError(_AMOUNT.format(q.text))
-        near = [k for k in range(max(0, i - REACH), min(len(tokens), i + 2 + REACH))
+        # (the words beside a number count for none: "tilt the jug by about 45 degrees")
+        start = max(0, min(i - REACH, _past(tokens, i - 1, -1, _BESIDE) + 1 - REACH))
+        near = [k for k in range(start, min(len(tokens), i + 2 + REACH))
                 if k not in (i, i + 1) and tokens[k].clause == tokens[i].clause
                 and tokens[k].word in cue_of and k not in dropped]
         sides = [_past(tokens, i + 2, 1, _BESIDE), _past(tokens, i - 1, -1, _BESIDE)]

@@ -159,6 +159,8 @@ PHRASES: tuple[tuple, ...] = (
     ("approach", (r"re:\b(?:mov(?:e|es|ed|ing)|bring(?:s|ing)?|brought) (?:it|the \w+) (?:in|over)\b",
                   "before pour", "move to the pour pose", "move into the pour pose",
                   "move in", "come in")),
+    # leaving slowly: the move away
+    ("retreat", (r"re:\bleav(?:e|es|ing)\b(?= (?:very |really )?(?:slow|fast|quick|rapid|gentl)\w*\b)",)),
     ("away from", ("move away from", "pull away from")),    # a direction, not the retreat
     ("retreat", (r"re:\bpull(?:s|ed|ing)? (?:it|the \w+) (?:back|away)\b",
                  r"re:\bmov(?:e|es|ed|ing) (?:it|the \w+|them) (?:away|back|out)\b(?! from)",
@@ -169,6 +171,11 @@ PHRASES: tuple[tuple, ...] = (
     # where the source is measured from: "offset 10 cm from the centre"
     ("axis", (r"re:\bfrom (?:the )?(?:destination |bowl |cup )?(?:centre|center|middle|axis)\b",)),
     ("destination", ("target", "receiving")),
+    # pouring while moving: the vocabulary pours from one pose
+    (UNCLEAR, (r"re:\bwhile (?:(?:it is|it|the \w+ is) )?(?:mov|lift|rais|lower|bring|com|go|pull|walk|retreat|approach)\w*\b",)),
+    # a height above the table: the vocabulary measures from the destination's rim
+    (UNCLEAR, ("re:(?:" + "|".join(rf"(?<=\d {u} )" for u in _LENGTHS) + r")(?:above|over|off|from) "
+               r"(?:the |a )?context\b",)),
     # a length from the rim: inside it or outside? (from the centre is the vocabulary's)
     (UNCLEAR, ("re:(?:" + "|".join(rf"(?<=\d {u} )" for u in _LENGTHS) + r")(?:away )?from (?:the )?"
                r"(?:destination |bowl )?(?:rim|edge|lip|brim)\b",
@@ -228,6 +235,9 @@ PHRASES: tuple[tuple, ...] = (
     ("slightly tilted", (r"re:\btilt(?:s|ed|ing)?(?: (?:it|the \w+))?(?: only| just)? "
                          r"(?:a (?:little )?bit|a little)\b",)),
     ("slightly", (r"re:\b(?:a (?:little )?bit|a little)(?= (?:tilt|angled|inclined))",)),
+    # lifted straight up: raised, not righted
+    ("raise", (r"re:\b(?:lift|lifts|lifted|lifting|rais(?:e|es|ed|ing)|mov(?:e|es|ed|ing)|bring|brings"
+               r"|brought|pull(?:s|ed|ing)?)(?: it| the \w+| them)? straight up\b",)),
     ("upright", ("vertical", "straight up")),
     ("tilted", ("angled", "inclined")),
     ("steeply", ("sharply",)),
@@ -322,7 +332,9 @@ HINTS: tuple[tuple[str, str], ...] = (
                    'the destination is empty before every pour ("into an empty bowl")'),
     (r"^already ", 'the destination is empty before the pour: the vocabulary says nothing of '
                    'pouring into a bowl that holds liquid'),
-    (r"\b(?:rim|edge|lip|brim)$", 'measured from the rim: inside it or outside? say how far from '
+    (r"^while ", 'the vocabulary pours from one pose: say where the source moves before pouring '
+                 '("move in from the side") or after it ("move away fast")'),
+    (r"^(?:away )?from (?:the )?(?:\w+ )?(?:rim|edge|lip|brim)$", 'measured from the rim: inside it or outside? say how far from '
                                   'the centre ("5 cm from the centre"), "near the rim" or "to the side"'),
     (r"\b(?:close|next) to", 'close to the bowl: say "just above the rim", "low above the bowl" or '
                              '"near the rim"'),
@@ -405,6 +417,8 @@ def hints() -> tuple[tuple[str, str], ...]:
         (rf"{onto}(?:{alternation(names('context'))})$",
          'the vocabulary pours into a bowl: say "into a bowl" (where the bowl stands is not '
          'read: "a bowl on the table")'),
+        (rf"^(?:above|over|off|from) (?:the |a |my |our )?(?:{alternation(names('context'))})$",
+         'heights are measured from the rim of the destination: say "12 cm above the rim"'),
         (rf"{onto}(?:{alternation(names('liquid'))})$",
          "the destination is empty before the pour: the vocabulary says nothing of pouring "
          "into a liquid"))
