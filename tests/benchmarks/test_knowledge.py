@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from benchmarks import knowledge
+from benchmarks import knowledge, knowledge_methods
 
 
 def test_the_designed_experiment_asks_each_proposition_in_turn(tmp_path):
@@ -17,7 +17,7 @@ def test_the_designed_experiment_asks_each_proposition_in_turn(tmp_path):
     n = len(load_vocabulary().propositions) + 1
     assert chosen.bodies(100)[0] == () and len(chosen.bodies(100)) == min(100, n)
     rnd = knowledge.random_bodies(101, 30, sim)
-    assert len(rnd.P) == 30 and rnd.bodies(30)[0] == () and len(rnd.bodies(30)) == 30 // knowledge._batch()
+    assert len(rnd.P) == 30 and rnd.bodies(30)[0] == () and len(rnd.bodies(30)) == 30 // knowledge_methods._batch()
 
 
 def test_curves_table_and_plot(tmp_path):
