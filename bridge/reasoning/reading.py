@@ -53,8 +53,8 @@ from pantarhei.bridge.reasoning.quantities import read_numbers
 from pantarhei.bridge.reasoning.spelling import corrected
 from pantarhei.bridge.reasoning.stages import MARKER_STEMS, MOVE, POSE, stages
 from pantarhei.bridge.reasoning.wording import Token, normalised, stem, tokens as words_of
-from pantarhei.bridge.reasoning.suggestions import misspelt
-from pantarhei.bridge.reasoning.words import FILLERS, UNCLEAR, hints as phrasings, rewrites
+from pantarhei.bridge.reasoning.suggestions import hints as phrasings, misspelt
+from pantarhei.bridge.reasoning.words import FILLERS, UNCLEAR, rewrites
 from pantarhei.theory.lexicon import load_vocabulary
 
 #: The most other words between the words of one reading.

@@ -1,12 +1,14 @@
-"""Words a refusal offers for a word it could not read: the vocabulary's
-word it is close to ("tilded": "tilted"), as the glosses, the everyday
-phrases of words.py and the everyday word list (everyday.txt) write them."""
+"""What a refusal offers for a word it could not read: the phrasings that
+would be read (HINTS: "pour slowly" is "move in slowly"), and the
+vocabulary's word it is close to ("tilded": "tilted"), as the glosses, the
+everyday phrases of words.py and the everyday word list (everyday.txt)
+write them."""
 from __future__ import annotations
 
 import re
 from functools import lru_cache
 
-from pantarhei.bridge.reasoning.everyday import sections
+from pantarhei.bridge.reasoning.everyday import alternation, names, sections
 from pantarhei.bridge.reasoning.words import PHRASES
 from pantarhei.theory.lexicon import load_vocabulary
 
@@ -29,3 +31,73 @@ def misspelt(words: list[str]) -> list[str]:
             if w.lower() not in _spelt()}      # a word spelt right is not misspelt
     return [f'did you mean {", ".join(f"{m[0]!r} for {w!r}" for w, m in near.items() if m)}?'
             ] if any(near.values()) else []
+
+
+#: Phrasings that would be read, for words that could not be placed: (pattern
+#: of the words as written, what to say).
+HINTS: tuple[tuple[str, str], ...] = (
+    (r"\bpour\w*\b.*\b(?:slow|fast|quick|gentl|careful|rapid)",
+     'pouring has no speed of its own: say how fast the source moves in or away ("move in '
+     'slowly", "move away fast")'),
+    (r"\b(?:not|without)\b.*\b(?:tilt|tip|lean)",
+     'not tilted much: say "slightly tilted" or "upright"'),
+    (r"\b(?:tilt|tip|rotat|turn|pour)\w* (?:rate|speed|velocity)\b|\b(?:slow|fast|quick|gradual|rapid|steadi)"
+     r"\w* (?:tilt|tip)|\b(?:tilt|tip|rotat|turn)\w*(?: \w+)*? (?:slow|fast|quick|gradual|rapid|steadi)",
+     'the vocabulary has no speed of tilting: it says how far the source is tilted ("tilted '
+     'halfway") and how fast it moves in or away ("move in slowly", "move away fast")'),
+    *((rf"\b(?:{words})\b", f'{said}: than what? the vocabulary says values, not changes: say '
+       + (f'{value}, a number ("10 cm above the rim") or the rim ("{said} than the rim")'
+          if said in ("higher", "lower") else f'{value}'))
+      for words, said, value in (
+          ("higher", "higher", '"pour high"'), ("lower", "lower", '"pour low"'),
+          ("heavier|lighter", "heavier or lighter", '"a heavy bowl" or "a light bowl"'),
+          ("faster|quicker|slower", "faster or slower", '"move in fast" or "move in slowly"'),
+          ("steeper", "steeper", '"steeply tilted"'),
+          ("closer|nearer|further|farther", "closer or further",
+           '"centred over the bowl", "near the rim", "from the side" or "far from the bowl"'),
+          ("stickier|thicker|runnier|thinner", "thicker or thinner",
+           '"a sticky liquid" or "a runny liquid"'),
+          ("bouncier|grippier|slipperier", "bouncier, grippier or slipperier",
+           '"a bouncy bowl", "a grippy bowl" or "a slippery bowl"'),
+          ("fuller|emptier", "fuller or emptier", '"a full cup" or "a little liquid"'))),
+    (r"\b(?:more|less|fewer) than\b|\bat (?:least|most)\b|^(?:past|beyond|up to)$",
+     'a bound leaves the value open: say the value ("tilted halfway", "pour high") or a range '
+     'with both ends ("10 to 20 cm above the rim", "30 to 40 degrees")'),
+    (r"^how ", 'asks for a value: say one ("pour high", "tilted halfway") and `ask` answers '
+               'what happens, or give `pantarhei plan` the outcome wanted and it finds a pour'),
+    (r"^from above$|^overhead$|^from the top$",
+     'above: how high, or where? say "high above the bowl" or "centred over the bowl"'),
+    (r"^all the way$", 'all the way: tilted how far? say "steeply tilted" (about 90 degrees) or '
+                       '"upside down"'),
+    (r"\bempty$", 'empty: the source holds liquid (say "a little liquid" or "almost empty"), and '
+                   'the destination is empty before every pour ("into an empty bowl")'),
+    (r"^already ", 'the destination is empty before the pour: the vocabulary says nothing of '
+                   'pouring into a bowl that holds liquid'),
+    (r"^while ", 'the vocabulary pours from one pose: say where the source moves before pouring '
+                 '("move in from the side") or after it ("move away fast")'),
+    (r"^(?:away )?from (?:the )?(?:\w+ )?(?:rim|edge|lip|brim)$", 'measured from the rim: inside it or outside? say how far from '
+                                  'the centre ("5 cm from the centre"), "near the rim" or "to the side"'),
+    (r"\b(?:close|next) to", 'close to the bowl: say "just above the rim", "low above the bowl" or '
+                             '"near the rim"'),
+    (r"^(?:drop|let)", 'dropping: the source is held throughout the pour; the vocabulary says '
+                       'nothing of letting it go'),
+    (r"^(?:tilt|tilted|tip|tipped|tipping)$", 'tilted how far? say "slightly tilted", "tilted halfway", '
+                                  '"steeply tilted" or "upside down"'),
+)
+
+
+@lru_cache(maxsize=None)
+def hints() -> tuple[tuple[str, str], ...]:
+    """HINTS and, for each word the everyday list refuses, why and what
+    would be read; and for a pour into a place or into a liquid, why not."""
+    onto = r"^(?:\w+ )*(?:on|onto|into|in|over|down) (?:the |a |my |our |some )?"
+    return HINTS + tuple((rf"^(?:{alternation(s.phrases)})$", s.said_back)
+                         for s in sections() if s.words == "unclear") + (
+        (rf"{onto}(?:{alternation(names('context'))})$",
+         'the vocabulary pours into a bowl: say "into a bowl" (where the bowl stands is not '
+         'read: "a bowl on the table")'),
+        (rf"^(?:above|over|off|from) (?:the |a |my |our )?(?:{alternation(names('context'))})$",
+         'heights are measured from the rim of the destination: say "12 cm above the rim"'),
+        (rf"{onto}(?:{alternation(names('liquid'))})$",
+         "the destination is empty before the pour: the vocabulary says nothing of pouring "
+         "into a liquid"))
