@@ -125,8 +125,11 @@ def _patterns() -> tuple[re.Pattern, ...]:
         rf"|{chance}{subject.replace('<subject>', '<csubject>')})"
         rf" (?:all |any |ever |even |still |not )?(?:(?:end|ends|ended) up )?(?:{verbs})\b{_END}"
         rf"(?P<odds> (?:very |really |quite |too )?(?:high|low|big|small|great|likely|unlikely)\b)?")
+    # (or said alone: "splashes?", "drip everywhere?")
     nominal = re.compile(r"\b(?:(?:is|will) there (?:be )?)?(?:any|a|no|some) (?P<v1>spill(?:s|age)?"
-                         r"|splash(?:es)?|mess|drips?)\b(?! of\b)")
+                         r"|splash(?:es)?|mess|drips?|puddles?)\b(?! of\b)"
+                         r"|^(?:spill(?:s|age)?|splash(?:es)?|drips?|leaks?)(?: (?:everywhere|out|over))?"
+                         r"(?= *[?.!]* *$)")
     goal = re.compile(
         rf"\b(?:without (?P<gneg>any |a |making (?:a |any )?)?(?P<gwho>(?:it|them|the [a-z]+) )?"
         rf"(?:getting |being )?"

@@ -79,6 +79,10 @@ HINTS: tuple[tuple[str, str], ...] = (
                                   'the centre ("5 cm from the centre"), "near the rim" or "to the side"'),
     (r"\b(?:close|next) to", 'close to the bowl: say "just above the rim", "low above the bowl" or '
                              '"near the rim"'),
+    (r"^off(?: |-)?cent", 'off centre: how far? say "near the rim", "from the side" or "offset '
+                          'sideways"'),
+    (r"^a (?:little|bit|tad)$", 'a little: of what? say "a little liquid", "slightly tilted", or '
+                               'where ("near the rim", "from the side", "offset sideways")'),
     (r"^(?:drop|let)", 'dropping: the source is held throughout the pour; the vocabulary says '
                        'nothing of letting it go'),
     (r"^(?:tilt|tilted|tip|tipped|tipping)$", 'tilted how far? say "slightly tilted", "tilted halfway", '

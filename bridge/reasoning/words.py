@@ -114,6 +114,8 @@ PHRASES: tuple[tuple, ...] = (
                        r" (?:there|in place|where it is|like that|as it is|as is|in that pose)\b",)),
     # a contrast: "near the rim instead of the middle" excludes the middle
     ("rather not", ("instead of", "rather than", "as opposed to")),
+    # "end up right over the bowl": where the source ends
+    ("end", (r"re:\bend(?:s|ed|ing)? up\b(?= (?:right|directly|straight|just) (?:over|above)\b)",)),
     # where the liquid ends up is an outcome (outcomes.py), never the end pose raised
     (UNCLEAR, (r"re:\bend(?:s|ed|ing)? up\b(?= (?:on|onto|in|into|inside|all|everywhere|outside|over"
                r"|above|below|under|underneath|beside|near|next|against|touching|\w+ing|outcome)\b)",)),
@@ -132,7 +134,8 @@ PHRASES: tuple[tuple, ...] = (
                r"re:(?<!after )(?<!before )\bpour(?:s|ed|ing)?(?: (?!(?:then|and|move|moving|bring|"
                r"approach|retreat|in|away|out|before|after|lift|lower|raise|pose|position)\b)[a-z]+){1,3}"
                r" (?:slow(?:ly|er)?|fast(?:er)?|quick(?:ly|er)?|gently|carefully|rapidly)\b")),
-    (UNCLEAR, (r"re:\ba little (?=to |more |further |closer |higher |lower |away )",
+    (UNCLEAR, (r"re:\ba (?:little|bit|tad) (?=to |more |further |closer |higher |lower |away |off )",
+               r"re:\boff(?: |-)?cent(?:er|re)d?\b",
                "from above", r"re:\bfrom below\b(?! the (?:destination |bowl )?rim)",
                "from the top", "from the bottom", "overhead")),
     # the stages: the move into the pouring pose, the move out of it, the end pose
@@ -242,7 +245,7 @@ PHRASES: tuple[tuple, ...] = (
     ("tilted", ("angled", "inclined")),
     ("steeply", ("sharply",)),
     ("pour steeply tilted", (r"re:\bpour(?:s|ed|ing)?(?: it| the \w+)? steeply\b(?! tilt)",)),
-    ("steeply tilted", ("at a steep angle", "at a sharp angle")),
+    ("steeply tilted", ("at a steep angle", "at a sharp angle", "horizontal", "horizontally")),
     ("slightly", ("gently", "barely")),
     ("halfway", ("half way",)),
     ("fast", ("quickly", "quick", "rapidly", "swiftly", "briskly")),
