@@ -140,7 +140,11 @@ def _patterns() -> tuple[re.Pattern, ...]:
     # tipping the bowl over"
     more = re.compile(rf"\boutcome (?:,|or|and|nor)? ?(?:(?:will|does|do|would|even) )?(?:it |the \w+ )?"
                       rf"(?:{verbs})\b{_END}")
-    return asked, nominal, goal, more
+    # an outcome said first, with no word that asks: "spills when poured from high?", "sloshing
+    # over the rim if tilted steeply?", "pour high, spill or not"
+    bare = re.compile(rf"(?:^|(?<=, ))(?:(?P<v0>{OUTCOMES[0][0]})|(?P<v1>spill\w*|spilt|splash\w*|drip\w*"
+                      rf"|leak\w*|slosh\w*|dribbl\w*)){_END}(?: or not)?(?= (?:if|when|while)\b| *[?.!,]* *$)")
+    return asked, nominal, goal, more, bare
 
 
 #: Why a question of what follows an outcome is refused, and what would be read.
@@ -191,7 +195,7 @@ def hear(text: str) -> Heard:
     goals: list[str] = []
     phrases: list[str] = []
     negations: list[bool] = []          # whether each goal said was negated ("without ...")
-    pattern, nominal, goal, more = _patterns()
+    pattern, nominal, goal, more, bare = _patterns()
 
     def take(m: re.Match, keep: str = "") -> str:
         phrases.append(m.group(0).strip())
@@ -246,6 +250,7 @@ def hear(text: str) -> Heard:
     was_goal = False
     text = _repeat(more, as_more, _spaced(pattern.sub(as_asked, text)))
     text = nominal.sub(as_nominal, text)
+    text = _spaced(bare.sub(as_more, text))
     return Heard(tuple(asked), tuple(goals), tuple(phrases), text)
 
 

@@ -139,10 +139,19 @@ PHRASES: tuple[tuple, ...] = (
                "from above", r"re:\bfrom below\b(?! the (?:destination |bowl )?rim)",
                "from the top", "from the bottom", "overhead")),
     # the stages: the move into the pouring pose, the move out of it, the end pose
-    ("end upright", (f"right {_IT} up", f"put {_IT} back upright", f"set {_IT} back upright",
+    # (brought back up: raised, or righted? a tilting verb rights it, "bring" says upright)
+    ("end upright", (r"re:\b(?:tip|tips|tipped|tipping|tilt\w*|turn\w*|put\w*|set\w*|stand\w*)(?: it"
+                     r"| the \w+| them)? back (?:up(?:right)?|to (?:upright|vertical|straight))\b"
+                     r"(?! (?:high|higher|above|to \d|\d))",
+                     r"re:\b(?:bring\w*|brought|return\w*)(?: it| the \w+| them)? back (?:upright|to "
+                     r"(?:upright|vertical|straight))\b",
+                     r"re:\b(?:return\w*|turn\w*)(?: it| the \w+| them)? to (?:upright|vertical)\b",
+                     r"re:\bstraighten\w*(?: it| the \w+| them)?(?: up| out)?\b",
+                     f"right {_IT} up", f"put {_IT} back upright", f"set {_IT} back upright",
                      f"set {_IT} upright", f"stand {_IT} back up", f"stand {_IT} up",
                      "back upright")),
-    ("end", (f"put {_IT} down", f"set {_IT} down", "at the end", "in the end", "finish")),
+    ("end", (f"put {_IT} down", f"set {_IT} down", f"put {_IT} back down", f"set {_IT} back down",
+             "at the end", "in the end", "finish")),
     # "after pouring from the side": the manner after it is the pour's
     # emptying a bowl into another, decanting, dumping: pouring
     ("pour", (r"re:\bempt(?:y|ies|ied|ying)(?= (?:it|the \w+|a \w+) (?:into|in|onto)\b)",
@@ -154,8 +163,11 @@ PHRASES: tuple[tuple, ...] = (
     ("lower", (r"re:\b(?:bring|brings|bringing|brought|lift|lifts|lifted|lifting|mov(?:e|es|ed|ing)"
                r"|tak(?:e|es|ing)|took)(?: it| the \w+| them)? back down\b",)),
     # "once it's poured", "when done": after pouring
+    # ("when poured from the side" is how it is poured, not after)
     ("afterwards", (r"re:\b(?:when|once|after) (?:(?:it|you|i|we|they|the \w+) )?(?:(?:is|are|am|has"
-                    r"|have|was|were|been) )*(?:done|finished|poured|emptied|through)\b(?: pour\w*)?",)),
+                    r"|have|was|were|been) )*(?:done|finished|through)\b(?: pour\w*)?",
+                    r"re:\b(?:once|after) (?:(?:it|you|i|we|they|the \w+) )?(?:(?:is|are|am|has"
+                    r"|have|was|were|been) )*(?:poured|emptied)\b(?= *(?:$|[,;.!?]))")),
     ("afterwards", (r"re:\bafter(?= *(?:$|[,;.!?]))",)),
     ("before pour", (r"re:\bbefore(?= *(?:$|[,;.!?]))",)),
     ("approach ; pour", (rf"re:\bbefore pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",)),
@@ -168,7 +180,7 @@ PHRASES: tuple[tuple, ...] = (
     ("retreat", (r"re:\bpull(?:s|ed|ing)? (?:it|the \w+) (?:back|away)\b",
                  r"re:\bmov(?:e|es|ed|ing) (?:it|the \w+|them) (?:away|back|out)\b(?! from)",
                  "after pour", "afterwards", "move away", "pull away", "pull back",
-                 "back off", "withdraw")),
+                 "back off", "back away", "withdraw")),
     ("start", ("begin", "at first", "at the start", "initially")),
     ("liquid", ("liquid particles", r"re:(?<!\d )\bparticles?\b")),
     # where the source is measured from: "offset 10 cm from the centre"
@@ -284,7 +296,7 @@ FILLERS = frozenset("""
     what which how why when where whether if happen happens would will could should can may
     might must do does did is are was were be been being i we you it they me my our your its
     this that these those there here so as just really quite rather too also still only
-    even keep hold turn make let use try get go put set move while during into onto out up down
+    even keep hold turn make let use try get go put set move while during into onto out up down again
     like fully completely totally entirely absolutely pretty fairly somewhat
     anything something everything outcome hedge instead
     held robot arm gripper hand
