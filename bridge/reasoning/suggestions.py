@@ -79,6 +79,9 @@ HINTS: tuple[tuple[str, str], ...] = (
                                   'the centre ("5 cm from the centre"), "near the rim" or "to the side"'),
     (r"\b(?:close|next) to", 'close to the bowl: say "just above the rim", "low above the bowl" or '
                              '"near the rim"'),
+    (r"^(?:(?:very )?(?:low|high)|(?:high|low|tall|short) ?(?:sided|walled|rimmed|edged))$",
+     'the vocabulary\'s bowls are all of one size: a height is where the source is ("pour low", '
+     '"pour high above the bowl")'),
     (r"^off(?: |-)?cent", 'off centre: how far? say "near the rim", "from the side" or "offset '
                           'sideways"'),
     (r"^a (?:little|bit|tad)$", 'a little: of what? say "a little liquid", "slightly tilted", or '

@@ -62,6 +62,10 @@ PHRASES: tuple[tuple, ...] = (
                r"re:\bbetween(?= -?\d+(?:\.\d+)? and -?\d)")),   # a range: quantities.py's
     ("very", (rf"re:\b(?:super|extremely|incredibly|insanely|ridiculously|awfully|terribly"
               rf"|exceptionally|unusually|crazy|way)(?= (?:{_INTENSIFIED})\b)",)),
+    # a low bowl, a high-sided one: its size, which the vocabulary does not say (a height is
+    # where the source is)
+    (UNCLEAR, (r"re:\b(?:high|low|tall|short)(?: |-)?(?:sided|walled|rimmed|edged)\b",
+               r"re:(?:(?<=\ba )|(?<=\bthe ))(?:very )?(?:low|high)(?= bowl\b)")),
     # a length said "up" is a height above the destination ("hold it 20 cm up")
     ("above", ("re:(?:" + "|".join(rf"(?<=\d {u} )" for u in _LENGTHS) + r")\bup\b",)),
     # a comparison with the rim is where it puts the source: "higher than the rim" is above it
