@@ -33,9 +33,10 @@ adds a rule with the model's likelihood: a rule wherever the pours
 support one. These rules come after the contrasts, within
 `rules_per_expectation`, the most conflicting pair first.
 
-Where the pours contradict an answer (`_exceptions`). A body with
-`doubt_support` pours of its own or more that the rules answer in another
-band than its own likelihood says gets a rule of its own,
+Where the pours contradict a sure answer (`_exceptions`). A body with
+`doubt_support` pours of its own or more that the rules answer at least
+`doubt_confidence` sure, in another band than its own likelihood says,
+gets a rule of its own,
 beyond `rules_per_expectation`: a rule wherever the pours support one.
 """
 from __future__ import annotations
@@ -292,11 +293,12 @@ def _doubts(rules: list[GeneralRule], k: int, meaning: Meaning, P: np.ndarray,
 
 def _exceptions(rules: list[GeneralRule], bodies: Sequence[tuple[str, ...]], target: np.ndarray,
                 P: np.ndarray, s: Settings) -> list[GeneralRule]:
-    """The rules for bodies whose own pours contradict the answer: a
+    """The rules for bodies whose own pours contradict a sure answer: a
     body with at least `doubt_support` pours of its own in its support,
-    which the rules so far answer in another band (holds, uncertain,
-    fails) than its own likelihood (`target`, its pours counted), gets a rule with that
-    likelihood, beyond `rules_per_expectation`: the cap keeps the theory
+    which the rules so far answer at least `doubt_confidence` sure, in
+    another band (holds, uncertain, fails) than its own likelihood
+    (`target`, its pours counted), gets a rule with that likelihood,
+    beyond `rules_per_expectation`: the cap keeps the theory
     readable, not wrong where its pours say otherwise. Smaller bodies
     first (a proposition's rule may answer its pairs); each rule decides
     the bodies that hold it before the next is weighed."""
@@ -315,7 +317,8 @@ def _exceptions(rules: list[GeneralRule], bodies: Sequence[tuple[str, ...]], tar
         if j is None:
             continue
         answered = (rules + out)[j].likelihood
-        if (s.verdict(answered) == s.verdict(t)
+        if (max(answered, 1 - answered) < s.doubt_confidence
+                or s.verdict(answered) == s.verdict(t)
                 or int(in_support(P, b).sum()) < s.doubt_support):
             continue
         holds = t >= 0.5
