@@ -38,7 +38,7 @@ from pantarhei.theory.lexicon import load_vocabulary
 UNITS: dict[str, tuple[str, float]] = {
     **{w: ("length", 1.0) for w in ("mm", "millimetre", "millimetres", "millimeter",
                                     "millimeters")},
-    **{w: ("length", 10.0) for w in ("cm", "centimetre", "centimetres", "centimeter",
+    **{w: ("length", 10.0) for w in ("cm", "cms", "centimetre", "centimetres", "centimeter",
                                      "centimeters")},
     **{w: ("length", 1000.0) for w in ("m", "metre", "metres", "meter", "meters")},
     **{w: ("length", 25.4) for w in ("inch", "inches")},
@@ -46,6 +46,7 @@ UNITS: dict[str, tuple[str, float]] = {
     **{w: ("angle", 1.0) for w in ("degree", "degrees", "deg", "degs")},
     **{w: ("time", 1.0) for w in ("ms", "millisecond", "milliseconds")},
     **{w: ("time", 1000.0) for w in ("s", "sec", "secs", "second", "seconds")},
+    **{w: ("time", 60000.0) for w in ("min", "mins", "minute", "minutes")},
     **{w: ("mass", 1.0) for w in ("g", "gram", "grams", "gramme", "grammes")},
     **{w: ("mass", 1000.0) for w in ("kg", "kilo", "kilos", "kilogram", "kilograms")},
     **{w: ("count", 1.0) for w in ("particle", "particles")},

@@ -69,13 +69,17 @@ def normalised(text: str) -> str:
     text = text.replace("%", " percent ")
     text = re.sub(r"'s?\b", "", text)                 # the destination's rim
     text = re.sub(r"(\d)\s*\u00b0", r"\1 degrees ", text)  # 45\u00b0
+    text = re.sub(r"(\d)\s*(?:\"|\u2033)(?=\s|$)", r"\1 inches ", text)   # 3" (inches), 1\u2032 (feet)
+    text = re.sub(r"(\d)\s*\u2032(?=\s|$)", r"\1 feet ", text)
     # tilted back by an angle: the angle back, negative ("tilted back 20 degrees")
     text = re.sub(r"\b((?:tilt|tip|lean)\w*(?: (?:it|the \w+))?) back(?:wards?)?(?: (?:by|at|to|about|around))*"
                   r" (\d+(?:\.\d+)?)(?= ?(?:degrees?|degs?)?\b(?! ?[-\d]))", r"\1 back at -\2", text)
     # a number said with tilting and no unit is an angle: "tilt it 45", "tilted to 30 to 40"
     text = re.sub(r"\b((?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|the \w+))?(?: (?:to|by|at|about|around"
                   r"|roughly|approximately|some))*) (-?\d+(?:\.\d+)?(?: (?:to|or) -?\d+(?:\.\d+)?)?)"
-                  rf"(?![\w.%\u00b0-]| ?(?:{_UNIT_WORDS}|to|or|and)\b)", r"\1 \2 degrees", text)
+                  rf"(?![\w.%\u00b0-]| ?(?:{_UNIT_WORDS})\b| (?:to|or|and) -?\d)"
+                  r"(?= *(?:$|[,;.!?)]|(?:and|then|but|so|while|before|after|from|above|over|with|into|at"
+                  r"|during|when|if|in|on|towards|away|or|to|degrees?)\b))", r"\1 \2 degrees", text)
     text = re.sub(r"(\d)\s*(?:(?:deg|degs|degrees?)\s*(?:/\s*(?:s|sec)\b|per (?:second|sec)\b)"
                   r"|rpm\b)", r"\1 unit_turn_speed", text)        # 30 deg/s: a speed of tilting
     text = re.sub(r"(\d)\s*(?:(?:k?m|cm|mm)\s*/\s*(?:s|sec|h|hr)|(?:k?m|cm|mm|metres?|meters?|"
