@@ -154,6 +154,7 @@ def read_question(question: str) -> Reading:
     props = vocab.propositions
     lex = _lexicon()
     text, typed = corrected(normalised(question))
+    text, named = _names_written(text, vocab)
     outcome = hear(text)
     tokens = read_numbers(words_of(outcome.scene), lex.placeable)
     accepted = _read(tokens, lex)
@@ -213,9 +214,22 @@ def read_question(question: str) -> Reading:
     heard = [t.raw for t in tokens if t.raw not in ignored or t.said_back]    # said back: heard
     notes = typed + _notes(tokens)
     noted = {t.raw for t in tokens if t.said_back}
-    return Reading(tuple(sorted(set(out))), outcome.asked, outcome.goals, notes,
-                   tuple(dict.fromkeys(w for w in ignored if w not in noted)),
-                   tuple([*heard, *outcome.phrases]))
+    return Reading(tuple(sorted(set(out))), tuple(dict.fromkeys((*named, *outcome.asked))),
+                   outcome.goals, notes, tuple(dict.fromkeys(w for w in ignored if w not in noted)),
+                   tuple([*heard, *outcome.phrases, *named]))
+
+
+def _names_written(text: str, vocab) -> tuple[str, tuple[str, ...]]:
+    """`text` with the names of the vocabulary written as they are: a
+    parameter's word by word ("pour_z = 150 mm" is "pour z = 150 mm", read
+    as a height), an expectation's taken out as asked ("is no_spill
+    expected?"); and the expectations named."""
+    params = "|".join(p.name for p in vocab.parameters)
+    text = re.sub(rf"\b(?:{params})\b", lambda m: m.group(0).replace("_", " "), text)
+    named = tuple(dict.fromkeys(re.findall(rf"\b(?:{'|'.join(e.name for e in vocab.expectations)})\b", text)))
+    if named:
+        text = re.sub(rf"\b(?:{'|'.join(named)})\b", " outcome ", text)
+    return text, named
 
 
 def _same_at_the_end(tokens: list[Token], scene: list[str], vocab) -> list[str]:

@@ -82,6 +82,8 @@ HINTS: tuple[tuple[str, str], ...] = (
     (r"^(?:(?:very )?(?:low|high)|(?:high|low|tall|short) ?(?:sided|walled|rimmed|edged))$",
      'the vocabulary\'s bowls are all of one size: a height is where the source is ("pour low", '
      '"pour high above the bowl")'),
+    (r"^(?:way|far|well) (?:up )?(?:above|over)$", 'how high above? say "high above the '
+                                                            'bowl", "very high" or a height ("20 cm above")'),
     (r"^off(?: |-)?cent", 'off centre: how far? say "near the rim", "from the side" or "offset '
                           'sideways"'),
     (r"^a (?:little|bit|tad)$", 'a little: of what? say "a little liquid", "slightly tilted", or '

@@ -66,6 +66,8 @@ PHRASES: tuple[tuple, ...] = (
     # where the source is)
     (UNCLEAR, (r"re:\b(?:high|low|tall|short)(?: |-)?(?:sided|walled|rimmed|edged)\b",
                r"re:(?:(?<=\ba )|(?<=\bthe ))(?:very )?(?:low|high)(?= bowl\b)")),
+    # way above the bowl: high, or very high?
+    (UNCLEAR, (r"re:\b(?:way|far|well) (?:up )?(?:above|over)(?= (?:the |a |it\b|hedge ))",)),
     # a length said "up" is a height above the destination ("hold it 20 cm up")
     ("above", ("re:(?:" + "|".join(rf"(?<=\d {u} )" for u in _LENGTHS) + r")\bup\b",)),
     # a comparison with the rim is where it puts the source: "higher than the rim" is above it
