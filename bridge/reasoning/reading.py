@@ -52,7 +52,7 @@ from pantarhei.bridge.reasoning.outcomes import FOLLOWS, follows, hear
 from pantarhei.bridge.reasoning.quantities import read_numbers
 from pantarhei.bridge.reasoning.spelling import corrected
 from pantarhei.bridge.reasoning.stages import MARKER_STEMS, MOVE, POSE, stages
-from pantarhei.bridge.reasoning.wording import Token, normalised, stem, tokens as words_of
+from pantarhei.bridge.reasoning.wording import Token, names_written, normalised, stem, tokens as words_of
 from pantarhei.bridge.reasoning.suggestions import hints as phrasings, misspelt
 from pantarhei.bridge.reasoning.words import FILLERS, UNCLEAR, rewrites
 from pantarhei.theory.lexicon import load_vocabulary
@@ -154,7 +154,7 @@ def read_question(question: str) -> Reading:
     props = vocab.propositions
     lex = _lexicon()
     text, typed = corrected(normalised(question))
-    text, named = _names_written(text, vocab)
+    text, named = names_written(text)
     outcome = hear(text)
     tokens = read_numbers(words_of(outcome.scene), lex.placeable)
     accepted = _read(tokens, lex)
@@ -218,18 +218,6 @@ def read_question(question: str) -> Reading:
                    outcome.goals, notes, tuple(dict.fromkeys(w for w in ignored if w not in noted)),
                    tuple([*heard, *outcome.phrases, *named]))
 
-
-def _names_written(text: str, vocab) -> tuple[str, tuple[str, ...]]:
-    """`text` with the names of the vocabulary written as they are: a
-    parameter's word by word ("pour_z = 150 mm" is "pour z = 150 mm", read
-    as a height), an expectation's taken out as asked ("is no_spill
-    expected?"); and the expectations named."""
-    params = "|".join(p.name for p in vocab.parameters)
-    text = re.sub(rf"\b(?:{params})\b", lambda m: m.group(0).replace("_", " "), text)
-    named = tuple(dict.fromkeys(re.findall(rf"\b(?:{'|'.join(e.name for e in vocab.expectations)})\b", text)))
-    if named:
-        text = re.sub(rf"\b(?:{'|'.join(named)})\b", " outcome ", text)
-    return text, named
 
 
 def _same_at_the_end(tokens: list[Token], scene: list[str], vocab) -> list[str]:

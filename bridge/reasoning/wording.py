@@ -18,6 +18,7 @@ from bisect import bisect_left
 from dataclasses import dataclass
 
 from pantarhei.bridge.reasoning.words import rewrites
+from pantarhei.theory.lexicon import load_vocabulary
 
 #: Words that end a clause (besides punctuation): negation stops there.
 CLAUSE_ENDS = {"but", "then", "while", "whereas", "instead", "rather", "except", "so"}
@@ -87,6 +88,19 @@ def normalised(text: str) -> str:
                   r"mph|kph|km/h)\b", r"\1 speed", text)
     return re.sub(r"(\d)([a-z])", r"\1 \2", text)       # 30cm
 
+
+def names_written(text: str) -> tuple[str, tuple[str, ...]]:
+    """`text` with the names of the vocabulary written as they are: a
+    parameter's word by word ("pour_z = 150 mm" is "pour z = 150 mm", read
+    as a height), an expectation's taken out as asked ("is no_spill
+    expected?"); and the expectations named."""
+    vocab = load_vocabulary()
+    params = "|".join(p.name for p in vocab.parameters)
+    text = re.sub(rf"\b(?:{params})\b", lambda m: m.group(0).replace("_", " "), text)
+    named = tuple(dict.fromkeys(re.findall(rf"\b(?:{'|'.join(e.name for e in vocab.expectations)})\b", text)))
+    if named:
+        text = re.sub(rf"\b(?:{'|'.join(named)})\b", " outcome ", text)
+    return text, named
 
 def tokens(text: str) -> list[Token]:
     """The words of `text` in the vocabulary's words, stemmed, each with its clause."""
