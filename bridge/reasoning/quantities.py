@@ -69,14 +69,15 @@ _POSITIVE = {"mass": "a mass", "time": "a time", "count": "a number of particles
 #: they are read with the number (a height's with the rim it is measured from).
 CUES = {
     "roll": ("roll", "sideways"),
-    "pitch": ("tilt", "pitch", "angle"),
+    "pitch": ("tilt", "pitch", "angle", "forward", "forwards"),
     "yaw": ("yaw", "turn", "rotate", "spin", "twist"),
     "side": ("side", "away", "far", "off", "distance", "axis", "x"),
     "offset": ("sideways", "offset", "axis", "y"),
     "height": ("high", "above", "below", "height", "up", "rim", "z"),
 }
-#: The words read with a number besides its cues: a roll is "tilted sideways".
-ALSO_READ = {"roll": ("tilt",)}
+#: The words read with a number besides its cues: a roll is "tilted sideways", a pitch
+#: "rotated forward".
+ALSO_READ = {"roll": ("tilt",), "pitch": ("rotate", "turn")}
 #: How far from a number its cue words may stand.
 REACH = 4
 #: Words that may stand between a number and the cue beside it: "a height of 20 cm",

@@ -153,7 +153,7 @@ PHRASES: tuple[tuple, ...] = (
                      r"(?:upright|vertical|straight))\b",
                      r"re:\b(?:return\w*|turn\w*)(?: it| the \w+| them)? to (?:upright|vertical)\b",
                      r"re:\bstraighten\w*(?: it| the \w+| them)?(?: up| out)?\b",
-                     f"right {_IT} up", f"put {_IT} back upright", f"set {_IT} back upright",
+                     r"re:\bright(?:s|ed|ing)?(?: it| the \w+| them)? up\b(?! (?:high|above|over|there|to)\b)", f"put {_IT} back upright", f"set {_IT} back upright",
                      f"set {_IT} upright", f"stand {_IT} back up", f"stand {_IT} up",
                      "back upright")),
     ("end", (f"put {_IT} down", f"set {_IT} down", f"put {_IT} back down", f"set {_IT} back down",
