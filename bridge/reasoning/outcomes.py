@@ -65,6 +65,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      _ALL_IN, False),
     (r"miss(?:es|ed|ing)?", _ALL_IN, True),
     (r"safe(?:ly)?|(?:be |is )?(?:fine|ok|okay|alright|all right)\b|(?:a )?(?:good|bad) idea|risky"
+     r"|(?:go|goes|going|went) wrong"
      r"|dangerous|(?:a )?problem",
      ("no_spill", "destination_upright", "source_clear"), False),
 )
