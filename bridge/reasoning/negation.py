@@ -1,6 +1,7 @@
 """Where a negation reaches in a question: "not", "never", "no",
 "without", "don't" ... cover the rest of their clause, up to the next
-"and", "or", "yet"."""
+"and", "or", "yet". Not one of two moves the other way is not the other
+("don't lift it" may leave it where it is): still_between says so."""
 from __future__ import annotations
 
 from pantarhei.bridge.reasoning.wording import CLAUSE_ENDS, Token, stem
@@ -39,3 +40,11 @@ def covered(tokens: list[Token], cues: list[int], ends: list[int]) -> set[int]:
                 out.add(j)
         reach = max(reach, ends[i])
     return out
+
+
+def still_between(a: str, b: str, props) -> bool:
+    """Whether two moves go opposite ways with no move between them left
+    out ("don't lift it after pouring" is not lowering it: it may stay)."""
+    ra, rb = (props[n].model for n in (a, b))
+    return (all(hasattr(r, "low") and hasattr(r, "high") for r in (ra, rb))
+            and min(ra.high, rb.high) < 0 < max(ra.low, rb.low))

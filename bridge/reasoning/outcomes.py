@@ -220,7 +220,9 @@ def hear(text: str) -> Heard:
         names, _ = _which(m)
         # "the table is wobbly": the subject before its verb, not the scene's
         before = m.string[:m.start()].split()[-3:] if not subject else []
-        if _acts(subject, names) or _around().spans(before) or _state(m):
+        # "don't tip it out": an imperative, not a question
+        imperative = bool(m.group("neg")) and not subject and m.group("aux") in ("do", "does")
+        if _acts(subject, names) or _around().spans(before) or _state(m) or imperative:
             return m.group(0)
         asked.extend(n for n in names if n not in asked)
         kept = " ".join(subject) if m.group("aux") or m.group("chance") else ""

@@ -46,7 +46,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.reasoning.negation import NEGATION_STEMS, covered, scope, scope_ends
+from pantarhei.bridge.reasoning.negation import NEGATION_STEMS, covered, scope, scope_ends, still_between
 from pantarhei.bridge.reasoning.nouns import ARTICLES, BOWL, CONTEXT, OBJECT_STEMS, Nouns, roles
 from pantarhei.bridge.reasoning.outcomes import FOLLOWS, follows, hear
 from pantarhei.bridge.reasoning.quantities import read_numbers
@@ -193,6 +193,9 @@ def read_question(question: str) -> Reading:
         if dim in said:
             continue                  # "never from the side, centred over it": the one said
         others = [v for v in vocab.dimensions[dim].values if v not in names]
+        if len(others) == 1 and still_between(names[0], others[0], props):
+            raise UserError(f"not {names[0]}: {others[0]} ({props[others[0]].gloss}), or no move "
+                            f"of {dim} at all, which is said by saying none: say which")
         if len(others) == 1:
             out.append(others[0])
             continue

@@ -82,6 +82,10 @@ def corrected(text: str) -> tuple[str, tuple[str, ...]]:
     english = _dictionary()
     meant: dict[str, str] = {}
     for w in unknown:
+        squeezed = re.sub(r"(.)\1{2,}", r"\1", w)        # "sooo", "hiiigh", "reallyyy"
+        if squeezed != w and (squeezed in whole or squeezed in parts):
+            meant[w] = squeezed
+            continue
         if w in english:
             continue
         targets = {t for t in english.edit_distance_1(w) if t in whole or (t in parts and t in english)}

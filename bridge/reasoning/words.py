@@ -128,7 +128,7 @@ PHRASES: tuple[tuple, ...] = (
     # "not tilted at all" is upright; "not tilted much" is slightly tilted or upright
     ("upright", (r"re:\b(?:not|without) (?:be |being |any )?(?:tilt|tip|lean)\w*\b(?!(?: (?:it|the \w+))?"
                  r" (?:much|a lot|far|too|very|so|that|sideways|back|steeply|slightly|halfway|half|a bit"
-                 r"|a little|away|over|towards|past|beyond|more|up to|unclear|at \d|\d)\b)(?: (?:it|the \w+))?"
+                 r"|a little|away|over|towards|past|beyond|more|up to|unclear|out|at \d|\d)\b)(?: (?:it|the \w+))?"
                  r"(?: at all)?",
                  r"re:\bno tilt(?: at all)?\b")),
     (UNCLEAR, (r"re:\b(?:not|without) (?:be |being )?(?:tilt|tip|lean)\w*\b(?: (?:it|the \w+))?"
