@@ -47,7 +47,7 @@ setting(a_new_left, 64).
 % bridge/learning/layers.py).
 setting(general_pours, 774).
 setting(general_own_pours, 0).
-setting(general_rules, 86).
+setting(general_rules, 95).
 rule(g0_destination_still_approach, defeasible, destination_still_approach).
 learned(g0_destination_still_approach).
 provenance(g0_destination_still_approach, layer, general).
@@ -156,6 +156,56 @@ provenance(g11_destination_still_approach, support, 14).
 provenance(g11_destination_still_approach, kept, 7).
 provenance(g11_destination_still_approach, confidence_permille, 530).
 provenance(g11_destination_still_approach, antecedent, a62).
+rule(g12_destination_still_approach, defeasible, neg(destination_still_approach)).
+body(g12_destination_still_approach, approach_moving_away).
+body(g12_destination_still_approach, pour_below_rim).
+learned(g12_destination_still_approach).
+provenance(g12_destination_still_approach, layer, general).
+provenance(g12_destination_still_approach, level, 1).
+provenance(g12_destination_still_approach, support, 6).
+provenance(g12_destination_still_approach, kept, 3).
+provenance(g12_destination_still_approach, confidence_permille, 633).
+provenance(g12_destination_still_approach, antecedent, a79).
+rule(g13_destination_still_approach, defeasible, destination_still_approach).
+body(g13_destination_still_approach, pour_below_rim).
+body(g13_destination_still_approach, pour_slightly_tilted).
+learned(g13_destination_still_approach).
+provenance(g13_destination_still_approach, layer, general).
+provenance(g13_destination_still_approach, level, 2).
+provenance(g13_destination_still_approach, support, 16).
+provenance(g13_destination_still_approach, kept, 11).
+provenance(g13_destination_still_approach, confidence_permille, 641).
+provenance(g13_destination_still_approach, antecedent, a61).
+rule(g14_destination_still_approach, defeasible, neg(destination_still_approach)).
+body(g14_destination_still_approach, pour_below_rim).
+body(g14_destination_still_approach, pour_tilted_back).
+learned(g14_destination_still_approach).
+provenance(g14_destination_still_approach, layer, general).
+provenance(g14_destination_still_approach, level, 1).
+provenance(g14_destination_still_approach, support, 24).
+provenance(g14_destination_still_approach, kept, 12).
+provenance(g14_destination_still_approach, confidence_permille, 502).
+provenance(g14_destination_still_approach, antecedent, a63).
+rule(g15_destination_still_approach, defeasible, destination_still_approach).
+body(g15_destination_still_approach, pour_below_rim).
+body(g15_destination_still_approach, pour_upright).
+learned(g15_destination_still_approach).
+provenance(g15_destination_still_approach, layer, general).
+provenance(g15_destination_still_approach, level, 2).
+provenance(g15_destination_still_approach, support, 10).
+provenance(g15_destination_still_approach, kept, 7).
+provenance(g15_destination_still_approach, confidence_permille, 637).
+provenance(g15_destination_still_approach, antecedent, a60).
+rule(g16_destination_still_approach, defeasible, neg(destination_still_approach)).
+body(g16_destination_still_approach, pour_below_rim).
+body(g16_destination_still_approach, start_centred).
+learned(g16_destination_still_approach).
+provenance(g16_destination_still_approach, layer, general).
+provenance(g16_destination_still_approach, level, 1).
+provenance(g16_destination_still_approach, support, 5).
+provenance(g16_destination_still_approach, kept, 2).
+provenance(g16_destination_still_approach, confidence_permille, 598).
+provenance(g16_destination_still_approach, antecedent, a120).
 rule(g0_destination_still_retreat, defeasible, destination_still_retreat).
 learned(g0_destination_still_retreat).
 provenance(g0_destination_still_retreat, layer, general).
@@ -614,6 +664,46 @@ provenance(g11_liquid_enters_destination, support, 16).
 provenance(g11_liquid_enters_destination, kept, 13).
 provenance(g11_liquid_enters_destination, confidence_permille, 779).
 provenance(g11_liquid_enters_destination, antecedent, a61).
+rule(g12_liquid_enters_destination, defeasible, liquid_enters_destination).
+body(g12_liquid_enters_destination, approach_moving_away).
+body(g12_liquid_enters_destination, start_below_rim).
+learned(g12_liquid_enters_destination).
+provenance(g12_liquid_enters_destination, layer, general).
+provenance(g12_liquid_enters_destination, level, 1).
+provenance(g12_liquid_enters_destination, support, 4).
+provenance(g12_liquid_enters_destination, kept, 1).
+provenance(g12_liquid_enters_destination, confidence_permille, 550).
+provenance(g12_liquid_enters_destination, antecedent, a185).
+rule(g13_liquid_enters_destination, defeasible, neg(liquid_enters_destination)).
+body(g13_liquid_enters_destination, fast_approach).
+body(g13_liquid_enters_destination, pour_steeply_tilted).
+learned(g13_liquid_enters_destination).
+provenance(g13_liquid_enters_destination, layer, general).
+provenance(g13_liquid_enters_destination, level, 1).
+provenance(g13_liquid_enters_destination, support, 5).
+provenance(g13_liquid_enters_destination, kept, 4).
+provenance(g13_liquid_enters_destination, confidence_permille, 534).
+provenance(g13_liquid_enters_destination, antecedent, a157).
+rule(g14_liquid_enters_destination, defeasible, liquid_enters_destination).
+body(g14_liquid_enters_destination, pour_below_rim).
+body(g14_liquid_enters_destination, pour_half_tilted).
+learned(g14_liquid_enters_destination).
+provenance(g14_liquid_enters_destination, layer, general).
+provenance(g14_liquid_enters_destination, level, 2).
+provenance(g14_liquid_enters_destination, support, 14).
+provenance(g14_liquid_enters_destination, kept, 11).
+provenance(g14_liquid_enters_destination, confidence_permille, 750).
+provenance(g14_liquid_enters_destination, antecedent, a62).
+rule(g15_liquid_enters_destination, defeasible, liquid_enters_destination).
+body(g15_liquid_enters_destination, pour_below_rim).
+body(g15_liquid_enters_destination, pour_tilted_back).
+learned(g15_liquid_enters_destination).
+provenance(g15_liquid_enters_destination, layer, general).
+provenance(g15_liquid_enters_destination, level, 2).
+provenance(g15_liquid_enters_destination, support, 24).
+provenance(g15_liquid_enters_destination, kept, 12).
+provenance(g15_liquid_enters_destination, confidence_permille, 506).
+provenance(g15_liquid_enters_destination, antecedent, a63).
 rule(g0_liquid_remains_in_destination, defeasible, liquid_remains_in_destination).
 learned(g0_liquid_remains_in_destination).
 provenance(g0_liquid_remains_in_destination, layer, general).
@@ -869,6 +959,38 @@ sup(g11_no_spill, g9_no_spill).
 sup(g11_source_clear, g2_source_clear).
 sup(g11_source_clear, g3_source_clear).
 sup(g11_source_clear, g5_source_clear).
+sup(g12_destination_still_approach, g10_destination_still_approach).
+sup(g12_destination_still_approach, g2_destination_still_approach).
+sup(g12_destination_still_approach, g4_destination_still_approach).
+sup(g12_destination_still_approach, g5_destination_still_approach).
+sup(g12_destination_still_approach, g6_destination_still_approach).
+sup(g12_destination_still_approach, g8_destination_still_approach).
+sup(g12_liquid_enters_destination, g13_liquid_enters_destination).
+sup(g12_liquid_enters_destination, g1_liquid_enters_destination).
+sup(g12_liquid_enters_destination, g2_liquid_enters_destination).
+sup(g12_liquid_enters_destination, g3_liquid_enters_destination).
+sup(g12_liquid_enters_destination, g4_liquid_enters_destination).
+sup(g12_liquid_enters_destination, g5_liquid_enters_destination).
+sup(g12_liquid_enters_destination, g6_liquid_enters_destination).
+sup(g12_liquid_enters_destination, g7_liquid_enters_destination).
+sup(g12_liquid_enters_destination, g8_liquid_enters_destination).
+sup(g13_destination_still_approach, g12_destination_still_approach).
+sup(g13_destination_still_approach, g16_destination_still_approach).
+sup(g13_liquid_enters_destination, g9_liquid_enters_destination).
+sup(g14_destination_still_approach, g2_destination_still_approach).
+sup(g14_destination_still_approach, g4_destination_still_approach).
+sup(g14_destination_still_approach, g6_destination_still_approach).
+sup(g14_liquid_enters_destination, g2_liquid_enters_destination).
+sup(g14_liquid_enters_destination, g3_liquid_enters_destination).
+sup(g15_destination_still_approach, g12_destination_still_approach).
+sup(g15_destination_still_approach, g16_destination_still_approach).
+sup(g15_liquid_enters_destination, g2_liquid_enters_destination).
+sup(g15_liquid_enters_destination, g3_liquid_enters_destination).
+sup(g16_destination_still_approach, g10_destination_still_approach).
+sup(g16_destination_still_approach, g4_destination_still_approach).
+sup(g16_destination_still_approach, g5_destination_still_approach).
+sup(g16_destination_still_approach, g6_destination_still_approach).
+sup(g16_destination_still_approach, g8_destination_still_approach).
 sup(g1_destination_still_approach, g2_destination_still_approach).
 sup(g1_destination_still_approach, g4_destination_still_approach).
 sup(g1_destination_still_retreat, g2_destination_still_retreat).
