@@ -209,6 +209,18 @@ default(uncertain_band_permille, 150).
 
 % The pours of a batch of the learning curiosity (the others': parameters + 1).
 default(learn_batch, 2).
+% The learning curiosity's model of the pours (bridge/exploration/teaching.py):
+% parameterizations drawn per candidate pair to average it over (4 times
+% as many for one proposition, 16 for the empty antecedent), its rounds
+% of boosting (the learner's take 150), and how much the pours grow
+% before it is fitted again.
+default(learn_draws, 16).
+default(learn_rounds, 50).
+default(learn_refit_growth_permille, 1200).
+% The discovering curiosity's probe passes when the chance it gives of a
+% new, reproducible consequent is at least this: more likely than not
+% (bridge/exploration/novelty.py).
+default(probe_pass_permille, 500).
 
 % Plans (`pantarhei plan`, the report's plans; bridge/reasoning/plan_search.py):
 % a plan tried is verified on plan_verify pours, and one whose goals were

@@ -40,6 +40,7 @@ from sklearn.ensemble import RandomForestClassifier
 
 from pantarhei.bridge.verdicts import verdicts
 from pantarhei.oracle.generative import normalise, sample
+from pantarhei.theory import defaults
 
 #: Trees of the forest; its leaves hold at least this many pours.
 TREES, LEAF = 50, 3
@@ -49,8 +50,8 @@ NEW_CONSEQUENT = 0.8
 #: The seeded tie-break's share of the estimate (which so stays below 1).
 TIE = 1e-6
 #: A probe passes when the chance it gives of a new, reproducible consequent
-#: is at least this: more likely than not.
-PASS = 0.5
+#: is at least this (theory/defaults.pl's probe_pass).
+PASS = float(defaults()["probe_pass"])
 
 
 @dataclass(frozen=True)

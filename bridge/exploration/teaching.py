@@ -84,17 +84,18 @@ from typing import Sequence
 import numpy as np
 
 from pantarhei.oracle.generative import in_support
+from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
 
 #: Parameterizations drawn per candidate pair to average the model over
-#: (4 times as many for one proposition, 16 for the empty antecedent).
-DRAWS = 16
-#: Rounds of boosting of the model of the pours (the learner's takes 150).
-ROUNDS = 50
-#: The model is fitted again when the pours have grown by this factor
-#: since it was fitted (on the first `fitted_on(n)` of n pours, so that a
-#: resumed run fits the model an uninterrupted one had).
-GROWTH = 1.2
+#: (4 times as many for one proposition, 16 for the empty antecedent), the
+#: rounds of boosting of the model of the pours, and the factor by which
+#: the pours grow before the model is fitted again (on the first
+#: `fitted_on(n)` of n pours, so that a resumed run fits the model an
+#: uninterrupted one had): theory/defaults.pl's learn_draws, learn_rounds
+#: and learn_refit_growth.
+DRAWS, ROUNDS, GROWTH = (int(defaults()["learn_draws"]), int(defaults()["learn_rounds"]),
+                         float(defaults()["learn_refit_growth"]))
 
 
 def fitted_on(n: int) -> int:
