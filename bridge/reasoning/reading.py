@@ -51,7 +51,7 @@ from pantarhei.bridge.reasoning.nouns import ARTICLES, BOWL, CONTEXT, OBJECT_STE
 from pantarhei.bridge.reasoning.outcomes import FOLLOWS, follows, hear
 from pantarhei.bridge.reasoning.quantities import read_numbers
 from pantarhei.bridge.reasoning.spelling import corrected
-from pantarhei.bridge.reasoning.stages import MARKER_STEMS, MOVE, POSE, stages
+from pantarhei.bridge.reasoning.stages import MARKER_STEMS, MOVE, POSE, SAME, same_at_the_end, stages
 from pantarhei.bridge.reasoning.wording import Token, names_written, normalised, stem, tokens as words_of
 from pantarhei.bridge.reasoning.suggestions import hints as phrasings, misspelt
 from pantarhei.bridge.reasoning.words import FILLERS, UNCLEAR, rewrites
@@ -60,9 +60,6 @@ from pantarhei.theory.lexicon import load_vocabulary
 #: The most other words between the words of one reading.
 _MAX_GAP = 4
 _IGNORED = {stem(w) for w in FILLERS}
-#: Words words.py writes for "leave it tilted" and "leave it there": the end
-#: pose keeps the pour's tilt, or its whole pose.
-_SAME = {"same_tilt": ("tilt",), "same_pose": ("height", "alignment", "tilt", "roll")}
 #: Words the everyday word list reads as nothing, said back with the reason
 #: ("plastic", "table", "spout"): a question may hold them and ask of the ordinary pour.
 _SAID_AS_NOTHING = frozenset({"material", "context", "part"})
@@ -112,7 +109,7 @@ def _lexicon() -> _Lexicon:
              *(p.gloss for p in vocab.parameters)]
     known = {stem(w) for t in texts for w in re.findall(r"[a-z]+", t.lower())} | asked
     known |= {stem(w) for _, words, _ in rewrites() for w in words}
-    known |= _IGNORED | slot_words | NEGATION_STEMS | {"very"} | set(_SAME)
+    known |= _IGNORED | slot_words | NEGATION_STEMS | {"very"} | set(SAME)
     # the dimension whose gloss says the liquid is in the source: its values
     # may be said of the source ("a full cup")
     amounts = {n for n, p in props.items() if slots[n] == ("object", "liquid")
@@ -149,11 +146,30 @@ def read_question(question: str) -> Reading:
     """What the question says of the scene and asks of it (see the
     module's docstring); UserError for a question that negates or
     contradicts itself in a way not understood, holds a word that cannot
-    be placed or a number no proposition holds, or says nothing of a pour."""
+    be placed or a number no proposition holds, or says nothing of a pour.
+    A question refused is read again with its mistyped words read as the
+    words meant (spelling.py), if it has any; refused again, the first
+    refusal stands."""
+    text = normalised(question)
+    try:
+        return _read_text(question, text, ())
+    except UserError:
+        fixed, typed = corrected(text)
+        if not typed:
+            raise
+        try:
+            return _read_text(question, fixed, typed)
+        except UserError:
+            pass
+        raise
+
+
+def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
+    """read_question's reading of `question`, normalised as `text`, with
+    the words read as others said back (`typed`)."""
     vocab = load_vocabulary()
     props = vocab.propositions
     lex = _lexicon()
-    text, typed = corrected(normalised(question))
     text, named = names_written(text)
     outcome = hear(text)
     tokens = read_numbers(words_of(outcome.scene), lex.placeable)
@@ -203,7 +219,7 @@ def read_question(question: str) -> Reading:
                         f"--props P1,P2)" if others
                         else f"\"{question}\" excludes every value of {dim}")
     _refuse_unplaced(question, tokens, accepted, lex)
-    out += _same_at_the_end(tokens, out, vocab)
+    out += same_at_the_end(tokens, out, vocab)
     if not accepted and not _ordinary(tokens, lex, bool(outcome.asked or outcome.goals)):
         unknown = list(dict.fromkeys(t.raw for t in tokens if t.word not in lex.known))
         hint = ([FOLLOWS] if follows(text) else []) + misspelt(unknown)
@@ -213,7 +229,7 @@ def read_question(question: str) -> Reading:
     taken = set().union(set(), *(p for _, p in accepted))
     structural = _IGNORED | NEGATION_STEMS | set(OBJECT_STEMS) | {BOWL} | set(MARKER_STEMS)
     ignored = [t.raw for i, t in enumerate(tokens) if i not in taken and t.word not in structural
-               and t.word not in _SAME]
+               and t.word not in SAME]
     heard = [t.raw for t in tokens if t.raw not in ignored or t.said_back]    # said back: heard
     notes = typed + _notes(tokens)
     noted = {t.raw for t in tokens if t.said_back}
@@ -221,27 +237,6 @@ def read_question(question: str) -> Reading:
                    outcome.goals, notes, tuple(dict.fromkeys(w for w in ignored if w not in noted)),
                    tuple([*heard, *outcome.phrases, *named]))
 
-
-
-def _same_at_the_end(tokens: list[Token], scene: list[str], vocab) -> list[str]:
-    """The end pose's propositions that "leave it tilted" and "leave it
-    there" say: the pour's, of its tilt or of its whole pose; UserError
-    when the pour's are not said."""
-    out: list[str] = []
-    for t in tokens:
-        if t.word not in _SAME:
-            continue
-        dims = {f"pour_{d}" for d in _SAME[t.word]}
-        copied = [f"end_{n.removeprefix('pour_')}" for n in scene
-                  if vocab.propositions[n].dimension in dims]
-        copied = [n for n in copied if n in vocab.propositions]
-        if not copied:
-            what = "tilted how far" if t.word == "same_tilt" else "where"
-            raise UserError(f"\"{t.raw}\": {what}? say how the source is poured (\"tilted "
-                            f"halfway\", \"from the side\") or how it ends (\"end tilted "
-                            f"halfway\", \"end to the side\")")
-        out += copied
-    return out
 
 
 def _notes(tokens: list[Token]) -> tuple[str, ...]:

@@ -4,9 +4,12 @@ it), said by a stage word ("then", "after pouring", "move away" ...:
 words.py brings everyday phrases to them). A stage word speaks for its
 clause from there on, and for the words of its clause before it; a clause
 without one goes on in the stage before (pouring, at first). A pose said
-while moving in is the start pose, while moving away the end pose."""
+while moving in is the start pose, while moving away the end pose.
+"Leave it tilted" and "leave it there" end as the pour was:
+same_at_the_end."""
 from __future__ import annotations
 
+from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.wording import Token, stem
 
 #: Stage words, and where "then" goes on to from each stage.
@@ -42,3 +45,29 @@ def stages(tokens: list[Token]) -> list[str]:
 
 def _next(word: str, stage: str) -> str:
     return MARKER_STEMS[word] or _THEN[stage]
+
+
+#: Words words.py writes for "leave it tilted" and "leave it there": the end
+#: pose keeps the pour's tilt, or its whole pose.
+SAME = {"same_tilt": ("tilt",), "same_pose": ("height", "alignment", "tilt", "roll")}
+
+
+def same_at_the_end(tokens: list[Token], scene: list[str], vocab) -> list[str]:
+    """The end pose's propositions that "leave it tilted" and "leave it
+    there" say: the pour's, of its tilt or of its whole pose; UserError
+    when the pour's are not said."""
+    out: list[str] = []
+    for t in tokens:
+        if t.word not in SAME:
+            continue
+        dims = {f"pour_{d}" for d in SAME[t.word]}
+        copied = [f"end_{n.removeprefix('pour_')}" for n in scene
+                  if vocab.propositions[n].dimension in dims]
+        copied = [n for n in copied if n in vocab.propositions]
+        if not copied:
+            what = "tilted how far" if t.word == "same_tilt" else "where"
+            raise UserError(f"\"{t.raw}\": {what}? say how the source is poured (\"tilted "
+                            f"halfway\", \"from the side\") or how it ends (\"end tilted "
+                            f"halfway\", \"end to the side\")")
+        out += copied
+    return out

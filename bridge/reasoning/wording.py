@@ -94,6 +94,8 @@ def names_written(text: str) -> tuple[str, tuple[str, ...]]:
     parameter's word by word ("pour_z = 150 mm" is "pour z = 150 mm", read
     as a height), an expectation's taken out as asked ("is no_spill
     expected?"); and the expectations named."""
+    if "_" not in text:
+        return text, ()
     vocab = load_vocabulary()
     params = "|".join(p.name for p in vocab.parameters)
     text = re.sub(rf"\b(?:{params})\b", lambda m: m.group(0).replace("_", " "), text)
