@@ -72,6 +72,8 @@ class Matcher:
         self.before = frozenset(f for p in before for f in forms(p))
         self.glass_before = frozenset(f for p in glass_before for f in forms(p))
         self.longest = max(map(len, self.table | self.before | self.glass_before), default=0)
+        # the words a phrase may begin with: a word that begins none is passed at once
+        self.firsts = frozenset(f[0] for f in self.table | self.before) | {"glass"}
 
     def _at(self, table: frozenset, words: list[str], i: int) -> int:
         """The length of the longest phrase of `table` at `i`, or 0."""
@@ -84,6 +86,9 @@ class Matcher:
         """(first, end) of each phrase in `words`, left to right, the longest first."""
         out, i = [], 0
         while i < len(words):
+            if words[i] not in self.firsts:
+                i += 1
+                continue
             n = self._at(self.before, words, i)
             m = self._at(self.table, words, i + n) if n else 0
             if not m:
