@@ -1,6 +1,7 @@
 """Words a person mistyped, read as the word meant: "will it spil if I
 pour from hihg up?" is "will it spill if I pour from high up?", and `ask`
-says so ("spil: read as spill").
+says so ("spil: read as spill"). reading.py looks for them only in a
+question it refused as typed.
 
 A word is read as another only when nothing else is near: the reader
 does not know it, an English dictionary does not hold it (pyspellchecker's
