@@ -25,10 +25,6 @@ APART = [("pantarhei.bridge.learning.generalize", "pantarhei.bridge.learning.mea
 #: Cycles not broken yet, each by the modules on it: a cycle among exactly
 #: these modules (or some of them) is not reported, any other is.
 KNOWN_CYCLES = {
-    # The exploration's session and the steepest-ascent curiosity's
-    # Python side call each other.
-    "session and steepest": {"pantarhei.bridge.exploration.session",
-                             "pantarhei.bridge.exploration.steepest"},
     # The plan search and the order in which it tries manners.
     "plan search and its order": {"pantarhei.bridge.reasoning.plan_order",
                                   "pantarhei.bridge.reasoning.plan_search"},

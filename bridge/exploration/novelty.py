@@ -32,15 +32,20 @@ from __future__ import annotations
 import zlib
 from collections import Counter
 from dataclasses import dataclass
-from typing import Iterable, Sequence
+from typing import TYPE_CHECKING, Iterable, Sequence
 
 import numpy as np
 from scipy.stats import binom
 from sklearn.ensemble import RandomForestClassifier
 
+from pantarhei.bridge.exploration.significance import shuffle_seed
+from pantarhei.bridge.exploration.trace import rounded
 from pantarhei.bridge.verdicts import verdicts
 from pantarhei.oracle.generative import normalise, sample
 from pantarhei.theory import defaults
+
+if TYPE_CHECKING:
+    from pantarhei.bridge.exploration.session import Host
 
 #: Trees of the forest; its leaves hold at least this many pours.
 TREES, LEAF = 50, 3
@@ -177,3 +182,47 @@ def probe_score(S: np.ndarray, n: int, consequents: Sequence[tuple[bool, ...]]) 
     V = verdicts(S[np.all(np.isfinite(S), axis=1)])
     q = (V.sum(axis=0) + 1.0) / (len(V) + 2.0)
     return new_reproduced(q, n, verdict_rows(consequents, S.shape[1]))
+
+
+def handlers() -> dict:
+    """The discovering curiosity's foreign predicates
+    (bridge/exploration/curiosity_sides.py): by name, the timing they count
+    towards and the handler."""
+    return {"exploration_predict": ("planes", predict),
+            "exploration_probe": ("probe", probe)}
+
+
+def probe(host: Host, request: dict) -> dict:
+    """Simulate the first `probe` pours of a candidate's batch and say
+    whether they show a new, reproducible consequent (probe_score against
+    the explored antecedents' consequents, qualified by `qualify`, at
+    least PASS)."""
+    s = host.need_session()
+    samples = int(request["batch"])
+    _, S = host.batch(request, min(int(request["probe"]), samples))
+    # rounded as the trace keeps it, so that a resumed run and another
+    # machine read the same score from it
+    score = rounded(probe_score(S, samples, s.verdicts(request["antecedents"],
+                                                       str(request["qualify"]))))
+    passed = score >= PASS
+    return {"score": score, "pass": passed, "simulations": len(s.params)}
+
+
+def predict(host: Host, request: dict) -> dict:
+    """The novelty of each candidate antecedent given every pour so far and
+    the consequents of the explored antecedents (qualified by `qualify`),
+    and whether it reaches the level `novelty` to be queued; the forest is
+    seeded from `seed` and predicts `batch` pours per candidate."""
+    s = host.need_session()
+    entries = request["antecedents"]
+    seed, batch, mode = int(request["seed"]), int(request["batch"]), str(request["qualify"])
+    key = (len(s.params), len(entries), seed, batch, mode)
+    # what the last estimate knew: (what it was computed from, Known)
+    if s.memo.get("known", (None,))[0] != key:
+        s.memo["known"] = (key, known(s.params, s.scores, s.verdicts(entries, mode), batch,
+                                      seed, shuffle_seed(seed, 0, len(s.params))))
+    k = s.memo["known"][1]
+    level = float(request["novelty"])
+    found = novelties(k, [[str(p) for p in props] for props in request["candidates"]])
+    return {"novelty": [f["novelty"] for f in found],
+            "queued": [f["novelty"] >= level for f in found]}

@@ -8,15 +8,9 @@ Prolog module `bridge`:
   saved state to resume from;
 * `exploration_simulate`: sample(a_c, n) and simulate the batch (in the
   simulator's worker processes);
-* `exploration_steepest_plane`, `exploration_significant_planes`: the
-  weights of equation (1) over all simulations, a weighted plane fit per
-  explored antecedent, and the steepest plane of all, or the significant
-  ones (bridge/exploration/steepest.py);
-* `exploration_predict`: the novelty of candidates;
-* `exploration_probe`: simulate the first pours of a candidate's batch and
-  say whether they show a new, reproducible consequent;
-* `exploration_teach`: what each candidate's pours would teach the theory
-  (the learning curiosity, bridge/exploration/teaching.py);
+* the foreign predicates of each curiosity's own numbers, which its
+  Python modules declare (bridge/exploration/curiosity_sides.py), for the
+  curiosities of the one list: this module names none of them;
 * `exploration_qualify`: the consequent of each explored antecedent;
 * `exploration_checkpoint`: save the state after an explored antecedent;
 * `exploration_general`: the general rules of every pour of the
@@ -44,7 +38,7 @@ import time
 from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path
-from typing import Any, Callable, Sequence
+from typing import Any, Callable, Mapping, Sequence
 
 import numpy as np
 
@@ -52,7 +46,7 @@ from pantarhei.bridge.engines.swipl import Engine, engine as prolog_engine
 from pantarhei.bridge.engines.terms import foreign
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.exploration.course import ALGORITHM_VERSION, course
-from pantarhei.bridge.exploration.novelty import PASS, Known, known, novelties, probe_score
+from pantarhei.bridge.exploration.curiosity_sides import curiosity_handlers
 from pantarhei.bridge.exploration.planes import Planes, plane_fit
 from pantarhei.bridge.exploration.progress import Bar, open_bar
 from pantarhei.bridge.exploration.prompt_oracle import (oracle_describe, oracle_sample,
@@ -62,7 +56,6 @@ from pantarhei.bridge.exploration.significance import Tested, permutation_test, 
 from pantarhei.bridge.exploration.simulation import (batch_pours, drawn_pours, open_simulator,
                                                      oracle_identity, trace_draws)
 from pantarhei.bridge.exploration.checkpoints import ExplorationStore, other_settings, run_key
-from pantarhei.bridge.exploration.steepest import significant_planes, steepest_plane
 from pantarhei.bridge.exploration.weights import weights
 from pantarhei.bridge.exploration.trace import (append_trace, plot_path, plot_trace,
                                                 require_distinct_outputs, rounded, trace_path,
@@ -98,10 +91,9 @@ class Session:
     #: Per antecedent: ((weights, ridge, shuffles, seed), its tested planes).
     test_cache: dict[str, tuple[tuple[np.ndarray, float, int, int], Tested | None]] = \
         field(default_factory=dict)
-    #: What the last novelty estimate knew: (what it was computed from, Known).
-    known: tuple[tuple, Known] | None = None
-    #: The learning curiosity's model of the pours: ((pours it is fitted on, seed), Meaning).
-    teacher: tuple[tuple[int, int], Any] | None = None
+    #: What a curiosity's handlers keep between requests, each under a key
+    #: of its own (as what it was computed from and the model of the pours).
+    memo: dict[str, Any] = field(default_factory=dict)
     started: float = field(default_factory=time.monotonic)
     bar: Bar | None = None
     timings: dict[str, float] = field(default_factory=dict)
@@ -179,9 +171,13 @@ def _same_weights(w0: np.ndarray, w: np.ndarray) -> bool:
 
 class Host:
     """What the foreign predicates act on: at most one running Session, the
-    exception that stopped the last one, and the last run's result."""
+    exception that stopped the last one, and the last run's result. Its
+    handlers are the shared ones and those the Python sides of the
+    curiosities declare (curiosity_sides.curiosity_handlers, given
+    `curiosities` and `sides` when not the one list's)."""
 
-    def __init__(self) -> None:
+    def __init__(self, curiosities: Sequence[str] | None = None,
+                 sides: Mapping[str, Sequence[str]] | None = None) -> None:
         self.session: Session | None = None
         self.error: BaseException | None = None
         self.result: dict[str, Any] = {}
@@ -190,11 +186,6 @@ class Host:
         self.handlers: dict[str, Callable[[dict], dict]] = {
             "exploration_begin": self.begin,
             "exploration_simulate": self._timed("simulate", self.simulate),
-            "exploration_steepest_plane": self._timed("planes", self.steepest_plane),
-            "exploration_significant_planes": self._timed("planes", self.significant_planes),
-            "exploration_predict": self._timed("planes", self.predict),
-            "exploration_probe": self._timed("probe", self.probe),
-            "exploration_teach": self._timed("planes", self.teach),
             "exploration_qualify": self._timed("qualify", self.qualify),
             "exploration_checkpoint": self._timed("checkpoint", self.checkpoint),
             "exploration_general": self._timed("generalize", self.general),
@@ -203,6 +194,10 @@ class Host:
             "oracle_simulate": oracle_simulate,
             "oracle_describe": oracle_describe,
         }
+        for name, (timing, handler) in curiosity_handlers(curiosities, sides).items():
+            if name in self.handlers:
+                raise ValueError(f"a curiosity declares {name}, a foreign predicate of the session")
+            self.handlers[name] = self._timed(timing, partial(handler, self))
 
     def _timed(self, name: str, fn: Callable[[dict], dict]) -> Callable[[dict], dict]:
         def inner(request: dict) -> dict:
@@ -293,10 +288,10 @@ class Host:
 
     def batch(self, request: dict, n: int) -> tuple[np.ndarray, np.ndarray]:
         """The first n pours of the batch of `batch` pours of an iteration's
-        attempt (attempt 0 is the iteration's own seed; a candidate probed
+        attempt (attempt 0 is the iteration's own seed; a candidate tried
         after others gets a seed of its own; both from the run's `seed`),
         simulated, and added to the pool, except the first `probed`, which
-        a probe of the same batch already added."""
+        an earlier request of the same batch already added."""
         s = self.need_session()
         props = [str(p) for p in request["antecedent"]]
         iteration, attempt = int(request["iteration"]), int(request.get("attempt", 0))
@@ -321,65 +316,6 @@ class Host:
         _, S = self.batch(request, int(request["batch"]))
         failed = int((~np.all(np.isfinite(S), axis=1)).sum())
         return {"simulations": len(s.params), "failed": failed}
-
-    def probe(self, request: dict) -> dict:
-        """Simulate the first `probe` pours of a candidate's batch and say
-        whether they show a new, reproducible consequent
-        (novelty.probe_score against the explored antecedents' consequents,
-        qualified by `qualify`, at least novelty.PASS)."""
-        s = self.need_session()
-        samples = int(request["batch"])
-        _, S = self.batch(request, min(int(request["probe"]), samples))
-        # rounded as the trace keeps it, so that a resumed run and another
-        # machine read the same score from it
-        score = rounded(probe_score(S, samples, s.verdicts(request["antecedents"],
-                                                           str(request["qualify"]))))
-        passed = score >= PASS
-        return {"score": score, "pass": passed, "simulations": len(s.params)}
-
-    def steepest_plane(self, request: dict) -> dict:
-        return steepest_plane(self.need_session(), request)
-
-    def significant_planes(self, request: dict) -> dict:
-        return significant_planes(self.need_session(), request)
-
-    def predict(self, request: dict) -> dict:
-        """The novelty of each candidate antecedent (bridge/exploration/novelty.py)
-        given every pour so far and the consequents of the explored
-        antecedents (qualified by `qualify`), and whether it reaches the
-        level `novelty` to be queued; the forest is seeded from `seed` and
-        predicts `batch` pours per candidate."""
-        s = self.need_session()
-        entries = request["antecedents"]
-        seed, batch, mode = int(request["seed"]), int(request["batch"]), str(request["qualify"])
-        key = (len(s.params), len(entries), seed, batch, mode)
-        if s.known is None or s.known[0] != key:
-            s.known = (key, known(s.params, s.scores, s.verdicts(entries, mode), batch,
-                                  seed, shuffle_seed(seed, 0, len(s.params))))
-        k = s.known[1]
-        level = float(request["novelty"])
-        found = novelties(k, [[str(p) for p in props] for props in request["candidates"]])
-        return {"novelty": [f["novelty"] for f in found],
-                "queued": [f["novelty"] >= level for f in found]}
-
-    def teach(self, request: dict) -> dict:
-        """The value of each candidate for the learning curiosity
-        (bridge/exploration/teaching.py), given every pour so far and the
-        explored antecedents: the weights, `batch`, `seed` and the
-        `iteration` to explore at as the request says."""
-        from pantarhei.bridge.exploration.teaching import Weights, fitted_on, model, teaching
-
-        s = self.need_session()
-        seed = int(request["seed"])
-        key = (fitted_on(int(s.valid.sum())), seed)
-        if s.teacher is None or s.teacher[0] != key:
-            s.teacher = (key, model(s.params, s.scores, seed))
-        weights = Weights(float(request["uncertainty"]), float(request["doubt"]),
-                          float(request["newness"]))
-        found = teaching(s.params, s.scores, [e["antecedent"] for e in request["antecedents"]],
-                         request["candidates"], weights, int(request["batch"]), seed,
-                         int(request["iteration"]), s.teacher[1])
-        return {"value": found.value}
 
     def qualify(self, request: dict) -> dict:
         s = self.need_session()

@@ -26,7 +26,23 @@ from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
 
 if TYPE_CHECKING:
-    from pantarhei.bridge.exploration.session import Session
+    from pantarhei.bridge.exploration.session import Host, Session
+
+
+def handlers() -> dict:
+    """The foreign predicates of the paper's and the discovering curiosity's
+    planes (bridge/exploration/curiosity_sides.py): by name, the timing
+    they count towards and the handler."""
+    return {"exploration_steepest_plane": ("planes", steepest_plane_request),
+            "exploration_significant_planes": ("planes", significant_planes_request)}
+
+
+def steepest_plane_request(host: Host, request: dict) -> dict:
+    return steepest_plane(host.need_session(), request)
+
+
+def significant_planes_request(host: Host, request: dict) -> dict:
+    return significant_planes(host.need_session(), request)
 
 
 def steepest_plane(s: Session, request: dict) -> dict:

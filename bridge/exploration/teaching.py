@@ -79,13 +79,16 @@ serves every question.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Sequence
+from typing import TYPE_CHECKING, Sequence
 
 import numpy as np
 
 from pantarhei.oracle.generative import in_support
 from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
+
+if TYPE_CHECKING:
+    from pantarhei.bridge.exploration.session import Host
 
 #: Parameterizations drawn per candidate pair to average the model over
 #: (4 times as many for one proposition, 16 for the empty antecedent), the
@@ -304,3 +307,28 @@ def batch_doubt(meaning, S: np.ndarray, cands: Sequence[tuple[str, ...]], batch:
     per = np.repeat(np.arange(len(cands)), batch)
     return (np.bincount(per, H, len(cands)) / batch,
             np.clip(np.bincount(per, new, len(cands)) / batch, 0.0, 1.0))
+
+
+def handlers() -> dict:
+    """The learning curiosity's foreign predicate
+    (bridge/exploration/curiosity_sides.py): by name, the timing it counts
+    towards and the handler."""
+    return {"exploration_teach": ("planes", teach)}
+
+
+def teach(host: Host, request: dict) -> dict:
+    """The value of each candidate (`teaching`), given every pour so far
+    and the explored antecedents: the weights, `batch`, `seed` and the
+    `iteration` to explore at as the request says."""
+    s = host.need_session()
+    seed = int(request["seed"])
+    key = (fitted_on(int(s.valid.sum())), seed)
+    # the model of the pours: ((pours it is fitted on, seed), Meaning)
+    if s.memo.get("teacher", (None,))[0] != key:
+        s.memo["teacher"] = (key, model(s.params, s.scores, seed))
+    weights = Weights(float(request["uncertainty"]), float(request["doubt"]),
+                      float(request["newness"]))
+    found = teaching(s.params, s.scores, [e["antecedent"] for e in request["antecedents"]],
+                     request["candidates"], weights, int(request["batch"]), seed,
+                     int(request["iteration"]), s.memo["teacher"][1])
+    return {"value": found.value}

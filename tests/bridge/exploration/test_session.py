@@ -112,8 +112,8 @@ def test_the_pours_come_from_the_requests_and_the_store_holds_each_step_s(tmp_pa
     host.session = Session(run="r", store=store, simulator=Synthetic(), oracle_version="",
                            params=np.empty((0, 30)), scores=np.empty((0, 9)))
     step = {"antecedent": ["pour_low"], "iteration": 1, "attempt": 0, "batch": 10, "seed": 7}
-    probed = host.probe({**step, "probe": 3, "qualify": "weighted",
-                         "antecedents": [{"id": "a1", "antecedent": ["pour_low"]}]})
+    probed = host.handlers["exploration_probe"]({**step, "probe": 3, "qualify": "weighted",
+                                                "antecedents": [{"id": "a1", "antecedent": ["pour_low"]}]})
     assert probed["simulations"] == 3
     assert host.simulate({**step, "probed": 3})["simulations"] == 10    # 7 more, not 10
     assert np.array_equal(host.session.params, sample(["pour_low"], 10, batch_seed(7, 1, 0)))

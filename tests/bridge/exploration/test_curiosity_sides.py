@@ -1,0 +1,78 @@
+"""A curiosity's Python side declares its own foreign predicates
+(bridge/exploration/curiosity_sides.py): the session registers, for the
+curiosities of the one list, the handlers their modules declare, and
+names no curiosity. This module is a toy curiosity's Python side: adding
+it to the list, and its module to the sides, is all its handler needs to
+be dispatched by the session's Host."""
+from __future__ import annotations
+
+import re
+import sys
+from pathlib import Path
+from types import ModuleType
+
+import numpy as np
+import pytest
+
+from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.exploration.curiosity_sides import (curiosities, curiosity_handlers,
+                                                          python_sides)
+from pantarhei.bridge.exploration.session import Host, Session
+
+SESSION = Path(__file__).resolve().parents[3] / "bridge" / "exploration" / "session.py"
+
+
+def handlers() -> dict:
+    """The toy curiosity's one foreign predicate."""
+    return {"exploration_toy_count": ("toy", toy_count)}
+
+
+def toy_count(host: Host, request: dict) -> dict:
+    return {"pours": len(host.need_session().params) + int(request["more"])}
+
+
+def toy_host() -> Host:
+    return Host(curiosities=(*curiosities(), "toy"), sides={**python_sides(), "toy": (__name__,)})
+
+
+def test_a_toy_curiosity_in_the_list_gets_its_handler_dispatched_and_timed():
+    host = toy_host()
+    assert "exploration_toy_count" not in Host().handlers        # not in the one list
+    assert host.dispatch("exploration_toy_count", {"more": 1}) == {"error": "no exploration is running"}
+    assert isinstance(host.take_error(), UserError)
+    host.session = Session(run="r", store=None, simulator=None, oracle_version="",
+                           params=np.zeros((4, 30)), scores=np.zeros((4, 9)))
+    assert host.dispatch("exploration_toy_count", {"more": 3}) == {"pours": 7}
+    assert "toy" in host.session.timings
+    # every curiosity's own handlers are there beside the toy's
+    assert set(curiosity_handlers()) < set(host.handlers)
+
+
+def test_a_module_shared_by_two_curiosities_is_registered_once_and_a_clash_refused(monkeypatch):
+    assert list(curiosity_handlers(["toy", "toy"], {"toy": (__name__, __name__)})) == \
+        ["exploration_toy_count"]
+    clash = ModuleType("toy_clash")
+    monkeypatch.setitem(sys.modules, clash.__name__, clash)
+    clash.handlers = lambda: {"exploration_toy_count": ("toy", toy_count)}
+    with pytest.raises(ValueError, match="toy_clash declares exploration_toy_count"):
+        curiosity_handlers(["toy", "clash"], {"toy": (__name__,), "clash": ("toy_clash",)})
+    clash.handlers = lambda: {"exploration_begin": ("toy", toy_count)}
+    with pytest.raises(ValueError, match="exploration_begin"):
+        Host(curiosities=["clash"], sides={"clash": ("toy_clash",)})
+
+
+def test_the_sides_are_of_curiosities_of_the_one_list_and_prolog_calls_each_handler():
+    assert set(python_sides()) <= set(curiosities())
+    prolog = "\n".join(p.read_text() for p in (SESSION.parents[2] / "theory").rglob("*.pl"))
+    for name in curiosity_handlers():
+        assert re.search(rf"\b{name}\b", prolog), name
+
+
+def test_the_session_names_no_curiosity_nor_its_handlers_or_modules():
+    source = SESSION.read_text()
+    names = set(curiosities())
+    for name, (_, handler) in curiosity_handlers().items():
+        names |= {name, handler.__name__}
+    for modules in python_sides().values():
+        names |= {m.rpartition(".")[2] for m in modules}
+    assert {n for n in names if re.search(rf"\b{n}\b", source)} == set()
