@@ -199,6 +199,12 @@ class Host:
                 raise ValueError(f"a curiosity declares {name}, a foreign predicate of the session")
             self.handlers[name] = self._timed(timing, partial(handler, self))
 
+    def register(self, names: Sequence[str] | None = None) -> None:
+        """Register the foreign predicates `names` (all its handlers unless
+        given) in the Prolog module `bridge`, each calling `dispatch`."""
+        for name in self.handlers if names is None else names:
+            foreign("bridge", name, partial(self.dispatch, name), self.callbacks)
+
     def _timed(self, name: str, fn: Callable[[dict], dict]) -> Callable[[dict], dict]:
         def inner(request: dict) -> dict:
             t = time.perf_counter()
@@ -434,8 +440,7 @@ def install(eng: Engine | None = None) -> Engine:
     eng = eng or prolog_engine()
     if eng.exploration_host is None:
         host = Host()
-        for name in host.handlers:
-            foreign("bridge", name, partial(host.dispatch, name), host.callbacks)
+        host.register()
         eng.exploration_host = host
         eng.use_module("curiosity")
     return eng

@@ -3,7 +3,7 @@
 curiosities of the one list, the handlers their modules declare, and
 names no curiosity. This module is a toy curiosity's Python side: adding
 it to the list, and its module to the sides, is all its handler needs to
-be dispatched by the session's Host."""
+be dispatched by the session's Host and called from Prolog."""
 from __future__ import annotations
 
 import re
@@ -17,7 +17,7 @@ import pytest
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.exploration.curiosity_sides import (curiosities, curiosity_handlers,
                                                           python_sides)
-from pantarhei.bridge.exploration.session import Host, Session
+from pantarhei.bridge.exploration.session import Host, Session, install
 
 SESSION = Path(__file__).resolve().parents[3] / "bridge" / "exploration" / "session.py"
 
@@ -46,6 +46,25 @@ def test_a_toy_curiosity_in_the_list_gets_its_handler_dispatched_and_timed():
     assert "toy" in host.session.timings
     # every curiosity's own handlers are there beside the toy's
     assert set(curiosity_handlers()) < set(host.handlers)
+
+
+@pytest.fixture(scope="module")
+def registered():
+    """The process's Prolog, with the toy's foreign predicate registered
+    (the host, which keeps its callback, lives as long as the module's tests)."""
+    host = toy_host()
+    host.register(["exploration_toy_count"])
+    return install(), host
+
+
+def test_prolog_calls_the_toy_curiosity_s_handler_through_call_bridge(registered):
+    eng, host = registered
+    host.session = Session(run="r", store=None, simulator=None, oracle_version="",
+                           params=np.zeros((2, 30)), scores=np.zeros((2, 9)))
+    r = eng.once("curiosity_foreign:call_bridge(exploration_toy_count, _{more: 3}, R), "
+                 "get_dict(pours, R, P)")
+    assert r["P"] == 5
+    host.session = None
 
 
 def test_a_module_shared_by_two_curiosities_is_registered_once_and_a_clash_refused(monkeypatch):
