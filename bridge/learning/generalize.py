@@ -284,10 +284,7 @@ def _doubts(rules: list[GeneralRule], k: int, meaning: Meaning, P: np.ndarray,
             p = float(m)
         else:
             continue
-        holds = p >= 0.5
-        rule = GeneralRule(f"g{len(rules) + len(out)}_{rules[0].expectation}", union,
-                           rules[0].expectation, holds, 0, 0, p if holds else 1 - p, 0)
-        out.append(replace(rule, level=_level(union, holds, rules + out)))
+        out.append(_added(union, p, rules, out))
     return out
 
 
@@ -321,11 +318,19 @@ def _exceptions(rules: list[GeneralRule], bodies: Sequence[tuple[str, ...]], tar
                 or s.verdict(answered) == s.verdict(t)
                 or int(in_support(P, b).sum()) < s.doubt_support):
             continue
-        holds = t >= 0.5
-        rule = GeneralRule(f"g{len(rules) + len(out)}_{rules[0].expectation}", b,
-                           rules[0].expectation, holds, 0, 0, t if holds else 1 - t, 0)
-        out.append(replace(rule, level=_level(b, holds, rules + out)))
+        out.append(_added(b, t, rules, out))
     return out
+
+
+def _added(body: tuple[str, ...], likelihood: float, rules: list[GeneralRule],
+           out: list[GeneralRule]) -> GeneralRule:
+    """The rule for `body` with `likelihood`, numbered after the rules
+    chosen (`rules`, then those added so far, `out`), at its level."""
+    holds = likelihood >= 0.5
+    e = rules[0].expectation
+    rule = GeneralRule(f"g{len(rules) + len(out)}_{e}", body, e, holds, 0, 0,
+                       likelihood if holds else 1 - likelihood, 0)
+    return replace(rule, level=_level(body, holds, rules + out))
 
 
 def _level(body, r_holds: bool, chosen: Sequence[GeneralRule]) -> int:
