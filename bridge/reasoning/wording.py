@@ -64,8 +64,15 @@ def normalised(text: str) -> str:
     text = re.sub(rf"(?<![\w.])[{_MINUS}]\s?(?=\d)", "-", text)             # -10, \u221210
     text = re.sub(r"\bminus\s+(?=\d)", "-", text)
     text = re.sub(r"\bcan't\b|\bcannot\b", "can not", text)
-    text = re.sub(r"\bwon't\b", "will not", text)
-    text = re.sub(r"n't\b|\b(do|does|did|is|are|was|were)nt\b", r"\1 not", text)
+    text = re.sub(r"\bwon'?t\b", "will not", text)
+    # typed without the apostrophe: "doesnt", "im", "ive"; "cant" only beside a pronoun
+    # (to cant a jug is to tilt it)
+    text = re.sub(r"\bcant\b(?= (?:i|it|we|you|they|he|she|this|that)\b)", "can not", text)
+    text = re.sub(r"\b(i|it|we|you|they|he|she|this|that) cant\b", r"\1 can not", text)
+    text = re.sub(r"n't\b|\b(do|does|did|is|are|was|were|has|have|had|could|would|should)nt\b",
+                  r"\1 not", text)
+    text = re.sub(r"\b(i)(m|ve)\b", lambda m: "i " + _CONTRACTED[m.group(2)], text)
+    text = re.sub(r"\bteh\b", "the", text)         # the commonest slip of all
     text = re.sub(r"'(ll|re|m|ve|d)\b", lambda m: " " + _CONTRACTED[m.group(1)], text)
     text = text.replace("%", " percent ")
     text = re.sub(r"'s?\b", "", text)                 # the destination's rim
