@@ -165,7 +165,7 @@ def _print_scene(props: list[str], glosses: bool) -> None:
     from pantarhei.theory.lexicon import load_vocabulary
 
     vocab = load_vocabulary()
-    print(f"understood: {', '.join(props)}")
+    print(f"understood: {', '.join(props) or 'the ordinary pour (nothing said of the scene)'}")
     if glosses:
         for p in props:
             print(f"  {p}: {vocab.propositions[p].gloss}")

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from pantarhei.bridge.reasoning.everyday import Matcher, names
+from pantarhei.bridge.reasoning.seeking import sought, wanting
 
 _STILL = ("destination_still_approach", "destination_still_retreat", "destination_still_settle")
 _ALL_IN = ("liquid_enters_destination",)
@@ -213,7 +214,8 @@ def hear(text: str) -> Heard:
         negations.append(negated)
         goals.extend(n if holds else f"neg({n})" for n in names if n not in
                      {g.removeprefix("neg(").rstrip(")") for g in goals})
-        return take(m, " ".join(subject))
+        # "so nothing spills": its "nothing" is the goal's, not the scene's
+        return take(m, " ".join(w for w in subject if w not in ("nothing", "none", "no")))
 
     def as_asked(m: re.Match) -> str:
         subject = (m.group("subject") or m.group("csubject") or "").split()
@@ -245,11 +247,15 @@ def hear(text: str) -> Heard:
         return take(m)
 
     was_goal = True
+    text, wants = wanting(text)
+    phrases.extend(wants)
     for said, wanted in _WANTING:
         text = said.sub(wanted, text)
     text = _spaced(goal.sub(as_goal, text))
     if goals:
         text = _repeat(more, as_more, text)
+        text, seeking = sought(text)        # "how high should I hold it": a plan's to find
+        phrases.extend(seeking)
     was_goal = False
     text = _repeat(more, as_more, _spaced(pattern.sub(as_asked, text)))
     text = nominal.sub(as_nominal, text)

@@ -158,6 +158,17 @@ def ordinary(tmp_path: Path) -> str:
     return str(f)
 
 
+def test_a_value_asked_for_with_a_goal_is_the_goal_of_the_ordinary_pour(cli, ordinary: str) -> None:
+    # "how high should I hold it": a plan's to find; the goal is heard, the scene is the
+    # ordinary pour, said so, and plan is pointed to
+    r = cli("ask", "how high should I hold it so nothing spills", "--theory", ordinary)
+    assert r.code == 0, r.err
+    assert r.out.splitlines()[0] == "understood: the ordinary pour (nothing said of the scene)"
+    assert "wanted: no_spill" in r.out and "pantarhei plan --goal no_spill" in r.out
+    r = cli("ask", "how high should I hold it", "--theory", ordinary)
+    assert r.code != 0 and "asks for a value" in r.err and "pantarhei plan" in r.err
+
+
 def test_ask_asks_the_question_as_given(cli, ordinary: str) -> None:
     # the ordinary pour's rule r1 needs pour_mid_height, pour_centred, pour_steeply_tilted:
     # a question that leaves them out is not completed with them

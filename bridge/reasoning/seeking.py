@@ -1,0 +1,57 @@
+"""A question that asks for a value with a goal: "how high should I hold it
+so nothing spills", "what's the best tilt so it all goes in", "which tilt
+keeps it in the bowl". The value is a plan's to find, not a scene's to say:
+with a goal said, the words that ask for it are heard (the answer says
+whether the theory expects the goal of the scene said, the ordinary pour
+where nothing else is, and points to `plan` for how); with none, they are
+left for the scene, where they are refused as asking for a value.
+
+"I want the bowl not to move", "I'd like it to stay in the cup": a goal,
+said as "so that the bowl does not move".
+"""
+from __future__ import annotations
+
+import re
+
+#: What a value is asked of: a height, a tilt, a way ...
+_VALUE = (r"(?:height|tilt|tilting|angle|way|speed|distance|position|spot|place|amount|pose"
+          r"|setting|manner)s?")
+_HOW = (r"(?:high|low|far|fast|quick|quickly|slow|slowly|steep|steeply|much|close|near"
+        r"|tilted|full)")
+#: A value that is asked for ("the best height"), not said ("medium height").
+_BEST = (r"(?:best|right|ideal|optimal|safest|correct|perfect|proper|max|maximum|min|minimum"
+         r"|highest|lowest|steepest)")
+_WHO = r"(?:i|we|you|it|they|the robot|one)"
+_ACT = (r"(?:hold|pour|tilt|keep|put|have|place|go|position|use|do|set|angle|raise|lift|move"
+        r"|start|end|tip)")
+_WHAT = r"(?: (?:it|them|the \w+))?(?: (?:from|at|to|up|in))?"
+#: The words that ask for a value.
+_ASKING = re.compile(
+    rf"\b(?:(?:what|which)(?: is| be)?(?: the| a)?(?: {_BEST})?|(?:the |a )?{_BEST}) {_VALUE}"
+    rf"(?: (?:to {_ACT}{_WHAT}|(?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT}"
+    rf"|for (?:it|pouring|the pour)))?(?= |$)"
+    rf"|\bhow(?: (?:very|really))? {_HOW}(?: (?:should|do|can|must|would|could|shall|is) {_WHO}"
+    rf"(?: {_ACT}{_WHAT})?)?(?= |$)"
+    rf"|\bhow (?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT}(?= |$)")
+#: A value said to keep an outcome: "which tilt keeps it in the bowl" (so that it stays in it).
+_KEEPS = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? {_VALUE}) (keeps|will keep|would keep)"
+                    r" (it|them|the \w+) (in(?: the \w+)?|still|upright|steady|in place)\b")
+#: Wanting an outcome: "I want the bowl not to move", "we'd like it to stay in".
+_WANT = re.compile(r"\b(?:i|we) (?:want|need|would like|wish)(?: for)? (it|them|the (?!source\b)[a-z]+)"
+                   r"(?= (?:not |never )?to\b)")
+
+
+def wanting(text: str) -> tuple[str, tuple[str, ...]]:
+    """`text` with its goals said as "so that ...", as outcomes.hear reads
+    them, and the words of wanting it rewrote ("i want")."""
+    said = tuple(m.group(2) for m in _KEEPS.finditer(text))
+    text = _KEEPS.sub(r"\1 so that \3 stays \4", text)
+    said += tuple(m.group(0)[:m.start(1) - m.start()].strip() for m in _WANT.finditer(text))
+    return _WANT.sub(r"so that \1", text), said
+
+
+def sought(text: str) -> tuple[str, tuple[str, ...]]:
+    """`text` without the words that ask for a value, and those words
+    (to be called only where a goal is said)."""
+    found = [m.group(0).strip() for m in _ASKING.finditer(text)]
+    return _ASKING.sub(" ", text), tuple(found)
