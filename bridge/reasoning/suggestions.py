@@ -86,6 +86,9 @@ HINTS: tuple[tuple[str, str], ...] = (
                                                             'bowl", "very high" or a height ("20 cm above")'),
     (r"^off(?: |-)?cent", 'off centre: how far? say "near the rim", "from the side" or "offset '
                           'sideways"'),
+    (r"\b(?:left|right)", 'left or right: the vocabulary\'s offset names no side: say "offset '
+                           'sideways", "from the side" or "in line with the bowl"'),
+    (r"^sideways$", 'sideways: offset or rolled? say "offset sideways" or "tilted sideways"'),
     (r"^a (?:little|bit|tad)$", 'a little: of what? say "a little liquid", "slightly tilted", or '
                                'where ("near the rim", "from the side", "offset sideways")'),
     (r"^(?:drop|let)", 'dropping: the source is held throughout the pour; the vocabulary says '

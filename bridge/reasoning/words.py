@@ -224,6 +224,11 @@ PHRASES: tuple[tuple, ...] = (
                  r"re:\b(?:directly|straight|right) (?:above|over)(?= (?:the )?(?:destination|bowl"
                  r"|centre|center|middle)\b)")),
     ("far", ("far off", "distant", "a long way", "from a distance", "at a distance")),
+    # to the left or right: the vocabulary's offset names no side (a side said is refused)
+    # (but "from the right side" is from the side)
+    (UNCLEAR, (r"re:\b(?:to|on|from|at|towards?) (?:(?:the|your|my|its) (?:left|right)|left)\b"
+               r"(?!(?:[- ]hand)? side\b)|\b(?:left|right)wards?\b",)),
+    ("side", (r"re:\b(?:left|right)(?:[- ]hand)? side\b",)),
     ("offset sideways", ("offset to the side", "offset to one side")),
     ("sideways", ("lateral", "laterally", "sidewise")),
     ("side", ("off to one side", "off to the side", "to one side")),
