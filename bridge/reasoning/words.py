@@ -307,7 +307,7 @@ FILLERS = frozenset("""
     what which how why when where whether if happen happens would will could should can may
     might must do does did is are was were be been being i we you it they me my our your its
     this that these those there here so as just really quite rather too also still only
-    even keep hold turn make let use try get go put set move while during into onto out up down again
+    even keep hold turn make let use uses used using try get go put set move while during into onto out up down again
     like fully completely totally entirely absolutely pretty fairly somewhat
     anything something everything outcome hedge instead
     held robot arm gripper hand
