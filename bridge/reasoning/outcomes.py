@@ -54,7 +54,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"bump\w*|hit(?:s|ting)?|touch\w*|collid\w*|crash\w*|knock\w*|clip(?:s|ped)?|strike\w*"
      r"|bonk\w*|bang\w*|intersect\w*|clash\w*|graz(?:e|es|ed|ing)|scrap(?:e|es|ed|ing)|nudg\w*"
      r"|smash\w*|whack\w*|(?:run|runs|ran|running) into|(?:come|comes|came) into contact"
-     r"|make contact|makes contact", ("source_clear",), True),
+     r"|make contact|makes contact|(?:any|some) contact"
+     r"|(?<=there )(?:any |some )?contact|(?<=there be )(?:any |some )?contact",   # "is there contact"
+     ("source_clear",), True),
     (r"(?:stay|stays|keep|keeps|be|is)? ?clear(?: of)?", ("source_clear",), False),
     (r"(?:come|comes|coming|came|get|gets|pour|pours|flow|flows|run|runs|drain\w*) out"
      r"|empt(?:y|ies|ied)(?: out)?|leav(?:e|es|ing) the|exit\w*", ("liquid_leaves_source",), False),
@@ -84,7 +86,7 @@ _HOLDING = {"robot", "arm", "gripper", "hand"}
 _REST = ("at all times|all the time|the whole time|at any point|at any time|throughout|on|onto|over|out|of|in|into|inside|outside|the|a|an|table|floor|counter|worktop|top|"
          "ground|place|everywhere|anywhere|at|all|any|anything|it|its|liquid|water|bowl|cup|glass|"
          "destination|source|target|container|rim|edge|sides?|much|too|even|ever|really|very|"
-         "up|down|off|away|again|then|across|along|around")
+         "up|down|off|away|again|then|across|along|around|against|between")
 #: How much of the liquid an outcome is asked of ("does most of it spill"), or its odds ("is
 #: the risk of spilling high"): the outcome's words, not the scene's ("some of it" is no
 #: some_liquid).
