@@ -88,6 +88,8 @@ HINTS: tuple[tuple[str, str], ...] = (
                           'sideways"'),
     (r"\b(?:left|right)", 'left or right: the vocabulary\'s offset names no side: say "offset '
                            'sideways", "from the side" or "in line with the bowl"'),
+    (r"^(?:tilt|tip|angl|inclin|lean)\w*(?: \w+)*? (?:a lot|lots|loads|heaps)$",
+     'a lot: tilted how far? say "tilted halfway", "steeply tilted" or "upside down"'),
     (r"^sideways$", 'sideways: offset or rolled? say "offset sideways" or "tilted sideways"'),
     (r"^a (?:little|bit|tad)$", 'a little: of what? say "a little liquid", "slightly tilted", or '
                                'where ("near the rim", "from the side", "offset sideways")'),

@@ -87,6 +87,8 @@ PHRASES: tuple[tuple, ...] = (
                r"re:\b(?:more|less|fewer) than\b(?: (?:before|usual|normal|that|halfway"
                r"|half way|half))?",
                r"re:\b(?:at (?:least|most)|past|beyond|up to|no (?:more|less) than)(?= -?\d)")),
+    # tilted a lot: halfway, steeply or upside down?
+    (UNCLEAR, (r"re:\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:a lot|lots|loads|heaps)\b",)),
     # tilting has no speed in the vocabulary: how far, not how fast
     (UNCLEAR, (r"re:\b(?:tilt|tip|rotat|turn)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
                r" (?:slow(?:ly|er)?|fast(?:er)?|quick(?:ly|er)?|rapidly|gradually|steadily)\b",
