@@ -12,7 +12,9 @@ about what the person or the robot does ("do I tip the cup") is no
 outcome. A goal said with the scene ("without spilling", "so that it all
 goes in", "so that the cup does not touch the bowl") is what the person
 wants: an expectation that should hold (or, rarely, fail), for the answer
-to say whether the theory expects it and to point to `plan` for how.
+to say whether the theory expects it and to point to `plan` for how; a
+clause joined to a goal by "but" is wanted too ("so it pours out but the
+bowl does not tip": not a source held upright).
 
 `hear(text)` takes normalised text (wording.normalised) and gives the
 expectations asked, the goals as literals ("no_spill", "neg(no_spill)"),
@@ -255,6 +257,12 @@ def hear(text: str) -> Heard:
         text = said.sub(wanted, text)
     text = _spaced(goal.sub(as_goal, text))
     if goals:
+        # "so it pours out but the bowl does not tip": what follows "but" is wanted too
+        m = re.search(r"\boutcome but (?:also )?", text)
+        if m:
+            trial = f"{text[:m.start()]}outcome so that {text[m.end():]}"
+            wanted_too = _spaced(goal.sub(as_goal, trial))
+            text = wanted_too if wanted_too != trial else text
         text = _repeat(more, as_more, text)
         text, seeking = sought(text)        # "how high should I hold it": a plan's to find
         phrases.extend(seeking)
