@@ -175,14 +175,17 @@ bad(Check, Args) :-
     check_message(Check, Args, M),
     throw(bad_fact(M)).
 
-% check_text(+Pos, +Term, +Text, +Where-Depth): Term is written in Text as
-% the language writes it (an unquoted name, a decimal integer, "..." with
-% the three escapes, name(...) without layout before the parenthesis),
-% nested at most nesting_at_most/1 deep (Depth: the terms it lies in).
+% check_top(+Term): Term, as read, is no directive and no rule (a
+% variable is check_text/4's to say).
 check_top(Term) :-
     (   var(Term)
-    ->  true                                    % check_text/4 says so
-    ;   Term = (:- _)
+    ->  true
+    ;   check_clause(Term)
+    ).
+
+% check_clause(+Term): Term (bound) is no directive and no rule.
+check_clause(Term) :-
+    (   Term = (:- _)
     ->  bad(directive)
     ;   Term = (?- _)
     ->  bad(directive)
@@ -191,6 +194,10 @@ check_top(Term) :-
     ;   true
     ).
 
+% check_text(+Pos, +Term, +Text, +Where-Depth): Term is written in Text as
+% the language writes it (an unquoted name, a decimal integer, "..." with
+% the three escapes, name(...) without layout before the parenthesis),
+% nested at most nesting_at_most/1 deep (Depth: the terms it lies in).
 check_text(_, T, _, _) :-
     var(T), !,
     bad(variable).
@@ -305,13 +312,10 @@ quoted_codes(E, E) --> [].
 check_fact(Term) :-
     (   var(Term)
     ->  bad(variable)
-    ;   Term = (:- _)
-    ->  bad(directive)
-    ;   Term = (?- _)
-    ->  bad(directive)
-    ;   Term = (_ :- _)
-    ->  bad(rule_not_fact)
-    ;   Term = [_|_]
+    ;   true
+    ),
+    check_clause(Term),
+    (   Term = [_|_]
     ->  bad(list)
     ;   Term == []
     ->  bad(list)
