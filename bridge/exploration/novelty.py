@@ -217,11 +217,9 @@ def predict(host: Host, request: dict) -> dict:
     entries = request["antecedents"]
     seed, batch, mode = int(request["seed"]), int(request["batch"]), str(request["qualify"])
     key = (len(s.params), len(entries), seed, batch, mode)
-    # what the last estimate knew: (what it was computed from, Known)
-    if s.memo.get("known", (None,))[0] != key:
-        s.memo["known"] = (key, known(s.params, s.scores, s.verdicts(entries, mode), batch,
-                                      seed, shuffle_seed(seed, 0, len(s.params))))
-    k = s.memo["known"][1]
+    # what the last estimate knew, kept while what it was computed from is the same
+    k = s.kept("known", key, lambda: known(s.params, s.scores, s.verdicts(entries, mode), batch,
+                                          seed, shuffle_seed(seed, 0, len(s.params))))
     level = float(request["novelty"])
     found = novelties(k, [[str(p) for p in props] for props in request["candidates"]])
     return {"novelty": [f["novelty"] for f in found],

@@ -91,14 +91,21 @@ class Session:
     #: Per antecedent: ((weights, ridge, shuffles, seed), its tested planes).
     test_cache: dict[str, tuple[tuple[np.ndarray, float, int, int], Tested | None]] = \
         field(default_factory=dict)
-    #: What a curiosity's handlers keep between requests, each under a key
-    #: of its own (as what it was computed from and the model of the pours).
-    memo: dict[str, Any] = field(default_factory=dict)
+    #: What a curiosity's handlers keep between requests (`kept`), each
+    #: under a name of its own: (what it was computed from, the value).
+    memo: dict[str, tuple[Any, Any]] = field(default_factory=dict)
     started: float = field(default_factory=time.monotonic)
     bar: Bar | None = None
     timings: dict[str, float] = field(default_factory=dict)
     #: Seconds since the start after each explored antecedent (kept out of the trace).
     elapsed: list[float] = field(default_factory=list)
+
+    def kept(self, name: str, key: Any, make: Callable[[], Any]) -> Any:
+        """What a curiosity's handler keeps under `name`: the value made
+        from `key` last time, or `make()` when the key has changed."""
+        if name not in self.memo or self.memo[name][0] != key:
+            self.memo[name] = (key, make())
+        return self.memo[name][1]
 
     @property
     def valid(self) -> np.ndarray:

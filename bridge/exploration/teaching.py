@@ -322,13 +322,12 @@ def teach(host: Host, request: dict) -> dict:
     `iteration` to explore at as the request says."""
     s = host.need_session()
     seed = int(request["seed"])
-    key = (fitted_on(int(s.valid.sum())), seed)
-    # the model of the pours: ((pours it is fitted on, seed), Meaning)
-    if s.memo.get("teacher", (None,))[0] != key:
-        s.memo["teacher"] = (key, model(s.params, s.scores, seed))
+    # the model of the pours, kept while the pours it is fitted on and the seed are the same
+    meaning = s.kept("teacher", (fitted_on(int(s.valid.sum())), seed),
+                     lambda: model(s.params, s.scores, seed))
     weights = Weights(float(request["uncertainty"]), float(request["doubt"]),
                       float(request["newness"]))
     found = teaching(s.params, s.scores, [e["antecedent"] for e in request["antecedents"]],
                      request["candidates"], weights, int(request["batch"]), seed,
-                     int(request["iteration"]), s.memo["teacher"][1])
+                     int(request["iteration"]), meaning)
     return {"value": found.value}
