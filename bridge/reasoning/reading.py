@@ -34,7 +34,8 @@ question in five steps:
    question that says nothing of a pour is refused.
 
 A word mistyped is read as the one word it is near (spelling.py: "hihg"
-is high) and said back. Nothing is dropped silently: an everyday word is
+is high, "teh" the) and said back, as is a contraction typed without its
+apostrophe (wording.py: "im" is I'm). Nothing is dropped silently: an everyday word is
 said back with how it was read (`Reading.notes`), any other word read as nothing is in
 `Reading.ignored`, for `ask` to show on its `understood:` line.
 """
@@ -52,7 +53,7 @@ from pantarhei.bridge.reasoning.outcomes import FOLLOWS, follows, hear
 from pantarhei.bridge.reasoning.quantities import read_numbers
 from pantarhei.bridge.reasoning.spelling import corrected
 from pantarhei.bridge.reasoning.stages import MARKER_STEMS, MOVE, POSE, SAME, same_at_the_end, stages
-from pantarhei.bridge.reasoning.wording import Token, names_written, normalised, stem, tokens as words_of
+from pantarhei.bridge.reasoning.wording import Token, names_written, normalising, stem, tokens as words_of
 from pantarhei.bridge.reasoning.suggestions import hints as phrasings, misspelt
 from pantarhei.bridge.reasoning.words import FILLERS, UNCLEAR, rewrites
 from pantarhei.theory.lexicon import load_vocabulary
@@ -150,15 +151,15 @@ def read_question(question: str) -> Reading:
     A question refused is read again with its mistyped words read as the
     words meant (spelling.py), if it has any; refused again, the first
     refusal stands."""
-    text = normalised(question)
+    text, respelt = normalising(question)
     try:
-        return _read_text(question, text, ())
+        return _read_text(question, text, respelt)
     except UserError:
         fixed, typed = corrected(text)
         if not typed:
             raise
         try:
-            return _read_text(question, fixed, typed)
+            return _read_text(question, fixed, respelt + typed)
         except UserError:
             pass
         raise

@@ -7,7 +7,8 @@ A word is read as another only when nothing else is near: the reader
 does not know it, an English dictionary does not hold it (pyspellchecker's
 word list, loaded only when a question holds a word the reader does not
 know), and one word the reader reads is one edit away (a letter left
-out, added, changed, or two swapped), or, for a word of six letters or
+out, added, changed, or two swapped; for a word of three letters, only
+two swapped: "teh" is the), or, for a word of six letters or
 more with none one edit away, two edits; where several are, a word that
 says something before a word of the question's frame ("havy": heavy, not
 have), and of those the one far commoner in English than the others
@@ -35,8 +36,10 @@ from pantarhei.bridge.reasoning.stages import MARKERS
 from pantarhei.bridge.reasoning.words import FILLERS, PHRASES
 from pantarhei.theory.lexicon import load_vocabulary
 
-#: The shortest word read as another: "tlt" could be too many things.
+#: The shortest word read as another by any one edit: "tlt" could be too many things.
 _SHORTEST = 4
+#: The shortest word read as another with two of its letters swapped ("teh": the).
+_SHORTEST_SWAPPED = 3
 #: The shortest word read as one two edits away.
 _SHORTEST_TWO = 6
 #: How many times more common in English the word read must be than the next one near
@@ -77,7 +80,7 @@ def corrected(text: str) -> tuple[str, tuple[str, ...]]:
     spill"); see the module's docstring."""
     whole, parts, frame = _words()
     unknown = [w for w in dict.fromkeys(re.findall(r"(?<![\w-])[a-z]+(?![\w-])", text))
-               if len(w) >= _SHORTEST and w not in whole and w not in parts]
+               if len(w) >= _SHORTEST_SWAPPED and w not in whole and w not in parts]
     if not unknown:
         return text, ()
     english = _dictionary()
@@ -88,6 +91,11 @@ def corrected(text: str) -> tuple[str, tuple[str, ...]]:
             meant[w] = squeezed
             continue
         if w in english:
+            continue
+        if len(w) < _SHORTEST:           # "teh": only two letters swapped
+            swapped = {w[:k] + w[k + 1] + w[k] + w[k + 2:] for k in range(len(w) - 1)} & whole
+            if len(swapped) == 1:
+                meant[w] = swapped.pop()
             continue
         targets = {t for t in english.edit_distance_1(w) if t in whole or (t in parts and t in english)}
         if not targets and len(w) >= _SHORTEST_TWO:

@@ -10,6 +10,12 @@ and "minus 10 degrees" are one token "-10"; a hyphen between two numbers
 naming what would be read. A number said with tilting and no unit is an
 angle ("tilt it 45"), and one said "tilted back" is negative ("tilted back
 by 20 degrees" is -20 degrees, read with the words "tilted back").
+
+A word written otherwise than it is read is said back: a contraction typed
+without its apostrophe ("im", "doesnt", "wont") is read as with it, and
+`normalising` gives, beside the text, what `ask` says of each ("im: read
+as I'm"); spelling.py says back the words it reads as others ("teh: read
+as the").
 """
 from __future__ import annotations
 
@@ -56,23 +62,50 @@ class Token:
     said_back: str = ""   # what `ask` says of an everyday word ("read as an ordinary liquid ...")
 
 
+#: Contractions typed without their apostrophe, as written -> with it: each read as with
+#: it and said back. Not the words of their own ("its", "well", "were", "ill", "hell",
+#: "shell", "id"); "cant" only beside a pronoun (to cant a jug is to tilt it).
+_BARE = {**{f"{w}nt": f"{w}n't" for w in ("do", "does", "did", "is", "are", "was", "were", "has",
+                                           "have", "had", "could", "would", "should", "must",
+                                           "need")},
+         "wont": "won't", "im": "i'm", "ive": "i've", "youre": "you're", "youve": "you've",
+         "youll": "you'll", "theyre": "they're", "theyve": "they've", "theyll": "they'll",
+         "weve": "we've", "itll": "it'll", "thatll": "that'll"}
+_PRONOUNS = "i|it|we|you|they|he|she|this|that"
+
+
 def normalised(text: str) -> str:
     """`text` in lower case with its apostrophes, negative contractions,
     signs, degrees and speeds written one way."""
+    return normalising(text)[0]
+
+
+def normalising(text: str) -> tuple[str, tuple[str, ...]]:
+    """`text` normalised, and what is said back of each word of it read as
+    another ("doesnt: read as doesn't"), in the order written."""
     text = text.lower().replace("\u2019", "'")
+    said: dict[str, None] = {}
+
+    def respelt(written: str) -> str:
+        meant = _BARE.get(written, "can't")
+        shown = "I" + meant[1:] if meant.startswith("i'") else meant
+        said.setdefault(f"{written}: read as {shown}")
+        return meant
+
+    text = re.sub(rf"\b(?:{'|'.join(_BARE)})\b", lambda m: respelt(m.group(0)), text)
+    text = re.sub(rf"\bcant\b(?= (?:{_PRONOUNS})\b)", lambda m: respelt(m.group(0)), text)
+    text = re.sub(rf"\b((?:{_PRONOUNS}) )cant\b", lambda m: m.group(1) + respelt("cant"), text)
+    return _normalised(text), tuple(said)
+
+
+def _normalised(text: str) -> str:
+    """normalised's `text`, lower case, its bare contractions written with their apostrophe."""
     text = re.sub(rf"(\d)\s*[{_MINUS}]\s*(?=\d)", r"\1 to ", text)          # 10-20 cm: a range
     text = re.sub(rf"(?<![\w.])[{_MINUS}]\s?(?=\d)", "-", text)             # -10, \u221210
     text = re.sub(r"\bminus\s+(?=\d)", "-", text)
     text = re.sub(r"\bcan't\b|\bcannot\b", "can not", text)
-    text = re.sub(r"\bwon'?t\b", "will not", text)
-    # typed without the apostrophe: "doesnt", "im", "ive"; "cant" only beside a pronoun
-    # (to cant a jug is to tilt it)
-    text = re.sub(r"\bcant\b(?= (?:i|it|we|you|they|he|she|this|that)\b)", "can not", text)
-    text = re.sub(r"\b(i|it|we|you|they|he|she|this|that) cant\b", r"\1 can not", text)
-    text = re.sub(r"n't\b|\b(do|does|did|is|are|was|were|has|have|had|could|would|should)nt\b",
-                  r"\1 not", text)
-    text = re.sub(r"\b(i)(m|ve)\b", lambda m: "i " + _CONTRACTED[m.group(2)], text)
-    text = re.sub(r"\bteh\b", "the", text)         # the commonest slip of all
+    text = re.sub(r"\bwon't\b", "will not", text)
+    text = re.sub(r"n't\b", " not", text)
     text = re.sub(r"'(ll|re|m|ve|d)\b", lambda m: " " + _CONTRACTED[m.group(1)], text)
     text = text.replace("%", " percent ")
     text = re.sub(r"'s?\b", "", text)                 # the destination's rim
