@@ -5,8 +5,9 @@ words.py brings everyday phrases to them). A stage word speaks for its
 clause from there on, and for the words of its clause before it; a clause
 without one goes on in the stage before (pouring, at first). A pose said
 while moving in is the start pose, while moving away the end pose.
-"Leave it tilted" and "leave it there" end as the pour was:
-same_at_the_end."""
+"Leave it tilted" and "leave it there" end as the pour was, and "move
+in low" (a path in, no "from") pours as low as it came in, unless the
+pour's height is said ("come in high and pour low"): same_at_the_end."""
 from __future__ import annotations
 
 from pantarhei.bridge.errors import UserError
@@ -48,17 +49,26 @@ def _next(word: str, stage: str) -> str:
 
 
 #: Words words.py writes for "leave it tilted" and "leave it there": the end
-#: pose keeps the pour's tilt, or its whole pose.
-SAME = {"same_tilt": ("tilt",), "same_pose": ("height", "alignment", "tilt", "roll")}
+#: pose keeps the pour's tilt, or its whole pose; and for "move in low": the pouring
+#: pose is as high as the move in (the start's height), unless the pour's is said.
+SAME = {"same_tilt": ("tilt",), "same_pose": ("height", "alignment", "tilt", "roll"),
+        "same_height_in": ("height",)}
 
 
 def same_at_the_end(tokens: list[Token], scene: list[str], vocab) -> list[str]:
-    """The end pose's propositions that "leave it tilted" and "leave it
-    there" say: the pour's, of its tilt or of its whole pose; UserError
-    when the pour's are not said."""
+    """The propositions that "leave it tilted" and "leave it there" say of
+    the end pose (the pour's, of its tilt or of its whole pose; UserError
+    when the pour's are not said), and that "move in low" says of the
+    pouring pose (the start's height, where the pour's is not said)."""
     out: list[str] = []
     for t in tokens:
         if t.word not in SAME:
+            continue
+        if t.word == "same_height_in":
+            said = {vocab.propositions[n].dimension for n in scene}
+            if "pour_height" not in said:
+                out += [f"pour_{n.removeprefix('start_')}" for n in scene
+                        if vocab.propositions[n].dimension == "start_height"]
             continue
         dims = {f"pour_{d}" for d in SAME[t.word]}
         copied = [f"end_{n.removeprefix('pour_')}" for n in scene

@@ -179,6 +179,14 @@ PHRASES: tuple[tuple, ...] = (
     ("afterwards", (r"re:\bafter(?= *(?:$|[,;.!?]))",)),
     ("before pour", (r"re:\bbefore(?= *(?:$|[,;.!?]))",)),
     ("approach ; pour", (rf"re:\bbefore pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",)),
+    # a path in at a height ("bring it in low", "come in low", "approach high"): the start and
+    # the pouring pose both there (stages.py), unless the pour's height is said; "move in
+    # from high up" says only where it starts
+    ("approach same_height_in", (r"re:\b(?:(?:mov(?:e|es|ed|ing)|bring(?:s|ing)?|brought|com(?:e|es|ing)"
+                                 r"|came|swing(?:s|ing)?|swung|lower(?:s|ed|ing)?)(?: it| the \w+)? in"
+                                 r"|approach(?:es|ed|ing)?)\b(?= (?:(?:slowly|fast|quickly|gently|carefully|steadily)(?: and)? )?"
+                                 r"(?:very |really |quite |fairly |nice and )?"
+                                 r"(?:low|high)\b(?! (?:friction|mass|weight|bounc)))",)),
     ("approach", (r"re:\b(?:mov(?:e|es|ed|ing)|bring(?:s|ing)?|brought) (?:it|the \w+) (?:in|over)\b",
                   "before pour", "move to the pour pose", "move into the pour pose",
                   "move in", "come in")),
