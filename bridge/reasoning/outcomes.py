@@ -26,15 +26,26 @@ import re
 from dataclasses import dataclass
 from functools import lru_cache
 
-from pantarhei.bridge.reasoning.everyday import Matcher, names
+from pantarhei.bridge.reasoning.everyday import Matcher, alternation, names, sections
 from pantarhei.bridge.reasoning.seeking import sought, wanting
 
 _STILL = ("destination_still_approach", "destination_still_retreat", "destination_still_settle")
 _ALL_IN = ("liquid_enters_destination",)
 
+#: Where liquid that leaves the destination leaves it by: its rim, or the destination
+#: named ("out of the mug": everyday.txt's bowls); _filled() writes the names in.
+_OUT_OF = "(?:DESTINATION)"
+#: Verbs of liquid thrown about: thrown over the rim or out of the destination, it entered
+#: and did not stay ("splash out of the bowl": liquid_remains_in_destination and no_spill).
+_THROWN = (r"spill\w*|spilt|splash\w*|splatter\w*|splat\w*|slop\w*|slosh\w*|spray\w*|spurt\w*"
+           r"|squirt\w*|escap\w*|spew\w*|gush\w*")
+
 #: (verb phrase, the expectations it speaks of, whether it happening makes them fail)
 OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
-    (r"overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*) over(?: the (?:rim|edge|top|side)s?)?"
+    (rf"(?:{_THROWN}) (?:back |right |straight |all )?(?:over|out of|out over)(?= (?:the |a |an |my "
+     rf"|your |its |their |this |that )?(?!source\b)(?:[a-z]+ )?{_OUT_OF}\b)"
+     r"|overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*|slop\w*|splash\w*|splatter\w*) over"
+     r"(?: the (?:rim|edge|top|side)s?)?"
      r"|(?:bounc|jump|leap|hop)\w* (?:over|out(?: of)?)|flood\w*"
      r"|(?:go|goes|going|went|get|gets|come|comes|came) over(?= the (?:rim|edge|top|side|brim|lip)s?\b)", ("liquid_remains_in_destination", "no_spill"), True),
     (r"spill\w*|spilt|splash\w*|splatter\w*|slosh\w*|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
@@ -120,7 +131,7 @@ class Heard:
 
 @lru_cache(maxsize=None)
 def _patterns() -> tuple[re.Pattern, ...]:
-    verbs = "|".join(f"(?P<v{k}>{v})" for k, (v, _, _) in enumerate(OUTCOMES))
+    verbs = "|".join(f"(?P<v{k}>{_filled(v)})" for k, (v, _, _) in enumerate(OUTCOMES))
     # (not holding another auxiliary: "do you think it will spill" asks "will it spill")
     subject = rf"(?P<subject>(?: (?!(?:if|when|while|not|{_MODALS})\b)[a-z]+){{0,5}}?)"
     # the odds of an outcome: "what is the chance the bowl tips", "the risk of spilling"
@@ -148,9 +159,23 @@ def _patterns() -> tuple[re.Pattern, ...]:
                       rf"(?:{verbs})\b{_END}")
     # an outcome said first, with no word that asks: "spills when poured from high?", "sloshing
     # over the rim if tilted steeply?", "pour high, spill or not"
-    bare = re.compile(rf"(?:^|(?<=, ))(?:(?P<v0>{OUTCOMES[0][0]})|(?P<v1>spill\w*|spilt|splash\w*|drip\w*"
+    bare = re.compile(rf"(?:^|(?<=, ))(?:(?P<v0>{_filled(OUTCOMES[0][0])})|(?P<v1>spill\w*|spilt|splash\w*|drip\w*"
                       rf"|leak\w*|slosh\w*|dribbl\w*)){_END}(?: or not)?(?= (?:if|when|while)\b| *[?.!,]* *$)")
     return asked, nominal, goal, more, bare
+
+
+@lru_cache(maxsize=None)
+def _destinations() -> str:
+    """What liquid leaves the destination by: its rim, or the destination by
+    a name of everyday.txt's bowls (those poured from are the source)."""
+    bowls = [p for s in sections() if s.words == "bowl" for p in s.phrases]
+    return alternation([*bowls, "destination", "bowl", "target", "container", "rim", "edge",
+                        "top", "side", "brim", "lip"])
+
+
+def _filled(verb: str) -> str:
+    """An OUTCOMES verb phrase with the destination's names written in."""
+    return verb.replace(_OUT_OF, f"(?:{_destinations()})") if _OUT_OF in verb else verb
 
 
 #: Why a question of what follows an outcome is refused, and what would be read.
@@ -161,13 +186,30 @@ FOLLOWS = ("asks what follows an outcome, which the vocabulary cannot say; it an
 def follows(text: str) -> bool:
     """Whether normalised `text` asks what follows an outcome ("what if the
     milk spills?"), which the vocabulary cannot say."""
-    verbs = "|".join(f"(?:{v})" for v, _, _ in OUTCOMES)
+    verbs = "|".join(f"(?:{_filled(v)})" for v, _, _ in OUTCOMES)
     return bool(re.search(rf"\b(?:what if|suppose|imagine)(?: [a-z]+){{0,4}}? (?:{verbs})\b", text))
 
 
 def _which(m: re.Match) -> tuple[tuple[str, ...], bool]:
     k = next(k for k in range(len(OUTCOMES)) if m.groupdict().get(f"v{k}"))
+    if k == 0 and _out_of_the_source(m.string, m.end("v0")):
+        return OUTCOMES[1][1], OUTCOMES[1][2]
     return OUTCOMES[k][1], OUTCOMES[k][2]
+
+
+def _out_of_the_source(text: str, at: int) -> bool:
+    """Whether the bowl that liquid is thrown out of, named in `text` from
+    `at` on, is the one poured from ("does coffee splash out of a mug
+    tilted halfway", "pour from the mug: does it splash out of the mug"):
+    a spill, not liquid leaving the destination."""
+    said = re.match(rf" (?:the |a |an |my |your |its |their |this |that )?(?:[a-z]+ )?"
+                    rf"(?P<noun>{_destinations()})\b", text[at:])
+    if said is None:
+        return False
+    noun = re.escape(said.group("noun"))
+    return bool(re.search(rf"\bfrom (?:the |a |an |my |your |this |that )?(?:[a-z]+ )?{noun}\b"
+                          rf"|\b{noun} (?:is |being |that is |held )?(?:tilted|tipped|angled|inclined"
+                          rf"|upside|turned|held)\b", text))
 
 
 def _acts(subject: list[str], names: tuple[str, ...]) -> bool:

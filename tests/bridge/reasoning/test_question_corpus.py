@@ -257,7 +257,7 @@ HEARD = {
     # "end up" says where an outcome leads, never the end pose raised
     'pour below the rim: does the source end up hitting the bowl?': (['pour_below_rim'],
                                                                      ['source_clear'], []),
-    'will the soup slop over the edge of the bowl?': ([], ['no_spill'], []),
+    'will the soup slop over the edge of the bowl?': ([], ['liquid_remains_in_destination', 'no_spill'], []),
     'will the liquid bounce out of the bowl?': ([], ['liquid_remains_in_destination', 'no_spill'], []),
     'will the mug fall over if I pour cream into it?': ([], ['destination_upright'], []),
     'will the jug knock the bowl over?': ([], ['destination_upright'], []),
