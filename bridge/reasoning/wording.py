@@ -112,6 +112,11 @@ def _normalised(text: str) -> str:
     text = re.sub(r"(\d)\s*\u00b0", r"\1 degrees ", text)  # 45\u00b0
     text = re.sub(r"(\d)\s*(?:\"|\u2033)(?=\s|$)", r"\1 inches ", text)   # 3" (inches), 1\u2032 (feet)
     text = re.sub(r"(\d)\s*\u2032(?=\s|$)", r"\1 feet ", text)
+    # a quantity named before its number: "height: 15 cm", "tilt = 45 deg"
+    text = re.sub(r"(?<=[a-z])\s*[:=]\s*(?=[-\u2212]?\d)", " ", text)
+    # "5in", "5 in above": inches (not "pour 5 in the bowl")
+    text = re.sub(r"(\d)(?:in|\s+in(?= (?:above|below|over|under|up|high|off|from|away|to the"
+                  r"|higher|lower|sideways|offset)\b|\s*(?:[,;.!?)]|$)))\b", r"\1 inches", text)
     # tilted back by an angle: the angle back, negative ("tilted back 20 degrees")
     text = re.sub(r"\b((?:tilt|tip|lean)\w*(?: (?:it|the \w+))?) back(?:wards?)?(?: (?:by|at|to|about|around))*"
                   r" (\d+(?:\.\d+)?)(?= ?(?:degrees?|degs?)?\b(?! ?[-\d]))", r"\1 back at -\2", text)

@@ -274,6 +274,10 @@ PHRASES: tuple[tuple, ...] = (
     # lifted straight up: raised, not righted
     ("raise", (r"re:\b(?:lift|lifts|lifted|lifting|rais(?:e|es|ed|ing)|mov(?:e|es|ed|ing)|bring|brings"
                r"|brought|pull(?:s|ed|ing)?)(?: it| the \w+| them)? straight up\b",)),
+    # a distance named by its direction is a length, never how the source is tilted:
+    # "vertical distance 10 cm" a height, "horizontal distance 15 cm" the distance to the side
+    ("height", (r"re:\bvertical(?:ly)? (?:distance|gap|separation|spacing|clearance|offset)\b",)),
+    ("distance", (r"re:\bhorizontal(?:ly)? (?:distance|gap|separation|spacing|clearance)\b",)),
     ("upright", ("vertical", "straight up")),
     ("tilted", ("angled", "inclined")),
     ("steeply", ("sharply",)),
