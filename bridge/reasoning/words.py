@@ -68,8 +68,11 @@ PHRASES: tuple[tuple, ...] = (
                r"re:(?:(?<=\ba )|(?<=\bthe ))(?:very )?(?:low|high)(?= bowl\b)")),
     # way above the bowl: high, or very high?
     (UNCLEAR, (r"re:\b(?:way|far|well) (?:up )?(?:above|over)(?= (?:the |a |it\b|hedge ))",)),
-    # a length said "up" is a height above the destination ("hold it 20 cm up")
-    ("above", ("re:(?:" + "|".join(rf"(?<=\d {u} )" for u in _LENGTHS) + r")\bup\b",)),
+    # a length said "up" is a height above the destination ("hold it 20 cm up"), and so is
+    # one said "over" it ("from 25 cm over the centre"; not "10 cm over to the side")
+    ("above", ("re:(?:" + "|".join(rf"(?<=\d {u} )" for u in _LENGTHS) + r")\bup\b",
+               "re:(?:" + "|".join(rf"(?<=\d {u} )" for u in _LENGTHS) + r")\bover\b(?! (?:to|there"
+               r"|here|by|from|towards?|sideways)\b)")),
     # a comparison with the rim is where it puts the source: "higher than the rim" is above it
     # (as "above the bowl": the ordinary pour), "slightly higher than the rim" just above it
     # (low), "lower than the rim" below it; with a number, the number's ("2 cm higher than
@@ -221,10 +224,11 @@ PHRASES: tuple[tuple, ...] = (
     # (a length before it says how far over: "5 cm over the rim" is above it, quantities.py's)
     ("near the rim", (r"re:\b(?<!cm )(?<!mm )(?<! m )(?<!inch )(?<!inches )(?<!centimetre )"
                       r"(?<!centimetres )(?<!centimeter )(?<!centimeters )(?<!millimetres )"
-                      r"(?<!millimeters )(?<!feet )(?<!foot )over the (?:destination |bowl )?rim\b",
-                      "at the [destination|bowl] rim",
-                      "from the [destination|bowl] rim",
-                      "by the [destination|bowl] rim", "close to the [destination|bowl] rim")),
+                      r"(?<!millimeters )(?<!feet )(?<!foot )over (?:the |its |their |this |that )?"
+                      r"(?:destination |bowl )?rim\b",
+                      "at [the|its] [destination|bowl] rim",
+                      "from [the|its] [destination|bowl] rim",
+                      "by [the|its] [destination|bowl] rim", "close to [the|its] [destination|bowl] rim")),
     ("very", ("extremely", "super")),
     ("very high", ("very high up", "way up high", "way up", "from a great height")),
     ("high", ("high up", "up high")),
