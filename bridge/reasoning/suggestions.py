@@ -36,13 +36,14 @@ def misspelt(words: list[str]) -> list[str]:
 #: Phrasings that would be read, for words that could not be placed: (pattern
 #: of the words as written, what to say).
 HINTS: tuple[tuple[str, str], ...] = (
-    (r"\bpour\w*\b.*\b(?:slow|fast|quick|gentl|careful|rapid)",
+    (r"\bpour\w*\b.*\b(?:slow|fast|quick|gentl|careful|rapid|speed|velocity|pace)",
      'pouring has no speed of its own: say how fast the source moves in or away ("move in '
      'slowly", "move away fast")'),
     (r"\b(?:not|without)\b.*\b(?:tilt|tip|lean)",
      'not tilted much: say "slightly tilted" or "upright"'),
     (r"\b(?:tilt|tip|rotat|turn|pour)\w* (?:rate|speed|velocity)\b|\b(?:slow|fast|quick|gradual|rapid|steadi)"
-     r"\w* (?:tilt|tip)|\b(?:tilt|tip|rotat|turn)\w*(?: \w+)*? (?:slow|fast|quick|gradual|rapid|steadi)",
+     r"\w* (?:tilt|tip)|\b(?:tilt|tip|rotat|turn)\w*(?: \w+)*? (?:slow|fast|quick|gradual|rapid|steadi"
+     r"|speed|velocity|pace)",
      'the vocabulary has no speed of tilting: it says how far the source is tilted ("tilted '
      'halfway") and how fast it moves in or away ("move in slowly", "move away fast")'),
     *((rf"\b(?:{words})\b", f'{said}: than what? the vocabulary says values, not changes: say '
@@ -90,7 +91,9 @@ HINTS: tuple[tuple[str, str], ...] = (
                            'sideways", "from the side" or "in line with the bowl"'),
     (r"^(?:tilt|tip|angl|inclin|lean)\w*(?: \w+)*? (?:a lot|lots|loads|heaps)$",
      'a lot: tilted how far? say "tilted halfway", "steeply tilted" or "upside down"'),
-    (r"^sideways$", 'sideways: offset or rolled? say "offset sideways" or "tilted sideways"'),
+    (r"^(?:sideways|laterally|lateral|sidewise)$",
+     'sideways: offset or rolled? say "offset sideways" or "tilted sideways"; a move in or out '
+     'goes to or from the side: say "move in from the side" or "end to the side"'),
     (r"^a (?:little|bit|tad)$", 'a little: of what? say "a little liquid", "slightly tilted", or '
                                'where ("near the rim", "from the side", "offset sideways")'),
     (r"^(?:drop|let)", 'dropping: the source is held throughout the pour; the vocabulary says '

@@ -90,6 +90,24 @@ PHRASES: tuple[tuple, ...] = (
                r"re:\b(?:more|less|fewer) than\b(?: (?:before|usual|normal|that|halfway"
                r"|half way|half))?",
                r"re:\b(?:at (?:least|most)|past|beyond|up to|no (?:more|less) than)(?= -?\d)")),
+    # a speed said with "speed": "at high speed" is fast, "at a slow speed" slowly (a pour
+    # said so is refused below: pouring has no speed)
+    ("fast", (r"re:\b(?:at |with )?(?:a |full |top )?(?:high|great|full|top|fast|quick|rapid|max(?:imum)?)"
+              r" (?:speed|velocity|pace)\b", r"re:\bat (?:full|top) (?:tilt|speed)\b",
+              r"re:\bat speed\b")),
+    ("slowly", (r"re:\b(?:at |with )?(?:a )?(?:low|slow|reduced|gentle|min(?:imum)?) (?:speed|velocity"
+                r"|pace)\b",)),
+    ("moderate", (r"re:\b(?:at |with )?(?:a )?(?:moderate|medium|normal|average|steady) (?:speed|velocity"
+                  r"|pace)\b",)),
+    # a quick in-and-out: the move in and the move out both quick, the pour between
+    ("approach fast ; retreat fast ; pour", (
+        r"re:\b(?:a |an )?(?:quick|fast|rapid|swift|brisk|sudden|snappy)(?: in(?: and)? out| in and"
+        r" then out)(?: (?:motion|movement|move|moves|path|trajectory|action))?\b",
+        r"re:\bin(?: and)? out (?:quickly|fast|rapidly|swiftly|briskly)\b")),
+    ("approach slowly ; retreat slowly ; pour", (
+        r"re:\b(?:a |an )?(?:slow|gentle|careful|gradual|leisurely)(?: in(?: and)? out| in and"
+        r" then out)(?: (?:motion|movement|move|moves|path|trajectory|action))?\b",
+        r"re:\bin(?: and)? out (?:slowly|gently|carefully|gradually)\b")),
     # tilted a lot: halfway, steeply or upside down?
     (UNCLEAR, (r"re:\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:a lot|lots|loads|heaps)\b",)),
     # tilting has no speed in the vocabulary: how far, not how fast
@@ -167,7 +185,9 @@ PHRASES: tuple[tuple, ...] = (
     # emptying a bowl into another, decanting, dumping: pouring
     ("pour", (r"re:\bempt(?:y|ies|ied|ying)(?= (?:it|the \w+|a \w+) (?:into|in|onto)\b)",
               "decant", "dump", "free pour")),
-    ("retreat ; pour", (rf"re:\bafter pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",)),
+    ("retreat ; pour", (rf"re:\bafter pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",
+                        # "after tilting it halfway": the tilt is the pour's
+                        r"re:\bafter\b(?= (?:tilt|tip|lean|angl|inclin)\w*\b)")),
     # "bring it back up", "lift it back down": up and down, in the stage they are said in
     ("raise", (r"re:\b(?:bring|brings|bringing|brought|lift|lifts|lifted|lifting|mov(?:e|es|ed|ing)"
                r"|tak(?:e|es|ing)|took|pull(?:s|ed|ing)?)(?: it| the \w+| them)? back up\b",)),
@@ -197,6 +217,9 @@ PHRASES: tuple[tuple, ...] = (
     ("retreat", (r"re:\bleav(?:e|es|ing)\b(?= (?:very |really )?(?:slow|fast|quick|rapid|gentl)\w*\b)",)),
     ("away from", ("move away from", "pull away from")),    # a direction, not the retreat
     ("retreat", (r"re:\bpull(?:s|ed|ing)? (?:it|the \w+) (?:back|away)\b",
+                 # pulled out: the move out of the pouring pose ("pull it out fast")
+                 r"re:\b(?:pull(?:s|ed|ing)?|draw(?:s|ing)?|drew|yank\w*|whip\w*|tak(?:e|es|ing)|took)"
+                 r"(?: (?:it|the \w+|them))? out\b(?! of (?:the |a )?(?:context|liquid)\b)",
                  r"re:\bmov(?:e|es|ed|ing) (?:it|the \w+|them) (?:away|back|out)\b(?! from)",
                  "after pour", "afterwards", "move away", "pull away", "pull back",
                  "back off", "back away", "withdraw")),
