@@ -151,3 +151,65 @@ def test_a_majority_or_a_centre_is_not_the_threshold(fine, py):
 def test_a_copy_of_a_default_is_found_but_not_in_a_docstring():
     src = '"""make_simulator("pybullet")"""\ndef f(executor="local"):\n    """local"""\n'
     assert literal_copies(src, {"pybullet", "local"}) == ["2: 'local'"]
+
+
+#: The modules that write a curiosity's name and mean something else, or
+#: that read which curiosity wrote a theory (the evaluation), as the
+#: theory's setting(curiosity, C) records it: each with why.
+NAME_OTHERWISE = {
+    "bridge/evaluation/paper_rules.py": "the key 'paper' is the paper's words of a rule",
+    "bridge/evaluation/explored_pours.py": "tells a one-layer theory by its recorded curiosity",
+    "bridge/evaluation/report_sections.py": "says a one-layer theory's curiosity in the report",
+}
+
+
+def prolog_code(text: str) -> list[str]:
+    """The lines of a Prolog source without its comments (`%` and `/* */`)
+    and the text of its strings, numbered as in the file."""
+    text = re.sub(r"/\*.*?\*/", lambda m: "\n" * m.group(0).count("\n"), text, flags=re.S)
+    return [re.sub(r'"(?:[^"\\]|\\.)*"', '""', line).split("%", 1)[0]
+            for line in text.splitlines()]
+
+
+def name_copies_pl(text: str, names: set) -> list[str]:
+    """The lines of a Prolog source whose code writes an atom of `names`."""
+    pattern = re.compile(rf"(?<!\w)(?:{'|'.join(map(re.escape, sorted(names)))})(?!\w)")
+    return [f"{n}: {line.strip()}" for n, line in enumerate(prolog_code(text), 1)
+            if pattern.search(line)]
+
+
+def test_a_curiosity_is_named_only_in_its_own_files_and_the_list():
+    """A curiosity's name (a value of the option table's `curiosity` row,
+    theory/defaults.pl) is written only there, in its Prolog module
+    (theory/curiosity/NAME.pl, with its tests) and in its Python side, the
+    modules its module declares; the benchmarks choose curiosities to run,
+    as the tests and docs do."""
+    from pantarhei.bridge.exploration.curiosity_sides import curiosities, python_sides
+
+    names = set(curiosities())
+    own = {f"theory/curiosity/{n}.pl" for n in names}
+    for modules in python_sides().values():
+        own |= {m.removeprefix("pantarhei.").replace(".", "/") + ".py" for m in modules}
+    copies = {}
+    for p in _files(".pl") + _files(".py"):
+        rel = _rel(p)
+        if rel in own or rel in NAME_OTHERWISE or rel.startswith("benchmarks/"):
+            continue
+        text = p.read_text(encoding="utf-8")
+        found = name_copies_pl(text, names) if p.suffix == ".pl" else literal_copies(text, names)
+        if found:
+            copies[rel] = found
+    assert copies == {}, "a curiosity is named in its own files and the option table's list"
+
+
+@pytest.mark.parametrize("source, py, found", [
+    (":- use_module(curiosity/learn).\n", False, 1),
+    ("unsaid(batch, none, learn, N) :- default(learn_batch, N).\n", False, 1),
+    ("curiosity_module(learn, curiosity_learn).\n% learn: the learning one\nx(\"learn\").\n", False, 1),
+    ("/* learn\n   and paper */\nlearned(X) :- relearn(X).\n", False, 0),
+    ("if s.get('curiosity') == 'learn':\n    pass\n", True, 1),
+    ('"""learn"""\nlearner = "learner"\n', True, 0)])
+def test_a_curiosity_s_name_is_found_in_code_and_not_in_comments(source, py, found):
+    names = {"learn", "paper"}
+    copies = literal_copies(source, names) if py else name_copies_pl(source, names)
+    assert len(copies) == found

@@ -70,9 +70,6 @@ behind the interface of interface.pl, which names them:
 :- use_module(curiosity/state).
 :- use_module(curiosity/modify).
 :- use_module(curiosity/plane_steps).
-:- use_module(curiosity/discover).
-:- use_module(curiosity/learn).
-:- use_module(curiosity/paper).
 :- use_module(curiosity/interface).
 :- use_module(curiosity/probe).
 :- use_module(curiosity/loop).

@@ -41,7 +41,12 @@ batch (loop.pl). Its theory's second layer is the general rules.
 :- use_module(modify).
 :- use_module(plane_steps).
 
-% The interface of interface.pl.
+% The interface of interface.pl; its Python side tests the planes
+% (exploration_significant_planes) and predicts and probes the novelty of
+% candidates (exploration_predict, exploration_probe).
+
+python_side(['pantarhei.bridge.exploration.steepest',
+             'pantarhei.bridge.exploration.novelty']).
 
 budget(Settings, Pours) :-
     Pours is Settings.budget * Settings.batch.

@@ -60,4 +60,49 @@ test(the_loop_names_no_curiosity) :-
                                "learn,", "discover)", "(learn"]),
                     \+ sub_string(Text, _, _, _, C)) )).
 
+% A curiosity's module is checked when it loads: one that lacks a
+% predicate of the interface, or declares a Python side that is no list of
+% module names, is refused; one without python_side/1 has none.
+test(a_curiosity_is_checked_when_it_loads) :-
+    toy_module(Fine, [ "budget(_, 1).", "progress_bar(_, _{total:1, unit:pour}).",
+                       "probe_size(_, 0).", "probed(_, _) :- fail.", "priors_due(_, _) :- fail.",
+                       "after_batch(_, _, [], _{}).", "second_layer(_, _, _, []).",
+                       "theory_layout(_{})." ]),
+    load_curiosity(toy_fine, Fine),
+    curiosity_python_side(toy_fine, []),
+    by_curiosity(_{curiosity:toy_fine}, budget(_, 1)),
+    retractall(curiosity_interface:curiosity_module(toy_fine, _)),
+    toy_module(Lacking, [ "budget(_, 1)." ]),
+    catch(load_curiosity(toy_lacking, Lacking), curiosity_interface(toy_lacking, _, Lacks), true),
+    Lacks == lacks(progress_bar/2),
+    \+ curiosity_module(toy_lacking, _),
+    toy_module(Bad, [ "budget(_, 1).", "progress_bar(_, _{total:1, unit:pour}).",
+                      "probe_size(_, 0).", "probed(_, _) :- fail.", "priors_due(_, _) :- fail.",
+                      "after_batch(_, _, [], _{}).", "second_layer(_, _, _, []).",
+                      "theory_layout(_{}).", "python_side(teaching)." ]),
+    catch(load_curiosity(toy_bad, Bad), curiosity_interface(toy_bad, _, Side), true),
+    Side == python_side(teaching),
+    message_to_codes(curiosity_interface(toy_bad, 'toy.pl', Side), Text),
+    once(sub_string(Text, _, _, _, "the curiosity toy_bad (toy.pl) declares python_side(teaching)")).
+
+% The Python sides of the curiosities of the list.
+test(each_curiosity_declares_its_python_side) :-
+    forall(curiosity_module(C, _),
+           ( curiosity_python_side(C, Modules), Modules \== [],
+             forall(member(M, Modules), sub_atom(M, 0, _, _, 'pantarhei.bridge.exploration.')) )).
+
+%   toy_module(-File, +Clauses): a module file of its own holding Clauses.
+toy_module(File, Clauses) :-
+    tmp_file_stream(File, Out, [extension(pl)]),
+    file_base_name(File, Base),
+    once(file_name_extension(Name, _, Base)),
+    atom_concat(toy_, Name, Module),
+    format(Out, ":- module(~q, []).~n", [Module]),
+    forall(member(C, Clauses), format(Out, "~s~n", [C])),
+    close(Out).
+
+message_to_codes(Term, Text) :-
+    once(phrase(prolog:message(Term), Lines)),
+    with_output_to(string(Text), print_message_lines(current_output, '', Lines)).
+
 :- end_tests(curiosity_interface).

@@ -38,13 +38,22 @@ explored antecedents.
 :- use_module(library(random)).
 :- use_module('../vocabulary').
 :- use_module('../validity').
+:- use_module('../default_values', [default/2]).
 :- use_module(foreign).
 :- use_module(state).
 :- use_module(writer).
 
 % The interface of interface.pl: the budget is every pour, pours(N);
 % nothing is probed; the theory is one layer, the rules of the explored
-% antecedents (learned_layer/3 of writer.pl).
+% antecedents (learned_layer/3 of writer.pl); its Python side values the
+% candidates (exploration_teach).
+
+python_side(['pantarhei.bridge.exploration.teaching']).
+
+% A batch is learn_batch pours, and a_0 is the ordinary pour (the empty
+% antecedent), unless the run says otherwise.
+unsaid(batch, N) :- default(learn_batch, N).
+unsaid(initial, []).
 
 budget(Settings, Pours) :-
     Pours = Settings.pours.

@@ -19,7 +19,10 @@ of A_new. Nothing is probed; the budget is `budget` explored antecedents
 :- use_module(modify).
 :- use_module(plane_steps).
 
-% The interface of interface.pl.
+% The interface of interface.pl; its Python side fits the planes
+% (exploration_steepest_plane).
+
+python_side(['pantarhei.bridge.exploration.steepest']).
 
 budget(Settings, Pours) :-
     Pours is Settings.budget * Settings.batch.

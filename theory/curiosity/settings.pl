@@ -21,6 +21,7 @@ setting/2 facts of its learned theory.
 :- use_module('../default_values').
 :- use_module(library(aggregate)).
 :- use_module(library(yall)).
+:- use_module(interface, [curiosity_unsaid/3]).
 
 %!  settings(+Options:list, -Settings:dict) is det.
 %
@@ -34,7 +35,7 @@ setting/2 facts of its learned theory.
 settings(Options, S) :-
     must_be(list, Options),
     maplist(known_option, Options),
-    setting_value(curiosity, Options, discover, Curiosity),
+    setting_value(curiosity, Options, _, Curiosity),
     maplist(option_of_curiosity(Curiosity), Options),
     findall(Key-Value,
             ( table_option(Key, _, _, _),
@@ -68,9 +69,7 @@ course_names(S, Nonzero, Names) :-
             Names).
 
 course_holds(every, _, _).
-course_holds(discover, _, S) :- get_dict(curiosity, S, discover).
-course_holds(paper, _, S) :- get_dict(curiosity, S, paper).
-course_holds(learn, _, S) :- get_dict(curiosity, S, learn).
+course_holds(C, _, S) :- curiosity_choice(C), get_dict(curiosity, S, C).
 course_holds(other_than(C), _, S) :- \+ get_dict(curiosity, S, C).
 course_holds(nonzero(Option), Nonzero, S) :-
     (   Nonzero == true -> get_dict(Option, S, V), V =\= 0 ; true ).
@@ -160,6 +159,13 @@ words_and(Ws, Text) :-
 table_option(Key, Type, Range, Default) :-
     defaults:option(Key, Type, Range, Default, _).
 
+%   curiosity_choice(+C): C is a curiosity, a value of the option table's
+%   curiosity row (the one list).
+curiosity_choice(C) :-
+    table_option(curiosity, choice, Range, _),
+    Range =.. [one_of|Choices],
+    memberchk(C, Choices).
+
 %   setting_value(+Key, +Options, +Curiosity, -Value): the option Key of
 %   Options, checked, or its default; fails for an option without a
 %   default that is not given (store, workers, ray_address).
@@ -173,14 +179,15 @@ setting_value(Key, Options, Curiosity, Value) :-
     ).
 
 %   unsaid(+Key, +Default, +Curiosity, -Value): the value of an option not
-%   given: the table's default, or one set otherwise (the pours of a
-%   batch, a_0, the learned theory).
-unsaid(batch, none, learn, N) :- !,
-    default(learn_batch, N).
+%   given: the curiosity's own (unsaid/2 of its module, interface.pl), the
+%   table's default, or one set otherwise (the pours of a batch, a_0, the
+%   learned theory).
+unsaid(Key, none, Curiosity, Value) :-
+    nonvar(Curiosity),
+    curiosity_unsaid(Curiosity, Key, Value), !.
 unsaid(batch, none, _, N) :- !,
     aggregate_all(count, parameter(_, _, _, _, _), NParams),
     N is NParams + 1.
-unsaid(initial, none, learn, []) :- !.
 unsaid(initial, none, _, Initial) :- !,
     default_initial(Initial).
 unsaid(out, _, _, File) :- !,

@@ -1,13 +1,16 @@
-"""A curiosity's Python side declares its own foreign predicates
+"""A curiosity's Python side is declared by its own Prolog module
+(python_side/1 of theory/curiosity/interface.pl) and read from there
 (bridge/exploration/curiosity_sides.py): the session registers, for the
 curiosities of the one list, the handlers their modules declare, and
-names no curiosity. This module is a toy curiosity's Python side: adding
-it to the list, and its module to the sides, is all its handler needs to
-be dispatched by the session's Host and called from Prolog."""
+names no curiosity. This module is a toy curiosity's Python side; its
+Prolog module is a file of its own, written below: adding the toy to the
+list (here, the Host's) is all its handler needs to be dispatched by the
+session's Host and called from Prolog."""
 from __future__ import annotations
 
 import re
 import sys
+from importlib import import_module
 from pathlib import Path
 from types import ModuleType
 
@@ -21,6 +24,20 @@ from pantarhei.bridge.exploration.session import Host, Session, install
 
 SESSION = Path(__file__).resolve().parents[3] / "bridge" / "exploration" / "session.py"
 
+#: The toy curiosity's Prolog module: the interface, and its Python side, this module.
+TOY = f"""\
+:- module(curiosity_toy, []).
+budget(_, 1).
+progress_bar(_, _{{total:1, unit:pour}}).
+probe_size(_, 0).
+probed(_, _) :- fail.
+priors_due(_, _) :- fail.
+after_batch(_, _, [], _{{}}).
+second_layer(_, _, _, []).
+theory_layout(_{{rules:false, batches:false, header:[], layer_header:[]}}).
+python_side(['{__name__}']).
+"""
+
 
 def handlers() -> dict:
     """The toy curiosity's one foreign predicate."""
@@ -31,11 +48,24 @@ def toy_count(host: Host, request: dict) -> dict:
     return {"pours": len(host.need_session().params) + int(request["more"])}
 
 
+@pytest.fixture(scope="module")
+def toy(tmp_path_factory):
+    """The toy curiosity's Prolog module, loaded into the process's Prolog
+    (as interface.pl loads those of the list), and forgotten after."""
+    path = tmp_path_factory.mktemp("toy") / "toy.pl"
+    path.write_text(TOY, encoding="utf-8")
+    eng = install()
+    eng.once("curiosity_interface:load_curiosity(toy, F)", F=str(path))
+    yield eng
+    eng.once("retractall(curiosity_interface:curiosity_module(toy, _))")
+
+
 def toy_host() -> Host:
-    return Host(curiosities=(*curiosities(), "toy"), sides={**python_sides(), "toy": (__name__,)})
+    return Host(curiosities=(*curiosities(), "toy"))
 
 
-def test_a_toy_curiosity_in_the_list_gets_its_handler_dispatched_and_timed():
+def test_a_toy_curiosity_in_the_list_gets_its_handler_dispatched_and_timed(toy):
+    assert python_sides(["toy"]) == {"toy": (__name__,)}       # its own module says so
     host = toy_host()
     assert "exploration_toy_count" not in Host().handlers        # not in the one list
     assert host.dispatch("exploration_toy_count", {"more": 1}) == {"error": "no exploration is running"}
@@ -48,13 +78,18 @@ def test_a_toy_curiosity_in_the_list_gets_its_handler_dispatched_and_timed():
     assert set(curiosity_handlers()) < set(host.handlers)
 
 
+def test_a_curiosity_without_a_module_is_refused_in_one_line():
+    with pytest.raises(ValueError, match="the curiosity nonesuch has no module loaded"):
+        Host(curiosities=("nonesuch",))
+
+
 @pytest.fixture(scope="module")
-def registered():
+def registered(toy):
     """The process's Prolog, with the toy's foreign predicate registered
     (the host, which keeps its callback, lives as long as the module's tests)."""
     host = toy_host()
     host.register(["exploration_toy_count"])
-    return install(), host
+    return toy, host
 
 
 def test_prolog_calls_the_toy_curiosity_s_handler_through_call_bridge(registered):
@@ -81,7 +116,9 @@ def test_a_module_shared_by_two_curiosities_is_registered_once_and_a_clash_refus
 
 
 def test_the_sides_are_of_curiosities_of_the_one_list_and_prolog_calls_each_handler():
-    assert set(python_sides()) <= set(curiosities())
+    sides = python_sides()
+    assert set(sides) <= set(curiosities())
+    assert all(import_module(m).handlers() for modules in sides.values() for m in modules)
     prolog = "\n".join(p.read_text() for p in (SESSION.parents[2] / "theory").rglob("*.pl"))
     for name in curiosity_handlers():
         assert re.search(rf"\b{name}\b", prolog), name
