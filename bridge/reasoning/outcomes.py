@@ -178,6 +178,12 @@ def _filled(verb: str) -> str:
     return verb.replace(_OUT_OF, f"(?:{_destinations()})") if _OUT_OF in verb else verb
 
 
+#: Contact asked of by its noun alone: "contact between source and bowl?", "any collision
+#: with the bowl?" (not "in contact with", which states it).
+_CONTACT = re.compile(r"(?<!\bin )\b(?:(?:is|will) there (?:be )?)?(?:any |some |no |a |the )?"
+                      r"(?:contact|collisions?) (?:between|with)\b")
+
+
 #: Why a question of what follows an outcome is refused, and what would be read.
 FOLLOWS = ("asks what follows an outcome, which the vocabulary cannot say; it answers whether it "
            "happens: \"will it spill?\", \"does the bowl move?\"")
@@ -283,6 +289,10 @@ def hear(text: str) -> Heard:
         asked.extend(n for n in ("no_spill",) if n not in asked)
         return take(m)
 
+    def as_contact(m: re.Match) -> str:
+        asked.extend(n for n in ("source_clear",) if n not in asked)
+        return take(m)
+
     def as_more(m: re.Match) -> str:
         names, bad = _which(m)
         if was_goal:                  # wanted as the one before it: "without spilling or tipping"
@@ -311,6 +321,7 @@ def hear(text: str) -> Heard:
     was_goal = False
     text = _repeat(more, as_more, _spaced(pattern.sub(as_asked, text)))
     text = nominal.sub(as_nominal, text)
+    text = _CONTACT.sub(as_contact, text)
     text = _spaced(bare.sub(as_more, text))
     return Heard(tuple(asked), tuple(goals), tuple(phrases), text)
 

@@ -1,5 +1,6 @@
 """A question that asks for a value with a goal: "how high should I hold it
-so nothing spills", "what's the best tilt so it all goes in", "which tilt
+so nothing spills", "what's the best tilt so it all goes in" (or "height
+and angle"), "which tilt
 keeps it in the bowl". The value is a plan's to find, not a scene's to say:
 with a goal said, the words that ask for it are heard (the answer says
 whether the theory expects the goal of the scene said, the ordinary pour
@@ -28,6 +29,7 @@ _WHAT = r"(?: (?:it|them|the \w+))?(?: (?:from|at|to|up|in))?"
 #: The words that ask for a value.
 _ASKING = re.compile(
     rf"\b(?:(?:what|which)(?: is| be)?(?: the| a)?(?: {_BEST})?|(?:the |a )?{_BEST}) {_VALUE}"
+    rf"(?:(?:,| and| or|, and|, or) (?:the |a )?{_VALUE})*"      # "the best height and angle"
     rf"(?: (?:to {_ACT}{_WHAT}|(?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT}"
     rf"|for (?:it|pouring|the pour)))?(?= |$)"
     rf"|\bhow(?: (?:very|really))? {_HOW}(?: (?:should|do|can|must|would|could|shall|is) {_WHO}"

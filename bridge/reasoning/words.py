@@ -330,6 +330,9 @@ PHRASES: tuple[tuple, ...] = (
                     "one hand width")),
 
     ("little", ("a few drops of", "a few drops", "a drop of", "a drop")),
+    # a weight said as a compound: "a lightweight paper bowl", "a hefty jug"
+    ("light", ("lightweight", "light weight", "featherweight", "feather light", "featherlight")),
+    ("heavy", ("heavyweight", "heavy weight", "hefty", "weighty")),
     ("slippery", ("slick", "smooth", "greasy")),
     ("grippy", ("rough",)),
     ("runny", ("thin", "watery")),
