@@ -42,7 +42,7 @@ _THROWN = (r"spill\w*|spilt|splash\w*|splatter\w*|splat\w*|slop\w*|slosh\w*|spra
 
 #: (verb phrase, the expectations it speaks of, whether it happening makes them fail)
 OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
-    (rf"(?:{_THROWN}) (?:back |right |straight |all )?(?:over|out of|out over)(?= (?:the |a |an |my "
+    (rf"(?:{_THROWN}) (?:(?:back|right|straight|all|up|and) )*(?:over|out of|out over)(?= (?:the |a |an |my "
      rf"|your |its |their |this |that )?(?!source\b)(?:[a-z]+ )?{_OUT_OF}\b)"
      r"|overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*|slop\w*|splash\w*|splatter\w*) over"
      r"(?: the (?:rim|edge|top|side)s?)?"
@@ -59,7 +59,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:fall|falls|fell)\b(?! (?:in|into|inside|out|off|on|onto)\b)", ("destination_upright",), True),
     (r"(?:stay|stays|remain|remains|keep|keeps|be|is) (?:still|put|in place|steady|stable|stationary"
      r"|where it is)", _STILL, False),
-    (r"slid\w*|slip(?:s|ped|ping)?\b|shift\w*|budg\w*|wobbl\w*|skid\w*|wiggl\w*|jiggl\w*"
+    (r"slid\w*|slip(?:s|ped|ping)?\b|shift\w*|budg\w*|wobbl\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
      r"|jostl\w*|rock(?:s|ed|ing)?|shak(?:e|es|ing)|shook|translat\w*|drift\w*|creep\w*|scoot\w*"
      r"|displac\w*|(?:go|goes|going|get|gets|getting) (?:wiggly|wobbly|shaky|jiggly)"
      r"|mov(?:e|es|ed|ing)\b(?! (?:in|away|closer|to|out|back|up|down|over|into|off|towards?)\b)",
@@ -145,7 +145,8 @@ def _patterns() -> tuple[re.Pattern, ...]:
     # (or said alone: "splashes?", "drip everywhere?")
     nominal = re.compile(r"\b(?:(?:is|will) there (?:be )?)?(?:any|a|no|some) (?P<v1>spill(?:s|age)?"
                          r"|splash(?:es)?|mess|drips?|puddles?)\b(?! of\b)"
-                         r"|^(?:spill(?:s|age)?|splash(?:es)?|drips?|leaks?)(?: (?:everywhere|out|over))?"
+                         r"|(?:^|(?<=[,:;\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014]))"
+                         r"(?:spill(?:s|age)?|splash(?:es)?|drips?|leaks?)(?: (?:everywhere|out|over))?"
                          r"(?= *[?.!]* *$)")
     goal = re.compile(
         rf"\b(?:without (?P<gneg>any |a |making (?:a |any )?)?(?P<gwho>(?:it|them|the [a-z]+) )?"
@@ -159,7 +160,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
                       rf"(?:{verbs})\b{_END}")
     # an outcome said first, with no word that asks: "spills when poured from high?", "sloshing
     # over the rim if tilted steeply?", "pour high, spill or not"
-    bare = re.compile(rf"(?:^|(?<=, ))(?:(?P<v0>{_filled(OUTCOMES[0][0])})|(?P<v1>spill\w*|spilt|splash\w*|drip\w*"
+    bare = re.compile(rf"(?:^|(?<=[,:;\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014]))(?:(?P<v0>{_filled(OUTCOMES[0][0])})|(?P<v1>spill\w*|spilt|splash\w*|drip\w*"
                       rf"|leak\w*|slosh\w*|dribbl\w*)){_END}(?: or not)?(?= (?:if|when|while)\b| *[?.!,]* *$)")
     return asked, nominal, goal, more, bare
 

@@ -3,7 +3,9 @@
 it), said by a stage word ("then", "after pouring", "move away" ...:
 words.py brings everyday phrases to them). A stage word speaks for its
 clause from there on, and for the words of its clause before it; a clause
-without one goes on in the stage before (pouring, at first). A pose said
+without one goes on in the stage before (pouring, at first), but one
+that begins by tilting after the start or the move in is the pour's
+("move in slowly, tilt it halfway"). A pose said
 while moving in is the start pose, while moving away the end pose.
 "Leave it tilted" and "leave it there" end as the pour was, and "move
 in low" (a path in, no "from") pours as low as it came in, unless the
@@ -22,6 +24,9 @@ POSE = {"start": "start", "approach": "start", "pour": "pour", "retreat": "end",
 MOVE = {"start": "approach", "approach": "approach", "pour": None, "retreat": "retreat",
         "end": "retreat"}
 MARKER_STEMS = {stem(w): s for w, s in MARKERS.items()}
+#: Verbs of tilting: a clause they begin, said after the start or the move in with no stage
+#: word of its own, is the pour's ("move in over 3 s, tilt 45 deg": the tilt poured with).
+_TILTING = {stem(w) for w in ("tilt", "tip", "incline", "lean", "angle")}
 
 
 def stages(tokens: list[Token]) -> list[str]:
@@ -35,6 +40,9 @@ def stages(tokens: list[Token]) -> list[str]:
         at = clauses[clause]
         marks = [i for i in at if tokens[i].word in MARKER_STEMS]
         current = _next(tokens[marks[0]].word, stage) if marks else stage
+        first = next((tokens[i].word for i in at if tokens[i].word != "and"), "")
+        if not marks and stage in ("start", "approach") and first in _TILTING:
+            current = "pour"
         marked = set(marks[1:])
         for i in at:
             if i in marked:

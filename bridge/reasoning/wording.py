@@ -41,9 +41,10 @@ _UNIT_WORDS = (r"mm|cm|m|ft|inch\w*|feet|foot|met(?:re|er)\w*|centimet\w*|millim
 _CONTRACTED = {"ll": "will", "re": "are", "m": "am", "ve": "have", "d": "would"}
 #: The stage words: an "and" before one starts a new clause ("tilt it and end upright").
 STAGE_WORDS = ("start", "pour", "end", "finally", "final", "approach", "retreat", "then")
-#: The words an "and" before which starts a new clause: the stage words, and a move up or
-#: down, said in its own stage ("pour low and bring it back up afterwards").
-_NEW_CLAUSE = (*STAGE_WORDS, "raise", "lower")
+#: The words an "and" before which starts a new clause: the stage words, a move up or
+#: down, said in its own stage ("pour low and bring it back up afterwards"), and a tilt
+#: ("come in low and tilt it halfway": stages.py's to place).
+_NEW_CLAUSE = (*STAGE_WORDS, "raise", "lower", "tilt", "tilts", "tilting", "tip", "tips")
 
 
 def stem(w: str) -> str:
@@ -124,7 +125,7 @@ def _normalised(text: str) -> str:
     text = re.sub(r"\b((?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|the \w+))?(?: (?:to|by|at|about|around"
                   r"|roughly|approximately|some))*) (-?\d+(?:\.\d+)?(?: (?:to|or) -?\d+(?:\.\d+)?)?)"
                   rf"(?![\w.%\u00b0-]| ?(?:{_UNIT_WORDS})\b| (?:to|or|and) -?\d)"
-                  r"(?= *(?:$|[,;.!?)]|(?:and|then|but|so|while|before|after|from|above|over|with|into|at"
+                  r"(?= *(?:$|[,;.!?):\u2013\u2014]|- |(?:and|then|but|so|while|before|after|from|above|over|with|into|at"
                   r"|during|when|if|in|on|towards|away|or|to|degrees?)\b))", r"\1 \2 degrees", text)
     text = re.sub(r"(\d)\s*(?:(?:deg|degs|degrees?)\s*(?:/\s*(?:s|sec)\b|per (?:second|sec)\b)"
                   r"|rpm\b)", r"\1 unit_turn_speed", text)        # 30 deg/s: a speed of tilting
