@@ -122,7 +122,7 @@ def _normalised(text: str) -> str:
     text = re.sub(r"\b((?:tilt|tip|lean)\w*(?: (?:it|the \w+))?) back(?:wards?)?(?: (?:by|at|to|about|around))*"
                   r" (\d+(?:\.\d+)?)(?= ?(?:degrees?|degs?)?\b(?! ?[-\d]))", r"\1 back at -\2", text)
     # a number said with tilting and no unit is an angle: "tilt it 45", "tilted to 30 to 40"
-    text = re.sub(r"\b((?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|the \w+))?(?: (?:to|by|at|about|around"
+    text = re.sub(r"\b((?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|the \w+))?(?: (?:to|by|at|of|about|around"
                   r"|roughly|approximately|some))*) (-?\d+(?:\.\d+)?(?: (?:to|or) -?\d+(?:\.\d+)?)?)"
                   rf"(?![\w.%\u00b0-]| ?(?:{_UNIT_WORDS})\b| (?:to|or|and) -?\d)"
                   r"(?= *(?:$|[,;.!?):\u2013\u2014]|- |(?:and|then|but|so|while|before|after|from|above|over|with|into|at"

@@ -301,6 +301,8 @@ PHRASES: tuple[tuple, ...] = (
     # lifted straight up: raised, not righted
     ("raise", (r"re:\b(?:lift|lifts|lifted|lifting|rais(?:e|es|ed|ing)|mov(?:e|es|ed|ing)|bring|brings"
                r"|brought|pull(?:s|ed|ing)?)(?: it| the \w+| them)? straight up\b",)),
+    # the height the liquid falls from is the source's: "drop height 20 cm"
+    ("height", (r"re:\b(?:drop|fall|falling|release|pouring|pour) height\b",)),
     # a distance named by its direction is a length, never how the source is tilted:
     # "vertical distance 10 cm" a height, "horizontal distance 15 cm" the distance to the side
     ("height", (r"re:\bvertical(?:ly)? (?:distance|gap|separation|spacing|clearance|offset)\b",)),
@@ -330,7 +332,10 @@ PHRASES: tuple[tuple, ...] = (
                     "one hand width")),
 
     ("little", ("a few drops of", "a few drops", "a drop of", "a drop")),
-    # a weight said as a compound: "a lightweight paper bowl", "a hefty jug"
+    # a weight said as a compound: "a lightweight paper bowl", "a hefty jug"; or as next to
+    # nothing
+    ("is light", (r"re:\bweigh(?:s|ed|ing)? (?:next to|almost|practically|virtually|hardly|barely)"
+                  r" (?:nothing|anything)\b",)),
     ("light", ("lightweight", "light weight", "featherweight", "feather light", "featherlight")),
     ("heavy", ("heavyweight", "heavy weight", "hefty", "weighty")),
     ("slippery", ("slick", "smooth", "greasy")),
