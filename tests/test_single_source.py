@@ -213,3 +213,28 @@ def test_a_curiosity_s_name_is_found_in_code_and_not_in_comments(source, py, fou
     names = {"learn", "paper"}
     copies = literal_copies(source, names) if py else name_copies_pl(source, names)
     assert len(copies) == found
+
+
+def test_the_nesting_bound_of_theory_files_lives_in_defaults_pl():
+    """Both readers of theory files take how deep a term may nest from
+    theory/defaults.pl, and neither writes it: a fact nested as deep is
+    read, one deeper refused, by Python's reader and SWI-Prolog's."""
+    import subprocess
+
+    from pantarhei.bridge.theories import facts
+
+    most = defaults()["nesting_at_most"]
+    assert "default(nesting_at_most, " in HOME.read_text(encoding="utf-8")
+    assert facts.nesting_at_most() == most
+    deepest = "p(" + "f(" * (most - 1) + "a" + ")" * most + ".\n"
+    too_deep = "p(" + "f(" * most + "a" + ")" * (most + 1) + ".\n"
+    assert facts.parse(deepest)
+    with pytest.raises(facts.TheoryFileError, match=f"nested at most {most} deep"):
+        facts.parse(too_deep)
+    prolog = subprocess.run(
+        ["swipl", "-q", "-g", "fact_reader:nesting_at_most(N), write(N), halt",
+         str(ROOT / "theory" / "fact_reader.pl")], capture_output=True, text=True, timeout=60)
+    assert prolog.stdout.strip() == str(most), prolog.stderr
+    for rel in ("bridge/theories/facts.py", "theory/fact_reader.pl"):
+        text = (ROOT / rel).read_text(encoding="utf-8")
+        assert not re.search(rf"(?i)nesting\w*(\s*=\s*|\(){most}\b", text), f"{rel} writes the bound"

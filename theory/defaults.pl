@@ -197,6 +197,13 @@ recorded(learner).
 % (theory/curiosity/modify.pl) alike.
 default(verdict_threshold_permille, 500).
 
+% How deep a term of a theory file may nest (a theory's facts nest two or
+% three deep), so that every reader after the two that check it may
+% recurse on terms without running out. Read by Python
+% (bridge/theories/facts.py) and Prolog (theory/fact_reader.pl) alike,
+% each reading this file, the project's own, without the bound first.
+default(nesting_at_most, 32).
+
 % After Algorithm 1, the general rules are learned from every pour of the
 % exploration (option general above; bridge/learning/).
 % Before learning them, the learner simulates pours of its own for the

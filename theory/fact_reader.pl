@@ -245,8 +245,7 @@ check_text(term_position(From, _, From, FTo, ArgsPos), T, Text, _-Depth) :-
     ->  bad(not_name)
     ;   true
     ),
-    nesting_at_most(Most),
-    (   Depth >= Most
+    (   nesting_at_most(Most), Depth >= Most
     ->  bad(nesting, [Most])
     ;   Depth1 is Depth + 1
     ),
@@ -260,8 +259,18 @@ check_arg_text(Text, Depth, Pos, Arg, N, N1) :-
 
 % nesting_at_most(-Most): how deep a term may nest (a theory's facts nest
 % two or three deep), so that every reader after this one may recurse on
-% terms (bridge/theories/facts.py's NESTING_AT_MOST).
-nesting_at_most(32).
+% terms: default(nesting_at_most, Most) of defaults.pl beside this file,
+% read when this module loads (as bridge/theories/facts.py reads it), the
+% file itself without the bound, which is not known yet.
+:- dynamic nesting_at_most/1.
+
+load_nesting_bound :-
+    prolog_load_context(directory, Dir),
+    directory_file_path(Dir, 'defaults.pl', File),
+    retractall(nesting_at_most(_)),
+    read_fact_file(File, LineFacts),
+    memberchk(_-default(nesting_at_most, Most), LineFacts),
+    assertz(nesting_at_most(Most)).
 
 check_integer(Raw, N) :-
     (   string_codes(Raw, Cs),
@@ -374,3 +383,5 @@ load_check_messages :-
     load_facts(File, check_messages).
 
 :- load_check_messages.
+
+:- load_nesting_bound.

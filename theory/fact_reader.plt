@@ -68,6 +68,22 @@ test(an_error_names_the_line_where_the_fact_starts, Line == 2) :-
     load_error("a(1).\nb(1,\n  2,\n  'x').\n", Line, _).
 
 % a check's message is theory/check_messages.pl's text with its arguments
+% The bound on nesting is defaults.pl's: a fact whose terms nest as deep
+% (the fact itself counted) is read, one deeper is refused with the bound
+% in the message.
+test(the_nesting_bound_is_the_default_s, Expected == M) :-
+    defaults:default(nesting_at_most, Most),
+    fact_reader:nesting_at_most(Most),
+    Inner is Most - 1, nested(Inner, Deepest), nested_fact(Deepest, Fine),
+    write_tmp(Fine, File), load_facts(File, plunit_nested), delete_file(File),
+    nested(Most, Too), nested_fact(Too, Bad),
+    load_error(Bad, 1, Expected),
+    check_message(nesting, [Most], M).
+
+nested(0, "a") :- !.
+nested(N, T) :- N1 is N - 1, nested(N1, T1), format(string(T), "f(~s)", [T1]).
+nested_fact(Term, Text) :- format(string(Text), "p(~s).~n", [Term]).
+
 test(check_message_from_the_table, M == "the superiority relation has a cycle, r1 > r2 > r1: it must be acyclic") :-
     check_message(superiority_cycle, ['r1 > r2 > r1'], M).
 

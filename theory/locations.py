@@ -1,13 +1,14 @@
 """Where the theory's files are: the folder theory/ (package data of
 pantarhei.theory) and the files of it that Python names. Imports nothing of
-the project but the name of the table of check messages, so that every
+the project but the names of the table of check messages and of the
+defaults (its reader's, which reads them), so that every
 module of the package (the option table, the defaults) can name the files
 without importing the package's own readers."""
 from __future__ import annotations
 
 from pathlib import Path
 
-from pantarhei.bridge.theories.facts import CHECK_MESSAGES
+from pantarhei.bridge.theories.facts import CHECK_MESSAGES, DEFAULTS
 
 #: The folder that holds the theory files.
 THEORY_DIR = Path(__file__).resolve().parent
@@ -21,7 +22,7 @@ PROLOG_ENTRY = THEORY_DIR / "pantarhei.pl"
 
 #: The project's defaults (exploration settings, a_0, where the learned
 #: theory and the store go), read by Prolog and Python alike.
-DEFAULTS_FILE = THEORY_DIR / "defaults.pl"
+DEFAULTS_FILE = THEORY_DIR / DEFAULTS
 
 #: The messages of the checks of a theory file that both readers make
 #: (`check_message` of bridge/theories/facts.py; SWI-Prolog's

@@ -41,13 +41,13 @@ INT_MIN, INT_MAX = -2 ** 31, 2 ** 31 - 1
 # The messages of what this reader and SWI-Prolog's refuse are
 # theory/check_messages.pl's (`check_message`); this one is Python's alone.
 NAME = "a name in lower case letters, digits and _, not '{}'"
-#: How deep a term may nest (a theory's facts nest two or three deep): every
-#: reader after this one may then recurse on terms without running out.
-NESTING_AT_MOST = 32
 
 #: The table of the messages of the checks both readers make, in the
 #: folder of the package pantarhei.theory (theory/).
 CHECK_MESSAGES = "check_messages.pl"
+#: The project's defaults, in the same folder: among them how deep a term
+#: may nest (`nesting_at_most`).
+DEFAULTS = "defaults.pl"
 
 
 def check_message(key: str, *args: object) -> str:
@@ -64,14 +64,30 @@ def check_message(key: str, *args: object) -> str:
 
 @lru_cache(maxsize=None)
 def _check_messages() -> Mapping[str, str]:
-    """The table, read by this reader (found where pantarhei.theory is,
-    without importing it: it imports this module)."""
+    """The table, read by this reader."""
+    return MappingProxyType({str(f.args[0]): str(f.args[1]) for f in read(_theory_file(CHECK_MESSAGES))
+                             if f.name == "check_message" and len(f.args) == 2})
+
+
+@lru_cache(maxsize=None)
+def nesting_at_most() -> int:
+    """How deep a term may nest (a theory's facts nest two or three deep),
+    so that every reader after this one may recurse on terms without
+    running out: `default(nesting_at_most, N)` of theory/defaults.pl, as
+    SWI-Prolog's reader takes it (fact_reader.pl). That file, the
+    project's own, is read before the bound is known, without it."""
+    path = _theory_file(DEFAULTS)
+    facts = _parse(check_bytes(path.read_bytes(), str(path)), str(path), 1, None)
+    return next(int(f.args[1]) for f in facts
+                if f.name == "default" and f.args[:1] == ("nesting_at_most",))
+
+
+def _theory_file(name: str) -> Path:
+    """A file of theory/, found where pantarhei.theory is without importing
+    it (it imports this module)."""
     from importlib.util import find_spec
 
-    spec = find_spec("pantarhei.theory")
-    table = Path(spec.origin).parent / CHECK_MESSAGES
-    return MappingProxyType({str(f.args[0]): str(f.args[1]) for f in read(table)
-                             if f.name == "check_message" and len(f.args) == 2})
+    return Path(find_spec("pantarhei.theory").origin).parent / name
 
 
 class Text(str):
@@ -182,8 +198,9 @@ def parse(data: bytes | str, source: str = "<theory>", first_line: int = 1) -> l
     if isinstance(data, str):
         data = data.encode("utf-8", errors="surrogateescape")
     text = check_bytes(data, source, first_line)
+    most = nesting_at_most()
     with _no_gc():
-        return _parse(text, source, first_line)
+        return _parse(text, source, first_line, most)
 
 
 @contextmanager
@@ -199,7 +216,8 @@ def _no_gc():
             gc.enable()
 
 
-def _parse(text: str, source: str, first_line: int) -> list[Fact]:
+def _parse(text: str, source: str, first_line: int, most: int | None) -> list[Fact]:
+    """The facts of `text`, its terms nested at most `most` deep (None: any)."""
     facts: list[Fact] = []
     append = facts.append
     pos, line = 0, first_line
@@ -209,7 +227,7 @@ def _parse(text: str, source: str, first_line: int) -> list[Fact]:
             continue
         while pos < start:
             # anything else: the tokenizer, up to the end of a line between facts
-            eol, line = _Tokens(text, source, facts).run(pos, line)
+            eol, line = _Tokens(text, source, facts, most).run(pos, line)
             pos, line = eol + 1, line + 1
         if pos != start:
             continue                    # the tokenizer read on into this line
@@ -224,7 +242,7 @@ def _parse(text: str, source: str, first_line: int) -> list[Fact]:
                                      for x in _COMMA.split(args)]), line))
         pos, line = m.end() + 1, line + 1
     while pos < len(text):
-        eol, line = _Tokens(text, source, facts).run(pos, line)
+        eol, line = _Tokens(text, source, facts, most).run(pos, line)
         pos, line = eol + 1, line + 1
     return facts
 
@@ -290,8 +308,9 @@ class _Tokens:
     """Facts token by token: a stack of the terms being built. Every error
     names the line where its fact starts."""
 
-    def __init__(self, text: str, source: str, facts: list[Fact]) -> None:
+    def __init__(self, text: str, source: str, facts: list[Fact], most: int | None) -> None:
         self.text, self.source, self.facts = text, source, facts
+        self.most = most                # how deep a term may nest (None: any)
         self.start = 0                  # the line of the current fact; 0 between facts
         self.stack: list[list] = []     # open terms [name, arg, ...]
         self.state = "value"            # value (a value may come) | open | after
@@ -340,8 +359,8 @@ class _Tokens:
                 self.fail("not_name")
             if kind == "name":
                 if text.startswith("(", after):
-                    if len(self.stack) >= NESTING_AT_MOST:
-                        self.fail("nesting", NESTING_AT_MOST)
+                    if self.most is not None and len(self.stack) >= self.most:
+                        self.fail("nesting", self.most)
                     self.stack.append([tok])
                     self.state = "open"
                     return

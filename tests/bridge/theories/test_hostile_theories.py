@@ -79,9 +79,9 @@ CORPUS: dict[str, tuple[bytes, int, str]] = {
     "body without its rule": (b"rule(r1, defeasible, b).\nbody(r9, a).\n", 2,
                               "body(r9, _) of a rule r9 that has no rule(r9, Kind, Head) fact"),
     "a term nested 33 deep": (b"fact(a).\nfact(" + b"f(" * 32 + b"a" + b")" * 33 + b".\n", 2,
-                              check_message("nesting", facts.NESTING_AT_MOST)),
+                              check_message("nesting", facts.nesting_at_most())),
     "a term nested 33 deep, the first line of a fact": (
-        b"fact(p(a)).\nsetting(x,\n" + b"f(" * 32 + b"a" + b")" * 32 + b").\n", 2, check_message("nesting", facts.NESTING_AT_MOST)),
+        b"fact(p(a)).\nsetting(x,\n" + b"f(" * 32 + b"a" + b")" * 32 + b").\n", 2, check_message("nesting", facts.nesting_at_most())),
     "the name not": (b"rule(r1, defeasible, a).\nbody(r1, not).\n", 2, check_message("not_name")),
     "the name not as a functor": (b"fact(not(a)).\n", 1, check_message("not_name")),
     "a confidence of 0 for a rule's head": (
