@@ -44,7 +44,8 @@ _THROWN = (r"spill\w*|spilt|splash\w*|splatter\w*|splat\w*|slop\w*|slosh\w*|spra
 OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (rf"(?:{_THROWN}) (?:(?:back|right|straight|all|up|and) )*(?:over|out of|out over)(?= (?:the |a |an |my "
      rf"|your |its |their |this |that )?(?!source\b)(?:[a-z]+ )?{_OUT_OF}\b)"
-     r"|overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*|slop\w*|splash\w*|splatter\w*) over"
+     r"|overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*|slop\w*|splash\w*|splatter\w*|fizz\w*"
+     r"|foam\w*|froth\w*|bubbl\w*|boil\w*) over"
      r"(?: the (?:rim|edge|top|side)s?)?"
      r"|(?:bounc|jump|leap|hop)\w* (?:over|out(?: of)?)|flood\w*"
      r"|(?:go|goes|going|went|get|gets|come|comes|came) over(?= the (?:rim|edge|top|side|brim|lip)s?\b)", ("liquid_remains_in_destination", "no_spill"), True),
@@ -137,7 +138,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
     # the odds of an outcome: "what is the chance the bowl tips", "the risk of spilling"
     chance = r"(?P<chance>(?:chance|chances|probability|likelihood|odds|risk)(?: of| that)?)"
     asked = re.compile(
-        rf"(?<!that )(?<!which )\b(?:(?P<aux>{_AUX})(?P<neg> not)?{subject}|(?P<quant>how much(?: \w+)?"
+        rf"(?<!that )(?<!which )\b(?:(?P<aux>{_AUX})(?P<neg> not)?{subject}|(?P<quant>how much(?: of (?:it|the \w+))?(?: \w+)?"
         rf"|{_SHARE}|anything|something|everything|nothing|any (?:liquid|water)|all of it|it all)"
         rf"|{chance}{subject.replace('<subject>', '<csubject>')})"
         rf" (?:all |any |ever |even |still |not )?(?:(?:end|ends|ended) up )?(?:{verbs})\b{_END}"
@@ -145,7 +146,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
     # (or said alone: "splashes?", "drip everywhere?")
     nominal = re.compile(r"\b(?:(?:is|will) there (?:be )?)?(?:any|a|no|some) (?P<v1>spill(?:s|age)?"
                          r"|splash(?:es)?|mess|drips?|puddles?)\b(?! of\b)"
-                         r"|(?:^|(?<=[,:;\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014]))"
+                         r"|(?:^|(?<=[,:;.?!\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014]))"
                          r"(?:spill(?:s|age)?|splash(?:es)?|drips?|leaks?)(?: (?:everywhere|out|over))?"
                          r"(?= *[?.!]* *$)")
     goal = re.compile(
@@ -160,7 +161,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
                       rf"(?:{verbs})\b{_END}")
     # an outcome said first, with no word that asks: "spills when poured from high?", "sloshing
     # over the rim if tilted steeply?", "pour high, spill or not"
-    bare = re.compile(rf"(?:^|(?<=[,:;\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014]))(?:(?P<v0>{_filled(OUTCOMES[0][0])})|(?P<v1>spill\w*|spilt|splash\w*|drip\w*"
+    bare = re.compile(rf"(?:^|(?<=[,:;.?!\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014]))(?:(?P<v0>{_filled(OUTCOMES[0][0])})|(?P<v1>spill\w*|spilt|splash\w*|drip\w*"
                       rf"|leak\w*|slosh\w*|dribbl\w*)){_END}(?: or not)?(?= (?:if|when|while)\b| *[?.!,]* *$)")
     return asked, nominal, goal, more, bare
 

@@ -205,6 +205,9 @@ PHRASES: tuple[tuple, ...] = (
     # a path in at a height ("bring it in low", "come in low", "approach high"): the start and
     # the pouring pose both there (stages.py), unless the pour's height is said; "move in
     # from high up" says only where it starts
+    # where the move in stops is the pouring pose: "move in fast and stop just above the cup"
+    ("pour", (r"re:\b(?:stop|stops|stopped|stopping|halt\w*)\b(?= (?:just |right |directly |exactly )?"
+              r"(?:above|over|near|by|beside|\d)\b)",)),
     ("approach same_height_in", (r"re:\b(?:(?:mov(?:e|es|ed|ing)|bring(?:s|ing)?|brought|com(?:e|es|ing)"
                                  r"|came|swing(?:s|ing)?|swung|lower(?:s|ed|ing)?)(?: it| the \w+)? in"
                                  r"|approach(?:es|ed|ing)?)\b(?= (?:(?:slowly|fast|quickly|gently|carefully|steadily)(?: and)? )?"
@@ -218,14 +221,18 @@ PHRASES: tuple[tuple, ...] = (
     ("away from", ("move away from", "pull away from")),    # a direction, not the retreat
     ("retreat", (r"re:\bpull(?:s|ed|ing)? (?:it|the \w+) (?:back|away)\b",
                  # pulled out: the move out of the pouring pose ("pull it out fast")
-                 r"re:\b(?:pull(?:s|ed|ing)?|draw(?:s|ing)?|drew|yank\w*|whip\w*|tak(?:e|es|ing)|took)"
-                 r"(?: (?:it|the \w+|them))? out\b(?! of (?:the |a )?(?:context|liquid)\b)",
+                 r"re:\b(?:pull(?:s|ed|ing)?|draw(?:s|ing)?|drew|yank\w*|whip\w*|tak(?:e|es|ing)|took"
+                 r"|jerk\w*|snatch\w*)"
+                 r"(?: (?:it|the \w+|them))? (?:out|away|back)\b(?! of (?:the |a )?(?:context|liquid)\b)",
                  r"re:\bmov(?:e|es|ed|ing) (?:it|the \w+|them) (?:away|back|out)\b(?! from)",
                  "after pour", "afterwards", "move away", "pull away", "pull back",
                  "back off", "back away", "withdraw")),
     ("start", ("begin", "at first", "at the start", "initially")),
     ("liquid", ("liquid particles", r"re:(?<!\d )\bparticles?\b")),
     # where the source is measured from: "offset 10 cm from the centre"
+    # (poured from the centre, with no length or offset it is measured by: centred)
+    ("pour centred", (r"re:\bpour(?:s|ed|ing)?(?: it| the \w+)? from (?:the )?(?:very )?"
+                      r"(?:destination |bowl |cup )?(?:centre|center|middle)\b(?! (?:by|of the \w+ by) )",)),
     ("axis", (r"re:\bfrom (?:the )?(?:destination |bowl |cup )?(?:centre|center|middle|axis)\b",)),
     ("destination", ("target", "receiving")),
     # pouring while moving: the vocabulary pours from one pose
