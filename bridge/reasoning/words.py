@@ -228,6 +228,11 @@ PHRASES: tuple[tuple, ...] = (
                  "after pour", "afterwards", "move away", "pull away", "pull back",
                  "back off", "back away", "withdraw")),
     ("start", ("begin", "at first", "at the start", "initially")),
+    # a pose named by its stage, as a lab note lists them: "initial pose: 20 cm to the side"
+    ("start", (r"re:\b(?:initial|starting|start) (?:pose|position|configuration|state)\b",
+               r"re:\binitial\b")),
+    ("pour", (r"re:\b(?:pour|pouring) (?:pose|position|configuration)\b",)),
+    ("end", (r"re:\b(?:end|ending|final) (?:pose|position|configuration|state)\b",)),
     ("liquid", ("liquid particles", r"re:(?<!\d )\bparticles?\b")),
     # where the source is measured from: "offset 10 cm from the centre"
     # (poured from the centre, with no length or offset it is measured by: centred)
