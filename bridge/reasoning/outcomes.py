@@ -52,10 +52,11 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"spill\w*|spilt|splash\w*|splatter\w*|slosh\w*|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
      r"|makes? (?:a|any) (?:big |huge |bit of a |real |total )?mess|(?:go|goes|going|went|get|gets) everywhere"
      r"|slop\w*|splat\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)"
-     r"|(?:go|goes|going|went|get|gets|got|land|lands|landed|landing) (?:on|onto|all over)",
+     r"|(?:go|goes|going|went|get|gets|got|land|lands|landed|landing|fall|falls|fell) (?:on|onto|all over"
+     r"|outside)",
      ("no_spill",), True),
     (r"(?:stay|stays|remain|remains|keep|keeps) (?:upright|standing)", ("destination_upright",), False),
-    (r"tip(?:s|ped|ping)?(?: over)?|topple\w*|(?:fall|falls|falling|fell) (?:over|down)|knock\w*(?: it| the \w+)? over"
+    (r"tip(?:s|ped|ping)?(?: over)?|toppl\w*|(?:fall|falls|falling|fell) (?:over|down)|knock\w*(?: it| the \w+)? over"
      r"|turn\w* over|flip\w*|capsiz\w*|overturn\w*|keel\w* over|tumbl\w*"
      r"|(?:fall|falls|fell)\b(?! (?:in|into|inside|out|off|on|onto)\b)", ("destination_upright",), True),
     (r"(?:stay|stays|remain|remains|keep|keeps|be|is) (?:still|put|in place|steady|stable|stationary"
@@ -118,6 +119,9 @@ _END = rf"(?P<rest>(?: (?:{_REST})\b)*)"
 _WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\bkeep(?:s|ing)? (the (?!source\b)[a-z]+) (still|steady|in place|put)\b", r"so that \1 stays \2"),
     (r"\b(?:do not|never) let (it|them|the [a-z]+|any(?: of it)?) ", r"so that \1 does not "),
+    # "keep the bowl from sliding", "stop it from splashing"
+    (r"\b(?:keep|keeps|keeping|stop|stops|stopping|prevent|prevents|preventing) (it|them|the [a-z]+)"
+     r" from (?=[a-z]+ing\b)", r"so that \1 does not "),
     (r"\bmake sure(?: that)? ", "make sure so that "),
 ))
 
@@ -308,6 +312,7 @@ def hear(text: str) -> Heard:
     text, wants = wanting(text)
     phrases.extend(wants)
     for said, wanted in _WANTING:
+        phrases.extend(m.group(0).strip() for m in said.finditer(text))     # heard as a goal
         text = said.sub(wanted, text)
     text = _spaced(goal.sub(as_goal, text))
     if goals:
