@@ -76,7 +76,7 @@ HINTS: tuple[tuple[str, str], ...] = (
                    'pouring into a bowl that holds liquid'),
     (r"^while ", 'the vocabulary pours from one pose: say where the source moves before pouring '
                  '("move in from the side") or after it ("move away fast")'),
-    (r"^(?:away )?from (?:the )?(?:\w+ )?(?:rim|edge|lip|brim)$", 'measured from the rim: inside it or outside? say how far from '
+    (r"^(?:(?:away )?from|off) (?:the )?(?:\w+ )?(?:rim|edge|lip|brim)$", 'measured from the rim: inside it or outside? say how far from '
                                   'the centre ("5 cm from the centre"), "near the rim" or "to the side"'),
     (r"\b(?:close|next) to", 'close to the bowl: say "just above the rim", "low above the bowl" or '
                              '"near the rim"'),

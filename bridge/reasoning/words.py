@@ -68,6 +68,14 @@ PHRASES: tuple[tuple, ...] = (
                r"re:(?:(?<=\ba )|(?<=\bthe ))(?:very )?(?:low|high)(?= bowl\b)")),
     # way above the bowl: high, or very high?
     (UNCLEAR, (r"re:\b(?:way|far|well) (?:up )?(?:above|over)(?= (?:the |a |it\b|hedge ))",)),
+    # said by the hand or the fingers alone, before where: "a hand above the bowl", "two
+    # fingers above the rim"
+    ("7 to 10 cm", (r"re:\b(?:a|one) (?:hand|palm)(?= (?:above|over|below|under|away|from|to the side"
+                    r"|off|higher|lower)\b)",)),
+    ("1.5 to 2 cm", (r"re:\b(?:a|one) finger(?= (?:above|over|below|under|away|from|to the side|off"
+                     r"|higher|lower)\b)",)),
+    ("3 to 4 cm", (r"re:\btwo fingers?(?: width| breadth)?s?\b",)),
+    ("4.5 to 6 cm", (r"re:\bthree fingers?(?: width| breadth)?s?\b",)),
     # a length said "up" is a height above the destination ("hold it 20 cm up"), and so is
     # one said "over" it ("from 25 cm over the centre"; not "10 cm over to the side")
     ("above", ("re:(?:" + "|".join(rf"(?<=\d {u} )" for u in _LENGTHS) + r")\bup\b",
@@ -246,7 +254,7 @@ PHRASES: tuple[tuple, ...] = (
     (UNCLEAR, ("re:(?:" + "|".join(rf"(?<=\d {u} )" for u in _LENGTHS) + r")(?:above|over|off|from) "
                r"(?:the |a )?context\b",)),
     # a length from the rim: inside it or outside? (from the centre is the vocabulary's)
-    (UNCLEAR, ("re:(?:" + "|".join(rf"(?<=\d {u} )" for u in _LENGTHS) + r")(?:away )?from (?:the )?"
+    (UNCLEAR, ("re:(?:" + "|".join(rf"(?<=\d {u} )" for u in _LENGTHS) + r")(?:(?:away )?from|off) (?:the )?"
                r"(?:destination |bowl )?(?:rim|edge|lip|brim)\b",
                # close to the bowl: above it, low, or near its rim?
                r"re:\b(?:right )?(?:close|next) to (?:the )?(?:destination|bowl)\b(?! rim)")),
@@ -323,6 +331,8 @@ PHRASES: tuple[tuple, ...] = (
     ("tilted", ("angled", "inclined")),
     ("steeply", ("sharply",)),
     ("pour steeply tilted", (r"re:\bpour(?:s|ed|ing)?(?: it| the \w+)? steeply\b(?! tilt)",)),
+    ("steeply tilted", (r"re:\b(?:tilt|tip|turn|lean)\w*(?: it| the \w+)? (?:to|until|till|so|so that)"
+                        r"(?: it is| it's| its)? (?:lying )?(?:the )?horizontal(?:ly)?\b",)),
     ("steeply tilted", ("at a steep angle", "at a sharp angle", "horizontal", "horizontally")),
     ("slightly", ("gently", "barely")),
     ("halfway", ("half way",)),
@@ -342,6 +352,9 @@ PHRASES: tuple[tuple, ...] = (
     ("1.5 to 2 cm", ("a finger width", "a finger breadth", "a fingerbreadth", "one finger width")),
     ("7 to 10 cm", ("a hand width", "a hand breadth", "a handbreadth", "a palm width",
                     "one hand width")),
+    # a turn of the source said in turns: a quarter turn is 90 degrees
+    ("90 degrees", (r"re:\b(?:by |through )?(?:a )?quarter(?: of a)?(?: |-)?turn\b",)),
+    ("180 degrees", (r"re:\b(?:by |through )?(?:a half|half a)(?: |-)?turn\b",)),
 
     ("little", ("a few drops of", "a few drops", "a drop of", "a drop")),
     # a weight said as a compound: "a lightweight paper bowl", "a hefty jug"; or as next to
