@@ -1,0 +1,84 @@
+"""Everyday phrases for the stages of a pour and the moves between them,
+read as the vocabulary's words: part of words.py's PHRASES, applied in
+order at their place there ("put it back upright" is the end upright,
+"bring it in low" a path in at a height, "pull it out fast" the move
+out, "once it's poured" afterwards).
+
+The stage words ("start", "pour", "end", "approach", "retreat") are
+read by stages.py: the rewrites here only bring other words to them.
+"""
+from __future__ import annotations
+
+_IT = "[the source|the bowl|it]"
+#: Words that begin a manner of pouring ("from the side", "with a light liquid").
+_MANNER = ("from|with|over|into|onto|low|high|very|steeply|slightly|halfway|tilted|"
+           "upside|centred|centered|far|near|below|above")
+
+MOVES: tuple[tuple, ...] = (
+    # the stages: the move into the pouring pose, the move out of it, the end pose
+    # (brought back up: raised, or righted? a tilting verb rights it, "bring" says upright)
+    ("end upright", (r"re:\b(?:tip|tips|tipped|tipping|tilt\w*|turn\w*|put\w*|set\w*|stand\w*)(?: it"
+                     r"| the \w+| them)? back (?:up(?:right)?|to (?:upright|vertical|straight))\b"
+                     r"(?! (?:high|higher|above|to \d|\d))",
+                     r"re:\b(?:bring\w*|brought|return\w*)(?: it| the \w+| them)? back (?:upright|to "
+                     r"(?:upright|vertical|straight))\b",
+                     r"re:\b(?:return\w*|turn\w*)(?: it| the \w+| them)? to (?:upright|vertical)\b",
+                     r"re:\bstraighten\w*(?: it| the \w+| them)?(?: up| out)?\b",
+                     r"re:\bright(?:s|ed|ing)?(?: it| the \w+| them)? up\b(?! (?:high|above|over|there|to)\b)", f"put {_IT} back upright", f"set {_IT} back upright",
+                     f"set {_IT} upright", f"stand {_IT} back up", f"stand {_IT} up",
+                     "back upright")),
+    ("end", (f"put {_IT} down", f"set {_IT} down", f"put {_IT} back down", f"set {_IT} back down",
+             "at the end", "in the end", "finish")),
+    # "after pouring from the side": the manner after it is the pour's
+    # emptying a bowl into another, decanting, dumping: pouring
+    ("pour", (r"re:\bempt(?:y|ies|ied|ying)(?= (?:it|the \w+|a \w+) (?:into|in|onto)\b)",
+              "decant", "dump", "free pour")),
+    ("retreat ; pour", (rf"re:\bafter pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",
+                        # "after tilting it halfway": the tilt is the pour's
+                        r"re:\bafter\b(?= (?:tilt|tip|lean|angl|inclin)\w*\b)")),
+    # "bring it back up", "lift it back down": up and down, in the stage they are said in
+    ("raise", (r"re:\b(?:bring|brings|bringing|brought|lift|lifts|lifted|lifting|mov(?:e|es|ed|ing)"
+               r"|tak(?:e|es|ing)|took|pull(?:s|ed|ing)?)(?: it| the \w+| them)? back up\b",)),
+    ("lower", (r"re:\b(?:bring|brings|bringing|brought|lift|lifts|lifted|lifting|mov(?:e|es|ed|ing)"
+               r"|tak(?:e|es|ing)|took)(?: it| the \w+| them)? back down\b",)),
+    # "once it's poured", "when done": after pouring
+    # ("when poured from the side" is how it is poured, not after)
+    ("afterwards", (r"re:\b(?:when|once|after) (?:(?:it|you|i|we|they|the \w+) )?(?:(?:is|are|am|has"
+                    r"|have|was|were|been) )*(?:done|finished|through)\b(?: pour\w*)?",
+                    r"re:\b(?:once|after) (?:(?:it|you|i|we|they|the \w+) )?(?:(?:is|are|am|has"
+                    r"|have|was|were|been) )*(?:poured|emptied)\b(?= *(?:$|[,;.!?]))")),
+    ("afterwards", (r"re:\bafter(?= *(?:$|[,;.!?]))",)),
+    ("before pour", (r"re:\bbefore(?= *(?:$|[,;.!?]))",)),
+    ("approach ; pour", (rf"re:\bbefore pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",)),
+    # a path in at a height ("bring it in low", "come in low", "approach high"): the start and
+    # the pouring pose both there (stages.py), unless the pour's height is said; "move in
+    # from high up" says only where it starts
+    # where the move in stops is the pouring pose: "move in fast and stop just above the cup"
+    ("pour", (r"re:\b(?:stop|stops|stopped|stopping|halt\w*)\b(?= (?:just |right |directly |exactly )?"
+              r"(?:above|over|near|by|beside|\d)\b)",)),
+    ("approach same_height_in", (r"re:\b(?:(?:mov(?:e|es|ed|ing)|bring(?:s|ing)?|brought|com(?:e|es|ing)"
+                                 r"|came|swing(?:s|ing)?|swung|lower(?:s|ed|ing)?)(?: it| the \w+)? in"
+                                 r"|approach(?:es|ed|ing)?)\b(?= (?:(?:slowly|fast|quickly|gently|carefully|steadily)(?: and)? )?"
+                                 r"(?:very |really |quite |fairly |nice and )?"
+                                 r"(?:low|high)\b(?! (?:friction|mass|weight|bounc)))",)),
+    ("approach", (r"re:\b(?:mov(?:e|es|ed|ing)|bring(?:s|ing)?|brought) (?:it|the \w+) (?:in|over)\b",
+                  "before pour", "move to the pour pose", "move into the pour pose",
+                  "move in", "come in")),
+    # leaving slowly: the move away
+    ("retreat", (r"re:\bleav(?:e|es|ing)\b(?= (?:very |really )?(?:slow|fast|quick|rapid|gentl)\w*\b)",)),
+    ("away from", ("move away from", "pull away from")),    # a direction, not the retreat
+    ("retreat", (r"re:\bpull(?:s|ed|ing)? (?:it|the \w+) (?:back|away)\b",
+                 # pulled out: the move out of the pouring pose ("pull it out fast")
+                 r"re:\b(?:pull(?:s|ed|ing)?|draw(?:s|ing)?|drew|yank\w*|whip\w*|tak(?:e|es|ing)|took"
+                 r"|jerk\w*|snatch\w*)"
+                 r"(?: (?:it|the \w+|them))? (?:out|away|back)\b(?! of (?:the |a )?(?:context|liquid)\b)",
+                 r"re:\bmov(?:e|es|ed|ing) (?:it|the \w+|them) (?:away|back|out)\b(?! from)",
+                 "after pour", "afterwards", "move away", "pull away", "pull back",
+                 "back off", "back away", "withdraw")),
+    ("start", ("begin", "at first", "at the start", "initially")),
+    # a pose named by its stage, as a lab note lists them: "initial pose: 20 cm to the side"
+    ("start", (r"re:\b(?:initial|starting|start) (?:pose|position|configuration|state)\b",
+               r"re:\binitial\b")),
+    ("pour", (r"re:\b(?:pour|pouring) (?:pose|position|configuration)\b",)),
+    ("end", (r"re:\b(?:end|ending|final) (?:pose|position|configuration|state)\b",)),
+)
