@@ -239,7 +239,6 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
                    tuple([*heard, *outcome.phrases, *named]))
 
 
-
 def _notes(tokens: list[Token]) -> tuple[str, ...]:
     """The everyday words of the question said back: how each was read."""
     return tuple(dict.fromkeys(f"{t.raw}: {t.said_back}" for t in tokens if t.said_back))
