@@ -19,6 +19,8 @@ BOWL = stem("bowl")
 #: "a heavy ceramic bowl", "the spout of a light jug" (everyday.txt's materials and parts).
 BETWEEN = {"a", "an", "the", "and", "or", "very", "material", "part"}
 ARTICLES = {"a", "an", "the"}
+#: Verbs that say a value of the noun before them ("the bowl is light"), not of one after.
+_COPULAS = {stem(w) for w in ("is", "are", "was", "were", "be", "being", "seems", "looks", "feels")}
 #: What everyday.txt's context nouns are read as: a noun, but of nothing in the scene
 #: ("a slippery counter" says nothing of a bowl).
 CONTEXT = "context"
@@ -85,8 +87,9 @@ class Nouns:
         self.stop = [n] * (n + 1)
         for j in range(n - 1, -1, -1):
             passes = j not in roles and (tokens[j].word in BETWEEN or tokens[j].word in placeable)
-            if tokens[j].word in ("and", "or") and j + 1 < n and tokens[j + 1].word in ARTICLES:
-                passes = False          # "heavy and the destination ...": a new noun's words
+            if tokens[j].word in ("and", "or") and j + 1 < n and (tokens[j + 1].word in ARTICLES
+                                                                  or j + 1 in roles):
+                passes = False          # "heavy and the destination ...", "heavy and jug ...": a new noun's
             self.stop[j] = self.stop[j + 1] if passes else j
         # before[i]: the nearest noun before i in its clause, or None
         self.before: list[int | None] = []
@@ -109,6 +112,8 @@ class Nouns:
         in it ("the table is slippery, the bowl ...": the table)."""
         j = self.stop[last + 1]
         t = self.tokens
+        if first > 0 and t[first - 1].word in _COPULAS and self.before[first] is not None:
+            return self.before[first]           # said of the noun before: "bowl is light and ..."
         ahead = j in self.roles and (t[j].clause == t[last].clause or self.before[first] is None
                                      or (first > 0 and t[first - 1].word in BETWEEN))
         return j if ahead else self.before[first]
