@@ -191,10 +191,11 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
     learner = Settings()
     asked = {0: learner.default_weight, 1: 1.0}
     suspects = {c for c in cands if suspect(c)}
+    support = Support(P)
     if weights.doubt or weights.newness:
         with threadpool_limits(1):
             doubts, news = beyond_parts(meaning, P, S, cands, parents, batch, seed, iteration,
-                                        learner.model_pours)
+                                        learner.model_pours, support)
     else:
         doubts = news = np.zeros(len(cands))
     value, dep, unc, doubt_of = [], [], [], []
@@ -206,7 +207,7 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
         else:
             away = np.min(np.abs(m - M[[index[a] for a in parents[c]]]), axis=0)
             departure = float(away.sum())
-        n = int(in_support(P, c).sum()) if len(P) else 0
+        n = int(support(c).sum())
         q = (n * m + 1) / (n + 2)
         drop = 1 / np.sqrt(n + 1) - 1 / np.sqrt(n + batch + 1)
         uncertainty = (float(np.sqrt(q * (1 - q)).sum() * drop)
@@ -219,6 +220,22 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
                            * (departure + weights.uncertainty * uncertainty)
                            + weights.doubt * doubt + weights.newness * float(new), 6))
     return Teaching(value, dep, unc, doubt_of, [round(float(x), 6) for x in news])
+
+
+class Support:
+    """Which pours of P lie in the support of each body (could have been
+    drawn for it), each body's computed once: a step asks it for the
+    value of a candidate and for the newness its own pours showed."""
+
+    def __init__(self, P: np.ndarray) -> None:
+        self.P = P
+        self.masks: dict[tuple[str, ...], np.ndarray] = {}
+
+    def __call__(self, body: Sequence[str]) -> np.ndarray:
+        key = tuple(body)
+        if key not in self.masks:
+            self.masks[key] = in_support(self.P, key) if len(self.P) else np.zeros(0, dtype=bool)
+        return self.masks[key]
 
 
 def suspect(body: Sequence[str]) -> bool:
@@ -238,22 +255,24 @@ def suspect(body: Sequence[str]) -> bool:
 
 def beyond_parts(meaning, P: np.ndarray, S: np.ndarray, cands: Sequence[tuple[str, ...]],
                  parents: dict[tuple[str, ...], list[tuple[str, ...]]], batch: int, seed: int,
-                 iteration: int, model_pours: float) -> tuple[np.ndarray, np.ndarray]:
+                 iteration: int, model_pours: float,
+                 support: Support | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Per candidate, its batch's doubt (batch_doubt) and newness (as
     realized: shown_new) less the most that one of its parts (`parents`:
     the candidate with one proposition less) gets, at least 0; the empty
-    body is no part."""
+    body is no part. `support` is Support(P), when the caller keeps it."""
     parts = {c: [a for a in parents[c] if a] for c in cands}
     bodies = list(dict.fromkeys([*cands, *(a for c in cands for a in parts[c])]))
     index = {b: i for i, b in enumerate(bodies)}
     h, new = batch_doubt(meaning, S, bodies, batch, seed, iteration)
-    new = shown_new(new, P, S, bodies, model_pours)
+    new = shown_new(new, P, S, bodies, model_pours, support)
     return tuple(np.array([max(0.0, x[index[c]] - max((x[index[a]] for a in parts[c]), default=0.0))
                            for c in cands]) for x in (h, new))
 
 
 def shown_new(new: np.ndarray, P: np.ndarray, S: np.ndarray,
-              bodies: Sequence[tuple[str, ...]], model_pours: float) -> np.ndarray:
+              bodies: Sequence[tuple[str, ...]], model_pours: float,
+              support: Support | None = None) -> np.ndarray:
     """Newness as learning progress: the model's chance that a pour of B's
     next batch shows a new behaviour (`new`), counted as `model_pours`
     pours beside the n_B pours in B's support, of which k_B showed a
@@ -261,8 +280,8 @@ def shown_new(new: np.ndarray, P: np.ndarray, S: np.ndarray,
     its nine verdicts): (model_pours * new + k_B) / (model_pours + n_B).
     What B's pours keep failing to show, B is no longer credited with: a
     region whose pours stay unpredictable keeps a high modelled newness
-    although its pours show behaviours seen already."""
-    from pantarhei.bridge.learning.meaning import held_in_support
+    although its pours show behaviours seen already. `support` is
+    Support(P), when the caller keeps it."""
     from pantarhei.bridge.verdicts import verdicts
 
     if not len(P):
@@ -274,10 +293,11 @@ def shown_new(new: np.ndarray, P: np.ndarray, S: np.ndarray,
     for i, v in enumerate(inverse):
         fresh[i] = earlier[v] < 2
         earlier[v] += 1
+    support = Support(P) if support is None else support
     out = np.array(new, dtype=float)
     for j, b in enumerate(bodies):
-        shown, n = held_in_support(P, fresh, b)
-        out[j] = (model_pours * out[j] + shown[0]) / (model_pours + n)
+        m = support(b)
+        out[j] = (model_pours * out[j] + fresh[m, 0].sum()) / (model_pours + int(m.sum()))
     return out
 
 

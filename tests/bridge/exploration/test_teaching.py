@@ -64,6 +64,27 @@ def test_the_same_pours_give_the_same_values():
     assert a == b
 
 
+def test_a_step_finds_the_pours_of_each_body_once(monkeypatch):
+    """The value of a candidate counts its own pours, and its newness what
+    they showed: which pours lie in a body's support is found once a step."""
+    import pantarhei.bridge.exploration.teaching as teaching_module
+    import pantarhei.bridge.learning.meaning as meaning_module
+
+    found, real = [], teaching_module.in_support
+
+    def counted(P, body):
+        found.append(tuple(body))
+        return real(P, body)
+    for module in (teaching_module, meaning_module):
+        monkeypatch.setattr(module, "in_support", counted)
+    P, S = pooled(pours([], 24, 5), pours(["light_liquid"], 8, 6))
+    cands = [("light_liquid",), ("pour_far_away",), ("light_liquid", "pour_high")]
+    value = teaching(P, S, [(), ("light_liquid",)], cands, Weights(1.0, 1.0, 2.0), 4, 7, 3).value
+    assert set(cands) <= set(found) and len(found) == len(set(found))
+    monkeypatch.undo()
+    assert teaching(P, S, [(), ("light_liquid",)], cands, Weights(1.0, 1.0, 2.0), 4, 7, 3).value == value
+
+
 def test_a_pair_teaches_only_where_its_propositions_interact():
     """Pouring from the side spills whatever the source's bounciness: the
     pair moves no answer away from pouring from the side alone, and a
