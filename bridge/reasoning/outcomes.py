@@ -152,7 +152,10 @@ def _patterns() -> tuple[re.Pattern, ...]:
                          r"|splash(?:es)?|mess|drips?|puddles?)\b(?! of\b)"
                          r"|(?:^|(?<=[,:;.?!\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014]))"
                          r"(?:spill(?:s|age)?|splash(?:es)?|drips?|leaks?)(?: (?:everywhere|out|over))?"
-                         r"(?= *[?.!]* *$)")
+                         r"(?= *[?.!]* *$)"
+                         # named as a measure: "the spill outcome", "what is the spillage rate"
+                         r"|\b(?:the |any |a )?(?:spill(?:s|age)?|splash(?:es|ing)?|drips?|mess)"
+                         r" (?:outcome|result|risk|rate|amount|chance|probability|likelihood)s?\b")
     goal = re.compile(
         rf"\b(?:without (?P<gneg>any |a |making (?:a |any )?)?(?P<gwho>(?:it|them|the [a-z]+) )?"
         rf"(?:getting |being )?"
@@ -256,6 +259,9 @@ def hear(text: str) -> Heard:
     phrases: list[str] = []
     negations: list[bool] = []          # whether each goal said was negated ("without ...")
     pattern, nominal, goal, more, bare = _patterns()
+    # words joined by a hyphen, and an aside in brackets, are words of the clause they stand
+    # in ("does a high-restitution (bouncy) liquid splash?"), as the scene reads them
+    text = re.sub(r"[()\[\]]", " ", re.sub(r"(?<=[a-z])-(?=[a-z])", " ", text))
 
     def take(m: re.Match, keep: str = "") -> str:
         phrases.append(m.group(0).strip())
