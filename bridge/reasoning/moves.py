@@ -62,7 +62,7 @@ MOVES: tuple[tuple, ...] = (
                                  r"(?:very |really |quite |fairly |nice and )?"
                                  r"(?:low|high)\b(?! (?:friction|mass|weight|bounc)))",)),
     ("approach", (r"re:\b(?:mov(?:e|es|ed|ing)|bring(?:s|ing)?|brought) (?:it|the \w+) (?:in|over)\b",
-                  "before pour", "move to the pour pose", "move into the pour pose",
+                  "before pour", "before the pour", "move to the pour pose", "move into the pour pose",
                   "move in", "come in")),
     # leaving slowly: the move away
     ("retreat", (r"re:\bleav(?:e|es|ing)\b(?= (?:very |really )?(?:slow|fast|quick|rapid|gentl)\w*\b)",)),
@@ -73,7 +73,7 @@ MOVES: tuple[tuple, ...] = (
                  r"|jerk\w*|snatch\w*)"
                  r"(?: (?:it|the \w+|them))? (?:out|away|back)\b(?! of (?:the |a )?(?:context|liquid)\b)",
                  r"re:\bmov(?:e|es|ed|ing) (?:it|the \w+|them) (?:away|back|out)\b(?! from)",
-                 "after pour", "afterwards", "move away", "pull away", "pull back",
+                 "after pour", "after the pour", "afterwards", "move away", "pull away", "pull back",
                  "back off", "back away", "withdraw")),
     ("start", ("begin", "at first", "at the start", "initially")),
     # a pose named by its stage, as a lab note lists them: "initial pose: 20 cm to the side"

@@ -26,7 +26,7 @@ import re
 from dataclasses import dataclass
 from functools import lru_cache
 
-from pantarhei.bridge.reasoning.everyday import Matcher, alternation, names, sections
+from pantarhei.bridge.reasoning.everyday import Matcher, alternation, forms, names, sections
 from pantarhei.bridge.reasoning.seeking import sought, wanting
 
 _STILL = ("destination_still_approach", "destination_still_retreat", "destination_still_settle")
@@ -81,7 +81,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:go|goes|going|went|get|gets|land|lands|make it|makes it|fall|falls|"
      r"arrive\w*) (?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*",
      _ALL_IN, False),
-    (r"miss(?:es|ed|ing)?", _ALL_IN, True),
+    (r"miss(?:es|ed|ing)?|overshoot\w*|undershoot\w*|fall\w* short", _ALL_IN, True),
     (r"safe(?:ly)?|(?:be |is )?(?:fine|ok|okay|alright|all right)\b|(?:a )?(?:good|bad) idea|risky"
      r"|(?:go|goes|going|went) wrong"
      r"|dangerous|(?:a )?problem",
@@ -108,6 +108,9 @@ _REST = ("at all times|all the time|the whole time|at any point|at any time|thro
 _PART_OF = re.compile(r"\b(?:most|all|any|some|much|half|none|part|a lot|a bit|a little|little|"
                       r"the rest|each) of\b|\b(?:the |a )?(?:chance|chances|probability|likelihood|"
                       r"odds|risk)(?: of| that)?\b")
+#: Quantifiers that begin the subject of an outcome asked ("does much stay in", "will some
+#: spill"): the outcome's words, not an amount of liquid in the scene.
+_QUANTIFIERS = {"much", "most", "some", "any", "all", "little", "none", "half", "lots", "plenty"}
 #: How much of the liquid, asked: "what fraction of the liquid spills".
 _SHARE = r"(?:what|which) (?:fraction|proportion|share|percentage|part|amount)(?: of (?:it|the \w+))?"
 _END = rf"(?P<rest>(?: (?:{_REST})\b)*)"
@@ -190,7 +193,8 @@ def _filled(verb: str) -> str:
 #: Contact asked of by its noun alone: "contact between source and bowl?", "any collision
 #: with the bowl?" (not "in contact with", which states it).
 _CONTACT = re.compile(r"(?<!\bin )\b(?:(?:is|will) there (?:be )?)?(?:any |some |no |a |the )?"
-                      r"(?:contact|collisions?) (?:between|with)\b")
+                      r"(?:contact|collisions?) (?:between|with)\b"
+                      r"|\b(?:is|will|would|could) there (?:be )?(?:any |some |no |a )?collisions?\b")
 
 
 #: Why a question of what follows an outcome is refused, and what would be read.
@@ -209,7 +213,17 @@ def _which(m: re.Match) -> tuple[tuple[str, ...], bool]:
     k = next(k for k in range(len(OUTCOMES)) if m.groupdict().get(f"v{k}"))
     if k == 0 and _out_of_the_source(m.string, m.end("v0")):
         return OUTCOMES[1][1], OUTCOMES[1][2]
+    if OUTCOMES[k][1] == ("liquid_remains_in_destination",) and _in_the_source(m.group(f"v{k}")):
+        return ("liquid_leaves_source",), True       # staying in the source: not leaving it
     return OUTCOMES[k][1], OUTCOMES[k][2]
+
+
+def _in_the_source(said: str) -> bool:
+    """Whether liquid said to stay in a bowl (`said`: "stays in the jug")
+    stays in the source: one named so, or one people pour from."""
+    bowl = said.split()[-1]
+    return bowl == "source" or bowl in {f[0] for s in sections() if s.words == "bowl poured from"
+                                        for p in s.phrases if " " not in p for f in forms(p)}
 
 
 def _out_of_the_source(text: str, at: int) -> bool:
@@ -291,6 +305,10 @@ def hear(text: str) -> Heard:
         if _acts(subject, names) or _around().spans(before) or _state(m) or imperative:
             return m.group(0)
         asked.extend(n for n in names if n not in asked)
+        # "does much stay in the jug", "will some milk spill": how much of the liquid the
+        # outcome is asked of, not how much the source holds
+        while subject and subject[0] in _QUANTIFIERS:
+            subject = subject[1:]
         kept = " ".join(subject) if m.group("aux") or m.group("chance") else ""
         # "is the chance of spilling high": the odds, heard; "does it splash high": the scene's
         odds = m.group("odds") or ""

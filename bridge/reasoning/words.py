@@ -212,7 +212,8 @@ PHRASES: tuple[tuple, ...] = (
     ("centred", ("centered", "center", "centre", "central", "in the middle", "middle",
                  r"re:\b(?:directly|straight|right) (?:above|over)(?= (?:the )?(?:destination|bowl"
                  r"|centre|center|middle)\b)")),
-    ("far", ("far off", "distant", "a long way", "from a distance", "at a distance")),
+    ("far", (r"re:\bfar (?:off |away )?to (?:the|one) side\b", "far off", "distant", "a long way",
+             "from a distance", "at a distance")),
     # to the left or right: the vocabulary's offset names no side (a side said is refused)
     # (but "from the right side" is from the side)
     (UNCLEAR, (r"re:\b(?:to|on|from|at|towards?) (?:(?:the|your|my|its) (?:left|right)|left)\b"
