@@ -57,7 +57,7 @@ PHRASES: tuple[tuple, ...] = (
     ("hedge", ("how much", "how many",    # asks, does not say: "how much liquid spills"
                "nearly",                   # a hedge (its stem would be "near")
                r"re:\bbetween(?= -?\d+(?:\.\d+)? and -?\d)")),   # a range: quantities.py's
-    ("very", (rf"re:\b(?:super|extremely|incredibly|insanely|ridiculously|awfully|terribly"
+    ("very", (rf"re:\b(?:super duper|super|extremely|incredibly|insanely|ridiculously|awfully|terribly"
               rf"|exceptionally|unusually|crazy|way)(?= (?:{_INTENSIFIED})\b)",)),
     # a low bowl, a high-sided one: its size, which the vocabulary does not say (a height is
     # where the source is)
