@@ -19,25 +19,10 @@ where the two propositions interact: where neither proposition's rule
 gives the pair's likelihood. Every pair of conflicting rules that can
 apply together is ordered by rank (`Sup`).
 
-Where sure rules meet (`doubt_support`). Two rules that conclude
-opposite heads, each sure of it (`doubt_confidence`), and can apply
-together, neither body holding the other, say nothing of a scene that
-holds both: the rank that orders them is no evidence. For the union of
-their bodies (at most `max_body` propositions) the learner asks the
-pours. Where fewer than `doubt_support` of them lie in its support, it
-adds a rule whose likelihood, the model's estimate held within the
-uncertain band, answers `maybe`: the theory says it does not know, and
-which way it leans, instead of one part's sure verdict. Where more do,
-and the model's verdict for the union is not the higher ranked part's, it
-adds a rule with the model's likelihood: a rule wherever the pours
-support one. These rules come after the contrasts, within
-`rules_per_expectation`, the most conflicting pair first.
-
-Where the pours contradict a sure answer (`_exceptions`). A body with
-`doubt_support` pours of its own or more that the rules answer at least
-`doubt_confidence` sure, in another band than its own likelihood says,
-gets a rule of its own,
-beyond `rules_per_expectation`: a rule wherever the pours support one.
+Where the answers are doubted (doubts.py): the union of two sure rules
+that conflict, a body whose own pours contradict a sure answer, a pair
+next to an explored pair that interacts. Their rules come after the
+contrasts, beyond `rules_per_expectation`.
 """
 from __future__ import annotations
 
@@ -53,6 +38,7 @@ from pantarhei.theory.lexicon import load_vocabulary
 
 from pantarhei.bridge.verdicts import verdicts
 from pantarhei.bridge.learning.askable import askable_bodies, together
+from pantarhei.bridge.learning.doubts import doubts, exceptions, level, neighbours
 from pantarhei.bridge.learning.general_rules import General, GeneralRule, Sup, verdict
 from pantarhei.bridge.learning.meaning import Meaning, held_in_support
 
@@ -80,6 +66,9 @@ class Settings:
     #: head, gets an uncertain rule (0: never)
     doubt_support: int = 4
     doubt_confidence: float = 0.8
+    #: fewer pours of a body's own than `doubt_support` contradict a sure
+    #: answer when their count would be less likely than this under it
+    unlikely: float = 0.05
     #: how many pours the model's estimate counts as beside a body's own
     #: (the pours in its support), for a body of one proposition or more
     model_pours: float = 4.0
@@ -90,7 +79,7 @@ class Settings:
         if not 0 <= self.band < 0.5 or self.draws < 1:
             raise ValueError("band in [0, 1/2), draws at least 1")
         if min(self.miss, self.default_weight, self.pair_weight, self.min_gain,
-               self.doubt_support, self.model_pours) < 0:
+               self.doubt_support, self.model_pours, self.unlikely) < 0:
             raise ValueError("miss, weights, min_gain, doubt_support and model_pours at least 0")
 
     def verdict(self, likelihood):
@@ -145,8 +134,9 @@ def _generalize(P: np.ndarray, S: np.ndarray, settings: Settings,
     out = General(band=settings.band)
     for k, e in enumerate(vocab.expectation_names):
         rules = _Contrasts(e, bodies, T[:, k], settings).learn()
-        rules += _doubts(rules, k, meaning, P, settings)
-        rules += _exceptions(rules, bodies, T[:, k], P, settings)
+        rules += doubts(rules, k, meaning, P, settings)
+        rules += exceptions(rules, bodies, T[:, k], P, Y[:, k], settings)
+        rules += neighbours(rules, bodies, T[:, k], k, meaning, P, settings)
         out.rules.extend(_with_evidence(r, P, Y[:, k]) for r in rules)
     for e in vocab.expectation_names:
         out.sup.extend(_superiority(out.of(e)))
@@ -234,7 +224,7 @@ class _Contrasts:
             if best is None:
                 break
             rule = self.rule(best, len(chosen))
-            rule = replace(rule, level=_level(rule.body, rule.holds, chosen))
+            rule = replace(rule, level=level(rule.body, rule.holds, chosen))
             taken.add(best)
             chosen.append(rule)
             at = self.above[best]
@@ -243,99 +233,6 @@ class _Contrasts:
             answered[at] = rule.likelihood
             now[at] = self.cost(answered[at], at)
         return chosen
-
-
-def _doubts(rules: list[GeneralRule], k: int, meaning: Meaning, P: np.ndarray,
-            s: Settings) -> list[GeneralRule]:
-    """The rules for the unions of sure, conflicting rules' bodies (at most
-    `max_body` propositions), the most conflicting pair first, as many as
-    `rules_per_expectation` leaves room for: where fewer than
-    `doubt_support` pours lie in a union's support, a rule whose likelihood
-    is the model's (expectation k) held within the uncertain band (the
-    pours do not tell); where more do, a rule with the model's likelihood
-    when the part that ranks higher answers otherwise."""
-    room = s.rules_per_expectation - len(rules)
-    if room <= 0 or not s.doubt_support:
-        return []
-    have = {tuple(sorted(r.body)) for r in rules}
-    pairs = []
-    for r, q in combinations(rules, 2):
-        a, b = set(r.body), set(q.body)
-        union = tuple(sorted(a | b))
-        if (r.holds == q.holds or not a or not b or a <= b or b <= a
-                or len(union) > s.max_body or union in have or not together(r.body, q.body)
-                or min(r.confidence, q.confidence) < s.doubt_confidence):
-            continue
-        pairs.append((-abs(r.likelihood - q.likelihood), union, max(r, q, key=lambda x: x.rank)))
-    todo: dict[tuple[str, ...], GeneralRule] = {}     # each union once, with its first pair's top
-    for _, union, top in sorted(pairs, key=lambda x: (x[0], x[1])):
-        todo.setdefault(union, top)
-    if not todo:
-        return []
-    inside = s.band - 0.002          # strictly within the band, once written in permille
-    out: list[GeneralRule] = []
-    M = meaning(list(todo))[:, k]
-    for (union, top), m in zip(todo.items(), M):
-        if len(out) >= room or not np.isfinite(m):
-            continue
-        if int(in_support(P, union).sum()) < s.doubt_support:
-            p = float(np.clip(m, 0.5 - inside, 0.5 + inside))
-        elif s.verdict(m) != s.verdict(top.likelihood):
-            p = float(m)
-        else:
-            continue
-        out.append(_added(union, p, rules, out))
-    return out
-
-
-def _exceptions(rules: list[GeneralRule], bodies: Sequence[tuple[str, ...]], target: np.ndarray,
-                P: np.ndarray, s: Settings) -> list[GeneralRule]:
-    """The rules for bodies whose own pours contradict a sure answer: a
-    body with at least `doubt_support` pours of its own in its support,
-    which the rules so far answer at least `doubt_confidence` sure, in
-    another band (holds, uncertain, fails) than its own likelihood
-    (`target`, its pours counted), gets a rule with that likelihood,
-    beyond `rules_per_expectation`: the cap keeps the theory
-    readable, not wrong where its pours say otherwise. Smaller bodies
-    first (a proposition's rule may answer its pairs); each rule decides
-    the bodies that hold it before the next is weighed."""
-    from pantarhei.bridge.learning.general_rules import deciding
-
-    if not s.doubt_support:
-        return []
-    out: list[GeneralRule] = []
-    order = sorted(range(len(bodies)), key=lambda i: (len(bodies[i]), bodies[i]))
-    for i in order:
-        b = bodies[i]
-        if not b or any(tuple(sorted(r.body)) == b for r in rules + out):
-            continue
-        t = float(target[i])
-        j = deciding(rules + out, set(b))
-        if j is None:
-            continue
-        answered = (rules + out)[j].likelihood
-        if (max(answered, 1 - answered) < s.doubt_confidence
-                or s.verdict(answered) == s.verdict(t)
-                or int(in_support(P, b).sum()) < s.doubt_support):
-            continue
-        out.append(_added(b, t, rules, out))
-    return out
-
-
-def _added(body: tuple[str, ...], likelihood: float, rules: list[GeneralRule],
-           out: list[GeneralRule]) -> GeneralRule:
-    """The rule for `body` with `likelihood`, numbered after the rules
-    chosen (`rules`, then those added so far, `out`), at its level."""
-    holds = likelihood >= 0.5
-    e = rules[0].expectation
-    rule = GeneralRule(f"g{len(rules) + len(out)}_{e}", body, e, holds, 0, 0,
-                       likelihood if holds else 1 - likelihood, 0)
-    return replace(rule, level=_level(body, holds, rules + out))
-
-
-def _level(body, r_holds: bool, chosen: Sequence[GeneralRule]) -> int:
-    under = [r.level for r in chosen if r.holds != r_holds and set(r.body) < set(body)]
-    return 1 + max(under) if under else 1
 
 
 def _superiority(rules: Sequence[GeneralRule]) -> list[Sup]:

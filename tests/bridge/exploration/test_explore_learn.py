@@ -72,7 +72,7 @@ def test_one_layer_whose_bodies_are_the_explored_antecedents(learned):
     facts = read_facts([Path(result["out"])])
     named = {str(a[0]): str(a[2]) for a in facts["provenance"] if str(a[1]) == "antecedent"}
     # beside them, where two sure rules of explored bodies meet without pours of
-    # both (generalize._doubts), a rule for the union of their bodies, of no antecedent
+    # both (doubts.doubts), a rule for the union of their bodies, of no antecedent
     unions = {tuple(sorted(set(a) | set(b))) for a in explored for b in explored}
     met = [r for r in theory.rules if tuple(sorted(r.body)) not in explored]
     assert all(tuple(sorted(r.body)) in unions and r.id not in named for r in met)
@@ -165,7 +165,7 @@ def test_it_records_the_pours_of_every_explored_antecedent(learned, cli):
     # a rule of an explored antecedent rests on the very pours held/4 counts
     prov = {(str(r), str(key)): v for r, key, v in facts["provenance"]}
     theory = load([Path(result["out"])])
-    # (a rule where sure rules meet has no antecedent of its own: generalize._doubts)
+    # (a rule where sure rules meet has no antecedent of its own: doubts.doubts)
     rules = [r for r in theory.rules if (r.id, "antecedent") in prov]
     for r in rules:
         e = r.head.removeprefix("neg(").rstrip(")")

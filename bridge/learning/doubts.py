@@ -1,0 +1,182 @@
+"""Where the general learner doubts its rules' answers, after the
+contrasts (generalize.py) are chosen, one expectation at a time. The rules
+added here are not bound by `rules_per_expectation`: the cap keeps the
+theory readable, not wrong where its pours say otherwise, nor sure where
+they say nothing.
+
+- `doubts`: two sure rules that conclude opposite heads and can apply
+  together, neither body holding the other, say nothing of a scene of
+  both: the rank that orders them is no evidence. The union of their
+  bodies gets the model's likelihood where `doubt_support` pours or more
+  lie in its support and the model's verdict is not the higher ranked
+  part's, and a likelihood held within the uncertain band (`maybe`) where
+  fewer do.
+- `exceptions`: a body whose own pours contradict a sure answer (at least
+  `doubt_confidence`) gets a rule with its own likelihood, in another
+  band, where it has `doubt_support` pours or more in its support, or
+  fewer whose count would be less likely than `unlikely` under the answer
+  (two pours of two that keep the bowl empty, against a `yes` of 94%).
+- `neighbours`: where an explored pair interacts (its likelihood lies in
+  another band than each of its parts'), the pairs one rank along either
+  proposition's scale (pouring high beside pouring very high, over the
+  centre) interact as likely. One with fewer than `doubt_support` pours
+  of its own that the rules answer sure gets `maybe`.
+"""
+from __future__ import annotations
+
+from itertools import combinations
+from typing import TYPE_CHECKING, Sequence
+
+import numpy as np
+from scipy.stats import binom
+
+from pantarhei.oracle.generative import in_support
+from pantarhei.theory.lexicon import load_vocabulary
+
+from pantarhei.bridge.learning.askable import together
+from pantarhei.bridge.learning.general_rules import GeneralRule, deciding
+from pantarhei.bridge.learning.meaning import held_in_support
+
+if TYPE_CHECKING:
+    from pantarhei.bridge.learning.generalize import Settings
+    from pantarhei.bridge.learning.meaning import Meaning
+
+
+def doubts(rules: list[GeneralRule], k: int, meaning: Meaning, P: np.ndarray,
+           s: Settings) -> list[GeneralRule]:
+    """The rules for the unions of sure, conflicting rules' bodies (at most
+    `max_body` propositions), the most conflicting pair first: where fewer
+    than `doubt_support` pours lie in a union's support, a rule whose
+    likelihood is the model's (expectation k) held within the uncertain
+    band (the pours do not tell); where more do, a rule with the model's
+    likelihood when the part that ranks higher answers otherwise."""
+    if not s.doubt_support:
+        return []
+    have = {tuple(sorted(r.body)) for r in rules}
+    pairs = []
+    for r, q in combinations(rules, 2):
+        a, b = set(r.body), set(q.body)
+        union = tuple(sorted(a | b))
+        if (r.holds == q.holds or not a or not b or a <= b or b <= a
+                or len(union) > s.max_body or union in have or not together(r.body, q.body)
+                or min(r.confidence, q.confidence) < s.doubt_confidence):
+            continue
+        pairs.append((-abs(r.likelihood - q.likelihood), union, max(r, q, key=lambda x: x.rank)))
+    todo: dict[tuple[str, ...], GeneralRule] = {}     # each union once, with its first pair's top
+    for _, union, top in sorted(pairs, key=lambda x: (x[0], x[1])):
+        todo.setdefault(union, top)
+    if not todo:
+        return []
+    out: list[GeneralRule] = []
+    for (union, top), m in zip(todo.items(), meaning(list(todo))[:, k]):
+        if not np.isfinite(m):
+            continue
+        if int(in_support(P, union).sum()) < s.doubt_support:
+            p = _maybe(m, s)
+        elif s.verdict(m) != s.verdict(top.likelihood):
+            p = float(m)
+        else:
+            continue
+        out.append(added(union, p, rules, out))
+    return out
+
+
+def exceptions(rules: list[GeneralRule], bodies: Sequence[tuple[str, ...]], target: np.ndarray,
+               P: np.ndarray, y: np.ndarray, s: Settings) -> list[GeneralRule]:
+    """The rules for bodies whose own pours contradict a sure answer: a
+    body that the rules so far answer at least `doubt_confidence` sure, in
+    another band (holds, uncertain, fails) than its own likelihood
+    (`target`, its pours counted), with at least `doubt_support` pours in
+    its support or fewer whose count of pours that hold (`y`: per pour,
+    whether it holds) is less likely than `unlikely` under the answer,
+    gets a rule with its likelihood. Smaller bodies first (a proposition's
+    rule may answer its pairs); each rule decides the bodies that hold it
+    before the next is weighed."""
+    if not s.doubt_support:
+        return []
+    out: list[GeneralRule] = []
+    for i in sorted(range(len(bodies)), key=lambda i: (len(bodies[i]), bodies[i])):
+        b = bodies[i]
+        if not b or any(tuple(sorted(r.body)) == b for r in rules + out):
+            continue
+        t = float(target[i])
+        j = deciding(rules + out, set(b))
+        if j is None:
+            continue
+        answered = (rules + out)[j].likelihood
+        if max(answered, 1 - answered) < s.doubt_confidence or s.verdict(answered) == s.verdict(t):
+            continue
+        held, n = held_in_support(P, y[:, None], b)
+        if n >= s.doubt_support or (n and _unlikely(int(held[0]), n, answered) < s.unlikely):
+            out.append(added(b, t, rules, out))
+    return out
+
+
+def neighbours(rules: list[GeneralRule], bodies: Sequence[tuple[str, ...]], target: np.ndarray,
+               k: int, meaning: Meaning, P: np.ndarray, s: Settings) -> list[GeneralRule]:
+    """`maybe` for the pairs one rank along a proposition's scale from an
+    explored pair (`bodies`, with their likelihoods `target`) with at least
+    `doubt_support` pours of its own whose band is neither of its parts':
+    each such pair that is no explored body, has fewer than
+    `doubt_support` pours in its support, and is answered at least
+    `doubt_confidence` sure by the rules, gets a rule whose likelihood is
+    the model's (expectation k) held within the uncertain band."""
+    if not s.doubt_support:
+        return []
+    props = load_vocabulary().propositions
+    own = {b: float(t) for b, t in zip(bodies, target)}
+    near: set[tuple[str, ...]] = set()
+    for b in bodies:
+        if (len(b) != 2 or any((x,) not in own for x in b)
+                or any(s.verdict(own[b]) == s.verdict(own[(x,)]) for x in b)
+                or int(in_support(P, b).sum()) < s.doubt_support):
+            continue
+        for keep, move in (b, b[::-1]):
+            m = props[move]
+            for q in props.values():
+                pair = tuple(sorted((keep, q.name)))
+                if (q.dimension == m.dimension and abs(q.rank - m.rank) == 1
+                        and pair not in own and together((keep,), (q.name,))):
+                    near.add(pair)
+    todo = [p for p in sorted(near) if int(in_support(P, p).sum()) < s.doubt_support]
+    out: list[GeneralRule] = []
+    for pair, m in zip(todo, meaning(todo)[:, k] if todo else []):
+        j = deciding(rules + out, set(pair))
+        if (not np.isfinite(m) or j is None or any(tuple(sorted(r.body)) == pair for r in rules + out)
+                or max((rules + out)[j].likelihood, 1 - (rules + out)[j].likelihood) < s.doubt_confidence):
+            continue
+        out.append(added(pair, _maybe(m, s), rules, out))
+    return out
+
+
+def _maybe(m: float, s: Settings) -> float:
+    """The model's likelihood m held strictly within the uncertain band
+    (once written in permille)."""
+    inside = s.band - 0.002
+    return float(np.clip(m, 0.5 - inside, 0.5 + inside))
+
+
+def _unlikely(held: int, n: int, answered: float) -> float:
+    """The chance, under an answer of likelihood `answered`, of a count of
+    pours that hold as far from it as `held` of `n` (one-sided)."""
+    return float(binom.cdf(held, n, answered) if answered >= 0.5 else binom.sf(held - 1, n, answered))
+
+
+def added(body: tuple[str, ...], likelihood: float, rules: list[GeneralRule],
+          out: list[GeneralRule]) -> GeneralRule:
+    """The rule for `body` with `likelihood`, numbered after the rules
+    chosen (`rules`, then those added so far, `out`), at its level."""
+    from dataclasses import replace
+
+    holds = likelihood >= 0.5
+    e = rules[0].expectation
+    rule = GeneralRule(f"g{len(rules) + len(out)}_{e}", body, e, holds, 0, 0,
+                       likelihood if holds else 1 - likelihood, 0)
+    return replace(rule, level=level(body, holds, rules + out))
+
+
+def level(body, r_holds: bool, chosen: Sequence[GeneralRule]) -> int:
+    """A rule's level: one above the highest level of the rules of the
+    other head whose bodies its own holds."""
+    under = [r.level for r in chosen if r.holds != r_holds and set(r.body) < set(body)]
+    return 1 + max(under) if under else 1
