@@ -96,6 +96,10 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text = re.sub(rf"\b(?:{'|'.join(_BARE)})\b", lambda m: respelt(m.group(0)), text)
     text = re.sub(rf"\bcant\b(?= (?:{_PRONOUNS})\b)", lambda m: respelt(m.group(0)), text)
     text = re.sub(rf"\b((?:{_PRONOUNS}) )cant\b", lambda m: m.group(1) + respelt("cant"), text)
+    # a probability written as one: "P(no_spill)", "p(spill)"
+    text = re.sub(r"\b(p|pr|prob)\s*\((?=[^()]*\))",
+                  lambda m: said.setdefault(f"{m.group(1)}: read as the chance of") or "the chance of (",
+                  text)
     return _normalised(text), tuple(said)
 
 
@@ -122,7 +126,7 @@ def _normalised(text: str) -> str:
     text = re.sub(r"\b((?:tilt|tip|lean)\w*(?: (?:it|the \w+))?) back(?:wards?)?(?: (?:by|at|to|about|around))*"
                   r" (\d+(?:\.\d+)?)(?= ?(?:degrees?|degs?)?\b(?! ?[-\d]))", r"\1 back at -\2", text)
     # a number said with tilting and no unit is an angle: "tilt it 45", "tilted to 30 to 40"
-    text = re.sub(r"\b((?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|the \w+))?(?: (?:to|by|at|of|about|around"
+    text = re.sub(r"\b((?:(?:tilt|tip|angl|inclin|lean)\w*|pitch(?:ed|ing)?)(?: (?:it|the \w+))?(?: (?:to|by|at|of|about|around"
                   r"|roughly|approximately|some))*) (-?\d+(?:\.\d+)?(?: (?:to|or) -?\d+(?:\.\d+)?)?)"
                   rf"(?![\w.%\u00b0-]| ?(?:{_UNIT_WORDS})\b| (?:to|or|and) -?\d)"
                   r"(?= *(?:$|[,;.!?):\u2013\u2014]|- |(?:and|then|but|so|while|before|after|from|above|over|with|into|at"
