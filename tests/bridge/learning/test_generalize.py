@@ -269,6 +269,9 @@ def test_two_sure_rules_that_conflict_say_what_the_pours_of_both_show_or_maybe()
     theory = General(rules=sure + [doubted])
     assert theory.decide(set(pair))[E] == (UNKNOWN, doubted.id)
     assert General(rules=sure).decide(set(pair))[E][0] != UNKNOWN    # one part, for sure
+    # beyond the cap: with room for three rules, the three sure ones, still
+    capped = Settings(seed=3, draws=24, rules_per_expectation=3)
+    assert [r.body for r in _doubts(sure, k, meaning, P[apart], capped)] == [pair]
     # nor for sure rules whose bodies nest, or with doubt_support 0
     assert not _doubts(sure, k, meaning, P[apart], Settings(seed=3, draws=24, doubt_support=0))
     nested = sure[:2] + [GeneralRule("g2_no_spill", ("light_liquid", "pour_centred"), E, False,

@@ -1,0 +1,68 @@
+"""Where the learner doubts its rules' answers (bridge/learning/doubts.py):
+a body whose few own pours would be unlikely under a sure answer, and a
+pair next to an explored pair that interacts."""
+from __future__ import annotations
+
+import numpy as np
+
+from pantarhei.bridge.learning.doubts import exceptions, neighbours
+from pantarhei.bridge.learning.general_rules import General, GeneralRule
+from pantarhei.bridge.learning.generalize import Settings
+from pantarhei.bridge.learning.meaning import Meaning
+from pantarhei.bridge.verdicts import UNKNOWN
+from pantarhei.oracle.generative import sample
+from pantarhei.theory.lexicon import load_vocabulary
+
+NAMES = load_vocabulary().expectation_names
+E = "liquid_enters_destination"
+K = NAMES.index(E)
+FAST = Settings(seed=3, draws=24)
+DEFAULT = GeneralRule(f"g0_{E}", (), E, True, 0, 0, 0.95, 0)
+
+
+def test_two_pours_of_two_that_contradict_a_sure_answer_get_their_own_rule():
+    """The default says yes 95%; both pours drawn for the pair keep the
+    bowl empty: fewer than `doubt_support` pours, but 0 of 2 is unlikely
+    (0.25%) under the answer, so the pair gets its own rule. One pour of
+    two (10%) is not unlikely enough, nor is anything with `unlikely` 0."""
+    pair = ("approach_raising", "pour_below_rim")
+    P = sample(list(pair), 2, 7)
+    target = np.array([0.95, 0.3])
+    bodies = [(), pair]
+    (rule,) = exceptions([DEFAULT], bodies, target, P, np.array([False, False]), FAST)
+    assert rule.body == pair and not rule.holds and abs(rule.likelihood - 0.3) < 1e-9
+    assert not exceptions([DEFAULT], bodies, target, P, np.array([True, False]), FAST)
+    off = Settings(seed=3, draws=24, unlikely=0.0)
+    assert not exceptions([DEFAULT], bodies, target, P, np.array([False, False]), off)
+
+
+def _explored(pair_likelihood: float):
+    """Pours of pouring very high over the centre (6, none of which fills
+    the bowl), and the likelihoods of the bodies explored: each part alone
+    fills it, the pair `pair_likelihood`."""
+    pair = ("pour_centred", "pour_very_high")
+    P = sample(list(pair), 6, 11)
+    Y = np.ones((len(P), len(NAMES)), dtype=bool)
+    Y[:, K] = False
+    bodies = [(), ("pour_centred",), ("pour_very_high",), pair]
+    return P, Meaning(P, Y, FAST), bodies, np.array([0.95, 0.95, 0.95, pair_likelihood])
+
+
+def test_a_pair_next_to_one_that_interacts_says_maybe():
+    """Pouring very high over the centre keeps the bowl empty, though each
+    part fills it: pouring high over the centre, never poured, one rank
+    along the height's scale, is answered maybe, not the default's sure
+    yes; a pair two ranks away (below the rim) keeps the default's."""
+    P, meaning, bodies, target = _explored(0.05)
+    added = neighbours([DEFAULT], bodies, target, K, meaning, P, FAST)
+    said = {r.body: r for r in added}
+    assert ("pour_centred", "pour_high") in said
+    assert ("pour_below_rim", "pour_centred") not in said
+    theory = General(rules=[DEFAULT] + added)
+    assert theory.decide({"pour_centred", "pour_high"})[E][0] == UNKNOWN
+    assert all(FAST.verdict(r.likelihood) == UNKNOWN for r in added)
+
+
+def test_no_maybe_next_to_a_pair_that_does_not_interact():
+    P, meaning, bodies, target = _explored(0.95)
+    assert not neighbours([DEFAULT], bodies, target, K, meaning, P, FAST)
