@@ -7,7 +7,8 @@ A word is read as another only when nothing else is near: the reader
 does not know it, an English dictionary does not hold it (pyspellchecker's
 word list, loaded only when a question holds a word the reader does not
 know), and one word the reader reads is one edit away (a letter left
-out, added, changed, or two swapped; for a word of three letters, only
+out, added, changed for a key beside it or a letter that sounds alike, or
+two swapped; for a word of three letters, only
 two swapped: "teh" is the), or, for a word of six letters or
 more with none one edit away, two edits; where several are, a word that
 says something before a word of the question's frame ("havy": heavy, not
@@ -74,6 +75,36 @@ def _dictionary():
     return SpellChecker(language="en", distance=1)
 
 
+#: Letters written for one another as they sound alike ("tilded": tilted, "evrywhere").
+_SOUNDS = ("aeiouy", "dt", "bp", "gkc", "csz", "fv", "mn")
+#: The rows of a keyboard: a letter typed for another is one beside it.
+_ROWS = ("qwertyuiop", "asdfghjkl", "zxcvbnm")
+
+
+@lru_cache(maxsize=None)
+def _beside() -> dict[str, frozenset[str]]:
+    """Each letter's neighbours on a QWERTY keyboard."""
+    at = {c: (r, i) for r, row in enumerate(_ROWS) for i, c in enumerate(row)}
+    return {c: frozenset(d for d, (r2, j) in at.items()
+                         if d != c and abs(r2 - r) <= 1 and j - i in ((-1, 0, 1) if r2 == r else
+                                                                      (0, 1) if r2 < r else (-1, 0)))
+            for c, (r, i) in at.items()}
+
+
+def _slip(typed: str, meant: str) -> bool:
+    """Whether `typed` is `meant` with one slip of the keys: a letter left
+    out or added, two swapped, or one changed for a key beside it or for
+    one that sounds alike ("tilded": tilted; "glug" is no slip for "glue":
+    g is far from e and sounds nothing like it)."""
+    if len(typed) != len(meant):
+        return True
+    diff = [k for k in range(len(typed)) if typed[k] != meant[k]]
+    if len(diff) == 1:
+        a, b = typed[diff[0]], meant[diff[0]]
+        return b in _beside().get(a, frozenset()) or any(a in g and b in g for g in _SOUNDS)
+    return True                        # two letters swapped
+
+
 def corrected(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised: wording.normalised) with its mistyped words read
     as the words meant, and what is said back of each ("spil: read as
@@ -97,7 +128,8 @@ def corrected(text: str) -> tuple[str, tuple[str, ...]]:
             if len(swapped) == 1:
                 meant[w] = swapped.pop()
             continue
-        targets = {t for t in english.edit_distance_1(w) if t in whole or (t in parts and t in english)}
+        targets = {t for t in english.edit_distance_1(w) if (t in whole or (t in parts and t in english))
+                   and _slip(w, t)}
         if not targets and len(w) >= _SHORTEST_TWO:
             targets = {t for t in english.edit_distance_2(w)
                        if t in whole or (t in parts and t in english)}

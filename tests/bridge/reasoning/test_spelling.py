@@ -17,6 +17,8 @@ from pantarhei.bridge.reasoning.spelling import corrected
     ("a havy bowl", "a heavy bowl"),                # a word that says something, not "have"
     ("tilt it verry far", "tilt it very far"),      # very, not jerry (of "jerry can")
     ("does it ovreflow", "does it overflow"),       # a word of outcomes.py's patterns
+    ("tilt it hslfway", "tilt it halfway"),         # a key beside the one meant
+    ("does teh bowl tip", "does the bowl tip"),     # three letters, two swapped
 ])
 def test_a_mistyped_word_is_read_as_the_word_meant_and_said_back(typed, meant):
     text, said = corrected(typed)
@@ -30,6 +32,7 @@ def test_a_mistyped_word_is_read_as_the_word_meant_and_said_back(typed, meant):
     "fill the bowl",           # near "full"
     "pour from the sde",       # too short to say which word
     "pour it realy high",      # near "really" and "real": neither far commoner
+    "will it glug",            # "glue" is a letter away, but no slip of the keys: g is far from e
 ])
 def test_a_real_word_or_a_doubtful_one_is_left_as_written(typed):
     assert corrected(typed) == (typed, ())
