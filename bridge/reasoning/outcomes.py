@@ -38,11 +38,11 @@ _OUT_OF = "(?:DESTINATION)"
 #: Verbs of liquid thrown about: thrown over the rim or out of the destination, it entered
 #: and did not stay ("splash out of the bowl": liquid_remains_in_destination and no_spill).
 _THROWN = (r"spill\w*|spilt|splash\w*|splatter\w*|splat\w*|slop\w*|slosh\w*|spray\w*|spurt\w*"
-           r"|squirt\w*|escap\w*|spew\w*|gush\w*")
+           r"|squirt\w*|escap\w*|spew\w*|gush\w*|leak\w*|drip\w*|dribbl\w*|trickl\w*")
 
 #: (verb phrase, the expectations it speaks of, whether it happening makes them fail)
 OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
-    (rf"(?:{_THROWN}) (?:(?:back|right|straight|all|up|and) )*(?:over|out of|out over)(?= (?:the |a |an |my "
+    (rf"(?:{_THROWN}) (?:(?:back|right|straight|all|up|and) )*(?:over|past|out of|out over)(?= (?:the |a |an |my "
      rf"|your |its |their |this |that )?(?!source\b)(?:[a-z]+ )?{_OUT_OF}\b)"
      r"|overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*|slop\w*|splash\w*|splatter\w*|fizz\w*"
      r"|foam\w*|froth\w*|bubbl\w*|boil\w*) over"
