@@ -14,6 +14,11 @@ _IT = "[the source|the bowl|it]"
 _MANNER = ("from|with|over|into|onto|low|high|very|steeply|slightly|halfway|tilted|"
            "upside|centred|centered|far|near|below|above")
 
+#: Verbs of a smooth move, said of the move in or out as "move" is ("glide in slowly",
+#: "swing the jug over", "ease it out"); not "slide" (the bowl sliding is an outcome).
+_GLIDE = (r"(?:swing(?:s|ing)?|swung|swoop\w*|glid(?:e|es|ed|ing)|sweep(?:s|ing)?|swept"
+          r"|eas(?:e|es|ed|ing)|carr(?:y|ies|ied|ying))")
+
 MOVES: tuple[tuple, ...] = (
     # the stages: the move into the pouring pose, the move out of it, the end pose
     # (brought back up: raised, or righted? a tilting verb rights it, "bring" says upright)
@@ -61,7 +66,11 @@ MOVES: tuple[tuple, ...] = (
                                  r"|approach(?:es|ed|ing)?)\b(?= (?:(?:slowly|fast|quickly|gently|carefully|steadily)(?: and)? )?"
                                  r"(?:very |really |quite |fairly |nice and )?"
                                  r"(?:low|high)\b(?! (?:friction|mass|weight|bounc)))",)),
+    # brought down from a height: the move in, lowering, from where it starts
+    ("approach lower from", (rf"re:\b(?:mov(?:e|es|ed|ing)|bring(?:s|ing)?|brought|com(?:e|es|ing)|came"
+                             rf"|{_GLIDE})(?: it| the \w+)? down from\b",)),
     ("approach", (r"re:\b(?:mov(?:e|es|ed|ing)|bring(?:s|ing)?|brought) (?:it|the \w+) (?:in|over)\b",
+                  rf"re:\b{_GLIDE}(?: it| the \w+)? (?:in|over)\b",
                   "before pour", "before the pour", "move to the pour pose", "move into the pour pose",
                   "move in", "come in")),
     # leaving slowly: the move away
@@ -73,6 +82,7 @@ MOVES: tuple[tuple, ...] = (
                  r"|jerk\w*|snatch\w*)"
                  r"(?: (?:it|the \w+|them))? (?:out|away|back)\b(?! of (?:the |a )?(?:context|liquid)\b)",
                  r"re:\bmov(?:e|es|ed|ing) (?:it|the \w+|them) (?:away|back|out)\b(?! from)",
+                 rf"re:\b{_GLIDE}(?: it| the \w+)? (?:away|back|out)\b(?! from| of)",
                  "after pour", "after the pour", "afterwards", "move away", "pull away", "pull back",
                  "back off", "back away", "withdraw")),
     ("start", ("begin", "at first", "at the start", "initially")),
