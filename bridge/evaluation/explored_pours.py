@@ -9,7 +9,7 @@ from __future__ import annotations
 import json
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, Mapping
 
 import numpy as np
 
@@ -39,8 +39,9 @@ class Learned:
 
     @property
     def one_layer(self) -> bool:
-        """Whether the theory is the learning curiosity's one layer."""
-        return [str(c) for c in self.settings.get("curiosity", [])] == ["learn"]
+        """Whether the theory is one layer, as its curiosity lays it out
+        (`one_layer`)."""
+        return one_layer(self.settings)
 
     @property
     def qualify(self) -> str:
@@ -65,6 +66,28 @@ class Learned:
     def setting(self, key: str, default: Any = None) -> Any:
         values = self.settings.get(key)
         return values[0] if values else default
+
+
+def one_layer(settings: Mapping[str, Any]) -> bool:
+    """Whether a theory of `settings` (its setting/2 facts, a value or the
+    list of a key's values) is one layer: the module of the curiosity it
+    records lays its theory out without Algorithm 1's rules (its
+    theory_layout's `rules` false, theory/curiosity/interface.pl), so that
+    its rules are the learned layer alone. A theory that records no
+    curiosity, or one without a module loaded, is not."""
+    from pantarhei.bridge.engines.swipl import engine
+
+    recorded = settings.get("curiosity")
+    if isinstance(recorded, (list, tuple)):
+        if len(recorded) != 1:
+            return False
+        recorded = recorded[0]
+    if recorded is None:
+        return False
+    eng = engine()
+    eng.use_module("curiosity")
+    return eng.succeeds("curiosity_interface:by_curiosity(_{curiosity:C}, theory_layout(L)), "
+                        "get_dict(rules, L, false)", C=str(recorded))
 
 
 def read_learned(path: Path | str) -> Learned:

@@ -49,7 +49,7 @@ def paper_rules(theory: Theory, simulate: Callable[[np.ndarray], np.ndarray], n:
         expectation = complement(literal) if literal.startswith("neg(") else literal
         o = said[expectation]
         says = {"holds": expectation, "fails": f"neg({expectation})"}.get(o.value, "unknown")
-        out.append({"scene": list(props), "literal": literal, "paper": words,
+        out.append({"scene": list(props), "literal": literal, "paper_words": words,
                     "learned": rules, "theory_says": says, "rule": o.rule, "reason": o.reason})
         scenes.append(scene)
     if n:
@@ -105,7 +105,7 @@ def paper_rules_section(ev: Evaluation, out: Path) -> list[str]:
         majority = f"`{r['oracle_majority']}`" if r.get("oracle_majority") else "n/a"
         if r.get("oracle_majority") and r["oracle_majority"] != r["literal"]:
             majority += " (the oracle disagrees with the paper)"
-        L.append(f"| {r['paper']}: {scene} → `{r['literal']}` | {learned} | "
+        L.append(f"| {r['paper_words']}: {scene} → `{r['literal']}` | {learned} | "
                  f"`{r['theory_says']}` | {share} | {majority} | "
                  f"{'yes' if r.get('agrees_with_oracle') else '**no**'} |")
     return L

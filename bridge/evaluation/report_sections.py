@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from pantarhei.bridge.evaluation.explored_pours import one_layer
 from pantarhei.bridge.evaluation.figures import Evaluation
 from pantarhei.bridge.evaluation.formats import antecedent_words, consequent_words
 from pantarhei.bridge.evaluation.headline import headline_markdown
@@ -18,7 +19,7 @@ def opening(ev: Evaluation, command: str) -> list[str]:
             f"Measured by `{command}` with the {ev.oracle} oracle (version "
             f"{s.get('oracle_version', '?')}). The theory was learned with seed {s.get('seed')}, "
             + (f"{s.get('explored')} explored antecedents in batches of {s.get('batch')} pours "
-               f"({ev.budget} pours), curiosity `learn`" if s.get("curiosity") == "learn" else
+               f"({ev.budget} pours), curiosity `{s.get('curiosity')}`" if one_layer(s) else
                f"{s.get('explored')} explored antecedents of {s.get('batch')} pours each "
                f"({ev.budget} pours), qualify `{s.get('qualify')}`")
             + ". All numbers below are in `evaluation.json`.", "",

@@ -1,6 +1,7 @@
 """What the evaluation's tests share: a theory learned from the synthetic
 oracle (with its store and every pour its run simulated), small enough
-that an evaluation of it runs in seconds."""
+that an evaluation of it runs in seconds; and two toy curiosities, one
+whose theory is one layer and one whose theory is not."""
 from __future__ import annotations
 
 from pathlib import Path
@@ -29,3 +30,38 @@ def explored(tmp_path_factory) -> tuple[Path, Path, tuple[np.ndarray, np.ndarray
 def learned(explored) -> tuple[Path, Path]:
     """The theory and its store."""
     return explored[0], explored[1]
+
+
+#: A toy curiosity's Prolog module, laid out with Algorithm 1's rules or
+#: without (one layer): the interface and nothing else.
+TOY_CURIOSITY = """\
+:- module(curiosity_layout_toy_{rules}, []).
+budget(_, 1).
+progress_bar(_, _{{total:1, unit:pour}}).
+probe_size(_, 0).
+probed(_, _) :- fail.
+priors_due(_, _) :- fail.
+after_batch(_, _, [], _{{}}).
+second_layer(_, _, _, []).
+theory_layout(_{{rules:{rules}, batches:false, header:[], layer_header:[]}}).
+"""
+
+
+@pytest.fixture(scope="session")
+def toy_curiosities(tmp_path_factory):
+    """Two toy curiosities loaded into the process's Prolog as
+    interface.pl loads those of the list, and forgotten after: `one_layer`,
+    whose theory is its learned layer alone, and `two_layers`, whose
+    theory holds Algorithm 1's rules."""
+    from pantarhei.bridge.engines.swipl import engine
+
+    eng = engine()
+    eng.use_module("curiosity")
+    d = tmp_path_factory.mktemp("toys")
+    for name, rules in (("one_layer", "false"), ("two_layers", "true")):
+        path = d / f"{name}.pl"
+        path.write_text(TOY_CURIOSITY.format(rules=rules), encoding="utf-8")
+        eng.once("curiosity_interface:load_curiosity(C, F)", C=name, F=str(path))
+    yield ("one_layer", "two_layers")
+    eng.once("retractall(curiosity_interface:curiosity_module(one_layer, _)), "
+             "retractall(curiosity_interface:curiosity_module(two_layers, _))")

@@ -11,7 +11,8 @@ import pytest
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.evaluation import pipeline as E
-from pantarhei.bridge.evaluation.explored_pours import exploration_draws, read_learned
+from pantarhei.bridge.evaluation.explored_pours import exploration_draws, one_layer, read_learned
+from pantarhei.bridge.exploration.curiosity_sides import curiosities
 
 
 def test_read_learned_finds_the_explored_antecedents_in_order(learned):
@@ -83,3 +84,25 @@ def test_the_theory_is_reproduced_from_its_pours_or_the_evaluation_says_not(lear
     edited.write_text(text.replace(head, flipped))
     edited.with_suffix(".trace.jsonl").write_text(theory.with_suffix(".trace.jsonl").read_text())
     assert not reproduced(edited)
+
+
+def test_a_theory_is_one_layer_as_its_recorded_curiosity_lays_it_out(toy_curiosities):
+    """One layer is what the module of the theory's curiosity says of its
+    layout (theory_layout's `rules`), whatever the curiosity's name: a toy
+    curiosity's theory is one layer, or not, as its module says."""
+    from pantarhei.bridge.engines.swipl import engine
+
+    one, two = toy_curiosities
+    assert one_layer({"curiosity": [one]}) and one_layer({"curiosity": one})
+    assert not one_layer({"curiosity": [two]}) and not one_layer({"curiosity": two})
+    # no curiosity recorded, one without a module, or two: not one layer
+    assert not one_layer({}) and not one_layer({"curiosity": ["nonesuch"]})
+    assert not one_layer({"curiosity": [one, two]})
+    for c in curiosities():
+        laid_out = engine().once("curiosity_interface:by_curiosity(_{curiosity:C}, "
+                                 "theory_layout(L)), get_dict(rules, L, R)", C=c)
+        assert one_layer({"curiosity": [c]}) == (str(laid_out["R"]) == "false"), c
+
+
+def test_a_learned_theory_of_the_discovering_curiosity_is_two_layers(learned):
+    assert not read_learned(learned[0]).one_layer

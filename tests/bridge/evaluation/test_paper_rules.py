@@ -38,7 +38,7 @@ def test_the_theory_is_asked_each_of_the_papers_scenes():
     out = paper_rules(side_theory(), spills_and_empties, 0, seed=1)
     assert [(r["scene"], r["literal"]) for r in out] == [(list(p), lit) for p, lit, _ in PAPER_RULES]
     side, light, righted = out
-    assert side["paper"] == "pouring from the side will result in spillage"
+    assert side["paper_words"] == "pouring from the side will result in spillage"
     assert side["learned"] == [{"rule": "r1_no_spill", "also_needs": []}]
     assert side["theory_says"] == "neg(no_spill)" and side["rule"] == "r1_no_spill"
     # the rule for the light liquid also needs pouring low: it does not apply to the scene alone

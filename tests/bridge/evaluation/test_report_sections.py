@@ -33,3 +33,18 @@ def test_the_pours_drawn_and_the_time_of_each_stage():
     assert "![pour a2](pour_a2.gif)" in L
     # a stage that simulated nothing it did not find in the store: 0; one that simulates nothing: blank
     assert R.time_section(ev)[-2:] == ["| exploration | 0 | 0.4 |", "| predicting |  | 1.5 |"]
+
+
+def test_the_opening_says_a_one_layer_theory_s_curiosity(toy_curiosities):
+    """A theory that is one layer (its curiosity's module lays it out
+    without Algorithm 1's rules) is said by its curiosity and batches; one
+    of two layers by its antecedents and how they were qualified."""
+    one, two = toy_curiosities
+    ev = small_evaluation()
+    ev.settings["curiosity"] = one
+    assert R.opening(ev, "make evaluate")[2].endswith(
+        "2 explored antecedents in batches of 12 pours (24 pours), curiosity `one_layer`. "
+        "All numbers below are in `evaluation.json`.")
+    ev.settings["curiosity"] = two
+    assert "2 explored antecedents of 12 pours each (24 pours), qualify `weighted`." in \
+        R.opening(ev, "make evaluate")[2]
