@@ -118,6 +118,16 @@ class Nouns:
                                      or (first > 0 and t[first - 1].word in BETWEEN))
         return j if ahead else self.before[first]
 
+    def said_of(self, at: int, first: int, last: int) -> bool:
+        """Whether the value words from `first` to `last` are said of the
+        noun at `at` itself: before it ("a high table"), or after it with
+        nothing but articles, value words and "is" between ("the table is
+        high"); not where a clause goes on ("in the kitchen we pour from high")."""
+        if at > last:
+            return True
+        t = self.tokens
+        return all(t[m].word in BETWEEN or t[m].word in _COPULAS for m in range(at + 1, first))
+
     def partners(self, i: int) -> set[str]:
         """The bodies the noun at `i` names with others: those of the nouns
         coordinated with it ("the source and the destination"), or both

@@ -42,8 +42,9 @@ _THROWN = (r"spill\w*|spilt|splash\w*|splatter\w*|splat\w*|slop\w*|slosh\w*|spra
 
 #: (verb phrase, the expectations it speaks of, whether it happening makes them fail)
 OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
-    (rf"(?:{_THROWN}) (?:(?:back|right|straight|all|up|and) )*(?:over|past|out of|out over)(?= (?:the |a |an |my "
+    (rf"(?:{_THROWN}) (?:(?:back|right|straight|all|up|and) )*(?:over|past|out of|out over|from)(?= (?:the |a |an |my "
      rf"|your |its |their |this |that )?(?!source\b)(?:[a-z]+ )?{_OUT_OF}\b)"
+     rf"|escap\w*(?= (?:the |a |an |my |your |its )?(?!source\b)(?:[a-z]+ )?{_OUT_OF}\b)"
      r"|overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*|slop\w*|splash\w*|splatter\w*|fizz\w*"
      r"|foam\w*|froth\w*|bubbl\w*|boil\w*) over"
      r"(?: the (?:rim|edge|top|side)s?)?"

@@ -353,8 +353,8 @@ def _agrees(name: str, first: int, last: int, noun: Nouns, lex: _Lexicon) -> boo
     if at is None:
         return True
     body = noun.roles[at]
-    if body == CONTEXT:             # "a sticky counter": said of no body of the scene
-        return False
+    if body == CONTEXT:             # "a sticky counter", "the table is high": of no body of the scene
+        return kind == "stage" and not noun.said_of(at, first, last)
     if kind == "stage":             # only "with the <destination> ..." says it of the destination
         t = noun.tokens
         said_with = at == first - 1 and any(

@@ -96,7 +96,7 @@ HINTS: tuple[tuple[str, str], ...] = (
      'goes to or from the side: say "move in from the side" or "end to the side"'),
     (r"^a (?:little|bit|tad)$", 'a little: of what? say "a little liquid", "slightly tilted", or '
                                'where ("near the rim", "from the side", "offset sideways")'),
-    (r"^(?:drop|let)", 'dropping: the source is held throughout the pour; the vocabulary says '
+    (r"^(?:drop(?:s|ped|ping)?|let(?:s|ting)?)$|^(?:drop|let)\w* (?:it|the|go)", 'dropping: the source is held throughout the pour; the vocabulary says '
                        'nothing of letting it go'),
     (r"^(?:tilt|tilted|tip|tipped|tipping)$", 'tilted how far? say "slightly tilted", "tilted halfway", '
                                   '"steeply tilted" or "upside down"'),

@@ -173,7 +173,7 @@ PHRASES: tuple[tuple, ...] = (
                "from above", r"re:\bfrom below\b(?! the (?:destination |bowl )?rim)",
                "from the top", "from the bottom", "overhead")),
     *MOVES,                   # the stages and the moves between them (moves.py)
-    ("liquid", ("liquid particles", r"re:(?<!\d )\bparticles?\b")),
+    ("liquid", ("liquid particles", r"re:(?<!\d )\bparticles?\b", r"re:\bdroplets?\b")),
     # where the source is measured from: "offset 10 cm from the centre"
     # (poured from the centre, with no length or offset it is measured by: centred)
     ("pour centred", (r"re:\bpour(?:s|ed|ing)?(?: it| the \w+)? from (?:the )?(?:very )?"
@@ -263,7 +263,8 @@ PHRASES: tuple[tuple, ...] = (
     ("upright", ("vertical", "straight up")),
     ("tilted", ("angled", "inclined")),
     ("steeply", ("sharply",)),
-    ("pour steeply tilted", (r"re:\bpour(?:s|ed|ing)?(?: it| the \w+)? steeply\b(?! tilt)",)),
+    ("pour steeply tilted", (r"re:\bpour(?:s|ed|ing)?(?: (?!(?:and|then|but|or|before|after)\b)[a-z]+){0,4}?"
+                             r" steeply\b(?! tilt)",)),
     ("steeply tilted", (r"re:\b(?:tilt|tip|turn|lean)\w*(?: it| the \w+)? (?:to|until|till|so|so that)"
                         r"(?: it is| it's| its)? (?:lying )?(?:the )?horizontal(?:ly)?\b",)),
     ("steeply tilted", ("at a steep angle", "at a sharp angle", "horizontal", "horizontally")),

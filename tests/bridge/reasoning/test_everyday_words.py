@@ -13,7 +13,7 @@ from pantarhei.bridge.reasoning.reading import read_question
 
 #: The kinds of section the reader knows what to do with.
 KINDS = {"hedge", "material", "bowl", "bowl poured from", "sticky liquid", "heavy liquid", "liquid", "context", "part",
-         "unclear", "a bit", "little", "much", "full", "slightly tilted"}
+         "unclear", "a bit", "little", "much", "full", "slightly tilted", "low", "high"}
 
 
 def _phrases(*kinds: str) -> list[tuple[str, str]]:
@@ -98,6 +98,8 @@ def test_a_word_the_vocabulary_cannot_say_is_refused_naming_why(phrase, said):
       for p, _ in _phrases("little")),
     *((p, "pour {} milk", ["much_liquid"]) for p, _ in _phrases("much")),
     *((p, "pour from a jug {}", ["very_much_liquid"]) for p, _ in _phrases("full")),
+    *((p, "pour from {}", ["pour_low"]) for p, _ in _phrases("low")),
+    *((p, "pour from {}", ["pour_high"]) for p, _ in _phrases("high")),
 ])
 def test_a_degree_phrase_is_read_as_the_degree_it_says(phrase, template, props):
     assert list(read_question(template.format(phrase)).scene) == props
