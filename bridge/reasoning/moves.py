@@ -37,7 +37,7 @@ MOVES: tuple[tuple, ...] = (
     # "after pouring from the side": the manner after it is the pour's
     # emptying a bowl into another, decanting, dumping: pouring
     ("pour", (r"re:\bempt(?:y|ies|ied|ying)(?= (?:it|the \w+|a \w+) (?:into|in|onto)\b)",
-              "decant", "dump", "free pour", "transfer")),
+              "decant", "dump", "free pour", "transfer", "serve", "dispense", "top up")),
     ("retreat ; pour", (rf"re:\bafter pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",
                         # "after tilting it halfway": the tilt is the pour's
                         r"re:\bafter\b(?= (?:tilt|tip|lean|angl|inclin)\w*\b)")),

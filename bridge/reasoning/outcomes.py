@@ -260,10 +260,14 @@ def _around() -> Matcher:
 
 
 def _state(m: re.Match) -> bool:
-    """Whether an asked clause says how full the source is, not what happens:
-    "the jug is almost empty" (the scene's), not "will it empty"."""
+    """Whether an asked clause says how full the source is, or how it is
+    held, not what happens: "the jug is almost empty", "if the jug is
+    tipped steeply" (the scene's), not "will it empty", "is the bowl tipped
+    over"."""
     verb = next((v for g, v in m.groupdict().items() if g[0] == "v" and v), "")
-    return m.group("aux") in ("is", "are", "was", "were") and verb.startswith("empt")
+    state = m.group("aux") in ("is", "are", "was", "were")
+    return state and (verb.startswith("empt") or (
+        verb in ("tipped", "tilted") and not (m.group("subject") or "").strip()))
 
 
 def hear(text: str) -> Heard:
