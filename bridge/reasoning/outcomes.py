@@ -127,6 +127,20 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:keep|keeps|keeping|stop|stops|stopping|prevent|prevents|preventing) (it|them|the [a-z]+)"
      r" from (?=[a-z]+ing\b)", r"so that \1 does not "),
     (r"\bmake sure(?: that)? ", "make sure so that "),
+    # "to avoid spilling", "prevent splashing", "minimise dripping"
+    (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|minimi[sz]e|minimi[sz]ing|reduce|reducing)"
+     r" (?=(?:any )?[a-z]+ing\b)", "so that it does not "),
+))
+#: Questions asked about a clause ("is it true that the bowl tips", "tell me whether it
+#: spills", "I'd like to know if the jug hits the bowl"): asked as "does the bowl tip".
+_FRAMES = tuple((re.compile(p), r) for p, r in (
+    (r"\b(?:is it true|is it the case|would you say|does the theory (?:say|predict|expect))(?: that)? ",
+     " does "),
+    (r"\b(?:know|tell (?:me|us)|predict|wonder(?:ing)?|check|find out|figure out|see|ask(?:ing)?"
+     r"|curious|unsure|not sure|any idea|no idea)(?: about)? (?:whether|if) ", " does "),
+    # an outcome expected, as a noun: "would you expect spilling", "do you predict any splashing"
+    (r"\b(?:expect|predict|anticipate|see|observe|get|cause|causes|notice)(?: any| some| a| much)? "
+     r"(?=(?:spill|splash|drip|leak|slosh|splatter|dribbl)\w*\b(?! of\b))", " will it "),
 ))
 
 
@@ -340,8 +354,8 @@ def hear(text: str) -> Heard:
     was_goal = True
     text, wants = wanting(text)
     phrases.extend(wants)
-    for said, wanted in _WANTING:
-        phrases.extend(m.group(0).strip() for m in said.finditer(text))     # heard as a goal
+    for said, wanted in (*_WANTING, *_FRAMES):
+        phrases.extend(m.group(0).strip() for m in said.finditer(text))     # heard with the outcome
         text = said.sub(wanted, text)
     text = _spaced(goal.sub(as_goal, text))
     if goals:
