@@ -91,6 +91,8 @@ HINTS: tuple[tuple[str, str], ...] = (
                            'sideways", "from the side" or "in line with the bowl"'),
     (r"^(?:tilt|tip|angl|inclin|lean)\w*(?: \w+)*? (?:a lot|lots|loads|heaps)$",
      'a lot: tilted how far? say "tilted halfway", "steeply tilted" or "upside down"'),
+    (r"horizontal$", 'measured from the horizontal: say the tilt from upright ("tilted 60 degrees", '
+                      '"tilted 110 degrees"), or "steeply tilted" for about level'),
     (r"^(?:sideways|laterally|lateral|sidewise)$",
      'sideways: offset or rolled? say "offset sideways" or "tilted sideways"; a move in or out '
      'goes to or from the side: say "move in from the side" or "end to the side"'),

@@ -255,6 +255,10 @@ PHRASES: tuple[tuple, ...] = (
     # lifted straight up: raised, not righted
     ("raise", (r"re:\b(?:lift|lifts|lifted|lifting|rais(?:e|es|ed|ing)|mov(?:e|es|ed|ing)|bring|brings"
                r"|brought|pull(?:s|ed|ing)?)(?: it| the \w+| them)? straight up\b",)),
+    # an angle measured from the vertical is the tilt ("tilted 30 degrees from vertical");
+    # one from the horizontal is refused (suggestions.py says what would be read)
+    ("hedge", (r"re:(?<=degrees )(?:from|off|away from|past) (?:the )?(?:vertical|upright)\b",)),
+    (UNCLEAR, (r"re:(?<=degrees )(?:from|off|above|below|under|past|to|beyond) (?:the )?horizontal\b",)),
     # the height the liquid falls from is the source's: "drop height 20 cm"
     ("height", (r"re:\b(?:drop|fall|falling|release|pouring|pour) height\b",)),
     # a distance named by its direction is a length, never how the source is tilted:
