@@ -20,7 +20,8 @@ import pytest
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.exploration.curiosity_sides import (curiosities, curiosity_handlers,
                                                           python_sides)
-from pantarhei.bridge.exploration.session import Host, Session, install
+from pantarhei.bridge.exploration.session import Host, install
+from pantarhei.bridge.exploration.session_state import Session
 
 SESSION = Path(__file__).resolve().parents[3] / "bridge" / "exploration" / "session.py"
 

@@ -1,16 +1,18 @@
 """The session behind the exploration's foreign predicates
 (bridge/exploration/session.py), called from the real SWI-Prolog: an error
 in Python is one line in Prolog and is kept to be raised again as it was.
-The session's pours: the log densities grow with the pours and equal those
-computed at once, and an antecedent's planes and tests are fitted again
-only when its weights change."""
+The session's pours (bridge/exploration/session_state.py): the log
+densities grow with the pours and equal those computed at once, and an
+antecedent's planes and tests are fitted again only when its weights
+change."""
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.exploration.session import Session, install
+from pantarhei.bridge.exploration.session import install
+from pantarhei.bridge.exploration.session_state import Session
 from pantarhei.oracle.generative import log_density, normalise, sample
 
 

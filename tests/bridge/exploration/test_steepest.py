@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pantarhei.bridge.exploration.session import Session
+from pantarhei.bridge.exploration.session_state import Session
 from pantarhei.bridge.exploration.steepest import significant_planes, steepest_plane
 from pantarhei.oracle.generative import sample
 from pantarhei.oracle.synthetic import DEPENDS, scores
