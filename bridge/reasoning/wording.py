@@ -45,6 +45,8 @@ STAGE_WORDS = ("start", "pour", "end", "finally", "final", "approach", "retreat"
 #: down, said in its own stage ("pour low and bring it back up afterwards"), and a tilt
 #: ("come in low and tilt it halfway": stages.py's to place).
 _NEW_CLAUSE = (*STAGE_WORDS, "raise", "lower", "tilt", "tilts", "tilting", "tip", "tips")
+#: Words that may stand between such an "and" and its stage word: "and a slow retreat".
+_BEFORE_STAGE = {"a", "an", "the", "very", "fast", "quick", "slow", "slowly", "moderate", "gentle"}
 
 
 def stem(w: str) -> str:
@@ -171,12 +173,21 @@ def tokens(text: str) -> list[Token]:
     out, clause = [], 0
     for k, (word, raw, said) in enumerate(pairs):
         if (not re.match(r"[-a-z0-9_]", word) or word in CLAUSE_ENDS
-                or (word == "and" and k + 1 < len(pairs) and pairs[k + 1][0] in _NEW_CLAUSE)):
+                or (word == "and" and _new_clause([w for w, _, _ in pairs[k + 1:k + 4]]))):
             clause += 1
             if not re.match(r"[-a-z0-9_]", word):
                 continue
         out.append(Token(word if "_" in word or word[0] == "-" else stem(word), raw, clause, said))
     return out
+
+
+def _new_clause(after: list[str]) -> bool:
+    """Whether the words after an "and" begin a clause of their own: a stage
+    word, or a move up or down or a tilt, next or after an article and a
+    word of speed ("a quick approach and a slow retreat")."""
+    while after and after[0] in _BEFORE_STAGE:
+        after = after[1:]
+    return bool(after) and after[0] in _NEW_CLAUSE
 
 
 def _spans(pattern: re.Pattern, joined: str, pairs) -> list[tuple[int, int]]:

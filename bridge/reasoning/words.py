@@ -100,7 +100,8 @@ PHRASES: tuple[tuple, ...] = (
     ("fast", (r"re:\b(?:at |with )?(?:a |full |top )?(?:high|great|full|top|fast|quick|rapid|max(?:imum)?)"
               r" (?:speed|velocity|pace)\b", r"re:\bat (?:full|top) (?:tilt|speed)\b",
               r"re:\bat speed\b")),
-    ("slowly", (r"re:\b(?:at |with )?(?:a )?(?:low|slow|reduced|gentle|min(?:imum)?) (?:speed|velocity"
+    ("slowly", (r"re:\b(?:at |with )?(?:a )?(?:low|slow|reduced|gentle|leisurely|relaxed|easy|min(?:imum)?)"
+                r" (?:speed|velocity"
                 r"|pace)\b",)),
     ("moderate", (r"re:\b(?:at |with )?(?:a )?(?:moderate|medium|normal|average|steady) (?:speed|velocity"
                   r"|pace)\b",)),
@@ -275,7 +276,9 @@ PHRASES: tuple[tuple, ...] = (
     ("steeply tilted", ("at a steep angle", "at a sharp angle", "horizontal", "horizontally")),
     ("slightly", ("gently", "barely")),
     ("halfway", ("half way",)),
-    ("fast", ("quickly", "quick", "rapidly", "swiftly", "briskly")),
+    ("fast", ("quickly", "quick", "rapidly", "swiftly", "briskly", "rapid", "swift", "brisk", "speedy",
+              "speedily", "hasty", "hastily", "hurried", "hurriedly", "in a split second")),
+    ("slowly", ("leisurely", "unhurried", "gradual", "gradually", "sluggish", "sluggishly")),
     ("moderate", ("steadily", "medium speed")),
     # the bodies and the liquid
     ("dull", ("[does|do|will] not bounce",)),
