@@ -303,6 +303,11 @@ PHRASES: tuple[tuple, ...] = (
     # nothing
     ("is light", (r"re:\bweigh(?:s|ed|ing)? (?:next to|almost|practically|virtually|hardly|barely)"
                   r" (?:nothing|anything)\b",)),
+    ("is heavy", (r"re:\bweigh(?:s|ed|ing)? (?:a lot|a ton|tons|loads|plenty)\b",)),
+    # surfaces that grip or do not: a non-stick pan is slippery, a non-slip bowl grippy
+    ("slippery", (r"re:\bnon ?stick\b", "teflon")),
+    ("grippy", (r"re:\b(?:non|anti) ?(?:slip|skid)\b",)),
+    ("heavy", (r"re:\bdense\b(?! (?:plastic|glass|wood|metal|ceramic|material))",)),
     ("light", ("lightweight", "light weight", "featherweight", "feather light", "featherlight")),
     ("heavy", ("heavyweight", "heavy weight", "hefty", "weighty")),
     ("slippery", ("slick", "smooth", "greasy")),
