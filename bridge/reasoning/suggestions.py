@@ -78,7 +78,7 @@ HINTS: tuple[tuple[str, str], ...] = (
                  '("move in from the side") or after it ("move away fast")'),
     (r"^(?:(?:away )?from|off) (?:the )?(?:\w+ )?(?:rim|edge|lip|brim)$", 'measured from the rim: inside it or outside? say how far from '
                                   'the centre ("5 cm from the centre"), "near the rim" or "to the side"'),
-    (r"\b(?:close|next) to", 'close to the bowl: say "just above the rim", "low above the bowl" or '
+    (r"\b(?:close|next) to|\bbeside\b|\balongside\b", 'close to the bowl: say "just above the rim", "low above the bowl" or '
                              '"near the rim"'),
     (r"^(?:(?:very )?(?:low|high)|(?:high|low|tall|short) ?(?:sided|walled|rimmed|edged))$",
      'the vocabulary\'s bowls are all of one size: a height is where the source is ("pour low", '

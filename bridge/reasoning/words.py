@@ -191,7 +191,10 @@ PHRASES: tuple[tuple, ...] = (
     (UNCLEAR, ("re:(?:" + "|".join(rf"(?<=\d {u} )" for u in _LENGTHS) + r")(?:(?:away )?from|off) (?:the )?"
                r"(?:destination |bowl )?(?:rim|edge|lip|brim)\b",
                # close to the bowl: above it, low, or near its rim?
-               r"re:\b(?:right )?(?:close|next) to (?:the )?(?:destination|bowl)\b(?! rim)")),
+               r"re:\b(?:right )?(?:(?:close|next) to|beside|alongside) (?:the )?(?:destination|bowl)\b(?! rim)")),
+    # where the stream is aimed: "aim for the centre of the bowl" pours centred over it
+    ("centred", (r"re:\baim(?:s|ed|ing)?(?: it| the \w+)? (?:for|at|into|towards?) (?:the )?(?:very )?"
+                 r"(?:cent(?:re|er)|middle)\b",)),
     ("rim", ("edge", "lip", "brim")),
     ("low", (r"re:\b(?:just|right|slightly|barely|a bit|a little) (?:above|over) (?:the )?"
              r"(?:destination |bowl )?rim\b",
