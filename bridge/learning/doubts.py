@@ -24,8 +24,11 @@ they say nothing.
 """
 from __future__ import annotations
 
+# Settings (generalize.py) and Meaning (meaning.py) are named in the
+# annotations only: generalize imports this module.
+
 from itertools import combinations
-from typing import TYPE_CHECKING, Sequence
+from typing import Sequence
 
 import numpy as np
 from scipy.stats import binom
@@ -36,10 +39,6 @@ from pantarhei.theory.lexicon import load_vocabulary
 from pantarhei.bridge.learning.askable import together
 from pantarhei.bridge.learning.general_rules import GeneralRule, deciding
 from pantarhei.bridge.learning.meaning import held_in_support
-
-if TYPE_CHECKING:
-    from pantarhei.bridge.learning.generalize import Settings
-    from pantarhei.bridge.learning.meaning import Meaning
 
 
 def doubts(rules: list[GeneralRule], k: int, meaning: Meaning, P: np.ndarray,
