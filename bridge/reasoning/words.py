@@ -219,6 +219,9 @@ PHRASES: tuple[tuple, ...] = (
                  r"|centre|center|middle)\b)")),
     ("far", (r"re:\bfar (?:off |away )?to (?:the|one) side\b", "far off", "distant", "a long way",
              "from a distance", "at a distance")),
+    # lying on its side: tilted to about level, not poured from the side
+    ("steeply tilted", (r"re:\b(?:(?:turn|tip|tilt|lay|lie|put|place|hold|rest|turned|tipped|tilted|laid"
+                        r"|lying|held|placed|resting)\w*(?: it| the \w+| them)? )?on (?:its|their) side\b",)),
     # to the left or right: the vocabulary's offset names no side (a side said is refused)
     # (but "from the right side" is from the side)
     (UNCLEAR, (r"re:\b(?:to|on|from|at|towards?) (?:(?:the|your|my|its) (?:left|right)|left)\b"
@@ -246,6 +249,7 @@ PHRASES: tuple[tuple, ...] = (
     ("tilting", (r"re:\btipping\b",)),
     ("tilt", (r"re:\btips?\b",)),
     ("tilt", (r"re:\btilt(?:s|ed|ing)?(?: it| the \w+)? forwards?\b",)),
+    ("hedge", (r"re:(?:(?<=slightly )|(?<=halfway )|(?<=steeply )|(?<=bit )|(?<=little ))forwards?\b",)),
     ("rolled sideways", (r"re:\b(?:tilt|tip|lean)(?:s|ed|ing)?(?: (?:it|the \w+))? sideways\b",)),
     ("tilted away from the destination", ("tilted back", "tilted backwards", "leaning back",
                                           r"re:\btilt(?:s|ed|ing)?(?: it| the \w+)? (?:backwards?|back(?= at -\d))\b")),
