@@ -27,6 +27,7 @@ import re
 from functools import lru_cache
 
 from pantarhei.bridge.reasoning.everyday import Matcher, names, sections
+from pantarhei.bridge.reasoning.bodies import BODIES
 from pantarhei.bridge.reasoning.moves import MOVES
 from pantarhei.bridge.reasoning.numerals import NumberWords
 from pantarhei.bridge.reasoning.properties import Levels, Values
@@ -287,41 +288,7 @@ PHRASES: tuple[tuple, ...] = (
               "speedily", "hasty", "hastily", "hurried", "hurriedly", "in a split second")),
     ("slowly", ("leisurely", "unhurried", "gradual", "gradually", "sluggish", "sluggishly")),
     ("moderate", ("steadily", "medium speed")),
-    # the bodies and the liquid
-    ("dull", ("[does|do|will] not bounce",)),
-    ("full", ("filled", "brimming", "full up")),
-    ("much", ("a lot of", "lots of", "plenty of")),
-    # an amount said with no liquid after it: "pour a lot", "with a lot in it"
-    ("pour much liquid", (r"re:\bpour(?:s|ed|ing)?(?: out)? (?:a lot|lots|loads|plenty|tons|heaps)\b"
-                          r"(?! (?:of|more|higher|lower|further|closer)\b)",)),
-    ("much liquid", (r"re:\b(?:a lot|lots|loads|plenty)(?= (?:in|inside) (?:it|the \w+)\b)",)),
-    ("slowly", (r"re:\b(?:tak(?:e|es|ing)|took) (?:your|its|my|our|their|the|his|her) time\b",)),
-    # lengths by hand: a finger's width, a hand's width (a range, read only where one
-    # proposition holds all of it; "a few cm" is numerals.py's)
-    ("1.5 to 2 cm", ("a finger width", "a finger breadth", "a fingerbreadth", "one finger width")),
-    ("7 to 10 cm", ("a hand width", "a hand breadth", "a handbreadth", "a palm width",
-                    "one hand width")),
-    # a turn of the source said in turns: a quarter turn is 90 degrees
-    ("90 degrees", (r"re:\b(?:by |through )?(?:a )?quarter(?: of a)?(?: |-)?turn\b",)),
-    ("180 degrees", (r"re:\b(?:by |through )?(?:a half|half a)(?: |-)?turn\b",)),
-
-    ("little", ("a few drops of", "a few drops", "a drop of", "a drop")),
-    # a weight said as a compound: "a lightweight paper bowl", "a hefty jug"; or as next to
-    # nothing
-    ("is light", (r"re:\bweigh(?:s|ed|ing)? (?:next to|almost|practically|virtually|hardly|barely)"
-                  r" (?:nothing|anything)\b",)),
-    ("is heavy", (r"re:\bweigh(?:s|ed|ing)? (?:a lot|a ton|tons|loads|plenty)\b",)),
-    # surfaces that grip or do not: a non-stick pan is slippery, a non-slip bowl grippy
-    ("slippery", (r"re:\bnon ?stick\b", "teflon")),
-    ("grippy", (r"re:\b(?:non|anti) ?(?:slip|skid)\b",)),
-    ("heavy", (r"re:\bdense\b(?! (?:plastic|glass|wood|metal|ceramic|material))",)),
-    ("light", ("lightweight", "light weight", "featherweight", "feather light", "featherlight")),
-    ("heavy", ("heavyweight", "heavy weight", "hefty", "weighty")),
-    ("slippery", ("slick", "smooth", "greasy")),
-    ("grippy", ("rough",)),
-    ("runny", ("thin", "watery")),
-    ("sticky", ("viscous", "thick", "syrupy", "gooey")),
-    ("bouncy", ("springy", "elastic")),
+    *BODIES,                  # the bodies, the liquid and how much of it (bodies.py)
     # last, a bare "up" or "down" (not "high up", "upside down"): a move up or down
     ("raise", ("lift", "rise", "up")),
     ("lower", (r"re:(?<!upside )\bdown\b",)),
