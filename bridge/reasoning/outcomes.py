@@ -13,8 +13,9 @@ outcome. A goal said with the scene ("without spilling", "so that it all
 goes in", "so that the cup does not touch the bowl") is what the person
 wants: an expectation that should hold (or, rarely, fail), for the answer
 to say whether the theory expects it and to point to `plan` for how; a
-clause joined to a goal by "but" is wanted too ("so it pours out but the
-bowl does not tip": not a source held upright).
+clause joined to a goal by "but" or "and" is wanted too, with its own
+negation ("so it pours out but the bowl does not tip": not a source held
+upright; "so nothing spills and the bowl stays put": the bowl still).
 
 `hear(text)` takes normalised text (wording.normalised) and gives the
 expectations asked, the goals as literals ("no_spill", "neg(no_spill)"),
@@ -77,8 +78,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:come|comes|coming|came|get|gets|pour|pours|flow|flows|run|runs|drain\w*) out"
      r"|empt(?:y|ies|ied)(?: out)?|leav(?:e|es|ing) the|exit\w*", ("liquid_leaves_source",), False),
     (r"(?:end|ends|ended|ending) up in(?:side)?", (*_ALL_IN, "liquid_remains_in_destination"), False),
+    # what stays in the bowl entered it: "remains" alone holds also when none enters
     (r"(?:stay|stays|remain|remains|stop|stops) in(?:side)?(?: the \w+)?",
-     ("liquid_remains_in_destination",), False),
+     (*_ALL_IN, "liquid_remains_in_destination"), False),
     (r"(?:go|goes|going|went|get|gets|land|lands|make it|makes it|fall|falls|"
      r"arrive\w*) (?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*",
      _ALL_IN, False),
@@ -228,7 +230,7 @@ def _which(m: re.Match) -> tuple[tuple[str, ...], bool]:
     k = next(k for k in range(len(OUTCOMES)) if m.groupdict().get(f"v{k}"))
     if k == 0 and _out_of_the_source(m.string, m.end("v0")):
         return OUTCOMES[1][1], OUTCOMES[1][2]
-    if OUTCOMES[k][1] == ("liquid_remains_in_destination",) and _in_the_source(m.group(f"v{k}")):
+    if OUTCOMES[k][1] == (*_ALL_IN, "liquid_remains_in_destination") and _in_the_source(m.group(f"v{k}")):
         return ("liquid_leaves_source",), True       # staying in the source: not leaving it
     return OUTCOMES[k][1], OUTCOMES[k][2]
 
@@ -359,9 +361,10 @@ def hear(text: str) -> Heard:
         text = said.sub(wanted, text)
     text = _spaced(goal.sub(as_goal, text))
     if goals:
-        # "so it pours out but the bowl does not tip": what follows "but" is wanted too
-        m = re.search(r"\boutcome but (?:also )?", text)
-        if m:
+        # "so it pours out but the bowl does not tip", "so nothing spills and the bowl stays
+        # put": a clause of its own after "but" or "and" is wanted too, with its own negation
+        for m in reversed(list(re.finditer(r"\boutcome (?:but (?:also )?|(?:, ?)?and (?:also )?(?=(?:"
+                                           r"the|it|nothing|none|no|everything|all)\b))", text))):
             trial = f"{text[:m.start()]}outcome so that {text[m.end():]}"
             wanted_too = _spaced(goal.sub(as_goal, trial))
             text = wanted_too if wanted_too != trial else text
