@@ -129,6 +129,9 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:keep|keeps|keeping|stop|stops|stopping|prevent|prevents|preventing) (it|them|the [a-z]+)"
      r" from (?=[a-z]+ing\b)", r"so that \1 does not "),
     (r"\bmake sure(?: that)? ", "make sure so that "),
+    # "avoids the cup hitting the bowl", "prevent the bowl sliding"
+    (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing) (it|them|the [a-z]+) (?=[a-z]+ing\b)",
+     r"so that \1 does not "),
     # "to avoid spilling", "prevent splashing", "minimise dripping"
     (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|minimi[sz]e|minimi[sz]ing|reduce|reducing)"
      r" (?=(?:any )?[a-z]+ing\b)", "so that it does not "),

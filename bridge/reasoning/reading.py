@@ -51,6 +51,7 @@ from pantarhei.bridge.reasoning.negation import NEGATION_STEMS, covered, scope, 
 from pantarhei.bridge.reasoning.nouns import ARTICLES, BOWL, CONTEXT, OBJECT_STEMS, Nouns, roles
 from pantarhei.bridge.reasoning.outcomes import FOLLOWS, follows, hear
 from pantarhei.bridge.reasoning.quantities import read_numbers
+from pantarhei.bridge.reasoning.seeking import if_it_can
 from pantarhei.bridge.reasoning.spelling import corrected
 from pantarhei.bridge.reasoning.stages import MARKER_STEMS, MOVE, POSE, SAME, same_at_the_end, stages
 from pantarhei.bridge.reasoning.wording import Token, names_written, normalising, stem, tokens as words_of
@@ -232,16 +233,13 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
     ignored = [t.raw for i, t in enumerate(tokens) if i not in taken and t.word not in structural
                and t.word not in SAME]
     heard = [t.raw for t in tokens if t.raw not in ignored or t.said_back]    # said back: heard
-    notes = typed + _notes(tokens)
+    notes = typed + tuple(dict.fromkeys(f"{t.raw}: {t.said_back}" for t in tokens if t.said_back))
     noted = {t.raw for t in tokens if t.said_back}
-    return Reading(tuple(sorted(set(out))), tuple(dict.fromkeys((*named, *outcome.asked))),
-                   outcome.goals, notes, tuple(dict.fromkeys(w for w in ignored if w not in noted)),
+    manners = any(vocab.dimensions[props[n].dimension].role == "manner" for n in out)
+    can, goals = if_it_can(text, outcome.goals, manners)     # "can I pour high without spilling?"
+    return Reading(tuple(sorted(set(out))), tuple(dict.fromkeys((*named, *outcome.asked, *can))),
+                   goals, notes, tuple(dict.fromkeys(w for w in ignored if w not in noted)),
                    tuple([*heard, *outcome.phrases, *named]))
-
-
-def _notes(tokens: list[Token]) -> tuple[str, ...]:
-    """The everyday words of the question said back: how each was read."""
-    return tuple(dict.fromkeys(f"{t.raw}: {t.said_back}" for t in tokens if t.said_back))
 
 
 def _ordinary(tokens: list[Token], lex: _Lexicon, asks: bool) -> bool:

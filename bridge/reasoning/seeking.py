@@ -57,3 +57,20 @@ def sought(text: str) -> tuple[str, tuple[str, ...]]:
     (to be called only where a goal is said)."""
     found = [m.group(0).strip() for m in _ASKING.finditer(text)]
     return _ASKING.sub(" ", text), tuple(found)
+
+
+#: "can I pour ... without ...", "without hitting the bowl, could we pour ...": whether it can
+#: be done so; not "how can I pour without ...", which asks for a value.
+_CAN = re.compile(r"\b(?:can|could|may) (?:i|we|you|one|the robot)\b")
+
+
+def if_it_can(text: str, goals: tuple[str, ...], manners: bool) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    """(asked, goals) of `goals` heard in normalised `text`: a question
+    whether one can pour in a manner said (`manners`) without an outcome
+    ("can I pour from low down at the edge without hitting the bowl?") asks
+    whether the outcome happens there; said of no manner ("can I pour
+    without spilling?") it wants the outcome, which a plan finds."""
+    if not (manners and goals and " without " in f" {text} " and _CAN.search(text)
+            and not re.search(r"\b(?:how|what|which|where|so(?: that| as)?) ", text)):
+        return (), goals
+    return tuple(g.removeprefix("neg(").removesuffix(")") for g in goals), ()
