@@ -13,7 +13,8 @@ two swapped: "teh" is the), or, for a word of six letters or
 more with none one edit away, two edits; where several are, a word that
 says something before a word of the question's frame ("havy": heavy, not
 have), and of those the one far commoner in English than the others
-("verry": very, not jerry). A real word the reader does
+("verry": very, not jerry). An -ing word typed without its g is
+read as it ("spilin": spilling). A real word the reader does
 not know ("pour from the left") is never read as one it knows ("lift"),
 and a word near two ("tilr": tilt or tile?) is left as written, for the
 reader to refuse with its "did you mean".
@@ -34,6 +35,7 @@ from pantarhei.bridge.reasoning.outcomes import OUTCOMES
 from pantarhei.bridge.reasoning.properties import LEVELS, NAMES
 from pantarhei.bridge.reasoning.quantities import UNITS
 from pantarhei.bridge.reasoning.stages import MARKERS
+from pantarhei.bridge.reasoning.wording import stem
 from pantarhei.bridge.reasoning.words import FILLERS, PHRASES
 from pantarhei.theory.lexicon import load_vocabulary
 
@@ -105,6 +107,17 @@ def _slip(typed: str, meant: str) -> bool:
     return True                        # two letters swapped
 
 
+def _dropped_g(w: str, whole, parts, english) -> str:
+    """The one word of -ing `w` is, as chat types it without its g
+    ("pourin", "spilin": spilling), whose stem the reader reads; or ""."""
+    def reads(t: str) -> bool:
+        return t in english and t.endswith("ing") and (stem(t) in whole or stem(t) in parts)
+    if reads(w):
+        return w
+    near = {t for t in english.edit_distance_1(w) if reads(t) and _slip(w, t)}
+    return near.pop() if len(near) == 1 else ""
+
+
 def corrected(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised: wording.normalised) with its mistyped words read
     as the words meant, and what is said back of each ("spil: read as
@@ -122,6 +135,9 @@ def corrected(text: str) -> tuple[str, tuple[str, ...]]:
             meant[w] = squeezed
             continue
         if w in english:
+            continue
+        if w.endswith("in") and len(w) >= 5 and _dropped_g(w + "g", whole, parts, english):
+            meant[w] = _dropped_g(w + "g", whole, parts, english)     # "spillin", "spilin"
             continue
         if len(w) < _SHORTEST:           # "teh": only two letters swapped
             swapped = {w[:k] + w[k + 1] + w[k] + w[k + 2:] for k in range(len(w) - 1)} & whole

@@ -12,7 +12,8 @@ angle ("tilt it 45"), and one said "tilted back" is negative ("tilted back
 by 20 degrees" is -20 degrees, read with the words "tilted back").
 
 A word written otherwise than it is read is said back: a contraction typed
-without its apostrophe ("im", "doesnt", "wont") is read as with it, and
+without its apostrophe ("im", "doesnt", "wont") is read as with it, a word
+as chat types it ("u", "y", "wat", "lite") as the word meant, and
 `normalising` gives, beside the text, what `ask` says of each ("im: read
 as I'm"); spelling.py says back the words it reads as others ("teh: read
 as the").
@@ -75,6 +76,15 @@ _BARE = {**{f"{w}nt": f"{w}n't" for w in ("do", "does", "did", "is", "are", "was
          "youll": "you'll", "theyre": "they're", "theyve": "they've", "theyll": "they'll",
          "weve": "we've", "itll": "it'll", "thatll": "that'll"}
 _PRONOUNS = "i|it|we|you|they|he|she|this|that"
+#: Words as chat types them -> the word meant, read so and said back ("u: read as you"); "y"
+#: only asking ("y does it spill"), not the offset's axis ("y = 3 cm"), and "its" only as
+#: "it's" ("if its right over the middle", not "its handle"); "lite" is light, not a litre.
+_CHAT = {"u": "you", "ur": "your", "wat": "what", "wut": "what", "wot": "what", "realy": "really",
+         "rly": "really", "lite": "light", "b4": "before",
+         "pls": "please", "plz": "please", "abt": "about", "shud": "should", "wud": "would"}
+_CHATTED = (rf"\b(?:{'|'.join(_CHAT)})\b|\by(?= (?:does|do|did|is|are|was|would|will|can|not)\b)"
+            r"|\bits(?= (?:too|to|so|very|really|right|just|not|over|at|in|on|upside|nearly|almost|only"
+            r"|going|held|[a-z]+ed)\b)")
 
 
 def normalised(text: str) -> str:
@@ -90,12 +100,12 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     said: dict[str, None] = {}
 
     def respelt(written: str) -> str:
-        meant = _BARE.get(written, "can't")
+        meant = _BARE.get(written) or {**_CHAT, "y": "why", "its": "it's"}.get(written, "can't")
         shown = "I" + meant[1:] if meant.startswith("i'") else meant
         said.setdefault(f"{written}: read as {shown}")
         return meant
 
-    text = re.sub(rf"\b(?:{'|'.join(_BARE)})\b", lambda m: respelt(m.group(0)), text)
+    text = re.sub(rf"\b(?:{'|'.join(_BARE)})\b|{_CHATTED}", lambda m: respelt(m.group(0)), text)
     text = re.sub(rf"\bcant\b(?= (?:{_PRONOUNS})\b)", lambda m: respelt(m.group(0)), text)
     text = re.sub(rf"\b((?:{_PRONOUNS}) )cant\b", lambda m: m.group(1) + respelt("cant"), text)
     # a probability written as one: "P(no_spill)", "p(spill)"

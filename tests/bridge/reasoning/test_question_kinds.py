@@ -75,6 +75,11 @@ def test_no_word_is_dropped_silently(question):
     ("theyll pour from the side, does it splash", "theyll: read as they'll"),
     ("will teh cup tip over if i pour high", "teh: read as the"),
     ("pour from high adn tilt it halfway", "adn: read as and"),
+    ("wat if u tilt it halfway", "u: read as you"),
+    ("y does a lite bowl slide", "lite: read as light"),
+    ("y does a lite bowl slide", "y: read as why"),
+    ("will it drip if its tilted steeply", "its: read as it's"),
+    ("can i tilt it halfway without spilin", "spilin: read as spilling"),
 ])
 def test_a_word_read_as_another_is_said_back(question, said):
     """Whatever the reader writes otherwise than typed (a contraction typed
