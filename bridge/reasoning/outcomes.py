@@ -119,23 +119,6 @@ _SHARE = r"(?:what|which) (?:fraction|proportion|share|percentage|part|amount)(?
 _END = rf"(?P<rest>(?: (?:{_REST})\b)*)"
 
 
-#: Other ways of saying a goal, said as "so that ...": "keep the cup still" (not "keep the
-#: source upright": how it is held), "don't let it overflow", "make sure it does not spill"
-#: (the words they drop are fillers).
-_WANTING = tuple((re.compile(p), r) for p, r in (
-    (r"\bkeep(?:s|ing)? (the (?!source\b)[a-z]+) (still|steady|in place|put)\b", r"so that \1 stays \2"),
-    (r"\b(?:do not|never) let (it|them|the [a-z]+|any(?: of it)?) ", r"so that \1 does not "),
-    # "keep the bowl from sliding", "stop it from splashing"
-    (r"\b(?:keep|keeps|keeping|stop|stops|stopping|prevent|prevents|preventing) (it|them|the [a-z]+)"
-     r" from (?=[a-z]+ing\b)", r"so that \1 does not "),
-    (r"\bmake sure(?: that)? ", "make sure so that "),
-    # "avoids the cup hitting the bowl", "prevent the bowl sliding"
-    (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing) (it|them|the [a-z]+) (?=[a-z]+ing\b)",
-     r"so that \1 does not "),
-    # "to avoid spilling", "prevent splashing", "minimise dripping"
-    (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|minimi[sz]e|minimi[sz]ing|reduce|reducing)"
-     r" (?=(?:any )?[a-z]+ing\b)", "so that it does not "),
-))
 #: Questions asked about a clause ("is it true that the bowl tips", "tell me whether it
 #: spills", "I'd like to know if the jug hits the bowl"): asked as "does the bowl tip".
 _FRAMES = tuple((re.compile(p), r) for p, r in (
@@ -261,11 +244,17 @@ def _out_of_the_source(text: str, at: int) -> bool:
                           rf"|upside|turned|held)\b", text))
 
 
+_liquids = lru_cache(maxsize=None)(lambda: Matcher(("liquid", *names("liquid"))))   # "water", "stream"
+
+
 def _acts(subject: list[str], names: tuple[str, ...]) -> bool:
     """Whether a clause with `subject` says what is done rather than what
     happens, or what happens to something the scene does not hold ("is
     the table wobbly": everyday.txt's context nouns)."""
     actors = _ACTORS - _HOLDING if names == ("source_clear",) else _ACTORS
+    head = subject[:subject.index("of")] if "of" in subject else subject     # "the jug of water"
+    if names == ("source_clear",) and _liquids().spans(head):   # "does the water hit the rim": no
+        return True                                             # source hitting it
     if names in (_STILL, ("destination_upright",)):      # "will they slide": the bowls
         actors = actors - {"they"}
     return (bool(actors.intersection(subject)) or (names == _STILL and "source" in subject)
@@ -359,7 +348,7 @@ def hear(text: str) -> Heard:
     was_goal = True
     text, wants = wanting(text)
     phrases.extend(wants)
-    for said, wanted in (*_WANTING, *_FRAMES):
+    for said, wanted in _FRAMES:
         phrases.extend(m.group(0).strip() for m in said.finditer(text))     # heard with the outcome
         text = said.sub(wanted, text)
     text = _spaced(goal.sub(as_goal, text))

@@ -224,7 +224,8 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
     out += same_at_the_end(tokens, out, vocab)
     if not accepted and not _ordinary(tokens, lex, bool(outcome.asked or outcome.goals)):
         unknown = list(dict.fromkeys(t.raw for t in tokens if t.word not in lex.known))
-        hint = ([FOLLOWS] if follows(text) else []) + misspelt(unknown)
+        hint = ([FOLLOWS] if follows(text) else []) + [h for p, h in phrasings() if any(
+            re.search(p, w) for w in unknown)] + misspelt(unknown)
         said = ("could not place " + ", ".join(f'"{w}"' for w in unknown) + ": ") if unknown else ""
         raise UserError(f"understood none of \"{question}\": {said}" + (hint[0] if hint else (
             "describe the scene with the words of `pantarhei vocab`, or give --props P1,P2")))

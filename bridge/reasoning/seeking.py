@@ -7,8 +7,9 @@ whether the theory expects the goal of the scene said, the ordinary pour
 where nothing else is, and points to `plan` for how); with none, they are
 left for the scene, where they are refused as asking for a value.
 
-"I want the bowl not to move", "I'd like it to stay in the cup": a goal,
-said as "so that the bowl does not move".
+"I want the bowl not to move", "I'd like it to stay in the cup", "keep the
+cup still", "to avoid spilling": a goal, said as "so that the bowl does not
+move".
 """
 from __future__ import annotations
 
@@ -42,6 +43,24 @@ _KEEPS = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? {_VALUE}) (keeps|will
 _WANT = re.compile(r"\b(?:i|we) (?:want|need|would like|wish)(?: for)? (it|them|the (?!source\b)[a-z]+)"
                    r"(?= (?:not |never )?to\b)")
 
+#: Other ways of saying a goal, said as "so that ...": "keep the cup still" (not "keep the
+#: source upright": how it is held), "don't let it overflow", "make sure it does not spill"
+#: (the words they drop are fillers).
+_WANTING = tuple((re.compile(p), r) for p, r in (
+    (r"\bkeep(?:s|ing)? (the (?!source\b)[a-z]+) (still|steady|in place|put)\b", r"so that \1 stays \2"),
+    (r"\b(?:do not|never) let (it|them|the [a-z]+|any(?: of it)?) ", r"so that \1 does not "),
+    # "keep the bowl from sliding", "stop it from splashing"
+    (r"\b(?:keep|keeps|keeping|stop|stops|stopping|prevent|prevents|preventing) (it|them|the [a-z]+)"
+     r" from (?=[a-z]+ing\b)", r"so that \1 does not "),
+    (r"\bmake sure(?: that)? ", "make sure so that "),
+    # "avoids the cup hitting the bowl", "prevent the bowl sliding"
+    (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing) (it|them|the [a-z]+) (?=[a-z]+ing\b)",
+     r"so that \1 does not "),
+    # "to avoid spilling", "prevent splashing", "minimise dripping"
+    (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|minimi[sz]e|minimi[sz]ing|reduce|reducing)"
+     r" (?=(?:any )?[a-z]+ing\b)", "so that it does not "),
+))
+
 
 def wanting(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` with its goals said as "so that ...", as outcomes.hear reads
@@ -49,7 +68,11 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
     said = tuple(m.group(2) for m in _KEEPS.finditer(text))
     text = _KEEPS.sub(r"\1 so that \3 stays \4", text)
     said += tuple(m.group(0)[:m.start(1) - m.start()].strip() for m in _WANT.finditer(text))
-    return _WANT.sub(r"so that \1", text), said
+    text = _WANT.sub(r"so that \1", text)
+    for pattern, wanted in _WANTING:
+        said += tuple(m.group(0).strip() for m in pattern.finditer(text))
+        text = pattern.sub(wanted, text)
+    return text, said
 
 
 def sought(text: str) -> tuple[str, tuple[str, ...]]:

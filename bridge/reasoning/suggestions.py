@@ -100,6 +100,9 @@ HINTS: tuple[tuple[str, str], ...] = (
                                'where ("near the rim", "from the side", "offset sideways")'),
     (r"^(?:drop(?:s|ped|ping)?|let(?:s|ting)?)$|^(?:drop|let)\w* (?:it|the|go)", 'dropping: the source is held throughout the pour; the vocabulary says '
                        'nothing of letting it go'),
+    (r"^(?:hit|hits|hitting|touch\w*|bump\w*|strikes?|striking|knock\w*)$",
+     'the liquid hitting the bowl: ask whether it goes in ("does it go in?") or splashes ("does it '
+     'splash?"); contact is the source\'s ("does the cup hit the bowl?")'),
     (r"^(?:tilt|tilted|tip|tipped|tipping)$", 'tilted how far? say "slightly tilted", "tilted halfway", '
                                   '"steeply tilted" or "upside down"'),
 )
