@@ -87,6 +87,8 @@ from pantarhei.oracle.generative import in_support
 from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
 
+from pantarhei.bridge.learning.askable import suspect
+
 if TYPE_CHECKING:
     from pantarhei.bridge.exploration.session import Host
 
@@ -236,21 +238,6 @@ class Support:
         if key not in self.masks:
             self.masks[key] = in_support(self.P, key) if len(self.P) else np.zeros(0, dtype=bool)
         return self.masks[key]
-
-
-def suspect(body: Sequence[str]) -> bool:
-    """Whether a pair may interact as physics goes: its propositions set
-    parameters of one group (one pose, the liquid, a bowl, the motion),
-    a relative model's base parameter counted with its own."""
-    if len(body) != 2:
-        return False
-    vocabulary = load_vocabulary()
-    group = {p.name: p.group for p in vocabulary.parameters}
-
-    def groups(name: str) -> set[str]:
-        m = vocabulary.propositions[name].model
-        return {group[m.param]} | ({group[m.base]} if m.base else set())
-    return bool(groups(body[0]) & groups(body[1]))
 
 
 def beyond_parts(meaning, P: np.ndarray, S: np.ndarray, cands: Sequence[tuple[str, ...]],

@@ -1,6 +1,6 @@
 """Which bodies a person can ask about: the empty one, every proposition
-alone and every valid pair; and whether two bodies can hold together in
-one scene.
+alone and every valid pair; whether two bodies can hold together in
+one scene; and whether a pair may interact as physics goes (`suspect`).
 
 Validity is clingo's (theory/validity.lp), asked once: every constraint
 there is broken by a pair of propositions, whatever else the antecedent
@@ -50,3 +50,18 @@ def askable_bodies(max_body: int) -> list[tuple[str, ...]]:
 def together(a: Sequence[str], b: Sequence[str]) -> bool:
     """Whether one scene can hold both bodies."""
     return valid([*a, *b])
+
+
+def suspect(body: Sequence[str]) -> bool:
+    """Whether a pair may interact as physics goes: its propositions set
+    parameters of one group (one pose, the liquid, a bowl, the motion),
+    a relative model's base parameter counted with its own."""
+    if len(body) != 2:
+        return False
+    vocabulary = load_vocabulary()
+    group = {p.name: p.group for p in vocabulary.parameters}
+
+    def groups(name: str) -> set[str]:
+        m = vocabulary.propositions[name].model
+        return {group[m.param]} | ({group[m.base]} if m.base else set())
+    return bool(groups(body[0]) & groups(body[1]))

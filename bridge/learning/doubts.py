@@ -16,11 +16,13 @@ they say nothing.
   band, where it has `doubt_support` pours or more in its support, or
   fewer whose count would be less likely than `unlikely` under the answer
   (two pours of two that keep the bowl empty, against a `yes` of 94%).
-- `neighbours`: where an explored pair interacts (its likelihood lies in
-  another band than each of its parts'), the pairs one rank along either
-  proposition's scale (pouring high beside pouring very high, over the
-  centre) interact as likely. One with fewer than `doubt_support` pours
-  of its own that the rules answer sure gets `maybe`.
+- `neighbours`: where an explored pair of one group of parameters (one
+  pose, the liquid, a bowl, the motion: `askable.suspect`) interacts (its
+  likelihood lies in another band than each of its parts'), the pairs one
+  rank along either proposition's scale (pouring high beside pouring very
+  high, over the centre) interact as likely. One with fewer than
+  `doubt_support` pours of its own that the rules answer sure gets
+  `maybe`.
 """
 from __future__ import annotations
 
@@ -36,7 +38,7 @@ from scipy.stats import binom
 from pantarhei.oracle.generative import in_support
 from pantarhei.theory.lexicon import load_vocabulary
 
-from pantarhei.bridge.learning.askable import together
+from pantarhei.bridge.learning.askable import suspect, together
 from pantarhei.bridge.learning.general_rules import GeneralRule, deciding
 from pantarhei.bridge.learning.meaning import held_in_support
 
@@ -114,7 +116,8 @@ def exceptions(rules: list[GeneralRule], bodies: Sequence[tuple[str, ...]], targ
 def neighbours(rules: list[GeneralRule], bodies: Sequence[tuple[str, ...]], target: np.ndarray,
                k: int, meaning: Meaning, P: np.ndarray, s: Settings) -> list[GeneralRule]:
     """`maybe` for the pairs one rank along a proposition's scale from an
-    explored pair (`bodies`, with their likelihoods `target`) with at least
+    explored pair of one group (`suspect`; `bodies`, with their
+    likelihoods `target`) with at least
     `doubt_support` pours of its own whose band is neither of its parts':
     each such pair that is no explored body, has fewer than
     `doubt_support` pours in its support, and is answered at least
@@ -126,7 +129,7 @@ def neighbours(rules: list[GeneralRule], bodies: Sequence[tuple[str, ...]], targ
     own = {b: float(t) for b, t in zip(bodies, target)}
     near: set[tuple[str, ...]] = set()
     for b in bodies:
-        if (len(b) != 2 or any((x,) not in own for x in b)
+        if (not suspect(b) or any((x,) not in own for x in b)
                 or any(s.verdict(own[b]) == s.verdict(own[(x,)]) for x in b)
                 or int(in_support(P, b).sum()) < s.doubt_support):
             continue

@@ -36,15 +36,14 @@ def test_two_pours_of_two_that_contradict_a_sure_answer_get_their_own_rule():
     assert not exceptions([DEFAULT], bodies, target, P, np.array([False, False]), off)
 
 
-def _explored(pair_likelihood: float):
-    """Pours of pouring very high over the centre (6, none of which fills
-    the bowl), and the likelihoods of the bodies explored: each part alone
-    fills it, the pair `pair_likelihood`."""
-    pair = ("pour_centred", "pour_very_high")
+def _explored(pair_likelihood: float, pair=("pour_centred", "pour_very_high")):
+    """Pours of `pair` (pouring very high over the centre: 6, none of which
+    fills the bowl), and the likelihoods of the bodies explored: each part
+    alone fills it, the pair `pair_likelihood`."""
     P = sample(list(pair), 6, 11)
     Y = np.ones((len(P), len(NAMES)), dtype=bool)
     Y[:, K] = False
-    bodies = [(), ("pour_centred",), ("pour_very_high",), pair]
+    bodies = [(), *((x,) for x in pair), pair]
     return P, Meaning(P, Y, FAST), bodies, np.array([0.95, 0.95, 0.95, pair_likelihood])
 
 
@@ -65,4 +64,12 @@ def test_a_pair_next_to_one_that_interacts_says_maybe():
 
 def test_no_maybe_next_to_a_pair_that_does_not_interact():
     P, meaning, bodies, target = _explored(0.95)
+    assert not neighbours([DEFAULT], bodies, target, K, meaning, P, FAST)
+
+
+def test_no_maybe_next_to_a_pair_of_two_groups():
+    """A heavy liquid poured very high: the liquid and the pose are two
+    groups of parameters, whose pairs are not suspects of an interaction
+    as physics goes, so their neighbours keep the rules' answers."""
+    P, meaning, bodies, target = _explored(0.05, ("heavy_liquid", "pour_very_high"))
     assert not neighbours([DEFAULT], bodies, target, K, meaning, P, FAST)
