@@ -129,6 +129,11 @@ _FRAMES = tuple((re.compile(p), r) for p, r in (
     # an outcome expected, as a noun: "would you expect spilling", "do you predict any splashing"
     (r"\b(?:expect|predict|anticipate|see|observe|get|cause|causes|notice)(?: any| some| a| much)? "
      r"(?=(?:spill|splash|drip|leak|slosh|splatter|dribbl)\w*\b(?! of\b))", " will it "),
+    # an outcome caused: "does pouring from high make it tip" (the bowl tipping), "cause the cup to slide"
+    # (not wanted: "so as not to make the bowl move" is so that it does not)
+    (r"\bso(?: as)? (?:not|never) to (?:make|cause) (it|them|the [a-z]+)(?: to)? ", r"so that \1 does not "),
+    (r"(?<!\bto )\b(?:make|makes|made|making|cause|causes|caused|causing) (it|them|the [a-z]+)(?: to)? (?=(?:tip"
+     r"|toppl|fall|slid|slip|mov|shift|wobbl|spill|splash|overflow|drip|rock|budg|skid)\w*\b)", r" will \1 "),
 ))
 
 
@@ -247,7 +252,7 @@ def _out_of_the_source(text: str, at: int) -> bool:
 _liquids = lru_cache(maxsize=None)(lambda: Matcher(("liquid", *names("liquid"))))   # "water", "stream"
 
 
-def _acts(subject: list[str], names: tuple[str, ...]) -> bool:
+def _acts(subject: list[str], names: tuple[str, ...], m: re.Match | None = None) -> bool:
     """Whether a clause with `subject` says what is done rather than what
     happens, or what happens to something the scene does not hold ("is
     the table wobbly": everyday.txt's context nouns)."""
@@ -257,8 +262,11 @@ def _acts(subject: list[str], names: tuple[str, ...]) -> bool:
         return True                                             # source hitting it
     if names in (_STILL, ("destination_upright",)):      # "will they slide": the bowls
         actors = actors - {"they"}
-    return (bool(actors.intersection(subject)) or (names == _STILL and "source" in subject)
-            or bool(_around().spans(subject)))
+    # "does the jug tip over": the source, held, neither tips over nor slides as the bowl does
+    held = names in (_STILL, ("destination_upright",)) and m is not None and "knock" not in m.group(0) and any(
+        w == "source" or (_in_the_source(w) and not re.search(rf"\binto (?:\w+ )?(?:\w+ )?{w}\b", m.string))
+        for w in head if w not in ("of", "the", "a", "an"))     # ("the jug knocks the bowl over": the bowl)
+    return bool(actors.intersection(subject)) or held or bool(_around().spans(subject))
 
 
 @lru_cache(maxsize=None)
@@ -297,7 +305,7 @@ def hear(text: str) -> Heard:
     def as_goal(m: re.Match) -> str:
         subject = (m.group("gsub") or m.group("gwho") or "").split()
         names, bad = _which(m)
-        if _acts(subject, names):
+        if _acts(subject, names, m):
             return m.group(0)
         negated = (m.group(0).startswith("without") or bool(m.group("gnot"))
                    or any(w in ("nothing", "none", "no", "never") for w in subject))
@@ -315,7 +323,7 @@ def hear(text: str) -> Heard:
         before = m.string[:m.start()].split()[-3:] if not subject else []
         # "don't tip it out": an imperative, not a question
         imperative = bool(m.group("neg")) and not subject and m.group("aux") in ("do", "does")
-        if _acts(subject, names) or _around().spans(before) or _state(m) or imperative:
+        if _acts(subject, names, m) or _around().spans(before) or _state(m) or imperative:
             return m.group(0)
         asked.extend(n for n in names if n not in asked)
         # "does much stay in the jug", "will some milk spill": how much of the liquid the
