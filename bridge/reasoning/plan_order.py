@@ -31,7 +31,7 @@ from pantarhei.bridge.reasoning.planning import Plan
 from pantarhei.bridge.theories.model import Theory, complement
 
 if TYPE_CHECKING:
-    from pantarhei.bridge.reasoning.plan_search import Trial
+    from pantarhei.bridge.reasoning.plan_trials import Trial
 
 #: The singles whose pairs the search tries.
 PAIRED = 8

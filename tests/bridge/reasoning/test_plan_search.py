@@ -9,7 +9,8 @@ import pytest
 from pantarhei.bridge.reasoning.logic import conclusions
 from pantarhei.bridge.reasoning.plan_evidence import with_evidence
 from pantarhei.bridge.reasoning.plan_numbers import fixed_ranges, ordinary_ranges
-from pantarhei.bridge.reasoning.plan_search import Trial, pour_seed, search, verify
+from pantarhei.bridge.reasoning.plan_search import pour_seed, search, verify
+from pantarhei.bridge.reasoning.plan_trials import Trial
 from pantarhei.bridge.reasoning.planning import Plan, plan
 from pantarhei.bridge.theories.model import Rule, Theory
 from pantarhei.oracle.generative import sample
