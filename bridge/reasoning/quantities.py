@@ -130,6 +130,10 @@ def parameter(q: Quantity, pose: str, move: str | None, cues: set[str],
                             f"\"{q.text} above\" or \"{q.text} to the side\"")
         return f"{pose}_z", "height"
     if q.measures == "time":
+        if move is None and cues & set(CUES["pitch"]):          # "tilted to 90 degrees over 2 s"
+            raise UserError(f"\"{q.text}\": the vocabulary has no speed of tilting: it says how far "
+                            f"the source is tilted and how long it takes to move in: say \"tilted "
+                            f"halfway\", \"move in over {q.text}\"")
         if move is None:
             raise UserError(f"\"{q.text}\": pouring takes no time of its own; say how long "
                             "the source takes to move in (before pouring) or to move away "
@@ -217,6 +221,9 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
         beside = [k for k in sides if k in near]
         cues = {cue_of[tokens[k].word] for k in near}        # "tilt" picks a pitch, as a cue
         choosing = {cue_of[tokens[beside[0]].word]} | (cues & {"below", "offset"}) if beside else cues
+        if q.measures == "time" and any(cue_of.get(tokens[k].word) in CUES["pitch"] for k in range(
+                max(0, i - 8), i) if tokens[k].clause == tokens[i].clause):
+            choosing = choosing | {"tilt"}          # "tilted to 90 degrees over 2 s": the tilting's time
         at = noun.at(i, i + 1)
         body = None if at is None else noun.roles[at]
         if body == "liquid" and "particle" in tokens[at].raw:

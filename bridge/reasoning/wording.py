@@ -131,6 +131,11 @@ def _normalised(text: str) -> str:
     text = re.sub(r"(\d)\s*\u2032(?=\s|$)", r"\1 feet ", text)
     # a quantity named before its number: "height: 15 cm", "tilt = 45 deg"
     text = re.sub(r"(?<=[a-z])\s*[:=]\s*(?=[-\u2212]?\d)", " ", text)
+    # a length of zero needs no unit: "lateral offset 0", "0 offset" (an angle's is tilting's, below)
+    text = re.sub(rf"\b((?:offset|height|distance|gap|displacement|x|y|z)(?: of)?) 0(?:\.0+)?"
+                  rf"(?![\w.%\u00b0]| ?(?:{_UNIT_WORDS})\b)", r"\1 0 mm", text)
+    text = re.sub(r"(?<![\w.-])0(?:\.0+)? (?=(?:lateral |sideways |side )?(?:offset|height|distance|gap)\b)",
+                  "0 mm ", text)
     # "5in", "5 in above": inches (not "pour 5 in the bowl")
     text = re.sub(r"(\d)(?:in|\s+in(?= (?:above|below|over|under|up|high|off|from|away|to the"
                   r"|higher|lower|sideways|offset)\b|\s*(?:[,;.!?)]|$)))\b", r"\1 inches", text)
