@@ -33,11 +33,10 @@ question in five steps:
    "does it splash?") reads as no propositions: the ordinary pour; a
    question that says nothing of a pour is refused.
 
-A word mistyped is read as the one word it is near (spelling.py: "hihg"
-is high, "teh" the) and said back, as is a contraction typed without its
-apostrophe (wording.py: "im" is I'm). Nothing is dropped silently: an everyday word is
-said back with how it was read (`Reading.notes`), any other word read as nothing is in
-`Reading.ignored`, for `ask` to show on its `understood:` line.
+A word mistyped is read as the one word it is near (spelling.py: "hihg" is high) and said
+back, as is a contraction typed without its apostrophe (wording.py: "im" is I'm). Nothing is
+dropped silently: an everyday word is said back with how it was read (`Reading.notes`), any
+other word read as nothing is in `Reading.ignored`, for `ask`'s `understood:` line.
 """
 from __future__ import annotations
 
@@ -189,8 +188,10 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
         k = bisect_left(read, i + 1)
         if saying[ends[i]] > saying[i + 1] and not (k < len(read) and read[k] < ends[i]):
             phrase = " ".join(tokens[j].raw for j in (i, *sorted(scope(tokens, i, ends))))
-            raise UserError(f"understood nothing that \"{phrase}\" excludes: describe the scene "
-                            f"with the words of `pantarhei vocab`, or give --props P1,P2")
+            said = [t.raw for t in tokens if t.word == UNCLEAR] + [phrase]     # "instead of fast, pour slowly"
+            hint = next((h for p, h in phrasings() if any(re.search(p, w) for w in said)),
+                        "describe the scene with the words of `pantarhei vocab`, or give --props P1,P2")
+            raise UserError(f"understood nothing that \"{phrase}\" excludes: {hint}")
     negated_at = covered(tokens, cues, ends)
     said: dict[str, list[str]] = {}
     negated: dict[str, list[str]] = {}
@@ -244,10 +245,9 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
 
 
 def _ordinary(tokens: list[Token], lex: _Lexicon, asks: bool) -> bool:
-    """Whether a question that names no proposition asks of the ordinary
-    pour: it says pouring ("what happens if I pour water into a cup?"), or
-    asks about an outcome ("does it splash?"), in words the vocabulary
-    knows, and nothing else."""
+    """Whether a question that names no proposition asks of the ordinary pour: it says pouring
+    ("what happens if I pour water into a cup?"), or asks about an outcome ("does it
+    splash?"), in words the vocabulary knows, and nothing else."""
     return ((asks or any(t.word == "pour" for t in tokens))
             and all(t.word in lex.asking for t in tokens))
 

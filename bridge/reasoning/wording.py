@@ -131,6 +131,8 @@ def _normalised(text: str) -> str:
     text = re.sub(r"(\d)\s*\u2032(?=\s|$)", r"\1 feet ", text)
     # a quantity named before its number: "height: 15 cm", "tilt = 45 deg"
     text = re.sub(r"(?<=[a-z])\s*[:=]\s*(?=[-\u2212]?\d)", " ", text)
+    # a contrast said first is said after what it contrasts with: "instead of fast, move in slowly"
+    text = re.sub(r"^(instead of|rather than) ([a-z ]{1,30}), ([^,:;?!.]+)", r"\3 \1 \2", text)
     # a length of zero needs no unit: "lateral offset 0", "0 offset" (an angle's is tilting's, below)
     text = re.sub(rf"\b((?:offset|height|distance|gap|displacement|x|y|z)(?: of)?) 0(?:\.0+)?"
                   rf"(?![\w.%\u00b0]| ?(?:{_UNIT_WORDS})\b)", r"\1 0 mm", text)

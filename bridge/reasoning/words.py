@@ -170,6 +170,16 @@ PHRASES: tuple[tuple, ...] = (
                r"re:(?<!after )(?<!before )\bpour(?:s|ed|ing)?(?: (?!(?:then|and|move|moving|bring|"
                r"approach|retreat|in|away|out|before|after|lift|lower|raise|pose|position)\b)[a-z]+){1,3}"
                r" (?:slow(?:ly|er)?|fast(?:er)?|quick(?:ly|er)?|gently|carefully|rapidly)\b")),
+    # a side of the middle is offset sideways, its side unread ("a bit to the left of centre")
+    ("offset sideways", (r"re:\b(?:(?:just|slightly|a (?:little |tiny )?bit|a little|a tad|off) )?(?:to )?(?:the )?"
+                         r"(?:left|right) (?:of|from) (?:the )?(?:destination |bowl )?(?:centre|center|middle)\b",),
+     "read as offset sideways: the vocabulary's offset names no side"),
+    # not over the bowl: over neither its middle nor its rim (beside it, or far from it?)
+    ("centred near rim", (r"re:(?<=\bnot )(?:(?:directly|right|quite|held|hold) )?(?:over|above) (?:the )?"
+                          r"(?:destination|bowl)\b",)),
+    # neither extreme names a place: the values said beside it are read
+    ("hedge", (r"re:\bnot too (?:close|near|far)\b(?: ,)? (?:and |or |but |nor )?not too (?:close|near|far)\b",),
+     "read as nothing: it names no place; the values said with it are read"),
     (UNCLEAR, (r"re:\ba (?:little|bit|tad) (?=to |more |further |closer |higher |lower |away |off )",
                r"re:\boff(?: |-)?cent(?:er|re)d?\b",
                "from above", r"re:\bfrom below\b(?! the (?:destination |bowl )?rim)",
