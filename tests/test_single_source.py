@@ -231,3 +231,25 @@ def test_the_nesting_bound_of_theory_files_lives_in_defaults_pl():
     for rel in ("bridge/theories/facts.py", "theory/fact_reader.pl"):
         text = (ROOT / rel).read_text(encoding="utf-8")
         assert not re.search(rf"(?i)nesting\w*(\s*=\s*|\(){most}\b", text), f"{rel} writes the bound"
+
+
+def test_an_option_one_curiosity_reads_is_declared_in_its_module():
+    """theory/defaults.pl declares the options that several curiosities
+    read, or every one; an option that one curiosity alone reads is
+    declared in that curiosity's module (theory/curiosity/NAME.pl), which
+    the option table reads."""
+    from pantarhei.bridge.theories.facts import read_facts
+    from pantarhei.theory.option_table import CURIOSITY_DIR, declarations, option_table
+
+    facts = read_facts([HOME])
+    readers: dict[str, set] = {}
+    for name, curiosity in facts.get("used_by", []):
+        readers.setdefault(name, set()).add(curiosity)
+    shared = {row[0] for row in facts["option"]}
+    assert not {n for n, cs in readers.items() if len(cs) == 1}, \
+        "an option one curiosity reads is declared in its module, not in theory/defaults.pl"
+    for o in option_table():
+        if o.name not in shared:
+            declared = declarations(CURIOSITY_DIR / f"{o.curiosities[0]}.pl")
+            assert o.name in {row[0] for row in declared["option"]}, o.name
+    assert any(o.name not in shared for o in option_table())

@@ -9,9 +9,18 @@
 % default is true), the checks of explore/1's options
 % (theory/curiosity/settings.pl), the options Python passes to explore/1,
 % the setting/2 facts of the learned theory (theory/curiosity/writer.pl),
-% the reference page docs/options.md, and default(Name, Value) for Prolog
-% and Python (theory/default_values.pl, pantarhei.theory.defaults).
+% the reference page docs/options.md, and default(Name, Value) for Python
+% (pantarhei.theory.defaults) and, for the rows of this file, Prolog
+% (theory/default_values.pl).
 % The rows are in the order of the help and of the setting/2 facts.
+% The options that one curiosity alone reads are declared in its module
+% (theory/curiosity/NAME.pl, NAME a value of the curiosity row below, the
+% one list), as the same option/5 facts, with their course/2 and
+% prolog_only/1 facts: their rows follow the curiosity row, the
+% curiosities in the list's order, or the row that an
+% option_after(Name, Row) fact of the module names (read by
+% theory/option_table.py and theory/curiosity/settings.pl). This file
+% declares those that several curiosities read, or every one.
 % Type and Range:
 %   count, range(Low, High): a whole number from Low to High;
 %   permille, range(Low, High): a number from Low/1000 to High/1000
@@ -32,42 +41,8 @@ option(batch, count, range(1, 10000), none,
   "pours simulated per batch, for each explored antecedent (default: parameters + 1; learn: learn_batch of theory/defaults.pl)").
 option(budget, count, range(1, 100000), 25,
   "the budget: the pours of this many batches, probes included (discover); this many explored antecedents (paper)").
-option(pours, count, range(1, 1000000), 775,
-  "learn: the budget: every pour the run simulates, in batches").
 option(curiosity, choice, one_of(learn, discover, paper), learn,
   "learn: from the ordinary pour, explore what questions say, the antecedent whose pours would change the theory most first, and write one layer of rules of the explored antecedents; discover: queue the candidates (moves past where a significant plane's verdict flips, neighbours, random jumps) a forest of the pours so far predicts to show something new, most novel first; paper: Algorithm 1 as the paper states it").
-option(body, count, range(1, 4), 2,
-  "learn: the most propositions an explored antecedent says").
-option(queue, count, range(1, 100000), 64,
-  "learn: the candidates A_new keeps, the most valuable first").
-option(uncertainty, permille, range(0, none), 1000,
-  "learn: the weight of a candidate's uncertain likelihoods beside how far its answer would move").
-option(doubt, permille, range(0, none), 1000,
-  "learn: the weight of the model's doubt (entropy, in bits) about the pours of a candidate's next batch, less as its own pours pile up").
-option(newness, permille, range(0, none), 2000,
-  "learn: the weight of the chance that a pour of a candidate's next batch shows a behaviour no two pours have shown").
-option(reach, count, range(0, 100000), 16,
-  "learn: random valid antecedents of 2 to `body` propositions drawn as candidates each step, beyond the children of what was explored").
-option(significance, permille, range(0, 1000), 50,
-  "discover: the significance level of the permutation test of the planes").
-option(permutations, count, range(1, 1000000), 199,
-  "discover: shuffles of the permutation test").
-option(resample, count, range(0, 1000000), 2,
-  "discover: more batches of an antecedent whose planes are all undecided and that queued nothing new").
-option(novelty, permille, range(0, 1000), 100,
-  "discover: the predicted novelty, from 0 to 1, a candidate needs to be queued").
-option(jumps, count, range(1, 1000000), 31,
-  "discover: uniformly random valid antecedents drawn as candidates each step").
-option(probe, count, range(0, 10000), 8,
-  "discover: simulate this many pours of a candidate's batch first, and set it aside for the next when they show no new, reproducible consequent; 0: no probes").
-option(probe_attempts, count, range(1, 1000000), 3,
-  "discover: candidates probed at most in a step; then the one whose probe scored best is explored").
-option(prior_batch, choice, one_of(0, 1), 1,
-  "discover: 1 to explore the priors (nothing said: every parameter from its prior, as a question's unsaid ones) with the budget's last batch, 0 not to").
-option(slope, permille, range(0, none), 100,
-  "paper: the plane slope below which nothing new is explored").
-option(breadth, count, range(1, 1000000), 3,
-  "paper: modify steps the parameters of this many largest gradient components").
 option(ridge, permille, range(0, none), 1000,
   "L2 penalty of the plane fits on normalised parameters; 0 is the paper's plain least squares").
 option(qualify, choice, one_of(weighted, argmax), weighted,
@@ -95,25 +70,12 @@ option(progress, flag, none, true,
 
 % The options explore/1 takes in its option list alone (prolog_only(Name):
 % `pantarhei explore` has no flag for them, docs/options.md lists them
-% apart): the tuning of the discovering and the paper's curiosity and the
-% paper's variants of the planes and of qualify, none of which the default
-% curiosity reads. docs/dropped.md says, with the figure, why each value
-% other than the default is not the default.
-prolog_only(significance).
-prolog_only(permutations).
-prolog_only(resample).
-prolog_only(novelty).
-prolog_only(jumps).
-prolog_only(probe).
-prolog_only(probe_attempts).
-prolog_only(prior_batch).
-prolog_only(slope).
-prolog_only(breadth).
+% apart): the paper's variants of the planes and of qualify, which the
+% default curiosity does not read (the tuning of each curiosity's own
+% options is in its module). docs/dropped.md says, with the figure, why
+% each value other than the default is not the default.
 prolog_only(ridge).
 prolog_only(qualify).
-prolog_only(doubt).
-prolog_only(newness).
-prolog_only(reach).
 
 % The options that decide an exploration's course, hashed into its run
 % key (bridge/exploration/course.py; a saved run resumes only with the
@@ -124,56 +86,20 @@ prolog_only(reach).
 course(oracle, every).
 course(seed, every).
 course(batch, every).
-course(significance, discover).
-course(slope, paper).
 course(initial, every).
-course(breadth, every).
 course(ridge, every).
 course(curiosity, other_than(paper)).
-course(permutations, discover).
-course(resample, discover).
-course(novelty, discover).
-course(jumps, discover).
-course(probe, discover).
-course(probe, nonzero(probe)).
-course(probe_attempts, discover).
-course(probe_attempts, nonzero(probe)).
-course(prior_batch, discover).
-course(prior_batch, nonzero(prior_batch)).
-course(pours, learn).
-course(body, learn).
-course(queue, learn).
-course(uncertainty, learn).
-course(doubt, learn).
-course(newness, learn).
-course(reach, learn).
 
 % The options that some curiosities read and others do not: used_by(Name,
 % Curiosity), one fact for each curiosity that reads it; an option without
-% such facts is read by every curiosity. explore/1 refuses, in one line,
+% such facts is read by every curiosity, and one that a curiosity's module
+% declares by that curiosity alone. explore/1 refuses, in one line,
 % an option that the run's curiosity does not read (theory/curiosity/
 % settings.pl), and Python passes it only such options as it reads, or
 % set to another value than the default (bridge/exploration/explore_call.py).
 % A curiosity's budget is the one of budget and pours that it reads.
 used_by(budget, discover).
 used_by(budget, paper).
-used_by(pours, learn).
-used_by(body, learn).
-used_by(queue, learn).
-used_by(uncertainty, learn).
-used_by(doubt, learn).
-used_by(newness, learn).
-used_by(reach, learn).
-used_by(significance, discover).
-used_by(permutations, discover).
-used_by(resample, discover).
-used_by(novelty, discover).
-used_by(jumps, discover).
-used_by(probe, discover).
-used_by(probe_attempts, discover).
-used_by(prior_batch, discover).
-used_by(slope, paper).
-used_by(breadth, paper).
 used_by(ridge, discover).
 used_by(ridge, paper).
 used_by(qualify, discover).

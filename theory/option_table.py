@@ -1,24 +1,44 @@
 """The options of Algorithm 1 (`pantarhei explore`, explore/1), declared
-once in theory/defaults.pl as `option(Name, Type, Range, Default, Help)`
-facts, read here for Python: the command line
-(bridge/commands/explore.py), the options Python passes to explore/1
-(bridge/exploration/explore_call.py) and the reference page docs/options.md
-(`options_page`). SWI-Prolog checks explore/1's options against the same
-facts (theory/curiosity/settings.pl). A row named by a `prolog_only/1` fact
-is an option of explore/1's option list alone: the command line has no
-flag for it (`Option.prolog_only`).
+once as `option(Name, Type, Range, Default, Help)` facts, read here for
+Python: the command line (bridge/commands/explore.py), the options Python
+passes to explore/1 (bridge/exploration/explore_call.py) and the
+reference page docs/options.md (`options_page`). SWI-Prolog checks
+explore/1's options against the same facts (theory/curiosity/settings.pl).
+
+theory/defaults.pl declares the options that every curiosity, or several,
+read; an option that one curiosity alone reads is declared in that
+curiosity's module (theory/curiosity/NAME.pl, NAME a value of the
+`curiosity` row, the one list), as ground facts each starting a line, in
+the language of theory files: its `option/5` row, and `prolog_only/1`
+if it has no flag. Such an option is read by its curiosity alone (its
+`used_by`). A curiosity's rows follow the `curiosity` row, the
+curiosities in the list's order, each in its file's order; a row that a
+fact `option_after(Name, Row)` places follows the row Row of
+theory/defaults.pl instead (learn's budget, `pours`, beside `budget`).
+A row named by a `prolog_only/1` fact is an option of explore/1's option
+list alone: the command line has no flag for it (`Option.prolog_only`).
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from functools import lru_cache
+from pathlib import Path
 from typing import Any
 
-from pantarhei.bridge.theories.facts import read_facts
+from pantarhei.bridge.theories.facts import parse, read_facts
 from pantarhei.theory.locations import DEFAULTS_FILE, THEORY_DIR
 
 #: The reference page the table gives (`options_page`).
 OPTIONS_PAGE = THEORY_DIR.parent / "docs" / "options.md"
+#: The folder of the curiosities' modules (NAME.pl for the curiosity NAME).
+CURIOSITY_DIR = THEORY_DIR / "curiosity"
+#: What a curiosity's module declares of its own options.
+DECLARED = ("option", "prolog_only", "option_after")
+#: A declaration in a curiosity's module: a fact of DECLARED starting a
+#: line and ending one, its quoted text read whole.
+_DECLARATION = re.compile(r'^(?:%s)\((?:[^"]|"(?:[^"\\]|\\.)*")*?\)\.[ \t]*$'
+                          % "|".join(DECLARED), re.M)
 
 
 @dataclass(frozen=True)
@@ -58,16 +78,54 @@ class Option:
 
 @lru_cache(maxsize=None)
 def option_table() -> tuple[Option, ...]:
-    """The option/5 facts of theory/defaults.pl, in file order."""
-    facts = read_facts([DEFAULTS_FILE])
+    """The option table: the option/5 facts of theory/defaults.pl and of
+    the modules of the curiosities it lists, in the table's order."""
+    return read_table(DEFAULTS_FILE, CURIOSITY_DIR)
+
+
+def read_table(defaults: Path, curiosity_dir: Path) -> tuple[Option, ...]:
+    """The option table of the defaults file `defaults` and of the modules
+    in `curiosity_dir` of the curiosities its `curiosity` row lists.
+    ValueError for an option declared twice, or placed after no row of
+    `defaults`."""
+    facts = read_facts([defaults])
     project = {k: v for k, v in facts.get("default", [])}
     project["initial"] = tuple(p for (p,) in facts.get("default_initial", []))
     prolog_only = {name for (name,) in facts.get("prolog_only", [])}
     used: dict[str, tuple] = {}
     for name, curiosity in facts.get("used_by", []):
         used[name] = used.get(name, ()) + (curiosity,)
-    return tuple(_option(row, project, row[0] in prolog_only, used.get(row[0], ()))
-                 for row in facts.get("option", []))
+    shared = facts.get("option", [])
+    choices = next(row[2][1:] for row in shared if row[0] == "curiosity")
+    own: list[tuple] = []           # the curiosities' rows, each with where it goes
+    for curiosity in choices:
+        declared = declarations(curiosity_dir / f"{curiosity}.pl")
+        after = dict(declared.get("option_after", []))
+        prolog_only |= {name for (name,) in declared.get("prolog_only", [])}
+        for row in declared.get("option", []):
+            used[row[0]] = (curiosity,)
+            own.append((after.get(row[0], "curiosity"), row))
+    names = [row[0] for row in shared] + [row[0] for _, row in own]
+    if twice := sorted({n for n in names if names.count(n) > 1}):
+        raise ValueError(f"options declared twice: {', '.join(twice)}")
+    if nowhere := sorted({at for at, _ in own} - {row[0] for row in shared}):
+        raise ValueError(f"options placed after no row of {defaults.name}: {', '.join(nowhere)}")
+    rows = [r for row in shared for r in (row, *(o for at, o in own if at == row[0]))]
+    return tuple(_option(row, project, row[0] in prolog_only, used.get(row[0], ())) for row in rows)
+
+
+def declarations(module: Path) -> dict[str, list[tuple]]:
+    """What a curiosity's module declares of its own options: the facts of
+    DECLARED in it (each starting a line), by predicate name, in file
+    order; TheoryFileError (`file:line: what`) for one that is not a fact
+    of a theory file."""
+    text = module.read_text(encoding="utf-8")
+    out: dict[str, list[tuple]] = {}
+    for m in _DECLARATION.finditer(text):
+        line = text.count("\n", 0, m.start()) + 1
+        for fact in parse(m.group(0), str(module), line):
+            out.setdefault(fact.name, []).append(fact.args)
+    return out
 
 
 def command_line_options() -> tuple[Option, ...]:
@@ -114,11 +172,14 @@ def options_page() -> str:
     explore/1's option list alone."""
     lines = ["# The options of `pantarhei explore`", "",
              "This page is written from the option table in `theory/defaults.pl`",
+             "and in the curiosities' modules (`theory/curiosity/NAME.pl` declares",
+             "the options that the curiosity NAME alone reads)",
              "(`python -m pantarhei.theory.option_table`). The same names are the",
              "options of `explore/1` at the Prolog prompt (`seed(3)` for `--seed 3`,",
              "underscores for dashes, `progress(false)` for `--no-progress`).",
              "An option is read by the curiosities its row names (`used_by/2` of",
-             "`theory/defaults.pl`); one that the chosen curiosity does not read",
+             "`theory/defaults.pl`; an option of a curiosity's module, by that",
+             "curiosity); one that the chosen curiosity does not read",
              "is refused in one line, at the prompt and on the command line",
              "(given at its default value on the command line, it changes nothing",
              "and is not passed on).", "",

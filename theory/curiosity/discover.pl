@@ -48,6 +48,47 @@ batch (loop.pl). Its theory's second layer is the general rules.
 python_side(['pantarhei.bridge.exploration.steepest',
              'pantarhei.bridge.exploration.novelty']).
 
+% Its own options, read by this curiosity alone: rows of the option table
+% (theory/defaults.pl says what option/5, course/2 and prolog_only/1
+% mean; theory/option_table.py and settings.pl read them from here).
+option(significance, permille, range(0, 1000), 50,
+  "discover: the significance level of the permutation test of the planes").
+option(permutations, count, range(1, 1000000), 199,
+  "discover: shuffles of the permutation test").
+option(resample, count, range(0, 1000000), 2,
+  "discover: more batches of an antecedent whose planes are all undecided and that queued nothing new").
+option(novelty, permille, range(0, 1000), 100,
+  "discover: the predicted novelty, from 0 to 1, a candidate needs to be queued").
+option(jumps, count, range(1, 1000000), 31,
+  "discover: uniformly random valid antecedents drawn as candidates each step").
+option(probe, count, range(0, 10000), 8,
+  "discover: simulate this many pours of a candidate's batch first, and set it aside for the next when they show no new, reproducible consequent; 0: no probes").
+option(probe_attempts, count, range(1, 1000000), 3,
+  "discover: candidates probed at most in a step; then the one whose probe scored best is explored").
+option(prior_batch, choice, one_of(0, 1), 1,
+  "discover: 1 to explore the priors (nothing said: every parameter from its prior, as a question's unsaid ones) with the budget's last batch, 0 not to").
+
+course(significance, discover).
+course(permutations, discover).
+course(resample, discover).
+course(novelty, discover).
+course(jumps, discover).
+course(probe, discover).
+course(probe, nonzero(probe)).
+course(probe_attempts, discover).
+course(probe_attempts, nonzero(probe)).
+course(prior_batch, discover).
+course(prior_batch, nonzero(prior_batch)).
+
+prolog_only(significance).
+prolog_only(permutations).
+prolog_only(resample).
+prolog_only(novelty).
+prolog_only(jumps).
+prolog_only(probe).
+prolog_only(probe_attempts).
+prolog_only(prior_batch).
+
 budget(Settings, Pours) :-
     Pours is Settings.budget * Settings.batch.
 

@@ -51,7 +51,12 @@ and may define
     define it: its numbers are all Prolog's;
   - unsaid(+Key, -Value): the value of an option of the table without a
     default (`none`), such as batch or initial, when the run does not give
-    it (settings.pl); the table's rule for the others.
+    it (settings.pl); the table's rule for the others;
+  - option/5, course/2, prolog_only/1 and option_after/2: the options it
+    alone reads, rows of the option table as those of theory/defaults.pl
+    (which says what the facts mean), read by settings.pl and by Python
+    (theory/option_table.py). An option it declares that the table has
+    already is refused as it loads.
 */
 
 :- use_module(library(apply)).
@@ -72,6 +77,8 @@ problem(python_side(Modules)) -->
     [ 'declares python_side(~q): it takes a list of Python module names'-[Modules] ].
 problem(no_module) -->
     [ 'is not a module' ].
+problem(option_twice(Name)) -->
+    [ 'declares the option ~w, which the option table has already'-[Name] ].
 
 %!  curiosity_module(?Curiosity:atom, ?Module:atom) is nondet.
 %
@@ -96,8 +103,8 @@ interface_predicate(theory_layout/1).
 %   and record it as Curiosity's module (curiosity_module/2).
 %
 %   @error curiosity_interface(Curiosity, File, Problem) when File is no
-%   module, lacks a predicate of the interface, or declares a Python side
-%   that is no list of module names.
+%   module, lacks a predicate of the interface, declares a Python side
+%   that is no list of module names, or an option the table has already.
 load_curiosity(C, File) :-
     absolute_file_name(File, Path, [file_type(prolog), access(read)]),
     use_module(Path, []),
@@ -111,6 +118,14 @@ load_curiosity(C, File) :-
     (   current_predicate(M:python_side/1), M:python_side(Modules),
         \+ ( is_list(Modules), maplist(atom, Modules) )
     ->  throw(curiosity_interface(C, Path, python_side(Modules)))
+    ;   true
+    ),
+    (   current_predicate(M:option/5), M:option(Name, _, _, _, _),
+        (   defaults:option(Name, _, _, _, _)
+        ;   curiosity_module(Other, OM), Other \== C,
+            current_predicate(OM:option/5), OM:option(Name, _, _, _, _)
+        )
+    ->  throw(curiosity_interface(C, Path, option_twice(Name)))
     ;   true
     ),
     retractall(curiosity_module(C, _)),

@@ -85,6 +85,19 @@ test(a_curiosity_is_checked_when_it_loads) :-
     message_to_codes(curiosity_interface(toy_bad, 'toy.pl', Side), Text),
     once(sub_string(Text, _, _, _, "the curiosity toy_bad (toy.pl) declares python_side(teaching)")).
 
+% A curiosity that declares an option the table has already is refused.
+test(a_curiosity_s_option_is_new_to_the_table) :-
+    toy_module(Twice, [ "budget(_, 1).", "progress_bar(_, _{total:1, unit:pour}).",
+                        "probe_size(_, 0).", "probed(_, _) :- fail.", "priors_due(_, _) :- fail.",
+                        "after_batch(_, _, [], _{}).", "second_layer(_, _, _, []).",
+                        "theory_layout(_{}).",
+                        "option(seed, count, range(0, 9), 1, \"again\")." ]),
+    catch(load_curiosity(toy_twice, Twice), curiosity_interface(toy_twice, _, Problem), true),
+    Problem == option_twice(seed),
+    \+ curiosity_module(toy_twice, _),
+    message_to_codes(curiosity_interface(toy_twice, 'toy.pl', Problem), Text),
+    once(sub_string(Text, _, _, _, "declares the option seed, which the option table has already")).
+
 % The Python sides of the curiosities of the list.
 test(each_curiosity_declares_its_python_side) :-
     forall(curiosity_module(C, _),

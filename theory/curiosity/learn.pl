@@ -50,6 +50,39 @@ explored antecedents.
 
 python_side(['pantarhei.bridge.exploration.teaching']).
 
+% Its own options, read by this curiosity alone: rows of the option table
+% (theory/defaults.pl says what option/5, course/2 and prolog_only/1
+% mean; theory/option_table.py and settings.pl read them from here).
+% Its budget, pours, follows budget, the other curiosities' budget, in the
+% table (option_after/2); its other rows follow the curiosity row.
+option(pours, count, range(1, 1000000), 775,
+  "learn: the budget: every pour the run simulates, in batches").
+option(body, count, range(1, 4), 2,
+  "learn: the most propositions an explored antecedent says").
+option(queue, count, range(1, 100000), 64,
+  "learn: the candidates A_new keeps, the most valuable first").
+option(uncertainty, permille, range(0, none), 1000,
+  "learn: the weight of a candidate's uncertain likelihoods beside how far its answer would move").
+option(doubt, permille, range(0, none), 1000,
+  "learn: the weight of the model's doubt (entropy, in bits) about the pours of a candidate's next batch, less as its own pours pile up").
+option(newness, permille, range(0, none), 2000,
+  "learn: the weight of the chance that a pour of a candidate's next batch shows a behaviour no two pours have shown").
+option(reach, count, range(0, 100000), 16,
+  "learn: random valid antecedents of 2 to `body` propositions drawn as candidates each step, beyond the children of what was explored").
+
+course(pours, learn).
+course(body, learn).
+course(queue, learn).
+course(uncertainty, learn).
+course(doubt, learn).
+course(newness, learn).
+course(reach, learn).
+
+prolog_only(doubt).
+prolog_only(newness).
+prolog_only(reach).
+option_after(pours, budget).
+
 % A batch is learn_batch pours, and a_0 is the ordinary pour (the empty
 % antecedent), unless the run says otherwise.
 unsaid(batch, N) :- default(learn_batch, N).

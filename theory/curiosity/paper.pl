@@ -24,6 +24,20 @@ of A_new. Nothing is probed; the budget is `budget` explored antecedents
 
 python_side(['pantarhei.bridge.exploration.steepest']).
 
+% Its own options, read by this curiosity alone: rows of the option table
+% (theory/defaults.pl says what option/5, course/2 and prolog_only/1
+% mean; theory/option_table.py and settings.pl read them from here).
+option(slope, permille, range(0, none), 100,
+  "paper: the plane slope below which nothing new is explored").
+option(breadth, count, range(1, 1000000), 3,
+  "paper: modify steps the parameters of this many largest gradient components").
+
+course(slope, paper).
+course(breadth, every).
+
+prolog_only(slope).
+prolog_only(breadth).
+
 budget(Settings, Pours) :-
     Pours is Settings.budget * Settings.batch.
 

@@ -21,7 +21,7 @@ setting/2 facts of its learned theory.
 :- use_module('../default_values').
 :- use_module(library(aggregate)).
 :- use_module(library(yall)).
-:- use_module(interface, [curiosity_unsaid/3]).
+:- use_module(interface, [curiosity_module/2, curiosity_unsaid/3]).
 
 %!  settings(+Options:list, -Settings:dict) is det.
 %
@@ -54,7 +54,8 @@ settings(Options, S) :-
 %!  course_options(+Settings:dict, -Names:list) is det.
 %
 %   Names are the options that decide the course of the run of Settings:
-%   those of course/2 in theory/defaults.pl whose every condition holds,
+%   those of course/2 (theory/defaults.pl's, or the module's of the
+%   curiosity that declares the option) whose every condition holds,
 %   in the option table's order. Python hashes them into the run key.
 course_options(S, Names) :-
     course_names(S, true, Names).
@@ -64,8 +65,8 @@ course_options(S, Names) :-
 %   Nonzero false, a condition nonzero(Option) counts as holding.
 course_names(S, Nonzero, Names) :-
     findall(Name, ( table_option(Name, _, _, _),
-                    once(defaults:course(Name, _)),
-                    forall(defaults:course(Name, When), course_holds(When, Nonzero, S)) ),
+                    once(option_course(Name, _)),
+                    forall(option_course(Name, When), course_holds(When, Nonzero, S)) ),
             Names).
 
 course_holds(every, _, _).
@@ -122,23 +123,23 @@ known_option(Option) :-
     ).
 
 %   option_of_curiosity(+Curiosity, +Option): Option (known_option/1) is
-%   one that Curiosity reads: used_by/2 of theory/defaults.pl names it for
-%   Curiosity, or names it for none. Else the error names the option, the
+%   one that Curiosity reads: option_used_by/2 names it for Curiosity,
+%   or names it for none. Else the error names the option, the
 %   curiosity, the curiosity's budget when the option is the other's, and
 %   the options the curiosity reads that not every curiosity reads.
 option_of_curiosity(Curiosity, Option) :-
     (   Option = (Name = _) -> true ; compound_name_arity(Option, Name, 1) ),
-    (   \+ defaults:used_by(Name, _)
+    (   \+ option_used_by(Name, _)
     ->  true
-    ;   defaults:used_by(Name, Curiosity)
+    ;   option_used_by(Name, Curiosity)
     ->  true
-    ;   findall(O, ( table_option(O, _, _, _), defaults:used_by(O, Curiosity) ), Own),
+    ;   findall(O, ( table_option(O, _, _, _), option_used_by(O, Curiosity) ), Own),
         (   memberchk(Name, [budget, pours]),
             member(B, [budget, pours]), memberchk(B, Own)
         ->  format(string(Budget), ", whose budget is ~w(N)", [B])
         ;   Budget = ""
         ),
-        findall(C, defaults:used_by(Name, C), Cs),
+        findall(C, option_used_by(Name, C), Cs),
         maplist([C, T]>>format(string(T), "curiosity(~w)", [C]), Cs, Ts),
         words_and(Own, OwnText),
         words_and(Ts, ReadersText),
@@ -155,9 +156,53 @@ words_and(Ws, Text) :-
     format(string(Text), "~w and ~w", [F, Last]).
 
 %   table_option(?Key, ?Type, ?Range, ?Default): a row of the option
-%   table (theory/defaults.pl).
+%   table, in the table's order: the rows of theory/defaults.pl, each
+%   followed by the rows the curiosities' modules declare after it
+%   (option_after/2; the curiosity row: the others), the curiosities in
+%   the order loaded (the one list's), each in its file's order
+%   (theory/option_table.py reads the same rows for Python).
 table_option(Key, Type, Range, Default) :-
-    defaults:option(Key, Type, Range, Default, _).
+    atom(Key), !,                       % one row, without a choice point
+    (   defaults:option(Key, Type0, Range0, Default0, _)
+    ->  true
+    ;   curiosity_module(_, M),
+        declared(M, option(Key, Type0, Range0, Default0, _))
+    ->  true
+    ),
+    Type = Type0, Range = Range0, Default = Default0.
+table_option(Key, Type, Range, Default) :-
+    defaults:option(Row, Type0, Range0, Default0, _),
+    (   Key = Row, Type = Type0, Range = Range0, Default = Default0
+    ;   curiosity_module(_, M),
+        declared(M, option(Key, Type, Range, Default, _)),
+        once(( declared(M, option_after(Key, At)) ; At = curiosity )),
+        At == Row
+    ).
+
+%   declared(+Module, ?Fact): Fact, an option/5, option_after/2 or
+%   course/2 fact, is a declaration of Module, a curiosity's, of its own
+%   options.
+declared(M, Fact) :-
+    functor(Fact, Name, Arity),
+    current_predicate(M:Name/Arity),
+    call(M:Fact).
+
+%   option_course(?Name, ?When): course/2 of theory/defaults.pl, or of the
+%   module of the curiosity that declares the option.
+option_course(Name, When) :-
+    defaults:course(Name, When).
+option_course(Name, When) :-
+    curiosity_module(_, M),
+    declared(M, option(Name, _, _, _, _)),
+    declared(M, course(Name, When)).
+
+%   option_used_by(?Name, ?Curiosity): used_by/2 of theory/defaults.pl;
+%   an option a curiosity's module declares is read by that curiosity alone.
+option_used_by(Name, Curiosity) :-
+    defaults:used_by(Name, Curiosity).
+option_used_by(Name, Curiosity) :-
+    curiosity_module(Curiosity, M),
+    declared(M, option(Name, _, _, _, _)).
 
 %   curiosity_choice(+C): C is a curiosity, a value of the option table's
 %   curiosity row (the one list).
@@ -195,7 +240,8 @@ unsaid(out, _, _, File) :- !,
 unsaid(Key, Default, _, Value) :-
     Default \== none,
     Default \= default(_),
-    default(Key, Value).
+    table_option(Key, Type, _, _),
+    (   Type == permille -> Value is Default / 1000 ; Value = Default ).
 
 %   check_option(+Type, +Range, +Key, +Value0, -Value): Value0 is of the
 %   option's type and in its range (Value, as the settings hold it), else

@@ -30,7 +30,7 @@ test(course_options_learn) :-
     course_options(S, [oracle, seed, batch, pours, curiosity, body, queue, uncertainty,
                        doubt, newness, reach, breadth, ridge, initial]),
     recorded_settings(S, "9", Facts, []),
-    once(default(pours, Pours)),
+    curiosity_settings:table_option(pours, _, _, Pours),
     memberchk(setting(pours, Pours), Facts),
     memberchk(setting(uncertainty_permille, _), Facts).
 
@@ -78,15 +78,14 @@ test(an_option_the_curiosity_does_not_read_is_refused,
     M2 == M.
 
 test(each_curiosity_reads_its_options_and_refuses_the_others,
-     [forall(( defaults:used_by(Name, _), curiosity_module(C, _) ))]) :-
-    defaults:option(Name, _, _, _, _),
+     [forall(( curiosity_settings:option_used_by(Name, _), curiosity_module(C, _) ))]) :-
     O =.. [Name, _],
     (   catch(( settings([curiosity(C), O], _), Said = read ),
               exploration_error(M), Said = M)
     ->  true
     ;   Said = read
     ),
-    (   defaults:used_by(Name, C)
+    (   curiosity_settings:option_used_by(Name, C)
     ->  (   string(Said) -> \+ sub_string(Said, _, _, _, "not an option of") ; true )
     ;   string(Said),
         format(string(Want), "~w: not an option of curiosity(~w)", [Name, C]),
@@ -98,5 +97,41 @@ test(options_every_curiosity_reads_are_read_by_each,
     settings([curiosity(C), seed(3), oracle(synthetic), batch(5), executor(inline),
               progress(false), initial([pour_low])], S),
     S.seed == 3.
+
+% A curiosity declares its own options in its module: rows of the table,
+% read by it alone, of the run's course when it says so, after the
+% curiosity row and the rows of the curiosities loaded before it, or
+% after the row option_after/2 names.
+test(a_curiosity_s_own_options_are_rows_of_the_table,
+     [cleanup(retractall(curiosity_interface:curiosity_module(toy_own, _)))]) :-
+    findall(K, curiosity_settings:table_option(K, _, _, _), Before),
+    findall(R, defaults:option(R, _, _, _, _), Rows),
+    once(nextto(curiosity, Next, Rows)),
+    tmp_file_stream(File, Out, [extension(pl)]),
+    file_base_name(File, Base),
+    once(file_name_extension(Name, _, Base)),
+    atom_concat(toy_, Name, Module),
+    format(Out, ":- module(~q, []).~n", [Module]),
+    forall(member(C, [ "budget(_, 1).", "progress_bar(_, _{total:1, unit:pour}).",
+                       "probe_size(_, 0).", "probed(_, _) :- fail.", "priors_due(_, _) :- fail.",
+                       "after_batch(_, _, [], _{}).", "second_layer(_, _, _, []).",
+                       "theory_layout(_{}).",
+                       "option(toy_depth, count, range(1, 9), 3, \"toy: how deep\").",
+                       "option(toy_width, permille, range(0, none), 500, \"toy: how wide\").",
+                       "course(toy_depth, every).",
+                       "option_after(toy_width, seed)." ]),
+           format(Out, "~s~n", [C])),
+    close(Out),
+    curiosity_interface:load_curiosity(toy_own, File),
+    curiosity_settings:table_option(toy_depth, count, range(1, 9), 3),
+    findall(K, curiosity_settings:table_option(K, _, _, _), Keys),
+    once(nextto(seed, toy_width, Keys)),
+    once(nextto(toy_depth, Next, Keys)),
+    subtract(Keys, [toy_depth, toy_width], Before),
+    findall(C, curiosity_settings:option_used_by(toy_depth, C), [toy_own]),
+    curiosity_settings:option_course(toy_depth, every),
+    \+ curiosity_settings:option_course(toy_width, _),
+    catch(settings([toy_depth(2)], _), exploration_error(M), true),
+    once(sub_string(M, 0, _, _, "toy_depth: not an option of curiosity(learn)")).
 
 :- end_tests(curiosity_settings).
