@@ -101,8 +101,8 @@ HINTS: tuple[tuple[str, str], ...] = (
     (r"^(?:drop(?:s|ped|ping)?|let(?:s|ting)?)$|^(?:drop|let)\w* (?:it|the|go)", 'dropping: the source is held throughout the pour; the vocabulary says '
                        'nothing of letting it go'),
     (r"^(?:hit|hits|hitting|touch\w*|bump\w*|strikes?|striking|knock\w*)$",
-     'the liquid hitting the bowl: ask whether it goes in ("does it go in?") or splashes ("does it '
-     'splash?"); contact is the source\'s ("does the cup hit the bowl?")'),
+     'hitting: contact is asked of the source ("does the cup hit the bowl?"); the liquid landing '
+     'is asked as "does it go in?" or "does it splash?"'),
     (r"^(?:tilt|tilted|tip|tipped|tipping)$", 'tilted how far? say "slightly tilted", "tilted halfway", '
                                   '"steeply tilted" or "upside down"'),
 )
