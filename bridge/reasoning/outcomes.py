@@ -278,12 +278,13 @@ def _around() -> Matcher:
 def _state(m: re.Match) -> bool:
     """Whether an asked clause says how full the source is, or how it is
     held, not what happens: "the jug is almost empty", "if the jug is
-    tipped steeply" (the scene's), not "will it empty", "is the bowl tipped
-    over"."""
+    tipped steeply", "will tipping the jug halfway make the bowl tip" (the
+    scene's), not "will it empty", "is the bowl tipped over"."""
     verb = next((v for g, v in m.groupdict().items() if g[0] == "v" and v), "")
-    state = m.group("aux") in ("is", "are", "was", "were")
-    return state and (verb.startswith("empt") or (
-        verb in ("tipped", "tilted") and not (m.group("subject") or "").strip()))
+    state, bare = m.group("aux") in ("is", "are", "was", "were"), not (m.group("subject") or "").strip()
+    doing = bare and m.group("aux") in _MODALS.split("|") and bool(re.match(
+        r"tipping (?:it|them|the|a|an|my|your|this|that)\b", m.string[m.start() + len(m.group("aux")) + 1:]))
+    return doing or state and (verb.startswith("empt") or (verb in ("tipped", "tilted") and bare))
 
 
 def hear(text: str) -> Heard:
