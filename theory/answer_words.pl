@@ -192,8 +192,27 @@ rule_said(R, Where, Said) :-
     (   P == none
     ->  Said = ""
     ;   percent(P, Pc),
-        format(string(Said), ": holds in ~w% of such pours (the pooled estimate)", [Pc])
+        doubt_words(R, Why),
+        format(string(Said), ": holds in ~w% of such pours (the pooled estimate)~w", [Pc, Why])
     ).
+
+% doubt_words(+Rule, -Text): why the learner doubted the answer of the
+% rules of the body's parts and wrote this rule (its doubt provenance,
+% bridge/learning/doubts.py), "" for a rule it did not doubt.
+doubt_words(R, Text) :-
+    (   defeasible:provenance(R, doubt, D),
+        doubt_text(D, R, Text0)
+    ->  format(string(Text), "; ~w", [Text0])
+    ;   Text = ""
+    ).
+
+doubt_text(unsettled, _, "maybe: the rules of its parts disagree, and too few of its own pours tell").
+doubt_text(parts_disagree, _, "the rules of its parts disagree, and its own pours tell").
+doubt_text(pours_contradict, _, "its own pours depart from what the rules of its parts say").
+doubt_text(beside_interaction, R, Text) :-
+    findall(B, defeasible:provenance(R, beside, B), Bs),
+    where(Bs, Where),
+    format(string(Text), "maybe: beside ~w, whose pours depart from what its parts do, and too few of its own pours tell", [Where]).
 
 % where(+Body, -Text): a body in words, "an ordinary pour" for the empty one.
 where(Body, Where) :-

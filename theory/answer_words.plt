@@ -21,6 +21,20 @@ test(rule_in_words,
     defeasible:theory_loaded,
     rule_in_words(g1, T).
 
+% a rule the learner wrote where it doubted its parts' answer says why:
+% beside the explored pair whose pours depart from its parts'
+test(rule_in_words_beside_an_interaction,
+     [true(T == "pour centred over the destination, pour high above the destination: holds in 65% of such pours (the pooled estimate); maybe: beside pour centred over the destination, pour very high above the destination, whose pours depart from what its parts do, and too few of its own pours tell; no such pour simulated: estimated from the pours nearby (rule g1)")]) :-
+    once(load_theory_text("rule(g1, defeasible, no_spill).\nbody(g1, pour_centred).\nbody(g1, pour_high).\nprovenance(g1, layer, general).\nprovenance(g1, confidence_permille, 650).\nprovenance(g1, support, 0).\nprovenance(g1, kept, 0).\nprovenance(g1, doubt, beside_interaction).\nprovenance(g1, beside, pour_centred).\nprovenance(g1, beside, pour_very_high).\n")),
+    defeasible:theory_loaded,
+    rule_in_words(g1, T).
+
+test(rule_in_words_where_the_parts_disagree,
+     [true(sub_string(T, _, _, _, "(the pooled estimate); maybe: the rules of its parts disagree, and too few of its own pours tell;"))]) :-
+    once(load_theory_text("rule(g1, defeasible, no_spill).\nbody(g1, pour_centred).\nbody(g1, light_liquid).\nprovenance(g1, layer, general).\nprovenance(g1, confidence_permille, 600).\nprovenance(g1, support, 2).\nprovenance(g1, kept, 1).\nprovenance(g1, doubt, unsettled).\n")),
+    defeasible:theory_loaded,
+    rule_in_words(g1, T).
+
 test(rule_in_words_of_the_empty_body,
      [true(T == "an ordinary pour: holds in 90% of such pours (the pooled estimate); the weighted pours of a0 (rule r0)")]) :-
     once(load_theory_text("rule(r0, defeasible, no_spill).\nprovenance(r0, confidence_permille, 900).\nprovenance(r0, antecedent, a0).\n")),

@@ -29,6 +29,7 @@ from __future__ import annotations
 # Settings (generalize.py) and Meaning (meaning.py) are named in the
 # annotations only: generalize imports this module.
 
+from dataclasses import replace
 from itertools import combinations
 from typing import Sequence
 
@@ -73,12 +74,12 @@ def doubts(rules: list[GeneralRule], k: int, meaning: Meaning, P: np.ndarray,
         if not np.isfinite(m):
             continue
         if int(in_support(P, union).sum()) < s.doubt_support:
-            p = _maybe(m, s)
+            p, why = _maybe(m, s), "unsettled"
         elif s.verdict(m) != s.verdict(top.likelihood):
-            p = float(m)
+            p, why = float(m), "parts_disagree"
         else:
             continue
-        out.append(added(union, p, rules, out))
+        out.append(added(union, p, rules, out, why))
     return out
 
 
@@ -109,7 +110,7 @@ def exceptions(rules: list[GeneralRule], bodies: Sequence[tuple[str, ...]], targ
             continue
         held, n = held_in_support(P, y[:, None], b)
         if n >= s.doubt_support or (n and _unlikely(int(held[0]), n, answered) < s.unlikely):
-            out.append(added(b, t, rules, out))
+            out.append(added(b, t, rules, out, "pours_contradict"))
     return out
 
 
@@ -127,7 +128,7 @@ def neighbours(rules: list[GeneralRule], bodies: Sequence[tuple[str, ...]], targ
         return []
     props = load_vocabulary().propositions
     own = {b: float(t) for b, t in zip(bodies, target)}
-    near: set[tuple[str, ...]] = set()
+    near: dict[tuple[str, ...], tuple[str, ...]] = {}     # pair -> the explored pair beside it
     for b in bodies:
         if (not suspect(b) or any((x,) not in own for x in b)
                 or any(s.verdict(own[b]) == s.verdict(own[(x,)]) for x in b)
@@ -139,7 +140,7 @@ def neighbours(rules: list[GeneralRule], bodies: Sequence[tuple[str, ...]], targ
                 pair = tuple(sorted((keep, q.name)))
                 if (q.dimension == m.dimension and abs(q.rank - m.rank) == 1
                         and pair not in own and together((keep,), (q.name,))):
-                    near.add(pair)
+                    near.setdefault(pair, b)
     todo = [p for p in sorted(near) if int(in_support(P, p).sum()) < s.doubt_support]
     out: list[GeneralRule] = []
     for pair, m in zip(todo, meaning(todo)[:, k] if todo else []):
@@ -147,7 +148,8 @@ def neighbours(rules: list[GeneralRule], bodies: Sequence[tuple[str, ...]], targ
         if (not np.isfinite(m) or j is None or any(tuple(sorted(r.body)) == pair for r in rules + out)
                 or max((rules + out)[j].likelihood, 1 - (rules + out)[j].likelihood) < s.doubt_confidence):
             continue
-        out.append(added(pair, _maybe(m, s), rules, out))
+        out.append(replace(added(pair, _maybe(m, s), rules, out, "beside_interaction"),
+                           beside=near[pair]))
     return out
 
 
@@ -165,15 +167,14 @@ def _unlikely(held: int, n: int, answered: float) -> float:
 
 
 def added(body: tuple[str, ...], likelihood: float, rules: list[GeneralRule],
-          out: list[GeneralRule]) -> GeneralRule:
+          out: list[GeneralRule], doubt: str) -> GeneralRule:
     """The rule for `body` with `likelihood`, numbered after the rules
-    chosen (`rules`, then those added so far, `out`), at its level."""
-    from dataclasses import replace
-
+    chosen (`rules`, then those added so far, `out`), at its level, saying
+    why it was added (`doubt`)."""
     holds = likelihood >= 0.5
     e = rules[0].expectation
     rule = GeneralRule(f"g{len(rules) + len(out)}_{e}", body, e, holds, 0, 0,
-                       likelihood if holds else 1 - likelihood, 0)
+                       likelihood if holds else 1 - likelihood, 0, doubt=doubt)
     return replace(rule, level=level(body, holds, rules + out))
 
 

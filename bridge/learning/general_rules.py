@@ -79,6 +79,13 @@ class GeneralRule:
     kept: int             # of those, how many keep the head
     confidence: float     # P(head | body): the share of the body's pours that keep the head
     level: int            # 0 default, 1 exception, 2 exception to an exception, ...
+    #: why the learner doubted its rules' answer here (doubts.py), "" for
+    #: a contrast: unsettled (the rules of its parts disagree, too few of
+    #: its pours tell), parts_disagree (they disagree, its pours tell),
+    #: pours_contradict or beside_interaction
+    doubt: str = ""
+    #: for beside_interaction, the explored pair that interacts
+    beside: tuple[str, ...] = ()
 
     @property
     def head(self) -> str:

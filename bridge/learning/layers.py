@@ -133,6 +133,10 @@ def general_layer(learned: Sequence[Ranked], P: np.ndarray, S: np.ndarray, seed:
                 "kept": g.kept, "confidence_permille": int(round(1000 * g.confidence))}
         if tuple(sorted(g.body)) in ids:
             rule["antecedent"] = ids[tuple(sorted(g.body))]
+        if g.doubt:
+            rule["doubt"] = g.doubt
+        if g.beside:
+            rule["beside"] = sorted(g.beside)
         rules.append(rule)
     return {"pours": int(np.all(np.isfinite(np.atleast_2d(S)), axis=1).sum()),
             "own_pours": len(P) - n0,

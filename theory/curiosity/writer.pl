@@ -192,6 +192,18 @@ general_rule_facts(R, Facts) :-
     head_expectation(Head, R.expectation, R.holds),
     Id = R.id,
     findall(body(Id, P), member(P, R.body), Bodies),
+    (   get_dict(antecedent, R, A)
+    ->  Antecedent = [provenance(Id, antecedent, A)]
+    ;   Antecedent = []
+    ),
+    (   get_dict(doubt, R, D0)
+    ->  atom_string(D, D0), Doubt = [provenance(Id, doubt, D)]
+    ;   Doubt = []
+    ),
+    (   get_dict(beside, R, Bs)
+    ->  findall(provenance(Id, beside, B), ( member(B0, Bs), atom_string(B, B0) ), Beside)
+    ;   Beside = []
+    ),
     append([ [rule(Id, defeasible, Head)], Bodies,
              [ learned(Id),
                provenance(Id, layer, general),
@@ -199,11 +211,7 @@ general_rule_facts(R, Facts) :-
                provenance(Id, support, R.support),
                provenance(Id, kept, R.kept),
                provenance(Id, confidence_permille, R.confidence_permille) ],
-             Antecedent ], Facts),
-    (   get_dict(antecedent, R, A)
-    ->  Antecedent = [provenance(Id, antecedent, A)]
-    ;   Antecedent = []
-    ).
+             Antecedent, Doubt, Beside ], Facts).
 
 %!  write_theory(+File, +Settings:dict, +Layout:dict, +Facts:list, +General:list) is det.
 %

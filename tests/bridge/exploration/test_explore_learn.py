@@ -71,11 +71,22 @@ def test_one_layer_whose_bodies_are_the_explored_antecedents(learned):
     assert theory.rules and all(r.id in theory.learned for r in theory.rules)
     facts = read_facts([Path(result["out"])])
     named = {str(a[0]): str(a[2]) for a in facts["provenance"] if str(a[1]) == "antecedent"}
-    # beside them, where two sure rules of explored bodies meet without pours of
-    # both (doubts.doubts), a rule for the union of their bodies, of no antecedent
+    # beside them, rules where the learner doubted its parts' answer
+    # (doubts.py), of no antecedent, each saying why: where two sure rules
+    # of explored bodies meet, for the union of their bodies; beside an
+    # explored pair that interacts, naming it
     unions = {tuple(sorted(set(a) | set(b))) for a in explored for b in explored}
+    doubt = {str(a[0]): str(a[2]) for a in facts["provenance"] if str(a[1]) == "doubt"}
+    beside: dict[str, set] = {}
+    for a in facts["provenance"]:
+        if str(a[1]) == "beside":
+            beside.setdefault(str(a[0]), set()).add(str(a[2]))
     met = [r for r in theory.rules if tuple(sorted(r.body)) not in explored]
-    assert all(tuple(sorted(r.body)) in unions and r.id not in named for r in met)
+    assert all(r.id not in named and r.id in doubt for r in met)
+    assert all(tuple(sorted(r.body)) in unions for r in met
+               if doubt[r.id] in ("unsettled", "parts_disagree"))
+    assert all(tuple(sorted(beside[r.id])) in explored for r in met
+               if doubt[r.id] == "beside_interaction")
     ids = {str(t["id"]): tuple(sorted(t["antecedent"])) for t in trace}
     bodied = [r for r in theory.rules if r.body and r not in met]
     assert bodied and all(ids[named[r.id]] == tuple(sorted(r.body)) for r in bodied)

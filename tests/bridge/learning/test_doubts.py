@@ -31,6 +31,7 @@ def test_two_pours_of_two_that_contradict_a_sure_answer_get_their_own_rule():
     bodies = [(), pair]
     (rule,) = exceptions([DEFAULT], bodies, target, P, np.array([False, False]), FAST)
     assert rule.body == pair and not rule.holds and abs(rule.likelihood - 0.3) < 1e-9
+    assert rule.doubt == "pours_contradict"
     assert not exceptions([DEFAULT], bodies, target, P, np.array([True, False]), FAST)
     off = Settings(seed=3, draws=24, unlikely=0.0)
     assert not exceptions([DEFAULT], bodies, target, P, np.array([False, False]), off)
@@ -60,6 +61,7 @@ def test_a_pair_next_to_one_that_interacts_says_maybe():
     theory = General(rules=[DEFAULT] + added)
     assert theory.decide({"pour_centred", "pour_high"})[E][0] == UNKNOWN
     assert all(FAST.verdict(r.likelihood) == UNKNOWN for r in added)
+    assert {(r.doubt, r.beside) for r in added} == {("beside_interaction", bodies[-1])}
 
 
 def test_no_maybe_next_to_a_pair_that_does_not_interact():
