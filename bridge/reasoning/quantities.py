@@ -236,6 +236,8 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
             q = Quantity(q.value * 1000, q.measures, q.text)     # g to the parameter's mg
         read_too = (*CUES.get(by, ()), *ALSO_READ.get(by, ()))
         used = {k for k in near if cue_of[tokens[k].word] in read_too}
+        if by == "offset":          # "offset 8 cm to one side": the offset's direction, one phrase
+            used |= _direction(tokens, _past(tokens, i + 2, 1, _BESIDE), i + 2, near)
         low = _low_end(tokens, i)          # "8 to 10 cm": the range, read only if one holds it
         if low is not None:
             used |= {i - 2, i - 1}
@@ -246,6 +248,16 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
         read[i] = Token(proposition(q, param, cues, at_low), raw, tokens[i].clause)
         dropped |= {i + 1} | used
     return [read.get(i, t) for i, t in enumerate(tokens) if i not in dropped]
+
+
+def _direction(tokens: list[Token], k: int, after: int, near: list[int]) -> set[int]:
+    """{k} if the word at `k`, just after an offset's number (from `after`
+    on), says which way it goes ("to the side", "to one side"), not where
+    the pour comes from ("from the side"); else none."""
+    if k not in near or tokens[k].word != stem("side") or "from" in tokens[k].raw.split() \
+            or any(tokens[m].word == "from" for m in range(after, k)):
+        return set()
+    return {k}
 
 
 def _low_end(tokens: list[Token], i: int) -> int | None:
