@@ -10,7 +10,7 @@ from typing import Callable
 
 #: What the marks and figures of an answer mean, printed below the answers.
 LEGEND = ("(yes / no: what such pours do, and the share of them in which the expectation holds, "
-          "as the deciding rule estimates it from every pour, pooled; maybe: such pours split; "
+          "as the deciding rule estimates it from every pour, pooled; maybe: such pours split, or too few tell; "
           "?: the theory does not say. \"held in K of N pours of B\": the pours learned from that "
           "could have been drawn for B (the rule's body, or what was asked when it was explored), "
           "and in how many the expectation held. "
