@@ -28,6 +28,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from pantarhei.bridge.reasoning.everyday import Matcher, alternation, forms, names, sections
+from pantarhei.bridge.reasoning.frames import asked_plainly
 from pantarhei.bridge.reasoning.seeking import sought, wanting
 
 _STILL = ("destination_still_approach", "destination_still_retreat", "destination_still_settle")
@@ -117,24 +118,6 @@ _QUANTIFIERS = {"much", "most", "some", "any", "all", "little", "none", "half", 
 #: How much of the liquid, asked: "what fraction of the liquid spills".
 _SHARE = r"(?:what|which) (?:fraction|proportion|share|percentage|part|amount)(?: of (?:it|the \w+))?"
 _END = rf"(?P<rest>(?: (?:{_REST})\b)*)"
-
-
-#: Questions asked about a clause ("is it true that the bowl tips", "tell me whether it
-#: spills", "I'd like to know if the jug hits the bowl"): asked as "does the bowl tip".
-_FRAMES = tuple((re.compile(p), r) for p, r in (
-    (r"\b(?:is it true|is it the case|would you say|does the theory (?:say|predict|expect))(?: that)? ",
-     " does "),
-    (r"\b(?:know|tell (?:me|us)|predict|wonder(?:ing)?|check|find out|figure out|see|ask(?:ing)?"
-     r"|curious|unsure|not sure|any idea|no idea)(?: about)? (?:whether|if) ", " does "),
-    # an outcome expected, as a noun: "would you expect spilling", "do you predict any splashing"
-    (r"\b(?:expect|predict|anticipate|see|observe|get|cause|causes|notice)(?: any| some| a| much)? "
-     r"(?=(?:spill|splash|drip|leak|slosh|splatter|dribbl)\w*\b(?! of\b))", " will it "),
-    # an outcome caused: "does pouring from high make it tip" (the bowl tipping), "cause the cup to slide"
-    # (not wanted: "so as not to make the bowl move" is so that it does not)
-    (r"\bso(?: as)? (?:not|never) to (?:make|cause) (it|them|the [a-z]+)(?: to)? ", r"so that \1 does not "),
-    (r"(?<!\bto )\b(?:make|makes|made|making|cause|causes|caused|causing) (it|them|the [a-z]+)(?: to)? (?=(?:tip"
-     r"|toppl|fall|slid|slip|mov|shift|wobbl|spill|splash|overflow|drip|rock|budg|skid)\w*\b)", r" will \1 "),
-))
 
 
 @dataclass(frozen=True)
@@ -357,9 +340,8 @@ def hear(text: str) -> Heard:
     was_goal = True
     text, wants = wanting(text)
     phrases.extend(wants)
-    for said, wanted in _FRAMES:
-        phrases.extend(m.group(0).strip() for m in said.finditer(text))     # heard with the outcome
-        text = said.sub(wanted, text)
+    text, framed = asked_plainly(text)
+    phrases.extend(framed)
     text = _spaced(goal.sub(as_goal, text))
     if goals:
         # "so it pours out but the bowl does not tip", "so nothing spills and the bowl stays

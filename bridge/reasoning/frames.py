@@ -1,0 +1,43 @@
+"""Questions asked in a frame, said as the plain question they ask: a
+question about a clause ("is it true that the bowl tips", "tell me whether
+it spills") or an outcome caused ("does pouring high make it tip") is asked
+as "does the bowl tip"; an outcome typed as a note, with no word that asks
+("cup hits bowl??", "bowl tips?"), is asked as "does the cup hit the bowl".
+outcomes.py hears the plain question."""
+from __future__ import annotations
+
+import re
+
+#: Questions asked about a clause ("is it true that the bowl tips", "tell me whether it
+#: spills", "I'd like to know if the jug hits the bowl"): asked as "does the bowl tip".
+FRAMES = tuple((re.compile(p), r) for p, r in (
+    (r"\b(?:is it true|is it the case|would you say|does the theory (?:say|predict|expect))(?: that)? ",
+     " does "),
+    (r"\b(?:know|tell (?:me|us)|predict|wonder(?:ing)?|check|find out|figure out|see|ask(?:ing)?"
+     r"|curious|unsure|not sure|any idea|no idea)(?: about)? (?:whether|if) ", " does "),
+    # an outcome expected, as a noun: "would you expect spilling", "do you predict any splashing"
+    (r"\b(?:expect|predict|anticipate|see|observe|get|cause|causes|notice)(?: any| some| a| much)? "
+     r"(?=(?:spill|splash|drip|leak|slosh|splatter|dribbl)\w*\b(?! of\b))", " will it "),
+    # an outcome caused: "does pouring from high make it tip" (the bowl tipping), "cause the cup to slide"
+    # (not wanted: "so as not to make the bowl move" is so that it does not)
+    (r"\bso(?: as)? (?:not|never) to (?:make|cause) (it|them|the [a-z]+)(?: to)? ", r"so that \1 does not "),
+    (r"(?<!\bto )\b(?:make|makes|made|making|cause|causes|caused|causing) (it|them|the [a-z]+)(?: to)? (?=(?:tip"
+     r"|toppl|fall|slid|slip|mov|shift|wobbl|spill|splash|overflow|drip|rock|budg|skid)\w*\b)", r" will \1 "),
+))
+
+
+#: An outcome typed as a note: a clause of a noun (with its article) and an outcome's verb,
+#: ending with a question mark, and no word that asks: "cup hits bowl??", "jug bumps the pot?".
+NOTE = re.compile(r"(?:^|(?<=[,:;.!\u2013\u2014] )|(?<= - ))(?=(?:the |a |an |my |your |this |that )?[a-z]+ "
+                  r"(?:hits|bumps|touches|knocks|collides|strikes|scrapes|clips|tips|topples|slides|shifts"
+                  r"|moves|wobbles|spills|splashes|overflows|drips|leaks)\b[^,:;.!?]*\?)")
+
+
+def asked_plainly(text: str) -> tuple[str, tuple[str, ...]]:
+    """(normalised `text` with each frame said as the question it asks, the
+    frames' phrases, heard with the outcome)."""
+    phrases: list[str] = []
+    for said, wanted in FRAMES:
+        phrases.extend(m.group(0).strip() for m in said.finditer(text))
+        text = said.sub(wanted, text)
+    return NOTE.sub("does ", text), tuple(phrases)
