@@ -132,7 +132,7 @@ class Heard:
 def _patterns() -> tuple[re.Pattern, ...]:
     verbs = "|".join(f"(?P<v{k}>{_filled(v)})" for k, (v, _, _) in enumerate(OUTCOMES))
     # (not holding another auxiliary: "do you think it will spill" asks "will it spill")
-    subject = rf"(?P<subject>(?: (?!(?:if|when|while|not|{_MODALS})\b)[a-z]+){{0,5}}?)"
+    subject = rf"(?P<subject>(?: (?!(?:if|when|while|not|{_MODALS})\b)[a-z]+){{0,16}}?)"
     # the odds of an outcome: "what is the chance the bowl tips", "the risk of spilling"
     chance = r"(?P<chance>(?:chance|chances|probability|likelihood|odds|risk)(?: of| that)?)"
     asked = re.compile(
