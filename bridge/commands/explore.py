@@ -82,8 +82,7 @@ def option_values(args: argparse.Namespace) -> dict:
 
 
 def prolog(args: argparse.Namespace) -> int:
-    from pantarhei.bridge.reasoning.logic import prolog_load
-    from pantarhei.bridge.theories.loading import load
+    from pantarhei.bridge.reasoning.logic import prolog_read
     from pantarhei.theory import prolog_modules
     from pantarhei.bridge.exploration.session import install
 
@@ -93,7 +92,7 @@ def prolog(args: argparse.Namespace) -> int:
             eng.use_module(name)
         except UserError as e:  # one module that does not load does not stop the others
             print(f"pantarhei prolog: {name} not loaded: {e}", file=sys.stderr)
-    prolog_load(load(args.theory, pouring=True))     # the shipped theory, or the files given
+    prolog_read(args.theory)     # the shipped theory, or the files given, as written
     if args.goal:       # read as a term first: a syntax error is one line
         r = eng.once("catch((term_string(_, T), R = ok), error(syntax_error(S), _), R = S)",
                      T=args.goal)

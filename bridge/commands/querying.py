@@ -239,9 +239,11 @@ def conclusions(args: argparse.Namespace) -> int:
     from pantarhei.bridge.theories import loading
     from pantarhei.bridge.theories.dfl import dfl_literal
 
-    theory = loading.load(args.file)
     sem = logic.Semantics(args.ambiguity, not args.no_team_defeat, not args.no_well_founded)
-    result = logic.conclusions(theory, sem, args.engine)
+    if args.engine == "prolog":     # SWI-Prolog reads the files as written
+        result = logic.prolog_file_conclusions(args.file, sem)
+    else:
+        result = logic.conclusions(loading.load(args.file), sem, args.engine)
     dfl = {tag: [dfl_literal(x) for x in lits] for tag, lits in result.items()}
     if args.json:
         print(json.dumps(dfl, indent=1))

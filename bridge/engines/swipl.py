@@ -60,6 +60,26 @@ class Engine:
         except UserError as e:
             raise UserError(f"{source}: {str(e).split(': ', 1)[-1]}") from None
 
+    def load_theory_files(self, files: list[tuple[str, str, bool]]) -> list[tuple[str, str, str]]:
+        """Make the theory files as written the current theory of
+        defeasible.pl, merged and checked as `ask` reads them
+        (theory/ask.pl's load_theories/2): (path read, name said, checked)
+        each, `checked` for a stand-in for a file read and checked before.
+        The unknown names its rules use, (where, what, name); UserError
+        (one line, naming the file and line) for a theory not read."""
+        self.use_module("ask")
+        r = self.once(
+            "maplist([P, N, K, file(P, N, K)]>>true, Ps, Ns, Ks, Fs), "
+            "catch(( ask:load_theories(Fs, Ws), R = ok, "
+            "        findall(S, ( member(unknown(W, T, U), Ws), "
+            "                     format(string(S), '~w\\t~w\\t~w', [W, T, U]) ), Ss) ), "
+            "      E, ( ask:error_line(E, R), Ss = [] ))",
+            Ps=[p for p, _, _ in files], Ns=[n for _, n, _ in files],
+            Ks=["checked" if c else "file" for _, _, c in files])
+        if text(r["R"]) != "ok":
+            raise UserError(text(r["R"]))
+        return [tuple(text(s).split("\t")) for s in r["Ss"]]
+
     def _load(self, goal: str, path: str) -> None:
         result = self.once(f"catch(({goal}, R = ok), E, theory_files:error_message(E, R))", F=path)
         if text(result["R"]) != "ok":

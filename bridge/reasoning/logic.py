@@ -72,8 +72,70 @@ def prolog_load(theory: Theory):
     return e
 
 
+def prolog_read(paths: list | tuple | None, pouring: bool = True):
+    """Make the theory files `paths` (the shipped theory for none) the
+    current theory of the Prolog engine as they are written: read, merged
+    and checked by theory/ask.pl's load_theories/2, as `ask` reads them
+    (Python reads only a DFL file, handed over natively as a stand-in).
+    With `pouring`, a warning on stderr for each name that is no
+    proposition or expectation, as `ask` says it. Read again only when a
+    file changed since the engine last read a theory."""
+    from pantarhei.bridge.files import is_dfl
+    from pantarhei.bridge.reasoning.asking import files_to_read, print_warnings
+
+    files, _, unread = files_to_read([str(p) for p in paths] if paths else None)
+    if unread is not None:
+        raise UserError(unread)
+    e = engine()
+    with tempfile.TemporaryDirectory(prefix="pantarhei-theory-") as tmp:
+        given = [(_stand_in(p, Path(tmp) / f"t{i}.pl", pouring) if is_dfl(p)
+                  else _as_written(p, Path(tmp) / f"t{i}.pl")) for i, (p, _, _) in enumerate(files)]
+        h = hashlib.sha1(b"files")
+        for path, name, checked in given:
+            h.update(f"\0{name}\0{checked}\0".encode("utf-8", "replace") + Path(path).read_bytes())
+        if e.theory_digest != h.hexdigest():
+            e.theory_digest = ""            # a theory not read leaves none
+            warnings = e.load_theory_files(given)
+            e.theory_digest = h.hexdigest()
+            if pouring:
+                print_warnings(warnings)
+    return e
+
+
+def _as_written(path: str, copy: Path) -> tuple[str, str, bool]:
+    """A file read as written: itself, or for a name that is not UTF-8
+    (which SWI-Prolog cannot be given), a copy of it, named as given."""
+    try:
+        path.encode("utf-8")
+        return path, path, False
+    except UnicodeEncodeError:
+        copy.write_bytes(Path(path).read_bytes())
+        return str(copy), path.encode("utf-8", "replace").decode("utf-8"), False
+
+
+def _stand_in(path: str, native: Path, pouring: bool) -> tuple[str, str, bool]:
+    """A DFL file read and checked by Python, written natively into
+    `native` for SWI-Prolog: a stand-in for it."""
+    from pantarhei.bridge.theories import loading
+
+    theory = loading.read_theory(path)
+    loading.check_file(theory, pouring)
+    native.write_text(theory.native())
+    return str(native), path.encode("utf-8", "replace").decode("utf-8"), True
+
+
+def prolog_file_conclusions(paths: list | tuple, semantics: Semantics = Semantics()
+                            ) -> dict[str, list[str]]:
+    """The four kinds of conclusion of the theory files as written
+    (prolog_read; a theory of any literals: no warnings)."""
+    return _conclusions_of(prolog_read(paths, pouring=False), semantics)
+
+
 def prolog_conclusions(theory: Theory, semantics: Semantics = Semantics()) -> dict[str, list[str]]:
-    e = prolog_load(theory)
+    return _conclusions_of(prolog_load(theory), semantics)
+
+
+def _conclusions_of(e, semantics: Semantics) -> dict[str, list[str]]:
     out = {}
     for tag in TAGS:
         r = e.once(f"findall(S, (defeasible:conclusion({semantics.prolog()}, T, L), "
