@@ -47,6 +47,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (rf"(?:{_THROWN}) (?:(?:back|right|straight|all|up|and) )*(?:over|past|out of|out over|from)(?= (?:the |a |an |my "
      rf"|your |its |their |this |that )?(?!source\b)(?:[a-z]+ )?{_OUT_OF}\b)"
      rf"|escap\w*(?= (?:the |a |an |my |your |its )?(?!source\b)(?:[a-z]+ )?{_OUT_OF}\b)"
+     # thrown out, no bowl said: out of the destination, as people who pour read it ("splash out")
+     r"|(?:spill\w*|spilt|splash\w*|splatter\w*|slosh\w*|slop\w*) out\b(?! of\b| over\b)"
      r"|overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*|slop\w*|splash\w*|splatter\w*|fizz\w*"
      r"|foam\w*|froth\w*|bubbl\w*|boil\w*) over"
      r"(?: the (?:rim|edge|top|side)s?)?"
@@ -145,7 +147,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
     nominal = re.compile(r"\b(?:(?:is|will) there (?:be )?)?(?:any|a|no|some) (?P<v1>spill(?:s|age)?"
                          r"|splash(?:es)?|mess|drips?|puddles?)\b(?! of\b)"
                          r"|(?:^|(?<=[,:;.?!\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014]))"
-                         r"(?:spill(?:s|age)?|splash(?:es)?|drips?|leaks?)(?: (?:everywhere|out|over))?"
+                         r"(?:(?:spill(?:s|age)?|splash(?:es)?)(?: (?:everywhere|over))?|(?:drips?|leaks?)(?: (?:everywhere|out|over))?)"
                          r"(?= *[?.!]* *$)"
                          # named as a measure: "the spill outcome", "what is the spillage rate"
                          r"|\b(?:the |any |a )?(?:spill(?:s|age)?|splash(?:es|ing)?|drips?|mess)"
