@@ -27,16 +27,14 @@ import re
 from dataclasses import dataclass
 from functools import lru_cache
 
-from pantarhei.bridge.reasoning.everyday import Matcher, alternation, forms, names, sections
+from pantarhei.bridge.reasoning.everyday import Matcher, names
 from pantarhei.bridge.reasoning.frames import asked_plainly
 from pantarhei.bridge.reasoning.seeking import sought, wanting
+from pantarhei.bridge.reasoning.vessels import OUT_OF, destinations, filled, in_the_source, liquids, out_of_the_source
 
 _STILL = ("destination_still_approach", "destination_still_retreat", "destination_still_settle")
 _ALL_IN = ("liquid_enters_destination",)
 
-#: Where liquid that leaves the destination leaves it by: its rim, or the destination
-#: named ("out of the mug": everyday.txt's bowls); _filled() writes the names in.
-_OUT_OF = "(?:DESTINATION)"
 #: Verbs of liquid thrown about: thrown over the rim or out of the destination, it entered
 #: and did not stay ("splash out of the bowl": liquid_remains_in_destination and no_spill).
 _THROWN = (r"spill\w*|spilt|splash\w*|splatter\w*|splat\w*|slop\w*|slosh\w*|spray\w*|spurt\w*"
@@ -45,8 +43,8 @@ _THROWN = (r"spill\w*|spilt|splash\w*|splatter\w*|splat\w*|slop\w*|slosh\w*|spra
 #: (verb phrase, the expectations it speaks of, whether it happening makes them fail)
 OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (rf"(?:{_THROWN}) (?:(?:back|right|straight|all|up|and) )*(?:over|past|out of|out over|from)(?= (?:the |a |an |my "
-     rf"|your |its |their |this |that )?(?!source\b)(?:[a-z]+ )?{_OUT_OF}\b)"
-     rf"|escap\w*(?= (?:the |a |an |my |your |its )?(?!source\b)(?:[a-z]+ )?{_OUT_OF}\b)"
+     rf"|your |its |their |this |that )?(?!source\b)(?:[a-z]+ )?{OUT_OF}\b)"
+     rf"|escap\w*(?= (?:the |a |an |my |your |its )?(?!source\b)(?:[a-z]+ )?{OUT_OF}\b)"
      # thrown out, no bowl said: out of the destination, as people who pour read it ("splash out")
      r"|(?:spill\w*|spilt|splash\w*|splatter\w*|slosh\w*|slop\w*) out\b(?! of\b| over\b)"
      r"|overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*|slop\w*|splash\w*|splatter\w*|fizz\w*"
@@ -82,8 +80,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|empt(?:y|ies|ied)(?: out)?|leav(?:e|es|ing) the|exit\w*", ("liquid_leaves_source",), False),
     (r"(?:end|ends|ended|ending) up in(?:side)?", (*_ALL_IN, "liquid_remains_in_destination"), False),
     # what stays in the bowl entered it: "remains" alone holds also when none enters
-    (r"(?:stay|stays|remain|remains|stop|stops) in(?:side)?(?: the \w+)?",
-     (*_ALL_IN, "liquid_remains_in_destination"), False),
+    (r"(?:stay|stays|remain|remains|stop|stops) in(?:side)?(?: the \w+)?"
+     r"|(?:stay|stays|remain|remains) (?:in )?there\b", (*_ALL_IN, "liquid_remains_in_destination"), False),
     (r"(?:go|goes|going|went|get|gets|land|lands|make it|makes it|fall|falls|"
      r"arrive\w*) (?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*",
      _ALL_IN, False),
@@ -119,7 +117,6 @@ _PART_OF = re.compile(r"\b(?:most|all|any|some|much|half|none|part|a lot|a bit|a
 _QUANTIFIERS = {"much", "most", "some", "any", "all", "little", "none", "half", "lots", "plenty"}
 #: How much of the liquid, asked: "what fraction of the liquid spills".
 _SHARE = r"(?:what|which) (?:fraction|proportion|share|percentage|part|amount)(?: of (?:it|the \w+))?"
-_END = rf"(?P<rest>(?: (?:{_REST})\b)*)"
 
 
 @dataclass(frozen=True)
@@ -132,7 +129,8 @@ class Heard:
 
 @lru_cache(maxsize=None)
 def _patterns() -> tuple[re.Pattern, ...]:
-    verbs = "|".join(f"(?P<v{k}>{_filled(v)})" for k, (v, _, _) in enumerate(OUTCOMES))
+    end = rf"(?P<rest>(?: (?:{_REST}|{destinations()})\b)*)"     # "go into the mug"
+    verbs = "|".join(f"(?P<v{k}>{filled(v)})" for k, (v, _, _) in enumerate(OUTCOMES))
     # (not holding another auxiliary: "do you think it will spill" asks "will it spill")
     subject = rf"(?P<subject>(?: (?!(?:if|when|while|not|{_MODALS})\b)[a-z]+){{0,16}}?)"
     # the odds of an outcome: "what is the chance the bowl tips", "the risk of spilling"
@@ -141,7 +139,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
         rf"(?<!that )(?<!which )\b(?:(?P<aux>{_AUX})(?P<neg> not)?{subject}|(?P<quant>how much(?: of (?:it|the \w+))?(?: \w+)?"
         rf"|{_SHARE}|anything|something|everything|nothing|any (?:liquid|water)|all of it|it all)"
         rf"|{chance}{subject.replace('<subject>', '<csubject>')})"
-        rf" (?:all |any |ever |even |still |not )?(?:(?:end|ends|ended) up )?(?:{verbs})\b{_END}"
+        rf" (?:all |any |ever |even |still |not )?(?:(?:end|ends|ended) up )?(?:{verbs})\b{end}"
         rf"(?P<odds> (?:very |really |quite |too )?(?:high|low|big|small|great|likely|unlikely)\b)?")
     # (or said alone: "splashes?", "drip everywhere?")
     nominal = re.compile(r"\b(?:(?:is|will) there (?:be )?)?(?:any|a|no|some) (?P<v1>spill(?:s|age)?"
@@ -157,30 +155,16 @@ def _patterns() -> tuple[re.Pattern, ...]:
         rf"(?:getting |being )?"
         rf"|so(?: that| as)?(?P<gsub>(?: (?!not\b)"
         rf"[a-z]+){{0,4}}?)(?P<gnot> not| never)? (?:(?:to|will|does|do|would|can|could|all|"
-        rf"any) )?)(?:{verbs})\b{_END}")
+        rf"any) )?)(?:{verbs})\b{end}")
     # what is asked, or wanted, next to it: "will it spill or overflow?", "without spilling or
     # tipping the bowl over"
     more = re.compile(rf"\boutcome (?:,|or|and|nor)? ?(?:(?:will|does|do|would|even) )?(?:it |the \w+ )?"
-                      rf"(?:{verbs})\b{_END}")
+                      rf"(?:{verbs})\b{end}")
     # an outcome said first, with no word that asks: "spills when poured from high?", "sloshing
     # over the rim if tilted steeply?", "pour high, spill or not"
-    bare = re.compile(rf"(?:^|(?<=[,:;.?!\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014]))(?:(?P<v0>{_filled(OUTCOMES[0][0])})|(?P<v1>spill\w*|spilt|splash\w*|drip\w*"
-                      rf"|leak\w*|slosh\w*|dribbl\w*)){_END}(?: or not)?(?= (?:if|when|while)\b| *[?.!,]* *$)")
+    bare = re.compile(rf"(?:^|(?<=[,:;.?!\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014]))(?:(?P<v0>{filled(OUTCOMES[0][0])})|(?P<v1>spill\w*|spilt|splash\w*|drip\w*"
+                      rf"|leak\w*|slosh\w*|dribbl\w*)){end}(?: or not)?(?= (?:if|when|while)\b| *[?.!,]* *$)")
     return asked, nominal, goal, more, bare
-
-
-@lru_cache(maxsize=None)
-def _destinations() -> str:
-    """What liquid leaves the destination by: its rim, or the destination by
-    a name of everyday.txt's bowls (those poured from are the source)."""
-    bowls = [p for s in sections() if s.words == "bowl" for p in s.phrases]
-    return alternation([*bowls, "destination", "bowl", "target", "container", "rim", "edge",
-                        "top", "side", "brim", "lip"])
-
-
-def _filled(verb: str) -> str:
-    """An OUTCOMES verb phrase with the destination's names written in."""
-    return verb.replace(_OUT_OF, f"(?:{_destinations()})") if _OUT_OF in verb else verb
 
 
 #: Contact asked of by its noun alone: "contact between source and bowl?", "any collision
@@ -198,43 +182,31 @@ FOLLOWS = ("asks what follows an outcome, which the vocabulary cannot say; it an
 def follows(text: str) -> bool:
     """Whether normalised `text` asks what follows an outcome ("what if the
     milk spills?"), which the vocabulary cannot say."""
-    verbs = "|".join(f"(?:{_filled(v)})" for v, _, _ in OUTCOMES)
+    verbs = "|".join(f"(?:{filled(v)})" for v, _, _ in OUTCOMES)
     return bool(re.search(rf"\b(?:what if|suppose|imagine)(?: [a-z]+){{0,4}}? (?:{verbs})\b", text))
 
 
 def _which(m: re.Match) -> tuple[tuple[str, ...], bool]:
     k = next(k for k in range(len(OUTCOMES)) if m.groupdict().get(f"v{k}"))
-    if k == 0 and _out_of_the_source(m.string, m.end("v0")):
+    if k == 0 and out_of_the_source(m.string, m.end("v0")):
         return OUTCOMES[1][1], OUTCOMES[1][2]
-    if OUTCOMES[k][1] == (*_ALL_IN, "liquid_remains_in_destination") and _in_the_source(m.group(f"v{k}")):
+    if OUTCOMES[k][1] == (*_ALL_IN, "liquid_remains_in_destination") and in_the_source(m.group(f"v{k}")):
         return ("liquid_leaves_source",), True       # staying in the source: not leaving it
     return OUTCOMES[k][1], OUTCOMES[k][2]
 
 
-def _in_the_source(said: str) -> bool:
-    """Whether liquid said to stay in a bowl (`said`: "stays in the jug")
-    stays in the source: one named so, or one people pour from."""
-    bowl = said.split()[-1]
-    return bowl == "source" or bowl in {f[0] for s in sections() if s.words == "bowl poured from"
-                                        for p in s.phrases if " " not in p for f in forms(p)}
-
-
-def _out_of_the_source(text: str, at: int) -> bool:
-    """Whether the bowl that liquid is thrown out of, named in `text` from
-    `at` on, is the one poured from ("does coffee splash out of a mug
-    tilted halfway", "pour from the mug: does it splash out of the mug"):
-    a spill, not liquid leaving the destination."""
-    said = re.match(rf" (?:the |a |an |my |your |its |their |this |that )?(?:[a-z]+ )?"
-                    rf"(?P<noun>{_destinations()})\b", text[at:])
-    if said is None:
-        return False
-    noun = re.escape(said.group("noun"))
-    return bool(re.search(rf"\bfrom (?:the |a |an |my |your |this |that )?(?:[a-z]+ )?{noun}\b"
-                          rf"|\b{noun} (?:is |being |that is |held )?(?:tilted|tipped|angled|inclined"
-                          rf"|upside|turned|held)\b", text))
-
-
-_liquids = lru_cache(maxsize=None)(lambda: Matcher(("liquid", *names("liquid"))))   # "water", "stream"
+def _staying(names: tuple[str, ...], said: str, subject: list[str]) -> tuple[str, ...]:
+    """What staying (`said`: "stay put", "stay there") asks of `subject`:
+    the liquid staying put stays in the bowl it entered; the bowl staying
+    there stays still; anything else, `names`."""
+    if not re.match(r"(?:stay|stays|remain|remains|keep|keeps|be|is)\b", said) \
+            or not re.search(r"\b(?:put|there|in place|where it is)\b", said):
+        return names
+    if names == _STILL and liquids().spans(subject):
+        return (*_ALL_IN, "liquid_remains_in_destination")
+    if names != _STILL and re.search(rf"\b(?:{destinations()})\b", " ".join(subject)):
+        return _STILL
+    return names
 
 
 def _acts(subject: list[str], names: tuple[str, ...], m: re.Match | None = None) -> bool:
@@ -243,13 +215,13 @@ def _acts(subject: list[str], names: tuple[str, ...], m: re.Match | None = None)
     the table wobbly": everyday.txt's context nouns)."""
     actors = _ACTORS - _HOLDING if names == ("source_clear",) else _ACTORS
     head = subject[:subject.index("of")] if "of" in subject else subject     # "the jug of water"
-    if names == ("source_clear",) and _liquids().spans(head):   # "does the water hit the rim": no
+    if names == ("source_clear",) and liquids().spans(head):   # "does the water hit the rim": no
         return True                                             # source hitting it
     if names in (_STILL, ("destination_upright",)):      # "will they slide": the bowls
         actors = actors - {"they"}
     # "does the jug tip over": the source, held, neither tips over nor slides as the bowl does
     held = names in (_STILL, ("destination_upright",)) and m is not None and "knock" not in m.group(0) and any(
-        w == "source" or (_in_the_source(w) and not re.search(rf"\binto (?:\w+ )?(?:\w+ )?{w}\b", m.string))
+        w == "source" or (in_the_source(w) and not re.search(rf"\binto (?:\w+ )?(?:\w+ )?{w}\b", m.string))
         for w in head if w not in ("of", "the", "a", "an"))     # ("the jug knocks the bowl over": the bowl)
     return bool(actors.intersection(subject)) or held or bool(_around().spans(subject))
 
@@ -291,6 +263,8 @@ def hear(text: str) -> Heard:
     def as_goal(m: re.Match) -> str:
         subject = (m.group("gsub") or m.group("gwho") or "").split()
         names, bad = _which(m)
+        names = _staying(names, next(v for g, v in m.groupdict().items() if g[0] == "v" and v), subject)
+        last[:] = subject
         if _acts(subject, names, m):
             return m.group(0)
         negated = (m.group(0).startswith("without") or bool(m.group("gnot"))
@@ -304,7 +278,8 @@ def hear(text: str) -> Heard:
 
     def as_asked(m: re.Match) -> str:
         subject = (m.group("subject") or m.group("csubject") or "").split()
-        names, _ = _which(m)
+        names = _staying(_which(m)[0], next(v for g, v in m.groupdict().items() if g[0] == "v" and v), subject)
+        last[:] = subject
         # "the table is wobbly": the subject before its verb, not the scene's
         before = m.string[:m.start()].split()[-3:] if not subject else []
         # "don't tip it out": an imperative, not a question
@@ -332,6 +307,9 @@ def hear(text: str) -> Heard:
 
     def as_more(m: re.Match) -> str:
         names, bad = _which(m)
+        said = re.sub(r"^outcome (?:,|or|and|nor)? ?(?:(?:will|does|do|would|even) )?", "", m.group(0))
+        own = re.match(r"(?:it|the \w+) ", said)
+        names = _staying(names, said[own.end():] if own else said, own.group(0).split() if own else last)
         if was_goal:                  # wanted as the one before it: "without spilling or tipping"
             holds = (not bad) != negations[-1]
             goals.extend(n if holds else f"neg({n})" for n in names if n not in goals)
@@ -339,6 +317,7 @@ def hear(text: str) -> Heard:
             asked.extend(n for n in names if n not in asked)
         return take(m)
 
+    last: list[str] = []                # the subject of the outcome asked before
     was_goal = True
     text, wants = wanting(text)
     phrases.extend(wants)

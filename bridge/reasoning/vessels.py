@@ -1,0 +1,54 @@
+"""Which bowl the words of an outcome name: the destination by its names
+(everyday.txt's bowls, its rim or edge), the source by its name or by
+being poured from, and the liquid by its names."""
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+from pantarhei.bridge.reasoning.everyday import Matcher, alternation, forms, names, sections
+
+
+@lru_cache(maxsize=None)
+def destinations() -> str:
+    """What liquid leaves the destination by: its rim, or the destination by
+    a name of everyday.txt's bowls (those poured from are the source)."""
+    bowls = [p for s in sections() if s.words == "bowl" for p in s.phrases]
+    return alternation([*bowls, "destination", "bowl", "target", "container", "rim", "edge",
+                        "top", "side", "brim", "lip"])
+
+
+#: Where liquid that leaves the destination leaves it by, in OUTCOMES: filled() writes in
+#: its rim or the destination's names ("out of the mug").
+OUT_OF = "(?:DESTINATION)"
+
+
+def filled(verb: str) -> str:
+    """An OUTCOMES verb phrase with the destination's names written in."""
+    return verb.replace(OUT_OF, f"(?:{destinations()})") if OUT_OF in verb else verb
+
+
+def in_the_source(said: str) -> bool:
+    """Whether liquid said to stay in a bowl (`said`: "stays in the jug")
+    stays in the source: one named so, or one people pour from."""
+    bowl = said.split()[-1]
+    return bowl == "source" or bowl in {f[0] for s in sections() if s.words == "bowl poured from"
+                                        for p in s.phrases if " " not in p for f in forms(p)}
+
+
+def out_of_the_source(text: str, at: int) -> bool:
+    """Whether the bowl that liquid is thrown out of, named in `text` from
+    `at` on, is the one poured from ("does coffee splash out of a mug
+    tilted halfway", "pour from the mug: does it splash out of the mug"):
+    a spill, not liquid leaving the destination."""
+    said = re.match(rf" (?:the |a |an |my |your |its |their |this |that )?(?:[a-z]+ )?"
+                    rf"(?P<noun>{destinations()})\b", text[at:])
+    if said is None:
+        return False
+    noun = re.escape(said.group("noun"))
+    return bool(re.search(rf"\bfrom (?:the |a |an |my |your |this |that )?(?:[a-z]+ )?{noun}\b"
+                          rf"|\b{noun} (?:is |being |that is |held )?(?:tilted|tipped|angled|inclined"
+                          rf"|upside|turned|held)\b", text))
+
+
+liquids = lru_cache(maxsize=None)(lambda: Matcher(("liquid", *names("liquid"))))   # "water", "stream"
