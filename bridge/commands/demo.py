@@ -106,6 +106,7 @@ def demo(args: argparse.Namespace) -> int:
     from pantarhei.bridge.reasoning.planning import plan_defaults
     from pantarhei.bridge.commands.querying import answer
     from pantarhei.bridge.reasoning.answers import InProcess
+    from pantarhei.bridge.reasoning.written_theory import as_written
     from pantarhei.bridge.exploration.explore_call import ExploreOptions, explore, stop_text
 
     out = Path(args.out) if args.out is not None else default_out(args)
@@ -118,7 +119,8 @@ def demo(args: argparse.Namespace) -> int:
     result = explore(ExploreOptions(
         oracle=args.oracle, pours=args.pours, seed=args.seed, out=out,
         store=Path(args.store), workers=args.workers, progress=not args.no_progress))
-    theory = loading.load([out], pouring=True)      # read once, for every question below
+    # read once, for every question below; SWI-Prolog reads the file as written
+    theory = as_written(loading.load([out], pouring=True), [out])
     dfl = out.with_suffix(".dfl")
     write_text(dfl, write_dfl(theory, loading.provenance_lines(theory)))
     why = stop_text(result)

@@ -82,7 +82,7 @@ def option_values(args: argparse.Namespace) -> dict:
 
 
 def prolog(args: argparse.Namespace) -> int:
-    from pantarhei.bridge.reasoning.logic import prolog_read
+    from pantarhei.bridge.reasoning.written_theory import prolog_read
     from pantarhei.theory import prolog_modules
     from pantarhei.bridge.exploration.session import install
 

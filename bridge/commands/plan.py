@@ -62,6 +62,7 @@ def _split(text: str | None) -> list[str]:
 def plan(args: argparse.Namespace) -> int:
     from pantarhei.bridge.commands.querying import utf8
     from pantarhei.bridge.reasoning.valid_scenes import known
+    from pantarhei.bridge.reasoning.written_theory import as_written
     from pantarhei.bridge.theories import loading
 
     goals = _split(utf8(args.goal, "--goal"))
@@ -83,7 +84,8 @@ def plan(args: argparse.Namespace) -> int:
                         f"{args.verify} pours and as many confirming them, {2 * args.verify} at least")
     if args.learned_out is not None:
         _require_out(args.learned_out)
-    theory = loading.load(args.theory, pouring=True)
+    # SWI-Prolog reads the files as written (until the search adds rules to the theory)
+    theory = as_written(loading.load(args.theory, pouring=True), args.theory)
     oracle = None
     if args.verify:
         oracle = args.oracle or _verifying_oracle(theory)

@@ -15,6 +15,7 @@ from pathlib import Path
 
 from pantarhei.bridge.engines.swipl import engine, prolog_quote, text as prolog_text
 from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.reasoning.written_theory import AsWritten, load_as_written, prolog_read
 from pantarhei.bridge.theories.model import Theory
 from pantarhei.theory import THEORY_DIR, TheoryFileError
 
@@ -55,7 +56,13 @@ ALL_SEMANTICS = tuple(Semantics(a, t, w) for a in ("blocking", "propagation")
 
 def prolog_load(theory: Theory):
     """Make `theory` the current theory of the Prolog engine (loaded again
-    only when its text changed since the engine last loaded one)."""
+    only when its text changed since the engine last loaded one): for a
+    theory read from files and unchanged since (written_theory.AsWritten),
+    the files as they are written."""
+    if isinstance(theory, AsWritten):
+        e = load_as_written(theory)
+        if e is not None:
+            return e
     e = engine()
     e.use_module("defeasible")
     text = theory.native()
@@ -70,58 +77,6 @@ def prolog_load(theory: Theory):
             os.unlink(name)
         e.theory_digest = digest
     return e
-
-
-def prolog_read(paths: list | tuple | None, pouring: bool = True):
-    """Make the theory files `paths` (the shipped theory for none) the
-    current theory of the Prolog engine as they are written: read, merged
-    and checked by theory/ask.pl's load_theories/2, as `ask` reads them
-    (Python reads only a DFL file, handed over natively as a stand-in).
-    With `pouring`, a warning on stderr for each name that is no
-    proposition or expectation, as `ask` says it. Read again only when a
-    file changed since the engine last read a theory."""
-    from pantarhei.bridge.files import is_dfl
-    from pantarhei.bridge.reasoning.asking import files_to_read, print_warnings
-
-    files, _, unread = files_to_read([str(p) for p in paths] if paths else None)
-    if unread is not None:
-        raise UserError(unread)
-    e = engine()
-    with tempfile.TemporaryDirectory(prefix="pantarhei-theory-") as tmp:
-        given = [(_stand_in(p, Path(tmp) / f"t{i}.pl", pouring) if is_dfl(p)
-                  else _as_written(p, Path(tmp) / f"t{i}.pl")) for i, (p, _, _) in enumerate(files)]
-        h = hashlib.sha1(b"files")
-        for path, name, checked in given:
-            h.update(f"\0{name}\0{checked}\0".encode("utf-8", "replace") + Path(path).read_bytes())
-        if e.theory_digest != h.hexdigest():
-            e.theory_digest = ""            # a theory not read leaves none
-            warnings = e.load_theory_files(given)
-            e.theory_digest = h.hexdigest()
-            if pouring:
-                print_warnings(warnings)
-    return e
-
-
-def _as_written(path: str, copy: Path) -> tuple[str, str, bool]:
-    """A file read as written: itself, or for a name that is not UTF-8
-    (which SWI-Prolog cannot be given), a copy of it, named as given."""
-    try:
-        path.encode("utf-8")
-        return path, path, False
-    except UnicodeEncodeError:
-        copy.write_bytes(Path(path).read_bytes())
-        return str(copy), path.encode("utf-8", "replace").decode("utf-8"), False
-
-
-def _stand_in(path: str, native: Path, pouring: bool) -> tuple[str, str, bool]:
-    """A DFL file read and checked by Python, written natively into
-    `native` for SWI-Prolog: a stand-in for it."""
-    from pantarhei.bridge.theories import loading
-
-    theory = loading.read_theory(path)
-    loading.check_file(theory, pouring)
-    native.write_text(theory.native())
-    return str(native), path.encode("utf-8", "replace").decode("utf-8"), True
 
 
 def prolog_file_conclusions(paths: list | tuple, semantics: Semantics = Semantics()

@@ -87,3 +87,52 @@ def test_a_dfl_file_is_read_by_python_and_merged_after_the_files(hand: Path, tmp
     dfl.write_text("d1: pour_low => source_clear\n")
     assert main(["prolog", "--theory", str(hand), "--theory", str(dfl), "--goal",
                  "what_happens([pour_low], O), memberchk(outcome(source_clear, holds, _, d1), O)"]) == 0
+
+
+EXAMPLE = Path(__file__).resolve().parents[3] / "examples" / "extend_by_hand"
+PLAN = ["plan", "--goal", "liquid_leaves_source", "--given", "light_liquid", "--verify", "0",
+        "--theory", str(EXAMPLE / "learned.pl"), "--theory", str(EXAMPLE / "hand.pl")]
+
+
+def test_plan_asks_the_files_as_written_and_answers_as_before(capsys, monkeypatch) -> None:
+    from pantarhei.bridge.reasoning import logic
+
+    with monkeypatch.context() as m:
+        m.setattr(logic, "load_as_written", lambda theory: None)    # Python's text, as before
+        assert main(PLAN) == 0
+    as_text = capsys.readouterr()
+    from pantarhei.bridge.engines.swipl import Engine, engine
+
+    def refuse(self, path: str, source: str) -> None:
+        raise AssertionError(f"{source} was given to SWI-Prolog as Python's text")
+    monkeypatch.setattr(Engine, "load_theory_file", refuse)
+    engine().theory_digest = ""         # as in a new process: nothing read yet
+    assert main(PLAN) == 0
+    assert capsys.readouterr() == as_text and "pour" in as_text.out
+
+
+def test_a_theory_changed_in_python_is_given_as_its_text(hand: Path, capsys) -> None:
+    from pantarhei.bridge.reasoning.answers import what_happens
+    from pantarhei.bridge.reasoning.written_theory import as_written, load_as_written
+    from pantarhei.bridge.theories.loading import load
+    from pantarhei.bridge.theories.model import Rule
+
+    theory = as_written(load([hand]), [hand])
+    assert load_as_written(theory) is not None
+    said = {a.expectation: (a.value, a.rule) for a in what_happens(theory, ["pour_low"])}
+    assert said["source_clear"] == ("unknown", None)
+    theory.rules.append(Rule("mine", "defeasible", "source_clear", ("pour_low",)))
+    assert load_as_written(theory) is None                      # changed: its text is meant
+    said = {a.expectation: (a.value, a.rule) for a in what_happens(theory, ["pour_low"])}
+    assert said["source_clear"] == ("holds", "mine")
+
+
+def test_a_file_changed_after_python_read_it_is_not_asked(hand: Path) -> None:
+    """The theory a command reasons with in Python is the one SWI-Prolog
+    answers from: if its file changed since, its text is given."""
+    from pantarhei.bridge.reasoning.written_theory import as_written, load_as_written
+    from pantarhei.bridge.theories.loading import load
+
+    theory = as_written(load([hand]), [hand])
+    hand.write_text(HAND + "rule(h4, defeasible, source_clear).\n")
+    assert load_as_written(theory) is None

@@ -1,0 +1,126 @@
+"""Theory files as they are written, made the theory of this process's
+SWI-Prolog: read, merged and checked by theory/ask.pl's load_theories/2,
+as `ask` reads them, not written out again by Python.
+
+Python reads only what it must: a DFL file (handed over natively, a
+stand-in checked before), and the theory a command also reasons with in
+Python (clingo's plans, DFL). `AsWritten` is such a theory, read from
+its files and unchanged since: reasoning.logic.prolog_load gives
+SWI-Prolog its files, not its text. A theory changed in Python (a copy
+with more rules or facts) is an ordinary Theory, given as text.
+"""
+from __future__ import annotations
+
+import hashlib
+import tempfile
+from dataclasses import dataclass, field, fields
+from pathlib import Path
+from typing import Sequence
+
+from pantarhei.bridge.engines.swipl import engine
+from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.files import is_dfl
+from pantarhei.bridge.theories.model import Theory
+
+
+def prolog_read(paths: Sequence[str | Path] | None, pouring: bool = True):
+    """Make the theory files `paths` (the shipped theory for none) the
+    current theory of the Prolog engine as they are written (see the
+    module comment). With `pouring`, a warning on stderr for each name
+    that is no proposition or expectation, as `ask` says it. Read again
+    only when a file changed since the engine last read a theory."""
+    from pantarhei.bridge.reasoning.asking import files_to_read, print_warnings
+
+    files, _, unread = files_to_read([str(p) for p in paths] if paths else None)
+    if unread is not None:
+        raise UserError(unread)
+    now = files_digest([p for p, _, _ in files])
+    e = engine()
+    if e.theory_digest != now:
+        e.theory_digest = ""            # a theory not read leaves none
+        with tempfile.TemporaryDirectory(prefix="pantarhei-theory-") as tmp:
+            given = [(_stand_in(p, Path(tmp) / f"t{i}.pl", pouring) if is_dfl(p)
+                      else _as_is(p, Path(tmp) / f"t{i}.pl")) for i, (p, _, _) in enumerate(files)]
+            warnings = e.load_theory_files(given)
+        e.theory_digest = now
+        if pouring:
+            print_warnings(warnings)
+    return e
+
+
+def files_digest(paths: Sequence[str]) -> str:
+    """A digest of the files' names and bytes (distinct from any digest of
+    a theory's text that reasoning.logic.prolog_load keeps)."""
+    h = hashlib.sha1(b"files as written")
+    for p in paths:
+        h.update(f"\0{p}\0".encode("utf-8", "surrogateescape") + Path(p).read_bytes())
+    return h.hexdigest()
+
+
+def _as_is(path: str, copy: Path) -> tuple[str, str, bool]:
+    """A file read as written: itself, or for a name that is not UTF-8
+    (which SWI-Prolog cannot be given), a copy of it, named as given."""
+    try:
+        path.encode("utf-8")
+        return path, path, False
+    except UnicodeEncodeError:
+        copy.write_bytes(Path(path).read_bytes())
+        return str(copy), _shown(path), False
+
+
+def _stand_in(path: str, native: Path, pouring: bool) -> tuple[str, str, bool]:
+    """A DFL file read and checked by Python, written natively into
+    `native` for SWI-Prolog: a stand-in for it."""
+    from pantarhei.bridge.theories import loading
+
+    theory = loading.read_theory(path)
+    loading.check_file(theory, pouring)
+    native.write_text(theory.native())
+    return str(native), _shown(path), True
+
+
+def _shown(path: str) -> str:
+    return path.encode("utf-8", "replace").decode("utf-8")
+
+
+@dataclass
+class AsWritten(Theory):
+    """A theory read from `files` (the shipped theory for none) and not
+    changed since: what SWI-Prolog is given is the files themselves."""
+    files: tuple[str, ...] = ()
+    #: files_digest of the files when read, and the theory's content then
+    read_as: tuple = field(default=(), compare=False, repr=False)
+
+    def unchanged(self) -> bool:
+        """Are the theory and its files as they were when it was read?"""
+        return (bool(self.read_as) and self.read_as[1] == _content(self)
+                and self.read_as[0] == files_digest(self.files))
+
+
+def as_written(theory: Theory, paths: Sequence[str | Path] | None) -> AsWritten:
+    """`theory`, read from the files `paths` (None: the shipped theory),
+    marked as theirs; call it at once after reading them."""
+    from pantarhei.bridge.reasoning.asking import files_to_read
+
+    files, _, unread = files_to_read([str(p) for p in paths] if paths else None)
+    if unread is not None:
+        raise UserError(unread)
+    out = AsWritten(**{f.name: getattr(theory, f.name) for f in fields(Theory)},
+                    files=tuple(p for p, _, _ in files))
+    out.read_as = (files_digest(out.files), _content(out))
+    return out
+
+
+def load_as_written(theory: AsWritten):
+    """The Prolog engine holding `theory` read from its files (no
+    warnings: they were said when Python read it), or None when it or
+    they changed since (then the theory Python holds is the one meant)."""
+    if not theory.unchanged():
+        return None
+    return prolog_read(theory.files, pouring=False)
+
+
+def _content(t: Theory) -> tuple:
+    """What a theory holds, as a value to compare (no text is written)."""
+    return (tuple(t.facts), tuple(t.rules), tuple(t.sup), frozenset(t.learned), tuple(t.extra),
+            tuple((k, tuple(v)) for k, v in t.settings.items()), tuple(t.provenance))
