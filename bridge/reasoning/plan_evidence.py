@@ -29,6 +29,7 @@ import numpy as np
 
 from pantarhei.theory.lexicon import load_vocabulary
 
+from pantarhei.bridge.reasoning.written_theory import AsWritten
 from pantarhei.bridge.theories.model import Rule, Theory, complement
 
 #: The layer the planned rules' provenance names.
@@ -107,6 +108,8 @@ def with_rules(theory: Theory, planned: Sequence[Planned]) -> Theory:
                  {k: list(v) for k, v in theory.settings.items()},
                  list(theory.provenance) + provenance)
     out.sup += _acyclic(out, _sup(theory, new), {r.id for r in new})
+    if isinstance(theory, AsWritten):   # SWI-Prolog reads its files, then what was added
+        return theory.extended(out)
     return out
 
 

@@ -23,24 +23,29 @@ from pantarhei.bridge.files import is_dfl
 from pantarhei.bridge.theories.model import Theory
 
 
-def prolog_read(paths: Sequence[str | Path] | None, pouring: bool = True):
+def prolog_read(paths: Sequence[str | Path] | None, pouring: bool = True, added: str = ""):
     """Make the theory files `paths` (the shipped theory for none) the
     current theory of the Prolog engine as they are written (see the
     module comment). With `pouring`, a warning on stderr for each name
     that is no proposition or expectation, as `ask` says it. Read again
-    only when a file changed since the engine last read a theory."""
+    only when a file changed since the engine last read a theory.
+    `added`: facts that Python added (native text), merged after the
+    files."""
     from pantarhei.bridge.reasoning.asking import files_to_read, print_warnings
 
     files, _, unread = files_to_read([str(p) for p in paths] if paths else None)
     if unread is not None:
         raise UserError(unread)
-    now = files_digest([p for p, _, _ in files])
+    now = files_digest([p for p, _, _ in files], added)
     e = engine()
     if e.theory_digest != now:
         e.theory_digest = ""            # a theory not read leaves none
         with tempfile.TemporaryDirectory(prefix="pantarhei-theory-") as tmp:
             given = [(_stand_in(p, Path(tmp) / f"t{i}.pl", pouring) if is_dfl(p)
                       else _as_is(p, Path(tmp) / f"t{i}.pl")) for i, (p, _, _) in enumerate(files)]
+            if added:           # checked with the merged theory only (no file of its own)
+                (Path(tmp) / "added.pl").write_text(added)
+                given.append((str(Path(tmp) / "added.pl"), f"{_shown(files[-1][0])} (added)", True))
             warnings = e.load_theory_files(given)
         e.theory_digest = now
         if pouring:
@@ -48,12 +53,14 @@ def prolog_read(paths: Sequence[str | Path] | None, pouring: bool = True):
     return e
 
 
-def files_digest(paths: Sequence[str]) -> str:
-    """A digest of the files' names and bytes (distinct from any digest of
-    a theory's text that reasoning.logic.prolog_load keeps)."""
+def files_digest(paths: Sequence[str], added: str = "") -> str:
+    """A digest of the files' names and bytes and of the text added after
+    them (distinct from any digest of a theory's text that
+    reasoning.logic.prolog_load keeps)."""
     h = hashlib.sha1(b"files as written")
     for p in paths:
         h.update(f"\0{p}\0".encode("utf-8", "surrogateescape") + Path(p).read_bytes())
+    h.update(b"\0added\0" + added.encode())
     return h.hexdigest()
 
 
@@ -88,6 +95,8 @@ class AsWritten(Theory):
     """A theory read from `files` (the shipped theory for none) and not
     changed since: what SWI-Prolog is given is the files themselves."""
     files: tuple[str, ...] = ()
+    #: What Python added to the files' theory (native text, merged after them).
+    added: str = ""
     #: files_digest of the files when read, and the theory's content then
     read_as: tuple = field(default=(), compare=False, repr=False)
 
@@ -95,6 +104,29 @@ class AsWritten(Theory):
         """Are the theory and its files as they were when it was read?"""
         return (bool(self.read_as) and self.read_as[1] == _content(self)
                 and self.read_as[0] == files_digest(self.files))
+
+    def extended(self, more: Theory) -> Theory:
+        """`more`, a copy of this theory with facts, rules, sup/2 pairs,
+        learned rules or provenance added after its own, as an AsWritten
+        whose additions are given as text after the files; `more` itself
+        when it is not such a copy, or this theory changed since read."""
+        if not self.unchanged() or (more.settings, more.extra) != (self.settings, self.extra):
+            return more
+        tails = []
+        for name in ("facts", "rules", "sup", "provenance"):
+            have, now = getattr(self, name), getattr(more, name)
+            if now[:len(have)] != have:
+                return more
+            tails.append(now[len(have):])
+        if not self.learned <= more.learned:
+            return more
+        facts, rules, sup, provenance = tails
+        added = self.added + Theory(facts, rules, sup, more.learned - self.learned,
+                                    provenance=provenance).native()
+        out = AsWritten(**{f.name: getattr(more, f.name) for f in fields(Theory)},
+                        files=self.files, added=added)
+        out.read_as = (self.read_as[0], _content(out))
+        return out
 
 
 def as_written(theory: Theory, paths: Sequence[str | Path] | None) -> AsWritten:
@@ -117,7 +149,7 @@ def load_as_written(theory: AsWritten):
     they changed since (then the theory Python holds is the one meant)."""
     if not theory.unchanged():
         return None
-    return prolog_read(theory.files, pouring=False)
+    return prolog_read(theory.files, pouring=False, added=theory.added)
 
 
 def _content(t: Theory) -> tuple:

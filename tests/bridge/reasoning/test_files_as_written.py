@@ -136,3 +136,30 @@ def test_a_file_changed_after_python_read_it_is_not_asked(hand: Path) -> None:
     theory = as_written(load([hand]), [hand])
     hand.write_text(HAND + "rule(h4, defeasible, source_clear).\n")
     assert load_as_written(theory) is None
+
+
+def test_rules_a_plan_adds_are_read_after_the_files_as_written(hand: Path, monkeypatch) -> None:
+    from pantarhei.bridge.engines.swipl import Engine, engine
+    from pantarhei.bridge.reasoning import logic
+    from pantarhei.bridge.reasoning.answers import what_happens
+    from pantarhei.bridge.reasoning.plan_evidence import with_rules
+    from pantarhei.bridge.reasoning.written_theory import AsWritten, as_written
+    from pantarhei.bridge.theories.loading import load
+    from pantarhei.bridge.theories.model import Rule
+
+    planned = [([Rule("p0_source_clear", "defeasible", "source_clear", ("pour_low",))],
+                [("p0_source_clear", "layer", "plans")])]
+    theory = with_rules(as_written(load([hand]), [hand]), planned)
+    assert isinstance(theory, AsWritten) and "rule(p0_source_clear" in theory.added
+    with monkeypatch.context() as m:
+        m.setattr(logic, "load_as_written", lambda theory: None)    # Python's text, as before
+        as_text = what_happens(theory, ["pour_low"])
+
+    def refuse(self, path: str, source: str) -> None:
+        raise AssertionError(f"{source} was given to SWI-Prolog as Python's text")
+    monkeypatch.setattr(Engine, "load_theory_file", refuse)
+    engine().theory_digest = ""
+    said = what_happens(theory, ["pour_low"])
+    assert said == as_text
+    assert {a.expectation: (a.value, a.rule) for a in said}["source_clear"] == \
+        ("holds", "p0_source_clear")
