@@ -80,7 +80,8 @@ _PRONOUNS = "i|it|we|you|they|he|she|this|that"
 #: only asking ("y does it spill"), not the offset's axis ("y = 3 cm"), and "its" only as
 #: "it's" ("if its right over the middle", not "its handle"); "lite" is light, not a litre.
 _CHAT = {"u": "you", "ur": "your", "wat": "what", "wut": "what", "wot": "what", "realy": "really",
-         "rly": "really", "lite": "light", "b4": "before",
+         "rly": "really", "lite": "light", "b4": "before", "frm": "from", "alot": "a lot",
+         "tiped": "tipped", "tipd": "tipped", "evrywhere": "everywhere", "evry": "every",
          "pls": "please", "plz": "please", "abt": "about", "shud": "should", "wud": "would"}
 _CHATTED = (rf"\b(?:{'|'.join(_CHAT)})\b|\by(?= (?:does|do|did|is|are|was|would|will|can|not)\b)"
             r"|\bits(?= (?:too|to|so|very|really|right|just|not|over|at|in|on|upside|nearly|almost|only"

@@ -80,6 +80,9 @@ def test_no_word_is_dropped_silently(question):
     ("y does a lite bowl slide", "y: read as why"),
     ("will it drip if its tilted steeply", "its: read as it's"),
     ("can i tilt it halfway without spilin", "spilin: read as spilling"),
+    ("pour frm high lol", "frm: read as from"),
+    ("pour frm high lol", "lol: ignored: laughter as chat types it says nothing of the pour"),
+    ("pour alot of milk", "alot: read as a lot"),
 ])
 def test_a_word_read_as_another_is_said_back(question, said):
     """Whatever the reader writes otherwise than typed (a contraction typed
