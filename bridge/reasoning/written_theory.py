@@ -6,8 +6,10 @@ Python reads only what it must: a DFL file (handed over natively, a
 stand-in checked before), and the theory a command also reasons with in
 Python (clingo's plans, DFL). `AsWritten` is such a theory, read from
 its files and unchanged since: reasoning.logic.prolog_load gives
-SWI-Prolog its files, not its text. A theory changed in Python (a copy
-with more rules or facts) is an ordinary Theory, given as text.
+SWI-Prolog its files, not its text; a copy of it with rules added after
+its own (`extended`: the rules a refuted plan teaches) is given as its
+files and the added rules' text. Any other theory changed or built in
+Python is an ordinary Theory, given as its text.
 """
 from __future__ import annotations
 
