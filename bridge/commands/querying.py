@@ -141,15 +141,19 @@ class _stand_ins:
     def _native(self, path: str) -> tuple[str, str, bool]:
         import os
         import tempfile
+        from pathlib import Path
 
-        from pantarhei.bridge.theories import loading
+        from pantarhei.bridge.reasoning.written_theory import stand_in
 
-        theory = loading.checked_file(path)
         fd, name = tempfile.mkstemp(suffix=".pl", prefix="pantarhei-theory-")
+        os.close(fd)
+        try:
+            out = stand_in(path, Path(name), pouring=True)
+        except BaseException:           # __exit__ is not called for it
+            os.unlink(name)
+            raise
         self.temporary.append(name)
-        with os.fdopen(fd, "w") as f:
-            f.write(theory.native())
-        return name, path, True
+        return out
 
     def __exit__(self, *exc) -> None:
         import os
