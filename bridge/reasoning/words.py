@@ -65,7 +65,7 @@ PHRASES: tuple[tuple, ...] = (
     (UNCLEAR, (r"re:\b(?:high|low|tall|short)(?: |-)?(?:sided|walled|rimmed|edged)\b",
                r"re:(?:(?<=\ba )|(?<=\bthe ))(?:very )?(?:low|high)(?= bowl\b)")),
     # way above the bowl: high, or very high?
-    (UNCLEAR, (r"re:\b(?:way|far|well) (?:up )?(?:above|over)(?= (?:the |a |it\b|hedge ))",)),
+    (UNCLEAR, (r"re:(?<!\ball the )\b(?:way|far|well) (?:up )?(?:above|over)(?= (?:the |a |it\b|hedge ))",)),
     # said by the hand or the fingers alone, before where: "a hand above the bowl", "two
     # fingers above the rim"
     ("7 to 10 cm", (r"re:\b(?:a|one) (?:hand|palm)(?= (?:above|over|below|under|away|from|to the side"
