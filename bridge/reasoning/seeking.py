@@ -8,12 +8,15 @@ where nothing else is, and points to `plan` for how); with none, they are
 left for the scene, where they are refused as asking for a value.
 
 "I want the bowl not to move", "I'd like it to stay in the cup", "keep the
-cup still", "to avoid spilling": a goal, said as "so that the bowl does not
-move".
+cup still", "to avoid spilling", "to keep it all in the bowl": a goal, said
+as "so that the bowl does not move".
 """
 from __future__ import annotations
 
 import re
+from functools import lru_cache
+
+from pantarhei.bridge.reasoning.vessels import destinations
 
 #: What a value is asked of: a height, a tilt, a way ...
 _VALUE = (r"(?:height|tilt|tilting|angle|way|speed|distance|position|spot|place|amount|pose"
@@ -62,10 +65,21 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
 ))
 
 
+@lru_cache(maxsize=None)
+def _keeping_in() -> re.Pattern:
+    """Keeping the liquid in a bowl named: "to keep everything in a light
+    bowl" (so that everything stays in it; in the jug, it stays in the
+    source), not "keep it in place"."""
+    return re.compile(r"\b(?:to |so as to )?keep(?:s|ing)? (it|them|it all|all of it|everything|the [a-z]+) in"
+                      rf"(?= (?:the |a |an |my |your |this |that )?(?:[a-z]+ ){{0,2}}?(?:{destinations()}|jug|source)\b)")
+
+
 def wanting(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` with its goals said as "so that ...", as outcomes.hear reads
     them, and the words of wanting it rewrote ("i want")."""
-    said = tuple(m.group(2) for m in _KEEPS.finditer(text))
+    said = tuple(m.group(0).strip() for m in _keeping_in().finditer(text))
+    text = _keeping_in().sub(r"so that \1 stays in", text)
+    said += tuple(m.group(2) for m in _KEEPS.finditer(text))
     text = _KEEPS.sub(r"\1 so that \3 stays \4", text)
     said += tuple(m.group(0)[:m.start(1) - m.start()].strip() for m in _WANT.finditer(text))
     text = _WANT.sub(r"so that \1", text)
