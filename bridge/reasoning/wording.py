@@ -109,6 +109,11 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text = re.sub(rf"\b(?:{'|'.join(_BARE)})\b|{_CHATTED}", lambda m: respelt(m.group(0)), text)
     text = re.sub(rf"\bcant\b(?= (?:{_PRONOUNS})\b)", lambda m: respelt(m.group(0)), text)
     text = re.sub(rf"\b((?:{_PRONOUNS}) )cant\b", lambda m: m.group(1) + respelt("cant"), text)
+    # "one" standing for the noun a contrast is of: "a heavy bowl instead of a light one" (not
+    # one poured from or into, which the noun repeated would lose)
+    text = re.sub(r"(?<!\bfrom )(?<!\binto )\b((?:a|an|the) [a-z]+ )([a-z]+) (instead of|rather than|and not|not) (a|an|the) ([a-z]+) one\b",
+                  lambda m: said.setdefault(f"one: read as {m.group(2)}")
+                  or f"{m.group(1)}{m.group(2)} {m.group(3)} {m.group(4)} {m.group(5)} {m.group(2)}", text)
     # a probability written as one: "P(no_spill)", "p(spill)"
     text = re.sub(r"\b(p|pr|prob)\s*\((?=[^()]*\))",
                   lambda m: said.setdefault(f"{m.group(1)}: read as the chance of") or "the chance of (",

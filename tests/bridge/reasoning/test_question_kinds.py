@@ -83,6 +83,7 @@ def test_no_word_is_dropped_silently(question):
     ("pour frm high lol", "frm: read as from"),
     ("pour frm high lol", "lol: ignored: laughter as chat types it says nothing of the pour"),
     ("pour alot of milk", "alot: read as a lot"),
+    ("with a heavy bowl instead of a light one", "one: read as bowl"),
 ])
 def test_a_word_read_as_another_is_said_back(question, said):
     """Whatever the reader writes otherwise than typed (a contraction typed
