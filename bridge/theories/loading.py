@@ -93,14 +93,6 @@ def check_file(t: Theory, pouring: bool = True) -> None:
             print(f"warning: {warning}", file=sys.stderr)
 
 
-def checked_file(path: Path | str) -> Theory:
-    """One theory file read and checked as a theory of pouring on its own
-    (check_file), not yet merged with others."""
-    t = read_theory(path)
-    check_file(t)
-    return t
-
-
 def merge(theories: list[Theory]) -> Theory:
     """One theory from several files (a learned theory and rules added by
     hand); rule names must be distinct, sup/2 may cross files."""
