@@ -1,7 +1,7 @@
 """A question that asks for a value with a goal: "how high should I hold it
 so nothing spills", "what's the best tilt so it all goes in" (or "height
 and angle"), "which tilt
-keeps it in the bowl". The value is a plan's to find, not a scene's to say:
+keeps it in the bowl", "so it does not tip, should I pour low or high". The value is a plan's to find, not a scene's to say:
 with a goal said, the words that ask for it are heard (the answer says
 whether the theory expects the goal of the scene said, the ordinary pour
 where nothing else is, and points to `plan` for how); with none, they are
@@ -38,7 +38,10 @@ _ASKING = re.compile(
     rf"|for (?:it|pouring|the pour)))?(?= |$)"
     rf"|\bhow(?: (?:very|really))? {_HOW}(?: (?:should|do|can|must|would|could|shall|is) {_WHO}"
     rf"(?: {_ACT}{_WHAT})?)?(?= |$)"
-    rf"|\bhow (?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT}(?= |$)")
+    rf"|\bhow (?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT}(?= |$)"
+    # a choice of two values: "should I pour from low or high", "do we tilt it a bit or a lot"
+    rf"|\b(?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT} (?:[a-z]+ ){{1,3}}?or(?: [a-z]+){{1,3}}?"
+    rf"(?= *[?.!]* *$| *[,;:])")
 #: A value said to keep an outcome: "which tilt keeps it in the bowl" (so that it stays in it).
 _KEEPS = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? {_VALUE}) (keeps|will keep|would keep)"
                     r" (it|them|the \w+) (in(?: the \w+)?|still|upright|steady|in place)\b")
