@@ -47,7 +47,7 @@ setting(a_new_left, 64).
 % bridge/learning/layers.py).
 setting(general_pours, 774).
 setting(general_own_pours, 0).
-setting(general_rules, 95).
+setting(general_rules, 106).
 rule(g0_destination_still_approach, defeasible, destination_still_approach).
 learned(g0_destination_still_approach).
 provenance(g0_destination_still_approach, layer, general).
@@ -157,45 +157,49 @@ provenance(g11_destination_still_approach, kept, 7).
 provenance(g11_destination_still_approach, confidence_permille, 530).
 provenance(g11_destination_still_approach, antecedent, a62).
 rule(g12_destination_still_approach, defeasible, neg(destination_still_approach)).
-body(g12_destination_still_approach, approach_moving_away).
 body(g12_destination_still_approach, pour_below_rim).
+body(g12_destination_still_approach, pour_upright).
 learned(g12_destination_still_approach).
 provenance(g12_destination_still_approach, layer, general).
-provenance(g12_destination_still_approach, level, 1).
-provenance(g12_destination_still_approach, support, 6).
+provenance(g12_destination_still_approach, level, 2).
+provenance(g12_destination_still_approach, support, 10).
 provenance(g12_destination_still_approach, kept, 3).
-provenance(g12_destination_still_approach, confidence_permille, 633).
-provenance(g12_destination_still_approach, antecedent, a79).
-rule(g13_destination_still_approach, defeasible, destination_still_approach).
+provenance(g12_destination_still_approach, confidence_permille, 521).
+provenance(g12_destination_still_approach, antecedent, a60).
+provenance(g12_destination_still_approach, doubt, parts_disagree).
+rule(g13_destination_still_approach, defeasible, neg(destination_still_approach)).
 body(g13_destination_still_approach, pour_below_rim).
 body(g13_destination_still_approach, pour_slightly_tilted).
 learned(g13_destination_still_approach).
 provenance(g13_destination_still_approach, layer, general).
 provenance(g13_destination_still_approach, level, 2).
 provenance(g13_destination_still_approach, support, 16).
-provenance(g13_destination_still_approach, kept, 11).
-provenance(g13_destination_still_approach, confidence_permille, 641).
+provenance(g13_destination_still_approach, kept, 5).
+provenance(g13_destination_still_approach, confidence_permille, 546).
 provenance(g13_destination_still_approach, antecedent, a61).
+provenance(g13_destination_still_approach, doubt, parts_disagree).
 rule(g14_destination_still_approach, defeasible, neg(destination_still_approach)).
+body(g14_destination_still_approach, approach_moving_away).
 body(g14_destination_still_approach, pour_below_rim).
-body(g14_destination_still_approach, pour_tilted_back).
 learned(g14_destination_still_approach).
 provenance(g14_destination_still_approach, layer, general).
 provenance(g14_destination_still_approach, level, 1).
-provenance(g14_destination_still_approach, support, 24).
-provenance(g14_destination_still_approach, kept, 12).
-provenance(g14_destination_still_approach, confidence_permille, 502).
-provenance(g14_destination_still_approach, antecedent, a63).
-rule(g15_destination_still_approach, defeasible, destination_still_approach).
+provenance(g14_destination_still_approach, support, 6).
+provenance(g14_destination_still_approach, kept, 3).
+provenance(g14_destination_still_approach, confidence_permille, 633).
+provenance(g14_destination_still_approach, antecedent, a79).
+provenance(g14_destination_still_approach, doubt, pours_contradict).
+rule(g15_destination_still_approach, defeasible, neg(destination_still_approach)).
 body(g15_destination_still_approach, pour_below_rim).
-body(g15_destination_still_approach, pour_upright).
+body(g15_destination_still_approach, pour_tilted_back).
 learned(g15_destination_still_approach).
 provenance(g15_destination_still_approach, layer, general).
-provenance(g15_destination_still_approach, level, 2).
-provenance(g15_destination_still_approach, support, 10).
-provenance(g15_destination_still_approach, kept, 7).
-provenance(g15_destination_still_approach, confidence_permille, 637).
-provenance(g15_destination_still_approach, antecedent, a60).
+provenance(g15_destination_still_approach, level, 1).
+provenance(g15_destination_still_approach, support, 24).
+provenance(g15_destination_still_approach, kept, 12).
+provenance(g15_destination_still_approach, confidence_permille, 502).
+provenance(g15_destination_still_approach, antecedent, a63).
+provenance(g15_destination_still_approach, doubt, pours_contradict).
 rule(g16_destination_still_approach, defeasible, neg(destination_still_approach)).
 body(g16_destination_still_approach, pour_below_rim).
 body(g16_destination_still_approach, start_centred).
@@ -206,6 +210,19 @@ provenance(g16_destination_still_approach, support, 5).
 provenance(g16_destination_still_approach, kept, 2).
 provenance(g16_destination_still_approach, confidence_permille, 598).
 provenance(g16_destination_still_approach, antecedent, a120).
+provenance(g16_destination_still_approach, doubt, pours_contradict).
+rule(g17_destination_still_approach, defeasible, destination_still_approach).
+body(g17_destination_still_approach, approach_moving_away).
+body(g17_destination_still_approach, start_low).
+learned(g17_destination_still_approach).
+provenance(g17_destination_still_approach, layer, general).
+provenance(g17_destination_still_approach, level, 1).
+provenance(g17_destination_still_approach, support, 2).
+provenance(g17_destination_still_approach, kept, 2).
+provenance(g17_destination_still_approach, confidence_permille, 648).
+provenance(g17_destination_still_approach, doubt, beside_interaction).
+provenance(g17_destination_still_approach, beside, approach_moving_away).
+provenance(g17_destination_still_approach, beside, start_below_rim).
 rule(g0_destination_still_retreat, defeasible, destination_still_retreat).
 learned(g0_destination_still_retreat).
 provenance(g0_destination_still_retreat, layer, general).
@@ -492,6 +509,17 @@ provenance(g11_source_clear, support, 6).
 provenance(g11_source_clear, kept, 6).
 provenance(g11_source_clear, confidence_permille, 998).
 provenance(g11_source_clear, antecedent, a24).
+rule(g12_source_clear, defeasible, source_clear).
+body(g12_source_clear, end_low).
+body(g12_source_clear, end_upside_down).
+learned(g12_source_clear).
+provenance(g12_source_clear, layer, general).
+provenance(g12_source_clear, level, 1).
+provenance(g12_source_clear, support, 2).
+provenance(g12_source_clear, kept, 0).
+provenance(g12_source_clear, confidence_permille, 614).
+provenance(g12_source_clear, antecedent, a143).
+provenance(g12_source_clear, doubt, pours_contradict).
 rule(g0_liquid_leaves_source, defeasible, liquid_leaves_source).
 learned(g0_liquid_leaves_source).
 provenance(g0_liquid_leaves_source, layer, general).
@@ -674,6 +702,7 @@ provenance(g12_liquid_enters_destination, support, 4).
 provenance(g12_liquid_enters_destination, kept, 1).
 provenance(g12_liquid_enters_destination, confidence_permille, 550).
 provenance(g12_liquid_enters_destination, antecedent, a185).
+provenance(g12_liquid_enters_destination, doubt, pours_contradict).
 rule(g13_liquid_enters_destination, defeasible, neg(liquid_enters_destination)).
 body(g13_liquid_enters_destination, fast_approach).
 body(g13_liquid_enters_destination, pour_steeply_tilted).
@@ -684,6 +713,7 @@ provenance(g13_liquid_enters_destination, support, 5).
 provenance(g13_liquid_enters_destination, kept, 4).
 provenance(g13_liquid_enters_destination, confidence_permille, 534).
 provenance(g13_liquid_enters_destination, antecedent, a157).
+provenance(g13_liquid_enters_destination, doubt, pours_contradict).
 rule(g14_liquid_enters_destination, defeasible, liquid_enters_destination).
 body(g14_liquid_enters_destination, pour_below_rim).
 body(g14_liquid_enters_destination, pour_half_tilted).
@@ -694,6 +724,7 @@ provenance(g14_liquid_enters_destination, support, 14).
 provenance(g14_liquid_enters_destination, kept, 11).
 provenance(g14_liquid_enters_destination, confidence_permille, 750).
 provenance(g14_liquid_enters_destination, antecedent, a62).
+provenance(g14_liquid_enters_destination, doubt, pours_contradict).
 rule(g15_liquid_enters_destination, defeasible, liquid_enters_destination).
 body(g15_liquid_enters_destination, pour_below_rim).
 body(g15_liquid_enters_destination, pour_tilted_back).
@@ -704,6 +735,54 @@ provenance(g15_liquid_enters_destination, support, 24).
 provenance(g15_liquid_enters_destination, kept, 12).
 provenance(g15_liquid_enters_destination, confidence_permille, 506).
 provenance(g15_liquid_enters_destination, antecedent, a63).
+provenance(g15_liquid_enters_destination, doubt, pours_contradict).
+rule(g16_liquid_enters_destination, defeasible, neg(liquid_enters_destination)).
+body(g16_liquid_enters_destination, pour_low).
+body(g16_liquid_enters_destination, start_below_rim).
+learned(g16_liquid_enters_destination).
+provenance(g16_liquid_enters_destination, layer, general).
+provenance(g16_liquid_enters_destination, level, 1).
+provenance(g16_liquid_enters_destination, support, 2).
+provenance(g16_liquid_enters_destination, kept, 2).
+provenance(g16_liquid_enters_destination, confidence_permille, 598).
+provenance(g16_liquid_enters_destination, antecedent, a184).
+provenance(g16_liquid_enters_destination, doubt, pours_contradict).
+rule(g17_liquid_enters_destination, defeasible, liquid_enters_destination).
+body(g17_liquid_enters_destination, approach_moving_away).
+body(g17_liquid_enters_destination, start_low).
+learned(g17_liquid_enters_destination).
+provenance(g17_liquid_enters_destination, layer, general).
+provenance(g17_liquid_enters_destination, level, 1).
+provenance(g17_liquid_enters_destination, support, 2).
+provenance(g17_liquid_enters_destination, kept, 2).
+provenance(g17_liquid_enters_destination, confidence_permille, 648).
+provenance(g17_liquid_enters_destination, doubt, beside_interaction).
+provenance(g17_liquid_enters_destination, beside, approach_moving_away).
+provenance(g17_liquid_enters_destination, beside, start_below_rim).
+rule(g18_liquid_enters_destination, defeasible, liquid_enters_destination).
+body(g18_liquid_enters_destination, pour_centred).
+body(g18_liquid_enters_destination, pour_high).
+learned(g18_liquid_enters_destination).
+provenance(g18_liquid_enters_destination, layer, general).
+provenance(g18_liquid_enters_destination, level, 1).
+provenance(g18_liquid_enters_destination, support, 1).
+provenance(g18_liquid_enters_destination, kept, 1).
+provenance(g18_liquid_enters_destination, confidence_permille, 648).
+provenance(g18_liquid_enters_destination, doubt, beside_interaction).
+provenance(g18_liquid_enters_destination, beside, pour_centred).
+provenance(g18_liquid_enters_destination, beside, pour_very_high).
+rule(g19_liquid_enters_destination, defeasible, neg(liquid_enters_destination)).
+body(g19_liquid_enters_destination, pour_low).
+body(g19_liquid_enters_destination, pour_tilted_back).
+learned(g19_liquid_enters_destination).
+provenance(g19_liquid_enters_destination, layer, general).
+provenance(g19_liquid_enters_destination, level, 1).
+provenance(g19_liquid_enters_destination, support, 2).
+provenance(g19_liquid_enters_destination, kept, 2).
+provenance(g19_liquid_enters_destination, confidence_permille, 648).
+provenance(g19_liquid_enters_destination, doubt, beside_interaction).
+provenance(g19_liquid_enters_destination, beside, pour_below_rim).
+provenance(g19_liquid_enters_destination, beside, pour_tilted_back).
 rule(g0_liquid_remains_in_destination, defeasible, liquid_remains_in_destination).
 learned(g0_liquid_remains_in_destination).
 provenance(g0_liquid_remains_in_destination, layer, general).
@@ -930,6 +1009,60 @@ provenance(g11_no_spill, support, 2).
 provenance(g11_no_spill, kept, 2).
 provenance(g11_no_spill, confidence_permille, 518).
 provenance(g11_no_spill, antecedent, a184).
+rule(g12_no_spill, defeasible, no_spill).
+body(g12_no_spill, pour_far_away).
+body(g12_no_spill, pour_tilted_back).
+learned(g12_no_spill).
+provenance(g12_no_spill, layer, general).
+provenance(g12_no_spill, level, 2).
+provenance(g12_no_spill, support, 0).
+provenance(g12_no_spill, kept, 0).
+provenance(g12_no_spill, confidence_permille, 648).
+provenance(g12_no_spill, doubt, unsettled).
+rule(g13_no_spill, defeasible, no_spill).
+body(g13_no_spill, pour_far_away).
+body(g13_no_spill, pour_slightly_tilted).
+learned(g13_no_spill).
+provenance(g13_no_spill, layer, general).
+provenance(g13_no_spill, level, 2).
+provenance(g13_no_spill, support, 0).
+provenance(g13_no_spill, kept, 0).
+provenance(g13_no_spill, confidence_permille, 648).
+provenance(g13_no_spill, doubt, unsettled).
+rule(g14_no_spill, defeasible, no_spill).
+body(g14_no_spill, pour_far_away).
+body(g14_no_spill, pour_upright).
+learned(g14_no_spill).
+provenance(g14_no_spill, layer, general).
+provenance(g14_no_spill, level, 2).
+provenance(g14_no_spill, support, 0).
+provenance(g14_no_spill, kept, 0).
+provenance(g14_no_spill, confidence_permille, 648).
+provenance(g14_no_spill, doubt, unsettled).
+rule(g15_no_spill, defeasible, no_spill).
+body(g15_no_spill, approach_moving_away).
+body(g15_no_spill, start_low).
+learned(g15_no_spill).
+provenance(g15_no_spill, layer, general).
+provenance(g15_no_spill, level, 1).
+provenance(g15_no_spill, support, 2).
+provenance(g15_no_spill, kept, 2).
+provenance(g15_no_spill, confidence_permille, 648).
+provenance(g15_no_spill, doubt, beside_interaction).
+provenance(g15_no_spill, beside, approach_moving_away).
+provenance(g15_no_spill, beside, start_below_rim).
+rule(g16_no_spill, defeasible, no_spill).
+body(g16_no_spill, pour_centred).
+body(g16_no_spill, pour_high).
+learned(g16_no_spill).
+provenance(g16_no_spill, layer, general).
+provenance(g16_no_spill, level, 1).
+provenance(g16_no_spill, support, 1).
+provenance(g16_no_spill, kept, 1).
+provenance(g16_no_spill, confidence_permille, 648).
+provenance(g16_no_spill, doubt, beside_interaction).
+provenance(g16_no_spill, beside, pour_centred).
+provenance(g16_no_spill, beside, pour_very_high).
 sup(g10_destination_still_approach, g1_destination_still_approach).
 sup(g10_destination_still_retreat, g2_destination_still_retreat).
 sup(g10_destination_still_retreat, g3_destination_still_retreat).
@@ -959,12 +1092,9 @@ sup(g11_no_spill, g9_no_spill).
 sup(g11_source_clear, g2_source_clear).
 sup(g11_source_clear, g3_source_clear).
 sup(g11_source_clear, g5_source_clear).
-sup(g12_destination_still_approach, g10_destination_still_approach).
 sup(g12_destination_still_approach, g2_destination_still_approach).
 sup(g12_destination_still_approach, g4_destination_still_approach).
-sup(g12_destination_still_approach, g5_destination_still_approach).
 sup(g12_destination_still_approach, g6_destination_still_approach).
-sup(g12_destination_still_approach, g8_destination_still_approach).
 sup(g12_liquid_enters_destination, g13_liquid_enters_destination).
 sup(g12_liquid_enters_destination, g1_liquid_enters_destination).
 sup(g12_liquid_enters_destination, g2_liquid_enters_destination).
@@ -974,23 +1104,78 @@ sup(g12_liquid_enters_destination, g5_liquid_enters_destination).
 sup(g12_liquid_enters_destination, g6_liquid_enters_destination).
 sup(g12_liquid_enters_destination, g7_liquid_enters_destination).
 sup(g12_liquid_enters_destination, g8_liquid_enters_destination).
-sup(g13_destination_still_approach, g12_destination_still_approach).
-sup(g13_destination_still_approach, g16_destination_still_approach).
+sup(g12_no_spill, g10_no_spill).
+sup(g12_no_spill, g11_no_spill).
+sup(g12_no_spill, g1_no_spill).
+sup(g12_no_spill, g4_no_spill).
+sup(g12_no_spill, g5_no_spill).
+sup(g12_source_clear, g1_source_clear).
+sup(g12_source_clear, g2_source_clear).
+sup(g12_source_clear, g3_source_clear).
+sup(g12_source_clear, g5_source_clear).
+sup(g13_destination_still_approach, g2_destination_still_approach).
+sup(g13_destination_still_approach, g4_destination_still_approach).
+sup(g13_destination_still_approach, g6_destination_still_approach).
 sup(g13_liquid_enters_destination, g9_liquid_enters_destination).
+sup(g13_no_spill, g10_no_spill).
+sup(g13_no_spill, g11_no_spill).
+sup(g13_no_spill, g1_no_spill).
+sup(g13_no_spill, g4_no_spill).
+sup(g13_no_spill, g5_no_spill).
+sup(g14_destination_still_approach, g10_destination_still_approach).
 sup(g14_destination_still_approach, g2_destination_still_approach).
 sup(g14_destination_still_approach, g4_destination_still_approach).
+sup(g14_destination_still_approach, g5_destination_still_approach).
 sup(g14_destination_still_approach, g6_destination_still_approach).
+sup(g14_destination_still_approach, g8_destination_still_approach).
 sup(g14_liquid_enters_destination, g2_liquid_enters_destination).
 sup(g14_liquid_enters_destination, g3_liquid_enters_destination).
-sup(g15_destination_still_approach, g12_destination_still_approach).
-sup(g15_destination_still_approach, g16_destination_still_approach).
+sup(g14_no_spill, g10_no_spill).
+sup(g14_no_spill, g11_no_spill).
+sup(g14_no_spill, g1_no_spill).
+sup(g14_no_spill, g4_no_spill).
+sup(g14_no_spill, g5_no_spill).
+sup(g15_destination_still_approach, g2_destination_still_approach).
+sup(g15_destination_still_approach, g4_destination_still_approach).
+sup(g15_destination_still_approach, g6_destination_still_approach).
 sup(g15_liquid_enters_destination, g2_liquid_enters_destination).
 sup(g15_liquid_enters_destination, g3_liquid_enters_destination).
+sup(g15_no_spill, g1_no_spill).
+sup(g15_no_spill, g2_no_spill).
+sup(g15_no_spill, g3_no_spill).
+sup(g15_no_spill, g4_no_spill).
+sup(g15_no_spill, g5_no_spill).
 sup(g16_destination_still_approach, g10_destination_still_approach).
 sup(g16_destination_still_approach, g4_destination_still_approach).
 sup(g16_destination_still_approach, g5_destination_still_approach).
 sup(g16_destination_still_approach, g6_destination_still_approach).
 sup(g16_destination_still_approach, g8_destination_still_approach).
+sup(g16_liquid_enters_destination, g12_liquid_enters_destination).
+sup(g16_no_spill, g10_no_spill).
+sup(g16_no_spill, g4_no_spill).
+sup(g17_destination_still_approach, g11_destination_still_approach).
+sup(g17_destination_still_approach, g12_destination_still_approach).
+sup(g17_destination_still_approach, g13_destination_still_approach).
+sup(g17_destination_still_approach, g14_destination_still_approach).
+sup(g17_destination_still_approach, g15_destination_still_approach).
+sup(g17_destination_still_approach, g1_destination_still_approach).
+sup(g17_liquid_enters_destination, g13_liquid_enters_destination).
+sup(g17_liquid_enters_destination, g1_liquid_enters_destination).
+sup(g17_liquid_enters_destination, g2_liquid_enters_destination).
+sup(g17_liquid_enters_destination, g3_liquid_enters_destination).
+sup(g17_liquid_enters_destination, g4_liquid_enters_destination).
+sup(g17_liquid_enters_destination, g5_liquid_enters_destination).
+sup(g17_liquid_enters_destination, g6_liquid_enters_destination).
+sup(g17_liquid_enters_destination, g7_liquid_enters_destination).
+sup(g17_liquid_enters_destination, g8_liquid_enters_destination).
+sup(g18_liquid_enters_destination, g13_liquid_enters_destination).
+sup(g18_liquid_enters_destination, g1_liquid_enters_destination).
+sup(g18_liquid_enters_destination, g2_liquid_enters_destination).
+sup(g18_liquid_enters_destination, g5_liquid_enters_destination).
+sup(g18_liquid_enters_destination, g6_liquid_enters_destination).
+sup(g18_liquid_enters_destination, g7_liquid_enters_destination).
+sup(g19_liquid_enters_destination, g12_liquid_enters_destination).
+sup(g19_liquid_enters_destination, g17_liquid_enters_destination).
 sup(g1_destination_still_approach, g2_destination_still_approach).
 sup(g1_destination_still_approach, g4_destination_still_approach).
 sup(g1_destination_still_retreat, g2_destination_still_retreat).
