@@ -24,6 +24,7 @@ import re
 from bisect import bisect_left
 from dataclasses import dataclass
 
+from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.words import rewrites
 from pantarhei.theory.lexicon import load_vocabulary
 
@@ -184,10 +185,10 @@ def tokens(text: str) -> list[Token]:
     pairs = [(w, w, "") for w in re.findall(rf"{NUMBER}|[a-z0-9_]+|[,;.!?:()]", normalised(text))]
     joined = " ".join(w for w, _, _ in pairs)
     for pattern, words, said in rewrites():
-        if isinstance(pattern, re.Pattern):
+        if isinstance(pattern, Cued):
             if not pattern.search(joined):
                 continue
-            spans = _spans(pattern, joined, pairs)
+            spans = _spans(pattern.pattern, joined, pairs)
         else:
             spans = pattern.spans([w for w, _, _ in pairs])
         if spans:

@@ -28,6 +28,7 @@ from functools import lru_cache
 
 from pantarhei.bridge.reasoning.everyday import Matcher, names, sections
 from pantarhei.bridge.reasoning.bodies import BODIES
+from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.moves import MOVES
 from pantarhei.bridge.reasoning.numerals import NumberWords
 from pantarhei.bridge.reasoning.properties import Levels, Values
@@ -335,6 +336,17 @@ def _word(w: str) -> str:
     return rf"{re.escape(base)}(?:{re.escape(w[-1])}?(?:e|es|ed|ing|s|d)?)?"
 
 
+def _cue(phrase: str) -> str | None:
+    """What every match of a phrase's pattern holds: its first word not
+    optional, less what `_word` inflects; None for "re:" or all optional."""
+    if phrase.startswith("re:"):
+        return None
+    first = next((e for e in re.findall(r"\[[^\]]*\]|\S+", phrase) if not e.startswith("[")), None)
+    if first is None:
+        return None
+    return first if first in _FUNCTION_WORDS or not first.endswith("e") else first[:-1]
+
+
 def _pattern(phrase: str) -> str:
     if phrase.startswith("re:"):
         return phrase[3:]
@@ -368,17 +380,19 @@ def _everyday() -> list[tuple[Matcher, str, str]]:
 
 
 @lru_cache(maxsize=None)
-def rewrites() -> tuple[tuple[re.Pattern | Matcher | Levels | Values | NumberWords, tuple[str, ...],
+def rewrites() -> tuple[tuple[Cued | Matcher | Levels | Values | NumberWords, tuple[str, ...],
                                  str], ...]:
     """Each rewrite in the order applied, with the words it is read as and
     what is said back: a property by its level or its number ("low
     friction", "a friction of 0.1": properties.py, which gives the words
     of each phrase itself), the
     everyday word list, a number said in words ("two inches": numerals.py),
-    then PHRASES; an entry's phrases as one compiled
-    pattern, a section of the list as a Matcher."""
+    then PHRASES; an entry's phrases as one pattern (cued.py), a section
+    of the list as a Matcher."""
     def compiled(words: str, phrases: tuple[str, ...], said: str = ""):
-        return re.compile("|".join(f"(?:{_pattern(p)})" for p in phrases)), tuple(words.split()), said
+        cues = [_cue(p) for p in phrases]
+        return (Cued("|".join(f"(?:{_pattern(p)})" for p in phrases),
+                     None if None in cues else cues), tuple(words.split()), said)
 
     return ((Levels(), (), ""), (Values(), (), ""),
             *((m, tuple(w.split()), said) for m, w, said in _everyday()),
