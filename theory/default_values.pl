@@ -5,9 +5,10 @@
 /** <module> The project's defaults, read from theory/defaults.pl
 
 theory/defaults.pl holds every default of the project as ground facts,
-written once (those of explore/1's options in its option table); this
-module reads them for the Prolog side (Python reads the
-same file: pantarhei.theory.defaults).
+written once (those of explore/1's options in its option table, but for
+the options one curiosity alone reads, which its own module declares:
+theory/curiosity/settings.pl reads those); this module reads them for the
+Prolog side (Python reads the same file: pantarhei.theory.defaults).
 */
 
 :- use_module(theory_files).

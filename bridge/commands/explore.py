@@ -12,8 +12,9 @@ from pantarhei.bridge.errors import UserError
 
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("explore", help="learn a theory by curiosity-driven exploration (Algorithm 1)",
-                       description="Every option is in the option table of theory/defaults.pl "
-                                   "(docs/options.md); those that tune the discovering and the "
+                       description="Every option is in the option table (theory/defaults.pl, "
+                                   "and a curiosity's module for its own: docs/options.md); "
+                                   "those that tune the discovering and the "
                                    "paper's curiosity are options of explore/1 at the Prolog "
                                    "prompt (pantarhei prolog).")
     add_flags(p)
