@@ -41,7 +41,6 @@ from pantarhei.theory.lexicon import load_vocabulary
 
 from pantarhei.bridge.learning.askable import suspect, together
 from pantarhei.bridge.learning.general_rules import GeneralRule, deciding
-from pantarhei.bridge.learning.meaning import held_in_support
 
 
 def doubts(rules: list[GeneralRule], k: int, meaning: Meaning, P: np.ndarray,
@@ -84,41 +83,36 @@ def doubts(rules: list[GeneralRule], k: int, meaning: Meaning, P: np.ndarray,
 
 
 def exceptions(rules: list[GeneralRule], bodies: Sequence[tuple[str, ...]], target: np.ndarray,
-               P: np.ndarray, y: np.ndarray, s: Settings) -> list[GeneralRule]:
+               held: np.ndarray, n: np.ndarray, s: Settings) -> list[GeneralRule]:
     """The rules for bodies whose own pours contradict a sure answer: a
     body that the rules so far answer at least `doubt_confidence` sure, in
     another band (holds, uncertain, fails) than its own likelihood
     (`target`, its pours counted), with at least `doubt_support` pours in
-    its support or fewer whose count of pours that hold (`y`: per pour,
-    whether it holds) is less likely than `unlikely` under the answer,
-    gets a rule with its likelihood. Smaller bodies first (a proposition's
-    rule may answer its pairs); each rule decides the bodies that hold it
-    before the next is weighed."""
+    its support (`n`, per body) or fewer whose count that holds (`held`)
+    is less likely than `unlikely` under the answer, gets a rule with its
+    likelihood. Smaller bodies first (a proposition's rule may answer its
+    pairs); each rule decides the bodies that hold it before the next is
+    weighed."""
     if not s.doubt_support:
         return []
     out: list[GeneralRule] = []
     for i in sorted(range(len(bodies)), key=lambda i: (len(bodies[i]), bodies[i])):
-        b = bodies[i]
-        if not b or any(tuple(sorted(r.body)) == b for r in rules + out):
+        b, t = bodies[i], float(target[i])
+        answer = _sure(rules + out, b, s) if b else None
+        if answer is None or s.verdict(answer.likelihood) == s.verdict(t):
             continue
-        t = float(target[i])
-        j = deciding(rules + out, set(b))
-        if j is None:
-            continue
-        answered = (rules + out)[j].likelihood
-        if max(answered, 1 - answered) < s.doubt_confidence or s.verdict(answered) == s.verdict(t):
-            continue
-        held, n = held_in_support(P, y[:, None], b)
-        if n >= s.doubt_support or (n and _unlikely(int(held[0]), n, answered) < s.unlikely):
+        if n[i] >= s.doubt_support or (n[i] and _unlikely(int(held[i]), int(n[i]), answer.likelihood)
+                                       < s.unlikely):
             out.append(added(b, t, rules, out, "pours_contradict"))
     return out
 
 
 def neighbours(rules: list[GeneralRule], bodies: Sequence[tuple[str, ...]], target: np.ndarray,
-               k: int, meaning: Meaning, P: np.ndarray, s: Settings) -> list[GeneralRule]:
+               n: np.ndarray, k: int, meaning: Meaning, P: np.ndarray,
+               s: Settings) -> list[GeneralRule]:
     """`maybe` for the pairs one rank along a proposition's scale from an
     explored pair of one group (`suspect`; `bodies`, with their
-    likelihoods `target`) with at least
+    likelihoods `target` and the pours in their support `n`) with at least
     `doubt_support` pours of its own whose band is neither of its parts':
     each such pair that is no explored body, has fewer than
     `doubt_support` pours in its support, and is answered at least
@@ -129,10 +123,10 @@ def neighbours(rules: list[GeneralRule], bodies: Sequence[tuple[str, ...]], targ
     props = load_vocabulary().propositions
     own = {b: float(t) for b, t in zip(bodies, target)}
     near: dict[tuple[str, ...], tuple[str, ...]] = {}     # pair -> the explored pair beside it
-    for b in bodies:
+    for b, n_b in zip(bodies, n):
         if (not suspect(b) or any((x,) not in own for x in b)
                 or any(s.verdict(own[b]) == s.verdict(own[(x,)]) for x in b)
-                or int(in_support(P, b).sum()) < s.doubt_support):
+                or n_b < s.doubt_support):
             continue
         for keep, move in (b, b[::-1]):
             m = props[move]
@@ -144,13 +138,20 @@ def neighbours(rules: list[GeneralRule], bodies: Sequence[tuple[str, ...]], targ
     todo = [p for p in sorted(near) if int(in_support(P, p).sum()) < s.doubt_support]
     out: list[GeneralRule] = []
     for pair, m in zip(todo, meaning(todo)[:, k] if todo else []):
-        j = deciding(rules + out, set(pair))
-        if (not np.isfinite(m) or j is None or any(tuple(sorted(r.body)) == pair for r in rules + out)
-                or max((rules + out)[j].likelihood, 1 - (rules + out)[j].likelihood) < s.doubt_confidence):
+        if not np.isfinite(m) or _sure(rules + out, pair, s) is None:
             continue
         out.append(replace(added(pair, _maybe(m, s), rules, out, "beside_interaction"),
                            beside=near[pair]))
     return out
+
+
+def _sure(rules: list[GeneralRule], body: tuple[str, ...], s: Settings) -> GeneralRule | None:
+    """The rule that decides `body`, where it is at least `doubt_confidence`
+    sure and `body` has no rule of its own (None otherwise)."""
+    if any(tuple(sorted(r.body)) == body for r in rules):
+        return None
+    j = deciding(rules, set(body))
+    return None if j is None or rules[j].confidence < s.doubt_confidence else rules[j]
 
 
 def _maybe(m: float, s: Settings) -> float:

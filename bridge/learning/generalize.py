@@ -130,33 +130,34 @@ def _generalize(P: np.ndarray, S: np.ndarray, settings: Settings,
     T = meaning(bodies)
     known = np.isfinite(T[:, 0])
     bodies, T = [b for b, k in zip(bodies, known) if k], T[known]
-    T = _with_own_pours(T, bodies, P, Y, settings.model_pours)
+    own = [held_in_support(P, Y, b) for b in bodies]      # per body: held per expectation, pours
+    held, n = np.array([h for h, _ in own]), np.array([c for _, c in own])
+    T = _with_own_pours(T, bodies, held, n, settings.model_pours)
     out = General(band=settings.band)
     for k, e in enumerate(vocab.expectation_names):
         rules = _Contrasts(e, bodies, T[:, k], settings).learn()
         rules += doubts(rules, k, meaning, P, settings)
-        rules += exceptions(rules, bodies, T[:, k], P, Y[:, k], settings)
-        rules += neighbours(rules, bodies, T[:, k], k, meaning, P, settings)
+        rules += exceptions(rules, bodies, T[:, k], held[:, k], n, settings)
+        rules += neighbours(rules, bodies, T[:, k], n, k, meaning, P, settings)
         out.rules.extend(_with_evidence(r, P, Y[:, k]) for r in rules)
     for e in vocab.expectation_names:
         out.sup.extend(_superiority(out.of(e)))
     return out
 
 
-def _with_own_pours(T: np.ndarray, bodies: Sequence[tuple[str, ...]], P: np.ndarray,
-                    Y: np.ndarray, k: float) -> np.ndarray:
-    """The likelihoods T of `bodies` with each body's own pours (those in
-    its support) counted beside the model's estimate, which counts as `k`
+def _with_own_pours(T: np.ndarray, bodies: Sequence[tuple[str, ...]], held: np.ndarray,
+                    n: np.ndarray, k: float) -> np.ndarray:
+    """The likelihoods T of `bodies` with each body's own pours (the `n`
+    in its support, of which `held` hold each expectation) counted beside
+    the model's estimate, which counts as `k`
     pours: (kept + k T) / (n + k). The model smooths over a region a few
     pours hold (a leaf holds at least 10): 2 of 2 pours that fail are not
     answered `yes` 96%, but `maybe`; many pours of its own outweigh it.
     The empty body keeps the model's: its support holds every pour."""
     T = T.copy()
     for i, b in enumerate(bodies):
-        if b:
-            held, n = held_in_support(P, Y, b)
-            if n:
-                T[i] = (held + k * T[i]) / (n + k)
+        if b and n[i]:
+            T[i] = (held[i] + k * T[i]) / (n[i] + k)
     return T
 
 

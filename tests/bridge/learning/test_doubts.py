@@ -10,7 +10,7 @@ from pantarhei.bridge.learning.general_rules import General, GeneralRule
 from pantarhei.bridge.learning.generalize import Settings
 from pantarhei.bridge.learning.meaning import Meaning
 from pantarhei.bridge.verdicts import UNKNOWN
-from pantarhei.oracle.generative import sample
+from pantarhei.oracle.generative import in_support, sample
 from pantarhei.theory.lexicon import load_vocabulary
 
 NAMES = load_vocabulary().expectation_names
@@ -26,15 +26,14 @@ def test_two_pours_of_two_that_contradict_a_sure_answer_get_their_own_rule():
     (0.25%) under the answer, so the pair gets its own rule. One pour of
     two (10%) is not unlikely enough, nor is anything with `unlikely` 0."""
     pair = ("approach_raising", "pour_below_rim")
-    P = sample(list(pair), 2, 7)
     target = np.array([0.95, 0.3])
-    bodies = [(), pair]
-    (rule,) = exceptions([DEFAULT], bodies, target, P, np.array([False, False]), FAST)
+    bodies, n = [(), pair], np.array([2, 2])        # the pair's two pours, in its support
+    (rule,) = exceptions([DEFAULT], bodies, target, np.array([0, 0]), n, FAST)
     assert rule.body == pair and not rule.holds and abs(rule.likelihood - 0.3) < 1e-9
     assert rule.doubt == "pours_contradict"
-    assert not exceptions([DEFAULT], bodies, target, P, np.array([True, False]), FAST)
+    assert not exceptions([DEFAULT], bodies, target, np.array([1, 1]), n, FAST)
     off = Settings(seed=3, draws=24, unlikely=0.0)
-    assert not exceptions([DEFAULT], bodies, target, P, np.array([False, False]), off)
+    assert not exceptions([DEFAULT], bodies, target, np.array([0, 0]), n, off)
 
 
 def _explored(pair_likelihood: float, pair=("pour_centred", "pour_very_high")):
@@ -48,13 +47,18 @@ def _explored(pair_likelihood: float, pair=("pour_centred", "pour_very_high")):
     return P, Meaning(P, Y, FAST), bodies, np.array([0.95, 0.95, 0.95, pair_likelihood])
 
 
+def _own(P, bodies) -> np.ndarray:
+    """The pours of P in each body's support."""
+    return np.array([int(in_support(P, list(b)).sum()) for b in bodies])
+
+
 def test_a_pair_next_to_one_that_interacts_says_maybe():
     """Pouring very high over the centre keeps the bowl empty, though each
     part fills it: pouring high over the centre, never poured, one rank
     along the height's scale, is answered maybe, not the default's sure
     yes; a pair two ranks away (below the rim) keeps the default's."""
     P, meaning, bodies, target = _explored(0.05)
-    added = neighbours([DEFAULT], bodies, target, K, meaning, P, FAST)
+    added = neighbours([DEFAULT], bodies, target, _own(P, bodies), K, meaning, P, FAST)
     said = {r.body: r for r in added}
     assert ("pour_centred", "pour_high") in said
     assert ("pour_below_rim", "pour_centred") not in said
@@ -66,7 +70,7 @@ def test_a_pair_next_to_one_that_interacts_says_maybe():
 
 def test_no_maybe_next_to_a_pair_that_does_not_interact():
     P, meaning, bodies, target = _explored(0.95)
-    assert not neighbours([DEFAULT], bodies, target, K, meaning, P, FAST)
+    assert not neighbours([DEFAULT], bodies, target, _own(P, bodies), K, meaning, P, FAST)
 
 
 def test_no_maybe_next_to_a_pair_of_two_groups():
@@ -74,4 +78,4 @@ def test_no_maybe_next_to_a_pair_of_two_groups():
     groups of parameters, whose pairs are not suspects of an interaction
     as physics goes, so their neighbours keep the rules' answers."""
     P, meaning, bodies, target = _explored(0.05, ("heavy_liquid", "pour_very_high"))
-    assert not neighbours([DEFAULT], bodies, target, K, meaning, P, FAST)
+    assert not neighbours([DEFAULT], bodies, target, _own(P, bodies), K, meaning, P, FAST)
