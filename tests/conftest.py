@@ -1,4 +1,5 @@
-"""Shared fixtures: run the real `pantarhei` command in a subprocess."""
+"""Shared fixtures: run the real `pantarhei` command in a subprocess; a toy
+curiosity's Prolog module."""
 from __future__ import annotations
 
 import os
@@ -36,3 +37,20 @@ def assert_one_line_error(r: Run, code: int = 2) -> str:
     assert len(lines) == 1, r.err
     assert "Traceback" not in r.err
     return lines[0]
+
+
+def toy_curiosity(module: str, rules: bool = False, python_side: str | None = None) -> str:
+    """A toy curiosity's Prolog module `module`: the interface of
+    theory/curiosity/interface.pl and nothing else, its theory laid out
+    with Algorithm 1's rules or without (one layer), and its Python side."""
+    side = f"python_side(['{python_side}']).\n" if python_side else ""
+    return f""":- module({module}, []).
+budget(_, 1).
+progress_bar(_, _{{total:1, unit:pour}}).
+probe_size(_, 0).
+probed(_, _) :- fail.
+priors_due(_, _) :- fail.
+after_batch(_, _, [], _{{}}).
+second_layer(_, _, _, []).
+theory_layout(_{{rules:{str(rules).lower()}, batches:false, header:[], layer_header:[]}}).
+{side}"""

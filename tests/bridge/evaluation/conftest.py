@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from pantarhei.bridge.exploration.explore_call import ExploreOptions, explore
+from tests.conftest import toy_curiosity
 
 
 @pytest.fixture(scope="session")
@@ -32,21 +33,6 @@ def learned(explored) -> tuple[Path, Path]:
     return explored[0], explored[1]
 
 
-#: A toy curiosity's Prolog module, laid out with Algorithm 1's rules or
-#: without (one layer): the interface and nothing else.
-TOY_CURIOSITY = """\
-:- module(curiosity_layout_toy_{rules}, []).
-budget(_, 1).
-progress_bar(_, _{{total:1, unit:pour}}).
-probe_size(_, 0).
-probed(_, _) :- fail.
-priors_due(_, _) :- fail.
-after_batch(_, _, [], _{{}}).
-second_layer(_, _, _, []).
-theory_layout(_{{rules:{rules}, batches:false, header:[], layer_header:[]}}).
-"""
-
-
 @pytest.fixture(scope="session")
 def toy_curiosities(tmp_path_factory):
     """Two toy curiosities loaded into the process's Prolog as
@@ -60,7 +46,8 @@ def toy_curiosities(tmp_path_factory):
     d = tmp_path_factory.mktemp("toys")
     for name, rules in (("one_layer", "false"), ("two_layers", "true")):
         path = d / f"{name}.pl"
-        path.write_text(TOY_CURIOSITY.format(rules=rules), encoding="utf-8")
+        path.write_text(toy_curiosity(f"curiosity_layout_toy_{rules}", rules == "true"),
+                        encoding="utf-8")
         eng.once("curiosity_interface:load_curiosity(C, F)", C=name, F=str(path))
     yield ("one_layer", "two_layers")
     eng.once("retractall(curiosity_interface:curiosity_module(one_layer, _)), "

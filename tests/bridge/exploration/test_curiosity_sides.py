@@ -22,22 +22,12 @@ from pantarhei.bridge.exploration.curiosity_sides import (curiosities, curiosity
                                                           python_sides)
 from pantarhei.bridge.exploration.session import Host, install
 from pantarhei.bridge.exploration.session_state import Session
+from tests.conftest import toy_curiosity
 
 SESSION = Path(__file__).resolve().parents[3] / "bridge" / "exploration" / "session.py"
 
 #: The toy curiosity's Prolog module: the interface, and its Python side, this module.
-TOY = f"""\
-:- module(curiosity_toy, []).
-budget(_, 1).
-progress_bar(_, _{{total:1, unit:pour}}).
-probe_size(_, 0).
-probed(_, _) :- fail.
-priors_due(_, _) :- fail.
-after_batch(_, _, [], _{{}}).
-second_layer(_, _, _, []).
-theory_layout(_{{rules:false, batches:false, header:[], layer_header:[]}}).
-python_side(['{__name__}']).
-"""
+TOY = toy_curiosity("curiosity_toy", python_side=__name__)
 
 
 def handlers() -> dict:
