@@ -3,12 +3,24 @@ cues: a literal every match must contain. The reader holds some two
 hundred such patterns (words.py), and a question names a few of the
 things they read; compiling them all cost each `ask` a tenth of a
 second. `search` finds what the compiled pattern would, and None where
-no cue is in the text."""
+no cue is in the text.
+
+A phrase is words, each read with its inflections ("move" is move,
+moves, moved, moving), a part in brackets optional ("[the] bowl"), its
+alternatives split by "|"; or a regular expression after "re:" (no cue:
+always tried)."""
 from __future__ import annotations
 
 import re
 from functools import cached_property
 from typing import Sequence
+
+
+#: Words read as written, without inflections.
+_FUNCTION_WORDS = {"a", "an", "the", "it", "of", "to", "in", "at", "on", "by", "from", "into",
+                   "over", "with", "and", "up", "down", "way"}
+#: A phrase's elements: an optional part in brackets, or a word.
+_ELEMENT = re.compile(r"\[[^\]]*\]|\S+")
 
 
 class Cued:
@@ -29,3 +41,44 @@ class Cued:
 
     def search(self, text: str) -> re.Match | None:
         return self.pattern.search(text) if self.cued(text) else None
+
+    @classmethod
+    def of(cls, phrases: Sequence[str]) -> Cued:
+        """The phrases as one pattern, cued by each one's first word that
+        is not optional (less what its inflections change)."""
+        cues = [_cue(p) for p in phrases]
+        return cls("|".join(f"(?:{_pattern(p)})" for p in phrases), None if None in cues else cues)
+
+
+def _base(w: str) -> str:
+    """What every inflection of a word keeps: move for moving, put."""
+    return w if w in _FUNCTION_WORDS or not w.endswith("e") else w[:-1]
+
+
+def _word(w: str) -> str:
+    """A word and its inflections: move, moves, moved, moving; put, putting."""
+    if w in _FUNCTION_WORDS:
+        return re.escape(w)
+    return rf"{re.escape(_base(w))}(?:{re.escape(w[-1])}?(?:e|es|ed|ing|s|d)?)?"
+
+
+def _cue(phrase: str) -> str | None:
+    """The base of a phrase's first word not optional; None for "re:" or
+    all optional."""
+    if phrase.startswith("re:"):
+        return None
+    return next((_base(e) for e in _ELEMENT.findall(phrase) if not e.startswith("[")), None)
+
+
+def _pattern(phrase: str) -> str:
+    if phrase.startswith("re:"):
+        return phrase[3:]
+    parts = []
+    for element in _ELEMENT.findall(phrase):
+        if element.startswith("["):
+            alternatives = "|".join(" ".join(_word(w) for w in alt.split())
+                                    for alt in element[1:-1].split("|"))
+            parts.append(rf"(?:(?:{alternatives}) )?")
+        else:
+            parts.append(_word(element) + " ")
+    return r"\b" + "".join(parts)[:-1] + r"\b"

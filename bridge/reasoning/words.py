@@ -23,7 +23,6 @@ PHRASES.
 """
 from __future__ import annotations
 
-import re
 from functools import lru_cache
 
 from pantarhei.bridge.reasoning.everyday import Matcher, names, sections
@@ -324,43 +323,6 @@ FILLERS = frozenset("""
     ll re ve m d w
 """.split())
 
-_FUNCTION_WORDS = {"a", "an", "the", "it", "of", "to", "in", "at", "on", "by", "from", "into",
-                   "over", "with", "and", "up", "down", "way"}
-
-
-def _word(w: str) -> str:
-    """A word and its inflections: move, moves, moved, moving; put, putting."""
-    if w in _FUNCTION_WORDS:
-        return re.escape(w)
-    base = w[:-1] if w.endswith("e") else w
-    return rf"{re.escape(base)}(?:{re.escape(w[-1])}?(?:e|es|ed|ing|s|d)?)?"
-
-
-def _cue(phrase: str) -> str | None:
-    """What every match of a phrase's pattern holds: its first word not
-    optional, less what `_word` inflects; None for "re:" or all optional."""
-    if phrase.startswith("re:"):
-        return None
-    first = next((e for e in re.findall(r"\[[^\]]*\]|\S+", phrase) if not e.startswith("[")), None)
-    if first is None:
-        return None
-    return first if first in _FUNCTION_WORDS or not first.endswith("e") else first[:-1]
-
-
-def _pattern(phrase: str) -> str:
-    if phrase.startswith("re:"):
-        return phrase[3:]
-    parts = []
-    for element in re.findall(r"\[[^\]]*\]|\S+", phrase):
-        if element.startswith("["):
-            alternatives = "|".join(" ".join(_word(w) for w in alt.split())
-                                    for alt in element[1:-1].split("|"))
-            parts.append(rf"(?:(?:{alternatives}) )?")
-        else:
-            parts.append(_word(element) + " ")
-    return r"\b" + "".join(parts)[:-1] + r"\b"
-
-
 def _everyday() -> list[tuple[Matcher, str, str]]:
     """(matcher, the words it is read as, what is said back) for each
     section of the everyday word list: a liquid's or a context noun's name
@@ -389,12 +351,8 @@ def rewrites() -> tuple[tuple[Cued | Matcher | Levels | Values | NumberWords, tu
     everyday word list, a number said in words ("two inches": numerals.py),
     then PHRASES; an entry's phrases as one pattern (cued.py), a section
     of the list as a Matcher."""
-    def compiled(words: str, phrases: tuple[str, ...], said: str = ""):
-        cues = [_cue(p) for p in phrases]
-        return (Cued("|".join(f"(?:{_pattern(p)})" for p in phrases),
-                     None if None in cues else cues), tuple(words.split()), said)
-
     return ((Levels(), (), ""), (Values(), (), ""),
             *((m, tuple(w.split()), said) for m, w, said in _everyday()),
             (NumberWords(), (), ""),
-            *(compiled(*entry) for entry in PHRASES))
+            *((Cued.of(phrases), tuple(words.split()), said[0] if said else "")
+              for words, phrases, *said in PHRASES))
