@@ -1,11 +1,11 @@
 """Import cycles, as a static tool sees them: every import of a module
 (at its top, inside a function or under TYPE_CHECKING alike) is an edge of
 the graph of the project's modules, and the graph of the whole `pantarhei`
-package has no cycle but the ones named in `KNOWN_CYCLES`. The cycles
-broken stay broken: the learner (generalize) and the model of the pours
+package has no cycle. The cycles once there stay broken: the learner (generalize) and the model of the pours
 (meaning), the theory package and the reader of theory files (facts),
-and the plan search and the order in which it tries manners (plan_order)
-lie on no cycle together."""
+and the plan search and the order in which it tries manners (plan_order),
+the reading's words and the numbers in words (numerals) lie on no cycle
+together."""
 from __future__ import annotations
 
 import ast
@@ -21,17 +21,8 @@ PACKAGES = {"pantarhei.theory": ROOT / "theory", "pantarhei.bridge": ROOT / "bri
 #: Pairs of modules that must not import each other, however indirectly.
 APART = [("pantarhei.bridge.learning.generalize", "pantarhei.bridge.learning.meaning"),
          ("pantarhei.theory", "pantarhei.bridge.theories.facts"),
-         ("pantarhei.bridge.reasoning.plan_search", "pantarhei.bridge.reasoning.plan_order")]
-
-
-#: Cycles not broken yet, each by the modules on it: a cycle among exactly
-#: these modules (or some of them) is not reported, any other is.
-KNOWN_CYCLES = {
-    # The reading of questions: words, numbers in words and quantities.
-    "words, numerals and quantities": {f"pantarhei.bridge.reasoning.{m}" for m in
-                                       ("nouns", "numerals", "quantities", "stages",
-                                        "wording", "words")},
-}
+         ("pantarhei.bridge.reasoning.plan_search", "pantarhei.bridge.reasoning.plan_order"),
+         ("pantarhei.bridge.reasoning.words", "pantarhei.bridge.reasoning.quantities")]
 
 
 def module_files(packages: dict[str, Path]) -> dict[str, Path]:
@@ -124,24 +115,14 @@ def cycles(graph: dict[str, set[str]]) -> list[set[str]]:
 
 
 def unknown_cycles(graph: dict[str, set[str]]) -> list[list[str]]:
-    """The cycles of the graph that no entry of KNOWN_CYCLES holds."""
-    return [sorted(c) for c in cycles(graph)
-            if not any(c <= known for known in KNOWN_CYCLES.values())]
+    """The cycles of the graph, each as its sorted modules."""
+    return [sorted(c) for c in cycles(graph)]
 
 
-def test_the_package_has_no_import_cycle_but_the_known_ones():
+def test_the_package_has_no_import_cycle():
     found = unknown_cycles(import_graph(PACKAGES))
     assert not found, "modules that import each other, however indirectly: " + \
         "; ".join(", ".join(c) for c in found)
-
-
-@pytest.mark.parametrize("name", sorted(KNOWN_CYCLES))
-def test_a_known_cycle_is_still_one(name):
-    """A known cycle that is broken leaves KNOWN_CYCLES (so that it cannot
-    come back unnoticed)."""
-    graph = import_graph(PACKAGES)
-    assert any(c <= KNOWN_CYCLES[name] for c in cycles(graph)), \
-        f"the cycle '{name}' is broken: take it out of KNOWN_CYCLES"
 
 
 @pytest.mark.parametrize("a, b", APART)

@@ -12,6 +12,8 @@ words each number covers and the number they are read as.
 """
 from __future__ import annotations
 
+from pantarhei.bridge.reasoning.units import UNITS
+
 _ONES = ("zero one two three four five six seven eight nine ten eleven twelve thirteen fourteen "
          "fifteen sixteen seventeen eighteen nineteen").split()
 _TENS = {w: 10 * k for k, w in enumerate(
@@ -26,8 +28,6 @@ class NumberWords:
     """The rewrite (see the module's docstring)."""
 
     def spans(self, words: list[str]) -> list[tuple[int, int, tuple[str, ...]]]:
-        from pantarhei.bridge.reasoning.quantities import UNITS     # (quantities reads words.py)
-
         out: list[tuple[int, int, tuple[str, ...]]] = []
         i = 0
         while i < len(words):

@@ -31,39 +31,9 @@ from dataclasses import dataclass
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.nouns import Nouns, roles
 from pantarhei.bridge.reasoning.stages import MOVE, POSE, stages
+from pantarhei.bridge.reasoning.units import POSITIVE, UNITS
 from pantarhei.bridge.reasoning.wording import NUMBER, Token, stem
 from pantarhei.theory.lexicon import load_vocabulary
-
-#: unit word (as written, lower case) -> (what it measures, factor to the parameter's unit)
-UNITS: dict[str, tuple[str, float]] = {
-    **{w: ("length", 1.0) for w in ("mm", "millimetre", "millimetres", "millimeter",
-                                    "millimeters")},
-    **{w: ("length", 10.0) for w in ("cm", "cms", "centimetre", "centimetres", "centimeter",
-                                     "centimeters")},
-    **{w: ("length", 1000.0) for w in ("m", "metre", "metres", "meter", "meters")},
-    **{w: ("length", 25.4) for w in ("inch", "inches")},
-    **{w: ("length", 304.8) for w in ("foot", "feet", "ft")},
-    **{w: ("angle", 1.0) for w in ("degree", "degrees", "deg", "degs")},
-    **{w: ("time", 1.0) for w in ("ms", "millisecond", "milliseconds")},
-    **{w: ("time", 1000.0) for w in ("s", "sec", "secs", "second", "seconds")},
-    **{w: ("time", 60000.0) for w in ("min", "mins", "minute", "minutes")},
-    **{w: ("mass", 1.0) for w in ("g", "gram", "grams", "gramme", "grammes")},
-    **{w: ("mass", 1000.0) for w in ("kg", "kilo", "kilos", "kilogram", "kilograms")},
-    **{w: ("count", 1.0) for w in ("particle", "particles")},
-    # said, and refused naming what would be read: an amount of liquid by
-    # its volume, a speed (wording.py writes "0.5 m/s" as "0.5 speed")
-    **{w: ("volume", 1.0) for w in ("ml", "millilitre", "millilitres", "milliliter",
-                                    "milliliters", "cl", "dl", "l", "litre", "litres", "liter",
-                                    "liters", "oz", "ounce", "ounces")},
-    "speed": ("speed", 1.0), "unit_turn_speed": ("turn speed", 1.0),
-    # a property's name said with a number (properties.py): "a friction of 0.1"
-    "unit_friction": ("friction", 1000.0), "unit_restitution": ("restitution", 1000.0),
-    "unit_particles": ("count", 1.0),
-}
-#: What cannot be negative, in words.
-_POSITIVE = {"mass": "a mass", "time": "a time", "count": "a number of particles",
-             "friction": "a friction", "restitution": "a bounciness",
-             "volume": "an amount of liquid", "speed": "a speed", "turn speed": "a speed"}
 
 #: The words beside a number that pick its parameter, by what they choose;
 #: they are read with the number (a height's with the rim it is measured from).
@@ -100,8 +70,8 @@ def parameter(q: Quantity, pose: str, move: str | None, cues: set[str],
     `move` (reading.py's _POSE and _MOVE), beside the cue words `cues`, of
     the body `body`; UserError for a measure no parameter takes there, or
     a negative one where nothing can be negative."""
-    if q.value < 0 and q.measures in _POSITIVE:
-        raise UserError(f"\"{q.text}\": {_POSITIVE[q.measures]} cannot be negative")
+    if q.value < 0 and q.measures in POSITIVE:
+        raise UserError(f"\"{q.text}\": {POSITIVE[q.measures]} cannot be negative")
     if q.measures == "speed":
         raise UserError(f"\"{q.text}\" is a speed, which the vocabulary says by how long the "
                         "source takes to move in or away: say \"move in fast\", \"move in slowly\", "

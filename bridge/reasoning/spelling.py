@@ -33,7 +33,7 @@ from pantarhei.bridge.reasoning.negation import NEGATIONS
 from pantarhei.bridge.reasoning.numerals import NUMBER_WORDS
 from pantarhei.bridge.reasoning.outcomes import OUTCOMES
 from pantarhei.bridge.reasoning.properties import LEVELS, NAMES
-from pantarhei.bridge.reasoning.quantities import UNITS
+from pantarhei.bridge.reasoning.units import UNITS
 from pantarhei.bridge.reasoning.stages import MARKERS
 from pantarhei.bridge.reasoning.wording import stem
 from pantarhei.bridge.reasoning.words import FILLERS, PHRASES
