@@ -253,3 +253,15 @@ def test_an_option_one_curiosity_reads_is_declared_in_its_module():
             declared = declarations(CURIOSITY_DIR / f"{o.curiosities[0]}.pl")
             assert o.name in {row[0] for row in declared["option"]}, o.name
     assert any(o.name not in shared for o in option_table())
+
+
+def test_the_unknown_name_warning_is_written_once():
+    """A name of a theory of pouring that the vocabulary does not know is
+    said in the words of one message, theory/check_messages.pl's
+    `unknown_name` (found by one check, theory/ask.pl's, whether
+    SWI-Prolog or Python read the file: tests/bridge/theories/
+    test_loading.py): no other source writes them."""
+    words = "is not a proposition or expectation of pouring"
+    found = [_rel(p) for p in _files(".py") + _files(".pl")
+             if words in p.read_text(encoding="utf-8")]
+    assert found == ["theory/check_messages.pl"]

@@ -1,5 +1,6 @@
 :- module(ask,
           [ load_theories/2,        % +Files, -Warnings
+            unknown_names/2,        % +Rows, -Unknown
             serve/0
           ]).
 /** <module> Asking a theory of pouring: `pantarhei ask` in one crossing
@@ -91,7 +92,9 @@ check_read(read(Name, LineFacts, _), Warnings) :-
         throw(theory_error(Name, 0, M))
     ),
     check_general_rules(Name, LineFacts),
-    unknown_names(Name, LineFacts, Warnings).
+    unknown_lines(LineFacts, Found),
+    findall(unknown(Where, What, T), ( member(Line-unknown(What, T), Found),
+                                       format(string(Where), "~w:~w", [Name, Line]) ), Warnings).
 
 % aside(+Fact): a fact that alone makes no theory (it says something of a
 % rule).
@@ -240,18 +243,36 @@ check_evidence(Name, LineFacts, R, Key, V) :-
     throw(theory_error(Name, Line, M)).
 check_evidence(_, _, _, _, _).
 
-% unknown_names(+Name, +LineFacts, -Warnings): unknown(Where, What,
-% LiteralName) for each literal naming nothing of the vocabulary that the
-% file's own rules do not use, by line.
-unknown_names(Name, LineFacts, Warnings) :-
+%!  unknown_names(+Rows:list, -Unknown:list) is det.
+%
+%   unknown_lines/2 of a theory Python read (a DFL file, or the theory a
+%   command reasons with in Python), so that the check is written here
+%   alone: Rows its facts at the lines Python read them, =|[Line, rule, R,
+%   Head]|=, =|[Line, body, R, Literal]|= or =|[Line, fact, _, Literal]|=,
+%   a literal as its text; Unknown =|[Line, What, Name]|= for each found.
+unknown_names(Rows, Unknown) :-
+    must_be(list, Rows),
+    maplist(row_fact, Rows, LineFacts),
+    unknown_lines(LineFacts, Found),
+    findall([Line, What, T], member(Line-unknown(What, T), Found), Unknown).
+
+row_fact([Line, Kind, R, Text], Line-F) :-
+    term_string(L, Text),
+    must_be(oneof([rule, body, fact]), Kind),
+    memberchk(Kind-F, [rule-rule(R, defeasible, L), body-body(R, L), fact-fact(L)]).
+
+% unknown_lines(+LineFacts, -Found): Line-unknown(What, LiteralName) by
+% line for each literal naming nothing of the vocabulary that the theory's
+% own rules do not use (a body no rule or fact concludes, a head or fact no
+% body uses): such a rule never fires, or concludes nothing asked for.
+unknown_lines(LineFacts, Found) :-
     findall(A, ( member(_-F, LineFacts), concluded(F, L), literal_atom(L, A) ), C0),
     set_assoc(C0, Concluded),
     findall(A, ( member(_-body(_, L), LineFacts), literal_atom(L, A) ), U0),
     set_assoc(U0, Used),
     bodies_by_rule(LineFacts, Bodies),
-    findall(Line-W, unknown_name(Name, LineFacts, Bodies, Concluded, Used, Line, W), Pairs),
-    sort(1, @=<, Pairs, Sorted),
-    pairs_values(Sorted, Warnings).
+    findall(Line-W, unknown_name(LineFacts, Bodies, Concluded, Used, Line, W), Pairs),
+    sort(1, @=<, Pairs, Found).
 
 % set_assoc(+List, -Assoc): the members of List as the keys of an assoc.
 set_assoc(List, Assoc) :-
@@ -262,7 +283,7 @@ set_assoc(List, Assoc) :-
 concluded(rule(_, _, H), H).
 concluded(fact(F), F).
 
-unknown_name(Name, LineFacts, Bodies, Concluded, Used, Line, unknown(Where, What, T)) :-
+unknown_name(LineFacts, Bodies, Concluded, Used, Line, unknown(What, T)) :-
     member(RLine-F, LineFacts),
     (   F = rule(R, _, H),
         (   rule_bodies(Bodies, R, LineBodies),
@@ -276,8 +297,7 @@ unknown_name(Name, LineFacts, Bodies, Concluded, Used, Line, unknown(Where, What
     ;   F = fact(L), literal_atom(L, A), \+ known_name(A), \+ get_assoc(A, Used, _),
         Line = RLine, What = "fact"
     ),
-    term_text(A, T),
-    format(string(Where), "~w:~w", [Name, Line]).
+    term_text(A, T).
 
 known_name(A) :- atom(A), ( proposition(A, _, _, _) -> true ; expectation(A, _, _) ).
 

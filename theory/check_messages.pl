@@ -69,6 +69,12 @@ check_message(general_confidence,
 check_message(general_count, "general rule ~w: ~w is a count of pours, not ~w").
 check_message(general_kept, "general rule ~w: ~w pours kept of ~w described").
 
+% A name of a theory of pouring that the vocabulary does not know, a
+% warning (ask.pl's unknown_names/2 finds them; Python says them, with the
+% nearest known name: bridge/theories/unknown_names.py): what names it
+% (such as "rule r1: body"), the name.
+check_message(unknown_name, "~w ~w is not a proposition or expectation of pouring").
+
 % A rule could beat itself (and a literal and its complement both be
 % concluded): the cycle's rules, joined by " > ", first and last the same.
 check_message(superiority_cycle,

@@ -14,7 +14,6 @@ from __future__ import annotations
 import os
 import shutil
 import subprocess
-import sys
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -311,23 +310,14 @@ def _list(names: list[str]) -> str:
 
 def print_warnings(warnings: list[tuple[str, str, str]]) -> None:
     """`warning: file:line: ...` on stderr for each name of a rule that is
-    no proposition or expectation, with the nearest known name."""
+    no proposition or expectation (theory/ask.pl found them), with the
+    nearest known name: the words of bridge/theories/unknown_names.py, at
+    most WARNINGS_AT_MOST of them one a line."""
     if not warnings:
         return
-    import difflib
+    from pantarhei.bridge.theories import unknown_names
 
-    from pantarhei.theory.lexicon import load_vocabulary
-
-    vocab = load_vocabulary()
-    known = sorted(set(vocab.propositions) | set(vocab.expectation_names))
-    for where, what, name in warnings[:WARNINGS_AT_MOST]:
-        near = difflib.get_close_matches(name, known, n=1, cutoff=0.6)
-        hint = f" (did you mean {near[0]}?)" if near else ""
-        print(f"warning: {where}: {what} {name} is not a proposition or expectation of pouring{hint}",
-              file=sys.stderr)
-    if len(warnings) > WARNINGS_AT_MOST:
-        print(f"warning: and {len(warnings) - WARNINGS_AT_MOST} more names that are not propositions "
-              f"or expectations of pouring", file=sys.stderr)
+    unknown_names.print_warnings(warnings, WARNINGS_AT_MOST)
 
 
 #: The most names print_warnings shows one a line (a file of 20,000 unknown

@@ -79,8 +79,9 @@ def _as_is(path: str, copy: Path) -> tuple[str, str, bool]:
 
 def stand_in(path: str, native: Path, pouring: bool) -> tuple[str, str, bool]:
     """A DFL file read and checked by Python (with `pouring`, its unknown
-    names said), written natively into `native` for SWI-Prolog: a
-    stand-in for it, (path, name, checked) as load_theory_files takes it."""
+    names said, as theory/ask.pl finds them at the file's lines), written
+    natively into `native` for SWI-Prolog: a stand-in for it, (path,
+    name, checked) as load_theory_files takes it."""
     from pantarhei.bridge.theories import loading
 
     theory = loading.read_theory(path)

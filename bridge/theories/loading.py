@@ -4,7 +4,6 @@ of the exploration behind it (its `setting/2` facts)."""
 from __future__ import annotations
 
 import re
-import sys
 from pathlib import Path
 
 from pantarhei.bridge.errors import UserError
@@ -48,7 +47,8 @@ def load(paths: Path | str | list | tuple | None = None, check: bool = True,
     added by hand), or the shipped learned theory when none is given.
     With `check`, sup/2 must name rules of the theory. With `pouring`, the
     theory is read as a theory of pouring: a rule that names something the
-    vocabulary does not know gets a warning on stderr (`unknown_names`)."""
+    vocabulary does not know gets a warning on stderr (theory/ask.pl's
+    check: bridge/theories/unknown_names.py)."""
     if paths is None or (isinstance(paths, (list, tuple)) and not paths):
         if not DEFAULT_THEORY.is_file():
             raise UserError(NO_THEORY)
@@ -80,8 +80,8 @@ def load(paths: Path | str | list | tuple | None = None, check: bool = True,
 def check_file(t: Theory, pouring: bool = True) -> None:
     """UserError for a theory file that is empty or whose general rules the
     vocabulary cannot read; with `pouring`, a warning on stderr for each
-    name its rules use that the vocabulary does not know (theory/ask.pl's
-    load_theories/2 checks a native file the same way)."""
+    name its rules use that the vocabulary does not know (the check of
+    theory/ask.pl that `ask` makes of the files it reads)."""
     if not (t.facts or t.rules or t.sup or t.settings or t.extra):
         raise UserError(f"{t.source}: " + check_message("empty_theory"))
     try:
@@ -89,8 +89,9 @@ def check_file(t: Theory, pouring: bool = True) -> None:
     except TheoryFileError as e:
         raise UserError(str(e)) from None
     if pouring:
-        for warning in unknown_names(t):
-            print(f"warning: {warning}", file=sys.stderr)
+        from pantarhei.bridge.theories.unknown_names import print_warnings, unknown_names
+
+        print_warnings(unknown_names(t))
 
 
 def merge(theories: list[Theory]) -> Theory:
@@ -182,46 +183,6 @@ def initial_antecedent(theory: Theory) -> list[str]:
     antecedent a_0 its exploration started from (and which every learned
     rule body therefore contains, or a neighbour of)."""
     return [p for p in settings(theory).get("initial", []) if isinstance(p, str)]
-
-
-def unknown_names(theory: Theory) -> list[str]:
-    """`file:line: ...` for each literal of a rule or fact that names no
-    proposition or expectation of the vocabulary (negated or not), with the
-    nearest known name: such a rule never fires, or concludes nothing a
-    question asks for. A body literal that another rule concludes, and a
-    head that another rule's body uses, are the theory's own words and
-    pass."""
-    import difflib
-
-    from pantarhei.theory.lexicon import load_vocabulary
-
-    vocab = load_vocabulary()
-    known = set(vocab.propositions) | set(vocab.expectation_names)
-
-    def atom(lit: str) -> str:
-        return lit[4:-1] if lit.startswith("neg(") and lit.endswith(")") else lit
-    concluded = {atom(r.head) for r in theory.rules} | {atom(f) for f in theory.facts}
-    used = {atom(b) for r in theory.rules for b in r.body}
-    ordered = sorted(known)
-    out: list[tuple[int, str]] = []
-
-    def unknown(where: str, what: str, lit: str) -> None:
-        name = atom(lit)
-        near = difflib.get_close_matches(name, ordered, n=1, cutoff=0.6)
-        hint = f" (did you mean {near[0]}?)" if near else ""
-        out.append((int(where.rsplit(":", 1)[1]),
-                    f"{where}: {what} {name} is not a proposition or expectation of pouring{hint}"))
-    for r in theory.rules:
-        for b in r.body:
-            if atom(b) not in known and atom(b) not in concluded:
-                unknown(f"{theory.source}:{theory.body_lines.get((r.id, b), theory.lines.get(r.id, 0))}",
-                        f"rule {r.id}: body", b)
-        if atom(r.head) not in known and atom(r.head) not in used:
-            unknown(theory.where(r.id), f"rule {r.id}: head", r.head)
-    for f in theory.facts:
-        if atom(f) not in known and atom(f) not in used:
-            unknown(f"{theory.source}:{theory.body_lines.get(('', f), 0)}", "fact", f)
-    return [w for _, w in sorted(out, key=lambda x: x[0])]
 
 
 def check_general_rules(theory: Theory) -> None:

@@ -64,9 +64,10 @@ BAD = {
 #: confidence past 0 to 1000 is refused first as any rule's (`confidence`).
 NO_NATIVE_FILE = {"general_confidence"}
 #: Messages whose bad files other tests give both readers: a file past 32
-#: MiB (tests/bridge/theories/test_loading.py), and the language of theory
+#: MiB and a name the vocabulary does not know, a warning
+#: (tests/bridge/theories/test_loading.py), and the language of theory
 #: files (the hostile corpus of tests/bridge/theories/test_hostile_theories.py).
-ELSEWHERE = {"too_large", "not_ascii", "expected_fact", "directive",
+ELSEWHERE = {"too_large", "unknown_name", "not_ascii", "expected_fact", "directive",
              "hash_directive", "rule_not_fact", "variable", "float", "list", "not_name",
              "text_escape", "nesting", "int_range", "int_form"}
 #: Two files whose second defines the first's rule again (the message

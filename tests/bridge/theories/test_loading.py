@@ -1,7 +1,9 @@
 """Reading theories (bridge/theories/loading.py): read as a theory of
-pouring (ask, plan, prolog), a rule that names no proposition or
+pouring (ask, plan, prolog, demo), a rule that names no proposition or
 expectation gets a warning with file:line and the nearest known name
-(`unknown_names`), while `conclusions` reads any theory without one; a
+(theory/ask.pl's check, bridge/theories/unknown_names.py's words), the same
+whether SWI-Prolog reads the file (ask, prolog) or Python does (a DFL
+file, plan), while `conclusions` reads any theory without one; a
 path that is no theory file, an empty theory and a missing shipped theory
 are refused in one line; the settings of a theory learned before explore's
 options were renamed read by today's names."""
@@ -13,7 +15,8 @@ import pytest
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.theories import loading
-from pantarhei.bridge.theories.loading import DEFAULT_THEORY, load, unknown_names
+from pantarhei.bridge.theories.loading import DEFAULT_THEORY, load
+from pantarhei.bridge.theories.unknown_names import unknown_names, warning_lines
 from tests.conftest import assert_one_line_error
 
 TYPO_PL = ("% a misspelled rule\n"
@@ -24,11 +27,12 @@ TYPO_DFL = "# a misspelled rule\n\nh1: light_liquid, pour_to_sidee => -no_spil\n
 
 
 def _warnings(path: Path) -> list[str]:
-    return [f"warning: {w}" for w in unknown_names(load(path))]
+    return warning_lines(unknown_names(load(path)))
 
 
 @pytest.mark.parametrize("name,text,lines", [("typo.pl", TYPO_PL, (2, 4)), ("typo.dfl", TYPO_DFL, (3, 3))])
-def test_a_misspelled_rule_is_named_with_the_nearest_word(cli, tmp_path: Path, name, text, lines) -> None:
+def test_a_misspelled_rule_is_named_with_the_nearest_word(cli, capsys, tmp_path: Path, name, text,
+                                                          lines) -> None:
     path = tmp_path / name
     path.write_text(text)
     expected = [f"warning: {path}:{lines[0]}: rule h1: head no_spil is not a proposition or expectation "
@@ -36,6 +40,10 @@ def test_a_misspelled_rule_is_named_with_the_nearest_word(cli, tmp_path: Path, n
                 f"warning: {path}:{lines[1]}: rule h1: body pour_to_sidee is not a proposition or "
                 "expectation of pouring (did you mean pour_to_side?)"]
     assert sorted(_warnings(path)) == sorted(expected)
+    load(path, pouring=True)            # as plan and demo read it
+    assert sorted(capsys.readouterr().err.splitlines()) == sorted(expected)
+    r = cli("prolog", "--theory", str(path), "-g", "true")
+    assert r.code == 0 and sorted(r.err.splitlines()) == sorted(expected), r.err
     r = cli("ask", "--props", "pour_to_side", "--theory", str(path))
     assert r.code == 0, r.err
     assert sorted(x for x in r.err.splitlines() if x.startswith("warning:")) == sorted(expected)

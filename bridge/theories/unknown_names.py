@@ -1,0 +1,68 @@
+"""The names a theory of pouring's rules use that the vocabulary does not
+know, and the warning that says each. The check is theory/ask.pl's alone:
+`ask` (and every command that gives SWI-Prolog the files as written) has
+it made of the files it reads; a theory Python read (a DFL file, or the
+theory a command also reasons with in Python) is handed to the same
+check, its facts at the lines Python read them. The words are
+theory/check_messages.pl's (`unknown_name`), with the nearest known name
+as a hint, said here alone."""
+from __future__ import annotations
+
+import sys
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:       # `ask` says its warnings without the theory's model
+    from pantarhei.bridge.theories.model import Theory
+
+
+def unknown_names(theory: Theory) -> list[tuple[str, str, str]]:
+    """(where, what, name) for each literal of a rule or fact of `theory`
+    that names no proposition or expectation of the vocabulary (negated
+    or not) and that the theory's own rules do not use, by line: as
+    theory/ask.pl's unknown_names/2 finds them (the engine started if it
+    was not)."""
+    from pantarhei.bridge.engines.swipl import engine, text
+
+    rows = []
+    for r in theory.rules:
+        line = theory.lines.get(r.id, 0)
+        rows.append([line, "rule", r.id, r.head])
+        rows.extend([theory.body_lines.get((r.id, b), line), "body", r.id, b] for b in r.body)
+    rows.extend([theory.body_lines.get(("", f), 0), "fact", "", f] for f in theory.facts)
+    if not rows:
+        return []
+    e = engine()
+    e.use_module("ask")
+    found = e.once("ask:unknown_names(Rows, Us)", Rows=rows)["Us"]
+    return [(f"{theory.source}:{line}", text(what), text(name)) for line, what, name in found]
+
+
+def warning_lines(unknown: list[tuple[str, str, str]], at_most: int | None = None) -> list[str]:
+    """`warning: file:line: ...` for each unknown name (where, what, name),
+    with the nearest known name; past `at_most` of them, one line that
+    says how many more."""
+    if not unknown:
+        return []
+    import difflib
+
+    from pantarhei.theory import check_message
+    from pantarhei.theory.lexicon import load_vocabulary
+
+    vocab = load_vocabulary()
+    known = sorted(set(vocab.propositions) | set(vocab.expectation_names))
+    shown = unknown if at_most is None else unknown[:at_most]
+    out = []
+    for where, what, name in shown:
+        near = difflib.get_close_matches(name, known, n=1, cutoff=0.6)
+        hint = f" (did you mean {near[0]}?)" if near else ""
+        out.append(f"warning: {where}: {check_message('unknown_name', what, name)}{hint}")
+    if len(unknown) > len(shown):
+        out.append(f"warning: and {len(unknown) - len(shown)} more names that are not "
+                   f"propositions or expectations of pouring")
+    return out
+
+
+def print_warnings(unknown: list[tuple[str, str, str]], at_most: int | None = None) -> None:
+    """warning_lines on stderr."""
+    for line in warning_lines(unknown, at_most):
+        print(line, file=sys.stderr)
