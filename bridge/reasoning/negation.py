@@ -48,3 +48,15 @@ def still_between(a: str, b: str, props) -> bool:
     ra, rb = (props[n].model for n in (a, b))
     return (all(hasattr(r, "low") and hasattr(r, "high") for r in (ra, rb))
             and min(ra.high, rb.high) < 0 < max(ra.low, rb.low))
+
+
+def ordinary_among(names: list[str], vocab) -> str | None:
+    """The one of `names` that says what the ordinary pour does (its range
+    the prior of its parameter: "not heavy" leaves a light bowl or one of
+    medium weight, and the ordinary pour's bowl is of medium weight), or
+    None when none does, or several."""
+    priors = {p.name: (p.prior_low, p.prior_high) for p in vocab.parameters}
+    found = [n for n in names if vocab.propositions[n].model.kind == "uniform"
+             and (vocab.propositions[n].model.low, vocab.propositions[n].model.high)
+             == priors[vocab.propositions[n].model.param]]
+    return found[0] if len(found) == 1 else None

@@ -191,6 +191,9 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
         beside = [k for k in sides if k in near]
         cues = {cue_of[tokens[k].word] for k in near}        # "tilt" picks a pitch, as a cue
         choosing = {cue_of[tokens[beside[0]].word]} | (cues & {"below", "offset"}) if beside else cues
+        if q.measures == "length" and not choosing and i > 1 and tokens[i - 1].word == "from" \
+                and tokens[i - 2].word == "pour":
+            choosing = {"height"}           # "pour from 40 cm": the height poured from
         if q.measures == "time" and any(cue_of.get(tokens[k].word) in CUES["pitch"] for k in range(
                 max(0, i - 8), i) if tokens[k].clause == tokens[i].clause):
             choosing = choosing | {"tilt"}          # "tilted to 90 degrees over 2 s": the tilting's time

@@ -46,15 +46,17 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.reasoning.negation import NEGATION_STEMS, covered, scope, scope_ends, still_between
+from pantarhei.bridge.reasoning.negation import (NEGATION_STEMS, covered, ordinary_among, scope, scope_ends,
+                                                 still_between)
 from pantarhei.bridge.reasoning.nouns import ARTICLES, BOWL, CONTEXT, OBJECT_STEMS, Nouns, roles
 from pantarhei.bridge.reasoning.outcomes import FOLLOWS, follows, hear
 from pantarhei.bridge.reasoning.quantities import read_numbers
 from pantarhei.bridge.reasoning.seeking import if_it_can
 from pantarhei.bridge.reasoning.spelling import corrected
-from pantarhei.bridge.reasoning.stages import MARKER_STEMS, MOVE, POSE, SAME, same_at_the_end, stages
+from pantarhei.bridge.reasoning.stages import (MARKER_STEMS, MOVE, POSE, SAME, ordinary_tilt, plain_tilts,
+                                               same_at_the_end, stages)
 from pantarhei.bridge.reasoning.wording import Token, names_written, normalising, stem, tokens as words_of
-from pantarhei.bridge.reasoning.suggestions import hints as phrasings, misspelt
+from pantarhei.bridge.reasoning.suggestions import hints as phrasings, misspelt, refuse_unplaced
 from pantarhei.bridge.reasoning.words import FILLERS, UNCLEAR, rewrites
 from pantarhei.theory.lexicon import load_vocabulary
 
@@ -201,7 +203,7 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
         if name not in names:
             names.append(name)
 
-    out = []
+    out, spoken = [], []
     for dim, names in said.items():
         if len(names) > 1:
             a, b = sorted(names)[:2]
@@ -218,24 +220,31 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
         if len(others) == 1:
             out.append(others[0])
             continue
+        if ordinary_among(others, vocab):        # "isn't heavy": the ordinary pour's bowl, said back
+            out.append(ordinary_among(others, vocab))
+            spoken.append(f"not {', '.join(names)}: {out[-1]}, as in the ordinary pour")
+            continue
         raise UserError(f"not {', '.join(names)} leaves {_or(others)}: say which one (or give "
                         f"--props P1,P2)" if others
                         else f"\"{question}\" excludes every value of {dim}")
-    _refuse_unplaced(question, tokens, accepted, lex)
+    plain = plain_tilts(tokens, set().union(set(), *(p for _, p in accepted)), negated_at)
+    refuse_unplaced(question, tokens, set().union(plain, *(p for _, p in accepted)), lex)
     out += same_at_the_end(tokens, out, vocab)
-    if not accepted and not _ordinary(tokens, lex, bool(outcome.asked or outcome.goals)):
+    if not accepted and not plain and not _ordinary(tokens, lex, bool(outcome.asked or outcome.goals)):
         unknown = list(dict.fromkeys(t.raw for t in tokens if t.word not in lex.known))
         hint = ([FOLLOWS] if follows(text) else []) + [h for p, h in phrasings() if any(
             re.search(p, w) for w in unknown)] + misspelt(unknown)
         said = ("could not place " + ", ".join(f'"{w}"' for w in unknown) + ": ") if unknown else ""
         raise UserError(f"understood none of \"{question}\": {said}" + (hint[0] if hint else (
             "describe the scene with the words of `pantarhei vocab`, or give --props P1,P2")))
-    taken = set().union(set(), *(p for _, p in accepted))
+    taken = set().union(plain, *(p for _, p in accepted))
     structural = _IGNORED | NEGATION_STEMS | set(OBJECT_STEMS) | {BOWL} | set(MARKER_STEMS)
     ignored = [t.raw for i, t in enumerate(tokens) if i not in taken and t.word not in structural
                and t.word not in SAME]
     heard = [t.raw for t in tokens if t.raw not in ignored or t.said_back]    # said back: heard
-    notes = typed + tuple(dict.fromkeys(f"{t.raw}: {t.said_back}" for t in tokens if t.said_back))
+    notes = typed + tuple(dict.fromkeys([*(f"{t.raw}: {t.said_back}" for t in tokens if t.said_back),
+                                         *(f"{tokens[i].raw}: {ordinary_tilt()}" for i in sorted(plain)),
+                                         *spoken]))
     noted = {t.raw for t in tokens if t.said_back}
     manners = any(vocab.dimensions[props[n].dimension].role == "manner" for n in out)
     can, goals = if_it_can(text, outcome.goals, manners)     # "can I pour high without spilling?"
@@ -365,35 +374,6 @@ def _agrees(name: str, first: int, last: int, noun: Nouns, lex: _Lexicon) -> boo
     # how much liquid there is, said of the source: "a full cup", "a source full of liquid"
     return (which == "liquid" and name in lex.amounts and not noun.names_destination(at)
             and not noun.poured_into(at))
-
-
-def _refuse_unplaced(question: str, tokens: list[Token], accepted, lex: _Lexicon) -> None:
-    """UserError naming the words of the question that were not read: value
-    words that fit nothing said ("pour light": the light what?) and, when
-    something else was read, words the vocabulary does not know (a question
-    with nothing read is read_question's to answer as the ordinary pour or
-    to refuse); with the phrasings that would be read, where there are some."""
-    read = set().union(*(p for _, p in accepted))
-    words: dict[str, None] = {}           # in order, each once
-    value_words: dict[str, None] = {}
-    for i, t in enumerate(tokens):
-        if i not in read and (t.word in lex.placeable or (accepted and t.word not in lex.known)):
-            words.setdefault(t.raw)
-            if t.word in lex.saying:
-                value_words.setdefault(t.word)
-    if not words:
-        return
-    said = ", ".join(f'"{w}"' for w in words)
-    hints = list(dict.fromkeys(h for pattern, h in phrasings()
-                               if any(re.search(pattern, w) for w in words)))
-    if not hints and value_words:
-        glosses = list(dict.fromkeys(g for w in value_words for g in lex.saying[w]))
-        if len(glosses) <= 4:
-            hints = ["would be read: " + ", ".join(f'"{g}"' for g in glosses)]
-    hints += misspelt([t.raw for t in tokens if t.word not in lex.known])
-    hint = "; ".join(hints) if hints else ("describe the scene with the words of `pantarhei "
-                                          "vocab`, or give --props P1,P2")
-    raise UserError(f"could not place {said} in \"{question}\": {hint}")
 
 
 def _or(names: list[str]) -> str:

@@ -89,3 +89,31 @@ def same_at_the_end(tokens: list[Token], scene: list[str], vocab) -> list[str]:
                             f"halfway\", \"end to the side\")")
         out += copied
     return out
+
+
+def ordinary_tilt() -> str:
+    """What `ask` says of a tilt said with no amount ("tip the jug over the
+    rim"): the ordinary pour's, its range the prior's of the tilt."""
+    from pantarhei.theory.lexicon import load_vocabulary
+
+    tilt = next(p for p in load_vocabulary().parameters if p.name == "pour_pitch")
+    return f"tilted as the ordinary pour is ({tilt.prior_low} to {tilt.prior_high} degrees from upright)"
+
+
+def plain_tilts(tokens: list[Token], read: set[int], negated: set[int]) -> frozenset[int]:
+    """The positions of a verb of tilting said of the pour with no amount
+    and nothing else reading it ("tip the jug right in over the rim", "keep
+    it tilted and move it a bit to the left"): pouring is tilting, so it
+    says the ordinary pour's tilt, which is what a scene leaves unsaid. A
+    tilt negated, said of the start, the end or a move, said with a number
+    its clause does not read ("tilt it 3 times"), or one that falls ("does
+    the jug tip over?") is not one."""
+    stage = stages(tokens)
+    counted = {t.clause for k, t in enumerate(tokens) if k not in read and t.word[:1].isdigit()}
+
+    def falls(i: int) -> bool:
+        after = [t.word for t in tokens[i + 1:i + 3] if t.clause == tokens[i].clause]
+        return after[:1] == ["over"] and after[1:] not in (["the"], ["a"], ["an"], ["it"])
+    return frozenset(i for i, t in enumerate(tokens)
+                     if t.word == "tilt" and i not in read and i not in negated
+                     and stage[i] == "pour" and t.clause not in counted and not falls(i))

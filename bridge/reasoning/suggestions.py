@@ -8,7 +8,9 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
+from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.everyday import alternation, names, sections
+from pantarhei.bridge.reasoning.wording import Token
 from pantarhei.bridge.reasoning.words import PHRASES
 from pantarhei.theory.lexicon import load_vocabulary
 
@@ -89,8 +91,8 @@ HINTS: tuple[tuple[str, str], ...] = (
                           'sideways"'),
     (r"\b(?:left|right)", 'left or right: the vocabulary\'s offset names no side: say "offset '
                            'sideways", "from the side" or "in line with the bowl"'),
-    (r"^(?:tilt|tip|angl|inclin|lean)\w*(?: \w+)*? (?:a lot|lots|loads|heaps)$",
-     'a lot: tilted how far? say "tilted halfway", "steeply tilted" or "upside down"'),
+    (r"^(?:tilt|tip|angl|inclin|lean)\w*(?: \w+)*? (?:too |so |that |very )?far$",
+     'tilted too far: how far? say "steeply tilted" or "upside down"'),
     (r"horizontal$", 'measured from the horizontal: say the tilt from upright ("tilted 60 degrees", '
                       '"tilted 110 degrees"), or "steeply tilted" for about level'),
     (r"^(?:sideways|laterally|lateral|sidewise)$",
@@ -123,3 +125,32 @@ def hints() -> tuple[tuple[str, str], ...]:
         (rf"{onto}(?:{alternation(names('liquid'))})$",
          "the destination is empty before the pour: the vocabulary says nothing of pouring "
          "into a liquid"))
+
+
+def refuse_unplaced(question: str, tokens: list[Token], read: set[int], lex) -> None:
+    """UserError naming the words of the question that were not read: value
+    words that fit nothing said ("pour light": the light what?) and, when
+    something else was read, words the vocabulary does not know (a question
+    with nothing read is read_question's to answer as the ordinary pour or
+    to refuse); with the phrasings that would be read, where there are some.
+    `read`: the positions read; `lex`: reading.py's lexicon."""
+    words: dict[str, None] = {}           # in order, each once
+    value_words: dict[str, None] = {}
+    for i, t in enumerate(tokens):
+        if i not in read and (t.word in lex.placeable or (read and t.word not in lex.known)):
+            words.setdefault(t.raw)
+            if t.word in lex.saying:
+                value_words.setdefault(t.word)
+    if not words:
+        return
+    said = ", ".join(f'"{w}"' for w in words)
+    offered = list(dict.fromkeys(h for pattern, h in hints()
+                                 if any(re.search(pattern, w) for w in words)))
+    if not offered and value_words:
+        glosses = list(dict.fromkeys(g for w in value_words for g in lex.saying[w]))
+        if len(glosses) <= 4:
+            offered = ["would be read: " + ", ".join(f'"{g}"' for g in glosses)]
+    offered += misspelt([t.raw for t in tokens if t.word not in lex.known])
+    hint = "; ".join(offered) if offered else ("describe the scene with the words of `pantarhei "
+                                          "vocab`, or give --props P1,P2")
+    raise UserError(f"could not place {said} in \"{question}\": {hint}")

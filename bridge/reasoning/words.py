@@ -110,13 +110,24 @@ PHRASES: tuple[tuple, ...] = (
     ("approach fast ; retreat fast ; pour", (
         r"re:\b(?:a |an )?(?:quick|fast|rapid|swift|brisk|sudden|snappy)(?: in(?: and)? out| in and"
         r" then out)(?: (?:motion|movement|move|moves|path|trajectory|action))?\b",
-        r"re:\bin(?: and)? out (?:quickly|fast|rapidly|swiftly|briskly)\b")),
+        r"re:\bin(?: and)? out (?:quickly|fast|rapidly|swiftly|briskly)\b",
+        # moving fast, with no way said: both moves ("if I move fast")
+        r"re:\bmov(?:e|es|ed|ing)(?: it| the \w+| them)? (?:really |very |too |quite )?(?:fast|quickly|quick"
+        r"|rapidly|swiftly|briskly)\b(?! (?:in|into|to|towards?|away|out|off|back|up|down|over|from|before"
+        r"|after|then)\b)")),
     ("approach slowly ; retreat slowly ; pour", (
         r"re:\b(?:a |an )?(?:slow|gentle|careful|gradual|leisurely)(?: in(?: and)? out| in and"
         r" then out)(?: (?:motion|movement|move|moves|path|trajectory|action))?\b",
-        r"re:\bin(?: and)? out (?:slowly|gently|carefully|gradually)\b")),
-    # tilted a lot: halfway, steeply or upside down?
-    (UNCLEAR, (r"re:\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:a lot|lots|loads|heaps)\b",)),
+        r"re:\bin(?: and)? out (?:slowly|gently|carefully|gradually)\b",
+        r"re:\bmov(?:e|es|ed|ing)(?: it| the \w+| them)? (?:really |very |too |quite )?(?:slowly|slow"
+        r"|gently|carefully|gradually)\b(?! (?:in|into|to|towards?|away|out|off|back|up|down|over|from"
+        r"|before|after|then)\b)")),
+    # tipped too far: past what? (not far from the bowl)
+    (UNCLEAR, (r"re:\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:too |so |that |very )?far\b"
+               r"(?! (?:from|away|off|to)\b)",)),
+    # tilted a lot: steeply (the most before upside down, which "all the way" says)
+    ("steeply tilted", (r"re:\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:(?:quite |really |very )?a lot"
+                        r"|lots|loads|heaps)\b",)),
     # tilting has no speed in the vocabulary: how far, not how fast
     (UNCLEAR, (r"re:\b(?:tilt|tip|rotat|turn)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
                r" (?:slow(?:ly|er)?|fast(?:er)?|quick(?:ly|er)?|rapidly|gradually|steadily)\b",
@@ -161,8 +172,9 @@ PHRASES: tuple[tuple, ...] = (
                  r"|a little|away|over|towards|past|beyond|more|up to|unclear|out|at \d|\d)\b)(?: (?:it|the \w+))?"
                  r"(?: at all)?",
                  r"re:\bno tilt(?: at all)?\b")),
-    (UNCLEAR, (r"re:\b(?:not|without) (?:be |being )?(?:tilt|tip|lean)\w*\b(?: (?:it|the \w+))?"
-               r" (?:too |very |so |that )?(?:much|a lot|far)\b",
+    ("slightly tilted", (r"re:\b(?:not|without) (?:be |being )?(?:tilt|tip|lean)\w*\b(?: (?:it|the \w+))?"
+                         r" (?:too |very |so |that )?(?:much|a lot|far)\b",)),
+    (UNCLEAR, (
                # pouring has no speed of its own: the moves in and out have
                r"re:(?<!after )(?<!before )\bpour(?:s|ed|ing)?(?: (?:it|the \w+|really|very|too|more|a bit|quite))*"
                r" (?:slow(?:ly|er)?|fast(?:er)?|quick(?:ly|er)?|gently|carefully|rapidly)\b",
@@ -246,7 +258,11 @@ PHRASES: tuple[tuple, ...] = (
                      r"re:\b(?:turn|flip)(?:s|ed|ing|ped|ping)? (?:it|the \w+|them) over\b")),
     # tipped out: poured ("tip the milk out into a bowl")
     ("pour", (r"re:\btip(?:s|ped|ping)?\b(?= (?:(?:it|them|the \w+|a \w+) )?out\b)",)),
-    # tilted all the way: how far, steeply or upside down?
+    # tilted all the way, or tipped right over: upside down; "all the way" said of nothing
+    # tilted is refused (all the way where?); "tip it over the bowl" is where it pours
+    ("upside down", (r"re:\b(?:tilt|tip|turn|lean|angl|inclin)\w*(?: (?:it|them|the \w+))?(?: (?:like|just))?"
+                     r" (?:all the way|right over|fully|completely)\b(?! (?:the|a|an|my|your|its|over|in"
+                     r"|into|to|towards?|from|across|back|up|down|above|onto)\b)",)),
     (UNCLEAR, (r"re:\ball the way\b(?! (?:over|upside|up|down|in|into|to|from|across|back|around"
                r"|round|through)\b)",)),
     # tipped all the way over: upside down (the bowl it is said of is nouns.py's to place)

@@ -13,6 +13,7 @@ import pytest
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.reading import read_question, understand
 from pantarhei.bridge.reasoning.words import FILLERS
+from pantarhei.theory.lexicon import load_vocabulary
 
 #: question -> the propositions it means, sorted
 READ = {
@@ -161,7 +162,6 @@ READ = {
 #: questions to refuse in one line
 REFUSED = [
     'If I pour slowly from a low height, does the destination stay upright?',
-    'Pour viscous liquid from a tilted source.',
     "don't pour from high up",
     'never pour upside down',
     'pour more liquid',
@@ -177,7 +177,6 @@ REFUSED = [
     'a bouncy ball',
     'a heavier liquid',
     'an empty cup',
-    "don't tilt the cup much",
     'either pour from the side or from far away',
     'end with the cup tilted back',
     'move in slow then pour fast',
@@ -205,7 +204,6 @@ REFUSED = [
     'the destination is not light, not heavy',
     'the source bumps into the destination',
     'the source is heavier than the destination',
-    "what if I don't move in fast?",
     'what if I pour really slowly?',
     'what if the bowl moves?',
     'what if the cup is only half full?',
@@ -412,6 +410,26 @@ READ_TOO = {
     # an amount with no liquid after it; tipped all the way over
     'pour a lot': ['much_liquid'],
     'what if I tip the cup all the way over?': ['pour_upside_down'],
+    # a tilt with no amount is the ordinary pour's (pouring is tilting); a lot is steeply,
+    # all the way upside down, not much slightly
+    'if I tip the cup, will it spill?': [],
+    'Pour viscous liquid from a tilted source.': ['sticky_liquid'],
+    'tip the jug near the rim of the bowl': ['pour_near_rim'],
+    'tip it and pour from the side': ['pour_to_side'],
+    'pour from the side, tilted': ['pour_to_side'],
+    'will it spill if the cup is tipped a lot': ['pour_steeply_tilted'],
+    'tilt the jug all the way, does any stay in the bowl': ['pour_upside_down'],
+    'tip it right over': ['pour_upside_down'],
+    'without tilting it much': ['pour_slightly_tilted'],
+    "don't tilt the cup too much": ['pour_slightly_tilted'],
+    # not one extreme, where the ordinary pour holds one value: that value, said back
+    "if the bowl isn't heavy, does it tip over": ['medium_destination'],
+    "don't move in fast": ['moderate_approach'],
+    # moving fast or slowly with no way said: both moves
+    'what if I move fast': ['fast_approach', 'fast_retreat'],
+    'the arm moves slowly, does it spill': ['slow_approach', 'slow_retreat'],
+    # poured from a length: its height
+    'pour from 40 cm': ['pour_very_high'],
 }
 
 #: Refused in one line, naming what would be read: question -> words the refusal holds
@@ -432,10 +450,9 @@ REFUSED_SAYING = {
     'pour slowly': 'move in slowly',
     'pour fast': 'move in slowly',
     'pour it gently': 'move in slowly',
-    'will the source move slowly?': '"move to the pouring pose slowly"',
-    'without tilting it much': '"slightly tilted" or "upright"',
     'leave it tilted': 'tilted how far?',
-    'pour from the side, tilted': 'tilted how far?',
+    'start tilted and pour low': 'tilted how far?',
+    'pour it all the way': 'all the way: tilted how far?',
     # what the vocabulary cannot say stays refused, naming why
     'pour hot milk': 'how hot or cold the liquid is',
     'pour milk at 80 degrees celsius': 'how hot or cold the liquid is',
@@ -451,7 +468,6 @@ REFUSED_SAYING = {
     'pour the milk into the sink': 'the vocabulary pours into a bowl',
     'what if the bowl is on a slippery counter?': 'could not place "slippery"',
     'the table is slippery, will the bowl slide?': 'could not place "slippery"',
-    'if I tip the cup, will it spill?': 'tilted how far?',
     'pour batter slowly into a pan': 'pouring has no speed of its own',
     'what if the jug bonks the bowl?': 'could not place "bonks"',
     'what if the milk spills?': 'asks what follows an outcome',
@@ -496,6 +512,16 @@ def test_everyday_words_are_said_back():
     r = read_question("pour milk into a light plastic cup")
     assert any(n.startswith("milk: read as an ordinary liquid") for n in r.notes)
     assert any(n.startswith("plastic: ignored") for n in r.notes)
+
+
+def test_what_stands_for_the_ordinary_pour_is_said_back():
+    tilt = next(p for p in load_vocabulary().parameters if p.name == "pour_pitch")
+    r = read_question("tip the jug over the bowl")
+    assert r.scene == () and f"tip: tilted as the ordinary pour is ({tilt.prior_low} to " \
+        f"{tilt.prior_high} degrees from upright)" in r.notes
+    r = read_question("if the bowl isn't heavy")
+    assert r.scene == ("medium_destination",)
+    assert "not heavy_destination: medium_destination, as in the ordinary pour" in r.notes
 
 
 @pytest.mark.parametrize("question", sorted({*READ, *READ_TOO, *HEARD}))

@@ -44,7 +44,7 @@ def test_everyday_words_are_read_as_the_vocabulary(question, props):
 
 
 @pytest.mark.parametrize("question,words", [
-    ("do not move in fast", "not fast_approach leaves moderate_approach or slow_approach"),
+    ("do not pour very high", "not pour_very_high leaves"),
     ("don't pour far from the cup", "not pour_far_away leaves"),
     ("a light and heavy cup", "says both heavy_destination (a heavy destination bowl) and "
                               "light_destination"),
