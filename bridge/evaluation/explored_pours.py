@@ -18,6 +18,7 @@ from pantarhei.theory import defaults
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.exploration.simulation import Draw, drawn_pours, trace_draws
 from pantarhei.bridge.exploration.trace import trace_path
+from pantarhei.bridge.reasoning.written_theory import as_written
 from pantarhei.bridge.theories import loading
 from pantarhei.bridge.theories.model import Theory, antecedent_id
 
@@ -93,11 +94,12 @@ def one_layer(settings: Mapping[str, Any]) -> bool:
 def read_learned(path: Path | str) -> Learned:
     """Read a learned theory and its trace; UserError if the file lacks
     the exploration's settings (a hand-written theory, say) or its trace
-    cannot be read."""
+    cannot be read. SWI-Prolog is given the file as written
+    (written_theory.as_written), as long as the theory is unchanged."""
     from pantarhei.bridge.learning.learners import known_recorded_learner
 
     path = Path(path)
-    theory = loading.load([path])
+    theory = as_written(loading.load([path]), [path])
     settings = loading.settings(theory)
     if not settings.get("seed") or not settings.get("batch"):
         raise UserError(f"{path}: not a theory written by `pantarhei explore` "

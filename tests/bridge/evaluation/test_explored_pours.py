@@ -106,3 +106,34 @@ def test_a_theory_is_one_layer_as_its_recorded_curiosity_lays_it_out(toy_curiosi
 
 def test_a_learned_theory_of_the_discovering_curiosity_is_two_layers(learned):
     assert not read_learned(learned[0]).one_layer
+
+
+def test_swi_prolog_answers_the_learned_theory_from_its_file_as_written(learned, monkeypatch):
+    """The evaluation's answers of the learned theory (rule_building's
+    answer_matrix, paper_rules' what_happens) are SWI-Prolog's of the file
+    as written, not of Python's text of it, and the same as the text's;
+    a theory built in Python (theory_of) has no file and is given as text."""
+    from pantarhei.bridge.engines.swipl import Engine, engine
+    from pantarhei.bridge.evaluation.rule_building import answer_matrix, theory_of
+    from pantarhei.bridge.reasoning import logic
+    from pantarhei.bridge.reasoning.answers import what_happens
+
+    L = read_learned(learned[0])
+    scenes = [(), ("pour_to_side",), ("light_liquid", "pour_low")] + \
+        list(dict.fromkeys(tuple(sorted(r.body)) for r in L.theory.rules))[:12]
+    with monkeypatch.context() as m:
+        m.setattr(logic, "load_as_written", lambda theory: None)    # Python's text
+        as_text = answer_matrix(L.theory, scenes), what_happens(L.theory, list(scenes[1]))
+    given, load_text = [], Engine.load_theory_file
+
+    def text_given(self, path: str, source: str) -> None:
+        given.append(source)
+        load_text(self, path, source)
+    monkeypatch.setattr(Engine, "load_theory_file", text_given)
+    engine().theory_digest = ""         # as in a new process: nothing read yet
+    pred, lik = answer_matrix(L.theory, scenes)
+    assert (pred == as_text[0][0]).all() and np.array_equal(lik, as_text[0][1], equal_nan=True)
+    assert what_happens(L.theory, list(scenes[1])) == as_text[1]
+    assert given == []
+    answer_matrix(theory_of([("pour_low",)], np.ones((1, 9), dtype=bool), "in memory"), scenes[:1])
+    assert given == ["in memory"]
