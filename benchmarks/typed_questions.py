@@ -98,18 +98,32 @@ def pooled(measures: list[dict]) -> dict:
     return {k: None if measures[0][k] is None else sum(m[k] for m in measures) for k in keys}
 
 
+def blind(path: Path) -> str | None:
+    """What the file's header says its first measurement found, before the
+    reader was changed for it (`# blind: ...`, continued on the next
+    header line), or None."""
+    lines = path.read_text(encoding="utf-8").splitlines()
+    for i, line in enumerate(lines):
+        if line.startswith("# blind: "):
+            more = lines[i + 1][2:] if i + 1 < len(lines) and lines[i + 1].startswith("# ") else ""
+            return f"{line[len('# blind: '):]} {more}".strip()
+    return None
+
+
 def main() -> None:
     measures = []
     for path in question_files():
         measures.append(measure(path))
         report(f"held-out questions typed by a writer who had not seen the vocabulary "
-               f"({path.name})", measures[-1])
+               f"({path.name})", measures[-1], blind(path))
     if len(measures) > 1:
         report("all held-out questions, pooled", {**pooled(measures), "wrong": []})
 
 
-def report(title: str, m: dict) -> None:
-    """Print one measure's figures under `title`, then what it got wrong."""
+def report(title: str, m: dict, first: str | None = None) -> None:
+    """Print one measure's figures under `title`, what the first
+    measurement found (`first`, where the file says), then what it got
+    wrong."""
     share = m["read as meant"] / m["expressible"] if m["expressible"] else 0.0
     print(f"{title}: {m['questions']}, {m['expressible']} expressible")
     print(f"  read as meant:               {m['read as meant']} of {m['expressible']} "
@@ -119,6 +133,8 @@ def report(title: str, m: dict) -> None:
     print(f"  misread (target 0):          {m['misread']}")
     print(f"  silent drops (target 0):     {m['silent drops']}")
     print(f"  refusals in one line:        {m['refused in one line']} of {m['refused']}")
+    if first:
+        print(f"  first measured blind:        {first}")
     for line in m["wrong"]:
         print(f"    {line}")
 
