@@ -60,7 +60,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      ("no_spill",), True),
     (r"(?:stay|stays|remain|remains|keep|keeps) (?:upright|standing)", ("destination_upright",), False),
     (r"tip(?:s|ped|ping)?(?: over)?|toppl\w*|(?:fall|falls|falling|fell) (?:over|down)|knock\w*(?: it| the \w+)? over"
-     r"|turn\w* over|flip\w*|capsiz\w*|overturn\w*|keel\w* over|tumbl\w*"
+     r"|turn\w* over|flip\w*|capsiz\w*|overturn\w*|keel\w* over|tumbl(?:e|es|ed|ing)\b"
      r"|(?:fall|falls|fell)\b(?! (?:in|into|inside|out|off|on|onto)\b)", ("destination_upright",), True),
     (r"(?:stay|stays|remain|remains|keep|keeps|be|is) (?:still|put|in place|steady|stable|stationary"
      r"|where it is)", _STILL, False),
@@ -105,7 +105,9 @@ _HOLDING = {"robot", "arm", "gripper", "hand"}
 _REST = ("at all times|all the time|the whole time|at any point|at any time|throughout|on|onto|over|out|of|in|into|inside|outside|the|a|an|table|floor|counter|worktop|top|"
          "ground|place|everywhere|anywhere|at|all|any|anything|it|its|liquid|water|bowl|cup|glass|"
          "destination|source|target|container|rim|edge|sides?|much|too|even|ever|really|very|"
-         "up|down|off|away|again|then|across|along|around|against|between")
+         "up|down|off|away|again|then|across|along|around|against|between|"
+         # how much it happens ("does it shift a little"): the outcome's, not an amount of liquid
+         "little|bit|lot|slightly|tiny")
 #: How much of the liquid an outcome is asked of ("does most of it spill"), or its odds ("is
 #: the risk of spilling high"): the outcome's words, not the scene's ("some of it" is no
 #: some_liquid).
@@ -232,6 +234,32 @@ def _around() -> Matcher:
     return Matcher(names("context"))
 
 
+@lru_cache(maxsize=None)
+def _containers() -> Matcher:
+    """The names of everyday.txt's bowls, those poured from among them."""
+    return Matcher(names("bowl"))
+
+
+def _striker(subject: list[str], names: tuple[str, ...], m: re.Match) -> list[str]:
+    """`subject`, with the bowl that strikes another said as the source: what
+    hits a bowl, or knocks it over, is the source ("does a heavy pot hit the
+    bowl": a heavy source, not a heavy destination); not one hit ("is the
+    bowl hit"), nor where no bowl is struck."""
+    verb = next((v for g, v in m.groupdict().items() if g[0] == "v" and v), "")
+    contact = names == ("source_clear",) or (names == ("destination_upright",) and verb.startswith("knock"))
+    spans = _containers().spans(subject)
+    if not (contact and spans and m.group("aux") in _MODALS.split("|")) or "by" in subject:
+        return subject
+    after = m.string[m.end():m.end() + 60].split()[:4]
+    struck = f"{verb} {m.group('rest') or ''} {' '.join(after)}"
+    if not re.search(rf"\b(?:{destinations()})\b", struck):
+        return subject
+    end = spans[0][1]
+    for first, last in spans[1:]:       # "a glass tumbler": one bowl's name
+        end = last if first == end else end
+    return [*subject[:end], "as", "the", "source", *subject[end:]]
+
+
 def _state(m: re.Match) -> bool:
     """Whether an asked clause says how full the source is, or how it is
     held, not what happens: "the jug is almost empty", "if the jug is
@@ -291,7 +319,7 @@ def hear(text: str) -> Heard:
         # outcome is asked of, not how much the source holds
         while subject and subject[0] in _QUANTIFIERS:
             subject = subject[1:]
-        kept = " ".join(subject) if m.group("aux") or m.group("chance") else ""
+        kept = " ".join(_striker(subject, names, m)) if m.group("aux") or m.group("chance") else ""
         # "is the chance of spilling high": the odds, heard; "does it splash high": the scene's
         odds = m.group("odds") or ""
         said_odds = bool(m.group("chance") or _PART_OF.search(kept))
