@@ -18,7 +18,8 @@ A file is given as its path, or as =|file(Path, Name)|= to name it Name in
 errors and warnings, or =|file(Path, Name, checked)|= when the file read is
 a stand-in for another that was read and checked already (a DFL file that
 Python read and wrote out natively): then only what concerns the merged
-theory is checked.
+theory is checked, and the names of Name at the lines its
+=|written_at(Line, Kind, Rule, Literal)|= facts give (unknown_names/2).
 */
 
 :- use_module(theory_files).
@@ -47,9 +48,7 @@ theory is checked.
 %   =|provenance(R, layer, general)|=) of the vocabulary's propositions and
 %   expectations, with evidence in range; a rule name defined in one file
 %   only; sup/2 naming rules; the superiority relation acyclic. Warnings
-%   holds =|unknown(Where, What, Name)|= for each literal that names
-%   nothing of the vocabulary and that no other rule uses (such a rule
-%   never fires, or concludes nothing a question asks for), in file order.
+%   holds =|unknown(Where, What, Name)|= for each of unknown_lines/2.
 %
 %   @error theory_error(Name, Line, Message), Line 0 where no line is meant.
 load_theories(Files, Warnings) :-
@@ -82,9 +81,12 @@ read_theory(file(Path, Name, Kind), read(Name, LineFacts, Kind)) :-
           theory_error(_, Line, M),
           throw(theory_error(Name, Line, M))).
 
-% check_read(+read(Name, LineFacts, Kind), -Warnings): one file's own
-% checks (none for a stand-in, =checked= before).
-check_read(read(_, _, checked), []) :- !.
+% check_read(+read(Name, LineFacts, Kind), -Warnings): one file's own checks;
+% of a stand-in (=checked= before) its names, at its written_at/4 rows' lines.
+check_read(read(Name, LineFacts, checked), Warnings) :- !,
+    findall([L, K, R, Lit], member(_-written_at(L, K, R, Lit), LineFacts), Rows),
+    unknown_names(Rows, Unknown),
+    named_lines(Name, Unknown, Warnings).
 check_read(read(Name, LineFacts, _), Warnings) :-
     (   member(_-F, LineFacts), \+ aside(F)
     ->  true
@@ -92,8 +94,11 @@ check_read(read(Name, LineFacts, _), Warnings) :-
         throw(theory_error(Name, 0, M))
     ),
     check_general_rules(Name, LineFacts),
-    unknown_lines(LineFacts, Found),
-    findall(unknown(Where, What, T), ( member(Line-unknown(What, T), Found),
+    unknown_lines(LineFacts, Unknown),
+    named_lines(Name, Unknown, Warnings).
+
+named_lines(Name, Unknown, Warnings) :-
+    findall(unknown(Where, What, T), ( member([Line, What, T], Unknown),
                                        format(string(Where), "~w:~w", [Name, Line]) ), Warnings).
 
 % aside(+Fact): a fact that alone makes no theory (it says something of a
@@ -245,34 +250,31 @@ check_evidence(_, _, _, _, _).
 
 %!  unknown_names(+Rows:list, -Unknown:list) is det.
 %
-%   unknown_lines/2 of a theory Python read (a DFL file, or the theory a
-%   command reasons with in Python), so that the check is written here
-%   alone: Rows its facts at the lines Python read them, =|[Line, rule, R,
-%   Head]|=, =|[Line, body, R, Literal]|= or =|[Line, fact, _, Literal]|=,
-%   a literal as its text; Unknown =|[Line, What, Name]|= for each found.
+%   unknown_lines/2 of a theory Python read (a DFL file, or one a command
+%   reasons with in Python), Rows its facts at the lines read: =|[Line,
+%   rule|body|fact, R, Literal]|=, a literal as a term or its text.
 unknown_names(Rows, Unknown) :-
     must_be(list, Rows),
     maplist(row_fact, Rows, LineFacts),
-    unknown_lines(LineFacts, Found),
-    findall([Line, What, T], member(Line-unknown(What, T), Found), Unknown).
+    unknown_lines(LineFacts, Unknown).
 
-row_fact([Line, Kind, R, Text], Line-F) :-
-    term_string(L, Text),
-    must_be(oneof([rule, body, fact]), Kind),
+row_fact([Line, Kind, R, L0], Line-F) :-
+    (   compound(L0) -> L = L0 ; term_string(L, L0) ),
     memberchk(Kind-F, [rule-rule(R, defeasible, L), body-body(R, L), fact-fact(L)]).
 
-% unknown_lines(+LineFacts, -Found): Line-unknown(What, LiteralName) by
-% line for each literal naming nothing of the vocabulary that the theory's
-% own rules do not use (a body no rule or fact concludes, a head or fact no
-% body uses): such a rule never fires, or concludes nothing asked for.
-unknown_lines(LineFacts, Found) :-
+% unknown_lines(+LineFacts, -Unknown): [Line, What, LiteralName] by line for
+% each literal naming nothing of the vocabulary that the theory's own rules do
+% not use (a body none concludes, a head or fact no body uses): such a rule
+% never fires, or concludes nothing asked for.
+unknown_lines(LineFacts, Unknown) :-
     findall(A, ( member(_-F, LineFacts), concluded(F, L), literal_atom(L, A) ), C0),
     set_assoc(C0, Concluded),
     findall(A, ( member(_-body(_, L), LineFacts), literal_atom(L, A) ), U0),
     set_assoc(U0, Used),
     bodies_by_rule(LineFacts, Bodies),
     findall(Line-W, unknown_name(LineFacts, Bodies, Concluded, Used, Line, W), Pairs),
-    sort(1, @=<, Pairs, Found).
+    sort(1, @=<, Pairs, Sorted),
+    findall([Line, What, T], member(Line-unknown(What, T), Sorted), Unknown).
 
 % set_assoc(+List, -Assoc): the members of List as the keys of an assoc.
 set_assoc(List, Assoc) :-

@@ -64,8 +64,11 @@ test(unknown_names_of_rows, [true(Us == [[3, "rule c2: body", "wet"], [4, "fact"
                    [5, rule, c3, "neg(spilled)"], [5, body, c3, "pour_low"],
                    [4, fact, '', "lihgt_liquid"]], Us).
 
-% a stand-in (a DFL file Python read and checked) is not checked again
+% a stand-in (a DFL file Python read and checked) is not checked again,
+% but for its names, at the lines of the DFL file (its written_at/4 facts)
 test(checked_stand_in_skips_file_checks, [true(Ws == [])]) :-
     with_files(["rule(r1, defeasible, no_spill).\nbody(r1, pour_sidewise).\n"], [F], load_theories([file(F, 'D', checked)], Ws)).
+test(stand_in_names_at_the_lines_written, [true(Ws == [unknown("D:3", "rule r1: body", "pour_sidewise")])]) :-
+    with_files(["rule(r1, defeasible, no_spill).\nbody(r1, pour_sidewise).\nwritten_at(3, rule, r1, no_spill).\nwritten_at(3, body, r1, pour_sidewise).\n"], [F], load_theories([file(F, 'D', checked)], Ws)).
 
 :- end_tests(ask).

@@ -148,7 +148,7 @@ class _stand_ins:
         fd, name = tempfile.mkstemp(suffix=".pl", prefix="pantarhei-theory-")
         os.close(fd)
         try:
-            out = stand_in(path, Path(name), pouring=True)
+            out = stand_in(path, Path(name))
         except BaseException:           # __exit__ is not called for it
             os.unlink(name)
             raise

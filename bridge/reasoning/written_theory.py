@@ -43,7 +43,7 @@ def prolog_read(paths: Sequence[str | Path] | None, pouring: bool = True, added:
     if e.theory_digest != now:
         e.theory_digest = ""            # a theory not read leaves none
         with tempfile.TemporaryDirectory(prefix="pantarhei-theory-") as tmp:
-            given = [(stand_in(p, Path(tmp) / f"t{i}.pl", pouring) if is_dfl(p)
+            given = [(stand_in(p, Path(tmp) / f"t{i}.pl") if is_dfl(p)
                       else _as_is(p, Path(tmp) / f"t{i}.pl")) for i, (p, _, _) in enumerate(files)]
             if added:           # checked with the merged theory only (no file of its own)
                 (Path(tmp) / "added.pl").write_text(added)
@@ -77,16 +77,17 @@ def _as_is(path: str, copy: Path) -> tuple[str, str, bool]:
         return str(copy), _shown(path), False
 
 
-def stand_in(path: str, native: Path, pouring: bool) -> tuple[str, str, bool]:
-    """A DFL file read and checked by Python (with `pouring`, its unknown
-    names said, as theory/ask.pl finds them at the file's lines), written
-    natively into `native` for SWI-Prolog: a stand-in for it, (path,
-    name, checked) as load_theory_files takes it."""
+def stand_in(path: str, native: Path) -> tuple[str, str, bool]:
+    """A DFL file read and checked by Python, written natively into
+    `native` for SWI-Prolog, with the lines of its names (written_at/4
+    facts, which theory/ask.pl checks): a stand-in for it, (path, name,
+    checked) as load_theory_files takes it."""
     from pantarhei.bridge.theories import loading
+    from pantarhei.bridge.theories.unknown_names import written_at_facts
 
     theory = loading.read_theory(path)
-    loading.check_file(theory, pouring)
-    native.write_text(theory.native())
+    loading.check_file(theory, pouring=False)       # its names: SWI-Prolog's to check
+    native.write_text(theory.native() + written_at_facts(theory))
     return str(native), _shown(path), True
 
 

@@ -1,9 +1,10 @@
 """The names a theory of pouring's rules use that the vocabulary does not
 know, and the warning that says each. The check is theory/ask.pl's alone:
 `ask` (and every command that gives SWI-Prolog the files as written) has
-it made of the files it reads; a theory Python read (a DFL file, or the
-theory a command also reasons with in Python) is handed to the same
-check, its facts at the lines Python read them. The words are
+it made of the files it reads, and of a DFL file's stand-in at the DFL
+file's lines (its `written_at/4` facts); a theory Python read for a
+command that also reasons with it in Python (plan, demo) is handed to the
+same check, its facts at the lines Python read them. The words are
 theory/check_messages.pl's (`unknown_name`), with the nearest known name
 as a hint, said here alone."""
 from __future__ import annotations
@@ -15,6 +16,28 @@ if TYPE_CHECKING:       # `ask` says its warnings without the theory's model
     from pantarhei.bridge.theories.model import Theory
 
 
+def written_at(theory: Theory) -> list[list]:
+    """The facts of `theory` that the check of its names reads, at the
+    lines Python read them: [line, rule, id, head], [line, body, id,
+    literal] or [line, fact, fact, literal] (theory/ask.pl's
+    unknown_names/2), a literal as its native text."""
+    rows = []
+    for r in theory.rules:
+        line = theory.lines.get(r.id, 0)
+        rows.append([line, "rule", r.id, r.head])
+        rows.extend([theory.body_lines.get((r.id, b), line), "body", r.id, b] for b in r.body)
+    rows.extend([theory.body_lines.get(("", f), 0), "fact", "fact", f] for f in theory.facts)
+    return rows
+
+
+def written_at_facts(theory: Theory) -> str:
+    """written_at/4 facts of the rows of written_at, native text: what a
+    stand-in for a DFL file holds beside its theory, for SWI-Prolog to
+    check the names at the DFL file's lines."""
+    return "".join(f"written_at({line}, {kind}, {rid}, {lit}).\n"
+                   for line, kind, rid, lit in written_at(theory))
+
+
 def unknown_names(theory: Theory) -> list[tuple[str, str, str]]:
     """(where, what, name) for each literal of a rule or fact of `theory`
     that names no proposition or expectation of the vocabulary (negated
@@ -23,12 +46,7 @@ def unknown_names(theory: Theory) -> list[tuple[str, str, str]]:
     was not)."""
     from pantarhei.bridge.engines.swipl import engine, text
 
-    rows = []
-    for r in theory.rules:
-        line = theory.lines.get(r.id, 0)
-        rows.append([line, "rule", r.id, r.head])
-        rows.extend([theory.body_lines.get((r.id, b), line), "body", r.id, b] for b in r.body)
-    rows.extend([theory.body_lines.get(("", f), 0), "fact", "", f] for f in theory.facts)
+    rows = written_at(theory)
     if not rows:
         return []
     e = engine()
