@@ -1,7 +1,7 @@
 """Loading a theory file and answering with it: Python's reader (what plan,
 convert and conclusions read), SWI-Prolog's
 (theory_files:load_theory_facts/2) and defeasible:load_theory/1 whole (read,
-checked, indexed), clingo's conclusions with one fact (defeasible.lp), and
+checked, indexed), clingo's conclusions with one fact (derivability.lp), and
 `pantarhei ask --theory` end to end (SWI-Prolog alone reads the file,
 theory/ask.pl), on random learned theories of pouring
 of 1,000 to 100,000 rules (bridge/theories/families.pouring, written in
@@ -61,7 +61,7 @@ def prolog_theory(path: Path) -> float | None:
 
 def asp_answer(path: Path, fact: str) -> float:
     """Wall seconds of `pantarhei conclusions --engine asp` of the theory
-    with `fact` added (clingo grounds and solves defeasible.lp)."""
+    with `fact` added (clingo grounds and solves derivability.lp)."""
     with_fact = path.with_name(f"fact-{path.name}")
     with_fact.write_text(f"fact({fact}).\n" + path.read_text())
     return _timed([_pantarhei(), "conclusions", "--engine", "asp", str(with_fact)])

@@ -50,7 +50,7 @@ select the variant, as a term =|sem(Ambiguity, TeamDefeat, WellFounded)|=:
 A literal L then has the conclusions +D (definitely provable: the meta
 atom definitely(L) is true), -D (definitely(L) is false), +d and -d
 (likewise for defeasibly(L)). Undecided literals have neither.
-theory/defeasible.lp computes the same conclusions with clingo.
+theory/derivability.lp computes the same conclusions with clingo.
 
 The theory's facts, and the indexes they are asked through, are
 theory_store.pl's; the superiority relation (sup/2 and specificity) and

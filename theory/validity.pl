@@ -12,7 +12,7 @@
 An antecedent is a set of scene propositions. It is valid when it breaks no
 constraint of =|theory/vocabulary/constraints.pl|=: at most one value per
 dimension, at most one proposition setting each parameter, and no pair of
-propositions listed as a conflict. theory/validity.lp derives the same
+propositions listed as a conflict. theory/violations.lp derives the same
 checks for clingo from the same facts.
 */
 

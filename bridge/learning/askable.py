@@ -2,7 +2,7 @@
 alone and every valid pair; whether two bodies can hold together in
 one scene; and whether a pair may interact as physics goes (`suspect`).
 
-Validity is clingo's (theory/validity.lp), asked once: every constraint
+Validity is clingo's (theory/violations.lp), asked once: every constraint
 there is broken by a pair of propositions, whatever else the antecedent
 holds, so clingo names, with every proposition in, each pair that breaks
 one; an antecedent is valid when none of its pairs is among them. The
@@ -21,11 +21,11 @@ from pantarhei.theory.lexicon import load_vocabulary
 @lru_cache(maxsize=1)
 def clashing_pairs() -> frozenset[frozenset[str]]:
     """The pairs of propositions that break a validity constraint, from one
-    call of clingo over the whole vocabulary (violated/3 of validity.lp)."""
+    call of clingo over the whole vocabulary (violated/3 of violations.lp)."""
     from pantarhei.bridge.engines.asp import solve
 
     every = "".join(f"in({p})." for p in sorted(load_vocabulary().propositions))
-    (shown,) = solve(["validity.lp"], every)
+    (shown,) = solve(["violations.lp"], every)
     return frozenset(frozenset(str(a) for a in s.arguments[1:]) for s in shown if s.name == "violated")
 
 

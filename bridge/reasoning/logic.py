@@ -2,7 +2,7 @@
 
 `conclusions(theory, semantics, engine)` gives the four kinds of conclusion
 (+D, -D, +d, -d). The Prolog side is theory/defeasible.pl (tabling under the
-well-founded semantics); the ASP side is theory/defeasible.lp. `Semantics`
+well-founded semantics); the ASP side is theory/derivability.lp. `Semantics`
 holds the logic's switches.
 """
 from __future__ import annotations
@@ -144,13 +144,13 @@ ALTERNATION_BYTES_AT_MOST = 2_000_000
 
 def asp_conclusions(theory: Theory, semantics: Semantics = Semantics(),
                     steps: int = 8) -> dict[str, list[str]]:
-    """Solve defeasible.lp: in one layer for an acyclic theory, else
+    """Solve derivability.lp: in one layer for an acyclic theory, else
     doubling the alternation steps until they suffice."""
     from pantarhei.bridge.engines.asp import solve
 
     try:
         # the one check of a cycle on this side (check_acyclic, its message
-        # theory/check_messages.pl's): defeasible.lp's superiority is a part
+        # theory/check_messages.pl's): derivability.lp's superiority is a part
         # of the relation checked here (specificity only among the rules
         # that may apply), so its sup_cycle/1, which is for clingo alone,
         # finds none that this did not
@@ -171,7 +171,7 @@ def asp_conclusions(theory: Theory, semantics: Semantics = Semantics(),
                             f"past the {ALTERNATION_BYTES_AT_MOST:,} bytes it grounds at most: "
                             f"ask it with --engine prolog (the same conclusions)")
         consts = {**semantics.asp_constants(), "steps": str(steps), "acyclic": str(acyclic).lower()}
-        (model,) = solve(["defeasible.lp", "conclusions.lp"], text, files=(),
+        (model,) = solve(["derivability.lp", "conclusions.lp"], text, files=(),
                          args=[f"-c{k}={v}" for k, v in consts.items()])
         if not any(s.name == "changed" for s in model):
             break

@@ -1,6 +1,6 @@
 """Plan a pour: manners that make the theory conclude the goals (clingo).
 
-theory/plan.lp chooses manner propositions (poses, tilts, speeds) that,
+theory/manners.lp chooses manner propositions (poses, tilts, speeds) that,
 with the given context, form a valid antecedent from which the theory
 defeasibly concludes every goal literal. Plans come cheapest first (fewest
 chosen propositions) among those whose goals rest on the most confident
@@ -23,7 +23,7 @@ from pantarhei.bridge.theories.model import Theory, complement
 from pantarhei.bridge.reasoning.literals import goal_literal, parse_goal
 from pantarhei.bridge.reasoning.valid_scenes import require_valid
 
-ENCODINGS = ("defeasible.lp", "validity.lp", "valid.lp", "plan.lp")
+ENCODINGS = ("derivability.lp", "violations.lp", "valid.lp", "manners.lp")
 MAX_STEPS = 64
 
 

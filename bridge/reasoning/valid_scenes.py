@@ -61,7 +61,7 @@ def violations(props: Iterable[str], engine: str = "prolog") -> list[Violation]:
 def _asp_checker():
     from pantarhei.bridge.engines.asp import Checker
 
-    return Checker(["validity.lp"], "in")
+    return Checker(["violations.lp"], "in")
 
 
 def require_valid(props: Iterable[str]) -> list[str]:

@@ -1,7 +1,7 @@
 % The validity constraints on antecedents (sets of scene propositions).
 %
 % Read by SWI-Prolog and by clingo alike: ground facts only. Each constraint
-% is written once here; theory/validity.pl (Prolog) and theory/validity.lp
+% is written once here; theory/validity.pl (Prolog) and theory/violations.lp
 % (ASP) derive their checks from these same facts.
 %
 % constraint(Name, Gloss): a named constraint, in words.

@@ -174,7 +174,7 @@ def _ground_rules(theory: Theory) -> int:
     from pantarhei.theory import THEORY_DIR
 
     ctl = clingo.Control(["-c", "steps=0", "-c", "acyclic=true", "--warn=none"])
-    for f in ("defeasible.lp", "conclusions.lp"):
+    for f in ("derivability.lp", "conclusions.lp"):
         ctl.load(str(THEORY_DIR / f))
     ctl.add("base", [], theory.encoded())
     ctl.ground([("base", [])])

@@ -48,6 +48,6 @@ def test_count_agrees_with_clingo_enumeration_on_a_sub_vocabulary():
     dims = ["start_height", "start_alignment", "approach_vertical", "approach_horizontal",
             "pour_height", "pour_alignment", "liquid_amount"]
     choice = "{ in(P) : proposition(P, D, _, _), sub(D) }.\n" + "".join(f"sub({d})." for d in dims)
-    models = solve(["validity.lp", "valid.lp"], choice, models=0)
+    models = solve(["violations.lp", "valid.lp"], choice, models=0)
     by_components = engine().once("validity:count_valid(Ds, N)", Ds=dims)["N"]
     assert len(models) == by_components

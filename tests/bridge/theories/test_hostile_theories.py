@@ -202,7 +202,7 @@ BIRDS = ("rule(r1, defeasible, flies).\nbody(r1, bird).\nrule(r2, defeasible, ne
 
 @pytest.mark.parametrize("hostile", [
     'concl("+D", pwned).\n',           # a conclusion of conclusions.lp, forged
-    "superior(r2, r1).\n",              # superiority of defeasible.lp, forged
+    "superior(r2, r1).\n",              # superiority of derivability.lp, forged
     "changed.\n",                       # kept clingo doubling its steps until killed
     "defeated(r1).\nhasbody(r2).\nsup_cycle(r1).\n",
 ])

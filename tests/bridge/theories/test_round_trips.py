@@ -171,7 +171,7 @@ def test_the_explored_antecedents_pours_change_no_conclusion(tmp_path: Path) -> 
 
     def clingo(path: Path) -> list[str]:
         p = subprocess.run([sys.executable, "-m", "clingo", "-V0", "--warn=none",
-                            str(THEORY_DIR / "defeasible.lp"), str(THEORY_DIR / "conclusions.lp"),
+                            str(THEORY_DIR / "derivability.lp"), str(THEORY_DIR / "conclusions.lp"),
                             str(path)], capture_output=True, text=True, timeout=120)
         assert "SATISFIABLE" in p.stdout, p.stdout + p.stderr
         return sorted(p.stdout.split())

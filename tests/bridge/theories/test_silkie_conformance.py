@@ -11,7 +11,7 @@ definition (docs/theory-formats.md, "Panta Rhei and silkie"), the expectation fo
 definition and says so.
 
 What is tested is the logic of both engines (bridge/reasoning/logic.py:
-theory/defeasible.pl and theory/defeasible.lp) on theories read by
+theory/defeasible.pl and theory/derivability.lp) on theories read by
 bridge/theories/dfl.py: a conformance suite no single module owns, which
 docs/theory-formats.md names by this file's path.
 """
