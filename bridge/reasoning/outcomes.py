@@ -29,6 +29,7 @@ from functools import lru_cache
 
 from pantarhei.bridge.reasoning.everyday import Matcher, names
 from pantarhei.bridge.reasoning.frames import asked_plainly
+from pantarhei.bridge.reasoning.phases import during
 from pantarhei.bridge.reasoning.seeking import sought, wanting
 from pantarhei.bridge.reasoning.vessels import OUT_OF, destinations, filled, in_the_source, liquids, out_of_the_source
 
@@ -63,10 +64,12 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|turn\w* over|flip\w*|capsiz\w*|overturn\w*|keel\w* over|tumbl(?:e|es|ed|ing)\b"
      r"|(?:fall|falls|fell)\b(?! (?:in|into|inside|out|off|on|onto)\b)", ("destination_upright",), True),
     (r"(?:stay|stays|remain|remains|keep|keeps|be|is) (?:still|put|in place|steady|stable|stationary"
-     r"|where it is)", _STILL, False),
+     r"|where it is)"
+     r"|(?:sit|sits|sitting|stand|stands|standing|stay|stays|staying|remain|remains|rest|rests|resting|be)"
+     r" (?:still )?(?:in|at) the same (?:spot|place|position|location)", _STILL, False),
     (r"slid\w*|slip(?:s|ped|ping)?\b|shift\w*|budg\w*|wobbl\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
      r"|jostl\w*|rock(?:s|ed|ing)?|shak(?:e|es|ing)|shook|translat\w*|drift\w*|creep\w*|scoot\w*"
-     r"|displac\w*|(?:go|goes|going|get|gets|getting) (?:wiggly|wobbly|shaky|jiggly)"
+     r"|displac\w*|(?:(?:get|gets|got|getting|be|being) )?(?:pushed|shoved)\b(?! (?:in|back|away|out)\b)|(?:go|goes|going|get|gets|getting) (?:wiggly|wobbly|shaky|jiggly)"
      r"|mov(?:e|es|ed|ing)\b(?! (?:in|away|closer|to|out|back|up|down|over|into|off|towards?)\b)",
      _STILL, True),
     (r"bump\w*|hit(?:s|ting)?|touch\w*|collid\w*|crash\w*|knock\w*|clip(?:s|ped)?|strike\w*"
@@ -368,6 +371,9 @@ def hear(text: str) -> Heard:
     text = nominal.sub(as_nominal, text)
     text = _CONTACT.sub(as_contact, text)
     text = _spaced(bare.sub(as_more, text))
+    text, asked, when = during(text, asked)         # "does the bowl slide when the cup comes in"
+    text, goals, wanted_when = during(text, goals)
+    phrases.extend((*when, *wanted_when))
     return Heard(tuple(asked), tuple(goals), tuple(phrases), text)
 
 

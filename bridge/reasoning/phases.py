@@ -1,0 +1,66 @@
+"""When a stillness asked about is asked of: the bowl staying still is
+three expectations, one a phase (the move in, the move away, the settling),
+and a question that names the phase asks that one alone: "does the bowl
+slide when the cup comes in" (the move in), "will it move when the arm
+goes away", "during the retreat phase" (the move away). "Still in the same
+spot after the jug is taken away" asks all three: the bowl has not moved
+by then. A phase said by a clause that ends there is heard with the
+outcome; one going on ("when the cup comes in fast") is left for the
+scene too.
+
+And a place the liquid may land instead of the bowl, asked beside it:
+"does it go in the bowl or on the table" asks whether it spills too."""
+from __future__ import annotations
+
+import re
+
+STILL = ("destination_still_approach", "destination_still_retreat", "destination_still_settle")
+
+_WHO = r"(?:(?:the|a|an|my|your|its|this|that) )?(?:[a-z]+ )?(?:[a-z]+)"
+_WHEN = r"(?:when|while|whilst|as|once)"
+#: (the phase, the words that say it after an outcome asked)
+_PHASES = (
+    ("destination_still_approach",
+     rf"{_WHEN} {_WHO} (?:com(?:e|es|ing)|mov(?:e|es|ing)|is (?:brought|moved)|gets? (?:brought|moved)"
+     rf"|swing(?:s|ing)?|go(?:es|ing)?) in\b(?: to pour\b)?"
+     rf"|{_WHEN} {_WHO} approach(?:es|ing)?\b|(?:during|in) the approach(?: phase| stage| move)?\b"
+     r"|on (?:its|the) way in\b"),
+    ("destination_still_retreat",
+     rf"{_WHEN} {_WHO} (?:go(?:es|ing)?|mov(?:e|es|ing)|pull(?:s|ing)?|back(?:s|ing)?|draw(?:s|ing)?"
+     rf"|(?:is|gets?) (?:taken|moved|pulled|drawn)) (?:back )?away\b"
+     rf"|{_WHEN} {_WHO} (?:retreat(?:s|ing)?|withdraw(?:s|ing)?|pull(?:s|ing)? back)\b"
+     r"|(?:during|in) the retreat(?: phase| stage| move)?\b|on (?:its|the) way (?:out|back)\b"),
+    (None,      # after the move away: by then, every phase is past
+     rf"after {_WHO} (?:is|gets?|has been) (?:taken|moved|pulled|drawn) away\b"
+     rf"|after {_WHO} (?:goes|moves|has gone|has moved|pulls) away\b|after the retreat\b"),
+)
+#: Where a clause ends: the phase heard with its outcome is all of it.
+_ENDS = r"(?= *(?:[?.!,;:]|$| or\b| and\b| lol\b))"
+#: A place the liquid may land said beside the bowl it goes in: the spill asked too.
+_ELSEWHERE = re.compile(r"\boutcome (?P<said>or (?:on|onto|all over|over) (?:the |a |my )?"
+                        r"(?:table|counter|floor|worktop|countertop|ground|bench)s?)\b")
+
+
+def during(text: str, asked: list[str]) -> tuple[str, list[str], list[str]]:
+    """`text` (after outcomes.hear took out what it asks: "outcome" stands
+    for each clause), the expectations `asked` with the phase it names, and
+    the phrases heard."""
+    heard: list[str] = []
+    if _ELSEWHERE.search(text) and "no_spill" not in asked and any(
+            n in asked for n in ("liquid_enters_destination", "liquid_remains_in_destination")):
+        heard += [m.group("said") for m in _ELSEWHERE.finditer(text)]
+        asked = [*asked, "no_spill"]
+        text = _ELSEWHERE.sub("outcome", text)
+    if not all(n in asked for n in STILL):
+        return text, asked, heard
+    for phase, words in _PHASES:
+        m = re.search(rf"\boutcome(?P<gap>(?: ,)?(?: (?:at all|all|around|about|much|even))*) (?P<said>{words})", text)
+        if m is None:
+            continue
+        if phase is not None:
+            asked = [n for n in asked if n not in STILL or n == phase]
+        if re.match(_ENDS, text[m.end():]):
+            heard.append(m.group("said"))
+            text = text[:m.start("said")] + text[m.end():]
+        return text, asked, heard
+    return text, asked, heard
