@@ -60,3 +60,12 @@ def ordinary_among(names: list[str], vocab) -> str | None:
              and (vocab.propositions[n].model.low, vocab.propositions[n].model.high)
              == priors[vocab.propositions[n].model.param]]
     return found[0] if len(found) == 1 else None
+
+
+def opposite(negated: list[str], values: tuple[str, ...]) -> str | None:
+    """The value at the other end of a scale of three (`values`, in order)
+    from the one `negated` "at all": "not heavy at all" is light, not the
+    ordinary pour's medium weight; None for any other negation."""
+    if len(negated) != 1 or len(values) != 3 or negated[0] == values[1]:
+        return None
+    return values[2] if negated[0] == values[0] else values[0]

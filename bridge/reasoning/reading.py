@@ -46,8 +46,8 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.reasoning.negation import (NEGATION_STEMS, covered, ordinary_among, scope, scope_ends,
-                                                 still_between)
+from pantarhei.bridge.reasoning.negation import (NEGATION_STEMS, covered, opposite, ordinary_among, scope,
+                                                 scope_ends, still_between)
 from pantarhei.bridge.reasoning.nouns import ARTICLES, BOWL, CONTEXT, OBJECT_STEMS, Nouns, roles
 from pantarhei.bridge.reasoning.outcomes import FOLLOWS, follows, hear
 from pantarhei.bridge.reasoning.quantities import read_numbers
@@ -195,6 +195,9 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
                         "describe the scene with the words of `pantarhei vocab`, or give --props P1,P2")
             raise UserError(f"understood nothing that \"{phrase}\" excludes: {hint}")
     negated_at = covered(tokens, cues, ends)
+    words = [t.word for t in tokens]        # "not heavy at all", "not at all heavy": the dimensions
+    at_all = {props[n].dimension for n, p in accepted if p & negated_at and ["at", "all"] in (
+        words[max(p) + 1:max(p) + 3], words[max(0, min(p) - 2):min(p)])}
     said: dict[str, list[str]] = {}
     negated: dict[str, list[str]] = {}
     for name, positions in accepted:
@@ -219,6 +222,11 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
                             f"of {dim} at all, which is said by saying none: say which")
         if len(others) == 1:
             out.append(others[0])
+            continue
+        far = dim in at_all and opposite(names, vocab.dimensions[dim].values)
+        if far:                                  # "not heavy at all": the other end, said back
+            out.append(far)
+            spoken.append(f"not {names[0]} at all: {far}")
             continue
         if ordinary_among(others, vocab):        # "isn't heavy": the ordinary pour's bowl, said back
             out.append(ordinary_among(others, vocab))
