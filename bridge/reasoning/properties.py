@@ -37,7 +37,8 @@ _GAP = 5
 UNIT_OF = {"friction": "unit_friction", "restitution": "unit_restitution",
            "bounciness": "unit_restitution", "elasticity": "unit_restitution"}
 #: Words that may stand between a name and its number: "a friction of 0.1", "friction = 0.1".
-_TO_NUMBER = {"of", "is", "at", "to", "equal", "equals", "about", "around", "roughly"}
+_TO_NUMBER = {"of", "is", "at", "to", "equal", "equals", "about", "around", "roughly", "coefficient",
+              "coefficients", "value"}
 
 
 class Levels:
@@ -62,9 +63,10 @@ class Levels:
             return []
         # "the friction of the bowl is high": the name read as nothing (a hedge), the level
         # as the value word, the words between as they are
-        for j in range(name + 1, min(len(words), name + 2 + _GAP)):
+        said = name + 1 + (words[name + 1:name + 2] in (["coefficient"], ["coefficients"]))   # "friction coefficient"
+        for j in range(said, min(len(words), said + 1 + _GAP)):
             if words[j] in LEVELS:
-                return [(i, name + 1, ("hedge",)), (j, j + 1, (NAMES[words[name]][LEVELS[words[j]]],))]
+                return [(i, said, ("hedge",)), (j, j + 1, (NAMES[words[name]][LEVELS[words[j]]],))]
             if words[j] not in _BETWEEN:
                 return []
         return []
@@ -87,12 +89,45 @@ class Values:
             while j < len(words) and words[j] in _TO_NUMBER:
                 j += 1
             if j < len(words) and _number(words[j]):
-                # "coefficient of friction", and the body after: "0.9 for the liquid"
+                # "coefficient of friction", and the body after: "0.9 for the liquid", "on the bowl"
                 first = i - 2 if words[max(0, i - 2):i] == ["coefficient", "of"] else i
-                end = j + 2 if words[j + 1:j + 2] in (["for"], ["of"]) else j + 1
+                end = j + 2 if words[j + 1:j + 2] in (["for"], ["of"], ["on"]) else j + 1
                 out.append((first, end, (words[j], unit)))
         return out
 
 
 def _number(word: str) -> bool:
     return bool(word) and word.lstrip("-").replace(".", "", 1).isdigit()
+
+
+#: What a bowl stands on, and the words that say it grips or does not.
+_SURFACES = {"table", "tables", "counter", "counters", "countertop", "worktop", "benchtop", "bench",
+             "tabletop"}
+_GRIP = {"slippery": "slippery", "slick": "slippery", "slippy": "slippery", "greasy": "slippery",
+         "grippy": "grippy", "rough": "grippy"}
+_AS = {"is", "are", "was", "seems", "looks", "feels", "very", "really", "quite", "super", "so", "pretty"}
+#: What is said back of it.
+SURFACE_SAID = "read as the destination's friction: the bowl slides, or not, on what it stands on"
+
+
+class Surfaces:
+    """A slippery table, a counter that is slick: the destination's
+    friction, for the bowl slides on what it stands on (its friction is
+    the vocabulary's, not the table's). `spans(words)` gives each phrase
+    and the words it is read as ("slippery destination"); a table said
+    high, or sticky, is not one (everyday.txt's context nouns)."""
+
+    def spans(self, words: list[str]) -> list[tuple[int, int, tuple[str, ...]]]:
+        out: list[tuple[int, int, tuple[str, ...]]] = []
+        for i, w in enumerate(words):
+            if w not in _SURFACES or (out and i < out[-1][1]):
+                continue
+            if i > 0 and words[i - 1] in _GRIP:                            # "a slick table"
+                out.append((i - 1, i + 1, (_GRIP[words[i - 1]], "destination")))
+                continue
+            j = i + 1
+            while j < len(words) and words[j] in _AS and j - i <= 3:
+                j += 1
+            if j > i + 1 and words[i + 1] in _AS and j < len(words) and words[j] in _GRIP:   # "the table is slick"
+                out.append((i, j + 1, (_GRIP[words[j]], "destination")))
+        return out
