@@ -27,6 +27,7 @@ from functools import lru_cache
 
 from pantarhei.bridge.reasoning.everyday import Matcher, names, sections
 from pantarhei.bridge.reasoning.bodies import BODIES
+from pantarhei.bridge.reasoning.contrasts import CONTRASTS
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.moves import MOVES
 from pantarhei.bridge.reasoning.numerals import NumberWords
@@ -58,6 +59,7 @@ PHRASES: tuple[tuple, ...] = (
     ("hedge", ("how much", "how many",    # asks, does not say: "how much liquid spills"
                "nearly",                   # a hedge (its stem would be "near")
                r"re:\bbetween(?= -?\d+(?:\.\d+)? and -?\d)")),   # a range: quantities.py's
+    *CONTRASTS,               # a value said against another: thicker than water (contrasts.py)
     ("very", (rf"re:\b(?:super duper|super|extremely|incredibly|insanely|ridiculously|awfully|terribly"
               rf"|exceptionally|unusually|crazy|way)(?= (?:{_INTENSIFIED})\b)",)),
     # a low bowl, a high-sided one: its size, which the vocabulary does not say (a height is

@@ -1,0 +1,36 @@
+"""A value said against another, part of words.py's PHRASES (applied
+before its comparatives, which refuse a comparison with nothing): a liquid
+thicker than water is sticky, one thinner than honey runny ("instead of
+water use something thicker"; the everyday word list has read water as
+"liquid" and honey as "sticky liquid" by then); a place the vocabulary
+cannot name, set against one it reads ("from the side rather than from
+above"), is read as nothing, the place said beside it read; a little off
+the centre is near the rim (off-centre with no amount stays refused: how
+far?); "right in the middle" is in the middle.
+"""
+from __future__ import annotations
+
+#: Something poured, unnamed: "something thicker", "a liquid that is runnier".
+_THING = r"(?:(?:something|some ?thing|stuff|one|a liquid|liquid)(?: that is| that's)? )?"
+_MORE = r"(?:(?:a bit|a little|much|a lot|even|far|way) )?"
+_THICKER = r"(?:thicker|stickier|gloopier|more viscous|more sticky)"
+_THINNER = r"(?:thinner|runnier|more watery|more runny|less viscous|less sticky)"
+_CONTRAST = r"(?:instead of|rather than|in place of)"
+_USE = r"(?:(?:,|;) )?(?:(?:use|pour|try|take|pick|with|using|have) )?"
+#: A place the vocabulary cannot name, set against one it reads.
+_VAGUE = r"(?:from )?(?:above|overhead|the top|on top)"
+
+CONTRASTS: tuple[tuple, ...] = (
+    ("sticky liquid", (rf"re:\b{_CONTRAST} (?:the |using |pouring )?liquid {_USE}{_THING}{_MORE}{_THICKER}\b",
+                       rf"re:\b{_THING}{_MORE}{_THICKER} (?:than|{_CONTRAST}) (?:the |plain |regular |normal )?liquid\b"),
+     "read as a sticky liquid: thicker than an ordinary one"),
+    ("runny liquid", (rf"re:\b{_CONTRAST} (?:the |using |pouring )?sticky liquid {_USE}{_THING}{_MORE}{_THINNER}\b",
+                      rf"re:\b{_THING}{_MORE}{_THINNER} (?:than|{_CONTRAST}) (?:the )?sticky liquid\b"),
+     "read as a runny liquid: thinner than a sticky one"),
+    ("hedge", (rf"re:(?:(?:,|;) )?\b{_CONTRAST} {_VAGUE}\b(?= *(?:$|[,;.!?]))",),
+     "read as nothing: a place the vocabulary cannot name, set against the one said beside it"),
+    ("near the rim", (r"re:\b(?:just |only )?(?:slightly|a (?:little |tiny )?bit|a little|a tad) off (?:the )?"
+                         r"(?:destination |bowl )?(?:centre|center|middle)\b",),
+     "read as near the rim: a little off the middle, where the rim is nearer"),
+    ("hedge", (r"re:\b(?:straight|right|dead|smack|bang)(?= (?:in )?(?:the )?(?:middle|centre|center)\b)",)),
+)
