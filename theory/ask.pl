@@ -1,5 +1,6 @@
 :- module(ask,
           [ load_theories/2,        % +Files, -Warnings
+            load_theories/3,        % +Files, +Options, -Warnings
             unknown_names/2,        % +Rows, -Unknown
             serve/0
           ]).
@@ -18,8 +19,15 @@ A file is given as its path, or as =|file(Path, Name)|= to name it Name in
 errors and warnings, or =|file(Path, Name, checked)|= when the file read is
 a stand-in for another that was read and checked already (a DFL file that
 Python read and wrote out natively): then only what concerns the merged
-theory is checked, and the names of Name at the lines its
-=|written_at(Line, Kind, Rule, Literal)|= facts give (unknown_names/2).
+theory is checked, with its general rules and its names at the lines of
+Name that its =|written_at(Line, Kind, Id, What)|= facts give (Kind
+rule, body or fact and What its literal, as unknown_names/2 reads them;
+provenance and What the key; sup and What the rule beaten).
+
+These are the one check of a theory file's general rules, of its names
+and of its superiority relation's cycles: the theories Python reads (a
+DFL file, or the files of a command that reasons in Python) are handed
+here as such stand-ins (bridge/theories/prolog_checks.py).
 */
 
 :- use_module(theory_files).
@@ -34,6 +42,7 @@ theory is checked, and the names of Name at the lines its
 :- use_module(library(pairs)).
 :- use_module(library(assoc)).
 :- use_module(library(ordsets)).
+:- use_module(library(option)).
 :- use_module(library(http/json)).
 
                  /*******************************
@@ -52,6 +61,14 @@ theory is checked, and the names of Name at the lines its
 %
 %   @error theory_error(Name, Line, Message), Line 0 where no line is meant.
 load_theories(Files, Warnings) :-
+    load_theories(Files, [], Warnings).
+
+%!  load_theories(+Files:list, +Options:list, -Warnings:list) is det.
+%
+%   load_theories/2 with Options: =|sup_names(false)|= lets sup/2 name a
+%   rule the files do not define (a file of hand-added rules converted
+%   alone, whose sup/2 may name the rules of another).
+load_theories(Files, Options, Warnings) :-
     must_be(list, Files),
     maplist(file_name, Files, Named),
     maplist(read_theory, Named, Read),
@@ -59,7 +76,7 @@ load_theories(Files, Warnings) :-
     append(Warnings0, Warnings),
     clear_theory,
     forall(append(Earlier, [File|_], Read), add_file(File, Earlier)),
-    check_sup_names(Read),
+    (   option(sup_names(false), Options) -> true ; check_sup_names(Read) ),
     defeasible:prepare,
     (   defeasible:superiority_cycle(Cycle)
     ->  clear_theory,
@@ -82,8 +99,11 @@ read_theory(file(Path, Name, Kind), read(Name, LineFacts, Kind)) :-
           throw(theory_error(Name, Line, M))).
 
 % check_read(+read(Name, LineFacts, Kind), -Warnings): one file's own checks;
-% of a stand-in (=checked= before) its names, at its written_at/4 rows' lines.
+% of a stand-in (=checked= before) its general rules and its names, at the
+% lines of its written_at/4 facts.
 check_read(read(Name, LineFacts, checked), Warnings) :- !,
+    written_lines(LineFacts, Written),
+    check_general_rules(Name, Written),
     findall([L, K, R, Lit], member(_-written_at(L, K, R, Lit), LineFacts), Rows),
     unknown_names(Rows, Unknown),
     named_lines(Name, Unknown, Warnings).
@@ -96,6 +116,27 @@ check_read(read(Name, LineFacts, _), Warnings) :-
     check_general_rules(Name, LineFacts),
     unknown_lines(LineFacts, Unknown),
     named_lines(Name, Unknown, Warnings).
+
+% written_lines(+LineFacts, -Written): the rule/3, body/2 and provenance/3
+% facts of a stand-in at the lines of the file it stands for (its
+% written_at/4 facts; line 0 for a fact they do not place).
+written_lines(LineFacts, Written) :-
+    findall(Key-L, ( member(_-written_at(L, K, R, X), LineFacts), written_key(K, R, X, Key) ),
+            Pairs0),
+    msort(Pairs0, Sorted),
+    sort(1, @<, Sorted, Pairs),         % the first line of each (sort/4 keeps the first)
+    list_to_assoc(Pairs, Lines),
+    findall(L-F, ( member(_-F, LineFacts), fact_key(F, Key),
+                   ( get_assoc(Key, Lines, L) -> true ; L = 0 ) ), Written).
+
+written_key(rule, R, _, rule(R)).
+written_key(body, R, B, body(R, B)).
+written_key(provenance, R, K, provenance(R, K)).
+written_key(sup, A, B, sup(A, B)).
+
+fact_key(rule(R, _, _), rule(R)).
+fact_key(body(R, B), body(R, B)).
+fact_key(provenance(R, K, _), provenance(R, K)).
 
 named_lines(Name, Unknown, Warnings) :-
     findall(unknown(Where, What, T), ( member([Line, What, T], Unknown),
@@ -126,21 +167,24 @@ add_line(Name, Earlier, Line, F) :-
 check_sup_names(Read) :-
     forall(( member(read(Name, LineFacts, Kind), Read), member(Line0-sup(A, B), LineFacts),
              member(X, [A, B]), \+ defeasible:rule(X, _, _) ),
-           ( written_line(Kind, Name, Line0, A, B, Line),
+           ( written_line(Kind, Name, LineFacts, Line0, A, B, Line),
              check_message(sup_not_a_rule, [A, B, X], M),
              throw(theory_error(Name, Line, M)) )).
 
 sup_line(Read, A, B, Name, Line) :-
     (   member(read(Name, LineFacts, Kind), Read), memberchk(Line0-sup(A, B), LineFacts)
-    ->  written_line(Kind, Name, Line0, A, B, Line)
+    ->  written_line(Kind, Name, LineFacts, Line0, A, B, Line)
     ;   Read = [read(Name, _, _)|_], Line = 0
     ).
 
-% written_line(+Kind, +Name, +Line0, +A, +B, -Line): the line of the file
-% as written that says sup(A, B): Line0 of a file read as written; of a
-% stand-in (a DFL file written out natively), the first line of the file
+% written_line(+Kind, +Name, +LineFacts, +Line0, +A, +B, -Line): the line
+% of the file as written that says sup(A, B): Line0 of a file read as
+% written; of a stand-in (a DFL file written out natively), the line its
+% written_at(Line, sup, A, B) fact gives, else the first line of the file
 % Name that says =|A > B|= (or sup(A, B)), 0 if none does.
-written_line(checked, Name, _, A, B, Line) :- !,
+written_line(checked, _, LineFacts, _, A, B, Line) :-
+    memberchk(_-written_at(Line, sup, A, B), LineFacts), !.
+written_line(checked, Name, _, _, A, B, Line) :- !,
     (   catch(read_file_to_string(Name, Text, [encoding(utf8)]), _, fail),
         split_string(Text, "\n", "", Lines),
         format(string(Dfl), "~w>~w", [A, B]),
@@ -155,7 +199,7 @@ written_line(checked, Name, _, A, B, Line) :- !,
     ->  true
     ;   Line = 0
     ).
-written_line(_, _, Line, _, _, Line).
+written_line(_, _, _, Line, _, _, Line).
 
 % check_general_rules(+Name, +LineFacts): a general rule speaks the
 % vocabulary's words, and its evidence is in range.
@@ -252,13 +296,17 @@ check_evidence(_, _, _, _, _).
 %
 %   unknown_lines/2 of a theory Python read (a DFL file, or one a command
 %   reasons with in Python), Rows its facts at the lines read: =|[Line,
-%   rule|body|fact, R, Literal]|=, a literal as a term or its text.
+%   rule|body|fact, R, Literal]|=, a literal as a term or its text (rows
+%   of other kinds, provenance and sup, are passed over).
 unknown_names(Rows, Unknown) :-
     must_be(list, Rows),
-    maplist(row_fact, Rows, LineFacts),
+    convlist(row_fact, Rows, LineFacts),
     unknown_lines(LineFacts, Unknown).
 
+% row_fact(+Row, -LineFact): a row of a literal (none of provenance/3 or
+% sup/2, which name none) as the fact it says.
 row_fact([Line, Kind, R, L0], Line-F) :-
+    memberchk(Kind, [rule, body, fact]),
     (   compound(L0) -> L = L0 ; term_string(L, L0) ),
     memberchk(Kind-F, [rule-rule(R, defeasible, L), body-body(R, L), fact-fact(L)]).
 

@@ -71,4 +71,28 @@ test(checked_stand_in_skips_file_checks, [true(Ws == [])]) :-
 test(stand_in_names_at_the_lines_written, [true(Ws == [unknown("D:3", "rule r1: body", "pour_sidewise")])]) :-
     with_files(["rule(r1, defeasible, no_spill).\nbody(r1, pour_sidewise).\nwritten_at(3, rule, r1, no_spill).\nwritten_at(3, body, r1, pour_sidewise).\n"], [F], load_theories([file(F, 'D', checked)], Ws)).
 
+% a stand-in's general rules are checked at the lines of the file it
+% stands for: a body outside the vocabulary, evidence out of range
+test(stand_in_general_rule_at_the_line_written,
+     [true(M == "D:7: general rule g1: pour_sideways is not a proposition of the vocabulary")]) :-
+    with_files(["rule(g1, defeasible, no_spill).\nbody(g1, pour_sideways).\nprovenance(g1, layer, general).\nwritten_at(7, rule, g1, no_spill).\nwritten_at(7, body, g1, pour_sideways).\nwritten_at(8, provenance, g1, layer).\n"], [F], load_error([file(F, 'D', checked)], M)).
+test(stand_in_general_evidence_at_the_line_written,
+     [true(M == "D:9: general rule g1: 9 pours kept of 4 described")]) :-
+    with_files(["rule(g1, defeasible, no_spill).\nprovenance(g1, layer, general).\nprovenance(g1, kept, 9).\nprovenance(g1, support, 4).\nwritten_at(2, rule, g1, no_spill).\nwritten_at(9, provenance, g1, kept).\nwritten_at(9, provenance, g1, kept).\nwritten_at(11, provenance, g1, support).\n"], [F], load_error([file(F, 'D', checked)], M)).
+
+% a stand-in's cycle is said at the line its written_at/4 gives the pair
+test(stand_in_cycle_at_the_line_written,
+     [true(M == "D:5: the superiority relation has a cycle, r1 > r2 > r1: it must be acyclic")]) :-
+    with_files(["rule(r1, defeasible, b).\nrule(r2, defeasible, neg(b)).\nsup(r1, r2).\nsup(r2, r1).\nwritten_at(5, sup, r1, r2).\nwritten_at(6, sup, r2, r1).\n"], [F], load_error([file(F, 'D', checked)], M)).
+
+% sup_names(false): a sup/2 naming a rule of no file read passes (a file
+% of added rules converted alone), and a cycle is still found
+test(sup_names_false_lets_a_pair_name_no_rule, [true(Ws == [])]) :-
+    with_files(["rule(r1, defeasible, no_spill).\nsup(r1, r9).\n"], [F], load_theories([file(F, 'T')], [sup_names(false)], Ws)).
+test(sup_names_false_still_finds_a_cycle,
+     [true(M == "T:2: the superiority relation has a cycle, r1 > r1: it must be acyclic")]) :-
+    with_files(["rule(r1, defeasible, b).\nsup(r1, r1).\nsup(r1, r9).\n"], [F],
+               catch(( load_theories([file(F, 'T')], [sup_names(false)], _), M = loaded ), theory_error(N, L, M0),
+                     format(string(M), "~w:~w: ~w", [N, L, M0]))).
+
 :- end_tests(ask).

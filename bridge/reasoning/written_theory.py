@@ -86,7 +86,7 @@ def stand_in(path: str, native: Path) -> tuple[str, str, bool]:
     from pantarhei.bridge.theories.unknown_names import written_at_facts
 
     theory = loading.read_theory(path)
-    loading.check_file(theory, pouring=False)       # its names: SWI-Prolog's to check
+    loading.check_file(theory)      # its rules, names and superiority: SWI-Prolog's to check
     native.write_text(theory.native() + written_at_facts(theory))
     return str(native), _shown(path), True
 

@@ -18,7 +18,8 @@ rule with an empty body (a strict one proves +D a like a fact).
 `-` (or `¬`) negates a literal; comments start with `#`, `%` or `//`.
 The superiority relation (`r1 > r2`, with the specificity of learned
 rules) must be acyclic: a cycle, or a rule superior to itself, is an
-error naming its rules.
+error naming its rules and the line of its first pair (theory/ask.pl's
+check, made when the file is loaded: bridge/theories/prolog_checks.py).
 
 Rules with variables (`?x`, or a name starting with an upper-case letter
 inside an argument list) are grounded over the facts: every instance whose
@@ -40,12 +41,12 @@ import re
 from pathlib import Path
 from typing import Sequence
 
-from pantarhei.theory import TheoryFileError, check_message
+from pantarhei.theory import TheoryFileError
 
 from pantarhei.bridge.theories import facts as theory_facts
 from pantarhei.bridge.errors import quoted
 from pantarhei.bridge.files import is_dfl  # noqa: F401  (the format's test, with the format)
-from pantarhei.bridge.theories.model import Rule, Theory, complement, superiority_cycle
+from pantarhei.bridge.theories.model import Rule, Theory, complement
 from pantarhei.bridge.theories.native import from_facts
 from pantarhei.bridge.theories.well_formed import value_text
 
@@ -82,11 +83,6 @@ def parse_dfl(text: str, source: str = "<dfl>") -> Theory:
     annotations, derived = _annotations(raws, source)
     lines = [re.split(r"#|%|//", raw, maxsplit=1)[0].strip() for raw in raws]
     schemas, sups = _statements(lines, source, t)
-    cycle = superiority_cycle((a, b) for a, b, _ in sups)
-    if cycle:
-        n = next(n for a, b, n in sups if (a, b) == (cycle[0], cycle[1]))
-        raise TheoryFileError(f"{source}:{n}: "
-                              + check_message("superiority_cycle", " > ".join(cycle)))
     t.rules, origin = _ground(schemas, t.facts, source)
     _add_superiority(t, sups, schemas, origin, source)
     seen: dict[str, int] = {}
@@ -191,7 +187,9 @@ def _add_superiority(t: Theory, sups: list[tuple[str, str, int]], schemas: list[
         # a label not defined here may name a rule of another file (merge)
         left = instances.get(a) or ([] if a in ids else [a])
         right = instances.get(b) or ([] if b in ids else [b])
-        t.sup.extend((x, y) for x in left for y in right)
+        for pair in ((x, y) for x in left for y in right):
+            t.sup.append(pair)
+            t.fact_lines.setdefault(("sup", *pair), n)
 
 
 def _split(text: str, where: str) -> list[str]:

@@ -8,10 +8,10 @@ from pathlib import Path
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.files import theory_file_problem
+from pantarhei.bridge.theories import prolog_checks
 from pantarhei.bridge.theories.dfl import is_dfl, read_dfl
 from pantarhei.bridge.theories.model import Theory
 from pantarhei.bridge.theories.native import read_native
-from pantarhei.bridge.theories.well_formed import source_line, source_text
 from pantarhei.theory import TheoryFileError, check_message, default_theory, defaults
 
 #: The theory the exploration writes, used when no theory file is named.
@@ -45,10 +45,12 @@ def load(paths: Path | str | list | tuple | None = None, check: bool = True,
          pouring: bool = False) -> Theory:
     """The theory of one or more files (merged: a learned theory and rules
     added by hand), or the shipped learned theory when none is given.
-    With `check`, sup/2 must name rules of the theory. With `pouring`, the
-    theory is read as a theory of pouring: a rule that names something the
-    vocabulary does not know gets a warning on stderr (theory/ask.pl's
-    check: bridge/theories/unknown_names.py)."""
+    With `check`, sup/2 must name rules of the theory. Its general rules
+    and its superiority relation are checked by theory/ask.pl
+    (bridge/theories/prolog_checks.py). With `pouring`, the theory is read
+    as a theory of pouring: a rule that names something the vocabulary does
+    not know gets a warning on stderr (the same check's,
+    bridge/theories/unknown_names.py's words)."""
     if paths is None or (isinstance(paths, (list, tuple)) and not paths):
         if not DEFAULT_THEORY.is_file():
             raise UserError(NO_THEORY)
@@ -61,7 +63,7 @@ def load(paths: Path | str | list | tuple | None = None, check: bool = True,
             raise UserError(problem)
     theories = [read_theory(p) for p in paths]
     for t in theories:
-        check_file(t, pouring)
+        check_file(t)
     try:
         theory = merge(theories)
         if check:
@@ -71,27 +73,22 @@ def load(paths: Path | str | list | tuple | None = None, check: bool = True,
                 ids = {r.id for r in theory.rules}
                 for t in theories:
                     t.check_superiority(ids)
-        theory.check_acyclic([t.source for t in theories])
+        unknown = prolog_checks.check(theories, names=pouring)
     except TheoryFileError as e:
         raise UserError(str(e)) from None
+    if unknown:
+        from pantarhei.bridge.theories.unknown_names import print_warnings
+
+        print_warnings(unknown)
     return theory
 
 
-def check_file(t: Theory, pouring: bool = True) -> None:
-    """UserError for a theory file that is empty or whose general rules the
-    vocabulary cannot read; with `pouring`, a warning on stderr for each
-    name its rules use that the vocabulary does not know (the check of
-    theory/ask.pl that `ask` makes of the files it reads)."""
+def check_file(t: Theory) -> None:
+    """UserError for a theory file that is empty (its general rules, its
+    names and its superiority relation are theory/ask.pl's to check: load,
+    or SWI-Prolog reading a stand-in for it)."""
     if not (t.facts or t.rules or t.sup or t.settings or t.extra):
         raise UserError(f"{t.source}: " + check_message("empty_theory"))
-    try:
-        check_general_rules(t)
-    except TheoryFileError as e:
-        raise UserError(str(e)) from None
-    if pouring:
-        from pantarhei.bridge.theories.unknown_names import print_warnings, unknown_names
-
-        print_warnings(unknown_names(t))
 
 
 def merge(theories: list[Theory]) -> Theory:
@@ -183,43 +180,3 @@ def initial_antecedent(theory: Theory) -> list[str]:
     antecedent a_0 its exploration started from (and which every learned
     rule body therefore contains, or a neighbour of)."""
     return [p for p in settings(theory).get("initial", []) if isinstance(p, str)]
-
-
-def check_general_rules(theory: Theory) -> None:
-    """TheoryFileError (`file:line: what`) for a general rule (provenance
-    `layer general`) that the vocabulary cannot read: a body proposition or
-    a head that is not in it, or evidence out of range (a confidence outside
-    0..1000 permille, more pours kept than described)."""
-    from pantarhei.theory.lexicon import load_vocabulary
-
-    general = {rid for rid, k, v in theory.provenance if k == "layer" and v == "general"}
-    if not general:
-        return
-    vocab = load_vocabulary()
-    text = source_text(theory.source)
-    expectations = set(vocab.expectation_names)
-    for r in theory.rules:
-        if r.id not in general:
-            continue
-        for b in r.body:
-            if b not in vocab.propositions:
-                where = source_line(text, rf"body\(\s*{re.escape(r.id)}\s*,\s*{re.escape(b)}\s*\)", theory.source)
-                raise TheoryFileError(f"{where}: " + check_message("general_body", r.id, b))
-        head = r.head[4:-1] if r.head.startswith("neg(") else r.head
-        if head not in expectations:
-            where = source_line(text, rf"rule\(\s*{re.escape(r.id)}\s*,", theory.source)
-            raise TheoryFileError(f"{where}: " + check_message("general_head", r.id, head))
-    facts = {(rid, k): v for rid, k, v in theory.provenance if rid in general}
-    for (rid, key), v in facts.items():
-        if key == "confidence_permille" and not (isinstance(v, int) and 0 <= v <= 1000):
-            why = check_message("general_confidence", rid, v)
-        elif key in ("support", "kept") and not (isinstance(v, int) and v >= 0):
-            why = check_message("general_count", rid, key, v)
-        elif key == "kept" and isinstance(facts.get((rid, "support")), int) and v > facts[(rid, "support")]:
-            why = check_message("general_kept", rid, v, facts[(rid, "support")])
-        else:
-            continue
-        # the line is looked for only to say where: a search per fact costs
-        # more than reading the theory
-        where = source_line(text, rf"provenance\(\s*{re.escape(rid)}\s*,\s*{key}\s*,", theory.source)
-        raise TheoryFileError(f"{where}: {why}")

@@ -13,7 +13,8 @@ and `provenance(Id, Key, V)`; facts of any other predicate (`set_aside/3`,
 escaped). What a file may hold is checked by `well_formed` (and by
 theory/theory_files.pl, with the same messages); `native` reads a file.
 The superiority a theory's rules have (sup/2 and the specificity of learned
-rules), and whether it is acyclic, is asked of the theory here.
+rules) is asked of the theory here; whether it is acyclic, of theory/ask.pl
+(`check_acyclic`).
 """
 from __future__ import annotations
 
@@ -21,7 +22,7 @@ import re
 from collections import deque
 from dataclasses import dataclass, field
 from itertools import combinations
-from typing import Iterable, Sequence
+from typing import Iterable
 
 from pantarhei.bridge.theories.facts import term_text
 from pantarhei.bridge.theories.well_formed import (KINDS, NAME, RULE_NAME, check_literal,
@@ -58,6 +59,10 @@ class Theory:
     body_lines: dict[tuple[str, str], int] = field(default_factory=dict, compare=False, repr=False)
     #: DFL rules with variables, grounded when read: (`file:line`, label).
     schemas: list[tuple[str, str]] = field(default_factory=list, compare=False, repr=False)
+    #: The first line of each `sup(A, B)` fact (or DFL `A > B`), by ("sup",
+    #: A, B); of each `provenance(Id, Key, V)` fact, by ("provenance", Id, Key).
+    fact_lines: dict[tuple[str, str, str], int] = field(default_factory=dict, compare=False,
+                                                       repr=False)
 
     def confidences(self) -> dict[str, int]:
         """Each rule's confidence in permille, P(head | body), for the rules
@@ -90,7 +95,8 @@ class Theory:
         return Theory(self.facts + extra, list(self.rules), list(self.sup), set(self.learned),
                       list(self.extra), self.source,
                       {k: list(v) for k, v in self.settings.items()}, list(self.provenance),
-                      dict(self.lines), dict(self.body_lines), list(self.schemas))
+                      dict(self.lines), dict(self.body_lines), list(self.schemas),
+                      dict(self.fact_lines))
 
     def native(self) -> str:
         """The theory in the native format: everything it holds (settings
@@ -195,28 +201,18 @@ class Theory:
         for f in self.facts:
             check_literal(f, f"{self.source}:0")
 
-    def check_acyclic(self, sources: Sequence[str] | None = None) -> None:
+    def check_acyclic(self) -> None:
         """Raise TheoryFileError if the superiority relation (sup/2 with
         specificity) has a cycle: a rule could then beat itself, and a
-        literal and its complement both be concluded. Specificity alone
-        never has one (it makes bodies strictly larger), so only cycles
-        through sup/2 are looked for, with specificity's pairs found on
-        the way (never all of them: they may be quadratically many). The
-        error names the file of `sources` (the files the theory was read
-        from; its own source by default) and the line that says the
-        cycle's first pair."""
+        literal and its complement both be concluded. The check is
+        theory/ask.pl's (bridge/theories/prolog_checks.py, which also
+        checks the general rules), its error naming the line that says the
+        cycle's first pair (`source: what` where no line is known)."""
         if not self.sup:
             return
-        cycle = superiority_cycle(self.sup, self._specific_successors())
-        if cycle:
-            a, b = cycle[0], cycle[1]
-            pattern = (rf"sup\(\s*{re.escape(a)}\s*,\s*{re.escape(b)}\s*\)"
-                       rf"|\b{re.escape(a)}\s*>\s*{re.escape(b)}\b")
-            files = list(sources or [self.source])
-            places = [source_line(source_text(f), pattern, f) for f in files]
-            where = next((w for w in places if not w.endswith(":0")), places[0])
-            raise TheoryFileError(f"{where.removesuffix(':0')}: "
-                                  + check_message("superiority_cycle", " > ".join(cycle)))
+        from pantarhei.bridge.theories.prolog_checks import check
+
+        check([self])
 
     def _specific_successors(self):
         """rule id -> the learned rules it beats by specificity (sup/2 not
@@ -268,6 +264,8 @@ def antecedent_index(aid: str) -> int | None:
 def superiority_cycle(pairs: Iterable[tuple[str, str]], more=None) -> list[str] | None:
     """A shortest cycle [r, ..., r] of the relation `pairs` through the
     first rule (in sorted order) that lies on one; None if it is acyclic.
+    Not a check of a theory (that is theory/ask.pl's, `check_acyclic`):
+    plan's search asks it of the pairs it would add, many times a plan.
     `more(r)`, if given, lists further successors of r (a relation too
     large to list whole); then only cycles through `pairs` are looked for.
     Linear in the rules and pairs: the rules on a cycle are those of the

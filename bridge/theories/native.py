@@ -110,10 +110,12 @@ def from_facts(facts: list[Fact], source: str, t: Theory | None = None) -> Theor
             body_lines.setdefault(("", t.facts[-1]), f.line)
         elif name == "sup":
             t.sup.append((a[0], a[1]))
+            t.fact_lines.setdefault(("sup", a[0], a[1]), f.line)
         elif name == "setting":
             t.settings.setdefault(a[0], []).append(_plain(a[1]))
         elif name == "provenance":
             t.provenance.append((a[0], a[1], _plain(a[2])))
+            t.fact_lines.setdefault(("provenance", a[0], a[1]), f.line)
         else:
             t.extra.append(f.text + ".")
     for rid, line in first_body.items():

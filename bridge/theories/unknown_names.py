@@ -12,30 +12,11 @@ from __future__ import annotations
 import sys
 from typing import TYPE_CHECKING
 
+# where a theory Python read says each fact, for the checks of theory/ask.pl
+from pantarhei.bridge.theories.prolog_checks import written_at, written_at_facts  # noqa: F401
+
 if TYPE_CHECKING:       # `ask` says its warnings without the theory's model
     from pantarhei.bridge.theories.model import Theory
-
-
-def written_at(theory: Theory) -> list[list]:
-    """The facts of `theory` that the check of its names reads, at the
-    lines Python read them: [line, rule, id, head], [line, body, id,
-    literal] or [line, fact, fact, literal] (theory/ask.pl's
-    unknown_names/2), a literal as its native text."""
-    rows = []
-    for r in theory.rules:
-        line = theory.lines.get(r.id, 0)
-        rows.append([line, "rule", r.id, r.head])
-        rows.extend([theory.body_lines.get((r.id, b), line), "body", r.id, b] for b in r.body)
-    rows.extend([theory.body_lines.get(("", f), 0), "fact", "fact", f] for f in theory.facts)
-    return rows
-
-
-def written_at_facts(theory: Theory) -> str:
-    """written_at/4 facts of the rows of written_at, native text: what a
-    stand-in for a DFL file holds beside its theory, for SWI-Prolog to
-    check the names at the DFL file's lines."""
-    return "".join(f"written_at({line}, {kind}, {rid}, {lit}).\n"
-                   for line, kind, rid, lit in written_at(theory))
 
 
 def unknown_names(theory: Theory) -> list[tuple[str, str, str]]:
@@ -46,7 +27,7 @@ def unknown_names(theory: Theory) -> list[tuple[str, str, str]]:
     was not)."""
     from pantarhei.bridge.engines.swipl import engine, text
 
-    rows = written_at(theory)
+    rows = written_at(theory, names_only=True)
     if not rows:
         return []
     e = engine()

@@ -78,7 +78,7 @@ CHECKED = {
 
 def _python_checks(path: Path, capsys) -> tuple[str, list[str]]:
     try:
-        loading.check_file(loading.read_theory(path))
+        loading.load(path, pouring=True)
         error = "loaded"
     except UserError as e:
         error = str(e)

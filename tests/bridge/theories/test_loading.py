@@ -67,6 +67,38 @@ def test_prolog_warns_too(cli, tmp_path: Path) -> None:
     assert any("pour_to_sidee" in x and x.startswith(f"warning: {path}:4:") for x in r.err.splitlines())
 
 
+# -- a general rule and a cycle: one check, whichever reader read the file ----
+
+GENERAL_DFL = {
+    "body": ("# a general rule\ng1: pour_sideways => no_spill\n# pantarhei: provenance(g1, layer, general).\n",
+             "2: general rule g1: pour_sideways is not a proposition of the vocabulary"),
+    "evidence": ("g1: pour_to_side => no_spill\n# pantarhei: provenance(g1, layer, general).\n"
+                 "# pantarhei: provenance(g1, support, 4).\n# pantarhei: provenance(g1, kept, 9).\n",
+                 "4: general rule g1: 9 pours kept of 4 described"),
+    "cycle": ("r1: pour_to_side => no_spill\nr2: pour_to_side => -no_spill\n\nr1 > r2\nr2 > r1\n",
+              "4: the superiority relation has a cycle, r1 > r2 > r1: it must be acyclic"),
+}
+
+
+@pytest.mark.parametrize("name", sorted(GENERAL_DFL))
+def test_a_dfl_file_is_refused_at_its_line_by_every_command(cli, tmp_path: Path, name: str) -> None:
+    """theory/ask.pl checks a DFL file's general rules and superiority
+    relation at the DFL file's lines, whether `ask` hands it over or a
+    command that reads it in Python (conclusions, convert, plan)."""
+    text, said = GENERAL_DFL[name]
+    path = tmp_path / "t.dfl"
+    path.write_text(text)
+    expected = f"{path}:{said}"
+    for argv in (["conclusions", str(path), "--engine", "asp"],
+                 ["conclusions", str(path), "--engine", "prolog"],
+                 ["convert", str(path), "--to", "native"],
+                 ["ask", "--props", "pour_to_side", "--theory", str(path)]):
+        assert assert_one_line_error(cli(*argv)) == f"pantarhei {argv[0]}: {expected}", argv
+    with pytest.raises(UserError) as e:
+        load(path)
+    assert str(e.value) == expected
+
+
 # -- what is no theory ---------------------------------------------------------
 
 @pytest.mark.parametrize("path,words", [
