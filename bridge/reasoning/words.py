@@ -215,8 +215,11 @@ PHRASES: tuple[tuple, ...] = (
     # a length from the rim: inside it or outside? (from the centre is the vocabulary's)
     (UNCLEAR, ("re:(?:" + "|".join(rf"(?<=\d {u} )" for u in _LENGTHS) + r")(?:(?:away )?from|off) (?:the )?"
                r"(?:destination |bowl )?(?:rim|edge|lip|brim)\b",
-               # close to the bowl: above it, low, or near its rim?
-               r"re:\b(?:right )?(?:(?:close|next) to|beside|alongside) (?:the )?(?:destination|bowl)\b(?! rim)")),
+               # right next to the bowl: beside it, or near its rim?
+               r"re:\b(?:right )?(?:next to|beside|alongside) (?:the )?(?:destination|bowl)\b(?! rim)")),
+    # held close to the bowl: just above it (its edge is "near the rim")
+    ("low", (r"re:\b(?:very |right )?(?:close to|near) (?:the )?(?:destination|bowl)\b(?! rim)",),
+     "read as low: just above the bowl's rim (\"near the rim\" would say over its edge)"),
     # where the stream is aimed: "aim for the centre of the bowl" pours centred over it
     ("centred", (r"re:\baim(?:s|ed|ing)?(?: it| the \w+)? (?:for|at|into|towards?) (?:the )?(?:very )?"
                  r"(?:cent(?:re|er)|middle)\b",)),
