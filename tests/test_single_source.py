@@ -265,3 +265,43 @@ def test_the_unknown_name_warning_is_written_once():
     found = [_rel(p) for p in _files(".py") + _files(".pl")
              if words in p.read_text(encoding="utf-8")]
     assert found == ["theory/check_messages.pl"]
+
+
+#: The checks of a theory file made once, each in one module whatever reader
+#: read the file: a general rule's words and evidence, a cycle of the
+#: superiority relation (theory/ask.pl, superiority.pl: Python hands them
+#: the theories it read, bridge/theories/prolog_checks.py) and an unknown
+#: name (found by ask.pl, said by bridge/theories/unknown_names.py).
+SINGLE_CHECKS = {"general_body": "theory/ask.pl", "general_head": "theory/ask.pl",
+                 "general_confidence": "theory/ask.pl", "general_count": "theory/ask.pl",
+                 "general_kept": "theory/ask.pl", "superiority_cycle": "theory/superiority.pl",
+                 "unknown_name": "bridge/theories/unknown_names.py"}
+
+
+def _says(path: Path, key: str) -> bool:
+    """Whether the code of `path` (not its comments or docstrings) says the
+    message `key`: a Python string that is the key (or an f-string that
+    gives it to check_message), or in Prolog the key
+    given to check_message/3 or bound to be given to it."""
+    text = path.read_text(encoding="utf-8")
+    if path.suffix == ".py":
+        call = re.compile(rf"check_message\(\s*['\"]{key}['\"]")     # in an f-string
+        return any(t.type == tokenize.STRING and (t.string.strip("\"'") == key or call.search(t.string))
+                   for t in tokenize.generate_tokens(io.StringIO(text).readline))
+    code = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
+    code = "\n".join(line.split("%", 1)[0] for line in code.splitlines())
+    return bool(re.search(rf"(check_message\(\s*|=\s*){key}\b", code))
+
+
+def test_each_check_made_once_says_its_message_in_one_module():
+    from pantarhei.theory import CHECK_MESSAGES_FILE, read_facts
+
+    texts = dict(read_facts([CHECK_MESSAGES_FILE])["check_message"])
+    files = [p for p in _files(".py") + _files(".pl") if p != CHECK_MESSAGES_FILE]
+    for key, home in SINGLE_CHECKS.items():
+        assert [_rel(p) for p in files if _says(p, key)] == [home], key
+        # nor are its words copied: the longest part of its text between
+        # its arguments is in the table alone
+        words = max(str(texts[key]).split("~w"), key=len).strip()
+        assert len(words) > 12, key
+        assert [_rel(p) for p in files if words in p.read_text(encoding="utf-8")] == [], key
