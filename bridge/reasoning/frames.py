@@ -2,7 +2,8 @@
 question about a clause ("is it true that the bowl tips", "tell me whether
 it spills") or an outcome caused ("does pouring high make it tip") is asked
 as "does the bowl tip"; an outcome typed as a note, with no word that asks
-("cup hits bowl??", "bowl tips?"), is asked as "does the cup hit the bowl".
+("cup hits bowl??", "bowl tips?"), is asked as "does the cup hit the bowl", and so is the
+source supposed to strike the bowl ("what if the cup hits the bowl").
 outcomes.py hears the plain question."""
 from __future__ import annotations
 
@@ -15,6 +16,10 @@ FRAMES = tuple((re.compile(p), r) for p, r in (
      " does "),
     (r"\b(?:know|tell (?:me|us)|predict|wonder(?:ing)?|check|find out|figure out|see|ask(?:ing)?"
      r"|curious|unsure|not sure|any idea|no idea)(?: about)? (?:whether|if) ", " does "),
+    # the source striking the bowl, supposed: "what if the cup hits the bowl" asks whether it
+    # does (what follows a spill or a slide is another question: "what if the milk spills")
+    (r"\b(?:what if|what happens if|suppose|imagine if)(?= (?:the |a |an |my |your |this |that |it )?(?:[a-z]+ ){0,3}"
+     r"(?:hits|bumps|touches|knocks|collides|strikes|scrapes|clips|bonks|bangs|nudges)\b)", " does "),
     # an outcome expected, as a noun: "would you expect spilling", "do you predict any splashing"
     (r"\b(?:expect|predict|anticipate|see|observe|get|cause|causes|notice)(?: any| some| a| much)? "
      r"(?=(?:spill|splash|drip|leak|slosh|splatter|dribbl)\w*\b(?! of\b))", " will it "),

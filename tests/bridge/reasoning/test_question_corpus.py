@@ -472,7 +472,7 @@ REFUSED_SAYING = {
     'the floor is slippery, will the bowl slide?': 'could not place "slippery"',
     'what if the bowl is on a sticky counter?': 'could not place "sticky"',
     'pour batter slowly into a pan': 'pouring has no speed of its own',
-    'what if the jug bonks the bowl?': 'could not place "bonks"',
+    'what if the jug slides into the bowl?': 'asks what follows an outcome',
     'what if the milk spills?': 'asks what follows an outcome',
     'what if the milk ends up on the floor?': 'could not place "ends up"',
     'does the source end up over the bowl?': 'could not place "end up"',
