@@ -18,24 +18,23 @@ from typing import Sequence
 from pantarhei.theory import TheoryFileError
 
 
-def written_at(theory, names_only: bool = False) -> list[list]:
+def written_at(theory) -> list[list]:
     """The facts of `theory` that theory/ask.pl's checks read, at the
     lines Python read them: [line, rule, id, head], [line, body, id,
     literal] or [line, fact, fact, literal] (the check of its names,
-    unknown_names/2), a literal as its native text; unless `names_only`,
-    also [line, provenance, id, key] and [line, sup, a, b] (where its
-    general rules' evidence and its superiority pairs are written)."""
+    unknown_names/2), a literal as its native text; [line, provenance,
+    id, key] and [line, sup, a, b] (where its general rules' evidence and
+    its superiority pairs are written)."""
     rows = []
     for r in theory.rules:
         line = theory.lines.get(r.id, 0)
         rows.append([line, "rule", r.id, r.head])
         rows.extend([theory.body_lines.get((r.id, b), line), "body", r.id, b] for b in r.body)
     rows.extend([theory.body_lines.get(("", f), 0), "fact", "fact", f] for f in theory.facts)
-    if not names_only:
-        at = theory.fact_lines
-        rows.extend([at.get(("provenance", rid, key), 0), "provenance", rid, key]
-                    for rid, key in dict.fromkeys((rid, key) for rid, key, _ in theory.provenance))
-        rows.extend([at.get(("sup", a, b), 0), "sup", a, b] for a, b in dict.fromkeys(theory.sup))
+    at = theory.fact_lines
+    rows.extend([at.get(("provenance", rid, key), 0), "provenance", rid, key]
+                for rid, key in dict.fromkeys((rid, key) for rid, key, _ in theory.provenance))
+    rows.extend([at.get(("sup", a, b), 0), "sup", a, b] for a, b in dict.fromkeys(theory.sup))
     return rows
 
 

@@ -1,39 +1,19 @@
-"""The names a theory of pouring's rules use that the vocabulary does not
-know, and the warning that says each. The check is theory/ask.pl's alone:
-`ask` (and every command that gives SWI-Prolog the files as written) has
-it made of the files it reads, and of a DFL file's stand-in at the DFL
-file's lines (its `written_at/4` facts); a theory Python read for a
-command that also reasons with it in Python (plan, demo) is handed to the
-same check, its facts at the lines Python read them. The words are
+"""The warning that says each name a theory of pouring's rules use that
+the vocabulary does not know. The check that finds them is theory/ask.pl's
+alone: `ask` (and every command that gives SWI-Prolog the files as
+written) has it made of the files it reads, and of a DFL file's stand-in
+at the DFL file's lines (its `written_at/4` facts); a theory Python read
+for a command that also reasons with it in Python (plan, demo) is handed
+to the same check, its facts at the lines Python read them
+(bridge/theories/prolog_checks.py). The words are
 theory/check_messages.pl's (`unknown_name`), with the nearest known name
 as a hint, said here alone."""
 from __future__ import annotations
 
 import sys
-from typing import TYPE_CHECKING
 
 # where a theory Python read says each fact, for the checks of theory/ask.pl
-from pantarhei.bridge.theories.prolog_checks import written_at, written_at_facts  # noqa: F401
-
-if TYPE_CHECKING:       # `ask` says its warnings without the theory's model
-    from pantarhei.bridge.theories.model import Theory
-
-
-def unknown_names(theory: Theory) -> list[tuple[str, str, str]]:
-    """(where, what, name) for each literal of a rule or fact of `theory`
-    that names no proposition or expectation of the vocabulary (negated
-    or not) and that the theory's own rules do not use, by line: as
-    theory/ask.pl's unknown_names/2 finds them (the engine started if it
-    was not)."""
-    from pantarhei.bridge.engines.swipl import engine, text
-
-    rows = written_at(theory, names_only=True)
-    if not rows:
-        return []
-    e = engine()
-    e.use_module("ask")
-    found = e.once("ask:unknown_names(Rows, Us)", Rows=rows)["Us"]
-    return [(f"{theory.source}:{line}", text(what), text(name)) for line, what, name in found]
+from pantarhei.bridge.theories.prolog_checks import written_at_facts  # noqa: F401
 
 
 def warning_lines(unknown: list[tuple[str, str, str]], at_most: int | None = None) -> list[str]:

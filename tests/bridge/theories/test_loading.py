@@ -16,7 +16,8 @@ import pytest
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.theories import loading
 from pantarhei.bridge.theories.loading import DEFAULT_THEORY, load
-from pantarhei.bridge.theories.unknown_names import unknown_names, warning_lines
+from pantarhei.bridge.theories.prolog_checks import check
+from pantarhei.bridge.theories.unknown_names import warning_lines
 from tests.conftest import assert_one_line_error
 
 TYPO_PL = ("% a misspelled rule\n"
@@ -28,6 +29,10 @@ TYPO_DFL = "# a misspelled rule\n\nh1: light_liquid, pour_to_sidee => -no_spil\n
 
 def _warnings(path: Path) -> list[str]:
     return warning_lines(unknown_names(load(path)))
+
+
+def unknown_names(theory) -> list[tuple[str, str, str]]:
+    return check([theory], names=True)
 
 
 @pytest.mark.parametrize("name,text,lines", [("typo.pl", TYPO_PL, (2, 4)), ("typo.dfl", TYPO_DFL, (3, 3))])
