@@ -9,7 +9,9 @@ outcome; one going on ("when the cup comes in fast") is left for the
 scene too.
 
 And a place the liquid may land instead of the bowl, asked beside it:
-"does it go in the bowl or on the table" asks whether it spills too."""
+"does it go in the bowl or on the table" asks whether it spills too; and
+staying said after going in ("does it go in and stay") asks whether it
+stays in the bowl."""
 from __future__ import annotations
 
 import re
@@ -40,6 +42,10 @@ _ENDS = r"(?= *(?:[?.!,;:]|$| or\b| and\b| lol\b))"
 _ELSEWHERE = re.compile(r"\boutcome (?P<said>or (?:on|onto|all over|over) (?:the |a |my )?"
                         r"(?:table|counter|floor|worktop|countertop|ground|bench)s?)\b")
 
+#: Staying said after going in, with no place: it stays where it went.
+_STAYS = re.compile(r"\boutcome (?P<said>(?:,? ?and|,) (?:then )?(?:it )?(?:stay|stays|remain|remains)(?: there)?)"
+                    r"(?= *(?:[?.!]|$))")
+
 
 def during(text: str, asked: list[str]) -> tuple[str, list[str], list[str]]:
     """`text` (after outcomes.hear took out what it asks: "outcome" stands
@@ -51,6 +57,11 @@ def during(text: str, asked: list[str]) -> tuple[str, list[str], list[str]]:
         heard += [m.group("said") for m in _ELSEWHERE.finditer(text)]
         asked = [*asked, "no_spill"]
         text = _ELSEWHERE.sub("outcome", text)
+    stays = _STAYS.search(text)         # "does it go in the bowl and stay": and stay in it
+    if stays and "liquid_enters_destination" in asked:
+        heard.append(stays.group("said"))
+        asked = [*asked, *(n for n in ("liquid_remains_in_destination",) if n not in asked)]
+        text = text[:stays.start("said")] + text[stays.end():]
     if not all(n in asked for n in STILL):
         return text, asked, heard
     for phase, words in _PHASES:

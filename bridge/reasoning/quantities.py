@@ -10,7 +10,8 @@ tilt of the source in its stage, or its roll if "roll" or "sideways" is
 said; a length its height above the destination's rim ("below": under the
 rim), or its distance from the destination's axis if "side", "away",
 "far" or "off" is said, or its sideways offset if "sideways" or "offset"
-is; a time the move into the pouring pose or out of it; a mass the bowl it
+is; a time the move into the pouring pose or out of it (a tilt said "over 2 s"
+is the move in's, which carries the tilt; "held for 5 s" no move's); a mass the bowl it
 qualifies; a count the particles of liquid. The value is converted to the
 parameter's unit (theory/vocabulary/parameters.pl) and read as the
 proposition of that parameter whose range holds it; a number no range
@@ -48,6 +49,8 @@ CUES = {
 #: The words read with a number besides its cues: a roll is "tilted sideways", a pitch
 #: "rotated forward".
 ALSO_READ = {"roll": ("tilt",), "pitch": ("rotate", "turn")}
+#: Words that say a time as a span a move takes: "over 2 s", not "held for 5 s".
+_SPAN = {"over", "in", "within"}
 #: How far from a number its cue words may stand.
 REACH = 4
 #: Words that may stand between a number and the cue beside it: "a height of 20 cm",
@@ -204,11 +207,14 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
         # where a move before pouring goes to is the pouring pose: "raise it to 20 cm before pouring"
         pose = "pour" if stage[i] == "approach" and q.measures == "length" and i > 0 \
             and tokens[i - 1].word == "to" and _low_end(tokens, i) is None else POSE[stage[i]]
-        param, by = parameter(q, pose, MOVE[stage[i]], choosing, body)
+        move, spans = MOVE[stage[i]], set()
+        if q.measures == "time" and move is None and "tilt" in choosing and tokens[i - 1].word in _SPAN:
+            move, spans = "approach", {i - 1}     # "tilted to 90 degrees over 2 s": the move in carries the tilt
+        param, by = parameter(q, pose, move, choosing, body)
         if param == "particle_mass":
             q = Quantity(q.value * 1000, q.measures, q.text)     # g to the parameter's mg
         read_too = (*CUES.get(by, ()), *ALSO_READ.get(by, ()))
-        used = {k for k in near if cue_of[tokens[k].word] in read_too}
+        used = {k for k in near if cue_of[tokens[k].word] in read_too} | spans
         if by == "offset":          # "offset 8 cm to one side": the offset's direction, one phrase
             used |= _direction(tokens, _past(tokens, i + 2, 1, _BESIDE), i + 2, near)
         low = _low_end(tokens, i)          # "8 to 10 cm": the range, read only if one holds it

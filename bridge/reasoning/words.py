@@ -32,6 +32,7 @@ from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.moves import MOVES
 from pantarhei.bridge.reasoning.numerals import NumberWords
 from pantarhei.bridge.reasoning.properties import SURFACE_SAID, Levels, Surfaces, Values
+from pantarhei.bridge.reasoning.ramps import Ramps
 
 #: The word that phrases too vague to read become ("pour from above": over
 #: the destination's middle, or high above it?): reading.py places it
@@ -363,7 +364,7 @@ def _everyday() -> list[tuple[Matcher, str, str]]:
 
 
 @lru_cache(maxsize=None)
-def rewrites() -> tuple[tuple[Cued | Matcher | Levels | Values | Surfaces | NumberWords, tuple[str, ...],
+def rewrites() -> tuple[tuple[Cued | Matcher | Levels | Values | Surfaces | Ramps | NumberWords, tuple[str, ...],
                                  str], ...]:
     """Each rewrite in the order applied, with the words it is read as and
     what is said back: a property by its level or its number ("low
@@ -372,7 +373,7 @@ def rewrites() -> tuple[tuple[Cued | Matcher | Levels | Values | Surfaces | Numb
     everyday word list, a number said in words ("two inches": numerals.py),
     then PHRASES; an entry's phrases as one pattern (cued.py), a section
     of the list as a Matcher."""
-    return ((Levels(), (), ""), (Values(), (), ""), (Surfaces(), (), SURFACE_SAID),
+    return ((Levels(), (), ""), (Values(), (), ""), (Surfaces(), (), SURFACE_SAID), (Ramps(), (), ""),
             *((m, tuple(w.split()), said) for m, w, said in _everyday()),
             (NumberWords(), (), ""),
             *((Cued.of(phrases), tuple(words.split()), said[0] if said else "")
