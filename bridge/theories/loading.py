@@ -45,8 +45,8 @@ def load(paths: Path | str | list | tuple | None = None, check: bool = True,
          pouring: bool = False) -> Theory:
     """The theory of one or more files (merged: a learned theory and rules
     added by hand), or the shipped learned theory when none is given.
-    With `check`, sup/2 must name rules of the theory. Its general rules
-    and its superiority relation are checked by theory/ask.pl
+    Its general rules and its superiority relation (with `check`, sup/2
+    naming rules of the theory) are checked by theory/ask.pl
     (bridge/theories/prolog_checks.py). With `pouring`, the theory is read
     as a theory of pouring: a rule that names something the vocabulary does
     not know gets a warning on stderr (the same check's,
@@ -66,14 +66,7 @@ def load(paths: Path | str | list | tuple | None = None, check: bool = True,
         check_file(t)
     try:
         theory = merge(theories)
-        if check:
-            if len(theories) == 1:
-                theory.check_superiority()
-            else:           # sup/2 may cross files: said where each file says it
-                ids = {r.id for r in theory.rules}
-                for t in theories:
-                    t.check_superiority(ids)
-        unknown = prolog_checks.check(theories, names=pouring)
+        unknown = prolog_checks.check(theories, names=pouring, sup_names=check)
     except TheoryFileError as e:
         raise UserError(str(e)) from None
     if unknown:

@@ -18,15 +18,13 @@ rules) is asked of the theory here; whether it is acyclic, of theory/ask.pl
 """
 from __future__ import annotations
 
-import re
 from collections import deque
 from dataclasses import dataclass, field
 from itertools import combinations
 from typing import Iterable
 
 from pantarhei.bridge.theories.facts import term_text
-from pantarhei.bridge.theories.well_formed import (KINDS, NAME, RULE_NAME, check_literal,
-                                                   source_line, source_text, value_text)
+from pantarhei.bridge.theories.well_formed import KINDS, NAME, RULE_NAME, check_literal, value_text
 from pantarhei.theory import TheoryFileError, check_message
 
 
@@ -232,18 +230,6 @@ class Theory:
             return [s.id for s in by_head.get(complement(r.head), ())
                     if set(s.body) < rb and (s.id, r.id) not in explicit and (r.id, s.id) not in explicit]
         return successors
-
-    def check_superiority(self, ids: set[str] | None = None) -> None:
-        """Raise TheoryFileError if sup/2 names a rule that does not exist
-        (of `ids` when given: the rules of the theory this file is part of)."""
-        text = source_text(self.source)
-        ids = {r.id for r in self.rules} if ids is None else ids
-        for a, b in self.sup:
-            for x in (a, b):
-                if x not in ids:
-                    where = source_line(text, rf"sup\(\s*{re.escape(a)}\s*,\s*{re.escape(b)}\b"
-                                              rf"|\b{re.escape(a)}\s*>\s*{re.escape(b)}\b", self.source)
-                    raise TheoryFileError(f"{where}: " + check_message("sup_not_a_rule", a, b, x))
 
 
 def antecedent_id(i: int) -> str:

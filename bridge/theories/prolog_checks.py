@@ -1,7 +1,7 @@
 """The checks of a theory that SWI-Prolog makes, asked of a theory Python
 read or built: a general rule (provenance `layer general`) speaks the
-vocabulary's words and has its evidence in range, the superiority
-relation (sup/2 with specificity) is acyclic, and, read as a theory of
+vocabulary's words and has its evidence in range, sup/2 names rules, the
+superiority relation (sup/2 with specificity) is acyclic, and, read as a theory of
 pouring, the names its rules use that the vocabulary does not know.
 Each is theory/ask.pl's alone (load_theories/3), said in the words of
 theory/check_messages.pl: Python hands each file it read over as a
@@ -54,15 +54,17 @@ def needs_prolog(theory) -> bool:
                                    for _, k, v in theory.provenance)
 
 
-def check(theories: Sequence, names: bool = False) -> list[tuple[str, str, str]]:
+def check(theories: Sequence, names: bool = False,
+          sup_names: bool = False) -> list[tuple[str, str, str]]:
     """TheoryFileError (`file:line: what`, one line) unless the theories
     (one each of the files a theory was read from, merged in order) pass
     theory/ask.pl's checks of their general rules and of the superiority
-    relation they make together; with `names`, the names their rules use
-    that the vocabulary does not know, (where, what, name), by file and
-    line (else none). A sup/2 pair may name a rule of no file here (a
-    file of added rules read alone). The engine's theory is changed: it
-    holds none that a digest names afterwards."""
+    relation they make together (with `sup_names`, each sup/2 pair naming
+    rules of theirs: else a pair may name a rule of no file here, as of a
+    file of added rules read alone); with `names`, the names their rules
+    use that the vocabulary does not know, (where, what, name), by file
+    and line (else none). The engine's theory is changed: it holds none
+    that a digest names afterwards."""
     if not names and not any(map(needs_prolog, theories)):
         return []
     from pantarhei.bridge.engines.swipl import engine, text
@@ -77,10 +79,10 @@ def check(theories: Sequence, names: bool = False) -> list[tuple[str, str, str]]
             Path(paths[-1]).write_text(t.native() + written_at_facts(t))
         r = e.once(
             "maplist([P, N, file(P, N, checked)]>>true, Ps, Ns, Fs), "
-            "catch(( ask:load_theories(Fs, [sup_names(false)], Ws), R = ok, "
+            "catch(( ask:load_theories(Fs, [sup_names(S)], Ws), R = ok, "
             "        findall([W, T, U], member(unknown(W, T, U), Ws), Us) ), "
             "      E, ( ask:error_line(E, R), Us = [] ))",
-            Ps=paths, Ns=[t.source for t in theories])
+            Ps=paths, Ns=[t.source for t in theories], S=sup_names)
     if text(r["R"]) != "ok":
         raise TheoryFileError(text(r["R"]))
     return [(text(w), text(what), text(n)) for w, what, n in r["Us"]] if names else []

@@ -3,11 +3,10 @@ and literals as the native format and both engines read them, the checks of
 what they cannot read (their messages theory/check_messages.pl's, as
 SWI-Prolog's),
 how a setting's or provenance's value is written so that it reads back as
-one value, and the line of a file an error is on."""
+one value."""
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
 from pantarhei.bridge.theories import facts as theory_facts
 from pantarhei.bridge.theories.facts import Text, term_text
@@ -59,18 +58,3 @@ def value_text(value) -> str:
         except (TheoryFileError, ValueError):
             pass
     return theory_facts.quote(value)
-
-
-def source_text(source: str) -> str:
-    """The text of the file a theory was read from ("" if there is none)."""
-    try:
-        return Path(source).read_text(encoding="utf-8", errors="replace")
-    except OSError:
-        return ""
-
-
-def source_line(text: str, pattern: str, source: str) -> str:
-    """`source:line` of the first match of `pattern` in `text` (line 0 if none)."""
-    m = re.search(pattern, text)
-    line = text.count("\n", 0, m.start()) + 1 if m else 0
-    return f"{source}:{line}"
