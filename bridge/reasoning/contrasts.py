@@ -6,9 +6,12 @@ water use something thicker"; the everyday word list has read water as
 cannot name, set against one it reads ("from the side rather than from
 above"), is read as nothing, the place said beside it read; a little off
 the centre is near the rim (off-centre with no amount stays refused: how
-far?); "right in the middle" is in the middle.
+far?); "right in the middle" is in the middle; a length "relative to the
+rim" is above it (a minus sign below it).
 """
 from __future__ import annotations
+
+from pantarhei.bridge.reasoning.units import UNITS
 
 #: Something poured, unnamed: "something thicker", "a liquid that is runnier".
 _THING = r"(?:(?:something|some ?thing|stuff|one|a liquid|liquid)(?: that is| that's)? )?"
@@ -19,6 +22,8 @@ _CONTRAST = r"(?:instead of|rather than|in place of)"
 _USE = r"(?:(?:,|;) )?(?:(?:use|pour|try|take|pick|with|using|have) )?"
 #: A place the vocabulary cannot name, set against one it reads.
 _VAGUE = r"(?:from )?(?:above|overhead|the top|on top)"
+#: After a length: "-2 cm relative to the rim".
+_AFTER_LENGTH = "|".join(rf"(?<=\d {u} )" for u, (measures, _) in UNITS.items() if measures == "length")
 
 CONTRASTS: tuple[tuple, ...] = (
     ("sticky liquid", (rf"re:\b{_CONTRAST} (?:the |using |pouring )?liquid {_USE}{_THING}{_MORE}{_THICKER}\b",
@@ -32,5 +37,8 @@ CONTRASTS: tuple[tuple, ...] = (
     ("near the rim", (r"re:\b(?:just |only )?(?:slightly|a (?:little |tiny )?bit|a little|a tad) off (?:the )?"
                          r"(?:destination |bowl )?(?:centre|center|middle)\b",),
      "read as near the rim: a little off the middle, where the rim is nearer"),
+    # a height measured from the rim: above it (a minus sign below it)
+    ("above the rim", (rf"re:(?:{_AFTER_LENGTH})(?:relative to|with respect to|vs|versus)"
+                       r" (?:the )?(?:destination |bowl )?(?:rim|edge|lip|brim)\b(?! (?:of the )?(?:source|cup))",)),
     ("hedge", (r"re:\b(?:straight|right|dead|smack|bang)(?= (?:in )?(?:the )?(?:middle|centre|center)\b)",)),
 )
