@@ -167,39 +167,23 @@ add_line(Name, Earlier, Line, F) :-
 check_sup_names(Read) :-
     forall(( member(read(Name, LineFacts, Kind), Read), member(Line0-sup(A, B), LineFacts),
              member(X, [A, B]), \+ defeasible:rule(X, _, _) ),
-           ( written_line(Kind, Name, LineFacts, Line0, A, B, Line),
+           ( written_line(Kind, LineFacts, Line0, A, B, Line),
              check_message(sup_not_a_rule, [A, B, X], M),
              throw(theory_error(Name, Line, M)) )).
 
 sup_line(Read, A, B, Name, Line) :-
     (   member(read(Name, LineFacts, Kind), Read), memberchk(Line0-sup(A, B), LineFacts)
-    ->  written_line(Kind, Name, LineFacts, Line0, A, B, Line)
+    ->  written_line(Kind, LineFacts, Line0, A, B, Line)
     ;   Read = [read(Name, _, _)|_], Line = 0
     ).
 
-% written_line(+Kind, +Name, +LineFacts, +Line0, +A, +B, -Line): the line
-% of the file as written that says sup(A, B): Line0 of a file read as
-% written; of a stand-in (a DFL file written out natively), the line its
-% written_at(Line, sup, A, B) fact gives, else the first line of the file
-% Name that says =|A > B|= (or sup(A, B)), 0 if none does.
-written_line(checked, _, LineFacts, _, A, B, Line) :-
-    memberchk(_-written_at(Line, sup, A, B), LineFacts), !.
-written_line(checked, Name, _, _, A, B, Line) :- !,
-    (   catch(read_file_to_string(Name, Text, [encoding(utf8)]), _, fail),
-        split_string(Text, "\n", "", Lines),
-        format(string(Dfl), "~w>~w", [A, B]),
-        format(string(Native), "sup(~w,~w).", [A, B]),
-        nth1(Line, Lines, L),
-        split_string(L, "#", "", [Code|_]),
-        split_string(Code, "", " \t\r", [Trimmed]),
-        atomic_list_concat(Words, ' ', Trimmed), atomic_list_concat(Words, Squeezed0),
-        atomic_list_concat(Tabs, '\t', Squeezed0), atomic_list_concat(Tabs, Squeezed1),
-        atom_string(Squeezed1, Squeezed),
-        memberchk(Squeezed, [Dfl, Native])
-    ->  true
-    ;   Line = 0
-    ).
-written_line(_, _, _, Line, _, _, Line).
+% written_line(+Kind, +LineFacts, +Line0, +A, +B, -Line): the line of the
+% file as written that says sup(A, B): Line0 of a file read as written; of
+% a stand-in, the line its written_at(Line, sup, A, B) fact gives (0 if
+% none does).
+written_line(checked, LineFacts, _, A, B, Line) :- !,
+    (   memberchk(_-written_at(Line, sup, A, B), LineFacts) -> true ; Line = 0 ).
+written_line(_, _, Line, _, _, Line).
 
 % check_general_rules(+Name, +LineFacts): a general rule speaks the
 % vocabulary's words, and its evidence is in range.
