@@ -110,6 +110,9 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text = re.sub(rf"\b(?:{'|'.join(_BARE)})\b|{_CHATTED}", lambda m: respelt(m.group(0)), text)
     text = re.sub(rf"\bcant\b(?= (?:{_PRONOUNS})\b)", lambda m: respelt(m.group(0)), text)
     text = re.sub(rf"\b((?:{_PRONOUNS}) )cant\b", lambda m: m.group(1) + respelt("cant"), text)
+    # "w/o" and "w/" as notes write them: without, with
+    text = re.sub(r"\bw/o\b|\bw/(?= ?[a-z])", lambda m: said.setdefault(f"{m.group(0)}: read as with{'out' * (m.group(0) == 'w/o')}")
+                  or f"with{'out' * (m.group(0) == 'w/o')} ", text).replace("  ", " ")
     # "one" standing for the noun a contrast is of: "a heavy bowl instead of a light one" (not
     # one poured from or into, which the noun repeated would lose)
     text = re.sub(r"(?<!\bfrom )(?<!\binto )\b((?:a|an|the) [a-z]+ )([a-z]+) (instead of|rather than|and not|not) (a|an|the) ([a-z]+) one\b",

@@ -78,6 +78,8 @@ def test_no_word_is_dropped_silently(question):
     ("wat if u tilt it halfway", "u: read as you"),
     ("y does a lite bowl slide", "lite: read as light"),
     ("y does a lite bowl slide", "y: read as why"),
+    ("tip it halfway w/o touching the bowl", "w/o: read as without"),
+    ("pour w/ a heavy jug", "w/: read as with"),
     ("will it drip if its tilted steeply", "its: read as it's"),
     ("can i tilt it halfway without spilin", "spilin: read as spilling"),
     ("pour frm high lol", "frm: read as from"),
