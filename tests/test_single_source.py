@@ -268,14 +268,16 @@ def test_the_unknown_name_warning_is_written_once():
 
 
 #: The checks of a theory file made once, each in one module whatever reader
-#: read the file: a general rule's words and evidence, a sup/2 pair naming
-#: no rule, a cycle of the superiority relation (theory/ask.pl,
-#: superiority.pl: Python hands them the theories it read,
-#: bridge/theories/prolog_checks.py) and an unknown name (found by ask.pl,
-#: said by bridge/theories/unknown_names.py).
-SINGLE_CHECKS = {"general_body": "theory/ask.pl", "general_head": "theory/ask.pl",
-                 "general_confidence": "theory/ask.pl", "general_count": "theory/ask.pl",
-                 "general_kept": "theory/ask.pl", "sup_not_a_rule": "theory/ask.pl",
+#: read the file: a general rule's words and evidence (theory_checks.pl), a
+#: sup/2 pair naming no rule (ask.pl), a cycle of the superiority relation
+#: (superiority.pl): Python hands them the theories it read,
+#: bridge/theories/prolog_checks.py; and an unknown name (found by
+#: theory_checks.pl, said by bridge/theories/unknown_names.py).
+SINGLE_CHECKS = {"general_body": "theory/theory_checks.pl",
+                 "general_head": "theory/theory_checks.pl",
+                 "general_confidence": "theory/theory_checks.pl",
+                 "general_count": "theory/theory_checks.pl",
+                 "general_kept": "theory/theory_checks.pl", "sup_not_a_rule": "theory/ask.pl",
                  "superiority_cycle": "theory/superiority.pl",
                  "unknown_name": "bridge/theories/unknown_names.py"}
 

@@ -54,16 +54,6 @@ test(unknown_names, [true(Ws == [unknown("U:2", "rule r1: body", "pour_sidewise"
                                  unknown("U:3", "rule r2: head", "spilled")])]) :-
     with_files(["rule(r1, defeasible, no_spill).\nbody(r1, pour_sidewise).\nrule(r2, defeasible, spilled).\nbody(r2, pour_to_side).\n"], [F], load_theories([file(F, 'U')], Ws)).
 
-% a theory Python read (a DFL file) is checked the same way, at the lines
-% Python read its facts: a body another rule concludes, a head another
-% rule uses and a negated literal's name are the theory's own words
-test(unknown_names_of_rows, [true(Us == [[3, "rule c2: body", "wet"], [4, "fact", "lihgt_liquid"],
-                                         [5, "rule c3: head", "spilled"]])]) :-
-    unknown_names([[2, rule, c1, "wet_table"], [2, body, c1, "pour_to_side"],
-                   [3, rule, c2, "neg(no_spill)"], [3, body, c2, "wet_table"], [3, body, c2, "wet"],
-                   [5, rule, c3, "neg(spilled)"], [5, body, c3, "pour_low"],
-                   [4, fact, '', "lihgt_liquid"]], Us).
-
 % a stand-in (a DFL file Python read and checked) is not checked again,
 % but for its names, at the lines of the DFL file (its written_at/4 facts)
 test(checked_stand_in_skips_file_checks, [true(Ws == [])]) :-

@@ -70,7 +70,7 @@ check_message(general_count, "general rule ~w: ~w is a count of pours, not ~w").
 check_message(general_kept, "general rule ~w: ~w pours kept of ~w described").
 
 % A name of a theory of pouring that the vocabulary does not know, a
-% warning (ask.pl's unknown_names/2 finds them; Python says them, with the
+% warning (theory_checks.pl's unknown_lines/2 finds them; Python says them, with the
 % nearest known name: bridge/theories/unknown_names.py): what names it
 % (such as "rule r1: body"), the name.
 check_message(unknown_name, "~w ~w is not a proposition or expectation of pouring").

@@ -5,7 +5,8 @@
 
 Loads every Prolog module of the theory (this list is the one list of
 them: the command line and the tests read it from here; the modules that
-only they use, fact_reader, theory_store, superiority and proof_words,
+only they use, fact_reader, theory_store, superiority, theory_checks and
+proof_words,
 come with them) and the shipped learned theory, so that asking and
 explaining need no Python. Exploring (curiosity:explore/1) needs the
 oracle, which only `pantarhei prolog` provides.

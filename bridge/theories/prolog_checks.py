@@ -3,7 +3,8 @@ read or built: a general rule (provenance `layer general`) speaks the
 vocabulary's words and has its evidence in range, sup/2 names rules, the
 superiority relation (sup/2 with specificity) is acyclic, and, read as a theory of
 pouring, the names its rules use that the vocabulary does not know.
-Each is theory/ask.pl's alone (load_theories/3), said in the words of
+Each is SWI-Prolog's alone (theory/theory_checks.pl and superiority.pl,
+made by theory/ask.pl's load_theories/3), said in the words of
 theory/check_messages.pl: Python hands each file it read over as a
 stand-in, its native text with the lines Python read its facts at
 (`written_at/4` facts), as `ask` hands over a DFL file. The engine is started only for a theory that has something for
@@ -22,7 +23,7 @@ def written_at(theory) -> list[list]:
     """The facts of `theory` that theory/ask.pl's checks read, at the
     lines Python read them: [line, rule, id, head], [line, body, id,
     literal] or [line, fact, fact, literal] (the check of its names,
-    unknown_names/2), a literal as its native text; [line, provenance,
+    theory/theory_checks.pl's unknown_names/2), a literal as its native text; [line, provenance,
     id, key] and [line, sup, a, b] (where its general rules' evidence and
     its superiority pairs are written)."""
     rows = []

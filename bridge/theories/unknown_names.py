@@ -1,6 +1,6 @@
 """The warning that says each name a theory of pouring's rules use that
-the vocabulary does not know. The check that finds them is theory/ask.pl's
-alone: `ask` (and every command that gives SWI-Prolog the files as
+the vocabulary does not know. The check that finds them is
+theory/theory_checks.pl's alone, made by theory/ask.pl's load_theories/3: `ask` (and every command that gives SWI-Prolog the files as
 written) has it made of the files it reads, and of a DFL file's stand-in
 at the DFL file's lines (its `written_at/4` facts); a theory Python read
 for a command that also reasons with it in Python (plan, demo) is handed
