@@ -1,15 +1,16 @@
 """The checks of a theory that SWI-Prolog makes, asked of a theory Python
 read or built: a general rule (provenance `layer general`) speaks the
 vocabulary's words and has its evidence in range, sup/2 names rules, the
-superiority relation (sup/2 with specificity) is acyclic, and, read as a theory of
-pouring, the names its rules use that the vocabulary does not know.
-Each is SWI-Prolog's alone (theory/theory_checks.pl and superiority.pl,
-made by theory/ask.pl's load_theories/3), said in the words of
-theory/check_messages.pl: Python hands each file it read over as a
-stand-in, its native text with the lines Python read its facts at
-(`written_at/4` facts), as `ask` hands over a DFL file. The engine is started only for a theory that has something for
-those checks to look at. A theory is a bridge/theories/model.Theory (not
-imported: the model asks its cycle check here)."""
+superiority relation (sup/2 with specificity) is acyclic, and, read as a
+theory of pouring, the names its rules use that the vocabulary does not
+know. Each is SWI-Prolog's alone (theory/theory_checks.pl and
+superiority.pl, made by theory/ask.pl's load_theories/3), said in the
+words of theory/check_messages.pl: Python hands each file it read over as
+a stand-in, its native text with the lines Python read its facts at
+(`written_at/4` facts), as `ask` hands over a DFL file. The engine is
+started only for a theory that has something for those checks to look
+at. A theory is a bridge/theories/model.Theory (not imported: the model
+asks its cycle check here)."""
 from __future__ import annotations
 
 import tempfile
@@ -59,7 +60,7 @@ def check(theories: Sequence, names: bool = False,
           sup_names: bool = False) -> list[tuple[str, str, str]]:
     """TheoryFileError (`file:line: what`, one line) unless the theories
     (one each of the files a theory was read from, merged in order) pass
-    theory/ask.pl's checks of their general rules and of the superiority
+    SWI-Prolog's checks of their general rules and of the superiority
     relation they make together (with `sup_names`, each sup/2 pair naming
     rules of theirs: else a pair may name a rule of no file here, as of a
     file of added rules read alone); with `names`, the names their rules

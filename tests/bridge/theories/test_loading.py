@@ -162,3 +162,22 @@ def test_a_theory_learned_before_the_renames_reads_by_todays_names(tmp_path: Pat
     s = loading.settings(loading.load([old]))
     assert s["batch"] == [31] and s["budget"] == [8] and s["slope_permille"] == [100]
     assert s["prior_batch"] == [1] and "samples" not in s and "max_rules" not in s
+
+
+def test_swi_prolog_is_started_only_for_a_theory_it_has_something_to_check(tmp_path: Path) -> None:
+    """A theory without a general rule or a sup/2 pair gives the checks
+    made in SWI-Prolog nothing to look at: reading it (convert, rules, the
+    loading benchmark's theories) starts no engine; with a sup/2 pair it
+    does."""
+    import subprocess
+    import sys
+
+    plain = tmp_path / "plain.pl"
+    plain.write_text("rule(r1, defeasible, no_spill).\nbody(r1, pour_to_side).\n")
+    ordered = tmp_path / "ordered.dfl"
+    ordered.write_text("r1: pour_to_side => no_spill\nr2: pour_to_side => -no_spill\nr1 > r2\n")
+    code = ("import sys; from pantarhei.bridge.theories.loading import load; load(sys.argv[1]); "
+            "print('pyswip' in sys.modules)")
+    started = [subprocess.run([sys.executable, "-c", code, str(p)], capture_output=True, text=True,
+                              timeout=120).stdout.strip() for p in (plain, ordered)]
+    assert started == ["False", "True"]
