@@ -7,9 +7,11 @@ whether the theory expects the goal of the scene said, the ordinary pour
 where nothing else is, and points to `plan` for how); with none, they are
 left for the scene, where they are refused as asking for a value.
 
-"I want the bowl not to move", "I'd like it to stay in the cup", "keep the
-cup still", "to avoid spilling", "to keep it all in the bowl": a goal, said
-as "so that the bowl does not move".
+"I want the bowl not to move", "I'd like it to stay in the cup", "I want it
+all to go in", "I'd like to empty the whole mug", "keep the cup still", "to
+avoid spilling", "to keep it all in the bowl": a goal, said as "so that the
+bowl does not move". "What do I need to change", "what tilt works": a value
+asked for, as "what tilt should I use".
 """
 from __future__ import annotations
 
@@ -32,13 +34,19 @@ _ACT = (r"(?:hold|pour|tilt|keep|put|have|place|go|position|use|do|set|angle|rai
 _WHAT = r"(?: (?:it|them|the \w+))?(?: (?:from|at|to|up|in))?"
 #: The words that ask for a value.
 _ASKING = re.compile(
-    rf"\b(?:(?:what|which)(?: is| be)?(?: the| a)?(?: {_BEST})?|(?:the |a )?{_BEST}) {_VALUE}"
+    # a value that works: "what tilt works", "which height would work best"
+    rf"\b(?:what|which) {_VALUE} (?:works?|would work|will work|is best|would be best)(?: best)?(?= |$|[?.!,])"
+    rf"|\b(?:(?:what|which)(?: is| be)?(?: the| a)?(?: {_BEST})?|(?:the |a )?{_BEST}) {_VALUE}"
     rf"(?:(?:,| and| or|, and|, or) (?:the |a )?{_VALUE})*"      # "the best height and angle"
     rf"(?: (?:to {_ACT}{_WHAT}|(?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT}"
     rf"|for (?:it|pouring|the pour)))?(?= |$)"
-    rf"|\bhow(?: (?:very|really))? {_HOW}(?: (?:should|do|can|must|would|could|shall|is) {_WHO}"
+    # (not a speed of pouring, which the vocabulary has none of: "how slowly should I go")
+    rf"|\bhow(?: (?:very|really))? (?!(?:fast|quick|quickly|slow|slowly) (?:should|do|can|must|would|could|shall)"
+    rf" {_WHO} (?:pour|go)\b){_HOW}(?: (?:should|do|can|must|would|could|shall|is) {_WHO}"
     rf"(?: {_ACT}{_WHAT})?)?(?= |$)"
     rf"|\bhow (?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT}(?= |$)"
+    # what to change or do: "what do I need to change", "what should we adjust"
+    rf"|\bwhat (?:do|should|must|would|can) {_WHO} (?:need to |have to )?(?:change|adjust|alter|do differently)(?= |$)"
     # a choice of two values: "should I pour from low or high", "do we tilt it a bit or a lot"
     rf"|\b(?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT} (?:[a-z]+ ){{1,3}}?or(?: [a-z]+){{1,3}}?"
     rf"(?= *[?.!]* *$| *[,;:])")
@@ -46,8 +54,8 @@ _ASKING = re.compile(
 _KEEPS = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? {_VALUE}) (keeps|will keep|would keep)"
                     r" (it|them|the \w+) (in(?: the \w+)?|still|upright|steady|in place)\b")
 #: Wanting an outcome: "I want the bowl not to move", "we'd like it to stay in".
-_WANT = re.compile(r"\b(?:i|we) (?:want|need|would like|wish)(?: for)? (it|them|the (?!source\b)[a-z]+)"
-                   r"(?= (?:not |never )?to\b)")
+_WANT = re.compile(r"\b(?:i|we) (?:want|need|would like|wish)(?: for)? (it(?: all)?|all of it|everything|them"
+                   r"|the (?!source\b)[a-z]+)(?= (?:not |never )?to\b)")
 
 #: Other ways of saying a goal, said as "so that ...": "keep the cup still" (not "keep the
 #: source upright": how it is held), "don't let it overflow", "make sure it does not spill"
@@ -59,6 +67,9 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:keep|keeps|keeping|stop|stops|stopping|prevent|prevents|preventing) (it|them|the [a-z]+)"
      r" from (?=[a-z]+ing\b)", r"so that \1 does not "),
     (r"\bmake sure(?: that)? ", "make sure so that "),
+    # "I'd like to empty the whole mug": so that it empties
+    (r"\b(?:i|we) (?:want|need|would like|wish|am trying|are trying) to (?:empty|drain) (?:out )?(?:the whole|all of the"
+     r"|all the|the entire|the) ([a-z]+)\b", r"so that the \1 empties"),
     # "avoids the cup hitting the bowl", "prevent the bowl sliding"
     (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing) (it|them|the [a-z]+) (?=[a-z]+ing\b)",
      r"so that \1 does not "),
