@@ -309,3 +309,16 @@ def test_each_check_made_once_says_its_message_in_one_module():
         words = max(str(texts[key]).split("~w"), key=len).strip()
         assert len(words) > 12, key
         assert [_rel(p) for p in files if words in p.read_text(encoding="utf-8")] == [], key
+
+
+def test_the_general_learner_s_tuning_lives_in_defaults_pl():
+    """Every default of the general learner's Settings but the seed is read
+    from theory/defaults.pl (`general_NAME`), none written in the class."""
+    import dataclasses
+
+    from pantarhei.bridge.learning.generalize import Settings
+    from pantarhei.theory import defaults
+
+    tuned = [f for f in dataclasses.fields(Settings) if f.name not in ("seed", "band")]
+    assert tuned and all(f.default is dataclasses.MISSING for f in tuned)
+    assert all(getattr(Settings(), f.name) == defaults()[f"general_{f.name}"] for f in tuned)

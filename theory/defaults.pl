@@ -139,6 +139,26 @@ default(pours_per_proposition, 12).
 % An answer is uncertain where the likelihood that the expectation holds
 % lies within this of one half (35% to 65% of such pours).
 default(uncertain_band_permille, 150).
+% The general learner's tuning (learner general; bridge/learning/generalize.py,
+% its Settings, says what each does; docs/dropped.md gives the figures behind
+% them): the rules per expectation, the default's included; the most
+% propositions of a body; the parameterizations drawn per body; the cost of
+% an answer in another band; how much the empty body and a pair count (a
+% proposition alone counts 1); the cost a new rule must remove; the pours of
+% its own below which a body a sure rule answers may be doubted, how sure
+% such a rule is, and how unlikely its pours must be under it; and how many
+% pours the model of the pours counts as beside a body's own.
+default(general_rules_per_expectation, 12).
+default(general_max_body, 2).
+default(general_draws, 64).
+default(general_miss_permille, 500).
+default(general_default_weight, 20).
+default(general_pair_weight_permille, 200).
+default(general_min_gain_permille, 100).
+default(general_doubt_support, 4).
+default(general_doubt_confidence_permille, 800).
+default(general_unlikely_permille, 50).
+default(general_model_pours, 4).
 
 % The pours of a batch of the learning curiosity (the others': parameters + 1).
 default(learn_batch, 2).

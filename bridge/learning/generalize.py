@@ -43,35 +43,42 @@ from pantarhei.bridge.learning.general_rules import General, GeneralRule, Sup, v
 from pantarhei.bridge.learning.meaning import Meaning, held_in_support
 
 
+def _tuned(key: str, kind: type = float):
+    """The default of a field: theory/defaults.pl's `general_KEY`."""
+    return field(default_factory=lambda: kind(defaults()[f"general_{key}"]))
+
+
 @dataclass(frozen=True)
 class Settings:
-    rules_per_expectation: int = 12   # the default included
-    max_body: int = 2          # propositions in a body (0 to 2)
-    draws: int = 64            # parameterizations drawn per body to estimate its likelihood
+    """The general learner's tuning, each default written once in
+    theory/defaults.pl (`general_...`)."""
+    rules_per_expectation: int = _tuned("rules_per_expectation", int)   # the default included
+    max_body: int = _tuned("max_body", int)    # propositions in a body (0 to 2)
+    draws: int = _tuned("draws", int)          # parameterizations drawn per body to estimate its likelihood
     seed: int = 1
     #: an answer whose likelihood lies within this of one half is uncertain
     #: (theory/defaults.pl's uncertain_band, which the Prolog answers read)
     band: float = field(default_factory=lambda: float(defaults()["uncertain_band"]))
     #: the cost of an answer in another band than the body's likelihood,
     #: beside the difference of the likelihoods
-    miss: float = 0.5
+    miss: float = _tuned("miss")
     #: how much each kind of body counts: the empty one, one proposition
     #: (1), a pair
-    default_weight: float = 20.0
-    pair_weight: float = 0.2
+    default_weight: float = _tuned("default_weight")
+    pair_weight: float = _tuned("pair_weight")
     #: the weighted cost a new rule must remove
-    min_gain: float = 0.1
+    min_gain: float = _tuned("min_gain")
     #: the pours of their own below which the union of two conflicting
     #: rules' bodies, each rule at least `doubt_confidence` sure of its
     #: head, gets an uncertain rule (0: never)
-    doubt_support: int = 4
-    doubt_confidence: float = 0.8
+    doubt_support: int = _tuned("doubt_support", int)
+    doubt_confidence: float = _tuned("doubt_confidence")
     #: fewer pours of a body's own than `doubt_support` contradict a sure
     #: answer when their count would be less likely than this under it
-    unlikely: float = 0.05
+    unlikely: float = _tuned("unlikely")
     #: how many pours the model's estimate counts as beside a body's own
     #: (the pours in its support), for a body of one proposition or more
-    model_pours: float = 4.0
+    model_pours: float = _tuned("model_pours")
 
     def __post_init__(self) -> None:
         if self.rules_per_expectation < 1 or not 0 <= self.max_body <= 2:
