@@ -7,7 +7,8 @@ cannot name, set against one it reads ("from the side rather than from
 above"), is read as nothing, the place said beside it read; a little off
 the centre is near the rim (off-centre with no amount stays refused: how
 far?); "right in the middle" is in the middle; a length "relative to the
-rim" is above it (a minus sign below it).
+rim" is above it (a minus sign below it); "lower, close to the rim" is
+low, and "but not touching" says how close.
 """
 from __future__ import annotations
 
@@ -40,5 +41,13 @@ CONTRASTS: tuple[tuple, ...] = (
     # a height measured from the rim: above it (a minus sign below it)
     ("above the rim", (rf"re:(?:{_AFTER_LENGTH})(?:relative to|with respect to|vs|versus)"
                        r" (?:the )?(?:destination |bowl )?(?:rim|edge|lip|brim)\b(?! (?:of the )?(?:source|cup))",)),
+    # lower, with the rim it comes down to said: low ("hold it lower, close to the rim")
+    ("low", (r"re:\b(?:a bit |a little |slightly )?lower(?: ,| and)? (?:close to|near|right above|just above|down to)"
+             r" (?:the |its )?(?:destination |bowl )?(?:rim|edge|lip|brim)\b",),
+     "read as low: lower, to just above the rim"),
+    # close but not touching: how close, not a goal
+    ("hedge", (r"re:(?:" + "|".join(rf"(?<={w} )" for w in ("low", "rim", "edge", "lip", "bowl", "close", "near"))
+               + r")(?:, )?but not touch(?:ing)?(?: it| the \w+)?\b",),
+     "read as nothing: close, not touching, says how close"),
     ("hedge", (r"re:\b(?:straight|right|dead|smack|bang)(?= (?:in )?(?:the )?(?:middle|centre|center)\b)",)),
 )
