@@ -20,6 +20,9 @@ _MORE = r"(?:(?:a bit|a little|much|a lot|even|far|way) )?"
 _THICKER = r"(?:thicker|stickier|gloopier|more viscous|more sticky)"
 _THINNER = r"(?:thinner|runnier|more watery|more runny|less viscous|less sticky)"
 _CONTRAST = r"(?:instead of|rather than|in place of)"
+#: What every match of a comparison holds: its comparative's stem (cued.py's cues).
+_THICK_CUES = "thicker|stickier|gloopier|more viscous|more sticky"
+_THIN_CUES = "thinner|runnier|more watery|more runny|less viscous|less sticky"
 _USE = r"(?:(?:,|;) )?(?:(?:use|pour|try|take|pick|with|using|have) )?"
 #: A place the vocabulary cannot name, set against one it reads.
 _VAGUE = r"(?:from )?(?:above|overhead|the top|on top)"
@@ -27,27 +30,27 @@ _VAGUE = r"(?:from )?(?:above|overhead|the top|on top)"
 _AFTER_LENGTH = "|".join(rf"(?<=\d {u} )" for u, (measures, _) in UNITS.items() if measures == "length")
 
 CONTRASTS: tuple[tuple, ...] = (
-    ("sticky liquid", (rf"re:\b{_CONTRAST} (?:the |using |pouring )?liquid {_USE}{_THING}{_MORE}{_THICKER}\b",
-                       rf"re:\b{_THING}{_MORE}{_THICKER} (?:than|{_CONTRAST}) (?:the |plain |regular |normal )?liquid\b"),
+    ("sticky liquid", (rf"re({_THICK_CUES}):\b{_CONTRAST} (?:the |using |pouring )?liquid {_USE}{_THING}{_MORE}{_THICKER}\b",
+                       rf"re({_THICK_CUES}):\b{_THING}{_MORE}{_THICKER} (?:than|{_CONTRAST}) (?:the |plain |regular |normal )?liquid\b"),
      "read as a sticky liquid: thicker than an ordinary one"),
-    ("runny liquid", (rf"re:\b{_CONTRAST} (?:the |using |pouring )?sticky liquid {_USE}{_THING}{_MORE}{_THINNER}\b",
-                      rf"re:\b{_THING}{_MORE}{_THINNER} (?:than|{_CONTRAST}) (?:the )?sticky liquid\b"),
+    ("runny liquid", (rf"re({_THIN_CUES}):\b{_CONTRAST} (?:the |using |pouring )?sticky liquid {_USE}{_THING}{_MORE}{_THINNER}\b",
+                      rf"re({_THIN_CUES}):\b{_THING}{_MORE}{_THINNER} (?:than|{_CONTRAST}) (?:the )?sticky liquid\b"),
      "read as a runny liquid: thinner than a sticky one"),
-    ("hedge", (rf"re:(?:(?:,|;) )?\b{_CONTRAST} {_VAGUE}\b(?= *(?:$|[,;.!?]))",),
+    ("hedge", (rf"re(instead|rather|in place):(?:(?:,|;) )?\b{_CONTRAST} {_VAGUE}\b(?= *(?:$|[,;.!?]))",),
      "read as nothing: a place the vocabulary cannot name, set against the one said beside it"),
-    ("near the rim", (r"re:\b(?:just |only )?(?:slightly|a (?:little |tiny )?bit|a little|a tad) off (?:the )?"
+    ("near the rim", (r"re(off the |off cent|off midd|off dest|off bowl):\b(?:just |only )?(?:slightly|a (?:little |tiny )?bit|a little|a tad) off (?:the )?"
                          r"(?:destination |bowl )?(?:centre|center|middle)\b",),
      "read as near the rim: a little off the middle, where the rim is nearer"),
     # a height measured from the rim: above it (a minus sign below it)
-    ("above the rim", (rf"re:(?:{_AFTER_LENGTH})(?:relative to|with respect to|vs|versus)"
+    ("above the rim", (rf"re(relative|respect|vs|versus):(?:{_AFTER_LENGTH})(?:relative to|with respect to|vs|versus)"
                        r" (?:the )?(?:destination |bowl )?(?:rim|edge|lip|brim)\b(?! (?:of the )?(?:source|cup))",)),
     # lower, with the rim it comes down to said: low ("hold it lower, close to the rim")
-    ("low", (r"re:\b(?:a bit |a little |slightly )?lower(?: ,| and)? (?:close to|near|right above|just above|down to)"
+    ("low", (r"re(lower , |lower and |lower close|lower near|lower right|lower just|lower down):\b(?:a bit |a little |slightly )?lower(?: ,| and)? (?:close to|near|right above|just above|down to)"
              r" (?:the |its )?(?:destination |bowl )?(?:rim|edge|lip|brim)\b",),
      "read as low: lower, to just above the rim"),
     # close but not touching: how close, not a goal
-    ("hedge", (r"re:(?:" + "|".join(rf"(?<={w} )" for w in ("low", "rim", "edge", "lip", "bowl", "close", "near"))
+    ("hedge", (r"re(touch):(?:" + "|".join(rf"(?<={w} )" for w in ("low", "rim", "edge", "lip", "bowl", "close", "near"))
                + r")(?:, )?but not touch(?:ing)?(?: it| the \w+)?\b",),
      "read as nothing: close, not touching, says how close"),
-    ("hedge", (r"re:\b(?:straight|right|dead|smack|bang)(?= (?:in )?(?:the )?(?:middle|centre|center)\b)",)),
+    ("hedge", (r"re(straight|right in|dead|smack|bang):\b(?:straight|right(?= in)|dead|smack|bang)(?= (?:in )?(?:the )?(?:middle|centre|center)\b)",)),
 )

@@ -8,7 +8,8 @@ no cue is in the text.
 A phrase is words, each read with its inflections ("move" is move,
 moves, moved, moving), a part in brackets optional ("[the] bowl"), its
 alternatives split by "|"; or a regular expression after "re:" (no cue:
-always tried)."""
+always tried), or after "re(cue|cue):", cued by the literals given, one of
+which every match must contain."""
 from __future__ import annotations
 
 import re
@@ -46,8 +47,9 @@ class Cued:
     def of(cls, phrases: Sequence[str]) -> Cued:
         """The phrases as one pattern, cued by each one's first word that
         is not optional (less what its inflections change)."""
-        cues = [_cue(p) for p in phrases]
-        return cls("|".join(f"(?:{_pattern(p)})" for p in phrases), None if None in cues else cues)
+        cues = [_cues(p) for p in phrases]
+        return cls("|".join(f"(?:{_pattern(p)})" for p in phrases),
+                   None if None in cues else [c for each in cues for c in each])
 
 
 def _base(w: str) -> str:
@@ -62,15 +64,26 @@ def _word(w: str) -> str:
     return rf"{re.escape(_base(w))}(?:{re.escape(w[-1])}?(?:e|es|ed|ing|s|d)?)?"
 
 
-def _cue(phrase: str) -> str | None:
-    """The base of a phrase's first word not optional; None for "re:" or
-    all optional."""
+#: A regular expression with its cues: "re(thick|stick):...".
+_CUED_RE = re.compile(r"re\(([^)]*)\):")
+
+
+def _cues(phrase: str) -> list[str] | None:
+    """The cues given ("re(a|b):"), or the base of a phrase's first word
+    not optional; None for "re:" or all optional."""
+    given = _CUED_RE.match(phrase)
+    if given:
+        return given.group(1).split("|")
     if phrase.startswith("re:"):
         return None
-    return next((_base(e) for e in _ELEMENT.findall(phrase) if not e.startswith("[")), None)
+    cue = next((_base(e) for e in _ELEMENT.findall(phrase) if not e.startswith("[")), None)
+    return None if cue is None else [cue]
 
 
 def _pattern(phrase: str) -> str:
+    given = _CUED_RE.match(phrase)
+    if given:
+        return phrase[given.end():]
     if phrase.startswith("re:"):
         return phrase[3:]
     parts = []

@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import re
 
+from pantarhei.bridge.reasoning.cued import Cued
+
 #: Questions asked about a clause ("is it true that the bowl tips", "tell me whether it
 #: spills", "I'd like to know if the jug hits the bowl"): asked as "does the bowl tip".
 FRAMES = tuple((re.compile(p), r) for p, r in (
@@ -16,10 +18,6 @@ FRAMES = tuple((re.compile(p), r) for p, r in (
      " does "),
     (r"\b(?:know|tell (?:me|us)|predict|wonder(?:ing)?|check|find out|figure out|see|ask(?:ing)?"
      r"|curious|unsure|not sure|any idea|no idea)(?: about)? (?:whether|if) ", " does "),
-    # the source striking the bowl, supposed: "what if the cup hits the bowl" asks whether it
-    # does (what follows a spill or a slide is another question: "what if the milk spills")
-    (r"\b(?:what if|what happens if|suppose|imagine if)(?= (?:the |a |an |my |your |this |that |it )?(?:[a-z]+ ){0,3}"
-     r"(?:hits|bumps|touches|knocks|collides|strikes|scrapes|clips|bonks|bangs|nudges)\b)", " does "),
     # an outcome expected, as a noun: "would you expect spilling", "do you predict any splashing"
     (r"\b(?:expect|predict|anticipate|see|observe|get|cause|causes|notice)(?: any| some| a| much)? "
      r"(?=(?:spill|splash|drip|leak|slosh|splatter|dribbl)\w*\b(?! of\b))", " will it "),
@@ -29,6 +27,13 @@ FRAMES = tuple((re.compile(p), r) for p, r in (
     (r"(?<!\bto )\b(?:make|makes|made|making|cause|causes|caused|causing) (it|them|the [a-z]+)(?: to)? (?=(?:tip"
      r"|toppl|fall|slid|slip|mov|shift|wobbl|spill|splash|overflow|drip|rock|budg|skid)\w*\b)", r" will \1 "),
 ))
+
+
+#: The source striking the bowl, supposed: "what if the cup hits the bowl" asks whether it does
+#: (what follows a spill or a slide is another question: "what if the milk spills").
+STRUCK = Cued(r"\b(?:what if|what happens if|suppose|imagine if)(?= (?:the |a |an |my |your |this |that |it )?"
+              r"(?:[a-z]+ ){0,3}(?:hits|bumps|touches|knocks|collides|strikes|scrapes|clips|bonks|bangs|nudges)\b)",
+              ("what if", "happens if", "suppose", "imagine if"))
 
 
 #: An outcome typed as a note: a clause of a noun (with its article) and an outcome's verb,
@@ -45,4 +50,7 @@ def asked_plainly(text: str) -> tuple[str, tuple[str, ...]]:
     for said, wanted in FRAMES:
         phrases.extend(m.group(0).strip() for m in said.finditer(text))
         text = said.sub(wanted, text)
+    if STRUCK.search(text):
+        phrases.extend(m.group(0) for m in STRUCK.pattern.finditer(text))
+        text = STRUCK.pattern.sub(" does ", text)
     return NOTE.sub("does ", text), tuple(phrases)

@@ -16,6 +16,8 @@ from __future__ import annotations
 
 import re
 
+from pantarhei.bridge.reasoning.cued import Cued
+
 STILL = ("destination_still_approach", "destination_still_retreat", "destination_still_settle")
 
 _WHO = r"(?:(?:the|a|an|my|your|its|this|that) )?(?:[a-z]+ )?(?:[a-z]+)"
@@ -39,12 +41,12 @@ _PHASES = (
 #: Where a clause ends: the phase heard with its outcome is all of it.
 _ENDS = r"(?= *(?:[?.!,;:]|$| or\b| and\b| lol\b))"
 #: A place the liquid may land said beside the bowl it goes in: the spill asked too.
-_ELSEWHERE = re.compile(r"\boutcome (?P<said>or (?:on|onto|all over|over) (?:the |a |my )?"
-                        r"(?:table|counter|floor|worktop|countertop|ground|bench)s?)\b")
+_ELSEWHERE = Cued(r"\boutcome (?P<said>or (?:on|onto|all over|over) (?:the |a |my )?"
+                  r"(?:table|counter|floor|worktop|countertop|ground|bench)s?)\b", ("outcome or ",))
 
 #: Staying said after going in, with no place: it stays where it went.
-_STAYS = re.compile(r"\boutcome (?P<said>(?:,? ?and|,) (?:then )?(?:it )?(?:stay|stays|remain|remains)(?: there)?)"
-                    r"(?= *(?:[?.!]|$))")
+_STAYS = Cued(r"\boutcome (?P<said>(?:,? ?and|,) (?:then )?(?:it )?(?:stay|stays|remain|remains)(?: there)?)"
+              r"(?= *(?:[?.!]|$))", ("stay", "remain"))
 
 
 def during(text: str, asked: list[str]) -> tuple[str, list[str], list[str]]:
@@ -54,9 +56,9 @@ def during(text: str, asked: list[str]) -> tuple[str, list[str], list[str]]:
     heard: list[str] = []
     if _ELSEWHERE.search(text) and "no_spill" not in asked and any(
             n in asked for n in ("liquid_enters_destination", "liquid_remains_in_destination")):
-        heard += [m.group("said") for m in _ELSEWHERE.finditer(text)]
+        heard += [m.group("said") for m in _ELSEWHERE.pattern.finditer(text)]
         asked = [*asked, "no_spill"]
-        text = _ELSEWHERE.sub("outcome", text)
+        text = _ELSEWHERE.pattern.sub("outcome", text)
     stays = _STAYS.search(text)         # "does it go in the bowl and stay": and stay in it
     if stays and "liquid_enters_destination" in asked:
         heard.append(stays.group("said"))

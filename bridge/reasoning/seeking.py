@@ -32,8 +32,8 @@ _WHO = r"(?:i|we|you|it|they|the robot|one)"
 _ACT = (r"(?:hold|pour|tilt|keep|put|have|place|go|position|use|do|set|angle|raise|lift|move"
         r"|start|end|tip)")
 _WHAT = r"(?: (?:it|them|the \w+))?(?: (?:from|at|to|up|in))?"
-#: The words that ask for a value.
-_ASKING = re.compile(
+#: The words that ask for a value (compiled by _asking, where a goal is said).
+_ASKING_SOURCE = (
     # a value that works: "what tilt works", "which height would work best"
     rf"\b(?:what|which) {_VALUE} (?:works?|would work|will work|is best|would be best)(?: best)?(?= |$|[?.!,])"
     rf"|\b(?:(?:what|which)(?: is| be)?(?: the| a)?(?: {_BEST})?|(?:the |a )?{_BEST}) {_VALUE}"
@@ -50,6 +50,11 @@ _ASKING = re.compile(
     # a choice of two values: "should I pour from low or high", "do we tilt it a bit or a lot"
     rf"|\b(?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT} (?:[a-z]+ ){{1,3}}?or(?: [a-z]+){{1,3}}?"
     rf"(?= *[?.!]* *$| *[,;:])")
+
+
+@lru_cache(maxsize=None)
+def _asking() -> re.Pattern:
+    return re.compile(_ASKING_SOURCE)
 #: A value said to keep an outcome: "which tilt keeps it in the bowl" (so that it stays in it).
 _KEEPS = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? {_VALUE}) (keeps|will keep|would keep)"
                     r" (it|them|the \w+) (in(?: the \w+)?|still|upright|steady|in place)\b")
@@ -106,8 +111,8 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
 def sought(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` without the words that ask for a value, and those words
     (to be called only where a goal is said)."""
-    found = [m.group(0).strip() for m in _ASKING.finditer(text)]
-    return _ASKING.sub(" ", text), tuple(found)
+    found = [m.group(0).strip() for m in _asking().finditer(text)]
+    return _asking().sub(" ", text), tuple(found)
 
 
 #: "can I pour ... without ...", "without hitting the bowl, could we pour ...": whether it can

@@ -219,7 +219,8 @@ PHRASES: tuple[tuple, ...] = (
                # right next to the bowl: beside it, or near its rim?
                r"re:\b(?:right )?(?:next to|beside|alongside) (?:the )?(?:destination|bowl)\b(?! rim)")),
     # held close to the bowl: just above it (its edge is "near the rim")
-    ("low", (r"re:\b(?:very |right )?(?:close to|near) (?:the )?(?:destination|bowl)\b(?! rim)",),
+    ("low", (r"re(close to|near the bowl|near bowl):\b(?:very |right )?(?:close to (?:the )?(?:destination|bowl)"
+             r"|near (?:the )?bowl)\b(?! rim)",),
      "read as low: just above the bowl's rim (\"near the rim\" would say over its edge)"),
     # where the stream is aimed: "aim for the centre of the bowl" pours centred over it
     ("centred", (r"re:\baim(?:s|ed|ing)?(?: it| the \w+)? (?:for|at|into|towards?) (?:the )?(?:very )?"

@@ -23,7 +23,7 @@ def _inflected() -> list[str]:
     out = []
     for entry in PHRASES:
         for phrase in entry[1]:
-            if phrase.startswith("re:"):
+            if phrase.startswith("re:") or phrase.startswith("re("):
                 continue
             words = [w for w in re.sub(r"\[[^\]]*\]", " ", phrase).split()]
             for ending in ("ing", "ed", "s"):
@@ -47,3 +47,10 @@ def test_a_text_without_a_cue_compiles_nothing():
     assert p.search("does it splash") is None and "pattern" not in vars(p)
     assert p.search("will it spill over").group() == "spill" and "pattern" in vars(p)
     assert Cued(r"\bx\b", None).search("a x b")
+
+
+def test_a_regular_expression_is_cued_by_the_literals_it_names():
+    p = Cued.of([r"re(thick|stick):\b(?:thicker|stickier) than water\b", "move in"])
+    assert p.cues == ("thick", "stick", "mov")
+    assert p.search("a liquid thinner than water") is None and "pattern" not in vars(p)
+    assert p.search("something stickier than water").group() == "stickier than water"
