@@ -5,7 +5,10 @@ slide?", "is it messy", "does anything come out", "is it safe", "does it
 all go in") names the expectations it asks about: the answer puts them
 first, and the clause is taken out of the scene's words, its subject left
 in ("will a light bowl tip over?" still says a light bowl), but not how
-much of the liquid it asks of ("does most of it go in"). "What if the
+much of the liquid it asks of ("does most of it go in"), nor how much it
+happens ("does it shift a little"); a bowl that strikes another is the
+source ("does a heavy pot hit the bowl"), and a phase named asks of it
+(phases.py: "when the cup comes in"). "What if the
 bowl moves?" asks what follows an outcome, which the vocabulary cannot
 say: it is refused. A clause
 about what the person or the robot does ("do I tip the cup") is no
