@@ -50,7 +50,8 @@ def run(clone: Path, *args: str) -> subprocess.CompletedProcess:
 def tracked(clone: Path) -> dict[str, str]:
     files = subprocess.run(["git", "ls-files", "-z"], cwd=clone, capture_output=True,
                            check=True).stdout.decode().split("\0")
-    return {f: hashlib.sha256((clone / f).read_bytes()).hexdigest() for f in files if f}
+    return {f: hashlib.sha256(os.readlink(clone / f).encode() if (clone / f).is_symlink()
+                              else (clone / f).read_bytes()).hexdigest() for f in files if f}
 
 
 def changed(clone: Path) -> list[str]:
