@@ -18,6 +18,8 @@ FRAMES = tuple((re.compile(p), r) for p, r in (
      " does "),
     (r"\b(?:know|tell (?:me|us)|predict|wonder(?:ing)?|check|find out|figure out|see|ask(?:ing)?"
      r"|curious|unsure|not sure|any idea|no idea)(?: about)? (?:whether|if) ", " does "),
+    # "bowl stays put or nah": as chat types "or not"
+    (r"\bor nah\b", "or not"),
     # an outcome expected, as a noun: "would you expect spilling", "do you predict any splashing"
     (r"\b(?:expect|predict|anticipate|see|observe|get|cause|causes|notice)(?: any| some| a| much)? "
      r"(?=(?:spill|splash|drip|leak|slosh|splatter|dribbl)\w*\b(?! of\b))", " will it "),
@@ -40,7 +42,8 @@ STRUCK = Cued(r"\b(?:what if|what happens if|suppose|imagine if)(?= (?:the |a |a
 #: ending with a question mark, and no word that asks: "cup hits bowl??", "jug bumps the pot?".
 NOTE = re.compile(r"(?:^|(?<=[,:;.!\u2013\u2014] )|(?<= - ))(?=(?:the |a |an |my |your |this |that )?[a-z]+ "
                   r"(?:hits|bumps|touches|knocks|collides|strikes|scrapes|clips|tips|topples|slides|shifts"
-                  r"|moves|wobbles|spills|splashes|overflows|drips|leaks)\b[^,:;.!?]*\?)")
+                  r"|moves|wobbles|spills|splashes|overflows|drips|leaks|stays(?= (?:put|still|where|in place))"
+                  r")\b[^,:;.!?]*(?:\?| or (?:not|nah)\b))")
 
 
 def asked_plainly(text: str) -> tuple[str, tuple[str, ...]]:

@@ -67,7 +67,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|turn\w* over|flip\w*|capsiz\w*|overturn\w*|keel\w* over|tumbl(?:e|es|ed|ing)\b"
      r"|(?:fall|falls|fell)\b(?! (?:in|into|inside|out|off|on|onto)\b)", ("destination_upright",), True),
     (r"(?:stay|stays|remain|remains|keep|keeps|be|is) (?:still|put|in place|steady|stable|stationary"
-     r"|where it is)"
+     r"|(?:exactly |right )?where (?:it|they) (?:is|was|are|were|stands|stood|started))"
      r"|(?:sit|sits|sitting|stand|stands|standing|stay|stays|staying|remain|remains|rest|rests|resting|be)"
      r" (?:still )?(?:in|at) the same (?:spot|place|position|location)", _STILL, False),
     (r"slid\w*|slip(?:s|ped|ping)?\b|shift\w*|budg\w*|wobbl\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
@@ -208,7 +208,7 @@ def _staying(names: tuple[str, ...], said: str, subject: list[str]) -> tuple[str
     the liquid staying put stays in the bowl it entered; the bowl staying
     there stays still; anything else, `names`."""
     if not re.match(r"(?:stay|stays|remain|remains|keep|keeps|be|is)\b", said) \
-            or not re.search(r"\b(?:put|there|in place|where it is)\b", said):
+            or not re.search(r"\b(?:put|there|in place|where (?:it|they))\b", said):
         return names
     if names == _STILL and liquids().spans(subject):
         return (*_ALL_IN, "liquid_remains_in_destination")
