@@ -28,6 +28,9 @@ CONTEXT = "context"
 #: "into a bowl from a cup" (not "far from the cup": the destination)
 #: Words before a bowl poured into: "into a jug", "in the kettle".
 _INTO = {"into", "onto", "in", "to"}
+#: Words between a bowl and its being poured into another: "a pot (that is) poured into a bowl".
+_BEING = {stem(w) for w in ("be", "is", "are", "being", "was", "were", "get", "gets", "that", "which")}
+_INSTEAD = {stem(w) for w in ("not", "no", "nor", "instead", "rather", "than", "or")}
 _POURED_FROM = {(stem(a), stem(b))
                 for a, b in (("out", "of"), ("pour", "from"), ("liquid", "from"),
                              ("bowl", "from"), ("destination", "from"), (CONTEXT, "from"))}
@@ -65,11 +68,35 @@ def roles(tokens: list[Token], placeable: frozenset[str]) -> dict[int, str]:
                     and all(tokens[m].word != "pour" for m in range(max(0, j - 4), j - 1)))
             usual = ((t.raw in _poured_from() or name in _poured_from())
                      and (held or not (j >= 0 and tokens[j].word in _INTO)))
-            roles[i] = ("source" if before in _POURED_FROM or as_source or again or usual
+            k = i + 1                   # "can a heavy pot be poured into a bowl": the pot is poured
+            while k < len(tokens) and tokens[k].word in _BEING:
+                k += 1
+            poured = (k + 2 < len(tokens) and tokens[k].raw == "poured" and tokens[k + 2].clause == t.clause
+                      and tokens[k + 1].word in ("into", "onto")) or (       # "pour a light cup into ..."
+                j >= 0 and tokens[j].word == stem("pour") and k < len(tokens) and tokens[k].word in ("into", "onto"))
+            roles[i] = ("source" if before in _POURED_FROM or as_source or again or usual or poured
                         else "destination")
             # (a name said of both bowls, "from a cup into a cup", refers to neither again)
             sources[name] = roles[i] == "source" and sources.get(name, True)
-    return roles
+    return _beside_the_bowl(tokens, roles)
+
+
+def _beside_the_bowl(tokens: list[Token], roles: dict[int, str]) -> dict[int, str]:
+    """`roles`, with a container named beside "the bowl" the source: "the bowl is glass and
+    the mug is bouncy" names two bodies, the bowl poured into and the mug poured from (not
+    where the other is poured into, "from a jug into a cup", nor "both bowls"; nor where one
+    may be said instead of the other: "a light bowl, not a heavy cup")."""
+    if any(t.word in _INSTEAD for t in tokens):
+        return roles
+    named = {tokens[i].raw.split()[-1] for i in roles        # ("the bowl is glass": what it is made of)
+             if tokens[i].word == BOWL and not (i > 0 and tokens[i - 1].word in _COPULAS)}
+    others = named - {"bowl"}
+    other = others.pop() if len(others) == 1 else None
+    if "bowl" not in named or other is None or any(
+            r == "source" and tokens[i].word == BOWL and tokens[i].raw.split()[-1] != other for i, r in roles.items()):
+        return roles
+    return {i: "source" if tokens[i].word == BOWL and tokens[i].raw.split()[-1] == other else r
+            for i, r in roles.items()}
 
 
 class Nouns:
@@ -142,7 +169,7 @@ class Nouns:
             j = past_articles(t, i + step, step)
             if 0 <= j < len(t) and t[j].word == "and":
                 j = past_articles(t, j + step, step)
-                if j in self.roles:
+                if j in self.roles and not (j > 0 and t[j - 1].word in _COPULAS):   # "is glass and"
                     out.add(self.roles[j])
         return out
 

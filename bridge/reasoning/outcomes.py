@@ -77,7 +77,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      _STILL, True),
     (r"bump\w*|hit(?:s|ting)?|touch\w*|collid\w*|crash\w*|knock\w*|clip(?:s|ped)?|strike\w*"
      r"|bonk\w*|bang\w*|intersect\w*|clash\w*|graz(?:e|es|ed|ing)|scrap(?:e|es|ed|ing)|nudg\w*"
-     r"|smash\w*|whack\w*|(?:run|runs|ran|running) into|(?:come|comes|came) into contact"
+     r"|smash\w*|whack\w*|(?:run|runs|ran|running) into|(?:come|comes|came) into contact|bounc\w* (?:off|against)"
      r"|make contact|makes contact|(?:any|some) contact"
      r"|(?<=there )(?:any |some )?contact|(?<=there be )(?:any |some )?contact",   # "is there contact"
      ("source_clear",), True),
@@ -108,7 +108,7 @@ _ACTORS = {"i", "we", "you", "robot", "arm", "gripper", "hand", "he", "she", "th
 _HOLDING = {"robot", "arm", "gripper", "hand"}
 #: The words that may follow an outcome's verb and are heard with it ("drip on the
 #: table", "spill out of the cup", "go into the bowl"): the scene's words stay the scene's.
-_REST = ("at all times|all the time|the whole time|at any point|at any time|throughout|on|onto|over|out|of|in|into|inside|outside|the|a|an|table|floor|counter|worktop|top|"
+_REST = ("each other|one another|at all times|all the time|the whole time|at any point|at any time|throughout|on|onto|over|out|of|in|into|inside|outside|the|a|an|table|floor|counter|worktop|top|"
          "ground|place|everywhere|anywhere|at|all|any|anything|it|its|liquid|water|bowl|cup|glass|"
          "destination|source|target|container|rim|edge|sides?|much|too|even|ever|really|very|"
          "up|down|off|away|again|then|across|along|around|against|between|"
