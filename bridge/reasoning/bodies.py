@@ -38,6 +38,7 @@ BODIES: tuple[tuple, ...] = (
     ("light", ("lightweight", "light weight", "featherweight", "feather light", "featherlight")),
     ("heavy", ("heavyweight", "heavy weight", "hefty", "weighty")),
     ("slippery", ("slick", "smooth", "greasy")),
+    ("halfway", ("partway", "part way", "part of the way")),
     ("grippy", ("rough",)),
     ("runny", ("thin", "watery")),
     ("sticky", ("viscous", "thick", "syrupy", "gooey")),

@@ -86,7 +86,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|empt(?:y|ies|ied)(?: out)?|leav(?:e|es|ing) the|exit\w*", ("liquid_leaves_source",), False),
     (r"(?:end|ends|ended|ending) up in(?:side)?", (*_ALL_IN, "liquid_remains_in_destination"), False),
     # what stays in the bowl entered it: "remains" alone holds also when none enters
-    (r"(?:stay|stays|remain|remains|stop|stops) in(?:side)?(?: the \w+)?"
+    (r"(?:stay|stays|remain|remains|stop|stops|stick|sticks|stuck) in(?:side)?(?: the \w+)?"
      r"|(?:stay|stays|remain|remains) (?:in )?there\b", (*_ALL_IN, "liquid_remains_in_destination"), False),
     (r"(?:go|goes|going|went|get|gets|land|lands|make it|makes it|fall|falls|"
      r"arrive\w*) (?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*",
@@ -166,7 +166,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
         rf"any) )?)(?:{verbs})\b{end}")
     # what is asked, or wanted, next to it: "will it spill or overflow?", "without spilling or
     # tipping the bowl over"
-    more = re.compile(rf"\boutcome (?:,|or|and|nor)? ?(?:(?:will|does|do|would|even) )?(?:it |the \w+ )?"
+    more = re.compile(rf"\boutcome (?:,|or|and|nor)? ?(?:(?:will|does|do|would|even|just|only) )?(?:it |the \w+ )?"
                       rf"(?:{verbs})\b{end}")
     # an outcome said first, with no word that asks: "spills when poured from high?", "sloshing
     # over the rim if tilted steeply?", "pour high, spill or not"
@@ -198,7 +198,9 @@ def _which(m: re.Match) -> tuple[tuple[str, ...], bool]:
     k = next(k for k in range(len(OUTCOMES)) if m.groupdict().get(f"v{k}"))
     if k == 0 and out_of_the_source(m.string, m.end("v0")):
         return OUTCOMES[1][1], OUTCOMES[1][2]
-    if OUTCOMES[k][1] == (*_ALL_IN, "liquid_remains_in_destination") and in_the_source(m.group(f"v{k}")):
+    bowl = m.group(f"v{k}").split()[-1]        # "yogurt from a tub ... stick in the tub": the tub poured from
+    from_it = re.fullmatch(destinations(), bowl) and re.search(rf"\b(?:from|out of) (?:the |a |an |my )?(?:\w+ )?{bowl}\b", m.string)
+    if OUTCOMES[k][1] == (*_ALL_IN, "liquid_remains_in_destination") and (in_the_source(m.group(f"v{k}")) or from_it):
         return ("liquid_leaves_source",), True       # staying in the source: not leaving it
     return OUTCOMES[k][1], OUTCOMES[k][2]
 

@@ -22,6 +22,8 @@ STILL = ("destination_still_approach", "destination_still_retreat", "destination
 
 _WHO = r"(?:(?:the|a|an|my|your|its|this|that) )?(?:[a-z]+ )?(?:[a-z]+)"
 _WHEN = r"(?:when|while|whilst|as|once)"
+#: What is moved, said between the verb and its particle: "when you pull the cup away".
+_WHAT = r"(?:(?:the|a|an|its|my|your|this|that) [a-z]+ )?"
 #: (the phase, the words that say it after an outcome asked)
 _PHASES = (
     ("destination_still_approach",
@@ -31,9 +33,11 @@ _PHASES = (
      r"|on (?:its|the) way in\b"),
     ("destination_still_retreat",
      rf"{_WHEN} {_WHO} (?:go(?:es|ing)?|mov(?:e|es|ing)|pull(?:s|ing)?|back(?:s|ing)?|draw(?:s|ing)?"
-     rf"|(?:is|gets?) (?:taken|moved|pulled|drawn)) (?:back )?away\b"
+     rf"|(?:is|gets?) (?:taken|moved|pulled|drawn)) {_WHAT}(?:back )?away\b"
      rf"|{_WHEN} {_WHO} (?:retreat(?:s|ing)?|withdraw(?:s|ing)?|pull(?:s|ing)? back)\b"
      r"|(?:during|in) the retreat(?: phase| stage| move)?\b|on (?:its|the) way (?:out|back)\b"),
+    (("destination_still_retreat", "destination_still_settle"),      # after the pour: the move away and after
+     r"afterwards?\b|after (?:the )?pour(?:ing)?\b(?! (?:ends|is over|is done|has ended|finishes)\b)"),
     (None,      # after the move away: by then, every phase is past
      rf"after {_WHO} (?:is|gets?|has been) (?:taken|moved|pulled|drawn) away\b"
      rf"|after {_WHO} (?:goes|moves|has gone|has moved|pulls) away\b|after the retreat\b"),
@@ -71,7 +75,7 @@ def during(text: str, asked: list[str]) -> tuple[str, list[str], list[str]]:
         if m is None:
             continue
         if phase is not None:
-            asked = [n for n in asked if n not in STILL or n == phase]
+            asked = [n for n in asked if n not in STILL or n in (phase if isinstance(phase, tuple) else (phase,))]
         if re.match(_ENDS, text[m.end():]):
             heard.append(m.group("said"))
             text = text[:m.start("said")] + text[m.end():]

@@ -103,7 +103,7 @@ def _number(word: str) -> bool:
 #: What a bowl stands on, and the words that say it grips or does not.
 _SURFACES = {"table", "tables", "counter", "counters", "countertop", "worktop", "benchtop", "bench",
              "tabletop"}
-_GRIP = {"slippery": "slippery", "slick": "slippery", "slippy": "slippery", "greasy": "slippery",
+_GRIP = {"slippery": "slippery", "slick": "slippery", "slippy": "slippery", "greasy": "slippery", "smooth": "slippery",
          "grippy": "grippy", "rough": "grippy"}
 _AS = {"is", "are", "was", "seems", "looks", "feels", "very", "really", "quite", "super", "so", "pretty"}
 #: What is said back of it.
