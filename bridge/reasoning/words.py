@@ -156,6 +156,10 @@ PHRASES: tuple[tuple, ...] = (
     # poured into the sink, onto the table: a place the vocabulary has no bowl for
     (UNCLEAR, (r"re:\b(?:(?:pour(?:s|ed|ing)?|spill(?:s|ed|ing)?)(?: it| them| the \w+| \w+)? "
                r"(?:on|onto|into|in|over|down)|into|onto) (?:the |a |hedge )?context\b",)),
+    # what is left in the source is what it holds: "a little cream left in the jug"
+    ("hedge", (r"re:(?:(?<=liquid )|(?<=much )|(?<=little )|(?<=bit )|(?<=some )|(?<=any )|(?<=lot ))left"
+               r"(?= (?:in|inside) (?:the |a |it\b|my |its |our |hedge ))",),
+     "read as nothing: what is left in the source is what it holds"),
     # leaving the source as it was poured: the end pose is the pour's
     ("end same_tilt", (r"re:\b(?:leave|leaves|leaving|left|keep|keeps|keeping|kept) (?:it|the \w+)"
                        r" (?:tilted|tipped|angled|inclined)(?= *(?:$|[,;.!?]|\b(?:and|then|at the end"
