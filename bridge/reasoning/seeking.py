@@ -72,6 +72,9 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:keep|keeps|keeping|stop|stops|stopping|prevent|prevents|preventing) (it|them|the [a-z]+)"
      r" from (?=[a-z]+ing\b)", r"so that \1 does not "),
     (r"\bmake sure(?: that)? ", "make sure so that "),
+    # "how do I get all the soup into the bowl": so that it goes in
+    (r"\bhow (?:do|can|could|should|would) (?:i|we|you) get (it all|all of it|everything|all the [a-z]+|it|the [a-z]+)"
+     r" (?=(?:in|into|inside)\b)", r"how so that \1 goes "),
     # "I'd like to empty the whole mug": so that it empties
     (r"\b(?:i|we) (?:want|need|would like|wish|am trying|are trying) to (?:empty|drain) (?:out )?(?:the whole|all of the"
      r"|all the|the entire|the) ([a-z]+)\b", r"so that the \1 empties"),
