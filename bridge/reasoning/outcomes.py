@@ -179,7 +179,8 @@ def _patterns() -> tuple[re.Pattern, ...]:
 #: with the bowl?" (not "in contact with", which states it).
 _CONTACT = re.compile(r"(?<!\bin )\b(?:(?:is|will) there (?:be )?)?(?:any |some |no |a |the )?"
                       r"(?:contact|collisions?) (?:between|with)\b"
-                      r"|\b(?:is|will|would|could) there (?:be )?(?:any |some |no |a )?collisions?\b")
+                      r"|\b(?:is|will|would|could) there (?:be )?(?:any |some |no |a )?collisions?\b"
+                      r"|(?:^|(?<=[,:;.!?] ))(?:any |a )?(?:collisions?|contact)(?: or not)?(?= *[?.!]* *$)")
 
 
 #: Why a question of what follows an outcome is refused, and what would be read.
