@@ -118,8 +118,9 @@ def _lexicon() -> _Lexicon:
     amounts = {n for n, p in props.items() if slots[n] == ("object", "liquid")
                and "source" in vocab.dimensions[p.dimension].gloss}
     # what a question of the ordinary pour may hold: its frame, the bodies,
-    # pouring and the expectations it asks of ("does the liquid spill?")
-    asking = _IGNORED | set(OBJECT_STEMS) | {BOWL, "pour"} | asked | _SAID_AS_NOTHING
+    # pouring and the expectations it asks of ("does the liquid spill?"), after a stage of it
+    # ("after pulling the cup back, does the bowl move?")
+    asking = _IGNORED | set(OBJECT_STEMS) | {BOWL, "pour", "after"} | asked | _SAID_AS_NOTHING
     saying: dict[str, list[str]] = {}
     for words, names in phrases.items():
         for w in words:
