@@ -78,7 +78,17 @@ def roles(tokens: list[Token], placeable: frozenset[str]) -> dict[int, str]:
                         else "destination")
             # (a name said of both bowls, "from a cup into a cup", refers to neither again)
             sources[name] = roles[i] == "source" and sources.get(name, True)
-    return _beside_the_bowl(tokens, roles)
+    return _ones(tokens, _beside_the_bowl(tokens, roles), placeable)
+
+
+def _ones(tokens: list[Token], roles: dict[int, str], placeable: frozenset[str]) -> dict[int, str]:
+    """`roles`, with "one" after a value word the body the question names, where it names
+    one: "rather than a heavy bowl, use a really light one" (a light bowl)."""
+    named = {r for r in roles.values() if r != CONTEXT}
+    if len(named) != 1:
+        return roles
+    return {**roles, **{i: next(iter(named)) for i, t in enumerate(tokens) if t.word == "one" and i > 0
+                        and tokens[i - 1].word in placeable and tokens[i - 1].word not in BETWEEN}}
 
 
 def _beside_the_bowl(tokens: list[Token], roles: dict[int, str]) -> dict[int, str]:

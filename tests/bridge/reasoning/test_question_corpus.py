@@ -160,6 +160,7 @@ READ = {
     "what if there's lots of water?": ['much_liquid'],
     "will the bowl tip over if it's light and I pour a heavy liquid?": ['heavy_liquid', 'light_destination'],
     'with 150 particles': ['very_much_liquid'],
+    'not a heavy liquid but a light one': ['light_liquid'],
 }
 
 #: questions to refuse in one line
@@ -183,7 +184,6 @@ REFUSED = [
     'either pour from the side or from far away',
     'end with the cup tilted back',
     'move in slow then pour fast',
-    'not a heavy liquid but a light one',
     'pour 10 to 20 cm above',
     'pour a 1 kg liquid',
     'pour a medium amount of liquid',
