@@ -72,6 +72,9 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:keep|keeps|keeping|stop|stops|stopping|prevent|prevents|preventing) (it|them|the [a-z]+)"
      r" from (?=[a-z]+ing\b)", r"so that \1 does not "),
     (r"\bmake sure(?: that)? ", "make sure so that "),
+    # "I need none of it on the table": so that none goes on it
+    (r"\b(?:i|we) (?:want|need|would like) (none|nothing|no liquid|no water)(?: of it)? (?=(?:on|onto|all over) )",
+     r"so that \1 goes "),
     # "how do I get all the soup into the bowl": so that it goes in
     (r"\bhow (?:do|can|could|should|would) (?:i|we|you) get (it all|all of it|everything|all the [a-z]+|it|the [a-z]+)"
      r" (?=(?:in|into|inside)\b)", r"how so that \1 goes "),
