@@ -18,8 +18,6 @@ FRAMES = tuple((re.compile(p), r) for p, r in (
      " does "),
     (r"\b(?:know|tell (?:me|us)|predict|wonder(?:ing)?|check|find out|figure out|see|ask(?:ing)?"
      r"|curious|unsure|not sure|any idea|no idea)(?: about)? (?:whether|if) ", " does "),
-    # "bowl stays put or nah": as chat types "or not"
-    (r"\bor nah\b", "or not"),
     # an outcome expected, as a noun: "would you expect spilling", "do you predict any splashing"
     (r"\b(?:expect|predict|anticipate|see|observe|get|cause|causes|notice)(?: any| some| a| much)? "
      r"(?=(?:spill|splash|drip|leak|slosh|splatter|dribbl)\w*\b(?! of\b))", " will it "),
@@ -29,6 +27,10 @@ FRAMES = tuple((re.compile(p), r) for p, r in (
     (r"(?<!\bto )\b(?:make|makes|made|making|cause|causes|caused|causing) (it|them|the [a-z]+)(?: to)? (?=(?:tip"
      r"|toppl|fall|slid|slip|mov|shift|wobbl|spill|splash|overflow|drip|rock|budg|skid)\w*\b)", r" will \1 "),
 ))
+
+
+#: "Or not" as chat types it: "bowl stays put or nah".
+NAH = Cued(r"\bor nah\b", ("or nah",))
 
 
 #: The source striking the bowl, supposed: "what if the cup hits the bowl" asks whether it does
@@ -54,6 +56,9 @@ def asked_plainly(text: str) -> tuple[str, tuple[str, ...]]:
     for said, wanted in FRAMES:
         phrases.extend(m.group(0).strip() for m in said.finditer(text))
         text = said.sub(wanted, text)
+    if NAH.search(text):
+        phrases.append("or nah")
+        text = NAH.pattern.sub("or not", text)
     if STRUCK.search(text):
         phrases.extend(m.group(0) for m in STRUCK.pattern.finditer(text))
         text = STRUCK.pattern.sub(" does ", text)

@@ -30,6 +30,7 @@ import re
 from dataclasses import dataclass
 from functools import lru_cache
 
+from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.everyday import Matcher, names
 from pantarhei.bridge.reasoning.frames import asked_plainly
 from pantarhei.bridge.reasoning.phases import during
@@ -177,10 +178,11 @@ def _patterns() -> tuple[re.Pattern, ...]:
 
 #: Contact asked of by its noun alone: "contact between source and bowl?", "any collision
 #: with the bowl?" (not "in contact with", which states it).
-_CONTACT = re.compile(r"(?<!\bin )\b(?:(?:is|will) there (?:be )?)?(?:any |some |no |a |the )?"
+_CONTACT = Cued(r"(?<!\bin )\b(?:(?:is|will) there (?:be )?)?(?:any |some |no |a |the )?"
                       r"(?:contact|collisions?) (?:between|with)\b"
                       r"|\b(?:is|will|would|could) there (?:be )?(?:any |some |no |a )?collisions?\b"
-                      r"|(?:^|(?<=[,:;.!?] ))(?:any |a )?(?:collisions?|contact)(?: or not)?(?= *[?.!]* *$)")
+                      r"|(?:^|(?<=[,:;.!?] ))(?:any |a )?(?:collisions?|contact)(?: or not)?(?= *[?.!]* *$)",
+                 ("contact", "collision"))
 
 
 #: Why a question of what follows an outcome is refused, and what would be read.
@@ -375,7 +377,7 @@ def hear(text: str) -> Heard:
     was_goal = False
     text = _repeat(more, as_more, _spaced(pattern.sub(as_asked, text)))
     text = nominal.sub(as_nominal, text)
-    text = _CONTACT.sub(as_contact, text)
+    text = _CONTACT.pattern.sub(as_contact, text) if _CONTACT.cued(text) else text
     text = _spaced(bare.sub(as_more, text))
     text, asked, when = during(text, asked)         # "does the bowl slide when the cup comes in"
     text, goals, wanted_when = during(text, goals)

@@ -18,6 +18,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
+from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.vessels import destinations
 
 #: What a value is asked of: a height, a tilt, a way ...
@@ -72,12 +73,6 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:keep|keeps|keeping|stop|stops|stopping|prevent|prevents|preventing) (it|them|the [a-z]+)"
      r" from (?=[a-z]+ing\b)", r"so that \1 does not "),
     (r"\bmake sure(?: that)? ", "make sure so that "),
-    # "I need none of it on the table": so that none goes on it
-    (r"\b(?:i|we) (?:want|need|would like) (none|nothing|no liquid|no water)(?: of it)? (?=(?:on|onto|all over) )",
-     r"so that \1 goes "),
-    # "how do I get all the soup into the bowl": so that it goes in
-    (r"\bhow (?:do|can|could|should|would) (?:i|we|you) get (it all|all of it|everything|all the [a-z]+|it|the [a-z]+)"
-     r" (?=(?:in|into|inside)\b)", r"how so that \1 goes "),
     # "I'd like to empty the whole mug": so that it empties
     (r"\b(?:i|we) (?:want|need|would like|wish|am trying|are trying) to (?:empty|drain) (?:out )?(?:the whole|all of the"
      r"|all the|the entire|the) ([a-z]+)\b", r"so that the \1 empties"),
@@ -111,7 +106,21 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
     for pattern, wanted in _WANTING:
         said += tuple(m.group(0).strip() for m in pattern.finditer(text))
         text = pattern.sub(wanted, text)
+    for cued, wanted in _WANTING_CUED:
+        if cued.search(text):
+            said += tuple(m.group(0).strip() for m in cued.pattern.finditer(text))
+            text = cued.pattern.sub(wanted, text)
     return text, said
+
+
+#: Wanting, compiled when cued: "I need none of it on the table" (so that none goes on it),
+#: "how do I get all the soup into the bowl" (so that it goes in).
+_WANTING_CUED = (
+    (Cued(r"\b(?:i|we) (?:want|need|would like) (none|nothing|no liquid|no water)(?: of it)? (?=(?:on|onto|all over) )",
+          ("want", "need", "like")), r"so that \1 goes "),
+    (Cued(r"\bhow (?:do|can|could|should|would) (?:i|we|you) get (it all|all of it|everything|all the [a-z]+|it|the [a-z]+)"
+          r" (?=(?:in|into|inside)\b)", (" get ",)), r"how so that \1 goes "),
+)
 
 
 def sought(text: str) -> tuple[str, tuple[str, ...]]:

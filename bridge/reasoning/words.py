@@ -157,10 +157,10 @@ PHRASES: tuple[tuple, ...] = (
     (UNCLEAR, (r"re:\b(?:(?:pour(?:s|ed|ing)?|spill(?:s|ed|ing)?)(?: it| them| the \w+| \w+)? "
                r"(?:on|onto|into|in|over|down)|into|onto) (?:the |a |hedge )?context\b",)),
     # brought to a height while pouring: held there ("lowered to 5 mm above the lip during the pour")
-    ("held", (r"re:\b(?:lowered|raised|lifted|brought down|brought up) to(?= (?:about |around |just |only )?\d[^,;.?!]*"
+    ("held", (r"re(lowered|raised|lifted|brought):\b(?:lowered|raised|lifted|brought down|brought up) to(?= (?:about |around |just |only )?\d[^,;.?!]*"
               r"\b(?:during|while|when) (?:the )?pour)",), "read as held there while pouring"),
     # what is left in the source is what it holds: "a little cream left in the jug"
-    ("hedge", (r"re:(?:(?<=liquid )|(?<=much )|(?<=little )|(?<=bit )|(?<=some )|(?<=any )|(?<=lot ))left"
+    ("hedge", (r"re(left):(?:(?<=liquid )|(?<=much )|(?<=little )|(?<=bit )|(?<=some )|(?<=any )|(?<=lot ))left"
                r"(?= (?:in|inside) (?:the |a |it\b|my |its |our |hedge ))",),
      "read as nothing: what is left in the source is what it holds"),
     # leaving the source as it was poured: the end pose is the pour's
