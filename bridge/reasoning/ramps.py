@@ -11,10 +11,12 @@ from __future__ import annotations
 
 import re
 
+from pantarhei.bridge.reasoning.units import UNITS
+
 #: Verbs that move a tilt from one angle to another.
 _MOVING = re.compile(r"(?:ramp|increas|rais|sweep|swept|rotat|turn|tilt|tip|chang|var|go|went|mov|bring|brought)"
                      r"\w*")
-_DEGREES = {"degrees", "degree", "deg", "degs"}
+_DEGREES = {w for w, (measures, _) in UNITS.items() if measures == "angle"}
 _NUMBER = re.compile(r"-?\d+(?:\.\d+)?")
 
 
