@@ -56,7 +56,7 @@ from pantarhei.bridge.reasoning.spelling import corrected
 from pantarhei.bridge.reasoning.stages import (MARKER_STEMS, MOVE, POSE, SAME, ordinary_tilt, plain_tilts,
                                                same_at_the_end, stages)
 from pantarhei.bridge.reasoning.wording import Token, names_written, normalising, stem, tokens as words_of
-from pantarhei.bridge.reasoning.suggestions import hints as phrasings, misspelt, refuse_unplaced
+from pantarhei.bridge.reasoning.suggestions import DESCRIBE, hinted, misspelt, refuse_unplaced
 from pantarhei.bridge.reasoning.words import FILLERS, UNCLEAR, rewrites
 from pantarhei.theory.lexicon import load_vocabulary
 
@@ -192,8 +192,7 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
         if saying[ends[i]] > saying[i + 1] and not (k < len(read) and read[k] < ends[i]):
             phrase = " ".join(tokens[j].raw for j in (i, *sorted(scope(tokens, i, ends))))
             said = [t.raw for t in tokens if t.word == UNCLEAR] + [phrase]     # "instead of fast, pour slowly"
-            hint = next((h for p, h in phrasings() if any(re.search(p, w) for w in said)),
-                        "describe the scene with the words of `pantarhei vocab`, or give --props P1,P2")
+            hint = next(iter(hinted(said)), DESCRIBE)
             raise UserError(f"understood nothing that \"{phrase}\" excludes: {hint}")
     negated_at = covered(tokens, cues, ends)
     words = [t.word for t in tokens]        # "not heavy at all", "not at all heavy": the dimensions
@@ -241,11 +240,9 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
     out += same_at_the_end(tokens, out, vocab)
     if not accepted and not plain and not _ordinary(tokens, lex, bool(outcome.asked or outcome.goals)):
         unknown = list(dict.fromkeys(t.raw for t in tokens if t.word not in lex.known))
-        hint = ([FOLLOWS] if follows(text) else []) + [h for p, h in phrasings() if any(
-            re.search(p, w) for w in unknown)] + misspelt(unknown)
+        hint = ([FOLLOWS] if follows(text) else []) + hinted(unknown) + misspelt(unknown)
         said = ("could not place " + ", ".join(f'"{w}"' for w in unknown) + ": ") if unknown else ""
-        raise UserError(f"understood none of \"{question}\": {said}" + (hint[0] if hint else (
-            "describe the scene with the words of `pantarhei vocab`, or give --props P1,P2")))
+        raise UserError(f"understood none of \"{question}\": {said}" + (hint[0] if hint else DESCRIBE))
     taken = set().union(plain, *(p for _, p in accepted))
     structural = _IGNORED | NEGATION_STEMS | set(OBJECT_STEMS) | {BOWL} | set(MARKER_STEMS)
     ignored = [t.raw for i, t in enumerate(tokens) if i not in taken and t.word not in structural

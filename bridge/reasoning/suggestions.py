@@ -127,6 +127,15 @@ def hints() -> tuple[tuple[str, str], ...]:
          "into a liquid"))
 
 
+#: What a refusal says where no phrasing fits the words it names.
+DESCRIBE = "describe the scene with the words of `pantarhei vocab`, or give --props P1,P2"
+
+
+def hinted(words) -> list[str]:
+    """The hints (hints()) for any of `words`, each once, in hints()'s order."""
+    return list(dict.fromkeys(h for pattern, h in hints() if any(re.search(pattern, w) for w in words)))
+
+
 def refuse_unplaced(question: str, tokens: list[Token], read: set[int], lex) -> None:
     """UserError naming the words of the question that were not read: value
     words that fit nothing said ("pour light": the light what?) and, when
@@ -144,13 +153,11 @@ def refuse_unplaced(question: str, tokens: list[Token], read: set[int], lex) -> 
     if not words:
         return
     said = ", ".join(f'"{w}"' for w in words)
-    offered = list(dict.fromkeys(h for pattern, h in hints()
-                                 if any(re.search(pattern, w) for w in words)))
+    offered = hinted(words)
     if not offered and value_words:
         glosses = list(dict.fromkeys(g for w in value_words for g in lex.saying[w]))
         if len(glosses) <= 4:
             offered = ["would be read: " + ", ".join(f'"{g}"' for g in glosses)]
     offered += misspelt([t.raw for t in tokens if t.word not in lex.known])
-    hint = "; ".join(offered) if offered else ("describe the scene with the words of `pantarhei "
-                                          "vocab`, or give --props P1,P2")
+    hint = "; ".join(offered) if offered else DESCRIBE
     raise UserError(f"could not place {said} in \"{question}\": {hint}")
