@@ -32,8 +32,14 @@ def in_the_source(said: str) -> bool:
     """Whether liquid said to stay in a bowl (`said`: "stays in the jug")
     stays in the source: one named so, or one people pour from."""
     bowl = said.split()[-1]
-    return bowl == "source" or bowl in {f[0] for s in sections() if s.words == "bowl poured from"
-                                        for p in s.phrases if " " not in p for f in forms(p)}
+    return bowl == "source" or bowl in _poured_from()
+
+
+@lru_cache(maxsize=None)
+def _poured_from() -> frozenset[str]:
+    """The one-word names of everyday.txt's bowls poured from, as written."""
+    return frozenset(f[0] for s in sections() if s.words == "bowl poured from"
+                     for p in s.phrases if " " not in p for f in forms(p))
 
 
 def out_of_the_source(text: str, at: int) -> bool:
