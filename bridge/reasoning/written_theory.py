@@ -83,11 +83,11 @@ def stand_in(path: str, native: Path) -> tuple[str, str, bool]:
     facts, which theory/ask.pl checks): a stand-in for it, (path, name,
     checked) as load_theory_files takes it."""
     from pantarhei.bridge.theories import loading
-    from pantarhei.bridge.theories.unknown_names import written_at_facts
+    from pantarhei.bridge.theories.prolog_checks import stand_in_text
 
     theory = loading.read_theory(path)
     loading.check_file(theory)      # its rules, names and superiority: SWI-Prolog's to check
-    native.write_text(theory.native() + written_at_facts(theory))
+    native.write_text(stand_in_text(theory))
     return str(native), _shown(path), True
 
 

@@ -40,12 +40,12 @@ def written_at(theory) -> list[list]:
     return rows
 
 
-def written_at_facts(theory) -> str:
-    """written_at/4 facts of the rows of written_at, native text: what a
-    stand-in for a theory Python read holds beside it, for SWI-Prolog to
-    check it at the lines of the file Python read."""
-    return "".join(f"written_at({line}, {kind}, {rid}, {lit}).\n"
-                   for line, kind, rid, lit in written_at(theory))
+def stand_in_text(theory) -> str:
+    """The text of a stand-in for a theory Python read: its native text and
+    written_at/4 facts of the rows of written_at, for SWI-Prolog to check
+    it at the lines of the file Python read."""
+    return theory.native() + "".join(f"written_at({line}, {kind}, {rid}, {lit}).\n"
+                                     for line, kind, rid, lit in written_at(theory))
 
 
 def needs_prolog(theory) -> bool:
@@ -78,7 +78,7 @@ def check(theories: Sequence, names: bool = False,
         paths = []
         for i, t in enumerate(theories):
             paths.append(str(Path(tmp) / f"t{i}.pl"))
-            Path(paths[-1]).write_text(t.native() + written_at_facts(t))
+            Path(paths[-1]).write_text(stand_in_text(t))
         r = e.once(
             "maplist([P, N, file(P, N, checked)]>>true, Ps, Ns, Fs), "
             "catch(( ask:load_theories(Fs, [sup_names(S)], Ws), R = ok, "

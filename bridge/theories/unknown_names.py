@@ -12,9 +12,6 @@ from __future__ import annotations
 
 import sys
 
-# where a theory Python read says each fact, for the checks of theory/ask.pl
-from pantarhei.bridge.theories.prolog_checks import written_at_facts  # noqa: F401
-
 
 def warning_lines(unknown: list[tuple[str, str, str]], at_most: int | None = None) -> list[str]:
     """`warning: file:line: ...` for each unknown name (where, what, name),
