@@ -228,28 +228,31 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
             out.append(far)
             spoken.append(f"not {names[0]} at all: {far}")
             continue
-        if ordinary_among(others, vocab):        # "isn't heavy": the ordinary pour's bowl, said back
-            out.append(ordinary_among(others, vocab))
+        ordinary = ordinary_among(others, vocab)
+        if ordinary:                             # "isn't heavy": the ordinary pour's bowl, said back
+            out.append(ordinary)
             spoken.append(f"not {', '.join(names)}: {out[-1]}, as in the ordinary pour")
             continue
         raise UserError(f"not {', '.join(names)} leaves {_or(others)}: say which one (or give "
                         f"--props P1,P2)" if others
                         else f"\"{question}\" excludes every value of {dim}")
-    plain = plain_tilts(tokens, set().union(set(), *(p for _, p in accepted)), negated_at)
-    refuse_unplaced(question, tokens, set().union(plain, *(p for _, p in accepted)), lex)
+    read_at = set().union(*(p for _, p in accepted))
+    plain = plain_tilts(tokens, read_at, negated_at)
+    taken = read_at | plain
+    refuse_unplaced(question, tokens, taken, lex)
     out += same_at_the_end(tokens, out, vocab)
     if not accepted and not plain and not _ordinary(tokens, lex, bool(outcome.asked or outcome.goals)):
         unknown = list(dict.fromkeys(t.raw for t in tokens if t.word not in lex.known))
         hint = ([FOLLOWS] if follows(text) else []) + hinted(unknown) + misspelt(unknown)
         said = ("could not place " + ", ".join(f'"{w}"' for w in unknown) + ": ") if unknown else ""
         raise UserError(f"understood none of \"{question}\": {said}" + (hint[0] if hint else DESCRIBE))
-    taken = set().union(plain, *(p for _, p in accepted))
     structural = _IGNORED | NEGATION_STEMS | set(OBJECT_STEMS) | {BOWL} | set(MARKER_STEMS)
     ignored = [t.raw for i, t in enumerate(tokens) if i not in taken and t.word not in structural
                and t.word not in SAME]
     heard = [t.raw for t in tokens if t.raw not in ignored or t.said_back]    # said back: heard
+    tilted = ordinary_tilt() if plain else ""
     notes = typed + tuple(dict.fromkeys([*(f"{t.raw}: {t.said_back}" for t in tokens if t.said_back),
-                                         *(f"{tokens[i].raw}: {ordinary_tilt()}" for i in sorted(plain)),
+                                         *(f"{tokens[i].raw}: {tilted}" for i in sorted(plain)),
                                          *spoken]))
     noted = {t.raw for t in tokens if t.said_back}
     manners = any(vocab.dimensions[props[n].dimension].role == "manner" for n in out)
