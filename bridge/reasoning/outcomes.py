@@ -33,11 +33,10 @@ from functools import lru_cache
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.everyday import Matcher, names
 from pantarhei.bridge.reasoning.frames import asked_plainly
-from pantarhei.bridge.reasoning.phases import during
+from pantarhei.bridge.reasoning.phases import STILL, during
 from pantarhei.bridge.reasoning.seeking import sought, wanting
 from pantarhei.bridge.reasoning.vessels import OUT_OF, destinations, filled, in_the_source, liquids, out_of_the_source
 
-_STILL = ("destination_still_approach", "destination_still_retreat", "destination_still_settle")
 _ALL_IN = ("liquid_enters_destination",)
 
 #: Verbs of liquid thrown about: thrown over the rim or out of the destination, it entered
@@ -70,12 +69,12 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:stay|stays|remain|remains|keep|keeps|be|is) (?:still|put|in place|steady|stable|stationary"
      r"|(?:exactly |right )?where (?:it|they) (?:is|was|are|were|stands|stood|started))"
      r"|(?:sit|sits|sitting|stand|stands|standing|stay|stays|staying|remain|remains|rest|rests|resting|be)"
-     r" (?:still )?(?:in|at) the same (?:spot|place|position|location)", _STILL, False),
+     r" (?:still )?(?:in|at) the same (?:spot|place|position|location)", STILL, False),
     (r"slid\w*|slip(?:s|ped|ping)?\b|shift\w*|budg\w*|wobbl\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
      r"|jostl\w*|rock(?:s|ed|ing)?|shak(?:e|es|ing)|shook|translat\w*|drift\w*|creep\w*|scoot\w*"
      r"|displac\w*|(?:(?:get|gets|got|getting|be|being) )?(?:pushed|shoved)\b(?! (?:in|back|away|out)\b)|(?:go|goes|going|get|gets|getting) (?:wiggly|wobbly|shaky|jiggly)"
      r"|mov(?:e|es|ed|ing)\b(?! (?:in|away|closer|to|out|back|up|down|over|into|off|towards?)\b)",
-     _STILL, True),
+     STILL, True),
     (r"bump\w*|hit(?:s|ting)?|touch\w*|collid\w*|crash\w*|knock\w*|clip(?:s|ped)?|strike\w*"
      r"|bonk\w*|bang\w*|intersect\w*|clash\w*|graz(?:e|es|ed|ing)|scrap(?:e|es|ed|ing)|nudg\w*"
      r"|smash\w*|whack\w*|(?:run|runs|ran|running) into|(?:come|comes|came) into contact|bounc\w* (?:off|against)"
@@ -215,10 +214,10 @@ def _staying(names: tuple[str, ...], said: str, subject: list[str]) -> tuple[str
     if not re.match(r"(?:stay|stays|remain|remains|keep|keeps|be|is)\b", said) \
             or not re.search(r"\b(?:put|there|in place|where (?:it|they))\b", said):
         return names
-    if names == _STILL and liquids().spans(subject):
+    if names == STILL and liquids().spans(subject):
         return (*_ALL_IN, "liquid_remains_in_destination")
-    if names != _STILL and re.search(rf"\b(?:{destinations()})\b", " ".join(subject)):
-        return _STILL
+    if names != STILL and re.search(rf"\b(?:{destinations()})\b", " ".join(subject)):
+        return STILL
     return names
 
 
@@ -230,10 +229,10 @@ def _acts(subject: list[str], names: tuple[str, ...], m: re.Match | None = None)
     head = subject[:subject.index("of")] if "of" in subject else subject     # "the jug of water"
     if names == ("source_clear",) and liquids().spans(head):   # "does the water hit the rim": no
         return True                                             # source hitting it
-    if names in (_STILL, ("destination_upright",)):      # "will they slide": the bowls
+    if names in (STILL, ("destination_upright",)):      # "will they slide": the bowls
         actors = actors - {"they"}
     # "does the jug tip over": the source, held, neither tips over nor slides as the bowl does
-    held = names in (_STILL, ("destination_upright",)) and m is not None and "knock" not in m.group(0) and any(
+    held = names in (STILL, ("destination_upright",)) and m is not None and "knock" not in m.group(0) and any(
         w == "source" or (in_the_source(w) and not re.search(rf"\binto (?:\w+ )?(?:\w+ )?{w}\b", m.string))
         for w in head if w not in ("of", "the", "a", "an"))     # ("the jug knocks the bowl over": the bowl)
     return bool(actors.intersection(subject)) or held or bool(_around().spans(subject))
