@@ -136,8 +136,8 @@ def corrected(text: str) -> tuple[str, tuple[str, ...]]:
             continue
         if w in english:
             continue
-        if w.endswith("in") and len(w) >= 5 and _dropped_g(w + "g", whole, parts, english):
-            meant[w] = _dropped_g(w + "g", whole, parts, english)     # "spillin", "spilin"
+        if w.endswith("in") and len(w) >= 5 and (ing := _dropped_g(w + "g", whole, parts, english)):
+            meant[w] = ing                   # "spillin", "spilin"
             continue
         if len(w) < _SHORTEST:           # "teh": only two letters swapped
             swapped = {w[:k] + w[k + 1] + w[k] + w[k + 2:] for k in range(len(w) - 1)} & whole
