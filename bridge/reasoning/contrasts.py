@@ -17,12 +17,12 @@ from pantarhei.bridge.reasoning.units import UNITS
 #: Something poured, unnamed: "something thicker", "a liquid that is runnier".
 _THING = r"(?:(?:something|some ?thing|stuff|one|a liquid|liquid)(?: that is| that's)? )?"
 _MORE = r"(?:(?:a bit|a little|much|a lot|even|far|way) )?"
-_THICKER = r"(?:thicker|stickier|gloopier|more viscous|more sticky)"
-_THINNER = r"(?:thinner|runnier|more watery|more runny|less viscous|less sticky)"
-_CONTRAST = r"(?:instead of|rather than|in place of)"
-#: What every match of a comparison holds: its comparative's stem (cued.py's cues).
+#: The comparatives, which every match of a comparison holds (cued.py's cues too).
 _THICK_CUES = "thicker|stickier|gloopier|more viscous|more sticky"
 _THIN_CUES = "thinner|runnier|more watery|more runny|less viscous|less sticky"
+_THICKER = f"(?:{_THICK_CUES})"
+_THINNER = f"(?:{_THIN_CUES})"
+_CONTRAST = r"(?:instead of|rather than|in place of)"
 _USE = r"(?:(?:,|;) )?(?:(?:use|pour|try|take|pick|with|using|have) )?"
 #: A place the vocabulary cannot name, set against one it reads.
 _VAGUE = r"(?:from )?(?:above|overhead|the top|on top)"
