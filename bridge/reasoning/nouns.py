@@ -74,11 +74,34 @@ def roles(tokens: list[Token], placeable: frozenset[str]) -> dict[int, str]:
             poured = (k + 2 < len(tokens) and tokens[k].raw == "poured" and tokens[k + 2].clause == t.clause
                       and tokens[k + 1].word in ("into", "onto")) or (       # "pour a light cup into ..."
                 j >= 0 and tokens[j].word == stem("pour") and k < len(tokens) and tokens[k].word in ("into", "onto"))
+            into = j >= 0 and tokens[j].word in _INTO
             roles[i] = ("source" if before in _POURED_FROM or as_source or again or usual or poured
+                        or (not into and _handled(tokens, i, j))
                         else "destination")
             # (a name said of both bowls, "from a cup into a cup", refers to neither again)
             sources[name] = roles[i] == "source" and sources.get(name, True)
     return _ones(tokens, _beside_the_bowl(tokens, roles), placeable)
+
+
+#: What is done to the source, said before it ("tilt the heavy cup", "lift the mug") or after
+#: it ("the cup comes in low", "a heavy mug, tilted halfway"): a bowl handled so is the source.
+_HANDLING = {stem(w) for w in ("tilt", "tip", "tipped", "lift", "raise", "lower", "hold", "held", "move",
+                               "bring", "brought", "swing", "rotate", "incline", "lean", "carry", "invert",
+                               "upend", "approach", "retreat")}
+
+
+def _handled(tokens: list[Token], i: int, j: int) -> bool:
+    """Whether the bowl at `i` is what is handled: the object of a verb of
+    handling (`j`: the first word before it that is no value word or
+    article), or its subject in its clause ("the cup, tilted": a new clause), a bowl
+    called a bowl excepted: the destination's name, its tilt the pour's."""
+    if j >= 0 and tokens[j].word in _HANDLING:
+        return True
+    k = i + 1
+    while k < len(tokens) and tokens[k].word in _BEING:
+        k += 1
+    return (k < len(tokens) and tokens[k].word in _HANDLING and tokens[k].clause - tokens[i].clause <= 1
+            and tokens[i].raw.split()[-1] not in ("bowl", "bowls"))     # "a heavy bowl, tilted": the pour's
 
 
 def _ones(tokens: list[Token], roles: dict[int, str], placeable: frozenset[str]) -> dict[int, str]:

@@ -182,7 +182,6 @@ REFUSED = [
     'a heavier liquid',
     'an empty cup',
     'either pour from the side or from far away',
-    'end with the cup tilted back',
     'move in slow then pour fast',
     'pour 10 to 20 cm above',
     'pour a 1 kg liquid',
