@@ -46,6 +46,8 @@ NOTE = re.compile(r"(?:^|(?<=[,:;.!=\u2013\u2014] )|(?<= - ))(?=(?:tips|topples|
                   r"(?:the |a |an |my |your |this |that )?[a-z]+ "
                   r"(?:hits|bumps|touches|knocks|collides|strikes|scrapes|clips|tips|topples|slides|shifts"
                   r"|moves|wobbles|spills|splashes|overflows|drips|leaks|stays(?= (?:put|still|where|in place))"
+                  r"|misses|overshoots|lands|flips|skids|budges|scoots|slips|empties|ends up|falls over"
+                  r"|gets (?:knocked|pushed|hit|bumped|shoved)"
                   r")\b[^,:;.!?]*(?:\?| or (?:not|nah)\b))")
 
 

@@ -140,7 +140,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
     end = rf"(?P<rest>(?: (?:{_REST}|{destinations()})\b)*)"     # "go into the mug"
     verbs = "|".join(f"(?P<v{k}>{filled(v)})" for k, (v, _, _) in enumerate(OUTCOMES))
     # (not holding another auxiliary: "do you think it will spill" asks "will it spill")
-    subject = rf"(?P<subject>(?: (?!(?:if|when|while|not|{_MODALS})\b)[a-z]+){{0,16}}?)"
+    subject = rf"(?P<subject>(?: (?!(?:if|when|while|not|{_MODALS})\b)(?:[a-z]+|[0-9][0-9.]*)){{0,16}}?)"
     # the odds of an outcome: "what is the chance the bowl tips", "the risk of spilling"
     chance = r"(?P<chance>(?:chance|chances|probability|likelihood|odds|risk)(?: of| that)?)"
     asked = re.compile(
@@ -180,7 +180,8 @@ def _patterns() -> tuple[re.Pattern, ...]:
 _CONTACT = Cued(r"(?<!\bin )\b(?:(?:is|will) there (?:be )?)?(?:any |some |no |a |the )?"
                       r"(?:contact|collisions?) (?:between|with)\b"
                       r"|\b(?:is|will|would|could) there (?:be )?(?:any |some |no |a )?collisions?\b"
-                      r"|(?:^|(?<=[,:;.!?] ))(?:any |a )?(?:collisions?|contact)(?: or not)?(?= *[?.!]* *$)",
+                      r"|(?:^|(?<=[,:;.!?] ))(?:(?:any |a |the )?(?:risk|chance|danger|odds|possibility|likelihood)"
+                      r" of )?(?:any |a )?(?:collisions?|contact)(?: or not)?(?= *[?.!]* *$)",
                  ("contact", "collision"))
 
 

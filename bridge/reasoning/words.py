@@ -60,6 +60,13 @@ PHRASES: tuple[tuple, ...] = (
     ("hedge", ("how much", "how many",    # asks, does not say: "how much liquid spills"
                "nearly",                   # a hedge (its stem would be "near")
                r"re:\bbetween(?= -?\d+(?:\.\d+)? and -?\d)")),   # a range: quantities.py's
+    # raised or lowered to a number, or below the rim, no move before or after pouring said:
+    # where it is held
+    # ("lowered to 5 mm above the lip", "the cup lowered below the rim")
+    ("at a height of", (r"re:\b(?:lower(?:ed|ing|s)?|rais(?:e|ed|es|ing)|lift(?:ed|ing|s)?)(?: (?:it|them|the \w+))?"
+                        r"(?: (?:up|down))? to(?= (?:just |about |around |roughly )?-?\d)(?![^;.?!]*\b(?:before|after|then)\b)",)),
+    ("hedge", (r"re:\b(?:lower(?:ed|ing|s)?|dipp?(?:ed|ing|s)?)(?: (?:it|them|the \w+))?(?: down)?"
+               r"(?= (?:just |right |slightly |a bit |well )?(?:below|under|beneath)\b)(?![^;.?!]*\b(?:before|after|then)\b)",)),
     *CONTRASTS,               # a value said against another: thicker than water (contrasts.py)
     ("very", (rf"re:\b(?:super duper|super|extremely|incredibly|insanely|ridiculously|awfully|terribly"
               rf"|exceptionally|unusually|crazy|way)(?= (?:{_INTENSIFIED})\b)",)),
