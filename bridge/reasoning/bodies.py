@@ -36,7 +36,7 @@ BODIES: tuple[tuple, ...] = (
     ("grippy", (r"re:\b(?:non|anti) ?(?:slip|skid)\b",)),
     ("heavy", (r"re:\bdense\b(?! (?:plastic|glass|wood|metal|ceramic|material))",)),
     ("light", ("lightweight", "light weight", "featherweight", "feather light", "featherlight")),
-    ("heavy", ("heavyweight", "heavy weight", "hefty", "weighty")),
+    ("heavy", ("heavyweight", "heavy weight", "hefty", "weighty", r"re:\bheavy(?: |-)?bottomed\b")),
     ("slippery", ("slick", "smooth", "greasy")),
     ("halfway", ("partway", "part way", "part of the way")),
     ("grippy", ("rough",)),

@@ -42,13 +42,25 @@ STRUCK = Cued(r"\b(?:what if|what happens if|suppose|imagine if)(?= (?:the |a |a
 
 #: An outcome typed as a note: a clause of a noun (with its article) and an outcome's verb,
 #: ending with a question mark, and no word that asks: "cup hits bowl??", "jug bumps the pot?".
-NOTE = re.compile(r"(?:^|(?<=[,:;.!=\u2013\u2014] )|(?<= - ))(?=(?:tips|topples|slides|spills)(?: over)? *\?|"
+NOTE = re.compile(r"(?:^|(?<=[,:;.!=>\u2013\u2014] )|(?<= - ))(?=(?:tips|topples|slides|spills|moves|shifts|wobbles"
+                  r"|splashes|overflows|drips|budges|slips|skids|flips)(?: over)?(?: or (?:not|nah))? *\?|"
                   r"(?:the |a |an |my |your |this |that )?[a-z]+ "
                   r"(?:hits|bumps|touches|knocks|collides|strikes|scrapes|clips|tips|topples|slides|shifts"
                   r"|moves|wobbles|spills|splashes|overflows|drips|leaks|stays(?= (?:put|still|where|in place))"
                   r"|misses|overshoots|lands|flips|skids|budges|scoots|slips|empties|ends up|falls over"
                   r"|gets (?:knocked|pushed|hit|bumped|shoved)"
+                  # (the verb bare, as notes and learners type it: "bowl slide or not", "it still arrive in")
+                  r"|hit|bump|touch|tip|topple|slide|shift|move|wobble|spill|splash|overflow|miss|land|arrive|flip"
+                  r"|skid|budge|slip|fall over|stay(?= (?:put|still|where|in place|inside|in))"
                   r")\b[^,:;.!?]*(?:\?| or (?:not|nah)\b))")
+
+
+#: A verb alone at the end of a note with no word that asks: "high pour thin liquid spill?",
+#: "bowl slide y/n" (not "what if the milk spills?", "what fraction spills?").
+LAST = re.compile(r"(?<=[a-z] )(?=(?:spill|spills|splash|splashes|tip|tips|slide|slides|move|moves|overflow"
+                  r"|overflows|topple|topples)(?: over)?(?: *\?+| or (?:not|nah) *\?*) *$)")
+_ASKS = re.compile(r"\b(?:what|which|how|why|whether|if|suppose|imagine|will|would|does|do|did|could|can|might"
+                   r"|may|should|shall|is|are|was|were)\b")
 
 
 def asked_plainly(text: str) -> tuple[str, tuple[str, ...]]:
@@ -64,4 +76,6 @@ def asked_plainly(text: str) -> tuple[str, tuple[str, ...]]:
     if STRUCK.search(text):
         phrases.extend(m.group(0) for m in STRUCK.pattern.finditer(text))
         text = STRUCK.pattern.sub(" does ", text)
+    if not _ASKS.search(text):
+        text = LAST.sub("does ", text)
     return NOTE.sub("does ", text), tuple(phrases)

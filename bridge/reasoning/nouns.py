@@ -93,14 +93,16 @@ _HANDLING = {stem(w) for w in ("tilt", "tip", "tipped", "lift", "raise", "lower"
 def _handled(tokens: list[Token], i: int, j: int) -> bool:
     """Whether the bowl at `i` is what is handled: the object of a verb of
     handling (`j`: the first word before it that is no value word or
-    article), or its subject in its clause ("the cup, tilted": a new clause), a bowl
+    article), or its subject in its clause ("the cup, tilted": a new clause; "a glass
+    pouring"), a bowl
     called a bowl excepted: the destination's name, its tilt the pour's."""
     if j >= 0 and tokens[j].word in _HANDLING:
         return True
     k = i + 1
     while k < len(tokens) and tokens[k].word in _BEING:
         k += 1
-    return (k < len(tokens) and tokens[k].word in _HANDLING and tokens[k].clause - tokens[i].clause <= 1
+    return (k < len(tokens) and (tokens[k].word in _HANDLING or tokens[k].raw in ("pours", "pouring"))
+            and tokens[k].clause - tokens[i].clause <= 1
             and tokens[i].raw.split()[-1] not in ("bowl", "bowls"))     # "a heavy bowl, tilted": the pour's
 
 

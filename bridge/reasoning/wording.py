@@ -113,6 +113,9 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     # "w/o" and "w/" as notes write them: without, with
     text = re.sub(r"\bw/o\b|\bw/(?= ?[a-z])", lambda m: said.setdefault(f"{m.group(0)}: read as with{'out' * (m.group(0) == 'w/o')}")
                   or f"with{'out' * (m.group(0) == 'w/o')} ", text).replace("  ", " ")
+    # "y/n" ending a note: whether it happens or not ("bowl slide y/n")
+    text = re.sub(r" *\b(?:y/n|y or n)\b(?=[?.!]* *$)", lambda m: said.setdefault(f"{m.group(0).strip()}: read as or not")
+                  or " or not", text)
     # "one" standing for the noun a contrast is of: "a heavy bowl instead of a light one" (not
     # one poured from or into, which the noun repeated would lose)
     text = re.sub(r"(?<!\bfrom )(?<!\binto )\b((?:a|an|the) [a-z]+ )([a-z]+) (instead of|rather than|and not|not) (a|an|the) ([a-z]+) one\b",
@@ -154,12 +157,14 @@ def _normalised(text: str) -> str:
     # tilted back by an angle: the angle back, negative ("tilted back 20 degrees")
     text = re.sub(r"\b((?:tilt|tip|lean)\w*(?: (?:it|the \w+))?) back(?:wards?)?(?: (?:by|at|to|about|around))*"
                   r" (\d+(?:\.\d+)?)(?= ?(?:degrees?|degs?)?\b(?! ?[-\d]))", r"\1 back at -\2", text)
-    # a number said with tilting and no unit is an angle: "tilt it 45", "tilted to 30 to 40"
+    # a number said with tilting and no unit is an angle: "tilt it 45", "tilted to 30 to 40",
+    # "mug tilt 90 bowl slide" (a note: the next noun starts another clause)
     text = re.sub(r"\b((?:(?:tilt|tip|angl|inclin|lean)\w*|pitch(?:ed|ing)?)(?: (?:it|the \w+))?(?: (?:to|by|at|of|about|around"
                   r"|roughly|approximately|some))*) (-?\d+(?:\.\d+)?(?: (?:to|or) -?\d+(?:\.\d+)?)?)"
                   rf"(?![\w.%\u00b0-]| ?(?:{_UNIT_WORDS})\b| (?:to|or|and) -?\d)"
                   r"(?= *(?:$|[,;.!?):\u2013\u2014]|- |(?:and|then|but|so|while|before|after|from|above|over|with|into|at"
-                  r"|during|when|if|in|on|towards|away|or|to|degrees?)\b))", r"\1 \2 degrees", text)
+                  r"|during|when|if|in|on|towards|away|or|to|degrees?"
+                  r"|bowl|bowls|cup|mug|glass|jug|liquid|water|source|destination)\b))", r"\1 \2 degrees", text)
     text = re.sub(r"(\d)\s*(?:(?:deg|degs|degrees?)\s*(?:/\s*(?:s|sec)\b|per (?:second|sec)\b)"
                   r"|rpm\b)", r"\1 unit_turn_speed", text)        # 30 deg/s: a speed of tilting
     text = re.sub(r"(\d)\s*(?:(?:k?m|cm|mm)\s*/\s*(?:s|sec|h|hr)|(?:k?m|cm|mm|metres?|meters?|"

@@ -344,7 +344,7 @@ PHRASES: tuple[tuple, ...] = (
 #: Words that say nothing about the scene: a question's frame, not its facts
 #: ("very" is not one: it sets "very high" apart from "high"); "ll", "re", "ve", "m" and
 #: "d" are what is left of "it'll", "we're", "I've", "I'm" and "I'd" (wording.py reads them
-#: as will, are, have, am and would), "w" and "o" of "w/" (with) and "w/o" (without). The everyday list's hedges ("okay") are read as "hedge".
+#: as will, are, have, am and would), "w" and "o" of "w/" (with) and "w/o" (without), "y" and "n" of "y/n" (or not). The everyday list's hedges ("okay") are read as "hedge".
 FILLERS = frozenset("""
     what which how why when where whether if happen happens would will could should can may
     might must do does did is are was were be been being i we you it they me my our your its
@@ -357,7 +357,7 @@ FILLERS = frozenset("""
     almost
     and or but then with without by for from at on in over above of to a an the please say
     tell suppose imagine case ever all both each one way thing any
-    ll re ve m d w o
+    ll re ve m d w o y n
 """.split())
 
 def _everyday() -> list[tuple[Matcher, str, str]]:
