@@ -138,10 +138,16 @@ PHRASES: tuple[tuple, ...] = (
     # tilted a lot: steeply (the most before upside down, which "all the way" says)
     ("steeply tilted", (r"re:\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:(?:quite |really |very )?a lot"
                         r"|lots|loads|heaps)\b",)),
-    # tilting has no speed in the vocabulary: how far, not how fast
+    # tipped fast or slowly: the move into the pouring pose, which tilts the source as it goes
+    ("approach fast", (r"re:\b(?:tilt|tip)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
+                       r" (?:fast|quick(?:ly)?|rapidly)\b(?! (?:than|as)\b)",
+                       r"re:\b(?:quickly|fast|rapidly) (?:tilt|tip)\w*\b")),
+    ("approach slowly", (r"re:\b(?:tilt|tip)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
+                         r" (?:slow(?:ly)?|gradually|steadily)\b(?! (?:than|as)\b)",
+                         r"re:\b(?:slowly|gradually|steadily) (?:tilt|tip)\w*\b")),
+    # tilting has no speed of its own in the vocabulary beside that move's: not a rate, nor a change
     (UNCLEAR, (r"re:\b(?:tilt|tip|rotat|turn)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
                r" (?:slow(?:ly|er)?|fast(?:er)?|quick(?:ly|er)?|rapidly|gradually|steadily)\b",
-               r"re:\b(?:slowly|quickly|fast|gradually|rapidly|steadily) (?:tilt|tip)\w*\b",
                r"re:\b(?:tilt|tip|tilting|tipping|rotation|pour|pouring) (?:rate|speed|velocity)\b")),
     # asks for a value, which is a plan's to find, not a scene's to say: "how high should I pour?"
     (UNCLEAR, (r"re:\bhow (?:very |really )?(?:high|low|far|fast|quick|quickly|slow|slowly|steep|"
