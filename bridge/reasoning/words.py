@@ -49,6 +49,13 @@ _RIM = (r"(?:the )?(?:destination |bowl )?(?:rim|edge|lip|brim|top)\b(?: of (?:t
         r"(?:destination|bowl)\b)?")
 #: Degree words before a comparative: "a bit lower".
 _DEGREE = r"(?:just|only|slightly|barely|a (?:little |tiny )?bit|a little|a tad|somewhat)"
+#: An earlier or the usual pour, as a comparison is made to it: "than the previous pour",
+#: "than last time", "than usual"; and after "as high as": "last time", "before".
+_BEFORE = (r"than (?:(?:the|my|our|a|that|your) )?(?:(?:previous|last|earlier|first|other|usual|normal|ordinary"
+           r"|regular|standard|old) (?:pour|time|one|try|attempt|go|run)|before|usual|normal|last time|previously"
+           r"|earlier)\b")
+_AS_BEFORE = (r"(?:(?:the|my|our|that) )?(?:(?:previous|last|earlier|first|usual|normal) (?:pour|time|one|try|attempt)"
+              r"|last time|before|usual|normal)\b")
 #: Units of length, as a question writes them after a number.
 _LENGTHS = ("mm", "cm", "m", "inch", "inches", "foot", "feet", "ft", "metre", "metres", "meter",
             "meters", "centimetre", "centimetres", "centimeter", "centimeters")
@@ -96,6 +103,27 @@ PHRASES: tuple[tuple, ...] = (
     ("low", (rf"re:\b{_DEGREE} (?:higher|above) than {_RIM}",)),
     ("above", (rf"re:\b(?:higher|above) than {_RIM}",)),
     ("below the rim", (rf"re:\b(?:{_DEGREE} )?(?:lower|below) than {_RIM}",)),
+    # a comparison with an earlier or the usual pour: each question is read alone, so against
+    # the ordinary pour ("slower than the previous pour" is slowly; "not as high as last time" low)
+    *((value, (rf"re:\b(?:{_DEGREE} |much |even |far |a lot )?(?:{comparative}) {_BEFORE}",
+               rf"re:\b(?:not|never) (?:(?:held|poured|tilted|moved|brought|tipped|as) )*?as (?:{plain}) as"
+               rf" {_AS_BEFORE}") if plain else
+       (rf"re:\b(?:{_DEGREE} |much |even |far |a lot )?(?:{comparative}) {_BEFORE}",),
+       "read against the ordinary pour: each question is read alone")
+      for comparative, value, plain in (
+          ("higher", "high", "low|short"), ("lower", "low", "high"), ("slower", "slowly", "fast|quick|quickly"),
+          ("faster|quicker", "fast", "slow|slowly"), ("heavier", "heavy", "light"), ("lighter", "light", "heavy"),
+          ("steeper", "steeply tilted", ""), ("stickier|thicker", "sticky", "runny|thin"),
+          ("runnier|thinner", "runny", "sticky|thick"))),
+    ("slightly tilted", (rf"re:\b(?:not|never) (?:tilt|tip)\w* (?:it |the \w+ )?as (?:far|much) as {_AS_BEFORE}",
+                         rf"re:\bless tilted {_BEFORE}"), "read against the ordinary pour: each question is read alone"),
+    # a comparative said again, negated, after the value it read: "slower than before, not faster"
+    ("hedge", (rf"re:(?:(?<=\bslowly)|(?<=\bfast)|(?<=\bhigh)|(?<=\blow)|(?<=\bheavy)|(?<=\blight)|(?<=\bsticky)"
+               rf"|(?<=\brunny))(?: ?,)? (?:and |but )?not (?:{_COMPARATIVES}|lower)\b",)),
+    # "more high", "more thick like honey", as learners of English say them: the value itself
+    *((value, (rf"re:\bmore (?:{said})\b(?! than\b)",)) for said, value in (
+        ("high", "high"), ("low", "low"), ("thick", "sticky"), ("thin", "runny"), ("heavy", "heavy"),
+        ("light", "light"), ("fast|quick", "fast"), ("slow", "slowly"), ("sticky", "sticky"), ("runny", "runny"))),
     # a comparison with nothing it is measured from: higher than what?
     (UNCLEAR, (rf"re:\b(?:{_DEGREE} |much |even |far |a lot |any |no )?(?:more |less )?"
                rf"(?:{_COMPARATIVES})\b(?: than (?:before|usual|normal|that|it|the \w+))?",
