@@ -50,7 +50,8 @@ _RIM = (r"(?:the )?(?:destination |bowl )?(?:rim|edge|lip|brim|top)\b(?: of (?:t
 #: Degree words before a comparative: "a bit lower".
 _DEGREE = r"(?:just|only|slightly|barely|a (?:little |tiny )?bit|a little|a tad|somewhat)"
 #: An earlier or the usual pour, as a comparison is made to it: "than the previous pour",
-#: "than last time", "than usual"; and after "as high as": "last time", "before".
+#: "than last time", "than usual"; and after "as high as": "last time" ("as before" is a hedge
+#: of the everyday list by then).
 _BEFORE = (r"than (?:(?:the|my|our|a|that|your) )?(?:(?:previous|last|earlier|first|other|usual|normal|ordinary"
            r"|regular|standard|old) (?:pour|time|one|try|attempt|go|run)|before|usual|normal|last time|previously"
            r"|earlier)\b")
@@ -106,8 +107,8 @@ PHRASES: tuple[tuple, ...] = (
     # a comparison with an earlier or the usual pour: each question is read alone, so against
     # the ordinary pour ("slower than the previous pour" is slowly; "not as high as last time" low)
     *((value, (rf"re:\b(?:{_DEGREE} |much |even |far |a lot )?(?:{comparative}) {_BEFORE}",
-               rf"re:\b(?:not|never) (?:(?:held|poured|tilted|moved|brought|tipped|as) )*?as (?:{plain}) as"
-               rf" {_AS_BEFORE}") if plain else
+               rf"re:\b(?:not|never) (?:(?:held|poured|tilted|moved|brought|tipped|as) )*?as (?:{plain})"
+               rf" (?:as {_AS_BEFORE}|hedge\b)") if plain else
        (rf"re:\b(?:{_DEGREE} |much |even |far |a lot )?(?:{comparative}) {_BEFORE}",),
        "read against the ordinary pour: each question is read alone")
       for comparative, value, plain in (
@@ -115,7 +116,8 @@ PHRASES: tuple[tuple, ...] = (
           ("faster|quicker", "fast", "slow|slowly"), ("heavier", "heavy", "light"), ("lighter", "light", "heavy"),
           ("steeper", "steeply tilted", ""), ("stickier|thicker", "sticky", "runny|thin"),
           ("runnier|thinner", "runny", "sticky|thick"))),
-    ("slightly tilted", (rf"re:\b(?:not|never) (?:tilt|tip)\w* (?:it |the \w+ )?as (?:far|much) as {_AS_BEFORE}",
+    ("slightly tilted", (rf"re:\b(?:not|never) (?:tilt|tip)\w* (?:it |the \w+ )?as (?:far|much)"
+                         rf" (?:as {_AS_BEFORE}|hedge\b)",
                          rf"re:\bless tilted {_BEFORE}"), "read against the ordinary pour: each question is read alone"),
     # a comparative said again, negated, after the value it read: "slower than before, not faster"
     ("hedge", (rf"re:(?:(?<=\bslowly)|(?<=\bfast)|(?<=\bhigh)|(?<=\blow)|(?<=\bheavy)|(?<=\blight)|(?<=\bsticky)"
