@@ -48,11 +48,11 @@ NOTE = re.compile(r"(?:^|(?<=[,:;.!=>\u2013\u2014] )|(?<= - ))(?=(?:tips|topples
                   r"(?:hits|bumps|touches|knocks|collides|strikes|scrapes|clips|tips|topples|slides|shifts"
                   r"|moves|wobbles|spills|splashes|overflows|drips|leaks|stays(?= (?:put|still|where|in place))"
                   r"|misses|overshoots|lands|flips|skids|budges|scoots|slips|empties|ends up|falls over"
-                  r"|gets (?:knocked|pushed|hit|bumped|shoved)"
+                  r"|gets (?:knocked|pushed|hit|bumped|shoved)|(?:goes|comes|pours|flows) out"
                   # (the verb bare, as notes and learners type it: "bowl slide or not", "it still arrive in")
                   r"|hit|bump|touch|tip|topple|slide|shift|move|wobble|spill|splash|overflow|miss|land|arrive|flip"
                   r"|skid|budge|slip|fall over|stay(?= (?:put|still|where|in place|inside|in))"
-                  r")\b[^,:;.!?]*(?:\?| or (?:not|nah)\b))")
+                  r")\b[^,:;.!?]*(?:\?| or (?:not|nah|no)\b))")
 
 
 #: A verb alone at the end of a note with no word that asks: "high pour thin liquid spill?",

@@ -83,6 +83,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      ("source_clear",), True),
     (r"(?:stay|stays|keep|keeps|be|is)? ?clear(?: of)?", ("source_clear",), False),
     (r"(?:come|comes|coming|came|get|gets|pour|pours|flow|flows|run|runs|drain\w*) out"
+     r"|(?:go|goes|going|went) out\b(?! of (?:the |a |an |my )?(?!source\b)(?:[a-z]+ )?(?:bowl|destination)\b)"
      r"|empt(?:y|ies|ied)(?: out)?|leav(?:e|es|ing) the|exit\w*", ("liquid_leaves_source",), False),
     (r"(?:end|ends|ended|ending) up in(?:side)?", (*_ALL_IN, "liquid_remains_in_destination"), False),
     # what stays in the bowl entered it: "remains" alone holds also when none enters

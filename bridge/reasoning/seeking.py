@@ -46,6 +46,11 @@ _ASKING_SOURCE = (
     rf" {_WHO} (?:pour|go)\b){_HOW}(?: (?:should|do|can|must|would|could|shall|is) {_WHO}"
     rf"(?: {_ACT}{_WHAT})?)?(?= |$)"
     rf"|\bhow (?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT}(?= |$)"
+    # the most a move may be: "what's the fastest I can move away", "the highest we could pour"
+    rf"|\b(?:what(?: is)? )?the (?:fastest|slowest|quickest|highest|lowest|steepest|furthest|farthest|closest"
+    rf"|nearest) (?:that )?{_WHO} (?:can|could|should|may|might|dare) {_ACT}{_WHAT}(?: (?:away|in|out|over))?(?=[ ?.!,]|$)"
+    # what to avoid: "what should I avoid"
+    rf"|\bwhat (?:should|must|do|would|can) {_WHO} (?:need to |have to )?avoid(?: doing)?(?=[ ?.!,]|$)"
     # what to change or do: "what do I need to change", "what should we adjust"
     rf"|\bwhat (?:do|should|must|would|can) {_WHO} (?:need to |have to )?(?:change|adjust|alter|do differently)(?= |$)"
     # a choice of two values: "should I pour from low or high", "do we tilt it a bit or a lot"
@@ -73,6 +78,9 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:keep|keeps|keeping|stop|stops|stopping|prevent|prevents|preventing) (it|them|the [a-z]+)"
      r" from (?=[a-z]+ing\b)", r"so that \1 does not "),
     (r"\bmake sure(?: that)? ", "make sure so that "),
+    # "goal: empty the bottle completely": so that it empties
+    (r"\b(?:goal|aim|objective|task|target)s?(?: is)?:? (?:to )?(?:empty|drain) (?:out )?(?:the whole|all of the|all the"
+     r"|the entire|the) ([a-z]+)(?: (?:completely|fully|entirely|totally))?\b", r"so that the \1 empties"),
     # "I'd like to empty the whole mug": so that it empties
     (r"\b(?:i|we) (?:want|need|would like|wish|am trying|are trying) to (?:empty|drain) (?:out )?(?:the whole|all of the"
      r"|all the|the entire|the) ([a-z]+)\b", r"so that the \1 empties"),

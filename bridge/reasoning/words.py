@@ -148,6 +148,7 @@ PHRASES: tuple[tuple, ...] = (
                   r"|pace)\b",)),
     # a quick in-and-out: the move in and the move out both quick, the pour between
     ("approach fast ; retreat fast ; pour", (
+        r"re:\b(?:fast|quick|quickly|fastly) in,? (?:and |then )?(?:fast|quick|quickly|fastly) out\b",
         r"re:\b(?:a |an )?(?:quick|fast|rapid|swift|brisk|sudden|snappy)(?: in(?: and)? out| in and"
         r" then out)(?: (?:motion|movement|move|moves|path|trajectory|action))?\b",
         r"re:\bin(?: and)? out (?:quickly|fast|rapidly|swiftly|briskly)\b",
@@ -156,12 +157,25 @@ PHRASES: tuple[tuple, ...] = (
         r"|rapidly|swiftly|briskly)\b(?! (?:in|into|to|towards?|away|out|off|back|up|down|over|from|before"
         r"|after|then)\b)")),
     ("approach slowly ; retreat slowly ; pour", (
+        r"re:\b(?:slow|slowly) in,? (?:and |then )?(?:slow|slowly) out\b",
         r"re:\b(?:a |an )?(?:slow|gentle|careful|gradual|leisurely)(?: in(?: and)? out| in and"
         r" then out)(?: (?:motion|movement|move|moves|path|trajectory|action))?\b",
         r"re:\bin(?: and)? out (?:slowly|gently|carefully|gradually)\b",
         r"re:\bmov(?:e|es|ed|ing)(?: it| the \w+| them)? (?:really |very |too |quite )?(?:slowly|slow"
         r"|gently|carefully|gradually)\b(?! (?:in|into|to|towards?|away|out|off|back|up|down|over|from"
         r"|before|after|then)\b)")),
+    # "fastly", as learners of English say it; "the robot come fastly": it comes in
+    ("approach fast", (r"re:\b(?:come|comes|coming|came) (?:very |really |too )?(?:fastly|fast|quickly)\b",)),
+    ("approach slowly", (r"re:\b(?:come|comes|coming|came) (?:very |really |too )?(?:slowly|slow)\b",)),
+    ("fast", ("fastly",)),
+    # not tilted enough: slightly ("the cup is not turning enough")
+    ("slightly tilted", (r"re:\b(?:not|never) (?:tilt|tip|turn)\w*(?: (?:it|the \w+))? (?:far |much )?enough\b",)),
+    # just past the rim: to the side of the bowl (not a length past it: "5 cm past the rim")
+    ("to the side", (r"re:(?<!cm )(?<!mm )\b(?:just |slightly |a bit |a little )?(?:past|beyond) the (?:bowl'?s? )?"
+                     r"(?:edge|rim|lip)\b(?! (?:of|by|at) )",)),
+    # a height said relative to the rim: above it, the number keeps its sign ("-2 cm relative to the rim")
+    ("above the rim", (r"re:\b(?:height )?relative to the (?:bowl |destination )?(?:rim|lip|edge)"
+                       r"(?= *(?:[,;.!?(]|$))",)),
     # tipped too far: past what? (not far from the bowl)
     (UNCLEAR, (r"re:\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:too |so |that |very )?far\b"
                r"(?! (?:from|away|off|to)\b)",)),
