@@ -7,7 +7,7 @@ cannot name, set against one it reads ("from the side rather than from
 above"), is read as nothing, the place said beside it read; a little off
 the centre is near the rim (off-centre with no amount stays refused: how
 far?); "right in the middle" is in the middle; a length "relative to the
-rim" is above it (a minus sign below it); "lower, close to the rim" is
+rim" is above it (a minus sign below it), "-2 cm height relative to the rim" too; "lower, close to the rim" is
 low, and "but not touching" says how close.
 """
 from __future__ import annotations
@@ -42,7 +42,7 @@ CONTRASTS: tuple[tuple, ...] = (
                          r"(?:destination |bowl )?(?:centre|center|middle)\b",),
      "read as near the rim: a little off the middle, where the rim is nearer"),
     # a height measured from the rim: above it (a minus sign below it)
-    ("above the rim", (rf"re(relative|respect|vs|versus):(?:{_AFTER_LENGTH})(?:relative to|with respect to|vs|versus)"
+    ("above the rim", (rf"re(relative|respect|vs|versus):(?:{_AFTER_LENGTH})(?:height )?(?:relative to|with respect to|vs|versus)"
                        r" (?:the )?(?:destination |bowl )?(?:rim|edge|lip|brim)\b(?! (?:of the )?(?:source|cup))",)),
     # lower, with the rim it comes down to said: low ("hold it lower, close to the rim")
     ("low", (r"re(lower , |lower and |lower close|lower near|lower right|lower just|lower down):\b(?:a bit |a little |slightly )?lower(?: ,| and)? (?:close to|near|right above|just above|down to)"

@@ -18,8 +18,9 @@ applied before PHRASES; each of its phrases carries
 what `ask` says back of it ("milk: read as an ordinary liquid ...").
 
 The phrases of the stages and the moves between them ("put it back
-upright", "pull it out fast") are moves.py's, applied at their place in
-PHRASES.
+upright", "pull it out fast") are moves.py's, a comparison with an
+earlier pour comparisons.py's, a speed said in other words speeds.py's,
+each applied at its place in PHRASES.
 """
 from __future__ import annotations
 
@@ -27,12 +28,14 @@ from functools import lru_cache
 
 from pantarhei.bridge.reasoning.everyday import Matcher, names, sections
 from pantarhei.bridge.reasoning.bodies import BODIES
+from pantarhei.bridge.reasoning.comparisons import COMPARATIVES as _COMPARATIVES, COMPARISONS, DEGREE as _DEGREE
 from pantarhei.bridge.reasoning.contrasts import CONTRASTS
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.moves import MOVES
 from pantarhei.bridge.reasoning.numerals import NumberWords
 from pantarhei.bridge.reasoning.properties import SURFACE_SAID, Levels, Surfaces, Values
 from pantarhei.bridge.reasoning.ramps import Ramps
+from pantarhei.bridge.reasoning.speeds import SPEEDS
 
 #: The word that phrases too vague to read become ("pour from above": over
 #: the destination's middle, or high above it?): reading.py places it
@@ -47,22 +50,9 @@ _INTENSIFIED = ("high|low|fast|quick|quickly|slow|slowly|heavy|light|sticky|runn
 #: A reference point a comparison may be made to: the destination's rim.
 _RIM = (r"(?:the )?(?:destination |bowl )?(?:rim|edge|lip|brim|top)\b(?: of (?:the |a )?"
         r"(?:destination|bowl)\b)?")
-#: Degree words before a comparative: "a bit lower".
-_DEGREE = r"(?:just|only|slightly|barely|a (?:little |tiny )?bit|a little|a tad|somewhat)"
-#: An earlier or the usual pour, as a comparison is made to it: "than the previous pour",
-#: "than last time", "than usual"; and after "as high as": "last time" ("as before" is a hedge
-#: of the everyday list by then).
-_BEFORE = (r"than (?:(?:the|my|our|a|that|your) )?(?:(?:previous|last|earlier|first|other|usual|normal|ordinary"
-           r"|regular|standard|old) (?:pour|time|one|try|attempt|go|run)|before|usual|normal|last time|previously"
-           r"|earlier)\b")
-_AS_BEFORE = (r"(?:(?:the|my|our|that) )?(?:(?:previous|last|earlier|first|usual|normal) (?:pour|time|one|try|attempt)"
-              r"|last time|before|usual|normal)\b")
 #: Units of length, as a question writes them after a number.
 _LENGTHS = ("mm", "cm", "m", "inch", "inches", "foot", "feet", "ft", "metre", "metres", "meter",
             "meters", "centimetre", "centimetres", "centimeter", "centimeters")
-#: Comparatives of the vocabulary's values, said of nothing they are measured from.
-_COMPARATIVES = ("higher|heavier|lighter|faster|quicker|slower|steeper|stickier|runnier|thicker|"
-                 "thinner|bouncier|grippier|slipperier|fuller|emptier")
 
 PHRASES: tuple[tuple, ...] = (
     ("hedge", ("how much", "how many",    # asks, does not say: "how much liquid spills"
@@ -104,28 +94,7 @@ PHRASES: tuple[tuple, ...] = (
     ("low", (rf"re:\b{_DEGREE} (?:higher|above) than {_RIM}",)),
     ("above", (rf"re:\b(?:higher|above) than {_RIM}",)),
     ("below the rim", (rf"re:\b(?:{_DEGREE} )?(?:lower|below) than {_RIM}",)),
-    # a comparison with an earlier or the usual pour: each question is read alone, so against
-    # the ordinary pour ("slower than the previous pour" is slowly; "not as high as last time" low)
-    *((value, (rf"re:\b(?:{_DEGREE} |much |even |far |a lot )?(?:{comparative}) {_BEFORE}",
-               rf"re:\b(?:not|never) (?:(?:held|poured|tilted|moved|brought|tipped|as) )*?as (?:{plain})"
-               rf" (?:as {_AS_BEFORE}|hedge\b)") if plain else
-       (rf"re:\b(?:{_DEGREE} |much |even |far |a lot )?(?:{comparative}) {_BEFORE}",),
-       "read against the ordinary pour: each question is read alone")
-      for comparative, value, plain in (
-          ("higher", "high", "low|short"), ("lower", "low", "high"), ("slower", "slowly", "fast|quick|quickly"),
-          ("faster|quicker", "fast", "slow|slowly"), ("heavier", "heavy", "light"), ("lighter", "light", "heavy"),
-          ("steeper", "steeply tilted", ""), ("stickier|thicker", "sticky", "runny|thin"),
-          ("runnier|thinner", "runny", "sticky|thick"))),
-    ("slightly tilted", (rf"re:\b(?:not|never) (?:tilt|tip)\w* (?:it |the \w+ )?as (?:far|much)"
-                         rf" (?:as {_AS_BEFORE}|hedge\b)",
-                         rf"re:\bless tilted {_BEFORE}"), "read against the ordinary pour: each question is read alone"),
-    # a comparative said again, negated, after the value it read: "slower than before, not faster"
-    ("hedge", (rf"re:(?:(?<=\bslowly)|(?<=\bfast)|(?<=\bhigh)|(?<=\blow)|(?<=\bheavy)|(?<=\blight)|(?<=\bsticky)"
-               rf"|(?<=\brunny))(?: ?,)? (?:and |but )?not (?:{_COMPARATIVES}|lower)\b",)),
-    # "more high", "more thick like honey", as learners of English say them: the value itself
-    *((value, (rf"re:\bmore (?:{said})\b(?! than\b)",)) for said, value in (
-        ("high", "high"), ("low", "low"), ("thick", "sticky"), ("thin", "runny"), ("heavy", "heavy"),
-        ("light", "light"), ("fast|quick", "fast"), ("slow", "slowly"), ("sticky", "sticky"), ("runny", "runny"))),
+    *COMPARISONS,             # with an earlier pour, "more high" (comparisons.py)
     # a comparison with nothing it is measured from: higher than what?
     (UNCLEAR, (rf"re:\b(?:{_DEGREE} |much |even |far |a lot |any |no )?(?:more |less )?"
                rf"(?:{_COMPARATIVES})\b(?: than (?:before|usual|normal|that|it|the \w+))?",
@@ -136,59 +105,18 @@ PHRASES: tuple[tuple, ...] = (
                r"re:\b(?:more|less|fewer) than\b(?: (?:before|usual|normal|that|halfway"
                r"|half way|half))?",
                r"re:\b(?:at (?:least|most)|past|beyond|up to|no (?:more|less) than)(?= -?\d)")),
-    # a speed said with "speed": "at high speed" is fast, "at a slow speed" slowly (a pour
-    # said so is refused below: pouring has no speed)
-    ("fast", (r"re:\b(?:at |with )?(?:a |full |top )?(?:high|great|full|top|fast|quick|rapid|max(?:imum)?)"
-              r" (?:speed|velocity|pace)\b", r"re:\bat (?:full|top) (?:tilt|speed)\b",
-              r"re:\bat speed\b")),
-    ("slowly", (r"re:\b(?:at |with )?(?:a )?(?:low|slow|reduced|gentle|leisurely|relaxed|easy|min(?:imum)?)"
-                r" (?:speed|velocity"
-                r"|pace)\b",)),
-    ("moderate", (r"re:\b(?:at |with )?(?:a )?(?:moderate|medium|normal|average|steady) (?:speed|velocity"
-                  r"|pace)\b",)),
-    # a quick in-and-out: the move in and the move out both quick, the pour between
-    ("approach fast ; retreat fast ; pour", (
-        r"re:\b(?:fast|quick|quickly|fastly) in,? (?:and |then )?(?:fast|quick|quickly|fastly) out\b",
-        r"re:\b(?:a |an )?(?:quick|fast|rapid|swift|brisk|sudden|snappy)(?: in(?: and)? out| in and"
-        r" then out)(?: (?:motion|movement|move|moves|path|trajectory|action))?\b",
-        r"re:\bin(?: and)? out (?:quickly|fast|rapidly|swiftly|briskly)\b",
-        # moving fast, with no way said: both moves ("if I move fast")
-        r"re:\bmov(?:e|es|ed|ing)(?: it| the \w+| them)? (?:really |very |too |quite )?(?:fast|quickly|quick"
-        r"|rapidly|swiftly|briskly)\b(?! (?:in|into|to|towards?|away|out|off|back|up|down|over|from|before"
-        r"|after|then)\b)")),
-    ("approach slowly ; retreat slowly ; pour", (
-        r"re:\b(?:slow|slowly) in,? (?:and |then )?(?:slow|slowly) out\b",
-        r"re:\b(?:a |an )?(?:slow|gentle|careful|gradual|leisurely)(?: in(?: and)? out| in and"
-        r" then out)(?: (?:motion|movement|move|moves|path|trajectory|action))?\b",
-        r"re:\bin(?: and)? out (?:slowly|gently|carefully|gradually)\b",
-        r"re:\bmov(?:e|es|ed|ing)(?: it| the \w+| them)? (?:really |very |too |quite )?(?:slowly|slow"
-        r"|gently|carefully|gradually)\b(?! (?:in|into|to|towards?|away|out|off|back|up|down|over|from"
-        r"|before|after|then)\b)")),
-    # "fastly", as learners of English say it; "the robot come fastly": it comes in
-    ("approach fast", (r"re:\b(?:come|comes|coming|came) (?:very |really |too )?(?:fastly|fast|quickly)\b",)),
-    ("approach slowly", (r"re:\b(?:come|comes|coming|came) (?:very |really |too )?(?:slowly|slow)\b",)),
-    ("fast", ("fastly",)),
+    *SPEEDS,                  # how fast the source moves in and away, said in other words (speeds.py)
     # not tilted enough: slightly ("the cup is not turning enough")
     ("slightly tilted", (r"re:\b(?:not|never) (?:tilt|tip|turn)\w*(?: (?:it|the \w+))? (?:far |much )?enough\b",)),
     # just past the rim: to the side of the bowl (not a length past it: "5 cm past the rim")
     ("to the side", (r"re:(?<!cm )(?<!mm )\b(?:just |slightly |a bit |a little )?(?:past|beyond) the (?:bowl'?s? )?"
                      r"(?:edge|rim|lip)\b(?! (?:of|by|at) )",)),
-    # a height said relative to the rim: above it, the number keeps its sign ("-2 cm relative to the rim")
-    ("above the rim", (r"re:\b(?:height )?relative to the (?:bowl |destination )?(?:rim|lip|edge)"
-                       r"(?= *(?:[,;.!?(]|$))",)),
     # tipped too far: past what? (not far from the bowl)
     (UNCLEAR, (r"re:\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:too |so |that |very )?far\b"
                r"(?! (?:from|away|off|to)\b)",)),
     # tilted a lot: steeply (the most before upside down, which "all the way" says)
     ("steeply tilted", (r"re:\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:(?:quite |really |very )?a lot"
                         r"|lots|loads|heaps)\b",)),
-    # tipped fast or slowly: the move into the pouring pose, which tilts the source as it goes
-    ("approach fast", (r"re:\b(?:tilt|tip)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
-                       r" (?:fast|quick(?:ly)?|rapidly)\b(?! (?:than|as)\b)",
-                       r"re:\b(?:quickly|fast|rapidly) (?:tilt|tip)\w*\b")),
-    ("approach slowly", (r"re:\b(?:tilt|tip)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
-                         r" (?:slow(?:ly)?|gradually|steadily)\b(?! (?:than|as)\b)",
-                         r"re:\b(?:slowly|gradually|steadily) (?:tilt|tip)\w*\b")),
     # tilting has no speed of its own in the vocabulary beside that move's: not a rate, nor a change
     (UNCLEAR, (r"re:\b(?:tilt|tip|rotat|turn)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
                r" (?:slow(?:ly|er)?|fast(?:er)?|quick(?:ly|er)?|rapidly|gradually|steadily)\b",

@@ -1,0 +1,45 @@
+"""A comparison said against an earlier or the usual pour, part of words.py's
+PHRASES (applied before its comparatives, which refuse a comparison with
+nothing): each question is read alone, so against the ordinary pour
+("slower than the previous pour" is slowly, "not as high as last time"
+low, "not tilting as far as before" slightly tilted), said back; and
+"more high", "more thick like honey", as learners of English say them,
+are the value itself.
+"""
+from __future__ import annotations
+
+#: Degree words before a comparative: "a bit lower".
+DEGREE = r"(?:just|only|slightly|barely|a (?:little |tiny )?bit|a little|a tad|somewhat)"
+#: Comparatives of the vocabulary's values, said of nothing they are measured from.
+COMPARATIVES = ("higher|heavier|lighter|faster|quicker|slower|steeper|stickier|runnier|thicker|"
+                 "thinner|bouncier|grippier|slipperier|fuller|emptier")
+#: An earlier or the usual pour, as a comparison is made to it: "than the previous pour",
+#: "than last time", "than usual"; and after "as high as": "last time" ("as before" is a hedge
+#: of the everyday list by then).
+_BEFORE = (r"than (?:(?:the|my|our|a|that|your) )?(?:(?:previous|last|earlier|first|other|usual|normal|ordinary"
+           r"|regular|standard|old) (?:pour|time|one|try|attempt|go|run)|before|usual|normal|last time|previously"
+           r"|earlier)\b")
+_AS_BEFORE = (r"(?:(?:the|my|our|that) )?(?:(?:previous|last|earlier|first|usual|normal) (?:pour|time|one|try|attempt)"
+              r"|last time|before|usual|normal)\b")
+
+COMPARISONS: tuple[tuple, ...] = (
+    # a comparison with an earlier or the usual pour: each question is read alone, so against
+    # the ordinary pour ("slower than the previous pour" is slowly; "not as high as last time" low)
+    *((value, (rf"re:\b(?:{DEGREE} |much |even |far |a lot )?(?:{comparative}) {_BEFORE}",
+               rf"re:\b(?:not|never) (?:(?:held|poured|tilted|moved|brought|tipped|as) )*?as (?:{plain})"
+               rf" (?:as {_AS_BEFORE}|hedge\b)") if plain else
+       (rf"re:\b(?:{DEGREE} |much |even |far |a lot )?(?:{comparative}) {_BEFORE}",),
+       "read against the ordinary pour: each question is read alone")
+      for comparative, value, plain in (
+          ("higher", "high", "low|short"), ("lower", "low", "high"), ("slower", "slowly", "fast|quick|quickly"),
+          ("faster|quicker", "fast", "slow|slowly"), ("heavier", "heavy", "light"), ("lighter", "light", "heavy"),
+          ("steeper", "steeply tilted", ""), ("stickier|thicker", "sticky", "runny|thin"),
+          ("runnier|thinner", "runny", "sticky|thick"))),
+    ("slightly tilted", (rf"re:\b(?:not|never) (?:tilt|tip)\w* (?:it |the \w+ )?as (?:far|much)"
+                         rf" (?:as {_AS_BEFORE}|hedge\b)",
+                         rf"re:\bless tilted {_BEFORE}"), "read against the ordinary pour: each question is read alone"),
+    # "more high", "more thick like honey", as learners of English say them: the value itself
+    *((value, (rf"re:\bmore (?:{said})\b(?! than\b)",)) for said, value in (
+        ("high", "high"), ("low", "low"), ("thick", "sticky"), ("thin", "runny"), ("heavy", "heavy"),
+        ("light", "light"), ("fast|quick", "fast"), ("slow", "slowly"), ("sticky", "sticky"), ("runny", "runny"))),
+)

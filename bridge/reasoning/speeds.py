@@ -1,0 +1,52 @@
+"""How fast the source moves in and away, said in other words, part of
+words.py's PHRASES: a speed said with "speed" ("at high speed" is fast),
+a quick in-and-out (both moves; "fast in fast out"), moving fast with no
+way said (both moves), "the robot come fastly" (it comes in), and tipping
+the source fast or slowly, which is the move into the pouring pose: it
+tilts the source as it goes ("tip it really slowly" is a slow approach).
+A pour said fast or slowly is refused where words.py says so: pouring has
+no speed of its own.
+"""
+from __future__ import annotations
+
+SPEEDS: tuple[tuple, ...] = (
+    # a speed said with "speed": "at high speed" is fast, "at a slow speed" slowly (a pour
+    # said so is refused below: pouring has no speed)
+    ("fast", (r"re:\b(?:at |with )?(?:a |full |top )?(?:high|great|full|top|fast|quick|rapid|max(?:imum)?)"
+              r" (?:speed|velocity|pace)\b", r"re:\bat (?:full|top) (?:tilt|speed)\b",
+              r"re:\bat speed\b")),
+    ("slowly", (r"re:\b(?:at |with )?(?:a )?(?:low|slow|reduced|gentle|leisurely|relaxed|easy|min(?:imum)?)"
+                r" (?:speed|velocity"
+                r"|pace)\b",)),
+    ("moderate", (r"re:\b(?:at |with )?(?:a )?(?:moderate|medium|normal|average|steady) (?:speed|velocity"
+                  r"|pace)\b",)),
+    # a quick in-and-out: the move in and the move out both quick, the pour between
+    ("approach fast ; retreat fast ; pour", (
+        r"re:\b(?:fast|quick|quickly|fastly) in,? (?:and |then )?(?:fast|quick|quickly|fastly) out\b",
+        r"re:\b(?:a |an )?(?:quick|fast|rapid|swift|brisk|sudden|snappy)(?: in(?: and)? out| in and"
+        r" then out)(?: (?:motion|movement|move|moves|path|trajectory|action))?\b",
+        r"re:\bin(?: and)? out (?:quickly|fast|rapidly|swiftly|briskly)\b",
+        # moving fast, with no way said: both moves ("if I move fast")
+        r"re:\bmov(?:e|es|ed|ing)(?: it| the \w+| them)? (?:really |very |too |quite )?(?:fast|quickly|quick"
+        r"|rapidly|swiftly|briskly)\b(?! (?:in|into|to|towards?|away|out|off|back|up|down|over|from|before"
+        r"|after|then)\b)")),
+    ("approach slowly ; retreat slowly ; pour", (
+        r"re:\b(?:slow|slowly) in,? (?:and |then )?(?:slow|slowly) out\b",
+        r"re:\b(?:a |an )?(?:slow|gentle|careful|gradual|leisurely)(?: in(?: and)? out| in and"
+        r" then out)(?: (?:motion|movement|move|moves|path|trajectory|action))?\b",
+        r"re:\bin(?: and)? out (?:slowly|gently|carefully|gradually)\b",
+        r"re:\bmov(?:e|es|ed|ing)(?: it| the \w+| them)? (?:really |very |too |quite )?(?:slowly|slow"
+        r"|gently|carefully|gradually)\b(?! (?:in|into|to|towards?|away|out|off|back|up|down|over|from"
+        r"|before|after|then)\b)")),
+    # "fastly", as learners of English say it; "the robot come fastly": it comes in
+    ("approach fast", (r"re:\b(?:come|comes|coming|came) (?:very |really |too )?(?:fastly|fast|quickly)\b",)),
+    ("approach slowly", (r"re:\b(?:come|comes|coming|came) (?:very |really |too )?(?:slowly|slow)\b",)),
+    ("fast", ("fastly",)),
+    # tipped fast or slowly: the move into the pouring pose, which tilts the source as it goes
+    ("approach fast", (r"re:\b(?:tilt|tip)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
+                       r" (?:fast|quick(?:ly)?|rapidly)\b(?! (?:than|as)\b)",
+                       r"re:\b(?:quickly|fast|rapidly) (?:tilt|tip)\w*\b")),
+    ("approach slowly", (r"re:\b(?:tilt|tip)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
+                         r" (?:slow(?:ly)?|gradually|steadily)\b(?! (?:than|as)\b)",
+                         r"re:\b(?:slowly|gradually|steadily) (?:tilt|tip)\w*\b")),
+)
