@@ -56,7 +56,7 @@ from pantarhei.bridge.reasoning.spelling import corrected
 from pantarhei.bridge.reasoning.stages import (MARKER_STEMS, MOVE, POSE, SAME, ordinary_tilt, plain_tilts,
                                                same_at_the_end, stages)
 from pantarhei.bridge.reasoning.wording import Token, names_written, normalising, stem, tokens as words_of
-from pantarhei.bridge.reasoning.suggestions import DESCRIBE, hinted, misspelt, refuse_unplaced
+from pantarhei.bridge.reasoning.suggestions import DESCRIBE, hinted, misspelt, names_part, refuse_unplaced
 from pantarhei.bridge.reasoning.words import FILLERS, UNCLEAR, rewrites
 from pantarhei.theory.lexicon import load_vocabulary
 
@@ -267,7 +267,8 @@ def _ordinary(tokens: list[Token], lex: _Lexicon, asks: bool) -> bool:
     ("what happens if I pour water into a cup?"), or asks about an outcome ("does it
     splash?"), in words the vocabulary knows, and nothing else."""
     return ((asks or any(t.word == "pour" for t in tokens))
-            and all(t.word in lex.asking for t in tokens))
+            and all(t.word in lex.asking or (t.word not in lex.known and names_part(tokens, i))
+                    for i, t in enumerate(tokens)))
 
 
 def _read(tokens: list[Token], lex: _Lexicon) -> list[tuple[str, frozenset[int]]]:

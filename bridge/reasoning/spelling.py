@@ -77,6 +77,11 @@ def _dictionary():
     return SpellChecker(language="en", distance=1)
 
 
+def english(word: str) -> bool:
+    """Whether an English dictionary (pyspellchecker's word list) holds `word`."""
+    return word in _dictionary()
+
+
 #: Letters written for one another as they sound alike ("tilded": tilted, "evrywhere").
 _SOUNDS = ("aeiouy", "dt", "bp", "gkc", "csz", "fv", "mn")
 #: The rows of a keyboard: a letter typed for another is one beside it.

@@ -10,6 +10,8 @@ from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.everyday import alternation, names, sections
+from pantarhei.bridge.reasoning.nouns import BOWL
+from pantarhei.bridge.reasoning.spelling import english
 from pantarhei.bridge.reasoning.wording import Token
 from pantarhei.bridge.reasoning.words import PHRASES
 from pantarhei.theory.lexicon import load_vocabulary
@@ -136,16 +138,41 @@ def hinted(words) -> list[str]:
     return list(dict.fromkeys(h for pattern, h in hints() if any(re.search(pattern, w) for w in words)))
 
 
+def names_part(tokens: list[Token], i: int) -> bool:
+    """Whether the word at `i`, one the reader does not know, is part of the
+    name of the bowl or liquid after it ("a martini glass", "tomato soup"):
+    an English word (not a typo, which spelling.py reads) that does not end
+    as a quality does (_QUALITY), said right before the noun, which says
+    what is read of the body."""
+    t = tokens[i]
+    return (i + 1 < len(tokens) and tokens[i + 1].word in (BOWL, "liquid") and tokens[i + 1].clause == t.clause
+            and re.fullmatch(r"[a-z]{3,}", t.raw) is not None and not _QUALITY.search(t.raw)
+            and t.raw not in _HOW_MUCH and english(t.raw))
+
+
+#: Endings of words that say a quality rather than a name ("a wobbly bowl", "a rounded
+#: jug", "a fancy glass"): such a word before a bowl is refused, as any the reader does not know.
+_QUALITY = re.compile(r"(?:y|ly|er|est|ed|ing|ful|less|ous|ive|al|ic|able|ible|ish)$")
+#: Words that say how much or which, not a name: "more liquid", "another bowl".
+_HOW_MUCH = frozenset(("more", "less", "extra", "enough", "additional", "another", "same", "other", "whole",
+                       "half", "double", "twice", "triple", "several", "few", "many", "plenty", "both", "each",
+                       "every", "second", "third", "next", "last", "first", "new", "old", "own", "spare"))
+
+
 def refuse_unplaced(question: str, tokens: list[Token], read: set[int], lex) -> None:
     """UserError naming the words of the question that were not read: value
     words that fit nothing said ("pour light": the light what?) and, when
     something else was read, words the vocabulary does not know (a question
     with nothing read is read_question's to answer as the ordinary pour or
     to refuse); with the phrasings that would be read, where there are some.
-    `read`: the positions read; `lex`: reading.py's lexicon."""
+    A word the reader does not know that is part of the name of the bowl
+    or liquid after it ("a martini glass") is not refused: `ask` shows it
+    as ignored. `read`: the positions read; `lex`: reading.py's lexicon."""
     words: dict[str, None] = {}           # in order, each once
     value_words: dict[str, None] = {}
     for i, t in enumerate(tokens):
+        if i not in read and t.word not in lex.known and names_part(tokens, i):
+            continue
         if i not in read and (t.word in lex.placeable or (read and t.word not in lex.known)):
             words.setdefault(t.raw)
             if t.word in lex.saying:
