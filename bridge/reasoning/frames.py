@@ -29,6 +29,16 @@ FRAMES = tuple((re.compile(p), r) for p, r in (
 ))
 
 
+#: Contact asked of by its noun alone: "contact between source and bowl?", "any collision
+#: with the bowl?" (not "in contact with", which states it).
+CONTACT = Cued(r"(?<!\bin )\b(?:(?:is|will) there (?:be )?)?(?:any |some |no |a |the )?"
+               r"(?:contact|collisions?) (?:between|with)\b"
+               r"|\b(?:is|will|would|could) there (?:be )?(?:any |some |no |a )?collisions?\b"
+               r"|(?:^|(?<=[,:;.!?] ))(?:(?:any |a |the )?(?:risk|chance|danger|odds|possibility|likelihood)"
+               r" of )?(?:any |a )?(?:collisions?|contact)(?: or not)?(?= *[?.!]* *$)",
+               ("contact", "collision"))
+
+
 #: "Or not" as chat types it: "bowl stays put or nah".
 NAH = Cued(r"\bor nah\b", ("or nah",))
 

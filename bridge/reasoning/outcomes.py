@@ -8,17 +8,16 @@ in ("will a light bowl tip over?" still says a light bowl), but not how
 much of the liquid it asks of ("does most of it go in"), nor how much it
 happens ("does it shift a little"); a bowl that strikes another is the
 source ("does a heavy pot hit the bowl"), and a phase named asks of it
-(phases.py: "when the cup comes in"). "What if the
-bowl moves?" asks what follows an outcome, which the vocabulary cannot
-say: it is refused. A clause
-about what the person or the robot does ("do I tip the cup") is no
-outcome. A goal said with the scene ("without spilling", "so that it all
-goes in", "so that the cup does not touch the bowl") is what the person
-wants: an expectation that should hold (or, rarely, fail), for the answer
-to say whether the theory expects it and to point to `plan` for how; a
-clause joined to a goal by "but" or "and" is wanted too, with its own
-negation ("so it pours out but the bowl does not tip": not a source held
-upright; "so nothing spills and the bowl stays put": the bowl still).
+(phases.py: "when the cup comes in"). "What if the bowl moves?" asks what
+follows an outcome, which the vocabulary cannot say: it is refused. A
+clause about what the person or the robot does ("do I tip the cup"), or
+how the source is held ("if the jug is tipped"), is no outcome. A goal
+said with the scene ("without spilling", "so that the cup does not touch
+the bowl") is what the person wants: an expectation that should hold (or,
+rarely, fail), for the answer to say whether the theory expects it and to
+point to `plan` for how; a clause joined to a goal by "but" or "and" is
+wanted too, with its own negation ("so nothing spills and the bowl stays
+put": the bowl still).
 
 `hear(text)` takes normalised text (wording.normalised) and gives the
 expectations asked, the goals as literals ("no_spill", "neg(no_spill)"),
@@ -32,7 +31,7 @@ from functools import lru_cache
 
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.everyday import Matcher, names
-from pantarhei.bridge.reasoning.frames import asked_plainly
+from pantarhei.bridge.reasoning.frames import CONTACT, asked_plainly
 from pantarhei.bridge.reasoning.phases import STILL, during
 from pantarhei.bridge.reasoning.seeking import sought, wanting
 from pantarhei.bridge.reasoning.vessels import OUT_OF, destinations, filled, in_the_source, liquids, out_of_the_source
@@ -102,6 +101,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
 #: quantifier that needs none ("anything come out", "how much spills").
 _MODALS = r"will|would|does|do|did|could|can|might|may|should|shall"
 _AUX = rf"{_MODALS}|is|are|was|were"
+#: Where a clause starts: before "is" in "if the jug is heavy and tipped", how the source is held.
+_CLAUSE = re.compile(r"[,;:.!?]|\b(?:if|when|while|and|but|so|or|then|what|whether)\b")
 #: Who acts: a clause with one of these in its subject says what is done, not what happens
 #: ("do I tip the cup"); the source moving is the scene's too ("does the source move slowly").
 _ACTORS = {"i", "we", "you", "robot", "arm", "gripper", "hand", "he", "she", "they"}
@@ -174,16 +175,6 @@ def _patterns() -> tuple[re.Pattern, ...]:
     bare = re.compile(rf"(?:^|(?<=[,:;.?!\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014]))(?:(?P<v0>{filled(OUTCOMES[0][0])})|(?P<v1>spill\w*|spilt|splash\w*|drip\w*"
                       rf"|leak\w*|slosh\w*|dribbl\w*)){end}(?: or not)?(?= (?:if|when|while)\b| *[?.!,]* *$)")
     return asked, nominal, goal, more, bare
-
-
-#: Contact asked of by its noun alone: "contact between source and bowl?", "any collision
-#: with the bowl?" (not "in contact with", which states it).
-_CONTACT = Cued(r"(?<!\bin )\b(?:(?:is|will) there (?:be )?)?(?:any |some |no |a |the )?"
-                      r"(?:contact|collisions?) (?:between|with)\b"
-                      r"|\b(?:is|will|would|could) there (?:be )?(?:any |some |no |a )?collisions?\b"
-                      r"|(?:^|(?<=[,:;.!?] ))(?:(?:any |a |the )?(?:risk|chance|danger|odds|possibility|likelihood)"
-                      r" of )?(?:any |a )?(?:collisions?|contact)(?: or not)?(?= *[?.!]* *$)",
-                 ("contact", "collision"))
 
 
 #: Why a question of what follows an outcome is refused, and what would be read.
@@ -295,6 +286,7 @@ def hear(text: str) -> Heard:
     # words joined by a hyphen, and an aside in brackets, are words of the clause they stand
     # in ("does a high-restitution (bouncy) liquid splash?"), as the scene reads them
     text = re.sub(r"[()\[\]]", " ", re.sub(r"(?<=[a-z])-(?=[a-z])", " ", text))
+    last: list[str] = []                # the subject of the outcome asked before
 
     def take(m: re.Match, keep: str = "") -> str:
         phrases.append(m.group(0).strip())
@@ -324,7 +316,8 @@ def hear(text: str) -> Heard:
         before = m.string[:m.start()].split()[-3:] if not subject else []
         # "don't tip it out": an imperative, not a question
         imperative = bool(m.group("neg")) and not subject and m.group("aux") in ("do", "does")
-        if _acts(subject, names, m) or _around().spans(before) or _state(m) or imperative:
+        lead = _CLAUSE.split(m.string[:m.start()])[-1].split() if m.group("aux") in ("is", "are", "was", "were") else []
+        if _acts(lead + subject, names, m) or _around().spans(before) or _state(m) or imperative:
             return m.group(0)
         asked.extend(n for n in names if n not in asked)
         # "does much stay in the jug", "will some milk spill": how much of the liquid the
@@ -357,7 +350,6 @@ def hear(text: str) -> Heard:
             asked.extend(n for n in names if n not in asked)
         return take(m)
 
-    last: list[str] = []                # the subject of the outcome asked before
     was_goal = True
     text, wants = wanting(text)
     phrases.extend(wants)
@@ -378,7 +370,7 @@ def hear(text: str) -> Heard:
     was_goal = False
     text = _repeat(more, as_more, _spaced(pattern.sub(as_asked, text)))
     text = nominal.sub(as_nominal, text)
-    text = _CONTACT.pattern.sub(as_contact, text) if _CONTACT.cued(text) else text
+    text = CONTACT.pattern.sub(as_contact, text) if CONTACT.cued(text) else text
     text = _spaced(bare.sub(as_more, text))
     text, asked, when = during(text, asked)         # "does the bowl slide when the cup comes in"
     text, goals, wanted_when = during(text, goals)

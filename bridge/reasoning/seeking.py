@@ -78,6 +78,9 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:keep|keeps|keeping|stop|stops|stopping|prevent|prevents|preventing) (it|them|the [a-z]+)"
      r" from (?=[a-z]+ing\b)", r"so that \1 does not "),
     (r"\bmake sure(?: that)? ", "make sure so that "),
+    # "I'd prefer the bowl not move", "we hope it doesn't tip"
+    (r"\b(?:i|we) (?:would )?(?:prefer|rather|hope)(?: that)? (it|them|the [a-z]+) (?:not|never|does not|do not|will not)"
+     r" (?=[a-z]+)", r"so that \1 does not "),
     # "goal: empty the bottle completely": so that it empties
     (r"\b(?:goal|aim|objective|task|target)s?(?: is)?:? (?:to )?(?:empty|drain) (?:out )?(?:the whole|all of the|all the"
      r"|the entire|the) ([a-z]+)(?: (?:completely|fully|entirely|totally))?\b", r"so that the \1 empties"),

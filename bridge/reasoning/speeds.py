@@ -18,6 +18,11 @@ SPEEDS: tuple[tuple, ...] = (
     ("slowly", (r"re:\b(?:at |with )?(?:a )?(?:low|slow|reduced|gentle|leisurely|relaxed|easy|min(?:imum)?)"
                 r" (?:speed|velocity"
                 r"|pace)\b",)),
+    # neither too fast nor too slow: at a moderate speed
+    ("moderate", (r"re:\b(?:not too (?:fast|quick(?:ly)?|slow(?:ly)?)(?:,| and| or| but)? (?:not )?too"
+                  r" (?:slow(?:ly)?|fast|quick(?:ly)?)|neither too (?:fast|quick(?:ly)?|slow(?:ly)?) nor too"
+                  r" (?:slow(?:ly)?|fast|quick(?:ly)?))\b",),
+     "read as moderate: neither fast nor slow"),
     ("moderate", (r"re:\b(?:at |with )?(?:a )?(?:moderate|medium|normal|average|steady) (?:speed|velocity"
                   r"|pace)\b",)),
     # a quick in-and-out: the move in and the move out both quick, the pour between

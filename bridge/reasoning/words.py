@@ -95,6 +95,10 @@ PHRASES: tuple[tuple, ...] = (
     ("above", (rf"re:\b(?:higher|above) than {_RIM}",)),
     ("below the rim", (rf"re:\b(?:{_DEGREE} )?(?:lower|below) than {_RIM}",)),
     *COMPARISONS,             # with an earlier pour, "more high" (comparisons.py)
+    # neither too high nor too low: at medium height
+    ("at medium height", (r"re:\b(?:not too (?:high|low)(?:,| and| or| but)? (?:not )?too (?:low|high)"
+                          r"|neither too (?:high|low) nor too (?:low|high))\b",),
+     "read as at medium height: neither high nor low"),
     # a comparison with nothing it is measured from: higher than what?
     (UNCLEAR, (rf"re:\b(?:{_DEGREE} |much |even |far |a lot |any |no )?(?:more |less )?"
                rf"(?:{_COMPARATIVES})\b(?: than (?:before|usual|normal|that|it|the \w+))?",
