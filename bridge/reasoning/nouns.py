@@ -84,10 +84,11 @@ def roles(tokens: list[Token], placeable: frozenset[str]) -> dict[int, str]:
 
 
 #: What is done to the source, said before it ("tilt the heavy cup", "lift the mug") or after
-#: it ("the cup comes in low", "a heavy mug, tilted halfway"): a bowl handled so is the source.
+#: it ("the cup comes in low", "a heavy mug, tilted halfway", "with the cup upside down"): a bowl
+#: handled so is the source.
 _HANDLING = {stem(w) for w in ("tilt", "tip", "tipped", "lift", "raise", "lower", "hold", "held", "move",
                                "bring", "brought", "swing", "rotate", "incline", "lean", "carry", "invert",
-                               "upend", "approach", "retreat")}
+                               "upend", "approach", "retreat", "upside")}
 
 
 def _handled(tokens: list[Token], i: int, j: int) -> bool:
@@ -96,7 +97,7 @@ def _handled(tokens: list[Token], i: int, j: int) -> bool:
     article), or its subject in its clause ("the cup, tilted": a new clause; "a glass
     pouring"), a bowl
     called a bowl excepted: the destination's name, its tilt the pour's."""
-    if j >= 0 and tokens[j].word in _HANDLING:
+    if j >= 0 and tokens[j].word in _HANDLING and tokens[j].clause == tokens[i].clause:
         return True
     k = i + 1
     while k < len(tokens) and tokens[k].word in _BEING:

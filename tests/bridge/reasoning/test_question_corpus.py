@@ -201,7 +201,6 @@ REFUSED = [
     'pour quickly',
     'pour slowly',
     'pour up side down',
-    'pour with the cup upside down',
     'the destination is full',
     'the destination is not light, not heavy',
     'the source bumps into the destination',

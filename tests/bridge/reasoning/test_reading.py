@@ -218,7 +218,7 @@ def test_coordination_and_everyday_words(question, props):
     ("pour from the side and from above", '"from above"'),      # above: how high, or where?
     ("the destination is full", '"full"'),                      # the source is what is filled
     ("pour into a sticky bowl", '"sticky"'),                    # the liquid is what is sticky
-    ("pour with the cup upside down", '"upside"'),              # a cup is the destination
+    ("pour with the bowl upside down", '"upside"'),             # the bowl is the destination
 ])
 def test_words_said_of_what_they_cannot_be_said_of_are_refused(question, words):
     with pytest.raises(UserError) as e:
