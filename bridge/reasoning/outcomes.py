@@ -11,7 +11,8 @@ source ("does a heavy pot hit the bowl"), and a phase named asks of it
 (phases.py: "when the cup comes in"). "What if the bowl moves?" asks what
 follows an outcome, which the vocabulary cannot say: it is refused. A
 clause about what the person or the robot does ("do I tip the cup"), or
-how the source is held ("if the jug is tipped"), is no outcome. A goal
+how the source is held ("if the jug is tipped"), is no outcome; one
+supposed of a bowl ("if the bowl is moving") is refused. A goal
 said with the scene ("without spilling", "so that the cup does not touch
 the bowl") is what the person wants: an expectation that should hold (or,
 rarely, fail), for the answer to say whether the theory expects it and to
@@ -29,6 +30,7 @@ import re
 from dataclasses import dataclass
 from functools import lru_cache
 
+from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.everyday import Matcher, names
 from pantarhei.bridge.reasoning.frames import CONTACT, asked_plainly
@@ -319,6 +321,8 @@ def hear(text: str) -> Heard:
         lead = _CLAUSE.split(m.string[:m.start()])[-1].split() if m.group("aux") in ("is", "are", "was", "were") else []
         if _acts(lead + subject, names, m) or _around().spans(before) or _state(m) or imperative:
             return m.group(0)
+        if lead and re.search(rf"\bif {re.escape(' '.join(lead))} *$", m.string[:m.start()]):
+            raise UserError(f'"if {" ".join(lead)} {m.group(0).strip()}" {FOLLOWS}')    # "if the bowl is moving"
         asked.extend(n for n in names if n not in asked)
         # "does much stay in the jug", "will some milk spill": how much of the liquid the
         # outcome is asked of, not how much the source holds
