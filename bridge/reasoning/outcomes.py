@@ -321,7 +321,7 @@ def hear(text: str) -> Heard:
         lead = _CLAUSE.split(m.string[:m.start()])[-1].split() if m.group("aux") in ("is", "are", "was", "were") else []
         if _acts(lead + subject, names, m) or _around().spans(before) or _state(m) or imperative:
             return m.group(0)
-        if lead and re.search(rf"\bif {re.escape(' '.join(lead))} *$", m.string[:m.start()]):
+        if lead and not subject and re.search(rf"\bif {re.escape(' '.join(lead))} *$", m.string[:m.start()]):
             raise UserError(f'"if {" ".join(lead)} {m.group(0).strip()}" {FOLLOWS}')    # "if the bowl is moving"
         asked.extend(n for n in names if n not in asked)
         # "does much stay in the jug", "will some milk spill": how much of the liquid the
