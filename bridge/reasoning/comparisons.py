@@ -26,7 +26,7 @@ COMPARISONS: tuple[tuple, ...] = (
     # a comparison with an earlier or the usual pour: each question is read alone, so against
     # the ordinary pour ("slower than the previous pour" is slowly; "not as high as last time" low)
     *((value, (rf"re:\b(?:{DEGREE} |much |even |far |a lot )?(?:{comparative}) {_BEFORE}",
-               rf"re:\b(?:not|never) (?:(?:held|poured|tilted|moved|brought|tipped|as) )*?as (?:{plain})"
+               rf"re:\b(?:not|never) (?:(?:held|poured|tilted|moved|brought|tipped|quite|nearly|so|as) )*?as (?:{plain})"
                rf" (?:as {_AS_BEFORE}|hedge\b)") if plain else
        (rf"re:\b(?:{DEGREE} |much |even |far |a lot )?(?:{comparative}) {_BEFORE}",),
        "read against the ordinary pour: each question is read alone")

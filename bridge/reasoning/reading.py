@@ -322,6 +322,8 @@ def _occurrences(tokens: list[Token], lex: _Lexicon):
                     if near is not None:
                         at[w] = near
             span = max(at.values()) - min(at.values()) + 1
+            if "very" in at and at["very"] + 1 not in at.values():
+                continue            # "very" raises the word right after it ("very smooth and ... much": no very much)
             if len(at) == len(words) and span - len(words) <= _MAX_GAP:
                 yield words, frozenset(at.values())
 

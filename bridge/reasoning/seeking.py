@@ -48,7 +48,8 @@ _ASKING_SOURCE = (
     rf"|\bhow (?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT}(?= |$)"
     # the most a move may be: "what's the fastest I can move away", "the highest we could pour"
     rf"|\b(?:what(?: is)? )?the (?:fastest|slowest|quickest|highest|lowest|steepest|furthest|farthest|closest"
-    rf"|nearest) (?:that )?{_WHO} (?:can|could|should|may|might|dare) {_ACT}{_WHAT}(?: (?:away|in|out|over))?(?=[ ?.!,]|$)"
+    rf"|nearest|heaviest|lightest)(?: [a-z]+)? (?:that )?{_WHO} (?:can|could|should|may|might|dare) {_ACT}{_WHAT}"
+    rf"(?: (?:away|in|out|over|from|into))?(?=[ ?.!,]|$)"
     # what to avoid: "what should I avoid"
     rf"|\bwhat (?:should|must|do|would|can) {_WHO} (?:need to |have to )?avoid(?: doing)?(?=[ ?.!,]|$)"
     # what to change or do: "what do I need to change", "what should we adjust"
@@ -65,7 +66,8 @@ def _asking() -> re.Pattern:
 _KEEPS = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? {_VALUE}) (keeps|will keep|would keep)"
                     r" (it|them|the \w+) (in(?: the \w+)?|still|upright|steady|in place)\b")
 #: Wanting an outcome: "I want the bowl not to move", "we'd like it to stay in".
-_WANT = re.compile(r"\b(?:i|we) (?:want|need|would like|wish)(?: for)? (it(?: all)?|all of it|everything|them"
+_WANT = re.compile(r"(?:\b(?:i|we) |^|(?<=[.!?] ))(?:want|need|would like|wish)(?: for)? (it(?: all)?|all of it|everything|them"
+                   r"|every drop|each drop|every bit|all (?:of )?the liquid"
                    r"|the (?!source\b)[a-z]+)(?= (?:not |never )?to\b)")
 
 #: Other ways of saying a goal, said as "so that ...": "keep the cup still" (not "keep the
@@ -78,6 +80,8 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:keep|keeps|keeping|stop|stops|stopping|prevent|prevents|preventing) (it|them|the [a-z]+)"
      r" from (?=[a-z]+ing\b)", r"so that \1 does not "),
     (r"\bmake sure(?: that)? ", "make sure so that "),
+    # "and have it not slide"
+    (r"\bhave (it|them|the [a-z]+) (?:not|never) (?=[a-z]+)", r"so that \1 does not "),
     # "I'd prefer the bowl not move", "we hope it doesn't tip"
     (r"\b(?:i|we) (?:would )?(?:prefer|rather|hope)(?: that)? (it|them|the [a-z]+) (?:not|never|does not|do not|will not)"
      r" (?=[a-z]+)", r"so that \1 does not "),

@@ -43,6 +43,13 @@ SPEEDS: tuple[tuple, ...] = (
         r"re:\bmov(?:e|es|ed|ing)(?: it| the \w+| them)? (?:really |very |too |quite )?(?:slowly|slow"
         r"|gently|carefully|gradually)\b(?! (?:in|into|to|towards?|away|out|off|back|up|down|over|from"
         r"|before|after|then)\b)")),
+    # brought in, or gone away, fast or slowly: the move in, the move away
+    ("approach fast", (r"re:\b(?:bring|brings|brought|bringing)(?: it| the \w+)? in (?:very |really |too |quite )?"
+                       r"(?:fast|quickly|quick)\b",)),
+    ("approach slowly", (r"re:\b(?:bring|brings|brought|bringing)(?: it| the \w+)? in (?:very |really |too |quite )?"
+                         r"(?:slowly|slow)\b",)),
+    ("retreat fast", (r"re:\b(?:go|goes|going|went|gone) away (?:very |really |too |quite )?(?:fast|quickly|quick)\b",)),
+    ("retreat slowly", (r"re:\b(?:go|goes|going|went|gone) away (?:very |really |too |quite )?(?:slowly|slow)\b",)),
     # "fastly", as learners of English say it; "the robot come fastly": it comes in
     ("approach fast", (r"re:\b(?:come|comes|coming|came) (?:very |really |too )?(?:fastly|fast|quickly)\b",)),
     ("approach slowly", (r"re:\b(?:come|comes|coming|came) (?:very |really |too )?(?:slowly|slow)\b",)),

@@ -58,6 +58,11 @@ PHRASES: tuple[tuple, ...] = (
     ("hedge", ("how much", "how many",    # asks, does not say: "how much liquid spills"
                "nearly",                   # a hedge (its stem would be "near")
                r"re:\bbetween(?= -?\d+(?:\.\d+)? and -?\d)")),   # a range: quantities.py's
+    # "rather" as a degree ("the bowl is rather slippery"), not a contrast ("rather than")
+    ("hedge", (r"re:\brather(?= (?:very )?(?:slippery|heavy|light|sticky|runny|thick|thin|bouncy|grippy|high|low|fast"
+               r"|slow|slowly|quick|quickly|far|steep|steeply|full|smooth)\b)",)),
+    # the liquid poured "inside": into the bowl ("I pour much water inside")
+    ("hedge", (r"re:(?<=\bliquid )inside(?= *(?:[,;.!?]|$|and\b|but\b|then\b))",)),
     # raised or lowered to a number, or below the rim, no move before or after pouring said:
     # where it is held
     # ("lowered to 5 mm above the lip", "the cup lowered below the rim")
@@ -115,6 +120,9 @@ PHRASES: tuple[tuple, ...] = (
     # just past the rim: to the side of the bowl (not a length past it: "5 cm past the rim")
     ("to the side", (r"re:(?<!cm )(?<!mm )\b(?:just |slightly |a bit |a little )?(?:past|beyond) the (?:bowl'?s? )?"
                      r"(?:edge|rim|lip)\b(?! (?:of|by|at) )",)),
+    # tipped really far: steeply (too far stays refused: past what?)
+    ("steeply tilted", (r"re:\b(?:tilt|tip)\w*(?: (?:it|them|the \w+))? (?:really|very|way|pretty|quite) far\b"
+                        r"(?! (?:from|away|off|to)\b)",), "read as steeply tilted"),
     # tipped too far: past what? (not far from the bowl)
     (UNCLEAR, (r"re:\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:too |so |that |very )?far\b"
                r"(?! (?:from|away|off|to)\b)",)),
