@@ -105,6 +105,9 @@ _MODALS = r"will|would|does|do|did|could|can|might|may|should|shall"
 _AUX = rf"{_MODALS}|is|are|was|were"
 #: Where a clause starts: before "is" in "if the jug is heavy and tipped", how the source is held.
 _CLAUSE = re.compile(r"[,;:.!?]|\b(?:if|when|while|and|but|so|or|then|what|whether)\b")
+#: The words of a goal's subject that say how much of the liquid it wants ("so nothing spills",
+#: "I want every drop to end up in the bowl"): the goal's, not the scene's.
+_WHOLE = {"nothing", "none", "no", "every", "each", "drop", "drops", "bit", "single", "last"}
 #: Who acts: a clause with one of these in its subject says what is done, not what happens
 #: ("do I tip the cup"); the source moving is the scene's too ("does the source move slowly").
 _ACTORS = {"i", "we", "you", "robot", "arm", "gripper", "hand", "he", "she", "they"}
@@ -308,7 +311,7 @@ def hear(text: str) -> Heard:
         goals.extend(n if holds else f"neg({n})" for n in names if n not in
                      {g.removeprefix("neg(").rstrip(")") for g in goals})
         # "so nothing spills": its "nothing" is the goal's, not the scene's
-        return take(m, " ".join(w for w in subject if w not in ("nothing", "none", "no")))
+        return take(m, " ".join(w for w in subject if w not in _WHOLE))
 
     def as_asked(m: re.Match) -> str:
         subject = (m.group("subject") or m.group("csubject") or "").split()

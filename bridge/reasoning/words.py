@@ -61,6 +61,8 @@ PHRASES: tuple[tuple, ...] = (
     # "rather" as a degree ("the bowl is rather slippery"), not a contrast ("rather than")
     ("hedge", (r"re:\brather(?= (?:very )?(?:slippery|heavy|light|sticky|runny|thick|thin|bouncy|grippy|high|low|fast"
                r"|slow|slowly|quick|quickly|far|steep|steeply|full|smooth)\b)",)),
+    # a slippery liquid: its particles slide, a runny one ("a slippery oil")
+    ("runny", (r"re:\b(?:slippery|slick)(?= liquid\b)",)),
     # the liquid poured "inside": into the bowl ("I pour much water inside")
     ("hedge", (r"re:(?<=\bliquid )inside(?= *(?:[,;.!?]|$|and\b|but\b|then\b))",)),
     # raised or lowered to a number, or below the rim, no move before or after pouring said:
@@ -229,7 +231,7 @@ PHRASES: tuple[tuple, ...] = (
     # where the stream is aimed: "aim for the centre of the bowl" pours centred over it
     ("centred", (r"re:\baim(?:s|ed|ing)?(?: it| the \w+)? (?:for|at|into|towards?) (?:the )?(?:very )?"
                  r"(?:cent(?:re|er)|middle)\b",)),
-    ("rim", ("edge", "lip", "brim")),
+    ("rim", ("edge", "lip", "brim", "border")),
     ("low", (r"re:\b(?:just|right|slightly|barely|a bit|a little) (?:above|over) (?:the )?"
              r"(?:destination |bowl )?rim\b",
              r"re:\b(?:slightly|barely|a bit|a little|a tad)(?= (?:above|over) (?:the )?(?:destination"
@@ -242,7 +244,10 @@ PHRASES: tuple[tuple, ...] = (
                       r"(?:destination |bowl )?rim\b",
                       "at [the|its] [destination|bowl] rim",
                       "from [the|its] [destination|bowl] rim",
-                      "by [the|its] [destination|bowl] rim", "close to [the|its] [destination|bowl] rim")),
+                      "by [the|its] [destination|bowl] rim", "close to [the|its] [destination|bowl] rim",
+                      # poured on the rim, onto its very edge: over it
+                      "on [the|its] [destination|bowl] rim", "onto [the|its] [destination|bowl] rim",
+                      "onto [the|its] very rim", "on [the|its] very rim")),
     ("very", ("extremely", "super")),
     ("very high", ("very high up", "way up high", "way up", "from a great height")),
     ("high", ("high up", "up high")),
