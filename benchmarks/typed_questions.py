@@ -45,7 +45,7 @@ def _names(text: str) -> list[str]:
 def _lost(question: str, heard) -> list[str]:
     """The words of `question` that its reading neither read, said back nor ignored."""
     words = {w for phrase in (*heard.heard, *heard.ignored) for w in re.findall(r"[a-z]+", phrase)}
-    words |= {n.split(":")[0] for n in heard.notes} | set(FILLERS) | {"s", "minus"}
+    words |= {w for n in heard.notes for w in re.findall(r"[a-z]+|\S+", n.split(":")[0])} | set(FILLERS) | {"s", "minus"}
     said = re.sub(r"n't\b", " not", question.lower().replace("\u2019", "'"))
     return [w for w in re.findall(r"[a-z]+", said) if w not in words]
 

@@ -57,6 +57,7 @@ from pantarhei.bridge.reasoning.stages import (MARKER_STEMS, MOVE, POSE, SAME, o
                                                same_at_the_end, stages)
 from pantarhei.bridge.reasoning.wording import Token, names_written, normalising, stem, tokens as words_of
 from pantarhei.bridge.reasoning.suggestions import DESCRIBE, hinted, misspelt, names_part, refuse_unplaced
+from pantarhei.bridge.reasoning.unnamed import containers_named
 from pantarhei.bridge.reasoning.words import FILLERS, UNCLEAR, rewrites
 from pantarhei.theory.lexicon import load_vocabulary
 
@@ -175,6 +176,8 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
     props = vocab.propositions
     lex = _lexicon()
     text, named = names_written(text)
+    text, unnamed = containers_named(text)          # "pour from a growler": a container
+    typed += unnamed
     outcome = hear(text)
     tokens = read_numbers(words_of(outcome.scene), lex.placeable)
     accepted = _read(tokens, lex)

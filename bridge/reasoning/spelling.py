@@ -77,6 +77,14 @@ def _dictionary():
     return SpellChecker(language="en", distance=1)
 
 
+def unknown_to_reader(word: str) -> bool:
+    """Whether the reader reads no word `word` (neither whole nor as part of
+    its patterns, nor as a word of a question's frame)."""
+    whole, parts, frame = _words()
+    singular = {word, word[:-1] if word.endswith("s") else word, word[:-2] if word.endswith("es") else word}
+    return not any(w in whole or w in parts or w in frame for w in singular)
+
+
 def english(word: str) -> bool:
     """Whether an English dictionary (pyspellchecker's word list) holds `word`."""
     return word in _dictionary()

@@ -95,6 +95,10 @@ def normalised(text: str) -> str:
     return normalising(text)[0]
 
 
+#: The values a simile may liken: "light as a feather".
+_LIKENED = "light|heavy|slippery|sticky|thick|thin|runny|bouncy|slow|fast|quick|smooth|grippy|full|high|low"
+
+
 def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` normalised, and what is said back of each word of it read as
     another ("doesnt: read as doesn't"), in the order written."""
@@ -113,6 +117,11 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     # "w/o" and "w/" as notes write them: without, with
     text = re.sub(r"\bw/o\b|\bw/(?= ?[a-z])", lambda m: said.setdefault(f"{m.group(0)}: read as with{'out' * (m.group(0) == 'w/o')}")
                   or f"with{'out' * (m.group(0) == 'w/o')} ", text).replace("  ", " ")
+    # a simile says the value it likens: "light as a feather", "thick as ketchup" (not "as high as
+    # the rim": a comparison)
+    text = re.sub(rf"(?<!\bas )\b({_LIKENED}) as (?:a |an )?(?!before\b|usual\b|normal\b|last\b|ever\b|possible\b"
+                  r"|you\b|it\b|i\b|we\b|the\b|that\b|this\b)[a-z]+\b",
+                  lambda m: said.setdefault(f"{m.group(0)}: read as {m.group(1)}") or m.group(1), text)
     # "y/n" ending a note: whether it happens or not ("bowl slide y/n")
     text = re.sub(r" *\b(?:y/n|y or n)\b(?=[?.!]* *$)", lambda m: said.setdefault(f"{m.group(0).strip()}: read as or not")
                   or " or not", text)

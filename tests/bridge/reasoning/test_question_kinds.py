@@ -61,7 +61,8 @@ def test_no_word_is_dropped_silently(question):
     ignored, or a word of the question's frame."""
     r = read_question(question)
     accounted = {w for phrase in (*r.heard, *r.ignored) for w in re.findall(r"[a-z]+", phrase.lower())}
-    accounted |= {n.split(":")[0] for n in r.notes} | set(FILLERS) | {"s", "minus"}
+    accounted |= {w for n in r.notes for w in re.findall(r"[a-z]+|\S+", n.split(":")[0].lower())}
+    accounted |= set(FILLERS) | {"s", "minus"}
     # as typed: a contraction with its apostrophe spelt out ("won't": will not), one typed
     # without it ("wont", "im") or a word mistyped ("teh") said back in the notes
     said = re.sub(r"\bcan't\b|\bcannot\b", "can not", question.lower().replace("\u2019", "'"))
