@@ -1,10 +1,10 @@
-"""Containers the reader has no name for, read as bowls: a word it does not
+"""Containers the reader has no name for, read as one: a word it does not
 know, said where only a container can stand ("pour from a growler", "into
 the katori", "out of the carboy", "a full demijohn of wine"), is read as
-"bowl" (poured from, where it is: a growler poured from is the source),
-and `ask` says so ("growler: read as a container"). A word the reader
-knows keeps its reading, and one said elsewhere is refused as before.
-"""
+"container" (a bowl: poured from, where it is, the source), and `ask`
+says so ("growler: read as a container"). A word the reader knows, or one
+of them mistyped ("from the sde"), keeps its reading, and a word said
+elsewhere is refused as before."""
 from __future__ import annotations
 
 import re
@@ -51,7 +51,7 @@ def containers_named(text: str) -> tuple[str, tuple[str, ...]]:
         if not unknown_to_reader(word) or word in _PLACES or _mistyped(word):
             return m.group(0)
         said.setdefault(f"{word}: read as a container")
-        return m.group(0)[:m.start(at) - m.start()] + "bowl" + m.group(0)[m.end(at) - m.start():]
+        return m.group(0)[:m.start(at) - m.start()] + "container" + m.group(0)[m.end(at) - m.start():]
 
     text = _SLOT.sub(lambda m: bowl(m, 3), text)
     text = _of().sub(lambda m: bowl(m, 3), text)
