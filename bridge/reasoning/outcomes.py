@@ -77,7 +77,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|mov(?:e|es|ed|ing)\b(?! (?:in|away|closer|to|out|back|up|down|over|into|off|towards?)\b)",
      STILL, True),
     (r"bump\w*|hit(?:s|ting)?|touch\w*|collid\w*|crash\w*|knock\w*|clip(?:s|ped)?|strike\w*"
-     r"|bonk\w*|bang\w*|intersect\w*|clash\w*|graz(?:e|es|ed|ing)|scrap(?:e|es|ed|ing)|nudg\w*"
+     r"|bonk\w*|bang\w*|intersect\w*|clash\w*|graz(?:e|es|ed|ing)|scrap(?:e|es|ed|ing)|nudg\w*|clink\w*|slam\w*"
      r"|smash\w*|whack\w*|(?:run|runs|ran|running) into|(?:come|comes|came) into contact|bounc\w* (?:off|against)"
      r"|make contact|makes contact|(?:any|some) contact"
      r"|(?<=there )(?:any |some )?contact|(?<=there be )(?:any |some )?contact",   # "is there contact"
@@ -105,8 +105,7 @@ _MODALS = r"will|would|does|do|did|could|can|might|may|should|shall"
 _AUX = rf"{_MODALS}|is|are|was|were"
 #: Where a clause starts: before "is" in "if the jug is heavy and tipped", how the source is held.
 _CLAUSE = re.compile(r"[,;:.!?]|\b(?:if|when|while|and|but|so|or|then|what|whether)\b")
-#: The words of a goal's subject that say how much of the liquid it wants ("so nothing spills",
-#: "I want every drop to end up in the bowl"): the goal's, not the scene's.
+#: A goal's words of how much it wants ("so nothing spills", "every drop"): not the scene's.
 _WHOLE = {"nothing", "none", "no", "every", "each", "drop", "drops", "bit", "single", "last"}
 #: Who acts: a clause with one of these in its subject says what is done, not what happens
 #: ("do I tip the cup"); the source moving is the scene's too ("does the source move slowly").
@@ -163,6 +162,8 @@ def _patterns() -> tuple[re.Pattern, ...]:
                          r"(?:(?:spill(?:s|age)?|splash(?:es)?)(?: (?:everywhere|over))?|(?:drips?|leaks?)(?: (?:everywhere|out|over))?)"
                          r"(?= *[?.!]* *$)"
                          # named as a measure: "the spill outcome", "what is the spillage rate"
+                         r"|(?:^|(?<=[,:;.?!] ))(?:a |any )?mess(?: (?:on|onto|all over) (?:the )?"   # "mess on the table?"
+                         r"(?:table|counter|floor|worktop|bench))?(?= *[?.!]* *$)"
                          r"|\b(?:the |any |a )?(?:spill(?:s|age)?|splash(?:es|ing)?|drips?|mess)"
                          r" (?:outcome|result|risk|rate|amount|chance|probability|likelihood)s?\b")
     goal = re.compile(

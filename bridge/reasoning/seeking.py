@@ -53,7 +53,7 @@ _ASKING_SOURCE = (
     # what to avoid: "what should I avoid"
     rf"|\bwhat (?:should|must|do|would|can) {_WHO} (?:need to |have to )?avoid(?: doing)?(?=[ ?.!,]|$)"
     # what to change or do: "what do I need to change", "what should we adjust"
-    rf"|\bwhat (?:do|should|must|would|can) {_WHO} (?:need to |have to )?(?:change|adjust|alter|do differently)(?= |$)"
+    rf"|\bwhat (?:do|should|must|would|can) {_WHO} (?:need to |have to )?(?:change|adjust|alter|do differently)(?=[ ?.!,]|$)"
     # a choice of two values: "should I pour from low or high", "do we tilt it a bit or a lot"
     rf"|\b(?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT} (?:[a-z]+ ){{1,3}}?or(?: [a-z]+){{1,3}}?"
     rf"(?= *[?.!]* *$| *[,;:])")
@@ -85,6 +85,11 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     # "I'd prefer the bowl not move", "we hope it doesn't tip"
     (r"\b(?:i|we) (?:would )?(?:prefer|rather|hope)(?: that)? (it|them|the [a-z]+) (?:not|never|does not|do not|will not)"
      r" (?=[a-z]+)", r"so that \1 does not "),
+    # "need to empty a heavy jug of syrup": so that it empties
+    (r"(?:^|\b(?:i|we) )(?:need|want|have) to (?:empty|drain) (?:out )?(?:a|the|my) ((?:[a-z]+ )?[a-z]+)(?= of\b|$|[ ,.;!?])",
+     r"so that the \1 empties"),
+    # "how can I stop the mug clinking into the bowl": so that it does not
+    (r"\b(?:stop|stops|stopping|prevent|prevents|preventing) (it|them|the [a-z]+) (?=[a-z]+ing\b)", r"so that \1 does not "),
     # "goal: empty the bottle completely": so that it empties
     (r"\b(?:goal|aim|objective|task|target)s?(?: is)?:? (?:to )?(?:empty|drain) (?:out )?(?:the whole|all of the|all the"
      r"|the entire|the) ([a-z]+)(?: (?:completely|fully|entirely|totally))?\b", r"so that the \1 empties"),
@@ -131,6 +136,12 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
 #: Wanting, compiled when cued: "I need none of it on the table" (so that none goes on it),
 #: "how do I get all the soup into the bowl" (so that it goes in).
 _WANTING_CUED = (
+    # "I'd like zero spill", "we want no mess": so that nothing spills
+    (Cued(r"\b(?:i|we) (?:want|need|would like|wish for) (?:zero|no|none of the) (?:spill|spills|spillage|spilling|mess"
+          r"|splash|splashes|splashing|drips|dripping)\b", ("zero", " no ", "none of")), "so that nothing spills"),
+    # "best way to get every last drop out of the bottle": so that the bottle empties, a way asked
+    (Cued(r"\b(?:the )?(?:best|easiest|safest|quickest) way to (?:get|pour|tip) (?:every last drop|every drop|all of it|it all"
+          r"|everything|all the liquid) out(?: of (?:the |a |my )?([a-z]+))?", ("way to",)), r"the best way so that it empties"),
     (Cued(r"\b(?:i|we) (?:want|need|would like) (none|nothing|no liquid|no water)(?: of it)? (?=(?:on|onto|all over) )",
           ("want", "need", "like")), r"so that \1 goes "),
     (Cued(r"\bhow (?:do|can|could|should|would) (?:i|we|you) get (it all|all of it|everything|all the [a-z]+|it|the [a-z]+)"

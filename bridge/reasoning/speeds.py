@@ -44,8 +44,8 @@ SPEEDS: tuple[tuple, ...] = (
         r"|gently|carefully|gradually)\b(?! (?:in|into|to|towards?|away|out|off|back|up|down|over|from"
         r"|before|after|then)\b)")),
     # brought in, or gone away, fast or slowly: the move in, the move away
-    ("approach fast", (r"re:\b(?:bring|brings|brought|bringing)(?: it| the \w+)? in (?:very |really |too |quite )?"
-                       r"(?:fast|quickly|quick)\b",)),
+    ("approach fast", (r"re:\b(?:bring|brings|brought|bringing|swing|swings|swung|swinging)(?: it| the \w+)? in"
+                       r" (?:very |really |too |quite )?(?:fast|quickly|quick)\b",)),
     ("approach slowly", (r"re:\b(?:bring|brings|brought|bringing)(?: it| the \w+)? in (?:very |really |too |quite )?"
                          r"(?:slowly|slow)\b",)),
     ("retreat fast", (r"re:\b(?:go|goes|going|went|gone) away (?:very |really |too |quite )?(?:fast|quickly|quick)\b",)),
