@@ -88,7 +88,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|empt(?:y|ies|ied)(?: out)?|leav(?:e|es|ing) the|exit\w*", ("liquid_leaves_source",), False),
     (r"(?:end|ends|ended|ending) up in(?:side)?", (*_ALL_IN, "liquid_remains_in_destination"), False),
     # what stays in the bowl entered it: "remains" alone holds also when none enters
-    (r"(?:stay|stays|remain|remains|stop|stops|stick|sticks|stuck) in(?:side)?(?: the \w+)?"
+    (r"(?:stay|stays|remain|remains|stop|stops|stick|sticks|stuck|cling|clings|clung) in(?:side)?(?: the \w+)?"
      r"|(?:stay|stays|remain|remains) (?:in )?there\b", (*_ALL_IN, "liquid_remains_in_destination"), False),
     (r"(?:go|goes|going|went|get|gets|land|lands|make it|makes it|fall|falls|"
      r"arrive\w*) (?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*",
@@ -128,7 +128,8 @@ _PART_OF = re.compile(r"\b(?:most|all|any|some|much|half|none|part|a lot|a bit|a
                       r"odds|risk)(?: of| that)?\b")
 #: Quantifiers that begin the subject of an outcome asked ("does much stay in", "will some
 #: spill"): the outcome's words, not an amount of liquid in the scene.
-_QUANTIFIERS = {"much", "most", "some", "any", "all", "little", "none", "half", "lots", "plenty", "less", "more"}
+_QUANTIFIERS = {"much", "most", "some", "any", "all", "little", "none", "half", "lots", "plenty", "less", "more", "every",
+                "each", "last", "drop", "drops"}
 #: How much of the liquid, asked: "what fraction of the liquid spills".
 _SHARE = r"(?:what|which) (?:fraction|proportion|share|percentage|part|amount)(?: of (?:it|the \w+))?"
 
@@ -167,7 +168,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
                          r"|\b(?:the |any |a )?(?:spill(?:s|age)?|splash(?:es|ing)?|drips?|mess)"
                          r" (?:outcome|result|risk|rate|amount|chance|probability|likelihood)s?\b")
     goal = re.compile(
-        rf"\b(?:without (?P<gneg>any |a |making (?:a |any )?)?(?P<gwho>(?:it|them|the [a-z]+) )?"
+        rf"\b(?:without (?P<gneg>any |a |making (?:a |any )?)?(?P<gwho>(?:it|them|the [a-z]+) )?(?:ever |even )?"
         rf"(?:getting |being )?"
         rf"|so(?: that| as)?(?P<gsub>(?: (?!not\b)"
         rf"[a-z]+){{0,4}}?)(?P<gnot> not| never)? (?:(?:to|will|does|do|would|can|could|all|"

@@ -37,7 +37,7 @@ _WHAT = r"(?: (?:it|them|the \w+))?(?: (?:from|at|to|up|in))?"
 _ASKING_SOURCE = (
     # a value that works: "what tilt works", "which height would work best"
     rf"\b(?:what|which) {_VALUE} (?:works?|would work|will work|is best|would be best)(?: best)?(?= |$|[?.!,])"
-    rf"|\b(?:(?:what|which)(?: is| be)?(?: the| a)?(?: {_BEST})?|(?:the |a )?{_BEST}) {_VALUE}"
+    rf"|\b(?:(?:what|which)(?: is| be)?(?: the| a)?(?: {_BEST})?|(?:the |a )?{_BEST}) (?:(?:pour|pouring|approach|retreat) )?{_VALUE}(?: {_VALUE})?"   # "tilt angle", "pour height"
     rf"(?:(?:,| and| or|, and|, or) (?:the |a )?{_VALUE})*"      # "the best height and angle"
     rf"(?: (?:to {_ACT}{_WHAT}|(?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT}"
     rf"|for (?:it|pouring|the pour)))?(?= |$)"
@@ -54,6 +54,8 @@ _ASKING_SOURCE = (
     rf"|\bwhat (?:should|must|do|would|can) {_WHO} (?:need to |have to )?avoid(?: doing)?(?=[ ?.!,]|$)"
     # what to change or do: "what do I need to change", "what should we adjust"
     rf"|\bwhat (?:do|should|must|would|can) {_WHO} (?:need to |have to )?(?:change|adjust|alter|do differently)(?=[ ?.!,]|$)"
+    # a choice of two speeds, noted: "slow approach or fast?"
+    rf"|\b(?:a )?(?:slow|fast|quick) (?:approach|retreat) or (?:a )?(?:slow|fast|quick)(?: one)?(?=[ ?.!,]|$)"
     # a choice of two values: "should I pour from low or high", "do we tilt it a bit or a lot"
     rf"|\b(?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT} (?:[a-z]+ ){{1,3}}?or(?: [a-z]+){{1,3}}?"
     rf"(?= *[?.!]* *$| *[,;:])")
@@ -114,6 +116,11 @@ def _keeping_in() -> re.Pattern:
                       rf"(?= (?:the |a |an |my |your |this |that )?(?:[a-z]+ ){{0,2}}?(?:{destinations()}|jug|source)\b)")
 
 
+#: A value said to get the liquid in: "what tilt angle gets all the liquid into the bowl" (so that it goes in).
+_GETS = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? {_VALUE}) (?:gets|will get|would get)"
+                   r" (it|it all|all(?: of)? the \w+|everything|the \w+) (?=in\b|into\b)")
+
+
 def wanting(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` with its goals said as "so that ...", as outcomes.hear reads
     them, and the words of wanting it rewrote ("i want")."""
@@ -121,6 +128,8 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
     text = _keeping_in().sub(r"so that \1 stays in", text)
     said += tuple(m.group(2) for m in _KEEPS.finditer(text))
     text = _KEEPS.sub(r"\1 so that \3 stays \4", text)
+    said += tuple(m.group(0)[m.end(1) - m.start():m.start(2) - m.start()].strip() for m in _GETS.finditer(text))
+    text = _GETS.sub(r"\1 so that \2 goes ", text)
     said += tuple(m.group(0)[:m.start(1) - m.start()].strip() for m in _WANT.finditer(text))
     text = _WANT.sub(r"so that \1", text)
     for pattern, wanted in _WANTING:

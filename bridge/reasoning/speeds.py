@@ -48,7 +48,9 @@ SPEEDS: tuple[tuple, ...] = (
                        r" (?:very |really |too |quite )?(?:fast|quickly|quick)\b",)),
     ("approach slowly", (r"re:\b(?:bring|brings|brought|bringing)(?: it| the \w+)? in (?:very |really |too |quite )?"
                          r"(?:slowly|slow)\b",)),
-    ("retreat fast", (r"re:\b(?:go|goes|going|went|gone) away (?:very |really |too |quite )?(?:fast|quickly|quick)\b",)),
+    ("retreat fast", (r"re:\b(?:go|goes|going|went|gone) away (?:very |really |too |quite )?(?:fast|quickly|quick)\b",
+                      r"re:\b(?:yank|yanks|yanked|yanking|jerk|jerks|jerked|snatch|snatches|snatched|whip|whips|whipped)"
+                      r"(?: it| the \w+)? (?:away|back|out)\b")),
     ("retreat slowly", (r"re:\b(?:go|goes|going|went|gone) away (?:very |really |too |quite )?(?:slowly|slow)\b",)),
     # "fastly", as learners of English say it; "the robot come fastly": it comes in
     ("approach fast", (r"re:\b(?:come|comes|coming|came) (?:very |really |too )?(?:fastly|fast|quickly)\b",)),
