@@ -128,8 +128,7 @@ _PART_OF = re.compile(r"\b(?:most|all|any|some|much|half|none|part|a lot|a bit|a
                       r"odds|risk)(?: of| that)?\b")
 #: Quantifiers that begin the subject of an outcome asked ("does much stay in", "will some
 #: spill"): the outcome's words, not an amount of liquid in the scene.
-_QUANTIFIERS = {"much", "most", "some", "any", "all", "little", "none", "half", "lots", "plenty", "less", "more", "every",
-                "each", "last", "drop", "drops"}
+_QUANTIFIERS = {*"much most some any all little none half lots plenty less more every each last drop drops".split()}
 #: How much of the liquid, asked: "what fraction of the liquid spills".
 _SHARE = r"(?:what|which) (?:fraction|proportion|share|percentage|part|amount)(?: of (?:it|the \w+))?"
 
