@@ -23,7 +23,8 @@ from pantarhei.bridge.reasoning.words import FILLERS
 
 def question_files() -> list[Path]:
     """The held-out question files, each written and annotated apart."""
-    return sorted(Path(__file__).parent.glob("heldout_questions*.txt"))
+    return sorted(Path(__file__).parent.glob("heldout_questions*.txt"),
+                  key=lambda p: int(m.group(1)) if (m := re.search(r"_(\d+)\.txt$", p.name)) else 1)
 
 
 def annotated(path: Path) -> list[tuple[str, dict[str, str] | None]]:
