@@ -51,7 +51,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      rf"|your |its |their |this |that )?(?!source\b)(?:[a-z]+ )?{OUT_OF}\b)"
      rf"|escap\w*(?= (?:the |a |an |my |your |its )?(?!source\b)(?:[a-z]+ )?{OUT_OF}\b)"
      # thrown out, no bowl said: out of the destination, as people who pour read it ("splash out")
-     r"|(?:spill\w*|spilt|splash\w*|splatter\w*|slosh\w*|slop\w*) out\b(?! of\b| over\b)"
+     r"|(?:spill\w*|spilt|splash\w*|splatter\w*|slosh\w*|slop\w*)(?: back)? out\b(?! of\b| over\b)"
      r"|overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*|slop\w*|splash\w*|splatter\w*|fizz\w*"
      r"|foam\w*|froth\w*|bubbl\w*|boil\w*) over"
      r"(?: the (?:rim|edge|top|side)s?)?"
@@ -85,7 +85,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:stay|stays|keep|keeps|be|is)? ?clear(?: of)?", ("source_clear",), False),
     (r"(?:come|comes|coming|came|get|gets|pour|pours|flow|flows|run|runs|drain\w*) out"
      r"|(?:go|goes|going|went) out\b(?! of (?:the |a |an |my )?(?!source\b)(?:[a-z]+ )?(?:bowl|destination)\b)"
-     r"|empt(?:y|ies|ied)(?: out)?|leav(?:e|es|ing) the|exit\w*", ("liquid_leaves_source",), False),
+     r"|empt(?:y|ies|ied)(?: out)?|leav(?:e|es|ing) (?:the|it)\b|exit\w*", ("liquid_leaves_source",), False),
     (r"(?:end|ends|ended|ending) up in(?:side)?", (*_ALL_IN, "liquid_remains_in_destination"), False),
     # what stays in the bowl entered it: "remains" alone holds also when none enters
     (r"(?:stay|stays|remain|remains|stop|stops|stick|sticks|stuck|cling|clings|clung) in(?:side)?(?: the \w+)?"

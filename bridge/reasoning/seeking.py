@@ -46,6 +46,9 @@ _ASKING_SOURCE = (
     rf" {_WHO} (?:pour|go)\b){_HOW}(?: (?:should|do|can|must|would|could|shall|is) {_WHO}"
     rf"(?: {_ACT}{_WHAT})?)?(?= |$)"
     rf"|\bhow (?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT}(?= |$)"
+    # "how high should the cup be", "how far do I need to tilt"
+    rf"|\bhow(?: (?:very|really))? (?!(?:fast|quick|quickly|slow|slowly) )(?={_HOW} )\w+ (?:should|do|does|must|would"
+    rf"|could|will) (?:{_WHO}|the \w+) (?:be|(?:need to |have to )?{_ACT}{_WHAT})(?=[ ?.!,]|$)"
     # the most a move may be: "what's the fastest I can move away", "the highest we could pour"
     rf"|\b(?:what(?: is)? )?the (?:fastest|slowest|quickest|highest|lowest|steepest|furthest|farthest|closest"
     rf"|nearest|heaviest|lightest)(?: [a-z]+)? (?:that )?{_WHO} (?:can|could|should|may|might|dare) {_ACT}{_WHAT}"
@@ -145,6 +148,11 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
 #: Wanting, compiled when cued: "I need none of it on the table" (so that none goes on it),
 #: "how do I get all the soup into the bowl" (so that it goes in).
 _WANTING_CUED = (
+    # "I want every drop in the bowl": so that it goes in
+    (Cued(r"\b(?:i|we) (?:want|need|would like) (every drop|all of it|it all|everything|all the \w+) (?=(?:in|into|inside)\b)",
+          ("want", "need", "like")), r"so that \1 goes "),
+    # "and have it all land in the bowl": so that it does
+    (Cued(r"\bhave (it all|it|everything|all of it) (?=(?:land|go|end up|stay)\b)", ("have ",)), r"so that \1 "),
     # "I'd like zero spill", "we want no mess": so that nothing spills
     (Cued(r"\b(?:i|we) (?:want|need|would like|wish for) (?:zero|no|none of the) (?:spill|spills|spillage|spilling|mess"
           r"|splash|splashes|splashing|drips|dripping)\b", ("zero", " no ", "none of")), "so that nothing spills"),

@@ -173,7 +173,8 @@ def _normalised(text: str) -> str:
                   rf"(?![\w.%\u00b0-]| ?(?:{_UNIT_WORDS})\b| (?:to|or|and) -?\d)"
                   r"(?= *(?:$|[,;.!?):\u2013\u2014]|- |(?:and|then|but|so|while|before|after|from|above|over|with|into|at"
                   r"|during|when|if|in|on|towards|away|or|to|degrees?"
-                  r"|bowl|bowls|cup|mug|glass|jug|liquid|water|source|destination)\b))", r"\1 \2 degrees", text)
+                  r"|bowl|bowls|cup|mug|glass|jug|liquid|water|source|destination|does|do|will|would|is)\b))",
+                  r"\1 \2 degrees", text)
     text = re.sub(r"(\d)\s*(?:(?:deg|degs|degrees?)\s*(?:/\s*(?:s|sec)\b|per (?:second|sec)\b)"
                   r"|rpm\b)", r"\1 unit_turn_speed", text)        # 30 deg/s: a speed of tilting
     text = re.sub(r"(\d)\s*(?:(?:k?m|cm|mm)\s*/\s*(?:s|sec|h|hr)|(?:k?m|cm|mm|metres?|meters?|"

@@ -61,6 +61,11 @@ PHRASES: tuple[tuple, ...] = (
     # "rather" as a degree ("the bowl is rather slippery"), not a contrast ("rather than")
     ("hedge", (r"re:\brather(?= (?:very )?(?:slippery|heavy|light|sticky|runny|thick|thin|bouncy|grippy|high|low|fast"
                r"|slow|slowly|quick|quickly|far|steep|steeply|full|smooth)\b)",)),
+    # "anything but upside down": not it; "not water but something thick": the one said
+    ("not", ("anything but",)),
+    ("hedge", (r"re:\bnot (?:liquid|the liquid) but\b",)),
+    # when the liquid lands: while pouring ("does it slide when the water hits it")
+    ("hedge", (r"re:\bwhen (?:the )?liquid (?:hits|lands in|reaches|goes into|enters) (?:it|the bowl)\b",)),
     # a slippery liquid: its particles slide, a runny one ("a slippery oil")
     ("runny", (r"re:\b(?:slippery|slick)(?= liquid\b)",)),
     # the liquid poured "inside": into the bowl ("I pour much water inside")
