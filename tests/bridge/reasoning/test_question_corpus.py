@@ -17,6 +17,7 @@ from pantarhei.theory.lexicon import load_vocabulary
 
 #: question -> the propositions it means, sorted
 READ = {
+    'what if the cup is only half full?': ['much_liquid'],
     'Does the liquid spill when the source is held high above a light destination?': ['light_destination', 'pour_high'],
     'What happens if the pouring container is tilted 90 degrees?': ['pour_steeply_tilted'],
     'Will liquid remain in the destination if the destination is bouncy?': ['bouncy_destination'],
@@ -207,7 +208,6 @@ REFUSED = [
     'the source is heavier than the destination',
     'what if I pour really slowly?',
     'what if the bowl moves?',
-    'what if the cup is only half full?',
     'with 100 drops',
 ]
 
