@@ -25,21 +25,21 @@ _AS_BEFORE = (r"(?:(?:the|my|our|that) )?(?:(?:previous|last|earlier|first|usual
 COMPARISONS: tuple[tuple, ...] = (
     # a comparison with an earlier or the usual pour: each question is read alone, so against
     # the ordinary pour ("slower than the previous pour" is slowly; "not as high as last time" low)
-    *((value, (rf"re:\b(?:{DEGREE} |much |even |far |a lot )?(?:{comparative}) {_BEFORE}",
-               rf"re:\b(?:not|never) (?:(?:held|poured|tilted|moved|brought|tipped|quite|nearly|so|as) )*?as (?:{plain})"
+    *((value, (rf"re({comparative}):\b(?:{DEGREE} |much |even |far |a lot )?(?:{comparative}) {_BEFORE}",
+               rf"re( as ):\b(?:not|never) (?:(?:held|poured|tilted|moved|brought|tipped|quite|nearly|so|as) )*?as (?:{plain})"
                rf" (?:as {_AS_BEFORE}|hedge\b)") if plain else
-       (rf"re:\b(?:{DEGREE} |much |even |far |a lot )?(?:{comparative}) {_BEFORE}",),
+       (rf"re({comparative}):\b(?:{DEGREE} |much |even |far |a lot )?(?:{comparative}) {_BEFORE}",),
        "read against the ordinary pour: each question is read alone")
       for comparative, value, plain in (
           ("higher", "high", "low|short"), ("lower", "low", "high"), ("slower", "slowly", "fast|quick|quickly"),
           ("faster|quicker", "fast", "slow|slowly"), ("heavier", "heavy", "light"), ("lighter", "light", "heavy"),
           ("steeper", "steeply tilted", ""), ("stickier|thicker", "sticky", "runny|thin"),
           ("runnier|thinner", "runny", "sticky|thick"))),
-    ("slightly tilted", (rf"re:\b(?:not|never) (?:tilt|tip)\w* (?:it |the \w+ )?as (?:far|much)"
+    ("slightly tilted", (rf"re( as ):\b(?:not|never) (?:tilt|tip)\w* (?:it |the \w+ )?as (?:far|much)"
                          rf" (?:as {_AS_BEFORE}|hedge\b)",
-                         rf"re:\bless tilted {_BEFORE}"), "read against the ordinary pour: each question is read alone"),
+                         rf"re(less tilted):\bless tilted {_BEFORE}"), "read against the ordinary pour: each question is read alone"),
     # "more high", "more thick like honey", as learners of English say them: the value itself
-    *((value, (rf"re:\bmore (?:{said})\b(?! than\b)",)) for said, value in (
+    *((value, (rf"re(more ):\bmore (?:{said})\b(?! than\b)",)) for said, value in (
         ("high", "high"), ("low", "low"), ("thick", "sticky"), ("thin", "runny"), ("heavy", "heavy"),
         ("light", "light"), ("fast|quick", "fast"), ("slow", "slowly"), ("sticky", "sticky"), ("runny", "runny"))),
 )

@@ -12,55 +12,55 @@ from __future__ import annotations
 SPEEDS: tuple[tuple, ...] = (
     # a speed said with "speed": "at high speed" is fast, "at a slow speed" slowly (a pour
     # said so is refused below: pouring has no speed)
-    ("fast", (r"re:\b(?:at |with )?(?:a |full |top )?(?:high|great|full|top|fast|quick|rapid|max(?:imum)?)"
-              r" (?:speed|velocity|pace)\b", r"re:\bat (?:full|top) (?:tilt|speed)\b",
-              r"re:\bat speed\b")),
-    ("slowly", (r"re:\b(?:at |with )?(?:a )?(?:low|slow|reduced|gentle|leisurely|relaxed|easy|min(?:imum)?)"
+    ("fast", (r"re(speed|velocity|pace):\b(?:at |with )?(?:a |full |top )?(?:high|great|full|top|fast|quick|rapid|max(?:imum)?)"
+              r" (?:speed|velocity|pace)\b", r"re(at full|at top):\bat (?:full|top) (?:tilt|speed)\b",
+              r"re(at speed):\bat speed\b")),
+    ("slowly", (r"re(speed|velocity|pace):\b(?:at |with )?(?:a )?(?:low|slow|reduced|gentle|leisurely|relaxed|easy|min(?:imum)?)"
                 r" (?:speed|velocity"
                 r"|pace)\b",)),
     # neither too fast nor too slow: at a moderate speed
-    ("moderate", (r"re:\b(?:not too (?:fast|quick(?:ly)?|slow(?:ly)?)(?:,| and| or| but)? (?:not )?too"
+    ("moderate", (r"re(too):\b(?:not too (?:fast|quick(?:ly)?|slow(?:ly)?)(?:,| and| or| but)? (?:not )?too"
                   r" (?:slow(?:ly)?|fast|quick(?:ly)?)|neither too (?:fast|quick(?:ly)?|slow(?:ly)?) nor too"
                   r" (?:slow(?:ly)?|fast|quick(?:ly)?))\b",),
      "read as moderate: neither fast nor slow"),
-    ("moderate", (r"re:\b(?:at |with )?(?:a )?(?:moderate|medium|normal|average|steady) (?:speed|velocity"
+    ("moderate", (r"re(speed|velocity|pace):\b(?:at |with )?(?:a )?(?:moderate|medium|normal|average|steady) (?:speed|velocity"
                   r"|pace)\b",)),
     # a quick in-and-out: the move in and the move out both quick, the pour between
     ("approach fast ; retreat fast ; pour", (
-        r"re:\b(?:fast|quick|quickly|fastly) in,? (?:and |then )?(?:fast|quick|quickly|fastly) out\b",
-        r"re:\b(?:a |an )?(?:quick|fast|rapid|swift|brisk|sudden|snappy)(?: in(?: and)? out| in and"
+        r"re( out):\b(?:fast|quick|quickly|fastly) in,? (?:and |then )?(?:fast|quick|quickly|fastly) out\b",
+        r"re( out):\b(?:a |an )?(?:quick|fast|rapid|swift|brisk|sudden|snappy)(?: in(?: and)? out| in and"
         r" then out)(?: (?:motion|movement|move|moves|path|trajectory|action))?\b",
-        r"re:\bin(?: and)? out (?:quickly|fast|rapidly|swiftly|briskly)\b",
+        r"re( out):\bin(?: and)? out (?:quickly|fast|rapidly|swiftly|briskly)\b",
         # moving fast, with no way said: both moves ("if I move fast")
-        r"re:\bmov(?:e|es|ed|ing)(?: it| the \w+| them)? (?:really |very |too |quite )?(?:fast|quickly|quick"
+        r"re(mov):\bmov(?:e|es|ed|ing)(?: it| the \w+| them)? (?:really |very |too |quite )?(?:fast|quickly|quick"
         r"|rapidly|swiftly|briskly)\b(?! (?:in|into|to|towards?|away|out|off|back|up|down|over|from|before"
         r"|after|then)\b)")),
     ("approach slowly ; retreat slowly ; pour", (
-        r"re:\b(?:slow|slowly) in,? (?:and |then )?(?:slow|slowly) out\b",
-        r"re:\b(?:a |an )?(?:slow|gentle|careful|gradual|leisurely)(?: in(?: and)? out| in and"
+        r"re( out):\b(?:slow|slowly) in,? (?:and |then )?(?:slow|slowly) out\b",
+        r"re( out):\b(?:a |an )?(?:slow|gentle|careful|gradual|leisurely)(?: in(?: and)? out| in and"
         r" then out)(?: (?:motion|movement|move|moves|path|trajectory|action))?\b",
-        r"re:\bin(?: and)? out (?:slowly|gently|carefully|gradually)\b",
-        r"re:\bmov(?:e|es|ed|ing)(?: it| the \w+| them)? (?:really |very |too |quite )?(?:slowly|slow"
+        r"re( out):\bin(?: and)? out (?:slowly|gently|carefully|gradually)\b",
+        r"re(mov):\bmov(?:e|es|ed|ing)(?: it| the \w+| them)? (?:really |very |too |quite )?(?:slowly|slow"
         r"|gently|carefully|gradually)\b(?! (?:in|into|to|towards?|away|out|off|back|up|down|over|from"
         r"|before|after|then)\b)")),
     # brought in, or gone away, fast or slowly: the move in, the move away
-    ("approach fast", (r"re:\b(?:bring|brings|brought|bringing|swing|swings|swung|swinging)(?: it| the \w+)? in"
+    ("approach fast", (r"re(bring|brought|swing|swung):\b(?:bring|brings|brought|bringing|swing|swings|swung|swinging)(?: it| the \w+)? in"
                        r" (?:very |really |too |quite )?(?:fast|quickly|quick)\b",)),
-    ("approach slowly", (r"re:\b(?:bring|brings|brought|bringing)(?: it| the \w+)? in (?:very |really |too |quite )?"
+    ("approach slowly", (r"re(bring|brought):\b(?:bring|brings|brought|bringing)(?: it| the \w+)? in (?:very |really |too |quite )?"
                          r"(?:slowly|slow)\b",)),
-    ("retreat fast", (r"re:\b(?:go|goes|going|went|gone) away (?:very |really |too |quite )?(?:fast|quickly|quick)\b",
-                      r"re:\b(?:yank|yanks|yanked|yanking|jerk|jerks|jerked|snatch|snatches|snatched|whip|whips|whipped)"
+    ("retreat fast", (r"re( away):\b(?:go|goes|going|went|gone) away (?:very |really |too |quite )?(?:fast|quickly|quick)\b",
+                      r"re(yank|jerk|snatch|whip):\b(?:yank|yanks|yanked|yanking|jerk|jerks|jerked|snatch|snatches|snatched|whip|whips|whipped)"
                       r"(?: it| the \w+)? (?:away|back|out)\b")),
-    ("retreat slowly", (r"re:\b(?:go|goes|going|went|gone) away (?:very |really |too |quite )?(?:slowly|slow)\b",)),
+    ("retreat slowly", (r"re( away):\b(?:go|goes|going|went|gone) away (?:very |really |too |quite )?(?:slowly|slow)\b",)),
     # "fastly", as learners of English say it; "the robot come fastly": it comes in
-    ("approach fast", (r"re:\b(?:come|comes|coming|came) (?:very |really |too )?(?:fastly|fast|quickly)\b",)),
-    ("approach slowly", (r"re:\b(?:come|comes|coming|came) (?:very |really |too )?(?:slowly|slow)\b",)),
+    ("approach fast", (r"re(com|came):\b(?:come|comes|coming|came) (?:very |really |too )?(?:fastly|fast|quickly)\b",)),
+    ("approach slowly", (r"re(com|came):\b(?:come|comes|coming|came) (?:very |really |too )?(?:slowly|slow)\b",)),
     ("fast", ("fastly",)),
     # tipped fast or slowly: the move into the pouring pose, which tilts the source as it goes
-    ("approach fast", (r"re:\b(?:tilt|tip)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
+    ("approach fast", (r"re(fast|quick|rapid):\b(?:tilt|tip)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
                        r" (?:fast|quick(?:ly)?|rapidly)\b(?! (?:than|as)\b)",
-                       r"re:\b(?:quickly|fast|rapidly) (?:tilt|tip)\w*\b")),
-    ("approach slowly", (r"re:\b(?:tilt|tip)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
+                       r"re(fast|quick|rapid):\b(?:quickly|fast|rapidly) (?:tilt|tip)\w*\b")),
+    ("approach slowly", (r"re(slow|gradual|steadi):\b(?:tilt|tip)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
                          r" (?:slow(?:ly)?|gradually|steadily)\b(?! (?:than|as)\b)",
-                         r"re:\b(?:slowly|gradually|steadily) (?:tilt|tip)\w*\b")),
+                         r"re(slow|gradual|steadi):\b(?:slowly|gradually|steadily) (?:tilt|tip)\w*\b")),
 )

@@ -54,5 +54,5 @@ def containers_named(text: str) -> tuple[str, tuple[str, ...]]:
         return m.group(0)[:m.start(at) - m.start()] + "container" + m.group(0)[m.end(at) - m.start():]
 
     text = _SLOT.sub(lambda m: bowl(m, 3), text)
-    text = _of().sub(lambda m: bowl(m, 3), text)
+    text = _of().sub(lambda m: bowl(m, 3), text) if " of " in text else text     # (compiled only then)
     return text, tuple(said)

@@ -60,23 +60,23 @@ PHRASES: tuple[tuple, ...] = (
                "nearly",                   # a hedge (its stem would be "near")
                r"re:\bbetween(?= -?\d+(?:\.\d+)? and -?\d)")),   # a range: quantities.py's
     # "rather" as a degree ("the bowl is rather slippery"), not a contrast ("rather than")
-    ("hedge", (r"re:\brather(?= (?:very )?(?:slippery|heavy|light|sticky|runny|thick|thin|bouncy|grippy|high|low|fast"
+    ("hedge", (r"re(rather):\brather(?= (?:very )?(?:slippery|heavy|light|sticky|runny|thick|thin|bouncy|grippy|high|low|fast"
                r"|slow|slowly|quick|quickly|far|steep|steeply|full|smooth)\b)",)),
     # "anything but upside down": not it; "not water but something thick": the one said
     ("not", ("anything but",)),
-    ("hedge", (r"re:\bnot (?:liquid|the liquid) but\b",)),
+    ("hedge", (r"re(but):\bnot (?:liquid|the liquid) but\b",)),
     # when the liquid lands: while pouring ("does it slide when the water hits it")
-    ("hedge", (r"re:\bwhen (?:the )?liquid (?:hits|lands in|reaches|goes into|enters) (?:it|the bowl)\b",)),
+    ("hedge", (r"re(when):\bwhen (?:the )?liquid (?:hits|lands in|reaches|goes into|enters) (?:it|the bowl)\b",)),
     # a slippery liquid: its particles slide, a runny one ("a slippery oil")
-    ("runny", (r"re:\b(?:slippery|slick)(?= liquid\b)",)),
+    ("runny", (r"re(slippery|slick):\b(?:slippery|slick)(?= liquid\b)",)),
     # the liquid poured "inside": into the bowl ("I pour much water inside")
-    ("hedge", (r"re:(?<=\bliquid )inside(?= *(?:[,;.!?]|$|and\b|but\b|then\b))",)),
+    ("hedge", (r"re(inside):(?<=\bliquid )inside(?= *(?:[,;.!?]|$|and\b|but\b|then\b))",)),
     # raised or lowered to a number, or below the rim, no move before or after pouring said:
     # where it is held
     # ("lowered to 5 mm above the lip", "the cup lowered below the rim")
-    ("at a height of", (r"re:\b(?:lower(?:ed|ing|s)?|rais(?:e|ed|es|ing)|lift(?:ed|ing|s)?)(?: (?:it|them|the \w+))?"
+    ("at a height of", (r"re(lower|rais|lift):\b(?:lower(?:ed|ing|s)?|rais(?:e|ed|es|ing)|lift(?:ed|ing|s)?)(?: (?:it|them|the \w+))?"
                         r"(?: (?:up|down))? to(?= (?:just |about |around |roughly )?-?\d)(?![^;.?!]*\b(?:before|after|then)\b)",)),
-    ("hedge", (r"re:\b(?:lower(?:ed|ing|s)?|dipp?(?:ed|ing|s)?)(?: (?:it|them|the \w+))?(?: down)?"
+    ("hedge", (r"re(lower|dip):\b(?:lower(?:ed|ing|s)?|dipp?(?:ed|ing|s)?)(?: (?:it|them|the \w+))?(?: down)?"
                r"(?= (?:just |right |slightly |a bit |well )?(?:below|under|beneath)\b)(?![^;.?!]*\b(?:before|after|then)\b)",)),
     *CONTRASTS,               # a value said against another: thicker than water (contrasts.py)
     ("very", (rf"re:\b(?:super duper|super|extremely|incredibly|insanely|ridiculously|awfully|terribly"
@@ -109,7 +109,7 @@ PHRASES: tuple[tuple, ...] = (
     ("below the rim", (rf"re:\b(?:{_DEGREE} )?(?:lower|below) than {_RIM}",)),
     *COMPARISONS,             # with an earlier pour, "more high" (comparisons.py)
     # neither too high nor too low: at medium height
-    ("at medium height", (r"re:\b(?:not too (?:high|low)(?:,| and| or| but)? (?:not )?too (?:low|high)"
+    ("at medium height", (r"re(too):\b(?:not too (?:high|low)(?:,| and| or| but)? (?:not )?too (?:low|high)"
                           r"|neither too (?:high|low) nor too (?:low|high))\b",),
      "read as at medium height: neither high nor low"),
     # a comparison with nothing it is measured from: higher than what?
@@ -124,12 +124,12 @@ PHRASES: tuple[tuple, ...] = (
                r"re:\b(?:at (?:least|most)|past|beyond|up to|no (?:more|less) than)(?= -?\d)")),
     *SPEEDS,                  # how fast the source moves in and away, said in other words (speeds.py)
     # not tilted enough: slightly ("the cup is not turning enough")
-    ("slightly tilted", (r"re:\b(?:not|never) (?:tilt|tip|turn)\w*(?: (?:it|the \w+))? (?:far |much )?enough\b",)),
+    ("slightly tilted", (r"re(enough):\b(?:not|never) (?:tilt|tip|turn)\w*(?: (?:it|the \w+))? (?:far |much )?enough\b",)),
     # just past the rim: to the side of the bowl (not a length past it: "5 cm past the rim")
-    ("to the side", (r"re:(?<!cm )(?<!mm )\b(?:just |slightly |a bit |a little )?(?:past|beyond) the (?:bowl'?s? )?"
+    ("to the side", (r"re(past|beyond):(?<!cm )(?<!mm )\b(?:just |slightly |a bit |a little )?(?:past|beyond) the (?:bowl'?s? )?"
                      r"(?:edge|rim|lip)\b(?! (?:of|by|at) )",)),
     # tipped really far: steeply (too far stays refused: past what?)
-    ("steeply tilted", (r"re:\b(?:tilt|tip)\w*(?: (?:it|them|the \w+))? (?:really|very|way|pretty|quite) far\b"
+    ("steeply tilted", (r"re( far):\b(?:tilt|tip)\w*(?: (?:it|them|the \w+))? (?:really|very|way|pretty|quite) far\b"
                         r"(?! (?:from|away|off|to)\b)",), "read as steeply tilted"),
     # tipped too far: past what? (not far from the bowl)
     (UNCLEAR, (r"re:\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:too |so |that |very )?far\b"
