@@ -74,7 +74,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"slid\w*|slip(?:s|ped|ping)?\b|shift\w*|budg\w*|wobbl\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
      r"|jostl\w*|rock(?:s|ed|ing)?|shak(?:e|es|ing)|shook|translat\w*|drift\w*|creep\w*|scoot\w*"
      r"|displac\w*|(?:(?:get|gets|got|getting|be|being) )?(?:pushed|shoved)\b(?! (?:in|back|away|out)\b)|(?:go|goes|going|get|gets|getting) (?:wiggly|wobbly|shaky|jiggly)"
-     r"|mov(?:e|es|ed|ing)\b(?! (?:in|away|closer|to|out|back|up|down|over|into|off|towards?)\b)",
+     r"|mov(?:e|es|ed|ing)\b(?! (?:in|away|closer|to|out|back|up|down|over|into|off|towards?)\b)|bounc\w* (?:around|about)",
      STILL, True),
     (r"bump\w*|hit(?:s|ting)?|touch\w*|collid\w*|crash\w*|knock\w*|clip(?:s|ped)?|strike\w*"
      r"|bonk\w*|bang\w*|intersect\w*|clash\w*|graz(?:e|es|ed|ing)|scrap(?:e|es|ed|ing)|nudg\w*|clink\w*|slam\w*"
@@ -90,8 +90,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     # what stays in the bowl entered it: "remains" alone holds also when none enters
     (r"(?:stay|stays|remain|remains|stop|stops|stick|sticks|stuck|cling|clings|clung) in(?:side)?(?: the \w+)?"
      r"|(?:stay|stays|remain|remains) (?:in )?there\b", (*_ALL_IN, "liquid_remains_in_destination"), False),
-    (r"(?:go|goes|going|went|get|gets|land|lands|make it|makes it|fall|falls|"
-     r"arrive\w*) (?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*",
+    (r"(?:go|goes|going|went|get|gets|land|lands|make it|makes it|fall|falls|transfer\w*|arrive\w*) (?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*|get (?:the |all (?:the )?)?(?:water|liquid|milk|it|everything) (?:in|into)\b",
      _ALL_IN, False),
     (r"miss(?:es|ed|ing)?|overshoot\w*|undershoot\w*|fall\w* short", _ALL_IN, True),
     (r"safe(?:ly)?|(?:be |is )?(?:fine|ok|okay|alright|all right)\b|(?:a )?(?:good|bad) idea|risky"
@@ -116,7 +115,7 @@ _HOLDING = {"robot", "arm", "gripper", "hand"}
 #: table", "spill out of the cup", "go into the bowl"): the scene's words stay the scene's.
 _REST = ("each other|one another|at all times|all the time|the whole time|at any point|at any time|throughout|on|onto|over|out|of|in|into|inside|outside|the|a|an|table|tablecloth|floor|counter|countertop|worktop|bench|stove|tray|top|"
          "ground|place|everywhere|anywhere|at|all|any|anything|it|its|liquid|water|bowl|cup|glass|"
-         "destination|source|target|container|rim|edge|sides?|middle|centre|center|much|too|even|ever|really|very|"
+         "destination|source|target|container|rim|edge|sides?|middle|centre|center|drop|drops|much|too|even|ever|really|very|"
          "up|down|off|away|again|then|across|along|around|against|between|"
          # how much it happens ("does it shift a little"): the outcome's, not an amount of liquid
          "little|bit|lot|slightly|tiny")
@@ -323,7 +322,8 @@ def hear(text: str) -> Heard:
         # "don't tip it out": an imperative, not a question
         imperative = bool(m.group("neg")) and not subject and m.group("aux") in ("do", "does")
         lead = _CLAUSE.split(m.string[:m.start()])[-1].split() if m.group("aux") in ("is", "are", "was", "were") else []
-        if _acts(lead + subject, names, m) or _around().spans(before) or _state(m) or imperative:
+        tipped = names == ("destination_upright",) and _containers().spans(lead) and not {"bowl", "destination"} & {*lead}
+        if _acts(lead + subject, names, m) or _around().spans(before) or _state(m) or imperative or tipped:
             return m.group(0)
         if lead and not subject and re.search(rf"\bif {re.escape(' '.join(lead))} *$", m.string[:m.start()]):
             raise UserError(f'"if {" ".join(lead)} {m.group(0).strip()}" {FOLLOWS}')    # "if the bowl is moving"

@@ -62,6 +62,8 @@ PHRASES: tuple[tuple, ...] = (
     # "rather" as a degree ("the bowl is rather slippery"), not a contrast ("rather than")
     ("hedge", (r"re(rather):\brather(?= (?:very )?(?:slippery|heavy|light|sticky|runny|thick|thin|bouncy|grippy|high|low|fast"
                r"|slow|slowly|quick|quickly|far|steep|steeply|full|smooth)\b)",)),
+    # "is a 100 degree tilt enough?": whether it happens, asked
+    ("hedge", (r"re(enough):\benough(?= *[?.!]* *$)",)),
     # "anything but upside down": not it; "not water but something thick": the one said
     ("not", ("anything but",)),
     ("hedge", (r"re(but):\bnot (?:liquid|the liquid) but\b",)),
