@@ -97,14 +97,16 @@ def _handled(tokens: list[Token], i: int, j: int) -> bool:
     article), or its subject in its clause ("the cup, tilted": a new clause; "a glass
     pouring"), a bowl
     called a bowl excepted: the destination's name, its tilt the pour's."""
-    if j >= 0 and tokens[j].word in _HANDLING and tokens[j].clause == tokens[i].clause:
-        return True
+    if tokens[i].raw.split()[-1] in ("bowl", "bowls"):
+        return False                    # the destination's name: "tilt the bowl halfway" is the pour's tilt
+    if j >= 0 and tokens[j].word in _HANDLING and tokens[j].clause == tokens[i].clause \
+            and not any(tokens[m].word in ("and", "or") for m in range(j + 1, i)):
+        return True                     # (not "the mug comes in fast and the bowl is light")
     k = i + 1
     while k < len(tokens) and tokens[k].word in _BEING:
         k += 1
     return (k < len(tokens) and (tokens[k].word in _HANDLING or tokens[k].raw in ("pours", "pouring"))
-            and tokens[k].clause - tokens[i].clause <= 1
-            and tokens[i].raw.split()[-1] not in ("bowl", "bowls"))     # "a heavy bowl, tilted": the pour's
+            and tokens[k].clause - tokens[i].clause <= 1)
 
 
 def _ones(tokens: list[Token], roles: dict[int, str], placeable: frozenset[str]) -> dict[int, str]:
