@@ -97,6 +97,9 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:stop|stops|stopping|prevent|prevents|preventing) (it|them|the [a-z]+) (?=[a-z]+ing\b)", r"so that \1 does not "),
     # "goal: empty the bottle completely": so that it empties
     (r"\b(?:goal|aim|objective|task|target)s?(?: is)?:? (?:to )?(?:empty|drain) (?:out )?(?:the whole|all of the|all the"
+     r"|the entire|the) ([a-z]+)(?: (?:completely|fully|entirely|totally))?(?= into (?:the |a )?bowl\b)",
+     r"so that the \1 empties and it all goes"),      # "... into the bowl": it goes in too
+    (r"\b(?:goal|aim|objective|task|target)s?(?: is)?:? (?:to )?(?:empty|drain) (?:out )?(?:the whole|all of the|all the"
      r"|the entire|the) ([a-z]+)(?: (?:completely|fully|entirely|totally))?\b", r"so that the \1 empties"),
     # "I'd like to empty the whole mug": so that it empties
     (r"\b(?:i|we) (?:want|need|would like|wish|am trying|are trying) to (?:empty|drain) (?:out )?(?:the whole|all of the"
@@ -150,7 +153,7 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
 _WANTING_CUED = (
     # "I want every drop in the bowl": so that it goes in
     (Cued(r"\b(?:i|we) (?:want|need|would like) (every drop|all of it|it all|everything|all the \w+) (?=(?:in|into|inside)\b)",
-          ("want", "need", "like")), r"so that \1 goes "),
+          ("want", "need", "like")), r"so that \1 stays "),
     # "and have it all land in the bowl": so that it does
     (Cued(r"\bhave (it all|it|everything|all of it) (?=(?:land|go|end up|stay)\b)", ("have ",)), r"so that \1 "),
     # "I'd like zero spill", "we want no mess": so that nothing spills
