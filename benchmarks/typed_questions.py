@@ -6,7 +6,8 @@ expectations asked or wanted where the reader hears them); the misreads (a
 question answered as another scene, or one the vocabulary cannot express
 answered at all); the silent drops (a word of a question answered neither
 read, said back, shown as ignored nor a word of its frame); and the
-refusals, each one line.
+refusals, each one line. Last, the first measurements of the sets that
+record one (`# blind:`), pooled: the reader as each set first met it.
 
 Against an older reader (one without `read_question`), the scene alone is
 compared and silent drops are not counted: it does not say what it read.
@@ -119,6 +120,13 @@ def main() -> None:
                f"({path.name})", measures[-1], blind(path))
     if len(measures) > 1:
         report("all held-out questions, pooled", {**pooled(measures), "wrong": []})
+    firsts = [f for f in map(blind, question_files()) if f]
+    if firsts:
+        counts = [tuple(map(int, re.match(r"(\d+) of (\d+) read as meant, (\d+) misread, (\d+) silent", f).groups()))
+                  for f in firsts]
+        read, of, misread, dropped = (sum(c[k] for c in counts) for k in range(4))
+        print(f"first measurements, blind, of the {len(firsts)} sets that record one: {read} of {of} read as meant "
+              f"({100 * read / of:.0f}%), {misread} misread, {dropped} silent drops")
 
 
 def report(title: str, m: dict, first: str | None = None) -> None:
