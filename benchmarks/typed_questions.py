@@ -1,6 +1,8 @@
 """Questions as people type them, held out (benchmarks/heldout_questions*.txt,
 each written by a writer who had not seen the vocabulary, annotated
-afterwards, never tuned on), per file and pooled: of the questions the
+afterwards; a set's `# blind:` line records its one measurement before
+any change made for it, and the reader may have been changed for its
+failures since), per file and pooled: of the questions the
 vocabulary can express, the share read as meant (the scene, and the
 expectations asked or wanted where the reader hears them); the misreads (a
 question answered as another scene, or one the vocabulary cannot express
