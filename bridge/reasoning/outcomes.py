@@ -85,7 +85,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:stay|stays|keep|keeps|be|is)? ?clear(?: of)?", ("source_clear",), False),
     (r"(?:come|comes|coming|came|get|gets|pour|pours|flow|flows|run|runs|drain\w*) out"
      r"|(?:go|goes|going|went) out\b(?! of (?:the |a |an |my )?(?!source\b)(?:[a-z]+ )?(?:bowl|destination)\b)"
-     r"|empt(?:y|ies|ied)(?: out)?|leav(?:e|es|ing) (?:the|it)\b|exit\w*", ("liquid_leaves_source",), False),
+     r"|empt(?:y|ies|ied)(?: out)?|(?:end|ends) up (?:totally |completely |fully )?empty|leav(?:e|es|ing) (?:the|it)\b|exit\w*", ("liquid_leaves_source",), False),
     (r"(?:end|ends|ended|ending) up in(?:side)?", (*_ALL_IN, "liquid_remains_in_destination"), False),
     # what stays in the bowl entered it: "remains" alone holds also when none enters
     (r"(?:stay|stays|remain|remains|stop|stops|stick|sticks|stuck|cling|clings|clung) in(?:side)?(?: the \w+)?"
@@ -104,8 +104,7 @@ _MODALS = r"will|would|does|do|did|could|can|might|may|should|shall"
 _AUX = rf"{_MODALS}|is|are|was|were"
 #: Where a clause starts: before "is" in "if the jug is heavy and tipped", how the source is held.
 _CLAUSE = re.compile(r"[,;:.!?]|\b(?:if|when|while|and|but|so|or|then|what|whether)\b")
-#: A goal's words of how much it wants ("so nothing spills", "every drop"): not the scene's.
-_WHOLE = {"nothing", "none", "no", "every", "each", "drop", "drops", "bit", "single", "last"}
+_WHOLE = {*"nothing none no every each drop drops bit single last".split()}   # a goal's how much: not the scene's
 #: Who acts: a clause with one of these in its subject says what is done, not what happens
 #: ("do I tip the cup"); the source moving is the scene's too ("does the source move slowly").
 _ACTORS = {"i", "we", "you", "robot", "arm", "gripper", "hand", "he", "she", "they"}
@@ -153,7 +152,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
         rf"|{_SHARE}|anything|something|everything|nothing|any (?:liquid|water)|all of it|it all)"
         rf"|{chance}{subject.replace('<subject>', '<csubject>')})"
         rf" (?:all |any |ever |even |still |not )?(?:(?:end|ends|ended) up )?(?:{verbs})\b{end}"
-        rf"(?P<odds> (?:very |really |quite |too )?(?:high|low|big|small|great|likely|unlikely)\b)?")
+        rf"(?P<odds> (?:very |really |quite |too )?(?:high|low|big|small|great|likely|unlikely)\b)?(?: or not\b)?")
     # (or said alone: "splashes?", "drip everywhere?")
     nominal = re.compile(r"\b(?:(?:is|will) there (?:be )?)?(?:any|a|no|some) (?P<v1>spill(?:s|age)?"
                          r"|splash(?:es)?|mess|drips?|puddles?)\b(?! of\b)"
@@ -223,7 +222,8 @@ def _acts(subject: list[str], names: tuple[str, ...], m: re.Match | None = None)
     """Whether a clause with `subject` says what is done rather than what
     happens, or what happens to something the scene does not hold ("is
     the table wobbly": everyday.txt's context nouns)."""
-    actors = _ACTORS - _HOLDING if names == ("source_clear",) else _ACTORS
+    actors = (_ACTORS - _HOLDING if names == ("source_clear",) or (names == ("destination_upright",) and m is not None
+              and "knock" in m.group(0)) else _ACTORS)           # what holds the source knocks the bowl over with it
     head = subject[:subject.index("of")] if "of" in subject else subject     # "the jug of water"
     if names == ("source_clear",) and liquids().spans(head):   # "does the water hit the rim": no
         return True                                             # source hitting it

@@ -162,7 +162,8 @@ _WANTING_CUED = (
     # "best way to get every last drop out of the bottle": so that the bottle empties, a way asked
     (Cued(r"\b(?:the )?(?:best|easiest|safest|quickest) way to (?:get|pour|tip) (?:every last drop|every drop|all of it|it all"
           r"|everything|all the liquid) out(?: of (?:the |a |my )?([a-z]+))?", ("way to",)), r"the best way so that it empties"),
-    (Cued(r"\b(?:i|we) (?:want|need|would like) (none|nothing|no liquid|no water)(?: of it)? (?=(?:on|onto|all over) )",
+    (Cued(r"\b(?:i|we) (?:want|need|would like) (none|nothing|no liquid|no water)(?: of it)?(?: ending up| landing| getting"
+          r"| going)? (?=(?:on|onto|all over) )",
           ("want", "need", "like")), r"so that \1 goes "),
     (Cued(r"\bhow (?:do|can|could|should|would) (?:i|we|you) get (it all|all of it|everything|all the [a-z]+|it|the [a-z]+)"
           r" (?=(?:in|into|inside)\b)", (" get ",)), r"how so that \1 goes "),

@@ -68,7 +68,7 @@ PHRASES: tuple[tuple, ...] = (
     ("not", ("anything but",)),
     ("hedge", (r"re(but):\bnot (?:liquid|the liquid) but\b",)),
     # when the liquid lands: while pouring ("does it slide when the water hits it")
-    ("hedge", (r"re(when):\bwhen (?:the )?liquid (?:hits|lands in|reaches|goes into|enters) (?:it|the bowl)\b",)),
+    ("hedge", (r"re(when|after|once):\b(?:when|after|once) (?:the )?(?:liquid|it) (?:hits|lands in|reaches|goes into|enters|is in) (?:it|the bowl)\b",)),
     # a slippery liquid: its particles slide, a runny one ("a slippery oil")
     ("runny", (r"re(slippery|slick):\b(?:slippery|slick)(?= liquid\b)",)),
     # the liquid poured "inside": into the bowl ("I pour much water inside")
@@ -253,6 +253,7 @@ PHRASES: tuple[tuple, ...] = (
                       "at [the|its] [destination|bowl] rim",
                       "from [the|its] [destination|bowl] rim",
                       "by [the|its] [destination|bowl] rim", "close to [the|its] [destination|bowl] rim",
+                      "right next to [the|its] [destination|bowl] rim", "next to [the|its] [destination|bowl] rim",
                       # poured on the rim, onto its very edge: over it
                       "on [the|its] [destination|bowl] rim", "onto [the|its] [destination|bowl] rim",
                       "onto [the|its] very rim", "on [the|its] very rim")),
