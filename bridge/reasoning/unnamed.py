@@ -29,6 +29,13 @@ _PLACES = frozenset(("front", "back", "rear", "top", "bottom", "middle", "beginn
                      "ceiling", "shelf", "window", "door", "wall", "corner", "puddle", "sink", "air"))
 
 
+#: How much, said before "of" a liquid: an amount, no container ("a bunch of water").
+_AMOUNTS = frozenset(("bunch", "lot", "lots", "load", "loads", "ton", "tons", "heap", "heaps", "pile", "piles",
+                      "couple", "few", "bit", "dash", "drop", "drops", "splash", "glug", "glugs", "ounce", "ounces",
+                      "pint", "pints", "quart", "gallon", "gallons", "liter", "litre", "liters", "litres", "amount",
+                      "quantity", "volume", "portion", "serving", "measure", "shot", "sip", "drizzle", "trickle"))
+
+
 @lru_cache(maxsize=None)
 def _of() -> re.Pattern:
     said = sorted({"liquid", "water", *names("liquid")}, key=len, reverse=True)
@@ -48,7 +55,7 @@ def containers_named(text: str) -> tuple[str, tuple[str, ...]]:
 
     def bowl(m: re.Match, at: int) -> str:
         word = m.group(at)
-        if not unknown_to_reader(word) or word in _PLACES or _mistyped(word):
+        if not unknown_to_reader(word) or word in _PLACES or word in _AMOUNTS or _mistyped(word):
             return m.group(0)
         said.setdefault(f"{word}: read as a container")
         return m.group(0)[:m.start(at) - m.start()] + "container" + m.group(0)[m.end(at) - m.start():]

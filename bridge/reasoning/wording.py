@@ -142,6 +142,8 @@ def _normalised(text: str) -> str:
     text = re.sub(rf"(\d)\s*[{_MINUS}]\s*(?=\d)", r"\1 to ", text)          # 10-20 cm: a range
     text = re.sub(rf"(?<![\w.])[{_MINUS}]\s?(?=\d)", "-", text)             # -10, \u221210
     text = re.sub(r"\bminus\s+(?=\d)", "-", text)
+    # a dash between words ends a clause as a comma does ("held upside down - will any come out")
+    text = re.sub(r"(?<=[a-z?!.)]) +(?:-{1,2}|[\u2013\u2014]) +(?=[a-z(])|(?<=[a-z])[\u2013\u2014](?=[a-z])", ", ", text)
     text = re.sub(r"\bcan't\b|\bcannot\b", "can not", text)
     text = re.sub(r"\bwon't\b", "will not", text)
     text = re.sub(r"n't\b", " not", text)
