@@ -46,6 +46,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.reasoning.lexicon_cache import cached_lexicon
 from pantarhei.bridge.reasoning.negation import (NEGATION_STEMS, covered, opposite, ordinary_among, scope,
                                                  scope_ends, still_between)
 from pantarhei.bridge.reasoning.nouns import ARTICLES, BOWL, CONTEXT, OBJECT_STEMS, Nouns, roles
@@ -93,6 +94,10 @@ class _Lexicon:
 
 @lru_cache(maxsize=None)
 def _lexicon() -> _Lexicon:
+    return cached_lexicon(_built_lexicon, _Lexicon)         # kept between questions (lexicon_cache.py)
+
+
+def _built_lexicon() -> _Lexicon:
     vocab = load_vocabulary()
     props = vocab.propositions
     slot_words = set(MARKER_STEMS) | set(OBJECT_STEMS) | {BOWL}
