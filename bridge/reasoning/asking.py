@@ -270,19 +270,9 @@ def compiled_state(swipl: str) -> Path | None:
     learned theories aside: they are read when asked) and of the swipl
     binary, so that a changed source or another SWI-Prolog never uses an
     old state. None when there is no cache folder to write."""
-    import hashlib
+    from pantarhei.bridge.reasoning.cache_files import cache_file, theory_sources
 
-    base = Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "pantarhei"
-    h = hashlib.sha1()
-    binary = Path(swipl).resolve()
-    sources = sorted(p for p in THEORY_DIR.rglob("*.pl") if "learned" not in p.parts)
-    for p in [binary, *sources]:
-        try:
-            st = p.stat()
-        except OSError:
-            return None
-        h.update(f"{p}\0{st.st_size}\0{st.st_mtime_ns}\0".encode())
-    return base / f"ask-{h.hexdigest()[:16]}.state"
+    return cache_file("ask", [Path(swipl).resolve(), *theory_sources()], ".state")
 
 
 def _compile_state(swipl: str, state: Path) -> None:

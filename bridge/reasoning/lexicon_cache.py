@@ -8,13 +8,12 @@ read, or is damaged, is built again; a folder that cannot be written
 keeps nothing, and the lexicon is built each time."""
 from __future__ import annotations
 
-import hashlib
 import json
 import os
 from pathlib import Path
 from typing import Callable, TypeVar
 
-from pantarhei.theory import THEORY_DIR
+from pantarhei.bridge.reasoning.cache_files import cache_file, theory_sources
 
 T = TypeVar("T")
 
@@ -23,17 +22,7 @@ _READER = Path(__file__).parent
 
 def _path() -> Path | None:
     """Where the lexicon of the present sources is kept, or None."""
-    base = Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "pantarhei"
-    h = hashlib.sha1()
-    sources = sorted([*_READER.glob("*.py"), *_READER.glob("*.txt"),
-                      *(p for p in THEORY_DIR.rglob("*.pl") if "learned" not in p.parts)])
-    for p in sources:
-        try:
-            st = p.stat()
-        except OSError:
-            return None
-        h.update(f"{p}\0{st.st_size}\0{st.st_mtime_ns}\0".encode())
-    return base / f"lexicon-{h.hexdigest()[:16]}.json"
+    return cache_file("lexicon", sorted([*_READER.glob("*.py"), *_READER.glob("*.txt"), *theory_sources()]), ".json")
 
 
 def _encode(lexicon) -> dict:
