@@ -165,7 +165,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
                          r"|\b(?:the |any |a )?(?:spill(?:s|age)?|splash(?:es|ing)?|drips?|mess)"
                          r" (?:outcome|result|risk|rate|amount|chance|probability|likelihood)s?\b")
     goal = re.compile(
-        rf"\b(?:without (?P<gneg>any |a |making (?:a |any )?)?(?P<gwho>(?:it|them|the [a-z]+) )?(?:ever |even )?"
+        rf"\b(?:without (?P<gneg>any (?:of (?:it|them|the [a-z]+) )?|a |making (?:a |any )?)?(?P<gwho>(?:it|them|the [a-z]+) )?(?:ever |even )?"
         rf"(?:getting |being )?"
         rf"|so(?: that| as)?(?P<gsub>(?: (?!not\b)"
         rf"[a-z]+){{0,4}}?)(?P<gnot> not| never)? (?:(?:to|will|does|do|would|can|could|all|"

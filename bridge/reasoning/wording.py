@@ -83,7 +83,8 @@ _PRONOUNS = "i|it|we|you|they|he|she|this|that"
 _CHAT = {"u": "you", "ur": "your", "wat": "what", "wut": "what", "wot": "what", "realy": "really",
          "rly": "really", "lite": "light", "b4": "before", "frm": "from", "alot": "a lot",
          "tiped": "tipped", "tipd": "tipped", "evrywhere": "everywhere", "evry": "every",
-         "pls": "please", "plz": "please", "abt": "about", "shud": "should", "wud": "would"}
+         "pls": "please", "plz": "please", "abt": "about", "shud": "should", "wud": "would",
+         "outta": "out of", "kinda": "kind of", "tho": "though", "cuz": "because", "coz": "because"}
 _CHATTED = (rf"\b(?:{'|'.join(_CHAT)})\b|\by(?= (?:does|do|did|is|are|was|would|will|can|not)\b)"
             r"|\bits(?= (?:too|to|so|very|really|right|just|not|over|at|in|on|upside|nearly|almost|only"
             r"|going|held|[a-z]+ed)\b)")
