@@ -73,11 +73,13 @@ PHRASES: tuple[tuple, ...] = (
     ("runny", (r"re(slippery|slick):\b(?:slippery|slick)(?= liquid\b)",)),
     # the liquid poured "inside": into the bowl ("I pour much water inside")
     ("hedge", (r"re(inside):(?<=\bliquid )inside(?= *(?:[,;.!?]|$|and\b|but\b|then\b))",)),
-    # raised or lowered to a number, or below the rim, no move before or after pouring said:
-    # where it is held
-    # ("lowered to 5 mm above the lip", "the cup lowered below the rim")
-    ("at a height of", (r"re(lower|rais|lift):\b(?:lower(?:ed|ing|s)?|rais(?:e|ed|es|ing)|lift(?:ed|ing|s)?)(?: (?:it|them|the \w+))?"
-                        r"(?: (?:up|down))? to(?= (?:just |about |around |roughly )?-?\d)(?![^;.?!]*\b(?:before|after|then)\b)",)),
+    # raised, lowered or brought to a number, or below the rim, no move before or after pouring
+    # said: where it is held while pouring ("lowered to 5 mm above the lip", "brought down to 2 cm
+    # above the rim while pouring", "the cup lowered below the rim")
+    ("at a height of", (r"re(lower|rais|lift|brought|bring):\b(?:lower(?:ed|ing|s)?|rais(?:e|ed|es|ing)|lift(?:ed|ing|s)?"
+                        r"|(?:brought|bring|brings|bringing) (?:down|up))(?: (?:it|them|the \w+))?"
+                        r"(?: (?:up|down))? to(?= (?:just |about |around |roughly |only )?-?\d)(?![^;.?!]*\b(?:before|after|then)\b)",),
+     "read as held there while pouring"),
     ("hedge", (r"re(lower|dip):\b(?:lower(?:ed|ing|s)?|dipp?(?:ed|ing|s)?)(?: (?:it|them|the \w+))?(?: down)?"
                r"(?= (?:just |right |slightly |a bit |well )?(?:below|under|beneath)\b)(?![^;.?!]*\b(?:before|after|then)\b)",)),
     *CONTRASTS,               # a value said against another: thicker than water (contrasts.py)
@@ -163,9 +165,6 @@ PHRASES: tuple[tuple, ...] = (
     # poured into the sink, onto the table: a place the vocabulary has no bowl for
     (UNCLEAR, (r"re:\b(?:(?:pour(?:s|ed|ing)?|spill(?:s|ed|ing)?)(?: it| them| the \w+| \w+)? "
                r"(?:on|onto|into|in|over|down)|into|onto) (?:the |a |hedge )?context\b",)),
-    # brought to a height while pouring: held there ("lowered to 5 mm above the lip during the pour")
-    ("held", (r"re(lowered|raised|lifted|brought):\b(?:lowered|raised|lifted|brought down|brought up) to(?= (?:about |around |just |only )?\d[^,;.?!]*"
-              r"\b(?:during|while|when) (?:the )?pour)",), "read as held there while pouring"),
     # what is left in the source is what it holds: "a little cream left in the jug"
     ("hedge", (r"re(left):(?:(?<=liquid )|(?<=much )|(?<=little )|(?<=bit )|(?<=some )|(?<=any )|(?<=lot ))left"
                r"(?= (?:in|inside) (?:the |a |it\b|my |its |our |hedge ))",),
