@@ -75,6 +75,10 @@ _WANT = re.compile(r"(?:\b(?:i|we) |^|(?<=[.!?] ))(?:want|need|would like|wish)(
                    r"|every drop|each drop|every bit|all (?:of )?the liquid"
                    r"|the (?!source\b)[a-z]+)(?= (?:not |never )?to\b)")
 
+#: A goal of emptying the source: "goal: empty the bottle completely".
+_EMPTYING = (r"\b(?:goal|aim|objective|task|target)s?(?: is)?:? (?:to )?(?:empty|drain) (?:out )?(?:the whole|all of the"
+             r"|all the|the entire|the) ([a-z]+)(?: (?:completely|fully|entirely|totally))?")
+
 #: Other ways of saying a goal, said as "so that ...": "keep the cup still" (not "keep the
 #: source upright": how it is held), "don't let it overflow", "make sure it does not spill"
 #: (the words they drop are fillers).
@@ -93,20 +97,15 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     # "need to empty a heavy jug of syrup": so that it empties
     (r"(?:^|\b(?:i|we) )(?:need|want|have) to (?:empty|drain) (?:out )?(?:a|the|my) ((?:[a-z]+ )?[a-z]+)(?= of\b|$|[ ,.;!?])",
      r"so that the \1 empties"),
-    # "how can I stop the mug clinking into the bowl": so that it does not
-    (r"\b(?:stop|stops|stopping|prevent|prevents|preventing) (it|them|the [a-z]+) (?=[a-z]+ing\b)", r"so that \1 does not "),
-    # "goal: empty the bottle completely": so that it empties
-    (r"\b(?:goal|aim|objective|task|target)s?(?: is)?:? (?:to )?(?:empty|drain) (?:out )?(?:the whole|all of the|all the"
-     r"|the entire|the) ([a-z]+)(?: (?:completely|fully|entirely|totally))?(?= into (?:the |a )?bowl\b)",
-     r"so that the \1 empties and it all goes"),      # "... into the bowl": it goes in too
-    (r"\b(?:goal|aim|objective|task|target)s?(?: is)?:? (?:to )?(?:empty|drain) (?:out )?(?:the whole|all of the|all the"
-     r"|the entire|the) ([a-z]+)(?: (?:completely|fully|entirely|totally))?\b", r"so that the \1 empties"),
+    # "goal: empty the bottle completely": so that it empties ("... into the bowl": it goes in too)
+    (rf"{_EMPTYING}(?= into (?:the |a )?bowl\b)", r"so that the \1 empties and it all goes"),
+    (rf"{_EMPTYING}\b", r"so that the \1 empties"),
     # "I'd like to empty the whole mug": so that it empties
     (r"\b(?:i|we) (?:want|need|would like|wish|am trying|are trying) to (?:empty|drain) (?:out )?(?:the whole|all of the"
      r"|all the|the entire|the) ([a-z]+)\b", r"so that the \1 empties"),
-    # "avoids the cup hitting the bowl", "prevent the bowl sliding"
-    (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing) (it|them|the [a-z]+) (?=[a-z]+ing\b)",
-     r"so that \1 does not "),
+    # "avoids the cup hitting the bowl", "prevent the bowl sliding", "stop the mug clinking"
+    (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|stop|stops|stopping) (it|them|the [a-z]+)"
+     r" (?=[a-z]+ing\b)", r"so that \1 does not "),
     # "to avoid spilling", "prevent splashing", "minimise dripping"
     (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|minimi[sz]e|minimi[sz]ing|reduce|reducing)"
      r" (?=(?:any )?[a-z]+ing\b)", "so that it does not "),
