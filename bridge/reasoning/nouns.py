@@ -66,7 +66,7 @@ def roles(tokens: list[Token], placeable: frozenset[str]) -> dict[int, str]:
             # (the liquid in a jug is held in it: "lots of water in a light jug", not "pour water in")
             held = (j >= 1 and tokens[j].word == "in" and tokens[j - 1].word == "liquid"
                     and all(tokens[m].word != "pour" for m in range(max(0, j - 4), j - 1)))
-            usual = ((t.raw in _poured_from() or name in _poured_from())
+            usual = ((t.raw in poured_from() or name in poured_from())
                      and (held or not (j >= 0 and tokens[j].word in _INTO)))
             k = i + 1                   # "can a heavy pot be poured into a bowl": the pot is poured
             while k < len(tokens) and tokens[k].word in _BEING:
@@ -94,9 +94,9 @@ _HANDLING = {stem(w) for w in ("tilt", "tip", "tipped", "lift", "raise", "lower"
 def _handled(tokens: list[Token], i: int, j: int) -> bool:
     """Whether the bowl at `i` is what is handled: the object of a verb of
     handling (`j`: the first word before it that is no value word or
-    article), or its subject in its clause ("the cup, tilted": a new clause; "a glass
-    pouring"), a bowl
-    called a bowl excepted: the destination's name, its tilt the pour's."""
+    article), or its subject in its clause ("the cup, tilted": a new
+    clause; "a glass pouring"); a bowl called a bowl excepted: the
+    destination's name, its tilt the pour's."""
     if tokens[i].raw.split()[-1] in ("bowl", "bowls"):
         return False                    # the destination's name: "tilt the bowl halfway" is the pour's tilt
     if j >= 0 and tokens[j].word in _HANDLING and tokens[j].clause == tokens[i].clause \
@@ -227,7 +227,7 @@ class Nouns:
 
 
 @lru_cache(maxsize=None)
-def _poured_from() -> frozenset[str]:
+def poured_from() -> frozenset[str]:
     """The names of the containers people pour from (everyday.txt), singular
     and plural: whole ("measuring cup") or, for a one-word name, as the last
     word of the bowl's ("milk carton")."""

@@ -6,7 +6,8 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from pantarhei.bridge.reasoning.everyday import Matcher, alternation, forms, names, sections
+from pantarhei.bridge.reasoning.everyday import Matcher, alternation, names, sections
+from pantarhei.bridge.reasoning.nouns import poured_from
 
 
 @lru_cache(maxsize=None)
@@ -32,14 +33,7 @@ def in_the_source(said: str) -> bool:
     """Whether liquid said to stay in a bowl (`said`: "stays in the jug")
     stays in the source: one named so, or one people pour from."""
     bowl = said.split()[-1]
-    return bowl == "source" or bowl in _poured_from()
-
-
-@lru_cache(maxsize=None)
-def _poured_from() -> frozenset[str]:
-    """The one-word names of everyday.txt's bowls poured from, as written."""
-    return frozenset(f[0] for s in sections() if s.words == "bowl poured from"
-                     for p in s.phrases if " " not in p for f in forms(p))
+    return bowl == "source" or bowl in poured_from()
 
 
 def out_of_the_source(text: str, at: int) -> bool:
