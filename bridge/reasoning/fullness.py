@@ -1,11 +1,12 @@
 """How full the source is, said as a share of full: "half full", "a quarter
-full", "three quarters full", "filled to 90 percent", "nearly full". A
-full source is what the vocabulary's fullest amount holds (very_much_liquid,
-150 to 200 particles); the share of it said spans a range of particles,
-read as the amount of liquid whose range holds the most of it, said back
-("half full: read as much liquid, the amount that holds most of 75 to 100
-particles"). A rewrite of words.py's kind (see wording.py): `spans(words)`
-gives each phrase and the words it is read as.
+full", "three quarters full", "filled to 90 percent" ("nearly full" says
+no share: everyday.txt refuses it). A full source is what the
+vocabulary's fullest amount holds (very_much_liquid, 150 to 200
+particles); the share of it said spans a range of particles, read as the
+amount of liquid whose range holds the most of it (half: 75 to 100
+particles, much liquid), said back (SAID). A rewrite of words.py's kind
+(see wording.py): `spans(words)` gives each phrase and the words it is
+read as.
 """
 from __future__ import annotations
 

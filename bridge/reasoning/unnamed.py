@@ -18,7 +18,7 @@ from pantarhei.bridge.reasoning.suggestions import misspelt
 #: last word of its noun: "from a hevy jug" names the jug).
 _SLOT = re.compile(r"\b(from|into|out of|outside|inside|outside of|inside of) (the|a|an|my|your|our|this|that|his|her)"
                    r" ([a-z]{3,})(?= *(?:[,;:.!?]|$| (?:held|and|or|but|with|into|onto|to|over|if|when|while|then|from"
-                   r"|does|do|will|would|is|was|at|in|so|without|tilted|tipped|from)\b))")
+                   r"|does|do|will|would|is|was|at|in|so|without|tilted|tipped)\b))")
 #: A container of a liquid: "a full demijohn of wine", "a carboy of wort".
 _OF = r"\b(a|an|the|my|your|one) (?:(full|half full|heavy|light) )?([a-z]{3,}) of (?=(?:the |some )?(?:{liquid})\b)"
 
@@ -50,7 +50,7 @@ def _mistyped(word: str) -> bool:
 
 def containers_named(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with each container the reader has no name for
-    read as "bowl", and what is said back of each."""
+    read as "container", and what is said back of each."""
     said: dict[str, None] = {}
 
     def bowl(m: re.Match, at: int) -> str:
