@@ -115,14 +115,15 @@ def blind(path: Path) -> str | None:
 
 
 def main() -> None:
-    measures = []
+    measures, firsts = [], []
     for path in question_files():
         measures.append(measure(path))
+        firsts.append(blind(path))
         report(f"held-out questions typed by a writer who had not seen the vocabulary "
-               f"({path.name})", measures[-1], blind(path))
+               f"({path.name})", measures[-1], firsts[-1])
     if len(measures) > 1:
         report("all held-out questions, pooled", {**pooled(measures), "wrong": []})
-    firsts = [f for f in map(blind, question_files()) if f]
+    firsts = [f for f in firsts if f]
     if firsts:
         counts = [tuple(map(int, re.match(r"(\d+) of (\d+) read as meant, (\d+) misread, (\d+) silent", f).groups()))
                   for f in firsts]
