@@ -17,6 +17,11 @@ from functools import lru_cache
 from pathlib import Path
 
 FILE = Path(__file__).with_name("everyday.txt")
+#: The word that phrases too vague to read become ("pour from above": over
+#: the destination's middle, or high above it?), and a section of refused
+#: phrases is read as: reading.py places it nowhere, so a question that
+#: says one is refused naming the phrase.
+UNCLEAR = "unclear"
 
 
 @dataclass(frozen=True)

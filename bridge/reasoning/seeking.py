@@ -19,6 +19,7 @@ import re
 from functools import lru_cache
 
 from pantarhei.bridge.reasoning.cued import Cued
+from pantarhei.bridge.reasoning.speeds import POURING_SPEED
 from pantarhei.bridge.reasoning.vessels import destinations
 
 #: What a value is asked of: a height, a tilt, a way ...
@@ -169,11 +170,19 @@ _WANTING_CUED = (
 )
 
 
+#: A speed asked of pouring itself ("what pour speed", "what speed should I pour at"), which
+#: the vocabulary has none of (the moves in and away have): no value a plan finds.
+_POURING_SPEED = re.compile(POURING_SPEED)
+
+
 def sought(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` without the words that ask for a value, and those words
-    (to be called only where a goal is said)."""
-    found = [m.group(0).strip() for m in _asking().finditer(text)]
-    return _asking().sub(" ", text), tuple(found)
+    (to be called only where a goal is said); a speed of pouring is left
+    for the scene, which refuses it."""
+    found = [m for m in _asking().finditer(text) if not _POURING_SPEED.search(m.group(0))]
+    for m in reversed(found):
+        text = f"{text[:m.start()]} {text[m.end():]}"
+    return text, tuple(m.group(0).strip() for m in found)
 
 
 #: "can I pour ... without ...", "without hitting the bowl, could we pour ...": whether it can

@@ -4,12 +4,23 @@ a quick in-and-out (both moves; "fast in fast out"), moving fast with no
 way said (both moves), "the robot come fastly" (it comes in), and tipping
 the source fast or slowly, which is the move into the pouring pose: it
 tilts the source as it goes ("tip it really slowly" is a slow approach).
-A pour said fast or slowly is refused where words.py says so: pouring has
+A pour said fast or slowly, or a speed asked of pouring ("what speed should I
+pour at"), is refused where words.py and this module say so: pouring has
 no speed of its own.
 """
 from __future__ import annotations
 
+from pantarhei.bridge.reasoning.everyday import UNCLEAR
+
+#: A speed said of pouring itself: "what speed should I pour at", "the speed of pouring", "a
+#: pour speed" (a speed said of a move is read below).
+POURING_SPEED = (r"\b(?:speed|rate|pace|velocity)s? (?:(?:of|for) |(?:(?:should|do|can|could|would|must|shall)"
+                 r" (?:i|we|you|one|it|they|the robot) )?(?:to )?)pour\w*\b(?! (?:it |them |the \w+ )?(?:in|away|out)\b)"
+                 r"|\bpour(?:ing)? (?:speed|rate|pace|velocity)\b")
+
 SPEEDS: tuple[tuple, ...] = (
+    # a speed asked of pouring itself: refused, pouring has no speed of its own
+    (UNCLEAR, (rf"re(speed|rate|pace|velocit):{POURING_SPEED}",)),
     # a speed said with "speed": "at high speed" is fast, "at a slow speed" slowly (a pour
     # said so is refused below: pouring has no speed)
     ("fast", (r"re(speed|velocity|pace):\b(?:at |with )?(?:a |full |top )?(?:high|great|full|top|fast|quick|rapid|max(?:imum)?)"

@@ -9,7 +9,7 @@ import re
 from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.reasoning.everyday import alternation, names, sections
+from pantarhei.bridge.reasoning.everyday import UNCLEAR, alternation, names, sections
 from pantarhei.bridge.reasoning.nouns import BOWL
 from pantarhei.bridge.reasoning.spelling import english
 from pantarhei.bridge.reasoning.wording import Token
@@ -40,7 +40,7 @@ def misspelt(words: list[str]) -> list[str]:
 #: Phrasings that would be read, for words that could not be placed: (pattern
 #: of the words as written, what to say).
 HINTS: tuple[tuple[str, str], ...] = (
-    (r"\bpour\w*\b.*\b(?:slow|fast|quick|gentl|careful|rapid|speed|velocity|pace)",
+    (r"\bpour\w*\b.*\b(?:slow|fast|quick|gentl|careful|rapid|speed|velocity|pace)|\b(?:speed|rate|pace|velocity)\b.*\bpour",
      'pouring has no speed of its own: say how fast the source moves in or away ("move in '
      'slowly", "move away fast")'),
     (r"\b(?:not|without)\b.*\b(?:tilt|tip|lean)",
@@ -118,7 +118,7 @@ def hints() -> tuple[tuple[str, str], ...]:
     would be read; and for a pour into a place or into a liquid, why not."""
     onto = r"^(?:\w+ )*(?:on|onto|into|in|over|down) (?:the |a |my |our |some )?"
     return HINTS + tuple((rf"^(?:{alternation(s.phrases)})$", s.said_back)
-                         for s in sections() if s.words == "unclear") + (
+                         for s in sections() if s.words == UNCLEAR) + (
         (rf"{onto}(?:{alternation(names('context'))})$",
          'the vocabulary pours into a bowl: say "into a bowl" (where the bowl stands is not '
          'read: "a bowl on the table")'),

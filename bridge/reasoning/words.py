@@ -26,7 +26,7 @@ from __future__ import annotations
 
 from functools import lru_cache
 
-from pantarhei.bridge.reasoning.everyday import Matcher, names, sections
+from pantarhei.bridge.reasoning.everyday import UNCLEAR, Matcher, names, sections
 from pantarhei.bridge.reasoning.fullness import SAID as FULLNESS_SAID, Fullness
 from pantarhei.bridge.reasoning.bodies import BODIES
 from pantarhei.bridge.reasoning.comparisons import COMPARATIVES as _COMPARATIVES, COMPARISONS, DEGREE as _DEGREE
@@ -37,11 +37,6 @@ from pantarhei.bridge.reasoning.numerals import NumberWords
 from pantarhei.bridge.reasoning.properties import SURFACE_SAID, Levels, Surfaces, Values
 from pantarhei.bridge.reasoning.ramps import Ramps
 from pantarhei.bridge.reasoning.speeds import SPEEDS
-
-#: The word that phrases too vague to read become ("pour from above": over
-#: the destination's middle, or high above it?): reading.py places it
-#: nowhere, so a question that says one is refused naming the phrase.
-UNCLEAR = "unclear"
 
 #: Value words an intensifier may raise to "very" ("incredibly high" is very high; a value
 #: with no "very" of its own is the value: "incredibly heavy" is heavy). "really" is a
