@@ -32,7 +32,7 @@ def misspelt(words: list[str]) -> list[str]:
     import difflib
 
     near = {w: difflib.get_close_matches(w.lower(), _spelt(), n=1, cutoff=0.8) for w in words
-            if w.lower() not in _spelt()}      # a word spelt right is not misspelt
+            if w.lower() not in _spelt() and not re.search(r"\d", w)}   # spelt right, or a number: not misspelt
     return [f'did you mean {", ".join(f"{m[0]!r} for {w!r}" for w, m in near.items() if m)}?'
             ] if any(near.values()) else []
 

@@ -193,7 +193,10 @@ PHRASES: tuple[tuple, ...] = (
                r"re:(?<!after )(?<!before )\bpour(?:s|ed|ing)?(?: (?!(?:then|and|move|moving|bring|"
                r"approach|retreat|in|away|out|before|after|lift|lower|raise|pose|position)\b)[a-z]+){1,3}"
                r" (?:slow(?:ly|er)?|fast(?:er)?|quick(?:ly|er)?|gently|carefully|rapidly)\b")),
-    # a side of the middle is offset sideways, its side unread ("a bit to the left of centre")
+    # a side of the middle is offset sideways, its side unread ("a bit to the left of centre"); a
+    # length to a side of it is refused, as "5 cm to the left" is: its side is the number's sign
+    (UNCLEAR, (rf"re(left|right):(?<![\w.-])-?\d+(?:\.\d+)? (?:{'|'.join(_LENGTHS)}) (?:to )?(?:the )?(?:left|right) (?:of|from)"
+               r" (?:the )?(?:destination |bowl )?(?:centre|center|middle)\b",)),
     ("offset sideways", (r"re:\b(?:(?:just|slightly|a (?:little |tiny )?bit|a little|a tad|off) )?(?:to )?(?:the )?"
                          r"(?:left|right) (?:of|from) (?:the )?(?:destination |bowl )?(?:centre|center|middle)\b",),
      "read as offset sideways: the vocabulary's offset names no side"),
