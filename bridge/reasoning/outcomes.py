@@ -36,6 +36,7 @@ from pantarhei.bridge.reasoning.everyday import Matcher, names
 from pantarhei.bridge.reasoning.frames import CONTACT, asked_plainly
 from pantarhei.bridge.reasoning.phases import STILL, during
 from pantarhei.bridge.reasoning.seeking import sought, wanting
+from pantarhei.bridge.reasoning.strikers import containers, striker
 from pantarhei.bridge.reasoning.vessels import OUT_OF, destinations, filled, in_the_source, liquids, out_of_the_source
 
 _ALL_IN = ("liquid_enters_destination",)
@@ -242,32 +243,6 @@ def _around() -> Matcher:
     return Matcher(names("context"))
 
 
-@lru_cache(maxsize=None)
-def _containers() -> Matcher:
-    """The names of everyday.txt's bowls, those poured from among them."""
-    return Matcher(names("bowl"))
-
-
-def _striker(subject: list[str], names: tuple[str, ...], m: re.Match) -> list[str]:
-    """`subject`, with the bowl that strikes another said as the source: what
-    hits a bowl, or knocks it over, is the source ("does a heavy pot hit the
-    bowl": a heavy source, not a heavy destination); not one hit ("is the
-    bowl hit"), nor where no bowl is struck."""
-    verb = next((v for g, v in m.groupdict().items() if g[0] == "v" and v), "")
-    contact = names == ("source_clear",) or (names == ("destination_upright",) and verb.startswith("knock"))
-    spans = _containers().spans(subject)
-    if not (contact and spans and m.group("aux") in _MODALS.split("|")) or "by" in subject:
-        return subject
-    after = m.string[m.end():m.end() + 60].split()[:4]
-    struck = f"{verb} {m.group('rest') or ''} {' '.join(after)}"
-    if not re.search(rf"\b(?:{destinations()})\b", struck):
-        return subject
-    end = spans[0][1]
-    for first, last in spans[1:]:       # "a glass tumbler": one bowl's name
-        end = last if first == end else end
-    return [*subject[:end], "as", "the", "source", *subject[end:]]
-
-
 def _state(m: re.Match) -> bool:
     """Whether an asked clause says how full the source is, or how it is
     held, not what happens: "the jug is almost empty", "if the jug is
@@ -322,17 +297,23 @@ def hear(text: str) -> Heard:
         # "don't tip it out": an imperative, not a question
         imperative = bool(m.group("neg")) and not subject and m.group("aux") in ("do", "does")
         lead = _CLAUSE.split(m.string[:m.start()])[-1].split() if m.group("aux") in ("is", "are", "was", "were") else []
-        tipped = names == ("destination_upright",) and _containers().spans(lead) and not {"bowl", "destination"} & {*lead}
+        tipped = names == ("destination_upright",) and containers().spans(lead) and not {"bowl", "destination"} & {*lead}
         if _acts(lead + subject, names, m) or _around().spans(before) or _state(m) or imperative or tipped:
             return m.group(0)
         if lead and not subject and re.search(rf"\bif {re.escape(' '.join(lead))} *$", m.string[:m.start()]):
             raise UserError(f'"if {" ".join(lead)} {m.group(0).strip()}" {FOLLOWS}')    # "if the bowl is moving"
+        # "if the cup is bouncy and it hits the bowl, what happens": the copula is the scene's, the
+        # outcome a clause of its own after "and", supposed with it as a condition of what is
+        # asked: what follows an outcome ("what if the bowl is light and the jug hits it" asks it)
+        if lead and re.search(r"\b(?:and|n|but)\b", " ".join(subject)) and re.search(
+                rf"(?<!\bwhat )\b(?:if|when|once) {re.escape(' '.join(lead))} *$", m.string[:m.start()]):
+            raise UserError(f'"{" ".join(lead)} {m.group(0).strip()}" {FOLLOWS}')
         asked.extend(n for n in names if n not in asked)
         # "does much stay in the jug", "will some milk spill": how much of the liquid the
         # outcome is asked of, not how much the source holds
         while subject and subject[0] in _QUANTIFIERS:
             subject = subject[1:]
-        kept = " ".join(_striker(subject, names, m)) if m.group("aux") or m.group("chance") else ""
+        kept = " ".join(striker(subject, names, m, m.group("aux") in _MODALS.split("|"))) if m.group("aux") or m.group("chance") else ""
         # "is the chance of spilling high": the odds, heard; "does it splash high": the scene's
         odds = m.group("odds") or ""
         said_odds = bool(m.group("chance") or _PART_OF.search(kept))
