@@ -20,7 +20,7 @@ from functools import lru_cache
 
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.speeds import POURING_SPEED
-from pantarhei.bridge.reasoning.vessels import destinations
+from pantarhei.bridge.reasoning.vessels import destinations, liquids
 
 #: What a value is asked of: a height, a tilt, a way ...
 _VALUE = (r"(?:height|tilt|tilting|angle|way|speed|distance|position|spot|place|amount|pose"
@@ -179,10 +179,20 @@ def sought(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` without the words that ask for a value, and those words
     (to be called only where a goal is said); a speed of pouring is left
     for the scene, which refuses it."""
-    found = [m for m in _asking().finditer(text) if not _POURING_SPEED.search(m.group(0))]
-    for m in reversed(found):
-        text = f"{text[:m.start()]} {text[m.end():]}"
-    return text, tuple(m.group(0).strip() for m in found)
+    found = [_value_asked(m) for m in _asking().finditer(text) if not _POURING_SPEED.search(m.group(0))]
+    said = tuple(text[start:end].strip() for start, end in found)
+    for start, end in reversed(found):
+        text = f"{text[:start]} {text[end:]}"
+    return text, said
+
+
+def _value_asked(m: re.Match) -> tuple[int, int]:
+    """Where `m` asks for a value: the liquid it pours is left for the scene ("how could we
+    pour the syrup so nothing spills": a sticky liquid)."""
+    words = m.group(0).split()
+    if len(words) > 2 and words[-2] == "the" and liquids().spans(words[-1:]):
+        return m.start(), m.start() + m.group(0).rstrip().rfind(" the ")
+    return m.start(), m.end()
 
 
 #: "can I pour ... without ...", "without hitting the bowl, could we pour ...": whether it can
