@@ -198,15 +198,22 @@ def _value_asked(m: re.Match) -> tuple[int, int]:
 #: "can I pour ... without ...", "without hitting the bowl, could we pour ...": whether it can
 #: be done so; not "how can I pour without ...", which asks for a value.
 _CAN = re.compile(r"\b(?:can|could|may) (?:i|we|you|one|the robot)\b")
+#: The robot asked whether it can: "can the robot pour ...", "could the arm", "can it".
+_CAN_IT = re.compile(r"\b(?:can|could|may) (?:it|(?:the|a|an|my|our|your|this|that) (?:robot(?: arm)?|arm|gripper|machine))\b")
 
 
 def if_it_can(text: str, goals: tuple[str, ...], manners: bool) -> tuple[tuple[str, ...], tuple[str, ...]]:
     """(asked, goals) of `goals` heard in normalised `text`: a question
-    whether one can pour in a manner said (`manners`) without an outcome
-    ("can I pour from low down at the edge without hitting the bowl?") asks
-    whether the outcome happens there; said of no manner ("can I pour
-    without spilling?") it wants the outcome, which a plan finds."""
-    if not (manners and goals and " without " in f" {text} " and _CAN.search(text)
-            and not re.search(r"\b(?:how|what|which|where|so(?: that| as)?) ", text)):
+    whether the robot can pour without an outcome ("can the robot pour
+    honey without making a mess?") asks whether its pour, the scene said
+    (the ordinary pour where nothing is), has the outcome, and wants it;
+    whether a person can pour so in a manner said ("can I pour from low
+    down at the edge without hitting the bowl?") asks whether the outcome
+    happens there; said of no manner ("can I pour without spilling?") it
+    wants the outcome, which a plan finds."""
+    if not (goals and " without " in f" {text} " and not re.search(r"\b(?:how|what|which|where|so(?: that| as)?) ", text)):
         return (), goals
-    return tuple(g.removeprefix("neg(").removesuffix(")") for g in goals), ()
+    asked = tuple(g.removeprefix("neg(").removesuffix(")") for g in goals)
+    if _CAN_IT.search(text):
+        return asked, goals
+    return (asked, ()) if manners and _CAN.search(text) else ((), goals)

@@ -295,7 +295,7 @@ HEARD = {
     'will the juice go splat?': ([], ['no_spill'], []),
     'does the liquid enter the target?': ([], ['liquid_enters_destination'], []),
     'does the robot arm hit the bowl when it moves in?': ([], ['source_clear'], []),
-    'can the robot pour without the cup getting knocked?': ([], [], ['source_clear']),
+    'can the robot pour without the cup getting knocked?': ([], ['source_clear'], ['source_clear']),
     "what's the chance the bowl tips if the bowl weighs 30 grams?": (
         ['light_destination'], ['destination_upright'], []),
     'is the chance of spilling high if I pour from the side?': (['pour_to_side'], ['no_spill'], []),
