@@ -44,7 +44,7 @@ CUES = {
     "yaw": ("yaw", "turn", "rotate", "spin", "twist"),
     "side": ("side", "away", "far", "off", "distance", "axis", "x"),
     "offset": ("sideways", "offset", "axis", "y"),
-    "height": ("high", "above", "below", "height", "up", "rim", "z", "drop", "fall"),
+    "height": ("high", "above", "below", "height", "up", "rim", "z", "h", "drop", "fall"),
 }
 #: The words read with a number besides its cues: a roll is "tilted sideways", a pitch
 #: "rotated forward".

@@ -25,6 +25,7 @@ from bisect import bisect_left
 from dataclasses import dataclass
 
 from pantarhei.bridge.reasoning.cued import Cued
+from pantarhei.bridge.reasoning.asides import restated
 from pantarhei.bridge.reasoning.words import rewrites
 from pantarhei.theory.lexicon import load_vocabulary
 
@@ -135,7 +136,8 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text = re.sub(r"\b(p|pr|prob)\s*\((?=[^()]*\))",
                   lambda m: said.setdefault(f"{m.group(1)}: read as the chance of") or "the chance of (",
                   text)
-    return _normalised(text), tuple(said)
+    text, again = restated(_normalised(text))         # "-2 cm (i.e. below the rim)"
+    return text, (*said, *again)
 
 
 def _normalised(text: str) -> str:
@@ -165,7 +167,7 @@ def _normalised(text: str) -> str:
                   "0 mm ", text)
     # "5in", "5 in above": inches (not "pour 5 in the bowl")
     text = re.sub(r"(\d)(?:in|\s+in(?= (?:above|below|over|under|up|high|off|from|away|to the"
-                  r"|higher|lower|sideways|offset)\b|\s*(?:[,;.!?)]|$)))\b", r"\1 inches", text)
+                  r"|higher|lower|sideways|offset|relative)\b|\s*(?:[,;.!?)]|$)))\b", r"\1 inches", text)
     # tilted back by an angle: the angle back, negative ("tilted back 20 degrees")
     text = re.sub(r"\b((?:tilt|tip|lean)\w*(?: (?:it|the \w+))?) back(?:wards?)?(?: (?:by|at|to|about|around))*"
                   r" (\d+(?:\.\d+)?)(?= ?(?:degrees?|degs?)?\b(?! ?[-\d]))", r"\1 back at -\2", text)
