@@ -20,7 +20,8 @@ what `ask` says back of it ("milk: read as an ordinary liquid ...").
 The phrases of the stages and the moves between them ("put it back
 upright", "pull it out fast") are moves.py's, a comparison with an
 earlier pour comparisons.py's, a speed said in other words speeds.py's,
-each applied at its place in PHRASES.
+how near the bowl the source is nearness.py's, each applied at its place
+in PHRASES.
 """
 from __future__ import annotations
 
@@ -33,6 +34,7 @@ from pantarhei.bridge.reasoning.comparisons import COMPARATIVES as _COMPARATIVES
 from pantarhei.bridge.reasoning.contrasts import CONTRASTS
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.moves import MOVES
+from pantarhei.bridge.reasoning.nearness import NEARNESS
 from pantarhei.bridge.reasoning.numerals import NumberWords
 from pantarhei.bridge.reasoning.properties import SURFACE_SAID, Levels, Surfaces, Values
 from pantarhei.bridge.reasoning.ramps import Ramps
@@ -226,13 +228,8 @@ PHRASES: tuple[tuple, ...] = (
                r"(?:the |a )?context\b",)),
     # a length from the rim: inside it or outside? (from the centre is the vocabulary's)
     (UNCLEAR, ("re:(?:" + "|".join(rf"(?<=\d {u} )" for u in _LENGTHS) + r")(?:(?:away )?from|off) (?:the )?"
-               r"(?:destination |bowl )?(?:rim|edge|lip|brim)\b",
-               # right next to the bowl: beside it, or near its rim?
-               r"re:\b(?:right )?(?:next to|beside|alongside) (?:the )?(?:destination|bowl)\b(?! rim)")),
-    # held close to the bowl: just above it (its edge is "near the rim")
-    ("low", (r"re(close to|near the bowl|near bowl):\b(?:very |right )?(?:close to (?:the )?(?:destination|bowl)"
-             r"|near (?:the )?bowl)\b(?! rim)",),
-     "read as low: just above the bowl's rim (\"near the rim\" would say over its edge)"),
+               r"(?:destination |bowl )?(?:rim|edge|lip|brim)\b",)),
+    *NEARNESS,                # close to the bowl, next to it, too close (nearness.py)
     # where the stream is aimed: "aim for the centre of the bowl" pours centred over it
     ("centred", (r"re:\baim(?:s|ed|ing)?(?: it| the \w+)? (?:for|at|into|towards?) (?:the )?(?:very )?"
                  r"(?:cent(?:re|er)|middle)\b",)),

@@ -1,0 +1,20 @@
+"""How near the bowl the source is said to be, part of words.py's PHRASES:
+close to the bowl, or near it, is just above its rim (low; "near the rim"
+would say over its edge); too close, or too near, with no bowl said ("does
+the cup hit the bowl if it's too close") is close to it; right next to the
+bowl, or beside it, is refused (beside it, or near its rim?)."""
+from __future__ import annotations
+
+from pantarhei.bridge.reasoning.everyday import UNCLEAR
+
+NEARNESS: tuple[tuple, ...] = (
+    # right next to the bowl: beside it, or near its rim?
+    (UNCLEAR, (r"re:\b(?:right )?(?:next to|beside|alongside) (?:the )?(?:destination|bowl)\b(?! rim)",)),
+    # held close to the bowl: just above it (its edge is "near the rim")
+    ("low", (r"re(close to|near the bowl|near bowl):\b(?:very |right )?(?:close to (?:the )?(?:destination|bowl)"
+             r"|near (?:the )?bowl)\b(?! rim)",),
+     "read as low: just above the bowl's rim (\"near the rim\" would say over its edge)"),
+    # too close, with no bowl said: to the bowl, just above it
+    ("low", (r"re(too close|too near|so close|so near):\b(?:too|so) (?:close|near)\b(?! (?:to|by|from|the|its|a|together)\b)",),
+     "read as low: close to the bowl, just above its rim"),
+)
