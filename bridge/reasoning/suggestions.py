@@ -70,6 +70,8 @@ HINTS: tuple[tuple[str, str], ...] = (
      'with both ends ("10 to 20 cm above the rim", "30 to 40 degrees")'),
     (r"^how ", 'asks for a value: say one ("pour high", "tilted halfway") and `ask` answers '
                'what happens, or give `pantarhei plan` the outcome wanted and it finds a pour'),
+    (r"^(?:at|level with|even with) (?:the )?(?:\w+ )?(?:rim|edge|lip) (?:height|level)$",
+     'at the rim\'s height: just above it or just below it? say "just above the rim" or "just below the rim"'),
     (r"^from above$|^overhead$|^from the top$",
      'above: how high, or where? say "high above the bowl" or "centred over the bowl"'),
     (r"^all the way$", 'all the way: tilted how far? say "steeply tilted" (about 90 degrees) or '

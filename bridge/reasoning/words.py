@@ -233,7 +233,9 @@ PHRASES: tuple[tuple, ...] = (
     # where the stream is aimed: "aim for the centre of the bowl" pours centred over it
     ("centred", (r"re:\baim(?:s|ed|ing)?(?: it| the \w+)? (?:for|at|into|towards?) (?:the )?(?:very )?"
                  r"(?:cent(?:re|er)|middle)\b",)),
-    ("rim", ("edge", "lip", "brim", "border")),
+    # the rim's height is the rim's ("just below the rim height"); at it, above or below it?
+    (UNCLEAR, (r"re(level|height):\b(?:at|level with|even with) (?:the )?(?:bowl |destination )?(?:rim|edge|lip) (?:height|level)\b",)),
+    ("rim", ("edge", "lip", "brim", "border", "rim height", "rim level")),
     ("low", (r"re:\b(?:just|right|slightly|barely|a bit|a little) (?:above|over) (?:the )?"
              r"(?:destination |bowl )?rim\b",
              r"re:\b(?:slightly|barely|a bit|a little|a tad)(?= (?:above|over) (?:the )?(?:destination"
