@@ -89,8 +89,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|empt(?:y|ies|ied)(?: out)?|(?:end|ends) up (?:totally |completely |fully )?empty|leav(?:e|es|ing) (?:the|it)\b|exit\w*", ("liquid_leaves_source",), False),
     (r"(?:end|ends|ended|ending) up in(?:side)?", (*_ALL_IN, "liquid_remains_in_destination"), False),
     # what stays in the bowl entered it: "remains" alone holds also when none enters
-    (r"(?:stay|stays|remain|remains|stop|stops|stick|sticks|stuck|cling|clings|clung) in(?:side)?(?: the \w+)?"
-     r"|(?:stay|stays|remain|remains) (?:in )?there\b", (*_ALL_IN, "liquid_remains_in_destination"), False),
+    (r"(?:stay|stays|remain|remains) (?:in )?there\b"
+     r"|(?:stay|stays|remain|remains|stop|stops|stick|sticks|stuck|cling|clings|clung) in(?:side)?(?: the \w+)?",
+     (*_ALL_IN, "liquid_remains_in_destination"), False),
     (r"(?:go|goes|going|went|get|gets|land|lands|make it|makes it|fall|falls|transfer\w*|arrive\w*) (?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*|get (?:the |all (?:the )?)?(?:water|liquid|milk|it|everything) (?:in|into)\b",
      _ALL_IN, False),
     (r"miss(?:es|ed|ing)?|overshoot\w*|undershoot\w*|fall\w* short", _ALL_IN, True),
@@ -128,6 +129,8 @@ _PART_OF = re.compile(r"\b(?:most|all|any|some|much|half|none|part|a lot|a bit|a
 #: Quantifiers that begin the subject of an outcome asked ("does much stay in", "will some
 #: spill"): the outcome's words, not an amount of liquid in the scene.
 _QUANTIFIERS = {*"much most some any all little none half lots plenty less more every each last drop drops".split()}
+#: Once the pour is done, said between two outcomes asked: "... once it's poured or ...".
+_ONCE = r"(?: (?:once|after|when) (?:it is |it has been |it )?(?:poured|done|finished|in))?"
 #: How much of the liquid, asked: "what fraction of the liquid spills".
 _SHARE = r"(?:what|which) (?:fraction|proportion|share|percentage|part|amount)(?: of (?:it|the \w+))?"
 
@@ -173,7 +176,8 @@ def _patterns() -> tuple[re.Pattern, ...]:
         rf"any) )?)(?:{verbs})\b{end}")
     # what is asked, or wanted, next to it: "will it spill or overflow?", "without spilling or
     # tipping the bowl over"
-    more = re.compile(rf"\boutcome (?:,|or|and|nor)? ?(?:(?:will|does|do|would|even|just|only) )?(?:it |the \w+ )?"
+    # ("does it stay in there once it's poured or slosh back out": after the pour, when it is judged)
+    more = re.compile(rf"\boutcome{_ONCE} ?(?:, or|, and|,|or|and|nor)? ?(?:(?:will|does|do|would|even|just|only) )?(?:it |the \w+ )?"
                       rf"(?:{verbs})\b{end}")
     # an outcome said first, with no word that asks: "spills when poured from high?", "sloshing
     # over the rim if tilted steeply?", "pour high, spill or not"
@@ -329,7 +333,7 @@ def hear(text: str) -> Heard:
 
     def as_more(m: re.Match) -> str:
         names, bad = _which(m)
-        said = re.sub(r"^outcome (?:,|or|and|nor)? ?(?:(?:will|does|do|would|even) )?", "", m.group(0))
+        said = re.sub(rf"^outcome{_ONCE} ?(?:, or|, and|,|or|and|nor)? ?(?:(?:will|does|do|would|even) )?", "", m.group(0))
         own = re.match(r"(?:it|the \w+) ", said)
         names = _staying(names, said[own.end():] if own else said, own.group(0).split() if own else last)
         if was_goal:                  # wanted as the one before it: "without spilling or tipping"

@@ -6,7 +6,9 @@ goes away", "during the retreat phase" (the move away). "Still in the same
 spot after the jug is taken away" asks all three: the bowl has not moved
 by then. A phase said by a clause that ends there is heard with the
 outcome; one going on ("when the cup comes in fast") is left for the
-scene too.
+scene too. What stays in the bowl is judged after the move away, so that
+move said with it is heard ("does it slosh back out once the cup is
+gone").
 
 And a place the liquid may land instead of the bowl, asked beside it:
 "does it go in the bowl or on the table" asks whether it spills too; and
@@ -39,9 +41,13 @@ _PHASES = (
     (("destination_still_retreat", "destination_still_settle"),      # after the pour: the move away and after
      r"afterwards?\b|after (?:the )?pour(?:ing)?\b(?! (?:ends|is over|is done|has ended|finishes)\b)"),
     (None,      # after the move away: by then, every phase is past
-     rf"after {_WHO} (?:is|gets?|has been) (?:taken|moved|pulled|drawn) away\b"
-     rf"|after {_WHO} (?:goes|moves|has gone|has moved|pulls) away\b|after the retreat\b"),
+     rf"(?:after|once) {_WHO} (?:is|gets?|has been) (?:taken|moved|pulled|drawn) away\b"
+     rf"|(?:after|once) {_WHO} (?:goes|moves|has gone|has moved|pulls) away\b|after the retreat\b"
+     rf"|(?:after|once) {_WHO} (?:is|has) gone\b"),
 )
+#: What stays in the bowl is judged once everything settles: the move away said with it is heard
+#: ("does it slosh back out once the cup is gone").
+_SETTLED = _PHASES[-1][1]
 #: Where a clause ends: the phase heard with its outcome is all of it.
 _ENDS = r"(?= *(?:[?.!,;:]|$| or\b| and\b| lol\b))"
 #: A place the liquid may land said beside the bowl it goes in: the spill asked too.
@@ -69,6 +75,10 @@ def during(text: str, asked: list[str]) -> tuple[str, list[str], list[str]]:
         asked = [*asked, *(n for n in ("liquid_remains_in_destination",) if n not in asked)]
         text = text[:stays.start("said")] + text[stays.end():]
     if not all(n in asked for n in STILL):
+        m = re.search(rf"\boutcome (?P<said>{_SETTLED}){_ENDS}", text) if "liquid_remains_in_destination" in asked else None
+        if m:
+            heard.append(m.group("said"))
+            text = text[:m.start("said")] + text[m.end():]
         return text, asked, heard
     for phase, words in _PHASES:
         m = re.search(rf"\boutcome(?P<gap>(?: ,)?(?: (?:at all|all|around|about|much|even))*) (?P<said>{words})", text)
