@@ -35,7 +35,7 @@ from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.everyday import Matcher, names
 from pantarhei.bridge.reasoning.frames import CONTACT, asked_plainly
 from pantarhei.bridge.reasoning.phases import STILL, during
-from pantarhei.bridge.reasoning.seeking import sought, wanting
+from pantarhei.bridge.reasoning.seeking import reaches, sought, wanting
 from pantarhei.bridge.reasoning.strikers import containers, striker
 from pantarhei.bridge.reasoning.vessels import OUT_OF, destinations, filled, in_the_source, liquids, out_of_the_source
 
@@ -344,6 +344,7 @@ def hear(text: str) -> Heard:
         return take(m)
 
     was_goal = True
+    said = text
     text, wants = wanting(text)
     phrases.extend(wants)
     text, framed = asked_plainly(text)
@@ -368,6 +369,9 @@ def hear(text: str) -> Heard:
     text, asked, when = during(text, asked)         # "does the bowl slide when the cup comes in"
     text, goals, wanted_when = during(text, goals)
     phrases.extend((*when, *wanted_when))
+    if goals and reaches(said):         # "I want nothing on the counter. Is pouring from 20 cm ok?"
+        wanted = [g.removeprefix("neg(").removesuffix(")") for g in goals]
+        asked = [n for n in asked if n not in OUTCOMES[-1][1] or n in wanted] + [n for n in wanted if n not in asked]
     return Heard(tuple(asked), tuple(goals), tuple(phrases), text)
 
 

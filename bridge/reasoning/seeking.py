@@ -72,7 +72,7 @@ def _asking() -> re.Pattern:
 _KEEPS = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? {_VALUE}) (keeps|will keep|would keep)"
                     r" (it|them|the \w+) (in(?: the \w+)?|still|upright|steady|in place)\b")
 #: Wanting an outcome: "I want the bowl not to move", "we'd like it to stay in".
-_WANT = re.compile(r"(?:\b(?:i|we) |^|(?<=[.!?] ))(?:want|need|would like|wish)(?: for)? (it(?: all)?|all of it|everything|them"
+_WANT = re.compile(r"(?:\b(?:i|we) |^|(?<=[.!?] ))(?:want|need|would like|wish)(?: for)? (it(?: all)?|all of it|everything|them|nothing"
                    r"|every drop|each drop|every bit|all (?:of )?the liquid"
                    r"|the (?!source\b)[a-z]+)(?= (?:not |never )?to\b)")
 
@@ -84,6 +84,8 @@ _EMPTYING = (r"\b(?:goal|aim|objective|task|target)s?(?: is)?:? (?:to )?(?:empty
 #: source upright": how it is held), "don't let it overflow", "make sure it does not spill"
 #: (the words they drop are fillers).
 _WANTING = tuple((re.compile(p), r) for p, r in (
+    # "I don't want the cup to touch the bowl": so that it does not
+    (r"\b(?:i|we) (?:do not|never) (?:want|wish)(?: for)? (it|them|the (?!source\b)[a-z]+) to ", r"so that \1 does not "),
     (r"\bkeep(?:s|ing)? (the (?!source\b)[a-z]+) (still|steady|in place|put)\b", r"so that \1 stays \2"),
     (r"\b(?:do not|never) let (it|them|the [a-z]+|any(?: of it)?) ", r"so that \1 does not "),
     # "keep the bowl from sliding", "stop it from splashing"
@@ -165,6 +167,9 @@ _WANTING_CUED = (
     (Cued(r"\b(?:i|we) (?:want|need|would like) (none|nothing|no liquid|no water)(?: of it)?(?: ending up| landing| getting"
           r"| going)? (?=(?:on|onto|all over) )",
           ("want", "need", "like")), r"so that \1 goes "),
+    # "I don't want any of it on the counter": so that none goes on it
+    (Cued(r"\b(?:i|we) (?:do not|never) (?:want|need) any(?: of it| liquid| water)?(?: ending up| landing| getting| going)?"
+          r" (?=(?:on|onto|all over) )", ("want", "need")), "so that none goes "),
     (Cued(r"\bhow (?:do|can|could|should|would) (?:i|we|you) get (it all|all of it|everything|all the [a-z]+|it|the [a-z]+)"
           r" (?=(?:in|into|inside)\b)", (" get ",)), r"how so that \1 goes "),
 )
@@ -193,6 +198,23 @@ def _value_asked(m: re.Match) -> tuple[int, int]:
     if len(words) > 2 and words[-2] == "the" and liquids().spans(words[-1:]):
         return m.start(), m.start() + m.group(0).rstrip().rfind(" the ")
     return m.start(), m.end()
+
+
+#: Whether a scene said reaches a goal said: "is pouring from 20 cm ok?", "is that a problem?",
+#: "is a 100 degree tilt enough?", "does a 90 degree tilt do that?", "is that possible?".
+_REACHES = Cued(r"\b(?:is|would|will)(?: (?:that|this|it|[a-z]+ing\b[a-z0-9 ]{0,30}?|(?:a|an|the) [a-z0-9 ]{1,30}?))?"
+                r" (?:be )?(?:ok|okay|fine|alright|all right|a problem|an issue|enough|possible|doable|feasible"
+                r"|achievable)(?= *[?.!]* *$)|\b(?:does|would|will|can|could)(?: (?:a|an|the|that|this) [a-z0-9 ]{1,30}?)?"
+                r" (?:do (?:that|it|this|the trick)|work|achieve (?:that|it|this))(?= *[?.!]* *$)",
+                ("ok", "fine", "alright", "all right", "problem", "issue", "enough", "possible", "doable", "feasible",
+                 "achievable", " do ", "work", "achieve"))
+
+
+def reaches(text: str) -> bool:
+    """Whether normalised `text` asks whether the scene it says reaches the
+    goal it says (to be asked only where a goal is said): the goal's
+    expectations are then what it asks, not whether the pour is safe."""
+    return _REACHES.search(text) is not None
 
 
 #: "can I pour ... without ...", "without hitting the bowl, could we pour ...": whether it can
