@@ -2,7 +2,8 @@
 PHRASES (applied before its comparatives, which refuse a comparison with
 nothing): each question is read alone, so against the ordinary pour
 ("slower than the previous pour" is slowly, "not as high as last time"
-low, "not tilting as far as before" slightly tilted), said back; and
+low, "not tilting as far as before" slightly tilted, "twice as much
+water" much liquid, "twice as high as usual" high), said back; and
 "more high", "more thick like honey", as learners of English say them,
 are the value itself.
 """
@@ -38,6 +39,11 @@ COMPARISONS: tuple[tuple, ...] = (
     ("slightly tilted", (rf"re( as ):\b(?:not|never) (?:tilt|tip)\w* (?:it |the \w+ )?as (?:far|much)"
                          rf" (?:as {_AS_BEFORE}|hedge\b)",
                          rf"re(less tilted):\bless tilted {_BEFORE}"), "read against the ordinary pour: each question is read alone"),
+    # twice as much, twice as high (as usual): read against the ordinary pour, its value
+    *((value, (rf"re(twice|double|two times|three times):\b(?:twice|double|two times|three times) as (?:{said})"
+               rf"(?: as (?:{_AS_BEFORE}))?(?![^,;:.?!]*\bas\b)",), "read against the ordinary pour: each question is read alone")
+      for said, value in (("much", "much"), ("high", "high"), ("heavy", "heavy"), ("fast|quick|quickly", "fast"),
+                          ("slow|slowly", "slowly"), ("far", "far"), ("thick|sticky", "sticky"))),
     # "more high", "more thick like honey", as learners of English say them: the value itself
     *((value, (rf"re(more ):\bmore (?:{said})\b(?! than\b)",)) for said, value in (
         ("high", "high"), ("low", "low"), ("thick", "sticky"), ("thin", "runny"), ("heavy", "heavy"),
