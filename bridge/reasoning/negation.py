@@ -13,13 +13,26 @@ NEGATIONS = {"not", "never", "no", "without", "nor", "neither", "cannot", "none"
 NEGATION_STEMS = {stem(w) for w in NEGATIONS}
 
 
+#: "none", "nothing", "no liquid" said of a place ("none on the table"): how much liquid is there, up to the
+#: place's noun, not a negation of the rest of the clause ("... when pouring a heavy liquid").
+_PLACED = {stem(w) for w in ("none", "nothing")}
+_AT = {"on", "onto", "in", "into", "over", "outside", "all"}
+_BEFORE_NOUN = {"the", "a", "an", "my", "our", "your", "its", "over", "of", "it"}
+
+
 def scope_ends(tokens: list[Token]) -> list[int]:
     """For each position i, where the scope of a negation at i ends: the
-    end of its clause, or the next "and", "or", "yet"... after it."""
+    end of its clause, or the next "and", "or", "yet"... after it (for
+    "none" or "nothing" said of a place, the place's noun)."""
     ends = [len(tokens)] * len(tokens)
     for j in range(len(tokens) - 2, -1, -1):
         nxt = tokens[j + 1]
         ends[j] = j + 1 if nxt.clause != tokens[j].clause or nxt.word in _SCOPE_ENDS else ends[j + 1]
+    for j, t in enumerate(tokens[:-2]):
+        at = j + 1 + (t.word == "no" and tokens[j + 1].word == "liquid")      # "no liquid on the table"
+        if (t.word in _PLACED or at > j + 1) and tokens[at].word in _AT:
+            noun = next((k for k in range(at + 1, ends[j]) if tokens[k].word not in _BEFORE_NOUN), ends[j] - 1)
+            ends[j] = min(ends[j], noun + 1)
     return ends
 
 

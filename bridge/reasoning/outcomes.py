@@ -128,7 +128,7 @@ _PART_OF = re.compile(r"\b(?:most|all|any|some|much|half|none|part|a lot|a bit|a
                       r"odds|risk)(?: of| that)?\b")
 #: Quantifiers that begin the subject of an outcome asked ("does much stay in", "will some
 #: spill"): the outcome's words, not an amount of liquid in the scene.
-_QUANTIFIERS = {*"much most some any all little none half lots plenty less more every each last drop drops".split()}
+_QUANTIFIERS = {*"much most some any all little none nothing no half lots plenty less more every each last drop drops".split()}
 #: Once the pour is done, said between two outcomes asked: "... once it's poured or ...".
 _ONCE = r"(?: (?:once|after|when) (?:it is |it has been |it )?(?:poured|done|finished|in))?"
 #: How much of the liquid, asked: "what fraction of the liquid spills".

@@ -154,8 +154,11 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
 #: "how do I get all the soup into the bowl" (so that it goes in).
 _WANTING_CUED = (
     # "I want every drop in the bowl": so that it goes in
-    (Cued(r"\b(?:i|we) (?:want|need|would like) (every drop|all of it|it all|everything|all the \w+) (?=(?:in|into|inside)\b)",
+    (Cued(r"(?:^|\b(?:i|we) )(?:want|need|would like) (every drop|all of it|it all|everything|all the \w+) (?=(?:in|into|inside)\b)",
           ("want", "need", "like")), r"so that \1 stays "),
+    # "... and none on the table", wanted beside another: so that none goes on it
+    (Cued(r"\b((?:want|need|like|have|so that)\b.*\b(?:and|with)) (none|nothing)(?: of it)? (?=(?:on|onto|all over) )",
+          (" and none", " and nothing", " with nothing", " with none")), r"\1 so that \2 goes "),
     # "and have it all land in the bowl": so that it does
     (Cued(r"\bhave (it all|it|everything|all of it) (?=(?:land|go|end up|stay)\b)", ("have ",)), r"so that \1 "),
     # "I'd like zero spill", "we want no mess": so that nothing spills
@@ -205,7 +208,8 @@ def _value_asked(m: re.Match) -> tuple[int, int]:
 _REACHES = Cued(r"\b(?:is|would|will)(?: (?:that|this|it|[a-z]+ing\b[a-z0-9 ]{0,30}?|(?:a|an|the) [a-z0-9 ]{1,30}?))?"
                 r" (?:be )?(?:ok|okay|fine|alright|all right|a problem|an issue|enough|possible|doable|feasible"
                 r"|achievable)(?= *[?.!]* *$)|\b(?:does|would|will|can|could)(?: (?:a|an|the|that|this) [a-z0-9 ]{1,30}?)?"
-                r" (?:do (?:that|it|this|the trick)|work|achieve (?:that|it|this))(?= *[?.!]* *$)",
+                r" (?:do (?:that|it|this|the trick)|work|achieve (?:that|it|this))(?= *[?.!]* *$)"
+                r"|(?<=[,:;] )(?:doable|possible|feasible|achievable|ok|okay)(?= *[?.!]* *$)",   # "... - doable?"
                 ("ok", "fine", "alright", "all right", "problem", "issue", "enough", "possible", "doable", "feasible",
                  "achievable", " do ", "work", "achieve"))
 

@@ -72,6 +72,8 @@ HINTS: tuple[tuple[str, str], ...] = (
                'what happens, or give `pantarhei plan` the outcome wanted and it finds a pour'),
     (r"^(?:at|level with|even with) (?:the )?(?:\w+ )?(?:rim|edge|lip) (?:height|level)$",
      'at the rim\'s height: just above it or just below it? say "just above the rim" or "just below the rim"'),
+    (r"^(?:none|nothing|no \w+)(?: of it)? (?:on|onto|in|into|over|all over|outside) ",
+     'none on the table: wanted, or asked? say "so that nothing spills" or "does any spill?"'),
     (r"^from above$|^overhead$|^from the top$",
      'above: how high, or where? say "high above the bowl" or "centred over the bowl"'),
     (r"^all the way$", 'all the way: tilted how far? say "steeply tilted" (about 90 degrees) or '
