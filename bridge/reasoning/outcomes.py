@@ -33,6 +33,7 @@ from functools import lru_cache
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.everyday import Matcher, names
+from pantarhei.bridge.reasoning.nouns import poured_from
 from pantarhei.bridge.reasoning.frames import CONTACT, asked_plainly
 from pantarhei.bridge.reasoning.phases import STILL, during
 from pantarhei.bridge.reasoning.seeking import reaches, sought, wanting
@@ -145,7 +146,8 @@ class Heard:
 
 @lru_cache(maxsize=None)
 def _patterns() -> tuple[re.Pattern, ...]:
-    end = rf"(?P<rest>(?: (?:{_REST}|{destinations()})\b)*)"     # "go into the mug"
+    # "go into the mug", "pour out of the jug"
+    end = rf"(?P<rest>(?: (?:{_REST}|{destinations()}|{'|'.join(sorted(poured_from(), key=len, reverse=True))})\b)*)"
     verbs = "|".join(f"(?P<v{k}>{filled(v)})" for k, (v, _, _) in enumerate(OUTCOMES))
     # (not holding another auxiliary: "do you think it will spill" asks "will it spill")
     subject = rf"(?P<subject>(?: (?!(?:if|when|while|not|{_MODALS})\b)(?:[a-z]+|[0-9][0-9.]*)){{0,16}}?)"
@@ -209,10 +211,14 @@ def _which(m: re.Match) -> tuple[tuple[str, ...], bool]:
     return OUTCOMES[k][1], OUTCOMES[k][2]
 
 
-def _staying(names: tuple[str, ...], said: str, subject: list[str]) -> tuple[str, ...]:
+def _staying(names: tuple[str, ...], said: str, subject: list[str], left: bool = False) -> tuple[str, ...]:
     """What staying (`said`: "stay put", "stay there") asks of `subject`:
     the liquid staying put stays in the bowl it entered; the bowl staying
-    there stays still; anything else, `names`."""
+    there stays still; staying inside, no bowl said, asked beside leaving
+    the source (`left`: "does it come out of the jar or stay inside"),
+    stays in the source; anything else, `names`."""
+    if left and names == (*_ALL_IN, "liquid_remains_in_destination") and re.search(r"\b(?:in|inside)$", said.strip()):
+        return ("liquid_leaves_source",)
     if not re.match(r"(?:stay|stays|remain|remains|keep|keeps|be|is)\b", said) \
             or not re.search(r"\b(?:put|there|in place|where (?:it|they))\b", said):
         return names
@@ -294,7 +300,8 @@ def hear(text: str) -> Heard:
 
     def as_asked(m: re.Match) -> str:
         subject = (m.group("subject") or m.group("csubject") or "").split()
-        names = _staying(_which(m)[0], next(v for g, v in m.groupdict().items() if g[0] == "v" and v), subject)
+        names = _staying(_which(m)[0], next(v for g, v in m.groupdict().items() if g[0] == "v" and v), subject,
+                         "liquid_leaves_source" in asked)
         last[:] = subject
         # "the table is wobbly": the subject before its verb, not the scene's
         before = m.string[:m.start()].split()[-3:] if not subject else []
@@ -335,7 +342,8 @@ def hear(text: str) -> Heard:
         names, bad = _which(m)
         said = re.sub(rf"^outcome{_ONCE} ?(?:, or|, and|,|or|and|nor)? ?(?:(?:will|does|do|would|even) )?", "", m.group(0))
         own = re.match(r"(?:it|the \w+) ", said)
-        names = _staying(names, said[own.end():] if own else said, own.group(0).split() if own else last)
+        names = _staying(names, said[own.end():] if own else said, own.group(0).split() if own else last,
+                         not was_goal and "liquid_leaves_source" in asked)
         if was_goal:                  # wanted as the one before it: "without spilling or tipping"
             holds = (not bad) != negations[-1]
             goals.extend(n if holds else f"neg({n})" for n in names if n not in goals)

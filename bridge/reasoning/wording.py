@@ -156,6 +156,8 @@ def _normalised(text: str) -> str:
     text = re.sub(r"(\d)\s*\u00b0", r"\1 degrees ", text)  # 45\u00b0
     text = re.sub(r"(\d)\s*(?:\"|\u2033)(?=\s|$)", r"\1 inches ", text)   # 3" (inches), 1\u2032 (feet)
     text = re.sub(r"(\d)\s*\u2032(?=\s|$)", r"\1 feet ", text)
+    # out from a bowl, as learners say it: out of it ("is it coming out from the cup")
+    text = re.sub(r"\b((?:come|comes|coming|came|pour|pours|pouring|drain\w*|flow\w*|get|gets|getting) out) from\b", r"\1 of", text)
     # a quantity named before its number: "height: 15 cm", "tilt = 45 deg"
     text = re.sub(r"(?<=[a-z])\s*[:=]\s*(?=[-\u2212]?\d)", " ", text)
     # a contrast said first is said after what it contrasts with: "instead of fast, move in slowly"
