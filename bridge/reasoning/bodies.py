@@ -18,6 +18,10 @@ BODIES: tuple[tuple, ...] = (
     ("slowly", (r"re:\b(?:tak(?:e|es|ing)|took) (?:your|its|my|our|their|the|his|her) time\b",)),
     # lengths by hand: a finger's width, a hand's width (a range, read only where one
     # proposition holds all of it; "a few cm" is numerals.py's)
+    # (said "up", above: "a hand's width up", as "20 cm up")
+    ("1.5 to 2 cm above", ("a finger width up", "a finger breadth up", "one finger width up")),
+    ("7 to 10 cm above", ("a hand width up", "a hand breadth up", "a handbreadth up", "a palm width up",
+                          "one hand width up")),
     ("1.5 to 2 cm", ("a finger width", "a finger breadth", "a fingerbreadth", "one finger width")),
     ("7 to 10 cm", ("a hand width", "a hand breadth", "a handbreadth", "a palm width",
                     "one hand width")),
