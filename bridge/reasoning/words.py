@@ -128,7 +128,7 @@ PHRASES: tuple[tuple, ...] = (
     ("slightly tilted", (r"re(enough):\b(?:not|never) (?:tilt|tip|turn)\w*(?: (?:it|the \w+))? (?:far |much )?enough\b",)),
     # just past the rim: to the side of the bowl (not a length past it: "5 cm past the rim")
     ("to the side", (r"re(past|beyond):(?<!cm )(?<!mm )\b(?:just |slightly |a bit |a little )?(?:past|beyond) the (?:bowl'?s? )?"
-                     r"(?:edge|rim|lip)\b(?! (?:of|by|at) )",)),
+                     r"(?:edge|rim|lip)\b(?: of (?:it|the bowl|the destination)\b)?(?! (?:of|by|at) )",)),
     # tipped really far: steeply (too far stays refused: past what?)
     ("steeply tilted", (r"re( far):\b(?:tilt|tip)\w*(?: (?:it|them|the \w+))? (?:really|very|way|pretty|quite) far\b"
                         r"(?! (?:from|away|off|to)\b)",), "read as steeply tilted"),
