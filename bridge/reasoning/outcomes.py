@@ -161,7 +161,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
         rf"(?P<odds> (?:very |really |quite |too )?(?:high|low|big|small|great|likely|unlikely)\b)?(?: or not\b)?")
     # (or said alone: "splashes?", "drip everywhere?")
     nominal = re.compile(r"\b(?:(?:is|will) there (?:be )?)?(?:any|a|no|some) (?P<v1>spill(?:s|age)?"
-                         r"|splash(?:es)?|mess|drips?|puddles?)\b(?! of\b)"
+                         r"|splash(?:es)?|mess|drips?|puddles?)\b(?! of\b)|\b(?:any|some) (?:spilled|spilt)(?= *[?.!]* *$)"
                          r"|(?:^|(?<=[,:;.?!\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014]))"
                          r"(?:(?:spill(?:s|age)?|splash(?:es)?)(?: (?:everywhere|over))?|(?:drips?|leaks?)(?: (?:everywhere|out|over))?)"
                          r"(?= *[?.!]* *$)"
