@@ -84,8 +84,6 @@ _EMPTYING = (r"\b(?:goal|aim|objective|task|target)s?(?: is)?:? (?:to )?(?:empty
 #: source upright": how it is held), "don't let it overflow", "make sure it does not spill"
 #: (the words they drop are fillers).
 _WANTING = tuple((re.compile(p), r) for p, r in (
-    # "I don't want the cup to touch the bowl": so that it does not
-    (r"\b(?:i|we) (?:do not|never) (?:want|wish)(?: for)? (it|them|the (?!source\b)[a-z]+) to ", r"so that \1 does not "),
     (r"\bkeep(?:s|ing)? (the (?!source\b)[a-z]+) (still|steady|in place|put)\b", r"so that \1 stays \2"),
     (r"\b(?:do not|never) let (it|them|the [a-z]+|any(?: of it)?) ", r"so that \1 does not "),
     # "keep the bowl from sliding", "stop it from splashing"
@@ -153,6 +151,9 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
 #: Wanting, compiled when cued: "I need none of it on the table" (so that none goes on it),
 #: "how do I get all the soup into the bowl" (so that it goes in).
 _WANTING_CUED = (
+    # "I don't want the cup to touch the bowl": so that it does not
+    (Cued(r"\b(?:i|we) (?:do not|never) (?:want|wish)(?: for)? (it|them|the (?!source\b)[a-z]+) to ",
+          ("not want", "never want", "not wish", "never wish")), r"so that \1 does not "),
     # "I want every drop in the bowl": so that it goes in
     (Cued(r"(?:^|\b(?:i|we) )(?:want|need|would like) (every drop|all of it|it all|everything|all the \w+) (?=(?:in|into|inside)\b)",
           ("want", "need", "like")), r"so that \1 stays "),
@@ -180,14 +181,14 @@ _WANTING_CUED = (
 
 #: A speed asked of pouring itself ("what pour speed", "what speed should I pour at"), which
 #: the vocabulary has none of (the moves in and away have): no value a plan finds.
-_POURING_SPEED = re.compile(POURING_SPEED)
+_POURING_SPEED = Cued(POURING_SPEED, ("speed", "rate", "pace", "velocity"))
 
 
 def sought(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` without the words that ask for a value, and those words
     (to be called only where a goal is said); a speed of pouring is left
     for the scene, which refuses it."""
-    found = [_value_asked(m) for m in _asking().finditer(text) if not _POURING_SPEED.search(m.group(0))]
+    found = [_value_asked(m) for m in _asking().finditer(text) if _POURING_SPEED.search(m.group(0)) is None]
     said = tuple(text[start:end].strip() for start, end in found)
     for start, end in reversed(found):
         text = f"{text[:start]} {text[end:]}"
@@ -225,7 +226,8 @@ def reaches(text: str) -> bool:
 #: be done so; not "how can I pour without ...", which asks for a value.
 _CAN = re.compile(r"\b(?:can|could|may) (?:i|we|you|one|the robot)\b")
 #: The robot asked whether it can: "can the robot pour ...", "could the arm", "can it".
-_CAN_IT = re.compile(r"\b(?:can|could|may) (?:it|(?:the|a|an|my|our|your|this|that) (?:robot(?: arm)?|arm|gripper|machine))\b")
+_CAN_IT = Cued(r"\b(?:can|could|may) (?:it|(?:the|a|an|my|our|your|this|that) (?:robot(?: arm)?|arm|gripper|machine))\b",
+               ("can ", "could ", "may "))
 
 
 def if_it_can(text: str, goals: tuple[str, ...], manners: bool) -> tuple[tuple[str, ...], tuple[str, ...]]:
