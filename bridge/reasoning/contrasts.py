@@ -4,7 +4,9 @@ thicker than water is sticky, one thinner than honey runny ("instead of
 water use something thicker"; the everyday word list has read water as
 "liquid" and honey as "sticky liquid" by then); a place the vocabulary
 cannot name, set against one it reads ("from the side rather than from
-above"), is read as nothing, the place said beside it read; a little off
+above"), is read as nothing, the place said beside it read, and so is an
+ordinary liquid set against a liquid said ("a thick liquid instead of
+water"); a little off
 the centre is near the rim (off-centre with no amount stays refused: how
 far?); "right in the middle" is in the middle; a length "relative to the
 rim" is above it (a minus sign below it), "-2 cm height relative to the rim" too; "lower, close to the rim" is
@@ -38,6 +40,9 @@ CONTRASTS: tuple[tuple, ...] = (
      "read as a runny liquid: thinner than a sticky one"),
     ("hedge", (rf"re(instead|rather|in place):(?:(?:,|;) )?\b{_CONTRAST} {_VAGUE}\b(?= *(?:$|[,;.!?]))",),
      "read as nothing: a place the vocabulary cannot name, set against the one said beside it"),
+    # an ordinary liquid set against the liquid said ("a thick liquid instead of water"): nothing more
+    ("hedge", (rf"re(instead|rather|in place):(?<=liquid ){_CONTRAST} (?:the |plain |regular |normal |ordinary )?liquid\b",),
+     "read as nothing: an ordinary liquid, set against the one said beside it"),
     ("near the rim", (r"re(off the |off cent|off midd|off dest|off bowl):\b(?:just |only )?(?:slightly|a (?:little |tiny )?bit|a little|a tad) off (?:the )?"
                          r"(?:destination |bowl )?(?:centre|center|middle)\b",),
      "read as near the rim: a little off the middle, where the rim is nearer"),
