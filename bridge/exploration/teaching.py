@@ -75,6 +75,18 @@ pair it is in, one after the other: what the curiosity cannot learn, it
 leaves). The value adds `doubt` times the first and `newness` times the
 second, neither weighed by how often B is asked: what they teach the model
 serves every question.
+
+A whole (a candidate of more than `body` propositions: a uniformly random
+valid antecedent that learn.pl explores every `whole_every` steps) is
+said by no question, so no answer a question asks moves with it. Its
+value is `newness` times the chance that its consequent is new:
+
+    fresh(W) = 1 - sum_{c had} prod_e P(verdict_e = c_e)
+
+with P(verdict_e = 1) the model's mean of Q_e(x) over the pours of W's
+next batch, and c over the consequents the explored antecedents have (the
+majority verdicts of the pours in each one's support): a behaviour the
+theory does not have yet, as random exploration finds them.
 """
 from __future__ import annotations
 
@@ -166,11 +178,13 @@ def _valid(P: np.ndarray, S: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
              candidates: Sequence[Sequence[str]], weights: Weights, batch: int,
-             seed: int, iteration: int = 1, meaning=None) -> Teaching:
+             seed: int, iteration: int = 1, meaning=None, most: int | None = None) -> Teaching:
     """The value of exploring each candidate next, at `iteration`, with a
     batch of `batch` pours, given the pours so far (P, S; failed ones are
     left out) and the explored antecedents; `meaning` is model(P, S,
-    seed), when the caller keeps it."""
+    seed), when the caller keeps it. A candidate of more than `most`
+    propositions is a whole (`wholes` of learn.pl): no question says it,
+    so it is valued by its newness alone, counted whole."""
     from threadpoolctl import threadpool_limits
 
     from pantarhei.bridge.learning.generalize import Settings
@@ -182,8 +196,10 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
     done = {tuple(sorted(str(p) for p in e)) for e in explored}
     if not cands:
         return Teaching([], [], [], [], [])
-    parents = {c: [tuple(q for q in c if q != p) for p in c] for c in cands}
-    bodies = list(dict.fromkeys(cands + [a for c in cands for a in parents[c]]))
+    whole = {c for c in cands if most is not None and len(c) > most}
+    plain = [c for c in cands if c not in whole]
+    parents = {c: [tuple(q for q in c if q != p) for p in c] for c in plain}
+    bodies = list(dict.fromkeys(plain + [a for c in plain for a in parents[c]]))
     index = {b: i for i, b in enumerate(bodies)}
     if meaning is not None:
         with threadpool_limits(1):
@@ -194,14 +210,26 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
     asked = {0: learner.default_weight, 1: 1.0}
     suspects = {c for c in cands if suspect(c)}
     support = Support(P)
-    if weights.doubt or weights.newness:
+    doubts = news = np.zeros(len(plain))
+    if (weights.doubt or weights.newness) and plain:
         with threadpool_limits(1):
-            doubts, news = beyond_parts(meaning, P, S, cands, parents, batch, seed, iteration,
+            doubts, news = beyond_parts(meaning, P, S, plain, parents, batch, seed, iteration,
                                         learner.model_pours, support)
-    else:
-        doubts = news = np.zeros(len(cands))
+    parts = dict(zip(plain, zip(doubts, news)))
+    if whole and weights.newness:
+        order = sorted(whole)
+        with threadpool_limits(1):
+            fresh = consequent_newness(meaning, P, S, sorted(done), order, batch, seed, iteration,
+                                       support)
+        parts.update((c, (0.0, x)) for c, x in zip(order, fresh))
     value, dep, unc, doubt_of = [], [], [], []
-    for c, h, new in zip(cands, doubts, news):
+    for c in cands:
+        h, new = parts.get(c, (0.0, 0.0))
+        if c in whole:
+            for part in (dep, unc, doubt_of):
+                part.append(0.0)
+            value.append(round(weights.newness * float(new), 6))
+            continue
         m = M[index[c]]
         explored = c in done
         if explored or not c:
@@ -221,7 +249,8 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
         value.append(round(asked.get(len(c), learner.pair_weight)
                            * (departure + weights.uncertainty * uncertainty)
                            + weights.doubt * doubt + weights.newness * float(new), 6))
-    return Teaching(value, dep, unc, doubt_of, [round(float(x), 6) for x in news])
+    return Teaching(value, dep, unc, doubt_of, [round(float(parts.get(c, (0.0, 0.0))[1]), 6)
+                                                for c in cands])
 
 
 class Support:
@@ -288,6 +317,30 @@ def shown_new(new: np.ndarray, P: np.ndarray, S: np.ndarray,
     return out
 
 
+def consequent_newness(meaning, P: np.ndarray, S: np.ndarray,
+                       explored: Sequence[tuple[str, ...]], wholes: Sequence[tuple[str, ...]],
+                       batch: int, seed: int, iteration: int, support: Support) -> np.ndarray:
+    """Per whole, the chance that the consequent of the batch it would get
+    at `iteration` (each expectation's verdict, as likely as the model's
+    mean over the batch's pours) is none of the explored antecedents' (the
+    majority verdicts of the pours in each one's support)."""
+    from pantarhei.bridge.verdicts import verdicts
+    from pantarhei.bridge.exploration.simulation import batch_pours
+    from pantarhei.oracle.generative import normalise
+
+    if meaning is None or not wholes:
+        return np.zeros(len(wholes))
+    Y = verdicts(S)
+    had = sorted({tuple(Y[m].mean(axis=0) > 0.5) for m in map(support, explored) if m.any()})
+    X = normalise(np.vstack([batch_pours(c, batch, seed, iteration) for c in wholes]))
+    Q = np.clip(meaning.shares(X), 1e-9, 1 - 1e-9).reshape(len(wholes), batch, -1).mean(axis=1)
+    if not had:
+        return np.ones(len(wholes))
+    C = np.array(had, dtype=bool)
+    logs = np.log(Q) @ C.T.astype(float) + np.log(1 - Q) @ (~C).T.astype(float)
+    return np.clip(1 - np.exp(logs).sum(axis=1), 0.0, 1.0)
+
+
 def batch_doubt(meaning, S: np.ndarray, cands: Sequence[tuple[str, ...]], batch: int,
                 seed: int, iteration: int) -> tuple[np.ndarray, np.ndarray]:
     """Per candidate, over the pours of the batch it would get at
@@ -336,5 +389,5 @@ def teach(host: Host, request: dict) -> dict:
                       float(request["newness"]))
     found = teaching(s.params, s.scores, [e["antecedent"] for e in request["antecedents"]],
                      request["candidates"], weights, int(request["batch"]), seed,
-                     int(request["iteration"]), meaning)
+                     int(request["iteration"]), meaning, int(request["body"]))
     return {"value": found.value}

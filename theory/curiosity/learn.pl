@@ -1,7 +1,8 @@
 :- module(curiosity_learn,
           [ teach_queue/7,            % +Explored, +Id, +Props, +Rest, +Settings, -Added, -Queue
             children/4,               % +Props, +Most, +Exclude, -New
-            reach/5                   % +Seed, +N, +Most, +Exclude, -Bodies
+            reach/5,                  % +Seed, +N, +Most, +Exclude, -Bodies
+            wholes/5                  % +Seed, +N, +Most, +Exclude, -Bodies
           ]).
 /** <module> The learning curiosity
 
@@ -30,6 +31,14 @@ yet, as learning progress (less where its pours have shown nothing new).
 A_new keeps the `queue` most valuable, the most valuable first; the
 candidates a step values are so at most `queue`, the new children and the
 explored antecedents.
+
+Every `whole_every` steps the next antecedent is a whole instead: of the
+random valid antecedents whose parts reach/5 offers, drawn whole, the one
+whose batch is likeliest to show a behaviour the exploration has not
+(wholes/5, whole_step/2). No question says a whole, but its pours find
+what random exploration finds (the paper's criterion: behaviours not seen
+before) and teach the model of every pour beyond the neighbourhood of
+the ordinary pour; the rule written for it is a behaviour of the theory.
 */
 
 :- use_module(library(apply)).
@@ -69,6 +78,8 @@ option(newness, permille, range(0, none), 2000,
   "learn: the weight of the chance that a pour of a candidate's next batch shows a behaviour no two pours have shown").
 option(reach, count, range(0, 100000), 16,
   "learn: random valid antecedents of 2 to `body` propositions drawn as candidates each step, beyond the children of what was explored").
+option(whole_every, count, range(0, 100000), 3,
+  "learn: every this many steps, the next antecedent is the one of the `reach` uniformly random valid antecedents, drawn whole, whose pours are likeliest to show a behaviour no two pours have shown (0: never)").
 
 course(pours, learn).
 course(body, learn).
@@ -77,10 +88,12 @@ course(uncertainty, learn).
 course(doubt, learn).
 course(newness, learn).
 course(reach, learn).
+course(whole_every, learn).
 
 prolog_only(doubt).
 prolog_only(newness).
 prolog_only(reach).
+prolog_only(whole_every).
 option_after(pours, budget).
 
 % A batch is learn_batch pours, and a_0 is the ordinary pour (the empty
@@ -140,44 +153,73 @@ learn_trace(I1-Id, cand(Props, Parent, Via), Sim, Added, ANew, Trace) :-
 %   iteration Settings.iteration: the candidates are its children
 %   (children/4; not explored, not in Rest), `reach` random antecedents
 %   (reach/5, seeded by the run's seed and the iteration), Rest (A_new
-%   without what was just explored) and each explored antecedent for
-%   another batch (again(Id)); each is valued, for the next iteration,
-%   (exploration_teach) and Queue holds the `queue` most valuable with a
-%   value above 0, the most valuable first (ties in the order above).
-%   Added are Queue's new children, in its order.
+%   without what was just explored) and each explored antecedent of at
+%   most `body` propositions for another batch (again(Id)); each is
+%   valued, for the next iteration, (exploration_teach) and Queue holds
+%   the `queue` most valuable with a value above 0, the most valuable
+%   first (ties in the order above). When the next iteration is a whole
+%   step (whole_step/2), the wholes the random antecedents are parts of
+%   (wholes/5) are valued too, by the chance that their pours show a
+%   behaviour not seen, and the likeliest goes first in Queue. Added are
+%   Queue's new children, in its order.
 teach_queue(Explored, Id, Props, Rest, Settings, Added, Queue) :-
     exclusions(Explored, Rest, Exclude),
     children(Props, Settings.body, Exclude, Kids),
     step_seed(Settings, Settings.iteration, Seed),
     append([Props|Kids], Exclude, Known),
     reach(Seed, Settings.reach, Settings.body, Known, Far),
+    Next is Settings.iteration + 1,
+    (   whole_step(Settings, Next)
+    ->  wholes(Seed, Settings.reach, Settings.body, Known, Whole)
+    ;   Whole = []
+    ),
     findall(cand(P, Id, near), member(P, Kids), Near),
     findall(cand(P, Id, reach), member(P, Far), Reached),
+    findall(cand(P, Id, whole), member(P, Whole), Wholes),
     append(Near, Reached, New),
     exclude(again_cand, Rest, Waiting),
-    findall(cand(P, A, again(A)), member(ant(A, P, _, _), Explored), Again),
+    findall(cand(P, A, again(A)),
+            ( member(ant(A, P, _, _), Explored), length(P, L), L =< Settings.body ),
+            Again),
     append([New, Waiting, Again], Pool),
-    (   Pool == []
+    (   Pool == [], Wholes == []
     ->  Added = [], Queue = []
     ;   maplist(entry, Explored, Entries),
-        findall(P, member(cand(P, _, _), Pool), Cands),
-        Next is Settings.iteration + 1,
+        append(Pool, Wholes, Valued),
+        findall(P, member(cand(P, _, _), Valued), Cands),
         call_bridge(exploration_teach, _{antecedents:Entries, candidates:Cands,
                                          seed:Settings.seed, batch:Settings.batch,
-                                         iteration:Next,
+                                         body:Settings.body, iteration:Next,
                                          uncertainty:Settings.uncertainty,
                                          doubt:Settings.doubt, newness:Settings.newness},
                     Reply),
-        findall(Key-C, ( nth1(K, Pool, C), nth1(K, Reply.value, V), V > 0, Key is -V ),
+        findall(Key-C, ( nth1(K, Valued, C), nth1(K, Reply.value, V), V > 0, Key is -V ),
                 Keyed),
         keysort(Keyed, Sorted),
         pairs_values(Sorted, All),
-        length(All, N),
-        Keep is min(N, Settings.queue),
-        length(Queue, Keep),
-        append(Queue, _, All),
+        partition(in_list(Wholes), All, Likeliest, Others),
+        first_kept(Others, Settings.queue, Kept),
+        (   Likeliest = [First|_]
+        ->  Queue = [First|Kept]
+        ;   Queue = Kept
+        ),
         include(in_list(New), Queue, Added)
     ).
+
+%   first_kept(+All, +Most, -Kept): Kept are the first Most of All (all
+%   of them if fewer).
+first_kept(All, Most, Kept) :-
+    length(All, N),
+    Keep is min(N, Most),
+    length(Kept, Keep),
+    append(Kept, _, All).
+
+%   whole_step(+Settings, +I): iteration I explores a whole (every
+%   `whole_every` iterations; never when it is 0).
+whole_step(Settings, I) :-
+    Every = Settings.whole_every,
+    Every > 0,
+    I mod Every =:= 0.
 
 %!  reach(+Seed:integer, +N:integer, +Most:integer, +Exclude:list, -Bodies:list) is det.
 %
@@ -205,6 +247,22 @@ random_part(Most, Whole, Part) :-
     length(Part0, K),
     append(Part0, _, Shuffled),
     sort(Part0, Part).
+
+%!  wholes(+Seed:integer, +N:integer, +Most:integer, +Exclude:list, -Bodies:list) is det.
+%
+%   Bodies are the first N uniformly random valid antecedents of the whole
+%   vocabulary that reach/5 takes its parts from (the same Seed), those of
+%   more than Most propositions and in no Exclude, each once: where a
+%   behaviour no pour has shown may lie, as random exploration finds them.
+wholes(Seed, N, Most, Exclude, Bodies) :-
+    random_antecedents(Seed, N, All),
+    exclude(in_list(Exclude), All, Fresh),
+    include(longer_than(Most), Fresh, Long),
+    list_to_set(Long, Bodies).
+
+longer_than(Most, Props) :-
+    length(Props, L),
+    L > Most.
 
 %   again_cand(+Cand): Cand is another batch of an explored antecedent.
 again_cand(cand(_, _, again(_))).

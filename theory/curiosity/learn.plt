@@ -29,14 +29,14 @@ test(queue_most_valuable_first_bounded,
      [ setup(assertz((bridge:exploration_teach(Req, Reply) :- fake_teach(Req, Reply)))),
        cleanup(retractall(bridge:exploration_teach(_, _))) ]) :-
     Explored = [ant(a1, [], none, initial)],
-    teach_queue(Explored, a1, [], [], _{body:1, queue:2, seed:1, batch:4, uncertainty:1.0, doubt:0.0, newness:0.0, reach:4, iteration:1}, Added, Queue),
+    teach_queue(Explored, a1, [], [], _{body:1, queue:2, seed:1, batch:4, uncertainty:1.0, doubt:0.0, newness:0.0, reach:4, whole_every:0, iteration:1}, Added, Queue),
     % the two most valuable children, the most valuable first
     Queue == [cand([pour_to_side], a1, near), cand([light_liquid], a1, near)],
     Added == Queue,
     % A_new as it was is valued again, and the explored antecedent is a
     % candidate for another batch; a value of 0 is never queued
     Old = cand([pour_to_side], a1, near),
-    teach_queue(Explored, a1, [], [Old], _{body:1, queue:10, seed:1, batch:4, uncertainty:1.0, doubt:0.0, newness:0.0, reach:4, iteration:1}, Added1, Queue1),
+    teach_queue(Explored, a1, [], [Old], _{body:1, queue:10, seed:1, batch:4, uncertainty:1.0, doubt:0.0, newness:0.0, reach:4, whole_every:0, iteration:1}, Added1, Queue1),
     Queue1 = [Old, cand([light_liquid], a1, near), cand([], a1, again(a1))],
     Added1 == [cand([light_liquid], a1, near)].
 
@@ -67,5 +67,46 @@ test(reach_draws_valid_seeded_bodies_of_two_to_most) :-
     reach(7, 12, 3, [First], Without),
     \+ memberchk(First, Without),
     reach(7, 12, 1, [], []).
+
+test(a_whole_step_puts_the_likeliest_whole_first,
+     [ setup(assertz((bridge:exploration_teach(Req, Reply) :- whole_teach(Req, Reply)))),
+       cleanup(retractall(bridge:exploration_teach(_, _))) ]) :-
+    Explored = [ant(a1, [], none, initial)],
+    Settings = _{body:1, queue:2, seed:1, batch:4, uncertainty:1.0, doubt:0.0, newness:0.0,
+                 reach:4, whole_every:3},
+    % the next iteration, 3, is a whole step: the whole valued most goes first,
+    % before the children as they rank among themselves
+    teach_queue(Explored, a1, [], [], Settings.put(iteration, 2), Added, Queue),
+    Queue = [cand(Whole, a1, whole), cand([pour_to_side], a1, near), cand([light_liquid], a1, near)],
+    length(Whole, L), L > 1, valid_antecedent(Whole),
+    Added == [cand([pour_to_side], a1, near), cand([light_liquid], a1, near)],
+    % another iteration is no whole step: no whole is drawn or queued
+    teach_queue(Explored, a1, [], [], Settings.put(iteration, 3), _, Queue1),
+    Queue1 == [cand([pour_to_side], a1, near), cand([light_liquid], a1, near)],
+    % and none ever with whole_every(0)
+    teach_queue(Explored, a1, [], [], Settings.put(_{iteration:2, whole_every:0}), _, Queue2),
+    Queue2 == Queue1.
+
+%   The bridge's value for a whole step: the children as fake_value/2 says,
+%   a whole (more than `body` propositions) by its length, so the longest
+%   whole is the likeliest.
+whole_teach(Req, _{value:Values}) :-
+    findall(V, ( member(C, Req.candidates), length(C, L),
+                 ( L > Req.body -> V = L ; fake_value(C, V) ) ), Values).
+
+test(wholes_are_seeded_random_antecedents_of_more_than_most) :-
+    wholes(7, 12, 2, [], Wholes),
+    Wholes \== [],
+    forall(member(W, Wholes),
+           ( length(W, L), L > 2, valid_antecedent(W), msort(W, W) )),
+    wholes(7, 12, 2, [], Again),
+    Again == Wholes,
+    % the wholes reach/5 takes its parts from, with the same seed
+    random_antecedents(7, 12, Drawn),
+    forall(member(W, Wholes), memberchk(W, Drawn)),
+    % what is excluded is never drawn
+    Wholes = [First|_],
+    wholes(7, 12, 2, [First], Without),
+    \+ memberchk(First, Without).
 
 :- end_tests(curiosity_learn).

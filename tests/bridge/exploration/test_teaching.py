@@ -153,3 +153,38 @@ def test_newness_fades_where_pours_keep_showing_what_was_seen():
     out = shown_new(np.array([0.9, 0.9]), P, S, [(), ("pour_far_away",)], 4.0)
     assert out[0] == pytest.approx((4 * 0.9 + 2 * behaviours) / 44)
     assert out[1] == 0.9
+
+
+def test_a_whole_is_valued_by_its_newness_alone_counted_whole():
+    """A candidate of more propositions than `most` is a whole, which no
+    question says: it moves no answer and narrows no likelihood a question
+    asks, so only its newness counts, with no part's subtracted; the same
+    body within `most` is valued as before."""
+    P, S = pours([], 40, 1)
+    knows = model(*pooled((P, S), pours(["pour_far_away"], 24, 3)), 1)
+    whole = ("light_liquid", "pour_far_away", "pour_high")
+    w = Weights(1.0, 1.0, 2.0)
+    found = teaching(P, S, [()], [whole, ("pour_far_away",)], w, 4, 1, 2, knows, most=2)
+    assert found.departure[0] == found.uncertainty[0] == found.doubt[0] == 0.0
+    assert found.newness[0] > 0.2
+    assert found.value[0] == pytest.approx(2.0 * found.newness[0], abs=1e-6)
+    # as a body a question could say (most 3), its parts' newness is subtracted
+    # (pouring far away alone shows the new behaviour as well) and its doubt counts
+    asked = teaching(P, S, [()], [whole, ("pour_far_away",)], w, 4, 1, 2, knows, most=3)
+    assert asked.newness[0] < found.newness[0]
+
+
+def test_a_whole_is_new_where_its_consequent_is_none_explored_has():
+    """The synthetic oracle spills from far away whatever else is said: on
+    the same pours, a whole that pours far away is sure to have a new
+    consequent while only the ordinary pour is explored, and no likelier
+    than a whole that pours as the ordinary pour does once pouring far
+    away is explored too."""
+    P, S = pooled(pours([], 40, 1), pours(["pour_far_away"], 24, 3))
+    far = ("bouncy_source", "light_liquid", "pour_far_away")
+    plain = ("bouncy_source", "heavy_source", "light_liquid")
+    w = Weights(0.0, 0.0, 1.0)
+    before = teaching(P, S, [()], [far, plain], w, 4, 1, 2, most=2).newness
+    after = teaching(P, S, [(), ("pour_far_away",)], [far, plain], w, 4, 1, 2, most=2).newness
+    assert before[0] > 0.9 > before[1]
+    assert after[0] < before[0] and after[0] == pytest.approx(after[1], abs=0.05)
