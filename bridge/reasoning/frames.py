@@ -3,7 +3,8 @@ question about a clause ("is it true that the bowl tips", "tell me whether
 it spills") or an outcome caused ("does pouring high make it tip") is asked
 as "does the bowl tip"; an outcome typed as a note, with no word that asks
 ("cup hits bowl??", "bowl tips?"), is asked as "does the cup hit the bowl", and so is the
-source supposed to strike the bowl ("what if the cup hits the bowl").
+source supposed to strike the bowl ("what if the cup hits the bowl"), and
+an outcome asked with its verb first ("hits the mug the bowl?").
 outcomes.py hears the plain question."""
 from __future__ import annotations
 
@@ -75,6 +76,15 @@ _ASKS = re.compile(r"\b(?:what|which|how|why|whether|if|suppose|imagine|will|wou
                    r"|may|should|shall|is|are|was|were)\b")
 
 
+#: An outcome asked with its verb first, as a learner of English may order a question ("hits
+#: the mug the bowl?", "goes it then all in the bowl?"): asked as "does the mug hit the bowl".
+_FIRST = {"hits": "hit", "bumps": "bump", "touches": "touch", "knocks": "knock", "clips": "clip", "spills": "spill",
+          "splashes": "splash", "drips": "drip", "goes": "go", "lands": "land", "tips": "tip", "slides": "slide",
+          "falls": "fall", "comes": "come", "stays": "stay", "overflows": "overflow"}
+VERB_FIRST = Cued(rf"(?:^|(?<=[,:;.?!] ))(?P<verb>{'|'.join(_FIRST)}) (?P<who>it|they|the [a-z]+)"
+                  r"(?: (?:then|also|still|really))?(?P<all> all)?\b(?=[^.!?]*\?)", tuple(f"{v} " for v in _FIRST))
+
+
 def asked_plainly(text: str) -> tuple[str, tuple[str, ...]]:
     """(normalised `text` with each frame said as the question it asks, the
     frames' phrases, heard with the outcome)."""
@@ -88,6 +98,9 @@ def asked_plainly(text: str) -> tuple[str, tuple[str, ...]]:
     if STRUCK.search(text):
         phrases.extend(m.group(0) for m in STRUCK.pattern.finditer(text))
         text = STRUCK.pattern.sub(" does ", text)
+    if VERB_FIRST.search(text):
+        phrases.extend(m.group(0) for m in VERB_FIRST.pattern.finditer(text))
+        text = VERB_FIRST.pattern.sub(lambda m: f"does {m.group('who')}{m.group('all') or ''} {_FIRST[m.group('verb')]}", text)
     if not _ASKS.search(text):
         text = LAST.sub("does ", text)
     return NOTE.sub("does ", text), tuple(phrases)

@@ -51,7 +51,7 @@ _SETTLED = _PHASES[-1][1]
 #: Where a clause ends: the phase heard with its outcome is all of it.
 _ENDS = r"(?= *(?:[?.!,;:]|$| or\b| and\b| lol\b))"
 #: A place the liquid may land said beside the bowl it goes in: the spill asked too.
-_ELSEWHERE = Cued(r"\boutcome (?P<said>or (?:on|onto|all over|over) (?:the |a |my )?"
+_ELSEWHERE = Cued(r"\boutcome (?P<said>or (?:also |maybe |even )?(?:on|onto|all over|over) (?:the |a |my )?"
                   r"(?:table|counter|floor|worktop|countertop|ground|bench)s?)\b", ("outcome or ",))
 
 #: Staying said after going in, with no place: it stays where it went.
