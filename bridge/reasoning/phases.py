@@ -19,6 +19,7 @@ from __future__ import annotations
 import re
 
 from pantarhei.bridge.reasoning.cued import Cued
+from pantarhei.bridge.reasoning.vessels import liquids
 
 STILL = ("destination_still_approach", "destination_still_retreat", "destination_still_settle")
 
@@ -84,6 +85,10 @@ def during(text: str, asked: list[str]) -> tuple[str, list[str], list[str]]:
         m = re.search(rf"\boutcome(?P<gap>(?: ,)?(?: (?:at all|all|around|about|much|even))*) (?P<said>{words})", text)
         if m is None:
             continue
+        if phase == "destination_still_approach" and liquids().spans(m.group("said").split()[1:4]):
+            heard.append(m.group("said"))       # "when the cream goes in": while pouring, no phase of its own
+            text = text[:m.start("said")] + text[m.end("said"):]
+            return text, asked, heard
         if phase is not None:
             asked = [n for n in asked if n not in STILL or n in (phase if isinstance(phase, tuple) else (phase,))]
         if re.match(_ENDS, text[m.end():]):

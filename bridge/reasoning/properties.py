@@ -104,6 +104,7 @@ def _number(word: str) -> bool:
 _SURFACES = {"table", "tables", "counter", "counters", "countertop", "worktop", "benchtop", "bench",
              "tabletop"}
 _GRIP = {"slippery": "slippery", "slick": "slippery", "slippy": "slippery", "greasy": "slippery", "smooth": "slippery",
+         "wet": "slippery", "icy": "slippery",
          "grippy": "grippy", "rough": "grippy"}
 _AS = {"is", "are", "was", "seems", "looks", "feels", "very", "really", "quite", "super", "so", "pretty"}
 #: What is said back of it.
