@@ -85,6 +85,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?<=there )(?:any |some )?contact|(?<=there be )(?:any |some )?contact",   # "is there contact"
      ("source_clear",), True),
     (r"(?:stay|stays|keep|keeps|be|is)? ?clear(?: of)?", ("source_clear",), False),
+    # emptied into the bowl: it leaves the source and goes in ("does the carton empty into the bowl")
+    (r"(?:empt(?:y|ies|ied)|drain(?:s|ed|ing)?)(?: out)?(?= into\b)", ("liquid_leaves_source", *_ALL_IN), False),
     (r"(?:come|comes|coming|came|get|gets|pour|pours|flow|flows|run|runs|drain\w*) out"
      r"|(?:go|goes|going|went) out\b(?! of (?:the |a |an |my )?(?!source\b)(?:[a-z]+ )?(?:bowl|destination)\b)"
      r"|empt(?:y|ies|ied)(?: out)?|(?:end|ends) up (?:totally |completely |fully )?empty|leav(?:e|es|ing) (?:the|it)\b|exit\w*", ("liquid_leaves_source",), False),
