@@ -57,13 +57,14 @@ NOTE = re.compile(r"(?:^|(?<=[,:;.!=>\u2013\u2014] )|(?<= - ))(?=(?:tips|topples
                   r"|splashes|overflows|drips|budges|slips|skids|flips|stays (?:put|still|in place|upright)"
                   r"|(?<== )(?:splash|spill|tip|slide|move|drip|overflow))(?: over)?"
                   r"(?: or (?:not|nah))? *\?|"
-                  r"(?:the |a |an |my |your |this |that )?[a-z]+ "
+                  r"(?:the |a |an |my |your |this |that )?[a-z]+ (?:still |even |really |also )?"
                   r"(?:hits|bumps|touches|knocks|collides|strikes|scrapes|clips|tips|topples|slides|shifts"
                   r"|moves|wobbles|spills|splashes|overflows|drips|leaks|stays(?= (?:put|still|where|in place))"
                   r"|misses|overshoots|lands|flips|skids|budges|scoots|slips|empties|ends up|falls over"
                   r"|gets (?:knocked|pushed|hit|bumped|shoved)|(?:goes|comes|pours|flows) out"
                   # (the verb bare, as notes and learners type it: "bowl slide or not", "it still arrive in")
                   r"|hit|bump|touch|tip|topple|slide|shift|move|wobble|spill|splash|overflow|miss|land|arrive|flip"
+                  r"|reach|reaches|(?:go|come|pour|flow) out"
                   r"|skid|budge|slip|fall over|stay(?= (?:put|still|where|in place|inside|in))"
                   r")\b[^,:;.!?]*(?:\?| or (?:not|nah|no)\b))")
 
