@@ -67,11 +67,18 @@ SPEEDS: tuple[tuple, ...] = (
     ("approach fast", (r"re(com|came):\b(?:come|comes|coming|came) (?:very |really |too )?(?:fastly|fast|quickly)\b",)),
     ("approach slowly", (r"re(com|came):\b(?:come|comes|coming|came) (?:very |really |too )?(?:slowly|slow)\b",)),
     ("fast", ("fastly",)),
+    # tipped all the way over fast or slowly: upside down, in a clause of its own, and the move into it
+    ("; approach fast", (r"re(fast|quick|rapid):(?:(?<=all the way over )|(?<=right over ))(?:(?:very|really|too|quite|super) )?"
+                         r"(?:fast|quick(?:ly)?|rapidly)\b(?! (?:than|as)\b)",)),
+    ("; approach slowly", (r"re(slow|gradual|steadi):(?:(?<=all the way over )|(?<=right over ))(?:(?:very|really|too|quite|super) )?"
+                           r"(?:slow(?:ly)?|gradually|steadily)\b(?! (?:than|as)\b)",)),
     # tipped fast or slowly: the move into the pouring pose, which tilts the source as it goes
     ("approach fast", (r"re(fast|quick|rapid):\b(?:tilt|tip)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
                        r" (?:fast|quick(?:ly)?|rapidly)\b(?! (?:than|as)\b)",
+
                        r"re(fast|quick|rapid):\b(?:quickly|fast|rapidly) (?:tilt|tip)\w*\b")),
     ("approach slowly", (r"re(slow|gradual|steadi):\b(?:tilt|tip)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
                          r" (?:slow(?:ly)?|gradually|steadily)\b(?! (?:than|as)\b)",
+
                          r"re(slow|gradual|steadi):\b(?:slowly|gradually|steadily) (?:tilt|tip)\w*\b")),
 )
