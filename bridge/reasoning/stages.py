@@ -26,7 +26,7 @@ MOVE = {"start": "approach", "approach": "approach", "pour": None, "retreat": "r
 MARKER_STEMS = {stem(w): s for w, s in MARKERS.items()}
 #: Verbs of tilting: a clause they begin, said after the start or the move in with no stage
 #: word of its own, is the pour's ("move in over 3 s, tilt 45 deg": the tilt poured with).
-_TILTING = {stem(w) for w in ("tilt", "tip", "incline", "lean", "angle")}
+_TILTING = {stem(w) for w in ("tilt", "tip", "incline", "lean", "angle", "turn", "turned", "tilted", "tipped")}
 
 
 def stages(tokens: list[Token]) -> list[str]:
@@ -47,6 +47,9 @@ def stages(tokens: list[Token]) -> list[str]:
         for i in at:
             if i in marked:
                 current = _next(tokens[i].word, current)
+            elif (current in ("start", "approach") and i > at[0] and tokens[i - 1].word == "and"
+                  and stem(tokens[i].raw.split()[0]) in _TILTING and not set(marks) & set(range(i, at[-1] + 1))):
+                current = "pour"        # "brought in slowly and turned upside down": the pour's tilt
             out.append(current)
         stage = current
     return out
