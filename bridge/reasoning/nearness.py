@@ -2,7 +2,9 @@
 close to the bowl, or near it, is just above its rim (low; "near the rim"
 would say over its edge); too close, or too near, with no bowl said ("does
 the cup hit the bowl if it's too close") is close to it; right next to the
-bowl, or beside it, is refused (beside it, or near its rim?)."""
+bowl, or beside it, is refused (beside it, or near its rim?); the near
+side of the bowl is near its rim, and the far side is refused (the
+vocabulary's places lie on the side the source comes from)."""
 from __future__ import annotations
 
 from pantarhei.bridge.reasoning.everyday import UNCLEAR
@@ -14,6 +16,12 @@ NEARNESS: tuple[tuple, ...] = (
     ("low", (r"re(close to|near the bowl|near bowl):\b(?:very |right )?(?:close to (?:the )?(?:destination|bowl)"
              r"|near (?:the )?bowl)\b(?! rim)",),
      "read as low: just above the bowl's rim (\"near the rim\" would say over its edge)"),
+    # the near side of the bowl: the rim on the side the source comes from; the far side lies
+    # where the vocabulary's places do not reach
+    ("near the rim", (r"re(near side|near edge|near rim|near lip):\b(?:the |its )?near (?:side|edge|rim|lip)(?: of (?:the |its )?"
+                      r"(?:destination|bowl))?\b",)),
+    (UNCLEAR, (r"re(far side|far edge|far rim|far lip|opposite):\b(?:the |its )?(?:far|opposite) (?:side|edge|rim|lip)"
+               r"(?: of (?:the |its )?(?:destination|bowl))?\b",)),
     # too close, with no bowl said: to the bowl, just above it
     ("low", (r"re(too close|too near|so close|so near):\b(?:too|so) (?:close|near)\b(?! (?:to|by|from|the|its|a|together)\b)",),
      "read as low: close to the bowl, just above its rim"),

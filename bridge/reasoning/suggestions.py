@@ -74,6 +74,9 @@ HINTS: tuple[tuple[str, str], ...] = (
      'at the rim\'s height: just above it or just below it? say "just above the rim" or "just below the rim"'),
     (r"^(?:none|nothing|no \w+)(?: of it)? (?:on|onto|in|into|over|all over|outside) ",
      'none on the table: wanted, or asked? say "so that nothing spills" or "does any spill?"'),
+    (r"^(?:the |its )?(?:far|opposite) (?:side|edge|rim|lip)",
+     'the far side of the bowl: the vocabulary\'s places lie on the side the source comes from: say "near the rim", '
+     '"centred" or "from the side"'),
     (r"^from above$|^overhead$|^from the top$",
      'above: how high, or where? say "high above the bowl" or "centred over the bowl"'),
     (r"^all the way$", 'all the way: tilted how far? say "steeply tilted" (about 90 degrees) or '
