@@ -25,6 +25,9 @@ FRAMES = tuple((re.compile(p), r) for p, r in (
     # an outcome caused: "does pouring from high make it tip" (the bowl tipping), "cause the cup to slide"
     # (not wanted: "so as not to make the bowl move" is so that it does not)
     (r"\bso(?: as)? (?:not|never) to (?:make|cause) (it|them|the [a-z]+)(?: to)? ", r"so that \1 does not "),
+    # "would that cause it to splash": that, the scene said before, is the scene; will it splash
+    (r"\b(?:would|will|does|did|could|can|might|may) (?:that|this) (?:make|cause) (it|them|the [a-z]+)(?: to)? (?=(?:tip"
+     r"|toppl|fall|slid|slip|mov|shift|wobbl|spill|splash|overflow|drip|rock|budg|skid)\w*\b)", r" will \1 "),
     (r"(?<!\bto )\b(?:make|makes|made|making|cause|causes|caused|causing) (it|them|the [a-z]+)(?: to)? (?=(?:tip"
      r"|toppl|fall|slid|slip|mov|shift|wobbl|spill|splash|overflow|drip|rock|budg|skid)\w*\b)", r" will \1 "),
 ))
