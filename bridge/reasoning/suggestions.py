@@ -107,6 +107,8 @@ HINTS: tuple[tuple[str, str], ...] = (
     (r"^(?:sideways|laterally|lateral|sidewise)$",
      'sideways: offset or rolled? say "offset sideways" or "tilted sideways"; a move in or out '
      'goes to or from the side: say "move in from the side" or "end to the side"'),
+    (r"side(?: ?,)? (?:just )?a (?:little |tiny )?bit$", 'a little to one side: how far? say "near the '
+                                                   'rim", "from the side" or "offset sideways"'),
     (r"^a (?:little|bit|tad)$", 'a little: of what? say "a little liquid", "slightly tilted", or '
                                'where ("near the rim", "from the side", "offset sideways")'),
     (r"^(?:drop(?:s|ped|ping)?|let(?:s|ting)?)$|^(?:drop|let)\w* (?:it|the|go)", 'dropping: the source is held throughout the pour; the vocabulary says '

@@ -273,6 +273,8 @@ PHRASES: tuple[tuple, ...] = (
     ("side", (r"re:\b(?:left|right)(?:[- ]hand)? side\b",)),
     ("offset sideways", ("offset to the side", "offset to one side")),
     ("sideways", ("lateral", "laterally", "sidewise")),
+    # a little to one side: near the rim, offset or from the side? (refused, as "a bit off" is)
+    (UNCLEAR, (r"re(side):\b(?:off )?to (?:one|the) side(?: ?,)? (?:just )?a (?:little |tiny )?bit\b",)),
     ("side", ("off to one side", "off to the side", "to one side")),
     # how the source is tilted and moved
     ("upside down", ("inverted", "upturned", "turned over",
