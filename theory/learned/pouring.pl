@@ -24,6 +24,7 @@ setting(uncertainty_permille, 1000).
 setting(doubt_permille, 1000).
 setting(newness_permille, 2000).
 setting(reach, 16).
+setting(whole_every, 0).
 setting(breadth, 3).
 setting(ridge_permille, 1000).
 setting(qualify, weighted).

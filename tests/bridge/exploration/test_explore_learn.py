@@ -59,16 +59,20 @@ def test_a_learner_the_option_table_does_not_offer_is_refused_in_one_line(tmp_pa
 def test_it_starts_from_the_ordinary_pour_and_explores_what_questions_say(learned):
     _, _, trace = learned
     assert trace[0]["antecedent"] == [] and trace[0]["via"] == "initial"
-    every = ExploreOptions().whole_every
+    assert all(len(t["antecedent"]) <= 2 for t in trace)
+    for t in trace[1:]:     # a child of an explored antecedent, or another batch of one
+        assert t["via"] == "near" or t["via"].startswith("again(")
+
+
+def test_whole_every_explores_a_whole_every_so_many_steps(tmp_path):
+    run(tmp_path, "w", whole_every=3)
+    trace = [json.loads(line) for line in (tmp_path / "w.trace.jsonl").read_text().splitlines()]
     wholes = [t for t in trace if t["via"] == "whole"]
-    # every `whole_every` steps a whole: a random valid antecedent of more
-    # than `body` propositions, as no question says
-    assert wholes and all(t["iteration"] % every == 0 and len(t["antecedent"]) > 2
-                          for t in wholes)
-    for t in trace[1:]:     # else a child of an explored antecedent, or another batch of one
-        if t["via"] != "whole":
-            assert len(t["antecedent"]) <= 2
-            assert t["via"] == "near" or t["via"].startswith("again(")
+    # a random valid antecedent of more than `body` propositions, as no
+    # question says, at every third step (where one is likelier than none
+    # to have a new consequent)
+    assert wholes and all(t["iteration"] % 3 == 0 and len(t["antecedent"]) > 2 for t in wholes)
+    assert all(len(t["antecedent"]) <= 2 for t in trace if t["via"] != "whole")
 
 
 def test_one_layer_whose_bodies_are_the_explored_antecedents(learned):
