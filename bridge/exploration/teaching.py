@@ -331,7 +331,7 @@ def consequent_newness(meaning, P: np.ndarray, S: np.ndarray,
     if meaning is None or not wholes:
         return np.zeros(len(wholes))
     Y = verdicts(S)
-    had = sorted({tuple(Y[m].mean(axis=0) > 0.5) for m in map(support, explored) if m.any()})
+    had = sorted({tuple(2 * Y[m].sum(axis=0) > m.sum()) for m in map(support, explored) if m.any()})
     X = normalise(np.vstack([batch_pours(c, batch, seed, iteration) for c in wholes]))
     Q = np.clip(meaning.shares(X), 1e-9, 1 - 1e-9).reshape(len(wholes), batch, -1).mean(axis=1)
     if not had:

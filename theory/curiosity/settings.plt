@@ -72,7 +72,7 @@ test(unknown_option_is_refused, [forall(member(O, [ouy('/tmp/x.pl'), outt = '/tm
 % theory/defaults.pl) is refused in one line naming it, the curiosity, its
 % budget and its own options; given as Name = Value too
 test(an_option_the_curiosity_does_not_read_is_refused,
-     [true(M == "budget: not an option of curiosity(learn), whose budget is pours(N); its own options are pours, body, queue, uncertainty, doubt, newness and reach (budget is read by curiosity(discover) and curiosity(paper))")]) :-
+     [true(M == "budget: not an option of curiosity(learn), whose budget is pours(N); its own options are pours, body, queue, uncertainty, doubt, newness, reach and whole_every (budget is read by curiosity(discover) and curiosity(paper))")]) :-
     catch(settings([curiosity(learn), budget(5)], _), exploration_error(M), true),
     catch(settings([budget = 5], _), exploration_error(M2), true),
     M2 == M.

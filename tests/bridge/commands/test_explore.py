@@ -67,7 +67,7 @@ def test_explore_1_checks_an_option_of_its_own_in_one_line(tmp_path):
 @pytest.mark.parametrize("args, words", [
     (["--curiosity", "learn", "--budget", "5"],
      "budget: not an option of curiosity(learn), whose budget is pours(N); its own options are "
-     "pours, body, queue, uncertainty, doubt, newness and reach (budget is read by "
+     "pours, body, queue, uncertainty, doubt, newness, reach and whole_every (budget is read by "
      "curiosity(discover) and curiosity(paper))"),
     (["--budget", "5"], "budget: not an option of curiosity(learn), whose budget is pours(N)"),
     (["--curiosity", "discover", "--pours", "40"],
