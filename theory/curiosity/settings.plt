@@ -28,7 +28,7 @@ test(course_options_learn) :-
     settings([], S),
     S.curiosity == learn, S.initial == [], once(default(learn_batch, B)), S.batch =:= B,
     course_options(S, [oracle, seed, batch, pours, curiosity, body, queue, uncertainty,
-                       doubt, newness, reach, breadth, ridge, initial]),
+                       doubt, newness, reach, whole_every, breadth, ridge, initial]),
     recorded_settings(S, "9", Facts, []),
     curiosity_settings:table_option(pours, _, _, Pours),
     memberchk(setting(pours, Pours), Facts),
