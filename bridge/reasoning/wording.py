@@ -127,6 +127,9 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     # "y/n" ending a note: whether it happens or not ("bowl slide y/n")
     text = re.sub(r" *\b(?:y/n|y or n)\b(?=[?.!]* *$)", lambda m: said.setdefault(f"{m.group(0).strip()}: read as or not")
                   or " or not", text)
+    # "splash or no splash": whether it happens or not
+    text = re.sub(r"\b([a-z]+) or no \1\b", lambda m: said.setdefault(f"{m.group(0)}: read as {m.group(1)} or not")
+                  or f"{m.group(1)} or not", text)
     # "one" standing for the noun a contrast is of: "a heavy bowl instead of a light one" (not
     # one poured from or into, which the noun repeated would lose)
     text = re.sub(r"(?<!\bfrom )(?<!\binto )\b((?:a|an|the) [a-z]+ )([a-z]+) (instead of|rather than|and not|not) (a|an|the) ([a-z]+) one\b",
