@@ -76,8 +76,8 @@ leaves). The value adds `doubt` times the first and `newness` times the
 second, neither weighed by how often B is asked: what they teach the model
 serves every question.
 
-A whole (a candidate of more than `body` propositions: a uniformly random
-valid antecedent that learn.pl explores every `whole_every` steps) is
+A whole (a uniformly random valid antecedent that learn.pl explores
+every `whole_every` steps, named as such in the request) is
 said by no question, so no answer a question asks moves with it. Its
 value is `newness` times the chance that its consequent is new:
 
@@ -178,13 +178,14 @@ def _valid(P: np.ndarray, S: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
              candidates: Sequence[Sequence[str]], weights: Weights, batch: int,
-             seed: int, iteration: int = 1, meaning=None, most: int | None = None) -> Teaching:
+             seed: int, iteration: int = 1, meaning=None,
+             wholes: Sequence[Sequence[str]] = ()) -> Teaching:
     """The value of exploring each candidate next, at `iteration`, with a
     batch of `batch` pours, given the pours so far (P, S; failed ones are
     left out) and the explored antecedents; `meaning` is model(P, S,
-    seed), when the caller keeps it. A candidate of more than `most`
-    propositions is a whole (`wholes` of learn.pl): no question says it,
-    so it is valued by its newness alone, counted whole."""
+    seed), when the caller keeps it. A candidate among `wholes` (of a
+    whole step of learn.pl) is said by no question, so it is valued by its
+    newness alone, counted whole."""
     from threadpoolctl import threadpool_limits
 
     from pantarhei.bridge.learning.generalize import Settings
@@ -196,7 +197,7 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
     done = {tuple(sorted(str(p) for p in e)) for e in explored}
     if not cands:
         return Teaching([], [], [], [], [])
-    whole = {c for c in cands if most is not None and len(c) > most}
+    whole = {tuple(sorted(str(p) for p in w)) for w in wholes} & set(cands)
     plain = [c for c in cands if c not in whole]
     parents = {c: [tuple(q for q in c if q != p) for p in c] for c in plain}
     bodies = list(dict.fromkeys(plain + [a for c in plain for a in parents[c]]))
@@ -389,5 +390,5 @@ def teach(host: Host, request: dict) -> dict:
                       float(request["newness"]))
     found = teaching(s.params, s.scores, [e["antecedent"] for e in request["antecedents"]],
                      request["candidates"], weights, int(request["batch"]), seed,
-                     int(request["iteration"]), meaning, int(request["body"]))
+                     int(request["iteration"]), meaning, request["wholes"])
     return {"value": found.value}

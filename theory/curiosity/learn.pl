@@ -154,14 +154,14 @@ learn_trace(I1-Id, cand(Props, Parent, Via), Sim, Added, ANew, Trace) :-
 %   iteration Settings.iteration: the candidates are its children
 %   (children/4; not explored, not in Rest), `reach` random antecedents
 %   (reach/5, seeded by the run's seed and the iteration), Rest (A_new
-%   without what was just explored) and each explored antecedent of at
-%   most `body` propositions for another batch (again(Id)); each is
-%   valued, for the next iteration, (exploration_teach) and Queue holds
-%   the `queue` most valuable with a value above 0, the most valuable
-%   first (ties in the order above). When the next iteration is a whole
-%   step (whole_step/2), the wholes the random antecedents are parts of
-%   (wholes/5) are valued too, by the chance that their pours show a
-%   behaviour not seen, and the likeliest goes first in Queue. Added are
+%   without what was just explored) and each explored antecedent but a
+%   whole for another batch (again(Id)); each is valued, for the next
+%   iteration, (exploration_teach) and Queue holds the `queue` most
+%   valuable with a value above 0, the most valuable first (ties in the
+%   order above). When the next iteration is a whole step (whole_step/2),
+%   the wholes the random antecedents are parts of (wholes/5) are valued
+%   too, by the chance that their consequent is one no explored
+%   antecedent has, and the likeliest goes first in Queue. Added are
 %   Queue's new children, in its order.
 teach_queue(Explored, Id, Props, Rest, Settings, Added, Queue) :-
     exclusions(Explored, Rest, Exclude),
@@ -179,18 +179,16 @@ teach_queue(Explored, Id, Props, Rest, Settings, Added, Queue) :-
     findall(cand(P, Id, whole), member(P, Whole), Wholes),
     append(Near, Reached, New),
     exclude(again_cand, Rest, Waiting),
-    findall(cand(P, A, again(A)),
-            ( member(ant(A, P, _, _), Explored), length(P, L), L =< Settings.body ),
-            Again),
+    findall(cand(P, A, again(A)), ( member(ant(A, P, _, Via), Explored), Via \== whole ), Again),
     append([New, Waiting, Again], Pool),
     (   Pool == [], Wholes == []
     ->  Added = [], Queue = []
     ;   maplist(entry, Explored, Entries),
         append(Pool, Wholes, Valued),
         findall(P, member(cand(P, _, _), Valued), Cands),
-        call_bridge(exploration_teach, _{antecedents:Entries, candidates:Cands,
+        call_bridge(exploration_teach, _{antecedents:Entries, candidates:Cands, wholes:Whole,
                                          seed:Settings.seed, batch:Settings.batch,
-                                         body:Settings.body, iteration:Next,
+                                         iteration:Next,
                                          uncertainty:Settings.uncertainty,
                                          doubt:Settings.doubt, newness:Settings.newness},
                     Reply),

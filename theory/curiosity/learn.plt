@@ -87,12 +87,27 @@ test(a_whole_step_puts_the_likeliest_whole_first,
     teach_queue(Explored, a1, [], [], Settings.put(_{iteration:2, whole_every:0}), _, Queue2),
     Queue2 == Queue1.
 
+test(a_whole_explored_gets_no_other_batch,
+     [ setup(assertz((bridge:exploration_teach(Req, Reply) :- alike_teach(Req, Reply)))),
+       cleanup(retractall(bridge:exploration_teach(_, _))) ]) :-
+    % every candidate valued alike: the ordinary pour is one for another batch, the whole is not
+    Whole = [bouncy_liquid, heavy_source, pour_very_high],
+    Explored = [ant(a1, [], none, initial), ant(a2, Whole, a1, whole)],
+    teach_queue(Explored, a1, [], [], _{body:1, queue:1000, seed:1, batch:4, uncertainty:1.0, doubt:0.0,
+                                         newness:0.0, reach:4, whole_every:0, iteration:3}, _, Queue),
+    memberchk(cand([], a1, again(a1)), Queue),
+    \+ memberchk(cand(_, a2, again(a2)), Queue).
+
+%   The bridge's value, every candidate alike.
+alike_teach(Req, _{value:Values}) :-
+    findall(1, member(_, Req.candidates), Values).
+
 %   The bridge's value for a whole step: the children as fake_value/2 says,
-%   a whole (more than `body` propositions) by its length, so the longest
+%   a whole (named in the request's wholes) by its length, so the longest
 %   whole is the likeliest.
 whole_teach(Req, _{value:Values}) :-
-    findall(V, ( member(C, Req.candidates), length(C, L),
-                 ( L > Req.body -> V = L ; fake_value(C, V) ) ), Values).
+    findall(V, ( member(C, Req.candidates),
+                 ( memberchk(C, Req.wholes) -> length(C, V) ; fake_value(C, V) ) ), Values).
 
 test(wholes_are_seeded_random_antecedents_of_more_than_most) :-
     wholes(7, 12, 2, [], Wholes),

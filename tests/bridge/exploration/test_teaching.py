@@ -156,21 +156,21 @@ def test_newness_fades_where_pours_keep_showing_what_was_seen():
 
 
 def test_a_whole_is_valued_by_its_newness_alone_counted_whole():
-    """A candidate of more propositions than `most` is a whole, which no
-    question says: it moves no answer and narrows no likelihood a question
-    asks, so only its newness counts, with no part's subtracted; the same
-    body within `most` is valued as before."""
+    """A candidate named among the wholes is one no question says: it
+    moves no answer and narrows no likelihood a question asks, so only its
+    newness counts, with no part's subtracted; the same body not named so
+    is valued as before."""
     P, S = pours([], 40, 1)
     knows = model(*pooled((P, S), pours(["pour_far_away"], 24, 3)), 1)
     whole = ("light_liquid", "pour_far_away", "pour_high")
     w = Weights(1.0, 1.0, 2.0)
-    found = teaching(P, S, [()], [whole, ("pour_far_away",)], w, 4, 1, 2, knows, most=2)
+    found = teaching(P, S, [()], [whole, ("pour_far_away",)], w, 4, 1, 2, knows, wholes=[whole])
     assert found.departure[0] == found.uncertainty[0] == found.doubt[0] == 0.0
     assert found.newness[0] > 0.2
     assert found.value[0] == pytest.approx(2.0 * found.newness[0], abs=1e-6)
-    # as a body a question could say (most 3), its parts' newness is subtracted
+    # as a body a question could say, its parts' newness is subtracted
     # (pouring far away alone shows the new behaviour as well) and its doubt counts
-    asked = teaching(P, S, [()], [whole, ("pour_far_away",)], w, 4, 1, 2, knows, most=3)
+    asked = teaching(P, S, [()], [whole, ("pour_far_away",)], w, 4, 1, 2, knows)
     assert asked.newness[0] < found.newness[0]
 
 
@@ -184,7 +184,7 @@ def test_a_whole_is_new_where_its_consequent_is_none_explored_has():
     far = ("bouncy_source", "light_liquid", "pour_far_away")
     plain = ("bouncy_source", "heavy_source", "light_liquid")
     w = Weights(0.0, 0.0, 1.0)
-    before = teaching(P, S, [()], [far, plain], w, 4, 1, 2, most=2).newness
-    after = teaching(P, S, [(), ("pour_far_away",)], [far, plain], w, 4, 1, 2, most=2).newness
+    before = teaching(P, S, [()], [far, plain], w, 4, 1, 2, wholes=[far, plain]).newness
+    after = teaching(P, S, [(), ("pour_far_away",)], [far, plain], w, 4, 1, 2, wholes=[far, plain]).newness
     assert before[0] > 0.9 > before[1]
     assert after[0] < before[0] and after[0] == pytest.approx(after[1], abs=0.05)
