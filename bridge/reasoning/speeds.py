@@ -75,10 +75,8 @@ SPEEDS: tuple[tuple, ...] = (
     # tipped fast or slowly: the move into the pouring pose, which tilts the source as it goes
     ("approach fast", (r"re(fast|quick|rapid):\b(?:tilt|tip)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
                        r" (?:fast|quick(?:ly)?|rapidly)\b(?! (?:than|as)\b)",
-
                        r"re(fast|quick|rapid):\b(?:quickly|fast|rapidly) (?:tilt|tip)\w*\b")),
     ("approach slowly", (r"re(slow|gradual|steadi):\b(?:tilt|tip)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
                          r" (?:slow(?:ly)?|gradually|steadily)\b(?! (?:than|as)\b)",
-
                          r"re(slow|gradual|steadi):\b(?:slowly|gradually|steadily) (?:tilt|tip)\w*\b")),
 )
