@@ -39,8 +39,9 @@ def _batch() -> int:
 def curiosity(seed: int, budget: int, oracle: str, store: Path, run,
               settings: dict | None = None) -> Chosen:
     """The learning curiosity's pours and, at each prefix, the antecedents
-    explored by then (from its trace); `settings` are options of explore
-    other than their defaults."""
+    explored by then (from its trace) that are its rules' bodies (every
+    one but a whole); `settings` are options of explore other than their
+    defaults."""
     from pantarhei.bridge.exploration.explore_call import ExploreOptions, explore
     from pantarhei.bridge.exploration.trace import trace_path
 
@@ -51,7 +52,9 @@ def curiosity(seed: int, budget: int, oracle: str, store: Path, run,
                                         **(settings or {})))
         trace = [json.loads(line) for line in trace_path(out).read_text().splitlines()]
     P, S = result["pours"]
-    steps = [(int(t["simulations"]), tuple(sorted(t["antecedent"]))) for t in trace]
+    # a whole has no rule of its own (theory/curiosity/writer.pl)
+    steps = [(int(t["simulations"]), tuple(sorted(t["antecedent"]))) for t in trace
+             if t["via"] != "whole"]
 
     def bodies(n: int) -> list[tuple[str, ...]]:
         return list(dict.fromkeys(b for end, b in steps if end <= n))

@@ -257,7 +257,8 @@ class Host:
         learner asks for where there are few (simulated as the
         exploration's are, seeded from `seed`), ranked with Algorithm 1's
         rules of the request (id, expectation, holds, body,
-        confidence_permille)."""
+        confidence_permille); the explored antecedents named `ruleless`
+        (the learning curiosity's wholes) get no rule of their own."""
         from pantarhei.bridge.learning.general_rules import confidence
         from pantarhei.bridge.learning.layers import Ranked, general_layer
 
@@ -273,7 +274,8 @@ class Host:
                         for e in request["explored"]]
         return general_layer(learned, s.params, s.scores, int(request["seed"]),
                              lambda X: s.simulator.simulate(X, progress=progress), explored,
-                             str(request["learner"]))
+                             str(request["learner"]),
+                             ruleless={str(a) for a in request.get("ruleless", [])})
 
     def end(self, request: dict) -> dict:
         s = self.session

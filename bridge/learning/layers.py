@@ -24,7 +24,7 @@ both engines read that file.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Sequence
+from typing import AbstractSet, Sequence
 
 import numpy as np
 
@@ -109,7 +109,7 @@ def learn_general(P: np.ndarray, S: np.ndarray, seed: int, simulate=None,
 
 def general_layer(learned: Sequence[Ranked], P: np.ndarray, S: np.ndarray, seed: int,
                   simulate=None, explored: Sequence[tuple[str, Sequence[str]]] | None = None,
-                  learner: str | None = None) -> dict:
+                  learner: str | None = None, ruleless: AbstractSet[str] = frozenset()) -> dict:
     """The general layer of an exploration's pours (P, S) and the
     learner's own (simulated with `simulate`), as explore/1 writes it
     beside Algorithm 1's rules `learned`: the pours it learned from (those
@@ -118,14 +118,18 @@ def general_layer(learned: Sequence[Ranked], P: np.ndarray, S: np.ndarray, seed:
     pairs that make both layers one linear order. With `explored` (id,
     antecedent) pairs, the learning curiosity's: the rules' bodies are the
     explored antecedents (and the empty one), each rule names the
-    antecedent whose body it has, and no pour is the learner's own. The
+    antecedent whose body it has, and no pour is the learner's own; the
+    explored antecedents whose ids are in `ruleless` are no rule's body
+    (their pours teach the others, and are cited as explored). The
     rules are learned by the learner named `learner` (the run's setting;
     None: the option table's default)."""
     n0 = len(np.atleast_2d(P))
-    among = None if explored is None else [tuple(sorted(b)) for _, b in explored]
+    among = None if explored is None else [tuple(sorted(b)) for a, b in explored
+                                           if str(a) not in ruleless]
     general, P, S = learn_general(P, S, seed, simulate if explored is None else None,
                                   bodies=among, learner=learner)
-    ids = {tuple(sorted(b)): str(a) for a, b in reversed(list(explored or []))}
+    ids = {tuple(sorted(b)): str(a) for a, b in reversed(list(explored or []))
+           if str(a) not in ruleless}
     rules = []
     for g in general.rules:
         rule = {"id": g.id, "expectation": g.expectation, "holds": g.holds,

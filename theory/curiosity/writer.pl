@@ -144,11 +144,15 @@ general_layer(Facts, Settings, General) :-
 %   the rules of the explored antecedents whose likelihoods the rest of
 %   the theory does not give, each naming its antecedent, with every pour
 %   of the run pooled for the likelihoods; the setting/2 facts of how many
-%   pours they rest on, and their sup/2 facts.
+%   pours they rest on, and their sup/2 facts. A whole (explored via
+%   whole) has no rule of its own: no question says it, and its pours
+%   teach the rules of the others; its pours are cited as an explored
+%   antecedent's.
 learned_layer(Explored, Settings, Layer) :-
     maplist(entry, Explored, Entries),
-    call_bridge(exploration_general, _{rules:[], explored:Entries, seed:Settings.seed,
-                                       learner:Settings.learner}, Reply),
+    findall(Id, member(ant(Id, _, _, whole), Explored), Wholes),
+    call_bridge(exploration_general, _{rules:[], explored:Entries, ruleless:Wholes,
+                                       seed:Settings.seed, learner:Settings.learner}, Reply),
     layer_facts(Reply, Layer).
 
 %   layer_facts(+Reply, -Facts): the rules of exploration_general's

@@ -73,6 +73,16 @@ def test_whole_every_explores_a_whole_every_so_many_steps(tmp_path):
     # to have a new consequent)
     assert wholes and all(t["iteration"] % 3 == 0 and len(t["antecedent"]) > 2 for t in wholes)
     assert all(len(t["antecedent"]) <= 2 for t in trace if t["via"] != "whole")
+    # a whole has no rule of its own, and no rule names it; its pours are
+    # cited as an explored antecedent's
+    facts = read_facts([tmp_path / "w.pl"])
+    named = {str(a[2]) for a in facts["provenance"] if str(a[1]) == "antecedent"}
+    ids = {str(t["id"]) for t in wholes}
+    assert named and not named & ids
+    theory = load([tmp_path / "w.pl"])
+    assert not {tuple(sorted(t["antecedent"])) for t in wholes} & {tuple(sorted(r.body))
+                                                                 for r in theory.rules}
+    assert ids <= {str(a[0]) for a in facts["held"]}
 
 
 def test_one_layer_whose_bodies_are_the_explored_antecedents(learned):
