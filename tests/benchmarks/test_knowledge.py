@@ -54,6 +54,21 @@ def test_the_curiositys_theory_at_a_budget_has_what_it_explored_by_then(tmp_path
     assert set(chosen.bodies(20)) <= set(chosen.bodies(40)) and len(chosen.bodies(40)) > 1
 
 
+def test_the_curiositys_wholes_are_no_bodies_of_its_theory(tmp_path):
+    """With whole steps, the bodies are the antecedents a question says
+    (at most `body` propositions), as the theory explore writes has them."""
+    from pantarhei.bridge.exploration.simulation import open_simulator
+
+    sim = open_simulator("synthetic", "inline", None, tmp_path / "s.sqlite")
+    try:
+        run = lambda P: np.asarray(sim.simulate(P, progress=False), dtype=float)  # noqa: E731
+        chosen = knowledge.curiosity(101, 40, "synthetic", tmp_path / "s.sqlite", run,
+                                     {"whole_every": 2})
+    finally:
+        sim.close()
+    assert len(chosen.bodies(40)) > 1 and all(len(b) <= 2 for b in chosen.bodies(40))
+
+
 def test_rows_measured_are_kept_and_not_measured_again(tmp_path, monkeypatch):
     import json
 
