@@ -16,6 +16,8 @@ OBJECTS = ("source", "destination", "liquid")
 OBJECT_STEMS = {stem(o): o for o in OBJECTS}
 BOWL = stem("bowl")
 #: Words that may stand between a body's value word and its noun: "a light, slippery bowl",
+#: Words of degree between a copula and its value: "the jug is really light".
+_DEGREES = frozenset(stem(w) for w in "very really quite so pretty too rather fairly somewhat extra super".split())
 #: "a heavy ceramic bowl", "the spout of a light jug" (everyday.txt's materials and parts).
 BETWEEN = {"a", "an", "the", "and", "or", "very", "material", "part"}
 ARTICLES = {"a", "an", "the"}
@@ -177,7 +179,10 @@ class Nouns:
         in it ("the table is slippery, the bowl ...": the table)."""
         j = self.stop[last + 1]
         t = self.tokens
-        if first > 0 and t[first - 1].word in _COPULAS and self.before[first] is not None:
+        k = first - 1
+        while k > 0 and t[k].word in _DEGREES:  # "the bowl is very light": said of the bowl
+            k -= 1
+        if k >= 0 and t[k].word in _COPULAS and self.before[first] is not None:
             return self.before[first]           # said of the noun before: "bowl is light and ..."
         ahead = j in self.roles and (t[j].clause == t[last].clause or self.before[first] is None
                                      or (first > 0 and t[first - 1].word in BETWEEN))

@@ -34,82 +34,22 @@ from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.everyday import Matcher, names
 from pantarhei.bridge.reasoning.nouns import poured_from
+from pantarhei.bridge.reasoning.outcome_verbs import ALL_IN as _ALL_IN, OUTCOMES
 from pantarhei.bridge.reasoning.frames import CONTACT, asked_plainly
 from pantarhei.bridge.reasoning.phases import STILL, during
 from pantarhei.bridge.reasoning.seeking import reaches, sought, wanting
 from pantarhei.bridge.reasoning.strikers import containers, striker
-from pantarhei.bridge.reasoning.vessels import OUT_OF, destinations, filled, in_the_source, liquids, out_of_the_source
+from pantarhei.bridge.reasoning.vessels import destinations, filled, in_the_source, liquids, out_of_the_source
 
-_ALL_IN = ("liquid_enters_destination",)
-
-#: Verbs of liquid thrown about: thrown over the rim or out of the destination, it entered
-#: and did not stay ("splash out of the bowl": liquid_remains_in_destination and no_spill).
-_THROWN = (r"spill\w*|spilt|splash\w*|splatter\w*|splat\w*|slop\w*|slosh\w*|spray\w*|spurt\w*"
-           r"|squirt\w*|escap\w*|spew\w*|gush\w*|leak\w*|drip\w*|dribbl\w*|trickl\w*")
-
-#: (verb phrase, the expectations it speaks of, whether it happening makes them fail)
-OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
-    (rf"(?:{_THROWN}) (?:(?:back|right|straight|all|up|and) )*(?:over|past|out of|out over|from)(?= (?:the |a |an |my "
-     rf"|your |its |their |this |that )?(?!source\b)(?:[a-z]+ )?{OUT_OF}\b)"
-     rf"|escap\w*(?= (?:the |a |an |my |your |its )?(?!source\b)(?:[a-z]+ )?{OUT_OF}\b)"
-     # thrown out, no bowl said: out of the destination, as people who pour read it ("splash out")
-     r"|(?:spill\w*|spilt|splash\w*|splatter\w*|slosh\w*|slop\w*)(?: back)? out\b(?! of\b| over\b)"
-     r"|overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*|slop\w*|splash\w*|splatter\w*|fizz\w*"
-     r"|foam\w*|froth\w*|bubbl\w*|boil\w*) over"
-     r"(?: the (?:rim|edge|top|side)s?)?"
-     r"|(?:bounc|jump|leap|hop)\w* (?:over|out(?: of)?)|flood\w*"
-     r"|(?:go|goes|going|went|get|gets|come|comes|came) over(?= the (?:rim|edge|top|side|brim|lip)s?\b)", ("liquid_remains_in_destination", "no_spill"), True),
-    (r"spill\w*|spilt|splash\w*|splatter\w*|slosh\w*|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
-     r"|makes? (?:a|any) (?:big |huge |bit of a |real |total )?mess|(?:go|goes|going|went|get|gets) everywhere"
-     r"|slop\w*|splat\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)|(?:get|gets|got|getting) (?:any|some|much|a drop)(?: of it)?(?= on\b| onto\b)"
-     r"|hit\w* (?:the )?(?:table|floor|counter|worktop|bench)\b|(?:go|goes|going|went|get|gets|got|land|lands|landed|landing|fall|falls|fell) (?:on|onto|all over"
-     r"|outside)",
-     ("no_spill",), True),
-    (r"(?:stay|stays|remain|remains|keep|keeps) (?:upright|standing)", ("destination_upright",), False),
-    (r"tip(?:s|ped|ping)?(?: over)?|toppl\w*|(?:fall|falls|falling|fell) (?:over|down)|knock\w*(?: it| the \w+)? over"
-     r"|turn\w* over|flip\w*|capsiz\w*|overturn\w*|keel\w* over|tumbl(?:e|es|ed|ing)\b"
-     r"|(?:fall|falls|fell)\b(?! (?:in|into|inside|out|off|on|onto)\b)", ("destination_upright",), True),
-    (r"(?:stay|stays|remain|remains|keep|keeps|be|is) (?:still|put|in place|steady|stable|stationary"
-     r"|(?:exactly |right )?where (?:it|they) (?:is|was|are|were|stands|stood|started))"
-     r"|(?:sit|sits|sitting|stand|stands|standing|stay|stays|staying|remain|remains|rest|rests|resting|be)"
-     r" (?:still )?(?:in|at) the same (?:spot|place|position|location)", STILL, False),
-    (r"slid\w*|slip(?:s|ped|ping)?\b|shift\w*|budg\w*|wobbl\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
-     r"|jostl\w*|rock(?:s|ed|ing)?|shak(?:e|es|ing)|shook|translat\w*|drift\w*|creep\w*|scoot\w*"
-     r"|displac\w*|(?:(?:get|gets|got|getting|be|being) )?(?:pushed|shoved)\b(?! (?:in|back|away|out)\b)|(?:go|goes|going|get|gets|getting) (?:wiggly|wobbly|shaky|jiggly)"
-     r"|mov(?:e|es|ed|ing)\b(?! (?:in|away|closer|to|out|back|up|down|over|into|off|towards?)\b)|bounc\w* (?:around|about)",
-     STILL, True),
-    (r"bump\w*|hit(?:s|ting)?|touch\w*|collid\w*|crash\w*|knock\w*|clip(?:s|ped)?|strike\w*"
-     r"|bonk\w*|bang\w*|intersect\w*|clash\w*|graz(?:e|es|ed|ing)|scrap(?:e|es|ed|ing)|nudg\w*|clink\w*|slam\w*"
-     r"|smash\w*|whack\w*|(?:run|runs|ran|running) into|(?:come|comes|came) into contact|bounc\w* (?:off|against)"
-     r"|make contact|makes contact|(?:any|some) contact"
-     r"|(?<=there )(?:any |some )?contact|(?<=there be )(?:any |some )?contact",   # "is there contact"
-     ("source_clear",), True),
-    (r"(?:stay|stays|keep|keeps|be|is)? ?clear(?: of)?", ("source_clear",), False),
-    # emptied into the bowl: it leaves the source and goes in ("does the carton empty into the bowl")
-    (r"(?:empt(?:y|ies|ied)|drain(?:s|ed|ing)?)(?: out)?(?= into\b)", ("liquid_leaves_source", *_ALL_IN), False),
-    (r"(?:come|comes|coming|came|get|gets|pour|pours|flow|flows|run|runs|drain\w*) out"
-     r"|(?:go|goes|going|went) out\b(?! of (?:the |a |an |my )?(?!source\b)(?:[a-z]+ )?(?:bowl|destination)\b)"
-     r"|empt(?:y|ies|ied)(?: out)?|(?:end|ends) up (?:totally |completely |fully )?empty|leav(?:e|es|ing) (?:the|it)\b|exit\w*", ("liquid_leaves_source",), False),
-    (r"(?:end|ends|ended|ending) up in(?:side)?", (*_ALL_IN, "liquid_remains_in_destination"), False),
-    # what stays in the bowl entered it: "remains" alone holds also when none enters
-    (r"(?:stay|stays|remain|remains) (?:in )?there\b"
-     r"|(?:stay|stays|remain|remains|stop|stops|stick|sticks|stuck|cling|clings|clung) in(?:side)?(?: the \w+)?",
-     (*_ALL_IN, "liquid_remains_in_destination"), False),
-    (r"(?:go|goes|going|went|get|gets|land|lands|make it|makes it|fall|falls|transfer\w*|arrive\w*|finds? (?:its|their) way) (?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*|get (?:the |all (?:the )?)?(?:water|liquid|milk|it|everything) (?:in|into)\b",
-     _ALL_IN, False),
-    (r"miss(?:es|ed|ing)?|overshoot\w*|undershoot\w*|fall\w* short", _ALL_IN, True),
-    (r"safe(?:ly)?|(?:be |is )?(?:fine|ok|okay|alright|all right)\b|(?:a )?(?:good|bad) idea|risky"
-     r"|(?:go|goes|going|went) wrong"
-     r"|dangerous|(?:a )?problem|(?:bad|good|wise|unwise|smart|sensible)(?= to\b)",
-     ("no_spill", "destination_upright", "source_clear"), False),
-)
 #: Words that ask: an auxiliary before its subject ("will it spill"), or a
 #: quantifier that needs none ("anything come out", "how much spills").
 _MODALS = r"will|would|does|do|did|could|can|might|may|should|shall"
 _AUX = rf"{_MODALS}|is|are|was|were"
 #: Where a clause starts: before "is" in "if the jug is heavy and tipped", how the source is held.
 _CLAUSE = re.compile(r"[,;:.!?]|\b(?:if|when|while|and|but|so|or|then|what|whether)\b")
-_WHOLE = {*"nothing none no every each drop drops bit single last".split()}   # a goal's how much: not the scene's
+_WHOLE = {*"nothing none no every each drop drops droplet droplets bit single last".split()}
+#: How little of the liquid a goal excludes: "without a single drop spilling", "any droplets".
+_DROPS = r"(?:drop|droplet|bit|speck|trace|splash)s? "   # a goal's how much: not the scene's
 #: Who acts: a clause with one of these in its subject says what is done, not what happens
 #: ("do I tip the cup"); the source moving is the scene's too ("does the source move slowly").
 _ACTORS = {"i", "we", "you", "robot", "arm", "gripper", "hand", "he", "she", "they"}
@@ -174,7 +114,8 @@ def _patterns() -> tuple[re.Pattern, ...]:
                          r"|\b(?:the |any |a )?(?:spill(?:s|age)?|splash(?:es|ing)?|drips?|mess)"
                          r" (?:outcome|result|risk|rate|amount|chance|probability|likelihood)s?\b")
     goal = re.compile(
-        rf"\b(?:without (?P<gneg>any (?:of (?:it|them|the [a-z]+) )?|a |making (?:a |any )?)?(?P<gwho>(?:it|them|the [a-z]+) )?(?:ever |even )?"
+        rf"\b(?:without (?P<gneg>(?:(?:so much as |even )?(?:any|a single|one single|a|one) )?{_DROPS}(?:of (?:it|them|the [a-z]+) )?"
+        rf"|any (?:of (?:it|them|the [a-z]+) )?|a |making (?:a |any )?)?(?P<gwho>(?:it|them|the [a-z]+) )?(?:ever |even )?"
         rf"(?:getting |being )?"
         rf"|so(?: that| as)?(?P<gsub>(?: (?!not\b)"
         rf"[a-z]+){{0,4}}?)(?P<gnot> not| never)? (?:(?:to|will|does|do|would|can|could|all|"

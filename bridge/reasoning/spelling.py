@@ -31,7 +31,7 @@ from functools import lru_cache
 from pantarhei.bridge.reasoning.everyday import sections
 from pantarhei.bridge.reasoning.negation import NEGATIONS
 from pantarhei.bridge.reasoning.numerals import NUMBER_WORDS
-from pantarhei.bridge.reasoning.outcomes import OUTCOMES
+from pantarhei.bridge.reasoning.outcome_verbs import OUTCOMES
 from pantarhei.bridge.reasoning.properties import LEVELS, NAMES
 from pantarhei.bridge.reasoning.units import UNITS
 from pantarhei.bridge.reasoning.stages import MARKERS
