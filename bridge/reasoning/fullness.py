@@ -77,3 +77,38 @@ def _share(words: list[str], i: int) -> tuple[float | None, int]:
             and words[i + 3] in ("percent", "%") and 0 < float(words[i + 2]) <= 100:
         return float(words[i + 2]) / 100, i + 4
     return None, i
+
+
+#: What a source is filled to when it is full ("to the top", "right to the brim").
+_TOP = {"top", "brim"}
+_UP_TO = {"right", "all", "the", "way", "up", "completely"}
+#: The bowl filled is a goal's (seeking.py), not an amount the source holds.
+_FILLED_BOWLS = {"bowl", "bowls", "destination", "target"}
+
+
+class Filled:
+    """A source filled to the top, named between ("filling the cup right to
+    the top", "if I fill the jug all the way to the brim"): read as full.
+    Not the bowl, nor a purpose ("to fill the cup to the top": a goal)."""
+
+    def spans(self, words: list[str]) -> list[tuple[int, int, tuple[str, ...]]]:
+        out: list[tuple[int, int, tuple[str, ...]]] = []
+        for i, w in enumerate(words):
+            if w not in ("fill", "fills", "filled", "filling") or (i > 0 and words[i - 1] == "to"):
+                continue
+            k = i + 1 + (i + 1 < len(words) and words[i + 1] == "up")
+            if k >= len(words) or words[k] not in ("the", "a", "an", "my", "your", "this", "that"):
+                continue
+            for noun in (k + 1, k + 2):             # "the cup", "the glass jug"
+                end = _to_the_top(words, noun + 1)
+                if end and noun < len(words) and words[noun] not in _FILLED_BOWLS:
+                    out.append((i, end, ("full",)))
+                    break
+        return out
+
+
+def _to_the_top(words: list[str], k: int) -> int | None:
+    """Where "to the top" (after "right", "all the way") said from `k` ends, or None."""
+    while k < len(words) and words[k] in _UP_TO and words[k:k + 2] != ["the", "top"]:
+        k += 1
+    return k + 3 if words[k:k + 2] == ["to", "the"] and k + 2 < len(words) and words[k + 2] in _TOP else None

@@ -62,7 +62,9 @@ _REST = ("each other|one another|at all times|all the time|the whole time|at any
          "destination|source|target|container|rim|edge|sides?|middle|centre|center|drop|drops|much|too|even|ever|really|very|"
          "up|down|off|away|again|then|across|along|around|against|between|"
          # how much it happens ("does it shift a little"): the outcome's, not an amount of liquid
-         "little|bit|lot|slightly|tiny")
+         "little|bit|lot|slightly|tiny|"
+         # or more or less of it, against the ordinary pour ("does it spill more if tilted?")
+         "more(?! than)|less(?! than)")
 #: How much of the liquid an outcome is asked of ("does most of it spill"), or its odds ("is
 #: the risk of spilling high"): the outcome's words, not the scene's ("some of it" is no
 #: some_liquid).
@@ -117,6 +119,8 @@ def _patterns() -> tuple[re.Pattern, ...]:
         rf"\b(?:without (?P<gneg>(?:(?:so much as |even )?(?:any|a single|one single|a|one) )?{_DROPS}(?:of (?:it|them|the [a-z]+) )?"
         rf"|any (?:of (?:it|them|the [a-z]+) )?|a |making (?:a |any )?)?(?P<gwho>(?:it|them|the [a-z]+) )?(?:ever |even )?"
         rf"(?:getting |being )?"
+        # the most that can be done before an outcome: "the fastest I can tip it before it starts splashing"
+        rf"|before (?P<gbef>(?:it|they|the [a-z]+|anything|any of it) )(?:ever |even )?(?:starts?|begins?) (?:to )?"
         rf"|so(?: that| as)?(?P<gsub>(?: (?!not\b)"
         rf"[a-z]+){{0,4}}?)(?P<gnot> not| never)? (?:(?:to|will|does|do|would|can|could|all|"
         rf"any) )?)(?:{verbs})\b{end}")
@@ -227,13 +231,13 @@ def hear(text: str) -> Heard:
         return f" {keep} outcome " if keep else " outcome "
 
     def as_goal(m: re.Match) -> str:
-        subject = (m.group("gsub") or m.group("gwho") or "").split()
+        subject = (m.group("gsub") or m.group("gwho") or m.group("gbef") or "").split()
         names, bad = _which(m)
         names = _staying(names, next(v for g, v in m.groupdict().items() if g[0] == "v" and v), subject)
         last[:] = subject
         if _acts(subject, names, m):
             return m.group(0)
-        negated = (m.group(0).startswith("without") or bool(m.group("gnot"))
+        negated = (m.group(0).startswith(("without", "before")) or bool(m.group("gnot"))
                    or any(w in ("nothing", "none", "no", "never") for w in subject))
         holds = (not bad) != negated
         negations.append(negated)

@@ -37,7 +37,8 @@ _WHAT = r"(?: (?:it|them|the \w+))?(?: (?:from|at|to|up|in))?"
 #: The words that ask for a value (compiled by _asking, where a goal is said).
 _ASKING_SOURCE = (
     # a value that works: "what tilt works", "which height would work best"
-    rf"\b(?:what|which) {_VALUE} (?:works?|would work|will work|is best|would be best)(?: best)?(?= |$|[?.!,])"
+    rf"\b(?:what|which) {_VALUE}(?: {_VALUE})? (?:works?|would work|will work|is best|would be best"
+    rf"|(?:is|would be) (?:good|right|ideal|safe|safest|better))(?: best)?(?= |$|[?.!,])"
     rf"|\b(?:(?:what|which)(?: is| be)?(?: the| a)?(?: {_BEST})?|(?:the |a )?{_BEST}) (?:(?:pour|pouring|approach|retreat) )?{_VALUE}(?: {_VALUE})?"   # "tilt angle", "pour height"
     rf"(?:(?:,| and| or|, and|, or) (?:the |a )?{_VALUE})*"      # "the best height and angle"
     rf"(?: (?:to {_ACT}{_WHAT}|(?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT}"
@@ -141,11 +142,27 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
     for pattern, wanted in _WANTING:
         said += tuple(m.group(0).strip() for m in pattern.finditer(text))
         text = pattern.sub(wanted, text)
+    filling = _filling()
+    if filling.search(text):
+        said += tuple(m.group(0).strip() for m in filling.pattern.finditer(text))
+        text = filling.pattern.sub(lambda m: f"so that it all ends up in {m.group(1) or m.group(2)}", text)
     for cued, wanted in _WANTING_CUED:
         if cued.search(text):
             said += tuple(m.group(0).strip() for m in cued.pattern.finditer(text))
             text = cued.pattern.sub(wanted, text)
     return text, said
+
+
+@lru_cache(maxsize=None)
+def _filling() -> Cued:
+    """Filling the bowl, wanted: "I'd like to fill the bowl", "have the bowl end up full"
+    (so that it all ends up in it: it goes in and stays); not how full ("fill the bowl
+    halfway"), nor the source filled ("filling the cup to the top": a full source)."""
+    bowl = rf"((?:the|a|an|my|this|that|our|your) (?:[a-z]+ )?(?:{destinations()}))"
+    return Cued(rf"\b(?:i|we) (?:would like|like|want|need|wish|am trying|are trying|hope|aim|plan|have|had)"
+                rf" to fill (?:up )?{bowl}(?: up)?(?: (?:right |all the way )?to the (?:top|brim))?(?! (?:half|halfway|about|around|a quarter|a third|to (?:half|a |\d)|\d))\b"
+                rf"|\b(?:i|we) (?:would |want to |need to )?have {bowl} (?:end up |be )?(?:full|filled(?: up)?)\b",
+                ("fill", "full"))
 
 
 #: Wanting, compiled when cued: "I need none of it on the table" (so that none goes on it),

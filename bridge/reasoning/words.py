@@ -28,7 +28,7 @@ from __future__ import annotations
 from functools import lru_cache
 
 from pantarhei.bridge.reasoning.everyday import UNCLEAR, Matcher, names, sections
-from pantarhei.bridge.reasoning.fullness import SAID as FULLNESS_SAID, Fullness
+from pantarhei.bridge.reasoning.fullness import SAID as FULLNESS_SAID, Filled, Fullness
 from pantarhei.bridge.reasoning.bodies import BODIES
 from pantarhei.bridge.reasoning.comparisons import COMPARATIVES as _COMPARATIVES, COMPARISONS, DEGREE as _DEGREE
 from pantarhei.bridge.reasoning.contrasts import CONTRASTS
@@ -381,7 +381,7 @@ def _everyday() -> list[tuple[Matcher, str, str]]:
 
 
 @lru_cache(maxsize=None)
-def rewrites() -> tuple[tuple[Cued | Matcher | Levels | Values | Surfaces | Ramps | Fullness | NumberWords, tuple[str, ...],
+def rewrites() -> tuple[tuple[Cued | Matcher | Levels | Values | Surfaces | Ramps | Fullness | Filled | NumberWords, tuple[str, ...],
                                  str], ...]:
     """Each rewrite in the order applied, with the words it is read as and
     what is said back: a property by its level or its number ("low
@@ -391,7 +391,7 @@ def rewrites() -> tuple[tuple[Cued | Matcher | Levels | Values | Surfaces | Ramp
     then PHRASES; an entry's phrases as one pattern (cued.py), a section
     of the list as a Matcher."""
     return ((Levels(), (), ""), (Values(), (), ""), (Surfaces(), (), SURFACE_SAID), (Ramps(), (), ""),
-            (Fullness(), (), FULLNESS_SAID),
+            (Fullness(), (), FULLNESS_SAID), (Filled(), (), "read as a full source"),
             *((m, tuple(w.split()), said) for m, w, said in _everyday()),
             (NumberWords(), (), ""),
             *((Cued.of(phrases), tuple(words.split()), said[0] if said else "")
