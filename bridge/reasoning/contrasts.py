@@ -6,7 +6,8 @@ water use something thicker"; the everyday word list has read water as
 cannot name, set against one it reads ("from the side rather than from
 above"), is read as nothing, the place said beside it read, and so is an
 ordinary liquid set against a liquid said ("a thick liquid instead of
-water"); a little off
+water"), or a container with nothing said of it against one said ("a
+slippery cup instead of a ceramic mug"); a little off
 the centre is near the rim (off-centre with no amount stays refused: how
 far?); "right in the middle" is in the middle; a length "relative to the
 rim" is above it (a minus sign below it), "-2 cm height relative to the rim" too; "lower, close to the rim" is
@@ -43,6 +44,10 @@ CONTRASTS: tuple[tuple, ...] = (
     # an ordinary liquid set against the liquid said ("a thick liquid instead of water"): nothing more
     ("hedge", (rf"re(instead|rather|in place):(?<=liquid ){_CONTRAST} (?:the |plain |regular |normal |ordinary )?liquid\b",),
      "read as nothing: an ordinary liquid, set against the one said beside it"),
+    # a container with nothing said of it set against one said ("a slippery cup instead of a
+    # ceramic mug"; the word list has read both as bowls by then): nothing more
+    ("hedge", (rf"re(instead|rather|in place):(?<=bowl ){_CONTRAST} (?:a |an |the |my |your )?(?:material )*bowl\b",),
+     "read as nothing: a container with nothing said of it, set against the one said beside it"),
     ("near the rim", (r"re(off the |off cent|off midd|off dest|off bowl):\b(?:just |only )?(?:slightly|a (?:little |tiny )?bit|a little|a tad) off (?:the )?"
                          r"(?:destination |bowl )?(?:centre|center|middle)\b",),
      "read as near the rim: a little off the middle, where the rim is nearer"),

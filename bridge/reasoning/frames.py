@@ -19,6 +19,10 @@ FRAMES = tuple((re.compile(p), r) for p, r in (
      " does "),
     (r"\b(?:know|tell (?:me|us)|predict|wonder(?:ing)?|check|find out|figure out|see|ask(?:ing)?"
      r"|curious|unsure|not sure|any idea|no idea)(?: about)? (?:whether|if) ", " does "),
+    # how much of an outcome a scene changes: whether it happens with it ("does that change how
+    # much ends up in the bowl", as everyday.txt's "change whether")
+    (r"\b(?:change|changes|affect|affects|alter|alters|make (?:a|any) difference to|makes (?:a|any) difference to)"
+     r" (?=how much\b)", " "),
     # an outcome expected, as a noun: "would you expect spilling", "do you predict any splashing"
     (r"\b(?:expect|predict|anticipate|see|observe|get|cause|causes|notice)(?: any| some| a| much)? "
      r"(?=(?:spill|splash|drip|leak|slosh|splatter|dribbl)\w*\b(?! of\b))", " will it "),

@@ -38,12 +38,14 @@ _POURED_FROM = {(stem(a), stem(b))
                              ("bowl", "from"), ("destination", "from"), (CONTEXT, "from"))}
 
 
-def roles(tokens: list[Token], placeable: frozenset[str]) -> dict[int, str]:
+def roles(tokens: list[Token], placeable: frozenset[str], bowl: bool = False) -> dict[int, str]:
     """The body each noun names: a bowl is the destination, unless it is a
     source bowl or what is poured from ("pour from a cup", "out of a cup"),
     or named again ("pour from a carton ... the carton is light"), or one
-    people pour from ("a heavy jug", everyday.txt) and not poured into; a
-    context noun ("the table") names CONTEXT, no body of the scene."""
+    people pour from ("a heavy jug", everyday.txt) and not poured into, or
+    named beside "the bowl" (`bowl`: named in what is asked, "with a
+    slippery cup, does it end up in the bowl?"); a context noun ("the
+    table") names CONTEXT, no body of the scene."""
     roles: dict[int, str] = {}
     sources: dict[str, bool] = {}       # a bowl's name -> whether it names the source alone
     for i, t in enumerate(tokens):
@@ -82,7 +84,7 @@ def roles(tokens: list[Token], placeable: frozenset[str]) -> dict[int, str]:
                         else "destination")
             # (a name said of both bowls, "from a cup into a cup", refers to neither again)
             sources[name] = roles[i] == "source" and sources.get(name, True)
-    return _ones(tokens, _beside_the_bowl(tokens, roles), placeable)
+    return _ones(tokens, _beside_the_bowl(tokens, roles, bowl), placeable)
 
 
 #: What is done to the source, said before it ("tilt the heavy cup", "lift the mug") or after
@@ -121,7 +123,7 @@ def _ones(tokens: list[Token], roles: dict[int, str], placeable: frozenset[str])
                         and tokens[i - 1].word in placeable and tokens[i - 1].word not in BETWEEN}}
 
 
-def _beside_the_bowl(tokens: list[Token], roles: dict[int, str]) -> dict[int, str]:
+def _beside_the_bowl(tokens: list[Token], roles: dict[int, str], bowl: bool = False) -> dict[int, str]:
     """`roles`, with a container named beside "the bowl" the source: "the bowl is glass and
     the mug is bouncy" names two bodies, the bowl poured into and the mug poured from (not
     where the other is poured into, "from a jug into a cup", nor "both bowls"; nor where one
@@ -129,7 +131,7 @@ def _beside_the_bowl(tokens: list[Token], roles: dict[int, str]) -> dict[int, st
     if any(t.word in _INSTEAD for t in tokens):
         return roles
     named = {tokens[i].raw.split()[-1] for i in roles        # ("the bowl is glass": what it is made of)
-             if tokens[i].word == BOWL and not (i > 0 and tokens[i - 1].word in _COPULAS)}
+             if tokens[i].word == BOWL and not (i > 0 and tokens[i - 1].word in _COPULAS)} | ({"bowl"} if bowl else set())
     others = named - {"bowl"}
     other = others.pop() if len(others) == 1 else None
     if "bowl" not in named or other is None or any(

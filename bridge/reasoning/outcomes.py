@@ -53,6 +53,8 @@ _DROPS = r"(?:drop|droplet|bit|speck|trace|splash)s? "   # a goal's how much: no
 #: Who acts: a clause with one of these in its subject says what is done, not what happens
 #: ("do I tip the cup"); the source moving is the scene's too ("does the source move slowly").
 _ACTORS = {"i", "we", "you", "robot", "arm", "gripper", "hand", "he", "she", "they"}
+#: Verbs of one body striking another over: "knocks the bowl over", "pushes it over".
+_STRIKES = re.compile(r"\b(?:knock|push|shov)")
 #: What holds the source: it hitting the bowl is the source hitting it ("does the arm hit the bowl").
 _HOLDING = {"robot", "arm", "gripper", "hand"}
 #: The words that may follow an outcome's verb and are heard with it ("drip on the
@@ -86,6 +88,7 @@ class Heard:
     goals: tuple[str, ...]      # literals wanted: "no_spill", or "neg(no_spill)"
     phrases: tuple[str, ...]    # the phrases heard, as written (normalised)
     scene: str                  # the text left for the scene
+    bowl: bool = False          # whether the bowl is named in what is asked ("... end up in the bowl")
 
 
 @lru_cache(maxsize=None)
@@ -119,6 +122,8 @@ def _patterns() -> tuple[re.Pattern, ...]:
         rf"\b(?:without (?P<gneg>(?:(?:so much as |even )?(?:any|a single|one single|a|one) )?{_DROPS}(?:of (?:it|them|the [a-z]+) )?"
         rf"|any (?:of (?:it|them|the [a-z]+) )?|a |making (?:a |any )?)?(?P<gwho>(?:it|them|the [a-z]+) )?(?:ever |even )?"
         rf"(?:getting |being )?"
+        # a goal said as the state wanted: "pour neatly with nothing dribbling down the outside"
+        rf"|with (?P<gwith>nothing|none(?: of it)?|no (?:liquid|water|drops?|droplets?)) (?:ever |even )?"
         # the most that can be done before an outcome: "the fastest I can tip it before it starts splashing"
         rf"|before (?P<gbef>(?:it|they|the [a-z]+|anything|any of it) )(?:ever |even )?(?:starts?|begins?) (?:to )?"
         rf"|so(?: that| as)?(?P<gsub>(?: (?!not\b)"
@@ -182,14 +187,14 @@ def _acts(subject: list[str], names: tuple[str, ...], m: re.Match | None = None)
     happens, or what happens to something the scene does not hold ("is
     the table wobbly": everyday.txt's context nouns)."""
     actors = (_ACTORS - _HOLDING if names == ("source_clear",) or (names == ("destination_upright",) and m is not None
-              and "knock" in m.group(0)) else _ACTORS)           # what holds the source knocks the bowl over with it
+              and _STRIKES.search(m.group(0))) else _ACTORS)           # what holds the source knocks the bowl over with it
     head = subject[:subject.index("of")] if "of" in subject else subject     # "the jug of water"
     if names == ("source_clear",) and liquids().spans(head):   # "does the water hit the rim": no
         return True                                             # source hitting it
     if names in (STILL, ("destination_upright",)):      # "will they slide": the bowls
         actors = actors - {"they"}
     # "does the jug tip over": the source, held, neither tips over nor slides as the bowl does
-    held = names in (STILL, ("destination_upright",)) and m is not None and "knock" not in m.group(0) and any(
+    held = names in (STILL, ("destination_upright",)) and m is not None and not _STRIKES.search(m.group(0)) and any(
         w == "source" or (in_the_source(w) and not re.search(rf"\binto (?:\w+ )?(?:\w+ )?{w}\b", m.string))
         for w in head if w not in ("of", "the", "a", "an"))     # ("the jug knocks the bowl over": the bowl)
     return bool(actors.intersection(subject)) or held or bool(_around().spans(subject))
@@ -225,13 +230,14 @@ def hear(text: str) -> Heard:
     # in ("does a high-restitution (bouncy) liquid splash?"), as the scene reads them
     text = re.sub(r"[()\[\]]", " ", re.sub(r"(?<=[a-z])-(?=[a-z])", " ", text))
     last: list[str] = []                # the subject of the outcome asked before
+    bowl: list[str] = []                # per outcome asked: whether it names the bowl, or is asked of a container
 
     def take(m: re.Match, keep: str = "") -> str:
         phrases.append(m.group(0).strip())
         return f" {keep} outcome " if keep else " outcome "
 
     def as_goal(m: re.Match) -> str:
-        subject = (m.group("gsub") or m.group("gwho") or m.group("gbef") or "").split()
+        subject = (m.group("gsub") or m.group("gwho") or m.group("gbef") or m.group("gwith") or "").split()
         names, bad = _which(m)
         names = _staying(names, next(v for g, v in m.groupdict().items() if g[0] == "v" and v), subject)
         last[:] = subject
@@ -276,6 +282,11 @@ def hear(text: str) -> Heard:
         # "is the chance of spilling high": the odds, heard; "does it splash high": the scene's
         odds = m.group("odds") or ""
         said_odds = bool(m.group("chance") or _PART_OF.search(kept))
+        # the bowl named in what is asked ("how much ends up in the bowl") is still the bowl poured
+        # into: another container named beside it is poured from ("with a slippery cup")
+        # (not where a container is what the outcome is asked of: "does a light cup slide")
+        bowl.append("of a container" if containers().spans(subject) else
+                    "named" if re.search(r"\b(?:bowl|destination)\b", m.group("rest") or "") else "")
         return take(m, _PART_OF.sub("", kept)) + ("" if said_odds else odds)
 
     def as_nominal(m: re.Match) -> str:
@@ -328,7 +339,8 @@ def hear(text: str) -> Heard:
     if goals and reaches(said):         # "I want nothing on the counter. Is pouring from 20 cm ok?"
         wanted = [g.removeprefix("neg(").removesuffix(")") for g in goals]
         asked = [n for n in asked if n not in OUTCOMES[-1][1] or n in wanted] + [n for n in wanted if n not in asked]
-    return Heard(tuple(asked), tuple(goals), tuple(phrases), text)
+    return Heard(tuple(asked), tuple(goals), tuple(phrases), text,
+                 "named" in bowl and "of a container" not in bowl)
 
 
 def _repeat(pattern: re.Pattern, replace, text: str) -> str:

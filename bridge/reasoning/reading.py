@@ -185,7 +185,7 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
     typed += unnamed
     outcome = hear(text)
     tokens = read_numbers(words_of(outcome.scene), lex.placeable)
-    accepted = _read(tokens, lex)
+    accepted = _read(tokens, lex, outcome.bowl)
     cues = [i for i, t in enumerate(tokens) if t.word in NEGATION_STEMS]
     ends = scope_ends(tokens)
     # per position: how many words before it say something (neither filler
@@ -279,12 +279,12 @@ def _ordinary(tokens: list[Token], lex: _Lexicon, asks: bool) -> bool:
                     for i, t in enumerate(tokens)))
 
 
-def _read(tokens: list[Token], lex: _Lexicon) -> list[tuple[str, frozenset[int]]]:
+def _read(tokens: list[Token], lex: _Lexicon, bowl: bool = False) -> list[tuple[str, frozenset[int]]]:
     """Each proposition said, with the positions of the words that say it:
     names given outright, then the readings with the most words, then the
-    closest together, each word read once."""
+    closest together, each word read once (`bowl`: named in what is asked)."""
     stage = stages(tokens)
-    noun = Nouns(tokens, roles(tokens, lex.placeable), lex.placeable)
+    noun = Nouns(tokens, roles(tokens, lex.placeable, bowl), lex.placeable)
     found = [(t.word, frozenset({i})) for i, t in enumerate(tokens) if t.word in lex.slots]
     claimed = set().union(*(p for _, p in found))
     for words, positions in sorted(_occurrences(tokens, lex), key=_closest):

@@ -91,6 +91,8 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:keep|keeps|keeping|stop|stops|stopping|prevent|prevents|preventing) (it|them|the [a-z]+)"
      r" from (?=[a-z]+ing\b)", r"so that \1 does not "),
     (r"\bmake sure(?: that)? ", "make sure so that "),
+    # "pour the syrup neatly": so that nothing spills
+    (r"\b(pour(?:s|ed|ing)?(?: (?:it|them|the [a-z]+|[a-z]+))?) (?:neatly|cleanly|tidily)\b", r"\1 so that nothing spills"),
     # "and have it not slide"
     (r"\bhave (it|them|the [a-z]+) (?:not|never) (?=[a-z]+)", r"so that \1 does not "),
     # "I'd prefer the bowl not move", "we hope it doesn't tip"

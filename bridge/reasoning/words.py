@@ -252,7 +252,7 @@ PHRASES: tuple[tuple, ...] = (
                       "right next to [the|its] [destination|bowl] rim", "next to [the|its] [destination|bowl] rim",
                       # poured on the rim, onto its very edge: over it
                       "on [the|its] [destination|bowl] rim", "onto [the|its] [destination|bowl] rim",
-                      "onto [the|its] very rim", "on [the|its] very rim")),
+                      "onto [the|its] very rim", "on [the|its] very rim", "onto one rim", "on one rim")),
     ("very", ("extremely", "super")),
     ("very high", ("very high up", "way up high", "way up", "from a great height")),
     ("high", ("high up", "up high")),
