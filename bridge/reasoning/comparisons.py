@@ -6,8 +6,9 @@ low, "not tilting as far as before" slightly tilted, "twice as much
 water" much liquid, "twice as high as usual" high), said back; and
 "more high", "more thick like honey", as learners of English say them,
 are the value itself. A scene compared with another said as "one" ("stay
-put better than a glass one") is the scene said first, the other said
-back as not read.
+put better than a glass one"), or with another liquid ("does syrup spill
+less than water"), is the scene said first, the other said back as not
+read.
 """
 from __future__ import annotations
 
@@ -46,10 +47,16 @@ COMPARISONS: tuple[tuple, ...] = (
                rf"(?: as (?:{_AS_BEFORE}))?(?![^,;:.?!]*\bas\b)",), "read against the ordinary pour: each question is read alone")
       for said, value in (("much", "much"), ("high", "high"), ("heavy", "heavy"), ("fast|quick|quickly", "fast"),
                           ("slow|slowly", "slowly"), ("far", "far"), ("thick|sticky", "sticky"))),
+    # poured the same way, tipped to the same angle (as the scene compared with): the one said
+    ("hedge", ("[in] the same way", "same way", "the same angle", "same angle", "the same tilt", "same tilt"),
+     "ignored: each question is read alone, with nothing of the one before"),
     # a scene compared with another said as "one" ("stay put better than a glass one", "spill more
     # than a half-full one"): the scene said first is read, the other one is not, said back
     ("hedge", (r"re(than):\b(?:(?:much |a (?:little |lot )?(?:bit )?)?(?:better|more|less|worse) )?than"
-               r" (?:a|an|the|that|this) (?:[a-z-]+ ){0,3}?ones?\b",),
+               r" (?:a|an|the|that|this) (?:[a-z-]+ ){0,3}?ones?\b",
+               # a liquid compared with ("does syrup spill less than water")
+               r"re(than):\b(?:much |a (?:little |lot )?(?:bit )?)?(?:more|less|worse) than (?:a |an |the |plain |regular"
+               r" |normal |ordinary )?(?:(?:sticky|runny|heavy|light|bouncy) )?liquid\b"),
      "read as nothing: the scene compared with is not read, the answer is for the one said first"),
     # "more high", "more thick like honey", as learners of English say them: the value itself
     *((value, (rf"re(more ):\bmore (?:{said})\b(?! than\b)",)) for said, value in (

@@ -137,7 +137,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
     # an outcome said first, with no word that asks: "spills when poured from high?", "sloshing
     # over the rim if tilted steeply?", "pour high, spill or not"
     bare = re.compile(rf"(?:^|(?<=[,:;.?!\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014]))(?:(?P<v0>{filled(OUTCOMES[0][0])})|(?P<v1>spill\w*|spilt|splash\w*|drip\w*"
-                      rf"|leak\w*|slosh\w*|dribbl\w*)){end}(?: or not)?(?= (?:if|when|while)\b| *[?.!,]* *$)")
+                      rf"|leak\w*|slosh\w*|dribbl\w*)){end}(?: or not)?(?: expected| likely)?(?= (?:if|when|while)\b| *[?.!,]* *$)")
     return asked, nominal, goal, more, bare
 
 

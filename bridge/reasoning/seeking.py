@@ -55,6 +55,8 @@ _ASKING_SOURCE = (
     rf"|\b(?:what(?: is)? )?the (?:fastest|slowest|quickest|highest|lowest|steepest|furthest|farthest|closest"
     rf"|nearest|heaviest|lightest)(?: [a-z]+)? (?:that )?{_WHO} (?:can|could|should|may|might|dare) {_ACT}{_WHAT}"
     rf"(?: (?:away|in|out|over|from|into))?(?=[ ?.!,]|$)"
+    # where it should be: "where should the spout be", "where should I hold the jug"
+    rf"|\bwhere (?:should|do|can|must|would|could|shall) (?:{_WHO}|the \w+) (?:be|{_ACT}{_WHAT})(?=[ ?.!,]|$)"
     # what to avoid: "what should I avoid"
     rf"|\bwhat (?:should|must|do|would|can) {_WHO} (?:need to |have to )?avoid(?: doing)?(?=[ ?.!,]|$)"
     # what to change or do: "what do I need to change", "what should we adjust"
@@ -75,7 +77,7 @@ _KEEPS = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? {_VALUE}) (keeps|will
 #: Wanting an outcome: "I want the bowl not to move", "we'd like it to stay in".
 _WANT = re.compile(r"(?:\b(?:i|we) |^|(?<=[.!?] ))(?:want|need|would like|wish)(?: for)? (it(?: all)?|all of it|everything|them|nothing"
                    r"|every drop|each drop|every bit|all (?:of )?the liquid"
-                   r"|the (?!source\b)[a-z]+)(?= (?:not |never )?to\b)")
+                   r"|the (?:[a-z]+ )?(?!source\b)[a-z]+)(?= (?:not |never )?to\b)")
 
 #: A goal of emptying the source: "goal: empty the bottle completely".
 _EMPTYING = (r"\b(?:goal|aim|objective|task|target)s?(?: is)?:? (?:to )?(?:empty|drain) (?:out )?(?:the whole|all of the"
@@ -91,6 +93,9 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:keep|keeps|keeping|stop|stops|stopping|prevent|prevents|preventing) (it|them|the [a-z]+)"
      r" from (?=[a-z]+ing\b)", r"so that \1 does not "),
     (r"\bmake sure(?: that)? ", "make sure so that "),
+    # "I want the water to land without ...": so that it goes in (landing on the table is a spill)
+    (r"\b(so that (?:it|them|the (?:[a-z]+ )?[a-z]+)) to land\b(?! (?:on|onto|outside|all|in|into|inside|right|just|near|at)\b)",
+     r"\1 goes in"),
     # "pour the syrup neatly": so that nothing spills
     (r"\b(pour(?:s|ed|ing)?(?: (?:it|them|the [a-z]+|[a-z]+))?) (?:neatly|cleanly|tidily)\b", r"\1 so that nothing spills"),
     # "and have it not slide"
