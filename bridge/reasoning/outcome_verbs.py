@@ -60,6 +60,10 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:come|comes|coming|came|get|gets|pour|pours|flow|flows|run|runs|drain\w*) out"
      r"|(?:go|goes|going|went) out\b(?! of (?:the |a |an |my )?(?!source\b)(?:[a-z]+ )?(?:bowl|destination)\b)"
      r"|empt(?:y|ies|ied)(?: out)?|(?:end|ends) up (?:totally |completely |fully )?empty|leav(?:e|es|ing) (?:the|it)\b|exit\w*", ("liquid_leaves_source",), False),
+    # clinging to a container not the bowl: kept in the source ("make it into the bowl or cling to the jar")
+    (r"(?:stick|sticks|sticking|stuck|cling|clings|clinging|clung) to"
+     r"(?!(?: [a-z]+){0,2}? (?:bowl|bowls|destination|target|rim|edge|top|sides?|walls?|brim|lip|bottom|surface|it|them)\b)"
+     r"(?= (?:the |a |an |its |my |your )?[a-z]+\b)", ("liquid_leaves_source",), True),
     (r"(?:end|ends|ended|ending) up in(?:side)?", (*ALL_IN, "liquid_remains_in_destination"), False),
     # what stays in the bowl entered it: "remains" alone holds also when none enters
     (r"(?:stay|stays|remain|remains) (?:in )?there\b"

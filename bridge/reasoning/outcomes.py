@@ -132,7 +132,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
     # what is asked, or wanted, next to it: "will it spill or overflow?", "without spilling or
     # tipping the bowl over"
     # ("does it stay in there once it's poured or slosh back out": after the pour, when it is judged)
-    more = re.compile(rf"\boutcome{_ONCE} ?(?:, or|, and|,|or|and|nor)? ?(?:(?:will|does|do|would|even|just|only) )?(?:it |the \w+ )?"
+    more = re.compile(rf"\boutcome{_ONCE} ?(?:, or|, and|,|or|and|nor)? ?(?:(?:will|does|do|would|even|just|only|mostly|mainly|largely|partly) )?(?:it |the \w+ )?"
                       rf"(?:{verbs})\b{end}")
     # an outcome said first, with no word that asks: "spills when poured from high?", "sloshing
     # over the rim if tilted steeply?", "pour high, spill or not"
@@ -157,6 +157,10 @@ def _which(m: re.Match) -> tuple[tuple[str, ...], bool]:
     k = next(k for k in range(len(OUTCOMES)) if m.groupdict().get(f"v{k}"))
     if k == 0 and out_of_the_source(m.string, m.end("v0")):
         return OUTCOMES[1][1], OUTCOMES[1][2]
+    clung = re.match(r" (?:the |a |an |its |my |your )?(?:[a-z]+ )?([a-z]+)", m.string[m.end(f"v{k}"):])
+    if OUTCOMES[k][1] == ("liquid_leaves_source",) and OUTCOMES[k][2] and clung and re.search(
+            rf"\binto (?:the |a |an |my )?(?:\w+ )?{clung.group(1)}\b", m.string):
+        return (*_ALL_IN, "liquid_remains_in_destination"), False      # clinging to the bowl poured into
     bowl = m.group(f"v{k}").split()[-1]        # "yogurt from a tub ... stick in the tub": the tub poured from
     from_it = re.fullmatch(destinations(), bowl) and re.search(rf"\b(?:from|out of) (?:the |a |an |my )?(?:\w+ )?{bowl}\b", m.string)
     if OUTCOMES[k][1] == (*_ALL_IN, "liquid_remains_in_destination") and (in_the_source(m.group(f"v{k}")) or from_it):

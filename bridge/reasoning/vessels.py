@@ -40,7 +40,10 @@ def out_of_the_source(text: str, at: int) -> bool:
     """Whether the bowl that liquid is thrown out of, named in `text` from
     `at` on, is the one poured from ("does coffee splash out of a mug
     tilted halfway", "pour from the mug: does it splash out of the mug"):
-    a spill, not liquid leaving the destination."""
+    a spill, not liquid leaving the destination; so is liquid thrown out before
+    it reaches the bowl ("does it slosh out before it even reaches the bowl")."""
+    if re.match(r"(?: \w+)?(?: \w+)? before (?:it |the \w+ )?(?:even )?(?:reach|reaches|reaching|gets to|getting to)\b", text[at:]):
+        return True
     said = re.match(rf" (?:the |a |an |my |your |its |their |this |that )?(?:[a-z]+ )?"
                     rf"(?P<noun>{destinations()})\b", text[at:])
     if said is None:
