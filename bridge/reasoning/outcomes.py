@@ -155,7 +155,8 @@ def follows(text: str) -> bool:
 
 def _which(m: re.Match) -> tuple[tuple[str, ...], bool]:
     k = next(k for k in range(len(OUTCOMES)) if m.groupdict().get(f"v{k}"))
-    if k == 0 and out_of_the_source(m.string, m.end("v0")):
+    # (dripping over the edge runs down the outside, as "drip down the side": a spill, not thrown out of the bowl)
+    if k == 0 and (out_of_the_source(m.string, m.end("v0")) or re.match(r"(?:drip|dribbl)\w* over\b", m.group("v0"))):
         return OUTCOMES[1][1], OUTCOMES[1][2]
     clung = re.match(r" (?:the |a |an |its |my |your )?(?:[a-z]+ )?([a-z]+)", m.string[m.end(f"v{k}"):])
     if OUTCOMES[k][1] == ("liquid_leaves_source",) and OUTCOMES[k][2] and clung and re.search(

@@ -87,6 +87,9 @@ _EMPTYING = (r"\b(?:goal|aim|objective|task|target)s?(?: is)?:? (?:to )?(?:empty
 #: source upright": how it is held), "don't let it overflow", "make sure it does not spill"
 #: (the words they drop are fillers).
 _WANTING = tuple((re.compile(p), r) for p, r in (
+    # asked whether a scene stops an outcome ("does pouring low stop it from splashing?"): whether it happens
+    (r"((?:^|(?<=[.?!,;:] ))(?:does|do|did|will|would|can|could|might|may|should)\b[^.?!,;:]*?)\b(?:stop|stops|keep|keeps|prevent|prevents)"
+     r" (it|them|the [a-z]+) from (?=[a-z]+ing\b)", r"\1 will \2 "),
     (r"\bkeep(?:s|ing)? (the (?!source\b)[a-z]+) (still|steady|in place|put)\b", r"so that \1 stays \2"),
     (r"\b(?:do not|never) let (it|them|the [a-z]+|any(?: of it)?) ", r"so that \1 does not "),
     # "keep the bowl from sliding", "stop it from splashing"
