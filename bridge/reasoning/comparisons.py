@@ -8,7 +8,8 @@ water" much liquid, "twice as high as usual" high), said back; and
 are the value itself. A scene compared with another said as "one" ("stay
 put better than a glass one"), or with another liquid ("does syrup spill
 less than water"), is the scene said first, the other said back as not
-read.
+read, as is one said "compared to" ("compared to a full jug, would a
+nearly empty one spill less?").
 """
 from __future__ import annotations
 
@@ -50,6 +51,11 @@ COMPARISONS: tuple[tuple, ...] = (
     # poured the same way, tipped to the same angle (as the scene compared with): the one said
     ("hedge", ("[in] the same way", "same way", "the same angle", "same angle", "the same tilt", "same tilt"),
      "ignored: each question is read alone, with nothing of the one before"),
+    # a scene compared with ("compared to a full jug, would a nearly empty one ...", "... spill less
+    # compared with pouring from high up"): not read, up to where its clause ends
+    ("hedge", (r"re(compared|as opposed|in comparison):\b(?:compared (?:to|with)|as opposed to|in comparison (?:to|with))"
+               r" [^,;:.!?]+?(?= [,;:.!?]|$)",),
+     "read as nothing: the scene compared with is not read, the answer is for the one said"),
     # a scene compared with another said as "one" ("stay put better than a glass one", "spill more
     # than a half-full one"): the scene said first is read, the other one is not, said back
     ("hedge", (r"re(than):\b(?:(?:much |a (?:little |lot )?(?:bit )?)?(?:better|more|less|worse) )?than"

@@ -7,7 +7,8 @@ cannot name, set against one it reads ("from the side rather than from
 above"), is read as nothing, the place said beside it read, and so is an
 ordinary liquid set against a liquid said ("a thick liquid instead of
 water"), or a container with nothing said of it against one said ("a
-slippery cup instead of a ceramic mug"); a little off
+slippery cup instead of a ceramic mug"); the rim set against the middle
+("right above the rim rather than over the center") is near the rim; a little off
 the centre is near the rim (off-centre with no amount stays refused: how
 far?); "right in the middle" is in the middle; a length "relative to the
 rim" is above it (a minus sign below it), "-2 cm height relative to the rim" too; "lower, close to the rim" is
@@ -48,6 +49,12 @@ CONTRASTS: tuple[tuple, ...] = (
     # ceramic mug"; the word list has read both as bowls by then): nothing more
     ("hedge", (rf"re(instead|rather|in place):(?<=bowl ){_CONTRAST} (?:a |an |the |my |your )?(?:material )*bowl\b",),
      "read as nothing: a container with nothing said of it, set against the one said beside it"),
+    # the rim set against the middle is where it is poured, not a height ("right above the rim rather
+    # than over the center", "off the edge of the bowl, not the middle")
+    ("near the rim", (r"re(rather than|instead of|not):\b(?:right |just |directly )?(?:above|off|over) (?:the |its )?(?:bowl )?"
+                      r"(?:rim|edge|lip|brim)(?: of (?:the |a )?bowl)?(?= (?:, )?(?:not|rather than|instead of) (?:over |above |in |at )?"
+                      r"(?:the )?(?:very )?(?:centre|center|middle)\b)",),
+     "read as near the rim: set against the middle, the rim is where it is poured"),
     ("near the rim", (r"re(off the |off cent|off midd|off dest|off bowl):\b(?:just |only )?(?:slightly|a (?:little |tiny )?bit|a little|a tad) off (?:the )?"
                          r"(?:destination |bowl )?(?:centre|center|middle)\b",),
      "read as near the rim: a little off the middle, where the rim is nearer"),

@@ -135,9 +135,9 @@ def _patterns() -> tuple[re.Pattern, ...]:
     more = re.compile(rf"\boutcome{_ONCE} ?(?:, or|, and|,|or|and|nor)? ?(?:(?:will|does|do|would|even|just|only|mostly|mainly|largely|partly) )?(?:it |the \w+ )?"
                       rf"(?:{verbs})\b{end}")
     # an outcome said first, with no word that asks: "spills when poured from high?", "sloshing
-    # over the rim if tilted steeply?", "pour high, spill or not"
+    # over the rim if tilted steeply?", "pour high, spill or not", "spill or no?"
     bare = re.compile(rf"(?:^|(?<=[,:;.?!\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014]))(?:(?P<v0>{filled(OUTCOMES[0][0])})|(?P<v1>spill\w*|spilt|splash\w*|drip\w*"
-                      rf"|leak\w*|slosh\w*|dribbl\w*)){end}(?: or not)?(?: expected| likely)?(?= (?:if|when|while)\b| *[?.!,]* *$)")
+                      rf"|leak\w*|slosh\w*|dribbl\w*)){end}(?: or not| or no)?(?: expected| likely)?(?= (?:if|when|while)\b| *[?.!,]* *$)")
     return asked, nominal, goal, more, bare
 
 
