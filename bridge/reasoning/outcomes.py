@@ -78,6 +78,8 @@ _PART_OF = re.compile(r"\b(?:most|all|any|some|much|half|none|part|a lot|a bit|a
 _QUANTIFIERS = {*"much most some any all little none nothing no half lots plenty less more every each last drop drops".split()}
 #: Once the pour is done, said between two outcomes asked: "... once it's poured or ...".
 _ONCE = r"(?: (?:once|after|when) (?:it is |it has been |it )?(?:poured|done|finished|in))?"
+#: What joins a second outcome to the one before: "spill or overflow", "go in but then bounce back out".
+_JOINED = r"(?:, or|, and|,|or|and|nor|but then|and then|but|then)"
 #: How much of the liquid, asked: "what fraction of the liquid spills".
 _SHARE = r"(?:what|which) (?:fraction|proportion|share|percentage|part|amount)(?: of (?:it|the \w+))?"
 
@@ -132,7 +134,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
     # what is asked, or wanted, next to it: "will it spill or overflow?", "without spilling or
     # tipping the bowl over"
     # ("does it stay in there once it's poured or slosh back out": after the pour, when it is judged)
-    more = re.compile(rf"\boutcome{_ONCE} ?(?:, or|, and|,|or|and|nor)? ?(?:(?:will|does|do|would|even|just|only|mostly|mainly|largely|partly) )?(?:it |the \w+ )?"
+    more = re.compile(rf"\boutcome{_ONCE} ?{_JOINED}? ?(?:(?:will|does|do|would|even|just|only|mostly|mainly|largely|partly) )?(?:it |the \w+ )?"
                       rf"(?:{verbs})\b{end}")
     # an outcome said first, with no word that asks: "spills when poured from high?", "sloshing
     # over the rim if tilted steeply?", "pour high, spill or not", "spill or no?"
@@ -304,7 +306,7 @@ def hear(text: str) -> Heard:
 
     def as_more(m: re.Match) -> str:
         names, bad = _which(m)
-        said = re.sub(rf"^outcome{_ONCE} ?(?:, or|, and|,|or|and|nor)? ?(?:(?:will|does|do|would|even) )?", "", m.group(0))
+        said = re.sub(rf"^outcome{_ONCE} ?{_JOINED}? ?(?:(?:will|does|do|would|even) )?", "", m.group(0))
         own = re.match(r"(?:it|the \w+) ", said)
         names = _staying(names, said[own.end():] if own else said, own.group(0).split() if own else last,
                          not was_goal and "liquid_leaves_source" in asked)
@@ -324,9 +326,10 @@ def hear(text: str) -> Heard:
     text = _spaced(goal.sub(as_goal, text))
     if goals:
         # "so it pours out but the bowl does not tip", "so nothing spills and the bowl stays
-        # put": a clause of its own after "but" or "and" is wanted too, with its own negation
+        # put", "so it stays in and doesn't slosh out": a clause of its own after "but" or "and"
+        # is wanted too, with its own negation
         for m in reversed(list(re.finditer(r"\boutcome (?:but (?:also )?|(?:, ?)?and (?:also )?(?=(?:"
-                                           r"the|it|nothing|none|no|everything|all)\b))", text))):
+                                           r"the|it|nothing|none|no|everything|all|does not|do not|will not|never)\b))", text))):
             trial = f"{text[:m.start()]}outcome so that {text[m.end():]}"
             wanted_too = _spaced(goal.sub(as_goal, trial))
             text = wanted_too if wanted_too != trial else text

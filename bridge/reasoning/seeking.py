@@ -134,6 +134,9 @@ def _keeping_in() -> re.Pattern:
 
 
 #: A value said to get the liquid in: "what tilt angle gets all the liquid into the bowl" (so that it goes in).
+#: A value said to empty the source: "what tilt angle gets every last drop out" (so that it empties).
+_EMPTIES = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? {_VALUE}) (?:gets|will get|would get) (?:every last drop|every drop"
+                      r"|all of it|it all|everything|all (?:of )?the (?:liquid|water)|it) out(?: of (?:the |a |an |my )?[a-z]+)?\b")
 _GETS = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? {_VALUE}) (?:gets|will get|would get)"
                    r" (it|it all|all(?: of)? the \w+|everything|the \w+) (?=in\b|into\b)")
 
@@ -145,6 +148,8 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
     text = _keeping_in().sub(r"so that \1 stays in", text)
     said += tuple(m.group(2) for m in _KEEPS.finditer(text))
     text = _KEEPS.sub(r"\1 so that \3 stays \4", text)
+    said += tuple(m.group(0)[m.end(1) - m.start():].strip() for m in _EMPTIES.finditer(text))
+    text = _EMPTIES.sub(r"\1 so that it empties", text)
     said += tuple(m.group(0)[m.end(1) - m.start():m.start(2) - m.start()].strip() for m in _GETS.finditer(text))
     text = _GETS.sub(r"\1 so that \2 goes ", text)
     said += tuple(m.group(0)[:m.start(1) - m.start()].strip() for m in _WANT.finditer(text))
@@ -179,7 +184,7 @@ def _filling() -> Cued:
 #: "how do I get all the soup into the bowl" (so that it goes in).
 _WANTING_CUED = (
     # "I don't want the cup to touch the bowl": so that it does not
-    (Cued(r"\b(?:i|we) (?:do not|never) (?:want|wish)(?: for)? (it|them|the (?!source\b)[a-z]+) to ",
+    (Cued(r"\b(?:i|we) (?:do not|never) (?:want|wish)(?: for)? (it|them|the (?!source\b)[a-z]+) (?:to |(?=[a-z]+ing\b))",
           ("not want", "never want", "not wish", "never wish")), r"so that \1 does not "),
     # "I want every drop in the bowl": so that it goes in
     (Cued(r"(?:^|\b(?:i|we) )(?:want|need|would like) (every drop|all of it|it all|everything|all the \w+) (?=(?:in|into|inside)\b)",
