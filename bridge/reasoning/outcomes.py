@@ -64,7 +64,7 @@ _REST = ("each other|one another|at all times|all the time|the whole time|at any
          "destination|source|target|container|rim|edge|sides?|middle|centre|center|drop|drops|much|too|even|ever|really|very|"
          "up|down|off|away|again|then|across|along|around|against|between|"
          # how much it happens ("does it shift a little"): the outcome's, not an amount of liquid
-         "little|bit|lot|slightly|tiny|"
+         "little|bit|lot|slightly|tiny|millimetre|millimeter|hair|smidge|inch|"
          # or more or less of it, against the ordinary pour ("does it spill more if tilted?")
          "more(?! than)|less(?! than)")
 #: How much of the liquid an outcome is asked of ("does most of it spill"), or its odds ("is

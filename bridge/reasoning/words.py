@@ -214,7 +214,8 @@ PHRASES: tuple[tuple, ...] = (
                "from the top", "from the bottom", "overhead")),
     *MOVES,                   # the stages and the moves between them (moves.py)
     ("liquid", ("liquid particles", r"re:(?<!\d )\bparticles?\b", r"re:\bdroplets?\b",
-                r"re:\b(?:the |its )?contents\b", r"re:\bthe stuff\b")),
+                r"re:\b(?:the |its )?contents\b", r"re:\bthe stuff\b",      # something poured: the liquid
+                r"re(something):(?:(?<=\bpour )|(?<=\bpours )|(?<=\bpoured )|(?<=\bpouring ))something\b")),
     # where the source is measured from: "offset 10 cm from the centre"
     # (poured from the centre, with no length or offset it is measured by: centred)
     ("pour centred", (r"re:\bpour(?:s|ed|ing)?(?: it| the \w+)? from (?:the )?(?:very )?"
