@@ -5,7 +5,7 @@ clauses that ask about the outcome or say a goal."""
 from __future__ import annotations
 
 from pantarhei.bridge.reasoning.phases import STILL
-from pantarhei.bridge.reasoning.vessels import OUT_OF
+from pantarhei.bridge.reasoning.vessels import CONTAINER, OUT_OF
 
 ALL_IN = ("liquid_enters_destination",)
 
@@ -66,7 +66,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     # clinging to a container not the bowl: kept in the source ("make it into the bowl or cling to the jar")
     (r"(?:stick|sticks|sticking|stuck|cling|clings|clinging|clung) to"
      r"(?!(?: [a-z]+){0,2}? (?:bowl|bowls|destination|target|rim|edge|top|sides?|walls?|brim|lip|bottom|surface|it|them)\b)"
-     r"(?= (?:the |a |an |its |my |your )?[a-z]+\b)", ("liquid_leaves_source",), True),
+     rf"(?= (?:the |a |an |its |my |your )?(?:[a-z]+ )?{CONTAINER}\b)", ("liquid_leaves_source",), True),
     (r"(?:end|ends|ended|ending) up in(?:side)?", (*ALL_IN, "liquid_remains_in_destination"), False),
     # what stays in the bowl entered it: "remains" alone holds also when none enters
     (r"(?:stay|stays|remain|remains) (?:in )?there\b"

@@ -24,9 +24,19 @@ def destinations() -> str:
 OUT_OF = "(?:DESTINATION)"
 
 
+#: Any container, by everyday.txt's names of bowls, those poured from among them, in OUTCOMES.
+CONTAINER = "(?:CONTAINER)"
+
+
+@lru_cache(maxsize=None)
+def _containers() -> str:
+    return alternation([*names("bowl"), "source", "container"])
+
+
 def filled(verb: str) -> str:
-    """An OUTCOMES verb phrase with the destination's names written in."""
-    return verb.replace(OUT_OF, f"(?:{destinations()})") if OUT_OF in verb else verb
+    """An OUTCOMES verb phrase with the destination's names, and the containers', written in."""
+    verb = verb.replace(OUT_OF, f"(?:{destinations()})") if OUT_OF in verb else verb
+    return verb.replace(CONTAINER, f"(?:{_containers()})") if CONTAINER in verb else verb
 
 
 def in_the_source(said: str) -> bool:
