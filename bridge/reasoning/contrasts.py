@@ -12,7 +12,7 @@ slippery cup instead of a ceramic mug"); the rim set against the middle
 the centre is near the rim (off-centre with no amount stays refused: how
 far?); "right in the middle" is in the middle; a length "relative to the
 rim" is above it (a minus sign below it), "-2 cm height relative to the rim" too; "lower, close to the rim" is
-low, and "but not touching" says how close.
+low, as is "bring the bottle down near the rim", and "but not touching" says how close.
 """
 from __future__ import annotations
 
@@ -65,6 +65,11 @@ CONTRASTS: tuple[tuple, ...] = (
     ("low", (r"re(lower , |lower and |lower close|lower near|lower right|lower just|lower down):\b(?:a bit |a little |slightly )?lower(?: ,| and)? (?:close to|near|right above|just above|down to)"
              r" (?:the |its )?(?:destination |bowl )?(?:rim|edge|lip|brim)\b",),
      "read as low: lower, to just above the rim"),
+    # brought down near the rim: held just above it ("bring the bottle down near the rim")
+    ("low", (r"re(down):\b(?:bring|brings|bringing|brought|lower|lowers|lowering|lowered|move|moves|moving|moved)"
+             r"(?: it| them| the \w+)? down (?:to )?(?:close to|near|right above|just above|to) (?:the |its )?(?:destination |bowl )?"
+             r"(?:rim|edge|lip|brim)\b",),
+     "read as low: brought down to just above the rim"),
     # close but not touching: how close, not a goal
     ("hedge", (r"re(touch):(?:" + "|".join(rf"(?<={w} )" for w in ("low", "rim", "edge", "lip", "bowl", "close", "near"))
                + r")(?:, )?but not touch(?:ing)?(?: it| the \w+)?\b",),
