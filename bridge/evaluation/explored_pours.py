@@ -37,6 +37,15 @@ class Learned:
     steps: list[int]
     #: Every pour of the exploration, as the trace's draws record them.
     draws: list[Draw]
+    #: The explored antecedents (indices into `antecedents`) explored as
+    #: wholes: no rule's body (theory/curiosity/learn.pl).
+    wholes: frozenset[int] = frozenset()
+
+    @property
+    def rule_bodies(self) -> list[tuple[str, ...]]:
+        """The explored antecedents that are rules' bodies: all but the
+        wholes, in order."""
+        return [a for i, a in enumerate(self.antecedents) if i not in self.wholes]
 
     @property
     def one_layer(self) -> bool:
@@ -110,6 +119,7 @@ def read_learned(path: Path | str) -> Learned:
         lines = [json.loads(line) for line in trace.read_text(encoding="utf-8").splitlines()]
         ids = [str(t["id"]) for t in lines]
         bodies = {str(t["id"]): tuple(sorted(str(p) for p in t["antecedent"])) for t in lines}
+        whole = {str(t["id"]) for t in lines if t.get("via") == "whole"}
         draws = trace_draws(lines)
     except (OSError, ValueError, KeyError, TypeError) as e:
         raise UserError(f"{trace}: the trace of the theory cannot be read ({e})") from None
@@ -117,7 +127,8 @@ def read_learned(path: Path | str) -> Learned:
     if order != [antecedent_id(i) for i in range(1, len(order) + 1)]:
         raise UserError(f"{trace}: the explored antecedents are not a1..a{len(order)}")
     return Learned(path, theory, settings, [bodies[a] for a in order],
-                   [order.index(a) for a in ids], draws)
+                   [order.index(a) for a in ids], draws,
+                   frozenset(i for i, a in enumerate(order) if a in whole))
 
 
 def exploration_draws(learned: Learned) -> tuple[np.ndarray, list[tuple[str, ...]], np.ndarray,

@@ -63,7 +63,7 @@ def general_stage(ev: Evaluation, inputs: Inputs) -> None:
     learned = inputs.learned
     general_theories(ev, learned.theory, inputs.methods, inputs.held, inputs.run,
                      inputs.opts.seed, int(learned.setting("seed", inputs.opts.seed)),
-                     learned.antecedents if learned.one_layer else None, learned.learner)
+                     learned.rule_bodies if learned.one_layer else None, learned.learner)
 
 
 def general_headline(ev: Evaluation) -> list[tuple[str, str, str, bool]]:
@@ -112,7 +112,7 @@ def general_theories(ev, theory: Theory, methods: dict, held: dict,
     the theory holds; the random pours with the evaluation's. The contrast
     keys are the clear keys where the defaults-only theory of curiosity's
     pours is wrong. For the learning curiosity's theory, `explored` are its
-    explored antecedents: curiosity's rules are learned over them from its
+    explored antecedents but the wholes: curiosity's rules are learned over them from its
     pours alone, as `explore` wrote them. Every method's rules are learned
     by the learner named `learner` (the theory's; None: the option
     table's default)."""

@@ -117,14 +117,14 @@ def random_exploration_pours(seed: int, count: int, samples: int, run: Simulatio
 
 def _differing_layer(learned: Learned, P: np.ndarray, S: np.ndarray) -> list[str]:
     """The rules of the learning curiosity's theory that the rules learned
-    again from the exploration's pours (over its explored antecedents, by
-    the learner the theory names) do not give, with the same head, body
-    and likelihood, or the reverse."""
+    again from the exploration's pours (over its explored antecedents but
+    the wholes, by the learner the theory names) do not give, with the
+    same head, body and likelihood, or the reverse."""
     from pantarhei.bridge.learning.layers import learn_general
 
     ok = np.all(np.isfinite(S), axis=1)
     g, _, _ = learn_general(P[ok], S[ok], int(learned.setting("seed")),
-                            bodies=learned.antecedents, learner=learned.learner)
+                            bodies=learned.rule_bodies, learner=learned.learner)
     conf = learned.theory.confidences()
     have = {(r.id, r.head, tuple(sorted(r.body)), conf.get(r.id)) for r in learned.theory.rules}
     again = {(r.id, r.head, tuple(sorted(r.body)), int(round(1000 * r.confidence)))

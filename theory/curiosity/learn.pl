@@ -32,14 +32,15 @@ A_new keeps the `queue` most valuable, the most valuable first; the
 candidates a step values are so at most `queue`, the new children and the
 explored antecedents.
 
-Every `whole_every` steps (never by default) the next antecedent is a
-whole instead: of the
-random valid antecedents whose parts reach/5 offers, drawn whole, the one
-whose batch is likeliest to have a consequent no explored antecedent
-has (wholes/5, whole_step/2). No question says a whole, but its pours find
-what random exploration finds (the paper's criterion: behaviours not seen
-before) and teach the model of every pour beyond the neighbourhood of
-the ordinary pour; the rule written for it is a behaviour of the theory.
+Every `whole_every` steps (every third by default) the next antecedent
+is a whole instead: of the random valid antecedents whose parts reach/5
+offers, drawn whole, the one whose batch is likeliest to have a
+consequent no explored antecedent has (wholes/5, whole_step/2). No
+question says a whole, but its pours find what random exploration finds
+(the paper's criterion: behaviours not seen before) and teach the model
+of every pour beyond the neighbourhood of the ordinary pour. A whole has
+no rule of its own (learned_layer/3 of writer.pl); its consequent is in
+the theory as an explored antecedent's pours (held/4).
 */
 
 :- use_module(library(apply)).
@@ -79,7 +80,7 @@ option(newness, permille, range(0, none), 2000,
   "learn: the weight of the chance that a pour of a candidate's next batch shows a behaviour no two pours have shown").
 option(reach, count, range(0, 100000), 16,
   "learn: random valid antecedents of 2 to `body` propositions drawn as candidates each step, beyond the children of what was explored").
-option(whole_every, count, range(0, 100000), 0,
+option(whole_every, count, range(0, 100000), 3,
   "learn: every this many steps, the next antecedent is the one of the `reach` uniformly random valid antecedents, drawn whole, whose batch is likeliest to have a consequent no explored antecedent has (0: never)").
 
 course(pours, learn).
