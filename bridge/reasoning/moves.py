@@ -28,6 +28,9 @@ MOVES: tuple[tuple, ...] = (
                      r"re:\b(?:bring\w*|brought|return\w*)(?: it| the \w+| them)? back (?:upright|to "
                      r"(?:upright|vertical|straight))\b",
                      r"re:\b(?:return\w*|turn\w*)(?: it| the \w+| them)? to (?:upright|vertical)\b",
+                     # said of the source itself: "after the cup goes back upright"
+                     r"re:\b(?:go|goes|going|gone|went|come|comes|coming|came|get|gets|got|swing\w*|rock\w*)"
+                     r" back (?:upright|to (?:upright|vertical|straight))\b",
                      r"re:\bstraighten\w*(?: it| the \w+| them)?(?: up| out)?\b",
                      r"re:\bright(?:s|ed|ing)?(?: it| the \w+| them)? up\b(?! (?:high|above|over|there|to)\b)", f"put {_IT} back upright", f"set {_IT} back upright",
                      f"set {_IT} upright", f"stand {_IT} back up", f"stand {_IT} up",

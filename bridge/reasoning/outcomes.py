@@ -166,7 +166,7 @@ def _which(m: re.Match) -> tuple[tuple[str, ...], bool]:
         return (*_ALL_IN, "liquid_remains_in_destination"), False      # clinging to the bowl poured into
     bowl = m.group(f"v{k}").split()[-1]        # "yogurt from a tub ... stick in the tub": the tub poured from
     from_it = re.fullmatch(destinations(), bowl) and re.search(rf"\b(?:from|out of) (?:the |a |an |my )?(?:\w+ )?{bowl}\b", m.string)
-    if OUTCOMES[k][1] == (*_ALL_IN, "liquid_remains_in_destination") and (in_the_source(m.group(f"v{k}")) or from_it):
+    if OUTCOMES[k][1] == (*_ALL_IN, "liquid_remains_in_destination") and (in_the_source(m.group(f"v{k}"), m.string) or from_it):
         return ("liquid_leaves_source",), True       # staying in the source: not leaving it
     return OUTCOMES[k][1], OUTCOMES[k][2]
 

@@ -187,7 +187,7 @@ _WANTING_CUED = (
     (Cued(r"\b(?:i|we) (?:do not|never) (?:want|wish)(?: for)? (it|them|the (?!source\b)[a-z]+) (?:to |(?=[a-z]+ing\b))",
           ("not want", "never want", "not wish", "never wish")), r"so that \1 does not "),
     # "I want every drop in the bowl": so that it goes in
-    (Cued(r"(?:^|\b(?:i|we) )(?:want|need|would like) (every drop|all of it|it all|everything|all the \w+) (?=(?:in|into|inside)\b)",
+    (Cued(r"(?:^|\b(?:i|we) )(?:want|need|would like) (every drop|all of it|it all|everything|all (?:of )?the \w+) (?=(?:in|into|inside)\b)",
           ("want", "need", "like")), r"so that \1 stays "),
     # "... and none on the table", wanted beside another: so that none goes on it
     (Cued(r"\b((?:want|need|like|have|so that)\b.*\b(?:and|with)) (none|nothing)(?: of it)? (?=(?:on|onto|all over) )",

@@ -39,11 +39,26 @@ def filled(verb: str) -> str:
     return verb.replace(CONTAINER, f"(?:{_containers()})") if CONTAINER in verb else verb
 
 
-def in_the_source(said: str) -> bool:
+def in_the_source(said: str, text: str = "") -> bool:
     """Whether liquid said to stay in a bowl (`said`: "stays in the jug")
-    stays in the source: one named so, or one people pour from."""
+    stays in the source: one named so, one people pour from, or one said in
+    `text` to be held as a source is ("stay in the cup even when it's upside
+    down", "does it stay in the mug if the mug is tipped")."""
     bowl = said.split()[-1]
-    return bowl == "source" or bowl in poured_from()
+    if bowl == "source" or bowl in poured_from():
+        return True
+    if not text or not re.fullmatch(r"[a-z]+", bowl):
+        return False
+    turned = r"(?:upside down|inverted|turned (?:over|upside down))"
+    return bool(_held_as_source(bowl, text) or re.search(
+        rf"\b{re.escape(said)}\b(?: \w+)? (?:when|while|if|once) it (?:is |gets |goes |being )?(?:held |turned )?{turned}", text))
+
+
+def _held_as_source(noun: str, text: str) -> bool:
+    """Whether `text` pours from the bowl `noun` or holds it tilted."""
+    return bool(re.search(rf"\bfrom (?:the |a |an |my |your |this |that )?(?:[a-z]+ )?{noun}\b"
+                          rf"|\b{noun} (?:is |being |that is |held )?(?:tilted|tipped|angled|inclined"
+                          rf"|upside|turned|held)\b", text))
 
 
 def out_of_the_source(text: str, at: int) -> bool:
@@ -58,10 +73,7 @@ def out_of_the_source(text: str, at: int) -> bool:
                     rf"(?P<noun>{destinations()})\b", text[at:])
     if said is None:
         return False
-    noun = re.escape(said.group("noun"))
-    return bool(re.search(rf"\bfrom (?:the |a |an |my |your |this |that )?(?:[a-z]+ )?{noun}\b"
-                          rf"|\b{noun} (?:is |being |that is |held )?(?:tilted|tipped|angled|inclined"
-                          rf"|upside|turned|held)\b", text))
+    return _held_as_source(re.escape(said.group("noun")), text)
 
 
 liquids = lru_cache(maxsize=None)(lambda: Matcher(("liquid", *names("liquid"))))   # "water", "stream"
