@@ -30,6 +30,7 @@ import re
 from dataclasses import dataclass
 
 from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.reasoning.carried_units import carried
 from pantarhei.bridge.reasoning.nouns import Nouns, roles
 from pantarhei.bridge.reasoning.stages import MOVE, POSE, stages
 from pantarhei.bridge.reasoning.units import POSITIVE, UNITS
@@ -166,6 +167,7 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
     number ("at 10 cm height", "20 cm to the side") picks the parameter
     before the others of its clause ("from the side at 10 cm height" is
     a height, and the side is the pour's)."""
+    tokens = carried(tokens)            # "45 degrees instead of 90": 90 degrees
     numbers = [i for i, t in enumerate(tokens[:-1]) if re.fullmatch(NUMBER, t.word)
                and _unit(tokens[i + 1]) and tokens[i + 1].clause == t.clause]
     if not numbers:
@@ -204,6 +206,8 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
         body = None if at is None else noun.roles[at]
         if body == "liquid" and "particle" in tokens[at].raw:
             body = "particle"                  # the mass of a particle of liquid
+        if q.measures == "mass":       # "the bowl is really light, like 50 g": the bowl's
+            body = _weighed(tokens, noun.roles, i) or body
         # where a move before pouring goes to is the pouring pose: "raise it to 20 cm before pouring"
         pose = "pour" if stage[i] == "approach" and q.measures == "length" and i > 0 \
             and tokens[i - 1].word == "to" and _low_end(tokens, i) is None else POSE[stage[i]]
@@ -224,9 +228,26 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
                          if tokens[i - 2].raw != tokens[i].raw else said)
         raw = " ".join(dict.fromkeys(tokens[k].raw for k in sorted({i, i + 1} | used)))
         at_low = None if low is None else float(tokens[low].word) * q.value / float(tokens[i].word)
-        read[i] = Token(proposition(q, param, cues, at_low), raw, tokens[i].clause)
+        read[i] = Token(proposition(q, param, cues, at_low), raw, tokens[i].clause,
+                        tokens[i + 1].said_back)          # a unit carried from the number before, said back
         dropped |= {i + 1} | used
     return [read.get(i, t) for i, t in enumerate(tokens) if i not in dropped]
+
+
+#: Weights said of a body, which a mass said just after them gives in grams ("light, like 50 g").
+_WEIGHTS = frozenset({"light", "heavy", "lightweight", "weighty"})
+
+
+def _weighed(tokens: list[Token], roles: dict[int, str], i: int) -> str | None:
+    """The bowl whose weight the clause just before the mass at `i` says,
+    where the mass begins its own clause as an aside ("the bowl is really
+    light, like 50 g", "a heavy pot - about 2 kg"); None otherwise."""
+    first = next(k for k in range(i, -1, -1) if k == 0 or tokens[k - 1].clause != tokens[i].clause)
+    if first == 0 or i - first > 2 or tokens[first - 1].word not in _WEIGHTS:
+        return None
+    said = tokens[first - 1].clause
+    bodies = [roles[k] for k in range(first - 1, -1, -1) if k in roles and tokens[k].clause == said]
+    return bodies[0] if bodies and bodies[0] in ("source", "destination") else None
 
 
 def _direction(tokens: list[Token], k: int, after: int, near: list[int]) -> set[int]:
