@@ -9,7 +9,8 @@ are the value itself. A scene compared with another said as "one" ("stay
 put better than a glass one"), or with another liquid ("does syrup spill
 less than water"), is the scene said first, the other said back as not
 read, as is one said "compared to" ("compared to a full jug, would a
-nearly empty one spill less?").
+nearly empty one spill less?"). A comparative said of a liquid given with
+an example ("a thicker liquid such as custard") is the value it names.
 """
 from __future__ import annotations
 
@@ -64,6 +65,11 @@ COMPARISONS: tuple[tuple, ...] = (
                r"re(than):\b(?:much |a (?:little |lot )?(?:bit )?)?(?:more|less|worse) than (?:a |an |the |plain |regular"
                r" |normal |ordinary )?(?:(?:sticky|runny|heavy|light|bouncy) )?liquid\b"),
      "read as nothing: the scene compared with is not read, the answer is for the one said first"),
+    # a comparative said of a liquid with an example of it ("a thicker liquid such as custard"):
+    # the value the example has, as it is said
+    *((value, (rf"re({said}):\b(?:{said})(?= liquids?(?: ?,)? (?:such as|like|for example|for instance|e g|say|hedge)\b)",),
+       "read as the value of the liquid given as its example") for said, value in (
+        ("thicker|stickier", "sticky"), ("thinner|runnier", "runny"), ("heavier|denser", "heavy"), ("lighter", "light"))),
     # "more high", "more thick like honey", as learners of English say them: the value itself
     *((value, (rf"re(more ):\bmore (?:{said})\b(?! than\b)",)) for said, value in (
         ("high", "high"), ("low", "low"), ("thick", "sticky"), ("thin", "runny"), ("heavy", "heavy"),
