@@ -26,6 +26,7 @@ from dataclasses import dataclass
 
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.asides import restated
+from pantarhei.bridge.reasoning.earlier_pour import told
 from pantarhei.bridge.reasoning.words import rewrites
 from pantarhei.theory.lexicon import load_vocabulary
 
@@ -140,7 +141,8 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
                   lambda m: said.setdefault(f"{m.group(1)}: read as the chance of") or "the chance of (",
                   text)
     text, again = restated(_normalised(text))         # "-2 cm (i.e. below the rim)"
-    return text, (*said, *again)
+    text, earlier = told(text)                         # "last time I poured from 20 cm, ...": not read
+    return text, (*said, *again, *earlier)
 
 
 def _normalised(text: str) -> str:

@@ -71,10 +71,10 @@ PHRASES: tuple[tuple, ...] = (
     # the liquid poured "inside": into the bowl ("I pour much water inside")
     ("hedge", (r"re(inside):(?<=\bliquid )inside(?= *(?:[,;.!?]|$|and\b|but\b|then\b))",)),
     # raised, lowered or brought to a number, or below the rim, no move before or after pouring
-    # said: where it is held while pouring ("lowered to 5 mm above the lip", "brought down to 2 cm
+    # said: where it is held while pouring ("lowered to 5 mm above the lip", "go down to 8 cm", "brought down to 2 cm
     # above the rim while pouring", "the cup lowered below the rim")
-    ("at a height of", (r"re(lower|rais|lift|brought|bring):\b(?:lower(?:ed|ing|s)?|rais(?:e|ed|es|ing)|lift(?:ed|ing|s)?"
-                        r"|(?:brought|bring|brings|bringing) (?:down|up))(?: (?:it|them|the \w+))?"
+    ("at a height of", (r"re(lower|rais|lift|brought|bring|down):\b(?:lower(?:ed|ing|s)?|rais(?:e|ed|es|ing)|lift(?:ed|ing|s)?"
+                        r"|(?:brought|bring|brings|bringing) (?:down|up)|(?:go|goes|going|went|come|comes|coming|came|move[sd]?|moving) down)(?: (?:it|them|the \w+))?"
                         r"(?: (?:up|down))? to(?= (?:just |about |around |roughly |only )?-?\d)(?![^;.?!]*\b(?:before|after|then)\b)",),
      "read as held there while pouring"),
     ("hedge", (r"re(lower|dip):\b(?:lower(?:ed|ing|s)?|dipp?(?:ed|ing|s)?)(?: (?:it|them|the \w+))?(?: down)?"
