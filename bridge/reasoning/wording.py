@@ -24,6 +24,7 @@ import re
 from bisect import bisect_left
 from dataclasses import dataclass
 
+from pantarhei.bridge.reasoning.avoided import avoided
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.asides import restated
 from pantarhei.bridge.reasoning.earlier_pour import told
@@ -142,7 +143,8 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
                   text)
     text, again = restated(_normalised(text))         # "-2 cm (i.e. below the rim)"
     text, earlier = told(text)                         # "last time I poured from 20 cm, ...": not read
-    return text, (*said, *again, *earlier)
+    text, avoiding = avoided(text)                     # "the bowl slides, what height stops that"
+    return text, (*said, *again, *earlier, *avoiding)
 
 
 def _normalised(text: str) -> str:

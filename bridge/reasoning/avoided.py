@@ -1,0 +1,38 @@
+"""An outcome told as happening, then a value asked that avoids it ("my robot
+hits the bowl with the cup every time, what approach speed avoids that", "the
+bowl slides, which height stops that"): the outcome not happening is the goal,
+read as "what approach speed so that my robot does not hit the bowl with the
+cup", and said back."""
+from __future__ import annotations
+
+import re
+
+#: The outcomes told, by the forms they are told in -> the form a negation takes.
+_VERBS = {"hits": "hit", "hit": "hit", "bumps": "bump", "bumped": "bump", "knocks": "knock", "knocked": "knock",
+          "touches": "touch", "touched": "touch", "strikes": "strike", "struck": "strike",
+          "slides": "slide", "slid": "slide", "moves": "move", "moved": "move", "shifts": "shift", "shifted": "shift",
+          "tips": "tip", "tipped": "tip", "flips": "flip", "flipped": "flip", "falls": "fall", "fell": "fall",
+          "spills": "spill", "spilled": "spill", "spilt": "spill", "splashes": "splash", "splashed": "splash",
+          "drips": "drip", "dripped": "drip", "overflows": "overflow", "overflowed": "overflow",
+          "misses": "miss", "missed": "miss"}
+_TOLD = re.compile(
+    rf"^(?P<who>(?:[a-z']+ ){{1,3}}?)(?:keeps? |always )?(?P<verb>{'|'.join(_VERBS)}|keeps? (?:{'|'.join(v + 'ing' for v in ('hitt', 'bump', 'knock', 'slid', 'mov', 'tipp', 'spill', 'splash', 'dripp'))}))"
+    r"(?P<rest>(?: [a-z']+)*?) *[,;.:-]+ *(?P<ask>(?:what|which)(?: [a-z]+){0,3}?)"
+    r" (?:avoids|would avoid|will avoid|prevents|would prevent|stops|would stop|fixes|would fix|solves|would solve)"
+    r" (?:that|this|it)(?P<end> *[?.!]* *)$")
+_KEPT = {"hitt": "hit", "bump": "bump", "knock": "knock", "slid": "slide", "mov": "move", "tipp": "tip",
+         "spill": "spill", "splash": "splash", "dripp": "drip"}
+
+
+def avoided(text: str) -> tuple[str, tuple[str, ...]]:
+    """`text` (normalised) with an outcome told and a value asked that avoids
+    it read as the value asked so that the outcome does not happen, and what
+    is said back; `text` as it is otherwise."""
+    m = _TOLD.match(text)
+    if m is None:
+        return text, ()
+    verb = m.group("verb")
+    base = _VERBS.get(verb) or _KEPT[verb.split()[1][:-3]]
+    told = f"{m.group('who')}does not {base}{m.group('rest')}"
+    return (f"{m.group('ask')} so that {told}{m.group('end')}",
+            (f"{m.group(0).strip(' ?.!')}: read as {m.group('ask')} so that {told.strip()}",))
