@@ -2,7 +2,9 @@
 hits the bowl with the cup every time, what approach speed avoids that", "the
 bowl slides, which height stops that"): the outcome not happening is the goal,
 read as "what approach speed so that my robot does not hit the bowl with the
-cup", and said back."""
+cup", and said back; so is a pour told with what it did, then what to change
+asked ("i poured too fast and the bowl flipped, what should i change"), the
+pour told not read."""
 from __future__ import annotations
 
 import re
@@ -20,6 +22,14 @@ _TOLD = re.compile(
     r"(?P<rest>(?: [a-z']+)*?) *[,;.:-]+ *(?P<ask>(?:what|which)(?: [a-z]+){0,3}?)"
     r" (?:avoids|would avoid|will avoid|prevents|would prevent|stops|would stop|fixes|would fix|solves|would solve)"
     r" (?:that|this|it)(?P<end> *[?.!]* *)$")
+#: A pour told in the past with what it did, then what to change asked ("i poured too fast and
+#: the bowl flipped, what should i change"): the pour told is not read, its outcome not
+#: happening is wanted.
+_CHANGE = re.compile(
+    rf"^(?P<pour>(?:last time |yesterday |earlier )?(?:i|we|the robot|my robot|the arm) (?:poured|tilted|tipped|held|moved|did)"
+    rf"[^,;.?!]*?) and (?P<who>(?:[a-z']+ ){{1,3}}?)(?P<verb>{'|'.join(_VERBS)})(?P<rest>(?: [a-z']+)*?) *[,;.:-]+ *"
+    r"(?P<ask>what (?:should|do|can|could|would) (?:i|we) (?:change|do(?: differently)?)"
+    r"|how (?:do|can|could|should) (?:i|we) (?:fix|avoid|stop|prevent) (?:that|this|it))(?P<end> *[?.!]* *)$")
 _KEPT = {"hitt": "hit", "bump": "bump", "knock": "knock", "slid": "slide", "mov": "move", "tipp": "tip",
          "spill": "spill", "splash": "splash", "dripp": "drip"}
 
@@ -28,6 +38,13 @@ def avoided(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with an outcome told and a value asked that avoids
     it read as the value asked so that the outcome does not happen, and what
     is said back; `text` as it is otherwise."""
+    m = _CHANGE.match(text)
+    if m is not None:
+        told = f"{m.group('who')}does not {_VERBS[m.group('verb')]}{m.group('rest')}"
+        ask = "how" if m.group("ask").startswith("how") else m.group("ask")     # "how do i fix that": how
+        return (f"{ask} so that {told}{m.group('end')}",
+                (f"{m.group('pour')}: read as nothing: an earlier pour, told; the answer is for the one asked",
+                 f"{m.group(0).strip(' ?.!')}: read as {ask} so that {told.strip()}"))
     m = _TOLD.match(text)
     if m is None:
         return text, ()
