@@ -57,6 +57,10 @@ COMPARISONS: tuple[tuple, ...] = (
     ("hedge", (r"re(compared|as opposed|in comparison):\b(?:compared (?:to|with)|as opposed to|in comparison (?:to|with))"
                r" [^,;:.!?]+?(?= [,;:.!?]|$)",),
      "read as nothing: the scene compared with is not read, the answer is for the one said"),
+    # a scene set against another with "vs" ("silicone bowl vs enamel bowl", "at 30 cm vs 5 cm"):
+    # the other not read, up to where its clause ends
+    ("hedge", (r"re(vs|versus):\b(?:vs|versus)\b\.? [^,;:.!?]+?(?= *(?:[,;:.!?]| - )|$)",),
+     "read as nothing: the scene compared with is not read, the answer is for the one said first"),
     # a scene compared with another said as "one" ("stay put better than a glass one", "spill more
     # than a half-full one"): the scene said first is read, the other one is not, said back
     ("hedge", (r"re(than):\b(?:(?:much |a (?:little |lot )?(?:bit )?)?(?:better|more|less|worse) )?than"

@@ -28,6 +28,7 @@ from pantarhei.bridge.reasoning.avoided import avoided
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.asides import restated
 from pantarhei.bridge.reasoning.earlier_pour import told
+from pantarhei.bridge.reasoning.which_one import which_one
 from pantarhei.bridge.reasoning.words import rewrites
 from pantarhei.theory.lexicon import load_vocabulary
 
@@ -144,7 +145,8 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text, again = restated(_normalised(text))         # "-2 cm (i.e. below the rim)"
     text, earlier = told(text)                         # "last time I poured from 20 cm, ...": not read
     text, avoiding = avoided(text)                     # "the bowl slides, what height stops that"
-    return text, (*said, *again, *earlier, *avoiding)
+    text, which = which_one(text)                      # "a vs b - which one slides more": does it slide
+    return text, (*said, *again, *earlier, *avoiding, *which)
 
 
 def _normalised(text: str) -> str:
