@@ -31,6 +31,7 @@ from dataclasses import dataclass
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.carried_units import carried
+from pantarhei.bridge.reasoning.negation import NEGATION_STEMS
 from pantarhei.bridge.reasoning.nouns import Nouns, roles
 from pantarhei.bridge.reasoning.stages import MOVE, POSE, stages
 from pantarhei.bridge.reasoning.units import POSITIVE, UNITS
@@ -215,6 +216,7 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
         if q.measures == "time" and move is None and "tilt" in choosing and tokens[i - 1].word in _SPAN:
             move, spans = "approach", {i - 1}     # "tilted to 90 degrees over 2 s": the move in carries the tilt
         param, by = parameter(q, pose, move, choosing, body)
+        _refuse_bound(tokens, i, q, param)          # "not tilted past 30 degrees": at most 30
         if param == "particle_mass":
             q = Quantity(q.value * 1000, q.measures, q.text)     # g to the parameter's mg
         read_too = (*CUES.get(by, ()), *ALSO_READ.get(by, ()))
@@ -232,6 +234,22 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
                         tokens[i + 1].said_back)          # a unit carried from the number before, said back
         dropped |= {i + 1} | used
     return [read.get(i, t) for i, t in enumerate(tokens) if i not in dropped]
+
+
+def _refuse_bound(tokens: list[Token], i: int, q: Quantity, param: str) -> None:
+    """UserError for a number said as a bound negated ("not tilted past 30
+    degrees", "without tilting beyond 60 degrees"): at most it, which
+    leaves every value of `param` below it, named."""
+    if i == 0 or tokens[i - 1].raw not in ("past", "beyond") or not any(
+            tokens[k].word in NEGATION_STEMS and tokens[k].clause == tokens[i].clause for k in range(i - 1)):
+        return
+    vocab = load_vocabulary()
+    value = q.value * (1000 if param == "particle_mass" else 1)
+    below = [n for lo, _, n in sorted((p.model.low, p.model.high, n) for n, p in vocab.propositions.items()
+                                      if p.model.kind == "uniform" and p.model.param == param) if lo < value]
+    left = ", ".join(below[:-1]) + " or " + below[-1] if len(below) > 1 else "".join(below)
+    raise UserError(f"not past {q.text} is a bound, at most {q.text}, which leaves {left}: say which one"
+                    " (or a range with both ends)")
 
 
 #: Weights said of a body, which a mass said just after them gives in grams ("light, like 50 g").
