@@ -4,7 +4,8 @@ bowl slides, which height stops that"): the outcome not happening is the goal,
 read as "what approach speed so that my robot does not hit the bowl with the
 cup", and said back; so is a pour told with what it did, then what to change
 asked ("i poured too fast and the bowl flipped, what should i change"), the
-pour told not read."""
+pour told not read, and the most a value may be before an outcome ("how far
+from the centre can I pour before the liquid misses")."""
 from __future__ import annotations
 
 import re
@@ -34,10 +35,21 @@ _KEPT = {"hitt": "hit", "bump": "bump", "knock": "knock", "slid": "slide", "mov"
          "spill": "spill", "splash": "splash", "dripp": "drip"}
 
 
+#: The most a value may be before an outcome, asked: "how far from the centre can I pour before
+#: the liquid misses", read as "... before the liquid starts to miss" (outcomes.py's goal).
+_MOST = re.compile(rf"^(?P<how>how (?:far|high|low|steep|steeply|much|close|fast|quickly|slowly|slow)\b[^?.!,;]*?)"
+                   rf" before (?P<who>it|they|the [a-z]+|anything|any of it) (?P<verb>{'|'.join(_VERBS)})\b")
+
+
 def avoided(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with an outcome told and a value asked that avoids
     it read as the value asked so that the outcome does not happen, and what
     is said back; `text` as it is otherwise."""
+    m = _MOST.match(text)
+    if m is not None:
+        return (f"{m.group('how')} before {m.group('who')} starts to {_VERBS[m.group('verb')]}{text[m.end():]}",
+                (f"before {m.group('who')} {m.group('verb')}: read as so that {m.group('who')} does not "
+                 f"{_VERBS[m.group('verb')]}, the most that can be done asked",))
     m = _CHANGE.match(text)
     if m is not None:
         told = f"{m.group('who')}does not {_VERBS[m.group('verb')]}{m.group('rest')}"

@@ -25,7 +25,7 @@ from pantarhei.bridge.reasoning.vessels import destinations, liquids
 #: What a value is asked of: a height, a tilt, a way ...
 _VALUE = (r"(?:height|tilt|tilting|angle|way|speed|distance|position|spot|place|amount|pose"
           r"|setting|manner)s?")
-_HOW = (r"(?:high|low|far|fast|quick|quickly|slow|slowly|steep|steeply|much|close|near"
+_HOW = (r"(?:(?:far|close|near) (?:from|to) the (?:centre|center|middle)(?: of (?:the )?[a-z]+)?|high|low|far|fast|quick|quickly|slow|slowly|steep|steeply|much|close|near"
         r"|tilted|full)")
 #: A value that is asked for ("the best height"), not said ("medium height").
 _BEST = (r"(?:best|right|ideal|optimal|safest|correct|perfect|proper|max|maximum|min|minimum"
