@@ -43,7 +43,7 @@ def curiosity(seed: int, budget: int, oracle: str, store: Path, run,
     one but a whole); `settings` are options of explore other than their
     defaults."""
     from pantarhei.bridge.exploration.explore_call import ExploreOptions, explore
-    from pantarhei.bridge.exploration.trace import trace_path
+    from pantarhei.bridge.exploration.trace import explored_whole, trace_path
 
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "learned.pl"
@@ -52,9 +52,8 @@ def curiosity(seed: int, budget: int, oracle: str, store: Path, run,
                                         **(settings or {})))
         trace = [json.loads(line) for line in trace_path(out).read_text().splitlines()]
     P, S = result["pours"]
-    # a whole has no rule of its own (theory/curiosity/writer.pl)
     steps = [(int(t["simulations"]), tuple(sorted(t["antecedent"]))) for t in trace
-             if t["via"] != "whole"]
+             if not explored_whole(t)]
 
     def bodies(n: int) -> list[tuple[str, ...]]:
         return list(dict.fromkeys(b for end, b in steps if end <= n))

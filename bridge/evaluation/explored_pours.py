@@ -17,7 +17,7 @@ from pantarhei.theory import defaults
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.exploration.simulation import Draw, drawn_pours, trace_draws
-from pantarhei.bridge.exploration.trace import trace_path
+from pantarhei.bridge.exploration.trace import explored_whole, trace_path
 from pantarhei.bridge.reasoning.written_theory import as_written
 from pantarhei.bridge.theories import loading
 from pantarhei.bridge.theories.model import Theory, antecedent_id
@@ -119,7 +119,7 @@ def read_learned(path: Path | str) -> Learned:
         lines = [json.loads(line) for line in trace.read_text(encoding="utf-8").splitlines()]
         ids = [str(t["id"]) for t in lines]
         bodies = {str(t["id"]): tuple(sorted(str(p) for p in t["antecedent"])) for t in lines}
-        whole = {str(t["id"]) for t in lines if t.get("via") == "whole"}
+        whole = {str(t["id"]) for t in lines if explored_whole(t)}
         draws = trace_draws(lines)
     except (OSError, ValueError, KeyError, TypeError) as e:
         raise UserError(f"{trace}: the trace of the theory cannot be read ({e})") from None

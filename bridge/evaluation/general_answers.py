@@ -112,8 +112,8 @@ def general_theories(ev, theory: Theory, methods: dict, held: dict,
     the theory holds; the random pours with the evaluation's. The contrast
     keys are the clear keys where the defaults-only theory of curiosity's
     pours is wrong. For the learning curiosity's theory, `explored` are its
-    explored antecedents but the wholes: curiosity's rules are learned over them from its
-    pours alone, as `explore` wrote them. Every method's rules are learned
+    explored antecedents but the wholes: curiosity's rules are learned over
+    them from its pours alone, as `explore` wrote them. Every method's rules are learned
     by the learner named `learner` (the theory's; None: the option
     table's default)."""
     t = time.monotonic()

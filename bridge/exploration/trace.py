@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
-from typing import Any, Sequence
+from typing import Any, Mapping, Sequence
 
 from pantarhei.bridge.files import pyplot, save_figure, write_text
 
@@ -28,6 +28,13 @@ def rounded(value: Any) -> Any:
     if isinstance(value, (list, tuple)):
         return [rounded(v) for v in value]
     return value
+
+
+def explored_whole(entry: Mapping[str, Any]) -> bool:
+    """Whether a trace line's antecedent was explored as a whole (the
+    learning curiosity's `whole_every`), so that it is no rule's body
+    (theory/curiosity/writer.pl)."""
+    return entry.get("via") == "whole"
 
 
 def trace_path(out: Path) -> Path:
