@@ -30,8 +30,8 @@ import re
 from dataclasses import dataclass
 
 from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.reasoning.bounds import SAID as BOUND_SAID, bounded_values, nearest_below, upper_bound
 from pantarhei.bridge.reasoning.carried_units import carried
-from pantarhei.bridge.reasoning.negation import NEGATION_STEMS
 from pantarhei.bridge.reasoning.nouns import Nouns, roles
 from pantarhei.bridge.reasoning.stages import MOVE, POSE, stages
 from pantarhei.bridge.reasoning.units import POSITIVE, UNITS
@@ -168,7 +168,7 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
     number ("at 10 cm height", "20 cm to the side") picks the parameter
     before the others of its clause ("from the side at 10 cm height" is
     a height, and the side is the pour's)."""
-    tokens = carried(tokens)            # "45 degrees instead of 90": 90 degrees
+    tokens = bounded_values(carried(tokens))     # "45 degrees instead of 90": 90 degrees; "not past halfway"
     numbers = [i for i, t in enumerate(tokens[:-1]) if re.fullmatch(NUMBER, t.word)
                and _unit(tokens[i + 1]) and tokens[i + 1].clause == t.clause]
     if not numbers:
@@ -216,7 +216,8 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
         if q.measures == "time" and move is None and "tilt" in choosing and tokens[i - 1].word in _SPAN:
             move, spans = "approach", {i - 1}     # "tilted to 90 degrees over 2 s": the move in carries the tilt
         param, by = parameter(q, pose, move, choosing, body)
-        _refuse_bound(tokens, i, q, param)          # "not tilted past 30 degrees": at most 30
+        bound = upper_bound(tokens, i, q.measures, set(cue_of)) \
+            if q.measures != "length" or "below" not in cues else set()      # not "at most 2 cm below"
         if param == "particle_mass":
             q = Quantity(q.value * 1000, q.measures, q.text)     # g to the parameter's mg
         read_too = (*CUES.get(by, ()), *ALSO_READ.get(by, ()))
@@ -228,28 +229,14 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
             used |= {i - 2, i - 1}
             q = Quantity(q.value, q.measures, f"{tokens[i - 2].raw} to {said}"
                          if tokens[i - 2].raw != tokens[i].raw else said)
+        nearest = nearest_below(q.value, param, q.text) if bound and low is None else None
+        used |= bound if nearest else set()        # "not tilted past 30 degrees": at most 30 (bounds.py)
         raw = " ".join(dict.fromkeys(tokens[k].raw for k in sorted({i, i + 1} | used)))
         at_low = None if low is None else float(tokens[low].word) * q.value / float(tokens[i].word)
-        read[i] = Token(proposition(q, param, cues, at_low), raw, tokens[i].clause,
-                        tokens[i + 1].said_back)          # a unit carried from the number before, said back
+        read[i] = Token(nearest or proposition(q, param, cues, at_low), raw, tokens[i].clause,
+                        BOUND_SAID if nearest else tokens[i + 1].said_back)    # a unit carried, said back
         dropped |= {i + 1} | used
     return [read.get(i, t) for i, t in enumerate(tokens) if i not in dropped]
-
-
-def _refuse_bound(tokens: list[Token], i: int, q: Quantity, param: str) -> None:
-    """UserError for a number said as a bound negated ("not tilted past 30
-    degrees", "without tilting beyond 60 degrees"): at most it, which
-    leaves every value of `param` below it, named."""
-    if i == 0 or tokens[i - 1].raw not in ("past", "beyond") or not any(
-            tokens[k].word in NEGATION_STEMS and tokens[k].clause == tokens[i].clause for k in range(i - 1)):
-        return
-    vocab = load_vocabulary()
-    value = q.value * (1000 if param == "particle_mass" else 1)
-    below = [n for lo, _, n in sorted((p.model.low, p.model.high, n) for n, p in vocab.propositions.items()
-                                      if p.model.kind == "uniform" and p.model.param == param) if lo < value]
-    left = ", ".join(below[:-1]) + " or " + below[-1] if len(below) > 1 else "".join(below)
-    raise UserError(f"not past {q.text} is a bound, at most {q.text}, which leaves {left}: say which one"
-                    " (or a range with both ends)")
 
 
 #: Weights said of a body, which a mass said just after them gives in grams ("light, like 50 g").
