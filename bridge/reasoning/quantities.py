@@ -14,8 +14,9 @@ is; a time the move into the pouring pose or out of it (a tilt said "over 2 s"
 is the move in's, which carries the tilt; "held for 5 s" no move's); a mass the bowl it
 qualifies; a count the particles of liquid. The value is converted to the
 parameter's unit (theory/vocabulary/parameters.pl) and read as the
-proposition of that parameter whose range holds it; a number no range
-holds, or a measure no parameter takes ("pour for 3 seconds": pouring has
+proposition of that parameter whose range holds it (one between two
+ranges, in the ordinary pour's, as the ordinary pour: "a 600 g jug"); a
+number no range holds, or a measure no parameter takes ("pour for 3 seconds": pouring has
 no duration of its own), is refused naming the ranges there are.
 
 A number keeps its sign (wording.py): "tilted at -10 degrees" is tilted
@@ -153,12 +154,26 @@ def proposition(q: Quantity, param: str, cues: set[str], low: float | None = Non
     holding = [n for lo, hi, n in ranges if lo <= ends[0] and ends[-1] <= hi]
     if holding:
         return holding[-1]
+    prior = next((p.prior_low, p.prior_high) for p in vocab.parameters if p.name == param)
+    if ranges and prior[0] <= ends[0] and ends[-1] <= prior[1] and not any(
+            lo <= ends[-1] and ends[0] <= hi for lo, hi, _ in ranges):
+        return ""           # between two values, in the ordinary pour's range: a 600 g jug
     said = "; ".join(f"{n} {lo} to {hi} {unit}" for lo, hi, n in ranges)
     value = " to ".join(f"{v:g}" for v in ends)
+    away = sorted((min(abs(lo - ends[0]), abs(hi - ends[0])), n) for lo, hi, n in ranges)
+    nearest = away[0][1] if len(away) == 1 or away and away[0][0] < away[1][0] else ""
     raise UserError(f"\"{q.text}\" is {value} {unit} of {param}, which no "
                     f"{'one ' if len(ends) > 1 else ''}proposition holds"
                     + (f" ({said}): say {'a value within ' if len(ends) > 1 else ''}one of these"
+                       + (f" (the nearest: {nearest})" if len(ends) == 1 and nearest else "")
                        if said else ": the vocabulary has no proposition of it"))
+
+
+def ordinary_said(param: str) -> str:
+    """What is said back of a number read as the ordinary pour: its range there."""
+    p = next(p for p in load_vocabulary().parameters if p.name == param)
+    return (f"between the vocabulary's values of {param}, in the ordinary pour's range ({p.prior_low:g} to "
+            f"{p.prior_high:g} {p.unit}): read as the ordinary pour")
 
 
 def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
@@ -233,8 +248,9 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
         used |= bound if nearest else set()        # "not tilted past 30 degrees": at most 30 (bounds.py)
         raw = " ".join(dict.fromkeys(tokens[k].raw for k in sorted({i, i + 1} | used)))
         at_low = None if low is None else float(tokens[low].word) * q.value / float(tokens[i].word)
-        read[i] = Token(nearest or proposition(q, param, cues, at_low), raw, tokens[i].clause,
-                        BOUND_SAID if nearest else tokens[i + 1].said_back)    # a unit carried, said back
+        name = nearest or proposition(q, param, cues, at_low)
+        read[i] = Token(name or stem("hedge"), raw, tokens[i].clause, BOUND_SAID if nearest else (
+            tokens[i + 1].said_back if name else ordinary_said(param)))    # a unit carried, said back
         dropped |= {i + 1} | used
     return [read.get(i, t) for i, t in enumerate(tokens) if i not in dropped]
 

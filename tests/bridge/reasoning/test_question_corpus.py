@@ -475,7 +475,7 @@ REFUSED_SAYING = {
     'what if the milk ends up on the floor?': 'could not place "ends up"',
     'does the source end up over the bowl?': 'could not place "end up"',
     'will the beer foam?': 'could not place "foam"',
-    'a bowl with a friction of 0.5': 'which no proposition holds',
+    'a bowl with a friction of 2': 'which no proposition holds',
     'friction of 0.1': 'the friction of which?',
     'pour with a yaw of 30 degrees': 'no proposition of it',
     'turn the cup 30 degrees': 'no proposition of it',

@@ -253,7 +253,9 @@ def test_numbers_with_units_are_read_as_the_proposition_whose_range_holds_them(q
     ("pour 10 cm from the bowl", "above the destination, or to its side?"),
     ("pour with the source tilted 200 degrees", "200 deg of pour_pitch, which no proposition "
                                                 "holds (pour_tilted_back -30 to -5 deg;"),
-    ("pour from a 600 g source bowl", "600 g of source_mass, which no proposition holds"),
+    ("pour from a 3 kg source bowl", "3000 g of source_mass, which no proposition holds"),
+    ("pour with 35 particles", "which no proposition holds (little_liquid 10 to 30 count;"),
+    ("pour with 148 particles", "say one of these (the nearest: very_much_liquid)"),
     ("a 5 kg liquid", "the mass of which bowl?"),
 ])
 def test_a_number_no_proposition_holds_is_refused_naming_the_ranges(question, words):
