@@ -23,6 +23,10 @@ they say nothing.
   high, over the centre) interact as likely. One with fewer than
   `doubt_support` pours of its own that the rules answer sure gets
   `maybe`.
+- `unexplored`: a pair of one group that was never explored, whose few
+  pours (at least one, fewer than `doubt_support`) each depart from a
+  sure answer of the rules, gets `maybe`: the pours are too few to tell,
+  and every one there is speaks against the answer.
 """
 from __future__ import annotations
 
@@ -39,8 +43,9 @@ from scipy.stats import binom
 from pantarhei.oracle.generative import in_support
 from pantarhei.theory.lexicon import load_vocabulary
 
-from pantarhei.bridge.learning.askable import suspect, together
+from pantarhei.bridge.learning.askable import askable_bodies, suspect, together
 from pantarhei.bridge.learning.general_rules import GeneralRule, deciding
+from pantarhei.bridge.learning.meaning import held_in_support
 
 
 def doubts(rules: list[GeneralRule], k: int, meaning: Meaning, P: np.ndarray,
@@ -143,6 +148,44 @@ def neighbours(rules: list[GeneralRule], bodies: Sequence[tuple[str, ...]], targ
         out.append(replace(added(pair, _maybe(m, s), rules, out, "beside_interaction"),
                            beside=near[pair]))
     return out
+
+
+def unexplored(rules: list[GeneralRule], pairs: Sequence[tuple[str, ...]], held: np.ndarray,
+               n: np.ndarray, k: int, meaning: Meaning, s: Settings) -> list[GeneralRule]:
+    """`maybe` for the pairs `unexplored_pairs` gives (`pairs`, with the
+    pours in their support `n`, of which `held` keep expectation k): one
+    each of whose pours departs from an answer of the rules at least
+    `doubt_confidence` sure gets a rule whose likelihood is its pours
+    counted beside the model's (`model_pours`), held within the
+    uncertain band."""
+    todo = []
+    for pair, h, c in zip(pairs, held, n):
+        answer = _sure(rules, pair, s)
+        if answer is not None and h == (0 if answer.holds else c):
+            todo.append((pair, int(h), int(c)))
+    out: list[GeneralRule] = []
+    for (pair, h, c), m in zip(todo, meaning([t[0] for t in todo])[:, k] if todo else []):
+        if np.isfinite(m) and _sure(rules + out, pair, s) is not None:
+            pooled = (h + s.model_pours * m) / (c + s.model_pours)
+            out.append(added(pair, _maybe(pooled, s), rules, out, "few_pours_depart"))
+    return out
+
+
+def unexplored_pairs(P: np.ndarray, Y: np.ndarray, bodies: Sequence[tuple[str, ...]],
+                     s: Settings) -> tuple[list[tuple[str, ...]], np.ndarray, np.ndarray]:
+    """The askable pairs of one group (`suspect`) that are none of
+    `bodies` (pours P with verdicts Y) and hold at least one pour but
+    fewer than `doubt_support` in their support: the pairs, how many of
+    their pours keep each expectation, and how many there are."""
+    have = set(bodies)
+    pairs, held, n = [], [], []
+    if s.max_body >= 2 and s.doubt_support:
+        for b in askable_bodies(2):
+            if len(b) == 2 and b not in have and suspect(b):
+                h, c = held_in_support(P, Y, b)
+                if 0 < c < s.doubt_support:
+                    pairs.append(b), held.append(h), n.append(c)
+    return pairs, np.array(held, dtype=int).reshape(-1, Y.shape[1]), np.array(n, dtype=int)
 
 
 def _sure(rules: list[GeneralRule], body: tuple[str, ...], s: Settings) -> GeneralRule | None:

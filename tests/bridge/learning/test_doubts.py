@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pantarhei.bridge.learning.doubts import exceptions, neighbours
+from pantarhei.bridge.learning.doubts import exceptions, neighbours, unexplored, unexplored_pairs
 from pantarhei.bridge.learning.general_rules import General, GeneralRule
 from pantarhei.bridge.learning.generalize import Settings
 from pantarhei.bridge.learning.meaning import Meaning
@@ -79,3 +79,43 @@ def test_no_maybe_next_to_a_pair_of_two_groups():
     as physics goes, so their neighbours keep the rules' answers."""
     P, meaning, bodies, target = _explored(0.05, ("heavy_liquid", "pour_very_high"))
     assert not neighbours([DEFAULT], bodies, target, _own(P, bodies), K, meaning, P, FAST)
+
+
+def _one_pour(pair, fills: bool):
+    """One pour drawn for `pair` among pours of the ordinary pour that fill
+    the bowl; the pair's own pour fills it or not (`fills`)."""
+    P = np.vstack([sample([], 12, 5), sample(list(pair), 1, 7)])
+    Y = np.ones((len(P), len(NAMES)), dtype=bool)
+    Y[-1, K] = fills
+    return P, Y, Meaning(P, Y, FAST)
+
+
+def test_a_pair_never_explored_whose_one_pour_departs_says_maybe():
+    """Pouring high over the centre was never explored; the one pour that
+    could have been drawn for it keeps the bowl empty, against the
+    default's sure yes: the pair is answered maybe, saying why, and its
+    likelihood counts that pour beside the model's."""
+    pair = ("pour_centred", "pour_high")
+    P, Y, meaning = _one_pour(pair, False)
+    pairs, held, n = unexplored_pairs(P, Y, [()], FAST)
+    assert pair in pairs and n[pairs.index(pair)] >= 1
+    added = unexplored([DEFAULT], pairs, held[:, K], n, K, meaning, FAST)
+    assert [r.body for r in added] == [pair] and added[0].doubt == "few_pours_depart"
+    assert General(rules=[DEFAULT] + added).decide(set(pair))[E][0] == UNKNOWN
+
+
+def test_no_maybe_where_the_pairs_pour_agrees_or_it_was_explored():
+    pair = ("pour_centred", "pour_high")
+    P, Y, meaning = _one_pour(pair, True)
+    pairs, held, n = unexplored_pairs(P, Y, [()], FAST)
+    assert not unexplored([DEFAULT], pairs, held[:, K], n, K, meaning, FAST)
+    P, Y, meaning = _one_pour(pair, False)
+    assert pair not in unexplored_pairs(P, Y, [(), pair], FAST)[0]
+
+
+def test_a_pair_of_two_groups_is_no_unexplored_suspect():
+    """A heavy liquid poured high: two groups of parameters, so its one
+    departing pour is no sign of an interaction."""
+    pair = ("heavy_liquid", "pour_high")
+    P, Y, _ = _one_pour(pair, False)
+    assert pair not in unexplored_pairs(P, Y, [()], FAST)[0]
