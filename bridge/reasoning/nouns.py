@@ -155,7 +155,8 @@ class Nouns:
         # that cannot stand between a value word and its noun
         self.stop = [n] * (n + 1)
         for j in range(n - 1, -1, -1):
-            passes = j not in roles and (tokens[j].word in BETWEEN or tokens[j].word in placeable)
+            passes = j not in roles and (tokens[j].word in BETWEEN or tokens[j].word in placeable
+                                         or _measured(tokens[j]))        # "a heavy 2 kg bowl"
             if tokens[j].word in ("and", "or") and j + 1 < n and (tokens[j + 1].word in ARTICLES
                                                                   or j + 1 in roles):
                 passes = False          # "heavy and the destination ...", "heavy and jug ...": a new noun's
@@ -246,6 +247,12 @@ def poured_from() -> frozenset[str]:
 def _singular() -> frozenset[str]:
     """The last words of the containers' names (everyday.txt), in the singular."""
     return frozenset(p.split()[-1] for p in names("bowl"))
+
+
+def _measured(t: Token) -> bool:
+    """Whether `t` is a number with its unit read as a proposition (quantities.py): a value
+    word may stand before it and its noun ("a heavy 1.2 kg jug")."""
+    return "_" in t.word and any(c.isdigit() for c in t.raw)
 
 
 def past_articles(tokens: list[Token], j: int, step: int) -> int:

@@ -1,25 +1,65 @@
 """Which of two scenes set against each other an outcome happens to, or
 happens to more ("silicone bowl vs enamel bowl - which one slides more"):
 asked of the scene said first, the other being said back as not read
-(comparisons.py), as "does it slide"."""
+(comparisons.py), as "does it slide". "Compare" before them is the frame
+("compare: 30 cm vs 5 cm"), and the first named again by its number
+after them ("how much more spill at 30") is the one read, said back."""
 from __future__ import annotations
 
 import re
+
+from pantarhei.bridge.errors import UserError
 
 _SET_AGAINST = re.compile(r"\b(?:vs|versus|compared (?:to|with))\b")
 _WHICH = re.compile(r"\bwhich (?:one|of them|of the two|bowl|cup)(?: of them)? (?:will |would |is going to )?"
                     r"(?P<verb>[a-z]+?)(?P<ending>es|s)?\b(?P<how> (?:more|less|the most|the least|most|least|worse|better)\b)?")
 
 
+_COMPARE = re.compile(r"^(?:let's |lets |please )?compar(?:e|ing)\b *:? *")
+_NUMBER = r"-?\d+(?:\.\d+)?"
+
+
 def which_one(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with "which one <outcome> more", after two scenes
     set against each other, read as "does it <outcome>", and what is said back."""
     set_against = _SET_AGAINST.search(text)
+    said: tuple[str, ...] = ()
+    if set_against and (frame := _COMPARE.search(text)):
+        said += (f"{frame.group(0).strip(' :')}: read as nothing: two scenes set against each other, "
+                 "the one said first answered",)
+        text = text[frame.end():]
+        set_against = _SET_AGAINST.search(text)
+    if set_against:
+        text, said = _first_again(text, set_against, said)
     m = _WHICH.search(text, set_against.end()) if set_against else None
     if m is None:
-        return text, ()
+        return text, said
     verb = m.group("verb") + ("e" if m.group("ending") == "es" and not re.search(r"(?:sh|ch|ss|x)$", m.group("verb"))
                               else "")
-    said = f"does it {verb}"
-    return (text[:m.start()] + said + text[m.end():],
-            (f"{m.group(0)}: read as {said}, of the one said first",))
+    return (text[:m.start()] + f"does it {verb}" + text[m.end():],
+            (*said, f"{m.group(0)}: read as does it {verb}, of the one said first"))
+
+
+def _again(number: str) -> re.Pattern:
+    """A scene named again by its number, with no unit: "at 30", "for the 30 cm one"."""
+    return re.compile(rf"\b(?:at|for|with) (?:the )?{re.escape(number)}(?: \w+ ones?)?\b(?![\w.])"
+                      r"(?! ?(?:cm|mm|m|deg|degrees?|g|kg|s|inch\w*|%))")
+
+
+def _first_again(text: str, set_against: re.Match, said: tuple[str, ...]) -> tuple[str, tuple[str, ...]]:
+    """`text` with the scene said first named again by its number, after the
+    other ("at 30 cm vs 5 cm, how much more spill at 30"), read as nothing and said back."""
+    first = re.findall(_NUMBER, text[:set_against.start()])
+    clause = re.search(r"[,;:?!.] ", text[set_against.end():])
+    if len(first) != 1 or clause is None:
+        return text, said
+    after = set_against.end() + clause.end()
+    second = re.findall(_NUMBER, text[set_against.end():after])
+    m = _again(first[0]).search(text, after)
+    if m is None and len(second) == 1 and (other := _again(second[0]).search(text, after)):
+        raise UserError(f"\"{other.group(0)}\" asks of the scene set against the first, which is not read: "
+                        "ask of it alone")
+    if m is None:
+        return text, said
+    return (text[:m.start()] + text[m.end():],
+            (*said, f"{m.group(0)}: read as nothing: the scene said first, named again"))
