@@ -5,7 +5,10 @@ nothing): each question is read alone, so against the ordinary pour
 low, "not tilting as far as before" slightly tilted, "twice as much
 water" much liquid, "twice as high as usual" high), said back; and
 "more high", "more thick like honey", as learners of English say them,
-are the value itself. A scene compared with another said as "one" ("stay
+are the value itself. A comparative said of nothing is read against the
+ordinary pour too ("a bouncier bowl", "if I tilt more": upside down, past
+its 100 to 140 degrees), and one negated ("without moving the cup closer")
+as no change from it. A scene compared with another said as "one" ("stay
 put better than a glass one"), or with another liquid ("does syrup spill
 less than water"), is the scene said first, the other said back as not
 read, as is one said "compared to" ("compared to a full jug, would a
@@ -19,6 +22,8 @@ DEGREE = r"(?:just|only|slightly|barely|a (?:little |tiny )?bit|a little|a tad|s
 #: Comparatives of the vocabulary's values, said of nothing they are measured from.
 COMPARATIVES = ("higher|heavier|lighter|faster|quicker|slower|steeper|stickier|runnier|thicker|"
                  "thinner|bouncier|grippier|slipperier|fuller|emptier")
+#: Words after "more" or "less" that make it an amount, not a comparative: "less water".
+_VALUED = "liquid|water|of|than|and|often|time|times|likely"
 #: An earlier or the usual pour, as a comparison is made to it: "than the previous pour",
 #: "than last time", "than usual"; and after "as high as": "last time" ("as before" is a hedge
 #: of the everyday list by then).
@@ -61,6 +66,27 @@ COMPARISONS: tuple[tuple, ...] = (
     # the other not read, up to where its clause ends
     ("hedge", (r"re(vs|versus):\b(?:vs|versus)\b\.? [^,;:.!?]+?(?= *(?:[,;:.!?]| - )|$)",),
      "read as nothing: the scene compared with is not read, the answer is for the one said first"),
+    # a comparative negated, said of nothing ("without moving the cup closer", "not faster"): no
+    # change from the ordinary pour, read as nothing (a value said beside it stands)
+    ("hedge", (rf"re(closer|nearer|further|farther|{COMPARATIVES}|more|less):\b(?:not|never|without|no)\b"
+               rf"(?: (?!and\b|or\b|but\b)[a-z]+){{0,3}}? (?:any )?(?:closer|nearer|further|farther|{COMPARATIVES}"
+               rf"|more|less)\b(?! than\b)(?! (?:{_VALUED})\b)",),
+     "read as nothing: no change from the ordinary pour, against which a comparative with nothing is read"),
+    # a comparative said of nothing ("a bouncier bowl", "pour a bit lower", "if I tilt more"): against
+    # the ordinary pour, as against the usual one, the value that way (not after a number: "2 cm higher")
+    *((value, (rf"re({said if cue is None else cue}):(?<!\d )(?<!cm )(?<!mm )(?<!inches )(?<!degrees )\b(?:{DEGREE} |much |even |far |a lot "
+               rf"|way )?(?:{said})\b(?!(?: [a-z]+)? than\b)" + after,),
+       "read against the ordinary pour: each question is read alone, with nothing before it")
+      for said, value, after, cue in (
+          ("higher", "high", "", None), ("lower", "low", r"(?! (?:the|it|them|(?:the|a|an|my) \w+)\b)", None),
+          ("slower", "slowly", "", None), ("faster|quicker", "fast", "", None), ("heavier", "heavy", "", None),
+          ("lighter", "light", "", None), ("steeper", "steeply tilted", "", None),
+          ("stickier|thicker", "sticky", "", None), ("runnier|thinner", "runny", "", None),
+          ("bouncier", "bouncy", "", None), ("grippier", "grippy", "", None), ("slipperier", "slippery", "", None),
+          # tilted more than the ordinary pour's 100 to 140 degrees: upside down; less: slightly
+          (r"tilt(?:s|ed|ing)? (?:(?:it|the \w+) )?more|tip(?:s|ped|ping)? (?:(?:it|the \w+) )?more|more tilt(?:ed)?",
+           "tilted upside down", "", "more"),
+          (r"tilt(?:s|ed|ing)? (?:(?:it|the \w+) )?less|less tilt(?:ed)?", "slightly tilted", "", "less"))),
     # a scene compared with another said as "one" ("stay put better than a glass one", "spill more
     # than a half-full one"): the scene said first is read, the other one is not, said back
     ("hedge", (r"re(than):\b(?:(?:much |a (?:little |lot )?(?:bit )?)?(?:better|more|less|worse) )?than"

@@ -180,6 +180,12 @@ def _filling() -> Cued:
                 ("fill", "full"))
 
 
+#: Whether a person can get the liquid in, or empty the source into the bowl: wanted, or asked
+#: where a manner is said ("can I still get everything into the bowl if I tilt more").
+_CAN_GET = (r"\b(?:can|could) (?:i|we|you) (?:still )?(?:get|put) (it all|all of it|everything|every drop|every last drop"
+            r"|all (?:of )?the [a-z]+) (?=(?:in|into|inside)\b)")
+_CAN_EMPTY = (r"\b(?:can|could) (?:i|we|you) (?:still )?(?:empty|drain) (it|(?:the|my) [a-z]+)(?: out)?"
+              r"(?: completely| fully| all the way| entirely)? (?=into\b)")
 #: Wanting, compiled when cued: "I need none of it on the table" (so that none goes on it),
 #: "how do I get all the soup into the bowl" (so that it goes in).
 _WANTING_CUED = (
@@ -208,6 +214,10 @@ _WANTING_CUED = (
           r" (?=(?:on|onto|all over) )", ("want", "need")), "so that none goes "),
     (Cued(r"\bhow (?:do|can|could|should|would) (?:i|we|you) get (it all|all of it|everything|all the [a-z]+|it|the [a-z]+)"
           r" (?=(?:in|into|inside)\b)", (" get ",)), r"how so that \1 goes "),
+    # "can I still get everything into the bowl", "can I empty the mug completely into the bowl":
+    # so that it goes in (and the source empties); asked where a manner is said (if_it_can)
+    (Cued(_CAN_GET, (" get ", " put ")), r"so that \1 goes "),
+    (Cued(_CAN_EMPTY, ("empty", "drain")), r"so that \1 empties "),
 )
 
 
@@ -271,7 +281,8 @@ def if_it_can(text: str, goals: tuple[str, ...], manners: bool) -> tuple[tuple[s
     down at the edge without hitting the bowl?") asks whether the outcome
     happens there; said of no manner ("can I pour without spilling?") it
     wants the outcome, which a plan finds."""
-    if not (goals and " without " in f" {text} " and not re.search(r"\b(?:how|what|which|where|so(?: that| as)?) ", text)):
+    if not (goals and (" without " in f" {text} " or re.search(f"{_CAN_GET}|{_CAN_EMPTY}", text))
+            and not re.search(r"\b(?:how|what|which|where|so(?: that| as)?) ", text)):
         return (), goals
     asked = tuple(g.removeprefix("neg(").removesuffix(")") for g in goals)
     if _CAN_IT.search(text):

@@ -180,7 +180,7 @@ REFUSED = [
     'pour alongside the bowl',
     'pour a little to the side',
     'a bouncy ball',
-    'a heavier liquid',
+    'a heavier liquid than water in the jug',
     'an empty cup',
     'either pour from the side or from far away',
     'move in slow then pour fast',
