@@ -66,6 +66,11 @@ COMPARISONS: tuple[tuple, ...] = (
     # the other not read, up to where its clause ends
     ("hedge", (r"re(vs|versus):\b(?:vs|versus)\b\.? [^,;:.!?]+?(?= *(?:[,;:.!?]| - )|$)",),
      "read as nothing: the scene compared with is not read, the answer is for the one said first"),
+    # not too high (or low): the height next to it toward the middle of the scale, as "neither too
+    # high nor too low" is (words.py); not too fast or heavy is already the ordinary pour's
+    ("at medium height", (r"re(too):\b(?:not|never|nor) (?:held |poured |hold(?: it| the \w+)? |pour(?: it)? )?(?:too|overly)"
+                          r" (?:high|low)\b(?! than\b)",),
+     "read as at medium height: the height next to it, toward the middle"),
     # a comparative negated, said of nothing ("without moving the cup closer", "not faster"): no
     # change from the ordinary pour, read as nothing (a value said beside it stands)
     ("hedge", (rf"re(closer|nearer|further|farther|{COMPARATIVES}|more|less):\b(?:not|never|without|no)\b"

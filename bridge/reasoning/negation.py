@@ -1,6 +1,7 @@
 """Where a negation reaches in a question: "not", "never", "no",
 "without", "don't" ... cover the rest of their clause, up to the next
-"and", "or", "yet". Not one of two moves the other way is not the other
+"and", "or", "yet"; a question asked negatively ("can't I pour from
+high?") negates nothing. Not one of two moves the other way is not the other
 ("don't lift it" may leave it where it is): still_between says so."""
 from __future__ import annotations
 
@@ -20,6 +21,11 @@ _AT = {"on", "onto", "in", "into", "over", "outside", "all"}
 _BEFORE_NOUN = {"the", "a", "an", "my", "our", "your", "its", "over", "of", "it"}
 
 
+#: An auxiliary, "not" and its subject, in that order, ask a question negatively: "can't I", "isn't it".
+_AUX = {*"can could would should will do does did is are was were has have must might may shall".split()}
+_SUBJECTS = {*"i we you it they he she".split()}
+
+
 def scope_ends(tokens: list[Token]) -> list[int]:
     """For each position i, where the scope of a negation at i ends: the
     end of its clause, or the next "and", "or", "yet"... after it (for
@@ -28,6 +34,9 @@ def scope_ends(tokens: list[Token]) -> list[int]:
     for j in range(len(tokens) - 2, -1, -1):
         nxt = tokens[j + 1]
         ends[j] = j + 1 if nxt.clause != tokens[j].clause or nxt.word in _SCOPE_ENDS else ends[j + 1]
+    for j in range(1, len(tokens) - 1):      # a question asked negatively ("can't I pour from high?") negates nothing
+        if tokens[j].word == "not" and tokens[j - 1].raw in _AUX and tokens[j + 1].raw in _SUBJECTS:
+            ends[j] = j + 1
     for j, t in enumerate(tokens[:-2]):
         at = j + 1 + (t.word == "no" and tokens[j + 1].word == "liquid")      # "no liquid on the table"
         if (t.word in _PLACED or at > j + 1) and tokens[at].word in _AT:
@@ -63,16 +72,28 @@ def still_between(a: str, b: str, props) -> bool:
             and min(ra.high, rb.high) < 0 < max(ra.low, rb.low))
 
 
-def ordinary_among(names: list[str], vocab) -> str | None:
-    """The one of `names` that says what the ordinary pour does (its range
-    the prior of its parameter: "not heavy" leaves a light bowl or one of
-    medium weight, and the ordinary pour's bowl is of medium weight), or
-    None when none does, or several."""
+def ordinary_left(negated: list[str], others: list[str], vocab) -> tuple[str, str] | None:
+    """What a negation that leaves several values (`others`) is read as, and
+    what is said back: the one of them that says what the ordinary pour does
+    (its range the prior of its parameter: "not heavy" leaves a light bowl or
+    one of medium weight, and the ordinary pour's bowl is of medium weight);
+    or, where no value says it but the ordinary pour lies wholly outside the
+    values negated ("not from high": it pours at 50 to 120 mm), the ordinary
+    pour itself (""); None otherwise."""
+    props = vocab.propositions
     priors = {p.name: (p.prior_low, p.prior_high) for p in vocab.parameters}
-    found = [n for n in names if vocab.propositions[n].model.kind == "uniform"
-             and (vocab.propositions[n].model.low, vocab.propositions[n].model.high)
-             == priors[vocab.propositions[n].model.param]]
-    return found[0] if len(found) == 1 else None
+    models = [props[n].model for n in (*negated, *others)]
+    if not all(m.kind == "uniform" for m in models):
+        return None
+    found = [n for n in others if (props[n].model.low, props[n].model.high) == priors[props[n].model.param]]
+    if len(found) == 1:
+        return found[0], f"not {', '.join(negated)}: {found[0]}, as in the ordinary pour"
+    param = next(p for p in vocab.parameters if p.name == models[0].param)
+    low, high = param.prior_low, param.prior_high
+    if not found and all(props[n].model.high <= low or high <= props[n].model.low for n in negated):
+        return "", (f"not {', '.join(negated)}: the ordinary pour, which lies outside it ({low:g} to {high:g} "
+                    f"{param.unit} of {param.name})")
+    return None
 
 
 def opposite(negated: list[str], values: tuple[str, ...]) -> str | None:

@@ -47,7 +47,7 @@ from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.lexicon_cache import cached_lexicon
-from pantarhei.bridge.reasoning.negation import (NEGATION_STEMS, covered, opposite, ordinary_among, scope,
+from pantarhei.bridge.reasoning.negation import (NEGATION_STEMS, covered, opposite, ordinary_left, scope,
                                                  scope_ends, still_between)
 from pantarhei.bridge.reasoning.nouns import ARTICLES, BOWL, CONTEXT, OBJECT_STEMS, Nouns, roles
 from pantarhei.bridge.reasoning.outcomes import FOLLOWS, follows, hear
@@ -236,10 +236,10 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
             out.append(far)
             spoken.append(f"not {names[0]} at all: {far}")
             continue
-        ordinary = ordinary_among(others, vocab)
+        ordinary = ordinary_left(names, others, vocab)
         if ordinary:                             # "isn't heavy": the ordinary pour's bowl, said back
-            out.append(ordinary)
-            spoken.append(f"not {', '.join(names)}: {out[-1]}, as in the ordinary pour")
+            out += [ordinary[0]] if ordinary[0] else []
+            spoken.append(ordinary[1])
             continue
         raise UserError(f"not {', '.join(names)} leaves {_or(others)}: say which one (or give "
                         f"--props P1,P2)" if others
