@@ -57,6 +57,8 @@ _ASKING_SOURCE = (
     rf"(?: (?:away|in|out|over|from|into))?(?=[ ?.!,]|$)"
     # where it should be: "where should the spout be", "where should I hold the jug"
     rf"|\bwhere (?:should|do|can|must|would|could|shall) (?:{_WHO}|the \w+) (?:be|{_ACT}{_WHAT})(?=[ ?.!,]|$)"
+    # what a body needs: "what friction does it need", "what weight would the bowl need"
+    rf"|\bwhat (?:{_VALUE}|friction|weight|mass|bounciness) (?:does|do|would|should|will) (?:it|they|the \w+) need(?=[ ?.!,]|$)"
     # what to avoid: "what should I avoid"
     rf"|\bwhat (?:should|must|do|would|can) {_WHO} (?:need to |have to )?avoid(?: doing)?(?=[ ?.!,]|$)"
     # what to change or do: "what do I need to change", "what should we adjust"
