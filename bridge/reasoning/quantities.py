@@ -135,11 +135,13 @@ _AMOUNT = ("\"{}\" of liquid: the vocabulary counts the liquid in particles; say
            "particles\", \"a little liquid\", \"some liquid\", \"much liquid\" or \"a full cup\"")
 
 
-def proposition(q: Quantity, param: str, cues: set[str], low: float | None = None) -> str:
+def proposition(q: Quantity, param: str, cues: set[str], low: float | None = None, typed: bool = False) -> str:
     """The proposition whose range of `param` holds `q` (a height said
     "below" the rim is under it: negative), or all of the range from `low`
-    to `q` where one is said ("8 to 10 cm"); UserError naming the ranges
-    there are if none does."""
+    to `q` where one is said ("8 to 10 cm"), or else, for a range `typed`
+    with both its ends, MOST of it ("5 to 10 cm": medium height); "" for a number between two ranges that
+    the ordinary pour's holds; UserError naming the ranges there are if
+    none does."""
     vocab = load_vocabulary()
     unit = next(p.unit for p in vocab.parameters if p.name == param)
     if param.endswith("_z") and "below" in cues and q.value < 0:
@@ -154,6 +156,10 @@ def proposition(q: Quantity, param: str, cues: set[str], low: float | None = Non
     holding = [n for lo, hi, n in ranges if lo <= ends[0] and ends[-1] <= hi]
     if holding:
         return holding[-1]
+    mostly = [n for lo, hi, n in ranges if typed and len(ends) > 1
+              and min(hi, ends[1]) - max(lo, ends[0]) >= (ends[1] - ends[0]) * MOST]
+    if mostly:                  # "5 to 10 cm": 50 to 60 mm low, 60 to 100 mm medium height
+        return mostly[0]
     prior = next((p.prior_low, p.prior_high) for p in vocab.parameters if p.name == param)
     if ranges and prior[0] <= ends[0] and ends[-1] <= prior[1] and not any(
             lo <= ends[-1] and ends[0] <= hi for lo, hi, _ in ranges):
@@ -167,6 +173,17 @@ def proposition(q: Quantity, param: str, cues: set[str], low: float | None = Non
                     + (f" ({said}): say {'a value within ' if len(ends) > 1 else ''}one of these"
                        + (f" (the nearest: {nearest})" if len(ends) == 1 and nearest else "")
                        if said else ": the vocabulary has no proposition of it"))
+
+
+#: The share of a range typed with both ends ("5 to 10 cm") one value must hold to be read.
+MOST = 0.75
+MOSTLY = "a range across two values, three quarters of it or more in this one: read as it"
+
+
+def _holds(name: str, low: float, high: float) -> bool:
+    """Whether the range of proposition `name` holds all of `low` to `high` (either sign)."""
+    m = load_vocabulary().propositions[name].model
+    return any(m.low <= min(a, b) and max(a, b) <= m.high for a, b in ((low, high), (-low, -high)))
 
 
 def ordinary_said(param: str) -> str:
@@ -248,9 +265,10 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
         used |= bound if nearest else set()        # "not tilted past 30 degrees": at most 30 (bounds.py)
         raw = " ".join(dict.fromkeys(tokens[k].raw for k in sorted({i, i + 1} | used)))
         at_low = None if low is None else float(tokens[low].word) * q.value / float(tokens[i].word)
-        name = nearest or proposition(q, param, cues, at_low)
+        name = nearest or proposition(q, param, cues, at_low, low is not None and tokens[low].raw != tokens[i].raw)
         read[i] = Token(name or stem("hedge"), raw, tokens[i].clause, BOUND_SAID if nearest else (
-            tokens[i + 1].said_back if name else ordinary_said(param)))    # a unit carried, said back
+            (MOSTLY if at_low is not None and not _holds(name, at_low, q.value) else tokens[i + 1].said_back)
+            if name else ordinary_said(param)))    # a unit carried, said back
         dropped |= {i + 1} | used
     return [read.get(i, t) for i, t in enumerate(tokens) if i not in dropped]
 

@@ -2,7 +2,8 @@
 as meant (its scene, the expectations it asks, the goals it wants) or, where
 the vocabulary cannot say it, refused in one line naming what could not be
 read and what would be; and, whatever the vocabulary's ranges, a range of
-numbers read as the proposition that holds all of it, or refused."""
+numbers read as the proposition that holds all of it, or three quarters of
+it, or refused."""
 from __future__ import annotations
 
 import re
@@ -114,14 +115,19 @@ def _ranges(param: str) -> list[tuple[float, float, str]]:
 ])
 def test_a_range_is_read_as_the_proposition_that_holds_all_of_it(template, param, scale):
     """Whatever the vocabulary's ranges: a range inside one proposition's is
-    that proposition; one across two is refused naming them."""
+    that proposition; one across two is refused naming them, unless three
+    quarters of it lie in one."""
     join = " and " if template.startswith("between") else " to "
     ranges = _ranges(param)
     for low, high, name in ranges:
         inner = (low + (high - low) / 4) / scale, (high - (high - low) / 4) / scale
         assert understand(template.format(join.join(f"{v:g}" for v in inner))) == [name]
-    for (_, high_a, a), (low_b, _, b) in zip(ranges, ranges[1:]):
+    for (low_a, high_a, a), (low_b, _, b) in zip(ranges, ranges[1:]):
         across = (high_a - 1) / scale, (low_b + 1) / scale
         with pytest.raises(UserError, match="which no one proposition holds") as e:
             understand(template.format(join.join(f"{v:g}" for v in across)))
         assert a in str(e.value) and b in str(e.value)
+        # three quarters of it in one: that one
+        mostly = (high_a - 9 * (low_b + 1 - high_a)) / scale, (low_b + 1) / scale
+        if mostly[0] * scale >= low_a:
+            assert understand(template.format(join.join(f"{v:g}" for v in mostly))) == [a]
