@@ -209,7 +209,7 @@ doubt_words(R, Text) :-
 doubt_text(unsettled, _, "maybe: the rules of its parts disagree, and too few of its own pours tell").
 doubt_text(parts_disagree, _, "the rules of its parts disagree, and its own pours tell").
 doubt_text(pours_contradict, _, "its own pours depart from what the rules of its parts say").
-doubt_text(few_pours_depart, _, "maybe: never explored as such, and each of its few pours departs from what the rules of its parts say").
+doubt_text(few_pours_depart, _, "maybe: too few of its own pours tell, and each of them departs from what the rules of its parts say").
 doubt_text(beside_interaction, R, Text) :-
     findall(B, defeasible:provenance(R, beside, B), Bs),
     where(Bs, Where),

@@ -23,7 +23,7 @@ they say nothing.
   high, over the centre) interact as likely. One with fewer than
   `doubt_support` pours of its own that the rules answer sure gets
   `maybe`.
-- `unexplored`: a pair of one group that was never explored, whose few
+- `few_pours`: a pair of one group without a rule of its own, whose few
   pours (at least one, fewer than `doubt_support`) each depart from a
   sure answer of the rules, gets `maybe`: the pours are too few to tell,
   and every one there is speaks against the answer.
@@ -150,9 +150,9 @@ def neighbours(rules: list[GeneralRule], bodies: Sequence[tuple[str, ...]], targ
     return out
 
 
-def unexplored(rules: list[GeneralRule], pairs: Sequence[tuple[str, ...]], held: np.ndarray,
+def few_pours(rules: list[GeneralRule], pairs: Sequence[tuple[str, ...]], held: np.ndarray,
                n: np.ndarray, k: int, meaning: Meaning, s: Settings) -> list[GeneralRule]:
-    """`maybe` for the pairs `unexplored_pairs` gives (`pairs`, with the
+    """`maybe` for the pairs `thinly_poured` gives (`pairs`, with the
     pours in their support `n`, of which `held` keep expectation k): one
     each of whose pours departs from an answer of the rules at least
     `doubt_confidence` sure gets a rule whose likelihood is its pours
@@ -171,17 +171,16 @@ def unexplored(rules: list[GeneralRule], pairs: Sequence[tuple[str, ...]], held:
     return out
 
 
-def unexplored_pairs(P: np.ndarray, Y: np.ndarray, bodies: Sequence[tuple[str, ...]],
-                     s: Settings) -> tuple[list[tuple[str, ...]], np.ndarray, np.ndarray]:
-    """The askable pairs of one group (`suspect`) that are none of
-    `bodies` (pours P with verdicts Y) and hold at least one pour but
-    fewer than `doubt_support` in their support: the pairs, how many of
-    their pours keep each expectation, and how many there are."""
-    have = set(bodies)
+def thinly_poured(P: np.ndarray, Y: np.ndarray,
+                  s: Settings) -> tuple[list[tuple[str, ...]], np.ndarray, np.ndarray]:
+    """The askable pairs of one group (`suspect`), explored or not, that
+    hold at least one of the pours P (verdicts Y) but fewer than
+    `doubt_support` in their support: the pairs, how many of their pours
+    keep each expectation, and how many there are."""
     pairs, held, n = [], [], []
     if s.max_body >= 2 and s.doubt_support:
         for b in askable_bodies(2):
-            if len(b) == 2 and b not in have and suspect(b):
+            if len(b) == 2 and suspect(b):
                 h, c = held_in_support(P, Y, b)
                 if 0 < c < s.doubt_support:
                     pairs.append(b), held.append(h), n.append(c)

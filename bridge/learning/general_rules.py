@@ -82,8 +82,8 @@ class GeneralRule:
     #: why the learner doubted its rules' answer here (doubts.py), "" for
     #: a contrast: unsettled (the rules of its parts disagree, too few of
     #: its pours tell), parts_disagree (they disagree, its pours tell),
-    #: pours_contradict, beside_interaction or few_pours_depart (a pair never
-    #: explored whose few pours each depart from a sure answer)
+    #: pours_contradict, beside_interaction or few_pours_depart (a pair whose
+    #: few pours each depart from a sure answer)
     doubt: str = ""
     #: for beside_interaction, the explored pair that interacts
     beside: tuple[str, ...] = ()

@@ -38,7 +38,7 @@ from pantarhei.theory.lexicon import load_vocabulary
 
 from pantarhei.bridge.verdicts import verdicts
 from pantarhei.bridge.learning.askable import askable_bodies, together
-from pantarhei.bridge.learning.doubts import doubts, exceptions, level, neighbours, unexplored, unexplored_pairs
+from pantarhei.bridge.learning.doubts import doubts, exceptions, level, neighbours, few_pours, thinly_poured
 from pantarhei.bridge.learning.general_rules import General, GeneralRule, Sup, verdict
 from pantarhei.bridge.learning.meaning import Meaning, held_in_support
 
@@ -140,14 +140,14 @@ def _generalize(P: np.ndarray, S: np.ndarray, settings: Settings,
     own = [held_in_support(P, Y, b) for b in bodies]      # per body: held per expectation, pours
     held, n = np.array([h for h, _ in own]), np.array([c for _, c in own])
     T = _with_own_pours(T, bodies, held, n, settings.model_pours)
-    pairs, pair_held, pair_n = unexplored_pairs(P, Y, bodies, settings)
+    pairs, pair_held, pair_n = thinly_poured(P, Y, settings)
     out = General(band=settings.band)
     for k, e in enumerate(vocab.expectation_names):
         rules = _Contrasts(e, bodies, T[:, k], settings).learn()
         rules += doubts(rules, k, meaning, P, settings)
         rules += exceptions(rules, bodies, T[:, k], held[:, k], n, settings)
         rules += neighbours(rules, bodies, T[:, k], n, k, meaning, P, settings)
-        rules += unexplored(rules, pairs, pair_held[:, k], pair_n, k, meaning, settings)
+        rules += few_pours(rules, pairs, pair_held[:, k], pair_n, k, meaning, settings)
         out.rules.extend(_with_evidence(r, P, Y[:, k]) for r in rules)
     for e in vocab.expectation_names:
         out.sup.extend(_superiority(out.of(e)))

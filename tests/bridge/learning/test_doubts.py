@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from pantarhei.bridge.learning.doubts import exceptions, neighbours, unexplored, unexplored_pairs
+from pantarhei.bridge.learning.doubts import exceptions, few_pours, neighbours, thinly_poured
 from pantarhei.bridge.learning.general_rules import General, GeneralRule
 from pantarhei.bridge.learning.generalize import Settings
 from pantarhei.bridge.learning.meaning import Meaning
@@ -91,31 +91,35 @@ def _one_pour(pair, fills: bool):
 
 
 def test_a_pair_never_explored_whose_one_pour_departs_says_maybe():
-    """Pouring high over the centre was never explored; the one pour that
+    """Pouring high over the centre has no rule of its own; the one pour that
     could have been drawn for it keeps the bowl empty, against the
     default's sure yes: the pair is answered maybe, saying why, and its
     likelihood counts that pour beside the model's."""
     pair = ("pour_centred", "pour_high")
     P, Y, meaning = _one_pour(pair, False)
-    pairs, held, n = unexplored_pairs(P, Y, [()], FAST)
+    pairs, held, n = thinly_poured(P, Y, FAST)
     assert pair in pairs and n[pairs.index(pair)] >= 1
-    added = unexplored([DEFAULT], pairs, held[:, K], n, K, meaning, FAST)
+    added = few_pours([DEFAULT], pairs, held[:, K], n, K, meaning, FAST)
     assert [r.body for r in added] == [pair] and added[0].doubt == "few_pours_depart"
     assert General(rules=[DEFAULT] + added).decide(set(pair))[E][0] == UNKNOWN
 
 
-def test_no_maybe_where_the_pairs_pour_agrees_or_it_was_explored():
+def test_no_maybe_where_the_pairs_pour_agrees_or_it_has_a_rule():
+    """The pair's one pour fills the bowl: the default's yes stands. A
+    pair with a rule of its own keeps that rule's answer."""
     pair = ("pour_centred", "pour_high")
     P, Y, meaning = _one_pour(pair, True)
-    pairs, held, n = unexplored_pairs(P, Y, [()], FAST)
-    assert not unexplored([DEFAULT], pairs, held[:, K], n, K, meaning, FAST)
+    pairs, held, n = thinly_poured(P, Y, FAST)
+    assert not few_pours([DEFAULT], pairs, held[:, K], n, K, meaning, FAST)
     P, Y, meaning = _one_pour(pair, False)
-    assert pair not in unexplored_pairs(P, Y, [(), pair], FAST)[0]
+    pairs, held, n = thinly_poured(P, Y, FAST)
+    own = GeneralRule(f"g1_{E}", pair, E, True, 1, 1, 0.9, 1)
+    assert not few_pours([DEFAULT, own], pairs, held[:, K], n, K, meaning, FAST)
 
 
-def test_a_pair_of_two_groups_is_no_unexplored_suspect():
+def test_a_pair_of_two_groups_is_no_suspect_of_few_pours():
     """A heavy liquid poured high: two groups of parameters, so its one
     departing pour is no sign of an interaction."""
     pair = ("heavy_liquid", "pour_high")
     P, Y, _ = _one_pour(pair, False)
-    assert pair not in unexplored_pairs(P, Y, [()], FAST)[0]
+    assert pair not in thinly_poured(P, Y, FAST)[0]
