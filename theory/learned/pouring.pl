@@ -48,7 +48,7 @@ setting(a_new_left, 64).
 % bridge/learning/layers.py).
 setting(general_pours, 774).
 setting(general_own_pours, 0).
-setting(general_rules, 114).
+setting(general_rules, 121).
 rule(g0_destination_still_approach, defeasible, destination_still_approach).
 learned(g0_destination_still_approach).
 provenance(g0_destination_still_approach, layer, general).
@@ -172,6 +172,16 @@ provenance(g12_destination_still_approach, kept, 7).
 provenance(g12_destination_still_approach, confidence_permille, 533).
 provenance(g12_destination_still_approach, antecedent, a122).
 provenance(g12_destination_still_approach, doubt, parts_disagree).
+rule(g13_destination_still_approach, defeasible, destination_still_approach).
+body(g13_destination_still_approach, pour_centred).
+body(g13_destination_still_approach, pour_offset_sideways).
+learned(g13_destination_still_approach).
+provenance(g13_destination_still_approach, layer, general).
+provenance(g13_destination_still_approach, level, 1).
+provenance(g13_destination_still_approach, support, 1).
+provenance(g13_destination_still_approach, kept, 0).
+provenance(g13_destination_still_approach, confidence_permille, 648).
+provenance(g13_destination_still_approach, doubt, few_pours_depart).
 rule(g0_destination_still_retreat, defeasible, destination_still_retreat).
 learned(g0_destination_still_retreat).
 provenance(g0_destination_still_retreat, layer, general).
@@ -294,6 +304,16 @@ provenance(g12_destination_still_retreat, confidence_permille, 648).
 provenance(g12_destination_still_retreat, doubt, beside_interaction).
 provenance(g12_destination_still_retreat, beside, pour_below_rim).
 provenance(g12_destination_still_retreat, beside, pour_tilted_back).
+rule(g13_destination_still_retreat, defeasible, destination_still_retreat).
+body(g13_destination_still_retreat, pour_centred).
+body(g13_destination_still_retreat, pour_offset_sideways).
+learned(g13_destination_still_retreat).
+provenance(g13_destination_still_retreat, layer, general).
+provenance(g13_destination_still_retreat, level, 1).
+provenance(g13_destination_still_retreat, support, 1).
+provenance(g13_destination_still_retreat, kept, 0).
+provenance(g13_destination_still_retreat, confidence_permille, 648).
+provenance(g13_destination_still_retreat, doubt, few_pours_depart).
 rule(g0_destination_still_settle, defeasible, destination_still_settle).
 learned(g0_destination_still_settle).
 provenance(g0_destination_still_settle, layer, general).
@@ -480,6 +500,16 @@ provenance(g14_source_clear, confidence_permille, 648).
 provenance(g14_source_clear, doubt, beside_interaction).
 provenance(g14_source_clear, beside, end_below_rim).
 provenance(g14_source_clear, beside, retreat_moving_closer).
+rule(g15_source_clear, defeasible, source_clear).
+body(g15_source_clear, pour_centred).
+body(g15_source_clear, pour_offset_sideways).
+learned(g15_source_clear).
+provenance(g15_source_clear, layer, general).
+provenance(g15_source_clear, level, 1).
+provenance(g15_source_clear, support, 1).
+provenance(g15_source_clear, kept, 0).
+provenance(g15_source_clear, confidence_permille, 648).
+provenance(g15_source_clear, doubt, few_pours_depart).
 rule(g0_liquid_leaves_source, defeasible, liquid_leaves_source).
 learned(g0_liquid_leaves_source).
 provenance(g0_liquid_leaves_source, layer, general).
@@ -767,6 +797,26 @@ provenance(g16_liquid_enters_destination, confidence_permille, 648).
 provenance(g16_liquid_enters_destination, doubt, beside_interaction).
 provenance(g16_liquid_enters_destination, beside, pour_below_rim).
 provenance(g16_liquid_enters_destination, beside, pour_tilted_back).
+rule(g17_liquid_enters_destination, defeasible, liquid_enters_destination).
+body(g17_liquid_enters_destination, pour_centred).
+body(g17_liquid_enters_destination, pour_high).
+learned(g17_liquid_enters_destination).
+provenance(g17_liquid_enters_destination, layer, general).
+provenance(g17_liquid_enters_destination, level, 1).
+provenance(g17_liquid_enters_destination, support, 1).
+provenance(g17_liquid_enters_destination, kept, 0).
+provenance(g17_liquid_enters_destination, confidence_permille, 648).
+provenance(g17_liquid_enters_destination, doubt, few_pours_depart).
+rule(g18_liquid_enters_destination, defeasible, liquid_enters_destination).
+body(g18_liquid_enters_destination, pour_high).
+body(g18_liquid_enters_destination, retreat_lowering).
+learned(g18_liquid_enters_destination).
+provenance(g18_liquid_enters_destination, layer, general).
+provenance(g18_liquid_enters_destination, level, 1).
+provenance(g18_liquid_enters_destination, support, 1).
+provenance(g18_liquid_enters_destination, kept, 0).
+provenance(g18_liquid_enters_destination, confidence_permille, 648).
+provenance(g18_liquid_enters_destination, doubt, few_pours_depart).
 rule(g0_liquid_remains_in_destination, defeasible, liquid_remains_in_destination).
 learned(g0_liquid_remains_in_destination).
 provenance(g0_liquid_remains_in_destination, layer, general).
@@ -1141,10 +1191,31 @@ provenance(g25_no_spill, kept, 2).
 provenance(g25_no_spill, confidence_permille, 637).
 provenance(g25_no_spill, antecedent, a202).
 provenance(g25_no_spill, doubt, pours_contradict).
+rule(g26_no_spill, defeasible, no_spill).
+body(g26_no_spill, pour_centred).
+body(g26_no_spill, pour_high).
+learned(g26_no_spill).
+provenance(g26_no_spill, layer, general).
+provenance(g26_no_spill, level, 1).
+provenance(g26_no_spill, support, 1).
+provenance(g26_no_spill, kept, 0).
+provenance(g26_no_spill, confidence_permille, 648).
+provenance(g26_no_spill, doubt, few_pours_depart).
+rule(g27_no_spill, defeasible, no_spill).
+body(g27_no_spill, pour_high).
+body(g27_no_spill, retreat_lowering).
+learned(g27_no_spill).
+provenance(g27_no_spill, layer, general).
+provenance(g27_no_spill, level, 1).
+provenance(g27_no_spill, support, 1).
+provenance(g27_no_spill, kept, 0).
+provenance(g27_no_spill, confidence_permille, 648).
+provenance(g27_no_spill, doubt, few_pours_depart).
 sup(g10_destination_still_approach, g2_destination_still_approach).
 sup(g10_destination_still_approach, g3_destination_still_approach).
 sup(g10_destination_still_approach, g9_destination_still_approach).
 sup(g10_destination_still_retreat, g12_destination_still_retreat).
+sup(g10_destination_still_retreat, g13_destination_still_retreat).
 sup(g10_destination_still_retreat, g4_destination_still_retreat).
 sup(g10_destination_still_retreat, g5_destination_still_retreat).
 sup(g10_destination_still_retreat, g7_destination_still_retreat).
@@ -1161,6 +1232,7 @@ sup(g11_destination_still_approach, g3_destination_still_approach).
 sup(g11_destination_still_approach, g6_destination_still_approach).
 sup(g11_destination_still_approach, g9_destination_still_approach).
 sup(g11_destination_still_retreat, g12_destination_still_retreat).
+sup(g11_destination_still_retreat, g13_destination_still_retreat).
 sup(g11_destination_still_retreat, g4_destination_still_retreat).
 sup(g11_destination_still_retreat, g5_destination_still_retreat).
 sup(g11_destination_still_retreat, g7_destination_still_retreat).
@@ -1201,9 +1273,25 @@ sup(g15_liquid_enters_destination, g2_liquid_enters_destination).
 sup(g15_liquid_enters_destination, g7_liquid_enters_destination).
 sup(g15_no_spill, g1_no_spill).
 sup(g15_no_spill, g4_no_spill).
+sup(g15_source_clear, g2_source_clear).
+sup(g15_source_clear, g3_source_clear).
+sup(g15_source_clear, g4_source_clear).
+sup(g15_source_clear, g6_source_clear).
 sup(g16_no_spill, g1_no_spill).
 sup(g16_no_spill, g25_no_spill).
+sup(g17_liquid_enters_destination, g1_liquid_enters_destination).
+sup(g17_liquid_enters_destination, g2_liquid_enters_destination).
+sup(g17_liquid_enters_destination, g3_liquid_enters_destination).
+sup(g17_liquid_enters_destination, g4_liquid_enters_destination).
+sup(g17_liquid_enters_destination, g5_liquid_enters_destination).
 sup(g17_no_spill, g1_no_spill).
+sup(g18_liquid_enters_destination, g1_liquid_enters_destination).
+sup(g18_liquid_enters_destination, g2_liquid_enters_destination).
+sup(g18_liquid_enters_destination, g3_liquid_enters_destination).
+sup(g18_liquid_enters_destination, g4_liquid_enters_destination).
+sup(g18_liquid_enters_destination, g5_liquid_enters_destination).
+sup(g18_liquid_enters_destination, g6_liquid_enters_destination).
+sup(g18_liquid_enters_destination, g7_liquid_enters_destination).
 sup(g18_no_spill, g1_no_spill).
 sup(g19_no_spill, g1_no_spill).
 sup(g1_destination_still_approach, g2_destination_still_approach).
@@ -1240,6 +1328,12 @@ sup(g24_no_spill, g3_no_spill).
 sup(g24_no_spill, g4_no_spill).
 sup(g25_no_spill, g20_no_spill).
 sup(g25_no_spill, g5_no_spill).
+sup(g26_no_spill, g1_no_spill).
+sup(g26_no_spill, g25_no_spill).
+sup(g27_no_spill, g1_no_spill).
+sup(g27_no_spill, g25_no_spill).
+sup(g27_no_spill, g2_no_spill).
+sup(g27_no_spill, g3_no_spill).
 sup(g2_liquid_enters_destination, g10_liquid_enters_destination).
 sup(g2_liquid_enters_destination, g8_liquid_enters_destination).
 sup(g2_liquid_enters_destination, g9_liquid_enters_destination).
@@ -1279,6 +1373,7 @@ sup(g6_no_spill, g1_no_spill).
 sup(g6_no_spill, g2_no_spill).
 sup(g6_no_spill, g3_no_spill).
 sup(g6_no_spill, g4_no_spill).
+sup(g7_destination_still_approach, g13_destination_still_approach).
 sup(g7_destination_still_approach, g6_destination_still_approach).
 sup(g7_destination_still_approach, g9_destination_still_approach).
 sup(g7_destination_still_retreat, g1_destination_still_retreat).
@@ -1289,6 +1384,8 @@ sup(g7_liquid_remains_in_destination, g3_liquid_remains_in_destination).
 sup(g7_no_spill, g15_no_spill).
 sup(g7_no_spill, g19_no_spill).
 sup(g7_no_spill, g20_no_spill).
+sup(g7_no_spill, g26_no_spill).
+sup(g7_no_spill, g27_no_spill).
 sup(g7_no_spill, g5_no_spill).
 sup(g7_source_clear, g2_source_clear).
 sup(g7_source_clear, g3_source_clear).
@@ -1298,6 +1395,8 @@ sup(g8_destination_still_approach, g11_destination_still_approach).
 sup(g8_no_spill, g14_no_spill).
 sup(g8_no_spill, g18_no_spill).
 sup(g8_no_spill, g20_no_spill).
+sup(g8_no_spill, g26_no_spill).
+sup(g8_no_spill, g27_no_spill).
 sup(g8_no_spill, g5_no_spill).
 sup(g8_source_clear, g12_source_clear).
 sup(g8_source_clear, g2_source_clear).
