@@ -4,10 +4,16 @@ would say over its edge); too close, or too near, with no bowl said ("does
 the cup hit the bowl if it's too close") is close to it; right next to the
 bowl, or beside it, is refused (beside it, or near its rim?); the near
 side of the bowl is near its rim, and the far side is refused (the
-vocabulary's places lie on the side the source comes from)."""
+vocabulary's places lie on the side the source comes from). A little to
+one side ("off to one side a bit", "slightly to the side") is near the
+rim, as "a bit off the centre" is (words.py)."""
 from __future__ import annotations
 
 from pantarhei.bridge.reasoning.everyday import UNCLEAR
+
+#: A little to one side, the degree said first: "a little to the side" (not "... to the side of the bowl").
+A_BIT_SIDE = (r"re(side):\b(?:just |only )?(?:slightly|a (?:little |tiny )?bit|a little|a tad) (?:off )?to (?:one|the) side"
+              r"\b(?! of\b)")
 
 NEARNESS: tuple[tuple, ...] = (
     # right next to the bowl: beside it, or near its rim?

@@ -69,6 +69,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:stick|sticks|sticking|stuck|cling|clings|clinging|clung) to"
      r"(?!(?: [a-z]+){0,2}? (?:bowl|bowls|destination|target|rim|edge|top|sides?|walls?|brim|lip|bottom|surface|it|them)\b)"
      rf"(?= (?:the |a |an |its |my |your )?(?:[a-z]+ )?{CONTAINER}\b)", ("liquid_leaves_source",), True),
+    # stuck inside, no bowl named: kept in the source ("will the last bit stay stuck inside?")
+    (r"(?:(?:stay|stays|remain|remains|get|gets|be|is) )?stuck in(?:side)?(?: (?:the |a |my )?(?!bowl\b|destination\b)[a-z]+)?"
+     r"(?! (?:the |a |my )?(?:bowl|destination)\b)", ("liquid_leaves_source",), True),
     (r"(?:end|ends|ended|ending) up in(?:side)?", (*ALL_IN, "liquid_remains_in_destination"), False),
     # what stays in the bowl entered it: "remains" alone holds also when none enters
     (r"(?:stay|stays|remain|remains) (?:in )?there\b"

@@ -71,7 +71,7 @@ _REST = ("each other|one another|at all times|all the time|the whole time|at any
 #: the risk of spilling high"): the outcome's words, not the scene's ("some of it" is no
 #: some_liquid).
 _PART_OF = re.compile(r"\b(?:most|all|any|some|much|half|none|part|a lot|a bit|a little|little|"
-                      r"the rest|each) of\b|\b(?:the |a )?(?:chance|chances|probability|likelihood|"
+                      r"the rest|each|the last (?:bit|drops?|few drops|little bit)) of\b|\b(?:the |a )?(?:chance|chances|probability|likelihood|"
                       r"odds|risk)(?: of| that)?\b")
 #: Quantifiers that begin the subject of an outcome asked ("does much stay in", "will some
 #: spill"): the outcome's words, not an amount of liquid in the scene.

@@ -34,7 +34,7 @@ from pantarhei.bridge.reasoning.comparisons import COMPARATIVES as _COMPARATIVES
 from pantarhei.bridge.reasoning.contrasts import CONTRASTS
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.moves import MOVES
-from pantarhei.bridge.reasoning.nearness import NEARNESS
+from pantarhei.bridge.reasoning.nearness import A_BIT_SIDE as _A_BIT_SIDE, NEARNESS
 from pantarhei.bridge.reasoning.numerals import NumberWords
 from pantarhei.bridge.reasoning.properties import SURFACE_SAID, Levels, Surfaces, Values
 from pantarhei.bridge.reasoning.ramps import Ramps
@@ -274,8 +274,8 @@ PHRASES: tuple[tuple, ...] = (
     ("side", (r"re:\b(?:left|right)(?:[- ]hand)? side\b",)),
     ("offset sideways", ("offset to the side", "offset to one side")),
     ("sideways", ("lateral", "laterally", "sidewise")),
-    # a little to one side: near the rim, offset or from the side? (refused, as "a bit off" is)
-    (UNCLEAR, (r"re(side):\b(?:off )?to (?:one|the) side(?: ?,)? (?:just )?a (?:little |tiny )?bit\b",)),
+    ("near the rim", (r"re(side):\b(?:off )?to (?:one|the) side(?: ?,)? (?:just )?a (?:little |tiny )?bit\b", _A_BIT_SIDE),
+     "read as near the rim: a little off the middle, as \"a bit off the centre\""),
     ("side", ("off to one side", "off to the side", "to one side")),
     # how the source is tilted and moved
     ("upside down", ("inverted", "upturned", "turned over",
