@@ -20,6 +20,9 @@ _GLIDE = (r"(?:swing(?:s|ing)?|swung|swoop\w*|glid(?:e|es|ed|ing)|sweep(?:s|ing)
           r"|eas(?:e|es|ed|ing)|carr(?:y|ies|ied|ying))")
 
 MOVES: tuple[tuple, ...] = (
+    # on the way in or out: the move in or away ("much faster on the way out")
+    ("approach", (r"re(way):\bon (?:the|its|their|his|her|my) way (?:in|over|there)\b",)),
+    ("retreat", (r"re(way):\bon (?:the|its|their|his|her|my) way (?:out|back|away)\b",)),
     # the stages: the move into the pouring pose, the move out of it, the end pose
     # (brought back up: raised, or righted? a tilting verb rights it, "bring" says upright)
     ("end upright", (r"re:\b(?:tip|tips|tipped|tipping|tilt\w*|turn\w*|put\w*|set\w*|stand\w*)(?: it"
