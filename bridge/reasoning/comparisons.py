@@ -54,6 +54,9 @@ COMPARISONS: tuple[tuple, ...] = (
                rf"(?: as (?:{_AS_BEFORE}))?(?![^,;:.?!]*\bas\b)",), "read against the ordinary pour: each question is read alone")
       for said, value in (("much", "much"), ("high", "high"), ("heavy", "heavy"), ("fast|quick|quickly", "fast"),
                           ("slow|slowly", "slowly"), ("far", "far"), ("thick|sticky", "sticky"))),
+    # whether it matters ("less liquid = less spill?? or doesnt matter"): whether the outcome happens
+    ("hedge", (r"re(matter):\b(?:or )?(?:(?:does|do|would|will) (?:it |that )?)?(?:not )?(?:really )?matter\b",),
+     "ignored: whether it matters is whether the outcome happens with what is said"),
     # poured the same way, tipped to the same angle (as the scene compared with): the one said
     ("hedge", ("[in] the same way", "same way", "the same angle", "same angle", "the same tilt", "same tilt"),
      "ignored: each question is read alone, with nothing of the one before"),
@@ -91,7 +94,10 @@ COMPARISONS: tuple[tuple, ...] = (
           # tilted more than the ordinary pour's 100 to 140 degrees: upside down; less: slightly
           (r"tilt(?:s|ed|ing)? (?:(?:it|the \w+) )?more|tip(?:s|ped|ping)? (?:(?:it|the \w+) )?more|more tilt(?:ed)?",
            "tilted upside down", "", "more"),
-          (r"tilt(?:s|ed|ing)? (?:(?:it|the \w+) )?less|less tilt(?:ed)?", "slightly tilted", "", "less"))),
+          (r"tilt(?:s|ed|ing)? (?:(?:it|the \w+) )?less|less tilt(?:ed)?", "slightly tilted", "", "less"),
+          # less liquid than the ordinary pour's 40 to 140 particles: a little; more: very much
+          (r"(?:less|fewer) (?:liquid|particles?)", "little liquid", "", "less|fewer"),
+          (r"more (?:liquid|particles?)", "very much liquid", "", "more"))),
     # a scene compared with another said as "one" ("stay put better than a glass one", "spill more
     # than a half-full one"): the scene said first is read, the other one is not, said back
     ("hedge", (r"re(than):\b(?:(?:much |a (?:little |lot )?(?:bit )?)?(?:better|more|less|worse) )?than"

@@ -169,7 +169,7 @@ REFUSED = [
     'If I pour slowly from a low height, does the destination stay upright?',
     "don't pour from the middle",
     'never pour upside down',
-    'pour more liquid',
+    'pour more liquid than the bowl holds',
     'fill the bowl',
     'end with the bowl upside down',
     'pour with the cup level',
