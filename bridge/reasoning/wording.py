@@ -100,6 +100,8 @@ def normalised(text: str) -> str:
     return normalising(text)[0]
 
 
+#: The properties of a body a simile with "like" may liken: "heavy like molten lead".
+_PROPERTIES = "light|heavy|slippery|sticky|thick|thin|runny|bouncy|smooth|grippy|flimsy"
 #: The values a simile may liken: "light as a feather".
 _LIKENED = "light|heavy|slippery|sticky|thick|thin|runny|bouncy|slow|fast|quick|smooth|grippy|full|high|low"
 
@@ -126,6 +128,10 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     # the rim": a comparison)
     text = re.sub(rf"(?<!\bas )\b({_LIKENED}) as (?:a |an )?(?!before\b|usual\b|normal\b|last\b|ever\b|possible\b"
                   r"|you\b|it\b|i\b|we\b|the\b|that\b|this\b)[a-z]+\b",
+                  lambda m: said.setdefault(f"{m.group(0)}: read as {m.group(1)}") or m.group(1), text)
+    # a property likened with "like", its example ending the clause: "heavy like molten lead"
+    text = re.sub(rf"\b({_PROPERTIES}) like (?:a |an |some )?(?!(?:{_PRONOUNS}|the|that|this|it)\b)[a-z]+(?: [a-z]+)?"
+                  r"(?= *(?:[,.;:!?\u2013\u2014-]|$|and\b|but\b|or\b|does\b|will\b|would\b|is\b))",
                   lambda m: said.setdefault(f"{m.group(0)}: read as {m.group(1)}") or m.group(1), text)
     # "y/n" ending a note: whether it happens or not ("bowl slide y/n")
     text = re.sub(r" *\b(?:y/n|y or n)\b(?=[?.!]* *$)", lambda m: said.setdefault(f"{m.group(0).strip()}: read as or not")
