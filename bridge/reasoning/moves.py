@@ -20,6 +20,8 @@ _GLIDE = (r"(?:swing(?:s|ing)?|swung|swoop\w*|glid(?:e|es|ed|ing)|sweep(?:s|ing)
           r"|eas(?:e|es|ed|ing)|carr(?:y|ies|ied|ying))")
 
 MOVES: tuple[tuple, ...] = (
+    # where the pour itself starts is where it pours, not the start pose before the move in
+    ("pour", (r"re(starts|begins|happens|takes place):\bthe pour(?:ing)? (?:starts|begins|happens|takes place)(?= (?:at|from)\b)",)),
     # on the way in or out: the move in or away ("much faster on the way out")
     ("approach", (r"re(way):\bon (?:the|its|their|his|her|my) way (?:in|over|there)\b",)),
     ("retreat", (r"re(way):\bon (?:the|its|their|his|her|my) way (?:out|back|away)\b",)),

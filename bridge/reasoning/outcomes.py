@@ -63,6 +63,8 @@ _REST = ("each other|one another|at all times|all the time|the whole time|at any
          "ground|place|everywhere|anywhere|at|all|any|anything|it|its|liquid|water|bowl|cup|glass|"
          "destination|source|target|container|rim|edge|sides?|middle|centre|center|drop|drops|much|too|even|ever|really|very|"
          "up|down|off|away|again|then|across|along|around|against|between|"
+         # said to happen ("how much spillage occurs")
+         "occurs?|happens?|takes place|results|"
          # how much it happens ("does it shift a little"): the outcome's, not an amount of liquid
          "little|bit|lot|slightly|tiny|millimetre|millimeter|hair|smidge|inch|"
          # or more or less of it, against the ordinary pour ("does it spill more if tilted?")
