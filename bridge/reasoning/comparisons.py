@@ -17,6 +17,8 @@ an example ("a thicker liquid such as custard") is the value it names.
 """
 from __future__ import annotations
 
+from pantarhei.bridge.reasoning.outright import AGAINST
+
 #: Degree words before a comparative: "a bit lower".
 DEGREE = r"(?:just|only|slightly|barely|a (?:little |tiny )?bit|a little|a tad|somewhat)"
 #: Comparatives of the vocabulary's values, said of nothing they are measured from.
@@ -40,7 +42,7 @@ COMPARISONS: tuple[tuple, ...] = (
                rf"re( as ):\b(?:not|never) (?:(?:held|poured|tilted|moved|brought|tipped|quite|nearly|so|as) )*?as (?:{plain})"
                rf" (?:as {_AS_BEFORE}|hedge\b)") if plain else
        (rf"re({comparative}):\b(?:{DEGREE} |much |even |far |a lot )?(?:{comparative}) {_BEFORE}",),
-       "read against the ordinary pour: each question is read alone")
+       AGAINST)
       for comparative, value, plain in (
           ("higher", "high", "low|short"), ("lower", "low", "high"), ("slower", "slowly", "fast|quick|quickly"),
           ("faster|quicker", "fast", "slow|slowly"), ("heavier", "heavy", "light"), ("lighter", "light", "heavy"),
@@ -48,10 +50,10 @@ COMPARISONS: tuple[tuple, ...] = (
           ("runnier|thinner", "runny", "sticky|thick"))),
     ("slightly tilted", (rf"re( as ):\b(?:not|never) (?:tilt|tip)\w* (?:it |the \w+ )?as (?:far|much)"
                          rf" (?:as {_AS_BEFORE}|hedge\b)",
-                         rf"re(less tilted):\bless tilted {_BEFORE}"), "read against the ordinary pour: each question is read alone"),
+                         rf"re(less tilted):\bless tilted {_BEFORE}"), AGAINST),
     # twice as much, twice as high (as usual): read against the ordinary pour, its value
     *((value, (rf"re(twice|double|two times|three times):\b(?:twice|double|two times|three times) as (?:{said})"
-               rf"(?: as (?:{_AS_BEFORE}))?(?![^,;:.?!]*\bas\b)",), "read against the ordinary pour: each question is read alone")
+               rf"(?: as (?:{_AS_BEFORE}))?(?![^,;:.?!]*\bas\b)",), AGAINST)
       for said, value in (("much", "much"), ("high", "high"), ("heavy", "heavy"), ("fast|quick|quickly", "fast"),
                           ("slow|slowly", "slowly"), ("far", "far"), ("thick|sticky", "sticky"))),
     # whether it matters ("less liquid = less spill?? or doesnt matter"): whether the outcome happens
@@ -84,7 +86,7 @@ COMPARISONS: tuple[tuple, ...] = (
     # the ordinary pour, as against the usual one, the value that way (not after a number: "2 cm higher")
     *((value, (rf"re({said if cue is None else cue}):(?<!\d )(?<!cm )(?<!mm )(?<!inches )(?<!degrees )\b(?:{DEGREE} |much |even |far |a lot "
                rf"|way )?(?:{said})\b(?!(?: [a-z]+)? than\b)" + after,),
-       "read against the ordinary pour: each question is read alone, with nothing before it")
+       f"{AGAINST}, with nothing before it")
       for said, value, after, cue in (
           ("higher", "high", "", None), ("lower", "low", r"(?! (?:the|it|them|(?:the|a|an|my) \w+)\b)", None),
           ("slower", "slowly", "", None), ("faster|quicker", "fast", "", None), ("heavier", "heavy", "", None),

@@ -103,3 +103,8 @@ def opposite(negated: list[str], values: tuple[str, ...]) -> str | None:
     if len(negated) != 1 or len(values) != 3 or negated[0] == values[1]:
         return None
     return values[2] if negated[0] == values[0] else values[0]
+
+
+def or_list(names: list[str]) -> str:
+    """Names as a refusal lists them: "a, b or c"."""
+    return ", ".join(names[:-1]) + " or " + names[-1] if len(names) > 1 else names[0]

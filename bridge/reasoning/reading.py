@@ -47,8 +47,9 @@ from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.lexicon_cache import cached_lexicon
-from pantarhei.bridge.reasoning.negation import (NEGATION_STEMS, covered, opposite, ordinary_left, scope,
-                                                 scope_ends, still_between)
+from pantarhei.bridge.reasoning.negation import (NEGATION_STEMS, covered, opposite, or_list, ordinary_left,
+                                                 scope, scope_ends, still_between)
+from pantarhei.bridge.reasoning.outright import outright
 from pantarhei.bridge.reasoning.nouns import ARTICLES, BOWL, CONTEXT, OBJECT_STEMS, Nouns, roles
 from pantarhei.bridge.reasoning.outcomes import FOLLOWS, follows, hear
 from pantarhei.bridge.reasoning.quantities import read_numbers
@@ -216,6 +217,7 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
 
     out, spoken = [], []
     for dim, names in said.items():
+        names = outright(names, accepted, tokens, vocab)      # "lower than last time, 2 cm below the rim"
         if len(names) > 1:
             a, b = sorted(names)[:2]
             raise UserError(f"\"{question}\" says both {a} ({props[a].gloss}) and {b} "
@@ -241,7 +243,7 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
             out += [ordinary[0]] if ordinary[0] else []
             spoken.append(ordinary[1])
             continue
-        raise UserError(f"not {', '.join(names)} leaves {_or(others)}: say which one (or give "
+        raise UserError(f"not {', '.join(names)} leaves {or_list(others)}: say which one (or give "
                         f"--props P1,P2)" if others
                         else f"\"{question}\" excludes every value of {dim}")
     read_at = set().union(*(p for _, p in accepted))
@@ -395,6 +397,3 @@ def _agrees(name: str, first: int, last: int, noun: Nouns, lex: _Lexicon) -> boo
     return (which == "liquid" and name in lex.amounts and not noun.names_destination(at)
             and not noun.poured_into(at))
 
-
-def _or(names: list[str]) -> str:
-    return ", ".join(names[:-1]) + " or " + names[-1] if len(names) > 1 else names[0]

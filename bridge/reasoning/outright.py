@@ -1,0 +1,37 @@
+"""A value said against the ordinary pour ("lower than last time", "a bit
+lower": comparisons.py) says only which way from it; a value of the same
+dimension said outright beside it ("not as high as last time, just a bit
+lower than the rim": below the rim) says where, and is read in its place
+when it lies the same way from the ordinary pour. One the other way ("pour
+lower, 30 cm up") is left to be refused as two values."""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:              # (wording.py reads comparisons.py, which says back AGAINST)
+    from pantarhei.bridge.reasoning.wording import Token
+
+#: What comparisons.py says back of a value read against the ordinary pour.
+AGAINST = "read against the ordinary pour: each question is read alone"
+
+
+def outright(names: list[str], accepted: list[tuple[str, frozenset[int]]], tokens: list[Token],
+             vocab) -> list[str]:
+    """`names`, values said of one dimension, without those read against the
+    ordinary pour where one said outright lies the same way from it."""
+    against = {n for n, at in accepted if n in names and any(tokens[k].said_back.startswith(AGAINST) for k in at)}
+    said = [n for n in names if n not in against]
+    if not against or len(said) != 1 or not all(_way(n, vocab) == _way(said[0], vocab) != 0 for n in against):
+        return names
+    return said
+
+
+def _way(name: str, vocab) -> int:
+    """Which way the middle of the value `name` lies from the middle of the
+    ordinary pour's range: -1 below, 1 above, 0 at it or unknown."""
+    model = vocab.propositions[name].model
+    if model.kind != "uniform":
+        return 0
+    p = next(p for p in vocab.parameters if p.name == model.param)
+    middle, ordinary = model.low + model.high, p.prior_low + p.prior_high
+    return (middle > ordinary) - (middle < ordinary)
