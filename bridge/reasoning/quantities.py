@@ -19,6 +19,11 @@ ranges, in the ordinary pour's, as the ordinary pour: "a 600 g jug"); a
 number no range holds, or a measure no parameter takes ("pour for 3 seconds": pouring has
 no duration of its own), is refused naming the ranges there are.
 
+The most a number may be ("not tilted past 30 degrees", "no more than 60
+degrees") is read as the value nearest it of those it leaves (bounds.py);
+a range typed with both ends, three quarters of it in one value ("5 to 10
+cm"), as that value.
+
 A number keeps its sign (wording.py): "tilted at -10 degrees" is tilted
 back, "-3 cm above the rim" below it; a negative mass, time, count or
 amount is refused, as is a minus said with "below" ("-5 cm below the
