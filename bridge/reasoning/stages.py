@@ -5,7 +5,7 @@ words.py brings everyday phrases to them). A stage word speaks for its
 clause from there on, and for the words of its clause before it; a clause
 without one goes on in the stage before (pouring, at first), but one
 that begins by tilting after the start or the move in is the pour's
-("move in slowly, tilt it halfway"). A pose said
+("move in slowly, tilt it halfway", "come in low and just tilt it"). A pose said
 while moving in is the start pose, while moving away the end pose.
 "Leave it tilted" and "leave it there" end as the pour was, and "move
 in low" (a path in, no "from") pours as low as it came in, unless the
@@ -40,19 +40,32 @@ def stages(tokens: list[Token]) -> list[str]:
         at = clauses[clause]
         marks = [i for i in at if tokens[i].word in MARKER_STEMS]
         current = _next(tokens[marks[0]].word, stage) if marks else stage
-        first = next((tokens[i].word for i in at if tokens[i].word != "and"), "")
+        first = next((stem(tokens[i].raw.split()[0]) for i in at
+                      if tokens[i].word != "and" and tokens[i].word not in _PASSING), "")
         if not marks and stage in ("start", "approach") and first in _TILTING:
             current = "pour"
         marked = set(marks[1:])
         for i in at:
             if i in marked:
                 current = _next(tokens[i].word, current)
-            elif (current in ("start", "approach") and i > at[0] and tokens[i - 1].word == "and"
+            elif (current in ("start", "approach") and i > at[0] and _after_and(tokens, i, at[0])
                   and stem(tokens[i].raw.split()[0]) in _TILTING and not set(marks) & set(range(i, at[-1] + 1))):
                 current = "pour"        # "brought in slowly and turned upside down": the pour's tilt
             out.append(current)
         stage = current
     return out
+
+
+#: A word said in passing before a verb of tilting: "and just tip it".
+_PASSING = {"just"}
+
+
+def _after_and(tokens: list[Token], i: int, first: int) -> bool:
+    """Whether the word at `i` follows "and", words said in passing between."""
+    j = i - 1
+    while j > first and tokens[j].word in _PASSING:
+        j -= 1
+    return tokens[j].word == "and"
 
 
 def _next(word: str, stage: str) -> str:

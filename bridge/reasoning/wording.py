@@ -51,8 +51,10 @@ STAGE_WORDS = ("start", "pour", "end", "finally", "final", "approach", "retreat"
 #: down, said in its own stage ("pour low and bring it back up afterwards"), and a tilt
 #: ("come in low and tilt it halfway": stages.py's to place).
 _NEW_CLAUSE = (*STAGE_WORDS, "raise", "lower", "tilt", "tilts", "tilting", "tip", "tips")
-#: Words that may stand between such an "and" and its stage word: "and a slow retreat".
-_BEFORE_STAGE = {"a", "an", "the", "very", "fast", "quick", "slow", "slowly", "moderate", "gentle"}
+#: Words that may stand between such an "and" and its stage word: "and a slow retreat",
+#: and words said in passing: "hold it high and just tip it".
+_BEFORE_STAGE = {"a", "an", "the", "very", "fast", "quick", "slow", "slowly", "moderate", "gentle", "just",
+                 "simply"}
 
 
 def stem(w: str) -> str:
