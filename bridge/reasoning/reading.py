@@ -94,7 +94,7 @@ class _Lexicon:
 
 
 @lru_cache(maxsize=None)
-def _lexicon() -> _Lexicon:
+def lexicon() -> _Lexicon:
     return cached_lexicon(_built_lexicon, _Lexicon)         # kept between questions (lexicon_cache.py)
 
 
@@ -180,7 +180,7 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
     the words read as others said back (`typed`)."""
     vocab = load_vocabulary()
     props = vocab.propositions
-    lex = _lexicon()
+    lex = lexicon()
     text, named = names_written(text)
     text, unnamed = containers_named(text)          # "pour from a growler": a container
     typed += unnamed
