@@ -20,17 +20,16 @@ question in five steps:
    (nouns.py). A proposition's name said outright (`pour_to_side`) is read
    as it is. "leave it there" ends where the pour was, "leave it tilted"
    as tilted as it was.
-5. Negation ("not", "never", "no", "without", "don't", "instead of" ...)
-   covers the rest of its clause (negation.py): a proposition said there
-   is excluded, and its dimension is read as its other value when one is
-   left (or another value is said), or the question is refused naming the
-   values left. Two values of one dimension ("a light and heavy liquid")
-   are refused as contradictory, and so is a question with a word that
-   cannot be placed ("pour light": the light what?), naming the phrasings
-   that would be read where there are some ("pour slowly": "move in
-   slowly"). A refusal is a UserError: one line. A question of pouring, or
-   of an outcome, that names no proposition ("what happens if I pour?",
-   "does it splash?") reads as no propositions: the ordinary pour; a
+5. Negation ("not", "never", "no", "without", "don't", "instead of" ...) covers the rest
+   of its clause (negation.py): a proposition said there is excluded, and its dimension is
+   read as its other value when one is left (or another value is said), or the question is
+   refused naming the values left. Two values of one dimension ("a light and heavy
+   liquid") are refused as contradictory, as is a choice of two liquids read as different
+   values with no goal ("honey or water?", choices.py), and a question with a word that
+   cannot be placed ("pour light": the light what?), naming the phrasings that would be
+   read where there are some ("pour slowly": "move in slowly"). A refusal is a UserError:
+   one line. A question of pouring, or of an outcome, that names no proposition ("what
+   happens if I pour?", "does it splash?") reads as no propositions: the ordinary pour; a
    question that says nothing of a pour is refused.
 
 A word mistyped is read as the one word it is near (spelling.py: "hihg" is high) and said
@@ -46,6 +45,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.reasoning.choices import refuse_choice
 from pantarhei.bridge.reasoning.lexicon_cache import cached_lexicon
 from pantarhei.bridge.reasoning.negation import (NEGATION_STEMS, covered, opposite, or_list, ordinary_left,
                                                  scope, scope_ends, still_between)
@@ -162,6 +162,7 @@ def read_question(question: str) -> Reading:
     words meant (spelling.py), if it has any; refused again, the first
     refusal stands."""
     text, respelt = normalising(question)
+    refuse_choice(text)                     # "honey or water?": two questions (choices.py)
     try:
         return _read_text(question, text, respelt)
     except UserError:
