@@ -28,6 +28,7 @@ from pantarhei.bridge.reasoning.avoided import avoided
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.asides import restated
 from pantarhei.bridge.reasoning.earlier_pour import told
+from pantarhei.bridge.reasoning.little_vessels import refuse_little
 from pantarhei.bridge.reasoning.which_one import which_one
 from pantarhei.bridge.reasoning.words import rewrites
 from pantarhei.theory.lexicon import load_vocabulary
@@ -154,6 +155,7 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text, earlier = told(text)                         # "last time I poured from 20 cm, ...": not read
     text, avoiding = avoided(text)                     # "the bowl slides, what height stops that"
     text, which = which_one(text)                      # "a vs b - which one slides more": does it slide
+    refuse_little(text)                                # "a little jug": a size
     return text, (*said, *again, *earlier, *avoiding, *which)
 
 
