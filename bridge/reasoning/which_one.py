@@ -1,7 +1,8 @@
 """Which of two scenes set against each other an outcome happens to, or
 happens to more ("silicone bowl vs enamel bowl - which one slides more"):
 asked of the scene said first, the other being said back as not read
-(comparisons.py), as "does it slide". "Compare" before them is the frame
+(comparisons.py), as "does it slide"; "which" alone too, its verb inflected
+and said with how much ("which splashes less"). "Compare" before them is the frame
 ("compare: 30 cm vs 5 cm"), and the first named again by its number
 after them ("how much more spill at 30") is the one read, said back."""
 from __future__ import annotations
@@ -12,8 +13,10 @@ from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.set_against import refuse_unsayable
 
 _SET_AGAINST = re.compile(r"\b(?:vs|versus|compared (?:to|with))\b")
-_WHICH = re.compile(r"\bwhich (?:one|of them|of the two|bowl|cup)(?: of them)? (?:will |would |is going to )?"
-                    r"(?P<verb>[a-z]+?)(?P<ending>es|s)?\b(?P<how> (?:more|less|the most|the least|most|least|worse|better)\b)?")
+_WHICH = re.compile(r"\bwhich (?:(?:one|of them|of the two|bowl|cup)(?: of them)? (?:will |would |is going to )?"
+                    r"(?P<verb>[a-z]+?)(?P<ending>es|s)?\b(?P<how> (?:more|less|the most|the least|most|least|worse|better)\b)?"
+                    # "which" alone: its verb inflected and said with how much ("which splashes less")
+                    r"|(?P<verb2>[a-z]+?)(?P<ending2>es|s)\b(?P<how2> (?:more|less|the most|the least|most|least)\b))")
 
 
 _COMPARE = re.compile(r"^(?:let's |lets |please )?compar(?:e|ing)\b *:? *")
@@ -36,8 +39,8 @@ def which_one(text: str) -> tuple[str, tuple[str, ...]]:
     m = _WHICH.search(text, set_against.end()) if set_against else None
     if m is None:
         return text, said
-    verb = m.group("verb") + ("e" if m.group("ending") == "es" and not re.search(r"(?:sh|ch|ss|x)$", m.group("verb"))
-                              else "")
+    said_verb, ending = (m.group("verb"), m.group("ending")) if m.group("verb") else (m.group("verb2"), m.group("ending2"))
+    verb = said_verb + ("e" if ending == "es" and not re.search(r"(?:sh|ch|ss|x)$", said_verb) else "")
     return (text[:m.start()] + f"does it {verb}" + text[m.end():],
             (*said, f"{m.group(0)}: read as does it {verb}, of the one said first"))
 
