@@ -197,6 +197,9 @@ _WANTING_CUED = (
     # "I want every drop in the bowl": so that it goes in
     (Cued(r"(?:^|\b(?:i|we) )(?:want|need|would like) (every drop|all of it|it all|everything|all (?:of )?the \w+) (?=(?:in|into|inside)\b)",
           ("want", "need", "like")), r"so that \1 stays "),
+    # "I want to get all of the syrup out of the cup and into the bowl": so that the cup empties and it goes in
+    (Cued(r"\b(?:i|we) (?:want|need|would like) to get (it all|all of it|everything|all (?:of )?the [a-z]+) out of"
+          r" ((?:the|my|a) [a-z]+) and (?=(?:in|into|inside)\b)", (" get ",)), r"so that \2 empties and so that \1 goes "),
     # "... and none on the table", wanted beside another: so that none goes on it
     (Cued(r"\b((?:want|need|like|have|so that)\b.*\b(?:and|with)) (none|nothing)(?: of it)? (?=(?:on|onto|all over) )",
           (" and none", " and nothing", " with nothing", " with none")), r"\1 so that \2 goes "),

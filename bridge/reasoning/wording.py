@@ -151,6 +151,9 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text = re.sub(r"\b(p|pr|prob)\s*\((?=[^()]*\))",
                   lambda m: said.setdefault(f"{m.group(1)}: read as the chance of") or "the chance of (",
                   text)
+    # every drop of a liquid is all of it: "get every drop of the syrup into the bowl"
+    text = re.sub(r"\bevery (?:last |single )?drop of (?:the |my |that |this )?",
+                  lambda m: said.setdefault(f"{m.group(0).strip()}: read as all of the") or "all of the ", text)
     text, again = restated(_normalised(text))         # "-2 cm (i.e. below the rim)"
     text, earlier = told(text)                         # "last time I poured from 20 cm, ...": not read
     text, avoiding = avoided(text)                     # "the bowl slides, what height stops that"
