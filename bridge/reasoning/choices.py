@@ -31,8 +31,8 @@ def refuse_choice(text: str) -> None:
     """UserError where `text` (normalised) chooses between two liquids read as different values, with no goal."""
     pattern, value = _liquids()
     m = pattern.search(text)
-    if m is None or value[m.group(1)] == value[m.group(2)]:
-        return
+    if m is None or sections()[value[m.group(1)]].words == sections()[value[m.group(2)]].words:
+        return                                  # "water or milk": both read as an ordinary liquid
     from pantarhei.bridge.reasoning.outcomes import hear       # here: outcomes reads words with wording.py
     if hear(text).goals:
         return
