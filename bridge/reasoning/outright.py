@@ -6,16 +6,13 @@ when it lies the same way from the ordinary pour. One the other way ("pour
 lower, 30 cm up") is left to be refused as two values."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
-if TYPE_CHECKING:              # (wording.py reads comparisons.py, which says back AGAINST)
-    from pantarhei.bridge.reasoning.wording import Token
+from typing import Any
 
 #: What comparisons.py says back of a value read against the ordinary pour.
 AGAINST = "read against the ordinary pour: each question is read alone"
 
 
-def outright(names: list[str], accepted: list[tuple[str, frozenset[int]]], tokens: list[Token],
+def outright(names: list[str], accepted: list[tuple[str, frozenset[int]]], tokens: list[Any],
              vocab) -> list[str]:
     """`names`, values said of one dimension, without those read against the
     ordinary pour where one said outright lies the same way from it."""

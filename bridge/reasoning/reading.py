@@ -3,9 +3,8 @@
 `read_question("will it spill if I pour milk from the side?")` hears the
 question in five steps:
 
-1. A clause that asks about the outcome ("will it spill?") or says a goal
-   ("without spilling") is heard apart (outcomes.py): the expectations it
-   asks about, or wants, and the rest is the scene.
+1. A clause that asks about the outcome ("will it spill?") or says a goal ("without
+   spilling") is heard apart (outcomes.py): what it asks or wants; the rest is the scene.
 2. Everyday phrases become the vocabulary's words (words.py, everyday.txt,
    properties.py: "a full cup", milk an ordinary liquid, plastic ignored,
    "low friction" slippery), and a number with its unit, its sign kept,
@@ -15,19 +14,18 @@ question in five steps:
    or of its name, without its stage or body ("far" for `pour_far_away`,
    "tilted halfway" or "half tilted" for `pour_half_tilted`), found close
    together in one clause, in the stage of the proposition; the readings
-   with the most words first, each word read once. A word said of the
-   bodies ("light", "slippery") belongs to the noun it qualifies
-   (nouns.py). A proposition's name said outright (`pour_to_side`) is read
-   as it is. "leave it there" ends where the pour was, "leave it tilted"
-   as tilted as it was.
+   with the most words first, each word read once. A word said of the bodies
+   ("light", "slippery") belongs to the noun it qualifies (nouns.py). A name said
+   outright (`pour_to_side`) is read as it is; "leave it there" ends where the pour
+   was, "leave it tilted" as tilted as it was.
 5. Negation ("not", "never", "no", "without", "don't", "instead of" ...) covers the rest
    of its clause (negation.py): a proposition said there is excluded, and its dimension is
    read as its other value when one is left (or another value is said), or the question is
    refused naming the values left. Two values of one dimension ("a light and heavy
    liquid") are refused as contradictory, as is a choice of two liquids read as different
-   values with no goal ("honey or water?", choices.py), and a question with a word that
-   cannot be placed ("pour light": the light what?), naming the phrasings that would be
-   read where there are some ("pour slowly": "move in slowly"). A refusal is a UserError:
+   values with no goal ("honey or water?", choices.py), a scene set against the first that
+   the vocabulary cannot say (set_against.py), and a question with a word that cannot be
+   placed ("pour light": the light what?), naming the phrasings that would be read where there are some ("pour slowly": "move in slowly"). A refusal is a UserError:
    one line. A question of pouring, or of an outcome, that names no proposition ("what
    happens if I pour?", "does it splash?") reads as no propositions: the ordinary pour; a
    question that says nothing of a pour is refused.
@@ -46,6 +44,7 @@ from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.choices import refuse_choice
+from pantarhei.bridge.reasoning.set_against import refuse_unsayable
 from pantarhei.bridge.reasoning.lexicon_cache import cached_lexicon
 from pantarhei.bridge.reasoning.negation import (NEGATION_STEMS, covered, opposite, or_list, ordinary_left,
                                                  scope, scope_ends, still_between)
@@ -163,6 +162,7 @@ def read_question(question: str) -> Reading:
     refusal stands."""
     text, respelt = normalising(question)
     refuse_choice(text)                     # "honey or water?": two questions (choices.py)
+    refuse_unsayable(text, lexicon().known)  # "60 degrees vs 90 with 200 ml" (set_against.py)
     try:
         return _read_text(question, text, respelt)
     except UserError:

@@ -7,8 +7,14 @@ alone; otherwise the answer would stand for a question that was not asked."""
 from __future__ import annotations
 
 import re
+from typing import Collection
 
 from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.reasoning.numerals import NUMBER_WORDS
+from pantarhei.bridge.reasoning.outcomes import hear
+from pantarhei.bridge.reasoning.spelling import corrected
+from pantarhei.bridge.reasoning.suggestions import names_part
+from pantarhei.bridge.reasoning.wording import tokens
 
 _OTHER = re.compile(r"\b(?:vs|versus|compared (?:to|with)|as opposed to|in comparison (?:to|with))\b\.?"
                     r" (?P<other>[^,;:.!?]+?)(?= *(?:[,;:.!?]| - )|$)")
@@ -17,9 +23,10 @@ _UNIT = re.compile(r"mm|cm|m|ft|inch\w*|feet|foot|deg\w*|s|secs?|second\w*|ms|g|
 _VOLUME = re.compile(r"(?<![\w.])\d+(?:\.\d+)? ?(?:ml|millilit\w*|cl|dl|l|lit(?:re|er)s?|oz|ounces?)\b")
 
 
-def refuse_unsayable(text: str) -> None:
+def refuse_unsayable(text: str, known: Collection[str]) -> None:
     """UserError where the scene `text` (normalised) sets its own against
-    holds a volume or a word the reader cannot place."""
+    holds a volume or a word the reader cannot place (none of `known`,
+    the reader's lexicon's words)."""
     m = _OTHER.search(text)
     if m is None:
         return
@@ -28,16 +35,9 @@ def refuse_unsayable(text: str) -> None:
         raise UserError(f"\"{volume.group(0)}\" of liquid, in the scene set against the first (\"{m.group(0)}\"): "
                         "the vocabulary counts the liquid in particles; say \"a little liquid\", \"some liquid\", "
                         "\"much liquid\" or \"a full cup\"")
-    # imported here: the reader's lexicon is built from the rewrites that import this module's caller
-    from pantarhei.bridge.reasoning.numerals import NUMBER_WORDS
-    from pantarhei.bridge.reasoning.outcomes import hear
-    from pantarhei.bridge.reasoning.reading import lexicon
-    from pantarhei.bridge.reasoning.spelling import corrected
-    from pantarhei.bridge.reasoning.suggestions import names_part
-    from pantarhei.bridge.reasoning.wording import tokens
     heard = _OTHER.search(hear(corrected(text)[0]).scene)     # what it asks is the first scene's too
     said = tokens(heard.group("other")) if heard else []
-    known = lexicon().known | set(NUMBER_WORDS) | {"hundred", "thousand", "same", "outcome"}
+    known = set(known) | set(NUMBER_WORDS) | {"hundred", "thousand", "same", "outcome"}
     unknown = [t.raw for i, t in enumerate(said) if t.word not in known and t.raw not in known and not re.match(r"-?\d", t.word)
                and not _UNIT.fullmatch(t.raw) and not names_part(said, i)]
     if unknown:

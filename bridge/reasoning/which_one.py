@@ -10,7 +10,6 @@ from __future__ import annotations
 import re
 
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.reasoning.set_against import refuse_unsayable
 
 _SET_AGAINST = re.compile(r"\b(?:vs|versus|compared (?:to|with))\b")
 _WHICH = re.compile(r"\bwhich (?:(?:one|of them|of the two|bowl|cup)(?: of them)? (?:will |would |is going to )?"
@@ -26,7 +25,6 @@ _NUMBER = r"-?\d+(?:\.\d+)?"
 def which_one(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with "which one <outcome> more", after two scenes
     set against each other, read as "does it <outcome>", and what is said back."""
-    refuse_unsayable(text)
     set_against = _SET_AGAINST.search(text)
     said: tuple[str, ...] = ()
     if set_against and (frame := _COMPARE.search(text)):
