@@ -45,7 +45,7 @@ from pantarhei.theory.lexicon import load_vocabulary
 
 from pantarhei.bridge.learning.askable import askable_bodies, suspect, together
 from pantarhei.bridge.learning.general_rules import GeneralRule, deciding
-from pantarhei.bridge.learning.meaning import held_in_support
+from pantarhei.bridge.learning.meaning import held_in_support, pooled
 
 
 def doubts(rules: list[GeneralRule], k: int, meaning: Meaning, P: np.ndarray,
@@ -166,8 +166,7 @@ def few_pours(rules: list[GeneralRule], pairs: Sequence[tuple[str, ...]], held: 
     out: list[GeneralRule] = []
     for (pair, h, c), m in zip(todo, meaning([t[0] for t in todo])[:, k] if todo else []):
         if np.isfinite(m) and _sure(rules + out, pair, s) is not None:
-            pooled = (h + s.model_pours * m) / (c + s.model_pours)
-            out.append(added(pair, _maybe(pooled, s), rules, out, "few_pours_depart"))
+            out.append(added(pair, _maybe(pooled(h, c, m, s.model_pours), s), rules, out, "few_pours_depart"))
     return out
 
 

@@ -40,7 +40,7 @@ from pantarhei.bridge.verdicts import verdicts
 from pantarhei.bridge.learning.askable import askable_bodies, together
 from pantarhei.bridge.learning.doubts import doubts, exceptions, level, neighbours, few_pours, thinly_poured
 from pantarhei.bridge.learning.general_rules import General, GeneralRule, Sup, verdict
-from pantarhei.bridge.learning.meaning import Meaning, held_in_support
+from pantarhei.bridge.learning.meaning import Meaning, held_in_support, pooled
 
 
 def _tuned(key: str, kind: type = float):
@@ -166,7 +166,7 @@ def _with_own_pours(T: np.ndarray, bodies: Sequence[tuple[str, ...]], held: np.n
     T = T.copy()
     for i, b in enumerate(bodies):
         if b and n[i]:
-            T[i] = (held[i] + k * T[i]) / (n[i] + k)
+            T[i] = pooled(held[i], n[i], T[i], k)
     return T
 
 

@@ -51,6 +51,13 @@ def held_in_support(P: np.ndarray, Y: np.ndarray, body: Sequence[str]) -> tuple[
     return Y[m].sum(axis=0), int(m.sum())
 
 
+def pooled(held, n, model, model_pours: float):
+    """A body's likelihood with its own pours counted beside the model's
+    estimate (`model`), which counts as `model_pours` pours: `held` of
+    its `n` pours keep the expectation (numbers or arrays of them)."""
+    return (held + model_pours * model) / (n + model_pours)
+
+
 class Meaning:
     """P(e | B) for every expectation e: the model of the pours (one
     gradient-boosted classifier per expectation, on the 30 parameters),
