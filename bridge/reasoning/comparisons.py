@@ -19,6 +19,11 @@ from __future__ import annotations
 
 from pantarhei.bridge.reasoning.outright import AGAINST
 
+#: The words that set another scene against the one asked about, which is not read (the
+#: hedges below) and must say nothing the vocabulary cannot (set_against.py): "vs" ...
+VERSUS = r"vs|versus"
+#: ... and "compared to" and its like.
+COMPARED = r"compared (?:to|with)|as opposed to|in comparison (?:to|with)"
 #: Degree words before a comparative: "a bit lower".
 DEGREE = r"(?:just|only|slightly|barely|a (?:little |tiny )?bit|a little|a tad|somewhat)"
 #: Comparatives of the vocabulary's values, said of nothing they are measured from.
@@ -64,12 +69,12 @@ COMPARISONS: tuple[tuple, ...] = (
      "ignored: each question is read alone, with nothing of the one before"),
     # a scene compared with ("compared to a full jug, would a nearly empty one ...", "... spill less
     # compared with pouring from high up"): not read, up to where its clause ends
-    ("hedge", (r"re(compared|as opposed|in comparison):\b(?:compared (?:to|with)|as opposed to|in comparison (?:to|with))"
+    ("hedge", (rf"re(compared|as opposed|in comparison):\b(?:{COMPARED})"
                r" [^,;:.!?]+?(?= [,;:.!?]|$)",),
      "read as nothing: the scene compared with is not read, the answer is for the one said"),
     # a scene set against another with "vs" ("silicone bowl vs enamel bowl", "at 30 cm vs 5 cm"):
     # the other not read, up to where its clause ends
-    ("hedge", (r"re(vs|versus):\b(?:vs|versus)\b\.? [^,;:.!?]+?(?= *(?:[,;:.!?]| - )|$)",),
+    ("hedge", (rf"re(vs|versus):\b(?:{VERSUS})\b" r"\.? [^,;:.!?]+?(?= *(?:[,;:.!?]| - )|$)",),
      "read as nothing: the scene compared with is not read, the answer is for the one said first"),
     # not too high (or low): the height next to it toward the middle of the scale, as "neither too
     # high nor too low" is (words.py); not too fast or heavy is already the ordinary pour's

@@ -10,13 +10,14 @@ import re
 from typing import Collection
 
 from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.reasoning.comparisons import COMPARED, VERSUS
 from pantarhei.bridge.reasoning.numerals import NUMBER_WORDS
 from pantarhei.bridge.reasoning.outcomes import hear
 from pantarhei.bridge.reasoning.spelling import corrected
 from pantarhei.bridge.reasoning.suggestions import names_part
 from pantarhei.bridge.reasoning.wording import tokens
 
-_OTHER = re.compile(r"\b(?:vs|versus|compared (?:to|with)|as opposed to|in comparison (?:to|with))\b\.?"
+_OTHER = re.compile(rf"\b(?:{VERSUS}|{COMPARED})\b\.?"
                     r" (?P<other>[^,;:.!?]+?)(?= *(?:[,;:.!?]| - )|$)")
 #: A unit a number is said in, which the reader reads with the number before it.
 _UNIT = re.compile(r"mm|cm|m|ft|inch\w*|feet|foot|deg\w*|s|secs?|second\w*|ms|g|kg|gram\w*|percent")
