@@ -172,12 +172,12 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
 
 @lru_cache(maxsize=None)
 def _filling() -> Cued:
-    """Filling the bowl, wanted: "I'd like to fill the bowl", "have the bowl end up full"
+    """Filling the bowl, wanted: "I'd like to fill the bowl", "goal: fill the bowl", "have the bowl end up full"
     (so that it all ends up in it: it goes in and stays); not how full ("fill the bowl
     halfway"), nor the source filled ("filling the cup to the top": a full source)."""
     bowl = rf"((?:the|a|an|my|this|that|our|your) (?:[a-z]+ )?(?:{destinations()}))"
-    return Cued(rf"\b(?:i|we) (?:would like|like|want|need|wish|am trying|are trying|hope|aim|plan|have|had)"
-                rf" to fill (?:up )?{bowl}(?: up)?(?: (?:right |all the way )?to the (?:top|brim))?(?! (?:half|halfway|about|around|a quarter|a third|to (?:half|a |\d)|\d))\b"
+    return Cued(rf"(?:\b(?:i|we) (?:would like|like|want|need|wish|am trying|are trying|hope|aim|plan|have|had)"
+                rf"|\b(?:goal|aim|objective|task|target)s?(?: is)?:?)(?: to)? fill (?:up )?{bowl}(?: up)?(?: (?:right |all the way )?to the (?:top|brim))?(?! (?:half|halfway|about|around|a quarter|a third|to (?:half|a |\d)|\d))\b"
                 rf"|\b(?:i|we) (?:would |want to |need to )?have {bowl} (?:end up |be )?(?:full|filled(?: up)?)\b",
                 ("fill", "full"))
 
