@@ -93,7 +93,7 @@ MOVES: tuple[tuple, ...] = (
                  r"re:\bmov(?:e|es|ed|ing) (?:it|the \w+|them) (?:away|back|out)\b(?! from)",
                  rf"re:\b{_GLIDE}(?: it| the \w+)? (?:away|back|out)\b(?! from| of)",
                  "after pour", "after the pour", "afterwards", "move away", "pull away", "pull back",
-                 "back off", "back away", "withdraw")),
+                 "back off", "back away", "withdraw", "retract")),
     ("start", ("begin", "at first", "at the start", "initially")),
     # a pose named by its stage, as a lab note lists them: "initial pose: 20 cm to the side"
     ("start", (r"re:\b(?:initial|starting|start) (?:pose|position|configuration|state)\b",

@@ -20,7 +20,8 @@ what `ask` says back of it ("milk: read as an ordinary liquid ...").
 The phrases of the stages and the moves between them ("put it back
 upright", "pull it out fast") are moves.py's, a comparison with an
 earlier pour comparisons.py's, a speed said in other words speeds.py's,
-how near the bowl the source is nearness.py's, each applied at its place
+how near the bowl the source is nearness.py's, where it is from the middle
+off_centre.py's, each applied at its place
 in PHRASES.
 """
 from __future__ import annotations
@@ -36,6 +37,7 @@ from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.moves import MOVES
 from pantarhei.bridge.reasoning.nearness import A_BIT_SIDE as _A_BIT_SIDE, NEARNESS
 from pantarhei.bridge.reasoning.numerals import NumberWords
+from pantarhei.bridge.reasoning.off_centre import LENGTHS as _LENGTHS, OFF_CENTRE
 from pantarhei.bridge.reasoning.properties import SURFACE_SAID, Levels, Surfaces, Values
 from pantarhei.bridge.reasoning.ramps import Ramps
 from pantarhei.bridge.reasoning.speeds import SPEEDS
@@ -48,9 +50,6 @@ _INTENSIFIED = ("high|low|fast|quick|quickly|slow|slowly|heavy|light|sticky|runn
 #: A reference point a comparison may be made to: the destination's rim.
 _RIM = (r"(?:the )?(?:destination |bowl )?(?:rim|edge|lip|brim|top)\b(?: of (?:the |a )?"
         r"(?:destination|bowl)\b)?")
-#: Units of length, as a question writes them after a number.
-_LENGTHS = ("mm", "cm", "m", "inch", "inches", "foot", "feet", "ft", "metre", "metres", "meter",
-            "meters", "centimetre", "centimetres", "centimeter", "centimeters")
 
 PHRASES: tuple[tuple, ...] = (
     ("hedge", ("how much", "how many",    # asks, does not say: "how much liquid spills"
@@ -195,13 +194,7 @@ PHRASES: tuple[tuple, ...] = (
                r"re:(?<!after )(?<!before )\bpour(?:s|ed|ing)?(?: (?!(?:then|and|move|moving|bring|"
                r"approach|retreat|in|away|out|before|after|lift|lower|raise|pose|position)\b)[a-z]+){1,3}"
                r" (?:slow(?:ly|er)?|fast(?:er)?|quick(?:ly|er)?|gently|carefully|rapidly)\b")),
-    # a side of the middle is offset sideways, its side unread ("a bit to the left of centre"); a
-    # length to a side of it is refused, as "5 cm to the left" is: its side is the number's sign
-    (UNCLEAR, (rf"re(left|right):(?<![\w.-])-?\d+(?:\.\d+)? (?:{'|'.join(_LENGTHS)}) (?:to )?(?:the )?(?:left|right) (?:of|from)"
-               r" (?:the )?(?:destination |bowl )?(?:centre|center|middle)\b",)),
-    ("offset sideways", (r"re:\b(?:(?:just|slightly|a (?:little |tiny )?bit|a little|a tad|off) )?(?:to )?(?:the )?"
-                         r"(?:left|right) (?:of|from) (?:the )?(?:destination |bowl )?(?:centre|center|middle)\b",),
-     "read as offset sideways: the vocabulary's offset names no side"),
+    *OFF_CENTRE,              # a side of the middle, a length off it or toward the rim (off_centre.py)
     # not over the bowl: over neither its middle nor its rim (beside it, or far from it?)
     ("centred near rim", (r"re:(?<=\bnot )(?:(?:directly|right|quite|held|hold) )?(?:over|above) (?:the )?"
                           r"(?:destination|bowl)\b",)),

@@ -1,0 +1,38 @@
+"""Where the source is said from the bowl's middle, part of words.py's
+PHRASES: a length off the centre ("3 cm off-center", "4 cm off-centre
+toward the bowl edge") is the source's distance from the bowl's axis, as
+"3 cm from the centre" is, read by the range that holds it, never a
+height; so is an offset said toward the rim, the edge or the robot the
+source comes from ("offset 3 cm from bowl center toward the rim", "offset
+of 1.5 inches toward the robot"): that way lies the distance from the
+axis, not the sideways offset. A side of the middle is offset sideways,
+its side unread ("a bit to the left of centre"); a length to a side of it
+is refused, as "5 cm to the left" is: its side is the number's sign.
+"Off-centre" with no length says no distance ("how far?", words.py)."""
+from __future__ import annotations
+
+from pantarhei.bridge.reasoning.everyday import UNCLEAR
+
+#: Units of length, as a question writes them after a number.
+LENGTHS = ("mm", "cm", "m", "inch", "inches", "foot", "feet", "ft", "metre", "metres", "meter",
+           "meters", "centimetre", "centimetres", "centimeter", "centimeters")
+#: Right after a number and its unit of length.
+_AFTER_LENGTH = "(?:" + "|".join(rf"(?<=\d {u} )" for u in LENGTHS) + ")"
+#: The way from the middle toward the source: the rim or edge, or the robot it comes from.
+_TOWARD = (r"toward(?:s)? (?:the )?(?:destination |bowl )?(?:rim|edge|lip|brim|robot|arm|gripper|source"
+           r"|side it comes from)\b")
+_CENTRE = r"(?:the )?(?:destination |bowl )?(?:centre|center|middle)\b"
+_SAID = "read as the source's distance from the bowl's axis (the way to the rim), not a sideways offset"
+
+OFF_CENTRE: tuple[tuple, ...] = (
+    (UNCLEAR, (rf"re(left|right):(?<![\w.-])-?\d+(?:\.\d+)? (?:{'|'.join(LENGTHS)}) (?:to )?(?:the )?(?:left|right)"
+               rf" (?:of|from) {_CENTRE}",)),
+    ("offset sideways", (r"re:\b(?:(?:just|slightly|a (?:little |tiny )?bit|a little|a tad|off) )?(?:to )?(?:the )?"
+                         rf"(?:left|right) (?:of|from) {_CENTRE}",),
+     "read as offset sideways: the vocabulary's offset names no side"),
+    # an offset toward the rim or the robot: the distance from the axis, its number kept
+    ("hedge", (r"re(offset):\boffset(?= (?:of |by )?(?:about |around |roughly )?-?\d+(?:\.\d+)? (?:"
+               + "|".join(LENGTHS) + rf") (?:(?:from|off) {_CENTRE} )?{_TOWARD})",), _SAID),
+    ("axis", (rf"re(cent|toward):{_AFTER_LENGTH}(?:(?:off|from|away from) {_CENTRE} ?)?(?:{_TOWARD})",
+              rf"re(cent):{_AFTER_LENGTH}off {_CENTRE}d?"), _SAID),
+)
