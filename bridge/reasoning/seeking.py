@@ -57,10 +57,12 @@ _ASKING_SOURCE = (
     rf"(?: (?:away|in|out|over|from|into))?(?=[ ?.!,]|$)"
     # where it should be: "where should the spout be", "where should I hold the jug"
     rf"|\bwhere (?:should|do|can|must|would|could|shall) (?:{_WHO}|the \w+) (?:be|{_ACT}{_WHAT})(?=[ ?.!,]|$)"
+    # whether a value is there that reaches a goal: "is there any height where nothing splashes"
+    rf"|\bis there (?:any|an?|some|one) {_VALUE}(?: to {_ACT}{_WHAT})?(?= |$)"
     # what a body needs: "what friction does it need", "what weight would the bowl need"
     rf"|\bwhat (?:{_VALUE}|friction|weight|mass|bounciness) (?:does|do|would|should|will) (?:it|they|the \w+) need(?=[ ?.!,]|$)"
-    # what to avoid: "what should I avoid"
-    rf"|\bwhat (?:should|must|do|would|can) {_WHO} (?:need to |have to )?avoid(?: doing)?(?=[ ?.!,]|$)"
+    # what to avoid: "what should I avoid", "what should I not do"
+    rf"|\bwhat (?:should|must|do|would|can) {_WHO} (?:need to |have to )?(?:avoid(?: doing)?|not do|never do)(?=[ ?.!,]|$)"
     # what to change or do: "what do I need to change", "what should we adjust"
     rf"|\bwhat (?:do|should|must|would|can) {_WHO} (?:need to |have to )?(?:change|adjust|alter|do differently)(?=[ ?.!,]|$)"
     # a choice of two speeds, noted: "slow approach or fast?"
@@ -117,9 +119,16 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     # "I'd like to empty the whole mug": so that it empties
     (r"\b(?:i|we) (?:want|need|would like|wish|am trying|are trying) to (?:empty|drain) (?:out )?(?:the whole|all of the"
      r"|all the|the entire|the) ([a-z]+)\b", r"so that the \1 empties"),
+    # a value there that reaches a goal: "is there any height where the water never splashes" (so that it does not)
+    (rf"\b(is there (?:any|an?|some|one) {_VALUE}) (?:where|at which|for which|with which|in which)"
+     r" (?=(?:it|they|the [a-z]+|nothing|none|no [a-z]+) )", r"\1 so that "),
     # "avoids the cup hitting the bowl", "prevent the bowl sliding", "stop the mug clinking"
     (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|stop|stops|stopping) (it|them|the [a-z]+)"
      r" (?=[a-z]+ing\b)", r"so that \1 does not "),
+    # a goal said with "for", as learners of English say it: "near or far for not make mess", "for no spilling"
+    (r"\bfor (?:not|never) (?:make|making|let|letting) (it|them|the [a-z]+) (?=[a-z]+)", r"so that \1 does not "),
+    (r"\bfor (?:not|never|no) (?=(?:make|making|spill|splash|drip|tip|slid|mov|hit|touch|overflow|toppl)[a-z]*\b)",
+     "so that it does not "),
     # "to avoid spilling", "prevent splashing", "minimise dripping"
     (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|minimi[sz]e|minimi[sz]ing|reduce|reducing)"
      r" (?=(?:any )?[a-z]+ing\b)", "so that it does not "),
@@ -252,13 +261,15 @@ def _value_asked(m: re.Match) -> tuple[int, int]:
 
 
 #: Whether a scene said reaches a goal said: "is pouring from 20 cm ok?", "is that a problem?",
-#: "is a 100 degree tilt enough?", "does a 90 degree tilt do that?", "is that possible?".
+#: "is a 100 degree tilt enough?", "does a 90 degree tilt do that?", "is that possible?", "is there
+#: any height where it never splashes?".
 _REACHES = Cued(r"\b(?:is|would|will)(?: (?:that|this|it|[a-z]+ing\b[a-z0-9 ]{0,30}?|(?:a|an|the) [a-z0-9 ]{1,30}?))?"
                 r" (?:be )?(?:ok|okay|fine|alright|all right|a problem|an issue|enough|possible|doable|feasible"
                 r"|achievable)(?= *[?.!]* *$)|\b(?:does|would|will|can|could)(?: (?:a|an|the|that|this) [a-z0-9 ]{1,30}?)?"
                 r" (?:do (?:that|it|this|the trick)|work|achieve (?:that|it|this))(?= *[?.!]* *$)"
-                r"|(?<=[,:;] )(?:doable|possible|feasible|achievable|ok|okay)(?= *[?.!]* *$)",   # "... - doable?"
-                ("ok", "fine", "alright", "all right", "problem", "issue", "enough", "possible", "doable", "feasible",
+                r"|(?<=[,:;] )(?:doable|possible|feasible|achievable|ok|okay)(?= *[?.!]* *$)"   # "... - doable?"
+                rf"|\bis there (?:any|an?|some|one) {_VALUE}\b",          # "is there any height where it never splashes"
+                ("is there", "ok", "fine", "alright", "all right", "problem", "issue", "enough", "possible", "doable", "feasible",
                  "achievable", " do ", "work", "achieve"))
 
 
