@@ -81,7 +81,9 @@ _QUANTIFIERS = {*"much most some any all little none nothing no half lots plenty
 #: Once the pour is done, said between two outcomes asked: "... once it's poured or ...".
 _ONCE = r"(?: (?:once|after|when) (?:it is |it has been |it )?(?:poured|done|finished|in))?"
 #: What joins a second outcome to the one before: "spill or overflow", "go in but then bounce back out".
-_JOINED = r"(?:, or|, and|,|or|and|nor|but then|and then|but|then)"
+_JOINED = r"(?:, or|, and|,|or|and|nor|but then|and then|but|then|instead of|rather than)"
+#: A second outcome said as what happens in place of the first: "dribble down the outside instead of going in".
+_CONTRARY = re.compile(r"^outcome ?,? (?:instead of|rather than)\b")
 #: How much of the liquid, asked: "what fraction of the liquid spills".
 _SHARE = r"(?:what|which) (?:fraction|proportion|share|percentage|part|amount)(?: of (?:it|the \w+))?"
 
@@ -136,7 +138,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
     # what is asked, or wanted, next to it: "will it spill or overflow?", "without spilling or
     # tipping the bowl over"
     # ("does it stay in there once it's poured or slosh back out": after the pour, when it is judged)
-    more = re.compile(rf"\boutcome{_ONCE} ?{_JOINED}? ?(?:(?:will|does|do|would|even|just|only|mostly|mainly|largely|partly) )?(?:it |the \w+ )?"
+    more = re.compile(rf"\boutcome{_ONCE} ?{_JOINED}? ?(?:(?:will|does|do|would|even|just|only|mostly|mainly|largely|partly|never|not) )?(?:it |the \w+ )?"
                       rf"(?:{verbs})\b{end}")
     # an outcome said first, with no word that asks: "spills when poured from high?", "sloshing
     # over the rim if tilted steeply?", "pour high, spill or not", "spill or no?"
@@ -168,9 +170,26 @@ def _which(m: re.Match) -> tuple[tuple[str, ...], bool]:
         return (*_ALL_IN, "liquid_remains_in_destination"), False      # clinging to the bowl poured into
     bowl = m.group(f"v{k}").split()[-1]        # "yogurt from a tub ... stick in the tub": the tub poured from
     from_it = re.fullmatch(destinations(), bowl) and re.search(rf"\b(?:from|out of) (?:the |a |an |my )?(?:\w+ )?{bowl}\b", m.string)
-    if OUTCOMES[k][1] == (*_ALL_IN, "liquid_remains_in_destination") and (in_the_source(m.group(f"v{k}"), m.string) or from_it):
+    if OUTCOMES[k][1] == (*_ALL_IN, "liquid_remains_in_destination") and (
+            in_the_source(m.group(f"v{k}"), m.string) or from_it or _sits(m, k)):
         return ("liquid_leaves_source",), True       # staying in the source: not leaving it
     return OUTCOMES[k][1], OUTCOMES[k][2]
+
+
+def _sits(m: re.Match, k: int) -> bool:
+    """Whether liquid said to stay in a container not the bowl stays where it was: "just"
+    sitting there ("does the stuff just stay in the cup"), or never coming out ("sits in the
+    mug and never comes out"), of a container not poured into."""
+    said = re.match(r"\w+ in(?:side)?(?: (?:the |a |an |my |your |this |that )?(?:[a-z]+ )?([a-z]+))?",
+                    m.string[m.start(f"v{k}"):])
+    bowl = said.group(1) if said else None
+    if bowl in ("bowl", "bowls", "destination", "target") or (bowl and re.search(
+            rf"\b(?:into|to) (?:the |a |an |my )?(?:\w+ )?{bowl}\b", m.string)):
+        return False
+    before = m.string[:m.start(f"v{k}")]         # ("go in and just stay there": the bowl's)
+    return (before.endswith("just ") and not re.search(r"\b(?:and|then|but|or) just $", before)) or re.match(
+        r"(?: \w+){0,4}? and (?:never|not|does not|do not|will not|would not) (?:come|comes|pour|pours|get|gets|flow|flows) out\b",
+        m.string[m.end(f"v{k}"):]) is not None
 
 
 def _staying(names: tuple[str, ...], said: str, subject: list[str], left: bool = False) -> tuple[str, ...]:
@@ -313,7 +332,10 @@ def hear(text: str) -> Heard:
         names = _staying(names, said[own.end():] if own else said, own.group(0).split() if own else last,
                          not was_goal and "liquid_leaves_source" in asked)
         if was_goal:                  # wanted as the one before it: "without spilling or tipping"
-            holds = (not bad) != negations[-1]
+            # ("so that it goes in instead of spilling": not as the one before; "and never tips": negated)
+            negated = negations[-1] != bool(_CONTRARY.match(m.group(0))) or re.search(
+                rf"^outcome{_ONCE} ?{_JOINED}? ?(?:never|not) ", m.group(0)) is not None
+            holds = (not bad) != negated
             goals.extend(n if holds else f"neg({n})" for n in names if n not in goals)
         else:
             asked.extend(n for n in names if n not in asked)
