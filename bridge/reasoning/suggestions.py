@@ -10,8 +10,7 @@ from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.everyday import UNCLEAR, alternation, names, sections
-from pantarhei.bridge.reasoning.nouns import BOWL
-from pantarhei.bridge.reasoning.spelling import english
+from pantarhei.bridge.reasoning.name_words import names_part
 from pantarhei.bridge.reasoning.wording import Token
 from pantarhei.bridge.reasoning.words import PHRASES
 from pantarhei.theory.lexicon import load_vocabulary
@@ -145,27 +144,6 @@ DESCRIBE = "describe the scene with the words of `pantarhei vocab`, or give --pr
 def hinted(words) -> list[str]:
     """The hints (hints()) for any of `words`, each once, in hints()'s order."""
     return list(dict.fromkeys(h for pattern, h in hints() if any(re.search(pattern, w) for w in words)))
-
-
-def names_part(tokens: list[Token], i: int) -> bool:
-    """Whether the word at `i`, one the reader does not know, is part of the
-    name of the bowl or liquid after it ("a martini glass", "tomato soup"):
-    an English word (not a typo, which spelling.py reads) that does not end
-    as a quality does (_QUALITY), said right before the noun, which says
-    what is read of the body."""
-    t = tokens[i]
-    return (i + 1 < len(tokens) and tokens[i + 1].word in (BOWL, "liquid") and tokens[i + 1].clause == t.clause
-            and re.fullmatch(r"[a-z]{3,}", t.raw) is not None and not _QUALITY.search(t.raw)
-            and t.raw not in _HOW_MUCH and english(t.raw))
-
-
-#: Endings of words that say a quality rather than a name ("a wobbly bowl", "a rounded
-#: jug", "a fancy glass"): such a word before a bowl is refused, as any the reader does not know.
-_QUALITY = re.compile(r"(?:y|ly|er|est|ed|ing|ful|less|ous|ive|al|ic|able|ible|ish)$")
-#: Words that say how much or which, not a name: "more liquid", "another bowl".
-_HOW_MUCH = frozenset(("more", "less", "extra", "enough", "additional", "another", "same", "other", "whole",
-                       "half", "double", "twice", "triple", "several", "few", "many", "plenty", "both", "each",
-                       "every", "second", "third", "next", "last", "first", "new", "old", "own", "spare"))
 
 
 def refuse_unplaced(question: str, tokens: list[Token], read: set[int], lex) -> None:
