@@ -146,8 +146,24 @@ def log_density(P: np.ndarray, antecedent: Iterable[str]) -> np.ndarray:
 
 
 def in_support(P: np.ndarray, antecedent: Iterable[str]) -> np.ndarray:
-    """Whether each row of P can be drawn for the antecedent."""
-    return np.isfinite(log_density(P, antecedent))
+    """Whether each row of P can be drawn for the antecedent: where
+    log_density is finite, each parameter inside its interval (a discrete
+    one whole, a relative one's interval, around its base, not empty),
+    the parameters of fixed intervals compared at once."""
+    pl = distribution(antecedent)
+    P = np.atleast_2d(np.asarray(P, dtype=float))
+    fixed = pl.base < 0
+    X = P[:, fixed]
+    ok = ((X >= pl.low[fixed]) & (X <= pl.high[fixed])).all(axis=1)
+    whole = pl.discrete[fixed]
+    ok &= (X[:, whole] == np.round(X[:, whole])).all(axis=1)
+    if np.any(pl.high[fixed][~whole] <= pl.low[fixed][~whole]):
+        ok[:] = False       # an empty interval: no density anywhere
+    for i in np.flatnonzero(~fixed):
+        lo, hi = _relative_range(pl, i, P[:, pl.base[i]])
+        x = P[:, i]
+        ok &= (x >= lo) & (x <= hi) & (hi > lo)
+    return ok
 
 
 def normalise(P: np.ndarray, vocab: Vocabulary | None = None) -> np.ndarray:

@@ -95,11 +95,11 @@ from typing import TYPE_CHECKING, Sequence
 
 import numpy as np
 
-from pantarhei.oracle.generative import in_support
 from pantarhei.theory import defaults
 from pantarhei.theory.lexicon import load_vocabulary
 
 from pantarhei.bridge.learning.askable import suspect
+from pantarhei.bridge.exploration.pour_support import Support
 
 if TYPE_CHECKING:
     from pantarhei.bridge.exploration.session import Host
@@ -179,11 +179,12 @@ def _valid(P: np.ndarray, S: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
              candidates: Sequence[Sequence[str]], weights: Weights, batch: int,
              seed: int, iteration: int = 1, meaning=None,
-             wholes: Sequence[Sequence[str]] = ()) -> Teaching:
+             wholes: Sequence[Sequence[str]] = (), support: Support | None = None) -> Teaching:
     """The value of exploring each candidate next, at `iteration`, with a
     batch of `batch` pours, given the pours so far (P, S; failed ones are
     left out) and the explored antecedents; `meaning` is model(P, S,
-    seed), when the caller keeps it. A candidate among `wholes` (of a
+    seed), and `support` a Support of fewer of these pours, when the
+    caller keeps them. A candidate among `wholes` (of a
     whole step of learn.pl) is said by no question, so it is valued by its
     newness alone, counted whole."""
     from threadpoolctl import threadpool_limits
@@ -210,7 +211,7 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
     learner = Settings()
     asked = {0: learner.default_weight, 1: 1.0}
     suspects = {c for c in cands if suspect(c)}
-    support = Support(P)
+    support = Support(P) if support is None else support.grown(P)
     doubts = news = np.zeros(len(plain))
     if (weights.doubt or weights.newness) and plain:
         with threadpool_limits(1):
@@ -252,22 +253,6 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
                            + weights.doubt * doubt + weights.newness * float(new), 6))
     return Teaching(value, dep, unc, doubt_of, [round(float(parts.get(c, (0.0, 0.0))[1]), 6)
                                                 for c in cands])
-
-
-class Support:
-    """Which pours of P lie in the support of each body (could have been
-    drawn for it), each body's computed once: a step asks it for the
-    value of a candidate and for the newness its own pours showed."""
-
-    def __init__(self, P: np.ndarray) -> None:
-        self.P = P
-        self.masks: dict[tuple[str, ...], np.ndarray] = {}
-
-    def __call__(self, body: Sequence[str]) -> np.ndarray:
-        key = tuple(body)
-        if key not in self.masks:
-            self.masks[key] = in_support(self.P, key) if len(self.P) else np.zeros(0, dtype=bool)
-        return self.masks[key]
 
 
 def beyond_parts(meaning, P: np.ndarray, S: np.ndarray, cands: Sequence[tuple[str, ...]],
@@ -390,5 +375,6 @@ def teach(host: Host, request: dict) -> dict:
                       float(request["newness"]))
     found = teaching(s.params, s.scores, [e["antecedent"] for e in request["antecedents"]],
                      request["candidates"], weights, int(request["batch"]), seed,
-                     int(request["iteration"]), meaning, request["wholes"])
+                     int(request["iteration"]), meaning, request["wholes"],
+                     s.kept("support", None, lambda: Support(s.params[:0])))
     return {"value": found.value}

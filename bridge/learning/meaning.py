@@ -72,6 +72,9 @@ class Meaning:
 
         self.settings = settings
         X = normalise(P)
+        #: P(e | B) per body already estimated: the draws for B depend on
+        #: B and the seed alone, so the estimate is the same each time.
+        self.estimated: dict[tuple[str, ...], np.ndarray] = {}
         self.models: list = []
         for k in range(Y.shape[1]):
             y = Y[:, k]
@@ -89,23 +92,24 @@ class Meaning:
         sampled. Shorter bodies, which more questions fall back on, get
         more draws: `draws` for a pair, 4 times as many for one
         proposition, 16 times for the empty body."""
-        out = np.full((len(bodies), len(self.models)), np.nan)
+        keys = [tuple(b) for b in bodies]
+        fresh = [k for k in dict.fromkeys(keys) if k not in self.estimated]
         rows, ok, sizes = [], [], []
-        for i, b in enumerate(bodies):
+        for b in fresh:
+            self.estimated[b] = np.full(len(self.models), np.nan)
             n = self.settings.draws * {0: 16, 1: 4}.get(len(b), 1)
             try:
                 rows.append(sample(list(b), n, _seed(self.settings.seed, b)))
             except InvalidAntecedent:
                 continue
-            ok.append(i)
+            ok.append(b)
             sizes.append(n)
-        if not rows:
-            return out
-        p = self.shares(normalise(np.vstack(rows)))
-        ends = np.cumsum(sizes)
-        for i, start, end in zip(ok, ends - sizes, ends):
-            out[i] = p[start:end].mean(axis=0)
-        return out
+        if rows:
+            p = self.shares(normalise(np.vstack(rows)))
+            ends = np.cumsum(sizes)
+            for b, start, end in zip(ok, ends - sizes, ends):
+                self.estimated[b] = p[start:end].mean(axis=0)
+        return np.array([self.estimated[k] for k in keys]).reshape(len(keys), len(self.models))
 
     def shares(self, X: np.ndarray) -> np.ndarray:
         """len(X) x 9: the chance that each expectation holds, per pour

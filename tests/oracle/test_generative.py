@@ -200,3 +200,20 @@ def test_canonical_sorted_tuples():
 def test_a_pour_is_drawn_again_from_its_parameters():
     p = G.sample(["light_liquid"], 1, 5)[0]
     assert np.array_equal(G.from_dict(G.to_dict(p)), p)
+
+
+def test_in_support_is_where_the_density_is_finite() -> None:
+    """The support, computed at once over the parameters of fixed
+    intervals, is where log_density is finite, for bodies with relative
+    and discrete parameters, on pours drawn for other bodies and on the
+    edges of their intervals."""
+    from pantarhei.bridge.learning.askable import askable_bodies
+
+    bodies = list(askable_bodies(2))[::7]
+    P = np.vstack([G.sample(list(b), 4, i) for i, b in enumerate(bodies)])
+    dist = G.distribution(bodies[0])
+    edge = P[:20].copy()
+    edge[:, dist.base < 0] = dist.low[dist.base < 0]
+    P = np.vstack([P, edge, P[:20] + 1e-9])
+    for b in bodies:
+        assert np.array_equal(G.in_support(P, b), np.isfinite(G.log_density(P, b))), b

@@ -67,15 +67,15 @@ def test_the_same_pours_give_the_same_values():
 def test_a_step_finds_the_pours_of_each_body_once(monkeypatch):
     """The value of a candidate counts its own pours, and its newness what
     they showed: which pours lie in a body's support is found once a step."""
-    import pantarhei.bridge.exploration.teaching as teaching_module
+    import pantarhei.bridge.exploration.pour_support as support_module
     import pantarhei.bridge.learning.meaning as meaning_module
 
-    found, real = [], teaching_module.in_support
+    found, real = [], support_module.in_support
 
     def counted(P, body):
         found.append(tuple(body))
         return real(P, body)
-    for module in (teaching_module, meaning_module):
+    for module in (support_module, meaning_module):
         monkeypatch.setattr(module, "in_support", counted)
     P, S = pooled(pours([], 24, 5), pours(["light_liquid"], 8, 6))
     cands = [("light_liquid",), ("pour_far_away",), ("light_liquid", "pour_high")]

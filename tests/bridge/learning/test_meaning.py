@@ -31,3 +31,20 @@ def test_the_share_of_a_body_s_pours_that_keep_the_expectation() -> None:
     assert T[1, E] < 0.1 and T[3, E] < 0.1
     assert np.isnan(T[4]).all()                       # a liquid both light and heavy: no pour
     assert (np.delete(T[:4], E, axis=1) == 1.0).all()   # what always held holds
+
+
+def test_a_body_asked_again_gets_the_same_estimate() -> None:
+    """A model asked about bodies it estimated before (in another order,
+    twice in one request, beside new ones) gives each the estimate a fresh
+    model gives it; a body that cannot be sampled stays NaN."""
+    P = np.vstack([sample([], 120, 1), sample(["light_liquid"], 60, 2)])
+    Y = np.ones((len(P), len(NAMES)), dtype=bool)
+    Y[:, E] = P[:, MASS] > 800
+    bodies = [(), ("light_liquid",), ("pour_to_side",), ("light_liquid", "heavy_liquid")]
+    once = Meaning(P, Y, Settings(seed=1, draws=16))(bodies)
+    kept = Meaning(P, Y, Settings(seed=1, draws=16))
+    kept(bodies[1:3])
+    again = kept([bodies[2], *bodies, bodies[0]])
+    np.testing.assert_array_equal(again[1:5], once)
+    np.testing.assert_array_equal(again[0], once[2])
+    np.testing.assert_array_equal(again[5], once[0])
