@@ -19,6 +19,10 @@ FRAMES = tuple((re.compile(p), r) for p, r in (
      " does "),
     (r"\b(?:know|tell (?:me|us)|predict|wonder(?:ing)?|check|find out|figure out|see|ask(?:ing)?"
      r"|curious|unsure|not sure|any idea|no idea)(?: about)? (?:whether|if) ", " does "),
+    # what a scene said means for an outcome: "does that mean it will come out slower", "does this mean the bowl tips"
+    (r"\b(?:does|would|will|could) (?:that|this|it) (?:mean|imply)(?: that)?(?= (?:it|they|the [a-z]+|a [a-z]+)"
+     r" (?:will|would|could|might|can|does|do)\b)", " "),
+    (r"\b(?:does|would|will|could) (?:that|this|it) (?:mean|imply)(?: that)? ", " does "),
     # how much of an outcome a scene changes: whether it happens with it ("does that change how
     # much ends up in the bowl", as everyday.txt's "change whether")
     (r"\b(?:change|changes|affect|affects|alter|alters|make (?:a|any) difference to|makes (?:a|any) difference to)"

@@ -78,7 +78,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:stay|stays|remain|remains) (?:in )?there\b"
      r"|(?:stay|stays|remain|remains|stop|stops|stick|sticks|stuck|cling|clings|clung|sit|sits) in(?:side)?(?: the \w+)?",
      (*ALL_IN, "liquid_remains_in_destination"), False),
-    (r"(?:go|goes|going|went|get|gets|land|lands|make it|makes it|fall|falls|transfer\w*|arrive\w*|finds? (?:its|their) way) (?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*|get (?:the |all (?:the )?)?(?:water|liquid|milk|it|everything) (?:in|into)\b",
+    (r"(?:go|goes|going|went|get|gets|land|lands|make it|makes it|fall|falls|transfer\w*|arrive\w*|finds? (?:its|their) way) (?:more |mostly )?(?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*|get (?:the |all (?:the )?)?(?:water|liquid|milk|it|everything) (?:in|into)\b",
      ALL_IN, False),
     (r"miss(?:es|ed|ing)?|overshoot\w*|undershoot\w*|fall\w* short", ALL_IN, True),
     (r"safe(?:ly)?|(?:be |is )?(?:fine|ok|okay|alright|all right)\b|(?:a )?(?:good|bad) idea|risky"

@@ -35,6 +35,7 @@ from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.everyday import Matcher, names
 from pantarhei.bridge.reasoning.nouns import poured_from
 from pantarhei.bridge.reasoning.outcome_verbs import ALL_IN as _ALL_IN, OUTCOMES
+from pantarhei.bridge.reasoning.flow_rates import rates, refuse_alone
 from pantarhei.bridge.reasoning.frames import CONTACT, asked_plainly
 from pantarhei.bridge.reasoning.phases import STILL, during
 from pantarhei.bridge.reasoning.seeking import reaches, sought, wanting
@@ -95,6 +96,7 @@ class Heard:
     phrases: tuple[str, ...]    # the phrases heard, as written (normalised)
     scene: str                  # the text left for the scene
     bowl: bool = False          # whether the bowl is named in what is asked ("... end up in the bowl")
+    notes: tuple[str, ...] = ()  # what is said back of what is heard and not asked ("come out slower")
 
 
 @lru_cache(maxsize=None)
@@ -346,7 +348,8 @@ def hear(text: str) -> Heard:
     text, wants = wanting(text)
     phrases.extend(wants)
     text, framed = asked_plainly(text)
-    phrases.extend(framed)
+    text, rate, rate_notes = rates(text)     # "will it come out slower": no expectation's (flow_rates.py)
+    phrases.extend((*framed, *rate))
     text = _spaced(goal.sub(as_goal, text))
     if goals:
         # "so it pours out but the bowl does not tip", "so nothing spills and the bowl stays
@@ -371,8 +374,9 @@ def hear(text: str) -> Heard:
     if goals and reaches(said):         # "I want nothing on the counter. Is pouring from 20 cm ok?"
         wanted = [g.removeprefix("neg(").removesuffix(")") for g in goals]
         asked = [n for n in asked if n not in OUTCOMES[-1][1] or n in wanted] + [n for n in wanted if n not in asked]
+    refuse_alone(rate, tuple(asked), tuple(goals))
     return Heard(tuple(asked), tuple(goals), tuple(phrases), text,
-                 "named" in bowl and "of a container" not in bowl)
+                 "named" in bowl and "of a container" not in bowl, rate_notes)
 
 
 def _repeat(pattern: re.Pattern, replace, text: str) -> str:

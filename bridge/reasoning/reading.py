@@ -264,7 +264,7 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
     tilted = ordinary_tilt() if plain else ""
     notes = typed + tuple(dict.fromkeys([*(f"{t.raw}: {t.said_back}" for t in tokens if t.said_back),
                                          *(f"{tokens[i].raw}: {tilted}" for i in sorted(plain)),
-                                         *spoken]))
+                                         *spoken, *outcome.notes]))
     noted = {t.raw for t in tokens if t.said_back}
     manners = any(vocab.dimensions[props[n].dimension].role == "manner" for n in out)
     can, goals = if_it_can(text, outcome.goals, manners)     # "can I pour high without spilling?"
