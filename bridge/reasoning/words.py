@@ -34,6 +34,7 @@ from pantarhei.bridge.reasoning.bodies import BODIES
 from pantarhei.bridge.reasoning.comparisons import COMPARATIVES as _COMPARATIVES, COMPARISONS, DEGREE as _DEGREE
 from pantarhei.bridge.reasoning.contrasts import CONTRASTS
 from pantarhei.bridge.reasoning.cued import Cued
+from pantarhei.bridge.reasoning.moved_to import MOVED_TO
 from pantarhei.bridge.reasoning.moves import MOVES
 from pantarhei.bridge.reasoning.nearness import A_BIT_SIDE as _A_BIT_SIDE, NEARNESS
 from pantarhei.bridge.reasoning.numerals import NumberWords
@@ -76,6 +77,7 @@ PHRASES: tuple[tuple, ...] = (
                         r"|(?:brought|bring|brings|bringing) (?:down|up)|(?:go|goes|going|went|come|comes|coming|came|move[sd]?|moving) down)(?: (?:it|them|the \w+))?"
                         r"(?: (?:up|down))? to(?= (?:just |about |around |roughly |only )?-?\d)(?![^;.?!]*\b(?:before|after|then)\b)",),
      "read as held there while pouring"),
+    *MOVED_TO,                # lowered to just over the rim, poured straight down (moved_to.py)
     ("hedge", (r"re(lower|dip):\b(?:lower(?:ed|ing|s)?|dipp?(?:ed|ing|s)?)(?: (?:it|them|the \w+))?(?: down)?"
                r"(?= (?:just |right |slightly |a bit |well )?(?:below|under|beneath)\b)(?![^;.?!]*\b(?:before|after|then)\b)",)),
     *CONTRASTS,               # a value said against another: thicker than water (contrasts.py)
@@ -307,6 +309,7 @@ PHRASES: tuple[tuple, ...] = (
     # lifted straight up: raised, not righted
     ("raise", (r"re:\b(?:lift|lifts|lifted|lifting|rais(?:e|es|ed|ing)|mov(?:e|es|ed|ing)|bring|brings"
                r"|brought|pull(?:s|ed|ing)?)(?: it| the \w+| them)? straight up\b",)),
+    ("retreat raise", (r"re(retreat):\bretreat\w*(?: it| the \w+| them)? straight up\b",)),     # "retract it straight up"
     # an angle measured from the vertical is the tilt ("tilted 30 degrees from vertical");
     # one from the horizontal is refused (suggestions.py says what would be read)
     ("hedge", (r"re:(?<=degrees )(?:from|off|away from|past) (?:the )?(?:vertical|upright)\b",)),

@@ -1,0 +1,24 @@
+"""A move up or down said with where it goes or which way the stream
+falls, part of words.py's PHRASES. Lowered or raised to a height said in
+words, with no move before or after pouring said, is held there while
+pouring, as "lowered to 5 mm above the lip" is: "lower the carafe to just
+over the rim" pours low (just over the rim), and a bare "lower it" is still
+refused (lower than what?). Poured "straight down" into the bowl says the
+way the stream falls, as it falls from every pour: no move down, and no
+place over the bowl, said back as read as nothing."""
+from __future__ import annotations
+
+#: Where a move up or down may be said to go, in words: just over the rim ("just over the rim": low).
+_RIM_SAID = (r"(?:just |right |slightly |a bit |a little |only )?(?:above|over) (?:the )?(?:destination |bowl )?"
+             r"(?:rim|edge|lip|brim)\b")
+
+MOVED_TO: tuple[tuple, ...] = (
+    ("hedge", (r"re(lower|rais|lift|brought|bring|down|up):\b(?:(?:lower(?:ed|ing|s)?|rais(?:e|ed|es|ing)|lift(?:ed|ing|s)?)"
+               r"(?: (?:it|them|the \w+))?(?: (?:up|down))?|(?:brought|bring|brings|bringing|go|goes|going|went|come|comes"
+               rf"|coming|came|move[sd]?|moving)(?: (?:it|them|the \w+))? (?:down|up)) to(?= {_RIM_SAID})"
+               r"(?![^;.?!]*\b(?:before|after|then)\b)",),
+     "read as held there while pouring"),
+    ("hedge", (r"re(straight down):\bstraight down\b(?= (?:into|in|onto|to)\b| *(?:[,;.!?]|$))",),
+     "read as nothing: the stream falls straight down from every pour; where the source is held is "
+     "said by \"centred\" or \"near the rim\", a move down by \"lower it before pouring\""),
+)
