@@ -2,7 +2,9 @@
 20 cm and it splashed, if I go down to 8 cm is it better?"): each question
 is read alone, so the pour told is not read, and said back; "is it better"
 after it asks about the outcome told (whether it splashes), not the three
-expectations of "is it better to"."""
+expectations of "is it better to", as do "will that fix it" and a scene said to
+stop it ("yesterday the bowl slid off the tray when I emptied the kettle into it,
+would a heavier bowl stop that?": with a heavier bowl, does the bowl slide)."""
 from __future__ import annotations
 
 import re
@@ -14,26 +16,45 @@ _WHEN = (r"(?:the )?(?:last time|previous time|first time|other day|yesterday|pr
 _TOLD = {"splash": "does it splash", "spill": "does it spill", "drip": "does it drip",
          "overflow": "does it overflow", "slosh": "does it slosh out", "tip": "does the bowl tip over",
          "slid": "does the bowl slide", "slide": "does the bowl slide", "mov": "does the bowl move",
-         "miss": "does it miss"}
+         "miss": "does it miss", "bounc": "does it bounce out", "flip": "does the bowl tip over",
+         "fell": "does the bowl tip over", "skid": "does the bowl slide"}
+#: Who did what the earlier pour did: "it", "the bowl", "half of it".
+_WHO = r"(?:it|the (?:bowl|liquid|water|milk|[a-z]+)|(?:half|some|most|all|a lot|part|much) of it)"
+#: What it did: "splashed", "slid off the edge of the tray", "bounced out".
+_OUT = r"(?P<out>splash|spill|spilt|drip|overflow|slosh|tip|slid|mov|miss|bounc|flip|fell|skid)\w*"
+#: What may come after an earlier pour told: the question.
+_NEXT = r" *[,;.] *(?=(?:now|this time|if|so|what|will|would|does|do|is|can|should)\b)"
 _POUR = re.compile(
     rf"^{_WHEN},? (?:when )?(?:i|we|you|they|he|she|the robot|my robot) (?:poured|pour|held|tilted|tipped|did it)"
-    r"(?P<how>[^,;.?!]*?)(?: and (?:it|the (?:bowl|liquid|water|milk|[a-z]+)) (?P<out>splash|spill|spilt|drip|overflow|slosh|tip|slid"
-    r"|mov|miss)\w*(?: over| out| everywhere)?)? *[,;.] *(?=(?:now|this time|if|so|what|will|would|does|do|is|can|should)\b)")
-#: Asked whether the pour now is better: about the outcome told.
-_BETTER = re.compile(r"\b(?:is|will|would) (?:it|that|this) (?:be )?(?:any )?better\b")
+    rf"(?P<how>[^,;.?!]*?)(?: and {_WHO} {_OUT}(?: over| out| everywhere)?)?{_NEXT}")
+#: Its outcome told first, the pour after it: "yesterday the bowl slid off the tray when I emptied the kettle into it".
+_OUTCOME_FIRST = re.compile(
+    rf"^{_WHEN},? {_WHO} {_OUT}[^,;.?!]*? when (?:i|we|you|they|he|she|the robot|my robot)"
+    rf" (?:poured|emptied|tipped|tilted|held|did it)[^,;.?!]*?{_NEXT}")
+#: Asked whether the pour now is better, or ends what happened: about the outcome told.
+_BETTER = re.compile(r"\b(?:is|will|would) (?:it|that|this) (?:be )?(?:any )?better\b"
+                     r"|\b(?:will|would|does|could|can) (?:that|this|it) (?:fix|stop|prevent|solve) (?:it|that|this)\b")
+#: A scene said to end what happened: "would a heavier bowl stop that" (with it, does it happen).
+_STOPS = re.compile(r"\b(?:will|would|does|could|can) (?P<scene>(?:a|an|the|my|some) [a-z ]+?) (?:fix|stop|prevent|solve)"
+                    r" (?:it|that|this)\b")
 
 
 def told(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) without an earlier pour told at its start, and
     what is said back of it; `text` as it is where it tells none."""
-    m = _POUR.match(text)
+    m = _POUR.match(text) or _OUTCOME_FIRST.match(text)
     if m is None:
         return text, ()
     rest = text[m.end():]
     said = [f"{m.group(0).strip(' ,;.')}: read as nothing: an earlier pour, told; the answer is for the one asked"]
     out = m.group("out")
+    verb = "spill" if out == "spilt" else out
     if out and _BETTER.search(rest):
-        verb = "spill" if out == "spilt" else out
+        asked = _BETTER.search(rest).group(0)
         rest = _BETTER.sub(_TOLD[verb], rest, count=1)
-        said.append(f"better: read as {_TOLD[verb]}, as the earlier pour did")
+        said.append(f"{asked}: read as {_TOLD[verb]}, as the earlier pour did")
+    elif out and _STOPS.search(rest):
+        stops = _STOPS.search(rest)
+        rest = f"{rest[:stops.start()]}with {stops.group('scene')}, {_TOLD[verb]}{rest[stops.end():]}"
+        said.append(f"{stops.group(0)}: read as {_TOLD[verb]}, as the earlier pour did, with {stops.group('scene')}")
     return rest, tuple(said)
