@@ -21,6 +21,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      rf"|escap\w*(?= (?:the |a |an |my |your |its )?(?!source\b)(?:[a-z]+ )?{OUT_OF}\b)"
      # thrown out, no bowl said: out of the destination, as people who pour read it ("splash out")
      r"|(?:spill\w*|spilt|splash\w*|splatter\w*|slosh\w*|slop\w*)(?: back)? out\b(?! of\b| over\b)"
+     # thrown outside it: "splash outside the bowl", "make splash outside" (landing or dripping outside is a spill)
+     r"|(?:makes? (?:a |any |big |much )*)?(?:splash\w*|splatter\w*|slosh\w*|slop\w*) outside\b"
      # thrown back up out of the bowl: "splash back", "splash-back expected?"
      r"|(?:splash|splatter)(?:es|ed|ing)? ?back\b(?! (?:in|into|out|up)\b)|splashbacks?\b"
      r"|overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*|slop\w*|splash\w*|splatter\w*|fizz\w*"
