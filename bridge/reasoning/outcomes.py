@@ -37,7 +37,7 @@ from pantarhei.bridge.reasoning.nouns import poured_from
 from pantarhei.bridge.reasoning.outcome_verbs import ALL_IN as _ALL_IN, OUTCOMES
 from pantarhei.bridge.reasoning.flow_rates import rates, refuse_alone
 from pantarhei.bridge.reasoning.frames import CONTACT, asked_plainly
-from pantarhei.bridge.reasoning.phases import STILL, during
+from pantarhei.bridge.reasoning.phases import STILL, during, moving
 from pantarhei.bridge.reasoning.seeking import reaches, sought, wanting
 from pantarhei.bridge.reasoning.strikers import containers, striker
 from pantarhei.bridge.reasoning.vessels import destinations, filled, in_the_source, liquids, out_of_the_source
@@ -361,6 +361,7 @@ def hear(text: str) -> Heard:
             wanted_too = _spaced(goal.sub(as_goal, trial))
             text = wanted_too if wanted_too != trial else text
         text = _repeat(more, as_more, text)
+        goals[:] = moving(text, goals)     # "move away without the bowl sliding": as it moves away
         text, seeking = sought(text)        # "how high should I hold it": a plan's to find
         phrases.extend(seeking)
     was_goal = False

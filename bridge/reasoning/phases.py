@@ -10,6 +10,10 @@ scene too. What stays in the bowl is judged after the move away, so that
 move said with it is heard ("does it slosh back out once the cup is
 gone").
 
+A stillness wanted right after a move said ("the fastest I can move away
+without the bowl sliding", "move the cup in and out without ...") is
+wanted of that move's phase.
+
 And a place the liquid may land instead of the bowl, asked beside it:
 "does it go in the bowl or on the table" asks whether it spills too; and
 staying said after going in ("does it go in and stay") asks whether it
@@ -96,3 +100,22 @@ def during(text: str, asked: list[str]) -> tuple[str, list[str], list[str]]:
             text = text[:m.start("said")] + text[m.end():]
         return text, asked, heard
     return text, asked, heard
+
+
+#: A move said right before a stillness wanted ("move away without the bowl sliding"), by its way.
+_MOVED = re.compile(r"\b(?:(?P<verb>mov(?:e|es|ing)|go(?:es|ing)?|com(?:e|es|ing)|pull(?:s|ing)?|bring(?:s|ing)?|draw(?:s|ing)?)"
+                    r"(?: (?:it|them|(?:the|my|your|a) [a-z]+))?(?P<way> in and (?:out|away|back)| in| away| back| out)"
+                    r"|(?P<named>retreat|withdraw|approach)(?:s|ing)?)(?: (?:fast|quickly|slowly|quick|slow))?(?: (?:it|they|(?:the|my|a) [a-z]+))? outcome\b")
+_WAYS = {"in": ("destination_still_approach",), "approach": ("destination_still_approach",)}
+
+
+def moving(text: str, goals: list[str]) -> list[str]:
+    """`goals` with a stillness wanted right after a move said in `text` (after outcomes.hear
+    took out the goal: "outcome" stands for it) wanted of that move's phase alone."""
+    m = _MOVED.search(text)
+    if m is None or not all(n in goals for n in STILL):
+        return goals
+    way = (m.group("way") or m.group("named")).strip()
+    phases = (STILL[:2] if way.startswith("in and") else
+              _WAYS.get(way, ("destination_still_retreat",)))
+    return [n for n in goals if n not in STILL or n in phases]
