@@ -40,6 +40,7 @@ from pantarhei.bridge.reasoning.frames import CONTACT, asked_plainly
 from pantarhei.bridge.reasoning.phases import STILL, during, moving
 from pantarhei.bridge.reasoning.seeking import reaches, sought, wanting
 from pantarhei.bridge.reasoning.strikers import containers, striker
+from pantarhei.bridge.reasoning.worries import worried
 from pantarhei.bridge.reasoning.vessels import destinations, filled, in_the_source, liquids, out_of_the_source
 
 #: Words that ask: an auxiliary before its subject ("will it spill"), or a
@@ -260,6 +261,7 @@ def hear(text: str) -> Heard:
     # in ("does a high-restitution (bouncy) liquid splash?"), as the scene reads them
     text = re.sub(r"[()\[\]]", " ", re.sub(r"(?<=[a-z])-(?=[a-z])", " ", text))
     last: list[str] = []                # the subject of the outcome asked before
+    clauses: list[tuple[str, ...]] = []  # what each clause asked, in order
     bowl: list[str] = []                # per outcome asked: whether it names the bowl, or is asked of a container
 
     def take(m: re.Match, keep: str = "") -> str:
@@ -304,6 +306,7 @@ def hear(text: str) -> Heard:
                 rf"(?<!\bwhat )\b(?:if|when|once) {re.escape(' '.join(lead))} *$", m.string[:m.start()]):
             raise UserError(f'"{" ".join(lead)} {m.group(0).strip()}" {FOLLOWS}')
         asked.extend(n for n in names if n not in asked)
+        clauses.append(names)
         # "does much stay in the jug", "will some milk spill": how much of the liquid the
         # outcome is asked of, not how much the source holds
         while subject and subject[0] in _QUANTIFIERS:
@@ -341,6 +344,7 @@ def hear(text: str) -> Heard:
             goals.extend(n if holds else f"neg({n})" for n in names if n not in goals)
         else:
             asked.extend(n for n in names if n not in asked)
+        clauses.append(names)
         return take(m)
 
     was_goal = True
@@ -375,6 +379,7 @@ def hear(text: str) -> Heard:
     if goals and reaches(said):         # "I want nothing on the counter. Is pouring from 20 cm ok?"
         wanted = [g.removeprefix("neg(").removesuffix(")") for g in goals]
         asked = [n for n in asked if n not in OUTCOMES[-1][1] or n in wanted] + [n for n in wanted if n not in asked]
+    asked = worried(said, asked, clauses, OUTCOMES[-1][1])     # "is it ok ... or will the bowl tip over"
     refuse_alone(rate, tuple(asked), tuple(goals))
     return Heard(tuple(asked), tuple(goals), tuple(phrases), text,
                  "named" in bowl and "of a container" not in bowl, rate_notes)
