@@ -27,10 +27,15 @@ def _liquids() -> tuple[re.Pattern, dict[str, int]]:
     return re.compile(rf"\b{said} ?,? or {said}\b"), value
 
 
+def chosen_liquids(text: str) -> re.Match | None:
+    """Where `text` (normalised) chooses between two liquids ("honey or water"), or None."""
+    return _liquids()[0].search(text)
+
+
 def refuse_choice(text: str) -> None:
     """UserError where `text` (normalised) chooses between two liquids read as different values, with no goal."""
-    pattern, value = _liquids()
-    m = pattern.search(text)
+    value = _liquids()[1]
+    m = chosen_liquids(text)
     if m is None or sections()[value[m.group(1)]].words == sections()[value[m.group(2)]].words:
         return                                  # "water or milk": both read as an ordinary liquid
     from pantarhei.bridge.reasoning.outcomes import hear       # here: outcomes reads words with wording.py

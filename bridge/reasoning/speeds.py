@@ -3,7 +3,7 @@ words.py's PHRASES: a speed said with "speed" ("at high speed" is fast),
 a quick in-and-out (both moves; "fast in fast out"), moving fast with no
 way said (both moves), "the robot come fastly" (it comes in), and tipping
 the source fast or slowly, which is the move into the pouring pose: it
-tilts the source as it goes ("tip it really slowly" is a slow approach).
+tilts the source as it goes ("tip it really slowly", "a slow steady tilt" is a slow approach).
 A pour said fast or slowly, or a speed asked of pouring ("what speed should I
 pour at"), is refused where words.py and this module say so: pouring has
 no speed of its own.
@@ -17,6 +17,11 @@ from pantarhei.bridge.reasoning.everyday import UNCLEAR
 POURING_SPEED = (r"\b(?:speed|rate|pace|velocity)s? (?:(?:of|for) |(?:(?:should|do|can|could|would|must|shall)"
                  r" (?:i|we|you|one|it|they|the robot) )?(?:to )?)pour\w*\b(?! (?:it |them |the \w+ )?(?:in|away|out)\b)"
                  r"|\bpour(?:ing)? (?:speed|rate|pace|velocity)\b")
+
+#: How a tilt is made, said beside its speed ("a slow steady tilt"): its speed is what is read.
+_MANNER = r"(?:steady|smooth|gentle|careful|even|controlled|gradual|slow|fast|quick|sharp|sudden|rapid)"
+_NO_RATE = r"(?! (?:rate|speed|velocity|pace)\b)"        # a speed of tilting: refused
+_SAID = "read as the move into the pouring pose, which tilts the source as it goes"
 
 SPEEDS: tuple[tuple, ...] = (
     # a speed asked of pouring itself: refused, pouring has no speed of its own
@@ -79,4 +84,8 @@ SPEEDS: tuple[tuple, ...] = (
     ("approach slowly", (r"re(slow|gradual|steadi):\b(?:tilt|tip)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
                          r" (?:slow(?:ly)?|gradually|steadily)\b(?! (?:than|as)\b)",
                          r"re(slow|gradual|steadi):\b(?:slowly|gradually|steadily) (?:tilt|tip)\w*\b")),
+    # a tilt said slow or quick ("a slow steady tilt", "a quick tip"): the move into the pouring pose
+    ("approach slowly ; pour", (rf"re(slow|gradual):\b(?:slow|gradual)(?:,? (?:and )?{_MANNER})* (?:tilt|tip)s?\b{_NO_RATE}",), _SAID),
+    ("approach fast ; pour", (rf"re(fast|quick|rapid|sudden):\b(?:fast|quick|rapid|sudden)(?:,? (?:and )?{_MANNER})* (?:tilt|tip)s?\b"
+                       rf"{_NO_RATE}",), _SAID),
 )

@@ -1,5 +1,6 @@
 """Which of two scenes set against each other an outcome happens to, or
-happens to more ("silicone bowl vs enamel bowl - which one slides more"):
+happens to more ("silicone bowl vs enamel bowl - which one slides more",
+said first: "which spills less: a slow tilt vs a fast one"):
 asked of the scene said first, the other being said back as not read
 (comparisons.py), as "does it slide"; "which" alone too, its verb inflected
 and said with how much ("which splashes less"). "Compare" before them is the frame
@@ -34,13 +35,19 @@ def which_one(text: str) -> tuple[str, tuple[str, ...]]:
         set_against = _SET_AGAINST.search(text)
     if set_against:
         text, said = _first_again(text, set_against, said)
-    m = _WHICH.search(text, set_against.end()) if set_against else None
+    m = (_WHICH.search(text, set_against.end()) or _asked_first(text[:set_against.start()])) if set_against else None
     if m is None:
         return text, said
     said_verb, ending = (m.group("verb"), m.group("ending")) if m.group("verb") else (m.group("verb2"), m.group("ending2"))
     verb = said_verb + ("e" if ending == "es" and not re.search(r"(?:sh|ch|ss|x)$", said_verb) else "")
     return (text[:m.start()] + f"does it {verb}" + text[m.end():],
             (*said, f"{m.group(0)}: read as does it {verb}, of the one said first"))
+
+
+def _asked_first(text: str) -> re.Match | None:
+    """"which" said first, before the scenes, ending its clause ("which spills less: a slow tilt vs a fast one")."""
+    m = _WHICH.match(text)
+    return m if m and re.match(r" *[:,]", text[m.end():]) else None
 
 
 def _again(number: str) -> re.Pattern:

@@ -1,0 +1,45 @@
+"""Two scenes joined by "or" in a question that compares them ("is it
+better to pour from directly over the middle of the bowl or from near the
+edge?", "a heavy bowl or a light bowl, which one slides more?", "which
+spills less: a slow tilt, or tipping it fast?") are read as two scenes set
+against each other with "vs" are (comparisons.py, which_one.py): the one
+said first is answered, the other said back as not read, and refused if
+it says what the vocabulary cannot (set_against.py); "or" is said back as
+read as "vs".
+
+A question compares where it says "better", "safer", "worse", "preferable"
+or "which". Without such a word ("pour high or low, does it spill?", "pour
+from the side or the middle") two values of one dimension are still
+refused, asking for one; asked with "should" ("should I hold it over the
+middle or near the rim", with a goal), the choice is the plan's to make
+(seeking.py); a choice of two liquids is choices.py's; an "or" before a
+number ("1 or 2 cm": a range), "or not", "or so" or a question of its own
+("or will the bowl skid?") is no second scene."""
+from __future__ import annotations
+
+import re
+
+from pantarhei.bridge.reasoning.choices import chosen_liquids
+
+_COMPARING = re.compile(r"\b(?:better|best|safer|safest|worse|worst|preferable|which)\b")
+_ASKED_WHAT_TO_DO = re.compile(r"\b(?:should|shall)\b")
+#: The words a second scene may begin with: where ("from near the edge"), how ("slowly", "tipping it
+#: fast"), a body ("a light bowl"), a value ("low").
+_SCENE = (r"(?:from|at|near|over|above|below|under|with|by|in|on|close|closer|directly|right|just|straight|far"
+          r"|further|high|higher|low|lower|slow|slowly|fast|quick|quickly|gently|a|an|the|one|[a-z]+ing)\b")
+#: A second scene's first words that are no scene: an outcome ("or spilling"), or what asks.
+_NOT_A_SCENE = (r"(?:spill|splash|overflow|drip|leak|slid|slip|toppl|wobbl|tip(?:ping|s)? over|anything|something"
+                r"|nothing|everything|either|neither)")
+_OR = re.compile(rf"(?: ,)? \bor (?={_SCENE})(?!{_NOT_A_SCENE})")
+
+
+def compared_or(text: str) -> tuple[str, tuple[str, ...]]:
+    """`text` (normalised) with the "or" between two scenes it compares
+    read as "vs", and what is said back of it; `text` as it is otherwise."""
+    if not _COMPARING.search(text) or _ASKED_WHAT_TO_DO.search(text):
+        return text, ()
+    m = _OR.search(text)
+    if m is None or m.start() == 0 or chosen_liquids(text):
+        return text, ()
+    return (text[:m.start()] + " vs " + text[m.end():],
+            ("or: read as vs: two scenes compared, the one said first answered",))
