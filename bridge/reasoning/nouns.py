@@ -114,13 +114,24 @@ def _handled(tokens: list[Token], i: int, j: int) -> bool:
 
 
 def _ones(tokens: list[Token], roles: dict[int, str], placeable: frozenset[str]) -> dict[int, str]:
-    """`roles`, with "one" after a value word the body the question names, where it names
-    one: "rather than a heavy bowl, use a really light one" (a light bowl)."""
+    """`roles`, with "one" after a value word (what it is made of may stand between) the body the
+    question names, where it names one: "rather than a heavy bowl, use a really light one" (a light
+    bowl), "it's a lightweight melamine one"."""
     named = {r for r in roles.values() if r != CONTEXT}
     if len(named) != 1:
         return roles
     return {**roles, **{i: next(iter(named)) for i, t in enumerate(tokens) if t.word == "one" and i > 0
-                        and tokens[i - 1].word in placeable and tokens[i - 1].word not in BETWEEN}}
+                        and (v := _value_before(tokens, i)) is not None and tokens[v].word in placeable
+                        and tokens[v].word not in BETWEEN}}
+
+
+def _value_before(tokens: list[Token], i: int) -> int | None:
+    """The position of the word before `i` that may qualify it, past what a bowl is made of
+    ("a lightweight melamine one": lightweight); None at the start."""
+    k = i - 1
+    while k > 0 and tokens[k].word == "material":
+        k -= 1
+    return k if k >= 0 else None
 
 
 def _beside_the_bowl(tokens: list[Token], roles: dict[int, str], bowl: bool = False) -> dict[int, str]:

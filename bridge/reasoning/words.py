@@ -363,11 +363,12 @@ def _everyday() -> list[tuple[Matcher, str, str]]:
     """(matcher, the words it is read as, what is said back) for each
     section of the everyday word list: a liquid's or a context noun's name
     before a container's is part of its name ("a milk carton"), and
-    "glass" before a container is what it is made of ("a glass jug")."""
+    "glass" before a container or what is around is what it is made of ("a glass
+    jug", "a glass table")."""
     out = []
     for s in sections():
         if s.words == "material":
-            matcher = Matcher(s.phrases, glass_before=names("bowl"))
+            matcher = Matcher(s.phrases, glass_before=names("bowl", "context"))
         elif s.words.startswith("bowl"):        # a bowl, or one poured from (nouns.py)
             matcher = Matcher(s.phrases, before=names("liquid", "context"))
         else:
