@@ -5,7 +5,9 @@ pouring, as "lowered to 5 mm above the lip" is: "lower the carafe to just
 over the rim" pours low (just over the rim), and a bare "lower it" is still
 refused (lower than what?). Poured "straight down" into the bowl says the
 way the stream falls, as it falls from every pour: no move down, and no
-place over the bowl, said back as read as nothing."""
+place over the bowl, said back as read as nothing; "pour straight down",
+with no bowl it falls into, is still refused (the source held straight
+down, upside down, or moved down?)."""
 from __future__ import annotations
 
 #: Where a move up or down may be said to go, in words: just over the rim ("just over the rim": low).
@@ -18,7 +20,7 @@ MOVED_TO: tuple[tuple, ...] = (
                rf"|coming|came|move[sd]?|moving)(?: (?:it|them|the \w+))? (?:down|up)) to(?= {_RIM_SAID})"
                r"(?![^;.?!]*\b(?:before|after|then)\b)",),
      "read as held there while pouring"),
-    ("hedge", (r"re(straight down):\bstraight down\b(?= (?:into|in|onto|to)\b| *(?:[,;.!?]|$))",),
+    ("hedge", (r"re(straight down):\bstraight down\b(?= (?:into|in|onto) )",),
      "read as nothing: the stream falls straight down from every pour; where the source is held is "
      "said by \"centred\" or \"near the rim\", a move down by \"lower it before pouring\""),
 )
