@@ -31,6 +31,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.reasoning.asked_without import without_asked
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.everyday import Matcher, names
 from pantarhei.bridge.reasoning.nouns import poured_from
@@ -41,6 +42,7 @@ from pantarhei.bridge.reasoning.phases import STILL, during, moving
 from pantarhei.bridge.reasoning.seeking import reaches, sought, wanting
 from pantarhei.bridge.reasoning.strikers import containers, striker
 from pantarhei.bridge.reasoning.worries import worried
+from pantarhei.bridge.reasoning.what_follows import FOLLOWS
 from pantarhei.bridge.reasoning.vessels import destinations, filled, in_the_source, liquids, out_of_the_source
 
 #: Words that ask: an auxiliary before its subject ("will it spill"), or a
@@ -148,18 +150,6 @@ def _patterns() -> tuple[re.Pattern, ...]:
     bare = re.compile(rf"(?:^|(?<=[,:;.?!\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014]))(?:(?P<v0>{filled(OUTCOMES[0][0])})|(?P<v1>spill\w*|spilt|splash\w*|drip\w*"
                       rf"|leak\w*|slosh\w*|dribbl\w*)){end}(?: or not| or no)?(?: expected| likely)?(?= (?:if|when|while)\b| *[?.!,]* *$)")
     return asked, nominal, goal, more, bare
-
-
-#: Why a question of what follows an outcome is refused, and what would be read.
-FOLLOWS = ("asks what follows an outcome, which the vocabulary cannot say; it answers whether it "
-           "happens: \"will it spill?\", \"does the bowl move?\"")
-
-
-def follows(text: str) -> bool:
-    """Whether normalised `text` asks what follows an outcome ("what if the
-    milk spills?"), which the vocabulary cannot say."""
-    verbs = "|".join(f"(?:{filled(v)})" for v, _, _ in OUTCOMES)
-    return bool(re.search(rf"\b(?:what if|suppose|imagine)(?: [a-z]+){{0,4}}? (?:{verbs})\b", text))
 
 
 def _which(m: re.Match) -> tuple[tuple[str, ...], bool]:
@@ -353,7 +343,8 @@ def hear(text: str) -> Heard:
     phrases.extend(wants)
     text, framed = asked_plainly(text)
     text, rate, rate_notes = rates(text)     # "will it come out slower": no expectation's (flow_rates.py)
-    phrases.extend((*framed, *rate))
+    text, without = without_asked(text)      # "will it go in without any spilling": both asked
+    phrases.extend((*framed, *rate, *without))
     text = _spaced(goal.sub(as_goal, text))
     if goals:
         # "so it pours out but the bowl does not tip", "so nothing spills and the bowl stays

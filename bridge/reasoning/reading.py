@@ -50,7 +50,8 @@ from pantarhei.bridge.reasoning.negation import (NEGATION_STEMS, covered, opposi
                                                  scope, scope_ends, still_between)
 from pantarhei.bridge.reasoning.outright import outright
 from pantarhei.bridge.reasoning.nouns import ARTICLES, BOWL, CONTEXT, OBJECT_STEMS, Nouns, roles
-from pantarhei.bridge.reasoning.outcomes import FOLLOWS, follows, hear
+from pantarhei.bridge.reasoning.outcomes import hear
+from pantarhei.bridge.reasoning.what_follows import FOLLOWS, follows
 from pantarhei.bridge.reasoning.quantities import read_numbers
 from pantarhei.bridge.reasoning.seeking import if_it_can
 from pantarhei.bridge.reasoning.spelling import corrected
