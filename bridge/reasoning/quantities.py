@@ -234,9 +234,8 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
         beside = [k for k in sides if k in near]
         cues = {cue_of[tokens[k].word] for k in near}        # "tilt" picks a pitch, as a cue
         choosing = {cue_of[tokens[beside[0]].word]} | (cues & {"below", "offset"}) if beside else cues
-        if q.measures == "length" and not choosing and i > 1 and tokens[i - 1].word == "from" \
-                and tokens[i - 2].word == "pour":
-            choosing = {"height"}           # "pour from 40 cm": the height poured from
+        if q.measures == "length" and not choosing and _poured_from(tokens, i, stage):
+            choosing = {"height"}           # "pour from 40 cm", "pouring it from about 6 inches": the height poured from
         if q.measures == "time" and any(cue_of.get(tokens[k].word) in CUES["pitch"] for k in range(
                 max(0, i - 8), i) if tokens[k].clause == tokens[i].clause):
             choosing = choosing | {"tilt"}          # "tilted to 90 degrees over 2 s": the tilting's time
@@ -302,6 +301,19 @@ def _direction(tokens: list[Token], k: int, after: int, near: list[int]) -> set[
             or any(tokens[m].word == "from" for m in range(after, k)):
         return set()
     return {k}
+
+
+#: Words that say a number is near what it is: "from about 6 inches".
+_ROUGHLY = {stem(w) for w in ("about", "around", "roughly", "approximately", "some", "maybe", "like", "nearly", "almost")}
+
+
+def _poured_from(tokens: list[Token], i: int, stage: list[str]) -> bool:
+    """Whether the length at `i` is said as where the pour comes from: "from" (and a word of
+    roughly) before it, in a clause that pours, in the pour's stage ("pour from 40 cm", "pouring
+    syrup into a tin from about 6 inches"; not "move in from 30 cm", refused: above or to the side?)."""
+    k = _past(tokens, i - 1, -1, _ROUGHLY)
+    return (k > 0 and tokens[k].word == "from" and stage[i] == "pour"
+            and any(tokens[m].word == "pour" and tokens[m].clause == tokens[i].clause for m in range(k)))
 
 
 def _low_end(tokens: list[Token], i: int) -> int | None:
