@@ -195,6 +195,10 @@ def _filling() -> Cued:
 #: where a manner is said ("can I still get everything into the bowl if I tilt more").
 _CAN_GET = (r"\b(?:can|could) (?:i|we|you) (?:still )?(?:get|put) (it all|all of it|everything|every drop|every last drop"
             r"|all (?:of )?the [a-z]+) (?=(?:in|into|inside)\b)")
+#: ... or get it all out of the source, said after the manner: "can I pour without tilting past
+#: horizontal and still get it all out" (so that it comes out).
+_CAN_OUT = (r"(\b(?:can|could) (?:i|we|you) (?:[a-z0-9]+ ){0,12}?)(?:and )?(?:still )?get (it all|all of it|everything"
+            r"|every drop|every last drop|all (?:of )?the [a-z]+) out\b(?: of (?:the |a |my )?[a-z]+)?")
 _CAN_EMPTY = (r"\b(?:can|could) (?:i|we|you) (?:still )?(?:empty|drain) (it|(?:the|my) [a-z]+)(?: out)?"
               r"(?: completely| fully| all the way| entirely)? (?=into\b)")
 #: Wanting, compiled when cued: "I need none of it on the table" (so that none goes on it),
@@ -232,6 +236,7 @@ _WANTING_CUED = (
     # so that it goes in (and the source empties); asked where a manner is said (if_it_can)
     (Cued(_CAN_GET, (" get ", " put ")), r"so that \1 goes "),
     (Cued(_CAN_EMPTY, ("empty", "drain")), r"so that \1 empties "),
+    (Cued(_CAN_OUT, (" out",)), r"\1so that \2 comes out"),
 )
 
 
@@ -297,7 +302,7 @@ def if_it_can(text: str, goals: tuple[str, ...], manners: bool) -> tuple[tuple[s
     down at the edge without hitting the bowl?") asks whether the outcome
     happens there; said of no manner ("can I pour without spilling?") it
     wants the outcome, which a plan finds."""
-    if not (goals and (" without " in f" {text} " or re.search(f"{_CAN_GET}|{_CAN_EMPTY}", text))
+    if not (goals and (" without " in f" {text} " or re.search(f"{_CAN_GET}|{_CAN_EMPTY}|{_CAN_OUT}", text))
             and not re.search(r"\b(?:how|what|which|where|so(?: that| as)?) ", text)):
         return (), goals
     asked = tuple(g.removeprefix("neg(").removesuffix(")") for g in goals)
