@@ -25,7 +25,7 @@ from pantarhei.bridge.reasoning.vessels import destinations, liquids
 #: What a value is asked of: a height, a tilt, a way ...
 _VALUE = (r"(?:height|tilt|tilting|angle|way|speed|distance|position|spot|place|amount|pose"
           r"|setting|manner)s?")
-_HOW = (r"(?:(?:far|close|near) (?:from|to) the (?:centre|center|middle)(?: of (?:the )?[a-z]+)?|high|low|far|fast|quick|quickly|slow|slowly|steep|steeply|much|close|near"
+_HOW = (r"(?:(?:far|close|near) (?:from|to) the (?:centre|center|middle|side|edge|rim)(?: of (?:the )?[a-z]+)?|high|low|far|fast|quick|quickly|slow|slowly|steep|steeply|much|close|near"
         r"|tilted|full)")
 #: A value that is asked for ("the best height"), not said ("medium height").
 _BEST = (r"(?:best|right|ideal|optimal|safest|correct|perfect|proper|max|maximum|min|minimum"
@@ -43,10 +43,14 @@ _ASKING_SOURCE = (
     rf"(?:(?:,| and| or|, and|, or) (?:the |a )?{_VALUE})*"      # "the best height and angle"
     rf"(?: (?:to {_ACT}{_WHAT}|(?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT}"
     rf"|for (?:it|pouring|the pour)))?(?= |$)"
+    # a value asked as learners of English order it: "how much angle I must give to the jar"
+    rf"|\bhow much {_VALUE}(?: {_WHO})? (?:must|should|need to|have to|can|do)(?: {_WHO})? (?:give|{_ACT})"
+    rf"(?: (?:to )?(?:it|them|the \w+))?(?= |$|[?.!,])"
     # (not a speed of pouring, which the vocabulary has none of: "how slowly should I go")
     rf"|\bhow(?: (?:very|really))? (?!(?:fast|quick|quickly|slow|slowly) (?:should|do|can|must|would|could|shall)"
     rf" {_WHO} (?:pour|go)\b){_HOW}(?: (?:should|do|can|must|would|could|shall|is) {_WHO}"
-    rf"(?: {_ACT}{_WHAT})?)?(?= |$)"
+    rf"(?: (?:be\b|{_ACT}{_WHAT}))?)?(?= |$)"
+
     rf"|\bhow (?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT}(?= |$)"
     # "how high should the cup be", "how far do I need to tilt"
     rf"|\bhow(?: (?:very|really))? (?!(?:fast|quick|quickly|slow|slowly) )(?={_HOW} )\w+ (?:should|do|does|must|would"
@@ -199,6 +203,10 @@ _CAN_GET = (r"\b(?:can|could) (?:i|we|you) (?:still )?(?:get|put) (it all|all of
 #: horizontal and still get it all out" (so that it comes out).
 _CAN_OUT = (r"(\b(?:can|could) (?:i|we|you) (?:[a-z0-9]+ ){0,12}?)(?:and )?(?:still )?get (it all|all of it|everything"
             r"|every drop|every last drop|all (?:of )?the [a-z]+) out\b(?: of (?:the |a |my )?[a-z]+)?")
+#: ... or still get it in, said after the manner or the value asked: "how far to the side can I be
+#: and still get it all in the bowl" (so that it goes in).
+_STILL_GET = (r"\band still get (it all|all of it|everything|every drop|every last drop|all (?:of )?the [a-z]+|it)"
+              r" (?=(?:in|into|inside)\b)")
 _CAN_EMPTY = (r"\b(?:can|could) (?:i|we|you) (?:still )?(?:empty|drain) (it|(?:the|my) [a-z]+)(?: out)?"
               r"(?: completely| fully| all the way| entirely)? (?=into\b)")
 #: Wanting, compiled when cued: "I need none of it on the table" (so that none goes on it),
@@ -235,6 +243,7 @@ _WANTING_CUED = (
     # "can I still get everything into the bowl", "can I empty the mug completely into the bowl":
     # so that it goes in (and the source empties); asked where a manner is said (if_it_can)
     (Cued(_CAN_GET, (" get ", " put ")), r"so that \1 goes "),
+    (Cued(_STILL_GET, ("still get",)), r"so that \1 goes "),
     (Cued(_CAN_EMPTY, ("empty", "drain")), r"so that \1 empties "),
     (Cued(_CAN_OUT, (" out",)), r"\1so that \2 comes out"),
 )
@@ -302,7 +311,7 @@ def if_it_can(text: str, goals: tuple[str, ...], manners: bool) -> tuple[tuple[s
     down at the edge without hitting the bowl?") asks whether the outcome
     happens there; said of no manner ("can I pour without spilling?") it
     wants the outcome, which a plan finds."""
-    if not (goals and (" without " in f" {text} " or re.search(f"{_CAN_GET}|{_CAN_EMPTY}|{_CAN_OUT}", text))
+    if not (goals and (" without " in f" {text} " or re.search(f"{_CAN_GET}|{_CAN_EMPTY}|{_CAN_OUT}|{_STILL_GET}", text))
             and not re.search(r"\b(?:how|what|which|where|so(?: that| as)?) ", text)):
         return (), goals
     asked = tuple(g.removeprefix("neg(").removesuffix(")") for g in goals)

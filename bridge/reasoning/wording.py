@@ -92,7 +92,8 @@ _CHAT = {"u": "you", "ur": "your", "wat": "what", "wut": "what", "wot": "what", 
          "rly": "really", "lite": "light", "b4": "before", "frm": "from", "alot": "a lot",
          "tiped": "tipped", "tipd": "tipped", "evrywhere": "everywhere", "evry": "every",
          "pls": "please", "plz": "please", "abt": "about", "shud": "should", "wud": "would",
-         "outta": "out of", "kinda": "kind of", "tho": "though", "cuz": "because", "coz": "because"}
+         "outta": "out of", "kinda": "kind of", "tho": "though", "cuz": "because", "coz": "because",
+         "cn": "can", "cud": "could", "shld": "should"}
 _CHATTED = (rf"\b(?:{'|'.join(_CHAT)})\b|\by(?= (?:does|do|did|is|are|was|would|will|can|not)\b)"
             r"|\bits(?= (?:too|to|so|very(?! (?:edge|rim|lip|brim|border|middle|centre|center|top|side)\b)|really|right|just|not|over|at|in|on|upside|nearly|almost|only"
             r"|going|held|[a-z]+ed)\b)")
