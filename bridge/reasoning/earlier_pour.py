@@ -4,33 +4,44 @@ is read alone, so the pour told is not read, and said back; "is it better"
 after it asks about the outcome told (whether it splashes), not the three
 expectations of "is it better to", as do "will that fix it" and a scene said to
 stop it ("yesterday the bowl slid off the tray when I emptied the kettle into it,
-would a heavier bowl stop that?": with a heavier bowl, does the bowl slide)."""
+would a heavier bowl stop that?": with a heavier bowl, does the bowl slide); a value asked
+after it ("on my last try nothing came out at all, how far do I need to go?") wants the
+outcome told not to happen again (here, that it comes out)."""
 from __future__ import annotations
 
 import re
 
 #: When the pour told was: "last time", "yesterday", "previously", "the other day".
-_WHEN = (r"(?:the )?(?:last time|previous time|first time|other day|yesterday|previously|earlier|before"
-         r"|last night|last week|this morning)")
+_WHEN = (r"(?:(?:the )?(?:last time|previous time|first time|other day|yesterday|previously|earlier|before"
+         r"|last night|last week|this morning)|(?:on )?(?:my|the) (?:last|previous|first) (?:try|attempt|go))")
 #: Its outcome, told in the past ("and it splashed"), with the question that asks it again.
 _TOLD = {"splash": "does it splash", "spill": "does it spill", "drip": "does it drip",
          "overflow": "does it overflow", "slosh": "does it slosh out", "tip": "does the bowl tip over",
          "slid": "does the bowl slide", "slide": "does the bowl slide", "mov": "does the bowl move",
          "miss": "does it miss", "bounc": "does it bounce out", "flip": "does the bowl tip over",
-         "fell": "does the bowl tip over", "skid": "does the bowl slide"}
+         "fell": "does the bowl tip over", "skid": "does the bowl slide", "knock": "does the jug hit the bowl",
+         "came out": "does it come out"}
+#: What is wanted again where a value is asked after the outcome told: it not happening, or,
+#: where nothing came out, it coming out.
+_AGAIN = {"came out": "it comes out", "tip": "the bowl does not tip over", "flip": "the bowl does not tip over",
+          "fell": "the bowl does not tip over", "slid": "the bowl does not slide", "skid": "the bowl does not slide",
+          "mov": "the bowl does not move", "knock": "the jug does not hit the bowl", "bounc": "it does not bounce out",
+          "slosh": "it does not slosh out", "spilt": "it does not spill"}
+#: A value asked after it, with no goal said: "how far do I need to go".
+_VALUE_ASKED = re.compile(r"^(?:so )?(?:how (?:far|high|low|much|close|steep|steeply|fast|slow|slowly)|what|which)\b(?!.*\b(?:so|without)\b)")
 #: Who did what the earlier pour did: "it", "the bowl", "half of it".
-_WHO = r"(?:it|the (?:bowl|liquid|water|milk|[a-z]+)|(?:half|some|most|all|a lot|part|much) of it)"
+_WHO = r"(?:it|the (?:bowl|liquid|water|milk|[a-z]+)|(?:half|some|most|all|a lot|part|much) of it|(?P<none>nothing|none of it))"
 #: What it did: "splashed", "slid off the edge of the tray", "bounced out".
-_OUT = r"(?P<out>splash|spill|spilt|drip|overflow|slosh|tip|slid|mov|miss|bounc|flip|fell|skid)\w*"
+_OUT = r"(?P<out>splash|spill|spilt|drip|overflow|slosh|tip|slid|mov|miss|bounc|flip|fell|skid|knock|came out)\w*"
 #: What may come after an earlier pour told: the question.
-_NEXT = r" *[,;.] *(?=(?:now|this time|if|so|what|will|would|does|do|is|can|should)\b)"
+_NEXT = r" *[,;.] *(?=(?:now|this time|if|so|what|which|how|will|would|does|do|is|can|should)\b)"
 _POUR = re.compile(
     rf"^{_WHEN},? (?:when )?(?:i|we|you|they|he|she|the robot|my robot) (?:poured|pour|held|tilted|tipped|did it)"
     rf"(?P<how>[^,;.?!]*?)(?: and {_WHO} {_OUT}(?: over| out| everywhere)?)?{_NEXT}")
 #: Its outcome told first, the pour after it: "yesterday the bowl slid off the tray when I emptied the kettle into it".
 _OUTCOME_FIRST = re.compile(
-    rf"^{_WHEN},? {_WHO} {_OUT}[^,;.?!]*? when (?:i|we|you|they|he|she|the robot|my robot)"
-    rf" (?:poured|emptied|tipped|tilted|held|did it)[^,;.?!]*?{_NEXT}")
+    rf"^{_WHEN},? {_WHO} {_OUT}[^,;.?!]*?(?: when (?:i|we|you|they|he|she|the robot|my robot)"
+    rf" (?:poured|emptied|tipped|tilted|held|did it)[^,;.?!]*?)?{_NEXT}")
 #: Asked whether the pour now is better, or ends what happened: about the outcome told.
 _BETTER = re.compile(r"\b(?:is|will|would) (?:it|that|this) (?:be )?(?:any )?better\b"
                      r"|\b(?:will|would|does|could|can) (?:that|this|it) (?:fix|stop|prevent|solve) (?:it|that|this)\b")
@@ -53,6 +64,10 @@ def told(text: str) -> tuple[str, tuple[str, ...]]:
         asked = _BETTER.search(rest).group(0)
         rest = _BETTER.sub(_TOLD[verb], rest, count=1)
         said.append(f"{asked}: read as {_TOLD[verb]}, as the earlier pour did")
+    elif out and _VALUE_ASKED.match(rest) and (m.group("none") or out != "came out"):
+        wanted = _AGAIN.get(verb, f"it does not {verb}")
+        rest = f"{rest.rstrip(' ?.!')} so that {wanted}?"
+        said.append(f"{rest.split(' so that ')[0]}: read as asked so that {wanted}, as the earlier pour did not")
     elif out and _STOPS.search(rest):
         stops = _STOPS.search(rest)
         rest = f"{rest[:stops.start()]}with {stops.group('scene')}, {_TOLD[verb]}{rest[stops.end():]}"
