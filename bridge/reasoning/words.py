@@ -42,6 +42,7 @@ from pantarhei.bridge.reasoning.off_centre import LENGTHS as _LENGTHS, OFF_CENTR
 from pantarhei.bridge.reasoning.properties import SURFACE_SAID, Levels, Surfaces, Values
 from pantarhei.bridge.reasoning.ramps import Ramps
 from pantarhei.bridge.reasoning.speeds import SPEEDS
+from pantarhei.bridge.reasoning.tilt_amounts import TILT_AMOUNTS
 
 #: Value words an intensifier may raise to "very" ("incredibly high" is very high; a value
 #: with no "very" of its own is the value: "incredibly heavy" is heavy). "really" is a
@@ -328,6 +329,7 @@ PHRASES: tuple[tuple, ...] = (
     ("steeply tilted", (r"re:\b(?:tilt|tip|turn|lean)\w*(?: it| the \w+)? (?:to|until|till|so|so that)"
                         r"(?: it is| it's| its)? (?:lying )?(?:the )?horizontal(?:ly)?\b",)),
     ("steeply tilted", ("at a steep angle", "at a sharp angle", "horizontal", "horizontally")),
+    *TILT_AMOUNTS,            # "with much angle", "a strong tilt" (tilt_amounts.py)
     ("slightly", ("gently", "barely")),
     ("halfway", ("half way",)),
     ("fast", ("quickly", "quick", "rapidly", "swiftly", "briskly", "rapid", "swift", "brisk", "speedy",
