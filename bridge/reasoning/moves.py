@@ -19,7 +19,15 @@ _MANNER = ("from|with|over|into|onto|low|high|very|steeply|slightly|halfway|tilt
 _GLIDE = (r"(?:swing(?:s|ing)?|swung|swoop\w*|glid(?:e|es|ed|ing)|sweep(?:s|ing)?|swept"
           r"|eas(?:e|es|ed|ing)|carr(?:y|ies|ied|ying))")
 
+#: Someone pouring, done or finished with it: "when I'm done pouring", "once she has finished pouring".
+_DONE = r"(?: (?!(?:and|then|but|or|pour\w*)\b)\w+){0,2} (?:done|finished|through)(?: with(?: the)?)? pour(?:s|ed|ing)?\b"
+
 MOVES: tuple[tuple, ...] = (
+    # done pouring: after the pour ("when I'm done pouring, pull it away fast"); a move away said
+    # before it is done is the move away, as the vocabulary's pour ends when the source moves away
+    ("after pour", (rf"re(done|finish|through):\b(?:when|once|after|as soon as){_DONE}",)),
+    ("hedge", (rf"re(done|finish|through):\b(?:before|until|till){_DONE}",),
+     "read as nothing: the vocabulary's pour ends when the source moves away; how much is poured by then is not said"),
     # where the pour itself starts is where it pours, not the start pose before the move in
     ("pour", (r"re(starts|begins|happens|takes place):\bthe pour(?:ing)? (?:starts|begins|happens|takes place)(?= (?:at|from)\b)",)),
     # on the way in or out: the move in or away ("much faster on the way out")
