@@ -26,7 +26,7 @@ MOVES: tuple[tuple, ...] = (
     # done pouring: after the pour ("when I'm done pouring, pull it away fast"); a move away said
     # before it is done is the move away, as the vocabulary's pour ends when the source moves away
     ("after pour", (rf"re(done|finish|through):\b(?:when|once|after|as soon as){_DONE}",)),
-    ("hedge", (rf"re(done|finish|through):\b(?:before|until|till){_DONE}",),
+    ("hedge", (rf"re(done|finish|through):\b(?:before|until){_DONE}",),
      "read as nothing: the vocabulary's pour ends when the source moves away; how much is poured by then is not said"),
     # where the pour itself starts is where it pours, not the start pose before the move in
     ("pour", (r"re(starts|begins|happens|takes place):\bthe pour(?:ing)? (?:starts|begins|happens|takes place)(?= (?:at|from)\b)",)),
