@@ -42,16 +42,16 @@ _ASKING_SOURCE = (
     rf"|\b(?:(?:what|which)(?: is| be)?(?: the| a)?(?: {_BEST})?|(?:the |a )?{_BEST}) (?:(?:pour|pouring|approach|retreat) )?{_VALUE}(?: {_VALUE})?"   # "tilt angle", "pour height"
     rf"(?:(?:,| and| or|, and|, or) (?:the |a )?{_VALUE})*"      # "the best height and angle"
     rf"(?: (?:to {_ACT}{_WHAT}|(?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT}"
-    rf"|for (?:it|pouring|the pour)))?(?= |$)"
+    rf"|for (?:it|pouring|the pour)))?(?=[ ?.!,;:]|$)"
     # a value asked as learners of English order it: "how much angle I must give to the jar"
     rf"|\bhow much {_VALUE}(?: {_WHO})? (?:must|should|need to|have to|can|do)(?: {_WHO})? (?:give|{_ACT})"
     rf"(?: (?:to )?(?:it|them|the \w+))?(?= |$|[?.!,])"
     # (not a speed of pouring, which the vocabulary has none of: "how slowly should I go")
     rf"|\bhow(?: (?:very|really))? (?!(?:fast|quick|quickly|slow|slowly) (?:should|do|can|must|would|could|shall)"
     rf" {_WHO} (?:pour|go)\b){_HOW}(?: (?:should|do|can|must|would|could|shall|is) {_WHO}"
-    rf"(?: (?:be\b|{_ACT}{_WHAT}))?)?(?= |$)"
+    rf"(?: (?:be\b|{_ACT}{_WHAT}))?)?(?=[ ?.!,;:]|$)"
 
-    rf"|\bhow (?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT}(?= |$)"
+    rf"|\bhow (?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT}(?=[ ?.!,;:]|$)"
     # "how high should the cup be", "how far do I need to tilt"
     rf"|\bhow(?: (?:very|really))? (?!(?:fast|quick|quickly|slow|slowly) )(?={_HOW} )\w+ (?:should|do|does|must|would"
     rf"|could|will) (?:{_WHO}|the \w+) (?:be|(?:need to |have to )?{_ACT}{_WHAT})(?=[ ?.!,]|$)"
@@ -62,7 +62,7 @@ _ASKING_SOURCE = (
     # where it should be: "where should the spout be", "where should I hold the jug"
     rf"|\bwhere (?:should|do|can|must|would|could|shall) (?:{_WHO}|the \w+) (?:be|{_ACT}{_WHAT})(?=[ ?.!,]|$)"
     # whether a value is there that reaches a goal: "is there any height where nothing splashes"
-    rf"|\bis there (?:any|an?|some|one) {_VALUE}(?: to {_ACT}{_WHAT})?(?= |$)"
+    rf"|\bis there (?:any|an?|some|one) {_VALUE}(?: to {_ACT}{_WHAT})?(?=[ ?.!,;:]|$)"
     # what a body needs: "what friction does it need", "what weight would the bowl need"
     rf"|\bwhat (?:{_VALUE}|friction|weight|mass|bounciness) (?:does|do|would|should|will) (?:it|they|the \w+) need(?=[ ?.!,]|$)"
     # what to avoid: "what should I avoid", "what should I not do"
@@ -133,6 +133,9 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\bfor (?:not|never) (?:make|making|let|letting) (it|them|the [a-z]+) (?=[a-z]+)", r"so that \1 does not "),
     (r"\bfor (?:not|never|no) (?=(?:make|making|spill|splash|drip|tip|slid|mov|hit|touch|overflow|toppl)[a-z]*\b)",
      "so that it does not "),
+    # "to avoid drips outside the target", "prevent any spills": so that it does not drip, spill
+    (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|minimi[sz]e|minimi[sz]ing|reduce|reducing)"
+     r" (?:any )?(drip|spill|splash|leak|overflow)(?:s|es)?\b(?! of\b)", r"so that it does not \1"),
     # "to avoid spilling", "prevent splashing", "minimise dripping"
     (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|minimi[sz]e|minimi[sz]ing|reduce|reducing)"
      r" (?=(?:any )?[a-z]+ing\b)", "so that it does not "),
