@@ -20,9 +20,10 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      rf"|your |its |their |this |that )?(?!source\b)(?:[a-z]+ )?{OUT_OF}\b)"
      rf"|escap\w*(?= (?:the |a |an |my |your |its )?(?!source\b)(?:[a-z]+ )?{OUT_OF}\b)"
      # thrown out, no bowl said: out of the destination, as people who pour read it ("splash out")
-     r"|(?:spill\w*|spilt|splash\w*|splatter\w*|slosh\w*|slop\w*)(?: back)? out\b(?! of\b| over\b"
-     # (out onto the table: where it lands, a spill)
-     r"| (?:on|onto|all over) (?:the |a |my )?(?:table|counter|countertop|worktop|floor|bench|tablecloth|ground)\b)"
+     r"|(?:splash\w*|splatter\w*|slosh\w*|slop\w*)(?: back)? out\b(?! of\b| over\b)"
+     # (spilled out onto the table: where it lands, a spill; splashed out onto it was thrown out of the bowl)
+     r"|(?:spill\w*|spilt)(?: back)? out\b(?! of\b| over\b| (?:on|onto|all over) (?:the |a |my )?"
+     r"(?:table|counter|countertop|worktop|floor|bench|tablecloth|ground)\b)"
      # thrown outside it: "splash outside the bowl", "make splash outside" (landing or dripping outside is a spill)
      r"|(?:makes? (?:a |any |big |much )*)?(?:splash\w*|splatter\w*|slosh\w*|slop\w*) outside\b"
      # thrown back up out of the bowl: "splash back", "splash-back expected?"
