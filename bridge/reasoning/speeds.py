@@ -1,6 +1,7 @@
 """How fast the source moves in and away, said in other words, part of
 words.py's PHRASES: a speed said with "speed" ("at high speed" is fast),
-a quick in-and-out (both moves; "fast in fast out"), moving fast with no
+a quick in-and-out (both moves; "fast in fast out"), a move quick by its
+verb ("darts right out": the move away fast), moving fast with no
 way said (both moves), "the robot come fastly" (it comes in), and tipping
 the source fast or slowly, which is the move into the pouring pose: it
 tilts the source as it goes ("tip it really slowly", "a slow steady tilt" is a slow approach).
@@ -20,6 +21,8 @@ POURING_SPEED = (r"\b(?:speed|rate|pace|velocity)s? (?:(?:of|for) |(?:(?:should|
 
 #: How a tilt is made, said beside its speed ("a slow steady tilt"): its speed is what is read.
 _MANNER = r"(?:steady|smooth|gentle|careful|even|controlled|gradual|slow|fast|quick|sharp|sudden|rapid)"
+#: Verbs of a move quick in itself.
+_DASH = r"(?:dart(?:s|ed|ing)?|zip(?:s|ped|ping)?|zoom(?:s|ed|ing)?|whizz(?:es|ed|ing)?|fling(?:s|ing)?|flung)"
 _NO_RATE = r"(?! (?:rate|speed|velocity|pace)\b)"        # a speed of tilting: refused
 _SAID = "read as the move into the pouring pose, which tilts the source as it goes"
 
@@ -84,6 +87,14 @@ SPEEDS: tuple[tuple, ...] = (
     ("approach slowly", (r"re(slow|gradual|steadi):\b(?:tilt|tip)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
                          r" (?:slow(?:ly)?|gradually|steadily)\b(?! (?:than|as)\b)",
                          r"re(slow|gradual|steadi):\b(?:slowly|gradually|steadily) (?:tilt|tip)\w*\b")),
+    # a move that is quick by its verb: darted, zipped, flung in or out ("flings it over the bowl",
+    # "darts right out again"): the move in or away, fast
+    ("approach fast ; retreat fast ; pour", (rf"re(dart|zip|zoom|whizz):\b{_DASH}(?: it| the \w+| them)? in(?: and|,)?"
+                                             r" (?:then )?out\b",)),
+    ("approach fast", (rf"re(dart|zip|zoom|whizz|fling|flung):\b{_DASH}(?: it| the \w+| them)?(?: right| straight)?"
+                       r" (?:in|over|into)\b",)),
+    ("retreat fast", (rf"re(dart|zip|zoom|whizz|fling|flung):\b{_DASH}(?: it| the \w+| them)?(?: right| straight)?"
+                      r" (?:out|away|back)\b(?! of\b)",)),
     # a tilt said slow or quick ("a slow steady tilt", "a quick tip"): the move into the pouring pose
     ("approach slowly ; pour", (rf"re(slow|gradual):\b(?:slow|gradual)(?:,? (?:and )?{_MANNER})* (?:tilt|tip)s?\b{_NO_RATE}",), _SAID),
     ("approach fast ; pour", (rf"re(fast|quick|rapid|sudden):\b(?:fast|quick|rapid|sudden)(?:,? (?:and )?{_MANNER})* (?:tilt|tip)s?\b"
