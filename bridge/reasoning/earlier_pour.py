@@ -29,6 +29,8 @@ _AGAIN = {"came out": "it comes out", "tip": "the bowl does not tip over", "flip
           "slosh": "it does not slosh out", "spilt": "it does not spill"}
 #: A value asked after it, with no goal said: "how far do I need to go".
 _VALUE_ASKED = re.compile(r"^(?:so )?(?:how (?:far|high|low|much|close|steep|steeply|fast|slow|slowly)|what|which)\b(?!.*\b(?:so|without)\b)")
+#: How to keep it from happening again, asked: "how do I avoid that" (how should I pour so that it does not).
+_AVOID = re.compile(r"^how (?:do|can|could|should|would) (?:i|we|you) (?:avoid|fix|stop|prevent) (?:that|this|it)\b")
 #: Who did what the earlier pour did: "it", "the bowl", "half of it".
 _WHO = r"(?:it|the (?:bowl|liquid|water|milk|[a-z]+)|(?:half|some|most|all|a lot|part|much) of it|(?P<none>nothing|none of it))"
 #: What it did: "splashed", "slid off the edge of the tray", "bounced out".
@@ -37,7 +39,7 @@ _OUT = r"(?P<out>splash|spill|spilt|drip|overflow|slosh|tip|slid|mov|miss|bounc|
 _NEXT = r" *[,;.] *(?=(?:now|this time|if|so|what|which|how|will|would|does|do|is|can|should)\b)"
 _POUR = re.compile(
     rf"^{_WHEN},? (?:when )?(?:i|we|you|they|he|she|the robot|my robot) (?:poured|pour|held|tilted|tipped|did it)"
-    rf"(?P<how>[^,;.?!]*?)(?: and {_WHO} {_OUT}(?: over| out| everywhere)?)?{_NEXT}")
+    rf"(?P<how>[^,;.?!]*?)(?: and {_WHO} (?:[a-z]+ and )?{_OUT}(?P<part> over| out| everywhere)?)?{_NEXT}")
 #: Its outcome told first, the pour after it: "yesterday the bowl slid off the tray when I emptied the kettle into it".
 _OUTCOME_FIRST = re.compile(
     rf"^{_WHEN},? {_WHO} {_OUT}[^,;.?!]*?(?: when (?:i|we|you|they|he|she|the robot|my robot)"
@@ -64,10 +66,11 @@ def told(text: str) -> tuple[str, tuple[str, ...]]:
         asked = _BETTER.search(rest).group(0)
         rest = _BETTER.sub(_TOLD[verb], rest, count=1)
         said.append(f"{asked}: read as {_TOLD[verb]}, as the earlier pour did")
-    elif out and _VALUE_ASKED.match(rest) and (m.group("none") or out != "came out"):
-        wanted = _AGAIN.get(verb, f"it does not {verb}")
-        rest = f"{rest.rstrip(' ?.!')} so that {wanted}?"
-        said.append(f"{rest.split(' so that ')[0]}: read as asked so that {wanted}, as the earlier pour did not")
+    elif out and (_VALUE_ASKED.match(rest) or _AVOID.match(rest)) and (m.group("none") or out != "came out"):
+        wanted = _AGAIN.get(verb, f"it does not {verb}{m.groupdict().get('part') or ''}")
+        asked = rest.rstrip(" ?.!")
+        rest = f"{_AVOID.sub('how should i pour', asked)} so that {wanted}?"
+        said.append(f"{asked}: read as asked so that {wanted}, as the earlier pour did not")
     elif out and _STOPS.search(rest):
         stops = _STOPS.search(rest)
         rest = f"{rest[:stops.start()]}with {stops.group('scene')}, {_TOLD[verb]}{rest[stops.end():]}"
