@@ -15,6 +15,10 @@ likelihoods from every pour pooled):
   question says (a proposition or a valid pair, the antecedents the
   curiosity chooses among), a batch of the curiosity's size each; the
   rules' bodies are those antecedents;
+* `random_valid`: uniformly random valid antecedents of the whole
+  vocabulary, a batch of the curiosity's size each (random exploration,
+  as `pantarhei evaluate` runs it); the rules' bodies are those
+  antecedents;
 * `designed`: the one-at-a-time experiment: the ordinary pour and each
   proposition alone, one pour each in turn, round after round; the rules'
   bodies are those;
@@ -51,7 +55,7 @@ from typing import Callable, Sequence
 import numpy as np
 
 from benchmarks.knowledge_methods import (METHODS, Chosen, curiosity, designed, map_elites_pours,
-                                          random_bodies, uncertainty)
+                                          random_bodies, random_valid, uncertainty)
 
 MEASURES = (("contrast_accuracy", "contrast accuracy"), ("accuracy", "clear accuracy"),
             ("calibration", "calibration"), ("coherent", "coherent"),
@@ -124,7 +128,8 @@ def measure(oracle: str, seeds: Sequence[int], budgets: Sequence[int], store: Pa
                 if method == "curiosity":
                     chosen = curiosity(seed, top, oracle, store, run, settings)
                 else:
-                    make = {"random": random_bodies, "designed": designed,
+                    make = {"random": random_bodies, "random_valid": random_valid,
+                            "designed": designed,
                             "uncertainty": uncertainty, "map_elites": map_elites_pours}[method]
                     chosen = make(seed, top, run)
                 for n in wanted:

@@ -14,7 +14,7 @@ from typing import Callable
 import numpy as np
 
 #: The methods, in the order the report shows them.
-METHODS = ("curiosity", "random", "designed", "uncertainty", "map_elites")
+METHODS = ("curiosity", "random", "random_valid", "designed", "uncertainty", "map_elites")
 
 
 @dataclass
@@ -75,6 +75,25 @@ def random_bodies(seed: int, budget: int, run) -> Chosen:
 
     def bodies(n: int) -> list[tuple[str, ...]]:
         return steps[: max(1, n // batch)]
+    return Chosen(P, S, bodies)
+
+
+def random_valid(seed: int, budget: int, run) -> Chosen:
+    """Uniformly random valid antecedents of the whole vocabulary, a batch
+    of the curiosity's size each: random exploration, as `pantarhei
+    evaluate` measures curiosity against."""
+    from pantarhei.bridge.reasoning.valid_scenes import random_antecedents
+    from pantarhei.oracle.generative import sample
+
+    batch = _batch()
+    steps = [tuple(sorted(a)) for a in random_antecedents(_seed(seed, "random valid") % 2**31,
+                                                           -(-budget // batch))]
+    P = np.vstack([sample(list(b), batch, _seed(seed, "random valid", *b))
+                   for b in steps])[:budget]
+    S = run(P)
+
+    def bodies(n: int) -> list[tuple[str, ...]]:
+        return list(dict.fromkeys(steps[: max(1, n // batch)]))
     return Chosen(P, S, bodies)
 
 

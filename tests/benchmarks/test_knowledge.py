@@ -20,6 +20,24 @@ def test_the_designed_experiment_asks_each_proposition_in_turn(tmp_path):
     assert len(rnd.P) == 30 and rnd.bodies(30)[0] == () and len(rnd.bodies(30)) == 30 // knowledge_methods._batch()
 
 
+def test_random_exploration_pours_uniformly_random_valid_antecedents():
+    """Random valid antecedents: a batch each, every pour drawn for its
+    antecedent, the antecedents valid and of many propositions, the same
+    seed the same pours."""
+    from pantarhei.bridge.reasoning.valid_scenes import violations
+    from pantarhei.oracle.generative import in_support
+
+    sim = lambda P: np.zeros((len(P), 9))  # noqa: E731  (the pours only are looked at)
+    batch = knowledge_methods._batch()
+    chosen = knowledge.random_valid(101, 10 * batch, sim)
+    bodies = chosen.bodies(10 * batch)
+    assert len(chosen.P) == 10 * batch and len(bodies) == 10
+    assert all(not violations(b) for b in bodies) and min(map(len, bodies)) > 2
+    for i, b in enumerate(bodies):
+        assert in_support(chosen.P[i * batch:(i + 1) * batch], b).all()
+    assert np.array_equal(knowledge.random_valid(101, 10 * batch, sim).P, chosen.P)
+
+
 def test_curves_table_and_plot(tmp_path):
     knowledge.main(["--oracle", "synthetic", "--seeds", "101", "--budgets", "24,48",
                     "--methods", "curiosity,designed", "--store", str(tmp_path / "s.sqlite"),
