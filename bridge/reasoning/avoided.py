@@ -27,10 +27,11 @@ _TOLD = re.compile(
 #: the bowl flipped, what should i change"): the pour told is not read, its outcome not
 #: happening is wanted.
 _CHANGE = re.compile(
-    rf"^(?P<pour>(?:last time |yesterday |earlier )?(?:i|we|the robot|my robot|the arm) (?:poured|tilted|tipped|held|moved|did)"
+    rf"^(?P<pour>(?:last time |yesterday |earlier )?(?:i|we|the robot|my robot|the arm|(?:my |our |the |a )?(?:kid|son|daughter|child"
+    rf"|friend|partner)|he|she|they) (?:keeps? |always )?(?:poured|pours|pouring|tilted|tipped|held|moved|did)"
     rf"[^,;.?!]*?) and (?P<who>(?:[a-z']+ ){{1,3}}?)(?P<verb>{'|'.join(_VERBS)})(?P<rest>(?: [a-z']+)*?) *[,;.:-]+ *"
-    r"(?P<ask>what (?:should|do|can|could|would) (?:i|we) (?:change|do(?: differently)?)"
-    r"|how (?:do|can|could|should) (?:i|we) (?:fix|avoid|stop|prevent) (?:that|this|it))(?P<end> *[?.!]* *)$")
+    r"(?P<ask>what (?:should|do|does|can|could|would) (?:i|we|he|she|they) (?:change|do(?: differently)?)"
+    r"|how (?:do|does|can|could|should) (?:i|we|he|she|they) (?:fix|avoid|stop|prevent) (?:that|this|it))(?P<end> *[?.!]* *)$")
 _KEPT = {"hitt": "hit", "bump": "bump", "knock": "knock", "slid": "slide", "mov": "move", "tipp": "tip",
          "spill": "spill", "splash": "splash", "dripp": "drip"}
 

@@ -30,7 +30,7 @@ _HOW = (r"(?:(?:far|close|near) (?:from|to) the (?:centre|center|middle|side|edg
 #: A value that is asked for ("the best height"), not said ("medium height").
 _BEST = (r"(?:best|right|ideal|optimal|safest|correct|perfect|proper|max|maximum|min|minimum"
          r"|highest|lowest|steepest)")
-_WHO = r"(?:i|we|you|it|they|the robot|one)"
+_WHO = r"(?:i|we|you|it|they|he|she|the robot|one)"
 _ACT = (r"(?:hold|pour|tilt|keep|put|have|place|go|position|use|do|set|angle|raise|lift|move"
         r"|start|end|tip)")
 _WHAT = r"(?: (?:it|them|the \w+))?(?: (?:from|at|to|up|in))?"
