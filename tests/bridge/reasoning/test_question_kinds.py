@@ -88,6 +88,11 @@ def test_no_word_is_dropped_silently(question):
     ("pour frm high lol", "lol: ignored: laughter as chat types it says nothing of the pour"),
     ("pour alot of milk", "alot: read as a lot"),
     ("with a heavy bowl instead of a light one", "one: read as bowl"),
+    ("hw do i pour without making a mess ngl i always spill", "hw: read as how"),
+    ("hw do i pour without making a mess ngl i always spill",
+     "always spill: ignored: what always happens to the one asking is told of earlier pours; the answer is for the one asked"),
+    ("My soup is pretty thick, does that mean it will come out of the saucepan slower and land more in the bowl?",
+     "will come out of the saucepan slower: not asked: how fast the liquid flows is no expectation the vocabulary checks"),
 ])
 def test_a_word_read_as_another_is_said_back(question, said):
     """Whatever the reader writes otherwise than typed (a contraction typed
