@@ -5,13 +5,23 @@ bottle very strong" are steeply tilted, as "tilt it hard" is
 (everyday.txt); "a little angle" or "a weak tilt" slightly tilted ("a big tilt"
 is refused as a size is: everyday.txt reads it first). An angle
 asked for ("how much angle") is a value asked, not said: left to be read
-as one."""
+as one. A little either side of horizontal ("slightly past horizontal", "a
+little less than horizontal") is steeply tilted still, as horizontal is."""
 from __future__ import annotations
 
 #: Much of a tilt: "much", "a lot of", "a big".
 _MUCH = r"(?:much|a lot of|lots of|a great|great|a strong|strong|plenty of)"
 _LITTLE = r"(?:a little|little|a weak|weak)"
 _TILTING = r"(?:angle|tilt|tilting|tip|tipping|inclination)"
+
+#: A little on either side: "slightly past", "a little less than", "just short of".
+_NEAR = (r"(?:just |only )?(?:slightly|a (?:little |tiny )?bit|a little|a tad|just)(?: (?:less|more) than| past| beyond"
+         r"| over| under| below| short of| shy of)")
+
+#: A little either side of horizontal (90 degrees): still steeply tilted (80 to 120 degrees); read
+#: before a comparison takes "less than" (words.py).
+NEAR_HORIZONTAL = ("steeply tilted", (rf"re(horizontal):\b{_NEAR} (?:the )?horizontal(?:ly)?\b",),
+                   "read as steeply tilted: a little either side of horizontal (90 degrees) is within 80 to 120 degrees")
 
 TILT_AMOUNTS: tuple[tuple, ...] = (
     ("steeply tilted", (rf"re(angle|tilt|tip|inclin):(?<!how )\b(?:with |at )?{_MUCH} {_TILTING}\b",

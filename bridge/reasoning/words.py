@@ -42,7 +42,7 @@ from pantarhei.bridge.reasoning.off_centre import LENGTHS as _LENGTHS, OFF_CENTR
 from pantarhei.bridge.reasoning.properties import SURFACE_SAID, Levels, Surfaces, Values
 from pantarhei.bridge.reasoning.ramps import Ramps
 from pantarhei.bridge.reasoning.speeds import SPEEDS
-from pantarhei.bridge.reasoning.tilt_amounts import TILT_AMOUNTS
+from pantarhei.bridge.reasoning.tilt_amounts import NEAR_HORIZONTAL, TILT_AMOUNTS
 
 #: Value words an intensifier may raise to "very" ("incredibly high" is very high; a value
 #: with no "very" of its own is the value: "incredibly heavy" is heavy). "really" is a
@@ -54,6 +54,7 @@ _RIM = (r"(?:the )?(?:destination |bowl )?(?:rim|edge|lip|brim|top)\b(?: of (?:t
         r"(?:destination|bowl)\b)?")
 
 PHRASES: tuple[tuple, ...] = (
+    NEAR_HORIZONTAL,          # "a little less than horizontal": steeply tilted (tilt_amounts.py)
     ("hedge", ("how much", "how many",    # asks, does not say: "how much liquid spills"
                "nearly",                   # a hedge (its stem would be "near")
                r"re:\bbetween(?= -?\d+(?:\.\d+)? and -?\d)")),   # a range: quantities.py's
@@ -302,6 +303,7 @@ PHRASES: tuple[tuple, ...] = (
                                           r"re:\btilt(?:s|ed|ing)?(?: it| the \w+)? (?:backwards?|back(?= at -\d))\b")),
     # "give it a little tilt": tilt it a little
     ("hedge", (r"re:\b(?:give|gives|gave|giving) (?:it|the \w+)(?= (?:a|an) (?:\w+ )?tilt\b)",)),
+    *TILT_AMOUNTS,            # "with much angle", "a strong tilt" (tilt_amounts.py)
     # leaning, angling, inclining the source: tilting it
     ("tilt", (r"re:\b(?:lean|angle|incline)(?:s|d|ed|ing|t)?\b(?= (?:it|them|the \w+)\b)",)),
     ("slightly tilted", (r"re:\btilt(?:s|ed|ing)?(?: (?:it|the \w+))?(?: only| just)? "
@@ -329,7 +331,6 @@ PHRASES: tuple[tuple, ...] = (
     ("steeply tilted", (r"re:\b(?:tilt|tip|turn|lean)\w*(?: it| the \w+)? (?:to|until|till|so|so that)"
                         r"(?: it is| it's| its)? (?:lying )?(?:the )?horizontal(?:ly)?\b",)),
     ("steeply tilted", ("at a steep angle", "at a sharp angle", "horizontal", "horizontally")),
-    *TILT_AMOUNTS,            # "with much angle", "a strong tilt" (tilt_amounts.py)
     ("slightly", ("gently", "barely")),
     ("halfway", ("half way",)),
     ("fast", ("quickly", "quick", "rapidly", "swiftly", "briskly", "rapid", "swift", "brisk", "speedy",
