@@ -70,7 +70,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:go|goes|going|went) out\b(?! of (?:the |a |an |my )?(?!source\b)(?:[a-z]+ )?(?:bowl|destination)\b)"
      # (not how full the source is: "a nearly empty jug", "an empty cup")
      r"|(?<!nearly )(?<!almost )(?<!mostly )(?<!practically )(?<!all but )(?<!half )(?<!\ban )(?<!\ba )(?<!\bthe )"
-     r"empt(?:y|ies|ied)(?: out)?|(?:end|ends) up (?:totally |completely |fully )?empty|leav(?:e|es|ing) (?:the|it)\b|exit\w*", ("liquid_leaves_source",), False),
+     r"empt(?:y|ies|ied)(?: out)?|(?:(?:end|ends) up|becomes?|gets?) (?:totally |completely |fully )?empty(?: (?:completely|fully|totally))?|leav(?:e|es|ing) (?:the|it)\b|exit\w*", ("liquid_leaves_source",), False),
     # clinging to a container not the bowl: kept in the source ("make it into the bowl or cling to the jar")
     (r"(?:stick|sticks|sticking|stuck|cling|clings|clinging|clung) to"
      r"(?!(?: [a-z]+){0,2}? (?:bowl|bowls|destination|target|rim|edge|top|sides?|walls?|brim|lip|bottom|surface|it|them)\b)"

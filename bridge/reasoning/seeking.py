@@ -126,6 +126,9 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     # a value there that reaches a goal: "is there any height where the water never splashes" (so that it does not)
     (rf"\b(is there (?:any|an?|some|one) {_VALUE}) (?:where|at which|for which|with which|in which)"
      r" (?=(?:it|they|the [a-z]+|nothing|none|no [a-z]+) )", r"\1 so that "),
+    # "without any on the counter": so that none goes on it (a place the liquid lands, a spill)
+    (r"\bwithout (?:any|a drop|a single drop)(?: of it| liquid| water)? (?=(?:on|onto|all over) (?:the |a |my )?"
+     r"(?:table|tablecloth|counter|countertop|worktop|floor|bench|stove|ground)\b)", "so that none goes "),
     # "avoids the cup hitting the bowl", "prevent the bowl sliding", "stop the mug clinking"
     (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|stop|stops|stopping) (it|them|the [a-z]+)"
      r" (?=[a-z]+ing\b)", r"so that \1 does not "),
@@ -224,6 +227,10 @@ _WANTING_CUED = (
     # "I want to get all of the syrup out of the cup and into the bowl": so that the cup empties and it goes in
     (Cued(r"\b(?:i|we) (?:want|need|would like) to get (it all|all of it|everything|all (?:of )?the [a-z]+) out of"
           r" ((?:the|my|a) [a-z]+) and (?=(?:in|into|inside)\b)", (" get ",)), r"so that \2 empties and so that \1 goes "),
+    # "I want every last drop out of the measuring cup and into the bowl": the same, said without "get"
+    (Cued(r"\b(?:i|we) (?:want|need|would like) (every last drop|every drop|it all|all of it|everything|all (?:of )?the [a-z]+)"
+          r" out of ((?:the|my|a) (?:[a-z]+ )?[a-z]+) and (?=(?:in|into|inside)\b)", (" out of ",)),
+     r"so that \2 empties and so that \1 goes "),
     # "... and none on the table", wanted beside another: so that none goes on it
     (Cued(r"\b((?:want|need|like|have|so that)\b.*\b(?:and|with)) (none|nothing)(?: of it)? (?=(?:on|onto|all over) )",
           (" and none", " and nothing", " with nothing", " with none")), r"\1 so that \2 goes "),
