@@ -1,22 +1,29 @@
 """Which of two scenes set against each other an outcome happens to, or
 happens to more ("silicone bowl vs enamel bowl - which one slides more",
+"does one of them slide and not the other",
 said first: "which spills less: a slow tilt vs a fast one"):
 asked of the scene said first, the other being said back as not read
 (comparisons.py), as "does it slide"; "which" alone too, its verb inflected
 and said with how much ("which splashes less"). "Compare" before them is the frame
 ("compare: 30 cm vs 5 cm"), and the first named again by its number
-after them ("how much more spill at 30") is the one read, said back."""
+after them ("how much more spill at 30"), or by how its number ranks
+against the other's ("20 degrees vs 160 degrees ... at the smaller
+angle"), is the one read, said back; the other named so is refused."""
 from __future__ import annotations
 
 import re
 
 from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.reasoning.numerals import NUMBER_WORDS
 
 _SET_AGAINST = re.compile(r"\b(?:vs|versus|compared (?:to|with))\b")
 _WHICH = re.compile(r"\bwhich (?:(?:one|of them|of the two|bowl|cup)(?: of them)? (?:will |would |is going to )?"
                     r"(?P<verb>[a-z]+?)(?P<ending>es|s)?\b(?P<how> (?:more|less|the most|the least|most|least|worse|better)\b)?"
                     # "which" alone: its verb inflected and said with how much ("which splashes less")
                     r"|(?P<verb2>[a-z]+?)(?P<ending2>es|s)\b(?P<how2> (?:more|less|the most|the least|most|least)\b))")
+
+
+_ONE_OF = re.compile(r"\b(?:does|do|will|would|can) one of them (?P<verb>[a-z]+)\b(?: (?:and|but) not the other\b)?")
 
 
 _COMPARE = re.compile(r"^(?:let's |lets |please )?compar(?:e|ing)\b *:? *")
@@ -35,13 +42,57 @@ def which_one(text: str) -> tuple[str, tuple[str, ...]]:
         set_against = _SET_AGAINST.search(text)
     if set_against:
         text, said = _first_again(text, set_against, said)
+        text, said = _ranked(text, set_against, said)
     m = (_WHICH.search(text, set_against.end()) or _asked_first(text[:set_against.start()])) if set_against else None
+    one = _ONE_OF.search(text, set_against.end()) if set_against and m is None else None
+    if one:             # "does one of them slide and not the other": does it slide, of the first
+        return (text[:one.start()] + f"does it {one.group('verb')}" + text[one.end():],
+                (*said, f"{one.group(0)}: read as does it {one.group('verb')}, of the one said first"))
     if m is None:
         return text, said
     said_verb, ending = (m.group("verb"), m.group("ending")) if m.group("verb") else (m.group("verb2"), m.group("ending2"))
     verb = said_verb + ("e" if ending == "es" and not re.search(r"(?:sh|ch|ss|x)$", said_verb) else "")
     return (text[:m.start()] + f"does it {verb}" + text[m.end():],
             (*said, f"{m.group(0)}: read as does it {verb}, of the one said first"))
+
+
+#: One of two scenes named by how its number ranks: "at the smaller angle", "for the higher one".
+_RANKED = re.compile(r"\b(?:(?:at|for|with|in) )?the (smaller|lower|shallower|lesser|larger|bigger|higher|steeper|greater)"
+                     r" (?:angle|tilt|one|height|value|number)\b")
+_SMALLER = {"smaller", "lower", "shallower", "lesser"}
+
+
+def _ranked(text: str, set_against: re.Match, said: tuple[str, ...]) -> tuple[str, tuple[str, ...]]:
+    """`text` with the scene said first named by how its number ranks against the other's ("20 degrees
+    vs 160 degrees ... at the smaller angle"), read as nothing and said back; UserError where it names
+    the other, which is not read."""
+    m = _RANKED.search(text, set_against.end())
+    clause = re.search(r"[,;:?!.] ", text[set_against.end():])
+    if m is None or clause is None:
+        return text, said
+    first, other = _value(text[:set_against.start()]), _value(text[set_against.end():set_against.end() + clause.end()])
+    if first is None or other is None or first == other:
+        return text, said
+    if (first < other) != (m.group(1) in _SMALLER):
+        raise UserError(f"\"{m.group(0)}\" asks of the scene set against the first, which is not read: ask of it alone")
+    return (text[:m.start()] + text[m.end():],
+            (*said, f"{m.group(0)}: read as nothing: the scene said first, named again"))
+
+
+def _value(text: str) -> float | None:
+    """The one number said in `text`, in figures or in words ("one hundred and sixty"), or None."""
+    figures = re.findall(_NUMBER, text)
+    if figures:
+        return float(figures[0]) if len(figures) == 1 else None
+    total, seen = 0.0, False
+    for w in re.findall(r"[a-z]+", text):
+        if w in NUMBER_WORDS:
+            total, seen = total + NUMBER_WORDS[w], True
+        elif w == "hundred" and seen:
+            total *= 100
+        elif seen and w != "and":
+            break
+    return total if seen else None
 
 
 def _asked_first(text: str) -> re.Match | None:
