@@ -171,8 +171,9 @@ def _which(m: re.Match) -> tuple[tuple[str, ...], bool]:
 
 def _sits(m: re.Match, k: int) -> bool:
     """Whether liquid said to stay in a container not the bowl stays where it was: "just"
-    sitting there ("does the stuff just stay in the cup"), or never coming out ("sits in the
-    mug and never comes out"), of a container not poured into."""
+    sitting there ("does the stuff just stay in the cup"), never coming out ("sits in the
+    mug and never comes out"), or in the one said tilted ("if it's tilted a little, does
+    anything stay in the cup"), of a container not poured into nor from."""
     said = re.match(r"\w+ in(?:side)?(?: (?:the |a |an |my |your |this |that )?(?:[a-z]+ )?([a-z]+))?",
                     m.string[m.start(f"v{k}"):])
     bowl = said.group(1) if said else None
@@ -180,6 +181,9 @@ def _sits(m: re.Match, k: int) -> bool:
             rf"\b(?:into|to) (?:the |a |an |my )?(?:\w+ )?{bowl}\b", m.string)):
         return False
     before = m.string[:m.start(f"v{k}")]         # ("go in and just stay there": the bowl's)
+    tilted = re.search(r"\bit (?:is |gets )?(?:\w+ ){0,3}?(?:tilted|tipped|turned|upside)\b", before)
+    if tilted and bowl and not re.search(r"\b(?:into|from)\b", m.string) and not re.search(r"\boutcome (?:and |then |but )+$", before):
+        return True       # (not "go in and stay in the cup": the bowl's)
     return (before.endswith("just ") and not re.search(r"\b(?:and|then|but|or) just $", before)) or re.match(
         r"(?: \w+){0,4}? and (?:never|not|does not|do not|will not|would not) (?:come|comes|pour|pours|get|gets|flow|flows) out\b",
         m.string[m.end(f"v{k}"):]) is not None
