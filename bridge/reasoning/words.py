@@ -43,6 +43,7 @@ from pantarhei.bridge.reasoning.properties import SURFACE_SAID, Levels, Surfaces
 from pantarhei.bridge.reasoning.ramps import Ramps
 from pantarhei.bridge.reasoning.speeds import SPEEDS
 from pantarhei.bridge.reasoning.tilt_amounts import NEAR_HORIZONTAL, TILT_AMOUNTS
+from pantarhei.bridge.reasoning.tipping_speed import SAID as TIPPED, TippingSpeed
 
 #: Value words an intensifier may raise to "very" ("incredibly high" is very high; a value
 #: with no "very" of its own is the value: "incredibly heavy" is heavy). "really" is a
@@ -382,17 +383,16 @@ def _everyday() -> list[tuple[Matcher, str, str]]:
 
 
 @lru_cache(maxsize=None)
-def rewrites() -> tuple[tuple[Cued | Matcher | Levels | Values | Surfaces | Ramps | Fullness | Filled | NumberWords, tuple[str, ...],
+def rewrites() -> tuple[tuple[Cued | Matcher | Levels | Values | Surfaces | Ramps | Fullness | Filled | TippingSpeed | NumberWords, tuple[str, ...],
                                  str], ...]:
-    """Each rewrite in the order applied, with the words it is read as and
-    what is said back: a property by its level or its number ("low
-    friction", "a friction of 0.1": properties.py, which gives the words
-    of each phrase itself), the
-    everyday word list, a number said in words ("two inches": numerals.py),
-    then PHRASES; an entry's phrases as one pattern (cued.py), a section
+    """Each rewrite in the order applied, with the words it is read as and what is said back: a
+    property by its level or its number ("low friction", "a friction of 0.1": properties.py, which
+    gives the words of each phrase itself), a speed of tipping said after it ("tip it, nice and
+    slow": tipping_speed.py), the everyday word list, a number said in words ("two inches":
+    numerals.py), then PHRASES; an entry's phrases as one pattern (cued.py), a section
     of the list as a Matcher."""
     return ((Levels(), (), ""), (Values(), (), ""), (Surfaces(), (), SURFACE_SAID), (Ramps(), (), ""),
-            (Fullness(), (), FULLNESS_SAID), (Filled(), (), "read as a full source"),
+            (Fullness(), (), FULLNESS_SAID), (Filled(), (), "read as a full source"), (TippingSpeed(), (), TIPPED),
             *((m, tuple(w.split()), said) for m, w, said in _everyday()),
             (NumberWords(), (), ""),
             *((Cued.of(phrases), tuple(words.split()), said[0] if said else "")

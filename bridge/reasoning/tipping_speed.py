@@ -1,0 +1,45 @@
+"""How fast the source is tipped, said in a clause of its own right after
+the tipping ("tip the jug, slow and gentle", "tilt it over the bowl, nice
+and quick"): the move into the pouring pose, which tilts the source as it
+goes, as "tip it slowly" is (speeds.py). A rewrite of words.py's, applied
+before the everyday word list: the clause must hold a speed ("gentle"
+alone says how far as much as how fast, and is left to be read as it is),
+and the clause before it a verb of tipping."""
+from __future__ import annotations
+
+#: Verbs of tipping the source.
+_TIPPING = frozenset(("tip", "tips", "tipped", "tipping", "tilt", "tilts", "tilted", "tilting"))
+_SPEEDS = {"slow": "slowly", "slowly": "slowly", "fast": "fast", "quick": "fast", "quickly": "fast"}
+#: Words said with the speed, of how the tipping is done: "slow and gentle", "nice and slow".
+_WITH = frozenset(("and", "nice", "real", "really", "very", "gentle", "gently", "steady", "steadily", "careful",
+                   "carefully", "smooth", "smoothly", "easy", "but"))
+_ENDS = frozenset((",", ";", ".", "!", "?", ":"))
+
+
+class TippingSpeed:
+    """The rewrite (see the module's docstring)."""
+
+    def spans(self, words: list[str]) -> list[tuple[int, int, tuple[str, ...]]]:
+        out = []
+        for i, w in enumerate(words):
+            if w not in (",", ";") or not _tipped_before(words, i):
+                continue
+            end = next((k for k in range(i + 1, len(words)) if words[k] in _ENDS), len(words))
+            said = words[i + 1:end]
+            speeds = {_SPEEDS[s] for s in said if s in _SPEEDS}
+            if len(speeds) == 1 and all(s in _SPEEDS or s in _WITH for s in said):
+                out.append((i + 1, end, ("approach", speeds.pop())))
+        return out
+
+
+def _tipped_before(words: list[str], at: int) -> bool:
+    """Whether the clause ending at `at` holds a verb of tipping."""
+    k = at - 1
+    while k >= 0 and words[k] not in _ENDS:
+        if words[k] in _TIPPING:
+            return True
+        k -= 1
+    return False
+
+
+SAID = "read as the move into the pouring pose, which tilts the source as it goes"
