@@ -153,6 +153,8 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text = re.sub(r"\b(p|pr|prob)\s*\((?=[^()]*\))",
                   lambda m: said.setdefault(f"{m.group(1)}: read as the chance of") or "the chance of (",
                   text)
+    # a velocity is a speed: "what approach velocity keeps it clear" asks the approach's speed
+    text = re.sub(r"\bvelocit(?:y|ies)\b", lambda m: said.setdefault(f"{m.group(0)}: read as speed") or "speed", text)
     # every drop of a liquid is all of it: "get every drop of the syrup into the bowl"
     text = re.sub(r"\bevery (?:last |single )?drop of (?:the |my |that |this )?",
                   lambda m: said.setdefault(f"{m.group(0).strip()}: read as all of the") or "all of the ", text)
