@@ -64,7 +64,7 @@ COMPARISONS: tuple[tuple, ...] = (
     # whether it matters ("less liquid = less spill?? or doesnt matter", "does less water make any difference"):
     # whether the outcome happens
     ("hedge", (r"re(matter):\b(?:or )?(?:(?:does|do|would|will) (?:it |that )?)?(?:not )?(?:really )?matter\b",
-               r"re(difference):\b(?:make|makes|made|making) (?:any|a|much of a|no) (?:real )?difference\b"),
+               r"re(difference):\b(?:make|makes|made|making) (?:any|a|much of a|no) difference\b"),
      "ignored: whether it matters is whether the outcome happens with what is said"),
     # poured the same way, tipped to the same angle (as the scene compared with): the one said
     ("hedge", ("[in] the same way", "same way", "the same angle", "same angle", "the same tilt", "same tilt"),
