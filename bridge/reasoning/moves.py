@@ -51,8 +51,9 @@ MOVES: tuple[tuple, ...] = (
     ("end", (f"put {_IT} down", f"set {_IT} down", f"put {_IT} back down", f"set {_IT} back down",
              "at the end", "in the end", "finish")),
     # "after pouring from the side": the manner after it is the pour's
-    # emptying a bowl into another, decanting, dumping: pouring
+    # emptying a bowl into another, decanting, dumping, chucking it in: pouring
     ("pour", (r"re:\bempt(?:y|ies|ied|ying)(?= (?:it|the \w+|a \w+) (?:into|in|onto)\b)",
+              r"re:\bchuck(?:s|ed|ing)?(?= (?:(?:it|them|the \w+|\w+) )?(?:in|into)\b)",
               "decant", "dump", "free pour", "transfer", "serve", "dispense", "top up")),
     ("retreat ; pour", (rf"re:\bafter pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",
                         # "after tilting it halfway": the tilt is the pour's
