@@ -1,7 +1,8 @@
 """Where a negation reaches in a question: "not", "never", "no",
 "without", "don't" ... cover the rest of their clause, up to the next
 "and", "or", "yet"; a question asked negatively ("can't I pour from
-high?") negates nothing. Not one of two moves the other way is not the other
+high?") and what not to do ("what should I not do with a heavy jug")
+negate nothing. Not one of two moves the other way is not the other
 ("don't lift it" may leave it where it is): still_between says so."""
 from __future__ import annotations
 
@@ -36,6 +37,10 @@ def scope_ends(tokens: list[Token]) -> list[int]:
         ends[j] = j + 1 if nxt.clause != tokens[j].clause or nxt.word in _SCOPE_ENDS else ends[j + 1]
     for j in range(1, len(tokens) - 1):      # a question asked negatively ("can't I pour from high?") negates nothing
         if tokens[j].word == "not" and tokens[j - 1].raw in _AUX and tokens[j + 1].raw in _SUBJECTS:
+            ends[j] = j + 1
+    for j in range(len(tokens) - 1):         # what not to do ("what should I not do with a heavy jug") negates the doing
+        if tokens[j].raw in ("not", "never") and (tokens[j + 1].raw == "do" or (
+                tokens[j + 1].raw == "to" and j + 2 < len(tokens) and tokens[j + 2].raw == "do")):
             ends[j] = j + 1
     for j, t in enumerate(tokens[:-2]):
         at = j + 1 + (t.word == "no" and tokens[j + 1].word == "liquid")      # "no liquid on the table"
