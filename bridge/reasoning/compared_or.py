@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import re
 
-from pantarhei.bridge.reasoning.choices import chosen_liquids
+from pantarhei.bridge.reasoning.two_liquids import chosen_liquids
 
 _COMPARING = re.compile(r"\b(?:better|best|safer|safest|worse|worst|preferable|which)\b")
 _ASKED_WHAT_TO_DO = re.compile(r"\b(?:should|shall)\b")

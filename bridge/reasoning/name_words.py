@@ -17,6 +17,7 @@ says nothing of the pour ("cheaper"), and is part of the name."""
 from __future__ import annotations
 
 import re
+from typing import Collection
 
 from pantarhei.bridge.reasoning.nouns import BOWL
 from pantarhei.bridge.reasoning.spelling import english
@@ -31,26 +32,24 @@ _HOW_MUCH = frozenset(("more", "less", "extra", "enough", "additional", "another
                        "every", "second", "third", "next", "last", "first", "new", "old", "own", "spare"))
 
 
-def names_part(tokens: list[Token], i: int) -> bool:
+def names_part(tokens: list[Token], i: int, placeable: Collection[str]) -> bool:
     """Whether the word at `i`, one the reader does not know, is part of the
     name of the bowl or liquid after it ("a martini glass", "tomato soup"):
     an English word (not a typo, which spelling.py reads) that says no
-    quality (see the module's docstring), said right before the noun, which
+    quality (see the module's docstring; `placeable`: the reader's value
+    words, whose comparatives say one), said right before the noun, which
     says what is read of the body."""
     t = tokens[i]
     return (i + 1 < len(tokens) and tokens[i + 1].word in (BOWL, "liquid") and tokens[i + 1].clause == t.clause
-            and re.fullmatch(r"[a-z]{3,}", t.raw) is not None and not says_quality(t.raw)
+            and re.fullmatch(r"[a-z]{3,}", t.raw) is not None and not says_quality(t.raw, placeable)
             and t.raw not in _HOW_MUCH and english(t.raw))
 
 
-def says_quality(word: str) -> bool:
+def says_quality(word: str, placeable: Collection[str]) -> bool:
     """Whether `word` ends as a word of a quality does, or is the
     comparative of a quality (see the module's docstring)."""
     if _QUALITY.search(word):
         return True
-    from pantarhei.bridge.reasoning.reading import lexicon     # (reading.py imports this module)
-
-    placeable = lexicon().placeable
     return word.endswith("er") and any(
         _QUALITY.search(base) or any(t.word in placeable for t in words_of(base))
         for base in _bases(word) if english(base))

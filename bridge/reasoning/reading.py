@@ -48,6 +48,7 @@ from pantarhei.bridge.reasoning.set_against import refuse_unsayable
 from pantarhei.bridge.reasoning.lexicon_cache import cached_lexicon
 from pantarhei.bridge.reasoning.negation import (NEGATION_STEMS, covered, opposite, or_list, ordinary_left,
                                                  scope, scope_ends, still_between)
+from pantarhei.bridge.reasoning.occurrences import closest, occurrences
 from pantarhei.bridge.reasoning.outright import outright
 from pantarhei.bridge.reasoning.nouns import ARTICLES, BOWL, CONTEXT, OBJECT_STEMS, Nouns, roles
 from pantarhei.bridge.reasoning.outcomes import hear
@@ -63,8 +64,6 @@ from pantarhei.bridge.reasoning.unnamed import containers_named
 from pantarhei.bridge.reasoning.words import FILLERS, UNCLEAR, rewrites
 from pantarhei.theory.lexicon import load_vocabulary
 
-#: The most other words between the words of one reading.
-_MAX_GAP = 4
 _IGNORED = {stem(w) for w in FILLERS}
 #: Words the everyday word list reads as nothing, said back with the reason
 #: ("plastic", "table", "spout"): a question may hold them and ask of the ordinary pour.
@@ -163,7 +162,7 @@ def read_question(question: str) -> Reading:
     refusal stands."""
     text, respelt = normalising(question)
     refuse_choice(text)                     # "honey or water?": two questions (choices.py)
-    refuse_unsayable(text, lexicon().known)  # "60 degrees vs 90 with 200 ml" (set_against.py)
+    refuse_unsayable(text, lexicon().known, lexicon().placeable)  # "60 degrees vs 90 with 200 ml" (set_against.py)
     try:
         return _read_text(question, text, respelt)
     except UserError:
@@ -279,7 +278,7 @@ def _ordinary(tokens: list[Token], lex: _Lexicon, asks: bool) -> bool:
     ("what happens if I pour water into a cup?"), or asks about an outcome ("does it
     splash?"), in words the vocabulary knows, and nothing else."""
     return ((asks or any(t.word == "pour" for t in tokens))
-            and all(t.word in lex.asking or (t.word not in lex.known and names_part(tokens, i))
+            and all(t.word in lex.asking or (t.word not in lex.known and names_part(tokens, i, lex.placeable))
                     for i, t in enumerate(tokens)))
 
 
@@ -291,7 +290,7 @@ def _read(tokens: list[Token], lex: _Lexicon, bowl: bool = False) -> list[tuple[
     noun = Nouns(tokens, roles(tokens, lex.placeable, bowl), lex.placeable)
     found = [(t.word, frozenset({i})) for i, t in enumerate(tokens) if t.word in lex.slots]
     claimed = set().union(*(p for _, p in found))
-    for words, positions in sorted(_occurrences(tokens, lex), key=_closest):
+    for words, positions in sorted(occurrences(tokens, lex.phrases), key=closest):
         if positions & claimed:
             continue
         name = _resolve(lex.phrases[words], positions, stage, noun, lex)
@@ -314,46 +313,6 @@ def _shared(name: str, words: tuple[str, ...], positions: frozenset[int], noun: 
     others = noun.partners(at) - {body}
     return sorted(n for n in lex.phrases[words] if lex.slots[n][0] == "object"
                   and lex.slots[n][1] in others)
-
-
-def _occurrences(tokens: list[Token], lex: _Lexicon):
-    """(value words, their positions) for every reading the question holds:
-    anchored on each of its words, the nearest of each other in its clause."""
-    where: dict[str, list[int]] = {}              # word -> its positions, in order
-    for i, t in enumerate(tokens):
-        where.setdefault(t.word, []).append(i)
-    for words in lex.phrases:
-        if not all(w in where for w in words):
-            continue
-        for a in sorted({i for w in words for i in where[w]}):
-            t = tokens[a]
-            at = {t.word: a}
-            for w in words:
-                if w != t.word:
-                    near = _nearest(where[w], a, tokens, t.clause)
-                    if near is not None:
-                        at[w] = near
-            span = max(at.values()) - min(at.values()) + 1
-            if "very" in at and at["very"] + 1 not in at.values():
-                continue            # "very" raises the word right after it ("very smooth and ... much": no very much)
-            if len(at) == len(words) and span - len(words) <= _MAX_GAP:
-                yield words, frozenset(at.values())
-
-
-def _nearest(positions: list[int], a: int, tokens: list[Token], clause: int) -> int | None:
-    """The position of `positions` (in order) in `clause` nearest to `a`,
-    the earlier of two as near; None if there is none. Words of one clause
-    stand together, so the nearest is beside where `a` would go, or the
-    nearest in the clause on that side."""
-    k = bisect_left(positions, a)
-    near = [positions[j] for j in (k - 1, k)
-            if 0 <= j < len(positions) and tokens[positions[j]].clause == clause]
-    return min(near, key=lambda i: (abs(i - a), i)) if near else None
-
-
-def _closest(reading: tuple[tuple[str, ...], frozenset[int]]) -> tuple:
-    words, positions = reading
-    return (-len(words), max(positions) - min(positions), min(positions))
 
 
 def _resolve(names: frozenset[str], positions: frozenset[int], stage_of: list[str],

@@ -24,10 +24,11 @@ _UNIT = re.compile(r"mm|cm|m|ft|inch\w*|feet|foot|deg\w*|s|secs?|second\w*|ms|g|
 _VOLUME = re.compile(r"(?<![\w.])\d+(?:\.\d+)? ?(?:ml|millilit\w*|cl|dl|l|lit(?:re|er)s?|oz|ounces?)\b")
 
 
-def refuse_unsayable(text: str, known: Collection[str]) -> None:
+def refuse_unsayable(text: str, known: Collection[str], placeable: Collection[str]) -> None:
     """UserError where the scene `text` (normalised) sets its own against
     holds a volume or a word the reader cannot place (none of `known`,
-    the reader's lexicon's words)."""
+    the reader's lexicon's words; `placeable`, its value words, tell a
+    word of a quality from a word of a bowl's name, name_words.py)."""
     m = _OTHER.search(text)
     if m is None:
         return
@@ -40,7 +41,7 @@ def refuse_unsayable(text: str, known: Collection[str]) -> None:
     said = tokens(heard.group("other")) if heard else []
     known = set(known) | set(NUMBER_WORDS) | {"hundred", "thousand", "same", "outcome"}
     unknown = [t.raw for i, t in enumerate(said) if t.word not in known and t.raw not in known and not re.match(r"-?\d", t.word)
-               and not _UNIT.fullmatch(t.raw) and not names_part(said, i)]
+               and not _UNIT.fullmatch(t.raw) and not names_part(said, i, placeable)]
     if unknown:
         raise UserError("could not place " + ", ".join(f'"{w}"' for w in dict.fromkeys(unknown))
                         + f" in the scene set against the first (\"{m.group(0)}\"): ask of one scene the "

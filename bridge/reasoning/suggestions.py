@@ -158,7 +158,7 @@ def refuse_unplaced(question: str, tokens: list[Token], read: set[int], lex) -> 
     words: dict[str, None] = {}           # in order, each once
     value_words: dict[str, None] = {}
     for i, t in enumerate(tokens):
-        if i not in read and t.word not in lex.known and names_part(tokens, i):
+        if i not in read and t.word not in lex.known and names_part(tokens, i, lex.placeable):
             continue
         if i not in read and (t.word in lex.placeable or (read and t.word not in lex.known)):
             words.setdefault(t.raw)

@@ -1,0 +1,34 @@
+"""Where a question chooses between two liquids by name ("honey or water",
+"milk or oil"): the phrases of the everyday word list that name a liquid,
+and the value (the list's section) each is read as. choices.py refuses
+such a choice without a goal; compared_or.py leaves it to choices.py."""
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+from pantarhei.bridge.reasoning.everyday import sections
+
+
+@lru_cache(maxsize=None)
+def _liquids() -> tuple[re.Pattern, dict[str, int]]:
+    """The phrases naming a liquid, as one pattern, and the section (the value) each is read as."""
+    value: dict[str, int] = {}
+    for k, s in enumerate(sections()):
+        if s.words.endswith("liquid") and s.said_back != "read as the liquid poured":
+            for p in s.phrases:
+                value.setdefault(p, k)
+    names = "|".join(re.escape(p) for p in sorted(value, key=lambda p: (-len(p), p)))
+    said = rf"(?:a |an |some |plain |the )?({names})s?"
+    return re.compile(rf"\b{said} ?,? or {said}\b"), value
+
+
+def chosen_liquids(text: str) -> re.Match | None:
+    """Where `text` (normalised) chooses between two liquids ("honey or water"), or None."""
+    return _liquids()[0].search(text)
+
+
+def liquid_values() -> dict[str, int]:
+    """Each phrase naming a liquid, and the section of the everyday word
+    list (the value) it is read as."""
+    return _liquids()[1]
