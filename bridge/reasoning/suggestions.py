@@ -11,6 +11,7 @@ from functools import lru_cache
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.everyday import UNCLEAR, alternation, names, sections
 from pantarhei.bridge.reasoning.name_words import names_part
+from pantarhei.bridge.reasoning.outcome_verbs import OUTCOMES
 from pantarhei.bridge.reasoning.wording import Token
 from pantarhei.bridge.reasoning.words import PHRASES
 from pantarhei.theory.lexicon import load_vocabulary
@@ -30,10 +31,17 @@ def misspelt(words: list[str]) -> list[str]:
     vocabulary's (and not one of them), or none."""
     import difflib
 
+    # spelt right, a number, or a verb of an outcome ("slide" is no "side"): not misspelt
     near = {w: difflib.get_close_matches(w.lower(), _spelt(), n=1, cutoff=0.8) for w in words
-            if w.lower() not in _spelt() and not re.search(r"\d", w)}   # spelt right, or a number: not misspelt
+            if w.lower() not in _spelt() and not re.search(r"\d", w) and not _outcome_verb(w.lower())}
     return [f'did you mean {", ".join(f"{m[0]!r} for {w!r}" for w, m in near.items() if m)}?'
             ] if any(near.values()) else []
+
+
+@lru_cache(maxsize=None)
+def _outcome_verb(word: str) -> bool:
+    """Whether `word` is a verb of an outcome (outcome_verbs.py: "slide", "spills")."""
+    return any(re.fullmatch(verb, word) for verb, _, _ in OUTCOMES)
 
 
 #: Phrasings that would be read, for words that could not be placed: (pattern

@@ -17,7 +17,11 @@ from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.numerals import NUMBER_WORDS
 
 _SET_AGAINST = re.compile(r"\b(?:vs|versus|compared (?:to|with))\b")
-_WHICH = re.compile(r"\bwhich (?:(?:one|of them|of the two|bowl|cup)(?: of them)? (?:will |would |is going to )?"
+_WHICH = re.compile(r"\bwhich (?:"
+                    # "which one is less likely to slide": how likely is how much, said back with it
+                    r"(?:(?:one|of them|of the two|bowl|cup)(?: of them)? )?(?:(?:is|are|will|would)(?: be)? |be )(?:the )?"
+                    r"(?:(?:less|more|least|most) likely|likelier|(?:less|more) prone) to (?P<verb3>[a-z]+)\b"
+                    r"|(?:one|of them|of the two|bowl|cup)(?: of them)? (?:will |would |is going to )?"
                     r"(?P<verb>[a-z]+?)(?P<ending>es|s)?\b(?P<how> (?:more|less|the most|the least|most|least|worse|better)\b)?"
                     # "which" alone: its verb inflected and said with how much ("which splashes less")
                     r"|(?P<verb2>[a-z]+?)(?P<ending2>es|s)\b(?P<how2> (?:more|less|the most|the least|most|least)\b))")
@@ -50,7 +54,8 @@ def which_one(text: str) -> tuple[str, tuple[str, ...]]:
                 (*said, f"{one.group(0)}: read as does it {one.group('verb')}, of the one said first"))
     if m is None:
         return text, said
-    said_verb, ending = (m.group("verb"), m.group("ending")) if m.group("verb") else (m.group("verb2"), m.group("ending2"))
+    said_verb, ending = next((m.group(f"verb{k}"), m.groupdict().get(f"ending{k}")) for k in ("", "2", "3")
+                             if m.group(f"verb{k}"))
     verb = said_verb + ("e" if ending == "es" and not re.search(r"(?:sh|ch|ss|x)$", said_verb) else "")
     return (text[:m.start()] + f"does it {verb}" + text[m.end():],
             (*said, f"{m.group(0)}: read as does it {verb}, of the one said first"))
