@@ -50,12 +50,13 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:exactly |right )?where (?:it|they) (?:is|was|are|were|stands|stood|started))"
      r"|(?:sit|sits|sitting|stand|stands|standing|stay|stays|staying|remain|remains|rest|rests|resting|be)"
      r" (?:still )?(?:in|at) the same (?:spot|place|position|location)", STILL, False),
-    (r"slid\w*|slip(?:s|ped|ping)?\b|shift\w*|budg\w*|wobbl\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
+    # the way it moves said after it is the moving's ("the bowl scoots sideways", "slides to one side")
+    (r"(?:slid\w*|slip(?:s|ped|ping)?\b|shift\w*|budg\w*|wobbl\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
      r"|jostl\w*|rock(?:s|ed|ing)?|shak(?:e|es|ing)|shook|translat\w*|drift\w*|creep\w*|scoot\w*"
      r"|displac\w*|(?:(?:get|gets|got|getting|be|being) )?(?:pushed|shoved)\b(?! (?:in|back|away|out|over)\b)|(?:go|goes|going|get|gets|getting) (?:wiggly|wobbly|shaky|jiggly)"
      r"|mov(?:e|es|ed|ing)\b(?! (?:(?:it|them|the \w+) )?(?:in|away|closer|nearer|further|farther|to|out|back|up"
-     r"|down|over|into|off|towards?)\b)|bounc\w* (?:around|about)",       # "move the cup closer": the source's move
-     STILL, True),
+     r"|down|over|into|off|towards?)\b)|bounc\w* (?:around|about))(?: sideways| (?:off |over )?to (?:the|one) side)?\b",
+     STILL, True),       # "move the cup closer": the source's move
     (r"(?:giv(?:e|es|ing)|gave) (?:a |any |some )?(?:hit|knock|bump|bang|touch)s?(?: to)?(?= (?:the|a|an|my|its|it)\b)"   # "giving a hit to the bowl"
      r"|bump\w*|hit(?:s|ting)?|touch\w*|collid\w*|crash\w*|knock\w*|clip(?:s|ped)?|strike\w*"
      r"|bonk\w*|bang\w*|intersect\w*|clash\w*|graz(?:e|es|ed|ing)|scrap(?:e|es|ed|ing)|nudg\w*|clink\w*|slam\w*"
