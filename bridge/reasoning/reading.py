@@ -45,6 +45,7 @@ from functools import lru_cache
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.choices import refuse_choice
 from pantarhei.bridge.reasoning.set_against import refuse_unsayable
+from pantarhei.bridge.reasoning.ages import ages_said
 from pantarhei.bridge.reasoning.lexicon_cache import cached_lexicon
 from pantarhei.bridge.reasoning.negation import (NEGATION_STEMS, covered, opposite, or_list, ordinary_left,
                                                  scope, scope_ends, still_between)
@@ -184,7 +185,8 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
     lex = lexicon()
     text, named = names_written(text)
     text, unnamed = containers_named(text)          # "pour from a growler": a container
-    typed += unnamed
+    text, aged = ages_said(text)                    # "my 6 year old": who pours
+    typed += unnamed + aged
     outcome = hear(text)
     tokens = read_numbers(words_of(outcome.scene), lex.placeable)
     accepted = _read(tokens, lex, outcome.bowl)
