@@ -38,7 +38,9 @@ _KEPT = {"hitt": "hit", "bump": "bump", "knock": "knock", "slid": "slide", "mov"
 
 #: The most a value may be before an outcome, asked: "how far from the centre can I pour before
 #: the liquid misses", read as "... before the liquid starts to miss" (outcomes.py's goal).
-_MOST = re.compile(rf"^(?P<how>how (?:far|high|low|steep|steeply|much|close|fast|quickly|slowly|slow)\b[^?.!,;]*?)"
+#: (Said after the scene too: "pour water from a mug how high before it splashes out".)
+_MOST = re.compile(rf"(?:^|(?<=[,;:.?!-] )|(?<=[a-z0-9] ))(?P<how>how (?:far|high|low|steep|steeply|much|close"
+                   rf"|fast|quickly|slowly|slow)\b[^?.!,;]*?)"
                    rf" before (?P<who>it|they|the [a-z]+|anything|any of it) (?P<verb>{'|'.join(_VERBS)})\b")
 
 
@@ -46,9 +48,9 @@ def avoided(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with an outcome told and a value asked that avoids
     it read as the value asked so that the outcome does not happen, and what
     is said back; `text` as it is otherwise."""
-    m = _MOST.match(text)
+    m = _MOST.search(text)
     if m is not None:
-        return (f"{m.group('how')} before {m.group('who')} starts to {_VERBS[m.group('verb')]}{text[m.end():]}",
+        return (f"{text[:m.start()]}{m.group('how')} before {m.group('who')} starts to {_VERBS[m.group('verb')]}{text[m.end():]}",
                 (f"before {m.group('who')} {m.group('verb')}: read as so that {m.group('who')} does not "
                  f"{_VERBS[m.group('verb')]}, the most that can be done asked",))
     m = _CHANGE.match(text)
