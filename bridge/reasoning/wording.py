@@ -96,7 +96,11 @@ _CHAT = {"u": "you", "ur": "your", "wat": "what", "wut": "what", "wot": "what", 
          "cn": "can", "hw": "how", "cud": "could", "shld": "should"}
 _CHATTED = (rf"\b(?:{'|'.join(_CHAT)})\b|\by(?= (?:does|do|did|is|are|was|would|will|can|not)\b)"
             r"|\bits(?= (?:too|to|so|very(?! (?:edge|rim|lip|brim|border|middle|centre|center|top|side)\b)|really|right|just|not|over|at|in|on|upside|nearly|almost|only"
-            r"|going|held|[a-z]+ed)\b)")
+            r"|going|held|[a-z]+ed)\b)"
+            # "from mug 2 bowl" (to), "best tilt 4 pouring soup" (for): a digit standing for a word,
+            # between words and before what it would govern, never a number of a unit ("tilt 4 degrees")
+            r"|(?<=[a-z] )(?<!\ba )(?<!\ban )(?<!\bthe )(?:2(?= (?:the|a|an|my|your|bowl|cup|mug|glass|dish|pot|jug|jar)\b)"
+            r"|4(?= (?:[a-z]+ing|the|a|an|my|your|it|me|not|no)\b))")
 
 
 def normalised(text: str) -> str:
@@ -118,7 +122,7 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     said: dict[str, None] = {}
 
     def respelt(written: str) -> str:
-        meant = _BARE.get(written) or {**_CHAT, "y": "why", "its": "it's"}.get(written, "can't")
+        meant = _BARE.get(written) or {**_CHAT, "y": "why", "its": "it's", "2": "to", "4": "for"}.get(written, "can't")
         shown = "I" + meant[1:] if meant.startswith("i'") else meant
         said.setdefault(f"{written}: read as {shown}")
         return meant
