@@ -139,6 +139,12 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\bfor (?:not|never) (?:make|making|let|letting) (it|them|the [a-z]+) (?=[a-z]+)", r"so that \1 does not "),
     (r"\bfor (?:not|never|no) (?=(?:make|making|spill|splash|drip|tip|slid|mov|hit|touch|overflow|toppl)[a-z]*\b)",
      "so that it does not "),
+    # a goal said as a state with no outcome in it: "with zero mess", "with no spills"
+    (r"\bwith (?:zero|no|absolutely no|not a single|not one) (?:mess|spill(?:s|age|ing)?|splash(?:es|ing)?|drips?|dripping"
+     r"|spillover)\b", "so that nothing spills"),
+    # what it is for, as learners of English say it: "incline the jar for the water to go out from it"
+    (r"\bfor (it|them|the [a-z]+|all of it|everything|it all) to (?=(?:go|come|get|flow|run|drain|land|stay|end up)\b)",
+     r"so that \1 "),
     # "to avoid drips outside the target", "prevent any spills": so that it does not drip, spill
     (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|minimi[sz]e|minimi[sz]ing|reduce|reducing)"
      r" (?:any )?(drip|spill|splash|leak|overflow)(?:s|es)?\b(?! of\b)", r"so that it does not \1"),
