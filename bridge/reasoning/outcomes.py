@@ -38,6 +38,7 @@ from pantarhei.bridge.reasoning.nouns import poured_from
 from pantarhei.bridge.reasoning.outcome_verbs import ALL_IN as _ALL_IN, OUTCOMES
 from pantarhei.bridge.reasoning.flow_rates import rates, refuse_alone
 from pantarhei.bridge.reasoning.frames import CONTACT, asked_plainly
+from pantarhei.bridge.reasoning.likely import likely
 from pantarhei.bridge.reasoning.phases import STILL, during, moving
 from pantarhei.bridge.reasoning.seeking import reaches, sought, wanting
 from pantarhei.bridge.reasoning.strikers import containers, striker
@@ -281,7 +282,7 @@ def hear(text: str) -> Heard:
         return take(m, " ".join(w for w in subject if w not in _WHOLE))
 
     def as_asked(m: re.Match) -> str:
-        subject = (m.group("subject") or m.group("csubject") or "").split()
+        subject = likely((m.group("subject") or m.group("csubject") or "").split())[0]   # "be less likely to"
         names = _staying(_which(m)[0], next(v for g, v in m.groupdict().items() if g[0] == "v" and v), subject,
                          "liquid_leaves_source" in asked)
         last[:] = subject
