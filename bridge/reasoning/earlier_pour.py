@@ -34,12 +34,17 @@ _AVOID = re.compile(r"^how (?:do|can|could|should|would) (?:i|we|you) (?:avoid|f
 #: Who did what the earlier pour did: "it", "the bowl", "half of it".
 _WHO = r"(?:it|the (?:bowl|liquid|water|milk|[a-z]+)|(?:half|some|most|all|a lot|part|much) of it|(?P<none>nothing|none of it))"
 #: What it did: "splashed", "slid off the edge of the tray", "bounced out".
-_OUT = r"(?P<out>splash|spill|spilt|drip|overflow|slosh|tip|slid|mov|miss|bounc|flip|fell|skid|knock|came out)\w*"
+_OUT = (r"(?:(?P<out>splash|spill|spilt|drip|overflow|slosh|tip|slid|mov|miss|bounc|flip|fell|skid|knock|came out)\w*"
+        # where it landed, a spill: "half of it went on the counter"
+        r"|(?P<onto>(?:went|landed|ended up|got|fell) (?:on|onto|all over) (?:the |my )?(?:counter|countertop|table|floor"
+        r"|worktop|bench|stove|tablecloth)))")
+#: Why it did, told after it ("because I was too far to the left"): the earlier pour's, not read.
+_WHY = r"(?: (?:because|since|as|cause) [^,;.?!]*)?"
 #: What may come after an earlier pour told: the question.
 _NEXT = r" *[,;.] *(?=(?:now|this time|if|so|what|which|how|will|would|does|do|is|can|should)\b)"
 _POUR = re.compile(
     rf"^{_WHEN},? (?:when )?(?:i|we|you|they|he|she|the robot|my robot) (?:poured|pour|held|tilted|tipped|did it)"
-    rf"(?P<how>[^,;.?!]*?)(?: and {_WHO} (?:[a-z]+ and )?{_OUT}(?P<part> over| out| everywhere)?)?{_NEXT}")
+    rf"(?P<how>[^,;.?!]*?)(?: and {_WHO} (?:[a-z]+ and )?{_OUT}(?P<part> over| out| everywhere)?{_WHY})?{_NEXT}")
 #: Its outcome told first, the pour after it: "yesterday the bowl slid off the tray when I emptied the kettle into it".
 _OUTCOME_FIRST = re.compile(
     rf"^{_WHEN},? {_WHO} {_OUT}[^,;.?!]*?(?: when (?:i|we|you|they|he|she|the robot|my robot)"
@@ -60,7 +65,7 @@ def told(text: str) -> tuple[str, tuple[str, ...]]:
         return text, ()
     rest = text[m.end():]
     said = [f"{m.group(0).strip(' ,;.')}: read as nothing: an earlier pour, told; the answer is for the one asked"]
-    out = m.group("out")
+    out = "spilt" if m.group("onto") else m.group("out")
     verb = "spill" if out == "spilt" else out
     if out and _BETTER.search(rest):
         asked = _BETTER.search(rest).group(0)

@@ -51,7 +51,7 @@ _ASKING_SOURCE = (
     rf"(?: (?:to )?(?:it|them|the \w+))?(?= |$|[?.!,])"
     # (not a speed of pouring, which the vocabulary has none of: "how slowly should I go")
     rf"|\bhow(?: (?:very|really))? (?!(?:fast|quick|quickly|slow|slowly) (?:should|do|can|must|would|could|shall)"
-    rf" {_WHO} (?:pour|go)\b){_HOW}(?: (?:should|do|can|must|would|could|shall|is) {_WHO}"
+    rf" {_WHO} (?:pour|go)\b){_HOW}(?: (?:over|across|above|up|down|back|in|out|away))?(?: (?:should|do|can|must|would|could|shall|is) {_WHO}"
     rf"(?: (?:be\b|{_ACT}{_WHAT}))?)?(?=[ ?.!,;:]|$)"
 
     rf"|\bhow (?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT}(?=[ ?.!,;:]|$)"
