@@ -20,13 +20,16 @@ _TOLD = {"splash": "does it splash", "spill": "does it spill", "drip": "does it 
          "slid": "does the bowl slide", "slide": "does the bowl slide", "mov": "does the bowl move",
          "miss": "does it miss", "bounc": "does it bounce out", "flip": "does the bowl tip over",
          "fell": "does the bowl tip over", "skid": "does the bowl slide", "knock": "does the jug hit the bowl",
-         "came out": "does it come out"}
+         "came out": "does it come out", "hit": "does the jug hit the bowl"}
 #: What is wanted again where a value is asked after the outcome told: it not happening, or,
 #: where nothing came out, it coming out.
 _AGAIN = {"came out": "it comes out", "tip": "the bowl does not tip over", "flip": "the bowl does not tip over",
           "fell": "the bowl does not tip over", "slid": "the bowl does not slide", "skid": "the bowl does not slide",
           "mov": "the bowl does not move", "knock": "the jug does not hit the bowl", "bounc": "it does not bounce out",
-          "slosh": "it does not slosh out", "spilt": "it does not spill"}
+          "slosh": "it does not slosh out", "spilt": "it does not spill", "hit": "the jug does not hit the bowl"}
+#: A second outcome told after the first ("the jug hit the rim and the whole thing flipped over"): wanted not again too.
+_SECOND = re.compile(r" and (?:then )?(?:it|everything|the (?:whole )?[a-z]+) (?:(?:got|was) )?(?P<out>tip|flip|fell|slid|skid|mov|knock"
+                     r"|spill|spilt|splash|overflow|slosh)\w*")
 #: A value asked after it, with no goal said: "how far do I need to go".
 _VALUE_ASKED = re.compile(r"^(?:so )?(?:how (?:far|high|low|much|close|steep|steeply|fast|slow|slowly)|what|which)\b(?!.*\b(?:so|without)\b)")
 #: How to keep it from happening again, asked: "how do I avoid that" (how should I pour so that it does not).
@@ -34,7 +37,7 @@ _AVOID = re.compile(r"^how (?:do|can|could|should|would) (?:i|we|you) (?:avoid|f
 #: Who did what the earlier pour did: "it", "the bowl", "half of it".
 _WHO = r"(?:it|the (?:bowl|liquid|water|milk|[a-z]+)|(?:half|some|most|all|a lot|part|much) of it|(?P<none>nothing|none of it))"
 #: What it did: "splashed", "slid off the edge of the tray", "bounced out".
-_OUT = (r"(?:(?P<out>splash|spill|spilt|drip|overflow|slosh|tip|slid|mov|miss|bounc|flip|fell|skid|knock|came out)\w*"
+_OUT = (r"(?:(?P<out>splash|spill|spilt|drip|overflow|slosh|tip|slid|mov|miss|bounc|flip|fell|skid|knock|hit|came out)\w*"
         # where it landed, a spill: "half of it went on the counter"
         r"|(?P<onto>(?:went|landed|ended up|got|fell) (?:on|onto|all over) (?:the |my )?(?:counter|countertop|table|floor"
         r"|worktop|bench|stove|tablecloth)))")
@@ -73,6 +76,8 @@ def told(text: str) -> tuple[str, tuple[str, ...]]:
         said.append(f"{asked}: read as {_TOLD[verb]}, as the earlier pour did")
     elif out and (_VALUE_ASKED.match(rest) or _AVOID.match(rest)) and (m.group("none") or out != "came out"):
         wanted = _AGAIN.get(verb, f"it does not {verb}{m.groupdict().get('part') or ''}")
+        for then in dict.fromkeys("spill" if o.group("out") == "spilt" else o.group("out") for o in _SECOND.finditer(m.group(0))):
+            wanted += "" if then == verb else " and " + _AGAIN.get(then, f"it does not {then}")
         asked = rest.rstrip(" ?.!")
         rest = f"{_AVOID.sub('how should i pour', asked)} so that {wanted}?"
         said.append(f"{asked}: read as asked so that {wanted}, as the earlier pour did not")

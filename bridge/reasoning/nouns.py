@@ -152,6 +152,10 @@ def _beside_the_bowl(tokens: list[Token], roles: dict[int, str], bowl: bool = Fa
             for i, r in roles.items()}
 
 
+#: Who has the bowls said in the plural: "our bowls" are the kind someone pours with, not both bowls.
+_OWNERS = frozenset(("our", "my", "your", "their"))
+
+
 class Nouns:
     """`noun(first, last)`: the body the value words from `first` to `last`
     qualify: the noun they stand before, through other value words ("a
@@ -219,7 +223,10 @@ class Nouns:
         t = self.tokens
         last = t[i].raw.split()[-1]
         plural = re.search(r"[^s]s$", last) and last not in _singular()      # not "a thermos"
-        if t[i].word == BOWL and (plural or (i > 0 and t[i - 1].word == "both")):
+        # "our bowls", "my light cups": the ones someone has, each poured into or from as one is
+        owned = any(w.raw in _OWNERS for w in t[max(0, i - 3):i]) and not any(
+            w.word in ("both", "two") for w in t[max(0, i - 3):i])
+        if t[i].word == BOWL and ((plural and not owned) or (i > 0 and t[i - 1].word == "both")):
             return {"source", "destination"}
         out = set()
         for step in (-1, 1):            # "X and [the] <i>" and "<i> and [the] Y"

@@ -71,7 +71,7 @@ _ASKING_SOURCE = (
     # what to avoid: "what should I avoid", "what should I not do"
     rf"|\bwhat (?:should|must|do|would|can) {_WHO} (?:need to |have to )?(?:avoid(?: doing)?|not do|never do)(?=[ ?.!,]|$)"
     # what to change or do: "what do I need to change", "what should we adjust"
-    rf"|\bwhat (?:do|should|must|would|can) {_WHO} (?:need to |have to )?(?:change|adjust|alter|do differently)(?=[ ?.!,]|$)"
+    rf"|\bwhat (?:do|should|must|would|can) {_WHO} (?:need to |have to )?(?:change|adjust|alter|do differently|have done differently|have changed)(?=[ ?.!,]|$)"
     # a choice of two speeds, noted: "slow approach or fast?"
     rf"|\b(?:a )?(?:slow|fast|quick) (?:approach|retreat) or (?:a )?(?:slow|fast|quick)(?: one)?(?=[ ?.!,]|$)"
     # a choice of two values: "should I pour from low or high", "do we tilt it a bit or a lot"
