@@ -336,4 +336,7 @@ def if_it_can(text: str, goals: tuple[str, ...], manners: bool) -> tuple[tuple[s
     asked = tuple(g.removeprefix("neg(").removesuffix(")") for g in goals)
     if _CAN_IT.search(text):
         return asked, goals
-    return (asked, ()) if manners and _CAN.search(text) else ((), goals)
+    if manners and _CAN.search(text):         # the manner said before the goal ("can I pour from 40 cm without
+        said_first = re.search(rf"{_CAN.pattern}[^,;.?!]*? without\b(?!.*\b(?:if|when|while)\b)", text)   # spilling"): wanted too
+        return asked, goals if said_first else ()
+    return (), goals
