@@ -337,6 +337,7 @@ def if_it_can(text: str, goals: tuple[str, ...], manners: bool) -> tuple[tuple[s
     if _CAN_IT.search(text):
         return asked, goals
     if manners and _CAN.search(text):         # the manner said before the goal ("can I pour from 40 cm without
-        said_first = re.search(rf"{_CAN.pattern}[^,;.?!]*? without\b(?!.*\b(?:if|when|while)\b)", text)   # spilling"): wanted too
+        said_first = re.search(rf"{_CAN.pattern}[^,;.?!]*? without\b(?!.*\b(?:if|when|while)\b)", text) and not re.search(
+            f"{_CAN_GET}|{_CAN_EMPTY}|{_CAN_OUT}|{_STILL_GET}", text)    # spilling"): wanted too (not getting it all in)
         return asked, goals if said_first else ()
     return (), goals
