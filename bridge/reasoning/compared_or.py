@@ -7,8 +7,9 @@ said first is answered, the other said back as not read, and refused if
 it says what the vocabulary cannot (set_against.py); "or" is said back as
 read as "vs".
 
-A question compares where it says "better", "safer", "worse", "preferable"
-or "which". Without such a word ("pour high or low, does it spill?", "pour
+A question compares where it says "better", "safer", "worse", "preferable",
+"which" or how likely, more or less ("would a full glass or a half-full glass be more
+likely to overflow"). Without such a word ("pour high or low, does it spill?", "pour
 from the side or the middle") two values of one dimension are still
 refused, asking for one; asked with "should" ("should I hold it over the
 middle or near the rim", with a goal), the choice is the plan's to make
@@ -21,7 +22,8 @@ import re
 
 from pantarhei.bridge.reasoning.two_liquids import chosen_liquids
 
-_COMPARING = re.compile(r"\b(?:better|best|safer|safest|worse|worst|preferable|which)\b")
+_COMPARING = re.compile(r"\b(?:better|best|safer|safest|worse|worst|preferable|which|likelier"
+                        r"|(?:more|less|most|least) (?:likely|prone))\b")
 _ASKED_WHAT_TO_DO = re.compile(r"\b(?:should|shall)\b")
 #: The words a second scene may begin with: where ("from near the edge"), how ("slowly", "tipping it
 #: fast"), a body ("a light bowl"), a value ("low").
