@@ -25,6 +25,7 @@ from bisect import bisect_left
 from dataclasses import dataclass
 
 from pantarhei.bridge.reasoning.avoided import avoided
+from pantarhei.bridge.reasoning.because import cause_asked
 from pantarhei.bridge.reasoning.compared_or import compared_or
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.asides import restated
@@ -165,10 +166,11 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text, again = restated(_normalised(text))         # "-2 cm (i.e. below the rim)"
     text, earlier = told(text)                         # "last time I poured from 20 cm, ...": not read
     text, avoiding = avoided(text)                     # "the bowl slides, what height stops that"
+    text, cause = cause_asked(text)                    # "it runs down the side. is it because I hold it low?"
     text, compared = compared_or(text)                 # "is it better high or low": "high vs low"
     text, which = which_one(text)                      # "a vs b - which one slides more": does it slide
     refuse_little(text)                                # "a little jug": a size
-    return text, (*said, *again, *earlier, *avoiding, *compared, *which)
+    return text, (*said, *again, *earlier, *avoiding, *cause, *compared, *which)
 
 
 def _normalised(text: str) -> str:

@@ -1,0 +1,27 @@
+"""An outcome told as what keeps happening, then whether one scene is its cause asked ("when I
+pour the gravy, it always seems to run down the side instead of into the dish. Is it because I
+hold it too low?"): whether the outcome happens with that scene, read as "if I hold it too low,
+does it run down the side instead of going into the dish?", the pour told before it kept (each
+question is read alone: the outcome told is what is asked). Two causes weighed ("... or not
+tilted enough?") are causes.py's."""
+from __future__ import annotations
+
+import re
+
+#: The outcome told ("it always seems to run down the side"), then the cause asked in a clause of its own.
+_TOLD = re.compile(r"\b(?P<who>it|(?:the|my|our|your) [a-z]+) (?:always |often |sometimes |usually |still |just )*(?:seems? to |tends? to )?"
+                   r"(?P<what>[a-z][^.?!;,]*?) *[.?!;,]+ *(?:is|was|could|might) (?:it|that|this)(?: be)?"
+                   r" because (?:of )?(?P<scene>(?:i|we|you|he|she|they|the|my|it) [a-z0-9 ]+?) *[?.!]* *$")
+
+
+def cause_asked(text: str) -> tuple[str, tuple[str, ...]]:
+    """`text` (normalised) with an outcome told and one cause of it asked read as whether the
+    outcome happens with that cause, and what is said back; `text` as it is otherwise."""
+    m = _TOLD.search(text)
+    if m is None or " or " in m.group("scene"):
+        return text, ()
+    # a place it went instead of the bowl, said with no verb: "instead of into the dish"
+    what = re.sub(r"\b(instead of|rather than) (?=in|into|inside)\b", r"\1 going ", m.group("what"))
+    asked = f"if {m.group('scene')}, does {m.group('who')} {what}?"
+    return (f"{text[:m.start()]}{asked}",
+            (f"{m.group(0).strip(' ?.!')}: read as {asked}",))
