@@ -21,8 +21,8 @@ _VERBS = {"hits": "hit", "hit": "hit", "bumps": "bump", "bumped": "bump", "knock
 _TOLD = re.compile(
     rf"^(?P<who>(?:[a-z']+ ){{1,3}}?)(?:keeps? |always )?(?P<verb>{'|'.join(_VERBS)}|keeps? (?:{'|'.join(v + 'ing' for v in ('hitt', 'bump', 'knock', 'slid', 'mov', 'tipp', 'spill', 'splash', 'dripp'))}))"
     r"(?P<rest>(?: [a-z']+)*?) *[,;.:-]+ *(?P<ask>(?:what|which)(?: [a-z]+){0,3}?)"
-    r" (?:avoids|would avoid|will avoid|prevents|would prevent|stops|would stop|fixes|would fix|solves|would solve)"
-    r" (?:that|this|it)(?P<end> *[?.!]* *)$")
+    r"(?: (?:avoids|would avoid|will avoid|prevents|would prevent|stops|would stop|fixes|would fix|solves|would solve)"
+    r" (?:that|this|it)| should (?:i|we|you) (?:set|use|choose|pick|try|go with))(?P<end> *[?.!]* *)$")
 #: A pour told in the past with what it did, then what to change asked ("i poured too fast and
 #: the bowl flipped, what should i change"): the pour told is not read, its outcome not
 #: happening is wanted.

@@ -23,7 +23,7 @@ from pantarhei.bridge.reasoning.speeds import POURING_SPEED
 from pantarhei.bridge.reasoning.vessels import destinations, liquids
 
 #: What a value is asked of: a height, a tilt, a way ...
-_VALUE = (r"(?:height|tilt|tilting|angle|way|speed|distance|position|spot|place|amount|pose"
+_VALUE = (r"(?:height|tilt|tilting|angle|way|speed|distance|position|spot|place|amount|pose|path|route"
           r"|setting|manner)s?")
 _HOW = (r"(?:(?:far|close|near) (?:from|to) the (?:centre|center|middle|side|edge|rim)(?: of (?:the )?[a-z]+)?|high|low|far|fast|quick|quickly|slow|slowly|steep|steeply|much|close|near"
         r"|tilted|full)")
