@@ -46,6 +46,7 @@ from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.choices import refuse_choice
 from pantarhei.bridge.reasoning.set_against import refuse_unsayable
 from pantarhei.bridge.reasoning.ages import ages_said
+from pantarhei.bridge.reasoning.causes import causes_weighed
 from pantarhei.bridge.reasoning.lexicon_cache import cached_lexicon
 from pantarhei.bridge.reasoning.negation import (NEGATION_STEMS, covered, opposite, or_list, ordinary_left,
                                                  scope, scope_ends, still_between)
@@ -186,7 +187,8 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
     text, named = names_written(text)
     text, unnamed = containers_named(text)          # "pour from a growler": a container
     text, aged = ages_said(text)                    # "my 6 year old": who pours
-    typed += unnamed + aged
+    text, weighed = causes_weighed(text)            # "... - is it too full or not tilted enough?"
+    typed += unnamed + aged + weighed
     outcome = hear(text)
     tokens = read_numbers(words_of(outcome.scene), lex.placeable)
     accepted = _read(tokens, lex, outcome.bowl)
