@@ -139,6 +139,10 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\bfor (?:not|never) (?:make|making|let|letting) (it|them|the [a-z]+) (?=[a-z]+)", r"so that \1 does not "),
     (r"\bfor (?:not|never|no) (?=(?:make|making|spill|splash|drip|tip|slid|mov|hit|touch|overflow|toppl)[a-z]*\b)",
      "so that it does not "),
+    # not wanting an outcome, said as a noun: "if I don't want any splash", "we don't want a mess"
+    (r"\b(?:if )?(?:i|we|you) (?:do not|never) (?:want|need) (?:any|a|a single|one|even one) (splash|spill|drip|leak|overflow)"
+     r"(?:es|s|ing|age)?\b", r"so that it does not \1"),
+    (r"\b(?:if )?(?:i|we|you) (?:do not|never) (?:want|need) (?:any|a) mess\b", "so that nothing spills"),
     # a goal said as a state with no outcome in it: "with zero mess", "with no spills"
     (r"\bwith (?:zero|no|absolutely no|not a single|not one) (?:mess|spill(?:s|age|ing)?|splash(?:es|ing)?|drips?|dripping"
      r"|spillover)\b", "so that nothing spills"),
