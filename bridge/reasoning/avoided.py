@@ -28,10 +28,17 @@ _TOLD = re.compile(
 #: happening is wanted.
 _CHANGE = re.compile(
     rf"^(?P<pour>(?:last time |yesterday |earlier )?(?:i|we|the robot|my robot|the arm|(?:my |our |the |a )?(?:kid|son|daughter|child"
-    rf"|friend|partner)|he|she|they) (?:keeps? |always )?(?:poured|pours|pouring|tilted|tipped|held|moved|did)"
+    rf"|friend|partner)|(?:my |our |the |a )?(?:robot|arm|gripper)|he|she|they) (?:keeps? |always )?(?:poured|pours|pouring|tilted|tipped"
+    rf"|held|moved|moves|did|pulls|pulled|retracts|retracted)"
     rf"[^,;.?!]*?) and (?P<who>(?:[a-z']+ ){{1,3}}?)(?P<verb>{'|'.join(_VERBS)})(?P<rest>(?: [a-z']+)*?) *[,;.:-]+ *"
     r"(?P<ask>what (?:should|do|does|can|could|would) (?:i|we|he|she|they) (?:change|do(?: differently)?)"
-    r"|how (?:do|does|can|could|should) (?:i|we|he|she|they) (?:fix|avoid|stop|prevent) (?:that|this|it))(?P<end> *[?.!]* *)$")
+    r"|how (?:do|does|can|could|should) (?:i|we|he|she|they) (?:fix|avoid|stop|prevent) (?:that|this|it)"
+    r"|(?:what|which)(?: [a-z]+){0,3}? (?:avoids|would avoid|prevents|would prevent|stops|would stop) (?:that|this|it))"
+    r"(?P<end> *[?.!]* *)$")
+#: Drops that one gets on a place, told: they drip there ("we get a trail of drops on the table").
+_GOT_DROPS = re.compile(r"\b(?:we|i|you) (?:get|got) (?:a trail of |some |a few |little |lots of )?(?:drops|drips|droplets)\b")
+#: A value asked that avoids an outcome: the value, without what it does.
+_AVOIDS = re.compile(r" (?:avoids|would avoid|prevents|would prevent|stops|would stop) (?:that|this|it)$")
 _KEPT = {"hitt": "hit", "bump": "bump", "knock": "knock", "slid": "slide", "mov": "move", "tipp": "tip",
          "spill": "spill", "splash": "splash", "dripp": "drip"}
 
@@ -53,13 +60,15 @@ def avoided(text: str) -> tuple[str, tuple[str, ...]]:
         return (f"{text[:m.start()]}{m.group('how')} before {m.group('who')} starts to {_VERBS[m.group('verb')]}{text[m.end():]}",
                 (f"before {m.group('who')} {m.group('verb')}: read as so that {m.group('who')} does not "
                  f"{_VERBS[m.group('verb')]}, the most that can be done asked",))
-    m = _CHANGE.match(text)
+    drops = _GOT_DROPS.search(text)
+    m = _CHANGE.match(_GOT_DROPS.sub("it drips", text))
     if m is not None:
         told = f"{m.group('who')}does not {_VERBS[m.group('verb')]}{m.group('rest')}"
-        ask = "how" if m.group("ask").startswith("how") else m.group("ask")     # "how do i fix that": how
+        ask = "how" if m.group("ask").startswith("how") else _AVOIDS.sub("", m.group("ask"))    # "how do i fix that": how
         return (f"{ask} so that {told}{m.group('end')}",
                 (f"{m.group('pour')}: read as nothing: an earlier pour, told; the answer is for the one asked",
-                 f"{m.group(0).strip(' ?.!')}: read as {ask} so that {told.strip()}"))
+                 f"{m.group(0).strip(' ?.!')}: read as {ask} so that {told.strip()}",
+                 *([f"{drops.group(0)}: read as it drips"] if drops else [])))
     m = _TOLD.match(text)
     if m is None:
         return text, ()
