@@ -47,7 +47,7 @@ _KEPT = {"hitt": "hit", "bump": "bump", "knock": "knock", "slid": "slide", "mov"
 #: the liquid misses", read as "... before the liquid starts to miss" (outcomes.py's goal).
 #: (Said after the scene too: "pour water from a mug how high before it splashes out".)
 _MOST = re.compile(rf"(?:^|(?<=[,;:.?!-] )|(?<=[a-z0-9] ))(?P<how>how (?:far|high|low|steep|steeply|much|close"
-                   rf"|fast|quickly|slowly|slow)\b[^?.!,;]*?)"
+                   rf"|fast|quickly|slowly|slow)\b[^?.!,;]{{0,100}}?)"
                    rf" before (?P<who>it|they|the [a-z]+|anything|any of it) (?P<verb>{'|'.join(_VERBS)})\b")
 
 

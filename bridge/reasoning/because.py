@@ -8,20 +8,25 @@ from __future__ import annotations
 
 import re
 
-#: The outcome told ("it always seems to run down the side"), then the cause asked in a clause of its own.
-_TOLD = re.compile(r"\b(?P<who>it|(?:the|my|our|your) [a-z]+) (?:always |often |sometimes |usually |still |just )*(?:seems? to |tends? to )?"
-                   r"(?P<what>[a-z][^.?!;,]*?) *[.?!;,]+ *(?:is|was|could|might) (?:it|that|this)(?: be)?"
-                   r" because (?:of )?(?P<scene>(?:i|we|you|he|she|they|the|my|it) [a-z0-9 ]+?) *[?.!]* *$")
+#: The cause asked, in a clause of its own at the end: "... is it because I hold it too low?".
+_ASKED = re.compile(r"[.?!;,]+ *(?:is|was|could|might) (?:it|that|this)(?: be)? because (?:of )?"
+                    r"(?P<scene>(?:i|we|you|he|she|they|the|my|it) [a-z0-9 ]+?) *[?.!]* *$")
+#: The outcome told right before it ("it always seems to run down the side"), ending its clause.
+_TOLD = re.compile(r"\b(?P<who>it|(?:the|my|our|your) [a-z]+) (?:always |often |sometimes |usually |still |just )*"
+                   r"(?:seems? to |tends? to )?(?P<what>[a-z][^.?!;,]{0,120}?) *$")
 
 
 def cause_asked(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with an outcome told and one cause of it asked read as whether the
     outcome happens with that cause, and what is said back; `text` as it is otherwise."""
-    m = _TOLD.search(text)
-    if m is None or " or " in m.group("scene"):
+    cause = _ASKED.search(text)
+    if cause is None or " or " in cause.group("scene"):
+        return text, ()
+    m = _TOLD.search(text, max(0, cause.start() - 200), cause.start())
+    if m is None:
         return text, ()
     # a place it went instead of the bowl, said with no verb: "instead of into the dish"
     what = re.sub(r"\b(instead of|rather than) (?=in|into|inside)\b", r"\1 going ", m.group("what"))
-    asked = f"if {m.group('scene')}, does {m.group('who')} {what}?"
+    asked = f"if {cause.group('scene')}, does {m.group('who')} {what}?"
     return (f"{text[:m.start()]}{asked}",
-            (f"{m.group(0).strip(' ?.!')}: read as {asked}",))
+            (f"{text[m.start():].strip(' ?.!')}: read as {asked}",))
