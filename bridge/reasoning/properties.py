@@ -102,7 +102,9 @@ def _number(word: str) -> bool:
 
 #: What a bowl stands on, and the words that say it grips or does not.
 _SURFACES = {"table", "tables", "counter", "counters", "countertop", "worktop", "benchtop", "bench",
-             "tabletop"}
+             "tabletop", "bar", "bartop", "conveyor", "conveyors", "tray", "workbench"}
+#: The word that may end its name: "a wet bar top", "a slick conveyor belt".
+_ENDS = {"top", "tops", "belt", "belts"}
 _GRIP = {"slippery": "slippery", "slick": "slippery", "slippy": "slippery", "greasy": "slippery", "smooth": "slippery",
          "wet": "slippery", "icy": "slippery",
          "grippy": "grippy", "rough": "grippy"}
@@ -121,10 +123,11 @@ class Surfaces:
     def spans(self, words: list[str]) -> list[tuple[int, int, tuple[str, ...]]]:
         out: list[tuple[int, int, tuple[str, ...]]] = []
         for i, w in enumerate(words):
-            if w not in _SURFACES or (out and i < out[-1][1]):
+            if w not in _SURFACES or (out and i < out[-1][1]) or words[i + 1:i + 2] == ["of"]:   # "a bar of soap"
                 continue
-            if i > 0 and words[i - 1] in _GRIP:                            # "a slick table"
-                out.append((i - 1, i + 1, (_GRIP[words[i - 1]], "destination")))
+            if i > 0 and words[i - 1] in _GRIP:                            # "a slick table", "a wet bar top"
+                end = i + 2 if i + 1 < len(words) and words[i + 1] in _ENDS else i + 1
+                out.append((i - 1, end, (_GRIP[words[i - 1]], "destination")))
                 continue
             j = i + 1
             while j < len(words) and words[j] in _AS and j - i <= 3:
