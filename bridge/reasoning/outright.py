@@ -3,7 +3,9 @@ lower": comparisons.py) says only which way from it; a value of the same
 dimension said outright beside it ("not as high as last time, just a bit
 lower than the rim": below the rim) says where, and is read in its place
 when it lies the same way from the ordinary pour. One the other way ("pour
-lower, 30 cm up") is left to be refused as two values."""
+lower, 30 cm up") is left to be refused as two values. So is a value said
+in words and then a number put forward as what it is ("too high, like a
+foot up": the number's), where both lie the same way from the ordinary pour."""
 from __future__ import annotations
 
 from typing import Any
@@ -19,8 +21,30 @@ def outright(names: list[str], accepted: list[tuple[str, frozenset[int]]], token
     against = {n for n, at in accepted if n in names and any(tokens[k].said_back.startswith(AGAINST) for k in at)}
     said = [n for n in names if n not in against]
     if not against or len(said) != 1 or not all(_way(n, vocab) == _way(said[0], vocab) != 0 for n in against):
-        return names
+        return _exemplified(names, accepted, tokens, vocab)
     return said
+
+
+#: Words that put a number forward as what the value said before it is: "too high, like a foot up".
+_EXAMPLE = frozenset(("like", "about", "around", "roughly", "approximately", "say"))
+
+
+def _exemplified(names: list[str], accepted: list[tuple[str, frozenset[int]]], tokens: list[Any],
+                 vocab) -> list[str]:
+    """`names`, two values of one dimension, as the one a number says where it is put forward
+    right after the other, said in words, as what it is ("too high, like a foot up": the number's),
+    and both lie the same way from the ordinary pour; `names` otherwise."""
+    at = {n: p for n, p in accepted if n in names}
+    numbers = [n for n, p in at.items() if len(p) == 1 and tokens[min(p)].word == n]
+    if len(names) != 2 or len(numbers) != 1:
+        return names
+    number = numbers[0]
+    k = min(at[number])
+    word = next(n for n in names if n != number)
+    if (k > 0 and tokens[k - 1].raw in _EXAMPLE and max(at[word]) < k - 1
+            and _way(word, vocab) == _way(number, vocab) != 0):
+        return [number]
+    return names
 
 
 def _way(name: str, vocab) -> int:
