@@ -6,7 +6,10 @@ bottle very strong" are steeply tilted, as "tilt it hard" is
 is refused as a size is: everyday.txt reads it first). An angle
 asked for ("how much angle") is a value asked, not said: left to be read
 as one. A little either side of horizontal ("slightly past horizontal", "a
-little less than horizontal") is steeply tilted still, as horizontal is."""
+little less than horizontal") is steeply tilted still, as horizontal is; a
+move made horizontally ("retreat horizontally", "pull it back
+horizontally") is the way the source moves, which no proposition says, and
+no tilt."""
 from __future__ import annotations
 
 #: Much of a tilt: "much", "a lot of", "a big".
@@ -28,4 +31,7 @@ TILT_AMOUNTS: tuple[tuple, ...] = (
                         r"re(strong):\b(?:make|makes|making|made) the (?:tilt|tilting|tipping|angle)(?: of (?:it|the \w+))?"
                         r" (?:very |really |so |more |too )?strong(?:er)?\b")),
     ("slightly tilted", (rf"re(angle|tilt|tip|inclin):(?<!how )\b(?:with |at )?{_LITTLE} {_TILTING}\b",)),
+    ("hedge", (r"re(horizontally):(?:(?<=away )|(?<=back )|(?<=out )|(?<=retreat )|(?<=retract )|(?<=withdraw )"
+               r"|(?<=retreat it )|(?<=move )|(?<=moves )|(?<=moving )|(?<=move it ))horizontally\b",),
+     "the way the source moves: no proposition says it, and it is no tilt"),
 )
