@@ -358,7 +358,7 @@ FILLERS = frozenset("""
     held robot arm gripper hand
     take takes took taking weigh weighs weighed weighing roughly about around approximately
     almost
-    and or but then with without by for from at on in over above of to a an the please say
+    and or but then with without by for from at on in over above of to a an the say
     tell suppose imagine case ever all both each one way thing any
     ll re ve m d w o y n
 """.split())
