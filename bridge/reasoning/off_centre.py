@@ -12,10 +12,10 @@ is refused, as "5 cm to the left" is: its side is the number's sign.
 from __future__ import annotations
 
 from pantarhei.bridge.reasoning.everyday import UNCLEAR
+from pantarhei.bridge.reasoning.units import UNITS
 
-#: Units of length, as a question writes them after a number.
-LENGTHS = ("mm", "cm", "m", "inch", "inches", "foot", "feet", "ft", "metre", "metres", "meter",
-           "meters", "centimetre", "centimetres", "centimeter", "centimeters")
+#: Units of length, as a question writes them after a number (units.py's).
+LENGTHS = tuple(w for w, (kind, _) in UNITS.items() if kind == "length")
 #: Right after a number and its unit of length.
 _AFTER_LENGTH = "(?:" + "|".join(rf"(?<=\d {u} )" for u in LENGTHS) + ")"
 #: The way from the middle toward the source: the rim or edge, or the robot it comes from.
