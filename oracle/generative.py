@@ -96,19 +96,28 @@ def distribution(antecedent: Iterable[str]) -> Distribution:
 
 
 def sample(antecedent: Iterable[str], n: int, seed: int) -> np.ndarray:
-    """n parameterizations drawn from P(p|antecedent), shape (n, 30)."""
+    """n parameterizations drawn from P(p|antecedent), shape (n, 30): each
+    parameter's n values in turn from one stream (a run of parameters drawn
+    as doubles at once, the same numbers as one at a time)."""
     pl = distribution(antecedent)
     rng = np.random.default_rng(seed)
     k = len(pl.low)
     out = np.empty((n, k))
-    for i in range(k):
-        if pl.base[i] < 0:
-            if pl.discrete[i]:
-                out[:, i] = rng.integers(int(pl.low[i]), int(pl.high[i]), size=n, endpoint=True)
-            else:
-                out[:, i] = rng.uniform(pl.low[i], pl.high[i], size=n)
-        else:
-            out[:, i] = rng.uniform(size=n)   # placeholder, scaled below
+    counted = pl.discrete & (pl.base < 0)
+    i = 0
+    while i < k:
+        if counted[i]:
+            out[:, i] = rng.integers(int(pl.low[i]), int(pl.high[i]), size=n, endpoint=True)
+            i += 1
+            continue
+        j = i + 1
+        while j < k and not counted[j]:
+            j += 1
+        u = rng.random((j - i, n)).T
+        lo, hi = pl.low[i:j], pl.high[i:j]
+        # a relative parameter keeps its draw in [0, 1), scaled below
+        out[:, i:j] = np.where(pl.base[i:j] < 0, lo + (hi - lo) * u, u)
+        i = j
     for i in np.flatnonzero(pl.base >= 0):
         lo, hi = _relative_range(pl, i, out[:, pl.base[i]])
         out[:, i] = lo + out[:, i] * (hi - lo)

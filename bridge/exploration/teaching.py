@@ -151,12 +151,27 @@ class Weights:
     newness: float = 0.0
 
 
-def model(P: np.ndarray, S: np.ndarray, seed: int):
+def thread_pools():
+    """A threadpoolctl ThreadpoolController of the libraries' thread pools,
+    the boosting's OpenMP among them (it finds the libraries loaded when
+    it is made, so scikit-learn's boosting is loaded first); a caller that
+    keeps one saves that search on every call."""
+    import sklearn.ensemble  # noqa: F401  (loads the OpenMP runtime the controller must see)
+    from threadpoolctl import ThreadpoolController
+
+    return ThreadpoolController()
+
+
+def one_thread(threads=None):
+    """A context in which the libraries' thread pools use one thread,
+    through `threads` (thread_pools()) or a new controller."""
+    return (threads or thread_pools()).limit(limits=1)
+
+
+def model(P: np.ndarray, S: np.ndarray, seed: int, threads=None):
     """The model of the pours the value is estimated with: a Meaning of the
     first `fitted_on(n)` of the n pours (P, S) whose simulation did not
-    fail; None when there are none."""
-    from threadpoolctl import threadpool_limits
-
+    fail; None when there are none. `threads` as for one_thread."""
     from pantarhei.bridge.verdicts import verdicts
     from pantarhei.bridge.learning.generalize import Settings
     from pantarhei.bridge.learning.meaning import Meaning
@@ -165,7 +180,7 @@ def model(P: np.ndarray, S: np.ndarray, seed: int):
     n = fitted_on(len(P))
     if not n:
         return None
-    with threadpool_limits(1):
+    with one_thread(threads):
         return Meaning(P[:n], verdicts(S[:n]), Settings(seed=int(seed), draws=DRAWS), ROUNDS)
 
 
@@ -179,20 +194,19 @@ def _valid(P: np.ndarray, S: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
              candidates: Sequence[Sequence[str]], weights: Weights, batch: int,
              seed: int, iteration: int = 1, meaning=None,
-             wholes: Sequence[Sequence[str]] = (), support: Support | None = None) -> Teaching:
+             wholes: Sequence[Sequence[str]] = (), support: Support | None = None,
+             threads=None) -> Teaching:
     """The value of exploring each candidate next, at `iteration`, with a
     batch of `batch` pours, given the pours so far (P, S; failed ones are
     left out) and the explored antecedents; `meaning` is model(P, S,
     seed), and `support` a Support of fewer of these pours, when the
-    caller keeps them. A candidate among `wholes` (of a
-    whole step of learn.pl) is said by no question, so it is valued by its
-    newness alone, counted whole."""
-    from threadpoolctl import threadpool_limits
-
+    caller keeps them; `threads` as for one_thread. A candidate among
+    `wholes` (of a whole step of learn.pl) is said by no question, so it is
+    valued by its newness alone, counted whole."""
     from pantarhei.bridge.learning.generalize import Settings
 
     if meaning is None:
-        meaning = model(P, S, seed)
+        meaning = model(P, S, seed, threads)
     P, S = _valid(P, S)
     cands = [tuple(sorted(str(p) for p in c)) for c in candidates]
     done = {tuple(sorted(str(p) for p in e)) for e in explored}
@@ -203,27 +217,26 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
     parents = {c: [tuple(q for q in c if q != p) for p in c] for c in plain}
     bodies = list(dict.fromkeys(plain + [a for c in plain for a in parents[c]]))
     index = {b: i for i, b in enumerate(bodies)}
-    if meaning is not None:
-        with threadpool_limits(1):
-            M = np.nan_to_num(meaning(bodies), nan=0.5)
-    else:                       # every pour failed: nothing is known
-        M = np.full((len(bodies), len(load_vocabulary().expectations)), 0.5)
     learner = Settings()
     asked = {0: learner.default_weight, 1: 1.0}
     suspects = {c for c in cands if suspect(c)}
     support = Support(P) if support is None else support.grown(P)
     doubts = news = np.zeros(len(plain))
-    if (weights.doubt or weights.newness) and plain:
-        with threadpool_limits(1):
+    parts = {}
+    with one_thread(threads):
+        if meaning is not None:
+            M = np.nan_to_num(meaning(bodies), nan=0.5)
+        else:                       # every pour failed: nothing is known
+            M = np.full((len(bodies), len(load_vocabulary().expectations)), 0.5)
+        if (weights.doubt or weights.newness) and plain:
             doubts, news = beyond_parts(meaning, P, S, plain, parents, batch, seed, iteration,
                                         learner.model_pours, support)
-    parts = dict(zip(plain, zip(doubts, news)))
-    if whole and weights.newness:
-        order = sorted(whole)
-        with threadpool_limits(1):
+        parts = dict(zip(plain, zip(doubts, news)))
+        if whole and weights.newness:
+            order = sorted(whole)
             fresh = consequent_newness(meaning, P, S, sorted(done), order, batch, seed, iteration,
                                        support)
-        parts.update((c, (0.0, x)) for c, x in zip(order, fresh))
+            parts.update((c, (0.0, x)) for c, x in zip(order, fresh))
     value, dep, unc, doubt_of = [], [], [], []
     for c in cands:
         h, new = parts.get(c, (0.0, 0.0))
@@ -368,13 +381,14 @@ def teach(host: Host, request: dict) -> dict:
     `iteration` to explore at as the request says."""
     s = host.need_session()
     seed = int(request["seed"])
+    threads = s.kept("threads", None, thread_pools)
     # the model of the pours, kept while the pours it is fitted on and the seed are the same
     meaning = s.kept("teacher", (fitted_on(int(s.valid.sum())), seed),
-                     lambda: model(s.params, s.scores, seed))
+                     lambda: model(s.params, s.scores, seed, threads))
     weights = Weights(float(request["uncertainty"]), float(request["doubt"]),
                       float(request["newness"]))
     found = teaching(s.params, s.scores, [e["antecedent"] for e in request["antecedents"]],
                      request["candidates"], weights, int(request["batch"]), seed,
                      int(request["iteration"]), meaning, request["wholes"],
-                     s.kept("support", None, lambda: Support(s.params[:0])))
+                     s.kept("support", None, lambda: Support(s.params[:0])), threads)
     return {"value": found.value}

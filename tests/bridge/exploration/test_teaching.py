@@ -7,7 +7,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from pantarhei.bridge.exploration.teaching import Weights, fitted_on, model, shown_new, teaching
+from pantarhei.bridge.exploration.teaching import (Weights, fitted_on, model, one_thread, shown_new,
+                                                   teaching, thread_pools)
 from pantarhei.bridge.verdicts import verdicts
 from pantarhei.oracle.generative import sample, to_dict
 from pantarhei.oracle.synthetic import scores
@@ -188,3 +189,15 @@ def test_a_whole_is_new_where_its_consequent_is_none_explored_has():
     after = teaching(P, S, [(), ("pour_far_away",)], [far, plain], w, 4, 1, 2, wholes=[far, plain]).newness
     assert before[0] > 0.9 > before[1]
     assert after[0] < before[0] and after[0] == pytest.approx(after[1], abs=0.05)
+
+
+def test_the_model_is_fitted_and_asked_on_one_thread() -> None:
+    # the boosting's OpenMP among the pools limited, through a controller kept across calls
+    from threadpoolctl import threadpool_info
+
+    threads = thread_pools()
+    for _ in range(2):
+        with one_thread(threads):
+            pools = threadpool_info()
+            assert any(p["user_api"] == "openmp" for p in pools)
+            assert all(p["num_threads"] == 1 for p in pools)
