@@ -10,6 +10,7 @@ import os
 import sys
 from contextlib import contextmanager
 from dataclasses import dataclass, field
+from functools import lru_cache
 from typing import Any, Iterator
 
 import numpy as np
@@ -87,13 +88,28 @@ def quiet() -> Iterator[None]:
             os.close(fd)
 
 
+@lru_cache(maxsize=1)
+def _client_class() -> type:
+    """pybullet_utils' BulletClient, each function it binds to the world's
+    client kept once bound: a pour looks its functions up some hundred
+    thousand times, and each lookup would bind anew."""
+    from pybullet_utils.bullet_client import BulletClient
+
+    class Client(BulletClient):
+        def __getattr__(self, name: str):
+            attribute = super().__getattr__(name)
+            if name != "disconnect":      # disconnecting marks the client closed
+                self.__dict__[name] = attribute
+            return attribute
+    return Client
+
+
 def build(pour: Pour, fidelity: Fidelity, *, visual: bool = False) -> World:
     """A fresh headless world with the scene of `pour` at its start."""
     with quiet():
         import pybullet as pb
-        from pybullet_utils.bullet_client import BulletClient
 
-        c = BulletClient(connection_mode=pb.DIRECT)
+        c = _client_class()(connection_mode=pb.DIRECT)
     c.setPhysicsEngineParameter(fixedTimeStep=1.0 / fidelity.rate_hz,
                                 numSolverIterations=fidelity.solver_iterations,
                                 deterministicOverlappingPairs=1,
