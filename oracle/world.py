@@ -26,10 +26,20 @@ GRAVITY = 9.81
 class Pour:
     """A parameterization read into named quantities (SI units inside)."""
     p: dict[str, float]
+    #: Each pose once computed (the source is driven towards one every step).
+    poses: dict[str, tuple[np.ndarray, np.ndarray]] = field(default_factory=dict, repr=False,
+                                                            compare=False)
 
     def pose(self, which: str) -> tuple[np.ndarray, np.ndarray]:
-        pos = np.array([self.p[f"{which}_{a}"] for a in "xyz"]) * MM
-        return pos, quat(self.p[f"{which}_roll"], self.p[f"{which}_pitch"], self.p[f"{which}_yaw"])
+        """The source's position (m) and orientation at `which`: start,
+        pour or end (read-only arrays)."""
+        if which not in self.poses:
+            pos = np.array([self.p[f"{which}_{a}"] for a in "xyz"]) * MM
+            orn = quat(self.p[f"{which}_roll"], self.p[f"{which}_pitch"], self.p[f"{which}_yaw"])
+            for a in (pos, orn):
+                a.flags.writeable = False
+            self.poses[which] = (pos, orn)
+        return self.poses[which]
 
     @property
     def approach_s(self) -> float:

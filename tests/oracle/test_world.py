@@ -55,6 +55,17 @@ def test_the_path_runs_from_start_to_pour_to_end(world):
     assert np.allclose(pos, [0.115, 0, 0.2]) and tilt_deg(orn) == pytest.approx(50)
 
 
+def test_a_pose_is_computed_once_and_kept_from_change(world):
+    # the source is driven towards a pose every step: one computed pose, which no caller may alter
+    pos, orn = world.pour.pose("pour")
+    assert world.pour.pose("pour")[0] is pos
+    with pytest.raises(ValueError):
+        pos[0] = 0.0
+    with pytest.raises(ValueError):
+        orn *= -1
+    assert np.allclose(world.target(0.6)[0], [0.03, 0, 0.15])
+
+
 def test_the_source_is_driven_to_its_target_in_one_step(world):
     c = world.client
     pos, orn = world.target(0.05)
