@@ -37,8 +37,10 @@ questions of bridge/evaluation/questions.json, keyed by 20 pours each (seed
 contrast keys (the clear keys where the defaults-only answer, the majority
 of the questions' pours, is wrong), calibration and coherence; beside them
 the distinct behaviours each method's pours show (nine-verdict vectors at
-least two pours show). Medians over the seeds with their range; a table
-and a plot of the learning curves go to `--report` (report/), and every
+least two pours show), and gradient boosting of the same pours, the
+ceiling of what they support. Medians over the seeds with their range; a
+table, the curiosity's targets (benchmarks/knowledge_targets.py) and a
+plot of the learning curves go to `--report` (report/), and every
 row measured to `knowledge-ORACLE.json` beside them, after each seed: a
 later run measures only the methods, seeds and budgets that file lacks
 (`--fresh`: this run's again, the others kept), so an interrupted run
@@ -54,6 +56,7 @@ from typing import Callable, Sequence
 
 import numpy as np
 
+from benchmarks.knowledge_targets import targets
 from benchmarks.knowledge_methods import (METHODS, Chosen, curiosity, designed, map_elites_pours,
                                           random_bodies, random_valid, uncertainty)
 
@@ -67,6 +70,8 @@ MEASURES = (("contrast_accuracy", "contrast accuracy"), ("accuracy", "clear accu
              "interactions: contrast accuracy, every askable body"),
             ("random_contrast_accuracy", "random scenes: contrast accuracy"),
             ("random_calibration", "random scenes: calibration"),
+            ("boosting_contrast_accuracy", "boosting on the same pours: contrast accuracy"),
+            ("boosting_calibration", "boosting on the same pours: calibration"),
             ("theory_behaviours", "behaviours in the theory"))
 #: The measures that are counts.
 COUNTS = ("behaviours", "theory_behaviours", "interaction_confident_errors")
@@ -152,10 +157,16 @@ def theory_row(chosen: Chosen, n: int, seed: int, sets: dict,
     over its own bodies (unprefixed) and over every askable body
     (`askable_`; the same for a method whose own bodies are every askable
     one), each on every question set (`sets`: prefix -> Keyed), with the
-    behaviours its pours show and those its theory gives."""
+    behaviours its pours show and those its theory gives; and gradient
+    boosting of the same pours (`boosting_`, as `pantarhei evaluate` fits
+    it: averaged over each scene's meaning), the ceiling of what they
+    support."""
     from pantarhei.bridge.evaluation.map_elites import behaviours_seen
     from pantarhei.bridge.evaluation.question_sets import answers, theory_behaviours
+    from pantarhei.bridge.learning.generalize import Settings
     from pantarhei.bridge.learning.learners import learner as named
+    from pantarhei.bridge.learning.meaning import Meaning
+    from pantarhei.bridge.verdicts import verdicts
 
     learn = named(learner)
     P, S = chosen.P[:n], chosen.S[:n]
@@ -170,6 +181,11 @@ def theory_row(chosen: Chosen, n: int, seed: int, sets: dict,
         for prefix, ks in sets.items():
             m = ks.measures(*answers(g, ks.scenes))
             row.update({f"{tag}{prefix}{k}": v for k, v in m.items()})
+    model, band = Meaning(P[good], verdicts(S[good]), Settings(seed=seed)), Settings()
+    for prefix, ks in sets.items():
+        lik = model([tuple(s) for s in ks.scenes])
+        row.update({f"boosting_{prefix}{k}": v
+                    for k, v in ks.measures(band.verdict(lik), lik).items()})
     return row
 
 
@@ -218,7 +234,7 @@ def table(rows: list[dict], oracle: str, seeds: Sequence[int], note: str = "") -
                 cells.append("n/a" if s is None else
                              f"{fmt.format(s[0])} [{fmt.format(s[1])}-{fmt.format(s[2])}]")
             out.append(f"| {m} | {n} | " + " | ".join(cells) + " |")
-    return "\n".join(out) + "\n"
+    return "\n".join([*out, *targets(rows, summary)]) + "\n"
 
 
 def plot(rows: list[dict], path: Path) -> None:

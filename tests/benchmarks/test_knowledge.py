@@ -56,6 +56,37 @@ def test_curves_table_and_plot(tmp_path):
                 assert 0 <= r[f"{tag}{prefix}accuracy"] <= 1
                 assert r[f"{tag}{prefix}confident_errors"] >= 0
             assert r[f"{tag}theory_behaviours"] <= r["behaviours"] + 40
+        for prefix in ("", "interaction_", "random_"):     # boosting of the same pours beside it
+            assert 0 <= r[f"boosting_{prefix}calibration"] <= 1
+            assert 0 <= r[f"boosting_{prefix}accuracy"] <= 1
+
+
+def test_the_targets_are_each_met_or_not_by_the_median_of_the_seeds():
+    def rows(method, pours, **measures):
+        return [{"method": method, "seed": seed, "pours": pours,
+                 **{k: v[i] for k, v in measures.items()}} for i, seed in enumerate((1, 2, 3))]
+    full = rows("curiosity", 775, contrast_accuracy=[0.97, 0.98, 0.90], calibration=[0.04] * 3,
+                boosting_calibration=[0.02, 0.05, 0.025], behaviours=[40, 41, 42],
+                theory_behaviours=[4, 5, 6], interaction_confident_errors=[0, 2, 0],
+                askable_contrast_accuracy=[0.9] * 3)
+    others = (rows("random_valid", 775, behaviours=[44, 45, 46], theory_behaviours=[3, 4, 5])
+              + rows("uncertainty", 775, askable_contrast_accuracy=[0.8, 0.95, 0.95]))
+    lines = knowledge.targets(full + others, knowledge.summary)
+    said = {ln.split(" | ")[0].lstrip("| "): ln.rsplit(" | ", 1)[1].rstrip(" |") for ln in lines
+            if ln.startswith("| ") and not ln.startswith("| target")}
+    assert said["behaviours seen"] == "**no**"                  # 41 against random's 45
+    assert said["behaviours in the theory"] == "yes"            # 5 against 4
+    assert said["interactions: confident errors"] == "yes"      # the median seed has none
+    assert said["questions: contrast accuracy"] == "yes"        # median 0.97
+    assert said["questions: calibration beside boosting on the same pours (the theory's less "
+                "boosting's, per seed)"] == "**no**"            # +0.015 at the median seed
+    assert said["knowledge per pour at 775 pours, every askable body: questions' contrast "
+                "accuracy"] == "**no**"                         # 0.90 against 0.95
+    assert said["knowledge per pour at 200 pours, every askable body: questions' contrast "
+                "accuracy"] == "not measured"
+    assert said["interactions: calibration"] == "not measured"
+    assert knowledge.targets(rows("curiosity", 400, contrast_accuracy=[1, 1, 1]),
+                             knowledge.summary) == []
 
 
 def test_the_curiositys_theory_at_a_budget_has_what_it_explored_by_then(tmp_path):
