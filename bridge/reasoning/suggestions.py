@@ -12,6 +12,7 @@ from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.everyday import UNCLEAR, alternation, names, sections
 from pantarhei.bridge.reasoning.name_words import names_part
 from pantarhei.bridge.reasoning.outcome_verbs import OUTCOMES
+from pantarhei.bridge.reasoning.spelling import english
 from pantarhei.bridge.reasoning.wording import Token
 from pantarhei.bridge.reasoning.words import PHRASES
 from pantarhei.theory.lexicon import load_vocabulary
@@ -28,12 +29,14 @@ def _spelt() -> tuple[str, ...]:
 
 def misspelt(words: list[str]) -> list[str]:
     """One "did you mean" for those of `words` close to one of the
-    vocabulary's (and not one of them), or none."""
+    vocabulary's (and neither one of them nor an English word), or none."""
     import difflib
 
-    # spelt right, a number, or a verb of an outcome ("slide" is no "side"): not misspelt
+    # spelt right, a number, a verb of an outcome ("slide" is no "side") or an English word
+    # ("helped" is no "held", "ask" no "cask"): not misspelt
     near = {w: difflib.get_close_matches(w.lower(), _spelt(), n=1, cutoff=0.8) for w in words
-            if w.lower() not in _spelt() and not re.search(r"\d", w) and not _outcome_verb(w.lower())}
+            if w.lower() not in _spelt() and not re.search(r"\d", w) and not _outcome_verb(w.lower())
+            and not english(w.lower())}
     return [f'did you mean {", ".join(f"{m[0]!r} for {w!r}" for w, m in near.items() if m)}?'
             ] if any(near.values()) else []
 

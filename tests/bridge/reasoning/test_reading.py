@@ -311,6 +311,18 @@ def test_a_misspelt_word_is_refused_with_the_word_it_is_close_to(question, words
     assert words in str(e.value) and "\n" not in str(e.value)
 
 
+@pytest.mark.parametrize("question,word", [
+    ("Would pouring from the side have helped?", "held"),
+    ("pour from the side differently, does it spill", "different"),
+    ("pour from the side, were the guests pleased", "please"),
+])
+def test_an_english_word_is_not_offered_as_a_slip_for_another(question, word):
+    # the word is refused as not placed, but it is spelt right: no "did you mean"
+    with pytest.raises(UserError) as e:
+        understand(question)
+    assert "could not place" in str(e.value) and f"'{word}'" not in str(e.value)
+
+
 @pytest.mark.parametrize("question,scene,said", [
     ("pour from the side, tilded steeply", ["pour_steeply_tilted", "pour_to_side"],
      "tilded: read as tilted"),
