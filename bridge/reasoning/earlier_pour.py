@@ -20,7 +20,7 @@ _TOLD = {"splash": "does it splash", "spill": "does it spill", "drip": "does it 
          "slid": "does the bowl slide", "slide": "does the bowl slide", "mov": "does the bowl move",
          "miss": "does it miss", "bounc": "does it bounce out", "flip": "does the bowl tip over",
          "fell": "does the bowl tip over", "skid": "does the bowl slide", "knock": "does the jug hit the bowl",
-         "came out": "does it come out", "hit": "does the jug hit the bowl"}
+         "came out": "does it come out", "hit": "does the jug hit the bowl", "splatter": "does it splash"}
 #: What is wanted again where a value is asked after the outcome told: it not happening, or,
 #: where nothing came out, it coming out.
 _AGAIN = {"came out": "it comes out", "tip": "the bowl does not tip over", "flip": "the bowl does not tip over",
@@ -35,35 +35,45 @@ _VALUE_ASKED = re.compile(r"^(?:so )?(?:how (?:far|high|low|much|close|steep|ste
 #: How to keep it from happening again, asked: "how do I avoid that" (how should I pour so that it does not).
 _AVOID = re.compile(r"^how (?:do|can|could|should|would) (?:i|we|you) (?:avoid|fix|stop|prevent) (?:that|this|it)\b")
 #: Who did what the earlier pour did: "it", "the bowl", "half of it".
-_WHO = r"(?:it|the (?:bowl|liquid|water|milk|[a-z]+)|(?:half|some|most|all|a lot|part|much) of it|(?P<none>nothing|none of it))"
+_WHO = (r"(?:it|the (?:bowl|liquid|water|milk|[a-z]+)|(?:half|some|most|all|a lot|part|much) of it"
+        r"|(?:half|some|most|all|a lot|part|much) (?:of )?the [a-z]+|(?P<none>nothing|none of it))")
 #: What it did: "splashed", "slid off the edge of the tray", "bounced out".
-_OUT = (r"(?:(?P<out>splash|spill|spilt|drip|overflow|slosh|tip|slid|mov|miss|bounc|flip|fell|skid|knock|hit|came out)\w*"
-        # where it landed, a spill: "half of it went on the counter"
+_OUT = (r"(?:(?P<out>splash|spill|spilt|drip|overflow|slosh|tip|slid|mov|miss|bounc|flip|fell|skid|knock|hit|came out"
+        r"|splatter)\w*"
+        # where it landed, a spill: "half of it went on the counter", "it went everywhere"
         r"|(?P<onto>(?:went|landed|ended up|got|fell) (?:on|onto|all over) (?:the |my )?(?:counter|countertop|table|floor"
-        r"|worktop|bench|stove|tablecloth)))")
+        r"|worktop|bench|stove|tablecloth)|(?:went|got) (?:everywhere|all over the place)))")
 #: Why it did, told after it ("because I was too far to the left"): the earlier pour's, not read.
 _WHY = r"(?: (?:because|since|as|cause) [^,;.?!]*)?"
 #: What may come after an earlier pour told: the question.
-_NEXT = r" *[,;.] *(?=(?:now|this time|if|so|what|which|how|will|would|does|do|is|can|should)\b)"
+_NEXT = r" *[,;.] *(?=(?:now|this time|if|so|what|which|how|will|would|does|do|is|can|could|should)\b)"
 _POUR = re.compile(
     rf"^{_WHEN},? (?:when )?(?:i|we|you|they|he|she|the robot|my robot) (?:poured|pour|held|tilted|tipped|did it)"
     rf"(?P<how>[^,;.?!]*?)(?: and {_WHO} (?:[a-z]+ and )?{_OUT}(?P<part> over| out| everywhere)?{_WHY})?{_NEXT}")
+#: The pour told in the past with no time said, its outcome after it: "i poured from high up and it
+#: went everywhere, how high should I pour?" (without the outcome, "i poured from high up, did it
+#: spill?" asks about the pour told, and is read).
+_PAST = re.compile(
+    rf"^(?:(?:ok|okay|so|well|um|hey|hi)[ ,]+)*(?:i|we) (?:poured|tipped|tilted|held|emptied|tried pouring)"
+    rf"(?P<how>[^,;.?!]*?) and {_WHO} (?:[a-z]+ and )?{_OUT}(?P<part> over| out| everywhere)?{_WHY}{_NEXT}")
 #: Its outcome told first, the pour after it: "yesterday the bowl slid off the tray when I emptied the kettle into it".
 _OUTCOME_FIRST = re.compile(
     rf"^{_WHEN},? {_WHO} {_OUT}[^,;.?!]*?(?: when (?:i|we|you|they|he|she|the robot|my robot)"
     rf" (?:poured|emptied|tipped|tilted|held|did it)[^,;.?!]*?)?{_NEXT}")
 #: Asked whether the pour now is better, or ends what happened: about the outcome told.
 _BETTER = re.compile(r"\b(?:is|will|would) (?:it|that|this) (?:be )?(?:any )?better\b"
-                     r"|\b(?:will|would|does|could|can) (?:that|this|it) (?:fix|stop|prevent|solve) (?:it|that|this)\b")
-#: A scene said to end what happened: "would a heavier bowl stop that" (with it, does it happen).
-_STOPS = re.compile(r"\b(?:will|would|does|could|can) (?P<scene>(?:a|an|the|my|some) [a-z ]+?) (?:fix|stop|prevent|solve)"
-                    r" (?:it|that|this)\b")
+                     r"|\b(?:will|would|does|could|can) (?:that|this|it) (?:fix|stop|prevent|solve) (?:it|that|this)\b"
+                     r"|\b(?:will|would|could|might) (?:that|this|it) help\b")
+#: A scene said to end what happened: "would a heavier bowl stop that", "would pouring centred
+#: have helped" (with it, does it happen).
+_STOPS = re.compile(r"\b(?:will|would|does|could|can|might) (?P<scene>(?:a|an|the|my|some) [a-z ]+?|[a-z]+ing\b[a-z ]*?)"
+                    r" (?:(?:have )?(?:fix|stop|prevent|solve)(?:ed)? (?:it|that|this)|(?:have )?help(?:ed)?)\b")
 
 
 def told(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) without an earlier pour told at its start, and
     what is said back of it; `text` as it is where it tells none."""
-    m = _POUR.match(text) or _OUTCOME_FIRST.match(text)
+    m = _POUR.match(text) or _OUTCOME_FIRST.match(text) or _PAST.match(text)
     if m is None:
         return text, ()
     rest = text[m.end():]
