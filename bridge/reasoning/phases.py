@@ -2,7 +2,8 @@
 three expectations, one a phase (the move in, the move away, the settling),
 and a question that names the phase asks that one alone: "does the bowl
 slide when the cup comes in" (the move in), "will it move when the arm
-goes away", "during the retreat phase" (the move away). "Still in the same
+goes away", "during the retreat phase" (the move away), "while everything
+settles" (the settling). "Still in the same
 spot after the jug is taken away" asks all three: the bowl has not moved
 by then. A phase said by a clause that ends there is heard with the
 outcome; one going on ("when the cup comes in fast") is left for the
@@ -43,6 +44,9 @@ _PHASES = (
      rf"|(?:is|gets?) (?:taken|moved|pulled|drawn)) {_WHAT}(?:back )?away\b"
      rf"|{_WHEN} {_WHO} (?:retreat(?:s|ing)?|withdraw(?:s|ing)?|pull(?:s|ing)? back)\b"
      r"|(?:during|in) the retreat(?: phase| stage| move)?\b|on (?:its|the) way (?:out|back)\b"),
+    ("destination_still_settle",          # everything settling, the source gone: "while everything settles"
+     rf"{_WHEN} (?:everything|it all|things|it|the (?:liquid|water|bowl|[a-z]+)) (?:settles|settle|is settling"
+     r"|settling|comes to rest|is coming to rest)\b|(?:during|in) the settl(?:e|ing)(?: phase| stage)?\b"),
     (("destination_still_retreat", "destination_still_settle"),      # after the pour: the move away and after
      r"afterwards?\b|after (?:the )?pour(?:ing)?\b(?! (?:ends|is over|is done|has ended|finishes)\b)"),
     (None,      # after the move away: by then, every phase is past
