@@ -298,11 +298,11 @@ def _value_asked(m: re.Match) -> tuple[int, int]:
 
 
 #: Whether a scene said reaches a goal said: "is pouring from 20 cm ok?", "is that a problem?",
-#: "is a 100 degree tilt enough?", "does a 90 degree tilt do that?", "is that possible?", "is there
-#: any height where it never splashes?".
+#: "is a 100 degree tilt enough?", "does a 90 degree tilt do that?", "is that possible?", "is that
+#: possible with a light bowl?", "is there any height where it never splashes?".
 _REACHES = Cued(r"\b(?:is|would|will)(?: (?:that|this|it|[a-z]+ing\b[a-z0-9 ]{0,30}?|(?:a|an|the) [a-z0-9 ]{1,30}?))?"
                 r" (?:be )?(?:ok|okay|fine|alright|all right|a problem|an issue|enough|possible|doable|feasible"
-                r"|achievable)(?= *[?.!]* *$)|\b(?:does|would|will|can|could)(?: (?:a|an|the|that|this) [a-z0-9 ]{1,30}?)?"
+                r"|achievable)(?= *[?.!]* *$| (?:with|if|when|using) )|\b(?:does|would|will|can|could)(?: (?:a|an|the|that|this) [a-z0-9 ]{1,30}?)?"
                 r" (?:do (?:that|it|this|the trick)|work|achieve (?:that|it|this))(?= *[?.!]* *$)"
                 r"|(?<=[,:;] )(?:doable|possible|feasible|achievable|ok|okay)(?= *[?.!]* *$)"   # "... - doable?"
                 rf"|\bis there (?:any|an?|some|one) {_VALUE}\b",          # "is there any height where it never splashes"
