@@ -13,13 +13,18 @@ a temperature), or of one that ends as a quality does itself
 the spelling of comparatives ("heavier": heavy, "bigger": big, "nicer":
 nice). Any other "-er" word is a noun ("fryer": a comparative of "fry"
 would be "frier"; "butter", "mixer"), or the comparative of a word that
-says nothing of the pour ("cheaper"), and is part of the name."""
+says nothing of the pour ("cheaper"), and is part of the name. An "-ing"
+word says what the thing is for ("a mixing bowl", "a dosing dish", "a
+measuring cup"), part of its name, unless it is a verb of an outcome
+(outcome_verbs.py: "a leaking jug", "a wobbling bowl"), which says how the
+thing behaves and is refused."""
 from __future__ import annotations
 
 import re
 from typing import Collection
 
 from pantarhei.bridge.reasoning.nouns import BOWL
+from pantarhei.bridge.reasoning.outcome_verbs import OUTCOMES
 from pantarhei.bridge.reasoning.spelling import english
 from pantarhei.bridge.reasoning.wording import Token, tokens as words_of
 
@@ -48,6 +53,8 @@ def names_part(tokens: list[Token], i: int, placeable: Collection[str]) -> bool:
 def says_quality(word: str, placeable: Collection[str]) -> bool:
     """Whether `word` ends as a word of a quality does, or is the
     comparative of a quality (see the module's docstring)."""
+    if word.endswith("ing") and len(word) > 5:        # what it is for, unless how it behaves
+        return any(re.fullmatch(verb, word) for verb, _, _ in OUTCOMES)
     if _QUALITY.search(word):
         return True
     return word.endswith("er") and any(
