@@ -3,7 +3,8 @@ three expectations, one a phase (the move in, the move away, the settling),
 and a question that names the phase asks that one alone: "does the bowl
 slide when the cup comes in" (the move in), "will it move when the arm
 goes away", "during the retreat phase" (the move away), "while everything
-settles" (the settling). "Still in the same
+settles" (the settling), said after the outcome or before it, in a clause
+of its own ("when I take the bottle away, does the bowl move?"). "Still in the same
 spot after the jug is taken away" asks all three: the bowl has not moved
 by then. A phase said by a clause that ends there is heard with the
 outcome; one going on ("when the cup comes in fast") is left for the
@@ -40,7 +41,7 @@ _PHASES = (
      rf"|{_WHEN} {_WHO} approach(?:es|ing)?\b|(?:during|in) the approach(?: phase| stage| move)?\b"
      r"|on (?:its|the) way in\b"),
     ("destination_still_retreat",
-     rf"{_WHEN} {_WHO} (?:go(?:es|ing)?|mov(?:e|es|ing)|pull(?:s|ing)?|back(?:s|ing)?|draw(?:s|ing)?"
+     rf"{_WHEN} {_WHO} (?:go(?:es|ing)?|mov(?:e|es|ing)|pull(?:s|ing)?|back(?:s|ing)?|draw(?:s|ing)?|tak(?:e|es|ing)"
      rf"|(?:is|gets?) (?:taken|moved|pulled|drawn)) {_WHAT}(?:back )?away\b"
      rf"|{_WHEN} {_WHO} (?:retreat(?:s|ing)?|withdraw(?:s|ing)?|pull(?:s|ing)? back)\b"
      r"|(?:during|in) the retreat(?: phase| stage| move)?\b|on (?:its|the) way (?:out|back)\b"),
@@ -91,8 +92,17 @@ def during(text: str, asked: list[str]) -> tuple[str, list[str], list[str]]:
         return text, asked, heard
     for phase, words in _PHASES:
         m = re.search(rf"\boutcome(?P<gap>(?: ,)?(?: (?:at all|all|around|about|much|even))*) (?P<said>{words})", text)
-        if m is None:
-            continue
+        if m is None:       # said first, its clause before the outcome's: "when the cup comes in, does the bowl slide?"
+            m = re.search(rf"(?:^|[.?!;:] ) *(?P<said>{words})(?P<more>[^,.?!;:]*) *, *(?:then )?(?:[a-z]+ ){{0,3}}?outcome\b",
+                          text)
+            if m is not None and phase is not None:
+                asked = [n for n in asked if n not in STILL or n in (phase if isinstance(phase, tuple) else (phase,))]
+            if m is not None and not m.group("more").strip():
+                heard.append(m.group("said"))
+                text = text[:m.start("said")] + text[m.end("said"):]
+            if m is None:
+                continue
+            return text, asked, heard
         if phase == "destination_still_approach" and liquids().spans(m.group("said").split()[1:4]):
             heard.append(m.group("said"))       # "when the cream goes in": while pouring, no phase of its own
             text = text[:m.start("said")] + text[m.end("said"):]
