@@ -7,7 +7,8 @@ refused (lower than what?). Poured "straight down" into the bowl says the
 way the stream falls, as it falls from every pour: no move down, and no
 place over the bowl, said back as read as nothing; "pour straight down",
 with no bowl it falls into, is still refused (the source held straight
-down, upside down, or moved down?)."""
+down, upside down, or moved down?). Held or lowered down inside the bowl
+("lower the jug right down inside it to pour") is below its rim."""
 from __future__ import annotations
 
 #: Where a move up or down may be said to go, in words: just over the rim ("just over the rim": low).
@@ -20,6 +21,11 @@ MOVED_TO: tuple[tuple, ...] = (
                rf"|coming|came|move[sd]?|moving)(?: (?:it|them|the \w+))? (?:down|up)) to(?= {_RIM_SAID})"
                r"(?![^;.?!]*\b(?:before|after|then)\b)",),
      "read as held there while pouring"),
+    # held down inside the bowl: below its rim ("lower the jug right down inside it to pour")
+    ("below the rim", (r"re(inside):\b(?:(?:lower(?:ed|ing|s)?|dip(?:s|ped|ping)?|put(?:s|ting)?|hold(?:s|ing)?|held"
+                       r"|keep(?:s|ing)?|kept)(?: (?:it|them|the \w+))?(?: right)?(?: down)?|(?:right )?down)"
+                       r" inside (?:of )?(?:it|the (?:bowl|destination|dish))\b(?![^;.?!]*\b(?:before|after|then)\b)",),
+     "read as below the destination's rim: the source held down inside it while pouring"),
     ("hedge", (r"re(straight down):\bstraight down\b(?= (?:into|in|onto) )",),
      "read as nothing: the stream falls straight down from every pour; where the source is held is "
      "said by \"centred\" or \"near the rim\", a move down by \"lower it before pouring\""),
