@@ -13,7 +13,8 @@ move said with it is heard ("does it slosh back out once the cup is
 gone").
 
 A stillness wanted right after a move said ("the fastest I can move away
-without the bowl sliding", "move the cup in and out without ...") is
+without the bowl sliding", "move the cup in and out without ...", "move
+the pitcher away after pouring so the glass bowl doesn't wobble") is
 wanted of that move's phase.
 
 And a place the liquid may land instead of the bowl, asked beside it:
@@ -119,7 +120,8 @@ def during(text: str, asked: list[str]) -> tuple[str, list[str], list[str]]:
 #: A move said right before a stillness wanted ("move away without the bowl sliding"), by its way.
 _MOVED = re.compile(r"\b(?:(?P<verb>mov(?:e|es|ing)|go(?:es|ing)?|com(?:e|es|ing)|pull(?:s|ing)?|bring(?:s|ing)?|draw(?:s|ing)?)"
                     r"(?: (?:it|them|(?:the|my|your|a) [a-z]+))?(?P<way> in and (?:out|away|back)| in| away| back| out)"
-                    r"|(?P<named>retreat|withdraw|approach)(?:s|ing)?)(?: (?:fast|quickly|slowly|quick|slow))?(?: (?:it|they|(?:the|my|a) [a-z]+))? outcome\b")
+                    r"|(?P<named>retreat|withdraw|approach)(?:s|ing)?)(?: (?:fast|quickly|slowly|quick|slow))?(?: after (?:the )?pour(?:ing)?)?"
+                    r"(?: (?:it|they|(?:the|my|a) (?:[a-z]+ )?[a-z]+)(?: does| do| will| would)?)? outcome\b")
 _WAYS = {"in": ("destination_still_approach",), "approach": ("destination_still_approach",)}
 
 
