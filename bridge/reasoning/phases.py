@@ -18,7 +18,10 @@ the pitcher away after pouring so the glass bowl doesn't wobble") is
 wanted of that move's phase.
 
 And a place the liquid may land instead of the bowl, asked beside it:
-"does it go in the bowl or on the table" asks whether it spills too; and
+"does it go in the bowl or on the table", and wanted not to ("so it goes
+in the bowl and not outside"), asks whether it spills too; the bowl said
+beside a spill ("end up on the table instead of in the dish") whether it
+goes in too; and
 staying said after going in ("does it go in and stay") asks whether it
 stays in the bowl."""
 from __future__ import annotations
@@ -63,7 +66,15 @@ _SETTLED = _PHASES[-1][1]
 _ENDS = r"(?= *(?:[?.!,;:]|$| or\b| and\b| lol\b))"
 #: A place the liquid may land said beside the bowl it goes in: the spill asked too.
 _ELSEWHERE = Cued(r"\boutcome (?P<said>or (?:also |maybe |even )?(?:on|onto|all over|over) (?:the |a |my )?"
-                  r"(?:table|counter|floor|worktop|countertop|ground|bench)s?)\b", ("outcome or ",))
+                  r"(?:table|counter|floor|worktop|countertop|ground|bench)s?"
+                  # not there: "go in the bowl and not outside", "and not on the table"
+                  r"|(?:and|but|,)? ?not (?:outside|(?:on|onto|all over) (?:the |a |my )?"
+                  r"(?:table|counter|floor|worktop|countertop|ground|bench|tablecloth)s?|everywhere))(?= *(?:[?.!,;]|$))",
+                  ("outcome or ", "not "))
+#: The bowl said as where it should have gone, beside a spill asked: "will some of it end up on the
+#: table instead of in the dish?" asks whether it goes in too.
+_INSTEAD = Cued(r"\boutcome (?P<said>(?:instead of|rather than) (?:going )?(?:in|into|inside) (?:the |a |an |my )?"
+                r"(?:bowl|dish|destination|glass|pot|basin|container|mug|cup)s?)(?= *(?:[?.!,;]|$))", ("instead", "rather"))
 
 #: Staying said after going in, with no place: it stays where it went.
 _STAYS = Cued(r"\boutcome (?P<said>(?:,? ?and|,) (?:then )?(?:it )?(?:stay|stays|remain|remains)(?: there)?)"
@@ -80,6 +91,11 @@ def during(text: str, asked: list[str]) -> tuple[str, list[str], list[str]]:
         heard += [m.group("said") for m in _ELSEWHERE.pattern.finditer(text)]
         asked = [*asked, "no_spill"]
         text = _ELSEWHERE.pattern.sub("outcome", text)
+    instead = _INSTEAD.search(text)
+    if instead and "no_spill" in asked and "liquid_enters_destination" not in asked:
+        heard.append(instead.group("said"))
+        asked = [*asked, "liquid_enters_destination"]
+        text = text[:instead.start("said")] + text[instead.end():]
     stays = _STAYS.search(text)         # "does it go in the bowl and stay": and stay in it
     if stays and "liquid_enters_destination" in asked:
         heard.append(stays.group("said"))

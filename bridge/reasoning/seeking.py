@@ -36,8 +36,8 @@ _ACT = (r"(?:hold|pour|tilt|keep|put|have|place|go|position|use|do|set|angle|rai
 _WHAT = r"(?: (?:it|them|the \w+))?(?: (?:from|at|to|up|in))?"
 #: The words that ask for a value (compiled by _asking, where a goal is said).
 _ASKING_SOURCE = (
-    # a value that works: "what tilt works", "which height would work best"
-    rf"\b(?:what|which) {_VALUE}(?: {_VALUE})? (?:works?|would work|will work|is best|would be best"
+    # a value that works: "what tilt works", "which height would work best", "which position of cup is best"
+    rf"\b(?:what|which) {_VALUE}(?: {_VALUE})?(?: of (?:the |my |a )?[a-z]+)? (?:works?|would work|will work|is best|would be best"
     rf"|(?:is|would be) (?:good|right|ideal|safe|safest|better))(?: best)?(?= |$|[?.!,])"
     rf"|\b(?:(?:what|which)(?: is| be)?(?: the| a)?(?: {_BEST})?|(?:the |a )?{_BEST}) (?:(?:pour|pouring|approach|retreat|withdraw|withdrawal|retraction) )?{_VALUE}(?: {_VALUE})?"   # "tilt angle", "pour height"
     rf"(?:(?:,| and| or|, and|, or) (?:the |a )?{_VALUE})*"      # "the best height and angle"
