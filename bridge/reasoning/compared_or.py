@@ -13,7 +13,8 @@ likely to overflow"). Without such a word ("pour high or low, does it spill?", "
 from the side or the middle") two values of one dimension are still
 refused, asking for one; asked with "should" ("should I hold it over the
 middle or near the rim", with a goal), the choice is the plan's to make
-(seeking.py); a choice of two liquids is choices.py's; an "or" before a
+(seeking.py), and with no goal ("should I hold the jug close to the bowl
+or higher up?") it asks which is better, as "is it better to" does; a choice of two liquids is choices.py's; an "or" before a
 number ("1 or 2 cm": a range), "or not", "or so" or a question of its own
 ("or will the bowl skid?") is no second scene."""
 from __future__ import annotations
@@ -25,6 +26,12 @@ from pantarhei.bridge.reasoning.two_liquids import chosen_liquids
 _COMPARING = re.compile(r"\b(?:better|best|safer|safest|worse|worst|preferable|which|likelier"
                         r"|(?:more|less|most|least) (?:likely|prone))\b")
 _ASKED_WHAT_TO_DO = re.compile(r"\b(?:should|shall)\b")
+#: "should I ... or ...", asked of no goal: which is better.
+_SHOULD = re.compile(r"\b(?:should|shall) (?:i|we|you|she|he|they|the robot)\b")
+#: An outcome asked in a clause of its own ("should I pour low or high, will it spill?"): two values, refused.
+_ASKS = re.compile(r"[,;:.?!] *(?:will|does|do|would|is|are|can|could|might)\b|\boutcome\b")
+#: A goal said: "so nothing spills", "without spilling", "to avoid a mess".
+_GOAL = re.compile(r"\b(?:so|without|in order to|to (?:avoid|keep|prevent|stop|get|make|fill|empty))\b")
 #: The words a second scene may begin with: where ("from near the edge"), how ("slowly", "tipping it
 #: fast"), a body ("a light bowl"), a value ("low").
 _SCENE = (r"(?:from|at|near|over|above|below|under|with|by|in|on|close|closer|directly|right|just|straight|far"
@@ -38,10 +45,16 @@ _OR = re.compile(rf"(?: ,)? \bor (?={_SCENE})(?!{_NOT_A_SCENE})")
 def compared_or(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with the "or" between two scenes it compares
     read as "vs", and what is said back of it; `text` as it is otherwise."""
-    if not _COMPARING.search(text) or _ASKED_WHAT_TO_DO.search(text):
+    should = _SHOULD.search(text)
+    said: tuple[str, ...] = ()
+    if (should and not _COMPARING.search(text) and not _GOAL.search(text) and _OR.search(text, should.end())
+            and not _ASKS.search(text, should.end())):
+        said = (f"{should.group(0)}: read as is it better to, of two scenes",)
+        text = text[:should.start()] + "is it better to" + text[should.end():]
+    elif not _COMPARING.search(text) or _ASKED_WHAT_TO_DO.search(text):
         return text, ()
     m = _OR.search(text)
     if m is None or m.start() == 0 or chosen_liquids(text):
         return text, ()
     return (text[:m.start()] + " vs " + text[m.end():],
-            ("or: read as vs: two scenes compared, the one said first answered",))
+            (*said, "or: read as vs: two scenes compared, the one said first answered"))
