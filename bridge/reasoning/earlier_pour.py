@@ -45,8 +45,10 @@ _OUT = (r"(?:(?P<out>splash|spill|spilt|drip|overflow|slosh|tip|slid|mov|miss|bo
         r"|worktop|bench|stove|tablecloth)|(?:went|got) (?:everywhere|all over the place)))")
 #: Why it did, told after it ("because I was too far to the left"): the earlier pour's, not read.
 _WHY = r"(?: (?:because|since|as|cause) [^,;.?!]*)?"
-#: What may come after an earlier pour told: the question.
-_NEXT = r" *[,;.] *(?=(?:now|this time|if|so|what|which|how|will|would|does|do|is|can|could|should)\b)"
+#: What may come after an earlier pour told: the question (after a comma or a full stop, or after
+#: "lol" typed as one).
+_NEXT = (r"(?: *[,;.] *| (?:lol|lmao|haha|ugh|smh|oops)[,;.]? )(?=(?:now|this time|if|so|what|which|how|will|would|does|do|is|can"
+         r"|could|should)\b)")
 _POUR = re.compile(
     rf"^{_WHEN},? (?:when )?(?:i|we|you|they|he|she|the robot|my robot) (?:poured|pour|held|tilted|tipped|did it)"
     rf"(?P<how>[^,;.?!]*?)(?: and {_WHO} (?:[a-z]+ and )?{_OUT}(?P<part> over| out| everywhere)?{_WHY})?{_NEXT}")

@@ -36,6 +36,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     # (sloshing around in the bowl is no spill: everyday.txt says it back)
     (r"spill\w*|spilt|splash\w*|splatter\w*|slosh\w*(?! (?:around|about)\b)|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
      r"|makes? (?:(?:a|any) )?(?:big |huge |bit of a |real |total )?mess|(?:go|goes|going|went|get|gets) everywhere"
+     r"|(?:get|gets|getting|got) (?:it|them|liquid|(?:the )?[a-z]+) (?:everywhere|all over(?: the place)?)\b"
      r"|slop\w*|splat\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)|(?:get|gets|got|getting) (?:any|some|much|a drop)(?: of it)?(?= on\b| onto\b)"
      r"|(?:run|runs|running|ran|roll\w*|stream\w*) down the (?:outside|side)(?! of (?:the |a )?(?:bowl|dish|destination))"
      r"|hit\w* (?:the )?(?:table|floor|counter|worktop|bench)\b|(?:go|goes|going|went|get|gets|got|land|lands|landed|landing|fall|falls|fell) (?:on|onto|all over"
