@@ -30,8 +30,9 @@ _ASKED_WHAT_TO_DO = re.compile(r"\b(?:should|shall)\b")
 _SHOULD = re.compile(r"\b(?:should|shall) (?:i|we|you|she|he|they|the robot)\b")
 #: An outcome asked in a clause of its own ("should I pour low or high, will it spill?"): two values, refused.
 _ASKS = re.compile(r"[,;:.?!] *(?:will|does|do|would|is|are|can|could|might)\b|\boutcome\b")
-#: A goal said: "so nothing spills", "without spilling", "to avoid a mess".
-_GOAL = re.compile(r"\b(?:so|without|in order to|to (?:avoid|keep|prevent|stop|get|make|fill|empty))\b")
+#: A goal said: "so nothing spills", "without spilling", "to avoid a mess", "I want the bowl upright".
+_GOAL = re.compile(r"\b(?:so|without|in order to|to (?:avoid|keep|prevent|stop|get|make|fill|empty)"
+                   r"|wants?|wanted|needs?|(?:i|we)(?: would|'d| d)? like|goal|aim)\b")
 #: The words a second scene may begin with: where ("from near the edge"), how ("slowly", "tipping it
 #: fast"), a body ("a light bowl"), a value ("low").
 _SCENE = (r"(?:from|at|near|over|above|below|under|with|by|in|on|close|closer|directly|right|just|straight|far"

@@ -62,10 +62,13 @@ _PAST = re.compile(
 _OUTCOME_FIRST = re.compile(
     rf"^{_WHEN},? {_WHO} {_OUT}[^,;.?!]*?(?: when (?:i|we|you|they|he|she|the robot|my robot)"
     rf" (?:poured|emptied|tipped|tilted|held|did it)[^,;.?!]*?)?{_NEXT}")
-#: Asked whether the pour now is better, or ends what happened: about the outcome told.
+#: Asked whether the pour now is better, or ends what happened, or what was wrong with it: about the
+#: outcome told.
 _BETTER = re.compile(r"\b(?:is|will|would) (?:it|that|this) (?:be )?(?:any )?better\b"
                      r"|\b(?:will|would|does|could|can) (?:that|this|it) (?:fix|stop|prevent|solve) (?:it|that|this)\b"
-                     r"|\b(?:will|would|could|might) (?:that|this|it) help\b")
+                     r"|\b(?:will|would|could|might) (?:that|this|it) help\b"
+                     # what was wrong with the pour told: whether it happens again, asked
+                     r"|\bwhat (?:did|have) (?:i|we) (?:do|done) wrong\b")
 #: A scene said to end what happened: "would a heavier bowl stop that", "would pouring centred
 #: have helped" (with it, does it happen).
 _STOPS = re.compile(r"\b(?:will|would|does|could|can|might) (?P<scene>(?:a|an|the|my|some) [a-z ]+?|[a-z]+ing\b[a-z ]*?)"

@@ -66,10 +66,10 @@ _SETTLED = _PHASES[-1][1]
 _ENDS = r"(?= *(?:[?.!,;:]|$| or\b| and\b| lol\b))"
 #: A place the liquid may land said beside the bowl it goes in: the spill asked too.
 _ELSEWHERE = Cued(r"\boutcome (?P<said>or (?:also |maybe |even )?(?:on|onto|all over|over) (?:the |a |my )?"
-                  r"(?:table|counter|floor|worktop|countertop|ground|bench)s?"
+                  r"(?:table|counter|floor|worktop|countertop|ground|bench)s?\b"
                   # not there: "go in the bowl and not outside", "and not on the table"
                   r"|(?:and|but|,)? ?not (?:outside|(?:on|onto|all over) (?:the |a |my )?"
-                  r"(?:table|counter|floor|worktop|countertop|ground|bench|tablecloth)s?|everywhere))(?= *(?:[?.!,;]|$))",
+                  r"(?:table|counter|floor|worktop|countertop|ground|bench|tablecloth)s?|everywhere)(?= *(?:[?.!,;]|$)))",
                   ("outcome or ", "not "))
 #: The bowl said as where it should have gone, beside a spill asked: "will some of it end up on the
 #: table instead of in the dish?" asks whether it goes in too.
