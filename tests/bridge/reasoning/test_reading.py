@@ -19,6 +19,15 @@ from pantarhei.bridge.reasoning.reading import read_question, understand
 from pantarhei.theory.lexicon import load_vocabulary
 from tests.conftest import assert_one_line_error, run_cli
 
+
+def refusal(question: str) -> str:
+    """The one line `understand` refuses `question` with."""
+    with pytest.raises(UserError) as e:
+        understand(question)
+    assert "\n" not in str(e.value)
+    return str(e.value)
+
+
 QUESTIONS = Path(__file__).resolve().parents[3] / "bridge" / "evaluation" / "questions.json"
 
 
@@ -66,9 +75,7 @@ def test_a_negation_is_read_as_the_other_values_of_its_dimension(question, props
     ("pour from the side and pour centred", "two values of pour_alignment"),
 ])
 def test_a_negation_or_contradiction_not_understood_is_refused(question, words):
-    with pytest.raises(UserError) as e:
-        understand(question)
-    assert words in str(e.value) and "\n" not in str(e.value)
+    assert words in refusal(question)
 
 
 @pytest.mark.parametrize("question", ["do not pour centred", "a light and heavy liquid",
@@ -133,10 +140,7 @@ def test_each_word_is_read_in_the_stage_it_is_said_in(question, props):
     ("pour a heavy liquid from 45 furlongs", '"45", "furlongs"'),     # no unit known
 ])
 def test_a_word_that_cannot_be_placed_is_refused_naming_it(question, words):
-    with pytest.raises(UserError) as e:
-        understand(question)
-    assert f"could not place {words} in \"{question}\"" in str(e.value)
-    assert "\n" not in str(e.value)
+    assert f"could not place {words} in \"{question}\"" in refusal(question)
 
 
 @pytest.mark.parametrize("question,props", [
@@ -225,9 +229,7 @@ def test_coordination_and_everyday_words(question, props):
     ("pour with the bowl upside down", '"upside"'),             # the bowl is the destination
 ])
 def test_words_said_of_what_they_cannot_be_said_of_are_refused(question, words):
-    with pytest.raises(UserError) as e:
-        understand(question)
-    assert f"could not place {words}" in str(e.value) and "\n" not in str(e.value)
+    assert f"could not place {words}" in refusal(question)
 
 
 @pytest.mark.parametrize("question,props", [
@@ -263,9 +265,7 @@ def test_numbers_with_units_are_read_as_the_proposition_whose_range_holds_them(q
     ("a 5 kg liquid", "the mass of which bowl?"),
 ])
 def test_a_number_no_proposition_holds_is_refused_naming_the_ranges(question, words):
-    with pytest.raises(UserError) as e:
-        understand(question)
-    assert words in str(e.value) and "\n" not in str(e.value)
+    assert words in refusal(question)
 
 
 def _answer_lines(out: str) -> list[str]:
@@ -306,9 +306,7 @@ def test_ask_says_back_everyday_words_and_shows_what_it_ignored():
     ("pour from the left", '"from the left"'),        # an English word: never read as "lift"
 ])
 def test_a_misspelt_word_is_refused_with_the_word_it_is_close_to(question, words):
-    with pytest.raises(UserError) as e:
-        understand(question)
-    assert words in str(e.value) and "\n" not in str(e.value)
+    assert words in refusal(question)
 
 
 @pytest.mark.parametrize("question,word", [
@@ -318,9 +316,8 @@ def test_a_misspelt_word_is_refused_with_the_word_it_is_close_to(question, words
 ])
 def test_an_english_word_is_not_offered_as_a_slip_for_another(question, word):
     # the word is refused as not placed, but it is spelt right: no "did you mean"
-    with pytest.raises(UserError) as e:
-        understand(question)
-    assert "could not place" in str(e.value) and f"'{word}'" not in str(e.value)
+    said = refusal(question)
+    assert "could not place" in said and f"'{word}'" not in said
 
 
 @pytest.mark.parametrize("question,scene,said", [
