@@ -133,6 +133,11 @@ PHRASES: tuple[tuple, ...] = (
     # just past the rim: to the side of the bowl (not a length past it: "5 cm past the rim")
     ("to the side", (r"re(past|beyond):(?<!cm )(?<!mm )\b(?:just |slightly |a bit |a little )?(?:past|beyond) the (?:bowl'?s? )?"
                      r"(?:edge|rim|lip)\b(?: of (?:it|the bowl|the destination)\b)?(?! (?:of|by|at) )",)),
+    # not tipped (very, too) far: slightly tilted, unless a value follows that says how far ("not
+    # tipping it very far, only slightly past horizontal")
+    ("slightly tilted", (r"re( far):\b(?:not|without) (?:be |being )?(?:tilt|tip|lean)\w*\b(?: (?:it|the \w+))?"
+                         r" (?:too |very |so |that )?far\b(?! (?:from|away|off|to)\b)(?![^.?!;]*\b(?:only|just|but|rather|tilted|tilt|steeply|slightly|halfway|upside|upright|degrees?|horizontal)\b)",),
+     "read as slightly tilted: tilted, not far"),
     # tipped really far: steeply (too far stays refused: past what?)
     ("steeply tilted", (r"re( far):\b(?:tilt|tip)\w*(?: (?:it|them|the \w+))? (?:really|very|way|pretty|quite) far\b"
                         r"(?! (?:from|away|off|to)\b)",), "read as steeply tilted"),
