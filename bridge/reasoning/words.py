@@ -264,7 +264,9 @@ PHRASES: tuple[tuple, ...] = (
     ("below", ("beneath", "underneath", "under")),
     ("centred", ("centered", "center", "centre", "central", "in the middle", "middle",
                  r"re:\b(?:directly|straight|right) (?:above|over)(?= (?:the )?(?:destination|bowl"
-                 r"|centre|center|middle)\b)")),
+                 r"|centre|center|middle)\b)",
+                 # with nothing after it ("pour from directly above, does it spill?"): over the bowl's middle
+                 r"re:\b(?:directly|straight|right) (?:above|overhead)\b(?= *[,;:.?!]| *$)")),
     ("far", (r"re:\bfar (?:off |away )?to (?:the|one) side\b", "far off", "distant", "a long way",
              "from a distance", "at a distance")),
     # lying on its side: tilted to about level, not poured from the side
