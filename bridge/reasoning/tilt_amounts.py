@@ -9,8 +9,12 @@ as one. A little either side of horizontal ("slightly past horizontal", "a
 little less than horizontal") is steeply tilted still, as horizontal is; a
 move made horizontally ("retreat horizontally", "pull it back
 horizontally") is the way the source moves, which no proposition says, and
-no tilt."""
+no tilt. How far, said with "far": "not tilted very far" is slightly
+tilted, unless a value follows that says how far; "tip it really far"
+steeply; "tilted too far" is refused (past what?)."""
 from __future__ import annotations
+
+from pantarhei.bridge.reasoning.everyday import UNCLEAR
 
 #: Much of a tilt: "much", "a lot of", "a big".
 _MUCH = r"(?:much|a lot of|lots of|a great|great|a strong|strong|plenty of)"
@@ -34,4 +38,21 @@ TILT_AMOUNTS: tuple[tuple, ...] = (
     ("hedge", (r"re(horizontally):(?:(?<=away )|(?<=back )|(?<=out )|(?<=retreat )|(?<=retract )|(?<=withdraw )"
                r"|(?<=retreat it )|(?<=move )|(?<=moves )|(?<=moving )|(?<=move it ))horizontally\b",),
      "the way the source moves: no proposition says it, and it is no tilt"),
+)
+
+#: How far, said with "far" (read before the negations of tilting in words.py's PHRASES).
+FAR_TILTS: tuple[tuple, ...] = (
+    # not tipped (very, too) far: slightly tilted, unless a value follows that says how far ("not
+    # tipping it very far, only slightly past horizontal")
+    ("slightly tilted", (r"re( far):\b(?:not|without) (?:be |being )?(?:tilt|tip|lean)\w*\b(?: (?:it|the \w+))?"
+                         r" (?:too |very |so |that )?far\b(?! (?:from|away|off|to)\b)"
+                         r"(?![^.?!;]*\b(?:only|just|but|rather|tilted|tilt|steeply|slightly|halfway|upside|upright"
+                         r"|degrees?|horizontal)\b)",),
+     "read as slightly tilted: tilted, not far"),
+    # tipped really far: steeply (too far stays refused: past what?)
+    ("steeply tilted", (r"re( far):\b(?:tilt|tip)\w*(?: (?:it|them|the \w+))? (?:really|very|way|pretty|quite) far\b"
+                        r"(?! (?:from|away|off|to)\b)",), "read as steeply tilted"),
+    # tipped too far: past what? (not far from the bowl)
+    (UNCLEAR, (r"re:\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:too |so |that |very )?far\b"
+               r"(?! (?:from|away|off|to)\b)",)),
 )

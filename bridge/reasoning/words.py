@@ -42,7 +42,7 @@ from pantarhei.bridge.reasoning.off_centre import LENGTHS as _LENGTHS, OFF_CENTR
 from pantarhei.bridge.reasoning.properties import SURFACE_SAID, Levels, Surfaces, Values
 from pantarhei.bridge.reasoning.ramps import Ramps
 from pantarhei.bridge.reasoning.speeds import SPEEDS
-from pantarhei.bridge.reasoning.tilt_amounts import NEAR_HORIZONTAL, TILT_AMOUNTS
+from pantarhei.bridge.reasoning.tilt_amounts import FAR_TILTS, NEAR_HORIZONTAL, TILT_AMOUNTS
 from pantarhei.bridge.reasoning.tipping_speed import SAID as TIPPED, TippingSpeed
 
 #: Value words an intensifier may raise to "very" ("incredibly high" is very high; a value
@@ -133,17 +133,7 @@ PHRASES: tuple[tuple, ...] = (
     # just past the rim: to the side of the bowl (not a length past it: "5 cm past the rim")
     ("to the side", (r"re(past|beyond):(?<!cm )(?<!mm )\b(?:just |slightly |a bit |a little )?(?:past|beyond) the (?:bowl'?s? )?"
                      r"(?:edge|rim|lip)\b(?: of (?:it|the bowl|the destination)\b)?(?! (?:of|by|at) )",)),
-    # not tipped (very, too) far: slightly tilted, unless a value follows that says how far ("not
-    # tipping it very far, only slightly past horizontal")
-    ("slightly tilted", (r"re( far):\b(?:not|without) (?:be |being )?(?:tilt|tip|lean)\w*\b(?: (?:it|the \w+))?"
-                         r" (?:too |very |so |that )?far\b(?! (?:from|away|off|to)\b)(?![^.?!;]*\b(?:only|just|but|rather|tilted|tilt|steeply|slightly|halfway|upside|upright|degrees?|horizontal)\b)",),
-     "read as slightly tilted: tilted, not far"),
-    # tipped really far: steeply (too far stays refused: past what?)
-    ("steeply tilted", (r"re( far):\b(?:tilt|tip)\w*(?: (?:it|them|the \w+))? (?:really|very|way|pretty|quite) far\b"
-                        r"(?! (?:from|away|off|to)\b)",), "read as steeply tilted"),
-    # tipped too far: past what? (not far from the bowl)
-    (UNCLEAR, (r"re:\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:too |so |that |very )?far\b"
-               r"(?! (?:from|away|off|to)\b)",)),
+    *FAR_TILTS,               # "not tilted very far", "tip it really far", "tilted too far" (tilt_amounts.py)
     # tilted a lot: steeply (the most before upside down, which "all the way" says)
     ("steeply tilted", (r"re:\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:(?:quite |really |very )?a lot"
                         r"|lots|loads|heaps)\b",)),
