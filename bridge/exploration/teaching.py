@@ -222,7 +222,6 @@ def teaching(P: np.ndarray, S: np.ndarray, explored: Sequence[Sequence[str]],
     suspects = {c for c in cands if suspect(c)}
     support = Support(P) if support is None else support.grown(P)
     doubts = news = np.zeros(len(plain))
-    parts = {}
     with one_thread(threads):
         if meaning is not None:
             M = np.nan_to_num(meaning(bodies), nan=0.5)

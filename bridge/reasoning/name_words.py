@@ -24,7 +24,7 @@ import re
 from typing import Collection
 
 from pantarhei.bridge.reasoning.nouns import BOWL
-from pantarhei.bridge.reasoning.outcome_verbs import OUTCOMES
+from pantarhei.bridge.reasoning.outcome_verbs import outcome_verb
 from pantarhei.bridge.reasoning.spelling import english
 from pantarhei.bridge.reasoning.wording import Token, tokens as words_of
 
@@ -54,7 +54,7 @@ def says_quality(word: str, placeable: Collection[str]) -> bool:
     """Whether `word` ends as a word of a quality does, or is the
     comparative of a quality (see the module's docstring)."""
     if word.endswith("ing") and len(word) > 5:        # what it is for, unless how it behaves
-        return any(re.fullmatch(verb, word) for verb, _, _ in OUTCOMES)
+        return outcome_verb(word)
     if _QUALITY.search(word):
         return True
     return word.endswith("er") and any(

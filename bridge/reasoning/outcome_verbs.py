@@ -4,6 +4,9 @@ upright": destination_upright holds). outcomes.py hears them in the
 clauses that ask about the outcome or say a goal."""
 from __future__ import annotations
 
+import re
+from functools import lru_cache
+
 from pantarhei.bridge.reasoning.phases import STILL
 from pantarhei.bridge.reasoning.vessels import CONTAINER, OUT_OF
 
@@ -99,3 +102,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|dangerous|(?:a )?problem|(?:bad|good|wise|unwise|smart|sensible|better|safer|wiser)(?= to\b)",
      ("no_spill", "destination_upright", "source_clear"), False),
 )
+
+
+@lru_cache(maxsize=None)
+def outcome_verb(word: str) -> bool:
+    """Whether `word` is a verb of an outcome ("slide", "spills", "leaking")."""
+    return any(re.fullmatch(verb, word) for verb, _, _ in OUTCOMES)

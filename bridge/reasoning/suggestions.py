@@ -11,7 +11,7 @@ from functools import lru_cache
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.everyday import UNCLEAR, alternation, names, sections
 from pantarhei.bridge.reasoning.name_words import names_part
-from pantarhei.bridge.reasoning.outcome_verbs import OUTCOMES
+from pantarhei.bridge.reasoning.outcome_verbs import outcome_verb
 from pantarhei.bridge.reasoning.spelling import english
 from pantarhei.bridge.reasoning.wording import Token
 from pantarhei.bridge.reasoning.words import PHRASES
@@ -35,16 +35,10 @@ def misspelt(words: list[str]) -> list[str]:
     # spelt right, a number, a verb of an outcome ("slide" is no "side") or an English word
     # ("helped" is no "held", "ask" no "cask"): not misspelt
     near = {w: difflib.get_close_matches(w.lower(), _spelt(), n=1, cutoff=0.8) for w in words
-            if w.lower() not in _spelt() and not re.search(r"\d", w) and not _outcome_verb(w.lower())
+            if w.lower() not in _spelt() and not re.search(r"\d", w) and not outcome_verb(w.lower())
             and not english(w.lower())}
     return [f'did you mean {", ".join(f"{m[0]!r} for {w!r}" for w, m in near.items() if m)}?'
             ] if any(near.values()) else []
-
-
-@lru_cache(maxsize=None)
-def _outcome_verb(word: str) -> bool:
-    """Whether `word` is a verb of an outcome (outcome_verbs.py: "slide", "spills")."""
-    return any(re.fullmatch(verb, word) for verb, _, _ in OUTCOMES)
 
 
 #: Phrasings that would be read, for words that could not be placed: (pattern
