@@ -108,27 +108,21 @@ def during(text: str, asked: list[str]) -> tuple[str, list[str], list[str]]:
             text = text[:m.start("said")] + text[m.end():]
         return text, asked, heard
     for phase, words in _PHASES:
-        m = re.search(rf"\boutcome(?P<gap>(?: ,)?(?: (?:at all|all|around|about|much|even))*) (?P<said>{words})", text)
-        if m is None:       # said first, its clause before the outcome's: "when the cup comes in, does the bowl slide?"
-            m = re.search(rf"(?:^|[.?!;:] ) *(?P<said>{words})(?P<more>[^,.?!;:]*) *, *(?:then )?(?:[a-z]+ ){{0,3}}?outcome\b",
-                          text)
-            if m is not None and phase is not None:
-                asked = [n for n in asked if n not in STILL or n in (phase if isinstance(phase, tuple) else (phase,))]
-            if m is not None and not m.group("more").strip():
-                heard.append(m.group("said"))
-                text = text[:m.start("said")] + text[m.end("said"):]
-            if m is None:
-                continue
-            return text, asked, heard
+        after = re.search(rf"\boutcome(?P<gap>(?: ,)?(?: (?:at all|all|around|about|much|even))*) (?P<said>{words})", text)
+        # or said first, its clause before the outcome's: "when the cup comes in, does the bowl slide?"
+        m = after or re.search(rf"(?:^|[.?!;:] ) *(?P<said>{words})(?P<more>[^,.?!;:]*) *, *(?:then )?(?:[a-z]+ ){{0,3}}?"
+                               r"outcome\b", text)
+        if m is None:
+            continue
         if phase == "destination_still_approach" and liquids().spans(m.group("said").split()[1:4]):
             heard.append(m.group("said"))       # "when the cream goes in": while pouring, no phase of its own
             text = text[:m.start("said")] + text[m.end("said"):]
             return text, asked, heard
         if phase is not None:
             asked = [n for n in asked if n not in STILL or n in (phase if isinstance(phase, tuple) else (phase,))]
-        if re.match(_ENDS, text[m.end():]):
-            heard.append(m.group("said"))
-            text = text[:m.start("said")] + text[m.end():]
+        if re.match(_ENDS, text[m.end():]) if after else not m.group("more").strip():
+            heard.append(m.group("said"))       # the clause is the phase's alone
+            text = text[:m.start("said")] + text[m.end() if after else m.end("said"):]
         return text, asked, heard
     return text, asked, heard
 
