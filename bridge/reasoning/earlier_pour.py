@@ -11,6 +11,10 @@ from __future__ import annotations
 
 import re
 
+#: What asks its cause: "why?", "what went wrong", "what did I do wrong".
+CAUSE = re.compile(r"^(?:so |and |but )?(?:why|how come|what went wrong|what did (?:i|we) do wrong|what happened"
+                    r"|what caused (?:that|this|it)|why did (?:that|this|it) happen|why is that|why (?:does|did) (?:that|this|it)"
+                    r"(?: happen)?)[?.! ]*$")
 #: When the pour told was: "last time", "yesterday", "previously", "the other day".
 _WHEN = (r"(?:(?:the )?(?:last time|previous time|first time|other day|yesterday|previously|earlier|before"
          r"|last night|last week|this morning)|(?:on )?(?:my|the) (?:last|previous|first) (?:try|attempt|go))")
@@ -47,7 +51,7 @@ _OUT = (r"(?:(?P<out>splash|spill|spilt|drip|overflow|slosh|tip|slid|mov|miss|bo
 _WHY = r"(?: (?:because|since|as|cause) [^,;.?!]*)?"
 #: What may come after an earlier pour told: the question (after a comma or a full stop, or after
 #: "lol" typed as one).
-_NEXT = (r"(?: *[,;.] *| (?:lol|lmao|haha|ugh|smh|oops)[,;.]? )(?=(?:now|this time|if|so|what|which|how|will|would|does|do|is|can"
+_NEXT = (r"(?: *[,;.] *| (?:lol|lmao|haha|ugh|smh|oops)[,;.]? )(?=(?:now|this time|if|so|what|which|how|why|will|would|does|do|is|can"
          r"|could|should)\b)")
 _POUR = re.compile(
     rf"^{_WHEN},? (?:when )?(?:i|we|you|they|he|she|the robot|my robot) (?:poured|pour|held|tilted|tipped|did it)"
@@ -89,6 +93,10 @@ def told(text: str) -> tuple[str, tuple[str, ...]]:
         asked = _BETTER.search(rest).group(0)
         rest = _BETTER.sub(_TOLD[verb], rest, count=1)
         said.append(f"{asked}: read as {_TOLD[verb]}, as the earlier pour did")
+    elif out and CAUSE.match(rest) and m.groupdict().get("how") is not None:
+        asked = f"if i pour{m.group('how')}, {_TOLD[verb]}?"     # "... and the bowl fell over, how come?"
+        said.append(f"{rest.strip(' ?.!')}: read as {asked.strip(' ?')}, asked of the earlier pour")
+        rest = asked
     elif out and (_VALUE_ASKED.match(rest) or _AVOID.match(rest)) and (m.group("none") or out != "came out"):
         wanted = _AGAIN.get(verb, f"it does not {verb}{m.groupdict().get('part') or ''}")
         for then in dict.fromkeys("spill" if o.group("out") == "spilt" else o.group("out") for o in _SECOND.finditer(m.group(0))):

@@ -44,6 +44,7 @@ from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.choices import refuse_choice
+from pantarhei.bridge.reasoning.mishaps import mishap
 from pantarhei.bridge.reasoning.set_against import refuse_unsayable
 from pantarhei.bridge.reasoning.ages import ages_said
 from pantarhei.bridge.reasoning.causes import causes_weighed
@@ -163,6 +164,8 @@ def read_question(question: str) -> Reading:
     words meant (spelling.py), if it has any; refused again, the first
     refusal stands."""
     text, respelt = normalising(question)
+    text, told = mishap(text)               # "it slid off the tray. how do i stop that?" (mishaps.py)
+    respelt += told
     refuse_choice(text)                     # "honey or water?": two questions (choices.py)
     refuse_unsayable(text, lexicon().known, lexicon().placeable)  # "60 degrees vs 90 with 200 ml" (set_against.py)
     try:

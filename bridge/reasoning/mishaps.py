@@ -1,0 +1,147 @@
+"""A mishap told in the speaker's own words before the question, with no
+time said ("the soup went in but then sloshed back out over the edge. what
+should I change?", "my bowl keeps sliding when I pour, any tips?", "it
+splashed when I poured from high up. why?"): its outcomes are heard with
+the verbs of outcomes.py (outcome_verbs.OUTCOMES), and what is asked after
+it is read against them:
+
+- a remedy ("what should I change", "how do I stop that", "any tips"), or a
+  value with no goal ("how far should I tilt it"): the outcomes told not
+  happening are the goal, the pour told not read ("how should I pour so
+  that it stays in the bowl and nothing spills");
+- a cause ("why?", "what went wrong"): the outcomes told are asked of the
+  pour told, its clauses that tell no outcome read as the scene ("if I
+  poured from high up, does it spill?");
+- a scene said to help ("would a heavier bowl have stayed put?", "would
+  pouring over the centre fix it?"): the outcomes told are asked of it.
+
+Anything else asked after it leaves the question as written. Each question is read alone: what the mishap tells is never the
+scene of the answer but where a cause is asked of it. Mishaps told after
+a time ("last time ...", "yesterday ...") are earlier_pour.py's; an
+outcome told in the present with a value asked to avoid it is
+avoided.py's."""
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+from pantarhei.bridge.reasoning.earlier_pour import CAUSE
+from pantarhei.bridge.reasoning.everyday import alternation, names
+from pantarhei.bridge.reasoning.outcome_verbs import OUTCOMES
+from pantarhei.bridge.reasoning.phases import STILL
+from pantarhei.bridge.reasoning.vessels import filled
+
+#: What each expectation (or group told together) failing is asked as, and wanted not to as.
+_ASKED = {("liquid_remains_in_destination", "no_spill"): "does it splash out", "no_spill": "does it spill", "liquid_remains_in_destination": "does it stay in the bowl",
+          "liquid_enters_destination": "does it go in", "liquid_leaves_source": "does it come out",
+          "destination_upright": "does the bowl tip over", "source_clear": "does the jug hit the bowl",
+          STILL: "does the bowl move"}
+_WANTED = {("liquid_remains_in_destination", "no_spill"): "nothing splashes out", "no_spill": "nothing spills", "liquid_remains_in_destination": "it stays in the bowl",
+           "liquid_enters_destination": "it all goes in", "liquid_leaves_source": "it all comes out",
+           "destination_upright": "the bowl does not tip over", "source_clear": "the jug does not hit the bowl",
+           STILL: "the bowl does not move"}
+#: The question after the mishap starts at a sentence's end, or at a comma before a word that asks.
+_ASKS = (r"why|how|what|which|would|will|could|should|can|is|does|do|did|was|were|any|so|but why|and how|where"
+         r"|if|should|shall|tips|advice|help")
+_BREAK = re.compile(rf"(?:[.!?;]+|,|\.\.\.|\s-)\s+(?=(?:{_ASKS})\b)")
+#: An outcome told as it happened, or as what keeps happening: its verb in the past ("slid",
+#: "went over"), or after "keeps", "always", "is" ("the bowl is jumping").
+_TOLD_TENSE = re.compile(r"^(?:[a-z]{2,}[^e]ed|[a-z]+ied|went|ran|fell|slid|came|got|kept|spilt|stuck|flew|threw|shook|sprang"
+                         r"|stayed|left|overflowed|tipped|dripped|slipped|flipped|skidded|hit)\b")
+_HABIT = re.compile(r"\b(?:keeps|kept|keep|always|every time|each time|just)(?: [a-z]+)? $")
+_GOING_ON = re.compile(r"\b(?:is|was|were|are) $")
+#: What asks for a remedy: "what should I change", "how do I stop that", "any tips".
+_REMEDY = re.compile(
+    r"^(?:so |and |but )?(?:what (?:should|do|can|could|would|must|shall) (?:i|we|you|he|she|they) (?:do|change|try|adjust)"
+    r"(?: (?:differently|different|instead|next time|then|now|to fix (?:it|that|this)|about (?:it|that|this)))*"
+    r"|what (?:do|would|can|could) you (?:suggest|recommend|advise)"
+    r"|how (?:do|can|could|should|would|to) (?:i|we|you)?(?: ?(?:stop|avoid|prevent|fix|solve|handle))(?: (?:that|this|it))?"
+    r"(?: (?:happening|from happening))?(?: (?:again|next time|in future|in the future))*"
+    r"|how (?:do|can|could|should|would) (?:i|we|you) (?:pour|do)(?: it| this| that)?(?: (?:then|instead|next time|differently|right|properly|better|again))*"
+    r"|any (?:tips|advice|ideas|suggestions|help)(?: (?:on|for) (?:that|this|it|next time))?"
+    r"|(?:tips|advice|help)(?: please)?)"
+    r"(?: please)?[?.! ]*$")
+#: A value asked with no goal: "how far should I tilt it", "what height should I use".
+_VALUE = re.compile(r"^(?:so )?(?:how (?:far|high|low|much|close|steep|steeply|fast|slow|slowly|quickly)|what (?:height|tilt|angle"
+                    r"|speed|position|distance|setting)|which (?:height|tilt|angle|speed|position|way))\b(?!.*\b(?:so|without)\b)")
+#: A scene said to help: "would a heavier bowl have stayed put", "would pouring lower help".
+_HELPS = re.compile(r"^(?:so )?(?:would|will|could|might|does|do) (?P<scene>(?:a|an|the|my|some) [a-z ]+?|[a-z]+ing\b[a-z ]*?)"
+                    r" (?:(?:have )?(?:fix|stop|prevent|solve)(?:ed)?(?: (?:it|that|this))?|(?:have )?help(?:ed)?"
+                    r"|have (?:stayed|kept (?:it|them) (?:in|still|upright|put)|stayed put|worked|been better)"
+                    r"|(?:stay|keep (?:it|them) in|stay put|work|be better))\b(?: (?:it|that|this))?[?.! ]*$")
+#: What splits the narrative's clauses, for the scene a cause is asked of.
+_CLAUSES = re.compile(r",? (?:and then|but then|and|but|then|so|until|because) |, | (?=(?:when|while|after|as soon as) )")
+#: A negation before an outcome told: it did not happen ("nothing came out").
+_NOT = re.compile(r"\b(?:nothing|none|not|never|no|zero)\b")
+
+
+@lru_cache(maxsize=None)
+def _outcomes() -> tuple[tuple[re.Pattern, tuple[str, ...], bool], ...]:
+    return tuple((re.compile(rf"\b(?:{filled(v)})\b"), names, bad) for v, names, bad in OUTCOMES)
+
+
+def _failed(clause: str) -> list[tuple[str, ...]]:
+    """The expectations a clause tells failed ("it slid": the bowl moved;
+    "nothing came out": it did not leave the source), each group once."""
+    out: list[tuple[str, ...]] = []
+    for pattern, names, bad in _outcomes()[:-1]:     # (the last is "safe", "fine": no outcome told)
+        m = pattern.search(clause)
+        if m is None:
+            continue
+        negated = _NOT.search(clause[:m.start()]) is not None
+        if re.search(r"\b(?:i|we|you|he|she|they)(?: just)? $", clause[:m.start()]) and "source_clear" not in names:
+            continue        # what the one pouring did ("i tipped the jug"), not an outcome
+        if names == ("destination_upright",) and re.match(r" (?:the|a|an|my|his|her|their|it)\b", clause[m.end():]):
+            continue        # tipping something: the source ("she keeps tipping the jug")
+        if not (_TOLD_TENSE.match(m.group(0)) or _HABIT.search(clause[:m.start()])
+                or (_GOING_ON.search(clause[:m.start()]) and m.group(0).endswith("ing"))):
+            continue        # not told as having happened ("need to empty it without knocking it over")
+        if bad != negated:
+            group = STILL if names == STILL else names
+            if group not in out:
+                out.append(group)
+        clause = clause[:m.start()] + " " + clause[m.end():]
+    return out
+
+
+def _said(words: dict, group: tuple[str, ...]) -> str:
+    """A group of expectations told failed, in `words` (_ASKED or _WANTED)."""
+    return words.get(group) or " and ".join(words[n] for n in group)
+
+
+def mishap(text: str) -> tuple[str, tuple[str, ...]]:
+    """`text` (normalised) with a mishap told before its question read as
+    the module says, and what is said back; `text` as it is otherwise."""
+    breaks = list(_BREAK.finditer(text))
+    if not breaks:
+        return text, ()
+    cut = breaks[-1]
+    told, asked = text[:cut.start()].strip(), text[cut.end():].strip()
+    if re.match(rf"(?:{_ASKS})\b", told):
+        return text, ()          # a question first
+    clauses = [c for c in _CLAUSES.split(re.sub(r"[.!?;]+ +", ", ", told)) if c]
+    failed = [g for c in clauses for g in _failed(c)]
+    failed = list(dict.fromkeys(failed))
+    if not failed:
+        return text, ()
+    said = f"{told}: read as nothing: a pour told, with what went wrong; the answer is for the one asked"
+    wanted = " and ".join(_said(_WANTED, g) for g in failed)
+    question = " and ".join(_said(_ASKED, g) for g in failed)
+    poured = re.search(rf"\b(?:{alternation(names('liquid'))})\b", told)    # the liquid told stays
+    poured = f" {poured.group(0)}" if poured else ""
+    if _REMEDY.match(asked):
+        rest = f"how should i pour{poured} so that {wanted}?"
+        return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did not")
+    m = _VALUE.match(asked)
+    if m is not None:
+        rest = f"{asked.strip(' ?.!')} pouring{poured} so that {wanted}?" if poured else f"{asked.strip(' ?.!')} so that {wanted}?"
+        return rest, (said, f"{asked.strip(' ?.!')}: read as asked so that {wanted}, as the pour told did not")
+    m = _HELPS.match(asked)
+    if m is not None:
+        rest = f"with {m.group('scene')}, {question}?"
+        return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did")
+    if CAUSE.match(asked):
+        scene = [c for c in clauses if not any(p.search(c) for p, _, _ in _outcomes()[:-1])]
+        rest = f"{' and '.join(scene)}, {question}?" if scene else f"{question}?"
+        return rest, (f"{told}: read as {rest.strip(' ?')}", f"{asked.strip(' ?.!')}: read as asked of the pour told")
+    return text, ()         # anything else asked: the question as written
