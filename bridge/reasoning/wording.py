@@ -116,6 +116,15 @@ _PROPERTIES = "light|heavy|slippery|sticky|thick|thin|runny|bouncy|smooth|grippy
 _LIKENED = "light|heavy|slippery|sticky|thick|thin|runny|bouncy|slow|fast|quick|smooth|grippy|full|high|low"
 
 
+#: What a verb is after "would have", and what it is asked as: "stayed put" as "stay put".
+_HAD = {**{w: w[:-2] for w in ("helped", "worked", "stayed", "spilled", "splashed", "landed", "ended", "missed",
+                              "knocked", "touched", "overflowed", "prevented", "avoided")},
+        **{w: w[:-1] for w in ("moved", "caused")},
+        "kept": "keep", "fixed": "fix", "stopped": "stop", "spilt": "spill", "tipped": "tip", "slid": "slide",
+        "gone": "go", "come": "come", "hit": "hit", "fallen": "fall", "made": "make", "dripped": "drip",
+        "emptied": "empty", "left": "leave", "slipped": "slip", "flipped": "flip", "tipped over": "tip over"}
+
+
 def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` normalised, and what is said back of each word of it read as
     another ("doesnt: read as doesn't"), in the order written."""
@@ -163,6 +172,11 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     # every drop of a liquid is all of it: "get every drop of the syrup into the bowl"
     text = re.sub(r"\bevery (?:last |single )?drop of (?:the |my |that |this )?",
                   lambda m: said.setdefault(f"{m.group(0).strip()}: read as all of the") or "all of the ", text)
+    # what would have been is asked as what would be: "would a heavier bowl have stayed put"
+    # (not "would that have helped" after a pour told: that pour is past, and no help)
+    text = re.sub(rf"\b((?:would|could|might|will|should)(?: (?!have\b)[a-z]+){{0,6}}?)(?<! that)(?<! this)(?<! it) have (?:been )?({'|'.join(_HAD)})\b",
+                  lambda m: said.setdefault(f"have {m.group(2)}: read as {_HAD[m.group(2)]}")
+                  or f"{m.group(1)} {_HAD[m.group(2)]}", text)
     text, again = restated(_normalised(text))         # "-2 cm (i.e. below the rim)"
     text, earlier = told(text)                         # "last time I poured from 20 cm, ...": not read
     text, avoiding = avoided(text)                     # "the bowl slides, what height stops that"
