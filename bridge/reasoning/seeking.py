@@ -194,7 +194,7 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
     filling = _filling()
     if filling.search(text):
         said += tuple(m.group(0).strip() for m in filling.pattern.finditer(text))
-        text = filling.pattern.sub(lambda m: f"so that it all ends up in {m.group(1) or m.group(2)}", text)
+        text = filling.pattern.sub(lambda m: f"so that it all ends up in {m.group(1) or m.group(2) or m.group(3)}", text)
     for cued, wanted in _WANTING_CUED:
         if cued.search(text):
             said += tuple(m.group(0).strip() for m in cued.pattern.finditer(text))
@@ -210,7 +210,8 @@ def _filling() -> Cued:
     bowl = rf"((?:the|a|an|my|this|that|our|your) (?:[a-z]+ )?(?:{destinations()}))"
     return Cued(rf"(?:\b(?:i|we) (?:would like|like|want|need|wish|am trying|are trying|hope|aim|plan|have|had)"
                 rf"|\b(?:goal|aim|objective|task|target)s?(?: is)?:?)(?: to)? fill (?:up )?{bowl}(?: up)?(?: (?:right |all the way )?to the (?:top|brim))?(?! (?:half|halfway|about|around|a quarter|a third|to (?:half|a |\d)|\d))\b"
-                rf"|\b(?:i|we) (?:would |want to |need to )?have {bowl} (?:end up |be )?(?:full|filled(?: up)?)\b",
+                rf"|\b(?:i|we) (?:would |want to |need to )?have {bowl} (?:end up |be )?(?:full|filled(?: up)?)\b"
+                rf"|\b(?:i|we) (?:want|need|would like) {bowl} (?:to be |to end up )?(?:full|filled(?: up)?)\b",
                 ("fill", "full"))
 
 
@@ -249,6 +250,21 @@ _WANTING_CUED = (
           (" and none", " and nothing", " with nothing", " with none")), r"\1 so that \2 goes "),
     # "and have it all land in the bowl": so that it does
     (Cued(r"\bhave (it all|it|everything|all of it) (?=(?:land|go|end up|stay)\b)", ("have ",)), r"so that \1 "),
+    # "I'd like nothing spilled", "goal: no mess": so that nothing spills
+    (Cued(r"\b(?:i|we) (?:want|need|would like|wish for|prefer) (?:nothing|not a drop|not a single drop|not one drop|no liquid"
+          r"|none of it|not a drop of it) (?:spilled|spilt|wasted)\b"
+          r"|\b(?:goal|aim|objective|target)s?(?: is)?:? (?:zero|no|none of the) (?:spill|spills|spillage|spilling|mess|splash"
+          r"|splashes|splashing|drips|dripping)\b", ("spilled", "spilt", "wasted", "goal", "aim", "objective", "target")),
+     "so that nothing spills"),
+    # "... but not a drop spilled", beside another thing wanted: so that nothing spills too
+    (Cued(r"\b((?:want|need|like|so that)\b[^.?!]*?\b(?:and|but) )(?:nothing|not a drop|not a single drop|not one drop"
+          r"|none of it) (?:spilled|spilt)\b", ("spilled", "spilt")), r"\1nothing spills"),
+    # "I want the cup empty at the end", "I need all of it out of the bottle": so that the source empties
+    (Cued(r"\b(?:i|we) (?:want|need|would like) ((?:the|my|a) (?!(?:[a-z]+ )?(?:bowl|destination)s?\b)(?:[a-z]+ )?[a-z]+)"
+          r" (?:to be |to end up )?(?:empty|emptied|completely empty|totally empty)(?: at the end| afterwards| after)?\b",
+          ("empty", "emptied")), r"so that \1 empties"),
+    (Cued(r"\b(?:i|we) (?:want|need|would like) (?:every last drop|every drop|it all|all of it|everything|all (?:of )?the [a-z]+)"
+          r" out of ((?:the|my|a) (?:[a-z]+ )?[a-z]+)\b(?! and (?:in|into|inside)\b)", (" out of ",)), r"so that \1 empties"),
     # "I'd like zero spill", "we want no mess": so that nothing spills
     (Cued(r"\b(?:i|we) (?:want|need|would like|wish for) (?:zero|no|none of the) (?:spill|spills|spillage|spilling|mess"
           r"|splash|splashes|splashing|drips|dripping)\b", ("zero", " no ", "none of")), "so that nothing spills"),
