@@ -45,19 +45,43 @@ _NOT_A_SCENE = (r"(?:spill|splash|overflow|drip|leak|slid|slip|toppl|wobbl|tip(?
 _OR = re.compile(rf"(?: ,)? \bor (?={_SCENE})(?!{_NOT_A_SCENE})")
 
 
+#: Which of two is better, asked in other words: read as "is it better to A or B" (which: the
+#: words as asked, and what they say).
+_WHICH_BETTER = tuple((re.compile(p), r) for p, r in (
+    # "which is better, pouring from the middle or from the edge?"
+    (r"^(?:so )?which(?: one| way| option)? (?:is|would be|will be) (?:the )?(better|best|safer|safest)(?: (?:option|choice|way|one))?"
+     rf"(?: to do)?[,:;]? (?=.+ or {_SCENE})", r"is it \1 to "),
+    # "pouring from the middle or from the edge, which is better?"
+    (rf"^(.+ or {_SCENE}.*?)[,;:] *(?:so )?which(?: one)? (?:is|would be|will be) (?:the )?(better|best|safer|safest)(?= *[?.!]* *$)",
+     r"is it \2 to \1"),
+    # "is it better, pouring from the middle or from the edge?"
+    (r"^is it (better|safer)[,:;] (?=.+ or )", r"is it \1 to "),
+    # "is it safer to pour close to the rim than from high", "is pouring low better than pouring high"
+    (rf"^is it (better|safer) to (.+?) than (?:to )?(?={_SCENE})(?!last\b|before\b|usual\b|normal\b)", r"is it \1 to \2 or "),
+    (rf"^is ((?:[a-z]+ing|a|an|the) .+?) (better|safer) than (?:to )?(?={_SCENE})(?!last\b|before\b|usual\b|normal\b)",
+     r"is it \2 to \1 or "),
+))
+
+
 def compared_or(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with the "or" between two scenes it compares
     read as "vs", and what is said back of it; `text` as it is otherwise."""
-    should = _SHOULD.search(text)
     said: tuple[str, ...] = ()
+    for pattern, asked in _WHICH_BETTER:
+        m = pattern.search(text)
+        if m is not None:
+            said = (f"{m.group(0).strip(' ,;:')}: read as {m.expand(asked).strip()}",)
+            text = pattern.sub(asked, text, count=1)
+            break
+    should = _SHOULD.search(text)
     if (should and not _COMPARING.search(text) and not _GOAL.search(text) and _OR.search(text, should.end())
             and not _ASKS.search(text, should.end())):
-        said = (f"{should.group(0)}: read as is it better to, of two scenes",)
+        said += (f"{should.group(0)}: read as is it better to, of two scenes",)
         text = text[:should.start()] + "is it better to" + text[should.end():]
     elif not _COMPARING.search(text) or _ASKED_WHAT_TO_DO.search(text):
         return text, ()
     m = _OR.search(text)
     if m is None or m.start() == 0 or chosen_liquids(text):
-        return text, ()
+        return (text, said) if said else (text, ())
     return (text[:m.start()] + " vs " + text[m.end():],
             (*said, "or: read as vs: two scenes compared, the one said first answered"))
