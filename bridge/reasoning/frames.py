@@ -27,6 +27,9 @@ FRAMES = tuple((re.compile(p), r) for p, r in (
     # much ends up in the bowl", as everyday.txt's "change whether")
     (r"\b(?:change|changes|affect|affects|alter|alters|make (?:a|any) difference to|makes (?:a|any) difference to)"
      r" (?=how much\b)", " "),
+    # how much spills, named as a measure: "fraction spilled?", "spill fraction?", "the share spilt"
+    (r"\b(?:(?:the |what )?(?:fraction|share|proportion|percentage|percent|amount|volume) (?:of (?:it|liquid|the \w+) )?"
+     r"(?:spilled|spilt)|spill(?:ed)? (?:fraction|share|proportion|percentage))(?= *[?.!]* *$)", " how much spills "),
     # an outcome expected, as a noun: "would you expect spilling", "do you predict any splashing"
     (r"\b(?:expect|predict|anticipate|see|observe|get|cause|causes|notice)(?: any| some| a| much)? "
      r"(?=(?:spill|splash|drip|leak|slosh|splatter|dribbl)\w*\b(?! of\b))", " will it "),

@@ -51,9 +51,12 @@ MOVES: tuple[tuple, ...] = (
     ("end", (f"put {_IT} down", f"set {_IT} down", f"put {_IT} back down", f"set {_IT} back down",
              "at the end", "in the end", "finish")),
     # "after pouring from the side": the manner after it is the pour's
-    # emptying a bowl into another, decanting, dumping, chucking it in: pouring
+    # emptying a bowl into another, decanting, dumping, chucking it in, straining or ladling it: pouring
     ("pour", (r"re:\bempt(?:y|ies|ied|ying)(?= (?:it|the \w+|a \w+) (?:into|in|onto)\b)",
               r"re:\bchuck(?:s|ed|ing)?(?= (?:(?:it|them|the \w+|\w+) )?(?:in|into)\b)",
+              # straining a drink into a glass, ladling soup into a bowl
+              r"re:\bstrain(?:s|ed|ing)?(?= (?:(?:it|them|the \w+|\w+) )?(?:in|into|over)\b)",
+              r"re:\bladl(?:e|es|ed|ing)(?= (?:(?:it|them|the \w+|\w+) )?(?:in|into|out)\b)",
               "decant", "dump", "free pour", "transfer", "serve", "dispense", "top up")),
     ("retreat ; pour", (rf"re:\bafter pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",
                         # "after tilting it halfway": the tilt is the pour's
