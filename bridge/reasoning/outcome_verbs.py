@@ -42,6 +42,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:get|gets|getting|got) (?:it|them|liquid|(?:the )?[a-z]+) (?:everywhere|all over(?: the place)?)\b"
      r"|slop\w*|splat\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)|(?:get|gets|got|getting) (?:any|some|much|a drop)(?: of it)?(?= on\b| onto\b)"
      r"|(?:run|runs|running|ran|roll\w*|stream\w*) down the (?:outside|side)(?! of (?:the |a )?(?:bowl|dish|destination))"
+     # the place under it wet: "will my counter get wet"
+     r"|(?:(?<=table )|(?<=counter )|(?<=countertop )|(?<=floor )|(?<=worktop )|(?<=bench )|(?<=tablecloth ))"
+     r"(?:get|gets|got|getting|be|become|becomes) (?:all )?wet\b"
      r"|hit\w* (?:the )?(?:table|floor|counter|worktop|bench)\b|(?:go|goes|going|went|get|gets|got|land|lands|landed|landing|fall|falls|fell) (?:on|onto|all over"
      r"|outside)",
      ("no_spill",), True),
@@ -51,7 +54,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|turn\w* over|flip\w*|capsiz\w*|overturn\w*|keel\w* over|tumbl(?:e|es|ed|ing)\b"
      r"|(?:fall|falls|fell)\b(?! (?:in|into|inside|out|off|on|onto)\b)", ("destination_upright",), True),
     (r"(?:stay|stays|remain|remains|keep|keeps|be|is) (?:still|put|in place|steady|stable|stationary"
-     r"|(?:exactly |right )?where (?:it|they) (?:is|was|are|were|stands|stood|started))"
+     r"|(?:exactly |right )?where (?:it|they) (?:is|was|are|were|stands|stood|started)"
+     r"|(?:exactly |right )?where (?:i|you|we|they) (?:put|placed|set|left) (?:it|them))"
      r"|(?:sit|sits|sitting|stand|stands|standing|stay|stays|staying|remain|remains|rest|rests|resting|be)"
      r" (?:still )?(?:in|at) the same (?:spot|place|position|location)", STILL, False),
     # the way it moves said after it is the moving's ("the bowl scoots sideways", "slides to one side")
@@ -61,7 +65,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:push|shov)(?:es|e|ed|ing)? (?:it|them|the (?:bowl|bowls|destination|dish|container)) (?:across|along|around|about|sideways|aside)\b"
      r"|displac\w*|(?:(?:get|gets|got|getting|be|being) )?(?:pushed|shoved)\b(?! (?:in|back|away|out|over)\b)|(?:go|goes|going|get|gets|getting) (?:wiggly|wobbly|shaky|jiggly)"
      r"|mov(?:e|es|ed|ing)\b(?! (?:(?:it|them|the \w+) )?(?:in|away|closer|nearer|further|farther|to|out|back|up"
-     r"|down|over|into|off|towards?)\b)|bounc\w* (?:around|about))(?: sideways| (?:off |over )?to (?:the|one) side)?\b",
+     r"|down|over|into|off|towards?)\b)|bounc\w* (?:around|about))(?: sideways| (?:off |over )?to (?:the|one) side| back and forth| to and fro)?\b",
      STILL, True),       # "move the cup closer": the source's move
     (r"(?:giv(?:e|es|ing)|gave) (?:a |any |some )?(?:hit|knock|bump|bang|touch)s?(?: to)?(?= (?:the|a|an|my|its|it)\b)"   # "giving a hit to the bowl"
      r"|bump\w*|hit(?:s|ting)?|touch\w*|collid\w*|crash\w*|knock\w*|clip(?:s|ped)?|strike\w*"
@@ -80,6 +84,10 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      # (not how full the source is: "a nearly empty jug", "an empty cup")
      r"|(?<!nearly )(?<!almost )(?<!mostly )(?<!practically )(?<!all but )(?<!half )(?<!\ban )(?<!\ba )(?<!\bthe )"
      r"empt(?:y|ies|ied)(?: out)?|(?:(?:end|ends) up|becomes?|gets?) (?:totally |completely |fully )?empty(?: (?:completely|fully|totally))?|leav(?:e|es|ing) (?:the|it)\b|exit\w*", ("liquid_leaves_source",), False),
+    # left in the source: kept in it ("is anything left in the jug afterwards")
+    (rf"left (?:over )?in(?! (?:the |a |an |my |your )?(?:[a-z]+ )?(?:bowl|destination)s?\b)"
+     rf"(?= (?:the |a |an |my |your )?(?:[a-z]+ )?{CONTAINER}\b)",
+     ("liquid_leaves_source",), True),
     # left behind in the source: kept in it ("with nothing left behind")
     (r"(?:left|stay(?:s|ed|ing)?|remain(?:s|ed|ing)?) behind\b", ("liquid_leaves_source",), True),
     # clinging to a container not the bowl: kept in the source ("make it into the bowl or cling to the jar")
