@@ -34,7 +34,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*|slop\w*|splash\w*|splatter\w*|fizz\w*"
      r"|foam\w*|froth\w*|bubbl\w*|boil\w*) over"
      r"(?: the (?:rim|edge|top|side)s?)?"
-     r"|(?:bounc|jump|leap|hop|fly|flies|flew|flying)\w* (?:right |straight )?(?:back )?(?:over|out(?: of)?)|flood\w*"
+     r"|(?:bounc|jump|leap|hop|fly|flies|flew|flying)\w* (?:right |straight )?(?:back )?(?:up )?(?:over|out(?: of)?)|flood\w*"
      r"|(?:go|goes|going|went|get|gets|come|comes|came) over(?= the (?:rim|edge|top|side|brim|lip)s?\b)", ("liquid_remains_in_destination", "no_spill"), True),
     # (sloshing around in the bowl is no spill: everyday.txt says it back)
     (r"spill\w*|spilt|splash\w*|splatter\w*|slosh\w*(?! (?:around|about)\b)|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
@@ -45,7 +45,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      # the place under it wet: "will my counter get wet"
      r"|(?:(?<=table )|(?<=counter )|(?<=countertop )|(?<=floor )|(?<=worktop )|(?<=bench )|(?<=tablecloth ))"
      r"(?:get|gets|got|getting|be|become|becomes) (?:all )?wet\b"
-     r"|hit\w* (?:the )?(?:table|floor|counter|worktop|bench)\b|(?:go|goes|going|went|get|gets|got|land|lands|landed|landing|fall|falls|fell) (?:on|onto|all over"
+     r"|hit\w* (?:the )?(?:table|floor|counter|countertop|worktop|bench|bar mat|bar top|bar|mat|tray|stove|tablecloth|ground)\b|(?:go|goes|going|went|get|gets|got|land|lands|landed|landing|fall|falls|fell) (?:on|onto|all over"
      r"|outside)",
      ("no_spill",), True),
     (r"(?:stay|stays|remain|remains|keep|keeps) (?:upright|standing)", ("destination_upright",), False),
@@ -59,6 +59,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:sit|sits|sitting|stand|stands|standing|stay|stays|staying|remain|remains|rest|rests|resting|be)"
      r" (?:still )?(?:in|at) the same (?:spot|place|position|location)", STILL, False),
     # the way it moves said after it is the moving's ("the bowl scoots sideways", "slides to one side")
+    # somewhere else at the end: "does the bowl end up in a different spot than where it started"
+    (r"(?:end|ends|ended|ending) up (?:in|at|on) (?:a )?(?:different|another|new) (?:spot|place|position|location)"
+     r"(?: (?:than|from) where (?:it|they) (?:started|was|were|began|stood))?|(?:end|ends|ended) up somewhere else", STILL, True),
     (r"(?:slid\w*|slip(?:s|ped|ping)?\b|shift\w*|budg\w*|wobbl\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
      r"|jostl\w*|rock(?:s|ed|ing)?|shak(?:e|es|ing)|shook|translat\w*|drift\w*|creep\w*|scoot\w*"
      # the bowl pushed by the stream, said with where it goes ("will the stream push them across the table")
@@ -84,6 +87,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      # (not how full the source is: "a nearly empty jug", "an empty cup")
      r"|(?<!nearly )(?<!almost )(?<!mostly )(?<!practically )(?<!all but )(?<!half )(?<!\ban )(?<!\ba )(?<!\bthe )"
      r"empt(?:y|ies|ied)(?: out)?|(?:(?:end|ends) up|becomes?|gets?) (?:totally |completely |fully )?empty(?: (?:completely|fully|totally))?|leav(?:e|es|ing) (?:the|it)\b|exit\w*", ("liquid_leaves_source",), False),
+    # left inside, no bowl said: kept in the source ("there was still a bit left inside at the end")
+    (r"left (?:over )?inside\b(?! (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|destination)s?\b)", ("liquid_leaves_source",), True),
     # left in the source: kept in it ("is anything left in the jug afterwards")
     (rf"left (?:over )?in(?! (?:the |a |an |my |your )?(?:[a-z]+ )?(?:bowl|destination)s?\b)"
      rf"(?= (?:the |a |an |my |your )?(?:[a-z]+ )?{CONTAINER}\b)",

@@ -117,13 +117,16 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     # "I'd prefer the bowl not move", "we hope it doesn't tip"
     (r"\b(?:i|we) (?:would )?(?:prefer|rather|hope)(?: that)? (it|them|the [a-z]+) (?:not|never|does not|do not|will not)"
      r" (?=[a-z]+)", r"so that \1 does not "),
+    # "I want to empty the whole pot of soup into the bowl": so that it empties and it all goes in
+    (r"\b(?:i|we) (?:want|need|would like|wish|am trying|are trying) to (?:empty|drain) (?:out )?(?:the whole|all of the"
+     r"|all the|the entire|the) ([a-z]+)(?: of [a-z]+)?(?= into (?:the |a |my )?bowl\b)", r"so that the \1 empties and it all goes"),
     # "need to empty a heavy jug of syrup": so that it empties
     (r"(?:^|\b(?:i|we) )(?:need|want|have) to (?:empty|drain) (?:out )?(?:a|the|my) ((?:[a-z]+ )?[a-z]+)(?= of\b|$|[ ,.;!?])",
      r"so that the \1 empties"),
     # "goal: empty the bottle completely": so that it empties ("... into the bowl": it goes in too)
     (rf"{_EMPTYING}(?= into (?:the |a )?bowl\b)", r"so that the \1 empties and it all goes"),
     (rf"{_EMPTYING}\b", r"so that the \1 empties"),
-    # "I'd like to empty the whole mug": so that it empties
+    # "I'd like to empty the whole mug": so that it empties (into the bowl: and it all goes in)
     (r"\b(?:i|we) (?:want|need|would like|wish|am trying|are trying) to (?:empty|drain) (?:out )?(?:the whole|all of the"
      r"|all the|the entire|the) ([a-z]+)\b", r"so that the \1 empties"),
     # a value there that reaches a goal: "is there any height where the water never splashes" (so that it does not)
@@ -135,6 +138,8 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     # "avoids the cup hitting the bowl", "prevent the bowl sliding", "stop the mug clinking"
     (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|stop|stops|stopping) (it|them|the [a-z]+)"
      r" (?=[a-z]+ing\b)", r"so that \1 does not "),
+    # "for the soup not to jump out", as learners of English say it: so that it does not
+    (r"\bfor (it|them|the [a-z]+) (?:not|never) to (?=[a-z]+)", r"so that \1 does not "),
     # a goal said with "for", as learners of English say it: "near or far for not make mess", "for no spilling"
     (r"\bfor (?:not|never) (?:make|making|let|letting) (it|them|the [a-z]+) (?=[a-z]+)", r"so that \1 does not "),
     (r"\bfor (?:not|never|no) (?=(?:make|making|spill|splash|drip|tip|slid|mov|hit|touch|overflow|toppl)[a-z]*\b)",

@@ -172,6 +172,9 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     # every drop of a liquid is all of it: "get every drop of the syrup into the bowl"
     text = re.sub(r"\bevery (?:last |single )?drop of (?:the |my |that |this )?",
                   lambda m: said.setdefault(f"{m.group(0).strip()}: read as all of the") or "all of the ", text)
+    # "how much high", as learners of English ask a value: how high
+    text = re.sub(r"\bhow much (high|far|low|close|near|steep|fast|slow|slowly|quickly)\b",
+                  lambda m: said.setdefault(f"{m.group(0)}: read as how {m.group(1)}") or f"how {m.group(1)}", text)
     # what would have been is asked as what would be: "would a heavier bowl have stayed put"
     # (not "would that have helped" after a pour told: that pour is past, and no help)
     text = re.sub(rf"\b((?:would|could|might|will|should)(?: (?!have\b)[a-z]+){{0,6}}?)(?<! that)(?<! this)(?<! it) have (?:been )?({'|'.join(_HAD)})\b",
@@ -204,7 +207,8 @@ def _normalised(text: str) -> str:
     text = re.sub(r"(\d)\s*(?:\"|\u2033)(?=\s|$)", r"\1 inches ", text)   # 3" (inches), 1\u2032 (feet)
     text = re.sub(r"(\d)\s*\u2032(?=\s|$)", r"\1 feet ", text)
     # out from a bowl, as learners say it: out of it ("is it coming out from the cup")
-    text = re.sub(r"\b((?:come|comes|coming|came|pour|pours|pouring|drain\w*|flow\w*|get|gets|getting) out) from\b", r"\1 of", text)
+    text = re.sub(r"\b((?:come|comes|coming|came|pour|pours|pouring|drain\w*|flow\w*|get|gets|getting|jump\w*|bounc\w*|splash\w*"
+                  r"|fly|flies|flew|spill\w*) out) from\b", r"\1 of", text)
     # a quantity named before its number: "height: 15 cm", "tilt = 45 deg"
     text = re.sub(r"(?<=[a-z])\s*[:=]\s*(?=[-\u2212]?\d)", " ", text)
     # a contrast said first is said after what it contrasts with: "instead of fast, move in slowly"
