@@ -94,7 +94,10 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      rf"(?= (?:the |a |an |my |your )?(?:[a-z]+ )?{CONTAINER}\b)",
      ("liquid_leaves_source",), True),
     # left behind in the source: kept in it ("with nothing left behind")
-    (r"(?:left|stay(?:s|ed|ing)?|remain(?:s|ed|ing)?) behind\b", ("liquid_leaves_source",), True),
+    (r"(?:left|stay(?:s|ed|ing)?|remain(?:s|ed|ing)?) behind\b"
+     # what is left in it, said of the pour: "which one leaves more behind in the cup"
+     r"|leav(?:e|es|ing) (?:more |less |much |some |any |anything |something |a lot |a bit |nothing )?behind\b",
+     ("liquid_leaves_source",), True),
     # clinging to a container not the bowl: kept in the source ("make it into the bowl or cling to the jar")
     (r"(?:stick|sticks|sticking|stuck|cling|clings|clinging|clung) to"
      r"(?!(?: [a-z]+){0,2}? (?:bowl|bowls|destination|target|rim|edge|top|sides?|walls?|brim|lip|bottom|surface|it|them)\b)"
