@@ -36,11 +36,17 @@ _ABOUT = {stem(w) for w in ("about", "around", "roughly", "approximately", "some
 #: Words that may stand between a negation and the bound it negates: "don't tilt the mug past".
 _BETWEEN = {stem(w) for w in FILLERS} | set(OBJECT_STEMS) | {BOWL} | {
     stem(w) for w in ("tilt", "tilts", "tilted", "tip", "tips", "tipped", "lean", "angle", "turn", "rotate",
-                      "go", "goes", "going", "went", "gone", "get", "gets")}
+                      "go", "goes", "going", "went", "gone", "get", "gets",
+                      # a height bounded: "never lift the jug more than an inch above the rim"
+                      "lift", "lifts", "lifted", "raise", "raises", "raised", "hold", "holds", "held")}
 #: The words of a tilt said by its value, which "past" before them bounds: "past horizontal"
 #: (steeply tilted, as words.py reads it), "past halfway", "beyond upright" (not "upside down",
 #: the scale's end: a bound there excludes nothing).
 _TILT_VALUES = {stem(w) for w in ("steeply", "slightly", "halfway", "half", "upright", "tilted")}
+#: The verbs of tilting a bound may hold, read with the value it bounds where the value needs
+#: one ("halfway"; "horizontal" is read alone).
+_READ_WITH_VERB = {stem(w) for w in ("halfway", "half")}
+_TILTING = {stem(w) for w in ("tilt", "tilts", "tilted", "tip", "tips", "tipped", "lean", "turn", "rotate")}
 _WHICH = {"the", "a", "an", "my", "your", "our", "their", "his", "her", "that", "this"}
 SAID = "a bound, the most it may be: read as the value nearest it"
 
@@ -104,7 +110,9 @@ def bounded_values(tokens: list[Token]) -> list[Token]:
         for m in value:
             if tokens[m].raw == tokens[value[0]].raw:
                 out[m] = Token(out[m].word, raw, t.clause, SAID)
-        drop |= bound - set(value)
+        # the verb of tilting stays, read with the value ("don't tilt it past halfway": tilted halfway)
+        drop |= {m for m in bound - set(value) if tokens[m].word not in _TILTING
+                 or tokens[value[0]].word not in _READ_WITH_VERB}
     return [t for m, t in enumerate(out) if m not in drop]
 
 

@@ -10,7 +10,7 @@ little less than horizontal") is steeply tilted still, as horizontal is; a
 move made horizontally ("retreat horizontally", "pull it back
 horizontally") is the way the source moves, which no proposition says, and
 no tilt. How far, said with "far": "not tilted very far" is slightly
-tilted, unless a value follows that says how far; "tip it really far"
+tilted ("not going to tip it much" too), unless a value follows that says how far; "tip it really far"
 steeply; "tilted too far" is refused (past what?)."""
 from __future__ import annotations
 
@@ -44,8 +44,8 @@ TILT_AMOUNTS: tuple[tuple, ...] = (
 FAR_TILTS: tuple[tuple, ...] = (
     # not tipped (very, too) far: slightly tilted, unless a value follows that says how far ("not
     # tipping it very far, only slightly past horizontal")
-    ("slightly tilted", (r"re( far):\b(?:not|without) (?:be |being )?(?:tilt|tip|lean)\w*\b(?: (?:it|the \w+))?"
-                         r" (?:too |very |so |that )?far\b(?! (?:from|away|off|to)\b)"
+    ("slightly tilted", (r"re( far| much):\b(?:not|without|never) (?:be |being )?(?:going |gonna )?(?:to )?(?:tilt|tip|lean)\w*\b(?: (?:it|the \w+))?"
+                         r" (?:too |very |so |that )?(?:far|much)\b(?! (?:from|away|off|to)\b)"
                          r"(?![^.?!;]*\b(?:only|just|but|rather|tilted|tilt|steeply|slightly|halfway|upside|upright"
                          r"|degrees?|horizontal)\b)",),
      "read as slightly tilted: tilted, not far"),
