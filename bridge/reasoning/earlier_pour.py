@@ -15,8 +15,19 @@ import re
 CAUSE = re.compile(r"^(?:so |and |but )?(?:why|how come|what went wrong|what did (?:i|we) do wrong|what happened"
                     r"|what caused (?:that|this|it)|why did (?:that|this|it) happen|why is that|why (?:does|did) (?:that|this|it)"
                     r"(?: happen)?)[?.! ]*$")
+#: What asks for a remedy: "what should I change", "how do I stop that", "any tips".
+REMEDY = re.compile(
+    r"^(?:so |and |but )?(?:what (?:should|do|can|could|would|must|shall) (?:i|we|you|he|she|they) (?:do|change|try|adjust)"
+    r"(?: (?:differently|different|instead|next time|then|now|to fix (?:it|that|this)|about (?:it|that|this)))*"
+    r"|what (?:do|would|can|could) you (?:suggest|recommend|advise)"
+    r"|how (?:do|can|could|should|would|to) (?:i|we|you)?(?: ?(?:stop|avoid|prevent|fix|solve|handle))(?: (?:that|this|it))?"
+    r"(?: (?:happening|from happening))?(?: (?:again|next time|in future|in the future))*"
+    r"|how (?:do|can|could|should|would) (?:i|we|you) (?:pour|do)(?: it| this| that)?(?: (?:then|instead|next time|differently|right|properly|better|again))*"
+    r"|any (?:tips|advice|ideas|suggestions|help)(?: (?:on|for) (?:that|this|it|next time))?"
+    r"|(?:tips|advice|help)(?: please)?)"
+    r"(?: please)?[?.! ]*$")
 #: When the pour told was: "last time", "yesterday", "previously", "the other day".
-_WHEN = (r"(?:(?:the )?(?:last time|previous time|first time|other day|yesterday|previously|earlier|before"
+WHEN = (r"(?:(?:the )?(?:last time|previous time|first time|other day|yesterday|previously|earlier|before"
          r"|last night|last week|this morning)|(?:on )?(?:my|the) (?:last|previous|first) (?:try|attempt|go))")
 #: Its outcome, told in the past ("and it splashed"), with the question that asks it again.
 _TOLD = {"splash": "does it splash", "spill": "does it spill", "drip": "does it drip",
@@ -54,7 +65,7 @@ _WHY = r"(?: (?:because|since|as|cause) [^,;.?!]*)?"
 _NEXT = (r"(?: *[,;.] *| (?:lol|lmao|haha|ugh|smh|oops)[,;.]? )(?=(?:now|this time|if|so|what|which|how|why|will|would|does|do|is|can"
          r"|could|should)\b)")
 _POUR = re.compile(
-    rf"^{_WHEN},? (?:when )?(?:i|we|you|they|he|she|the robot|my robot) (?:poured|pour|held|tilted|tipped|did it)"
+    rf"^{WHEN},? (?:when )?(?:i|we|you|they|he|she|the robot|my robot) (?:poured|pour|held|tilted|tipped|did it)"
     rf"(?P<how>[^,;.?!]*?)(?: and {_WHO} (?:[a-z]+ and )?{_OUT}(?P<part> over| out| everywhere)?{_WHY})?{_NEXT}")
 #: The pour told in the past with no time said, its outcome after it: "i poured from high up and it
 #: went everywhere, how high should I pour?" (without the outcome, "i poured from high up, did it
@@ -64,7 +75,7 @@ _PAST = re.compile(
     rf"(?P<how>[^,;.?!]*?) and {_WHO} (?:[a-z]+ and )?{_OUT}(?P<part> over| out| everywhere)?{_WHY}{_NEXT}")
 #: Its outcome told first, the pour after it: "yesterday the bowl slid off the tray when I emptied the kettle into it".
 _OUTCOME_FIRST = re.compile(
-    rf"^{_WHEN},? {_WHO} {_OUT}[^,;.?!]*?(?: when (?:i|we|you|they|he|she|the robot|my robot)"
+    rf"^{WHEN},? {_WHO} {_OUT}[^,;.?!]*?(?: when (?:i|we|you|they|he|she|the robot|my robot)"
     rf" (?:poured|emptied|tipped|tilted|held|did it)[^,;.?!]*?)?{_NEXT}")
 #: Asked whether the pour now is better, or ends what happened, or what was wrong with it: about the
 #: outcome told.
@@ -88,6 +99,8 @@ def told(text: str) -> tuple[str, tuple[str, ...]]:
     rest = text[m.end():]
     said = [f"{m.group(0).strip(' ,;.')}: read as nothing: an earlier pour, told; the answer is for the one asked"]
     out = "spilt" if m.group("onto") else m.group("out")
+    if out is None and (CAUSE.match(rest.strip()) or REMEDY.match(rest.strip())):
+        return text, ()             # what it did told past this module's forms: mishaps.py's to read
     verb = "spill" if out == "spilt" else out
     if out and _BETTER.search(rest):
         asked = _BETTER.search(rest).group(0)

@@ -25,7 +25,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from pantarhei.bridge.reasoning.earlier_pour import CAUSE
+from pantarhei.bridge.reasoning.earlier_pour import CAUSE, REMEDY, WHEN
 from pantarhei.bridge.reasoning.everyday import alternation, names
 from pantarhei.bridge.reasoning.outcome_verbs import OUTCOMES
 from pantarhei.bridge.reasoning.phases import STILL
@@ -50,17 +50,6 @@ _TOLD_TENSE = re.compile(r"^(?:[a-z]{2,}[^e]ed|[a-z]+ied|went|ran|fell|slid|came
                          r"|stayed|left|overflowed|tipped|dripped|slipped|flipped|skidded|hit)\b")
 _HABIT = re.compile(r"\b(?:keeps|kept|keep|always|every time|each time|just)(?: [a-z]+)? $")
 _GOING_ON = re.compile(r"\b(?:is|was|were|are) $")
-#: What asks for a remedy: "what should I change", "how do I stop that", "any tips".
-_REMEDY = re.compile(
-    r"^(?:so |and |but )?(?:what (?:should|do|can|could|would|must|shall) (?:i|we|you|he|she|they) (?:do|change|try|adjust)"
-    r"(?: (?:differently|different|instead|next time|then|now|to fix (?:it|that|this)|about (?:it|that|this)))*"
-    r"|what (?:do|would|can|could) you (?:suggest|recommend|advise)"
-    r"|how (?:do|can|could|should|would|to) (?:i|we|you)?(?: ?(?:stop|avoid|prevent|fix|solve|handle))(?: (?:that|this|it))?"
-    r"(?: (?:happening|from happening))?(?: (?:again|next time|in future|in the future))*"
-    r"|how (?:do|can|could|should|would) (?:i|we|you) (?:pour|do)(?: it| this| that)?(?: (?:then|instead|next time|differently|right|properly|better|again))*"
-    r"|any (?:tips|advice|ideas|suggestions|help)(?: (?:on|for) (?:that|this|it|next time))?"
-    r"|(?:tips|advice|help)(?: please)?)"
-    r"(?: please)?[?.! ]*$")
 #: A value asked with no goal: "how far should I tilt it", "what height should I use".
 _VALUE = re.compile(r"^(?:so )?(?:how (?:far|high|low|much|close|steep|steeply|fast|slow|slowly|quickly)|what (?:height|tilt|angle"
                     r"|speed|position|distance|setting)|which (?:height|tilt|angle|speed|position|way))\b(?!.*\b(?:so|without)\b)")
@@ -129,7 +118,7 @@ def mishap(text: str) -> tuple[str, tuple[str, ...]]:
     question = " and ".join(_said(_ASKED, g) for g in failed)
     poured = re.search(rf"\b(?:{alternation(names('liquid'))})\b", told)    # the liquid told stays
     poured = f" {poured.group(0)}" if poured else ""
-    if _REMEDY.match(asked):
+    if REMEDY.match(asked):
         rest = f"how should i pour{poured} so that {wanted}?"
         return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did not")
     m = _VALUE.match(asked)
@@ -141,7 +130,7 @@ def mishap(text: str) -> tuple[str, tuple[str, ...]]:
         rest = f"with {m.group('scene')}, {question}?"
         return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did")
     if CAUSE.match(asked):
-        scene = [c for c in clauses if not any(p.search(c) for p, _, _ in _outcomes()[:-1])]
+        scene = [re.sub(rf"^{WHEN},? ", "", c) for c in clauses if not any(p.search(c) for p, _, _ in _outcomes()[:-1])]
         rest = f"{' and '.join(scene)}, {question}?" if scene else f"{question}?"
         return rest, (f"{told}: read as {rest.strip(' ?')}", f"{asked.strip(' ?.!')}: read as asked of the pour told")
     return text, ()         # anything else asked: the question as written

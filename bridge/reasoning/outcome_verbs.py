@@ -35,7 +35,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|foam\w*|froth\w*|bubbl\w*|boil\w*) over"
      r"(?: the (?:rim|edge|top|side)s?)?"
      r"|(?:bounc|jump|leap|hop|fly|flies|flew|flying)\w* (?:right |straight )?(?:back )?(?:up )?(?:over|out(?: of)?)|flood\w*"
-     r"|(?:go|goes|going|went|get|gets|come|comes|came) over(?= the (?:rim|edge|top|side|brim|lip)s?\b)", ("liquid_remains_in_destination", "no_spill"), True),
+     r"|(?:go|goes|going|went|get|gets|come|comes|came) over(?= the (?:far |near |other |opposite |back |front )?(?:rim|edge|top|side|brim|lip)s?\b)", ("liquid_remains_in_destination", "no_spill"), True),
     # (sloshing around in the bowl is no spill: everyday.txt says it back)
     (r"spill\w*|spilt|splash\w*|splatter\w*|slosh\w*(?! (?:around|about)\b)|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
      r"|makes? (?:(?:a|any) )?(?:big |huge |bit of a |real |total )?mess|(?:go|goes|going|went|get|gets) everywhere"
