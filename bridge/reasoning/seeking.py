@@ -223,7 +223,7 @@ def _filling() -> Cued:
 #: Whether a person can get the liquid in, or empty the source into the bowl: wanted, or asked
 #: where a manner is said ("can I still get everything into the bowl if I tilt more").
 _CAN_GET = (r"\b(?:can|could) (?:i|we|you) (?:still )?(?:get|put) (it all|all of it|everything|every drop|every last drop"
-            r"|all (?:of )?the [a-z]+) (?=(?:in|into|inside)\b)")
+            r"|all (?:of )?the [a-z]+|the (?:whole|entire) [a-z]+) (?:of [a-z]+ )?(?=(?:in|into|inside)\b)")
 #: ... or get it all out of the source, said after the manner: "can I pour without tilting past
 #: horizontal and still get it all out" (so that it comes out).
 _CAN_OUT = (r"(\b(?:can|could) (?:i|we|you) (?:[a-z0-9]+ ){0,12}?)(?:and )?(?:still )?get (it all|all of it|everything"
