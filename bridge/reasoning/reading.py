@@ -43,6 +43,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.reasoning.chatter import chatter
 from pantarhei.bridge.reasoning.choices import refuse_choice
 from pantarhei.bridge.reasoning.mishaps import mishap
 from pantarhei.bridge.reasoning.set_against import refuse_unsayable
@@ -164,8 +165,10 @@ def read_question(question: str) -> Reading:
     words meant (spelling.py), if it has any; refused again, the first
     refusal stands."""
     text, respelt = normalising(question)
+    lex = lexicon()                         # "It is for science.": chatter (chatter.py)
+    text, chat = chatter(text, words_of, lex.known, frozenset(_IGNORED), NEGATION_STEMS)
     text, told = mishap(text)               # "it slid off the tray. how do i stop that?" (mishaps.py)
-    respelt += told
+    respelt += chat + told
     refuse_choice(text)                     # "honey or water?": two questions (choices.py)
     refuse_unsayable(text, lexicon().known, lexicon().placeable)  # "60 degrees vs 90 with 200 ml" (set_against.py)
     try:

@@ -1,0 +1,48 @@
+"""A sentence said before the question that says nothing of a pour ("My
+grandson set this up for me.", "Long day at the cafe!"): every word of it
+one the reader reads as nothing (everyday.txt's hedges) or an English word
+it does not know at all, at least one of them, with no number, no negation, no verb of an
+outcome and no word it could mistake for another. It is read as nothing
+and said back, so that its words neither refuse the question nor go
+unheard. The question itself, the last sentence, is never chatter; a
+sentence with a word the reader knows ("The bowl is plastic.") is read as
+any other, and one with a word it cannot spell ("Bowl slidez.") is
+refused as mistyped."""
+from __future__ import annotations
+
+import re
+
+from pantarhei.bridge.reasoning.outcome_verbs import outcome_verb
+from pantarhei.bridge.reasoning.spelling import english
+
+#: What is said back of a sentence read as chatter.
+SAID = "read as nothing: it says nothing of a pour"
+
+
+def chatter(text: str, words_of, known: frozenset[str], nothing: frozenset[str],
+            negations: frozenset[str]) -> tuple[str, tuple[str, ...]]:
+    """`text` (normalised) without the sentences before its last that are
+    chatter (the module's docstring), and what is said back of each;
+    `words_of` gives a text's tokens, `known` the words the reader knows,
+    `nothing` those it reads as nothing, `negations` the negations'."""
+    sentences = re.split(r"(?<=[.!?])\s+", text.strip())
+    if len(sentences) < 2:
+        return text, ()
+    kept, said = [], []
+    for sentence in sentences[:-1]:
+        if _chatter(sentence, words_of, known, nothing, negations):
+            said.append(f"{sentence.rstrip(' .!?')}: {SAID}")
+        else:
+            kept.append(sentence)
+    if not said:
+        return text, ()
+    return " ".join([*kept, sentences[-1]]), tuple(said)
+
+
+def _chatter(sentence: str, words_of, known, nothing, negations) -> bool:
+    if re.search(r"\d", sentence):
+        return False
+    tokens = words_of(sentence)
+    return any(t.word not in known for t in tokens) and all(
+        t.word in nothing or (t.word not in known and english(t.raw) and not outcome_verb(t.raw))
+        for t in tokens) and not any(t.word in negations for t in tokens)
