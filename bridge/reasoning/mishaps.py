@@ -58,6 +58,10 @@ _HELPS = re.compile(r"^(?:so )?(?:would|will|could|might|does|do) (?P<scene>(?:a
                     r" (?:(?:have )?(?:fix|stop|prevent|solve)(?:ed)?(?: (?:it|that|this))?|(?:have )?help(?:ed)?"
                     r"|have (?:stayed|kept (?:it|them) (?:in|still|upright|put)|stayed put|worked|been better)"
                     r"|(?:stay|keep (?:it|them) in|stay put|work|be better))\b(?: (?:it|that|this))?[?.! ]*$")
+#: A scene supposed, then whether it helps: "if I come in from higher up next time, would that stop it?".
+_IF_HELPS = re.compile(r"^(?:so )?(?:if|what if) (?P<scene>[^,?]+?),? (?:would|will|could|does|do|might) (?:that|this|it) "
+                       r"(?:help|work|stop (?:it|that|this)|fix (?:it|that|this)|prevent (?:it|that|this)|solve (?:it|that|this)"
+                       r"|be better)[?.! ]*$")
 #: What splits the narrative's clauses, for the scene a cause is asked of.
 _CLAUSES = re.compile(r",? (?:and then|but then|and|but|then|so|until|because) |, | (?=(?:when|while|after|as soon as) )")
 #: A negation before an outcome told: it did not happen ("nothing came out").
@@ -100,19 +104,25 @@ def _said(words: dict, group: tuple[str, ...]) -> str:
 
 def mishap(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with a mishap told before its question read as
-    the module says, and what is said back; `text` as it is otherwise."""
-    breaks = list(_BREAK.finditer(text))
-    if not breaks:
-        return text, ()
-    cut = breaks[-1]
-    told, asked = text[:cut.start()].strip(), text[cut.end():].strip()
-    if re.match(rf"(?:{_ASKS})\b", told):
-        return text, ()          # a question first
+    the module says, and what is said back; `text` as it is otherwise. The
+    question is taken from the last break in the text back, the first that
+    asks in one of the ways the module reads."""
+    for cut in reversed(list(_BREAK.finditer(text))):
+        told, asked = text[:cut.start()].strip(), text[cut.end():].strip()
+        if re.match(rf"(?:{_ASKS})\b", told):
+            return text, ()          # a question first
+        read = _read(told, asked)
+        if read is not None:
+            return read
+    return text, ()         # anything else asked: the question as written
+
+
+def _read(told: str, asked: str) -> tuple[str, tuple[str, ...]] | None:
+    """The question `asked` after the mishap `told`, read (mishap's), or None."""
     clauses = [c for c in _CLAUSES.split(re.sub(r"[.!?;]+ +", ", ", told)) if c]
-    failed = [g for c in clauses for g in _failed(c)]
-    failed = list(dict.fromkeys(failed))
+    failed = list(dict.fromkeys(g for c in clauses for g in _failed(c)))
     if not failed:
-        return text, ()
+        return None
     said = f"{told}: read as nothing: a pour told, with what went wrong; the answer is for the one asked"
     wanted = " and ".join(_said(_WANTED, g) for g in failed)
     question = " and ".join(_said(_ASKED, g) for g in failed)
@@ -121,16 +131,16 @@ def mishap(text: str) -> tuple[str, tuple[str, ...]]:
     if REMEDY.match(asked):
         rest = f"how should i pour{poured} so that {wanted}?"
         return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did not")
-    m = _VALUE.match(asked)
-    if m is not None:
+    if _VALUE.match(asked):
         rest = f"{asked.strip(' ?.!')} pouring{poured} so that {wanted}?" if poured else f"{asked.strip(' ?.!')} so that {wanted}?"
         return rest, (said, f"{asked.strip(' ?.!')}: read as asked so that {wanted}, as the pour told did not")
-    m = _HELPS.match(asked)
-    if m is not None:
-        rest = f"with {m.group('scene')}, {question}?"
-        return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did")
+    for helps, how in ((_HELPS, "with"), (_IF_HELPS, "if")):
+        m = helps.match(asked)
+        if m is not None:
+            rest = f"{how} {m.group('scene')}, {question}?"
+            return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did")
     if CAUSE.match(asked):
         scene = [re.sub(rf"^{WHEN},? ", "", c) for c in clauses if not any(p.search(c) for p, _, _ in _outcomes()[:-1])]
         rest = f"{' and '.join(scene)}, {question}?" if scene else f"{question}?"
         return rest, (f"{told}: read as {rest.strip(' ?')}", f"{asked.strip(' ?.!')}: read as asked of the pour told")
-    return text, ()         # anything else asked: the question as written
+    return None
