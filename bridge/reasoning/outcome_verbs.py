@@ -114,6 +114,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      ALL_IN, False),
     (r"miss(?:es|ed|ing)?|overshoot\w*|undershoot\w*|fall\w* short", ALL_IN, True),
     (r"safe(?:ly)?|(?:be |is )?(?:fine|ok|okay|alright|all right)\b|(?:a )?(?:good|bad) idea|risky"
+     r"|(?:be )?(?:a )?(?:disaster|catastrophe|nightmare|fiasco)\b"
      r"|(?:go|goes|going|went) wrong"
      r"|dangerous|(?:a )?problem|(?:bad|good|wise|unwise|smart|sensible|better|safer|wiser)(?= to\b)",
      ("no_spill", "destination_upright", "source_clear"), False),

@@ -154,6 +154,9 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     # what it is for, as learners of English say it: "incline the jar for the water to go out from it"
     (r"\bfor (it|them|the [a-z]+|all of it|everything|it all) to (?=(?:go|come|get|flow|run|drain|land|stay|end up)\b)",
      r"so that \1 "),
+    # "what angle should I tilt to get everything out": so that it all comes out
+    (r"\b(?:in order |so as )?to get (it all|all of it|everything|every drop|every last drop|all (?:of )?the [a-z]+) out\b"
+     r"(?: of (?:the |a |my )?[a-z]+)?(?![^.?!,;]*\band (?:in|into)\b)", r"so that \1 comes out"),
     # "to avoid drips outside the target", "prevent any spills": so that it does not drip, spill
     (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|minimi[sz]e|minimi[sz]ing|reduce|reducing)"
      r" (?:any )?(drip|spill|splash|leak|overflow)(?:s|es)?\b(?! of\b)", r"so that it does not \1"),
@@ -213,7 +216,7 @@ def _filling() -> Cued:
     (so that it all ends up in it: it goes in and stays); not how full ("fill the bowl
     halfway"), nor the source filled ("filling the cup to the top": a full source)."""
     bowl = rf"((?:the|a|an|my|this|that|our|your) (?:[a-z]+ )?(?:{destinations()}))"
-    return Cued(rf"(?:\b(?:i|we) (?:would like|like|want|need|wish|am trying|are trying|hope|aim|plan|have|had)"
+    return Cued(rf"(?:\b(?:i|we) (?:would like|like|want|wanna|need|wish|am trying|are trying|hope|aim|plan|have|had)"
                 rf"|\b(?:goal|aim|objective|task|target)s?(?: is)?:?)(?: to)? fill (?:up )?{bowl}(?: up)?(?: (?:right |all the way )?to the (?:top|brim))?(?! (?:half|halfway|about|around|a quarter|a third|to (?:half|a |\d)|\d))\b"
                 rf"|\b(?:i|we) (?:would |want to |need to )?have {bowl} (?:end up |be )?(?:full|filled(?: up)?)\b"
                 rf"|\b(?:i|we) (?:want|need|would like) {bowl} (?:to be |to end up )?(?:full|filled(?: up)?)\b",
