@@ -181,6 +181,9 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
                   lambda m: said.setdefault(f"have {m.group(2)}: read as {_HAD[m.group(2)]}")
                   or f"{m.group(1)} {_HAD[m.group(2)]}", text)
     text, again = restated(_normalised(text))         # "-2 cm (i.e. below the rim)"
+    # what is going to happen, said subject first: "stock gonna land in it?" asks "will stock land in it?"
+    text = re.sub(r"(?:^|(?<=[,;:.?!] ))((?:the |my |a |this |that )?(?!i\b|we\b|you\b)[a-z]+|it|they) (?:is |are )?gonna (?=[a-z]+\b)",
+                  lambda m: said.setdefault(f"{m.group(0).strip()}: read as will {m.group(1)}") or f"will {m.group(1)} ", text)
     text, earlier = told(text)                         # "last time I poured from 20 cm, ...": not read
     text, avoiding = avoided(text)                     # "the bowl slides, what height stops that"
     text, cause = cause_asked(text)                    # "it runs down the side. is it because I hold it low?"
