@@ -52,6 +52,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"tip(?:s|ped|ping)?(?: over)?(?! (?:(?:it|them|the \w+) )?(?:(?:past|beyond)\b|(?:to|by|at|up to|no more than|more than"
      r"|less than|at most|at least|under|about) -?\d))|toppl\w*|(?:fall|falls|falling|fell) (?:over|down)|(?:knock|push|shov)\w*(?: it| the \w+)? over"
      r"|turn\w* over|flip\w*|capsiz\w*|overturn\w*|keel\w* over|tumbl(?:e|es|ed|ing)\b"
+     # gone over, nothing after it: "the bowl went over" (not "went over the rim": out of the bowl)
+     r"|(?:go|goes|went|gone) over(?= *[,.;!?]| *$| (?:and|when|if|as|while|because)\b)"
      r"|(?:fall|falls|fell)\b(?! (?:in|into|inside|out|off|on|onto)\b)", ("destination_upright",), True),
     (r"(?:stay|stays|remain|remains|keep|keeps|be|is) (?:still|put|in place|steady|stable|stationary"
      r"|(?:exactly |right )?where (?:it|they) (?:is|was|are|were|stands|stood|started)"
