@@ -43,8 +43,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|slop\w*|splat\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)|(?:get|gets|got|getting) (?:any|some|much|a drop)(?: of it)?(?= on\b| onto\b)"
      r"|(?:run|runs|running|ran|roll\w*|stream\w*) down the (?:outside|side)(?! of (?:the |a )?(?:bowl|dish|destination))"
      # the place under it wet: "will my counter get wet"
-     r"|(?:(?<=table )|(?<=counter )|(?<=countertop )|(?<=floor )|(?<=worktop )|(?<=bench )|(?<=tablecloth ))"
-     r"(?:get|gets|got|getting|be|become|becomes) (?:all )?wet\b"
+     r"|(?:table|counter|countertop|floor|worktop|bench|tablecloth) (?:get|gets|got|getting|be|become|becomes) (?:all )?wet\b"
      r"|hit\w* (?:the )?(?:table|floor|counter|countertop|worktop|bench|bar mat|bar top|bar|mat|tray|stove|tablecloth|ground)\b|(?:go|goes|going|went|get|gets|got|land|lands|landed|landing|fall|falls|fell) (?:on|onto|all over"
      r"|outside)",
      ("no_spill",), True),
@@ -92,8 +91,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     # left inside, no bowl said: kept in the source ("there was still a bit left inside at the end")
     (r"left (?:over )?inside\b(?! (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|destination)s?\b)", ("liquid_leaves_source",), True),
     # left in the source: kept in it ("is anything left in the jug afterwards")
-    (rf"left (?:over )?in(?! (?:the |a |an |my |your )?(?:[a-z]+ )?(?:bowl|destination)s?\b)"
-     rf"(?= (?:the |a |an |my |your )?(?:[a-z]+ )?{CONTAINER}\b)",
+    (r"left (?:over )?in(?= (?:the |a |an |my |your )(?:[a-z]+ )?(?!(?:bowl|destination)s?\b)[a-z]+\b)"
+     r"(?! (?:the |a |an |my |your )(?:[a-z]+ )?(?:bowl|destination)s?\b)",
      ("liquid_leaves_source",), True),
     # left behind in the source: kept in it ("with nothing left behind")
     (r"(?:left|stay(?:s|ed|ing)?|remain(?:s|ed|ing)?) behind\b"

@@ -225,8 +225,7 @@ def _acts(subject: list[str], names: tuple[str, ...], m: re.Match | None = None)
     held = names in (STILL, ("destination_upright",)) and m is not None and not _STRIKES.search(m.group(0)) and any(
         w == "source" or (in_the_source(w) and not re.search(rf"\binto (?:\w+ )?(?:\w+ )?{w}\b", m.string))
         for w in head if w not in ("of", "the", "a", "an"))     # ("the jug knocks the bowl over": the bowl)
-    wet = m is not None and m.group(0).rstrip(" ?.!").endswith("wet")    # "will my counter get wet": a spill
-    return bool(actors.intersection(subject)) or held or (bool(_around().spans(subject)) and not wet)
+    return bool(actors.intersection(subject)) or held or bool(_around().spans(subject))
 
 
 @lru_cache(maxsize=None)
