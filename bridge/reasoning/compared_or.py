@@ -54,6 +54,8 @@ _WHICH_BETTER = tuple((re.compile(p), r) for p, r in (
     # "pouring from the middle or from the edge, which is better?"
     (rf"^(.+ or {_SCENE}.*?)[,;:] *(?:so )?which(?: one)? (?:is|would be|will be) (?:the )?(better|best|safer|safest)(?= *[?.!]* *$)",
      r"is it \2 to \1"),
+    # "is better pour in center of bowl or near of edge", as learners of English ask it
+    (r"^(?:it )?is (better|safer) (?:to )?(?=.+ or )", r"is it \1 to "),
     # "is it better, pouring from the middle or from the edge?"
     (r"^is it (better|safer)[,:;] (?=.+ or )", r"is it \1 to "),
     # "is it safer to pour close to the rim than from high", "is pouring low better than pouring high"
