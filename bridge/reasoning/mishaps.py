@@ -43,7 +43,7 @@ _WANTED = {("liquid_remains_in_destination", "no_spill"): "nothing splashes out"
 #: The question after the mishap starts at a sentence's end, or at a comma before a word that asks.
 _ASKS = (r"why|how|what|which|would|will|could|should|can|is|does|do|did|was|were|any|so|but why|and how|where"
          r"|if|should|shall|tips|advice|help")
-_BREAK = re.compile(rf"(?:[.!?;]+|,|\.\.\.|\s-)\s+(?=(?:{_ASKS})\b)")
+_BREAK = re.compile(rf"(?:[.!?;]+|,|\.\.\.|\s-)\s+(?=(?:{_ASKS})\b)|\s(?=why *[?.!]* *$)")    # "... poured fast why"
 #: An outcome told as it happened, or as what keeps happening: its verb in the past ("slid",
 #: "went over"), or after "keeps", "always", "is" ("the bowl is jumping").
 _TOLD_TENSE = re.compile(r"^(?:[a-z]{2,}[^e]ed|[a-z]+ied|went|ran|fell|slid|came|got|kept|spilt|stuck|flew|threw|shook|sprang"

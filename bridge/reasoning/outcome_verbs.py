@@ -75,7 +75,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|bump\w*|hit(?:s|ting)?|touch\w*|collid\w*|crash\w*|knock\w*|clip(?:s|ped)?|strike\w*"
      r"|bonk\w*|bang\w*|intersect\w*|clash\w*|graz(?:e|es|ed|ing)|scrap(?:e|es|ed|ing)|nudg\w*|clink\w*|slam\w*"
      r"|smash\w*|whack\w*|(?:run|runs|ran|running) into|(?:come|comes|came) into contact|bounc\w* (?:off|against)"
-     r"|make contact|makes contact|(?:any|some) contact"
+     r"|make contact|makes contact|(?:any|some) contact|contact (?:occur|occurs|happen|happens)"
      r"|(?<=there )(?:any |some )?contact|(?<=there be )(?:any |some )?contact",   # "is there contact"
      ("source_clear",), True),
     (r"(?:stay|stays|keep|keeps|be|is)? ?clear(?: of)?", ("source_clear",), False),

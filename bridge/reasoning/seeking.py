@@ -132,6 +132,8 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     # a value there that reaches a goal: "is there any height where the water never splashes" (so that it does not)
     (rf"\b(is there (?:any|an?|some|one) {_VALUE}) (?:where|at which|for which|with which|in which)"
      r" (?=(?:it|they|the [a-z]+|nothing|none|no [a-z]+) )", r"\1 so that "),
+    # "without losing any": so that nothing spills
+    (r"\bwithout (?:losing|wasting) (?:any|a drop|a single drop|anything)(?: of it)?\b", "so that nothing spills"),
     # "without any on the counter": so that none goes on it (a place the liquid lands, a spill)
     (r"\bwithout (?:any|a drop|a single drop)(?: of it| liquid| water)? (?=(?:on|onto|all over) (?:the |a |my )?"
      r"(?:table|tablecloth|counter|countertop|worktop|floor|bench|stove|ground)\b)", "so that none goes "),

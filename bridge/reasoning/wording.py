@@ -94,8 +94,12 @@ _CHAT = {"u": "you", "ur": "your", "wat": "what", "wut": "what", "wot": "what", 
          "tiped": "tipped", "tipd": "tipped", "evrywhere": "everywhere", "evry": "every",
          "pls": "please", "plz": "please", "abt": "about", "shud": "should", "wud": "would",
          "outta": "out of", "kinda": "kind of", "tho": "though", "cuz": "because", "coz": "because",
-         "cn": "can", "hw": "how", "cud": "could", "shld": "should"}
-_CHATTED = (rf"\b(?:{'|'.join(_CHAT)})\b|\by(?= (?:does|do|did|is|are|was|would|will|can|not)\b)"
+         "cn": "can", "hw": "how", "cud": "could", "shld": "should",
+         # letters typed in the wrong order or left out, as people type in a hurry
+         "teh": "the", "hte": "the", "th": "the", "wil": "will", "wll": "will", "wen": "when", "whn": "when",
+         "wht": "what", "waht": "what", "adn": "and", "nad": "and", "taht": "that", "thta": "that",
+         "becuase": "because", "becasue": "because", "shoudl": "should", "shoud": "should", "woudl": "would"}
+_CHATTED = (rf"\b(?:{'|'.join(_CHAT)})\b|\by(?= (?:does|do|did|is|are|was|would|will|can|not)\b| *\?* *$)"
             r"|\bits(?= (?:too|to|so|very(?! (?:edge|rim|lip|brim|border|middle|centre|center|top|side)\b)|really|right|just|not|over|at|in|on|upside|nearly|almost|only"
             r"|going|held|[a-z]+ed)\b)"
             # "from mug 2 bowl" (to), "best tilt 4 pouring soup" (for): a digit standing for a word,
