@@ -25,8 +25,10 @@ MOVE = {"start": "approach", "approach": "approach", "pour": None, "retreat": "r
         "end": "retreat"}
 MARKER_STEMS = {stem(w): s for w, s in MARKERS.items()}
 #: Verbs of tilting: a clause they begin, said after the start or the move in with no stage
-#: word of its own, is the pour's ("move in over 3 s, tilt 45 deg": the tilt poured with).
-_TILTING = {stem(w) for w in ("tilt", "tip", "incline", "lean", "angle", "turn", "turned", "tilted", "tipped")}
+#: word of its own, is the pour's ("move in over 3 s, tilt 45 deg", "approach 2 s, pitch 110
+#: deg": the tilt poured with).
+_TILTING = {stem(w) for w in ("tilt", "tip", "incline", "lean", "angle", "turn", "turned", "tilted", "tipped", "pitch",
+                              "pitched")}
 
 
 def stages(tokens: list[Token]) -> list[str]:
