@@ -56,6 +56,12 @@ _WHICH_BETTER = tuple((re.compile(p), r) for p, r in (
      r"is it \2 to \1"),
     # "is better pour in center of bowl or near of edge", as learners of English ask it
     (r"^(?:it )?is (better|safer) (?:to )?(?=.+ or )", r"is it \1 to "),
+    # "better to move the cup away fast or slow?"
+    (r"^(?:so )?(better|safer) to (?=.+ or )", r"is it \1 to "),
+    # "what works better for a light bowl, pouring low or high?"
+    (r"^(?:so )?(?:what|which)(?: one)? (?:works?|is) (better|best|safer) for ((?:a|an|the) [a-z ]+?)[,:;] (.+ or .+?) *[?.!]* *$",
+     r"with \2, is it \1 to \3?"),
+    (r"^(?:so )?(?:what|which)(?: one)? works? (better|best|safer)[,:;] (?=.+ or )", r"is it \1 to "),
     # "is it better, pouring from the middle or from the edge?"
     (r"^is it (better|safer)[,:;] (?=.+ or )", r"is it \1 to "),
     # "is it safer to pour close to the rim than from high", "is pouring low better than pouring high"
@@ -65,10 +71,48 @@ _WHICH_BETTER = tuple((re.compile(p), r) for p, r in (
 ))
 
 
+#: Two things compared in other words, said as "A vs B" (and "which one ..." where an outcome is named),
+#: as comparisons.py and which_one.py read them: "what's the difference between A and B", "compare A
+#: and B: which drips more", "which is less messy: A or B", "is A more stable than B".
+_LIKENED = {"messy": ("spills", False), "stable": ("slides", True), "steady": ("slides", True),
+            "safe": ("spills", True), "likely to spill": ("spills", False), "likely to splash": ("splashes", False),
+            "likely to tip": ("tips over", False), "likely to tip over": ("tips over", False),
+            "likely to slide": ("slides", False), "likely to drip": ("drips", False)}
+_ADJECTIVE = "|".join(sorted(_LIKENED, key=len, reverse=True))
+_SET_AGAINST = tuple((re.compile(p), r) for p, r in (
+    (r"^(?:so )?(?:what is|what|whats) the difference between (?P<a>.+?) and (?P<b>.+?)(?P<end> *[?.!]* *)$",
+     "{a} vs {b}{end}"),
+    (r"^(?:so )?is there (?:any|a|much) difference between (?P<a>.+?) and (?P<b>.+?)(?P<end> *[?.!]* *)$", "{a} vs {b}{end}"),
+    (r"^(?:so )?how does (?P<a>.+?) compare (?:with|to) (?P<b>.+?)(?P<end> *[?.!]* *)$", "{a} vs {b}{end}"),
+    (r"^compare (?P<a>.+?) (?:and|with|to) (?P<b>.+?)[:,;.] *(?P<q>(?:which|what) .+)$", "{a} vs {b}, {q}"),
+    (rf"^(?:so )?which(?: one)? (?:is|would be|will be) (?P<more>less|more) (?P<adj>{_ADJECTIVE})[,:;]? (?P<a>.+?) or "
+     r"(?P<b>.+?)(?P<end> *[?.!]* *)$", "{a} vs {b}, which one {verb} {how}{end}"),
+    (rf"^(?:so )?(?:is|would) (?P<a>.+?) (?:be )?(?P<more>less|more) (?P<adj>{_ADJECTIVE}) than (?P<b>.+?)(?P<end> *[?.!]* *)$",
+     "{a} vs {b}, which one {verb} {how}{end}"),
+))
+
+
+def _set_against(text: str) -> tuple[str, tuple[str, ...]]:
+    """`text` with two things compared in other words said as "A vs B", and what is said back."""
+    for pattern, said in _SET_AGAINST:
+        m = pattern.match(text)
+        if m is None:
+            continue
+        parts = m.groupdict()
+        if "adj" in parts:
+            verb, inverted = _LIKENED[parts["adj"]]
+            parts.update(verb=verb, how="less" if (parts["more"] == "more") == inverted else "more")
+        out = said.format(**parts)
+        return out, (f"{text.strip(' ?.!')}: read as {out.strip(' ?.!')}",)
+    return text, ()
+
+
 def compared_or(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with the "or" between two scenes it compares
     read as "vs", and what is said back of it; `text` as it is otherwise."""
-    said: tuple[str, ...] = ()
+    text, said = _set_against(text)
+    if said:
+        return text, said
     for pattern, asked in _WHICH_BETTER:
         m = pattern.search(text)
         if m is not None:
