@@ -13,7 +13,8 @@ from pantarhei.bridge.reasoning.everyday import alternation, names
 
 @lru_cache(maxsize=None)
 def _little() -> re.Pattern:
-    return re.compile(rf"\b(?:little|lil) (?:bitty )?(?:{alternation(names('bowl'))})\b")
+    # ("the little medicine cup": a little cup, a liquid's name between, never a little liquid)
+    return re.compile(rf"\b(?:little|lil) (?:bitty )?(?:(?:{alternation(names('liquid'))}) )?(?:{alternation(names('bowl'))})\b")
 
 
 def refuse_little(text: str) -> None:

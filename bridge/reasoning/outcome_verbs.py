@@ -44,6 +44,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:run|runs|running|ran|roll\w*|stream\w*) down the (?:outside|side)(?! of (?:the |a )?(?:bowl|dish|destination))"
      # the place under it wet: "will my counter get wet"
      r"|(?:table|counter|countertop|floor|worktop|bench|tablecloth) (?:get|gets|got|getting|be|become|becomes) (?:all )?wet\b"
+     # the liquid touching what is under it: "without any of it touching the table"
+     r"|(?:touch\w*|reach\w*) (?:the )?(?:table|floor|counter|countertop|worktop|bench|tablecloth|tray)\b"
      r"|hit\w* (?:the )?(?:table|floor|counter|countertop|worktop|bench|bar mat|bar top|bar|mat|tray|stove|tablecloth|ground)\b|(?:go|goes|going|went|get|gets|got|land|lands|landed|landing|fall|falls|fell) (?:on|onto|all over"
      r"|outside)",
      ("no_spill",), True),

@@ -141,7 +141,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
         # the most that can be done before an outcome: "the fastest I can tip it before it starts splashing"
         rf"|before (?P<gbef>(?:it|they|the [a-z]+|anything|any of it) )(?:ever |even )?(?:starts?|begins?) (?:to )?"
         rf"|so(?: that| as)?(?P<gsub>(?: (?!not\b)"
-        rf"[a-z]+){{0,4}}?)(?P<gnot> not| never)? (?:(?:to|will|does|do|would|can|could|all|"
+        rf"[a-z]+){{0,5}}?)(?P<gnot> not| never)? (?:(?:to|will|does|do|would|can|could|all|"
         rf"any) )?)(?:{verbs})\b{end}")
     # what is asked, or wanted, next to it: "will it spill or overflow?", "without spilling or
     # tipping the bowl over"

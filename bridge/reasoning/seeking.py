@@ -87,7 +87,7 @@ _KEEPS = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? {_VALUE}) (keeps|will
                     r" (it|them|the \w+) (in(?: the \w+)?|still|upright|steady|in place)\b")
 #: Wanting an outcome: "I want the bowl not to move", "we'd like it to stay in".
 _WANT = re.compile(r"(?:\b(?:i|we) |^|(?<=[.!?] ))(?:want|need|would like|wish)(?: for)? (it(?: all)?|all of it|everything|them|nothing"
-                   r"|every drop|each drop|every bit|all (?:of )?the liquid"
+                   r"|every drop|each drop|every bit|all (?:of )?the (?:[a-z]+ )?[a-z]+"
                    r"|the (?:[a-z]+ )?(?!source\b)[a-z]+)(?= (?:not |never )?to\b)")
 
 #: A goal of emptying the source: "goal: empty the bottle completely".
@@ -132,6 +132,8 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     # a value there that reaches a goal: "is there any height where the water never splashes" (so that it does not)
     (rf"\b(is there (?:any|an?|some|one) {_VALUE}) (?:where|at which|for which|with which|in which)"
      r" (?=(?:it|they|the [a-z]+|nothing|none|no [a-z]+) )", r"\1 so that "),
+    # "so that none is wasted": so that nothing spills
+    (r"\bso(?: that)? (?:none|nothing|no liquid|not a drop)(?: of it)? (?:is|gets|will be|goes to) wasted?\b", "so that nothing spills"),
     # "without losing any": so that nothing spills
     (r"\bwithout (?:losing|wasting) (?:any|a drop|a single drop|anything)(?: of it)?\b", "so that nothing spills"),
     # "without any on the counter": so that none goes on it (a place the liquid lands, a spill)

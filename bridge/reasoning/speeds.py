@@ -25,6 +25,10 @@ _MANNER = r"(?:steady|smooth|gentle|careful|even|controlled|gradual|slow|fast|qu
 _DASH = r"(?:dart(?:s|ed|ing)?|zip(?:s|ped|ping)?|zoom(?:s|ed|ing)?|whizz(?:es|ed|ing)?|fling(?:s|ing)?|flung)"
 _NO_RATE = r"(?! (?:rate|speed|velocity|pace)\b)"        # a speed of tilting: refused
 _SAID = "read as the move into the pouring pose, which tilts the source as it goes"
+#: What is tipped, between the verb and its speed: "tip it slowly", "tip my measuring jug of melted butter slowly".
+_NOT_TIPPED = (r"(?!and\b|then\b|but\b|or\b|so\b|if\b|when\b|move\w*\b|pull\w*\b|bring\w*\b|brought\b|slow\w*\b|fast\b"
+               r"|quick\w*\b|into\b|in\b|onto\b|over\b|to\b|from\b|at\b|with\b|big\b|small\b|little\b|large\b|tiny\b)")
+_TIPPED = rf"(?: (?:{_NOT_TIPPED}\w+ ){{0,6}}?{_NOT_TIPPED}\w+)?"
 
 SPEEDS: tuple[tuple, ...] = (
     # a speed asked of pouring itself: refused, pouring has no speed of its own
@@ -81,10 +85,10 @@ SPEEDS: tuple[tuple, ...] = (
     ("; approach slowly", (r"re(slow|gradual|steadi):(?:(?<=all the way over )|(?<=right over ))(?:(?:very|really|too|quite|super) )?"
                            r"(?:slow(?:ly)?|gradually|steadily)\b(?! (?:than|as)\b)",)),
     # tipped fast or slowly: the move into the pouring pose, which tilts the source as it goes
-    ("approach fast", (r"re(fast|quick|rapid):\b(?:tilt|tip)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
+    ("approach fast", (rf"re(fast|quick|rapid):\b(?:tilt|tip)\w*{_TIPPED}(?: (?:very|really|too|quite))?"
                        r" (?:fast|quick(?:ly)?|rapidly)\b(?! (?:than|as)\b)",
                        r"re(fast|quick|rapid):\b(?:quickly|fast|rapidly) (?:tilt|tip)\w*\b")),
-    ("approach slowly", (r"re(slow|gradual|steadi):\b(?:tilt|tip)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
+    ("approach slowly", (rf"re(slow|gradual|steadi):\b(?:tilt|tip)\w*{_TIPPED}(?: (?:very|really|too|quite))?"
                          r" (?:slow(?:ly)?|gradually|steadily)\b(?! (?:than|as)\b)",
                          r"re(slow|gradual|steadi):\b(?:slowly|gradually|steadily) (?:tilt|tip)\w*\b")),
     # a move that is quick by its verb: darted, zipped, flung in or out ("flings it over the bowl",
