@@ -19,6 +19,7 @@ import re
 from functools import lru_cache
 
 from pantarhei.bridge.reasoning.cued import Cued
+from pantarhei.bridge.reasoning.goal_lists import goal_list
 from pantarhei.bridge.reasoning.speeds import POURING_SPEED
 from pantarhei.bridge.reasoning.vessels import destinations, liquids
 
@@ -158,8 +159,11 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     # what it is for, as learners of English say it: "incline the jar for the water to go out from it"
     (r"\bfor (it|them|the [a-z]+|all of it|everything|it all) to (?=(?:go|come|get|flow|run|drain|land|stay|end up)\b)",
      r"so that \1 "),
-    # "what angle should I tilt to get everything out": so that it all comes out
-    (r"\b(?:in order |so as )?to get (it all|all of it|everything|every drop|every last drop|all (?:of )?the [a-z]+) out\b"
+    # "I need a pour that empties the cup completely into the bowl": so that it empties and it all goes in
+    (r"\b(?:i|we) (?:need|want|would like) a pour that (?:empties|drains) (the [a-z]+)(?: completely| fully| entirely)?(?= into\b)",
+     r"so that \1 empties and it all goes"),
+    # "what angle should I tilt to get everything out", "how do I get every drop out": so that it all comes out
+    (r"\b(?:(?:in order |so as )?to |(?<=how do i )|(?<=how can i )|(?<=how should i ))get (it all|all of it|everything|every drop|every last drop|all (?:of )?the [a-z]+) out\b"
      r"(?: of (?:the |a |my )?[a-z]+)?(?![^.?!,;]*\band (?:in|into)\b)", r"so that \1 comes out"),
     # "to avoid drips outside the target", "prevent any spills": so that it does not drip, spill
     (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|minimi[sz]e|minimi[sz]ing|reduce|reducing)"
@@ -190,7 +194,8 @@ _GETS = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? {_VALUE}) (?:gets|will
 def wanting(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` with its goals said as "so that ...", as outcomes.hear reads
     them, and the words of wanting it rewrote ("i want")."""
-    said = tuple(m.group(0).strip() for m in _keeping_in().finditer(text))
+    text, said = goal_list(text)              # "goal: transfer all the water, nothing on the bench"
+    said += tuple(m.group(0).strip() for m in _keeping_in().finditer(text))
     text = _keeping_in().sub(r"so that \1 stays in", text)
     said += tuple(m.group(2) for m in _KEEPS.finditer(text))
     text = _KEEPS.sub(r"\1 so that \3 stays \4", text)

@@ -1,0 +1,42 @@
+"""Goals listed as a note ("goal: transfer all the water, nothing on the
+bench, bowl stays put", "need: zero spill, full transfer"): each item said
+as the outcome it wants, the list as "so that ... and so that ...", as
+outcomes.hear reads goals. A list with an item that says no outcome is
+left as written, for the reader to read or refuse."""
+from __future__ import annotations
+
+import re
+
+#: A list of goals after its label, up to the end of its sentence.
+_LIST = re.compile(r"\b(?:my |our |the )?(?:goal|aim|objective|target|need|requirement)s?(?: is| are)?: *(?P<items>[^.?!;]+)")
+#: Each item, said as the outcome it wants (the item's words as written -> the clause).
+_ITEMS = tuple((re.compile(p), r) for p, r in (
+    (r"^(?:transfer|move|get|pour|empty) (?:all|everything|every drop)(?: of)?(?: (?:the|my) [a-z]+)?(?: (?:in|into) (?:the )?[a-z]+)?$",
+     "it all goes in"),
+    (r"^(?:full|complete|total) transfer$", "it all goes in"),
+    (r"^(?:nothing|none|no liquid|no water|not a drop) (?:on|onto) (?:the |my )?[a-z]+$", "nothing spills"),
+    (r"^(?:zero|no) (?:spill|spills|spillage|spilling|mess|splash|splashes|splashing|drips|dripping)$", "nothing spills"),
+    (r"^(?:a )?(?:clean|neat|tidy) pour$", "nothing spills"),
+    (r"^(?:the )?(?:bowl|destination) (?:stays|remains|staying|is) (?:put|still|in place|where it is)$", "the bowl stays put"),
+    (r"^(?:the )?(?:bowl|destination) (?:stays|remains|staying|is) upright$", "the bowl stays upright"),
+    (r"^(?:no|zero) (?:contact|bumps?|knocks?|collisions?)$", "the cup does not hit the bowl"),
+    (r"^(?:the )?(?:source|cup|jug|bottle) (?:emptied|empty)$", "it all comes out"),
+))
+
+
+def goal_list(text: str) -> tuple[str, tuple[str, ...]]:
+    """`text` (normalised) with a list of goals said as "so that ..." for
+    each, and what is said back; `text` as it is otherwise."""
+    m = _LIST.search(text)
+    if m is None:
+        return text, ()
+    items = [i.strip() for i in re.split(r",|\band\b", m.group("items")) if i.strip()]
+    said = []
+    for item in items:
+        clause = next((r for p, r in _ITEMS if p.match(item)), None)
+        if clause is None:
+            return text, ()
+        said.append(clause)
+    wanted = " and ".join(f"so that {c}" for c in dict.fromkeys(said))
+    return (f"{text[:m.start()]}{wanted}{text[m.end():]}",
+            (f"{m.group(0).strip()}: read as {wanted}",))
