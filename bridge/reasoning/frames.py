@@ -30,6 +30,9 @@ FRAMES = tuple((re.compile(p), r) for p, r in (
     # how much spills, named as a measure: "fraction spilled?", "spill fraction?", "the share spilt"
     (r"\b(?:(?:the |what )?(?:fraction|share|proportion|percentage|percent|amount|volume) (?:of (?:it|liquid|the \w+) )?"
      r"(?:spilled|spilt)|spill(?:ed)? (?:fraction|share|proportion|percentage))(?= *[?.!]* *$)", " how much spills "),
+    # how much goes in, named as a measure: "fraction entering the bowl?"
+    (r"\b(?:the |what )?(?:fraction|share|proportion|percentage|percent|amount) (?:of (?:it|liquid|the \w+) )?(?:entering|that enters"
+     r"|going in(?:to)?|that goes in(?:to)?|landing in|in)(?= (?:the )?(?:bowl|target|destination|receiver) *[?.!]* *$)", " how much goes into "),
     # an outcome expected, as a noun: "would you expect spilling", "do you predict any splashing"
     (r"\b(?:expect|predict|anticipate|see|observe|get|cause|causes|notice)(?: any| some| a| much)? "
      r"(?=(?:spill|splash|drip|leak|slosh|splatter|dribbl)\w*\b(?! of\b))", " will it "),
