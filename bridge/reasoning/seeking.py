@@ -40,7 +40,7 @@ _ASKING_SOURCE = (
     # a value that works: "what tilt works", "which height would work best", "which position of cup is best"
     rf"\b(?:what|which) {_VALUE}(?: {_VALUE})?(?: of (?:the |my |a )?[a-z]+)? (?:works?|would work|will work|is best|would be best"
     rf"|(?:is|would be) (?:good|right|ideal|safe|safest|better))(?: best)?(?= |$|[?.!,])"
-    rf"|\b(?:(?:what|which)(?: is| be)?(?: the| a)?(?: {_BEST})?|(?:the |a )?{_BEST}) (?:(?:pour|pouring|approach|retreat|withdraw|withdrawal|retraction) )?{_VALUE}(?: {_VALUE})?"   # "tilt angle", "pour height"
+    rf"|\b(?:(?:what|which)(?: is| be)?(?: the| a)?(?: {_BEST}| good| decent| suitable| sensible)?|(?:the |a )?{_BEST}) (?:(?:pour|pouring|approach|retreat|withdraw|withdrawal|retraction) )?{_VALUE}(?: {_VALUE})?"   # "tilt angle", "pour height"
     rf"(?:(?:,| and| or|, and|, or) (?:the |a )?{_VALUE})*"      # "the best height and angle"
     rf"(?: (?:to {_ACT}{_WHAT}|(?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT}"
     rf"|for (?:it|pouring|the pour)))?(?=[ ?.!,;:]|$)"
