@@ -89,6 +89,9 @@ _SET_AGAINST = tuple((re.compile(p), r) for p, r in (
      r"(?P<b>.+?)(?P<end> *[?.!]* *)$", "{a} vs {b}, which one {verb} {how}{end}"),
     (rf"^(?:so )?(?:is|would) (?P<a>.+?) (?:be )?(?P<more>less|more) (?P<adj>{_ADJECTIVE}) than (?P<b>.+?)(?P<end> *[?.!]* *)$",
      "{a} vs {b}, which one {verb} {how}{end}"),
+    # "is it less messy to pour the smoothie from a heavy jug or a light plastic cup?"
+    (r"^(?:so )?is it (?P<how>less|more) messy to (?P<a>.+?) or (?:from )?(?P<b>.+?)(?P<end> *[?.!]* *)$",
+     "{a} vs {b}, which one spills {how}{end}"),
     # "would a runny liquid like water or a sticky one like molasses splash more from the same height?"
     (r"^(?:so )?(?:would|will|does|do|could|can) (?P<a>(?:a|an|the|pouring|tipping|tilting) .+?) or "
      r"(?P<b>(?:a|an|the|pouring|tipping|tilting) .+?) (?P<verb>spill|splash|drip|slide|tip over|tip|move|overflow) "

@@ -20,7 +20,8 @@ REMEDY = re.compile(
     r"^(?:so |and |but )?(?:what (?:should|do|can|could|would|must|shall) (?:i|we|you|he|she|they) (?:do|change|try|adjust)"
     r"(?: (?:differently|different|instead|next time|then|now|to fix (?:it|that|this)|about (?:it|that|this)))*"
     r"|what (?:do|would|can|could) you (?:suggest|recommend|advise)"
-    r"|how (?:do|can|could|should|would|to) (?:i|we|you)?(?: ?(?:stop|avoid|prevent|fix|solve|handle))(?: (?:that|this|it))?"
+    # (as learners of English ask it too: "how I can avoid this")
+    r"|how (?:(?:do|can|could|should|would|to) (?:i|we|you)?|(?:i|we) (?:can|could|should|do))(?: ?(?:stop|avoid|prevent|fix|solve|handle))(?: (?:that|this|it))?"
     r"(?: (?:happening|from happening))?(?: (?:again|next time|in future|in the future))*"
     r"|how (?:do|can|could|should|would) (?:i|we|you) (?:pour|do)(?: it| this| that)?(?: (?:then|instead|next time|differently|right|properly|better|again))*"
     r"|any (?:tips|advice|ideas|suggestions|help)(?: (?:on|for) (?:that|this|it|next time))?"

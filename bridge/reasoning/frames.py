@@ -30,6 +30,9 @@ FRAMES = tuple((re.compile(p), r) for p, r in (
     # how much spills, named as a measure: "fraction spilled?", "spill fraction?", "the share spilt"
     (r"\b(?:(?:the |what )?(?:fraction|share|proportion|percentage|percent|amount|volume) (?:of (?:it|liquid|the \w+) )?"
      r"(?:spilled|spilt)|spill(?:ed)? (?:fraction|share|proportion|percentage))(?= *[?.!]* *$)", " how much spills "),
+    # a puddle said where it lies: "will there be a puddle next to the bowl" (a spill)
+    (r"\b(a |any |some )?(puddles?|mess|drips|spills?)(?: (?:next to|beside|around|by|near|under|on the table by) (?:the )?(?:bowl|dish|it))(?= *[?.!]* *$| after\b| when\b| if\b)",
+     r" \1\2"),
     # how much goes in, named as a measure: "fraction entering the bowl?"
     (r"\b(?:the |what )?(?:fraction|share|proportion|percentage|percent|amount) (?:of (?:it|liquid|the \w+) )?(?:entering|that enters"
      r"|going in(?:to)?|that goes in(?:to)?|landing in|in)(?= (?:the )?(?:bowl|target|destination|receiver) *[?.!]* *$)", " how much goes into "),

@@ -34,7 +34,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*|slop\w*|splash\w*|splatter\w*|fizz\w*"
      r"|foam\w*|froth\w*|bubbl\w*|boil\w*) over"
      r"(?: the (?:rim|edge|top|side)s?)?"
-     r"|(?:bounc|jump|leap|hop|fly|flies|flew|flying)\w* (?:right |straight )?(?:back )?(?:up )?(?:over|out(?: of)?)|flood\w*"
+     r"|(?:(?:come|comes|came|coming) )?(?:bounc|jump|leap|hop|fly|flies|flew|flying)\w* (?:right |straight )?(?:back )?(?:up )?(?:over|out(?: of)?)|flood\w*"
      r"|(?:go|goes|going|went|get|gets|come|comes|came) over(?= the (?:far |near |other |opposite |back |front )?(?:rim|edge|top|side|brim|lip)s?\b)", ("liquid_remains_in_destination", "no_spill"), True),
     # (sloshing around in the bowl is no spill: everyday.txt says it back)
     (r"spill\w*|spilt|splash\w*|splatter\w*|slosh\w*(?! (?:around|about)\b)|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
@@ -90,6 +90,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      # (not how full the source is: "a nearly empty jug", "an empty cup")
      r"|(?<!nearly )(?<!almost )(?<!mostly )(?<!practically )(?<!all but )(?<!half )(?<!\ban )(?<!\ba )(?<!\bthe )"
      r"empt(?:y|ies|ied)(?: out)?|(?:(?:end|ends) up|becomes?|gets?) (?:totally |completely |fully )?empty(?: (?:completely|fully|totally))?|leav(?:e|es|ing) (?:the|it)\b|exit\w*", ("liquid_leaves_source",), False),
+    # stayed inside, no bowl said: kept in the source ("a bit of the oil stayed inside")
+    (r"(?:stayed|remained|stuck) (?:inside|behind)\b(?! (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|destination)s?\b)",
+     ("liquid_leaves_source",), True),
     # left inside, no bowl said: kept in the source ("there was still a bit left inside at the end")
     (r"left (?:over )?inside\b(?! (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|destination)s?\b)", ("liquid_leaves_source",), True),
     # left in the source: kept in it ("is anything left in the jug afterwards")
@@ -99,7 +102,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     # left behind in the source: kept in it ("with nothing left behind")
     (r"(?:left|stay(?:s|ed|ing)?|remain(?:s|ed|ing)?) behind\b"
      # what is left in it, said of the pour: "which one leaves more behind in the cup"
-     r"|leav(?:e|es|ing) (?:more |less |much |some |any |anything |something |a lot |a bit |nothing )?behind\b",
+     r"|leav(?:e|es|ing) (?:more |less |much |some |any |anything |something |a lot |a bit |nothing )?behind\b"
+     # some of it remaining, said after it left: "shall all of it leave it, or will some remain?"
+     r"|(?:(?<=some )|(?<=any )|(?<=bit )|(?<=little ))remain(?:s)?\b(?! in (?:the )?(?:bowl|destination)\b)",
      ("liquid_leaves_source",), True),
     # clinging to a container not the bowl: kept in the source ("make it into the bowl or cling to the jar")
     (r"(?:stick|sticks|sticking|stuck|cling|clings|clinging|clung) to"
@@ -113,7 +118,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:stay|stays|remain|remains) (?:in )?there\b"
      r"|(?:stay|stays|remain|remains|stop|stops|stick|sticks|stuck|cling|clings|clung|sit|sits) in(?:side)?(?: the \w+)?",
      (*ALL_IN, "liquid_remains_in_destination"), False),
-    (r"(?:go|goes|going|went|get|gets|land|lands|make it|makes it|fall|falls|transfer\w*|arrive\w*|finds? (?:its|their) way) (?:more |mostly )?(?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*|get (?:the |all (?:the )?)?(?:water|liquid|milk|it|everything) (?:in|into)\b",
+    (r"(?:go|goes|going|went|get|gets|land|lands|plop|plops|plopped|make it|makes it|fall|falls|transfer\w*|arrive\w*|finds? (?:its|their) way) (?:more |mostly )?(?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*|get (?:the |all (?:the )?)?(?:water|liquid|milk|it|everything) (?:in|into)\b",
      ALL_IN, False),
     (r"miss(?:es|ed|ing)?|overshoot\w*|undershoot\w*|fall\w* short", ALL_IN, True),
     (r"safe(?:ly)?|(?:be |is )?(?:fine|ok|okay|alright|all right)\b|(?:a )?(?:good|bad) idea|risky"

@@ -52,7 +52,7 @@ _ASKING_SOURCE = (
     rf"(?: (?:to )?(?:it|them|the \w+))?(?= |$|[?.!,])"
     # (not a speed of pouring, which the vocabulary has none of: "how slowly should I go")
     rf"|\bhow(?: (?:very|really))? (?!(?:fast|quick|quickly|slow|slowly) (?:should|do|can|must|would|could|shall)"
-    rf" {_WHO} (?:pour|go)\b){_HOW}(?: (?:over|across|above|up|down|back|in|out|away))?(?: (?:should|do|can|must|would|could|shall|is) {_WHO}"
+    rf" {_WHO}(?: (?:need|have) to)? (?:pour|go)\b){_HOW}(?: (?:over|across|above|up|down|back|in|out|away))?(?: (?:should|do|can|must|would|could|shall|is) {_WHO}"
     rf"(?: (?:be\b|{_ACT}{_WHAT}))?)?(?=[ ?.!,;:]|$)"
 
     rf"|\bhow (?:should|do|can|must|would|could|shall) {_WHO} {_ACT}{_WHAT}(?=[ ?.!,;:]|$)"
@@ -89,7 +89,8 @@ _KEEPS = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? {_VALUE}) (keeps|will
 #: Wanting an outcome: "I want the bowl not to move", "we'd like it to stay in".
 _WANT = re.compile(r"(?:\b(?:i|we) |^|(?<=[.!?] ))(?:want|need|would like|wish)(?: for)? (it(?: all)?|all of it|everything|them|nothing"
                    r"|every drop|each drop|every bit|all (?:of )?the (?:[a-z]+ )?[a-z]+"
-                   r"|the (?:[a-z]+ )?(?!source\b)[a-z]+)(?= (?:not |never )?to\b)")
+                   # (where it comes from said after it: "all of the juice from the carton to land in the bowl")
+                   r"|the (?:[a-z]+ )?(?!source\b)[a-z]+)(?: from (?:the|my|a) [a-z]+)?(?= (?:not |never )?to\b)")
 
 #: A goal of emptying the source: "goal: empty the bottle completely".
 _EMPTYING = (r"\b(?:goal|aim|objective|task|target)s?(?: is)?:? (?:to )?(?:empty|drain) (?:out )?(?:the whole|all of the"
@@ -203,7 +204,8 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
     text = _EMPTIES.sub(r"\1 so that it empties", text)
     said += tuple(m.group(0)[m.end(1) - m.start():m.start(2) - m.start()].strip() for m in _GETS.finditer(text))
     text = _GETS.sub(r"\1 so that \2 goes ", text)
-    said += tuple(m.group(0)[:m.start(1) - m.start()].strip() for m in _WANT.finditer(text))
+    said += tuple(f"{m.group(0)[:m.start(1) - m.start()]}{m.group(0)[m.end(1) - m.start():]}".strip()
+                  for m in _WANT.finditer(text))      # "i want", and where it comes from ("from the carton")
     text = _WANT.sub(r"so that \1", text)
     for pattern, wanted in _WANTING:
         said += tuple(m.group(0).strip() for m in pattern.finditer(text))
