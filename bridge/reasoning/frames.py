@@ -30,6 +30,9 @@ FRAMES = tuple((re.compile(p), r) for p, r in (
     # how much spills, named as a measure: "fraction spilled?", "spill fraction?", "the share spilt"
     (r"\b(?:(?:the |what )?(?:fraction|share|proportion|percentage|percent|amount|volume) (?:of (?:it|liquid|the \w+) )?"
      r"(?:spilled|spilt)|spill(?:ed)? (?:fraction|share|proportion|percentage))(?= *[?.!]* *$)", " how much spills "),
+    # the source left with liquid stuck in it: "does the cup end up with some liquid still stuck inside it"
+    (r"\b(does|will|would) (the [a-z]+) end up with ((?:some|any|a bit of|a little)(?: of the| the)?(?: [a-z]+)?) (?:still )?"
+     r"(?:stuck|left) (?:inside|in) (?:it|them)\b", r"\1 \3 stay stuck in \2"),
     # a puddle said where it lies: "will there be a puddle next to the bowl" (a spill)
     (r"\b(a |any |some )?(puddles?|mess|drips|spills?)(?: (?:next to|beside|around|by|near|under|on the table by) (?:the )?(?:bowl|dish|it))(?= *[?.!]* *$| after\b| when\b| if\b)",
      r" \1\2"),

@@ -140,7 +140,10 @@ def _read(told: str, asked: str) -> tuple[str, tuple[str, ...]] | None:
             rest = f"{how} {m.group('scene')}, {question}?"
             return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did")
     if CAUSE.match(asked):
-        scene = [re.sub(rf"^{WHEN},? ", "", c) for c in clauses if not any(p.search(c) for p, _, _ in _outcomes()[:-1])]
+        # the clauses that tell nothing gone wrong: those with no outcome, and those saying when it went wrong
+        # ("when i emptied the heavy saucepan into it")
+        scene = [re.sub(rf"^{WHEN},? ", "", c) for c in clauses if not _failed(c) and (
+            re.match(r"(?:when|while|as|after|once) ", c) or not any(p.search(c) for p, _, _ in _outcomes()[:-1]))]
         rest = f"{' and '.join(scene)}, {question}?" if scene else f"{question}?"
         return rest, (f"{told}: read as {rest.strip(' ?')}", f"{asked.strip(' ?.!')}: read as asked of the pour told")
     return None

@@ -52,7 +52,7 @@ MOVES: tuple[tuple, ...] = (
              "at the end", "in the end", "finish")),
     # "after pouring from the side": the manner after it is the pour's
     # emptying a bowl into another, decanting, dumping, chucking it in, straining or ladling it: pouring
-    ("pour", (r"re:\bempt(?:y|ies|ied|ying)(?= (?:it|the \w+|a \w+) (?:into|in|onto)\b)",
+    ("pour", (r"re:\bempt(?:y|ies|ied|ying)(?= (?:it|(?:the|a|an|my) (?:\w+ )?\w+) (?:into|in|onto)\b)",
               r"re:\bchuck(?:s|ed|ing)?(?= (?:(?:it|them|the \w+|\w+) )?(?:in|into)\b)",
               # straining a drink into a glass, ladling soup into a bowl
               r"re:\bstrain(?:s|ed|ing)?(?= (?:(?:it|them|the \w+|\w+) )?(?:in|into|over)\b)",

@@ -44,6 +44,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:run|runs|running|ran|roll\w*|stream\w*) down the (?:outside|side)(?! of (?:the |a )?(?:bowl|dish|destination))"
      # the place under it wet: "will my counter get wet"
      r"|(?:table|counter|countertop|floor|worktop|bench|tablecloth) (?:get|gets|got|getting|be|become|becomes) (?:all )?wet\b"
+     # finding its way onto the tablecloth, dropping on the table
+     r"|(?:find|finds|found|make|makes|made) (?:its|their) way (?:onto|on to|on) "
+     r"|(?:is |are )?drop(?:s|ped|ping)? (?:on|onto) (?:the )?(?:table|floor|counter|countertop|worktop|bench|tablecloth)\b"
      # the liquid touching what is under it: "without any of it touching the table"
      r"|(?:touch\w*|reach\w*) (?:the )?(?:table|floor|counter|countertop|worktop|bench|tablecloth|tray)\b"
      r"|hit\w* (?:the )?(?:table|floor|counter|countertop|worktop|bench|bar mat|bar top|bar|mat|tray|stove|tablecloth|ground)\b|(?:go|goes|going|went|get|gets|got|land|lands|landed|landing|fall|falls|fell) (?:on|onto|all over"
@@ -76,7 +79,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:giv(?:e|es|ing)|gave) (?:a |any |some )?(?:hit|knock|bump|bang|touch)s?(?: to)?(?= (?:the|a|an|my|its|it)\b)"   # "giving a hit to the bowl"
      r"|bump\w*|hit(?:s|ting)?|touch\w*|collid\w*|crash\w*|knock\w*|clip(?:s|ped)?|strike\w*"
      r"|bonk\w*|bang\w*|intersect\w*|clash\w*|graz(?:e|es|ed|ing)|scrap(?:e|es|ed|ing)|nudg\w*|clink\w*|slam\w*"
-     r"|smash\w*|whack\w*|(?:run|runs|ran|running) into|(?:come|comes|came) into contact|bounc\w* (?:off|against)"
+     r"|smash\w*|whack\w*|smack\w*|(?:run|runs|ran|running) into|(?:come|comes|came) into contact|bounc\w* (?:off|against)"
      r"|make contact|makes contact|(?:any|some) contact|contact (?:occur|occurs|happen|happens)"
      r"|(?<=there )(?:any |some )?contact|(?<=there be )(?:any |some )?contact",   # "is there contact"
      ("source_clear",), True),
@@ -91,7 +94,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?<!nearly )(?<!almost )(?<!mostly )(?<!practically )(?<!all but )(?<!half )(?<!\ban )(?<!\ba )(?<!\bthe )"
      r"empt(?:y|ies|ied)(?: out)?|(?:(?:end|ends) up|becomes?|gets?) (?:totally |completely |fully )?empty(?: (?:completely|fully|totally))?|leav(?:e|es|ing) (?:the|it)\b|exit\w*", ("liquid_leaves_source",), False),
     # stayed inside, no bowl said: kept in the source ("a bit of the oil stayed inside")
-    (r"(?:stayed|remained|stuck) (?:inside|behind)\b(?! (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|destination)s?\b)",
+    (r"(?:stayed|remained|stuck) (?:inside|behind|in (?:the|my|a|its) (?!(?:[a-z]+ )?(?:bowl|destination)s?\b)(?:[a-z]+ )?[a-z]+)\b"
+     r"(?! (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|destination)s?\b)",
      ("liquid_leaves_source",), True),
     # left inside, no bowl said: kept in the source ("there was still a bit left inside at the end")
     (r"left (?:over )?inside\b(?! (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|destination)s?\b)", ("liquid_leaves_source",), True),

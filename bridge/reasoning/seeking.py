@@ -134,6 +134,11 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     # a value there that reaches a goal: "is there any height where the water never splashes" (so that it does not)
     (rf"\b(is there (?:any|an?|some|one) {_VALUE}) (?:where|at which|for which|with which|in which)"
      r" (?=(?:it|they|the [a-z]+|nothing|none|no [a-z]+) )", r"\1 so that "),
+    # "for all the oil coming out", as learners of English say it: so that it all comes out
+    (r"\bfor (all (?:of )?the [a-z]+|it all|all of it|everything) (?:coming|to come) out\b", r"so that \1 comes out"),
+    # "I want to pour all the broth into the bowl": so that it all goes in
+    (r"\b(?:i|we) (?:want|need|would like) to (?:pour|get|put|transfer) (all (?:of )?the [a-z]+|it all|all of it|everything|every drop)"
+     r"(?= (?:in|into)\b)", r"so that \1 goes"),
     # "so that none is wasted": so that nothing spills
     (r"\bso(?: that)? (?:none|nothing|no liquid|not a drop)(?: of it)? (?:is|gets|will be|goes to) wasted?\b", "so that nothing spills"),
     # "without losing any": so that nothing spills
@@ -151,7 +156,7 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\bfor (?:not|never|no) (?=(?:make|making|spill|splash|drip|tip|slid|mov|hit|touch|overflow|toppl)[a-z]*\b)",
      "so that it does not "),
     # not wanting an outcome, said as a noun: "if I don't want any splash", "we don't want a mess"
-    (r"\b(?:if )?(?:i|we|you) (?:do not|never) (?:want|need) (?:any|a|a single|one|even one) (splash|spill|drip|leak|overflow)"
+    (r"\b(?:if )?(?:i|we|you) (?:do not|never) (?:want|need) (?:(?:any|a|a single|one|even one) )?(splash|spill|drip|leak|overflow)"
      r"(?:es|s|ing|age)?\b", r"so that it does not \1"),
     (r"\b(?:if )?(?:i|we|you) (?:do not|never) (?:want|need) (?:any|a) mess\b", "so that nothing spills"),
     # a goal said as a state with no outcome in it: "with zero mess", "with no spills"

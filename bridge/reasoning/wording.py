@@ -177,6 +177,9 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     # every drop of a liquid is all of it: "get every drop of the syrup into the bowl"
     text = re.sub(r"\bevery (?:last |single )?drop of (?:the |my |that |this )?",
                   lambda m: said.setdefault(f"{m.group(0).strip()}: read as all of the") or "all of the ", text)
+    # "it make splash out from bowl", as learners of English ask it: will it splash out
+    text = re.sub(r"(?:^|(?<=[,;:.?!] ))(it|they) (?:make|makes) (?=(?:splash|spill|drip|overflow|slosh)\w*\b)",
+                  lambda m: said.setdefault(f"{m.group(0).strip()}: read as will {m.group(1)}") or f"will {m.group(1)} ", text)
     # "how much high", as learners of English ask a value: how high
     text = re.sub(r"\bhow much (high|far|low|close|near|steep|fast|slow|slowly|quickly)\b",
                   lambda m: said.setdefault(f"{m.group(0)}: read as how {m.group(1)}") or f"how {m.group(1)}", text)
