@@ -13,8 +13,10 @@ from pantarhei.bridge.reasoning.everyday import alternation, names
 
 @lru_cache(maxsize=None)
 def _little() -> re.Pattern:
-    # ("the little medicine cup": a little cup, a liquid's name between, never a little liquid)
-    return re.compile(rf"\b(?:little|lil) (?:bitty )?(?:(?:{alternation(names('liquid'))}) )?(?:{alternation(names('bowl'))})\b")
+    # ("the little medicine cup", "the little plastic bowl": a little cup, a liquid's name or a material
+    # between, never a little liquid)
+    return re.compile(rf"\b(?:little|lil) (?:bitty )?(?:(?:{alternation(names('liquid', 'material'))}) )?"
+                      rf"(?:{alternation(names('bowl'))})\b")
 
 
 def refuse_little(text: str) -> None:

@@ -149,6 +149,8 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     # "avoids the cup hitting the bowl", "prevent the bowl sliding", "stop the mug clinking"
     (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|stop|stops|stopping) (it|them|the [a-z]+)"
      r" (?=[a-z]+ing\b)", r"so that \1 does not "),
+    # "for that all the milk go inside the bowl", as learners of English say it: so that it goes in
+    (r"\bfor that (?=(?:all|it|the|every|nothing|none|no)\b)", "so that "),
     # "for the soup not to jump out", as learners of English say it: so that it does not
     (r"\bfor (it|them|the [a-z]+) (?:not|never) to (?=[a-z]+)", r"so that \1 does not "),
     # a goal said with "for", as learners of English say it: "near or far for not make mess", "for no spilling"
