@@ -86,9 +86,11 @@ _BETTER = re.compile(r"\b(?:is|will|would) (?:it|that|this) (?:be )?(?:any )?bet
                      # what was wrong with the pour told: whether it happens again, asked
                      r"|\bwhat (?:did|have) (?:i|we) (?:do|done) wrong\b")
 #: A scene said to end what happened: "would a heavier bowl stop that", "would pouring centred
-#: have helped" (with it, does it happen).
-_STOPS = re.compile(r"\b(?:will|would|does|could|can|might) (?P<scene>(?:a|an|the|my|some) [a-z ]+?|[a-z]+ing\b[a-z ]*?)"
-                    r" (?:(?:have )?(?:fix|stop|prevent|solve)(?:ed)? (?:it|that|this)|(?:have )?help(?:ed)?)\b")
+#: have helped", "would a heavier bowl have stayed put" (with it, does it happen); mishaps.py's too.
+HELPS = re.compile(r"\b(?:will|would|does|do|could|can|might) (?P<scene>(?:a|an|the|my|some) [a-z ]+?|[a-z]+ing\b[a-z ]*?)"
+                   r" (?:(?:have )?(?:fix|stop|prevent|solve)(?:ed)?(?: (?:it|that|this))?|(?:have )?help(?:ed)?"
+                   r"|have (?:stayed put|stayed|kept (?:it|them) (?:in|still|upright|put)|worked|been better)"
+                   r"|(?:stay put|stay|keep (?:it|them) in|work|be better))\b")
 
 
 def told(text: str) -> tuple[str, tuple[str, ...]]:
@@ -118,8 +120,8 @@ def told(text: str) -> tuple[str, tuple[str, ...]]:
         asked = rest.rstrip(" ?.!")
         rest = f"{_AVOID.sub('how should i pour', asked)} so that {wanted}?"
         said.append(f"{asked}: read as asked so that {wanted}, as the earlier pour did not")
-    elif out and _STOPS.search(rest):
-        stops = _STOPS.search(rest)
+    elif out and HELPS.search(rest):
+        stops = HELPS.search(rest)
         rest = f"{rest[:stops.start()]}with {stops.group('scene')}, {_TOLD[verb]}{rest[stops.end():]}"
         said.append(f"{stops.group(0)}: read as {_TOLD[verb]}, as the earlier pour did, with {stops.group('scene')}")
     return rest, tuple(said)

@@ -25,7 +25,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from pantarhei.bridge.reasoning.earlier_pour import CAUSE, REMEDY, WHEN
+from pantarhei.bridge.reasoning.earlier_pour import CAUSE, HELPS, REMEDY, WHEN
 from pantarhei.bridge.reasoning.everyday import alternation, names
 from pantarhei.bridge.reasoning.outcome_verbs import OUTCOMES
 from pantarhei.bridge.reasoning.phases import STILL
@@ -53,11 +53,6 @@ _GOING_ON = re.compile(r"\b(?:is|was|were|are) $")
 #: A value asked with no goal: "how far should I tilt it", "what height should I use".
 _VALUE = re.compile(r"^(?:so )?(?:how (?:far|high|low|much|close|steep|steeply|fast|slow|slowly|quickly)|what (?:height|tilt|angle"
                     r"|speed|position|distance|setting)|which (?:height|tilt|angle|speed|position|way))\b(?!.*\b(?:so|without)\b)")
-#: A scene said to help: "would a heavier bowl have stayed put", "would pouring lower help".
-_HELPS = re.compile(r"^(?:so )?(?:would|will|could|might|does|do) (?P<scene>(?:a|an|the|my|some) [a-z ]+?|[a-z]+ing\b[a-z ]*?)"
-                    r" (?:(?:have )?(?:fix|stop|prevent|solve)(?:ed)?(?: (?:it|that|this))?|(?:have )?help(?:ed)?"
-                    r"|have (?:stayed|kept (?:it|them) (?:in|still|upright|put)|stayed put|worked|been better)"
-                    r"|(?:stay|keep (?:it|them) in|stay put|work|be better))\b(?: (?:it|that|this))?[?.! ]*$")
 #: A scene supposed, then whether it helps: "if I come in from higher up next time, would that stop it?".
 _IF_HELPS = re.compile(r"^(?:so )?(?:if|what if) (?P<scene>[^,?]+?),? (?:would|will|could|does|do|might) (?:that|this|it) "
                        r"(?:help|work|stop (?:it|that|this)|fix (?:it|that|this)|prevent (?:it|that|this)|solve (?:it|that|this)"
@@ -134,9 +129,9 @@ def _read(told: str, asked: str) -> tuple[str, tuple[str, ...]] | None:
     if _VALUE.match(asked):
         rest = f"{asked.strip(' ?.!')} pouring{poured} so that {wanted}?" if poured else f"{asked.strip(' ?.!')} so that {wanted}?"
         return rest, (said, f"{asked.strip(' ?.!')}: read as asked so that {wanted}, as the pour told did not")
-    for helps, how in ((_HELPS, "with"), (_IF_HELPS, "if")):
-        m = helps.match(asked)
-        if m is not None:
+    for helps, how in ((HELPS, "with"), (_IF_HELPS, "if")):
+        m = helps.match(re.sub(r"^so ", "", asked))
+        if m is not None and re.fullmatch(r"(?: (?:it|that|this))?[?.! ]*", m.string[m.end():]):
             rest = f"{how} {m.group('scene')}, {question}?"
             return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did")
     if CAUSE.match(asked):
