@@ -34,7 +34,7 @@ FRAMES = tuple((re.compile(p), r) for p, r in (
     (r"\b(does|will|would) (the [a-z]+) end up with ((?:some|any|a bit of|a little)(?: of the| the)?(?: [a-z]+)?) (?:still )?"
      r"(?:stuck|left) (?:inside|in) (?:it|them)\b", r"\1 \3 stay stuck in \2"),
     # a puddle said where it lies: "will there be a puddle next to the bowl" (a spill)
-    (r"\b(a |any |some )?(puddles?|mess|drips|spills?)(?: (?:next to|beside|around|by|near|under|on the table by) (?:the )?(?:bowl|dish|it))(?= *[?.!]* *$| after\b| when\b| if\b)",
+    (r"\b(a |any |some )?(puddles?|mess|drips|spills?)(?: (?:next to|beside|around|by|near|under|on the table by) (?:the )?(?:bowl|dish|it))(?= *[?.!]* *$| after\b| afterwards?\b| later\b| when\b| if\b)",
      r" \1\2"),
     # how much goes in, named as a measure: "fraction entering the bowl?"
     (r"\b(?:the |what )?(?:fraction|share|proportion|percentage|percent|amount) (?:of (?:it|liquid|the \w+) )?(?:entering|that enters"

@@ -68,28 +68,36 @@ def _outcomes() -> tuple[tuple[re.Pattern, tuple[str, ...], bool], ...]:
     return tuple((re.compile(rf"\b(?:{filled(v)})\b"), names, bad) for v, names, bad in OUTCOMES)
 
 
-def _failed(clause: str) -> list[tuple[str, ...]]:
-    """The expectations a clause tells failed ("it slid": the bowl moved;
-    "nothing came out": it did not leave the source), each group once."""
-    out: list[tuple[str, ...]] = []
+def _told(clause: str) -> list[tuple[tuple[str, ...], bool]]:
+    """The outcomes a clause tells as having happened, each group with
+    whether it failed ("it slid": the bowl moved; "nothing came out": it did
+    not leave the source; "it went in fine": it held)."""
+    out: list[tuple[tuple[str, ...], bool]] = []
     for pattern, names, bad in _outcomes()[:-1]:     # (the last is "safe", "fine": no outcome told)
         m = pattern.search(clause)
         if m is None:
             continue
-        negated = _NOT.search(clause[:m.start()]) is not None
-        if re.search(r"\b(?:i|we|you|he|she|they)(?: just)? $", clause[:m.start()]) and "source_clear" not in names:
+        before = clause[:m.start()]
+        if re.search(r"\b(?:i|we|you|he|she|they)(?: just)? $", before) and "source_clear" not in names:
             continue        # what the one pouring did ("i tipped the jug"), not an outcome
-        if names == ("destination_upright",) and re.match(r" (?:the|a|an|my|his|her|their|it)\b", clause[m.end():]):
-            continue        # tipping something: the source ("she keeps tipping the jug")
-        if not (_TOLD_TENSE.match(m.group(0)) or _HABIT.search(clause[:m.start()])
-                or (_GOING_ON.search(clause[:m.start()]) and m.group(0).endswith("ing"))):
+        if names == ("destination_upright",) and (re.match(r" (?:the|a|an|my|his|her|their|it)\b", clause[m.end():]) or re.search(
+                r"\b(?:already )$|\b(?:the|my|a) (?!bowl\b|dish\b|destination\b)[a-z]+ (?:already |was |is |got )*$", before)):
+            continue        # tipping something, or something held tipped: the source ("she keeps tipping the jug",
+            #                 "i started with the bottle already tipped")
+        if not (_TOLD_TENSE.match(m.group(0)) or _HABIT.search(before)
+                or (_GOING_ON.search(before) and m.group(0).endswith("ing"))):
             continue        # not told as having happened ("need to empty it without knocking it over")
-        if bad != negated:
-            group = STILL if names == STILL else names
-            if group not in out:
-                out.append(group)
+        group = STILL if names == STILL else names
+        failed = bad != (_NOT.search(before) is not None)
+        if (group, failed) not in out:
+            out.append((group, failed))
         clause = clause[:m.start()] + " " + clause[m.end():]
     return out
+
+
+def _failed(clause: str) -> list[tuple[str, ...]]:
+    """The expectations a clause tells failed, each group once (_told's)."""
+    return [group for group, failed in _told(clause) if failed]
 
 
 def _said(words: dict, group: tuple[str, ...]) -> str:
@@ -138,7 +146,7 @@ def _read(told: str, asked: str) -> tuple[str, tuple[str, ...]] | None:
         # the clauses that tell nothing gone wrong: those with no outcome, and those saying when it went wrong
         # ("when i emptied the heavy saucepan into it")
         scene = [re.sub(rf"^{WHEN},? ", "", c) for c in clauses if not _failed(c) and (
-            re.match(r"(?:when|while|as|after|once) ", c) or not any(p.search(c) for p, _, _ in _outcomes()[:-1]))]
+            re.match(r"(?:when|while|as|after|once) ", c) or not _told(c))]
         rest = f"{' and '.join(scene)}, {question}?" if scene else f"{question}?"
         return rest, (f"{told}: read as {rest.strip(' ?')}", f"{asked.strip(' ?.!')}: read as asked of the pour told")
     return None

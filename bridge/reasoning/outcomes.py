@@ -216,6 +216,7 @@ def _acts(subject: list[str], names: tuple[str, ...], m: re.Match | None = None)
     the table wobbly": everyday.txt's context nouns)."""
     actors = (_ACTORS - _HOLDING if names == ("source_clear",) or (names == ("destination_upright",) and m is not None
               and _STRIKES.search(m.group(0))) else _ACTORS)           # what holds the source knocks the bowl over with it
+    actors = set() if "no_spill" in names else actors     # "will I spill?": whoever spills, it spills
     head = subject[:subject.index("of")] if "of" in subject else subject     # "the jug of water"
     if names == ("source_clear",) and liquids().spans(head):   # "does the water hit the rim": no
         return True                                             # source hitting it

@@ -99,7 +99,10 @@ _CHAT = {"u": "you", "ur": "your", "wat": "what", "wut": "what", "wot": "what", 
          "teh": "the", "hte": "the", "th": "the", "wil": "will", "wll": "will", "wen": "when", "whn": "when",
          "wht": "what", "waht": "what", "adn": "and", "nad": "and", "taht": "that", "thta": "that",
          "becuase": "because", "becasue": "because", "shoudl": "should", "shoud": "should", "woudl": "would",
-         "dosnt": "doesn't", "doesent": "doesn't", "dosent": "doesn't", "owt": "out", "sirup": "syrup", "honney": "honey", "upon": "on", "bc": "because", "b/c": "because"}
+         "dosnt": "doesn't", "doesent": "doesn't", "dosent": "doesn't", "owt": "out", "sirup": "syrup", "honney": "honey", "upon": "on", "bc": "because", "b/c": "because", "ovr": "over", "wld": "would", "cld": "could", "shd": "should",
+         # a yeet is a fling
+         "yeet": "fling", "yeets": "flings",
+         "yeeted": "flung", "yeeting": "flinging"}
 _CHATTED = (rf"\b(?:{'|'.join(_CHAT)})\b|\by(?= (?:does|do|did|is|are|was|would|will|can|not)\b| *\?* *$)"
             r"|\bits(?= (?:too|to|so|very(?! (?:edge|rim|lip|brim|border|middle|centre|center|top|side)\b)|really|right|just|not|over|at|in|on|upside|nearly|almost|only"
             r"|going|held|[a-z]+ed)\b)"
