@@ -99,10 +99,7 @@ _CHAT = {"u": "you", "ur": "your", "wat": "what", "wut": "what", "wot": "what", 
          "teh": "the", "hte": "the", "th": "the", "wil": "will", "wll": "will", "wen": "when", "whn": "when",
          "wht": "what", "waht": "what", "adn": "and", "nad": "and", "taht": "that", "thta": "that",
          "becuase": "because", "becasue": "because", "shoudl": "should", "shoud": "should", "woudl": "would",
-         "dosnt": "doesn't", "doesent": "doesn't", "dosent": "doesn't", "owt": "out", "sirup": "syrup", "honney": "honey", "upon": "on", "bc": "because", "b/c": "because", "ovr": "over", "wld": "would", "cld": "could", "shd": "should",
-         # a yeet is a fling
-         "yeet": "fling", "yeets": "flings",
-         "yeeted": "flung", "yeeting": "flinging"}
+         "dosnt": "doesn't", "doesent": "doesn't", "dosent": "doesn't", "owt": "out", "sirup": "syrup", "honney": "honey", "upon": "on", "bc": "because", "b/c": "because", "ovr": "over", "wld": "would", "cld": "could", "shd": "should"}
 _CHATTED = (rf"\b(?:{'|'.join(_CHAT)})\b|\by(?= (?:does|do|did|is|are|was|would|will|can|not)\b| *\?* *$)"
             r"|\bits(?= (?:too|to|so|very(?! (?:edge|rim|lip|brim|border|middle|centre|center|top|side)\b)|really|right|just|not|over|at|in|on|upside|nearly|almost|only"
             r"|going|held|[a-z]+ed)\b)"
@@ -180,6 +177,12 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     # every drop of a liquid is all of it: "get every drop of the syrup into the bowl"
     text = re.sub(r"\bevery (?:last |single )?drop of (?:the |my |that |this )?",
                   lambda m: said.setdefault(f"{m.group(0).strip()}: read as all of the") or "all of the ", text)
+    # the source yeeted is flung ("yeet the cup over the bowl": a fast move in); the liquid yeeted, a force of
+    # pouring, is left to be refused
+    text = re.sub(r"\byeet(s|ed|ing)?(?= (?:it|(?:the|my|a|an) (?:cup|mug|jug|glass|bottle|pitcher|can|pot|pan|carton|source"
+                  r"|container|flask|beaker|kettle|shaker)s?)\b)",
+                  lambda m: said.setdefault(f"{m.group(0)}: read as fling") or {"s": "flings", "ed": "flung", "ing": "flinging"}.get(
+                      m.group(1) or "", "fling"), text)
     # "it make splash out from bowl", as learners of English ask it: will it splash out
     text = re.sub(r"(?:^|(?<=[,;:.?!] ))(it|they) (?:make|makes) (?=(?:splash|spill|drip|overflow|slosh)\w*\b)",
                   lambda m: said.setdefault(f"{m.group(0).strip()}: read as will {m.group(1)}") or f"will {m.group(1)} ", text)
