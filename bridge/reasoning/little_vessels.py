@@ -21,6 +21,6 @@ def _little() -> re.Pattern:
 
 def refuse_little(text: str) -> None:
     """UserError where `text` (normalised) says a container is little."""
-    if m := _little().search(text):
+    if re.search(r"\b(?:little|lil)\b", text) and (m := _little().search(text)):    # (compiled only when cued)
         raise UserError(f"could not place \"{m.group(0)}\": the vocabulary's bowls are all of one size: it "
                         "says how heavy, slippery or bouncy a bowl is, not how big")

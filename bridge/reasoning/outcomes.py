@@ -132,7 +132,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
                          r"(?:table|counter|floor|worktop|bench))?(?= *[?.!]* *$)"
                          r"|\b(?:the |any |a )?(?:spill(?:s|age)?|splash(?:es|ing)?|drips?|mess)"
                          r" (?:outcome|result|risk|rate|amount|chance|probability|likelihood)s?\b")
-    goal = re.compile(
+    goal = Cued(       # (goal and more compiled only where they may match: their verbs cost ask's start-up)
         rf"\b(?:without (?P<gneg>(?:(?:so much as |even )?(?:any|a single|one single|a|one) )?{_DROPS}(?:of (?:it|them|the [a-z]+) )?"
         rf"|any (?:of (?:it|them|the [a-z]+) )?|a |making (?:a |any )?)?(?P<gwho>(?:it|them|the [a-z]+) )?(?:ever |even )?"
         rf"(?:getting |being )?"
@@ -142,12 +142,12 @@ def _patterns() -> tuple[re.Pattern, ...]:
         rf"|before (?P<gbef>(?:it|they|the [a-z]+|anything|any of it) )(?:ever |even )?(?:starts?|begins?) (?:to )?"
         rf"|so(?: that| as)?(?P<gsub>(?: (?!not\b)"
         rf"[a-z]+){{0,5}}?)(?P<gnot> not| never)? (?:(?:to|will|does|do|would|can|could|all|"
-        rf"any) )?)(?:{verbs})\b{end}")
+        rf"any) )?)(?:{verbs})\b{end}", None)
     # what is asked, or wanted, next to it: "will it spill or overflow?", "without spilling or
     # tipping the bowl over"
     # ("does it stay in there once it's poured or slosh back out": after the pour, when it is judged)
-    more = re.compile(rf"\boutcome{_ONCE} ?{_JOINED}? ?(?:(?:will|does|do|would|even|just|only|mostly|mainly|largely|partly|never|not) )?(?:it |the \w+ )?"
-                      rf"(?:{verbs})\b{end}")
+    more = Cued(rf"\boutcome{_ONCE} ?{_JOINED}? ?(?:(?:will|does|do|would|even|just|only|mostly|mainly|largely|partly|never|not) )?(?:it |the \w+ )?"
+                rf"(?:{verbs})\b{end}", ("outcome",))
     # an outcome said first, with no word that asks: "spills when poured from high?", "sloshing
     # over the rim if tilted steeply?", "pour high, spill or not", "spill or no?"
     bare = re.compile(rf"(?:^|(?<=[,:;.?!\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014]))(?:(?P<v0>{filled(OUTCOMES[0][0])})|(?P<v1>spill\w*|spilt|splash\w*|drip\w*"
@@ -353,7 +353,7 @@ def hear(text: str) -> Heard:
     text, rate, rate_notes = rates(text)     # "will it come out slower": no expectation's (flow_rates.py)
     text, without = without_asked(text)      # "will it go in without any spilling": both asked
     phrases.extend((*framed, *rate, *without))
-    text = _spaced(goal.sub(as_goal, text))
+    text = _spaced(goal.pattern.sub(as_goal, text) if re.search(r"\b(?:without|with|before|so)\b", text) else text)
     if goals:
         # "so it pours out but the bowl does not tip", "so nothing spills and the bowl stays
         # put", "so it stays in and doesn't slosh out": a clause of its own after "but" or "and"
@@ -361,7 +361,7 @@ def hear(text: str) -> Heard:
         for m in reversed(list(re.finditer(r"\boutcome (?:but (?:also )?|(?:, ?)?and (?:also )?(?=(?:"
                                            r"the|it|nothing|none|no|everything|all|does not|do not|will not|never)\b))", text))):
             trial = f"{text[:m.start()]}outcome so that {text[m.end():]}"
-            wanted_too = _spaced(goal.sub(as_goal, trial))
+            wanted_too = _spaced(goal.pattern.sub(as_goal, trial))
             text = wanted_too if wanted_too != trial else text
         text = _repeat(more, as_more, text)
         goals[:] = moving(text, goals)     # "move away without the bowl sliding": as it moves away
@@ -384,14 +384,15 @@ def hear(text: str) -> Heard:
                  "named" in bowl and "of a container" not in bowl, rate_notes)
 
 
-def _repeat(pattern: re.Pattern, replace, text: str) -> str:
+def _repeat(pattern: Cued, replace, text: str) -> str:
     """`text` with `pattern` replaced until it no longer matches (each
     replacement takes words away, so this ends)."""
-    while True:
-        new = _spaced(pattern.sub(replace, text, count=1))
+    while pattern.cued(text):
+        new = _spaced(pattern.pattern.sub(replace, text, count=1))
         if new == text:
             return new
         text = new
+    return _spaced(text)
 
 
 def _spaced(text: str) -> str:
