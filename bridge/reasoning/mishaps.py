@@ -57,6 +57,9 @@ _VALUE = re.compile(r"^(?:so )?(?:how (?:far|high|low|much|close|steep|steeply|f
 _IF_HELPS = re.compile(r"^(?:so )?(?:if|what if) (?P<scene>[^,?]+?),? (?:would|will|could|does|do|might) (?:that|this|it) "
                        r"(?:help|work|stop (?:it|that|this)|fix (?:it|that|this)|prevent (?:it|that|this)|solve (?:it|that|this)"
                        r"|be better)[?.! ]*$")
+#: A cause put as a yes or no of a scene: "is the bowl just too light?", "was it too high?".
+_TOO = re.compile(r"^(?:so )?(?:is|was) (?:it|that|the (?P<noun>[a-z]+)) (?:just |simply |maybe )?(?:too |because (?:it is|it was) (?:too )?)"
+                  r"(?P<value>light|heavy|slippery|bouncy|high|low|sticky|runny|full)(?: or (?:something|what))?[?.! ]*$")
 #: What splits the narrative's clauses, for the scene a cause is asked of.
 _CLAUSES = re.compile(r",? (?:and then|but then|and|but|then|so|until|because) |, | (?=(?:when|while|after|as soon as) )")
 #: A negation before an outcome told: it did not happen ("nothing came out").
@@ -142,6 +145,11 @@ def _read(told: str, asked: str) -> tuple[str, tuple[str, ...]] | None:
         if m is not None and re.fullmatch(r"(?: (?:it|that|this))?[?.! ]*", m.string[m.end():]):
             rest = f"{how} {m.group('scene')}, {question}?"
             return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did")
+    m = _TOO.match(asked)
+    if m is not None:
+        rest = f"if the {m.group('noun')} is {m.group('value')}, {question}?" if m.group("noun") else (
+            f"if i pour {m.group('value')}, {question}?")
+        return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did")
     if CAUSE.match(asked):
         # the clauses that tell nothing gone wrong: those with no outcome, and those saying when it went wrong
         # ("when i emptied the heavy saucepan into it")
