@@ -98,11 +98,6 @@ def _told(clause: str) -> list[tuple[tuple[str, ...], bool]]:
     return out
 
 
-def _failed(clause: str) -> list[tuple[str, ...]]:
-    """The expectations a clause tells failed, each group once (_told's)."""
-    return [group for group, failed in _told(clause) if failed]
-
-
 def _said(words: dict, group: tuple[str, ...]) -> str:
     """A group of expectations told failed, in `words` (_ASKED or _WANTED)."""
     return words.get(group) or " and ".join(words[n] for n in group)
@@ -126,7 +121,8 @@ def mishap(text: str) -> tuple[str, tuple[str, ...]]:
 def _read(told: str, asked: str) -> tuple[str, tuple[str, ...]] | None:
     """The question `asked` after the mishap `told`, read (mishap's), or None."""
     clauses = [c for c in _CLAUSES.split(re.sub(r"[.!?;]+ +", ", ", told)) if c]
-    failed = list(dict.fromkeys(g for c in clauses for g in _failed(c)))
+    tells = {c: _told(c) for c in clauses}          # each clause's outcomes, found once
+    failed = list(dict.fromkeys(g for c in clauses for g, bad in tells[c] if bad))
     if not failed:
         return None
     said = f"{told}: read as nothing: a pour told, with what went wrong; the answer is for the one asked"
@@ -153,8 +149,8 @@ def _read(told: str, asked: str) -> tuple[str, tuple[str, ...]] | None:
     if CAUSE.match(asked):
         # the clauses that tell nothing gone wrong: those with no outcome, and those saying when it went wrong
         # ("when i emptied the heavy saucepan into it")
-        scene = [re.sub(rf"^{WHEN},? ", "", c) for c in clauses if not _failed(c) and (
-            re.match(r"(?:when|while|as|after|once) ", c) or not _told(c))]
+        scene = [re.sub(rf"^{WHEN},? ", "", c) for c in clauses if not any(bad for _, bad in tells[c]) and (
+            re.match(r"(?:when|while|as|after|once) ", c) or not tells[c])]
         rest = f"{' and '.join(scene)}, {question}?" if scene else f"{question}?"
         return rest, (f"{told}: read as {rest.strip(' ?')}", f"{asked.strip(' ?.!')}: read as asked of the pour told")
     return None

@@ -170,7 +170,7 @@ def read_question(question: str) -> Reading:
     text, told = mishap(text)               # "it slid off the tray. how do i stop that?" (mishaps.py)
     respelt += chat + told
     refuse_choice(text)                     # "honey or water?": two questions (choices.py)
-    refuse_unsayable(text, lexicon().known, lexicon().placeable)  # "60 degrees vs 90 with 200 ml" (set_against.py)
+    refuse_unsayable(text, lex.known, lex.placeable)  # "60 degrees vs 90 with 200 ml" (set_against.py)
     try:
         return _read_text(question, text, respelt)
     except UserError:

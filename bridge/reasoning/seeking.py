@@ -92,6 +92,9 @@ _WANT = re.compile(r"(?:\b(?:i|we) |^|(?<=[.!?] ))(?:want|need|would like|wish)(
                    # (where it comes from said after it: "all of the juice from the carton to land in the bowl")
                    r"|the (?:[a-z]+ )?(?!source\b)[a-z]+)(?: from (?:the|my|a) [a-z]+)?(?= (?:not |never )?to\b)")
 
+#: Emptying the source, wanted: "I'd like to empty the whole mug".
+_EMPTYING_WANTED = (r"\b(?:i|we) (?:want|need|would like|wish|am trying|are trying) to (?:empty|drain) (?:out )?(?:the whole"
+                    r"|all of the|all the|the entire|the) ([a-z]+)")
 #: A goal of emptying the source: "goal: empty the bottle completely".
 _EMPTYING = (r"\b(?:goal|aim|objective|task|target)s?(?: is)?:? (?:to )?(?:empty|drain) (?:out )?(?:the whole|all of the"
              r"|all the|the entire|the) ([a-z]+)(?: (?:completely|fully|entirely|totally))?")
@@ -120,17 +123,15 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:i|we) (?:would )?(?:prefer|rather|hope)(?: that)? (it|them|the [a-z]+) (?:not|never|does not|do not|will not)"
      r" (?=[a-z]+)", r"so that \1 does not "),
     # "I want to empty the whole pot of soup into the bowl": so that it empties and it all goes in
-    (r"\b(?:i|we) (?:want|need|would like|wish|am trying|are trying) to (?:empty|drain) (?:out )?(?:the whole|all of the"
-     r"|all the|the entire|the) ([a-z]+)(?: of [a-z]+)?(?= into (?:the |a |my )?bowl\b)", r"so that the \1 empties and it all goes"),
+    (rf"{_EMPTYING_WANTED}(?: of [a-z]+)?(?= into (?:the |a |my )?bowl\b)", r"so that the \1 empties and it all goes"),
     # "need to empty a heavy jug of syrup": so that it empties
     (r"(?:^|\b(?:i|we) )(?:need|want|have) to (?:empty|drain) (?:out )?(?:a|the|my) ((?:[a-z]+ )?[a-z]+)(?= of\b|$|[ ,.;!?])",
      r"so that the \1 empties"),
     # "goal: empty the bottle completely": so that it empties ("... into the bowl": it goes in too)
     (rf"{_EMPTYING}(?= into (?:the |a )?bowl\b)", r"so that the \1 empties and it all goes"),
     (rf"{_EMPTYING}\b", r"so that the \1 empties"),
-    # "I'd like to empty the whole mug": so that it empties (into the bowl: and it all goes in)
-    (r"\b(?:i|we) (?:want|need|would like|wish|am trying|are trying) to (?:empty|drain) (?:out )?(?:the whole|all of the"
-     r"|all the|the entire|the) ([a-z]+)\b", r"so that the \1 empties"),
+    # "I'd like to empty the whole mug": so that it empties (into the bowl: and it all goes in, above)
+    (rf"{_EMPTYING_WANTED}\b", r"so that the \1 empties"),
     # a value there that reaches a goal: "is there any height where the water never splashes" (so that it does not)
     (rf"\b(is there (?:any|an?|some|one) {_VALUE}) (?:where|at which|for which|with which|in which)"
      r" (?=(?:it|they|the [a-z]+|nothing|none|no [a-z]+) )", r"\1 so that "),

@@ -99,7 +99,8 @@ _CHAT = {"u": "you", "ur": "your", "wat": "what", "wut": "what", "wot": "what", 
          "teh": "the", "hte": "the", "th": "the", "wil": "will", "wll": "will", "wen": "when", "whn": "when",
          "wht": "what", "waht": "what", "adn": "and", "nad": "and", "taht": "that", "thta": "that",
          "becuase": "because", "becasue": "because", "shoudl": "should", "shoud": "should", "woudl": "would",
-         "dosnt": "doesn't", "doesent": "doesn't", "dosent": "doesn't", "owt": "out", "sirup": "syrup", "honney": "honey", "upon": "on", "bc": "because", "b/c": "because", "ovr": "over", "wld": "would", "cld": "could", "shd": "should"}
+         "dosnt": "doesn't", "doesent": "doesn't", "dosent": "doesn't", "owt": "out", "sirup": "syrup", "honney": "honey",
+         "upon": "on", "bc": "because", "b/c": "because", "ovr": "over", "wld": "would", "cld": "could", "shd": "should"}
 _CHATTED = (rf"\b(?:{'|'.join(_CHAT)})\b|\by(?= (?:does|do|did|is|are|was|would|will|can|not)\b| *\?* *$)"
             r"|\bits(?= (?:too|to|so|very(?! (?:edge|rim|lip|brim|border|middle|centre|center|top|side)\b)|really|right|just|not|over|at|in|on|upside|nearly|almost|only"
             r"|going|held|[a-z]+ed)\b)"
@@ -127,7 +128,7 @@ _HAD = {**{w: w[:-2] for w in ("helped", "worked", "stayed", "spilled", "splashe
         **{w: w[:-1] for w in ("moved", "caused")},
         "kept": "keep", "fixed": "fix", "stopped": "stop", "spilt": "spill", "tipped": "tip", "slid": "slide",
         "gone": "go", "come": "come", "hit": "hit", "fallen": "fall", "made": "make", "dripped": "drip",
-        "emptied": "empty", "left": "leave", "slipped": "slip", "flipped": "flip", "tipped over": "tip over"}
+        "emptied": "empty", "left": "leave", "slipped": "slip", "flipped": "flip"}
 
 
 def normalising(text: str) -> tuple[str, tuple[str, ...]]:
