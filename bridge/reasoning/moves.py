@@ -19,14 +19,16 @@ _MANNER = ("from|with|over|into|onto|low|high|very|steeply|slightly|halfway|tilt
 _GLIDE = (r"(?:swing(?:s|ing)?|swung|swoop\w*|glid(?:e|es|ed|ing)|sweep(?:s|ing)?|swept"
           r"|eas(?:e|es|ed|ing)|carr(?:y|ies|ied|ying))")
 
-#: Someone pouring, done or finished with it: "when I'm done pouring", "once she has finished pouring".
-_DONE = r"(?: (?!(?:and|then|but|or|pour\w*)\b)\w+){0,2} (?:done|finished|through)(?: with(?: the)?)? pour(?:s|ed|ing)?\b"
+#: Someone pouring, done or finished with it: "when I'm done pouring", "once she has finished pouring",
+#: "after the jar stops pouring".
+_DONE = (r"(?: (?!(?:and|then|but|or|pour\w*)\b)\w+){0,2} (?:(?:done|finished|through)(?: with(?: the)?)?"
+         r"|(?:finish|finishes|stop|stops|stopped)(?: to)?) pour(?:s|ed|ing)?\b")
 
 MOVES: tuple[tuple, ...] = (
     # done pouring: after the pour ("when I'm done pouring, pull it away fast"); a move away said
     # before it is done is the move away, as the vocabulary's pour ends when the source moves away
-    ("after pour", (rf"re(done|finish|through):\b(?:when|once|after|as soon as){_DONE}",)),
-    ("hedge", (rf"re(done|finish|through):\b(?:before|until){_DONE}",),
+    ("after pour", (rf"re(done|finish|through|stop):\b(?:when|once|after|as soon as){_DONE}",)),
+    ("hedge", (rf"re(done|finish|through|stop):\b(?:before|until){_DONE}",),
      "read as nothing: the vocabulary's pour ends when the source moves away; how much is poured by then is not said"),
     # where the pour itself starts is where it pours, not the start pose before the move in
     ("pour", (r"re(starts|begins|happens|takes place):\bthe pour(?:ing)? (?:starts|begins|happens|takes place)(?= (?:at|from)\b)",)),
@@ -105,7 +107,7 @@ MOVES: tuple[tuple, ...] = (
                  r"re:\bmov(?:e|es|ed|ing) (?:it|the \w+|them) (?:away|back|out)\b(?! from)",
                  rf"re:\b{_GLIDE}(?: it| the \w+)? (?:away|back|out)\b(?! from| of)",
                  "after pour", "after the pour", "afterwards", "move away", "pull away", "pull back",
-                 "back off", "back away", "withdraw", "retract")),
+                 "back off", "back away", "withdraw", "withdrawn", "withdrew", "retract")),
     ("start", ("begin", "at first", "at the start", "initially")),
     # a pose named by its stage, as a lab note lists them: "initial pose: 20 cm to the side"
     ("start", (r"re:\b(?:initial|starting|start) (?:pose|position|configuration|state)\b",

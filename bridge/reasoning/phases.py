@@ -53,7 +53,10 @@ _PHASES = (
      rf"{_WHEN} (?:everything|it all|things|it|the (?:liquid|water|bowl|[a-z]+)) (?:settles|settle|is settling"
      r"|settling|comes to rest|is coming to rest)\b|(?:during|in) the settl(?:e|ing)(?: phase| stage)?\b"),
     (("destination_still_retreat", "destination_still_settle"),      # after the pour: the move away and after
-     r"afterwards?\b|after (?:the )?pour(?:ing)?\b(?! (?:ends|is over|is done|has ended|finishes)\b)"),
+     r"afterwards?\b|after (?:the )?pour(?:ing)?\b(?! (?:ends|is over|is done|has ended|finishes)\b)"
+     # done pouring: "after I'm done pouring", "once the jar stops pouring"
+     r"|(?:after|once) (?:\w+ ){0,2}(?:(?:done|finished|through)(?: with(?: the)?)?"
+     r"|finish|finishes|stop|stops|stopped)(?: to)? pour(?:s|ed|ing)?\b"),
     (None,      # after the move away: by then, every phase is past
      rf"(?:after|once) {_WHO} (?:is|gets?|has been) (?:taken|moved|pulled|drawn) away\b"
      rf"|(?:after|once) {_WHO} (?:goes|moves|has gone|has moved|pulls) away\b|after the retreat\b"
