@@ -68,12 +68,15 @@ SPEEDS: tuple[tuple, ...] = (
         r"|before|after|then)\b)")),
     # brought in, or gone away, fast or slowly: the move in, the move away
     ("approach fast", (r"re(bring|brought|swing|swung):\b(?:bring|brings|brought|bringing|swing|swings|swung|swinging)(?: it| the \w+)? in"
-                       r" (?:very |really |too |quite )?(?:fast|quickly|quick)\b",)),
-    ("approach slowly", (r"re(bring|brought):\b(?:bring|brings|brought|bringing)(?: it| the \w+)? in (?:very |really |too |quite )?"
-                         r"(?:slowly|slow)\b",)),
+                       r" (?:very |really |too |quite |rather )?(?:fast|quickly|quick|rapidly|swiftly|briskly|hastily)\b",)),
+    ("approach slowly", (r"re(bring|brought):\b(?:bring|brings|brought|bringing)(?: it| the \w+)? in (?:very |really |too |quite |rather )?"
+                         r"(?:slowly|slow|gently|gradually|steadily)\b",)),
     ("retreat fast", (r"re( away):\b(?:go|goes|going|went|gone) away (?:very |really |too |quite )?(?:fast|quickly|quick)\b",
                       r"re(yank|jerk|snatch|whip):\b(?:yank|yanks|yanked|yanking|jerk|jerks|jerked|snatch|snatches|snatched|whip|whips|whipped)"
                       r"(?: it| the \w+)? (?:away|back|out)\b")),
+    # flicked upright: righted, fast, as the source moves away ("flick the shaker upright after the pour")
+    ("end upright ; retreat fast", (r"re(flick):\bflick(?:s|ed|ing)?(?: it| the \w+| them)? (?:back )?(?:up(?:right)?|straight)\b"
+                                    r"(?: (?:really |very )?(?:fast|quickly|quick))?",)),
     ("retreat slowly", (r"re( away):\b(?:go|goes|going|went|gone) away (?:very |really |too |quite )?(?:slowly|slow)\b",)),
     # "fastly", as learners of English say it; "the robot come fastly": it comes in
     ("approach fast", (r"re(com|came):\b(?:come|comes|coming|came) (?:very |really |too )?(?:fastly|fast|quickly)\b",)),
