@@ -20,7 +20,7 @@ NEARNESS: tuple[tuple, ...] = (
     (UNCLEAR, (r"re:\b(?:right )?(?:next to|beside|alongside) (?:the )?(?:destination|bowl)\b(?! rim)",)),
     # held close to the bowl: just above it (its edge is "near the rim")
     ("low", (r"re(close to|near the bowl|near bowl):\b(?:very |right )?(?:close to (?:the )?(?:destination|bowl)"
-             r"|near (?:the )?bowl)\b(?! rim)",),
+             r"|near (?:the )?bowl)\b(?! (?:rim|edge|lip|brim))",),
      "read as low: just above the bowl's rim (\"near the rim\" would say over its edge)"),
     # the near side of the bowl: the rim on the side the source comes from; the far side lies
     # where the vocabulary's places do not reach
