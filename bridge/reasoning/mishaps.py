@@ -62,6 +62,13 @@ _TOO = re.compile(r"^(?:so )?(?:is|was) (?:it|that|the (?P<noun>[a-z]+)) (?:just
                   r"(?P<value>light|heavy|slippery|bouncy|high|low|sticky|runny|full)(?: or (?:something|what))?[?.! ]*$")
 #: What splits the narrative's clauses, for the scene a cause is asked of.
 _CLAUSES = re.compile(r",? (?:and then|but then|and|but|then|so|until|because) |, | (?=(?:when|while|after|as soon as) )")
+#: The source's moves told: (the phase they are said as, the words).
+_WHO_MOVED = r"\b(?:when|as|while|once) (?:i|we|you|he|she|they|it|the \w+) (?:was |were )?"
+_MOVES_TOLD = (
+    (" as the jug moves away", re.compile(rf"{_WHO_MOVED}(?:pull|mov|tak|took|drew|draw|lift|yank)\w*(?: it| (?:the|my|a) \w+)? (?:away|back|out|off)\b")),
+    (" as the jug comes in", re.compile(rf"{_WHO_MOVED}(?:(?:brought|bringing|lowered|lowering)\b|(?:mov|cam|com|swung|swing|carri)\w*"
+                                         r"(?: it| (?:the|my|a) \w+)? (?:in|over|closer|down|toward|towards)\b)")),
+)
 #: A negation before an outcome told: it did not happen ("nothing came out").
 _NOT = re.compile(r"\b(?:nothing|none|not|never|no|zero)\b")
 
@@ -98,9 +105,25 @@ def _told(clause: str) -> list[tuple[tuple[str, ...], bool]]:
     return out
 
 
-def _said(words: dict, group: tuple[str, ...]) -> str:
-    """A group of expectations told failed, in `words` (_ASKED or _WANTED)."""
-    return words.get(group) or " and ".join(words[n] for n in group)
+def _said(words: dict, groups: list[tuple[str, ...]], when: str = "") -> str:
+    """The groups of expectations told failed, in `words` (_ASKED or _WANTED), each said once;
+    the bowl's moving in the phase told (`when`: " as the jug comes in")."""
+    words = {**words, STILL: words[STILL] + when}
+    said = []
+    for group in groups:
+        still = group not in words and set(STILL) <= set(group)       # "knocked it sideways": hit, and moved
+        said += [words[group]] if group in words else \
+            [words[n] for n in group if not (still and n in STILL)] + ([words[STILL]] if still else [])
+    return " and ".join(dict.fromkeys(said))
+
+
+def _phase_told(told: str) -> str:
+    """The move a mishap is told in, said as a phase: "as I brought it in" (the move in),
+    "when I pulled the jug away" (the move away); "" for none."""
+    for when, move in _MOVES_TOLD:
+        if move.search(told):
+            return when
+    return ""
 
 
 def mishap(text: str) -> tuple[str, tuple[str, ...]]:
@@ -126,8 +149,8 @@ def _read(told: str, asked: str) -> tuple[str, tuple[str, ...]] | None:
     if not failed:
         return None
     said = f"{told}: read as nothing: a pour told, with what went wrong; the answer is for the one asked"
-    wanted = " and ".join(_said(_WANTED, g) for g in failed)
-    question = " and ".join(_said(_ASKED, g) for g in failed)
+    when = _phase_told(told)
+    wanted, question = _said(_WANTED, failed, when), _said(_ASKED, failed, when)
     poured = re.search(rf"\b(?:{alternation(names('liquid'))})\b", told)    # the liquid told stays
     poured = f" {poured.group(0)}" if poured else ""
     if REMEDY.match(asked):

@@ -76,6 +76,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|mov(?:e|es|ed|ing)\b(?! (?:(?:it|them|the \w+) )?(?:in|away|closer|nearer|further|farther|to|out|back|up"
      r"|down|over|into|off|towards?)\b)|bounc\w* (?:around|about))(?: sideways| (?:off |over )?to (?:the|one) side| back and forth| to and fro)?\b",
      STILL, True),       # "move the cup closer": the source's move
+    # struck and moved: "the bowl gets knocked sideways", "it banged into the bowl and knocked it aside"
+    (r"(?:knock|bump|nudg|bash|bang)\w*(?: it| them| the \w+)? (?:sideways|aside|across|along|out of place)\b", ("source_clear", *STILL), True),
     (r"(?:giv(?:e|es|ing)|gave) (?:a |any |some )?(?:hit|knock|bump|bang|touch)s?(?: to)?(?= (?:the|a|an|my|its|it)\b)"   # "giving a hit to the bowl"
      r"|bump\w*|hit(?:s|ting)?|touch\w*|collid\w*|crash\w*|knock\w*|clip(?:s|ped)?|strike\w*"
      r"|bonk\w*|bang\w*|intersect\w*|clash\w*|graz(?:e|es|ed|ing)|scrap(?:e|es|ed|ing)|nudg\w*|clink\w*|slam\w*"
@@ -120,7 +122,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:end|ends|ended|ending) up in(?:side)?", (*ALL_IN, "liquid_remains_in_destination"), False),
     # what stays in the bowl entered it: "remains" alone holds also when none enters
     (r"(?:stay|stays|remain|remains) (?:in )?there\b"
-     r"|(?:stay|stays|remain|remains|stop|stops|stick|sticks|stuck|cling|clings|clung|sit|sits) in(?:side)?(?: the \w+)?",
+     r"|(?:stay|stays|staying|remain|remains|remaining|stop|stops|stick|sticks|stuck|cling|clings|clung|sit|sits) in(?:side)?(?: the \w+)?",
      (*ALL_IN, "liquid_remains_in_destination"), False),
     (r"(?:go|goes|going|went|get|gets|land|lands|plop|plops|plopped|make it|makes it|fall|falls|transfer\w*|arrive\w*|finds? (?:its|their) way) (?:more |mostly )?(?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*|get (?:the |all (?:the )?)?(?:water|liquid|milk|it|everything) (?:in|into)\b",
      ALL_IN, False),

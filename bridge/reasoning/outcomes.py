@@ -173,13 +173,13 @@ def _which(m: re.Match) -> tuple[tuple[str, ...], bool]:
 
 
 def _sits(m: re.Match, k: int) -> bool:
-    """Whether liquid said to stay in a container not the bowl stays where it was: "just"
-    sitting there ("does the stuff just stay in the cup"), never coming out ("sits in the
-    mug and never comes out"), or in the one said tilted ("if it's tilted a little, does
-    anything stay in the cup"), of a container not poured into nor from."""
-    said = re.match(r"\w+ in(?:side)?(?: (?:the |a |an |my |your |this |that )?(?:[a-z]+ )?([a-z]+))?",
-                    m.string[m.start(f"v{k}"):])
-    bowl = said.group(1) if said else None
+    """Whether liquid said to stay in a container not the bowl stays where it was: "just" sitting
+    there ("does the stuff just stay in the cup"), never coming out ("sits in the mug and never
+    comes out"), in the one said tilted ("if it's tilted a little, does anything stay in the cup"),
+    or the amount kept ("how much stays in the pot"), of a container not poured into nor from."""
+    said = re.match(r"\w+ in(?:side)?(?: (?:the |a |an |my |your |this |that )?([a-z]+)(?: (?!(?:if|when|while|and|or|but|after"
+                    r"|before|as|once|so|because|then|until|for)\b)([a-z]+))?)?", m.string[m.start(f"v{k}"):])
+    bowl = (said.group(2) if said.group(1) not in ("bowl", "bowls") else None) or said.group(1) if said else None
     if bowl in ("bowl", "bowls", "destination", "target") or (bowl and re.search(
             rf"\b(?:into|to) (?:the |a |an |my )?(?:\w+ )?{bowl}\b", m.string)):
         return False
@@ -189,7 +189,8 @@ def _sits(m: re.Match, k: int) -> bool:
         return True       # (not "go in and stay in the cup": the bowl's)
     return (before.endswith("just ") and not re.search(r"\b(?:and|then|but|or) just $", before)) or re.match(
         r"(?: \w+){0,4}? and (?:never|not|does not|do not|will not|would not) (?:come|comes|pour|pours|get|gets|flow|flows) out\b",
-        m.string[m.end(f"v{k}"):]) is not None
+        m.string[m.end(f"v{k}"):]) is not None or bool(bowl and re.search(   # "how much soup is staying in the pot"
+            r"\bhow much (?:of (?:the |it )?)?(?:[a-z]+ )?(?:is |will |would |does |do |did )?$", before))
 
 
 def _staying(names: tuple[str, ...], said: str, subject: list[str], left: bool = False) -> tuple[str, ...]:
