@@ -37,7 +37,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:(?:come|comes|came|coming) )?(?:bounc|jump|leap|hop|fly|flies|flew|flying)\w* (?:right |straight )?(?:back )?(?:up )?(?:over|out(?: of)?)|flood\w*"
      r"|(?:go|goes|going|went|get|gets|come|comes|came) over(?= the (?:far |near |other |opposite |back |front )?(?:rim|edge|top|side|brim|lip)s?\b)", ("liquid_remains_in_destination", "no_spill"), True),
     # (sloshing around in the bowl is no spill: everyday.txt says it back)
-    (r"spill\w*|spilt|splash\w*|splatter\w*|slosh\w*(?! (?:around|about)\b)|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
+    (r"spill\w*|spilt|splash\w*|splatter\w*|spray(?:s|ed|ing)?|spurt\w*|slosh\w*(?! (?:around|about)\b)|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
      r"|makes? (?:(?:a|any) )?(?:big |huge |bit of a |real |total )?mess|(?:go|goes|going|went|get|gets) everywhere"
      r"|(?:get|gets|getting|got) (?:it|them|liquid|(?:the )?[a-z]+) (?:everywhere|all over(?: the place)?)\b"
      r"|slop\w*|splat\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)|(?:get|gets|got|getting) (?:any|some|much|a drop)(?: of it)?(?= on\b| onto\b)"
@@ -109,6 +109,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:left|stay(?:s|ed|ing)?|remain(?:s|ed|ing)?) behind\b"
      # what is left in it, said of the pour: "which one leaves more behind in the cup"
      r"|leav(?:e|es|ing) (?:more |less |much |some |any |anything |something |a lot |a bit |nothing )?behind\b"
+     # what is left in it, said of the pour, in the bowl poured from: "a pour that doesn't leave anything in the bottle"
+     r"|leav(?:e|es|ing) (?:more|less|much|some|any|anything|something|a lot|a bit|a drop|nothing)(?: of it)? in"
+     r"(?= (?:the |a |an |my |your )(?:[a-z]+ )?(?!(?:bowl|destination)s?\b)[a-z]+\b)(?! (?:the |a |an |my |your )(?:[a-z]+ )?(?:bowl|destination)s?\b)"
      # some of it remaining, said after it left: "shall all of it leave it, or will some remain?"
      r"|(?:(?<=some )|(?<=any )|(?<=bit )|(?<=little ))remain(?:s)?\b(?! in (?:the )?(?:bowl|destination)\b)",
      ("liquid_leaves_source",), True),

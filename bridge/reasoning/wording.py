@@ -106,6 +106,8 @@ _CHATTED = (rf"\b(?:{'|'.join(_CHAT)})\b|\by(?= (?:does|do|did|is|are|was|would|
             r"|going|held|[a-z]+ed)\b)"
             # "from mug 2 bowl" (to), "best tilt 4 pouring soup" (for): a digit standing for a word,
             # between words and before what it would govern, never a number of a unit ("tilt 4 degrees")
+            # "tilt it all the way n yank it away": and, between two words
+            r"|(?<=[a-z] )n(?= [a-z])"
             r"|(?<=[a-z] )(?<!\ba )(?<!\ban )(?<!\bthe )(?:2(?= (?:the|a|an|my|your|bowl|cup|mug|glass|dish|pot|jug|jar)\b)"
             r"|4(?= (?:[a-z]+ing|the|a|an|my|your|it|me|not|no)\b))")
 
@@ -138,7 +140,7 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     said: dict[str, None] = {}
 
     def respelt(written: str) -> str:
-        meant = _BARE.get(written) or {**_CHAT, "y": "why", "its": "it's", "2": "to", "4": "for"}.get(written, "can't")
+        meant = _BARE.get(written) or {**_CHAT, "y": "why", "its": "it's", "2": "to", "4": "for", "n": "and"}.get(written, "can't")
         shown = "I" + meant[1:] if meant.startswith("i'") else meant
         said.setdefault(f"{written}: read as {shown}")
         return meant
@@ -146,6 +148,9 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text = re.sub(rf"\b(?:{'|'.join(_BARE)})\b|{_CHATTED}", lambda m: respelt(m.group(0)), text)
     text = re.sub(rf"\bcant\b(?= (?:{_PRONOUNS})\b)", lambda m: respelt(m.group(0)), text)
     text = re.sub(rf"\b((?:{_PRONOUNS}) )cant\b", lambda m: m.group(1) + respelt("cant"), text)
+    # "pour high and not get any splashing": wanted as "without getting any"
+    text = re.sub(r"\band (?:not|never) (?:get|have|cause|make)(?= (?:any|a)\b)",
+                  lambda m: said.setdefault(f"{m.group(0)}: read as without getting") or "without getting", text)
     # "w/o" and "w/" as notes write them: without, with
     text = re.sub(r"\bw/o\b|\bw/(?= ?[a-z])", lambda m: said.setdefault(f"{m.group(0)}: read as with{'out' * (m.group(0) == 'w/o')}")
                   or f"with{'out' * (m.group(0) == 'w/o')} ", text).replace("  ", " ")
