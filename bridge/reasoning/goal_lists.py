@@ -1,7 +1,8 @@
 """Goals listed as a note ("goal: transfer all the water, nothing on the
 bench, bowl stays put", "need: zero spill, full transfer"): each item said
 as the outcome it wants, the list as "so that ... and so that ...", as
-outcomes.hear reads goals. A list with an item that says no outcome is
+outcomes.hear reads goals; an item that names what is poured into the bowl
+("get the full cup of broth into the bowl") is that pour, wanting it all in. A list with an item that says no outcome is
 left as written, for the reader to read or refuse."""
 from __future__ import annotations
 
@@ -15,13 +16,16 @@ _ITEMS = tuple((re.compile(p), r) for p, r in (
      "it all goes in"),
     (r"^(?:full|complete|total) transfer$", "it all goes in"),
     (r"^(?:nothing|none|no liquid|no water|not a drop) (?:on|onto) (?:the |my )?[a-z]+$", "nothing spills"),
-    (r"^(?:zero|no) (?:spill|spills|spillage|spilling|mess|splash|splashes|splashing|drips|dripping)$", "nothing spills"),
+    (r"^(?:zero|no) (?:spill|spills|spillage|spilling|mess|splash|splashes|splashing|drips|dripping)"
+     r"(?: (?:on|onto) (?:the |my )?[a-z]+)?$", "nothing spills"),
     (r"^(?:a )?(?:clean|neat|tidy) pour$", "nothing spills"),
     (r"^(?:the )?(?:bowl|destination) (?:stays|remains|staying|is) (?:put|still|in place|where it is)$", "the bowl stays put"),
     (r"^(?:the )?(?:bowl|destination) (?:stays|remains|staying|is) upright$", "the bowl stays upright"),
     (r"^(?:no|zero) (?:contact|bumps?|knocks?|collisions?)$", "the cup does not hit the bowl"),
     (r"^(?:the )?(?:source|cup|jug|bottle) (?:emptied|empty)$", "it all comes out"),
 ))
+#: An item that names what is poured: "get the full cup of broth into the bowl" (poured so that it all goes in).
+_POURED = re.compile(r"^(?:transfer|move|get|pour|empty) (?P<what>(?!all\b|everything\b|every\b)[a-z ]+?) (?:in|into) (?:the |my |a )?[a-z]+$")
 
 
 def goal_list(text: str) -> tuple[str, tuple[str, ...]]:
@@ -31,12 +35,14 @@ def goal_list(text: str) -> tuple[str, tuple[str, ...]]:
     if m is None:
         return text, ()
     items = [i.strip() for i in re.split(r",|\band\b", m.group("items")) if i.strip()]
-    said = []
+    said, poured = [], ""
     for item in items:
         clause = next((r for p, r in _ITEMS if p.match(item)), None)
+        if clause is None and not poured and (what := _POURED.match(item)):
+            clause, poured = "it all goes in", f"pour {what.group('what')} "
         if clause is None:
             return text, ()
         said.append(clause)
     wanted = " and ".join(f"so that {c}" for c in dict.fromkeys(said))
-    return (f"{text[:m.start()]}{wanted}{text[m.end():]}",
+    return (f"{text[:m.start()]}{poured}{wanted}{text[m.end():]}",
             (f"{m.group(0).strip()}: read as {wanted}",))

@@ -43,7 +43,11 @@ _WANTED = {("liquid_remains_in_destination", "no_spill"): "nothing splashes out"
 #: The question after the mishap starts at a sentence's end, or at a comma before a word that asks.
 _ASKS = (r"why|how|what|which|would|will|could|should|can|is|does|do|did|was|were|any|so|but why|and how|where"
          r"|if|should|shall|tips|advice|help")
-_BREAK = re.compile(rf"(?:[.!?;]+|,|\.\.\.|\s-)\s+(?=(?:{_ASKS})\b)|\s(?=why *[?.!]* *$)")    # "... poured fast why"
+_BREAK = re.compile(rf"(?:[.!?;]+|,|\.\.\.|\s-)\s+(?=(?:{_ASKS})\b)|\s(?=why *[?.!]* *$)"    # "... poured fast why"
+                    r"|\s(?=(?:is|will|would|does) (?:that|this) (?:gonna |going to )?happen\b)")   # "... when i poured is that gonna happen"
+#: Whether what was told happens again: asked as a cause is, of the pour told ("is that gonna happen every time?").
+_AGAIN = re.compile(r"^(?:so )?(?:is|will|would|does|do) (?:that|this|it) (?:gonna |going to |always |usually )?(?:happen|keep happening)"
+                    r"(?: (?:again|every time|each time|always|all the time|often|a lot))?[?.! ]*$")
 #: An outcome told as it happened, or as what keeps happening: its verb in the past ("slid",
 #: "went over"), or after "keeps", "always", "is" ("the bowl is jumping").
 _TOLD_TENSE = re.compile(r"^(?:[a-z]{2,}[^e]ed|[a-z]+ied|went|ran|fell|slid|came|got|kept|spilt|stuck|flew|threw|shook|sprang"
@@ -78,6 +82,12 @@ def _outcomes() -> tuple[tuple[re.Pattern, tuple[str, ...], bool], ...]:
     return tuple((re.compile(rf"\b(?:{filled(v)})\b"), names, bad) for v, names, bad in OUTCOMES)
 
 
+@lru_cache(maxsize=None)
+def _liquid_before() -> re.Pattern:
+    """The liquid, or its stream, said last before a verb: "the stream hit the rim"."""
+    return re.compile(rf"\b(?:stream|jet|flow|pour|liquid|drops?|{alternation(names('liquid'))})(?: just| then)? $")
+
+
 def _told(clause: str) -> list[tuple[tuple[str, ...], bool]]:
     """The outcomes a clause tells as having happened, each group with
     whether it failed ("it slid": the bowl moved; "nothing came out": it did
@@ -90,6 +100,8 @@ def _told(clause: str) -> list[tuple[tuple[str, ...], bool]]:
         before = clause[:m.start()]
         if re.search(r"\b(?:i|we|you|he|she|they)(?: just)? $", before) and "source_clear" not in names:
             continue        # what the one pouring did ("i tipped the jug"), not an outcome
+        if names == ("source_clear",) and _liquid_before().search(before):
+            continue        # the liquid striking the bowl ("the stream hit the rim and sprayed"): no contact of the source
         if names == ("destination_upright",) and (re.match(r" (?:the|a|an|my|his|her|their|it)\b", clause[m.end():]) or re.search(
                 r"\b(?:already )$|\b(?:the|my|a) (?!bowl\b|dish\b|destination\b)[a-z]+ (?:already |was |is |got )*$", before)):
             continue        # tipping something, or something held tipped: the source ("she keeps tipping the jug",
@@ -169,7 +181,7 @@ def _read(told: str, asked: str) -> tuple[str, tuple[str, ...]] | None:
         rest = f"if the {m.group('noun')} is {m.group('value')}, {question}?" if m.group("noun") else (
             f"if i pour {m.group('value')}, {question}?")
         return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did")
-    if CAUSE.match(asked):
+    if CAUSE.match(asked) or _AGAIN.match(asked):
         # the clauses that tell nothing gone wrong: those with no outcome, and those saying when it went wrong
         # ("when i emptied the heavy saucepan into it")
         scene = [re.sub(rf"^{WHEN},? ", "", c) for c in clauses if not any(bad for _, bad in tells[c]) and (

@@ -20,9 +20,9 @@ _GLIDE = (r"(?:swing(?:s|ing)?|swung|swoop\w*|glid(?:e|es|ed|ing)|sweep(?:s|ing)
           r"|eas(?:e|es|ed|ing)|carr(?:y|ies|ied|ying))")
 
 #: Someone pouring, done or finished with it: "when I'm done pouring", "once she has finished pouring",
-#: "after the jar stops pouring".
+#: "after the jar stops pouring", "after I'm done tipping".
 _DONE = (r"(?: (?!(?:and|then|but|or|pour\w*)\b)\w+){0,2} (?:(?:done|finished|through)(?: with(?: the)?)?"
-         r"|(?:finish|finishes|stop|stops|stopped)(?: to)?) pour(?:s|ed|ing)?\b")
+         r"|(?:finish|finishes|stop|stops|stopped)(?: to)?) (?:pour(?:s|ed|ing)?|tipping|tilting)\b")
 
 MOVES: tuple[tuple, ...] = (
     # done pouring: after the pour ("when I'm done pouring, pull it away fast"); a move away said

@@ -28,6 +28,9 @@ NEARNESS: tuple[tuple, ...] = (
                       r"(?:destination|bowl))?\b",)),
     (UNCLEAR, (r"re(far side|far edge|far rim|far lip|opposite):\b(?:the |its )?(?:far|opposite) (?:side|edge|rim|lip)"
                r"(?: of (?:the |its )?(?:destination|bowl))?\b",)),
+    # poured from close, with no bowl said: just above it ("pour from close up")
+    ("low", (r"re(close):\bfrom (?:really |very |quite )?(?:close(?: up| by)?|up close)\b(?! (?:to|by|from)\b)",),
+     "read as low: close to the bowl, just above its rim"),
     # too close, with no bowl said: to the bowl, just above it
     ("low", (r"re(too close|too near|so close|so near):\b(?:too|so) (?:close|near)\b(?! (?:to|by|from|the|its|a|together)\b)",),
      "read as low: close to the bowl, just above its rim"),

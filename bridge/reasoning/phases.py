@@ -56,7 +56,7 @@ _PHASES = (
      r"afterwards?\b|after (?:the )?pour(?:ing)?\b(?! (?:ends|is over|is done|has ended|finishes)\b)"
      # done pouring: "after I'm done pouring", "once the jar stops pouring"
      r"|(?:after|once) (?:\w+ ){0,2}(?:(?:done|finished|through)(?: with(?: the)?)?"
-     r"|finish|finishes|stop|stops|stopped)(?: to)? pour(?:s|ed|ing)?\b"),
+     r"|finish|finishes|stop|stops|stopped)(?: to)? (?:pour(?:s|ed|ing)?|tipping|tilting)\b"),
     (None,      # after the move away: by then, every phase is past
      rf"(?:after|once) {_WHO} (?:is|gets?|has been) (?:taken|moved|pulled|drawn) away\b"
      rf"|(?:after|once) {_WHO} (?:goes|moves|has gone|has moved|pulls) away\b|after the retreat\b"

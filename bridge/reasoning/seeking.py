@@ -168,6 +168,15 @@ _WANTING = tuple((re.compile(p), r) for p, r in (
     # what it is for, as learners of English say it: "incline the jar for the water to go out from it"
     (r"\bfor (it|them|the [a-z]+|all of it|everything|it all) to (?=(?:go|come|get|flow|run|drain|land|stay|end up)\b)",
      r"so that \1 "),
+    # a bound asked: "what tilt should I never go past": the value asked
+    (r"\b((?:what|which) (?:tilt|angle|height|speed)) (?:should|must|can|could) (i|we|you) (?:never|not) (?:go|get|tilt|pour|lift)"
+     r"(?: it)? (?:past|beyond|over|above)\b", r"\1 should \2 use"),
+    # "with the bowl staying exactly where it is", "with none spilling and the bowl staying put": so that it stays there
+    (r"\b(?:with|(?<=ing )and) (it|them|the [a-z]+) (?:staying|remaining) (?=(?:exactly |right )?(?:where|put|still|in place|upright|steady)\b)",
+     r"so that \1 stays "),
+    # "is there a way to pour that doesn't spill": a pour, so that it does not
+    (r"\b(a (?:way|method|technique|manner) (?:to pour|of pouring)|a pour) that (?=(?:does not|will not|would not|never)\b)",
+     r"\1 so that it "),
     # "I need a pour that empties the cup completely into the bowl": so that it empties and it all goes in
     (r"\b(?:i|we) (?:need|want|would like) a pour that (?:empties|drains) (the [a-z]+)(?: completely| fully| entirely)?(?= into\b)",
      r"so that \1 empties and it all goes"),

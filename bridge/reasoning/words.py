@@ -304,8 +304,8 @@ PHRASES: tuple[tuple, ...] = (
     *TILT_AMOUNTS,            # "with much angle", "a strong tilt" (tilt_amounts.py)
     # leaning, angling, inclining the source: tilting it
     ("tilt", (r"re:\b(?:lean|angle|incline)(?:s|d|ed|ing|t)?\b(?= (?:it|them|the \w+)\b)",)),
-    ("slightly tilted", (r"re:\btilt(?:s|ed|ing)?(?: (?:it|the \w+))?(?: only| just)? "
-                         r"(?:a (?:little )?bit|a little)\b",)),
+    ("slightly tilted", (r"re:\b(?:tilt|tip)(?:s|ed|ing|ped|ping)?(?: (?:it|the \w+))?(?: only| just)?(?: very)? "
+                         r"(?:a (?:little )?bit|a little|little)\b(?! (?:liquid|water|of)\b)",)),
     ("slightly", (r"re:\b(?:a (?:little )?bit|a little)(?= (?:tilt|angled|inclined))",)),
     # lifted straight up: raised, not righted
     ("raise", (r"re:\b(?:lift|lifts|lifted|lifting|rais(?:e|es|ed|ing)|mov(?:e|es|ed|ing)|bring|brings"
