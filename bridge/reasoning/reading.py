@@ -45,6 +45,7 @@ from functools import lru_cache
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.chatter import chatter
 from pantarhei.bridge.reasoning.choices import refuse_choice
+from pantarhei.bridge.reasoning.drips_after import refuse_drips_after
 from pantarhei.bridge.reasoning.mishaps import mishap
 from pantarhei.bridge.reasoning.set_against import refuse_unsayable
 from pantarhei.bridge.reasoning.ages import ages_said
@@ -170,6 +171,7 @@ def read_question(question: str) -> Reading:
     text, told = mishap(text)               # "it slid off the tray. how do i stop that?" (mishaps.py)
     respelt += chat + told
     refuse_choice(text)                     # "honey or water?": two questions (choices.py)
+    refuse_drips_after(text)                # "drip down the bottle after pouring" (drips_after.py)
     refuse_unsayable(text, lex.known, lex.placeable)  # "60 degrees vs 90 with 200 ml" (set_against.py)
     try:
         return _read_text(question, text, respelt)

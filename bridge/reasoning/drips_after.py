@@ -1,0 +1,30 @@
+"""Liquid running down the outside of the source once the pour is over
+("will olive oil drip down the side of the bottle after I stop pouring?",
+"so nothing drips down the side of the pot afterwards") is no outcome the
+vocabulary says: a spill is judged of the liquid that leaves the source,
+and what clings to the source after the pour never leaves it. Such a
+question is refused, naming what would be read: the same asked of the
+pour itself ("does it drip down the side of the bottle?": a spill)."""
+from __future__ import annotations
+
+import re
+
+from pantarhei.bridge.errors import UserError
+
+#: Running down the source's outside (not the bowl's): "dribble down its own side", "run down the outside".
+_DOWN = re.compile(r"\b(?:drip|dribbl|run|ran|trickl|roll|leak)\w* down (?:the |its |its own |their )?(?:outside|side|sides)\b"
+                   r"(?! of (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|dish|destination)s?\b)")
+#: Once the pour is over: "after I stop pouring", "after I pour it", "afterwards", "at the end of the pour".
+_AFTER = re.compile(r"\b(?:after (?:(?:i|you|we|it|they|the \w+) (?:am |have |has |is |are )?(?:stop|stops|stopped|finish|finishes"
+                    r"|finished|done)(?: (?:pour\w*|tipping|tilting))?|(?:i |you |we )?pour(?:ing|ed|s)?(?: it)?\b|the pour(?:ing)?"
+                    r" (?:is over|ends|has ended)|the pour\b(?! (?:starts|begins)))|afterwards?|once (?:i |you |we )?(?:am |have )?"
+                    r"(?:stop\w*|finish\w*|done)|at the end of the pour)")
+
+
+def refuse_drips_after(text: str) -> None:
+    """UserError where `text` (normalised) asks of liquid running down the source once the pour is over."""
+    down = _DOWN.search(text)
+    if down and _AFTER.search(text):
+        raise UserError(f"\"{down.group(0)}\" once the pour is over: what clings to the source after the pour "
+                        f"is no outcome the vocabulary says; ask it of the pour (\"does it drip down the side "
+                        f"of the bottle?\": a spill)")
