@@ -105,14 +105,14 @@ def told(text: str) -> tuple[str, tuple[str, ...]]:
     if out is None and (CAUSE.match(rest.strip()) or REMEDY.match(rest.strip())):
         return text, ()             # what it did told past this module's forms: mishaps.py's to read
     verb = "spill" if out == "spilt" else out
-    if out and _BETTER.search(rest):
-        asked = _BETTER.search(rest).group(0)
-        rest = _BETTER.sub(_TOLD[verb], rest, count=1)
-        said.append(f"{asked}: read as {_TOLD[verb]}, as the earlier pour did")
-    elif out and CAUSE.match(rest) and m.groupdict().get("how") is not None:
+    if out and CAUSE.match(rest.strip()) and m.groupdict().get("how") is not None:
         asked = f"if i pour{m.group('how')}, {_TOLD[verb]}?"     # "... and the bowl fell over, how come?"
         said.append(f"{rest.strip(' ?.!')}: read as {asked.strip(' ?')}, asked of the earlier pour")
         rest = asked
+    elif out and _BETTER.search(rest):
+        asked = _BETTER.search(rest).group(0)
+        rest = _BETTER.sub(_TOLD[verb], rest, count=1)
+        said.append(f"{asked}: read as {_TOLD[verb]}, as the earlier pour did")
     elif out and (_VALUE_ASKED.match(rest) or _AVOID.match(rest)) and (m.group("none") or out != "came out"):
         wanted = _AGAIN.get(verb, f"it does not {verb}{m.groupdict().get('part') or ''}")
         for then in dict.fromkeys("spill" if o.group("out") == "spilt" else o.group("out") for o in _SECOND.finditer(m.group(0))):
