@@ -304,6 +304,8 @@ PHRASES: tuple[tuple, ...] = (
     *TILT_AMOUNTS,            # "with much angle", "a strong tilt" (tilt_amounts.py)
     # leaning, angling, inclining the source: tilting it
     ("tilt", (r"re:\b(?:lean|angle|incline)(?:s|d|ed|ing|t)?\b(?= (?:it|them|the \w+)\b)",)),
+    # tilted too far, said before a speed ("way too far too fast"): how far? (suggestions.py)
+    (UNCLEAR, (r"re(too far):\b(?:tilt|tip)(?:s|ed|ing|ped|ping)?(?: (?:it|the \w+))? (?:way |much |far )?too far\b",)),
     ("slightly tilted", (r"re:\b(?:tilt|tip)(?:s|ed|ing|ped|ping)?(?: (?:it|the \w+))?(?: only| just)?(?: very)? "
                          r"(?:a (?:little )?bit|a little|little)\b(?! (?:liquid|water|of)\b)",)),
     ("slightly", (r"re:\b(?:a (?:little )?bit|a little)(?= (?:tilt|angled|inclined))",)),
