@@ -94,27 +94,31 @@ def _told(clause: str) -> list[tuple[tuple[str, ...], bool]]:
     not leave the source; "it went in fine": it held)."""
     out: list[tuple[tuple[str, ...], bool]] = []
     for pattern, names, bad in _outcomes()[:-1]:     # (the last is "safe", "fine": no outcome told)
-        m = pattern.search(clause)
+        m = next((m for m in pattern.finditer(clause) if _happened(m, names)), None)    # ("drips landed": not "drips")
         if m is None:
             continue
         before = clause[:m.start()]
-        if re.search(r"\b(?:i|we|you|he|she|they)(?: just)? $", before) and "source_clear" not in names:
-            continue        # what the one pouring did ("i tipped the jug"), not an outcome
-        if names == ("source_clear",) and _liquid_before().search(before):
-            continue        # the liquid striking the bowl ("the stream hit the rim and sprayed"): no contact of the source
-        if names == ("destination_upright",) and (re.match(r" (?:the|a|an|my|his|her|their|it)\b", clause[m.end():]) or re.search(
-                r"\b(?:already )$|\b(?:the|my|a) (?!bowl\b|dish\b|destination\b)[a-z]+ (?:already |was |is |got )*$", before)):
-            continue        # tipping something, or something held tipped: the source ("she keeps tipping the jug",
-            #                 "i started with the bottle already tipped")
-        if not (_TOLD_TENSE.match(m.group(0)) or _HABIT.search(before)
-                or (_GOING_ON.search(before) and m.group(0).endswith("ing"))):
-            continue        # not told as having happened ("need to empty it without knocking it over")
         group = STILL if names == STILL else names
         failed = bad != (_NOT.search(before) is not None)
         if (group, failed) not in out:
             out.append((group, failed))
         clause = clause[:m.start()] + " " + clause[m.end():]
     return out
+
+
+def _happened(m: re.Match, names: tuple[str, ...]) -> bool:
+    """Whether the outcome `m` (of the expectations `names`) is told as having happened to the bowls or the liquid."""
+    before = m.string[:m.start()]
+    if re.search(r"\b(?:i|we|you|he|she|they)(?: just)? $", before) and "source_clear" not in names:
+        return False        # what the one pouring did ("i tipped the jug"), not an outcome
+    if names == ("source_clear",) and _liquid_before().search(before):
+        return False        # the liquid striking the bowl ("the stream hit the rim and sprayed"): no contact of the source
+    if names == ("destination_upright",) and (re.match(r" (?:the|a|an|my|his|her|their|it)\b", m.string[m.end():]) or re.search(
+            r"\b(?:already )$|\b(?:the|my|a) (?!bowl\b|dish\b|destination\b)[a-z]+ (?:already |was |is |got )*$", before)):
+        return False        # tipping something, or something held tipped: the source ("she keeps tipping the jug",
+        #                     "i started with the bottle already tipped")
+    # (not told as having happened: "need to empty it without knocking it over")
+    return bool(_TOLD_TENSE.match(m.group(0)) or _HABIT.search(before) or (_GOING_ON.search(before) and m.group(0).endswith("ing")))
 
 
 def _said(words: dict, groups: list[tuple[str, ...]], when: str = "") -> str:
@@ -150,6 +154,14 @@ def mishap(text: str) -> tuple[str, tuple[str, ...]]:
         read = _read(told, asked)
         if read is not None:
             return read
+    if not re.search(r"[?]", text) and not re.match(rf"(?:{_ASKS})\b", text) and re.search(
+            r"^(?:tried|poured)\b|\b(?:i|we|he|she|they)\b", text) and not re.search(
+            r"\b(?:whether|wonder|know|tell|if|would|should|could|can|will|how|what|why|which|please)\b", text):
+        # a mishap told with nothing asked after it ("I pulled the pitcher away too fast and a trail of
+        # drips went across the table."): what went wrong, asked of the pour told, as "why?" asks it
+        read = _read(text.strip(" .!"), "why?")
+        if read is not None:
+            return read[0], (read[1][0], "nothing asked after it: read as what went wrong, asked of the pour told")
     return text, ()         # anything else asked: the question as written
 
 
@@ -184,7 +196,7 @@ def _read(told: str, asked: str) -> tuple[str, tuple[str, ...]] | None:
     if CAUSE.match(asked) or _AGAIN.match(asked):
         # the clauses that tell nothing gone wrong: those with no outcome, and those saying when it went wrong
         # ("when i emptied the heavy saucepan into it")
-        scene = [re.sub(rf"^{WHEN},? ", "", c) for c in clauses if not any(bad for _, bad in tells[c]) and (
+        scene = [re.sub(rf"^(?:{WHEN},? |as soon as (?=\w+ start))", "", c) for c in clauses if not any(bad for _, bad in tells[c]) and (
             re.match(r"(?:when|while|as|after|once) ", c) or not tells[c])]
         rest = f"{' and '.join(scene)}, {question}?" if scene else f"{question}?"
         return rest, (f"{told}: read as {rest.strip(' ?')}", f"{asked.strip(' ?.!')}: read as asked of the pour told")
