@@ -14,7 +14,9 @@ import re
 #: What asks its cause: "why?", "what went wrong", "what did I do wrong".
 CAUSE = re.compile(r"^(?:so |and |but )?(?:why|how come|what went wrong|what did (?:i|we) do wrong|what happened"
                     r"|what caused (?:that|this|it)|why did (?:that|this|it) happen|why is that|why (?:does|did) (?:that|this|it)"
-                    r"(?: happen)?)[?.! ]*$")
+                    r"(?: happen)?"
+                    # one of two causes asked: "was it the weight or the angle?"
+                    r"|(?:was|is) it (?:the |my )?[a-z]+ or (?:the |my )?[a-z]+)[?.! ]*$")
 #: What asks for a remedy: "what should I change", "how do I stop that", "any tips".
 REMEDY = re.compile(
     r"^(?:so |and |but )?(?:what (?:should|do|can|could|would|must|shall) (?:i|we|you|he|she|they) (?:do|change|try|adjust)"
@@ -25,7 +27,9 @@ REMEDY = re.compile(
     r"(?: (?:happening|from happening))?(?: (?:again|next time|in future|in the future))*"
     r"|how (?:do|can|could|should|would) (?:i|we|you) (?:pour|do)(?: it| this| that)?(?: (?:then|instead|next time|differently|right|properly|better|again))*"
     r"|any (?:tips|advice|ideas|suggestions|help)(?: (?:on|for) (?:that|this|it|next time))?"
-    r"|(?:tips|advice|help)(?: please)?)"
+    r"|(?:tips|advice|help)(?: please)?"
+    # what would have been right: "what should I have done?", "how should I have done it?"
+    r"|(?:what|how) (?:should|could|would) (?:i|we) have (?:done|poured)(?: it| that)?(?: (?:differently|instead|better|then))?)"
     r"(?: please)?[?.! ]*$")
 #: When the pour told was: "last time", "yesterday", "previously", "the other day".
 WHEN = (r"(?:(?:the )?(?:last time|previous time|first time|other day|yesterday|previously|earlier|before"
