@@ -38,10 +38,12 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:go|goes|going|went|get|gets|come|comes|came) over(?= the (?:far |near |other |opposite |back |front )?(?:rim|edge|top|side|brim|lip)s?\b)", ("liquid_remains_in_destination", "no_spill"), True),
     # (sloshing around in the bowl is no spill: everyday.txt says it back)
     (r"spill\w*|spilt|splash\w*|splatter\w*|spray(?:s|ed|ing)?|spurt\w*|slosh\w*(?! (?:around|about)\b)|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
-     r"|makes? (?:(?:a|any) )?(?:big |huge |bit of a |real |total )?mess|(?:go|goes|going|went|get|gets) everywhere"
+     r"|(?:makes?|(?<=up )making) (?:(?:a|any) )?(?:big |huge |bit of a |real |total )?mess|(?:go|goes|going|went|get|gets) everywhere"
      r"|(?:get|gets|getting|got) (?:it|them|liquid|(?:the )?[a-z]+) (?:everywhere|all over(?: the place)?)\b"
      r"|slop\w*|splat\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)|(?:get|gets|got|getting) (?:any|some|much|a drop)(?: of it)?(?= on\b| onto\b)"
-     r"|(?:run|runs|running|ran|roll\w*|stream\w*) down the (?:outside|side)(?! of (?:the |a )?(?:bowl|dish|destination))"
+     r"|(?:run|runs|running|ran|roll\w*|stream\w*|go|goes|going|went) down the (?:outside|side)(?! of (?:the |a )?(?:bowl|dish|destination))"
+     # where drips went: "a trail of drips went right across the table"
+     r"|(?:go|goes|going|went) (?:right |straight )?across (?:the )?(?:table|counter|countertop|worktop|bench|floor)\b"
      # the place under it wet: "will my counter get wet"
      r"|(?:table|counter|countertop|floor|worktop|bench|tablecloth) (?:get|gets|got|getting|be|become|becomes) (?:all )?wet\b"
      # finding its way onto the tablecloth, dropping on the table
@@ -71,7 +73,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:slid\w*|slip(?:s|ped|ping)?\b|shift\w*|budg\w*|wobbl\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
      r"|jostl\w*|rock(?:s|ed|ing)?|shak(?:e|es|ing)|shook|translat\w*|drift\w*|creep\w*|scoot\w*"
      # the bowl pushed by the stream, said with where it goes ("will the stream push them across the table")
-     r"|(?:push|shov)(?:es|e|ed|ing)? (?:it|them|the (?:bowl|bowls|destination|dish|container)) (?:across|along|around|about|sideways|aside)\b"
+     r"|(?:push|shov)(?:es|e|ed|ing)? (?:it|them|the (?:bowl|bowls|destination|dish|container)) (?:across|along|around|about|sideways|aside|away)\b"
+     # sent flying, itself: "does the bowl go flying" (not "go flying out of the bowl": thrown out)
+     r"|(?:go|goes|going|went|gone) flying\b(?! (?:out|off|over)\b)"
      r"|(?:(?:get|gets|got|getting) )?sent (?:across|flying|sliding|skidding)|displac\w*|(?:(?:get|gets|got|getting|be|being) )?(?:pushed|shoved)\b(?! (?:in|back|away|out|over)\b)|(?:go|goes|going|get|gets|getting) (?:wiggly|wobbly|shaky|jiggly)"
      r"|mov(?:e|es|ed|ing)\b(?! (?:(?:it|them|the \w+) )?(?:in|away|closer|nearer|further|farther|to|out|back|up"
      r"|down|over|into|off|towards?)\b)|bounc\w* (?:around|about))(?: sideways| (?:off |over )?to (?:the|one) side| back and forth| to and fro)?\b",
@@ -100,9 +104,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"(?! (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|destination)s?\b)",
      ("liquid_leaves_source",), True),
     # left inside, no bowl said: kept in the source ("there was still a bit left inside at the end")
-    (r"left (?:over )?inside\b(?! (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|destination)s?\b)", ("liquid_leaves_source",), True),
+    (r"left (?:over |stuck |clinging |sitting )?inside\b(?! (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|destination)s?\b)", ("liquid_leaves_source",), True),
     # left in the source: kept in it ("is anything left in the jug afterwards")
-    (r"left (?:over )?in(?= (?:the |a |an |my |your )(?:[a-z]+ )?(?!(?:bowl|destination)s?\b)[a-z]+\b)"
+    (r"(?:(?<=\bsome )|(?<=\bany )|(?<=\bnone )|(?<=\bnothing )|(?<=\bmuch ))?left (?:over |stuck |clinging |sitting )?in(?= (?:the |a |an |my |your )(?:[a-z]+ )?(?!(?:bowl|destination)s?\b)[a-z]+\b)"
      r"(?! (?:the |a |an |my |your )(?:[a-z]+ )?(?:bowl|destination)s?\b)",
      ("liquid_leaves_source",), True),
     # left behind in the source: kept in it ("with nothing left behind")

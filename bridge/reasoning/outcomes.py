@@ -308,7 +308,7 @@ def hear(text: str) -> Heard:
         clauses.append(names)
         # "does much stay in the jug", "will some milk spill": how much of the liquid the
         # outcome is asked of, not how much the source holds
-        while subject and subject[0] in _QUANTIFIERS:
+        while subject and subject[0] in _QUANTIFIERS | {"there", "be", "gonna", "going", "to"}:     # ("is there gonna be some left")
             subject = subject[1:]
         kept = " ".join(striker(subject, names, m, m.group("aux") in _MODALS.split("|"))) if m.group("aux") or m.group("chance") else ""
         # "is the chance of spilling high": the odds, heard; "does it splash high": the scene's
