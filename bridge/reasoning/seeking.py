@@ -20,12 +20,11 @@ from functools import lru_cache
 
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.goal_lists import goal_list
+from pantarhei.bridge.reasoning.goal_wordings import VALUE as _VALUE, WANTING as _WANTING
 from pantarhei.bridge.reasoning.speeds import POURING_SPEED
 from pantarhei.bridge.reasoning.vessels import destinations, liquids
 
-#: What a value is asked of: a height, a tilt, a way ...
-_VALUE = (r"(?:height|tilt|tilting|angle|way|speed|distance|position|spot|place|amount|pose|path|route"
-          r"|setting|manner)s?")
+#: A value asked with "how": "how high", "how far from the centre".
 _HOW = (r"(?:(?:far|close|near) (?:from|to) the (?:centre|center|middle|side|edge|rim)(?: of (?:the )?[a-z]+)?|high|low|far|fast|quick|quickly|slow|slowly|steep|steeply|much|close|near"
         r"|tilted|full)")
 #: A value that is asked for ("the best height"), not said ("medium height").
@@ -92,104 +91,6 @@ _WANT = re.compile(r"(?:\b(?:i|we) |^|(?<=[.!?] ))(?:want|need|would like|wish)(
                    # (where it comes from said after it: "all of the juice from the carton to land in the bowl")
                    r"|the (?:[a-z]+ )?(?!source\b)[a-z]+)(?: from (?:the|my|a) [a-z]+)?(?= (?:not |never )?to\b)")
 
-#: Emptying the source, wanted: "I'd like to empty the whole mug".
-_EMPTYING_WANTED = (r"\b(?:i|we) (?:want|need|would like|wish|am trying|are trying) to (?:empty|drain) (?:out )?(?:the whole"
-                    r"|all of the|all the|the entire|the) ([a-z]+)")
-#: A goal of emptying the source: "goal: empty the bottle completely".
-_EMPTYING = (r"\b(?:goal|aim|objective|task|target)s?(?: is)?:? (?:to )?(?:empty|drain) (?:out )?(?:the whole|all of the"
-             r"|all the|the entire|the) ([a-z]+)(?: (?:completely|fully|entirely|totally))?")
-
-#: Other ways of saying a goal, said as "so that ...": "keep the cup still" (not "keep the
-#: source upright": how it is held), "don't let it overflow", "make sure it does not spill"
-#: (the words they drop are fillers).
-_WANTING = tuple((re.compile(p), r) for p, r in (
-    # asked whether a scene stops an outcome ("does pouring low stop it from splashing?"): whether it happens
-    (r"((?:^|(?<=[.?!,;:] ))(?:does|do|did|will|would|can|could|might|may|should)\b[^.?!,;:]*?)\b(?:stop|stops|keep|keeps|prevent|prevents)"
-     r" (it|them|the [a-z]+) from (?=[a-z]+ing\b)", r"\1 will \2 "),
-    (r"\bkeep(?:s|ing)? (the (?!source\b)[a-z]+) (still|steady|in place|put)\b", r"so that \1 stays \2"),
-    (r"\b(?:do not|never) let (it|them|the [a-z]+|any(?: of it)?) ", r"so that \1 does not "),
-    # "keep the bowl from sliding", "stop it from splashing"
-    (r"\b(?:keep|keeps|keeping|stop|stops|stopping|prevent|prevents|preventing) (it|them|the [a-z]+)"
-     r" from (?=[a-z]+ing\b)", r"so that \1 does not "),
-    (r"\bmake sure(?: that)? ", "make sure so that "),
-    # "I want the water to land without ...": so that it goes in (landing on the table is a spill)
-    (r"\b(so that (?:it|them|the (?:[a-z]+ )?[a-z]+)) to land\b(?! (?:on|onto|outside|all|in|into|inside|right|just|near|at)\b)",
-     r"\1 goes in"),
-    # "pour the syrup neatly": so that nothing spills
-    (r"\b(pour(?:s|ed|ing)?(?: (?:it|them|the [a-z]+|[a-z]+))?) (?:neatly|cleanly|tidily)\b", r"\1 so that nothing spills"),
-    # "and have it not slide"
-    (r"\bhave (it|them|the [a-z]+) (?:not|never) (?=[a-z]+)", r"so that \1 does not "),
-    # "I'd prefer the bowl not move", "we hope it doesn't tip"
-    (r"\b(?:i|we) (?:would )?(?:prefer|rather|hope)(?: that)? (it|them|the [a-z]+) (?:not|never|does not|do not|will not)"
-     r" (?=[a-z]+)", r"so that \1 does not "),
-    # "I want to empty the whole pot of soup into the bowl": so that it empties and it all goes in
-    (rf"{_EMPTYING_WANTED}(?: of [a-z]+)?(?= into (?:the |a |my )?bowl\b)", r"so that the \1 empties and it all goes"),
-    # "need to empty a heavy jug of syrup": so that it empties
-    (r"(?:^|\b(?:i|we) )(?:need|want|have) to (?:empty|drain) (?:out )?(?:a|the|my) ((?:[a-z]+ )?[a-z]+)(?= of\b|$|[ ,.;!?])",
-     r"so that the \1 empties"),
-    # "goal: empty the bottle completely": so that it empties ("... into the bowl": it goes in too)
-    (rf"{_EMPTYING}(?= into (?:the |a )?bowl\b)", r"so that the \1 empties and it all goes"),
-    (rf"{_EMPTYING}\b", r"so that the \1 empties"),
-    # "I'd like to empty the whole mug": so that it empties (into the bowl: and it all goes in, above)
-    (rf"{_EMPTYING_WANTED}\b", r"so that the \1 empties"),
-    # a value there that reaches a goal: "is there any height where the water never splashes" (so that it does not)
-    (rf"\b(is there (?:any|an?|some|one) {_VALUE}) (?:where|at which|for which|with which|in which)"
-     r" (?=(?:it|they|the [a-z]+|nothing|none|no [a-z]+) )", r"\1 so that "),
-    # "for all the oil coming out", as learners of English say it: so that it all comes out
-    (r"\bfor (all (?:of )?the [a-z]+|it all|all of it|everything) (?:coming|to come) out\b", r"so that \1 comes out"),
-    # "I want to pour all the broth into the bowl": so that it all goes in
-    (r"\b(?:i|we) (?:want|need|would like) to (?:pour|get|put|transfer) (all (?:of )?the [a-z]+|it all|all of it|everything|every drop)"
-     r"(?= (?:in|into)\b)", r"so that \1 goes"),
-    # "so that none is wasted": so that nothing spills
-    (r"\bso(?: that)? (?:none|nothing|no liquid|not a drop)(?: of it)? (?:is|gets|will be|goes to) wasted?\b", "so that nothing spills"),
-    # "without losing any": so that nothing spills
-    (r"\bwithout (?:losing|wasting) (?:any|a drop|a single drop|anything)(?: of it)?\b", "so that nothing spills"),
-    # "without any on the counter": so that none goes on it (a place the liquid lands, a spill)
-    (r"\bwithout (?:any|a drop|a single drop)(?: of it| liquid| water)? (?=(?:on|onto|all over) (?:the |a |my )?"
-     r"(?:table|tablecloth|counter|countertop|worktop|floor|bench|stove|ground)\b)", "so that none goes "),
-    # "avoids the cup hitting the bowl", "prevent the bowl sliding", "stop the mug clinking"
-    (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|stop|stops|stopping) (it|them|the [a-z]+)"
-     r" (?=[a-z]+ing\b)", r"so that \1 does not "),
-    # "for that all the milk go inside the bowl", as learners of English say it: so that it goes in
-    (r"\bfor that (?=(?:all|it|the|every|nothing|none|no)\b)", "so that "),
-    # "for the soup not to jump out", as learners of English say it: so that it does not
-    (r"\bfor (it|them|the [a-z]+) (?:not|never) to (?=[a-z]+)", r"so that \1 does not "),
-    # a goal said with "for", as learners of English say it: "near or far for not make mess", "for no spilling"
-    (r"\bfor (?:not|never) (?:make|making|let|letting) (it|them|the [a-z]+) (?=[a-z]+)", r"so that \1 does not "),
-    (r"\bfor (?:not|never|no) (?=(?:make|making|spill|splash|drip|tip|slid|mov|hit|touch|overflow|toppl)[a-z]*\b)",
-     "so that it does not "),
-    # not wanting an outcome, said as a noun: "if I don't want any splash", "we don't want a mess"
-    (r"\b(?:if )?(?:i|we|you) (?:do not|never) (?:want|need) (?:(?:any|a|a single|one|even one) )?(splash|spill|drip|leak|overflow)"
-     r"(?:es|s|ing|age)?\b", r"so that it does not \1"),
-    (r"\b(?:if )?(?:i|we|you) (?:do not|never) (?:want|need) (?:any|a) mess\b", "so that nothing spills"),
-    # a goal said as a state with no outcome in it: "with zero mess", "with no spills"
-    (r"\bwith (?:zero|no|absolutely no|not a single|not one) (?:mess|spill(?:s|age|ing)?|splash(?:es|ing)?|drips?|dripping"
-     r"|spillover)\b", "so that nothing spills"),
-    # what it is for, as learners of English say it: "incline the jar for the water to go out from it"
-    (r"\bfor (it|them|the [a-z]+|all of it|everything|it all) to (?=(?:go|come|get|flow|run|drain|land|stay|end up)\b)",
-     r"so that \1 "),
-    # a bound asked: "what tilt should I never go past": the value asked
-    (r"\b((?:what|which) (?:tilt|angle|height|speed)) (?:should|must|can|could) (i|we|you) (?:never|not) (?:go|get|tilt|pour|lift)"
-     r"(?: it)? (?:past|beyond|over|above)\b", r"\1 should \2 use"),
-    # "with the bowl staying exactly where it is", "with none spilling and the bowl staying put": so that it stays there
-    (r"\b(?:with|(?<=ing )and) (it|them|the [a-z]+) (?:staying|remaining) (?=(?:exactly |right )?(?:where|put|still|in place|upright|steady)\b)",
-     r"so that \1 stays "),
-    # "is there a way to pour that doesn't spill": a pour, so that it does not
-    (r"\b(a (?:way|method|technique|manner) (?:to pour|of pouring)|a pour) that (?=(?:does not|will not|would not|never)\b)",
-     r"\1 so that it "),
-    # "I need a pour that empties the cup completely into the bowl": so that it empties and it all goes in
-    (r"\b(?:i|we) (?:need|want|would like) a pour that (?:empties|drains) (the [a-z]+)(?: completely| fully| entirely)?(?= into\b)",
-     r"so that \1 empties and it all goes"),
-    # "what angle should I tilt to get everything out", "how do I get every drop out": so that it all comes out
-    (r"\b(?:(?:in order |so as )?to |(?<=how do i )|(?<=how can i )|(?<=how should i ))get (it all|all of it|everything|every drop|every last drop|all (?:of )?the [a-z]+) out\b"
-     r"(?: of (?:the |a |my )?[a-z]+)?(?![^.?!,;]*\band (?:in|into)\b)", r"so that \1 comes out"),
-    # "to avoid drips outside the target", "prevent any spills": so that it does not drip, spill
-    (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|minimi[sz]e|minimi[sz]ing|reduce|reducing)"
-     r" (?:any )?(drip|spill|splash|leak|overflow)(?:s|es)?\b(?! of\b)", r"so that it does not \1"),
-    # "to avoid spilling", "prevent splashing", "minimise dripping"
-    (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|minimi[sz]e|minimi[sz]ing|reduce|reducing)"
-     r" (?=(?:any )?[a-z]+ing\b)", "so that it does not "),
-))
 
 
 @lru_cache(maxsize=None)
