@@ -94,6 +94,11 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     # "with the bowl staying exactly where it is", "with none spilling and the bowl staying put": so that it stays there
     (r"\b(?:with|(?<=ing )and) (it|them|the [a-z]+) (?:staying|remaining) (?=(?:exactly |right )?(?:where|put|still|in place|upright|steady)\b)",
      r"so that \1 stays "),
+    # "keep the table totally clean": so that nothing spills
+    (r"\bkeep(?:s|ing)? (?:the |my )?(?:table|counter|countertop|worktop|bench|floor|tablecloth|cloth)(?: (?:totally|completely"
+     r"|perfectly|nice and|spotlessly))? (?:clean|dry|spotless)\b", "so that nothing spills"),
+    # "a way to never touch the bowl with the jug": so that the jug does not touch it
+    (r"\bto (?:never|not) (touch|hit|bump|knock) the (bowl|destination) with (the [a-z]+)\b", r"so that \3 does not \1 the \2"),
     # "is there a way to pour that doesn't spill": a pour, so that it does not
     (r"\b(a (?:way|method|technique|manner) (?:to pour|of pouring)|a pour) that (?=(?:does not|will not|would not|never)\b)",
      r"\1 so that it "),

@@ -162,7 +162,7 @@ _CAN_OUT = (r"(\b(?:can|could) (?:i|we|you) (?:[a-z0-9]+ ){0,12}?)(?:and )?(?:st
             r"|every drop|every last drop|all (?:of )?the [a-z]+) out\b(?: of (?:the |a |my )?[a-z]+)?")
 #: ... or still get it in, said after the manner or the value asked: "how far to the side can I be
 #: and still get it all in the bowl" (so that it goes in).
-_STILL_GET = (r"\band still get (it all|all of it|everything|every drop|every last drop|all (?:of )?the [a-z]+|it)"
+_STILL_GET = (r"\b(?:and|while) still (?:get|getting) (it all|all of it|everything|every drop|every last drop|all (?:of )?the [a-z]+|it)"
               r" (?=(?:in|into|inside)\b)")
 _CAN_EMPTY = (r"\b(?:can|could) (?:i|we|you) (?:still )?(?:empty|drain) (it|(?:the|my) [a-z]+)(?: out)?"
               r"(?: completely| fully| all the way| entirely)? (?=into\b)")
@@ -219,7 +219,7 @@ _WANTING_CUED = (
     # "can I still get everything into the bowl", "can I empty the mug completely into the bowl":
     # so that it goes in (and the source empties); asked where a manner is said (if_it_can)
     (Cued(_CAN_GET, (" get ", " put ")), r"so that \1 goes "),
-    (Cued(_STILL_GET, ("still get",)), r"so that \1 goes "),
+    (Cued(_STILL_GET, ("still get",)), r"so that \1 goes "),    # "while still getting it all in"
     (Cued(_CAN_EMPTY, ("empty", "drain")), r"so that \1 empties "),
     (Cued(_CAN_OUT, (" out",)), r"\1so that \2 comes out"),
 )
