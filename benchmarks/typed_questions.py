@@ -21,7 +21,7 @@ from pathlib import Path
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning import reading
-from pantarhei.bridge.reasoning.words import FILLERS
+from pantarhei.bridge.reasoning.dropped import dropped_words
 
 
 def question_files() -> list[Path]:
@@ -55,12 +55,6 @@ def _names(text: str) -> list[str]:
     return sorted(n for n in text.split(",") if n)
 
 
-def _lost(question: str, heard) -> list[str]:
-    """The words of `question` that its reading neither read, said back nor ignored."""
-    words = {w for phrase in (*heard.heard, *heard.ignored) for w in re.findall(r"[a-z]+", phrase)}
-    words |= {w for n in heard.notes for w in re.findall(r"[a-z]+|\S+", n.split(":")[0])} | set(FILLERS) | {"s", "minus"}
-    said = re.sub(r"n't\b", " not", question.lower().replace("\u2019", "'"))
-    return [w for w in re.findall(r"[a-z]+", said) if w not in words]
 
 
 def measure(path: Path) -> dict:
@@ -82,9 +76,9 @@ def measure(path: Path) -> dict:
                 counts["refused though expressible"] += 1
                 wrong.append(f"refused (expressible): {question}  -- {e}")
             continue
-        if full and _lost(question, heard):
+        if full and dropped_words(question, heard):
             counts["silent drops"] += 1
-            wrong.append(f"dropped {_lost(question, heard)}: {question}")
+            wrong.append(f"dropped {dropped_words(question, heard)}: {question}")
         if meant is None:
             counts["misread"] += 1
             wrong.append(f"answered (cannot be said) as {scene}: {question}")
