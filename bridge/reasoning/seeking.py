@@ -33,7 +33,9 @@ _BEST = (r"(?:best|right|ideal|optimal|safest|correct|perfect|proper|max|maximum
 _WHO = r"(?:i|we|you|it|they|he|she|the robot|one)"
 _ACT = (r"(?:hold|pour|tilt|keep|put|have|place|go|position|use|do|set|angle|raise|lift|move"
         r"|start|end|tip)")
-_WHAT = r"(?: (?:it|them|the \w+))?(?: (?:from|at|to|up|in))?"
+#: What the act is done to: "it", "the jug" (not "the heavy" of "the heavy stuff": the scene's).
+_WHAT = (r"(?: (?:it|them|the \w+(?! (?!(?:so|to|without|and|or|from|into|in|at|with|for|if|when|while|such|that|over|on|up)\b)[a-z])))?"
+         r"(?: (?:from|at|to|up|in))?")
 #: The words that ask for a value (compiled by _asking, where a goal is said).
 _ASKING_SOURCE = (
     # a value that works: "what tilt works", "which height would work best", "which position of cup is best"
