@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import re
 
+from pantarhei.bridge.reasoning.wording import unaccented
 from pantarhei.bridge.reasoning.words import FILLERS
 
 
@@ -16,6 +17,6 @@ def dropped_words(question: str, reading) -> list[str]:
     accounted |= set(FILLERS) | {"s", "minus"}
     # as typed: a contraction with its apostrophe spelt out ("won't": will not), one typed
     # without it ("wont", "im") or a word mistyped ("teh") said back in the notes
-    said = re.sub(r"\bcan't\b|\bcannot\b", "can not", question.lower().replace("\u2019", "'"))
+    said = re.sub(r"\bcan't\b|\bcannot\b", "can not", unaccented(question.lower().replace("\u2019", "'")))
     said = re.sub(r"n't\b", " not", re.sub(r"\bwon't\b", "will not", said))
     return [w for w in re.findall(r"[a-z]+", said) if w not in accounted]

@@ -21,6 +21,7 @@ as the").
 from __future__ import annotations
 
 import re
+import unicodedata
 from bisect import bisect_left
 from dataclasses import dataclass
 
@@ -112,6 +113,11 @@ _CHATTED = (rf"\b(?:{'|'.join(_CHAT)})\b|\by(?= (?:does|do|did|is|are|was|would|
             r"|4(?= (?:[a-z]+ing|the|a|an|my|your|it|me|not|no)\b))")
 
 
+def unaccented(text: str) -> str:
+    """`text` with its letters' accents taken off ("crème anglaise": creme anglaise)."""
+    return "".join(c for c in unicodedata.normalize("NFD", text) if unicodedata.category(c) != "Mn")
+
+
 def normalised(text: str) -> str:
     """`text` in lower case with its apostrophes, negative contractions,
     signs, degrees and speeds written one way."""
@@ -136,7 +142,7 @@ _HAD = {**{w: w[:-2] for w in ("helped", "worked", "stayed", "spilled", "splashe
 def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` normalised, and what is said back of each word of it read as
     another ("doesnt: read as doesn't"), in the order written."""
-    text = text.lower().replace("\u2019", "'")
+    text = unaccented(text.lower().replace("\u2019", "'"))
     said: dict[str, None] = {}
 
     def respelt(written: str) -> str:
