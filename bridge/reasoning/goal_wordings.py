@@ -86,7 +86,7 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\bwith (?:zero|no|absolutely no|not a single|not one) (?:mess|spill(?:s|age|ing)?|splash(?:es|ing)?|drips?|dripping"
      r"|spillover)\b", "so that nothing spills"),
     # what it is for, as learners of English say it: "incline the jar for the water to go out from it"
-    (r"\bfor (it|them|the [a-z]+|all of it|everything|it all) to (?=(?:go|come|get|flow|run|drain|land|stay|end up)\b)",
+    (r"\bfor (it|them|the [a-z]+|all of it|everything|it all|all (?:the )?[a-z]+) (?:to )?(?=(?:go|come|get|flow|run|drain|land|stay|end up)\b)",
      r"so that \1 "),
     # a bound asked: "what tilt should I never go past": the value asked
     (r"\b((?:what|which) (?:tilt|angle|height|speed)) (?:should|must|can|could) (i|we|you) (?:never|not) (?:go|get|tilt|pour|lift)"

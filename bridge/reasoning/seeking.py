@@ -166,8 +166,8 @@ _CAN_OUT = (r"(\b(?:can|could) (?:i|we|you) (?:[a-z0-9]+ ){0,12}?)(?:and )?(?:st
 #: and still get it all in the bowl" (so that it goes in).
 _STILL_GET = (r"\b(?:and|while) still (?:get|getting) (it all|all of it|everything|every drop|every last drop|all (?:of )?the [a-z]+|it)"
               r" (?=(?:in|into|inside)\b)")
-_CAN_EMPTY = (r"\b(?:can|could) (?:i|we|you) (?:still )?(?:empty|drain) (it|(?:the|my) [a-z]+)(?: out)?"
-              r"(?: completely| fully| all the way| entirely)? (?=into\b)")
+_CAN_EMPTY = (r"\b(?:can|could) (?:i|we|you) (?:still )?(?:empty|drain) (it|(?:the|my|a) (?:full )?[a-z]+)(?: out)?"
+              r"(?: completely| fully| all the way| entirely)?(?= (?:into|without)\b| *[?.!,]| *$)")
 #: Wanting, compiled when cued: "I need none of it on the table" (so that none goes on it),
 #: "how do I get all the soup into the bowl" (so that it goes in).
 _WANTING_CUED = (
@@ -222,7 +222,7 @@ _WANTING_CUED = (
     # so that it goes in (and the source empties); asked where a manner is said (if_it_can)
     (Cued(_CAN_GET, (" get ", " put ")), r"so that \1 goes "),
     (Cued(_STILL_GET, ("still get",)), r"so that \1 goes "),    # "while still getting it all in"
-    (Cued(_CAN_EMPTY, ("empty", "drain")), r"so that \1 empties "),
+    (Cued(_CAN_EMPTY, ("empty", "drain")), r"so that \1 empties"),
     (Cued(_CAN_OUT, (" out",)), r"\1so that \2 comes out"),
 )
 
