@@ -42,6 +42,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:get|gets|getting|got) (?:it|them|liquid|(?:the )?[a-z]+) (?:everywhere|all over(?: the place)?)\b"
      r"|slop\w*|splat\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)|(?:get|gets|got|getting) (?:any|some|much|a drop)(?: of it)?(?= on\b| onto\b)"
      r"|(?:run|runs|running|ran|roll\w*|stream\w*|go|goes|going|went) down the (?:outside|side)(?! of (?:the |a )?(?:bowl|dish|destination))"
+     # what is left behind outside: "does it leave a trail of drips", "leaving a sticky ring on the counter"
+     r"|leav(?:e|es|ing) (?:a |any )?(?:sticky |little |wet |big )?(?:trail|line|ring|puddle)s?\b"
      # where drips went: "a trail of drips went right across the table"
      r"|(?:go|goes|going|went) (?:right |straight )?across (?:the )?(?:table|counter|countertop|worktop|bench|floor)\b"
      # the place under it wet: "will my counter get wet"
@@ -75,7 +77,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      # the bowl pushed by the stream, said with where it goes ("will the stream push them across the table")
      r"|(?:push|shov)(?:es|e|ed|ing)? (?:it|them|the (?:bowl|bowls|destination|dish|container)) (?:across|along|around|about|sideways|aside|away)\b"
      # sent flying, itself: "does the bowl go flying" (not "go flying out of the bowl": thrown out)
-     r"|(?:go|goes|going|went|gone) flying\b(?! (?:out|off|over)\b)"
+     r"|(?:go|goes|going|went|gone) flying\b(?! (?:out|off|over)\b)|(?:go|goes|going|went|gone) (?:sliding|skidding|skating|scooting)\b"
      r"|(?:(?:get|gets|got|getting) )?sent (?:across|flying|sliding|skidding)|displac\w*|(?:(?:get|gets|got|getting|be|being) )?(?:pushed|shoved)\b(?! (?:in|back|away|out|over)\b)|(?:go|goes|going|get|gets|getting) (?:wiggly|wobbly|shaky|jiggly)"
      r"|mov(?:e|es|ed|ing)\b(?! (?:(?:it|them|the \w+) )?(?:in|away|closer|nearer|further|farther|to|out|back|up"
      r"|down|over|into|off|towards?)\b)|bounc\w* (?:around|about))(?: sideways| (?:off |over )?to (?:the|one) side| back and forth| to and fro)?\b",

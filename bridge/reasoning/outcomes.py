@@ -121,7 +121,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
         rf" (?:(?:all|any|ever|even|still|not) ){{0,2}}(?:(?:end|ends|ended) up )?(?:{verbs})\b{end}"
         rf"(?P<odds> (?:very |really |quite |too )?(?:high|low|big|small|great|likely|unlikely)\b)?(?: or not\b)?")
     # (or said alone: "splashes?", "drip everywhere?")
-    nominal = re.compile(r"\b(?:(?:is|will) there (?:be )?)?(?:any|a|no|some) (?P<v1>spill(?:s|age)?"
+    nominal = re.compile(r"\b(?:(?:is|will) there (?:be )?)?(?:any|a|no|some) (?:little |small |big |trail of |line of )?(?P<v1>spill(?:s|age)?"
                          r"|splash(?:es)?|mess|drips?|puddles?)\b(?! of\b)|\b(?:any|some) (?:spilled|spilt)(?= *[?.!]* *$)"
                          r"|\b(?:more|less)(?: or (?:more|less))? (?:spill(?:s|age)?|splash(?:es|ing)?|mess)(?= *[?.!]* *$)"
                          r"|(?:^|(?<=[,:;.?!\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014]))"
