@@ -64,7 +64,7 @@ _STRIKES = re.compile(r"\b(?:knock|push|shov)")
 _HOLDING = {"robot", "arm", "gripper", "hand"}
 #: The words that may follow an outcome's verb and are heard with it ("drip on the
 #: table", "spill out of the cup", "go into the bowl"): the scene's words stay the scene's.
-_REST = ("each other|one another|at all times|all the time|the whole time|at any point|at any time|throughout|on|onto|over|out|of|in|into|inside|outside|the|a|an|table|tablecloth|floor|counter|countertop|worktop|bench|stove|tray|top|"
+_REST = ("each other|one another|at all times|all the time|the whole time|at any point|at any time|throughout|on|onto|over|out|of|in(?! one go\\b)|into|inside|outside|the|a|an|table|tablecloth|floor|counter|countertop|worktop|bench|stove|tray|top|"
          "ground|place|everywhere|anywhere|at|all|any|anything|it|its|liquid|water|bowl|cup|glass|"
          "destination|source|target|container|rim|edge|sides?|middle|centre|center|drop|drops|much|too|even|ever|really|very|"
          "up|down|off|away|again|then|across|along|around|against|between|"
