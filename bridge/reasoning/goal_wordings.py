@@ -27,11 +27,13 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     (r"((?:^|(?<=[.?!,;:] ))(?:does|do|did|will|would|can|could|might|may|should)\b[^.?!,;:]*?)\b(?:stop|stops|keep|keeps|prevent|prevents)"
      r" (it|them|the [a-z]+) from (?=[a-z]+ing\b)", r"\1 will \2 "),
     (r"\bkeep(?:s|ing)? (the (?!source\b)[a-z]+) (still|steady|in place|put)\b", r"so that \1 stays \2"),
-    (r"\b(?:do not|never) let (it|them|the [a-z]+|any(?: of it)?) ", r"so that \1 does not "),
+    (r"\b(?:do not|never) lets? (it|them|the [a-z]+|any(?: of it)?|a drop|a single drop) ", r"so that \1 does not "),
     # "keep the bowl from sliding", "stop it from splashing"
     (r"\b(?:keep|keeps|keeping|stop|stops|stopping|prevent|prevents|preventing) (it|them|the [a-z]+)"
      r" from (?=[a-z]+ing\b)", r"so that \1 does not "),
-    (r"\bmake sure(?: that)? ", "make sure so that "),
+    (r"\bmakes? sure(?: that)? ", "make sure so that "),
+    # "for the oil not going out of the bowl", as learners of English say it: so that it does not go out
+    (r"\bfor (it|them|the [a-z]+) (?:not|never) (go|come|get|fall|spill|splash|drip)(?:ing|ping)?\b", r"so that \1 does not \2"),
     # "I want the water to land without ...": so that it goes in (landing on the table is a spill)
     (r"\b(so that (?:it|them|the (?:[a-z]+ )?[a-z]+)) to land\b(?! (?:on|onto|outside|all|in|into|inside|right|just|near|at)\b)",
      r"\1 goes in"),

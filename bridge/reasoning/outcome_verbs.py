@@ -22,6 +22,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (rf"(?:{_THROWN}) (?:(?:back|right|straight|all|up|and) )*(?:over|past|out of|out over|from)(?= (?:the |a |an |my "
      rf"|your |its |their |this |that )?(?!source\b)(?:[a-z]+ )?{OUT_OF}\b)"
      rf"|escap\w*(?= (?:the |a |an |my |your |its )?(?!source\b)(?:[a-z]+ )?{OUT_OF}\b)"
+     # gone out of the bowl it went into: "for the oil not going out of the bowl"
+     r"|(?:go|goes|going|went|get|gets|getting|got) out of(?= (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|destination)\b)"
      # thrown out, no bowl said: out of the destination, as people who pour read it ("splash out")
      r"|(?:splash\w*|splatter\w*|slosh\w*|slop\w*)(?: back)? out\b(?! of\b| over\b)"
      # (spilled out onto the table: where it lands, a spill; splashed out onto it was thrown out of the bowl)
@@ -108,7 +110,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     # left inside, no bowl said: kept in the source ("there was still a bit left inside at the end")
     (r"left (?:over |stuck |clinging |sitting )?inside\b(?! (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|destination)s?\b)", ("liquid_leaves_source",), True),
     # left in the source: kept in it ("is anything left in the jug afterwards")
-    (r"(?:(?<=\bsome )|(?<=\bany )|(?<=\bnone )|(?<=\bnothing )|(?<=\bmuch ))?left (?:over |stuck |clinging |sitting )?in(?= (?:the |a |an |my |your )(?:[a-z]+ )?(?!(?:bowl|destination)s?\b)[a-z]+\b)"
+    (r"(?:(?<=\bsome )|(?<=\bany )|(?<=\bnone )|(?<=\bnothing )|(?<=\bmuch ))?(?:left|leftover) (?:over |stuck |clinging |sitting )?in(?= (?:(?:the |a |an |my |your )(?:[a-z]+ )?)?(?!(?:bowl|destination)s?\b)[a-z]+\b)"
      r"(?! (?:the |a |an |my |your )(?:[a-z]+ )?(?:bowl|destination)s?\b)",
      ("liquid_leaves_source",), True),
     # left behind in the source: kept in it ("with nothing left behind")
