@@ -11,8 +11,9 @@ import re
 
 from pantarhei.bridge.errors import UserError
 
-#: Running down the source's outside (not the bowl's): "dribble down its own side", "run down the outside".
-_DOWN = re.compile(r"\b(?:drip|dribbl|run|ran|trickl|roll|leak)\w* down (?:the |its |its own |their )?(?:outside|side|sides)\b"
+#: Running down the source's outside (not the bowl's): "dribble down its own side", "drip down the jar".
+_DOWN = re.compile(r"\b(?:drip|dribbl|run|ran|trickl|roll|leak)\w* down (?:the |its |its own |their )?"
+                   r"(?:outside|side|sides|jar|jug|bottle|cup|pot|pitcher|carton|can|kettle|spout|neck)\b"
                    r"(?! of (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|dish|destination)s?\b)")
 #: Once the pour is over: "after I stop pouring", "after I pour it", "afterwards", "at the end of the pour".
 _AFTER = re.compile(r"\b(?:after (?:(?:i|you|we|it|they|the \w+) (?:am |have |has |is |are )?(?:stop|stops|stopped|finish|finishes"
