@@ -96,6 +96,10 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     # "with the bowl staying exactly where it is", "with none spilling and the bowl staying put": so that it stays there
     (r"\b(?:with|(?<=ing )and) (it|them|the [a-z]+) (?:staying|remaining) (?=(?:exactly |right )?(?:where|put|still|in place|upright|steady)\b)",
      r"so that \1 stays "),
+    # goals listed as states after the pour wanted: "..., none left behind and none on the bench"
+    (r"(?:, |\band )(?:with )?(?:none|nothing) (?:is )?left behind\b", " so that none is left behind"),
+    (r"(?:, |\band )(?:with )?(?:none|nothing) (?=(?:on|onto) (?:the |my )?(?:table|bench|counter|countertop|floor|tablecloth|worktop)\b)",
+     " so that none goes "),
     # "keep the table totally clean": so that nothing spills
     (r"\bkeep(?:s|ing)? (?:the |my )?(?:table|counter|countertop|worktop|bench|floor|tablecloth|cloth)(?: (?:totally|completely"
      r"|perfectly|nice and|spotlessly))? (?:clean|dry|spotless)\b", "so that nothing spills"),

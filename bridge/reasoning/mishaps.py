@@ -62,7 +62,7 @@ _IF_HELPS = re.compile(r"^(?:so )?(?:if|what if) (?P<scene>[^,?]+?),? (?:would|w
                        r"(?:help|work|stop (?:it|that|this)|fix (?:it|that|this)|prevent (?:it|that|this)|solve (?:it|that|this)"
                        r"|be better)[?.! ]*$")
 #: A cause put as a yes or no of a scene: "is the bowl just too light?", "was it too high?".
-_TOO = re.compile(r"^(?:so )?(?:is|was) (?:it|that|the (?P<noun>[a-z]+)) (?:just |simply |maybe )?(?:too |because (?:it is|it was) (?:too )?)"
+_TOO = re.compile(r"^(?:so )?(?:is|was|am|were) (?:it|that|i|we|the (?P<noun>[a-z]+)) (?:just |simply |maybe )?(?:too |because (?:it is|it was) (?:too )?)"
                   r"(?P<value>light|heavy|slippery|bouncy|high|low|sticky|runny|full)(?: or (?:something|what))?[?.! ]*$")
 #: What splits the narrative's clauses, for the scene a cause is asked of.
 _CLAUSES = re.compile(r",? (?:and then|but then|and|but|then|so|until|because) |, | (?=(?:when|while|after|as soon as) )")
