@@ -88,12 +88,13 @@ SPEEDS: tuple[tuple, ...] = (
     ("; approach slowly", (r"re(slow|gradual|steadi):(?:(?<=all the way over )|(?<=right over ))(?:(?:very|really|too|quite|super) )?"
                            r"(?:slow(?:ly)?|gradually|steadily)\b(?! (?:than|as)\b)",)),
     # tipped fast or slowly: the move into the pouring pose, which tilts the source as it goes
-    ("approach fast", (rf"re(fast|quick|rapid):\b(?:tilt|tip)\w*{_TIPPED}(?: (?:very|really|too|quite))?"
-                       r" (?:fast|quick(?:ly)?|rapidly)\b(?! (?:than|as)\b)",
-                       r"re(fast|quick|rapid):\b(?:quickly|fast|rapidly) (?:tilt|tip)\w*\b")),
-    ("approach slowly", (rf"re(slow|gradual|steadi):\b(?:tilt|tip)\w*{_TIPPED}(?: (?:very|really|too|quite))?"
-                         r" (?:slow(?:ly)?|gradually|steadily)\b(?! (?:than|as)\b)",
-                         r"re(slow|gradual|steadi):\b(?:slowly|gradually|steadily) (?:tilt|tip)\w*\b")),
+    # (where it is tipped is where it pours: "tilt the jug slowly right over the bowl")
+    ("approach fast ; pour", (rf"re(fast|quick|rapid):\b(?:tilt|tip)\w*{_TIPPED}(?: (?:very|really|too|quite))?"
+                              r" (?:fast|quick(?:ly)?|rapidly)\b(?! (?:than|as)\b)",
+                              r"re(fast|quick|rapid):\b(?:quickly|fast|rapidly) (?:tilt|tip)\w*\b")),
+    ("approach slowly ; pour", (rf"re(slow|gradual|steadi):\b(?:tilt|tip)\w*{_TIPPED}(?: (?:very|really|too|quite))?"
+                                r" (?:slow(?:ly)?|gradually|steadily)\b(?! (?:than|as)\b)",
+                                r"re(slow|gradual|steadi):\b(?:slowly|gradually|steadily) (?:tilt|tip)\w*\b")),
     # a move that is quick by its verb: darted, zipped, flung in or out ("flings it over the bowl",
     # "darts right out again"): the move in or away, fast
     ("approach fast ; retreat fast ; pour", (rf"re(dart|zip|zoom|whizz):\b{_DASH}(?: it| the \w+| them)? in(?: and|,)?"
