@@ -12,7 +12,7 @@ from __future__ import annotations
 import re
 
 #: What asks its cause: "why?", "what went wrong", "what did I do wrong".
-CAUSE = re.compile(r"^(?:so |and |but )?(?:why|how come|what went wrong|what did (?:i|we) do wrong|what happened"
+CAUSE = re.compile(r"^(?:so |and |but )?(?:why|how come|what went wrong|what did (?:i|we) do wrong|what happened(?: there| here)?"
                     r"|what caused (?:that|this|it)|why did (?:that|this|it) happen|why is that|why (?:does|did) (?:that|this|it)"
                     r"(?: happen)?"
                     # one of two causes asked: "was it the weight or the angle?"

@@ -12,11 +12,10 @@ source ("does a heavy pot hit the bowl"), and a phase named asks of it
 follows an outcome, which the vocabulary cannot say: it is refused. A
 clause about what the person or the robot does ("do I tip the cup"), or
 how the source is held ("if the jug is tipped"), is no outcome; one
-supposed of a bowl ("if the bowl is moving") is refused. A goal
-said with the scene ("without spilling", "so that the cup does not touch
-the bowl") is what the person wants: an expectation that should hold (or,
-rarely, fail), for the answer to say whether the theory expects it and to
-point to `plan` for how; a clause joined to a goal by "but" or "and" is
+supposed of a bowl ("if the bowl is moving") is refused. A goal said with the scene
+("without spilling", "so that the cup does not touch the bowl") is what the person wants:
+an expectation that should hold (or, rarely, fail), for the answer to say whether the
+theory expects it and to point to `plan` for how; a clause joined to a goal by "but" or "and" is
 wanted too, with its own negation ("so nothing spills and the bowl stays
 put": the bowl still).
 
@@ -222,12 +221,13 @@ def _acts(subject: list[str], names: tuple[str, ...], m: re.Match | None = None)
     if names == ("source_clear",) and liquids().spans(head):   # "does the water hit the rim": no
         return True                                             # source hitting it
     if names in (STILL, ("destination_upright",)):      # "will they slide": the bowls
-        actors = actors - {"they"}
-    # "does the jug tip over": the source, held, neither tips over nor slides as the bowl does
+        actors = actors - {"they"}      # ("does the jug tip over": the source, held, neither tips over nor slides)
     held = names in (STILL, ("destination_upright",)) and m is not None and not _STRIKES.search(m.group(0)) and any(
         w == "source" or (in_the_source(w) and not re.search(rf"\binto (?:\w+ )?(?:\w+ )?{w}\b", m.string))
         for w in head if w not in ("of", "the", "a", "an"))     # ("the jug knocks the bowl over": the bowl)
-    return bool(actors.intersection(subject)) or held or bool(_around().spans(subject))
+    liquid = liquids().spans(subject)       # ("pancake batter": a liquid's name, not a pancake)
+    return bool(actors.intersection(subject)) or held or any(not any(a <= s and e <= b for a, b in liquid)
+                                                             for s, e in _around().spans(subject))
 
 
 @lru_cache(maxsize=None)

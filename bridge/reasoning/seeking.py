@@ -25,7 +25,7 @@ from pantarhei.bridge.reasoning.speeds import POURING_SPEED
 from pantarhei.bridge.reasoning.vessels import destinations, liquids
 
 #: A value asked with "how": "how high", "how far from the centre".
-_HOW = (r"(?:(?:far|close|near) (?:from|to) the (?:centre|center|middle|side|edge|rim)(?: of (?:the )?[a-z]+)?|high|low|far|fast|quick|quickly|slow|slowly|steep|steeply|much|close|near"
+_HOW = (r"(?:(?:far|close|near) (?:from|to) the (?:centre|center|middle|side|edge|rim)(?: of (?:the )?[a-z]+)?|high|low|far|fast|quick|quickly|slow|slowly|steep|steeply|much|close|near|heavy|light"
         r"|tilted|full)")
 #: A value that is asked for ("the best height"), not said ("medium height").
 _BEST = (r"(?:best|right|ideal|optimal|safest|correct|perfect|proper|max|maximum|min|minimum"
