@@ -21,14 +21,14 @@ _GLIDE = (r"(?:swing(?:s|ing)?|swung|swoop\w*|glid(?:e|es|ed|ing)|sweep(?:s|ing)
 
 #: Someone pouring, done or finished with it: "when I'm done pouring", "once she has finished pouring",
 #: "after the jar stops pouring", "after I'm done tipping".
-_DONE = (r"(?: (?!(?:and|then|but|or|pour\w*)\b)\w+){0,2} (?:(?:done|finished|through)(?: with(?: the)?)?"
+DONE = (r"(?: (?!(?:and|then|but|or|pour\w*)\b)\w+){0,2} (?:(?:done|finished|through)(?: with(?: the)?)?"
          r"|(?:finish|finishes|stop|stops|stopped)(?: to)?) (?:pour(?:s|ed|ing)?|tipping|tilting)\b")
 
 MOVES: tuple[tuple, ...] = (
     # done pouring: after the pour ("when I'm done pouring, pull it away fast"); a move away said
     # before it is done is the move away, as the vocabulary's pour ends when the source moves away
-    ("after pour", (rf"re(done|finish|through|stop):\b(?:when|once|after|as soon as){_DONE}",)),
-    ("hedge", (rf"re(done|finish|through|stop):\b(?:before|until){_DONE}",),
+    ("after pour", (rf"re(done|finish|through|stop):\b(?:when|once|after|as soon as){DONE}",)),
+    ("hedge", (rf"re(done|finish|through|stop):\b(?:before|until){DONE}",),
      "read as nothing: the vocabulary's pour ends when the source moves away; how much is poured by then is not said"),
     # where the pour itself starts is where it pours, not the start pose before the move in
     ("pour", (r"re(starts|begins|happens|takes place):\bthe pour(?:ing)? (?:starts|begins|happens|takes place)(?= (?:at|from)\b)",)),

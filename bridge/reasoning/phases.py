@@ -29,6 +29,7 @@ from __future__ import annotations
 import re
 
 from pantarhei.bridge.reasoning.cued import Cued
+from pantarhei.bridge.reasoning.moves import DONE
 from pantarhei.bridge.reasoning.vessels import liquids
 
 STILL = ("destination_still_approach", "destination_still_retreat", "destination_still_settle")
@@ -54,9 +55,8 @@ _PHASES = (
      r"|settling|comes to rest|is coming to rest)\b|(?:during|in) the settl(?:e|ing)(?: phase| stage)?\b"),
     (("destination_still_retreat", "destination_still_settle"),      # after the pour: the move away and after
      r"afterwards?\b|after (?:the )?pour(?:ing)?\b(?! (?:ends|is over|is done|has ended|finishes)\b)"
-     # done pouring: "after I'm done pouring", "once the jar stops pouring"
-     r"|(?:after|once) (?:\w+ ){0,2}(?:(?:done|finished|through)(?: with(?: the)?)?"
-     r"|finish|finishes|stop|stops|stopped)(?: to)? (?:pour(?:s|ed|ing)?|tipping|tilting)\b"),
+     # done pouring: "after I'm done pouring", "once the jar stops pouring" (moves.py's)
+     rf"|(?:after|once){DONE}"),
     (None,      # after the move away: by then, every phase is past
      rf"(?:after|once) {_WHO} (?:is|gets?|has been) (?:taken|moved|pulled|drawn) away\b"
      rf"|(?:after|once) {_WHO} (?:goes|moves|has gone|has moved|pulls) away\b|after the retreat\b"
