@@ -55,8 +55,6 @@ def _names(text: str) -> list[str]:
     return sorted(n for n in text.split(",") if n)
 
 
-
-
 def measure(path: Path) -> dict:
     full = hasattr(reading, "read_question")
     counts = {"questions": 0, "expressible": 0, "read as meant": 0, "refused though expressible": 0,
@@ -76,9 +74,10 @@ def measure(path: Path) -> dict:
                 counts["refused though expressible"] += 1
                 wrong.append(f"refused (expressible): {question}  -- {e}")
             continue
-        if full and dropped_words(question, heard):
+        lost = dropped_words(question, heard) if full else []
+        if lost:
             counts["silent drops"] += 1
-            wrong.append(f"dropped {dropped_words(question, heard)}: {question}")
+            wrong.append(f"dropped {lost}: {question}")
         if meant is None:
             counts["misread"] += 1
             wrong.append(f"answered (cannot be said) as {scene}: {question}")
