@@ -70,11 +70,18 @@ class Matcher:
     looking the words up (no regular expression to compile: `ask` reads
     one question and exits). `before`: phrases that may stand before one
     of these as part of its name ("a milk carton"); `glass_before`:
-    phrases before which "glass" is what a bowl is made of ("a glass jug")."""
+    phrases before which "glass" is what a bowl is made of ("a glass jug");
+    `held`: phrases of `before` that are read with the name, as what the
+    container holds, each with the words it is read as ("the honey jar": a
+    sticky liquid), before `read_as` (the section's words), unless a phrase
+    of `apart` is said apart from the name ("water from the honey jar": water)."""
 
-    def __init__(self, phrases, before=(), glass_before=()):
+    def __init__(self, phrases, before=(), glass_before=(), held=None, read_as=(), apart=()):
         self.table = frozenset(f for p in phrases for f in forms(p))
         self.before = frozenset(f for p in before for f in forms(p))
+        self.held = {f: words for p, words in (held or {}).items() for f in forms(p)}
+        self.read_as = tuple(read_as)
+        self.apart = frozenset(f for p in apart for f in forms(p))
         self.glass_before = frozenset(f for p in glass_before for f in forms(p))
         self.longest = max(map(len, self.table | self.before | self.glass_before), default=0)
         # the words a phrase may begin with: a word that begins none is passed at once
@@ -87,8 +94,9 @@ class Matcher:
                 return n
         return 0
 
-    def spans(self, words: list[str]) -> list[tuple[int, int]]:
-        """(first, end) of each phrase in `words`, left to right, the longest first."""
+    def spans(self, words: list[str]) -> list[tuple]:
+        """(first, end) of each phrase in `words`, left to right, the longest
+        first; (first, end, its own words) for a name read with what it holds."""
         out, i = [], 0
         while i < len(words):
             if words[i] not in self.firsts:
@@ -101,11 +109,22 @@ class Matcher:
             if not m and words[i] == "glass" and self._at(self.glass_before, words, i + 1):
                 m = 1
             if m:
-                out.append((i, i + n + m))
+                held = self.held.get(tuple(words[i:i + n])) if n else None
+                if held and not self._said_apart(words, i, i + n + m):
+                    out.append((i, i + n + m, held + self.read_as))
+                else:
+                    out.append((i, i + n + m))
                 i += n + m
             else:
                 i += 1
         return out
+
+
+    def _said_apart(self, words: list[str], first: int, end: int) -> bool:
+        """Whether a phrase of `apart` is said outside words[first:end]."""
+        rest = words[:first] + ["."] + words[end:]
+        return any(tuple(rest[k:k + n]) in self.apart
+                   for k in range(len(rest)) for n in range(1, self.longest + 1))
 
 
 def plural(phrase: str) -> str:

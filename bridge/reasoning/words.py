@@ -363,17 +363,19 @@ FILLERS = frozenset("""
 """.split())
 
 def _everyday() -> list[tuple[Matcher, str, str]]:
-    """(matcher, the words it is read as, what is said back) for each
-    section of the everyday word list: a liquid's or a context noun's name
-    before a container's is part of its name ("a milk carton"), and
-    "glass" before a container or what is around is what it is made of ("a glass
-    jug", "a glass table")."""
-    out = []
+    """(matcher, the words it is read as, what is said back) for each section of the everyday
+    word list: a liquid's or a context noun's name before a container's is part of its name
+    ("a milk carton"), a sticky or heavy liquid's also read as what it holds when no other
+    liquid is said ("the honey jar"), and "glass" before a container or what is around is
+    what it is made of ("a glass jug", "a glass table")."""
+    out, held = [], {p: tuple(s.words.split()) for s in sections()
+                     if s.words in ("sticky liquid", "heavy liquid") for p in s.phrases}
     for s in sections():
         if s.words == "material":
             matcher = Matcher(s.phrases, glass_before=names("bowl", "context"))
         elif s.words.startswith("bowl"):        # a bowl, or one poured from (nouns.py)
-            matcher = Matcher(s.phrases, before=names("liquid", "context"))
+            matcher = Matcher(s.phrases, before=names("liquid", "context"), held=held,
+                              read_as=("bowl",), apart=names("liquid"))
         else:
             matcher = Matcher(s.phrases)
         words = {"unclear": UNCLEAR, "bowl poured from": "bowl"}.get(s.words, s.words)
