@@ -30,9 +30,9 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
+from pantarhei.bridge.reasoning.acting import acts, around, staying
 from pantarhei.bridge.reasoning.asked_without import without_asked
 from pantarhei.bridge.reasoning.cued import Cued
-from pantarhei.bridge.reasoning.everyday import Matcher, names
 from pantarhei.bridge.reasoning.nouns import poured_from
 from pantarhei.bridge.reasoning.outcome_verbs import ALL_IN as _ALL_IN, OUTCOMES
 from pantarhei.bridge.reasoning.flow_rates import rates, refuse_alone
@@ -54,13 +54,6 @@ _CLAUSE = re.compile(r"[,;:.!?]|\b(?:if|when|while|and|but|so|or|then|what|wheth
 _WHOLE = {*"nothing none no every each drop drops droplet droplets bit single last whole shot lot".split()}
 #: How little of the liquid a goal excludes: "without a single drop spilling", "any droplets".
 _DROPS = r"(?:drop|droplet|bit|speck|trace|splash)s? "   # a goal's how much: not the scene's
-#: Who acts: a clause with one of these in its subject says what is done, not what happens
-#: ("do I tip the cup"); the source moving is the scene's too ("does the source move slowly").
-_ACTORS = {"i", "we", "you", "robot", "arm", "gripper", "hand", "he", "she", "they"}
-#: Verbs of one body striking another over: "knocks the bowl over", "pushes it over".
-_STRIKES = re.compile(r"\b(?:knock|push|shov)")
-#: What holds the source: it hitting the bowl is the source hitting it ("does the arm hit the bowl").
-_HOLDING = {"robot", "arm", "gripper", "hand"}
 #: The words that may follow an outcome's verb and are heard with it ("drip on the
 #: table", "spill out of the cup", "go into the bowl"): the scene's words stay the scene's.
 _REST = ("each other|one another|at all times|all the time|the whole time|at any point|at any time|throughout|on|onto|over|out|of|in(?! one go\\b)|into|inside|outside|the|a|an|table|tablecloth|floor|counter|countertop|worktop|bench|stove|tray|top|"
@@ -192,50 +185,6 @@ def _sits(m: re.Match, k: int) -> bool:
             r"\bhow much (?:of (?:the |it )?)?(?:[a-z]+ )?(?:is |will |would |does |do |did )?$", before))
 
 
-def _staying(names: tuple[str, ...], said: str, subject: list[str], left: bool = False) -> tuple[str, ...]:
-    """What staying (`said`: "stay put", "stay there") asks of `subject`:
-    the liquid staying put stays in the bowl it entered; the bowl staying
-    there stays still; staying inside, no bowl said, asked beside leaving
-    the source (`left`: "does it come out of the jar or stay inside"),
-    stays in the source; anything else, `names`."""
-    if left and names == (*_ALL_IN, "liquid_remains_in_destination") and re.search(r"\b(?:in|inside)$", said.strip()):
-        return ("liquid_leaves_source",)
-    if not re.match(r"(?:stay|stays|remain|remains|keep|keeps|be|is)\b", said) \
-            or not re.search(r"\b(?:put|there|in place|where (?:it|they))\b", said):
-        return names
-    if names == STILL and liquids().spans(subject):
-        return (*_ALL_IN, "liquid_remains_in_destination")
-    if names != STILL and re.search(rf"\b(?:{destinations()})\b", " ".join(subject)):
-        return STILL
-    return names
-
-
-def _acts(subject: list[str], names: tuple[str, ...], m: re.Match | None = None) -> bool:
-    """Whether a clause with `subject` says what is done rather than what
-    happens, or what happens to something the scene does not hold ("is
-    the table wobbly": everyday.txt's context nouns)."""
-    actors = (_ACTORS - _HOLDING if names == ("source_clear",) or (names == ("destination_upright",) and m is not None
-              and _STRIKES.search(m.group(0))) else _ACTORS)           # what holds the source knocks the bowl over with it
-    actors = set() if "no_spill" in names else actors     # "will I spill?": whoever spills, it spills
-    head = subject[:subject.index("of")] if "of" in subject else subject     # "the jug of water"
-    if names == ("source_clear",) and liquids().spans(head):   # "does the water hit the rim": no
-        return True                                             # source hitting it
-    if names in (STILL, ("destination_upright",)):      # "will they slide": the bowls
-        actors = actors - {"they"}      # ("does the jug tip over": the source, held, neither tips over nor slides)
-    held = names in (STILL, ("destination_upright",)) and m is not None and not _STRIKES.search(m.group(0)) and any(
-        w == "source" or (in_the_source(w) and not re.search(rf"\binto (?:\w+ )?(?:\w+ )?{w}\b", m.string))
-        for w in head if w not in ("of", "the", "a", "an"))     # ("the jug knocks the bowl over": the bowl)
-    liquid = liquids().spans(subject)       # ("pancake batter": a liquid's name, not a pancake)
-    return bool(actors.intersection(subject)) or held or any(not any(a <= s and e <= b for a, b in liquid)
-                                                             for s, e in _around().spans(subject))
-
-
-@lru_cache(maxsize=None)
-def _around() -> Matcher:
-    """The context nouns of the everyday word list: what is around a pour."""
-    return Matcher(names("context"))
-
-
 def _state(m: re.Match) -> bool:
     """Whether an asked clause says how full the source is, or how it is
     held, not what happens: "the jug is almost empty", "if the jug is
@@ -270,9 +219,9 @@ def hear(text: str) -> Heard:
     def as_goal(m: re.Match) -> str:
         subject = (m.group("gsub") or m.group("gwho") or m.group("gbef") or m.group("gwith") or "").split()
         names, bad = _which(m)
-        names = _staying(names, next(v for g, v in m.groupdict().items() if g[0] == "v" and v), subject)
+        names = staying(names, next(v for g, v in m.groupdict().items() if g[0] == "v" and v), subject)
         last[:] = subject
-        if _acts(subject, names, m):
+        if acts(subject, names, m):
             return m.group(0)
         negated = (m.group(0).startswith(("without", "before")) or bool(m.group("gnot"))
                    or any(w in ("nothing", "none", "no", "never") for w in subject))
@@ -285,16 +234,17 @@ def hear(text: str) -> Heard:
 
     def as_asked(m: re.Match) -> str:
         subject = likely((m.group("subject") or m.group("csubject") or "").split())[0]   # "be less likely to"
-        names = _staying(_which(m)[0], next(v for g, v in m.groupdict().items() if g[0] == "v" and v), subject,
+        names = staying(_which(m)[0], next(v for g, v in m.groupdict().items() if g[0] == "v" and v), subject,
                          "liquid_leaves_source" in asked)
         last[:] = subject
         # "the table is wobbly": the subject before its verb, not the scene's
         before = m.string[:m.start()].split()[-3:] if not subject else []
         # "don't tip it out": an imperative, not a question
-        imperative = bool(m.group("neg")) and not subject and m.group("aux") in ("do", "does")
+        imperative = bool(m.group("neg")) and not subject and m.group("aux") == "do" and not re.search(
+            r"\b(?:bowl|it|they|[a-z]+s)\s*$", _CLAUSE.split(m.string[:m.start()])[-1])    # ("the bowls do not tip": said)
         lead = _CLAUSE.split(m.string[:m.start()])[-1].split() if m.group("aux") in ("is", "are", "was", "were") else []
         tipped = names == ("destination_upright",) and containers().spans(lead) and not {"bowl", "destination"} & {*lead}
-        if _acts(lead + subject, names, m) or _around().spans(before) or _state(m) or imperative or tipped:
+        if acts(lead + subject, names, m) or around().spans(before) or _state(m) or imperative or tipped:
             return m.group(0)
         if lead and not subject and re.search(rf"\bif {re.escape(' '.join(lead))} *$", m.string[:m.start()]):
             raise UserError(f'"if {" ".join(lead)} {m.group(0).strip()}" {FOLLOWS}')    # "if the bowl is moving"
@@ -333,7 +283,7 @@ def hear(text: str) -> Heard:
         names, bad = _which(m)
         said = re.sub(rf"^outcome{_ONCE} ?{_JOINED}? ?(?:(?:will|does|do|would|even) )?", "", m.group(0))
         own = re.match(r"(?:it|the \w+) ", said)
-        names = _staying(names, said[own.end():] if own else said, own.group(0).split() if own else last,
+        names = staying(names, said[own.end():] if own else said, own.group(0).split() if own else last,
                          not was_goal and "liquid_leaves_source" in asked)
         if was_goal:                  # wanted as the one before it: "without spilling or tipping"
             # ("so that it goes in instead of spilling": not as the one before; "and never tips": negated)

@@ -343,7 +343,7 @@ READ_TOO = {
     'pour from a jug made of steel': [],
     'pour from a light plastic cup': ['light_source'],
     'pour red wine from a heavy red jug': ['heavy_source'],
-    'pour from the honey jar into a cereal bowl': [],
+    'pour from the honey jar into a cereal bowl': ['sticky_liquid'],
     'pour from a heavy thermos': ['heavy_source'],
     'pour from the spout of a heavy jug': ['heavy_source'],
     'pour milk into a light bowl on the kitchen table': ['light_destination'],
