@@ -15,11 +15,16 @@ from pantarhei.bridge.errors import UserError
 _DOWN = re.compile(r"\b(?:drip|dribbl|run|ran|trickl|roll|leak)\w* down (?:the |its |its own |their )?"
                    r"(?:outside|side|sides|jar|jug|bottle|cup|pot|pitcher|carton|can|kettle|spout|neck)\b"
                    r"(?! of (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|dish|destination)s?\b)")
-#: Once the pour is over: "after I stop pouring", "after I pour it", "afterwards", "at the end of the pour".
+#: Once the pour is over: "after I stop pouring", "after I pour it", "afterwards", "at the end of the pour",
+#: the source tipped back.
 _AFTER = re.compile(r"\b(?:after (?:(?:i|you|we|it|they|the \w+) (?:am |have |has |is |are )?(?:stop|stops|stopped|finish|finishes"
                     r"|finished|done)(?: (?:pour\w*|tipping|tilting))?|(?:i |you |we )?pour(?:ing|ed|s)?(?: it)?\b|the pour(?:ing)?"
                     r" (?:is over|ends|has ended)|the pour\b(?! (?:starts|begins)))|afterwards?|once (?:i |you |we )?(?:am |have )?"
-                    r"(?:stop\w*|finish\w*|done)|at the end of the pour)")
+                    r"(?:stop\w*|finish\w*|done)|at the end of the pour"
+                    # "when you stop pouring", "when I tip it back upright", "... the bottle after?"
+                    r"|when (?:i |you |we |it |they )?(?:am |are |is )?(?:stop|stops|stopped|finish\w*|done)\b"
+                    r"|(?:tip|tips|tipped|tilt|tilts|tilted|turn|turns|bring|brings|set|sets|put|puts) (?:it |them |the \w+ )?back"
+                    r"(?: up| upright| down)?\b|\bafter(?= *[?.!]* *$))")
 
 
 def refuse_drips_after(text: str) -> None:
