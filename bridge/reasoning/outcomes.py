@@ -108,7 +108,8 @@ def _patterns() -> tuple[re.Pattern, ...]:
     chance = r"(?P<chance>(?:chance|chances|probability|likelihood|odds|risk)(?: of| that)?)"
     asked = re.compile(
         rf"(?<!that )(?<!which )\b(?:(?P<aux>{_AUX})(?P<neg> not)?{subject}|(?P<quant>how much(?: of (?:it|the \w+))?(?: \w+)?"
-        rf"|{_SHARE}|anything|something|everything|nothing|any (?:liquid|water)|all of it|it all)"
+        rf"|{_SHARE}|anything|something|everything|nothing|any (?:liquid|water)|it all"
+        rf"|(?:all|any|some|none|most|much|half|a lot) of (?:it|them|the [a-z]+))"
         rf"|{chance}{subject.replace('<subject>', '<csubject>')})"
         rf" (?:(?:all|any|ever|even|still|not) ){{0,2}}(?:(?:end|ends|ended) up )?(?:{verbs})\b{end}"
         rf"(?P<odds> (?:very |really |quite |too )?(?:high|low|big|small|great|likely|unlikely)\b)?(?: or not\b)?")
