@@ -4,17 +4,27 @@ ordinary one), asked without a goal, is two questions: it is refused,
 asking for one of them, as "high or low" is (reading.py), where the first
 would otherwise be read alone and the second, the ordinary liquid, said
 nothing of. With a goal ("I want none on the table: honey or water?")
-the goal is what is asked, and it is left to the reader."""
+the goal is what is asked, and it is left to the reader. Two liquids set
+against each other ("pouring water vs pouring olive oil, which drips
+more?") that the vocabulary reads as one value are refused: it cannot
+tell the two pours apart."""
 from __future__ import annotations
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.everyday import sections
-from pantarhei.bridge.reasoning.two_liquids import chosen_liquids, liquid_values
+from pantarhei.bridge.reasoning.two_liquids import chosen_liquids, liquid_values, set_against_liquids
 
 
 def refuse_choice(text: str) -> None:
-    """UserError where `text` (normalised) chooses between two liquids read as different values, with no goal."""
+    """UserError where `text` (normalised) chooses between two liquids read as different values, with no goal,
+    or sets against each other two read as one."""
     value = liquid_values()
+    against = set_against_liquids(text)
+    if against and sections()[value[against.group(1)]].words == sections()[value[against.group(2)]].words:
+        said = sections()[value[against.group(1)]].said_back.removeprefix("read as ").split(":")[0] or "an ordinary liquid"
+        raise UserError(f"\"{against.group(0)}\": both are read as {said}, so the vocabulary cannot tell the two "
+                        f"pours apart: ask about one of them, or set against it a liquid it reads otherwise "
+                        f"(\"honey vs water\")")
     m = chosen_liquids(text)
     if m is None or sections()[value[m.group(1)]].words == sections()[value[m.group(2)]].words:
         return                                  # "water or milk": both read as an ordinary liquid

@@ -1,5 +1,6 @@
 """Where a question chooses between two liquids by name ("honey or water",
-"milk or oil"): the phrases of the everyday word list that name a liquid,
+"milk or oil"), or sets them against each other ("pouring water vs
+pouring olive oil"): the phrases of the everyday word list that name a liquid,
 and the value (the list's section) each is read as. choices.py refuses
 such a choice without a goal; compared_or.py leaves it to choices.py."""
 from __future__ import annotations
@@ -11,8 +12,9 @@ from pantarhei.bridge.reasoning.everyday import sections
 
 
 @lru_cache(maxsize=None)
-def _liquids() -> tuple[re.Pattern, dict[str, int]]:
-    """The phrases naming a liquid, as one pattern, and the section (the value) each is read as."""
+def _liquids() -> tuple[re.Pattern, dict[str, int], re.Pattern]:
+    """The phrases naming a liquid, chosen between as one pattern, the
+    section (the value) each is read as, and two set against each other."""
     value: dict[str, int] = {}
     for k, s in enumerate(sections()):
         if s.words.endswith("liquid") and s.said_back != "read as the liquid poured":
@@ -20,12 +22,18 @@ def _liquids() -> tuple[re.Pattern, dict[str, int]]:
                 value.setdefault(p, k)
     names = "|".join(re.escape(p) for p in sorted(value, key=lambda p: (-len(p), p)))
     said = rf"(?:a |an |some |plain |the )?({names})s?"
-    return re.compile(rf"\b{said} ?,? or {said}\b"), value
+    return re.compile(rf"\b{said} ?,? or {said}\b"), value, re.compile(
+        rf"\b(?:pouring |pour )?{said} ?,? (?:vs\.?|versus|compared (?:to|with)|against) (?:pouring |pour )?{said}\b")
 
 
 def chosen_liquids(text: str) -> re.Match | None:
     """Where `text` (normalised) chooses between two liquids ("honey or water"), or None."""
     return _liquids()[0].search(text)
+
+
+def set_against_liquids(text: str) -> re.Match | None:
+    """Where `text` (normalised) sets two liquids against each other ("water vs olive oil"), or None."""
+    return _liquids()[2].search(text)
 
 
 def liquid_values() -> dict[str, int]:
