@@ -107,7 +107,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
     # the odds of an outcome: "what is the chance the bowl tips", "the risk of spilling"
     chance = r"(?P<chance>(?:chance|chances|probability|likelihood|odds|risk)(?: of| that)?)"
     asked = re.compile(
-        rf"(?<!that )(?<!which )\b(?:(?P<aux>{_AUX})(?P<neg> not)?{subject}|(?P<quant>how much(?: of (?:it|the \w+))?(?: \w+)?"
+        rf"(?<!that )(?<!which )\b(?:(?P<aux>{_AUX})(?P<neg> not)?{subject}|(?P<quant>how much(?: of (?:it|the [a-z]\w*))?(?: [a-z]\w*)?"
         rf"|{_SHARE}|anything|something|everything|nothing|any (?:liquid|water)|it all"
         rf"|(?:all|any|some|none|most|much|half|a lot) of (?:it|them|the [a-z]+))"
         rf"|{chance}{subject.replace('<subject>', '<csubject>')})"
@@ -259,7 +259,7 @@ def hear(text: str) -> Heard:
         clauses.append(names)
         # "does much stay in the jug", "will some milk spill": how much of the liquid the
         # outcome is asked of, not how much the source holds
-        while subject and subject[0] in _QUANTIFIERS | {"there", "be", "gonna", "going", "to"}:     # ("is there gonna be some left")
+        while subject and subject[0] in _QUANTIFIERS | {"there", "be", "gonna", "going", "to", "still"}:     # ("is there gonna be some left")
             subject = subject[1:]
         kept = " ".join(striker(subject, names, m, m.group("aux") in _MODALS.split("|"))) if m.group("aux") or m.group("chance") else ""
         # "is the chance of spilling high": the odds, heard; "does it splash high": the scene's

@@ -103,6 +103,9 @@ def _number(word: str) -> bool:
 #: What a bowl stands on, and the words that say it grips or does not.
 _SURFACES = {"table", "tables", "counter", "counters", "countertop", "worktop", "benchtop", "bench",
              "tabletop", "bar", "bartop", "conveyor", "conveyors", "tray", "workbench"}
+#: What a bowl may stand on that is a liquid's name or no table: a surface only after "on"
+#: ("sitting on wet concrete", "on a wet floor").
+_GROUND = {"concrete", "cement", "floor", "ground", "marble", "granite", "stone", "tile", "tiles", "slab", "lino"}
 #: The word that may end its name: "a wet bar top", "a slick conveyor belt".
 _ENDS = {"top", "tops", "belt", "belts"}
 _GRIP = {"slippery": "slippery", "slick": "slippery", "slippy": "slippery", "greasy": "slippery", "smooth": "slippery",
@@ -123,7 +126,9 @@ class Surfaces:
     def spans(self, words: list[str]) -> list[tuple[int, int, tuple[str, ...]]]:
         out: list[tuple[int, int, tuple[str, ...]]] = []
         for i, w in enumerate(words):
-            if w not in _SURFACES or (out and i < out[-1][1]) or words[i + 1:i + 2] == ["of"]:   # "a bar of soap"
+            if w not in _SURFACES | _GROUND or (out and i < out[-1][1]) or words[i + 1:i + 2] == ["of"]:   # "a bar of soap"
+                continue
+            if w in _GROUND and "on" not in words[max(0, i - 3):i]:    # "pour wet concrete": the liquid
                 continue
             if i > 0 and words[i - 1] in _GRIP:                            # "a slick table", "a wet bar top"
                 end = i + 2 if i + 1 < len(words) and words[i + 1] in _ENDS else i + 1
