@@ -76,7 +76,9 @@ COMPARISONS: tuple[tuple, ...] = (
      "read as nothing: the scene compared with is not read, the answer is for the one said"),
     # a scene set against another with "vs" ("silicone bowl vs enamel bowl", "at 30 cm vs 5 cm"):
     # the other not read, up to where its clause ends
-    ("hedge", (rf"re(vs|versus):\b(?:{VERSUS})\b" r"\.? [^,;:.!?]+?(?= *(?:[,;:.!?]| - )|$)",),
+    # (nor past an outcome asked, or the clause that says when: "... be less likely to slide when I
+    # pour the water in quickly" is the scene's, said of both)
+    ("hedge", (rf"re(vs|versus):\b(?:{VERSUS})\b" r"\.? [^,;:.!?]+?(?= *(?:[,;:.!?]| - )|$| outcome\b| (?:when|while|once|if) (?:i|we|you|the|it)\b)",),
      "read as nothing: the scene compared with is not read, the answer is for the one said first"),
     # not too high (or low): the height next to it toward the middle of the scale, as "neither too
     # high nor too low" is (words.py); not too fast or heavy is already the ordinary pour's
