@@ -32,8 +32,8 @@ BODIES: tuple[tuple, ...] = (
     ("little", ("a few drops of", "a few drops", "a drop of", "a drop")),
     # a weight said as a compound: "a lightweight paper bowl", "a hefty jug"; or as next to
     # nothing
-    ("is light", (r"re:\bweigh(?:s|ed|ing)? (?:next to|almost|practically|virtually|hardly|barely)"
-                  r" (?:nothing|anything)\b",)),
+    ("is light", (r"re:\bweigh(?:s|ed|ing)? (?:(?:hedge|basically|pretty much|like|just) )?(?:(?:next to|almost|practically"
+                  r"|virtually|hardly|barely) (?:nothing|anything)|nothing)\b",)),
     ("is heavy", (r"re:\bweigh(?:s|ed|ing)? (?:a lot|a ton|tons|loads|plenty)\b",)),
     # surfaces that grip or do not: a non-stick pan is slippery, a non-slip bowl grippy
     ("slippery", (r"re:\bnon ?stick\b", "teflon")),

@@ -26,6 +26,9 @@ NEARNESS: tuple[tuple, ...] = (
     # where the vocabulary's places do not reach
     ("near the rim", (r"re(near side|near edge|near rim|near lip):\b(?:the |its )?near (?:side|edge|rim|lip)(?: of (?:the |its )?"
                       r"(?:destination|bowl))?\b",)),
+    # poured into one side of the bowl, or from right above its edge: over its edge
+    ("near the rim", (r"re(one side|right above|directly above|right over):\b(?:in|into|onto) one side of (?:it|the (?:destination|bowl))\b"
+                      r"|\b(?:right|directly) (?:above|over) (?:the |its )?(?:destination |bowl )?(?:edge|rim|lip)\b(?! of\b)",)),
     (UNCLEAR, (r"re(far side|far edge|far rim|far lip|opposite):\b(?:the |its )?(?:far|opposite) (?:side|edge|rim|lip)"
                r"(?: of (?:the |its )?(?:destination|bowl))?\b",)),
     # poured from close, with no bowl said: just above it ("pour from close up")

@@ -21,7 +21,7 @@ from functools import lru_cache
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.goal_lists import goal_list
 from pantarhei.bridge.reasoning.goal_wordings import VALUE as _VALUE, WANTING as _WANTING
-from pantarhei.bridge.reasoning.speeds import POURING_SPEED
+from pantarhei.bridge.reasoning.speeds import POURING_SPEED, SPEED_LAST
 from pantarhei.bridge.reasoning.vessels import destinations, liquids
 
 #: A value asked with "how": "how high", "how far from the centre".
@@ -230,13 +230,15 @@ _WANTING_CUED = (
 #: A speed asked of pouring itself ("what pour speed", "what speed should I pour at"), which
 #: the vocabulary has none of (the moves in and away have): no value a plan finds.
 _POURING_SPEED = Cued(POURING_SPEED, ("speed", "rate", "pace", "velocity"))
+_SPEED_LAST = re.compile(SPEED_LAST)
 
 
 def sought(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` without the words that ask for a value, and those words
     (to be called only where a goal is said); a speed of pouring is left
     for the scene, which refuses it."""
-    found = [_value_asked(m) for m in _asking().finditer(text) if _POURING_SPEED.search(m.group(0)) is None]
+    found = [_value_asked(m) for m in _asking().finditer(text) if _POURING_SPEED.search(m.group(0)) is None
+             and _SPEED_LAST.match(text, m.start()) is None]
     said = tuple(text[start:end].strip() for start, end in found)
     for start, end in reversed(found):
         text = f"{text[:start]} {text[end:]}"

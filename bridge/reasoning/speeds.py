@@ -18,6 +18,8 @@ from pantarhei.bridge.reasoning.everyday import UNCLEAR
 POURING_SPEED = (r"\b(?:speed|rate|pace|velocity)s? (?:(?:of|for) |(?:(?:should|do|can|could|would|must|shall)"
                  r" (?:i|we|you|one|it|they|the robot) )?(?:to )?)pour\w*\b(?! (?:it |them |the \w+ )?(?:in|away|out)\b)"
                  r"|\bpour(?:ing)? (?:speed|rate|pace|velocity)\b")
+#: A speed asked last, of no move: "goal: no splashing. what height and speed?" (pouring's).
+SPEED_LAST = r"\b(?:what|which) (?:[a-z]+ (?:and|or|n) )?(?:speed|rate|pace|velocity)(?= *[?.!]* *$)"
 
 #: How a tilt is made, said beside its speed ("a slow steady tilt"): its speed is what is read.
 _MANNER = r"(?:steady|smooth|gentle|careful|even|controlled|gradual|slow|fast|quick|sharp|sudden|rapid)"
@@ -32,7 +34,7 @@ _TIPPED = rf"(?: (?:{_NOT_TIPPED}\w+ ){{0,6}}?{_NOT_TIPPED}\w+)?"
 
 SPEEDS: tuple[tuple, ...] = (
     # a speed asked of pouring itself: refused, pouring has no speed of its own
-    (UNCLEAR, (rf"re(speed|rate|pace|velocit):{POURING_SPEED}",)),
+    (UNCLEAR, (rf"re(speed|rate|pace|velocit):{POURING_SPEED}|{SPEED_LAST}",)),
     # a speed said with "speed": "at high speed" is fast, "at a slow speed" slowly (a pour
     # said so is refused below: pouring has no speed)
     ("fast", (r"re(speed|velocity|pace):\b(?:at |with )?(?:a |full |top )?(?:high|great|full|top|fast|quick|rapid|max(?:imum)?)"

@@ -44,7 +44,8 @@ def misspelt(words: list[str]) -> list[str]:
 #: Phrasings that would be read, for words that could not be placed: (pattern
 #: of the words as written, what to say).
 HINTS: tuple[tuple[str, str], ...] = (
-    (r"\bpour\w*\b.*\b(?:slow|fast|quick|gentl|careful|rapid|speed|velocity|pace)|\b(?:speed|rate|pace|velocity)\b.*\bpour",
+    (r"\bpour\w*\b.*\b(?:slow|fast|quick|gentl|careful|rapid|speed|velocity|pace)|\b(?:speed|rate|pace|velocity)\b.*\bpour"
+     r"|^(?:what |which )?(?:[a-z]+ (?:and|or|n) )?(?:speed|rate|pace|velocity)$",
      'pouring has no speed of its own: say how fast the source moves in or away ("move in '
      'slowly", "move away fast")'),
     (r"\b(?:not|without)\b.*\b(?:tilt|tip|lean)",
