@@ -246,10 +246,13 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
         if len(others) == 1:
             out.append(others[0])
             continue
-        far = dim in at_all and opposite(names, vocab.dimensions[dim].values)
-        if far:                                  # "not heavy at all": the other end, said back
+        # "not heavy at all", and a body's plain "isn't heavy" (not "too", "very"): the other end, said back
+        plain = vocab.dimensions[dim].role == "context" and not {"too", "veri", "that", "so", "overli"} & {
+            w for n, p in accepted if n in names for w in words[max(0, min(p) - 2):min(p)]}
+        far = (dim in at_all or plain) and opposite(names, vocab.dimensions[dim].values)
+        if far:
             out.append(far)
-            spoken.append(f"not {names[0]} at all: {far}")
+            spoken.append(f"not {names[0]}{' at all' if dim in at_all else ''}: {far}")
             continue
         ordinary = ordinary_left(names, others, vocab)
         if ordinary:                             # "isn't heavy": the ordinary pour's bowl, said back

@@ -424,7 +424,7 @@ READ_TOO = {
     'without tilting it much': ['pour_slightly_tilted'],
     "don't tilt the cup too much": ['pour_slightly_tilted'],
     # not one extreme, where the ordinary pour holds one value: that value, said back
-    "if the bowl isn't heavy, does it tip over": ['medium_destination'],
+    "if the bowl isn't heavy, does it tip over": ['light_destination'],
     "don't move in fast": ['moderate_approach'],
     # moving fast or slowly with no way said: both moves
     'what if I move fast': ['fast_approach', 'fast_retreat'],
@@ -520,9 +520,19 @@ def test_what_stands_for_the_ordinary_pour_is_said_back():
     r = read_question("tip the jug over the bowl")
     assert r.scene == () and f"tip: tilted as the ordinary pour is ({tilt.prior_low} to " \
         f"{tilt.prior_high} degrees from upright)" in r.notes
-    r = read_question("if the bowl isn't heavy")
-    assert r.scene == ("medium_destination",)
-    assert "not heavy_destination: medium_destination, as in the ordinary pour" in r.notes
+    r = read_question("if I don't come in fast")
+    assert r.scene == ("moderate_approach",)
+    assert "not fast_approach: moderate_approach, as in the ordinary pour" in r.notes
+
+
+def test_a_body_said_not_to_be_one_end_of_its_scale_is_the_other():
+    """"isn't heavy" of a bowl is a light one, said back, as "not heavy at
+    all" is; "not too heavy" is the ordinary pour's weight; a manner said
+    so ("don't come in fast") is the ordinary pour's."""
+    r = read_question("if the bowl isn't heavy, does it slide?")
+    assert r.scene == ("light_destination",) and "not heavy_destination: light_destination" in r.notes
+    assert read_question("the bowl is not too heavy, does it slide?").scene == ("medium_destination",)
+    assert read_question("the liquid isn't light, does it splash?").scene == ("heavy_liquid",)
 
 
 @pytest.mark.parametrize("question", sorted({*READ, *READ_TOO, *HEARD}))
