@@ -63,7 +63,7 @@ COMPARISONS: tuple[tuple, ...] = (
                           ("slow|slowly", "slowly"), ("far", "far"), ("thick|sticky", "sticky"))),
     # whether it matters ("less liquid = less spill?? or doesnt matter", "does less water make any difference"):
     # whether the outcome happens
-    ("hedge", (r"re(matter):\b(?:or )?(?:(?:does|do|would|will) (?:it |that )?)?(?:not )?(?:really )?matter\b",
+    ("hedge", (r"re(matter):\b(?:or )?(?:(?:does|do|would|will) (?:it |that |this )?)?(?:not )?(?:really )?matters?\b(?: but\b)?",
                r"re(difference):\b(?:make|makes|made|making) (?:any|a|much of a|no) difference\b"),
      "ignored: whether it matters is whether the outcome happens with what is said"),
     # poured the same way, tipped to the same angle (as the scene compared with): the one said

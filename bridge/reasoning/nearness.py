@@ -34,6 +34,10 @@ NEARNESS: tuple[tuple, ...] = (
     # poured from close, with no bowl said: just above it ("pour from close up")
     ("low", (r"re(close):\bfrom (?:really |very |quite )?(?:close(?: up| by)?|up close)\b(?! (?:to|by|from)\b)",),
      "read as low: close to the bowl, just above its rim"),
+    # poured close, with no bowl said: just above it ("if I pour close")
+    ("low", (r"re(pour close|poured close|pouring close|pours close):\bpour(?:s|ed|ing)? (?:it |really |very |quite |so |too )?close\b"
+             r"(?! (?:to|by|from|together|up)\b)",),
+     "read as low: close to the bowl, just above its rim"),
     # too close, with no bowl said: to the bowl, just above it
     ("low", (r"re(too close|too near|so close|so near):\b(?:too|so) (?:close|near)\b(?! (?:to|by|from|the|its|a|together)\b)",),
      "read as low: close to the bowl, just above its rim"),

@@ -153,7 +153,8 @@ def _which(m: re.Match) -> tuple[tuple[str, ...], bool]:
     # (dripping over the edge runs down the outside, as "drip down the side": a spill, not thrown out of the bowl)
     if k == 0 and (out_of_the_source(m.string, m.end("v0")) or re.match(r"(?:drip|dribbl)\w* over\b", m.group("v0"))):
         return OUTCOMES[1][1], OUTCOMES[1][2]
-    clung = re.match(r" (?:the |a |an |its |my |your )?(?:[a-z]+ )?([a-z]+)", m.string[m.end(f"v{k}"):])
+    clung = re.match(r" (?:(?:in|inside|to|on|onto) )?(?:the |a |an |its |my |your )?(?:[a-z]+ (?!(?:after|before|when|if|as|and"
+                     r"|or|but|while)\b))?(?!(?:the|a|an|in|to|after|before|when|if)\b)([a-z]+)", m.string[m.end(f"v{k}"):])
     if OUTCOMES[k][1] == ("liquid_leaves_source",) and OUTCOMES[k][2] and clung and re.search(
             rf"\binto (?:the |a |an |my )?(?:\w+ )?{clung.group(1)}\b", m.string):
         return (*_ALL_IN, "liquid_remains_in_destination"), False      # clinging to the bowl poured into
