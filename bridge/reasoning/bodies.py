@@ -39,7 +39,7 @@ BODIES: tuple[tuple, ...] = (
     ("slippery", (r"re:\bnon ?stick\b", "teflon")),
     ("grippy", (r"re:\b(?:non|anti) ?(?:slip|skid)\b",)),
     ("heavy", (r"re:\bdense\b(?! (?:plastic|glass|wood|metal|ceramic|material))",)),
-    ("light", ("lightweight", "light weight", "featherweight", "feather light", "featherlight", "flimsy")),
+    ("light", ("lightweight", "light weight", "featherweight", "feather light", "featherlight", "paper light", "light as paper", "light as a feather", "flimsy")),
     ("heavy", ("heavyweight", "heavy weight", "hefty", "weighty", r"re:\bheavy(?: |-)?bottomed\b")),
     ("slippery", ("slick", "smooth", "greasy")),
     ("halfway", ("partway", "part way", "part of the way")),
