@@ -65,7 +65,8 @@ _IF_HELPS = re.compile(r"^(?:so )?(?:if|what if) (?P<scene>[^,?]+?),? (?:would|w
 _TOO = re.compile(r"^(?:so )?(?:is|was|am|were) (?:it|that|i|we|the (?P<noun>[a-z]+)) (?:just |simply |maybe )?(?:too |because (?:it is|it was) (?:too )?)"
                   r"(?P<value>light|heavy|slippery|bouncy|high|low|sticky|runny|full)(?: or (?:something|what))?[?.! ]*$")
 #: What splits the narrative's clauses, for the scene a cause is asked of.
-_CLAUSES = re.compile(r",? (?:and then|but then|and|but|then|so|until|because) |, | (?=(?:when|while|after|as soon as) )")
+_CLAUSES = re.compile(r",? (?:and then|but then|and|but|then|so|until|because) |, | (?=(?:when|while|after|as soon as|even though"
+                      r"|although|though) )")
 #: The source's moves told: (the phase they are said as, the words).
 _WHO_MOVED = r"\b(?:when|as|while|once) (?:i|we|you|he|she|they|it|the \w+) (?:was |were )?"
 _MOVES_TOLD = (
@@ -197,7 +198,9 @@ def _read(told: str, asked: str) -> tuple[str, tuple[str, ...]] | None:
         # the clauses that tell nothing gone wrong: those with no outcome, and those saying when it went wrong
         # ("when i emptied the heavy saucepan into it")
         scene = [re.sub(rf"^(?:{WHEN},? |as soon as (?=\w+ start))", "", c) for c in clauses if not any(bad for _, bad in tells[c]) and (
-            re.match(r"(?:when|while|as|after|once) ", c) or not tells[c])]
+            re.match(r"(?:when|while|as|after|once|even though|although|though) ", c) or not tells[c])]
+        if poured and not any(poured.strip() in c for c in scene):     # the liquid told is the pour's
+            scene.insert(0, f"pouring{poured}")
         rest = f"{' and '.join(scene)}, {question}?" if scene else f"{question}?"
         return rest, (f"{told}: read as {rest.strip(' ?')}", f"{asked.strip(' ?.!')}: read as asked of the pour told")
     return None
