@@ -11,8 +11,9 @@ import re
 
 from pantarhei.bridge.errors import UserError
 
-#: Running down the source's outside (not the bowl's): "dribble down its own side", "drip down the jar".
-_DOWN = re.compile(r"\b(?:drip|dribbl|run|ran|trickl|roll|leak)\w* down (?:the |its |its own |their )?"
+#: Running down the source's outside (not the bowl's): "dribble down its own side", "drip down the jar",
+#: "dripped off the bottle".
+_DOWN = re.compile(r"\b(?:drip|dribbl|run|ran|trickl|roll|leak)\w* (?:back )?(?:down|off) (?:the |its |its own |their )?"
                    r"(?:outside|side|sides|jar|jug|bottle|cup|pot|pitcher|carton|can|kettle|spout|neck)\b"
                    r"(?! of (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|dish|destination)s?\b)")
 #: Once the pour is over: "after I stop pouring", "after I pour it", "afterwards", "at the end of the pour",
@@ -24,7 +25,7 @@ _AFTER = re.compile(r"\b(?:after (?:(?:i|you|we|it|they|the \w+) (?:am |have |ha
                     # "when you stop pouring", "when I tip it back upright", "... the bottle after?"
                     r"|when (?:i |you |we |it |they )?(?:am |are |is )?(?:stop|stops|stopped|finish\w*|done)\b"
                     r"|(?:tip|tips|tipped|tilt|tilts|tilted|turn|turns|bring|brings|set|sets|put|puts) (?:it |them |the \w+ )?back"
-                    r"(?: up| upright| down)?\b|\bafter(?= *[?.!]* *$))")
+                    r"(?: up| upright| down)?\b|\bafter(?= *(?:[?.!,;]|$)))")
 
 
 def refuse_drips_after(text: str) -> None:

@@ -46,7 +46,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:makes?|(?<=up )making) (?:(?:a|any) )?(?:big |huge |bit of a |real |total )?mess|(?:go|goes|going|went|get|gets) everywhere"
      r"|(?:get|gets|getting|got) (?:it|them|liquid|(?:the )?[a-z]+) (?:everywhere|all over(?: the place)?)\b"
      r"|slop\w*|splat\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)|(?:get|gets|got|getting) (?:any|some|much|a drop)(?: of it)?(?= on\b| onto\b)"
-     r"|(?:run|runs|running|ran|roll\w*|stream\w*|go|goes|going|went) down the (?:outside|side)(?! of (?:the |a )?(?:bowl|dish|destination))"
+     r"|(?:run|runs|running|ran|roll\w*|stream\w*|go|goes|going|went) (?:back )?down the (?:outside|side)(?! of (?:the |a )?(?:bowl|dish|destination))"
      # what is left behind outside: "does it leave a trail of drips", "leaving a sticky ring on the counter"
      r"|leav(?:e|es|ing) (?:a |any )?(?:sticky |little |wet |big )?(?:trail|line|ring|puddle)s?\b"
      # where drips went: "a trail of drips went right across the table"
@@ -139,7 +139,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:stay|stays|remain|remains) (?:in )?there\b"
      r"|(?:stay|stays|staying|remain|remains|remaining|stop|stops|stick|sticks|stuck|cling|clings|clung|sit|sits|sitting) in(?:side)?(?: the (?:bottom|base) of)?(?: the \w+)?",
      (*ALL_IN, "liquid_remains_in_destination"), False),
-    (r"(?:go|goes|going|went|get|gets|land|lands|plop|plops|plopped|make it|makes it|fall|falls|transfer\w*|arrive\w*|finds? (?:its|their) way) (?:more |mostly )?(?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*|get (?:the |all (?:the )?)?(?:water|liquid|milk|it|everything) (?:in|into)\b",
+    (r"(?:go|goes|going|went|get|gets|land|lands|plop|plops|plopped|make it|makes it|fall|falls|transfer\w*|arrive\w*|finds? (?:its|their) way) (?:more |mostly |all )?(?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*|get (?:the |all (?:the )?)?(?:water|liquid|milk|it|everything) (?:in|into)\b",
      ALL_IN, False),
     (r"miss(?:es|ed|ing)?|overshoot\w*|undershoot\w*|fall\w* short", ALL_IN, True),
     (r"safe(?:ly)?|(?:be |is )?(?:fine|ok|okay|alright|all right)\b|(?:a )?(?:good|bad) idea|risky"

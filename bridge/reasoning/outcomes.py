@@ -117,7 +117,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
     nominal = re.compile(r"\b(?:(?:is|will) there (?:be )?)?(?:any|a|no|some) (?:little |small |big |trail of |line of )?(?P<v1>spill(?:s|age)?"
                          r"|splash(?:es)?|mess|drips?|puddles?)\b(?! of\b)|\b(?:any|some) (?:spilled|spilt)(?= *[?.!]* *$)"
                          # "all go in the bowl or some outside?": landing outside, a spill
-                         r"|(?<=\bor )(?:some|any)(?: of it)? (?:outside|on the (?:table|counter|floor))(?= *[?.!]* *$)"
+                         r"|(?<=\bor )(?:(?:some|any)(?: of it)? )?(?:outside|on the (?:table|counter|floor))(?= *[?.!]* *$)"
                          r"|\b(?:more|less)(?: or (?:more|less))? (?:spill(?:s|age)?|splash(?:es|ing)?|mess)(?= *[?.!]* *$)"
                          r"|(?:^|(?<=[,:;.?!\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014]))"
                          r"(?:(?:spill(?:s|age)?|splash(?:es)?)(?: (?:everywhere|over))?|(?:drips?|leaks?)(?: (?:everywhere|out|over))?)"

@@ -168,10 +168,10 @@ def read_question(question: str) -> Reading:
     text, respelt = normalising(question)
     lex = lexicon()                         # "It is for science.": chatter (chatter.py)
     text, chat = chatter(text, words_of, lex.known, frozenset(_IGNORED), NEGATION_STEMS)
+    refuse_drips_after(text)                # "drip down the bottle after pouring" (drips_after.py)
     text, told = mishap(text)               # "it slid off the tray. how do i stop that?" (mishaps.py)
     respelt += chat + told
     refuse_choice(text)                     # "honey or water?": two questions (choices.py)
-    refuse_drips_after(text)                # "drip down the bottle after pouring" (drips_after.py)
     refuse_unsayable(text, lex.known, lex.placeable)  # "60 degrees vs 90 with 200 ml" (set_against.py)
     try:
         return _read_text(question, text, respelt)

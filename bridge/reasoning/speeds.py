@@ -87,6 +87,10 @@ SPEEDS: tuple[tuple, ...] = (
     # tipped all the way over fast or slowly: upside down, in a clause of its own, and the move into it
     ("; approach fast", (r"re(fast|quick|rapid):(?:(?<=all the way over )|(?<=right over ))(?:(?:very|really|too|quite|super) )?"
                          r"(?:fast|quick(?:ly)?|rapidly)\b(?! (?:than|as)\b)",)),
+    # (or turned upside down, over the bowl or not: "turn the jug upside down over the bowl really fast")
+    ("; approach fast ; pour", (r"re(fast|quick|rapid):(?<!pour upside down )(?<!pouring upside down )(?<!pour it upside down )"
+                                r"(?:(?<=upside down )|(?<=upside down over the bowl )|(?<=upside down over it ))"
+                       r"(?:(?:very|really|too|quite|super) )?(?:fast|quick(?:ly)?|rapidly)\b(?! (?:than|as)\b)",), _SAID),
     ("; approach slowly", (r"re(slow|gradual|steadi):(?:(?<=all the way over )|(?<=right over ))(?:(?:very|really|too|quite|super) )?"
                            r"(?:slow(?:ly)?|gradually|steadily)\b(?! (?:than|as)\b)",)),
     # tipped fast or slowly: the move into the pouring pose, which tilts the source as it goes
