@@ -87,10 +87,13 @@ SPEEDS: tuple[tuple, ...] = (
     # tipped all the way over fast or slowly: upside down, in a clause of its own, and the move into it
     ("; approach fast", (r"re(fast|quick|rapid):(?:(?<=all the way over )|(?<=right over ))(?:(?:very|really|too|quite|super) )?"
                          r"(?:fast|quick(?:ly)?|rapidly)\b(?! (?:than|as)\b)",)),
-    # (or turned upside down, over the bowl or not: "turn the jug upside down over the bowl really fast")
-    ("; approach fast ; pour", (r"re(fast|quick|rapid):(?<!pour upside down )(?<!pouring upside down )(?<!pour it upside down )"
-                                r"(?:(?<=upside down )|(?<=upside down over the bowl )|(?<=upside down over it ))"
-                       r"(?:(?:very|really|too|quite|super) )?(?:fast|quick(?:ly)?|rapidly)\b(?! (?:than|as)\b)",), _SAID),
+    # (or turned upside down fast, over the bowl or not: "turn the jug upside down over the bowl really fast";
+    # not poured so, a speed of pouring)
+    ("upside down ; approach fast ; pour", (r"re(fast|quick|rapid):\b(?:turn|turns|turned|turning|tip|tips|tipped|tipping|flip|flips"
+                                           r"|flipped|flipping|invert|inverts|inverted|inverting)(?: (?:it|them|the \w+|my \w+))?"
+                                           r"(?: all the way| clean| right)? upside down(?: over (?:the \w+|it|my \w+(?: bowl)?))?"
+                                           r" (?:(?:very|really|too|quite|super) )?(?:fast|quick(?:ly)?|rapidly)\b(?! (?:than|as)\b)",),
+     _SAID),
     ("; approach slowly", (r"re(slow|gradual|steadi):(?:(?<=all the way over )|(?<=right over ))(?:(?:very|really|too|quite|super) )?"
                            r"(?:slow(?:ly)?|gradually|steadily)\b(?! (?:than|as)\b)",)),
     # tipped fast or slowly: the move into the pouring pose, which tilts the source as it goes
