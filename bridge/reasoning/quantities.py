@@ -228,6 +228,8 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
         near = [k for k in range(start, min(len(tokens), i + 2 + REACH))
                 if k not in (i, i + 1) and tokens[k].clause == tokens[i].clause
                 and tokens[k].word in cue_of and k not in dropped]
+        if not near and i > 0 and tokens[i - 1].clause == tokens[i].clause - 1 and tokens[i - 1].word in cue_of:
+            near = [i - 1]          # said after it, set off by a comma: "I pour from high, 30 centimetre"
         sides = [_past(tokens, i + 2, 1, _BESIDE), _past(tokens, i - 1, -1, _BESIDE)]
         if i > 0 and tokens[i - 1].word == "of":            # "a height of 20 cm"
             sides.reverse()

@@ -47,6 +47,7 @@ from pantarhei.bridge.reasoning.chatter import chatter
 from pantarhei.bridge.reasoning.choices import refuse_choice
 from pantarhei.bridge.reasoning.drips_after import refuse_drips_after
 from pantarhei.bridge.reasoning.mishaps import mishap
+from pantarhei.bridge.reasoning.aux_dropped import aux_restored
 from pantarhei.bridge.reasoning.set_against import refuse_unsayable
 from pantarhei.bridge.reasoning.ages import ages_said
 from pantarhei.bridge.reasoning.causes import causes_weighed
@@ -168,9 +169,10 @@ def read_question(question: str) -> Reading:
     text, respelt = normalising(question)
     lex = lexicon()                         # "It is for science.": chatter (chatter.py)
     text, chat = chatter(text, words_of, lex.known, frozenset(_IGNORED), NEGATION_STEMS)
+    text, restored = aux_restored(text)     # "it fall down?": does it (aux_dropped.py)
     refuse_drips_after(text)                # "drip down the bottle after pouring" (drips_after.py)
     text, told = mishap(text)               # "it slid off the tray. how do i stop that?" (mishaps.py)
-    respelt += chat + told
+    respelt += chat + restored + told
     refuse_choice(text)                     # "honey or water?": two questions (choices.py)
     refuse_unsayable(text, lex.known, lex.placeable)  # "60 degrees vs 90 with 200 ml" (set_against.py)
     try:

@@ -1,0 +1,36 @@
+"""A yes-or-no question asked without its auxiliary, as learners of English
+and people in a hurry type it ("it fall down?", "The bowl move or stay?",
+"water go on the table?"): a clause that begins with what the outcome
+happens to and goes on with a verb of an outcome, then a question mark,
+is read with "does" before it ("does it fall down?"), as outcomes.py hears
+questions. A clause with an auxiliary of its own, or none of these
+subjects, is left as it is."""
+from __future__ import annotations
+
+import re
+
+from pantarhei.bridge.reasoning.outcome_verbs import outcome_verb
+
+#: What an outcome happens to, said first: "it", "the bowl", "all the water", "some of it".
+_SUBJECT = (r"(?:it|they|(?:all |some |any |most |half )?(?:of )?(?:the |my |this )?(?:bowl|water|liquid|milk|juice|oil|soup"
+            r"|tea|coffee|stuff|jug|cup|bottle|pitcher)|(?:some|any|all|none) of it)")     # (not "any tips?")
+#: Verbs of an outcome said with a word after them, which outcome_verb does not take alone.
+_PHRASAL = frozenset(("go", "come", "stay", "get", "land", "end", "fall"))
+_CLAUSE = re.compile(rf"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<subject>{_SUBJECT}) (?P<verb>[a-z]+)\b(?P<rest>[^,.;:!?]*)\?")
+_AUX = re.compile(r"\b(?:will|would|does|do|did|is|are|was|were|can|could|might|may|should|shall|gonna)\b")
+
+
+def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
+    """`text` (normalised) with "does" before each yes-or-no clause asked
+    without its auxiliary (the module's docstring), and what is said back."""
+    said: list[str] = []
+
+    def restore(m: re.Match) -> str:
+        verb = m.group("verb")
+        if _AUX.search(m.group(0)) or not (outcome_verb(verb) or verb in _PHRASAL):
+            return m.group(0)
+        asked = re.sub(r" or (?:stay|stays|stay still|stay put)(?=\?$)", "", m.group(0))     # "move or stay?": one question
+        said.append(f"{m.group(0).rstrip('?')}: read as does {asked.rstrip('?')}")
+        return f"does {asked}"
+
+    return _CLAUSE.sub(restore, text), tuple(said)
