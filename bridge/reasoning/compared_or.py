@@ -93,6 +93,15 @@ _SET_AGAINST = tuple((re.compile(p), r) for p, r in (
     # "is it less messy to pour the smoothie from a heavy jug or a light plastic cup?"
     (r"^(?:so )?is it (?P<how>less|more) messy to (?P<a>.+?) or (?:from )?(?P<b>.+?)(?P<end> *[?.!]* *)$",
      "{a} vs {b}, which one spills {how}{end}"),
+    # "does pouring from high spill more than pouring from low?", "is pouring from high up worse than
+    # pouring it low, for splashing?", "is it messier to pour high than low"
+    # (what is said of both after them stays: "... than a heavy one if I pour from high")
+    (r"^(?:so )?(?:does|do|would|will|could|can) (?P<a>(?:a|an|the|pouring|tipping|tilting|holding) .+?) (?P<verb>spill|splash|drip"
+     r"|slide|tip over|tip|move|overflow) (?P<how>more|less) than (?:when )?(?P<b>(?:(?! (?:if|when|while)\b)[^,])+?)"
+     r"(?P<both>(?: (?:if|when|while) [^,]+?)?)(?P<end> *[?.!]* *)$", "{a}{both} vs {b}, which one {verb}s {how}{end}"),
+    (r"^(?:so )?is (?P<a>(?:a|an|the|pouring|tipping|tilting|holding) .+?) (?:messier|worse(?= than [^,]+,? for))"
+     r" than (?P<b>(?:(?! (?:if|when|while)\b)[^,])+?)(?P<both>(?: (?:if|when|while) [^,]+?)?)"
+     r"(?:,? for (?:splashing|spilling|spills|splashes|mess))?(?P<end> *[?.!]* *)$", "{a}{both} vs {b}, which one spills more{end}"),
     # "would a runny liquid like water or a sticky one like molasses splash more from the same height?"
     (r"^(?:so )?(?:would|will|does|do|could|can) (?P<a>(?:a|an|the|pouring|tipping|tilting) .+?) or "
      r"(?P<b>(?:a|an|the|pouring|tipping|tilting) .+?) (?P<verb>spill|splash|drip|slide|tip over|tip|move|overflow) "

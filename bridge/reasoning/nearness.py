@@ -27,7 +27,7 @@ NEARNESS: tuple[tuple, ...] = (
     ("near the rim", (r"re(near side|near edge|near rim|near lip):\b(?:the |its )?near (?:side|edge|rim|lip)(?: of (?:the |its )?"
                       r"(?:destination|bowl))?\b",)),
     # poured into one side of the bowl, or from right above its edge: over its edge
-    ("near the rim", (r"re(one side|right above|directly above|right over):\b(?:in|into|onto) one side of (?:it|the (?:destination|bowl))\b"
+    ("near the rim", (r"re(one side|one edge|right above|directly above|right over):\b(?:in|into|onto) one (?:side|edge) of (?:it|the (?:destination|bowl))\b"
                       r"|\b(?:right|directly) (?:above|over) (?:the |its )?(?:destination |bowl )?(?:edge|rim|lip)\b(?! of\b)",)),
     (UNCLEAR, (r"re(far side|far edge|far rim|far lip|opposite):\b(?:the |its )?(?:far|opposite) (?:side|edge|rim|lip)"
                r"(?: of (?:the |its )?(?:destination|bowl))?\b",)),
@@ -35,8 +35,8 @@ NEARNESS: tuple[tuple, ...] = (
     ("low", (r"re(close):\bfrom (?:really |very |quite )?(?:close(?: up| by)?|up close)\b(?! (?:to|by|from)\b)",),
      "read as low: close to the bowl, just above its rim"),
     # poured close, with no bowl said: just above it ("if I pour close")
-    ("low", (r"re(pour close|poured close|pouring close|pours close):\bpour(?:s|ed|ing)? (?:it |really |very |quite |so |too )?close\b"
-             r"(?! (?:to|by|from|together|up)\b)",),
+    ("low", (r"re(close|near):\b(?:pour(?:s|ed|ing)?|bring(?:s|ing)?|brought)(?: it| them)?(?: (?:really|very|quite|so|too))?"
+             r" (?:close|near)\b(?! (?:to|by|from|together|up)\b)",),
      "read as low: close to the bowl, just above its rim"),
     # too close, with no bowl said: to the bowl, just above it
     ("low", (r"re(too close|too near|so close|so near):\b(?:too|so) (?:close|near)\b(?! (?:to|by|from|the|its|a|together)\b)",),
