@@ -19,6 +19,14 @@ _EMPTYING_WANTED = (r"\b(?:i|we) (?:want|need|would like|wish|am trying|are tryi
 _EMPTYING = (r"\b(?:goal|aim|objective|task|target)s?(?: is)?:? (?:to )?(?:empty|drain) (?:out )?(?:the whole|all of the"
              r"|all the|the entire|the) ([a-z]+)(?: (?:completely|fully|entirely|totally))?")
 
+
+def _out_and_in(m: re.Match) -> str:
+    """"get every last bit of the melted chocolate out of the jug into the bowl": so that it all
+    comes out and goes in, the liquid named kept for the scene."""
+    liquid = re.search(r"\b(?:of|all) (?:the |my )?([a-z]+(?: [a-z]+)?)$", m.group(1))
+    return f"{'pouring ' + liquid.group(1) + ' ' if liquid else ''}so that it all comes out and it all goes "
+
+
 #: Other ways of saying a goal, said as "so that ...": "keep the cup still" (not "keep the
 #: source upright": how it is held), "don't let it overflow", "make sure it does not spill"
 #: (the words they drop are fillers).
@@ -64,6 +72,9 @@ WANTING = tuple((re.compile(p), r) for p, r in (
      r"(?= (?:in|into)\b)", r"so that \1 goes"),
     # "so that none is wasted": so that nothing spills
     (r"\bso(?: that)? (?:none|nothing|no liquid|not a drop)(?: of it)? (?:is|gets|will be|goes to) wasted?\b", "so that nothing spills"),
+    # "without leaving any batter stuck inside the pitcher": so that none is left behind
+    (r"\bwithout leaving (?:any|a drop|anything)(?: of it| (?:the )?[a-z]+)? (?:stuck |left |behind )?(?:inside|in)"
+     r"(?: (?:the |a |my )?(?!bowl\b)[a-z]+)?\b", "so that none is left behind"),
     # "without losing any": so that nothing spills
     (r"\bwithout (?:losing|wasting) (?:any|a drop|a single drop|anything)(?: of it)?\b", "so that nothing spills"),
     # "without any on the counter": so that none goes on it (a place the liquid lands, a spill)
@@ -111,6 +122,10 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     # "I need a pour that empties the cup completely into the bowl": so that it empties and it all goes in
     (r"\b(?:i|we) (?:need|want|would like) a pour that (?:empties|drains) (the [a-z]+)(?: completely| fully| entirely)?(?= into\b)",
      r"so that \1 empties and it all goes"),
+    # "to get all the oil out of the bottle into the bowl": so that it all comes out and goes in
+    (r"\b(?:(?:in order |so as )?to |(?<=how do i )|(?<=how can i )|(?<=how should i ))get (it all|all of it|everything|every drop"
+     r"|every last (?:drop|bit)(?: of (?:the |my )?[a-z]+(?: [a-z]+)?)?|all (?:of )?the [a-z]+) out(?: of (?:the |a |my )?[a-z]+(?: [a-z]+)?)?"
+     r" (?:and )?(?=(?:in|into) (?:the |a |my )?(?:[a-z]+ )?(?:bowl|destination)\b)", _out_and_in),
     # "what angle should I tilt to get everything out", "how do I get every drop out": so that it all comes out
     (r"\b(?:(?:in order |so as )?to |(?<=how do i )|(?<=how can i )|(?<=how should i ))get (it all|all of it|everything|every drop|every last drop|all (?:of )?the [a-z]+) out\b"
      r"(?: of (?:the |a |my )?[a-z]+)?(?![^.?!,;]*\band (?:in|into)\b)", r"so that \1 comes out"),

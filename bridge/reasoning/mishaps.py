@@ -67,6 +67,8 @@ _TOO = re.compile(r"^(?:so )?(?:is|was|am|were) (?:it|that|i|we|the (?P<noun>[a-
 #: What splits the narrative's clauses, for the scene a cause is asked of.
 _CLAUSES = re.compile(r",? (?:and then|but then|and|but|then|so|until|because) |, | (?=(?:when|while|after|as soon as|even though"
                       r"|although|though) )")
+#: A goal said, not a mishap told: "I want to ...", "I'm trying to ...".
+_WANTS = re.compile(r"\b(?:i|we) (?:want|need|would like|d like|am trying|are trying|m trying|re trying|wish) to\b|\bgoal\b")
 #: The source's moves told: (the phase they are said as, the words).
 _WHO_MOVED = r"\b(?:when|as|while|once) (?:i|we|you|he|she|they|it|the \w+) (?:was |were )?"
 _MOVES_TOLD = (
@@ -150,8 +152,8 @@ def mishap(text: str) -> tuple[str, tuple[str, ...]]:
     asks in one of the ways the module reads."""
     for cut in reversed(list(_BREAK.finditer(text))):
         told, asked = text[:cut.start()].strip(), text[cut.end():].strip()
-        if re.match(rf"(?:{_ASKS})\b", told):
-            return text, ()          # a question first
+        if re.match(rf"(?:{_ASKS})\b", told) or _WANTS.search(told):
+            return text, ()          # a question first, or a goal ("i want to get it all out without any left inside")
         read = _read(told, asked)
         if read is not None:
             return read

@@ -130,14 +130,15 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     # clinging to a container not the bowl: kept in the source ("make it into the bowl or cling to the jar")
     (r"(?:stick|sticks|sticking|stuck|cling|clings|clinging|clung) to"
      r"(?!(?: [a-z]+){0,2}? (?:bowl|bowls|destination|target|rim|edge|top|sides?|walls?|brim|lip|bottom|surface|it|them)\b)"
-     rf"(?= (?:the |a |an |its |my |your )?(?:[a-z]+ )?{CONTAINER}\b)", ("liquid_leaves_source",), True),
+     rf"(?= (?:the |a |an |its |my |your )?(?:insides? of (?:the |a |an |its |my |your )?(?!(?:[a-z]+ )?(?:bowl|dish|destination)s?\b))?(?:[a-z]+ )?{CONTAINER}\b)",
+     ("liquid_leaves_source",), True),
     # stuck inside, no bowl named: kept in the source ("will the last bit stay stuck inside?")
     (r"(?:(?:stay|stays|remain|remains|get|gets|be|is) )?stuck in(?:side)?(?: (?:the |a |my )?(?!bowl\b|destination\b)[a-z]+)?"
      r"(?! (?:the |a |my )?(?:bowl|destination)\b)", ("liquid_leaves_source",), True),
     (r"(?:end|ends|ended|ending) up in(?:side)?", (*ALL_IN, "liquid_remains_in_destination"), False),
     # what stays in the bowl entered it: "remains" alone holds also when none enters
     (r"(?:stay|stays|remain|remains) (?:in )?there\b"
-     r"|(?:stay|stays|staying|remain|remains|remaining|stop|stops|stick|sticks|stuck|cling|clings|clung|sit|sits|sitting) in(?:side)?(?: the (?:bottom|base) of)?(?: the \w+)?",
+     rf"|(?:stay|stays|staying|remain|remains|remaining|stop|stops|stick|sticks|stuck|cling|clings|clung|sit|sits|sitting) in(?:side)?(?: the (?:bottom|base) of)?(?: the \w+| (?:my |a |its )?{CONTAINER}\b)?",
      (*ALL_IN, "liquid_remains_in_destination"), False),
     (r"(?:go|goes|going|went|get|gets|land|lands|plop|plops|plopped|make it|makes it|fall|falls|transfer\w*|arrive\w*|finds? (?:its|their) way) (?:more |mostly |all )?(?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*|get (?:the |all (?:the )?)?(?:water|liquid|milk|it|everything) (?:in|into)\b",
      ALL_IN, False),

@@ -141,7 +141,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
     # what is asked, or wanted, next to it: "will it spill or overflow?", "without spilling or
     # tipping the bowl over"
     # ("does it stay in there once it's poured or slosh back out": after the pour, when it is judged)
-    more = Cued(rf"\boutcome{_ONCE} ?{_JOINED}? ?(?:(?:will|does|do|would|even|just|only|mostly|mainly|largely|partly|never|not) )?(?:it |the \w+ |some |any |much )?"
+    more = Cued(rf"\boutcome{_ONCE} ?{_JOINED}? ?(?:(?:will|does|do|would|even|just|only|mostly|mainly|largely|partly|never|not|all) ){{0,2}}(?:it |the \w+ |some |any |much )?"
                 rf"(?:{verbs})\b{end}", ("outcome",))
     # an outcome said first, with no word that asks: "spills when poured from high?", "sloshing
     # over the rim if tilted steeply?", "pour high, spill or not", "spill or no?"
@@ -248,7 +248,9 @@ def hear(text: str) -> Heard:
             r"\b(?:bowl|it|they|[a-z]+s)\s*$", _CLAUSE.split(m.string[:m.start()])[-1])    # ("the bowls do not tip": said)
         lead = _CLAUSE.split(m.string[:m.start()])[-1].split() if m.group("aux") in ("is", "are", "was", "were") else []
         tipped = names == ("destination_upright",) and containers().spans(lead) and not {"bowl", "destination"} & {*lead}
-        if acts(lead + subject, names, m) or around().spans(before) or _state(m) or imperative or tipped:
+        manner = re.search(r"\bby (?:just |simply |only )?$", m.string[:next(m.start(g) for g, v in m.groupdict().items()
+                                                                      if g[0] == "v" and v)])    # "doable by just tipping it"
+        if acts(lead + subject, names, m) or around().spans(before) or _state(m) or imperative or tipped or manner:
             return m.group(0)
         if lead and not subject and re.search(rf"\bif {re.escape(' '.join(lead))} *$", m.string[:m.start()]):
             raise UserError(f'"if {" ".join(lead)} {m.group(0).strip()}" {FOLLOWS}')    # "if the bowl is moving"

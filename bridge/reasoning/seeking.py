@@ -259,7 +259,7 @@ def _value_asked(m: re.Match) -> tuple[int, int]:
 #: possible with a light bowl?", "is there any height where it never splashes?".
 _REACHES = Cued(r"\b(?:is|would|will)(?: (?:that|this|it|[a-z]+ing\b[a-z0-9 ]{0,30}?|(?:a|an|the) [a-z0-9 ]{1,30}?))?"
                 r" (?:be )?(?:ok|okay|fine|alright|all right|a problem|an issue|enough|possible|doable|feasible"
-                r"|achievable)(?= *[?.!]* *$| (?:with|if|when|using) )|\b(?:does|would|will|can|could)(?: (?:a|an|the|that|this) [a-z0-9 ]{1,30}?)?"
+                r"|achievable)(?= *[?.!]* *$| (?:with|if|when|using|by) )|\b(?:does|would|will|can|could)(?: (?:a|an|the|that|this) [a-z0-9 ]{1,30}?)?"
                 r" (?:do (?:that|it|this|the trick)|work|achieve (?:that|it|this))(?= *[?.!]* *$)"
                 r"|(?<=[,:;] )(?:doable|possible|feasible|achievable|ok|okay)(?= *[?.!]* *$)"   # "... - doable?"
                 rf"|\bis there (?:any|an?|some|one) {_VALUE}\b",          # "is there any height where it never splashes"
