@@ -103,7 +103,7 @@ MOVES: tuple[tuple, ...] = (
                  # pulled out: the move out of the pouring pose ("pull it out fast")
                  r"re:\b(?:pull(?:s|ed|ing)?|draw(?:s|ing)?|drew|yank\w*|whip\w*|tak(?:e|es|ing)|took"
                  r"|jerk\w*|snatch\w*)"
-                 r"(?: (?:it|the \w+|them))? (?:out|away|back)\b(?! of (?:the |a )?(?:context|liquid)\b)",
+                 r"(?: (?:it|the \w+|them))?(?: straight| right)? (?:out|away|back)\b(?! of (?:the |a )?(?:context|liquid)\b)",
                  r"re:\bmov(?:e|es|ed|ing) (?:it|the \w+|them) (?:away|back|out)\b(?! from)",
                  rf"re:\b{_GLIDE}(?: it| the \w+)? (?:away|back|out)\b(?! from| of)",
                  "after pour", "after the pour", "afterwards", "move away", "pull away", "pull back",

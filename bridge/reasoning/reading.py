@@ -48,6 +48,7 @@ from pantarhei.bridge.reasoning.choices import refuse_choice
 from pantarhei.bridge.reasoning.drips_after import refuse_drips_after
 from pantarhei.bridge.reasoning.mishaps import mishap
 from pantarhei.bridge.reasoning.aux_dropped import aux_restored
+from pantarhei.bridge.reasoning.carried import liquid_carried
 from pantarhei.bridge.reasoning.set_against import refuse_unsayable
 from pantarhei.bridge.reasoning.ages import ages_said
 from pantarhei.bridge.reasoning.causes import causes_weighed
@@ -196,9 +197,10 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
     lex = lexicon()
     text, named = names_written(text)
     text, unnamed = containers_named(text)          # "pour from a growler": a container
+    text, carried = liquid_carried(text)            # "bring the jug of honey in": with honey (carried.py)
     text, aged = ages_said(text)                    # "my 6 year old": who pours
     text, weighed = causes_weighed(text)            # "... - is it too full or not tilted enough?"
-    typed += unnamed + aged + weighed
+    typed += unnamed + carried + aged + weighed
     outcome = hear(text)
     tokens = read_numbers(words_of(outcome.scene), lex.placeable)
     accepted = _read(tokens, lex, outcome.bowl)
