@@ -236,7 +236,8 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
         beside = [k for k in sides if k in near]
         cues = {cue_of[tokens[k].word] for k in near}        # "tilt" picks a pitch, as a cue
         choosing = {cue_of[tokens[beside[0]].word]} | (cues & {"below", "offset"}) if beside else cues
-        if q.measures == "length" and not choosing and _poured_from(tokens, i, stage):
+        placing = {w for c in ("side", "offset", "height") for w in CUES[c]}     # (a tilt's cue places no length)
+        if q.measures == "length" and not choosing & placing and (_poured_from(tokens, i, stage) or _bare(tokens, i)):
             choosing = {"height"}           # "pour from 40 cm", "pouring it from about 6 inches": the height poured from
         if q.measures == "time" and any(cue_of.get(tokens[k].word) in CUES["pitch"] for k in range(
                 max(0, i - 8), i) if tokens[k].clause == tokens[i].clause):
@@ -316,6 +317,13 @@ def _poured_from(tokens: list[Token], i: int, stage: list[str]) -> bool:
     k = _past(tokens, i - 1, -1, _ROUGHLY)
     return (k > 0 and tokens[k].word == "from" and stage[i] == "pour"
             and any(tokens[m].word == "pour" and tokens[m].clause == tokens[i].clause for m in range(k)))
+
+
+def _bare(tokens: list[Token], i: int) -> bool:
+    """Whether the length at `i` stands alone, a clause of its own in a list of the pour's values
+    ("tilt 180, 20cm, fast in fast out", "90deg tilt, 5cm - drips?"): its height, as people
+    listing a pour mean it (not "20 cm from the centre", nor "move in 20 cm")."""
+    return all(k in (i, i + 1) or tokens[k].word in _ROUGHLY for k in range(len(tokens)) if tokens[k].clause == tokens[i].clause)
 
 
 def _low_end(tokens: list[Token], i: int) -> int | None:
