@@ -16,7 +16,8 @@ _SUBJECT = (r"(?:it|they|(?:all |some |any |most |half )?(?:of )?(?:the |my |thi
             r"|tea|coffee|stuff|jug|cup|bottle|pitcher)|(?:some|any|all|none) of it)")     # (not "any tips?")
 #: Verbs of an outcome said with a word after them, which outcome_verb does not take alone.
 _PHRASAL = frozenset(("go", "come", "stay", "get", "land", "end", "fall"))
-_CLAUSE = re.compile(rf"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<subject>{_SUBJECT}) (?P<verb>[a-z]+)\b(?P<rest>[^,.;:!?]*)\?")
+_CLAUSE = re.compile(rf"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<subject>{_SUBJECT}) (?P<verb>[a-z]+)\b(?P<rest>[^,.;:!?]*)"
+                     r"(?:,? (?:yes|no|right|or not|or no))?\?")     # (a tag after it: "..., yes?")
 _AUX = re.compile(r"\b(?:will|would|does|do|did|is|are|was|were|can|could|might|may|should|shall|gonna)\b")
 
 

@@ -67,7 +67,8 @@ COMPARISONS: tuple[tuple, ...] = (
                r"re(difference):\b(?:make|makes|made|making) (?:any|a|much of a|no) difference\b"),
      "ignored: whether it matters is whether the outcome happens with what is said"),
     # poured the same way, tipped to the same angle (as the scene compared with): the one said
-    ("hedge", ("[in] the same way", "same way", "the same angle", "same angle", "the same tilt", "same tilt"),
+    ("hedge", ("[in] the same way", "same way", "the same angle", "same angle", "the same tilt", "same tilt",
+               r"re(same bowl|identical bowl):\b(?:the )?(?:same|identical) bowls?\b"),
      "ignored: each question is read alone, with nothing of the one before"),
     # a scene compared with ("compared to a full jug, would a nearly empty one ...", "... spill less
     # compared with pouring from high up"): not read, up to where its clause ends

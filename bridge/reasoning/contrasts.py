@@ -72,7 +72,7 @@ CONTRASTS: tuple[tuple, ...] = (
      "read as low: brought down to just above the rim"),
     # from the side, not from above: the side said, set against being over the bowl
     ("hedge", (r"re(not):(?:(?<=side )|(?<=side of the bowl )|(?<=side of the destination )|(?<=side of bowl ))(?:, )?"
-               r"not (?:from )?(?:the )?(?:top|above|overhead|over it|over the (?:bowl|destination))\b",),
+               r"not (?:from |on )?(?:the )?(?:top|above|overhead|over it|over the (?:bowl|destination))\b",),
      "read as nothing: set against the side said, over the bowl is where it is not"),
     # close but not touching: how close, not a goal
     ("hedge", (r"re(touch):(?:" + "|".join(rf"(?<={w} )" for w in ("low", "rim", "edge", "lip", "bowl", "close", "near"))

@@ -31,6 +31,8 @@ def _out_and_in(m: re.Match) -> str:
 #: source upright": how it is held), "don't let it overflow", "make sure it does not spill"
 #: (the words they drop are fillers).
 WANTING = tuple((re.compile(p), r) for p, r in (
+    # asked negatively, as people doubting it ask: "is there no way to pour molasses without ...": is there a way
+    (r"\bis there (?:really )?no (way|method|technique) to\b", r"is there a \1 to"),
     # asked whether a scene stops an outcome ("does pouring low stop it from splashing?"): whether it happens
     (r"((?:^|(?<=[.?!,;:] ))(?:does|do|did|will|would|can|could|might|may|should)\b[^.?!,;:]*?)\b(?:stop|stops|keep|keeps|prevent|prevents)"
      r" (it|them|the [a-z]+) from (?=[a-z]+ing\b)", r"\1 will \2 "),
@@ -73,8 +75,8 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     # "so that none is wasted": so that nothing spills
     (r"\bso(?: that)? (?:none|nothing|no liquid|not a drop)(?: of it)? (?:is|gets|will be|goes to) wasted?\b", "so that nothing spills"),
     # "without leaving any batter stuck inside the pitcher": so that none is left behind
-    (r"\bwithout leaving (?:any|a drop|anything)(?: of it| (?:the )?[a-z]+)? (?:stuck |left |behind )?(?:inside|in)"
-     r"(?: (?:the |a |my )?(?!bowl\b)[a-z]+)?\b", "so that none is left behind"),
+    (r"\bwithout leaving (?:any|a drop|a single drop|anything|some)(?: of it| (?:the )?[a-z]+)? (?:stuck |left )?(?:(?:inside|in)"
+     r"(?: (?:the |a |my )?(?!bowl\b)[a-z]+)?|behind)\b", "so that none is left behind"),
     # "without losing any": so that nothing spills
     (r"\bwithout (?:losing|wasting) (?:any|a drop|a single drop|anything)(?: of it)?\b", "so that nothing spills"),
     # "without any on the counter": so that none goes on it (a place the liquid lands, a spill)
@@ -123,8 +125,9 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:i|we) (?:need|want|would like) a pour that (?:empties|drains) (the [a-z]+)(?: completely| fully| entirely)?(?= into\b)",
      r"so that \1 empties and it all goes"),
     # "to get all the oil out of the bottle into the bowl": so that it all comes out and goes in
-    (r"\b(?:(?:in order |so as )?to |(?<=how do i )|(?<=how can i )|(?<=how should i ))get (it all|all of it|everything|every drop"
-     r"|every last (?:drop|bit)(?: of (?:the |my )?[a-z]+(?: [a-z]+)?)?|all (?:of )?the [a-z]+) out(?: of (?:the |a |my )?[a-z]+(?: [a-z]+)?)?"
+    (r"\b(?:(?:in order |so as )?to |(?<=how do i )|(?<=how can i )|(?<=how should i )|(?<=goal: )|(?<=goal ))get (it all|all of it"
+     r"|everything|every drop|every last (?:drop|bit)(?: of (?:the |my )?[a-z]+(?: [a-z]+)?)?|all (?:of )?the [a-z]+)"
+     r" (?:out(?: of (?:the |a |my )?[a-z]+(?: [a-z]+)?)?|from (?:the |a |my )?[a-z]+(?: [a-z]+)?)"
      r" (?:and )?(?=(?:in|into) (?:the |a |my )?(?:[a-z]+ )?(?:bowl|destination)\b)", _out_and_in),
     # "what angle should I tilt to get everything out", "how do I get every drop out": so that it all comes out
     (r"\b(?:(?:in order |so as )?to |(?<=how do i )|(?<=how can i )|(?<=how should i ))get (it all|all of it|everything|every drop|every last drop|all (?:of )?the [a-z]+) out\b"

@@ -129,7 +129,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
                          r" (?:outcome|result|risk|rate|amount|chance|probability|likelihood)s?\b")
     goal = Cued(       # (goal and more compiled only where they may match: their verbs cost ask's start-up)
         rf"\b(?:without (?:(?:getting|having|causing) (?=any\b|a\b))?(?P<gneg>(?:(?:so much as |even )?(?:any|a single|one single|a|one) )?{_DROPS}(?:of (?:it|them|the [a-z]+) )?"
-        rf"|any (?:of (?:it|them|the [a-z]+) )?|a |making (?:a |any )?)?(?P<gwho>(?:it|them|the [a-z]+|anything) )?(?:ever |even )?"
+        rf"|(?:any|some) (?:of (?:it|them|the [a-z]+) )?|a |making (?:a |any )?)?(?P<gwho>(?:it|them|the [a-z]+|anything) )?(?:ever |even )?"
         rf"(?:getting |being )?"
         # a goal said as the state wanted: "pour neatly with nothing dribbling down the outside"
         rf"|with (?P<gwith>nothing|none(?: of it)?|no (?:liquid|water|drops?|droplets?)) (?:ever |even )?"

@@ -262,7 +262,7 @@ _REACHES = Cued(r"\b(?:is|would|will)(?: (?:that|this|it|[a-z]+ing\b[a-z0-9 ]{0,
                 r"|achievable)(?= *[?.!]* *$| (?:with|if|when|using|by) )|\b(?:does|would|will|can|could)(?: (?:a|an|the|that|this) [a-z0-9 ]{1,30}?)?"
                 r" (?:do (?:that|it|this|the trick)|work|achieve (?:that|it|this))(?= *[?.!]* *$)"
                 r"|(?<=[,:;] )(?:doable|possible|feasible|achievable|ok|okay)(?= *[?.!]* *$)"   # "... - doable?"
-                rf"|\bis there (?:any|an?|some|one) {_VALUE}\b",          # "is there any height where it never splashes"
+                rf"|\bis there (?:really )?(?:any|an?|some|one|no) {_VALUE}\b",   # "is there any height where it never splashes"
                 ("is there", "ok", "fine", "alright", "all right", "problem", "issue", "enough", "possible", "doable", "feasible",
                  "achievable", " do ", "work", "achieve"))
 

@@ -293,7 +293,7 @@ PHRASES: tuple[tuple, ...] = (
     # forward is the way a tilt goes (towards the destination)
     ("tilted", (r"re:\btipped\b",)),
     ("tilting", (r"re:\btipping\b",)),
-    ("tilt", (r"re:\btips?\b",)),
+    ("tilt", (r"re:\btips?\b", r"re(flip):\bflip(?:s|ped|ping)?\b(?= (?:\w+ ){1,3}?upside\b)")),
     ("tilt", (r"re:\btilt(?:s|ed|ing)?(?: it| the \w+)? forwards?\b",)),
     ("hedge", (r"re:(?:(?<=slightly )|(?<=halfway )|(?<=steeply )|(?<=bit )|(?<=little ))forwards?\b",)),
     ("rolled sideways", (r"re:\b(?:tilt|tip|lean)(?:s|ed|ing)?(?: (?:it|the \w+))? sideways\b",)),
