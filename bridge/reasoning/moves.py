@@ -86,7 +86,7 @@ MOVES: tuple[tuple, ...] = (
     ("approach same_height_in", (r"re:\b(?:(?:mov(?:e|es|ed|ing)|bring(?:s|ing)?|brought|com(?:e|es|ing)"
                                  r"|came|swing(?:s|ing)?|swung|lower(?:s|ed|ing)?)(?: it| the \w+)? in"
                                  r"|approach(?:es|ed|ing)?)\b(?= (?:(?:slowly|fast|quickly|gently|carefully|steadily)(?: and)? )?"
-                                 r"(?:very |really |quite |fairly |nice and )?"
+                                 r"(?:very |really |quite |fairly |too |so |nice and )?"
                                  r"(?:low|high)\b(?! (?:friction|mass|weight|bounc)))",)),
     # brought down from a height: the move in, lowering, from where it starts
     ("approach lower from", (rf"re:\b(?:mov(?:e|es|ed|ing)|bring(?:s|ing)?|brought|com(?:e|es|ing)|came"

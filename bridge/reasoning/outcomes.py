@@ -109,7 +109,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
     asked = re.compile(
         rf"(?<!that )(?<!which )\b(?:(?P<aux>{_AUX})(?P<neg> not)?{subject}|(?P<quant>how much(?: of (?:it|the [a-z]\w*))?(?: [a-z]\w*)?"
         rf"|{_SHARE}|anything|something|everything|nothing|any (?:liquid|water)|it all"
-        rf"|(?:all|any|some|none|most|much|half|a lot) of (?:it|them|the [a-z]+))"
+        rf"|(?:all|any|some|none|most|much|half|a lot) of (?:it|them|the [a-z]+)|(?:any|some|much)(?= (?:left|leftover)\b))"
         rf"|{chance}{subject.replace('<subject>', '<csubject>')})"
         rf" (?:(?:all|any|ever|even|still|not) ){{0,2}}(?:(?:end|ends|ended) up )?(?:{verbs})\b{end}"
         rf"(?P<odds> (?:very |really |quite |too )?(?:high|low|big|small|great|likely|unlikely)\b)?(?: or not\b)?")
