@@ -43,7 +43,8 @@ CONTRASTS: tuple[tuple, ...] = (
     ("hedge", (rf"re(instead|rather|in place):(?:(?:,|;) )?\b{_CONTRAST} {_VAGUE}\b(?= *(?:$|[,;.!?]))",),
      "read as nothing: a place the vocabulary cannot name, set against the one said beside it"),
     # an ordinary liquid set against the liquid said ("a thick liquid instead of water"): nothing more
-    ("hedge", (rf"re(instead|rather|in place):(?<=liquid ){_CONTRAST} (?:the |plain |regular |normal |ordinary )?liquid\b",),
+    ("hedge", (rf"re(instead|rather|in place):(?<=liquid ){_CONTRAST} (?:the |plain |regular |normal |ordinary )?liquid\b",
+               r"re(not):(?<=liquid ), not (?:the |plain |regular |normal |ordinary )?liquid\b(?= ,)"),
      "read as nothing: an ordinary liquid, set against the one said beside it"),
     # a container with nothing said of it set against one said ("a slippery cup instead of a
     # ceramic mug"; the word list has read both as bowls by then): nothing more

@@ -118,7 +118,8 @@ def _patterns() -> tuple[re.Pattern, ...]:
                          r"|splash(?:es)?|mess|drips?|puddles?)\b(?! of\b)|\b(?:any|some) (?:spilled|spilt)(?= *[?.!]* *$)"
                          # "all go in the bowl or some outside?": landing outside, a spill
                          r"|(?<=\bor )(?:(?:some|any)(?: of it)? )?(?:outside|on the (?:table|counter|floor))(?= *[?.!]* *$)"
-                         r"|\b(?:more|less)(?: or (?:more|less))? (?:spill(?:s|age)?|splash(?:es|ing)?|mess)(?= *[?.!]* *$)"
+                         r"|\b(?:more|less)(?: or (?:more|less))? (?:spill(?:s|age|ing)?|splash(?:es|ing)?|mess)(?: or (?:more|less))?"
+                         r"(?= *[?.!]* *$)"
                          r"|(?:^|(?<=[,:;.?!\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014]))"
                          r"(?:(?:spill(?:s|age)?|splash(?:es)?)(?: (?:everywhere|over))?|(?:drips?|leaks?)(?: (?:everywhere|out|over))?)"
                          r"(?= *[?.!]* *$)"
