@@ -66,7 +66,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      ("no_spill",), True),
     (r"(?:stay|stays|remain|remains|keep|keeps) (?:upright|standing)", ("destination_upright",), False),
     (r"tip(?:s|ped|ping)?(?: over)?(?! (?:(?:it|them|the \w+) )?(?:(?:past|beyond)\b|(?:to|by|at|up to|no more than|more than"
-     r"|less than|at most|at least|under|about) -?\d))|toppl\w*|(?:fall|falls|falling|fell) (?:over|down)|(?:knock|push|shov)\w*(?: it| the \w+)? over"
+     r"|less than|at most|at least|under|about) -?\d))"
+     # (not the source tipped by whoever pours: "without tipping the pitcher much")
+     r"(?! (?:the|my|a|this|that) (?:jug|pitcher|bottle|cup|carton|kettle|jar|mug|can|teapot|flask|beaker|source)\b)|toppl\w*|(?:fall|falls|falling|fell) (?:over|down)|(?:knock|push|shov)\w*(?: it| the \w+)? over"
      r"|turn\w* over|flip\w*|capsiz\w*|overturn\w*|keel\w* over|tumbl(?:e|es|ed|ing)\b"
      # gone over, nothing after it: "the bowl went over" (not "went over the rim": out of the bowl)
      r"|(?:go|goes|went|gone) over(?= *[,.;!?]| *$| (?:and|when|if|as|while|because)\b)"

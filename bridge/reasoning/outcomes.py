@@ -51,7 +51,7 @@ _MODALS = r"will|would|does|do|did|could|can|might|may|should|shall"
 _AUX = rf"{_MODALS}|is|are|was|were"
 #: Where a clause starts: before "is" in "if the jug is heavy and tipped", how the source is held.
 _CLAUSE = re.compile(r"[,;:.!?]|\b(?:if|when|while|and|but|so|or|then|what|whether)\b")
-_WHOLE = {*"nothing none no every each drop drops droplet droplets bit single last whole shot lot".split()}
+_WHOLE = {*"nothing none no every each drop drops droplet droplets bit single last whole shot lot some any most much half".split()}
 #: How little of the liquid a goal excludes: "without a single drop spilling", "any droplets".
 _DROPS = r"(?:drop|droplet|bit|speck|trace|splash)s? "   # a goal's how much: not the scene's
 #: The words that may follow an outcome's verb and are heard with it ("drip on the

@@ -49,6 +49,10 @@ FAR_TILTS: tuple[tuple, ...] = (
                          r"(?![^.?!;]*\b(?:only|just|but|rather|tilted|tilt|steeply|slightly|halfway|upside|upright"
                          r"|degrees?|horizontal)\b)",),
      "read as slightly tilted: tilted, not far"),
+    # not much inclined, as learners of English say it: slightly tilted; tilted very much: steeply
+    ("slightly tilted", (r"re( much):\bnot (?:so |that |too |very )?much (?:inclined|tilted|tipped|angled)\b",),
+     "read as slightly tilted: tilted, not much"),
+    ("steeply tilted", (r"re( much):\b(?:tilted|tipped|inclined|angled) (?:very|so|really) much\b",), "read as steeply tilted"),
     # tipped really far: steeply (too far stays refused: past what?)
     ("steeply tilted", (r"re( far):\b(?:tilt|tip)\w*(?: (?:it|them|the \w+))? (?:really|very|way|pretty|quite) far\b"
                         r"(?! (?:from|away|off|to)\b)",), "read as steeply tilted"),

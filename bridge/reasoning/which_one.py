@@ -54,11 +54,14 @@ def which_one(text: str) -> tuple[str, tuple[str, ...]]:
                 (*said, f"{one.group(0)}: read as does it {one.group('verb')}, of the one said first"))
     if m is None:
         return text, said
-    said_verb, ending = next((m.group(f"verb{k}"), m.groupdict().get(f"ending{k}")) for k in ("", "2", "3")
-                             if m.group(f"verb{k}"))
-    verb = said_verb + ("e" if ending == "es" and not re.search(r"(?:sh|ch|ss|x)$", said_verb) else "")
-    return (text[:m.start()] + f"does it {verb}" + text[m.end():],
-            (*said, f"{m.group(0)}: read as does it {verb}, of the one said first"))
+    while m is not None:        # and a second asked after it: "which splashes more and which spills more"
+        said_verb, ending = next((m.group(f"verb{k}"), m.groupdict().get(f"ending{k}")) for k in ("", "2", "3")
+                                 if m.group(f"verb{k}"))
+        verb = said_verb + ("e" if ending == "es" and not re.search(r"(?:sh|ch|ss|x)$", said_verb) else "")
+        text, said = (text[:m.start()] + f"does it {verb}" + text[m.end():],
+                      (*said, f"{m.group(0)}: read as does it {verb}, of the one said first"))
+        m = re.compile(rf"(?<=\band ){_WHICH.pattern}").search(text, m.start() + len(f"does it {verb}"))
+    return text, said
 
 
 #: One of two scenes named by how its number ranks: "at the smaller angle", "for the higher one".
