@@ -92,6 +92,9 @@ _SET_AGAINST = tuple((re.compile(p), r) for p, r in (
      r"(?P<b>.+?)(?P<end> *[?.!]* *)$", "{a} vs {b}, which one {verb} {how}{end}"),
     (rf"^(?:so )?(?:is|would) (?P<a>.+?) (?:be )?(?P<more>less|more) (?P<adj>{_ADJECTIVE}) than (?P<b>.+?)(?P<end> *[?.!]* *)$",
      "{a} vs {b}, which one {verb} {how}{end}"),
+    # "which is messier: pouring the water from 5 cm up or from 30 cm up?"
+    (r"^(?:so )?which(?: one)? (?:is|would be|will be) (?:the )?messier[,:;]? (?P<a>.+?) or (?P<b>.+?)(?P<end> *[?.!]* *)$",
+     "{a} vs {b}, which one spills more{end}"),
     # "is it less messy to pour the smoothie from a heavy jug or a light plastic cup?"
     (r"^(?:so )?is it (?P<how>less|more) messy to (?P<a>.+?) or (?:from )?(?P<b>.+?)(?P<end> *[?.!]* *)$",
      "{a} vs {b}, which one spills {how}{end}"),

@@ -29,7 +29,10 @@ _NO_RATE = r"(?! (?:rate|speed|velocity|pace)\b)"        # a speed of tilting: r
 _SAID = "read as the move into the pouring pose, which tilts the source as it goes"
 #: What is tipped, between the verb and its speed: "tip it slowly", "tip my measuring jug of melted butter slowly".
 _NOT_TIPPED = (r"(?!and\b|then\b|but\b|or\b|so\b|if\b|when\b|move\w*\b|pull\w*\b|bring\w*\b|brought\b|slow\w*\b|fast\b"
-               r"|quick\w*\b|into\b|in\b|onto\b|over\b|to\b|from\b|at\b|with\b|big\b|small\b|little\b|large\b|tiny\b|too\b|far\b)")
+               r"|quick\w*\b|into\b|in\b|onto\b|over\b|to\b|from\b|at\b|with\b|big\b|small\b|little\b|large\b|tiny\b|too\b|far\b"
+               # (nor how far it is tipped: "tip it halfway fast" keeps its tilt)
+               r"|-?\d|degrees?\b|deg\b|halfway\b|half\b|all\b|way\b|steep\w*\b|slight\w*\b|upside\b|sideways\b|horizontal\w*\b"
+               r"|vertical\w*\b|right\b|straight\b)")
 _TIPPED = rf"(?: (?:{_NOT_TIPPED}\w+ ){{0,6}}?{_NOT_TIPPED}\w+)?"
 
 SPEEDS: tuple[tuple, ...] = (

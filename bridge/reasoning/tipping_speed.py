@@ -4,7 +4,8 @@ and quick"): the move into the pouring pose, which tilts the source as it
 goes, as "tip it slowly" is (speeds.py). A rewrite of words.py's, applied
 before the everyday word list: the clause must hold a speed ("gentle"
 alone says how far as much as how fast, and is left to be read as it is),
-and the clause before it a verb of tipping."""
+and the clause before it a verb of tipping; or said last in the clause that tips it, after
+how far ("tip it halfway fast": tilted halfway, moving in fast)."""
 from __future__ import annotations
 
 #: Verbs of tipping the source.
@@ -22,6 +23,9 @@ class TippingSpeed:
     def spans(self, words: list[str]) -> list[tuple[int, int, tuple[str, ...]]]:
         out = []
         for i, w in enumerate(words):
+            if w in _SPEEDS and _tipped_how_far(words, i):      # "tip it halfway fast": halfway, moving in fast
+                out.append((i, i + 1, (";", "approach", _SPEEDS[w], ";", "pour")))
+                continue
             if w not in (",", ";") or not _tipped_before(words, i):
                 continue
             end = next((k for k in range(i + 1, len(words)) if words[k] in _ENDS), len(words))
@@ -38,6 +42,27 @@ def _tipped_before(words: list[str], at: int) -> bool:
     while k >= 0 and words[k] not in _ENDS:
         if words[k] in _TIPPING:
             return True
+        k -= 1
+    return False
+
+
+#: How far a source is tipped, said between the verb and its speed: "tip it halfway fast".
+_HOW_FAR = frozenset(("halfway", "degrees", "deg", "upside", "steeply", "slightly", "way", "horizontal", "vertical"))
+#: Words that make the speed another's: a move in or away, or the pour itself ("pour at 45 degrees fast").
+_ANOTHER = frozenset(("in", "away", "out", "back", "pour", "pours", "poured", "pouring", "move", "bring", "pull"))
+
+
+def _tipped_how_far(words: list[str], at: int) -> bool:
+    """Whether the speed at `at` ends a clause that tips the source and says how far, with no other move in it."""
+    if at + 1 < len(words) and words[at + 1] not in _ENDS and words[at + 1] not in ("and", "then", "but"):
+        return False
+    k, far = at - 1, False
+    while k >= 0 and words[k] not in _ENDS:
+        if words[k] in _ANOTHER:
+            return False
+        far = far or words[k] in _HOW_FAR
+        if words[k] in _TIPPING:
+            return far
         k -= 1
     return False
 

@@ -91,7 +91,8 @@ _PRONOUNS = "i|it|we|you|they|he|she|this|that"
 #: only asking ("y does it spill"), not the offset's axis ("y = 3 cm"), and "its" only as
 #: "it's" ("if its right over the middle", not "its handle"); "lite" is light, not a litre.
 _CHAT = {"u": "you", "ur": "your", "wat": "what", "wut": "what", "wot": "what", "realy": "really",
-         "rly": "really", "lite": "light", "b4": "before", "frm": "from", "abv": "above", "liq": "liquid", "dwn": "down", "alot": "a lot",
+         "rly": "really", "lite": "light", "b4": "before", "frm": "from", "abv": "above", "liq": "liquid", "dwn": "down", "approx": "about", "tbl": "table", "btl": "bottle",
+         "qkly": "quickly", "thx": "thanks", "alot": "a lot",
          "tiped": "tipped", "tipd": "tipped", "evrywhere": "everywhere", "evry": "every",
          "pls": "please", "plz": "please", "abt": "about", "shud": "should", "wud": "would",
          "outta": "out of", "kinda": "kind of", "tho": "though", "cuz": "because", "coz": "because",
