@@ -65,6 +65,11 @@ def forms(phrase: str) -> tuple[tuple[str, ...], ...]:
     return tuple((*head, e) for e in ends)
 
 
+#: Containers' names that are also what a container is made of, before another's name or "one":
+#: "a glass jug", "a light tin one".
+_MADE_OF = frozenset(("glass", "tin"))
+
+
 class Matcher:
     """Where a question's words hold the phrases of one section, found by
     looking the words up (no regular expression to compile: `ask` reads
@@ -85,7 +90,7 @@ class Matcher:
         self.glass_before = frozenset(f for p in glass_before for f in forms(p))
         self.longest = max(map(len, self.table | self.before | self.glass_before), default=0)
         # the words a phrase may begin with: a word that begins none is passed at once
-        self.firsts = frozenset(f[0] for f in self.table | self.before) | {"glass"}
+        self.firsts = frozenset(f[0] for f in self.table | self.before) | _MADE_OF
 
     def _at(self, table: frozenset, words: list[str], i: int) -> int:
         """The length of the longest phrase of `table` at `i`, or 0."""
@@ -106,7 +111,7 @@ class Matcher:
             m = self._at(self.table, words, i + n) if n else 0
             if not m:
                 n, m = 0, self._at(self.table, words, i)
-            if not m and words[i] == "glass" and self._at(self.glass_before, words, i + 1):
+            if not m and words[i] in _MADE_OF and self._at(self.glass_before, words, i + 1):
                 m = 1
             if m:
                 held = self.held.get(tuple(words[i:i + n])) if n else None

@@ -372,7 +372,7 @@ def _everyday() -> list[tuple[Matcher, str, str]]:
                      if s.words in ("sticky liquid", "heavy liquid") for p in s.phrases}
     for s in sections():
         if s.words == "material":
-            matcher = Matcher(s.phrases, glass_before=names("bowl", "context"))
+            matcher = Matcher(s.phrases, glass_before=(*names("bowl", "context"), "one"))
         elif s.words.startswith("bowl"):        # a bowl, or one poured from (nouns.py)
             matcher = Matcher(s.phrases, before=names("liquid", "context"), held=held,
                               read_as=("bowl",), apart=names("liquid"))
