@@ -37,7 +37,7 @@ NEARNESS: tuple[tuple, ...] = (
      "read as low: close to the bowl, just above its rim"),
     # poured close, with no bowl said: just above it ("if I pour close")
     ("low", (r"re(close|near):\b(?:pour(?:s|ed|ing)?|bring(?:s|ing)?|brought)(?: it| them)?(?: (?:really|very|quite|so|too))?"
-             r" (?:close|near)\b(?! (?:to|by|from|together|up)\b)",),
+             r" (?:close|near)\b(?! (?:to|by|from|together|up|the|a|an|its|my|your|this|that)\b)",),
      "read as low: close to the bowl, just above its rim"),
     # too close, with no bowl said: to the bowl, just above it
     ("low", (r"re(too close|too near|so close|so near):\b(?:too|so) (?:close|near)\b(?! (?:to|by|from|the|its|a|together)\b)",),
