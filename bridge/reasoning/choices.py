@@ -10,6 +10,8 @@ more?") that the vocabulary reads as one value are refused: it cannot
 tell the two pours apart."""
 from __future__ import annotations
 
+import re
+
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.everyday import sections
 from pantarhei.bridge.reasoning.two_liquids import chosen_liquids, liquid_values, set_against_liquids
@@ -20,7 +22,9 @@ def refuse_choice(text: str) -> None:
     or sets against each other two read as one."""
     value = liquid_values()
     against = set_against_liquids(text)
-    if against and sections()[value[against.group(1)]].words == sections()[value[against.group(2)]].words:
+    told_how = re.search(r"\b(?:thick|thin|runny|sticky|watery|viscous|syrupy|heavy|light)\b",
+                         text[max(0, against.start() - 12):against.end()]) if against else None     # "thick paint vs water"
+    if against and not told_how and sections()[value[against.group(1)]].words == sections()[value[against.group(2)]].words:
         said = sections()[value[against.group(1)]].said_back.removeprefix("read as ").split(":")[0] or "an ordinary liquid"
         raise UserError(f"\"{against.group(0)}\": both are read as {said}, so the vocabulary cannot tell the two "
                         f"pours apart: ask about one of them, or set against it a liquid it reads otherwise "

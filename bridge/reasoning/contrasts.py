@@ -48,7 +48,7 @@ CONTRASTS: tuple[tuple, ...] = (
      "read as nothing: an ordinary liquid, set against the one said beside it"),
     # a container with nothing said of it set against one said ("a slippery cup instead of a
     # ceramic mug"; the word list has read both as bowls by then): nothing more
-    ("hedge", (rf"re(instead|rather|in place):(?<=bowl ){_CONTRAST} (?:a |an |the |my |your )?(?:material )*bowl\b",),
+    ("hedge", (rf"re(instead|rather|in place):(?<=bowl ){_CONTRAST} (?:a |an |the |my |your )?(?:material )*(?:bowl|one)\b",),
      "read as nothing: a container with nothing said of it, set against the one said beside it"),
     # the rim set against the middle is where it is poured, not a height ("right above the rim rather
     # than over the center", "off the edge of the bowl, not the middle")

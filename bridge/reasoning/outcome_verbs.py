@@ -108,7 +108,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      # the liquid pouring, said of it ("does anything pour at that angle"), not of who pours
      r"|(?:(?<=anything )|(?<=something )|(?<=nothing )|(?<=any liquid )|(?<=any water ))pour(?:s|ed)?\b(?! (?:it|them|the|from|into|in)\b)"
      r"|(?:go|goes|going|went) out\b(?! of (?:the |a |an |my )?(?!source\b)(?:[a-z]+ )?(?:bowl|destination)\b)"
-     r"|glug(?:s|ged|ging)?(?: out)?\b"          # "it glugged out"
+     r"|glug(?:s|ged|ging)? out\b"          # "it glugged out" (not "so it doesn't glug": how it flows)
      # (not how full the source is: "a nearly empty jug", "an empty cup")
      r"|(?<!nearly )(?<!almost )(?<!mostly )(?<!practically )(?<!all but )(?<!half )(?<!\ban )(?<!\ba )(?<!\bthe )"
      r"empt(?:y|ies|ied)(?: out)?|(?:(?:end|ends) up|becomes?|gets?) (?:totally |completely |fully )?empty(?: (?:completely|fully|totally))?|leav(?:e|es|ing) (?:the|it)\b|exit\w*", ("liquid_leaves_source",), False),
