@@ -7,20 +7,25 @@ nothing of. With a goal ("I want none on the table: honey or water?")
 the goal is what is asked, and it is left to the reader. Two liquids set
 against each other ("pouring water vs pouring olive oil, which drips
 more?") that the vocabulary reads as one value are refused: it cannot
-tell the two pours apart."""
+tell the two pours apart; two poured at once ("pour bleach and vinegar
+into the same bowl") are refused too: it pours one liquid, never a mix."""
 from __future__ import annotations
 
 import re
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.everyday import sections
-from pantarhei.bridge.reasoning.two_liquids import chosen_liquids, liquid_values, set_against_liquids
+from pantarhei.bridge.reasoning.two_liquids import chosen_liquids, liquid_values, poured_together, set_against_liquids
 
 
 def refuse_choice(text: str) -> None:
     """UserError where `text` (normalised) chooses between two liquids read as different values, with no goal,
-    or sets against each other two read as one."""
+    sets against each other two read as one, or pours two at once."""
     value = liquid_values()
+    both = poured_together(text)
+    if both and both.group(1) != both.group(2):
+        raise UserError(f"\"{both.group(0)}\": the vocabulary pours one liquid at a time, and says nothing of two "
+                        f"mixed: ask about one of them (\"pour {both.group(1)}\")")
     against = set_against_liquids(text)
     told_how = re.search(r"\b(?:thick|thin|runny|sticky|watery|viscous|syrupy|heavy|light)\b",
                          text[max(0, against.start() - 12):against.end()]) if against else None     # "thick paint vs water"

@@ -12,9 +12,10 @@ from pantarhei.bridge.reasoning.everyday import sections
 
 
 @lru_cache(maxsize=None)
-def _liquids() -> tuple[re.Pattern, dict[str, int], re.Pattern]:
+def _liquids() -> tuple[re.Pattern, dict[str, int], re.Pattern, re.Pattern]:
     """The phrases naming a liquid, chosen between as one pattern, the
-    section (the value) each is read as, and two set against each other."""
+    section (the value) each is read as, two set against each other, and
+    two poured at once."""
     value: dict[str, int] = {}
     for k, s in enumerate(sections()):
         if s.words.endswith("liquid") and s.said_back != "read as the liquid poured":
@@ -23,7 +24,8 @@ def _liquids() -> tuple[re.Pattern, dict[str, int], re.Pattern]:
     names = "|".join(re.escape(p) for p in sorted(value, key=lambda p: (-len(p), p)))
     said = rf"(?:a |an |some |plain |the )?({names})s?"
     return re.compile(rf"\b{said} ?,? or {said}\b"), value, re.compile(
-        rf"\b(?:pouring |pour )?{said} ?,? (?:vs\.?|versus|compared (?:to|with)|against) (?:pouring |pour )?{said}\b")
+        rf"\b(?:pouring |pour )?{said} ?,? (?:vs\.?|versus|compared (?:to|with)|against) (?:pouring |pour )?{said}\b"), re.compile(
+        rf"\bpour(?:s|ed|ing)? {said} and {said}\b")
 
 
 def chosen_liquids(text: str) -> re.Match | None:
@@ -34,6 +36,11 @@ def chosen_liquids(text: str) -> re.Match | None:
 def set_against_liquids(text: str) -> re.Match | None:
     """Where `text` (normalised) sets two liquids against each other ("water vs olive oil"), or None."""
     return _liquids()[2].search(text)
+
+
+def poured_together(text: str) -> re.Match | None:
+    """Where `text` (normalised) pours two liquids at once ("pour bleach and vinegar into the same bowl"), or None."""
+    return _liquids()[3].search(text)
 
 
 def liquid_values() -> dict[str, int]:
