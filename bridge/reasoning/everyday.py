@@ -75,7 +75,7 @@ class Matcher:
     looking the words up (no regular expression to compile: `ask` reads
     one question and exits). `before`: phrases that may stand before one
     of these as part of its name ("a milk carton"); `glass_before`:
-    phrases before which "glass" is what a bowl is made of ("a glass jug");
+    phrases before which "glass" (or "tin") is what a bowl is made of ("a glass jug");
     `held`: phrases of `before` that are read with the name, as what the
     container holds, each with the words it is read as ("the honey jar": a
     sticky liquid), before `read_as` (the section's words), unless a phrase
@@ -124,12 +124,10 @@ class Matcher:
                 i += 1
         return out
 
-
     def _said_apart(self, words: list[str], first: int, end: int) -> bool:
         """Whether a phrase of `apart` is said outside words[first:end]."""
         rest = words[:first] + ["."] + words[end:]
-        return any(tuple(rest[k:k + n]) in self.apart
-                   for k in range(len(rest)) for n in range(1, self.longest + 1))
+        return any(self._at(self.apart, rest, k) for k in range(len(rest)))
 
 
 def plural(phrase: str) -> str:

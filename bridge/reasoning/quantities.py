@@ -57,6 +57,8 @@ CUES = {
 #: The words read with a number besides its cues: a roll is "tilted sideways", a pitch
 #: "rotated forward".
 ALSO_READ = {"roll": ("tilt",), "pitch": ("rotate", "turn")}
+#: The cues that place a length (a tilt's places none: "pouring from 10 cm at a steep angle").
+_PLACING = frozenset(w for c in ("side", "offset", "height") for w in CUES[c])
 #: Words that say a time as a span a move takes: "over 2 s", not "held for 5 s".
 _SPAN = {"over", "in", "within"}
 #: How far from a number its cue words may stand.
@@ -236,8 +238,7 @@ def read_numbers(tokens: list[Token], placeable: frozenset[str]) -> list[Token]:
         beside = [k for k in sides if k in near]
         cues = {cue_of[tokens[k].word] for k in near}        # "tilt" picks a pitch, as a cue
         choosing = {cue_of[tokens[beside[0]].word]} | (cues & {"below", "offset"}) if beside else cues
-        placing = {w for c in ("side", "offset", "height") for w in CUES[c]}     # (a tilt's cue places no length)
-        if q.measures == "length" and not choosing & placing and (_poured_from(tokens, i, stage) or _bare(tokens, i)):
+        if q.measures == "length" and not choosing & _PLACING and (_poured_from(tokens, i, stage) or _bare(tokens, i)):
             choosing = {"height"}           # "pour from 40 cm", "pouring it from about 6 inches": the height poured from
         if q.measures == "time" and any(cue_of.get(tokens[k].word) in CUES["pitch"] for k in range(
                 max(0, i - 8), i) if tokens[k].clause == tokens[i].clause):

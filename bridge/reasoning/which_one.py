@@ -26,6 +26,9 @@ _WHICH = re.compile(r"\bwhich (?:"
                     # "which" alone: its verb inflected and said with how much ("which splashes less")
                     r"|(?P<verb2>[a-z]+?)(?P<ending2>es|s)\b(?P<how2> (?:more|less|the most|the least|most|least)\b))")
 
+#: A second "which" asked after the first: "... and which spills more".
+_AND_WHICH = re.compile(rf"(?<=\band ){_WHICH.pattern}")
+
 
 _ONE_OF = re.compile(r"\b(?:does|do|will|would|can) one of them (?P<verb>[a-z]+)\b(?: (?:and|but) not the other\b)?")
 
@@ -60,7 +63,7 @@ def which_one(text: str) -> tuple[str, tuple[str, ...]]:
         verb = said_verb + ("e" if ending == "es" and not re.search(r"(?:sh|ch|ss|x)$", said_verb) else "")
         text, said = (text[:m.start()] + f"does it {verb}" + text[m.end():],
                       (*said, f"{m.group(0)}: read as does it {verb}, of the one said first"))
-        m = re.compile(rf"(?<=\band ){_WHICH.pattern}").search(text, m.start() + len(f"does it {verb}"))
+        m = _AND_WHICH.search(text, m.start() + len(f"does it {verb}"))
     return text, said
 
 
