@@ -62,7 +62,8 @@ _IF_HELPS = re.compile(r"^(?:so )?(?:if|what if) (?P<scene>[^,?]+?),? (?:would|w
                        r"(?:help|work|stop (?:it|that|this)|fix (?:it|that|this)|prevent (?:it|that|this)|solve (?:it|that|this)"
                        r"|be better)[?.! ]*$")
 #: A cause put as a yes or no of a scene: "is the bowl just too light?", "was it too high?".
-_TOO = re.compile(r"^(?:so )?(?:is|was|am|were) (?:it|that|i|we|the (?P<noun>[a-z]+)) (?:just |simply |maybe )?(?:too |because (?:it is|it was) (?:too )?)"
+_TOO = re.compile(r"^(?:so )?(?:is|was|am|were) (?:it|that|i|we|you|he|she|they|the (?P<noun>[a-z]+)) (?:just |simply |maybe )?"
+                  r"(?:(?:holding|pouring) (?:it |the \w+ )?(?:from )?)?(?:too |because (?:it is|it was) (?:too )?)"
                   r"(?P<value>light|heavy|slippery|bouncy|high|low|sticky|runny|full)(?: or (?:something|what))?[?.! ]*$")
 #: What splits the narrative's clauses, for the scene a cause is asked of.
 _CLAUSES = re.compile(r",? (?:and then|but then|and|but|then|so|until|because) |, | (?=(?:when|while|after|as soon as|even though"
@@ -76,6 +77,10 @@ _MOVES_TOLD = (
     (" as the jug comes in", re.compile(rf"{_WHO_MOVED}(?:(?:brought|bringing|lowered|lowering)\b|(?:mov|cam|com|swung|swing|carri)\w*"
                                          r"(?: it| (?:the|my|a) \w+)? (?:in|over|closer|down|toward|towards)\b)")),
 )
+#: The bowl said as where a spill told should have gone: it did not all go in ("ran down the
+#: outside instead of going in the bowl", "went on the floor and not in the tub").
+_NOT_IN = re.compile(r"\b(?:instead of|rather than|and not|not) (?:going |landing |getting |ending up )?(?:(?:in|into|inside|in to) )?"
+                     r"(?:the |a |an |my |our )?(?:bowl|dish|destination|basin|tub|pot|pan|glass|mug|cup|bucket)s?\b")
 #: A negation before an outcome told: it did not happen ("nothing came out").
 _NOT = re.compile(r"\b(?:nothing|none|not|never|no|zero)\b")
 
@@ -95,6 +100,8 @@ def _told(clause: str) -> list[tuple[tuple[str, ...], bool]]:
     """The outcomes a clause tells as having happened, each group with
     whether it failed ("it slid": the bowl moved; "nothing came out": it did
     not leave the source; "it went in fine": it held)."""
+    if _NOT_IN.fullmatch(clause.strip(" ,")):
+        return [(("liquid_enters_destination",), True)]         # "it went all over the floor and not in the bowl"
     out: list[tuple[tuple[str, ...], bool]] = []
     for pattern, names, bad in _outcomes()[:-1]:     # (the last is "safe", "fine": no outcome told)
         m = next((m for m in pattern.finditer(clause) if _happened(m, names)), None)    # ("drips landed": not "drips")
@@ -106,6 +113,9 @@ def _told(clause: str) -> list[tuple[tuple[str, ...], bool]]:
         if (group, failed) not in out:
             out.append((group, failed))
         clause = clause[:m.start()] + " " + clause[m.end():]
+    if (("no_spill",), True) in out or (("liquid_remains_in_destination", "no_spill"), True) in out:
+        if _NOT_IN.search(clause) and not any("liquid_enters_destination" in g for g, _ in out):
+            out.append((("liquid_enters_destination",), True))     # "ran down the bottle instead of into the bowl"
     return out
 
 
