@@ -31,6 +31,7 @@ from pantarhei.bridge.reasoning.compared_or import compared_or
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.asides import restated
 from pantarhei.bridge.reasoning.earlier_pour import told
+from pantarhei.bridge.reasoning.everyday import alternation, names, sections
 from pantarhei.bridge.reasoning.little_vessels import refuse_little
 from pantarhei.bridge.reasoning.which_one import which_one
 from pantarhei.bridge.reasoning.words import rewrites
@@ -208,6 +209,7 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
                   lambda m: said.setdefault(f"have {m.group(2)}: read as {_HAD[m.group(2)]}")
                   or f"{m.group(1)} {_HAD[m.group(2)]}", text)
     text, again = restated(_normalised(text))         # "-2 cm (i.e. below the rim)"
+    text = _lip_of_source(text, said)                  # "does the jug lip touch the bowl": its spout
     # what is going to happen, said subject first: "stock gonna land in it?" asks "will stock land in it?"
     text = re.sub(r"(?:^|(?<=[,;:.?!] ))((?:the |my |a |this |that )?(?!i\b|we\b|you\b)[a-z]+|it|they) (?:is |are )?gonna (?=[a-z]+\b)",
                   lambda m: said.setdefault(f"{m.group(0).strip()}: read as will {m.group(1)}") or f"will {m.group(1)} ", text)
@@ -218,6 +220,27 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text, which = which_one(text)                      # "a vs b - which one slides more": does it slide
     refuse_little(text)                                # "a little jug": a size
     return text, (*said, *again, *earlier, *avoiding, *cause, *compared, *which)
+
+
+#: Containers that are the destination when a lip is named: the lip of one is its rim.
+_DESTINATIONS = frozenset(("bowl", "dish", "basin", "tub", "bucket", "pail", "vat", "container", "destination", "receptacle"))
+#: A lip said after these is a place ("over the lip of the cup", "drip off the lip"): not the source's part.
+_AT_A_PLACE = "".join(f"(?<!{w} )" for w in ("over", "past", "above", "near", "at", "to", "onto", "off", "from", "around", "along"))
+
+
+def _lip_of_source(text: str, said: dict[str, None]) -> str:
+    """`text` with the lip of the source said as its spout ("the jug lip", "the lip of the flask"
+    it is poured from): a part of the source, not the bowl's rim. Only a lip named as what
+    touches or is struck is: never one said as a place (_AT_A_PLACE)."""
+    held = [w for w in dict.fromkeys(re.findall(r"\bfrom (?:the |a |an |my |your |this |that )?([a-z]+)\b", text))
+            if w in names("bowl") and w not in _DESTINATIONS]
+    sources = alternation([*(p for s in sections() if s.words == "bowl poured from" for p in s.phrases), *held])
+    before = len(text)
+    text = re.sub(rf"{_AT_A_PLACE}\b((?:the|its|a) (?:{sources}) )lip\b", r"\1spout", text)
+    text = re.sub(rf"{_AT_A_PLACE}\b((?:the|its|a) )lip(?= of (?:the |a |an |my |this |that )?(?:{sources})\b)", r"\1spout", text)
+    if len(text) != before:
+        said.setdefault("lip: read as spout, a part of the source")
+    return text
 
 
 def _normalised(text: str) -> str:
