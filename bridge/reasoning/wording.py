@@ -191,6 +191,10 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     # every drop of a liquid is all of it: "get every drop of the syrup into the bowl"
     text = re.sub(r"\bevery (?:last |single )?drop of (?:the |my |that |this )?",
                   lambda m: said.setdefault(f"{m.group(0).strip()}: read as all of the") or "all of the ", text)
+    # the last of the liquid is some of it: "does the last bit stay in the jug", "does the rest drip on the bench"
+    text = re.sub(r"\bthe (?:very )?(?:last (?:little )?(?:bit|drop|drops|dribble|few drops|of it)|rest(?= of\b| (?:stay|stays|stayed"
+                  r"|remain|remains|drip|drips|dripped|come|comes|came|go|goes|went|end|ends|is|was)\b))",
+                  lambda m: said.setdefault(f"{m.group(0)}: read as some") or "some", text)
     # the source yeeted is flung ("yeet the cup over the bowl": a fast move in); the liquid yeeted, a force of
     # pouring, is left to be refused
     text = re.sub(r"\byeet(s|ed|ing)?(?= (?:it|(?:the|my|a|an) (?:cup|mug|jug|glass|bottle|pitcher|can|pot|pan|carton|source"

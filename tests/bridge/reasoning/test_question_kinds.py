@@ -77,6 +77,7 @@ def test_no_word_is_dropped_silently(question):
     ("can i tilt it halfway without spilin", "spilin: read as spilling"),
     ("pour frm high lol", "frm: read as from"),
     ("does the bottle lip hit the bowl?", "lip: read as spout, a part of the source"),
+    ("does the rest stay in the jug?", "the rest: read as some"),
     ("pour frm high lol", "lol: ignored: laughter as chat types it says nothing of the pour"),
     ("pour alot of milk", "alot: read as a lot"),
     ("with a heavy bowl instead of a light one", "one: read as bowl"),
