@@ -14,6 +14,7 @@ import re
 #: What asks its cause: "why?", "what went wrong", "what did I do wrong".
 CAUSE = re.compile(r"^(?:so |and |but )?(?:why|how come|what went wrong|what did (?:i|we) do wrong|what happened(?: there| here)?"
                     r"|what caused (?:that|this|it)|why did (?:that|this|it) happen|why is that|why (?:does|did) (?:that|this|it)"
+                    r"|what made (?:that|this|it|the \w+) (?:happen|move|slide|tip|tip over|fall|fall over|spill|splash)"
                     r"(?: happen)?"
                     # one of two causes asked: "was it the weight or the angle?"
                     r"|(?:was|is) it (?:the |my )?[a-z]+ or (?:the |my )?[a-z]+)[?.! ]*$")

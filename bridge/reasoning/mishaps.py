@@ -63,8 +63,11 @@ _IF_HELPS = re.compile(r"^(?:so )?(?:if|what if) (?P<scene>[^,?]+?),? (?:would|w
                        r"|be better)[?.! ]*$")
 #: A cause put as a yes or no of a scene: "is the bowl just too light?", "was it too high?".
 _TOO = re.compile(r"^(?:so )?(?:is|was|am|were) (?:it|that|i|we|you|he|she|they|the (?P<noun>[a-z]+)) (?:just |simply |maybe )?"
-                  r"(?:(?:holding|pouring) (?:it |the \w+ )?(?:from )?)?(?:too |because (?:it is|it was) (?:too )?)"
-                  r"(?P<value>light|heavy|slippery|bouncy|high|low|sticky|runny|full)(?: or (?:something|what))?[?.! ]*$")
+                  r"(?:(?:holding|pouring) (?:it |the \w+ )?(?:from )?|(?:going|moving|coming in|moving (?:it|the \w+)(?: in| away)?"
+                  r"|bringing (?:it|the \w+) in|pulling (?:it|the \w+) away) )?(?:too |because (?:it is|it was) (?:too )?)"
+                  r"(?P<value>light|heavy|slippery|bouncy|high|low|sticky|runny|full|fast|quick|slow)(?: or (?:something|what))?[?.! ]*$")
+#: The move a speed asked as a cause is of, by the phase the mishap is told in: "when I moved it in ... was I going too fast?".
+_SPEED_OF = {" as the jug comes in": "move in", " as the jug moves away": "move away"}
 #: What splits the narrative's clauses, for the scene a cause is asked of.
 _CLAUSES = re.compile(r",? (?:and then|but then|and|but|then|so|until|because) |, | (?=(?:when|while|after|as soon as|even though"
                       r"|although|though) )")
@@ -112,6 +115,8 @@ def _told(clause: str) -> list[tuple[tuple[str, ...], bool]]:
         failed = bad != (_NOT.search(before) is not None)
         if (group, failed) not in out:
             out.append((group, failed))
+        if names == ("destination_upright",) and m.group(0).startswith("knock") and not _liquid_before().search(before):
+            out.append((("source_clear",), failed))    # knocked over: struck by the source ("the pitcher knocked the bowl over")
         clause = clause[:m.start()] + " " + clause[m.end():]
     if (("no_spill",), True) in out or (("liquid_remains_in_destination", "no_spill"), True) in out:
         if _NOT_IN.search(clause) and not any("liquid_enters_destination" in g for g, _ in out):
@@ -126,7 +131,7 @@ def _happened(m: re.Match, names: tuple[str, ...]) -> bool:
         return False        # what the one pouring did ("i tipped the jug"), not an outcome
     if names == ("source_clear",) and _liquid_before().search(before):
         return False        # the liquid striking the bowl ("the stream hit the rim and sprayed"): no contact of the source
-    if names == ("destination_upright",) and (re.match(r" (?:the|a|an|my|his|her|their|it)\b", m.string[m.end():]) or re.search(
+    if names == ("destination_upright",) and not re.match(r"(?:knock|push|shov)", m.group(0)) and (re.match(r" (?:the|a|an|my|his|her|their|it)\b", m.string[m.end():]) or re.search(
             r"\b(?:already )$|\b(?:the|my|a) (?!bowl\b|dish\b|destination\b)[a-z]+ (?:already |was |is |got )*$", before)):
         return False        # tipping something, or something held tipped: the source ("she keeps tipping the jug",
         #                     "i started with the bottle already tipped")
@@ -202,6 +207,11 @@ def _read(told: str, asked: str) -> tuple[str, tuple[str, ...]] | None:
             rest = f"{how} {m.group('scene')}, {question}?"
             return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did")
     m = _TOO.match(asked)
+    if m is not None and m.group("value") in ("fast", "quick", "slow"):
+        if when not in _SPEED_OF:
+            return None         # a speed with no move told: of pouring itself, which has none
+        rest = f"if i {_SPEED_OF[when]} {'slowly' if m.group('value') == 'slow' else 'fast'}, {question}?"
+        return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did")
     if m is not None:
         rest = f"if the {m.group('noun')} is {m.group('value')}, {question}?" if m.group("noun") else (
             f"if i pour {m.group('value')}, {question}?")
