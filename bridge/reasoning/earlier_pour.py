@@ -17,7 +17,9 @@ CAUSE = re.compile(r"^(?:so |and |but )?(?:why|how come|what went wrong|what did
                     r"|what made (?:that|this|it|the \w+) (?:happen|move|slide|tip|tip over|fall|fall over|spill|splash)"
                     r"(?: happen)?"
                     # one of two causes asked: "was it the weight or the angle?"
-                    r"|(?:was|is) it (?:the |my )?[a-z]+ or (?:the |my )?[a-z]+)[?.! ]*$")
+                    r"|(?:was|is) it (?:the |my )?[a-z]+ or (?:the |my )?[a-z]+"
+                    # one cause named, no value said: "was it the height?" (of the pour told)
+                    r"|(?:was|is) it (?:the |my |because of the )?(?:height|tilt|angle|speed|weight|position|distance))[?.! ]*$")
 #: What asks for a remedy: "what should I change", "how do I stop that", "any tips".
 REMEDY = re.compile(
     r"^(?:so |and |but )?(?:what (?:should|do|can|could|would|must|shall) (?:i|we|you|he|she|they) (?:do|change|try|adjust)"
