@@ -84,6 +84,9 @@ _MOVES_TOLD = (
 #: outside instead of going in the bowl", "went on the floor and not in the tub").
 _NOT_IN = re.compile(r"\b(?:instead of|rather than|and not|not) (?:going |landing |getting |ending up )?(?:(?:in|into|inside|in to) )?"
                      r"(?:the |a |an |my |our )?(?:bowl|dish|destination|basin|tub|pot|pan|glass|mug|cup|bucket)s?\b")
+#: A cause asked before the mishap it is asked of: "what went wrong here, I turned the cup upside down ...".
+_CAUSE_FIRST = re.compile(r"^(?P<cause>what went wrong|what happened|what did (?:i|we) do wrong)(?: here| there)?(?: ?[,:;.?!])+ *"
+                          r"(?P<told>(?:i|we|he|she|they|it|the|my)\b[^?]+?)[ .!]*$")
 #: A negation before an outcome told: it did not happen ("nothing came out").
 _NOT = re.compile(r"\b(?:nothing|none|not|never|no|zero)\b")
 
@@ -164,7 +167,11 @@ def mishap(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with a mishap told before its question read as
     the module says, and what is said back; `text` as it is otherwise. The
     question is taken from the last break in the text back, the first that
-    asks in one of the ways the module reads."""
+    asks in one of the ways the module reads; a cause asked first ("what went wrong here, I turned
+    the cup upside down ...") is asked after the mishap."""
+    first = _CAUSE_FIRST.match(text)
+    if first is not None:
+        text = f"{first.group('told')}. {first.group('cause')}?"
     for cut in reversed(list(_BREAK.finditer(text))):
         told, asked = text[:cut.start()].strip(), text[cut.end():].strip()
         if re.match(rf"(?:{_ASKS})\b", told) or _WANTS.search(told):
