@@ -192,7 +192,7 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text = re.sub(r"\bevery (?:last |single )?drop of (?:the |my |that |this )?",
                   lambda m: said.setdefault(f"{m.group(0).strip()}: read as all of the") or "all of the ", text)
     # the last of the liquid is some of it: "does the last bit stay in the jug", "does the rest drip on the bench"
-    text = re.sub(r"\bthe (?:very )?(?:last (?:little )?(?:bit|drop|drops|dribble|few drops|of it)|rest(?= of\b| (?:stay|stays|stayed"
+    text = re.sub(r"\bthe (?:very )?(?:last (?:little )?(?:bits?|drops?|dribbles?|few drops|of it)\b|rest(?= of\b| (?:stay|stays|stayed"
                   r"|remain|remains|drip|drips|dripped|come|comes|came|go|goes|went|end|ends|is|was)\b))",
                   lambda m: said.setdefault(f"{m.group(0)}: read as some") or "some", text)
     # the source yeeted is flung ("yeet the cup over the bowl": a fast move in); the liquid yeeted, a force of
