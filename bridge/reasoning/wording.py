@@ -235,13 +235,15 @@ _AT_A_PLACE = "".join(f"(?<!{w} )" for w in ("over", "past", "above", "near", "a
 def _lip_of_source(text: str, said: dict[str, None]) -> str:
     """`text` with the lip of the source said as its spout ("the jug lip", "the lip of the flask"
     it is poured from): a part of the source, not the bowl's rim. Only a lip named as what
-    touches or is struck is: never one said as a place (_AT_A_PLACE)."""
+    strikes the bowl is ("does the jug's lip hit the bowl"): never one said as a place
+    (_AT_A_PLACE), nor one said to rest on the bowl (a touch in the scene, which no proposition holds)."""
     held = [w for w in dict.fromkeys(re.findall(r"\bfrom (?:the |a |an |my |your |this |that )?([a-z]+)\b", text))
             if w in names("bowl") and w not in _DESTINATIONS]
     sources = alternation([*(p for s in sections() if s.words == "bowl poured from" for p in s.phrases), *held])
     before = len(text)
-    text = re.sub(rf"{_AT_A_PLACE}\b((?:the|its|a) (?:{sources}) )lip\b", r"\1spout", text)
-    text = re.sub(rf"{_AT_A_PLACE}\b((?:the|its|a) )lip(?= of (?:the |a |an |my |this |that )?(?:{sources})\b)", r"\1spout", text)
+    strikes = r"(?: \w+){0,2}? (?:touch|hit|bump|knock|bang|clip|strike|struck|collid|scrap|graz|clink|nudg|tap|make contact)"
+    text = re.sub(rf"{_AT_A_PLACE}\b((?:the|its|a) (?:{sources}) )lip\b(?={strikes})", r"\1spout", text)
+    text = re.sub(rf"{_AT_A_PLACE}\b((?:the|its|a) )lip(?= of (?:the |a |an |my |this |that )?(?:{sources}){strikes})", r"\1spout", text)
     if len(text) != before:
         said.setdefault("lip: read as spout, a part of the source")
     return text
