@@ -11,7 +11,8 @@ move made horizontally ("retreat horizontally", "pull it back
 horizontally") is the way the source moves, which no proposition says, and
 no tilt. How far, said with "far": "not tilted very far" is slightly
 tilted ("not going to tip it much" too), unless a value follows that says how far; "tip it really far"
-steeply; "tilted too far" is refused (past what?)."""
+steeply; "tilted too far" is refused (past what?), but for a pour told ("I tipped the jug too
+far and it went on the counter"), where it is tipped far: steeply tilted, said back."""
 from __future__ import annotations
 
 from pantarhei.bridge.reasoning.everyday import UNCLEAR
@@ -56,6 +57,11 @@ FAR_TILTS: tuple[tuple, ...] = (
     # tipped really far: steeply (too far stays refused: past what?)
     ("steeply tilted", (r"re( far):\b(?:tilt|tip)\w*(?: (?:it|them|the \w+))? (?:really|very|way|pretty|quite) far\b"
                         r"(?! (?:from|away|off|to)\b)",), "read as steeply tilted"),
+    # tipped too far, told of a pour that went wrong ("I tipped the jug too far and ..."): tipped far, the
+    # least of which is steeply
+    ("steeply tilted", (r"re(too far):\b(?:tilted|tipped)(?: (?:it|them|the \w+))? (?:way |much |far )?too far\b"
+                        r"(?! (?:from|away|off|to)\b)",),
+     'read as steeply tilted: tipped far, as a pour told says it (say "upside down" for further)'),
     # tipped too far: past what? (not far from the bowl)
     (UNCLEAR, (r"re:\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:too |so |that |very )?far\b"
                r"(?! (?:from|away|off|to)\b)",)),

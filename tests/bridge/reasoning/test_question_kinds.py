@@ -78,6 +78,7 @@ def test_no_word_is_dropped_silently(question):
     ("pour frm high lol", "frm: read as from"),
     ("does the bottle lip hit the bowl?", "lip: read as spout, a part of the source"),
     ("does the rest stay in the jug?", "the rest: read as some"),
+    ("tilted the beaker way too far and it splashed. why", 'tilted the beaker way too far: read as steeply tilted: tipped far, as a pour told says it (say "upside down" for further)'),
     ("pour frm high lol", "lol: ignored: laughter as chat types it says nothing of the pour"),
     ("pour alot of milk", "alot: read as a lot"),
     ("with a heavy bowl instead of a light one", "one: read as bowl"),
