@@ -214,6 +214,7 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
                   or f"{m.group(1)} {_HAD[m.group(2)]}", text)
     text, again = restated(_normalised(text))         # "-2 cm (i.e. below the rim)"
     text = _lip_of_source(text, said)                  # "does the jug lip touch the bowl": its spout
+    text = _stream_striking(text, said)                # "the stream hit the edge and bounced out": bounced out
     # what is going to happen, said subject first: "stock gonna land in it?" asks "will stock land in it?"
     text = re.sub(r"(?:^|(?<=[,;:.?!] ))((?:the |my |a |this |that )?(?!i\b|we\b|you\b)[a-z]+|it|they) (?:is |are )?gonna (?=[a-z]+\b)",
                   lambda m: said.setdefault(f"{m.group(0).strip()}: read as will {m.group(1)}") or f"will {m.group(1)} ", text)
@@ -247,6 +248,19 @@ def _lip_of_source(text: str, said: dict[str, None]) -> str:
     if len(text) != before:
         said.setdefault("lip: read as spout, a part of the source")
     return text
+
+
+def _stream_striking(text: str, said: dict[str, None]) -> str:
+    """`text` without the liquid's striking the bowl's rim when what it did next is told ("the stream
+    hit the edge of the bowl and jumped out": it jumped out): the liquid striking the bowl is no outcome
+    (the source's striking it is, and is read), what it does next is."""
+    liquids = alternation(["stream", "jet", "flow", "pour", "liquid", "drop", *names("liquid")])
+    m = re.search(rf"\b(?:{liquids}) (?P<hit>(?:hit|hits|hitting|struck|strikes|striking) (?:the |its )?(?:bowl |destination )?"
+                  rf"(?:rim|edge|side|lip)(?: of (?:the |a |my )?(?:bowl|destination))?(?: and then| then| and| ,)+ )(?=[a-z])", text)
+    if m is None:
+        return text
+    said.setdefault(f"{m.group('hit').strip(' ,')}: ignored: the liquid striking the bowl is no outcome (what it does next is read)")
+    return text[:m.start("hit")] + text[m.end("hit"):]
 
 
 def _normalised(text: str) -> str:
