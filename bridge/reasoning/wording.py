@@ -31,7 +31,7 @@ from pantarhei.bridge.reasoning.compared_or import compared_or
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.asides import restated
 from pantarhei.bridge.reasoning.earlier_pour import told
-from pantarhei.bridge.reasoning.everyday import alternation, names, sections
+from pantarhei.bridge.reasoning.rim_strikers import lip_of_source, stream_striking
 from pantarhei.bridge.reasoning.little_vessels import refuse_little
 from pantarhei.bridge.reasoning.which_one import which_one
 from pantarhei.bridge.reasoning.words import rewrites
@@ -213,8 +213,8 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
                   lambda m: said.setdefault(f"have {m.group(2)}: read as {_HAD[m.group(2)]}")
                   or f"{m.group(1)} {_HAD[m.group(2)]}", text)
     text, again = restated(_normalised(text))         # "-2 cm (i.e. below the rim)"
-    text = _lip_of_source(text, said)                  # "does the jug lip touch the bowl": its spout
-    text = _stream_striking(text, said)                # "the stream hit the edge and bounced out": bounced out
+    text = lip_of_source(text, said)                   # "does the jug lip touch the bowl": its spout
+    text = stream_striking(text, said)                 # "the stream hit the edge and bounced out": bounced out
     # what is going to happen, said subject first: "stock gonna land in it?" asks "will stock land in it?"
     text = re.sub(r"(?:^|(?<=[,;:.?!] ))((?:the |my |a |this |that )?(?!i\b|we\b|you\b)[a-z]+|it|they) (?:is |are )?gonna (?=[a-z]+\b)",
                   lambda m: said.setdefault(f"{m.group(0).strip()}: read as will {m.group(1)}") or f"will {m.group(1)} ", text)
@@ -225,42 +225,6 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text, which = which_one(text)                      # "a vs b - which one slides more": does it slide
     refuse_little(text)                                # "a little jug": a size
     return text, (*said, *again, *earlier, *avoiding, *cause, *compared, *which)
-
-
-#: Containers that are the destination when a lip is named: the lip of one is its rim.
-_DESTINATIONS = frozenset(("bowl", "dish", "basin", "tub", "bucket", "pail", "vat", "container", "destination", "receptacle"))
-#: A lip said after these is a place ("over the lip of the cup", "drip off the lip"): not the source's part.
-_AT_A_PLACE = "".join(f"(?<!{w} )" for w in ("over", "past", "above", "near", "at", "to", "onto", "off", "from", "around", "along"))
-
-
-def _lip_of_source(text: str, said: dict[str, None]) -> str:
-    """`text` with the lip of the source said as its spout ("the jug lip", "the lip of the flask"
-    it is poured from): a part of the source, not the bowl's rim. Only a lip named as what
-    strikes the bowl is ("does the jug's lip hit the bowl"): never one said as a place
-    (_AT_A_PLACE), nor one said to rest on the bowl (a touch in the scene, which no proposition holds)."""
-    held = [w for w in dict.fromkeys(re.findall(r"\bfrom (?:the |a |an |my |your |this |that )?([a-z]+)\b", text))
-            if w in names("bowl") and w not in _DESTINATIONS]
-    sources = alternation([*(p for s in sections() if s.words == "bowl poured from" for p in s.phrases), *held])
-    before = len(text)
-    strikes = r"(?: \w+){0,2}? (?:touch|hit|bump|knock|bang|clip|strike|struck|collid|scrap|graz|clink|nudg|tap|make contact)"
-    text = re.sub(rf"{_AT_A_PLACE}\b((?:the|its|a) (?:{sources}) )lip\b(?={strikes})", r"\1spout", text)
-    text = re.sub(rf"{_AT_A_PLACE}\b((?:the|its|a) )lip(?= of (?:the |a |an |my |this |that )?(?:{sources}){strikes})", r"\1spout", text)
-    if len(text) != before:
-        said.setdefault("lip: read as spout, a part of the source")
-    return text
-
-
-def _stream_striking(text: str, said: dict[str, None]) -> str:
-    """`text` without the liquid's striking the bowl's rim when what it did next is told ("the stream
-    hit the edge of the bowl and jumped out": it jumped out): the liquid striking the bowl is no outcome
-    (the source's striking it is, and is read), what it does next is."""
-    liquids = alternation(["stream", "jet", "flow", "pour", "liquid", "drop", *names("liquid")])
-    m = re.search(rf"\b(?:{liquids}) (?P<hit>(?:hit|hits|hitting|struck|strikes|striking) (?:the |its )?(?:bowl |destination )?"
-                  rf"(?:rim|edge|side|lip)(?: of (?:the |a |my )?(?:bowl|destination))?(?: and then| then| and| ,)+ )(?=[a-z])", text)
-    if m is None:
-        return text
-    said.setdefault(f"{m.group('hit').strip(' ,')}: ignored: the liquid striking the bowl is no outcome (what it does next is read)")
-    return text[:m.start("hit")] + text[m.end("hit"):]
 
 
 def _normalised(text: str) -> str:

@@ -1,0 +1,44 @@
+"""What strikes the bowl's rim, said before a question is read (wording.normalising): the lip
+of the source, which is its spout ("does the jug's lip hit the bowl": the source's contact,
+asked), and the liquid, whose striking is no outcome ("the stream hit the edge of the bowl and
+jumped out": what it did next is read)."""
+from __future__ import annotations
+
+import re
+
+from pantarhei.bridge.reasoning.everyday import alternation, names, sections
+
+#: Containers that are the destination when a lip is named: the lip of one is its rim.
+_DESTINATIONS = frozenset(("bowl", "dish", "basin", "tub", "bucket", "pail", "vat", "container", "destination", "receptacle"))
+#: A lip said after these is a place ("over the lip of the cup", "drip off the lip"): not the source's part.
+_AT_A_PLACE = "".join(f"(?<!{w} )" for w in ("over", "past", "above", "near", "at", "to", "onto", "off", "from", "around", "along"))
+
+
+def lip_of_source(text: str, said: dict[str, None]) -> str:
+    """`text` with the lip of the source said as its spout ("the jug lip", "the lip of the flask"
+    it is poured from): a part of the source, not the bowl's rim. Only a lip named as what
+    strikes the bowl is ("does the jug's lip hit the bowl"): never one said as a place
+    (_AT_A_PLACE), nor one said to rest on the bowl (a touch in the scene, which no proposition holds)."""
+    held = [w for w in dict.fromkeys(re.findall(r"\bfrom (?:the |a |an |my |your |this |that )?([a-z]+)\b", text))
+            if w in names("bowl") and w not in _DESTINATIONS]
+    sources = alternation([*(p for s in sections() if s.words == "bowl poured from" for p in s.phrases), *held])
+    before = len(text)
+    strikes = r"(?: \w+){0,2}? (?:touch|hit|bump|knock|bang|clip|strike|struck|collid|scrap|graz|clink|nudg|tap|make contact)"
+    text = re.sub(rf"{_AT_A_PLACE}\b((?:the|its|a) (?:{sources}) )lip\b(?={strikes})", r"\1spout", text)
+    text = re.sub(rf"{_AT_A_PLACE}\b((?:the|its|a) )lip(?= of (?:the |a |an |my |this |that )?(?:{sources}){strikes})", r"\1spout", text)
+    if len(text) != before:
+        said.setdefault("lip: read as spout, a part of the source")
+    return text
+
+
+def stream_striking(text: str, said: dict[str, None]) -> str:
+    """`text` without the liquid's striking the bowl's rim when what it did next is told ("the stream
+    hit the edge of the bowl and jumped out": it jumped out): the liquid striking the bowl is no outcome
+    (the source's striking it is, and is read), what it does next is."""
+    liquids = alternation(["stream", "jet", "flow", "pour", "liquid", "drop", *names("liquid")])
+    m = re.search(rf"\b(?:{liquids}) (?P<hit>(?:hit|hits|hitting|struck|strikes|striking) (?:the |its )?(?:bowl |destination )?"
+                  rf"(?:rim|edge|side|lip)(?: of (?:the |a |my )?(?:bowl|destination))?(?: and then| then| and| ,)+ )(?=[a-z])", text)
+    if m is None:
+        return text
+    said.setdefault(f"{m.group('hit').strip(' ,')}: ignored: the liquid striking the bowl is no outcome (what it does next is read)")
+    return text[:m.start("hit")] + text[m.end("hit"):]
