@@ -15,7 +15,7 @@ import re
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.everyday import sections
-from pantarhei.bridge.reasoning.two_liquids import chosen_liquids, liquid_values, poured_together, set_against_liquids
+from pantarhei.bridge.reasoning.two_liquids import chosen_liquids, liquid_values, poured_together, read_alike, set_against_liquids
 
 
 def refuse_choice(text: str) -> None:
@@ -29,13 +29,13 @@ def refuse_choice(text: str) -> None:
     against = set_against_liquids(text)
     told_how = re.search(r"\b(?:thick|thin|runny|sticky|watery|viscous|syrupy|heavy|light)\b",
                          text[max(0, against.start() - 12):against.end()]) if against else None     # "thick paint vs water"
-    if against and not told_how and sections()[value[against.group(1)]].words == sections()[value[against.group(2)]].words:
+    if against and not told_how and read_alike(against):
         said = sections()[value[against.group(1)]].said_back.removeprefix("read as ").split(":")[0] or "an ordinary liquid"
         raise UserError(f"\"{against.group(0)}\": both are read as {said}, so the vocabulary cannot tell the two "
                         f"pours apart: ask about one of them, or set against it a liquid it reads otherwise "
                         f"(\"honey vs water\")")
     m = chosen_liquids(text)
-    if m is None or sections()[value[m.group(1)]].words == sections()[value[m.group(2)]].words:
+    if m is None or read_alike(m):
         return                                  # "water or milk": both read as an ordinary liquid
     from pantarhei.bridge.reasoning.outcomes import hear       # here: outcomes reads words with wording.py
     if hear(text).goals:

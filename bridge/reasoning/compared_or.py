@@ -21,11 +21,15 @@ from __future__ import annotations
 
 import re
 
-from pantarhei.bridge.reasoning.two_liquids import chosen_liquids
+from pantarhei.bridge.reasoning.two_liquids import chosen_liquids, read_alike
 
 _COMPARING = re.compile(r"\b(?:better|best|safer|safest|worse|worst|preferable|which|likelier"
                         r"|(?:more|less|most|least) (?:likely|prone))\b")
 _ASKED_WHAT_TO_DO = re.compile(r"\b(?:should|shall)\b")
+#: An outcome compared between two liquids chosen between ("which one drips more", "more likely to
+#: overflow"): they are compared, not chosen (choices.py refuses a choice with no outcome compared).
+_OUTCOME_COMPARED = re.compile(r"\bwhich(?: one| of them| of the two)? (?!is better|would be better|is best)[a-z]+"
+                               r"|\b(?:more|less|most|least) (?:likely|prone)\b|\blikelier\b")
 #: "should I ... or ...", asked of no goal: which is better.
 _SHOULD = re.compile(r"\b(?:should|shall) (?:i|we|you|she|he|they|the robot)\b")
 #: An outcome asked in a clause of its own ("should I pour low or high, will it spill?"): two values, refused.
@@ -148,8 +152,13 @@ def compared_or(text: str) -> tuple[str, tuple[str, ...]]:
         text = text[:should.start()] + "is it better to" + text[should.end():]
     elif not _COMPARING.search(text) or _ASKED_WHAT_TO_DO.search(text):
         return text, ()
+    liquids = chosen_liquids(text)
+    if liquids and not read_alike(liquids) and _OUTCOME_COMPARED.search(text):      # "is syrup or water more likely to leave some in the bottle?"
+        at = text.index(" or ", liquids.start())
+        return (text[:at] + " vs " + text[at + 4:],
+                (*said, "or: read as vs: two liquids compared, the one said first answered"))
     m = _OR.search(text)
-    if m is None or m.start() == 0 or chosen_liquids(text):
+    if m is None or m.start() == 0 or liquids:
         return (text, said) if said else (text, ())
     return (text[:m.start()] + " vs " + text[m.end():],
             (*said, "or: read as vs: two scenes compared, the one said first answered"))

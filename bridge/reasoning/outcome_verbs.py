@@ -125,9 +125,11 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     # left behind in the source: kept in it ("with nothing left behind")
     (r"(?:left|stay(?:s|ed|ing)?|remain(?:s|ed|ing)?) behind\b"
      # what is left in it, said of the pour: "which one leaves more behind in the cup"
-     r"|leav(?:e|es|ing) (?:more |less |much |some |any |anything |something |a lot |a bit |nothing )?behind\b"
+     r"|leav(?:e|es|ing) (?:more |less |much |some |any |anything |something |a lot |a bit |nothing |stuff |(?:any |some |a )?residue "
+     r"|(?:a|any) (?:film|layer|coat|coating|skin|trace) )?behind\b"
      # what is left in it, said of the pour, in the bowl poured from: "a pour that doesn't leave anything in the bottle"
-     r"|leav(?:e|es|ing) (?:more|less|much|some|any|anything|something|a lot|a bit|a drop|nothing)(?: of it)? in"
+     r"|leav(?:e|es|ing) (?:more|less|much|some|any|anything|something|a lot|a bit|a drop|nothing|stuff|(?:any |some |a )?residue"
+     r"|(?:a|any) (?:film|layer|coat|coating|skin|trace))(?: of it)? in"
      r"(?= (?:the |a |an |my |your )(?:[a-z]+ )?(?!(?:bowl|destination)s?\b)[a-z]+\b)(?! (?:the |a |an |my |your )(?:[a-z]+ )?(?:bowl|destination)s?\b)"
      # some of it remaining, said after it left: "shall all of it leave it, or will some remain?"
      r"|(?:(?<=some )|(?<=any )|(?<=bit )|(?<=little ))remain(?:s)?\b(?! in (?:the )?(?:bowl|destination)\b)",

@@ -47,3 +47,10 @@ def liquid_values() -> dict[str, int]:
     """Each phrase naming a liquid, and the section of the everyday word
     list (the value) it is read as."""
     return _liquids()[1]
+
+
+def read_alike(m: re.Match) -> bool:
+    """Whether the two liquids of `m` (chosen_liquids', set_against_liquids' or poured_together's
+    match) are read as one value ("water or milk": an ordinary liquid both)."""
+    value = liquid_values()
+    return sections()[value[m.group(1)]].words == sections()[value[m.group(2)]].words

@@ -61,6 +61,7 @@ def which_one(text: str) -> tuple[str, tuple[str, ...]]:
         said_verb, ending = next((m.group(f"verb{k}"), m.groupdict().get(f"ending{k}")) for k in ("", "2", "3")
                                  if m.group(f"verb{k}"))
         verb = said_verb + ("e" if ending == "es" and not re.search(r"(?:sh|ch|ss|x)$", said_verb) else "")
+        verb += " anything" if verb == "leave" and re.match(r" in\b", text[m.end():]) else ""    # "leaves more in the jug"
         text, said = (text[:m.start()] + f"does it {verb}" + text[m.end():],
                       (*said, f"{m.group(0)}: read as does it {verb}, of the one said first"))
         m = _AND_WHICH.search(text, m.start() + len(f"does it {verb}"))
