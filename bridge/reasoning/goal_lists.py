@@ -2,7 +2,8 @@
 bench, bowl stays put", "need: zero spill, full transfer"): each item said
 as the outcome it wants, the list as "so that ... and so that ...", as
 outcomes.hear reads goals; an item that names what is poured into the bowl
-("get the full cup of broth into the bowl") is that pour, wanting it all in. A list with an item that says no outcome is
+("get the full cup of broth into the bowl") is that pour, wanting it all in; one that empties a
+source into it ("empty the bottle of oil into the bowl"), a pour from it, wanting it all out and in. A list with an item that says no outcome is
 left as written, for the reader to read or refuse."""
 from __future__ import annotations
 
@@ -39,7 +40,9 @@ def goal_list(text: str) -> tuple[str, tuple[str, ...]]:
     for item in items:
         clause = next((r for p, r in _ITEMS if p.match(item)), None)
         if clause is None and not poured and (what := _POURED.match(item)):
-            clause, poured = "it all goes in", f"pour {what.group('what')} "
+            # emptied: what is named is the source, all of it coming out ("empty the bottle of oil into the bowl")
+            clause = "it all comes out and it all goes in" if item.startswith("empty") else "it all goes in"
+            poured = f"pour from {what.group('what')} " if item.startswith("empty") else f"pour {what.group('what')} "
         if clause is None:
             return text, ()
         said.append(clause)

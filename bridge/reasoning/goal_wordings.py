@@ -27,6 +27,12 @@ def _out_and_in(m: re.Match) -> str:
     return f"{'pouring ' + liquid.group(1) + ' ' if liquid else ''}so that it all comes out and it all goes "
 
 
+def _emptied_in(m: re.Match) -> str:
+    """"I want to empty the whole pot of soup into the bowl": so that it empties and it all goes in,
+    the liquid named kept for the scene."""
+    return f"{'pouring ' + m.group(2) + ' ' if m.group(2) else ''}so that the {m.group(1)} empties and it all goes"
+
+
 #: Other ways of saying a goal, said as "so that ...": "keep the cup still" (not "keep the
 #: source upright": how it is held), "don't let it overflow", "make sure it does not spill"
 #: (the words they drop are fillers).
@@ -55,12 +61,12 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:i|we) (?:would )?(?:prefer|rather|hope)(?: that)? (it|them|the [a-z]+) (?:not|never|does not|do not|will not)"
      r" (?=[a-z]+)", r"so that \1 does not "),
     # "I want to empty the whole pot of soup into the bowl": so that it empties and it all goes in
-    (rf"{_EMPTYING_WANTED}(?: of [a-z]+)?(?= into (?:the |a |my )?bowl\b)", r"so that the \1 empties and it all goes"),
+    (rf"{_EMPTYING_WANTED}(?: of ([a-z]+))?(?= into (?:the |a |my )?(?:[a-z]+ )?[a-z]+\b)", _emptied_in),
     # "need to empty a heavy jug of syrup": so that it empties
     (r"(?:^|\b(?:i|we) )(?:need|want|have) to (?:empty|drain) (?:out )?(?:a|the|my) ((?:[a-z]+ )?[a-z]+)(?= of\b|$|[ ,.;!?])",
      r"so that the \1 empties"),
     # "goal: empty the bottle completely": so that it empties ("... into the bowl": it goes in too)
-    (rf"{_EMPTYING}(?= into (?:the |a )?bowl\b)", r"so that the \1 empties and it all goes"),
+    (rf"{_EMPTYING}(?: of ([a-z]+))?(?= into (?:the |a |my )?(?:[a-z]+ )?[a-z]+\b)", _emptied_in),
     (rf"{_EMPTYING}\b", r"so that the \1 empties"),
     # "I'd like to empty the whole mug": so that it empties (into the bowl: and it all goes in, above)
     (rf"{_EMPTYING_WANTED}\b", r"so that the \1 empties"),
@@ -71,7 +77,7 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\bfor (all (?:of )?the [a-z]+|it all|all of it|everything) (?:coming|to come) out\b", r"so that \1 comes out"),
     # "I want to pour all the broth into the bowl": so that it all goes in
     (r"\b(?:i|we) (?:want|need|would like) to (?:pour|get|put|transfer) (all (?:of )?the [a-z]+|it all|all of it|everything|every drop)"
-     r"(?= (?:in|into)\b)", r"so that \1 goes"),
+     r"(?: from (?:the |a |my )?[a-z]+)?(?= (?:in|into)\b)", r"so that \1 goes"),
     # "so that none is wasted": so that nothing spills
     (r"\bso(?: that)? (?:none|nothing|no liquid|not a drop)(?: of it)? (?:is|gets|will be|goes to) wasted?\b", "so that nothing spills"),
     # "without leaving any batter stuck inside the pitcher": so that none is left behind
@@ -126,9 +132,9 @@ WANTING = tuple((re.compile(p), r) for p, r in (
      r"so that \1 empties and it all goes"),
     # "to get all the oil out of the bottle into the bowl": so that it all comes out and goes in
     (r"\b(?:(?:in order |so as )?to |(?<=how do i )|(?<=how can i )|(?<=how should i )|(?<=goal: )|(?<=goal ))get (it all|all of it"
-     r"|everything|every drop|every last (?:drop|bit)(?: of (?:the |my )?[a-z]+(?: [a-z]+)?)?|all (?:of )?the [a-z]+)"
+     r"|everything|every drop|every last (?:drop|bit)(?: of (?:the |my )?[a-z]+(?: [a-z]+)?)?|all (?:of )?the [a-z]+(?: [a-z]+)?)"
      r" (?:out(?: of (?:the |a |my )?[a-z]+(?: [a-z]+)?)?|from (?:the |a |my )?[a-z]+(?: [a-z]+)?)"
-     r" (?:and )?(?=(?:in|into) (?:the |a |my )?(?:[a-z]+ )?(?:bowl|destination)\b)", _out_and_in),
+     r" (?:and )?(?=(?:in|into) (?:the |a |my )?(?:[a-z]+ )?[a-z]+\b)", _out_and_in),
     # "what angle should I tilt to get everything out", "how do I get every drop out": so that it all comes out
     (r"\b(?:(?:in order |so as )?to |(?<=how do i )|(?<=how can i )|(?<=how should i ))get (it all|all of it|everything|every drop|every last drop|all (?:of )?the [a-z]+) out\b"
      r"(?: of (?:the |a |my )?[a-z]+)?(?![^.?!,;]*\band (?:in|into)\b)", r"so that \1 comes out"),
