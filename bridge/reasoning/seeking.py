@@ -257,14 +257,16 @@ def _value_asked(m: re.Match) -> tuple[int, int]:
 #: Whether a scene said reaches a goal said: "is pouring from 20 cm ok?", "is that a problem?",
 #: "is a 100 degree tilt enough?", "does a 90 degree tilt do that?", "is that possible?", "is that
 #: possible with a light bowl?", "is there any height where it never splashes?".
-_REACHES = Cued(r"\b(?:is|would|will)(?: (?:that|this|it|[a-z]+ing\b[a-z0-9 ]{0,30}?|(?:a|an|the) [a-z0-9 ]{1,30}?))?"
+_REACHES = Cued(r"\b(?:is|would|will)(?: (?:that|this|it|[a-z]+ing\b[a-z0-9 ]{0,30}?|(?:a|an|the) [a-z0-9 ]{1,30}?|\d[a-z0-9. ]{0,30}?))?"
                 r" (?:be )?(?:ok|okay|fine|alright|all right|a problem|an issue|enough|possible|doable|feasible"
                 r"|achievable)(?= *[?.!]* *$| (?:with|if|when|using|by) )|\b(?:does|would|will|can|could)(?: (?:a|an|the|that|this) [a-z0-9 ]{1,30}?)?"
                 r" (?:do (?:that|it|this|the trick)|work|achieve (?:that|it|this))(?= *[?.!]* *$)"
-                r"|(?<=[,:;] )(?:doable|possible|feasible|achievable|ok|okay)(?= *[?.!]* *$)"   # "... - doable?"
+                r"|(?<=[,:;] )(?:doable|possible|feasible|achievable|ok|okay)(?= *[?.!]* *$| (?:at|with|from|if|when|using|by) )"   # "... - doable?"
+                # the outcome not wanted, asked of a scene: "I don't want the jug to touch the bowl - will it if I hold it low?"
+                r"|\b(?:will|would|does|could) it(?= if\b)"
                 rf"|\bis there (?:really )?(?:any|an?|some|one|no) {_VALUE}\b",   # "is there any height where it never splashes"
                 ("is there", "ok", "fine", "alright", "all right", "problem", "issue", "enough", "possible", "doable", "feasible",
-                 "achievable", " do ", "work", "achieve"))
+                 "achievable", " do ", "work", "achieve", "it if"))
 
 
 def reaches(text: str) -> bool:
@@ -282,6 +284,10 @@ _CAN_IT = Cued(r"\b(?:can|could|may) (?:it|(?:the|a|an|my|our|your|this|that) (?
                ("can ", "could ", "may "))
 
 
+#: A goal said as what never happens, after "can I pour ...": "so it never drips", "so that nothing spills".
+_SO_NEVER = re.compile(r"\bso(?: that)? (?:it|they|nothing|none|no [a-z]+|the [a-z]+) (?:never|does not|do not|will not|spills|goes)\b")
+
+
 def if_it_can(text: str, goals: tuple[str, ...], manners: bool) -> tuple[tuple[str, ...], tuple[str, ...]]:
     """(asked, goals) of `goals` heard in normalised `text`: a question
     whether the robot can pour without an outcome ("can the robot pour
@@ -291,11 +297,12 @@ def if_it_can(text: str, goals: tuple[str, ...], manners: bool) -> tuple[tuple[s
     down at the edge without hitting the bowl?") asks whether the outcome
     happens there; said of no manner ("can I pour without spilling?") it
     wants the outcome, which a plan finds."""
-    if not (goals and (" without " in f" {text} " or re.search(f"{_CAN_GET}|{_CAN_EMPTY}|{_CAN_OUT}|{_STILL_GET}", text))
-            and not re.search(r"\b(?:how|what|which|where|so(?: that| as)?) ", text)):
+    so_never = _CAN.search(text) and _SO_NEVER.search(text)       # "can I pour the cream so it never drips?"
+    if not (goals and (" without " in f" {text} " or so_never or re.search(f"{_CAN_GET}|{_CAN_EMPTY}|{_CAN_OUT}|{_STILL_GET}", text))
+            and not re.search(r"\b(?:how|what|which|where) ", text) and (so_never or not re.search(r"\bso(?: that| as)? ", text))):
         return (), goals
     asked = tuple(g.removeprefix("neg(").removesuffix(")") for g in goals)
-    if _CAN_IT.search(text):
+    if _CAN_IT.search(text) or so_never:
         return asked, goals
     if manners and _CAN.search(text):         # the manner said before the goal ("can I pour from 40 cm without
         said_first = re.search(rf"{_CAN.pattern}[^,;.?!]*? without\b(?!.*\b(?:if|when|while)\b)", text) and not re.search(
