@@ -169,6 +169,10 @@ def _which(m: re.Match) -> tuple[tuple[str, ...], bool]:
     return OUTCOMES[k][1], OUTCOMES[k][2]
 
 
+#: Words that start a clause, not a container named after "stay inside".
+_CLAUSE_WORDS = frozenset(("if", "when", "while", "and", "or", "but", "after", "before", "as", "once", "so", "because", "then"))
+
+
 def _sits(m: re.Match, k: int) -> bool:
     """Whether liquid said to stay in a container not the bowl stays where it was: "just" sitting
     there ("does the stuff just stay in the cup"), never coming out ("sits in the mug and never
@@ -180,6 +184,9 @@ def _sits(m: re.Match, k: int) -> bool:
     if bowl in ("bowl", "bowls", "destination", "target") or (bowl and re.search(
             rf"\b(?:into|to) (?:the |a |an |my )?(?:\w+ )?{bowl}\b", m.string)):
         return False
+    if (bowl is None or bowl in _CLAUSE_WORDS) and re.search(r"\b(?:tilt|tip)\w* (?:the|my|a|your) (?!bowl\b)[a-z]+", m.string) \
+            and not re.search(r"\b(?:bowls?|destination|into)\b", m.string):
+        return True       # "if I don't tilt the bottle past horizontal, will some stay inside?": inside the one tilted
     before = m.string[:m.start(f"v{k}")]         # ("go in and just stay there": the bowl's)
     tilted = re.search(r"\bit (?:is |gets )?(?:\w+ ){0,3}?(?:tilted|tipped|turned|upside)\b", before)
     if tilted and bowl and not re.search(r"\b(?:into|from)\b", m.string) and not re.search(r"\boutcome (?:and |then |but )+$", before):
