@@ -230,6 +230,6 @@ def _read(told: str, asked: str) -> tuple[str, tuple[str, ...]] | None:
             re.match(r"(?:when|while|as|after|once|even though|although|though) ", c) or not tells[c])]
         if poured and not any(poured.strip() in c for c in scene):     # the liquid told is the pour's
             scene.insert(0, f"pouring{poured}")
-        rest = f"{' and '.join(scene)}, {question}?" if scene else f"{question}?"
+        rest = f"{', '.join(scene)}, {question}?" if scene else f"{question}?"
         return rest, (f"{told}: read as {rest.strip(' ?')}", f"{asked.strip(' ?.!')}: read as asked of the pour told")
     return None
