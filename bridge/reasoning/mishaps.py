@@ -211,7 +211,9 @@ def _read(told: str, asked: str) -> tuple[str, tuple[str, ...]] | None:
     for helps, how in ((HELPS, "with"), (_IF_HELPS, "if")):
         m = helps.match(re.sub(r"^so ", "", asked))
         if m is not None and re.fullmatch(r"(?: (?:it|that|this))?[?.! ]*", m.string[m.end():]):
-            rest = f"{how} {m.group('scene')}, {question}?"
+            kept = f"pouring{poured}, " if poured and not re.search(        # the liquid told stays, unless another is said
+                rf"\b(?:{alternation(names('liquid'))}|thin|thick|runny|sticky|liquid)\b", m.group("scene")) else ""
+            rest = f"{kept}{how} {m.group('scene')}, {question}?"
             return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did")
     m = _TOO.match(asked)
     if m is not None and m.group("value") in ("fast", "quick", "slow"):
