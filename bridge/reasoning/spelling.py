@@ -66,7 +66,12 @@ def _words() -> tuple[frozenset[str], frozenset[str], frozenset[str]]:
                 *(verb for verb, _, _ in OUTCOMES)]
     whole = {w for t in texts for w in re.findall(r"[a-z]+", t.lower())}
     parts = {w for t in patterns for w in re.findall(r"[a-z]+", t.lower())}
-    frame = {w for s in sections() if s.words == "hedge" for p in s.phrases for w in p.split()}
+    # (a word of a hedge that says something elsewhere, "tilt" of "same tilt", is no word of the frame)
+    saying = {w for t in (*(p.gloss for p in vocab.propositions.values()), *(words for words, *_ in PHRASES),
+                          *(s.words for s in sections() if s.words != "hedge"), *(p for s in sections() if s.words.startswith("bowl")
+                                                                                   for p in s.phrases))
+              for w in re.findall(r"[a-z]+", t.lower())}
+    frame = {w for s in sections() if s.words == "hedge" for p in s.phrases for w in p.split()} - (saying - FILLERS)
     return frozenset(whole), frozenset(parts), frozenset(frame | FILLERS)
 
 
