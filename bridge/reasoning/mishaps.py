@@ -43,7 +43,7 @@ _WANTED = {("liquid_remains_in_destination", "no_spill"): "nothing splashes out"
 #: The question after the mishap starts at a sentence's end, or at a comma before a word that asks.
 _ASKS = (r"why|how|what|which|would|will|could|should|can|is|does|do|did|was|were|any|so|but why|and how|where"
          r"|if|should|shall|tips|advice|help")
-_BREAK = re.compile(rf"(?:[.!?;]+|,|\.\.\.|\s-)\s+(?=(?:{_ASKS})\b)|\s(?=why *[?.!]* *$)"    # "... poured fast why"
+_BREAK = re.compile(rf"(?:[.!?;]+|,|\.\.\.|\s-)\s+(?=(?:{_ASKS})\b)|\s(?=(?:why|what happened|what went wrong) *[?.!]* *$)"    # "... poured fast why"
                     r"|\s(?=(?:is|will|would|does) (?:that|this) (?:gonna |going to )?happen\b)")   # "... when i poured is that gonna happen"
 #: Whether what was told happens again: asked as a cause is, of the pour told ("is that gonna happen every time?").
 _AGAIN = re.compile(r"^(?:so )?(?:is|will|would|does|do) (?:that|this|it) (?:gonna |going to |always |usually )?(?:happen|keep happening)"
