@@ -47,7 +47,9 @@ _BREAK = re.compile(rf"(?:[.!?;]+|,|\.\.\.|\s-)\s+(?=(?:{_ASKS})\b)|\s(?=(?:why|
                     r"|\s(?=(?:is|will|would|does) (?:that|this) (?:gonna |going to )?happen\b)")   # "... when i poured is that gonna happen"
 #: Whether what was told happens again: asked as a cause is, of the pour told ("is that gonna happen every time?").
 _AGAIN = re.compile(r"^(?:so )?(?:is|will|would|does|do) (?:that|this|it) (?:gonna |going to |always |usually )?(?:happen|keep happening)"
-                    r"(?: (?:again|every time|each time|always|all the time|often|a lot))?[?.! ]*$")
+                    r"(?: (?:again|every time|each time|always|all the time|often|a lot))?"
+                    # with a scene said ("... every time when you come in fast?"): of that scene too
+                    r"(?P<when> (?:when|if) (?:i|you|we|it|they|the \w+) [a-z0-9 ]+?)?[?.! ]*$")
 #: An outcome told as it happened, or as what keeps happening: its verb in the past ("slid",
 #: "went over"), or after "keeps", "always", "is" ("the bowl is jumping").
 _TOLD_TENSE = re.compile(r"^(?:[a-z]{2,}[^e]ed|[a-z]+ied|went|ran|fell|slid|came|got|kept|spilt|stuck|flew|threw|shook|sprang"
@@ -132,6 +134,9 @@ def _happened(m: re.Match, names: tuple[str, ...]) -> bool:
     before = m.string[:m.start()]
     if re.search(r"\b(?:i|we|you|he|she|they)(?: just)? $", before) and "source_clear" not in names:
         return False        # what the one pouring did ("i tipped the jug"), not an outcome
+    if names == STILL and m.group(0).startswith("mov") and re.match(
+            r" (?:the|my|a|an|his|her|their|it)\b(?! (?:bowl|dish|destination|whole|way|lot|bit|little|few|couple)\b)", m.string[m.end():]):
+        return False        # someone moving something ("my grandson moved the jug"), not the bowl moving
     if names == ("source_clear",) and _liquid_before().search(before):
         return False        # the liquid striking the bowl ("the stream hit the rim and sprayed"): no contact of the source
     if names == ("destination_upright",) and not re.match(r"(?:knock|push|shov)", m.group(0)) and (re.match(r" (?:the|a|an|my|his|her|their|it)\b", m.string[m.end():]) or re.search(
@@ -232,6 +237,8 @@ def _read(told: str, asked: str) -> tuple[str, tuple[str, ...]] | None:
             re.match(r"(?:when|while|as|after|once|even though|although|though) ", c) or not tells[c])]
         if poured and not any(poured.strip() in c for c in scene):     # the liquid told is the pour's
             scene.insert(0, f"pouring{poured}")
+        if (again := _AGAIN.match(asked)) and again.group("when"):
+            scene.append(again.group("when").strip())
         rest = f"{', '.join(scene)}, {question}?" if scene else f"{question}?"
         return rest, (f"{told}: read as {rest.strip(' ?')}", f"{asked.strip(' ?.!')}: read as asked of the pour told")
     return None

@@ -85,6 +85,13 @@ SPEEDS: tuple[tuple, ...] = (
     ("retreat slowly", (r"re( away):\b(?:go|goes|going|went|gone) away (?:very |really |too |quite )?(?:slowly|slow)\b",)),
     # "fastly", as learners of English say it; "the robot come fastly": it comes in
     ("approach fast", (r"re(com|came):\b(?:come|comes|coming|came) (?:very |really |too )?(?:fastly|fast|quickly)\b",)),
+    # moved fast toward the bowl: in ("moved the jug really fast toward the bowl")
+    ("approach fast", (r"re(toward|to the):\b(?:move|moves|moved|moving|bring|brings|brought|bringing|carr(?:y|ies|ied|ying))"
+                       r"(?: it| the \w+| my \w+)? (?:very |really |too |quite |super )?(?:fast|quickly|quick)"
+                       r" (?:toward|towards|to|over to) (?:the |my |a )?(?:bowl|destination)\b",)),
+    ("approach slowly", (r"re(toward|to the):\b(?:move|moves|moved|moving|bring|brings|brought|bringing|carr(?:y|ies|ied|ying))"
+                         r"(?: it| the \w+| my \w+)? (?:very |really |too |quite |super )?(?:slowly|slow)"
+                         r" (?:toward|towards|to|over to) (?:the |my |a )?(?:bowl|destination)\b",)),
     ("approach slowly", (r"re(com|came):\b(?:come|comes|coming|came) (?:very |really |too )?(?:slowly|slow)\b",)),
     ("fast", ("fastly",)),
     # tipped all the way over fast or slowly: upside down, in a clause of its own, and the move into it
