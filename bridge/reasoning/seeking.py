@@ -284,8 +284,8 @@ _CAN_IT = Cued(r"\b(?:can|could|may) (?:it|(?:the|a|an|my|our|your|this|that) (?
                ("can ", "could ", "may "))
 
 
-#: A goal said as what never happens, after "can I pour ...": "so it never drips", "so that nothing spills".
-_SO_NEVER = re.compile(r"\bso(?: that)? (?:it|they|nothing|none|no [a-z]+|the [a-z]+) (?:never|does not|do not|will not|spills|goes)\b")
+#: A goal said with "so (that)" after "can I pour ...": "so it never drips", "so that nothing spills".
+_SO_THAT = re.compile(r"\bso(?: that)? (?:it|they|nothing|none|no [a-z]+|the [a-z]+) (?:never|does not|do not|will not|spills|goes)\b")
 
 
 def if_it_can(text: str, goals: tuple[str, ...], manners: bool) -> tuple[tuple[str, ...], tuple[str, ...]]:
@@ -296,13 +296,14 @@ def if_it_can(text: str, goals: tuple[str, ...], manners: bool) -> tuple[tuple[s
     whether a person can pour so in a manner said ("can I pour from low
     down at the edge without hitting the bowl?") asks whether the outcome
     happens there; said of no manner ("can I pour without spilling?") it
-    wants the outcome, which a plan finds."""
-    so_never = _CAN.search(text) and _SO_NEVER.search(text)       # "can I pour the cream so it never drips?"
-    if not (goals and (" without " in f" {text} " or so_never or re.search(f"{_CAN_GET}|{_CAN_EMPTY}|{_CAN_OUT}|{_STILL_GET}", text))
-            and not re.search(r"\b(?:how|what|which|where) ", text) and (so_never or not re.search(r"\bso(?: that| as)? ", text))):
+    wants the outcome, which a plan finds. A goal said with "so" after it
+    ("can I pour the cream so it never drips?") is asked too, and wanted."""
+    so_that = _CAN.search(text) and _SO_THAT.search(text)       # "can I pour the cream so it never drips?"
+    if not (goals and (" without " in f" {text} " or so_that or re.search(f"{_CAN_GET}|{_CAN_EMPTY}|{_CAN_OUT}|{_STILL_GET}", text))
+            and not re.search(r"\b(?:how|what|which|where) ", text) and (so_that or not re.search(r"\bso(?: that| as)? ", text))):
         return (), goals
     asked = tuple(g.removeprefix("neg(").removesuffix(")") for g in goals)
-    if _CAN_IT.search(text) or so_never:
+    if _CAN_IT.search(text) or so_that:
         return asked, goals
     if manners and _CAN.search(text):         # the manner said before the goal ("can I pour from 40 cm without
         said_first = re.search(rf"{_CAN.pattern}[^,;.?!]*? without\b(?!.*\b(?:if|when|while)\b)", text) and not re.search(
