@@ -117,7 +117,10 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"(?! (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|destination)s?\b)",
      ("liquid_leaves_source",), True),
     # left inside, no bowl said: kept in the source ("there was still a bit left inside at the end")
-    (r"left (?:over |stuck |clinging |sitting )?inside\b(?! (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|destination)s?\b)", ("liquid_leaves_source",), True),
+    (r"left (?:over |stuck |clinging |sitting )?inside\b(?! (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|destination)s?\b)"
+     # at the bottom of a container not the bowl: "a little puddle left at the bottom of the jug"
+     r"|left (?:over |stuck |sitting )?(?:at|in|on) the (?:bottom|base) of (?:the |my |a )?(?!(?:[a-z]+ )?(?:bowl|destination)s?\b)[a-z]+\b",
+     ("liquid_leaves_source",), True),
     # left in the source: kept in it ("is anything left in the jug afterwards")
     (r"(?:(?<=\bsome )|(?<=\bany )|(?<=\bnone )|(?<=\bnothing )|(?<=\bmuch ))?(?:left|leftover) (?:over |stuck |clinging |sitting )?in(?= (?:(?:the |a |an |my |your )(?:[a-z]+ )?)?(?!(?:bowl|destination)s?\b)[a-z]+\b)"
      r"(?! (?:the |a |an |my |your )(?:[a-z]+ )?(?:bowl|destination)s?\b)",
