@@ -5,6 +5,7 @@ jumped out": what it did next is read)."""
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 
 from pantarhei.bridge.reasoning.everyday import alternation, names, sections
 
@@ -19,26 +20,44 @@ def lip_of_source(text: str, said: dict[str, None]) -> str:
     it is poured from): a part of the source, not the bowl's rim. Only a lip named as what
     strikes the bowl is ("does the jug's lip hit the bowl"): never one said as a place
     (_AT_A_PLACE), nor one said to rest on the bowl (a touch in the scene, which no proposition holds)."""
-    held = [w for w in dict.fromkeys(re.findall(r"\bfrom (?:the |a |an |my |your |this |that )?([a-z]+)\b", text))
-            if w in names("bowl") and w not in _DESTINATIONS]
-    sources = alternation([*(p for s in sections() if s.words == "bowl poured from" for p in s.phrases), *held])
+    if not re.search(r"\blip\b", text):
+        return text
+    held = tuple(w for w in dict.fromkeys(re.findall(r"\bfrom (?:the |a |an |my |your |this |that )?([a-z]+)\b", text))
+                 if w in names("bowl") and w not in _DESTINATIONS)
     before = len(text)
-    strikes = r"(?: \w+){0,2}? (?:touch|hit|bump|knock|bang|clip|strike|struck|collid|scrap|graz|clink|nudg|tap|make contact)"
-    text = re.sub(rf"{_AT_A_PLACE}\b((?:the|its|a) (?:{sources}) )lip\b(?={strikes})", r"\1spout", text)
-    text = re.sub(rf"{_AT_A_PLACE}\b((?:the|its|a) )lip(?= of (?:the |a |an |my |this |that )?(?:{sources}){strikes})", r"\1spout", text)
+    for pattern in _lips(held):
+        text = pattern.sub(r"\1spout", text)
     if len(text) != before:
         said.setdefault("lip: read as spout, a part of the source")
     return text
+
+
+@lru_cache(maxsize=64)
+def _lips(held: tuple[str, ...]) -> tuple[re.Pattern, ...]:
+    """The lip of a source (everyday.txt's containers poured from, and those `held` as poured from)
+    striking the bowl: "the jug lip hit", "the lip of the flask touched"."""
+    sources = alternation([*(p for s in sections() if s.words == "bowl poured from" for p in s.phrases), *held])
+    strikes = r"(?: \w+){0,2}? (?:touch|hit|bump|knock|bang|clip|strike|struck|collid|scrap|graz|clink|nudg|tap|make contact)"
+    return (re.compile(rf"{_AT_A_PLACE}\b((?:the|its|a) (?:{sources}) )lip\b(?={strikes})"),
+            re.compile(rf"{_AT_A_PLACE}\b((?:the|its|a) )lip(?= of (?:the |a |an |my |this |that )?(?:{sources}){strikes})"))
 
 
 def stream_striking(text: str, said: dict[str, None]) -> str:
     """`text` without the liquid's striking the bowl's rim when what it did next is told ("the stream
     hit the edge of the bowl and jumped out": it jumped out): the liquid striking the bowl is no outcome
     (the source's striking it is, and is read), what it does next is."""
-    liquids = alternation(["stream", "jet", "flow", "pour", "liquid", "drop", *names("liquid")])
-    m = re.search(rf"\b(?:{liquids}) (?P<hit>(?:hit|hits|hitting|struck|strikes|striking) (?:the |its )?(?:bowl |destination )?"
-                  rf"(?:rim|edge|side|lip)(?: of (?:the |a |my )?(?:bowl|destination))?(?: and then| then| and| ,)+ )(?=[a-z])", text)
+    if not re.search(r"\b(?:hit|hits|hitting|struck|strikes|striking)\b", text):
+        return text
+    m = _striking().search(text)
     if m is None:
         return text
     said.setdefault(f"{m.group('hit').strip(' ,')}: ignored: the liquid striking the bowl is no outcome (what it does next is read)")
     return text[:m.start("hit")] + text[m.end("hit"):]
+
+
+@lru_cache(maxsize=None)
+def _striking() -> re.Pattern:
+    """The liquid (its stream, or a liquid by its name) striking the bowl's rim, then what it did."""
+    liquids = alternation(["stream", "jet", "flow", "pour", "liquid", "drop", *names("liquid")])
+    return re.compile(rf"\b(?:{liquids}) (?P<hit>(?:hit|hits|hitting|struck|strikes|striking) (?:the |its )?(?:bowl |destination )?"
+                      rf"(?:rim|edge|side|lip)(?: of (?:the |a |my )?(?:bowl|destination))?(?: and then| then| and| ,)+ )(?=[a-z])")
