@@ -41,8 +41,9 @@ def goal_list(text: str) -> tuple[str, tuple[str, ...]]:
         clause = next((r for p, r in _ITEMS if p.match(item)), None)
         if clause is None and not poured and (what := _POURED.match(item)):
             # emptied: what is named is the source, all of it coming out ("empty the bottle of oil into the bowl")
-            clause = "it all comes out and it all goes in" if item.startswith("empty") else "it all goes in"
-            poured = f"pour from {what.group('what')} " if item.startswith("empty") else f"pour {what.group('what')} "
+            emptied = item.startswith("empty")
+            clause = "it all comes out and it all goes in" if emptied else "it all goes in"
+            poured = f"pour {'from ' * emptied}{what.group('what')} "
         if clause is None:
             return text, ()
         said.append(clause)

@@ -99,6 +99,12 @@ def _outcomes() -> tuple[tuple[re.Pattern, tuple[str, ...], bool], ...]:
 
 
 @lru_cache(maxsize=None)
+def _liquid_named() -> re.Pattern:
+    """A liquid by one of its names (everyday.txt's)."""
+    return re.compile(rf"\b(?:{alternation(names('liquid'))})\b")
+
+
+@lru_cache(maxsize=None)
 def _liquid_before() -> re.Pattern:
     """The liquid, or its stream, said last before a verb: "the stream hit the rim"."""
     return re.compile(rf"\b(?:stream|jet|flow|pour|liquid|drops?|{alternation(names('liquid'))})(?: just| then)? $")
@@ -205,7 +211,7 @@ def _read(told: str, asked: str) -> tuple[str, tuple[str, ...]] | None:
     said = f"{told}: read as nothing: a pour told, with what went wrong; the answer is for the one asked"
     when = _phase_told(told)
     wanted, question = _said(_WANTED, failed, when), _said(_ASKED, failed, when)
-    poured = re.search(rf"\b(?:{alternation(names('liquid'))})\b", told)    # the liquid told stays
+    poured = _liquid_named().search(told)    # the liquid told stays
     poured = f" {poured.group(0)}" if poured else ""
     if REMEDY.match(asked):
         rest = f"how should i pour{poured} so that {wanted}?"
@@ -216,8 +222,8 @@ def _read(told: str, asked: str) -> tuple[str, tuple[str, ...]] | None:
     for helps, how in ((HELPS, "with"), (_IF_HELPS, "if")):
         m = helps.match(re.sub(r"^so ", "", asked))
         if m is not None and re.fullmatch(r"(?: (?:it|that|this))?[?.! ]*", m.string[m.end():]):
-            kept = f"pouring{poured}, " if poured and not re.search(        # the liquid told stays, unless another is said
-                rf"\b(?:{alternation(names('liquid'))}|thin|thick|runny|sticky|liquid)\b", m.group("scene")) else ""
+            kept = f"pouring{poured}, " if poured and not (        # the liquid told stays, unless another is said
+                _liquid_named().search(m.group("scene")) or re.search(r"\b(?:thin|thick|runny|sticky|liquid)\b", m.group("scene"))) else ""
             rest = f"{kept}{how} {m.group('scene')}, {question}?"
             return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did")
     m = _TOO.match(asked)

@@ -12,6 +12,10 @@ from pantarhei.bridge.reasoning.vessels import CONTAINER, OUT_OF
 
 ALL_IN = ("liquid_enters_destination",)
 
+#: How much a pour leaves in the source, said of it: "leaves more behind", "leave a film in the jug".
+_KEPT = (r"(?:more|less|much|some|any|anything|something|a lot|a bit|nothing|stuff|(?:any |some |a )?residue"
+         r"|(?:a|any) (?:film|layer|coat|coating|skin|trace))")
+
 #: Verbs of liquid thrown about: thrown over the rim or out of the destination, it entered
 #: and did not stay ("splash out of the bowl": liquid_remains_in_destination and no_spill).
 _THROWN = (r"spill\w*|spilt|splash\w*|splatter\w*|splat\w*|slop\w*|slosh\w*|spray\w*|spurt\w*"
@@ -128,11 +132,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     # left behind in the source: kept in it ("with nothing left behind")
     (r"(?:left|stay(?:s|ed|ing)?|remain(?:s|ed|ing)?) behind\b"
      # what is left in it, said of the pour: "which one leaves more behind in the cup"
-     r"|leav(?:e|es|ing) (?:more |less |much |some |any |anything |something |a lot |a bit |nothing |stuff |(?:any |some |a )?residue "
-     r"|(?:a|any) (?:film|layer|coat|coating|skin|trace) )?behind\b"
+     rf"|leav(?:e|es|ing) (?:{_KEPT} )?behind\b"
      # what is left in it, said of the pour, in the bowl poured from: "a pour that doesn't leave anything in the bottle"
-     r"|leav(?:e|es|ing) (?:more|less|much|some|any|anything|something|a lot|a bit|a drop|nothing|stuff|(?:any |some |a )?residue"
-     r"|(?:a|any) (?:film|layer|coat|coating|skin|trace))(?: of it)? in"
+     rf"|leav(?:e|es|ing) (?:{_KEPT}|a drop)(?: of it)? in"
      r"(?= (?:the |a |an |my |your )(?:[a-z]+ )?(?!(?:bowl|destination)s?\b)[a-z]+\b)(?! (?:the |a |an |my |your )(?:[a-z]+ )?(?:bowl|destination)s?\b)"
      # some of it remaining, said after it left: "shall all of it leave it, or will some remain?"
      r"|(?:(?<=some )|(?<=any )|(?<=bit )|(?<=little ))remain(?:s)?\b(?! in (?:the )?(?:bowl|destination)\b)",

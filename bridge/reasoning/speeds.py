@@ -34,6 +34,10 @@ _NOT_TIPPED = (r"(?!and\b|then\b|but\b|or\b|so\b|if\b|when\b|move\w*\b|pull\w*\b
                r"|-?\d|degrees?\b|deg\b|halfway\b|half\b|all\b|way\b|steep\w*\b|slight\w*\b|upside\b|sideways\b|horizontal\w*\b"
                r"|vertical\w*\b|right\b|straight\b)")
 _TIPPED = rf"(?: (?:{_NOT_TIPPED}\w+ ){{0,6}}?{_NOT_TIPPED}\w+)?"
+#: The source moved at a speed (SPEED) toward the bowl: "moved the jug really fast toward the bowl".
+_TOWARD = (r"re(toward|to the):\b(?:move|moves|moved|moving|bring|brings|brought|bringing|carr(?:y|ies|ied|ying))"
+           r"(?: it| the \w+| my \w+)? (?:very |really |too |quite |super )?SPEED"
+           r" (?:toward|towards|to|over to) (?:the |my |a )?(?:bowl|destination)\b")
 
 SPEEDS: tuple[tuple, ...] = (
     # a speed asked of pouring itself: refused, pouring has no speed of its own
@@ -85,13 +89,9 @@ SPEEDS: tuple[tuple, ...] = (
     ("retreat slowly", (r"re( away):\b(?:go|goes|going|went|gone) away (?:very |really |too |quite )?(?:slowly|slow)\b",)),
     # "fastly", as learners of English say it; "the robot come fastly": it comes in
     ("approach fast", (r"re(com|came):\b(?:come|comes|coming|came) (?:very |really |too )?(?:fastly|fast|quickly)\b",)),
-    # moved fast toward the bowl: in ("moved the jug really fast toward the bowl")
-    ("approach fast", (r"re(toward|to the):\b(?:move|moves|moved|moving|bring|brings|brought|bringing|carr(?:y|ies|ied|ying))"
-                       r"(?: it| the \w+| my \w+)? (?:very |really |too |quite |super )?(?:fast|quickly|quick)"
-                       r" (?:toward|towards|to|over to) (?:the |my |a )?(?:bowl|destination)\b",)),
-    ("approach slowly", (r"re(toward|to the):\b(?:move|moves|moved|moving|bring|brings|brought|bringing|carr(?:y|ies|ied|ying))"
-                         r"(?: it| the \w+| my \w+)? (?:very |really |too |quite |super )?(?:slowly|slow)"
-                         r" (?:toward|towards|to|over to) (?:the |my |a )?(?:bowl|destination)\b",)),
+    # moved fast or slowly toward the bowl: in ("moved the jug really fast toward the bowl")
+    ("approach fast", (_TOWARD.replace("SPEED", "(?:fast|quickly|quick)"),)),
+    ("approach slowly", (_TOWARD.replace("SPEED", "(?:slowly|slow)"),)),
     ("approach slowly", (r"re(com|came):\b(?:come|comes|coming|came) (?:very |really |too )?(?:slowly|slow)\b",)),
     ("fast", ("fastly",)),
     # tipped all the way over fast or slowly: upside down, in a clause of its own, and the move into it
