@@ -11,11 +11,14 @@ STAMP  := $(VENV)/.installed
 
 setup: system $(STAMP)
 
-# SWI-Prolog from Debian's packages (pyswip needs its shared library), and
+# SWI-Prolog from Debian's packages (pyswip needs its shared library),
+# WordNet's database (the question reader asks it what a noun names), and
 # the venv module for Debian's own Python.
 system:
 	@command -v swipl >/dev/null 2>&1 || { apt-get update -qq && \
 	  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq swi-prolog-nox >/dev/null; }
+	@test -f /usr/share/wordnet/index.noun || { apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq wordnet-base >/dev/null; }
 	@$(PYTHON) -c "import ensurepip, venv" 2>/dev/null || { apt-get update -qq && \
 	  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq python3-venv >/dev/null; }
 

@@ -67,7 +67,8 @@ from pantarhei.bridge.reasoning.stages import (MARKER_STEMS, MOVE, POSE, SAME, o
                                                same_at_the_end, stages)
 from pantarhei.bridge.reasoning.wording import Token, names_written, normalising, stem, tokens as words_of
 from pantarhei.bridge.reasoning.suggestions import DESCRIBE, hinted, misspelt, names_part, refuse_unplaced
-from pantarhei.bridge.reasoning.unnamed import containers_named
+from pantarhei.bridge.reasoning.unnamed import containers_named, liquids_unnamed
+from pantarhei.bridge.reasoning.who_asks import asker_said
 from pantarhei.bridge.reasoning.words import FILLERS, UNCLEAR, rewrites
 from pantarhei.theory.lexicon import load_vocabulary
 
@@ -170,10 +171,11 @@ def read_question(question: str) -> Reading:
     text, respelt = normalising(question)
     lex = lexicon()                         # "It is for science.": chatter (chatter.py)
     text, chat = chatter(text, words_of, lex.known, frozenset(_IGNORED), NEGATION_STEMS)
+    text, asker = asker_said(text)          # "I'm a potter and ...": who asks (who_asks.py)
     text, restored = aux_restored(text)     # "it fall down?": does it (aux_dropped.py)
     refuse_drips_after(text)                # "drip down the bottle after pouring" (drips_after.py)
     text, told = mishap(text)               # "it slid off the tray. how do i stop that?" (mishaps.py)
-    respelt += chat + restored + told
+    respelt += chat + asker + restored + told
     refuse_choice(text)                     # "honey or water?": two questions (choices.py)
     refuse_unsayable(text, lex.known, lex.placeable)  # "60 degrees vs 90 with 200 ml" (set_against.py)
     try:
@@ -268,10 +270,11 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
                         else f"\"{question}\" excludes every value of {dim}")
     read_at = set().union(*(p for _, p in accepted))
     plain = plain_tilts(tokens, read_at, negated_at)
-    taken = read_at | plain
+    liquid_at, liquid = liquids_unnamed(tokens, read_at | plain, lex.known)   # "pour the Barolo" (unnamed.py)
+    taken = read_at | plain | liquid_at
     refuse_unplaced(question, tokens, taken, lex)
     out += same_at_the_end(tokens, out, vocab)
-    if not accepted and not plain and not _ordinary(tokens, lex, bool(outcome.asked or outcome.goals)):
+    if not accepted and not plain and not _ordinary(tokens, lex, bool(outcome.asked or outcome.goals), liquid_at):
         unknown = list(dict.fromkeys(t.raw for t in tokens if t.word not in lex.known))
         hint = ([FOLLOWS] if follows(text) else []) + hinted(unknown) + misspelt(unknown)
         said = ("could not place " + ", ".join(f'"{w}"' for w in unknown) + ": ") if unknown else ""
@@ -283,7 +286,7 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
     tilted = ordinary_tilt() if plain else ""
     notes = typed + tuple(dict.fromkeys([*(f"{t.raw}: {t.said_back}" for t in tokens if t.said_back),
                                          *(f"{tokens[i].raw}: {tilted}" for i in sorted(plain)),
-                                         *spoken, *outcome.notes]))
+                                         *spoken, *liquid, *outcome.notes]))
     noted = {t.raw for t in tokens if t.said_back}
     manners = any(vocab.dimensions[props[n].dimension].role == "manner" for n in out)
     can, goals = if_it_can(text, outcome.goals, manners)     # "can I pour high without spilling?"
@@ -292,12 +295,14 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
                    tuple([*heard, *outcome.phrases, *named]))
 
 
-def _ordinary(tokens: list[Token], lex: _Lexicon, asks: bool) -> bool:
+def _ordinary(tokens: list[Token], lex: _Lexicon, asks: bool, liquid: set[int]) -> bool:
     """Whether a question that names no proposition asks of the ordinary pour: it says pouring
     ("what happens if I pour water into a cup?"), or asks about an outcome ("does it
-    splash?"), in words the vocabulary knows, and nothing else."""
+    splash?"), in words the vocabulary knows, and nothing else (but the name of a liquid
+    it does not know, at the positions `liquid`)."""
     return ((asks or any(t.word == "pour" for t in tokens))
-            and all(t.word in lex.asking or (t.word not in lex.known and names_part(tokens, i, lex.placeable))
+            and all(t.word in lex.asking or i in liquid
+                    or (t.word not in lex.known and names_part(tokens, i, lex.placeable))
                     for i, t in enumerate(tokens)))
 
 

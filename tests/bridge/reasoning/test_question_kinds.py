@@ -87,6 +87,10 @@ def test_no_word_is_dropped_silently(question):
      "always spill: ignored: what always happens to the one asking is told of earlier pours; the answer is for the one asked"),
     ("My soup is pretty thick, does that mean it will come out of the saucepan slower and land more in the bowl?",
      "will come out of the saucepan slower: not asked: how fast the liquid flows is no expectation the vocabulary checks"),
+    ("I'm a line cook. Pouring water from a jug into a bowl, does it spill?",
+     "i am a line cook: read as nothing: who asks says nothing of the pour"),
+    ("If I decant the merlot from the carafe into the bowl, does any of it spill?",
+     'merlot: a red wine (WordNet): read as the liquid poured, an ordinary one (say "sticky" or "heavy" if it is)'),
 ])
 def test_a_word_read_as_another_is_said_back(question, said):
     """Whatever the reader writes otherwise than typed (a contraction typed
