@@ -133,9 +133,27 @@ def _set_against(text: str) -> tuple[str, tuple[str, ...]]:
     return text, ()
 
 
+#: An outcome's comparative in "-ier", said between two scenes: "messier" is "more messy".
+_IER = re.compile(r"\b(mess|splash|dripp|slosh|spill|slipp|wobbl)i(er|est)\b")
+
+
 def compared_or(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with the "or" between two scenes it compares
-    read as "vs", and what is said back of it; `text` as it is otherwise."""
+    read as "vs", and what is said back of it; `text` as it is otherwise.
+    An outcome's comparative in "-ier" ("is it messier to pour from high up
+    or from just above?") is read first as "more" and the outcome, where
+    two scenes are set against each other ("or", "than", "vs")."""
+    said: tuple[str, ...] = ()
+    if re.search(r"\b(?:or|than|vs|versus)\b", text):
+        said = tuple(dict.fromkeys(f"{m.group(0)}: read as {'more' if m.group(2) == 'er' else 'most'} {m.group(1)}y"
+                                   for m in _IER.finditer(text)))
+        text = _IER.sub(lambda m: f"{'more' if m.group(2) == 'er' else 'most'} {m.group(1)}y", text)
+    text, compared = _compared_or(text)
+    return text, said + compared
+
+
+def _compared_or(text: str) -> tuple[str, tuple[str, ...]]:
+    """compared_or's reading of `text`, its comparatives in "-ier" read."""
     text, said = _set_against(text)
     if said:
         return text, said

@@ -56,7 +56,7 @@ from pantarhei.bridge.reasoning.lexicon_cache import cached_lexicon
 from pantarhei.bridge.reasoning.negation import (NEGATION_STEMS, covered, opposite, or_list, ordinary_left,
                                                  scope, scope_ends, still_between)
 from pantarhei.bridge.reasoning.occurrences import closest, occurrences
-from pantarhei.bridge.reasoning.outright import outright
+from pantarhei.bridge.reasoning.outright import first_compared, outright
 from pantarhei.bridge.reasoning.nouns import ARTICLES, BOWL, CONTEXT, OBJECT_STEMS, Nouns, roles
 from pantarhei.bridge.reasoning.outcomes import hear
 from pantarhei.bridge.reasoning.what_follows import FOLLOWS, follows
@@ -234,9 +234,12 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
         if name not in names:
             names.append(name)
 
-    out, spoken = [], []
+    out, spoken, comparing = [], [], set()
     for dim, names in said.items():
         names = outright(names, accepted, tokens, vocab)      # "lower than last time, 2 cm below the rim"
+        names, against, at = first_compared(names, accepted, tokens)
+        spoken += against                                  # "is it messier from high up or just above?"
+        comparing |= at
         if len(names) > 1:
             a, b = sorted(names)[:2]
             raise UserError(f"\"{question}\" says both {a} ({props[a].gloss}) and {b} "
@@ -271,7 +274,7 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
     read_at = set().union(*(p for _, p in accepted))
     plain = plain_tilts(tokens, read_at, negated_at)
     liquid_at, liquid = liquids_unnamed(tokens, read_at | plain, lex.known)   # "pour the Barolo" (unnamed.py)
-    taken = read_at | plain | liquid_at
+    taken = read_at | plain | liquid_at | comparing
     refuse_unplaced(question, tokens, taken, lex)
     out += same_at_the_end(tokens, out, vocab)
     if not accepted and not plain and not _ordinary(tokens, lex, bool(outcome.asked or outcome.goals), liquid_at):
