@@ -18,6 +18,7 @@ wordings it knows. Without a word that compares ("pour high or low, does
 it spill?") the two are still refused, asking for one."""
 from __future__ import annotations
 
+import re
 from typing import Any
 
 #: What comparisons.py says back of a value read against the ordinary pour.
@@ -73,17 +74,19 @@ _AGAINST = frozenset(("or", "than", "different", "compar", "versus", "vs"))
 #: Words of a comparison asked: "which", "better", "more", "less".
 #: (and any "-ier": "messier", "riskier").
 _COMPARING = frozenset(("which", "better", "wors", "worse", "safer", "cleaner", "more", "less", "different", "compar"))
+#: A word that compares, in the question's text (an outcome's clause too: "does it splash less if ...").
+_COMPARES = re.compile(rf"\b(?:{'|'.join(sorted(_COMPARING))}\w*|[a-z]+ier)\b")
 #: What is said back of a word that compares the two.
 _COMPARISON = "read as nothing: the two pours compared, the one said first is answered"
 #: What is said back of the value compared with.
 COMPARED = "read as nothing: the scene compared with is not read, the answer is for the one said first"
 
 
-def first_compared(names: list[str], accepted: list[tuple[str, frozenset[int]]],
-                   tokens: list[Any]) -> tuple[list[str], tuple[str, ...], set[int]]:
+def first_compared(names: list[str], accepted: list[tuple[str, frozenset[int]]], tokens: list[Any],
+                   text: str) -> tuple[list[str], tuple[str, ...], set[int]]:
     """`names`, two values of one dimension, as the one said first where
-    the second is set against it and the question compares (the module's
-    docstring); what is said back of the second
+    the second is set against it and the question (`text`, normalised)
+    compares (the module's docstring); what is said back of the second
     and of the words that compare ("more", "different", "than"); and
     their positions. `names`, (), and none otherwise."""
     at = {n: p for n, p in accepted if n in names}
@@ -94,7 +97,7 @@ def first_compared(names: list[str], accepted: list[tuple[str, frozenset[int]]],
     comparing = {k for k, t in enumerate(tokens) if t.word in _COMPARING or t.raw in _COMPARING
                  or t.raw in ("than", "likely") or t.raw.endswith("ier")}
     if (max(at[first]) >= min(at[second]) or not any(t.word in _AGAINST for t in between)
-            or not comparing - {k for k, t in enumerate(tokens) if t.raw in ("than", "likely")}):
+            or not _COMPARES.search(text)):
         return names, (), set()
     said = [f"{' '.join(tokens[k].raw for k in sorted(at[second]))}: {COMPARED}"]
     said += [f"{tokens[k].raw}: {_COMPARISON}" for k in sorted(comparing)]

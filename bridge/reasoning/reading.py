@@ -76,6 +76,8 @@ _IGNORED = {stem(w) for w in FILLERS}
 #: Words the everyday word list reads as nothing, said back with the reason
 #: ("plastic", "table", "spout"): a question may hold them and ask of the ordinary pour.
 _SAID_AS_NOTHING = frozenset({"material", "context", "part"})
+#: The words of a negation's scope that say nothing of the scene: the bowls, an outcome heard, the frame.
+_BARE = frozenset({BOWL, "outcome", *ARTICLES, *_IGNORED} - {stem(w) for w in ("without", "with", "any", "all")})
 
 
 @dataclass(frozen=True)
@@ -217,7 +219,8 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
                   if tokens[j].word not in NEGATION_STEMS)
     for i in cues:
         k = bisect_left(read, i + 1)
-        if saying[ends[i]] > saying[i + 1] and not (k < len(read) and read[k] < ends[i]):
+        if (saying[ends[i]] > saying[i + 1] and not (k < len(read) and read[k] < ends[i])
+                and not (read and _bare(tokens, scope(tokens, i, ends)))):
             phrase = " ".join(tokens[j].raw for j in (i, *sorted(scope(tokens, i, ends))))
             said = [t.raw for t in tokens if t.word == UNCLEAR] + [phrase]     # "instead of fast, pour slowly"
             hint = next(iter(hinted(said)), DESCRIBE)
@@ -237,7 +240,7 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
     out, spoken, comparing = [], [], set()
     for dim, names in said.items():
         names = outright(names, accepted, tokens, vocab)      # "lower than last time, 2 cm below the rim"
-        names, against, at = first_compared(names, accepted, tokens)
+        names, against, at = first_compared(names, accepted, tokens, text)
         spoken += against                                  # "is it messier from high up or just above?"
         comparing |= at
         if len(names) > 1:
@@ -296,6 +299,15 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
     return Reading(tuple(sorted(set(out))), tuple(dict.fromkeys((*named, *outcome.asked, *can))),
                    goals, notes, tuple(dict.fromkeys(w for w in ignored if w not in noted)),
                    tuple([*heard, *outcome.phrases, *named]))
+
+
+def _bare(tokens: list[Token], positions) -> bool:
+    """Whether the words at `positions`, a negation's scope, say nothing but
+    the bowls and an outcome heard ("will not make the bowl move", "never
+    bring the bottle over the bowl"): with something else read, such a
+    negation excludes nothing of the scene, and its words are shown as
+    ignored (a place, a liquid or a word of the vocabulary in it is no bare one)."""
+    return all(tokens[j].word in _BARE for j in positions)
 
 
 def _ordinary(tokens: list[Token], lex: _Lexicon, asks: bool, liquid: set[int]) -> bool:
