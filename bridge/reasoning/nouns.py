@@ -219,14 +219,19 @@ class Nouns:
     def partners(self, i: int) -> set[str]:
         """The bodies the noun at `i` names with others: those of the nouns
         coordinated with it ("the source and the destination"), or both
-        bowls for bowls in the plural ("both cups")."""
+        bowls for bowls in the plural ("both cups"), unless the source is
+        named apart ("from a jug ... the bowls are light": the bowls poured
+        into)."""
         t = self.tokens
         last = t[i].raw.split()[-1]
         plural = re.search(r"[^s]s$", last) and last not in _singular()      # not "a thermos"
         # "our bowls", "my light cups": the ones someone has, each poured into or from as one is
         owned = any(w.raw in _OWNERS for w in t[max(0, i - 3):i]) and not any(
             w.word in ("both", "two") for w in t[max(0, i - 3):i])
-        if t[i].word == BOWL and ((plural and not owned) or (i > 0 and t[i - 1].word == "both")):
+        # "bowls light and kinda slick" after "out of a jug": the bowls poured into, the jug named apart
+        apart = any(self.roles.get(j) == "source" and t[j].raw.split()[-1].rstrip("s") != last.rstrip("s")
+                    for j in range(len(t)) if j != i and t[j].word == BOWL)
+        if t[i].word == BOWL and ((plural and not owned and not apart) or (i > 0 and t[i - 1].word == "both")):
             return {"source", "destination"}
         out = set()
         for step in (-1, 1):            # "X and [the] <i>" and "<i> and [the] Y"

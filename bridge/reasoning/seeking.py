@@ -18,6 +18,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
+from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.goal_lists import goal_list
 from pantarhei.bridge.reasoning.goal_wordings import VALUE as _VALUE, WANTING as _WANTING
@@ -130,6 +131,10 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
     for pattern, wanted in _WANTING:
         said += tuple(m.group(0).strip() for m in pattern.finditer(text))
         text = pattern.sub(wanted, text)
+    brim = _to_the_brim().search(text) if " to the " in text else None
+    if brim:
+        raise UserError(f"\"{brim.group(0)}\": how full the bowl gets is no outcome the vocabulary says: say "
+                        "\"fill the bowl\" (it all goes in and stays there) or \"without spilling\"")
     filling = _filling()
     if filling.search(text):
         said += tuple(m.group(0).strip() for m in filling.pattern.finditer(text))
@@ -141,14 +146,30 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
     return text, said
 
 
+#: Who wants a bowl filled: "I want to", "goal:" (as _filling's).
+_WANTS_FILLED = (r"(?:\b(?:i|we) (?:would like|like|want|wanna|need|wish|am trying|are trying|hope|aim|plan|have|had)"
+                 r"|\b(?:goal|aim|objective|task|target)s?(?: is)?:?)(?: to)? ")
+
+
+@lru_cache(maxsize=None)
+def _to_the_brim() -> re.Pattern:
+    """A bowl filled to a level: "fill the bowl to the brim", "I want to fill a mug right to the top" (a
+    source so filled, not wanted, is full: fullness.py)."""
+    level = r"(?: up)? (?:right |all the way |up )?to the (?:top|brim|rim)\b"
+    some = r"(?:the|a|an|my|this|that|our|your) (?:[a-z]+ )?"
+    return re.compile(rf"\bfill(?:s|ed|ing)? (?:up )?{some}(?:bowl|bowls|basin|dish|destination){level}"
+                      rf"|{_WANTS_FILLED}fill (?:up )?{some}(?:{destinations()}){level}")
+
+
 @lru_cache(maxsize=None)
 def _filling() -> Cued:
     """Filling the bowl, wanted: "I'd like to fill the bowl", "goal: fill the bowl", "have the bowl end up full"
     (so that it all ends up in it: it goes in and stays); not how full ("fill the bowl
-    halfway"), nor the source filled ("filling the cup to the top": a full source)."""
+    halfway", "fill the bowl to the brim": refused, a level), nor the source filled ("filling the cup to
+    the top": a full source)."""
     bowl = rf"((?:the|a|an|my|this|that|our|your) (?:[a-z]+ )?(?:{destinations()}))"
     return Cued(rf"(?:\b(?:i|we) (?:would like|like|want|wanna|need|wish|am trying|are trying|hope|aim|plan|have|had)"
-                rf"|\b(?:goal|aim|objective|task|target)s?(?: is)?:?)(?: to)? fill (?:up )?{bowl}(?: up)?(?: (?:right |all the way )?to the (?:top|brim))?(?! (?:half|halfway|about|around|a quarter|a third|to (?:half|a |\d)|\d))\b"
+                rf"|\b(?:goal|aim|objective|task|target)s?(?: is)?:?)(?: to)? fill (?:up )?{bowl}(?: up)?(?! (?:half|halfway|about|around|a quarter|a third|to (?:half|a |\d)|\d|(?:right |all the way )?to the (?:top|brim|rim)\b))\b"
                 rf"|\b(?:i|we) (?:would |want to |need to )?have {bowl} (?:end up |be )?(?:full|filled(?: up)?)\b"
                 rf"|\b(?:i|we) (?:want|need|would like) {bowl} (?:to be |to end up )?(?:full|filled(?: up)?)\b",
                 ("fill", "full"))
