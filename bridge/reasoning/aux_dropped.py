@@ -3,7 +3,9 @@ and people in a hurry type it ("it fall down?", "The bowl move or stay?",
 "water go on the table?"): a clause that begins with what the outcome
 happens to and goes on with a verb of an outcome, then a question mark,
 is read with "does" before it ("does it fall down?"), as outcomes.py hears
-questions. A clause with an auxiliary of its own, or none of these
+questions; so is an outcome's verb asked alone after a scene ("pour high,
+wobble?": does it wobble?), and a place said wet ("table wet?": does the
+table get wet?). A clause with an auxiliary of its own, or none of these
 subjects, is left as it is."""
 from __future__ import annotations
 
@@ -12,13 +14,23 @@ import re
 from pantarhei.bridge.reasoning.outcome_verbs import outcome_verb
 
 #: What an outcome happens to, said first: "it", "the bowl", "all the water", "some of it".
-_SUBJECT = (r"(?:it|they|(?:all |some |any |most |half )?(?:of )?(?:the |my |this )?(?:bowl|water|liquid|milk|juice|oil|soup"
+_SUBJECT = (r"(?:it|they|(?:all |some |any |most |half )?(?:of )?(?:the |my |this )?(?:light |heavy |slippery |plastic |glass "
+            r"|metal |full |empty )?(?:bowl|water|liquid|milk|juice|oil|soup"
             r"|tea|coffee|stuff|jug|cup|bottle|pitcher)|(?:some|any|all|none) of it)")     # (not "any tips?")
 #: Verbs of an outcome said with a word after them, which outcome_verb does not take alone.
 _PHRASAL = frozenset(("go", "come", "stay", "get", "land", "end", "fall"))
 _CLAUSE = re.compile(rf"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<subject>{_SUBJECT}) (?P<verb>[a-z]+)\b(?P<rest>[^,.;:!?]*)"
                      r"(?:,? (?:yes|no|right|or not|or no))?\?")     # (a tag after it: "..., yes?")
 _AUX = re.compile(r"\b(?:will|would|does|do|did|is|are|was|were|can|could|might|may|should|shall|gonna)\b")
+
+
+#: An outcome's verb alone as a clause asked ("pour high, wobble?"): of "it".
+_ALONE = re.compile(r"(?:(?<=[,.;:!?] )|(?<= - ))(?P<verb>[a-z]+)\?")
+#: Words of an outcome that are said of it, not done: "ok?" is "is it ok?".
+_SAID_OF = frozenset(("ok", "okay", "fine", "safe", "alright", "good", "bad", "messy", "clean"))
+#: Where the liquid lands, said wet ("table wet?", "floor gets wet?"): whether it gets wet.
+_WET = re.compile(r"(?:^|(?<=[,.;:!?] )|(?<= - ))(?:the |my )?(?P<place>table|counter|countertop|worktop|floor|bench|tray"
+                  r"|stove|cloth|tablecloth|shirt|hands?) (?:get |gets |stay |stays )?wet\?")
 
 
 def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
@@ -34,4 +46,18 @@ def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
         said.append(f"{m.group(0).rstrip('?')}: read as does {asked.rstrip('?')}")
         return f"does {asked}"
 
-    return _CLAUSE.sub(restore, text), tuple(said)
+    def alone(m: re.Match) -> str:
+        verb = m.group("verb")
+        if not outcome_verb(verb):
+            return m.group(0)
+        aux = "is" if verb in _SAID_OF else "does"        # "45 deg, ok?": is it ok?
+        said.append(f"{verb}: read as {aux} it {verb}")
+        return f"{aux} it {verb}?"
+
+    def wet(m: re.Match) -> str:
+        said.append(f"{m.group(0).rstrip('?')}: read as does the {m.group('place')} get wet")
+        return f"does the {m.group('place')} get wet?"
+
+    text = _CLAUSE.sub(restore, text)
+    text = _ALONE.sub(alone, text) if "?" in text else text
+    return (_WET.sub(wet, text) if " wet?" in text else text), tuple(said)

@@ -59,6 +59,12 @@ CONTRASTS: tuple[tuple, ...] = (
     ("near the rim", (r"re(off the |off cent|off midd|off dest|off bowl):\b(?:just |only )?(?:slightly|a (?:little |tiny )?bit|a little|a tad) off (?:the )?"
                          r"(?:destination |bowl )?(?:centre|center|middle)\b",),
      "read as near the rim: a little off the middle, where the rim is nearer"),
+    # off the middle, how far not said (said of the pour, the source or alone; not "way off", "3 cm off", "how far
+    # off"): near the rim, the nearest place off it
+    ("near the rim", (r"re(off the |off cent|off midd|off dest|off bowl):(?:(?<=[,;:.!?] )|(?<=\bpour )|(?<=\bbowl )"
+                      r"|(?<=\bhold )|(?<=\bheld )|(?<=\bis )|(?<=\bwas )|(?<=\bit )|^(?=off \w+ (?:pour|,)))off (?:the )?"
+                      r"(?:destination |bowl )?(?:centre|center|middle)\b",),
+     "read as near the rim: off the middle, how far not said, the nearest place off it (say \"from the side\" or \"offset sideways\" for others)"),
     # a height measured from the rim: above it (a minus sign below it)
     ("above the rim", (rf"re(relative|respect|vs|versus):(?:{_AFTER_LENGTH})(?:height )?(?:relative to|with respect to|vs|versus)"
                        r" (?:the )?(?:destination |bowl )?(?:rim|edge|lip|brim)\b(?! (?:of the )?(?:source|cup))",)),
