@@ -77,7 +77,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      # gone over, nothing after it: "the bowl went over" (not "went over the rim": out of the bowl)
      r"|(?:go|goes|went|gone) over(?= *[,.;!?]| *$| (?:and|when|if|as|while|because)\b)"
      r"|(?:fall|falls|fell)\b(?! (?:in|into|inside|out|off|on|onto)\b)", ("destination_upright",), True),
-    (r"(?:stay|stays|remain|remains|keep|keeps|be|is) (?:still|put|in place|steady|stable|stationary"
+    (r"(?:stay|stays|remain|remains|keep|keeps|be|is) (?:(?:completely|totally|perfectly|absolutely|entirely|fully|really|dead"
+     r"|quite|nice and|nicely) )?(?:still|put|in place|steady|stable|stationary"
      r"|(?:exactly |right )?where (?:it|they) (?:is|was|are|were|stands|stood|started)"
      r"|(?:exactly |right )?where (?:i|you|we|they) (?:put|placed|set|left) (?:it|them))"
      r"|(?:sit|sits|sitting|stand|stands|standing|stay|stays|staying|remain|remains|rest|rests|resting|be)"

@@ -116,6 +116,11 @@ _AS = {"is", "are", "was", "seems", "looks", "feels", "very", "really", "quite",
 SURFACE_SAID = "read as the destination's friction: the bowl slides, or not, on what it stands on"
 
 
+#: What a table may be said made of between its grip and its name: "a slick glass table".
+_MADE_OF = frozenset(("glass", "marble", "granite", "steel", "metal", "stone", "wooden", "wood", "plastic", "laminate",
+                      "tile", "tiled", "formica", "stainless", "quartz", "concrete", "slate", "zinc", "copper", "enamel"))
+
+
 class Surfaces:
     """A slippery table, a counter that is slick: the destination's
     friction, for the bowl slides on what it stands on (its friction is
@@ -130,9 +135,11 @@ class Surfaces:
                 continue
             if w in _GROUND and "on" not in words[max(0, i - 3):i]:    # "pour wet concrete": the liquid
                 continue
-            if i > 0 and words[i - 1] in _GRIP:                            # "a slick table", "a wet bar top"
+            grip = i - 1 if i > 0 and words[i - 1] in _GRIP else (    # "a slick table", "a slick glass table"
+                i - 2 if i > 1 and words[i - 2] in _GRIP and words[i - 1] in _MADE_OF else None)
+            if grip is not None and not (out and grip < out[-1][1]):    # "a wet bar top"
                 end = i + 2 if i + 1 < len(words) and words[i + 1] in _ENDS else i + 1
-                out.append((i - 1, end, (_GRIP[words[i - 1]], "destination")))
+                out.append((grip, end, (_GRIP[words[grip]], "destination")))
                 continue
             j = i + 1
             while j < len(words) and words[j] in _AS and j - i <= 3:
