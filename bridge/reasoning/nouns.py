@@ -7,7 +7,7 @@ is very light")."""
 from __future__ import annotations
 
 import re
-from functools import lru_cache
+from functools import cached_property, lru_cache
 
 from pantarhei.bridge.reasoning.everyday import forms, names, sections
 from pantarhei.bridge.reasoning.wording import Token, stem
@@ -216,6 +216,12 @@ class Nouns:
         t = self.tokens
         return all(t[m].word in BETWEEN or t[m].word in _COPULAS for m in range(at + 1, first))
 
+    @cached_property
+    def source_names(self) -> set[str]:
+        """The names of the bowls read as the source ("jug"), each in the singular."""
+        return {self.tokens[j].raw.split()[-1].rstrip("s") for j, r in self.roles.items()
+                if r == "source" and self.tokens[j].word == BOWL}
+
     def partners(self, i: int) -> set[str]:
         """The bodies the noun at `i` names with others: those of the nouns
         coordinated with it ("the source and the destination"), or both
@@ -229,8 +235,7 @@ class Nouns:
         owned = any(w.raw in _OWNERS for w in t[max(0, i - 3):i]) and not any(
             w.word in ("both", "two") for w in t[max(0, i - 3):i])
         # "bowls light and kinda slick" after "out of a jug": the bowls poured into, the jug named apart
-        apart = any(self.roles.get(j) == "source" and t[j].raw.split()[-1].rstrip("s") != last.rstrip("s")
-                    for j in range(len(t)) if j != i and t[j].word == BOWL)
+        apart = plural and bool(self.source_names - {last.rstrip("s")})
         if t[i].word == BOWL and ((plural and not owned and not apart) or (i > 0 and t[i - 1].word == "both")):
             return {"source", "destination"}
         out = set()

@@ -155,7 +155,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      (*ALL_IN, "liquid_remains_in_destination"), False),
     (r"(?:go|goes|going|went|get|gets|land|lands|plop|plops|plopped|make it|makes it|fall|falls|transfer\w*|arrive\w*|finds? (?:its|their) way) (?:more |mostly |all )?(?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*|get (?:the |all (?:the )?)?(?:water|liquid|milk|it|everything) (?:in|into)\b",
      ALL_IN, False),
-    (r"miss(?:es|ed|ing)?|overshoot\w*|undershoot\w*|fall\w* short", ALL_IN, True),
+    # what misses the bowl lands outside it: not all of it goes in, and it spills
+    (r"miss(?:es|ed|ing)?|overshoot\w*|undershoot\w*|fall\w* short", (*ALL_IN, "no_spill"), True),
     (r"safe(?:ly)?|(?:be |is )?(?:fine|ok|okay|alright|all right)\b|(?:a )?(?:good|bad) idea|risky"
      r"|(?:be )?(?:a )?(?:disaster|catastrophe|nightmare|fiasco)\b"
      r"|(?:go|goes|going|went) wrong"
