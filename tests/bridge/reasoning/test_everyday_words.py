@@ -14,7 +14,8 @@ from pantarhei.bridge.reasoning.reading import read_question
 #: The kinds of section the reader knows what to do with.
 KINDS = {"hedge", "material", "bowl", "bowl poured from", "sticky liquid", "heavy liquid", "liquid", "context", "part",
          "unclear", "a bit", "little", "much", "full", "slightly tilted", "steeply tilted", "low", "high",
-         "to the side", "very", "start slightly tilted", "into the middle", "right over", "into", "from", "upright"}
+         "to the side", "very", "start slightly tilted", "into the middle", "right over", "into", "from", "upright",
+         "tilted"}
 
 
 def _phrases(*kinds: str) -> list[tuple[str, str]]:
