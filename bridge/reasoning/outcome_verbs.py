@@ -45,7 +45,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     # (sloshing around in the bowl is no spill: everyday.txt says it back)
     # along the source itself, said first for the plain verbs to leave it whole: "drip back down along the spout", "run down the jug"
     (r"(?:run|runs|running|ran|drip\w*|dribbl\w*|trickl\w*|creep\w*) (?:back )?(?:down |under )?(?:along )?(?:the |its )?"
-     r"(?:spout|neck|jug|jar|bottle|pitcher|carton|kettle)\b(?! (?:in|into)\b)"
+     r"(?:underside of (?:the |its )?)?(?:(?:jug|jar|bottle|pitcher|carton|kettle) )?"
+     r"(?:spout|neck|lip|jug|jar|bottle|pitcher|carton|kettle)\b(?! (?:in|into)\b)"
      r"|spill\w*|spilt|splash\w*|splatter\w*|spray(?:s|ed|ing)?|spurt\w*|slosh\w*(?! (?:around|about)\b)|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
      r"|(?:makes?|(?<=up )making) (?:(?:a|any) )?(?:big |huge |bit of a |real |total )?mess|(?:go|goes|going|went|get|gets) everywhere"
      r"|(?:get|gets|getting|got) (?:it|them|liquid|(?:the )?[a-z]+) (?:everywhere|all over(?: the place)?)\b"
