@@ -88,6 +88,9 @@ def _asking() -> re.Pattern:
 #: A value said to keep an outcome: "which tilt keeps it in the bowl" (so that it stays in it).
 _KEEPS = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? {_VALUE}) (keeps|will keep|would keep)"
                     r" (it|them|the \w+) (in(?: the \w+)?|still|upright|steady|in place)\b")
+#: A value said not to cause an outcome: "which height does not make the bowl slide" (so that it does not).
+_NOT_CAUSING = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? {_VALUE}) ((?:does|do|will|would) not (?:make|let|cause))"
+                          r" (it|them|the \w+)(?: to)? (?=[a-z])")
 #: Wanting an outcome: "I want the bowl not to move", "we'd like it to stay in".
 _WANT = re.compile(r"(?:\b(?:i|we) |^|(?<=[.!?] ))(?:want|need|would like|wish)(?: for)? (it(?: all)?|all of it|everything|them|nothing"
                    r"|every drop|each drop|every bit|all (?:of )?the (?:[a-z]+ )?[a-z]+"
@@ -121,6 +124,8 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
     text = _keeping_in().sub(r"so that \1 stays in", text)
     said += tuple(m.group(2) for m in _KEEPS.finditer(text))
     text = _KEEPS.sub(r"\1 so that \3 stays \4", text)
+    said += tuple(m.group(2) for m in _NOT_CAUSING.finditer(text))
+    text = _NOT_CAUSING.sub(r"\1 so that \3 does not ", text)
     said += tuple(m.group(0)[m.end(1) - m.start():].strip() for m in _EMPTIES.finditer(text))
     text = _EMPTIES.sub(r"\1 so that it empties", text)
     said += tuple(m.group(0)[m.end(1) - m.start():m.start(2) - m.start()].strip() for m in _GETS.finditer(text))
