@@ -5,7 +5,8 @@ happens to and goes on with a verb of an outcome, then a question mark,
 is read with "does" before it ("does it fall down?"), as outcomes.py hears
 questions; so is an outcome's verb asked alone after a scene ("pour high,
 wobble?": does it wobble?), and a place said wet ("table wet?": does the
-table get wet?). A clause with an auxiliary of its own, or none of these
+table get wet?); so are outcomes asked in a word or two ("all in?": does
+it all go in?, "leftover?": is any left in the source?). A clause with an auxiliary of its own, or none of these
 subjects, is left as it is."""
 from __future__ import annotations
 
@@ -26,6 +27,12 @@ _AUX = re.compile(r"\b(?:will|would|does|do|did|is|are|was|were|can|could|might|
 
 #: An outcome's verb alone as a clause asked ("pour high, wobble?"): of "it".
 _ALONE = re.compile(r"(?:(?<=[,.;:!?] )|(?<= - ))(?P<verb>[a-z]+)\?")
+#: Outcomes asked in a word or two, as notes ask them ("jug, bowl, very fast tilt, all in?"): what each asks.
+_FRAGMENTS = {"all in": "does it all go in", "all out": "does it all come out", "leftover": "is any left in the source",
+              "leftovers": "is any left in the source", "any left": "is any left in the source",
+              "anything left": "is anything left in the source", "everything out": "does everything come out",
+              "all of it in": "does it all go in", "everything in": "does everything go in"}
+_FRAGMENT = re.compile(rf"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<said>{'|'.join(sorted(_FRAGMENTS, key=len, reverse=True))})\?")
 #: Words of an outcome that are said of it, not done: "ok?" is "is it ok?".
 _SAID_OF = frozenset(("ok", "okay", "fine", "safe", "alright", "good", "bad", "messy", "clean"))
 #: Where the liquid lands, said wet ("table wet?", "floor gets wet?"): whether it gets wet.
@@ -58,6 +65,11 @@ def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
         said.append(f"{m.group(0).rstrip('?')}: read as does the {m.group('place')} get wet")
         return f"does the {m.group('place')} get wet?"
 
+    def fragment(m: re.Match) -> str:
+        said.append(f"{m.group('said')}: read as {_FRAGMENTS[m.group('said')]}")
+        return f"{_FRAGMENTS[m.group('said')]}?"
+
+    text = _FRAGMENT.sub(fragment, text) if "?" in text else text
     text = _CLAUSE.sub(restore, text)
     text = _ALONE.sub(alone, text) if "?" in text else text
     return (_WET.sub(wet, text) if " wet?" in text else text), tuple(said)
