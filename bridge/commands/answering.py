@@ -175,11 +175,15 @@ def _print_heard(reading) -> None:
     """What else the question said: its everyday words as read, the words
     read as nothing, the expectations it asks about and its goals, with
     how `plan` would pour for them."""
+    from pantarhei.theory.lexicon import load_vocabulary
+
     for note in reading.notes:
         print(f"  {note}")
     if reading.ignored:
         print(f"  ignored: {', '.join(repr(w) for w in reading.ignored)}")
-    if reading.asked:
+    if reading.asked and len(reading.asked) == len(load_vocabulary().expectations):
+        print("asked: what happens, every expectation (answered in their order)")
+    elif reading.asked:
         print(f"asked: {', '.join(reading.asked)} (answered first)")
     if reading.goals:
         given = f" --given {','.join(reading.scene)}" if reading.scene else ""

@@ -44,6 +44,7 @@ from pantarhei.bridge.reasoning.strikers import containers, striker
 from pantarhei.bridge.reasoning.worries import worried
 from pantarhei.bridge.reasoning.what_follows import FOLLOWS
 from pantarhei.bridge.reasoning.vessels import destinations, filled, in_the_source, liquids, out_of_the_source
+from pantarhei.theory.lexicon import load_vocabulary
 
 #: Words that ask: an auxiliary before its subject ("will it spill"), or a
 #: quantifier that needs none ("anything come out", "how much spills").
@@ -85,6 +86,15 @@ _JOINED = r"(?:, or|, and|,|or|and|nor|but then|and then|but|then|instead of|rat
 _CONTRARY = re.compile(r"^outcome ?,? (?:instead of|rather than)\b")
 #: How much of the liquid, asked: "what fraction of the liquid spills".
 _SHARE = r"(?:what|which) (?:fraction|proportion|share|percentage|part|amount)(?: of (?:it|the \w+))?"
+
+
+#: What happens, asked of the pour and of nothing in it ("what happens if I pour from high?", not "what
+#: happens to the bowl"): every expectation is asked.
+_WHAT_HAPPENS = re.compile(r"\bwhat (?:happens|would happen|will happen|is going to happen|is gonna happen|could happen)"
+                           r"(?! to\b| with\b)")
+#: Words that say nothing of a pour beside it ("so what happens then?": no pour asked of).
+_NOTHING_ELSE = frozenset(("so", "then", "now", "next", "here", "there", "and", "well", "ok", "okay", "if", "i", "we",
+                           "you", "it", "this", "that", "what", "hey", "hi"))
 
 
 @dataclass(frozen=True)
@@ -344,6 +354,9 @@ def hear(text: str) -> Heard:
         wanted = [g.removeprefix("neg(").removesuffix(")") for g in goals]
         asked = [n for n in asked if n not in OUTCOMES[-1][1] or n in wanted] + [n for n in wanted if n not in asked]
     asked = worried(said, asked, clauses, OUTCOMES[-1][1])     # "is it ok ... or will the bowl tip over"
+    if not asked and not goals and _WHAT_HAPPENS.search(said) and set(re.findall(r"[a-z]+", _WHAT_HAPPENS.sub(
+            " ", said))) - _NOTHING_ELSE:                        # "upside down bottle over bowl. what happens"
+        asked = [e.name for e in load_vocabulary().expectations]
     refuse_alone(rate, tuple(asked), tuple(goals))
     return Heard(tuple(asked), tuple(goals), tuple(phrases), text,
                  "named" in bowl and "of a container" not in bowl, rate_notes)
