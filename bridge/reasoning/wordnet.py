@@ -62,9 +62,8 @@ def _kinds_of(offset: str) -> frozenset[str]:
 
 
 @lru_cache(maxsize=256)
-def senses(noun: str) -> tuple[frozenset[str], ...]:
-    """Per noun sense of `noun` (in WordNet's order, the commonest first),
-    the words of it and of every kind it is a kind of; () where WordNet
+def _offsets(noun: str) -> tuple[str, ...]:
+    """Where each noun sense of `noun` is in the data file, the commonest first; () where WordNet
     has no such noun or is not installed."""
     if not (ROOT / "index.noun").exists():
         return ()
@@ -72,8 +71,14 @@ def senses(noun: str) -> tuple[frozenset[str], ...]:
     if line is None:
         return ()
     fields = line.split()
-    count = int(fields[2])
-    return tuple(_kinds_of(o) for o in fields[-count:])
+    return tuple(fields[-int(fields[2]):])
+
+
+def senses(noun: str) -> tuple[frozenset[str], ...]:
+    """Per noun sense of `noun` (in WordNet's order, the commonest first),
+    the words of it and of every kind it is a kind of; () where WordNet
+    has no such noun or is not installed."""
+    return tuple(_kinds_of(o) for o in _offsets(noun))
 
 
 def is_a(noun: str, kinds: frozenset[str], first: int = 3) -> bool:
@@ -83,14 +88,8 @@ def is_a(noun: str, kinds: frozenset[str], first: int = 3) -> bool:
 
 def kind_named(noun: str, kinds: frozenset[str], first: int = 3) -> str | None:
     """The nearest kind WordNet says `noun` is, of a sense that is one of
-    `kinds` (merlot: "wine"), for saying back; None if no such sense."""
-    if not (ROOT / "index.noun").exists():
-        return None
-    line = _line(ROOT / "index.noun", noun.lower().replace(" ", "_"))
-    if line is None:
-        return None
-    fields = line.split()
-    for offset in fields[-int(fields[2]):][:first]:
+    `kinds` (merlot: "red wine"), for saying back; None if no such sense."""
+    for offset in _offsets(noun)[:first]:
         if kinds & _kinds_of(offset):
             _, up = _synset(offset)
             return _synset(up[0])[0][0].replace("_", " ") if up else None
