@@ -151,7 +151,7 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
     return text, said
 
 
-#: Who wants a bowl filled: "I want to", "goal:" (as _filling's).
+#: Who wants a bowl filled: "I want to", "goal:" (_filling's and _to_the_brim's).
 _WANTS_FILLED = (r"(?:\b(?:i|we) (?:would like|like|want|wanna|need|wish|am trying|are trying|hope|aim|plan|have|had)"
                  r"|\b(?:goal|aim|objective|task|target)s?(?: is)?:?)(?: to)? ")
 
@@ -173,8 +173,7 @@ def _filling() -> Cued:
     halfway", "fill the bowl to the brim": refused, a level), nor the source filled ("filling the cup to
     the top": a full source)."""
     bowl = rf"((?:the|a|an|my|this|that|our|your) (?:[a-z]+ )?(?:{destinations()}))"
-    return Cued(rf"(?:\b(?:i|we) (?:would like|like|want|wanna|need|wish|am trying|are trying|hope|aim|plan|have|had)"
-                rf"|\b(?:goal|aim|objective|task|target)s?(?: is)?:?)(?: to)? fill (?:up )?{bowl}(?: up)?(?! (?:half|halfway|about|around|a quarter|a third|to (?:half|a |\d)|\d|(?:right |all the way )?to the (?:top|brim|rim)\b))\b"
+    return Cued(rf"{_WANTS_FILLED}fill (?:up )?{bowl}(?: up)?(?! (?:half|halfway|about|around|a quarter|a third|to (?:half|a |\d)|\d|(?:right |all the way )?to the (?:top|brim|rim)\b))\b"
                 rf"|\b(?:i|we) (?:would |want to |need to )?have {bowl} (?:end up |be )?(?:full|filled(?: up)?)\b"
                 rf"|\b(?:i|we) (?:want|need|would like) {bowl} (?:to be |to end up )?(?:full|filled(?: up)?)\b",
                 ("fill", "full"))
