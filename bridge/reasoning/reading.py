@@ -276,7 +276,7 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
                         else f"\"{question}\" excludes every value of {dim}")
     read_at = set().union(*(p for _, p in accepted))
     plain = plain_tilts(tokens, read_at, negated_at)
-    liquid_at, liquid = liquids_unnamed(tokens, read_at | plain, lex.known)   # "pour the Barolo" (unnamed.py)
+    liquid_at, liquid = liquids_unnamed(tokens, read_at | plain, lex.known)   # "pour the merlot" (unnamed.py)
     taken = read_at | plain | liquid_at | comparing
     refuse_unplaced(question, tokens, taken, lex)
     out += same_at_the_end(tokens, out, vocab)
