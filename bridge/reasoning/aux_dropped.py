@@ -6,8 +6,8 @@ is read with "does" before it ("does it fall down?"), as outcomes.py hears
 questions; so is an outcome's verb asked alone after a scene ("pour high,
 wobble?": does it wobble?), and a place said wet ("table wet?": does the
 table get wet?); so are outcomes asked in a word or two ("all in?": does
-it all go in?, "leftover?": is any left in the source?). A clause with an auxiliary of its own, or none of these
-subjects, is left as it is."""
+it all go in?, "leftover?": is any left in the source?). A clause with an
+auxiliary of its own, or none of these subjects, is left as it is."""
 from __future__ import annotations
 
 import re

@@ -137,6 +137,11 @@ def _set_against(text: str) -> tuple[str, tuple[str, ...]]:
 _IER = re.compile(r"\b(mess|splash|dripp|slosh|spill|slipp|wobbl)i(er|est)\b")
 
 
+def _more(m: re.Match) -> str:
+    """An outcome's comparative (_IER's match) as "more" or "most" and the outcome: "messier", "more messy"."""
+    return f"{'more' if m.group(2) == 'er' else 'most'} {m.group(1)}y"
+
+
 def compared_or(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with the "or" between two scenes it compares
     read as "vs", and what is said back of it; `text` as it is otherwise.
@@ -145,9 +150,8 @@ def compared_or(text: str) -> tuple[str, tuple[str, ...]]:
     two scenes are set against each other ("or", "than", "vs")."""
     said: tuple[str, ...] = ()
     if re.search(r"\b(?:or|than|vs|versus)\b", text):
-        said = tuple(dict.fromkeys(f"{m.group(0)}: read as {'more' if m.group(2) == 'er' else 'most'} {m.group(1)}y"
-                                   for m in _IER.finditer(text)))
-        text = _IER.sub(lambda m: f"{'more' if m.group(2) == 'er' else 'most'} {m.group(1)}y", text)
+        said = tuple(dict.fromkeys(f"{m.group(0)}: read as {_more(m)}" for m in _IER.finditer(text)))
+        text = _IER.sub(_more, text)
     text, compared = _compared_or(text)
     return text, said + compared
 

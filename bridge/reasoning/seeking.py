@@ -170,10 +170,10 @@ def _to_the_brim() -> re.Pattern:
 def _filling() -> Cued:
     """Filling the bowl, wanted: "I'd like to fill the bowl", "goal: fill the bowl", "have the bowl end up full"
     (so that it all ends up in it: it goes in and stays); not how full ("fill the bowl
-    halfway", "fill the bowl to the brim": refused, a level), nor the source filled ("filling the cup to
-    the top": a full source)."""
+    halfway"; "fill the bowl to the brim", a level, is refused before: _to_the_brim), nor the source
+    filled ("filling the cup to the top": a full source)."""
     bowl = rf"((?:the|a|an|my|this|that|our|your) (?:[a-z]+ )?(?:{destinations()}))"
-    return Cued(rf"{_WANTS_FILLED}fill (?:up )?{bowl}(?: up)?(?! (?:half|halfway|about|around|a quarter|a third|to (?:half|a |\d)|\d|(?:right |all the way )?to the (?:top|brim|rim)\b))\b"
+    return Cued(rf"{_WANTS_FILLED}fill (?:up )?{bowl}(?: up)?(?! (?:half|halfway|about|around|a quarter|a third|to (?:half|a |\d)|\d))\b"
                 rf"|\b(?:i|we) (?:would |want to |need to )?have {bowl} (?:end up |be )?(?:full|filled(?: up)?)\b"
                 rf"|\b(?:i|we) (?:want|need|would like) {bowl} (?:to be |to end up )?(?:full|filled(?: up)?)\b",
                 ("fill", "full"))
