@@ -4,7 +4,13 @@ one the reader reads as nothing (everyday.txt's hedges) or an English word
 it does not know at all, at least one of them, with no number, no negation, no verb of an
 outcome and no word it could mistake for another. It is read as nothing
 and said back, so that its words neither refuse the question nor go
-unheard. The question itself, the last sentence, is never chatter; a
+unheard. So is a sentence after the question ("... splash less than water?
+Asking for a science lesson."), where its words may also be words the
+reader knows but never places in a scene ("I want to show them with a
+simple demo."), but for one that supposes ("if its to close") or tells an
+outcome ("It spilled everywhere yesterday."). The
+question itself, the last sentence ending in a question mark (the last
+sentence, with none), is never chatter; a
 sentence with a word the reader knows ("The bowl is plastic.") is read as
 any other, and one with a word it cannot spell ("Bowl slidez.") is
 refused as mistyped."""
@@ -15,28 +21,34 @@ import re
 from pantarhei.bridge.reasoning.outcome_verbs import outcome_verb
 from pantarhei.bridge.reasoning.spelling import english
 
+#: A sentence after the question that says when or how it is asked ("cup hits bowl??? if its to close"): no chatter.
+_SUPPOSED = re.compile(r"\b(?:if|when|while|without|unless|because|once|before|after)\b")
 #: What is said back of a sentence read as chatter.
 SAID = "read as nothing: it says nothing of a pour"
 
 
 def chatter(text: str, words_of, known: frozenset[str], nothing: frozenset[str],
-            negations: frozenset[str]) -> tuple[str, tuple[str, ...]]:
-    """`text` (normalised) without the sentences before its last that are
+            negations: frozenset[str], placeable: frozenset[str]) -> tuple[str, tuple[str, ...]]:
+    """`text` (normalised) without the sentences around its question that are
     chatter (the module's docstring), and what is said back of each;
     `words_of` gives a text's tokens, `known` the words the reader knows,
-    `nothing` those it reads as nothing, `negations` the negations'."""
+    `nothing` those it reads as nothing, `negations` the negations',
+    `placeable` the words it places in a scene."""
     sentences = re.split(r"(?<=[.!?])\s+", text.strip())
     if len(sentences) < 2:
         return text, ()
+    asked = max((i for i, s in enumerate(sentences) if s.endswith("?")), default=len(sentences) - 1)
     kept, said = [], []
-    for sentence in sentences[:-1]:
-        if _chatter(sentence, words_of, known, nothing, negations):
+    for i, sentence in enumerate(sentences):
+        after = known - placeable if i > asked else frozenset()      # after the question: known words placed nowhere too
+        if i != asked and _chatter(sentence, words_of, known, nothing | after, negations) and not (
+                after and (_SUPPOSED.search(sentence) or any(outcome_verb(t.raw) for t in words_of(sentence)))):
             said.append(f"{sentence.rstrip(' .!?')}: {SAID}")
         else:
             kept.append(sentence)
     if not said:
         return text, ()
-    return " ".join([*kept, sentences[-1]]), tuple(said)
+    return " ".join(kept), tuple(said)
 
 
 def _chatter(sentence: str, words_of, known, nothing, negations) -> bool:

@@ -89,6 +89,10 @@ _NOT_IN = re.compile(r"\b(?:instead of|rather than|and not|not) (?:going |landin
 #: A cause asked before the mishap it is asked of: "what went wrong here, I turned the cup upside down ...".
 _CAUSE_FIRST = re.compile(r"^(?P<cause>what went wrong|what happened|what did (?:i|we) do wrong)(?: here| there)?(?: ?[,:;.?!])+ *"
                           r"(?P<told>(?:i|we|he|she|they|it|the|my)\b[^?]+?)[ .!]*$")
+#: The liquid said where it ended up, with no verb ("water everywhere", "milk all over the counter"): spilt.
+_EVERYWHERE = re.compile(r"^(?:and |so )?(?:(?:hot|cold|warm|sticky|the|my|some) )*(?:[a-z]+ )?(?:water|liquid|milk|juice|oil|soup"
+                         r"|broth|tea|coffee|syrup|honey|stuff|mess)(?: (?:just|all|went|was|got))? (?:everywhere|all over"
+                         r"(?: (?:the|my) (?:table|counter|floor|place|worktop|bench))?)[ .!]*$")
 #: A negation before an outcome told: it did not happen ("nothing came out").
 _NOT = re.compile(r"\b(?:nothing|none|not|never|no|zero)\b")
 
@@ -117,6 +121,9 @@ def _told(clause: str) -> list[tuple[tuple[str, ...], bool]]:
     if _NOT_IN.fullmatch(clause.strip(" ,")):
         return [(("liquid_enters_destination",), True)]         # "it went all over the floor and not in the bowl"
     out: list[tuple[tuple[str, ...], bool]] = []
+    if _EVERYWHERE.search(clause):
+        out.append((("no_spill",), True))                        # "hot broth everywhere": spilt, no verb said
+        clause = _EVERYWHERE.sub(" ", clause)
     for pattern, names, bad in _outcomes()[:-1]:     # (the last is "safe", "fine": no outcome told)
         m = next((m for m in pattern.finditer(clause) if _happened(m, names)), None)    # ("drips landed": not "drips")
         if m is None:
@@ -150,7 +157,10 @@ def _happened(m: re.Match, names: tuple[str, ...]) -> bool:
         return False        # tipping something, or something held tipped: the source ("she keeps tipping the jug",
         #                     "i started with the bottle already tipped")
     # (not told as having happened: "need to empty it without knocking it over")
-    return bool(_TOLD_TENSE.match(m.group(0)) or _HABIT.search(before) or (_GOING_ON.search(before) and m.group(0).endswith("ing")))
+    # going on: "the bowl is jumping", or its subject alone before it ("bowl wobbling. why.")
+    going_on = _GOING_ON.search(before) or re.fullmatch(
+        r"(?:the |my )?(?:bowl|dish|cup|jug|bottle|pitcher|glass|mug|water|liquid|milk|juice|oil|soup) ", before)
+    return bool(_TOLD_TENSE.match(m.group(0)) or _HABIT.search(before) or (going_on and m.group(0).endswith("ing")))
 
 
 def _said(words: dict, groups: list[tuple[str, ...]], when: str = "") -> str:
@@ -191,7 +201,7 @@ def mishap(text: str) -> tuple[str, tuple[str, ...]]:
         if read is not None:
             return read
     if not re.search(r"[?]", text) and not re.match(rf"(?:{_ASKS})\b", text) and re.search(
-            r"^(?:tried|poured)\b|\b(?:i|we|he|she|they)\b", text) and not re.search(
+            r"^(?:tried|poured|the|my|our|his|her|their|it)\b|\b(?:i|we|he|she|they)\b", text) and not re.search(
             r"\b(?:whether|wonder|know|tell|if|would|should|could|can|will|how|what|why|which|please)\b", text):
         # a mishap told with nothing asked after it ("I pulled the pitcher away too fast and a trail of
         # drips went across the table."): what went wrong, asked of the pour told, as "why?" asks it

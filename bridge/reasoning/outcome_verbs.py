@@ -36,7 +36,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      # thrown outside it: "splash outside the bowl", "make splash outside" (landing or dripping outside is a spill)
      r"|(?:makes? (?:a |any |big |much )*)?(?:splash\w*|splatter\w*|slosh\w*|slop\w*) outside\b"
      # thrown back up out of the bowl: "splash back", "splash-back expected?"
-     r"|(?:splash|splatter)(?:es|ed|ing)? ?back\b(?! (?:in|into|out|up)\b)|splashbacks?\b"
+     r"|(?:splash|splatter)(?:es|ed|ing)? ?back\b(?! (?:in|into|out)\b| up\b(?! (?:at|toward|towards|onto|on)\b))|splashbacks?\b"
      r"|overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*|slop\w*|splash\w*|splatter\w*|fizz\w*"
      r"|foam\w*|froth\w*|bubbl\w*|boil\w*) over"
      r"(?: the (?:rim|edge|top|side)s?)?"
@@ -48,7 +48,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"(?:underside of (?:the |its )?)?(?:(?:jug|jar|bottle|pitcher|carton|kettle) )?"
      r"(?:spout|neck|lip|jug|jar|bottle|pitcher|carton|kettle)\b(?! (?:in|into)\b)"
      r"|spill\w*|spilt|splash\w*|splatter\w*|spray(?:s|ed|ing)?|spurt\w*|slosh\w*(?! (?:around|about)\b)|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
-     r"|(?:makes?|(?<=up )making) (?:(?:a|any) )?(?:big |huge |bit of a |real |total )?mess|(?:go|goes|going|went|get|gets) everywhere"
+     r"|(?:makes?|(?<=up )making) (?:(?:a|any) )?(?:big |huge |bit of a |real |total )?mess|(?:go|goes|going|went|get|gets|getting|got) everywhere"
      r"|(?:get|gets|getting|got) (?:it|them|liquid|(?:the )?[a-z]+) (?:everywhere|all over(?: the place)?)\b"
      # lost over the rim or on the counter: "do I lose any on the counter", "do i lose broth over the rim"
      r"|los(?:e|es|ing|t) (?:any|some|much|a lot|a bit|a drop)(?: of it)?(?= (?:on|onto|over|all over)\b)"
@@ -84,6 +84,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:exactly |right )?where (?:i|you|we|they) (?:put|placed|set|left) (?:it|them))"
      r"|(?:sit|sits|sitting|stand|stands|standing|stay|stays|staying|remain|remains|rest|rests|resting|be)"
      r" (?:still )?(?:in|at) the same (?:spot|place|position|location)", STILL, False),
+    # sent off what it stands on: moved, and fallen ("the bowl went flying off the counter")
+    (r"(?:go|goes|going|went|gone|sent) flying off(?= (?:the |my |our )?(?:table|counter|countertop|worktop|bench|tray|shelf|stool)\b)",
+     (*STILL, "destination_upright"), True),
     # the way it moves said after it is the moving's ("the bowl scoots sideways", "slides to one side")
     # somewhere else at the end: "does the bowl end up in a different spot than where it started"
     (r"(?:end|ends|ended|ending) up (?:in|at|on) (?:a )?(?:different|another|new) (?:spot|place|position|location)"

@@ -58,6 +58,8 @@ _DROPS = r"(?:drop|droplet|bit|speck|trace|splash)s? "   # a goal's how much: no
 #: The words that may follow an outcome's verb and are heard with it ("drip on the
 #: table", "spill out of the cup", "go into the bowl"): the scene's words stay the scene's.
 _REST = ("each other|one another|at all times|all the time|the whole time|at any point|at any time|throughout|on|onto|over|out|of|in(?! one go\\b)|into|inside|outside|the|a|an|table|tablecloth|floor|counter|countertop|worktop|bench|stove|tray|top|"
+         # on the one pouring: "splash onto my shirt"
+         "(?:my|your|our) (?:shirt|shirts|clothes|apron|sleeves?|hands?|arms?|feet|shoes|face|lap|legs?)|"
          "ground|place|everywhere|anywhere|at|all|any|anything|it|its|liquid|water|bowl|cup|glass|"
          "destination|source|target|container|rim|edge|sides?|middle|centre|center|drop|drops|much|too|even|ever|really|very|"
          "up|down|off|away|again|then|across|along|around|against|between|"
@@ -139,9 +141,9 @@ def _patterns() -> tuple[re.Pattern, ...]:
                          r"|\b(?:the |any |a )?(?:spill(?:s|age)?|splash(?:es|ing)?|drips?|mess)"
                          r" (?:outcome|result|risk|rate|amount|chance|probability|likelihood)s?\b")
     goal = Cued(       # (goal and more compiled only where they may match: their verbs cost ask's start-up)
-        rf"\b(?:without (?:(?:getting|having|causing) (?=any\b|a\b))?(?P<gneg>(?:(?:so much as |even )?(?:any|a single|one single|a|one) )?{_DROPS}(?:of (?:it|them|the [a-z]+) )?"
+        rf"\b(?:without (?:(?:getting|having|causing) (?=any\b|a\b)|(?:letting|allowing) (?=(?:it|them|the [a-z]+|anything|any)\b))?(?P<gneg>(?:(?:so much as |even )?(?:any|a single|one single|a|one) )?{_DROPS}(?:of (?:it|them|the [a-z]+) )?"
         rf"|(?:any|some) (?:of (?:it|them|the [a-z]+) )?|a |making (?:a |any )?)?(?P<gwho>(?:it|them|the [a-z]+|anything) )?(?:ever |even )?"
-        rf"(?:getting |being )?"
+        rf"(?:getting |being |to )?"
         # a goal said as the state wanted: "pour neatly with nothing dribbling down the outside"
         rf"|with (?P<gwith>nothing|none(?: of it)?|no (?:liquid|water|drops?|droplets?)) (?:ever |even )?"
         # the most that can be done before an outcome: "the fastest I can tip it before it starts splashing"

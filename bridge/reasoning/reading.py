@@ -172,7 +172,7 @@ def read_question(question: str) -> Reading:
     refusal stands."""
     text, respelt = normalising(question)
     lex = lexicon()                         # "It is for science.": chatter (chatter.py)
-    text, chat = chatter(text, words_of, lex.known, frozenset(_IGNORED), NEGATION_STEMS)
+    text, chat = chatter(text, words_of, lex.known, frozenset(_IGNORED), NEGATION_STEMS, lex.placeable)
     text, asker = asker_said(text)          # "I'm a potter and ...": who asks (who_asks.py)
     text, restored = aux_restored(text)     # "it fall down?": does it (aux_dropped.py)
     refuse_drips_after(text)                # "drip down the bottle after pouring" (drips_after.py)

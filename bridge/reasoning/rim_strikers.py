@@ -1,5 +1,5 @@
 """What strikes the bowl's rim, said before a question is read (wording.normalising): the lip
-of the source, which is its spout ("does the jug's lip hit the bowl": the source's contact,
+(rim, edge) of the source, which is its spout ("does the jug's lip hit the bowl": the source's contact,
 asked), and the liquid, whose striking is no outcome ("the stream hit the edge of the bowl and
 jumped out": what it did next is read)."""
 from __future__ import annotations
@@ -20,26 +20,26 @@ def lip_of_source(text: str, said: dict[str, None]) -> str:
     it is poured from): a part of the source, not the bowl's rim. Only a lip named as what
     strikes the bowl is ("does the jug's lip hit the bowl"): never one said as a place
     (_AT_A_PLACE), nor one said to rest on the bowl (a touch in the scene, which no proposition holds)."""
-    if not re.search(r"\blip\b", text):
+    if not re.search(r"\b(?:lip|rim|edge)\b", text):
         return text
     held = tuple(w for w in dict.fromkeys(re.findall(r"\bfrom (?:the |a |an |my |your |this |that )?([a-z]+)\b", text))
                  if w in names("bowl") and w not in _DESTINATIONS)
-    before = len(text)
     for pattern in _lips(held):
+        for m in list(pattern.finditer(text)):
+            said.setdefault(f"{m.group('part')}: read as spout, a part of the source")
         text = pattern.sub(r"\1spout", text)
-    if len(text) != before:
-        said.setdefault("lip: read as spout, a part of the source")
     return text
 
 
 @lru_cache(maxsize=64)
 def _lips(held: tuple[str, ...]) -> tuple[re.Pattern, ...]:
-    """The lip of a source (everyday.txt's containers poured from, and those `held` as poured from)
-    striking the bowl: "the jug lip hit", "the lip of the flask touched"."""
-    sources = alternation([*(p for s in sections() if s.words == "bowl poured from" for p in s.phrases), *held])
+    """The lip of a source (everyday.txt's containers poured from, those `held` as poured from, and
+    any other container but the destination's words) striking the bowl: "the jug lip hit", "the lip of the flask touched"."""
+    sources = alternation([*(p for s in sections() if s.words == "bowl poured from" for p in s.phrases), *held,
+                           *(w for w in names("bowl") if w not in _DESTINATIONS)])   # (what strikes the bowl is not it)
     strikes = r"(?: \w+){0,2}? (?:touch|hit|bump|knock|bang|clip|strike|struck|collid|scrap|graz|clink|nudg|tap|make contact)"
-    return (re.compile(rf"{_AT_A_PLACE}\b((?:the|its|a) (?:{sources}) )lip\b(?={strikes})"),
-            re.compile(rf"{_AT_A_PLACE}\b((?:the|its|a) )lip(?= of (?:the |a |an |my |this |that )?(?:{sources}){strikes})"))
+    return (re.compile(rf"{_AT_A_PLACE}\b((?:the|its|a) (?:{sources}) )(?P<part>lip|rim|edge)\b(?={strikes})"),
+            re.compile(rf"{_AT_A_PLACE}\b((?:the|its|a) )(?P<part>lip|rim|edge)(?= of (?:the |a |an |my |this |that )?(?:{sources}){strikes})"))
 
 
 def stream_striking(text: str, said: dict[str, None]) -> str:

@@ -31,6 +31,7 @@ from pantarhei.bridge.reasoning.compared_or import compared_or
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.asides import restated
 from pantarhei.bridge.reasoning.earlier_pour import told
+from pantarhei.bridge.reasoning.every_pour import as_every_pour
 from pantarhei.bridge.reasoning.rim_strikers import lip_of_source, stream_striking
 from pantarhei.bridge.reasoning.little_vessels import refuse_little
 from pantarhei.bridge.reasoning.which_one import which_one
@@ -159,6 +160,9 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     # "pour high and not get any splashing": wanted as "without getting any"
     text = re.sub(r"\band (?:not|never) (?:get|have|cause|make)(?= (?:any|a)\b)",
                   lambda m: said.setdefault(f"{m.group(0)}: read as without getting") or "without getting", text)
+    # an outcome forbidden is one wanted not to happen: "no splashing allowed" is "without splashing"
+    text = re.sub(r"\bno ([a-z]+ing) (?:allowed|permitted|please)\b",
+                  lambda m: said.setdefault(f"{m.group(0)}: read as without {m.group(1)}") or f"without {m.group(1)}", text)
     # "w/o" and "w/" as notes write them: without, with
     text = re.sub(r"\bw/o\b|\bw/(?= ?[a-z])", lambda m: said.setdefault(f"{m.group(0)}: read as with{'out' * (m.group(0) == 'w/o')}")
                   or f"with{'out' * (m.group(0) == 'w/o')} ", text).replace("  ", " ")
@@ -215,6 +219,7 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text, again = restated(_normalised(text))         # "-2 cm (i.e. below the rim)"
     text = lip_of_source(text, said)                   # "does the jug lip touch the bowl": its spout
     text = stream_striking(text, said)                 # "the stream hit the edge and bounced out": bounced out
+    text = as_every_pour(text, said)                   # "if I don't hold the bowl": every pour's, nothing
     # what is going to happen, said subject first: "stock gonna land in it?" asks "will stock land in it?"
     text = re.sub(r"(?:^|(?<=[,;:.?!] ))((?:the |my |a |this |that )?(?!i\b|we\b|you\b)[a-z]+|it|they) (?:is |are )?gonna (?=[a-z]+\b)",
                   lambda m: said.setdefault(f"{m.group(0).strip()}: read as will {m.group(1)}") or f"will {m.group(1)} ", text)

@@ -1,0 +1,25 @@
+"""What every pour of the vocabulary does already, said as a condition: no one holds the bowl
+("if I don't hold the bowl, will it stay put?"), and the source is held still while it pours ("if
+i dont move the pitcher at all while pouring"). Such a phrase excludes nothing: it is read as
+nothing and said back with why, before the question is read (wording.normalising)."""
+from __future__ import annotations
+
+import re
+
+#: (the phrase, why it is read as nothing)
+_EVERY_POUR = (
+    (re.compile(r"\b(?:not|never|without|nobody|no one) (?:hold\w*|held|steady\w*|grip\w*)(?: on(?: to)?)?"
+                r" (?:the|my|a|our) (?:bowl|dish)\b"),
+     "no one holds the bowl in any pour: it stands free"),
+    (re.compile(r"\b(?:not|never|without) (?:mov\w*|shak\w*|jiggl\w*|wav\w*)(?: (?:the|my|a) (?!bowl\b|dish\b)[a-z]+| it| them)"
+                r"(?: at all)? (?:while|when|as) (?:pouring|i pour|i am pouring|it pours|it is pouring)\b"),
+     "the source is held still while it pours, in every pour (how it moves in and away is read)"),
+)
+
+
+def as_every_pour(text: str, said: dict[str, None]) -> str:
+    """`text` (normalised) without the phrases that say what every pour does (the module's
+    docstring), each said back in `said`."""
+    for pattern, why in _EVERY_POUR:
+        text = pattern.sub(lambda m: said.setdefault(f"{m.group(0)}: ignored: {why}") or " ", text)
+    return re.sub(r" {2,}", " ", text)
