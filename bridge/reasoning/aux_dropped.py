@@ -4,7 +4,7 @@ and people in a hurry type it ("it fall down?", "The bowl move or stay?",
 happens to and goes on with a verb of an outcome, then a question mark,
 is read with "does" before it ("does it fall down?"), as outcomes.py hears
 questions; so is an outcome's verb asked alone after a scene ("pour high,
-wobble?": does it wobble?), and a place said wet ("table wet?": does the
+wobble?": does it wobble?, "full jug, tipped over?"), and a place said wet ("table wet?": does the
 table get wet?); so are outcomes asked in a word or two ("all in?": does
 it all go in?, "leftover?": is any left in the source?). A clause with an
 auxiliary of its own, or none of these subjects, is left as it is."""
@@ -26,7 +26,7 @@ _AUX = re.compile(r"\b(?:will|would|does|do|did|is|are|was|were|can|could|might|
 
 
 #: An outcome's verb alone as a clause asked ("pour high, wobble?"): of "it".
-_ALONE = re.compile(r"(?:(?<=[,.;:!?] )|(?<= - ))(?P<verb>[a-z]+)\?")
+_ALONE = re.compile(r"(?:(?<=[,.;:!?] )|(?<= - ))(?P<verb>[a-z]+)(?P<part> over| out| off| down| away)?\?")
 #: Outcomes asked in a word or two, as notes ask them ("jug, bowl, very fast tilt, all in?"): what each asks.
 _FRAGMENTS = {"all in": "does it all go in", "all out": "does it all come out", "leftover": "is any left in the source",
               "leftovers": "is any left in the source", "any left": "is any left in the source",
@@ -58,6 +58,9 @@ def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
         if not outcome_verb(verb):
             return m.group(0)
         aux = "is" if verb in _SAID_OF else "does"        # "45 deg, ok?": is it ok?
+        if m.group("part"):                                # "full jug, tipped over?": whether it happens
+            said.append(f"{verb}{m.group('part')}: read as asked whether it happens")
+            return f"{aux} it {verb}{m.group('part')}?"
         said.append(f"{verb}: read as {aux} it {verb}")
         return f"{aux} it {verb}?"
 

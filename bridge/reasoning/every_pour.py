@@ -1,7 +1,9 @@
 """What every pour of the vocabulary does already, said as a condition: no one holds the bowl
-("if I don't hold the bowl, will it stay put?"), and the source is held still while it pours ("if
-i dont move the pitcher at all while pouring"). Such a phrase excludes nothing: it is read as
-nothing and said back with why, before the question is read (wording.normalising)."""
+("if I don't hold the bowl, will it stay put?"), the source is held still while it pours ("if
+i dont move the pitcher at all while pouring"), and the bowl is empty before it ("into an empty
+bowl", "bowl empty. spill?"; an empty source pours nothing, and is refused). Such a phrase
+excludes nothing: it is read as nothing and said back with why, before the question is read
+(wording.normalising)."""
 from __future__ import annotations
 
 import re
@@ -14,12 +16,16 @@ _EVERY_POUR = (
     (re.compile(r"\b(?:not|never|without) (?:mov\w*|shak\w*|jiggl\w*|wav\w*)(?: (?:the|my|a) (?!bowl\b|dish\b)[a-z]+| it| them)"
                 r"(?: at all)? (?:while|when|as) (?:pouring|i pour|i am pouring|it pours|it is pouring)\b"),
      "the source is held still while it pours, in every pour (how it moves in and away is read)"),
+    (re.compile(r"(?<!\bfrom )(?<!\bfrom an )(?<!\bfrom the )(?<!\bfrom a )\bempty(?= (?:bowl|dish|basin)s?\b)"
+                r"|(?<!\bbecause the )(?<!\bbecause my )\b(?P<keep>(?:bowl|dish|basin) )(?:is |was |being |still )?(?:completely |totally )?empty\b(?: and\b)?"),
+     "every pour's destination is empty before it"),
 )
 
 
 def as_every_pour(text: str, said: dict[str, None]) -> str:
     """`text` (normalised) without the phrases that say what every pour does (the module's
-    docstring), each said back in `said`."""
+    docstring), each said back in `said` (the bowl they are said of kept)."""
     for pattern, why in _EVERY_POUR:
-        text = pattern.sub(lambda m: said.setdefault(f"{m.group(0)}: ignored: {why}") or " ", text)
+        text = pattern.sub(lambda m: said.setdefault(f"{m.group(0).removeprefix(m.groupdict().get('keep') or '')}: "
+                                                     f"ignored: {why}") or f" {m.groupdict().get('keep') or ''}", text)
     return re.sub(r" {2,}", " ", text)

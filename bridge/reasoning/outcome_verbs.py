@@ -48,7 +48,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"(?:underside of (?:the |its )?)?(?:(?:jug|jar|bottle|pitcher|carton|kettle) )?"
      r"(?:spout|neck|lip|jug|jar|bottle|pitcher|carton|kettle)\b(?! (?:in|into)\b)"
      r"|spill\w*|spilt|splash\w*|splatter\w*|spray(?:s|ed|ing)?|spurt\w*|slosh\w*(?! (?:around|about)\b)|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
-     r"|(?:makes?|(?<=up )making) (?:(?:a|any) )?(?:big |huge |bit of a |real |total )?mess|(?:go|goes|going|went|get|gets|getting|got) everywhere"
+     r"|(?:makes?|(?<=up )making) (?:(?:a|any) )?(?:big |huge |bit of a |real |total )?mess|(?:go|goes|going|went|get|gets|getting|got|glug|glugs|glugged|glugging) everywhere"
      r"|(?:get|gets|getting|got) (?:it|them|liquid|(?:the )?[a-z]+) (?:everywhere|all over(?: the place)?)\b"
      # lost over the rim or on the counter: "do I lose any on the counter", "do i lose broth over the rim"
      r"|los(?:e|es|ing|t) (?:any|some|much|a lot|a bit|a drop)(?: of it)?(?= (?:on|onto|over|all over)\b)"
@@ -69,6 +69,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|hit\w* (?:the )?(?:table|floor|counter|countertop|worktop|bench|bar mat|bar top|bar|mat|tray|stove|tablecloth|ground)\b|(?:go|goes|going|went|get|gets|got|land|lands|landed|landing|fall|falls|fell) (?:on|onto|all over"
      r"|outside)",
      ("no_spill",), True),
+    # in, and none of it outside: "will it glob on the rim or go in clean", "does it stay clean"
+    (r"(?:go|goes|going|went|get|gets|land|lands) (?:in|into)(?: the \w+)? clean(?:ly)?\b", (*ALL_IN, "no_spill"), False),
+    (r"(?:stay|stays|staying|stayed|keep|keeps|remain|remains) (?:nice and )?clean\b", ("no_spill",), False),
     (r"(?:stay|stays|remain|remains|keep|keeps) (?:upright|standing)", ("destination_upright",), False),
     (r"tip(?:s|ped|ping)?(?: over)?(?! (?:(?:it|them|the \w+) )?(?:(?:past|beyond)\b|(?:to|by|at|up to|no more than|more than"
      r"|less than|at most|at least|under|about) -?\d))"

@@ -4,7 +4,7 @@ happens to more ("silicone bowl vs enamel bowl - which one slides more",
 said first: "which spills less: a slow tilt vs a fast one"):
 asked of the scene said first, the other being said back as not read
 (comparisons.py), as "does it slide"; "which" alone too, its verb inflected
-and said with how much ("which splashes less"). "Compare" before them is the frame
+and said with how much ("which splashes less") or ending the question ("which splashes"). "Compare" before them is the frame
 ("compare: 30 cm vs 5 cm"), and the first named again by its number
 after them ("how much more spill at 30"), or by how its number ranks
 against the other's ("20 degrees vs 160 degrees ... at the smaller
@@ -24,7 +24,8 @@ _WHICH = re.compile(r"\bwhich (?:"
                     r"|(?:one|of them|of the two|bowl|cup)(?: of them)? (?:will |would |is going to )?"
                     r"(?P<verb>[a-z]+?)(?P<ending>es|s)?\b(?P<how> (?:more|less|the most|the least|most|least|worse|better)\b)?"
                     # "which" alone: its verb inflected and said with how much ("which splashes less")
-                    r"|(?P<verb2>[a-z]+?)(?P<ending2>es|s)\b(?P<how2> (?:more|less|the most|the least|most|least)\b))")
+                    r"|(?P<verb2>[a-z]+?)(?P<ending2>es|s)\b(?:(?P<how2> (?:more|less|the most|the least|most|least)\b)"
+                    r"|(?= *[?.!]* *$)))")      # ("honey vs water. which splashes")
 
 #: A second "which" asked after the first: "... and which spills more".
 _AND_WHICH = re.compile(rf"(?<=\band ){_WHICH.pattern}")

@@ -178,6 +178,10 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     # "y/n" ending a note: whether it happens or not ("bowl slide y/n")
     text = re.sub(r" *\b(?:y/n|y or n)\b(?=[?.!]* *$)", lambda m: said.setdefault(f"{m.group(0).strip()}: read as or not")
                   or " or not", text)
+    # none landed where it spills, said with no verb: "all of it into the bowl with no drops on the table"
+    text = re.sub(r"\bwith (?:no|zero) (?:drops?|drips?|spills?|splashes|liquid|water|mess) (?=(?:on|onto) (?:the |my )?"
+                  r"(?:table|counter|countertop|worktop|floor|bench|tablecloth|ground)\b)",
+                  lambda m: said.setdefault(f"{m.group(0).strip()}: read as without any landing") or "without any landing ", text)
     # "splash or no splash": whether it happens or not
     text = re.sub(r"\b([a-z]+) or no \1\b", lambda m: said.setdefault(f"{m.group(0)}: read as {m.group(1)} or not")
                   or f"{m.group(1)} or not", text)
@@ -197,7 +201,8 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
                   lambda m: said.setdefault(f"{m.group(0).strip()}: read as all of the") or "all of the ", text)
     # the last of the liquid is some of it: "does the last bit stay in the jug", "does the rest drip on the bench"
     text = re.sub(r"\bthe (?:very )?(?:last (?:little )?(?:bits?|drops?|dribbles?|few drops|of it)\b|rest(?= of\b| (?:stay|stays|stayed"
-                  r"|remain|remains|drip|drips|dripped|come|comes|came|go|goes|went|end|ends|is|was)\b))",
+                  r"|remain|remains|drip|drips|dripped|come|comes|came|go|goes|went|end|ends|is|was|slop|slops|slopped|spill|spills"
+                  r"|spilled|spilt|splash|splashes|splashed|land|lands|landed|fall|falls|fell|run|runs|ran)\b))",
                   lambda m: said.setdefault(f"{m.group(0)}: read as some") or "some", text)
     # the source yeeted is flung ("yeet the cup over the bowl": a fast move in); the liquid yeeted, a force of
     # pouring, is left to be refused

@@ -68,7 +68,8 @@ PHRASES: tuple[tuple, ...] = (
     ("not", ("anything but",)),
     ("hedge", (r"re(but):\bnot (?:liquid|the liquid) but\b",)),
     # when the liquid lands: while pouring ("does it slide when the water hits it")
-    ("hedge", (r"re(when|after|once):\b(?:when|after|once) (?:the )?(?:liquid|it) (?:hits|lands in|reaches|goes into|enters|is in) (?:it|the bowl)\b",)),
+    ("hedge", (r"re(when|after|once):\b(?:when|after|once) (?:the )?(?:liquid|it) (?:hits|lands in|reaches|goes into|enters|is in) (?:it|the bowl)\b"
+               r"|\b(?:when|after|once) (?:the )?(?:liquid|it) (?:is )?in(?= *(?:[?.!,]|$))",)),
     # a slippery liquid: its particles slide, a runny one ("a slippery oil")
     ("runny", (r"re(slippery|slick):\b(?:slippery|slick)(?= liquid\b)",)),
     # the liquid poured "inside": into the bowl ("I pour much water inside")
@@ -147,11 +148,8 @@ PHRASES: tuple[tuple, ...] = (
     # (the everyday word list, everyday.txt, is read here: see rewrites())
     # a bowl full of what is around the pour ("a bowl full of cereal") is not a full bowl
     ("hedge", (r"re:\b(?:full|filled) (?:up )?(?:with|of)(?= (?:the )?context\b)",)),
-    # an empty destination is every pour's; an empty source pours nothing, nor is a bowl
-    # that already holds liquid the vocabulary's: refused (suggestions.py says why)
-    ("hedge", ("re:" + "|".join(rf"(?<={w} )empty(?= bowl\b)" for w in (
-        "into", "into an", "into the", "into a", "onto", "onto an", "onto the", "onto a")),),
-     "read as nothing: every pour's destination is empty before it"),
+    # (an empty destination is every pour's: every_pour.py) an empty source pours nothing, nor is a
+    # bowl that already holds liquid the vocabulary's: refused (suggestions.py says why)
     (UNCLEAR, (r"re:\balready (?:hedge|holds?|contains?|with|full|filled|half)\b",
                r"re:\bempty\b(?! (?:it|the \w+|a \w+|them|out)\b)",
                # the source is held throughout: nothing drops it
