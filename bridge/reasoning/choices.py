@@ -8,13 +8,19 @@ the goal is what is asked, and it is left to the reader. Two liquids set
 against each other ("pouring water vs pouring olive oil, which drips
 more?") that the vocabulary reads as one value are refused: it cannot
 tell the two pours apart; two poured at once ("pour bleach and vinegar
-into the same bowl") are refused too: it pours one liquid, never a mix."""
+into the same bowl") are refused too: it pours one liquid, never a mix.
+So are two containers poured from set against each other with nothing
+said of either that the vocabulary reads ("a wine bottle vs a wide mug",
+"kids plastic cup vs glass mug"): its containers differ only in how heavy,
+slippery or bouncy they are, and the source in how much it holds (two
+bowls so set, "glass bowl vs steel bowl", are the ordinary pour's, read)."""
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.reasoning.everyday import sections
+from pantarhei.bridge.reasoning.everyday import alternation, names, sections
 from pantarhei.bridge.reasoning.two_liquids import chosen_liquids, liquid_values, poured_together, read_alike, set_against_liquids
 
 
@@ -34,6 +40,11 @@ def refuse_choice(text: str) -> None:
         raise UserError(f"\"{against.group(0)}\": both are read as {said}, so the vocabulary cannot tell the two "
                         f"pours apart: ask about one of them, or set against it a liquid it reads otherwise "
                         f"(\"honey vs water\")")
+    vessels = _vessels_set_against().search(text)
+    if vessels and not _READ.search(vessels.group(0)):
+        raise UserError(f"\"{vessels.group(0)}\": the vocabulary's containers differ only in how heavy, slippery or "
+                        f"bouncy they are (and the source in how much it holds), so it cannot tell the two pours apart: "
+                        f"ask about one of them, or set against it one it reads otherwise (\"a heavy jug vs a light one\")")
     m = chosen_liquids(text)
     if m is None or read_alike(m):
         return                                  # "water or milk": both read as an ordinary liquid
@@ -45,3 +56,16 @@ def refuse_choice(text: str) -> None:
     raise UserError(f"\"{m.group(0)}\" chooses between two liquids, {m.group(1)} ({said[value[m.group(1)]]}) "
                     f"and {m.group(2)} ({said[value[m.group(2)]]}): ask about one of them (\"if I pour "
                     f"{m.group(1)}, will it splash?\")")
+
+
+#: Words of a container the vocabulary reads: set against another with one of them, the two differ.
+_READ = re.compile(r"\b(?:heavy|heavier|light|lighter|slippery|slick|grippy|bouncy|full|fuller|empty|half|little|much"
+                   r"|sticky|thick|thin|runny|non ?slip|\d)")
+
+
+@lru_cache(maxsize=None)
+def _vessels_set_against() -> re.Pattern:
+    """Two containers poured from (no bowl) set against each other, a few words of their own before each
+    ("a wine bottle vs a wide mug")."""
+    before, vessel = r"(?:from )?(?:(?:a|an|the|my|her|his|our) )?(?:[a-z]+ ){0,2}", rf"(?:{alternation(n for n in names('bowl') if not re.search(r'bowl|dish|basin', n))})\b"
+    return re.compile(rf"\b{before}?{vessel} (?:vs|versus|compared (?:to|with)) {before}{vessel}")

@@ -9,7 +9,7 @@ from __future__ import annotations
 from pantarhei.bridge.reasoning.wording import CLAUSE_ENDS, Token, stem
 
 #: Words that end the scope of a negation within a clause.
-_SCOPE_ENDS = CLAUSE_ENDS | {"and", "or", "yet"}
+_SCOPE_ENDS = CLAUSE_ENDS | {"and", "or", "yet", "if", "when", "unless", "because"}
 #: Words that negate what follows them in their clause.
 NEGATIONS = {"not", "never", "no", "without", "nor", "neither", "cannot", "none", "nothing"}
 NEGATION_STEMS = {stem(w) for w in NEGATIONS}
