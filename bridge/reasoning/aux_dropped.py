@@ -31,8 +31,10 @@ _ALONE = re.compile(r"(?:(?<=[,.;:!?] )|(?<= - ))(?P<verb>[a-z]+)(?P<part> over|
 _FRAGMENTS = {"all in": "does it all go in", "all out": "does it all come out", "leftover": "is any left in the source",
               "leftovers": "is any left in the source", "any left": "is any left in the source",
               "anything left": "is anything left in the source", "everything out": "does everything come out",
-              "all of it in": "does it all go in", "everything in": "does everything go in"}
-_FRAGMENT = re.compile(rf"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<said>{'|'.join(sorted(_FRAGMENTS, key=len, reverse=True))})\?")
+              "all of it in": "does it all go in", "everything in": "does everything go in",
+              "in or out": "does it all go in or spill"}
+_FRAGMENT = re.compile(rf"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<said>{'|'.join(sorted(_FRAGMENTS, key=len, reverse=True))})"
+                       r"(?:\?|(?<=in or out)[.!]*$)")       # ("side pour. in or out": its question mark left off)
 #: Words of an outcome that are said of it, not done: "ok?" is "is it ok?".
 _SAID_OF = frozenset(("ok", "okay", "fine", "safe", "alright", "good", "bad", "messy", "clean"))
 #: Where the liquid lands, said wet ("table wet?", "floor gets wet?"): whether it gets wet.
@@ -72,7 +74,7 @@ def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
         said.append(f"{m.group('said')}: read as {_FRAGMENTS[m.group('said')]}")
         return f"{_FRAGMENTS[m.group('said')]}?"
 
-    text = _FRAGMENT.sub(fragment, text) if "?" in text else text
+    text = _FRAGMENT.sub(fragment, text) if "?" in text or "in or out" in text else text
     text = _CLAUSE.sub(restore, text)
     text = _ALONE.sub(alone, text) if "?" in text else text
     return (_WET.sub(wet, text) if " wet?" in text else text), tuple(said)

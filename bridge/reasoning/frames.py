@@ -94,7 +94,7 @@ NOTE = re.compile(r"(?:^|(?<=[,:;.!=>\u2013\u2014] )|(?<= - ))(?=(?:tips|topples
 
 #: A verb alone at the end of a note with no word that asks: "high pour thin liquid spill?",
 #: "bowl slide y/n" (not "what if the milk spills?", "what fraction spills?").
-LAST = re.compile(r"(?<=[a-z] )(?=(?:spill|spills|splash|splashes|tip|tips|slide|slides|move|moves|overflow"
+LAST = re.compile(r"(?<=[a-z] )(?<!\bmore )(?<!\bless )(?=(?:spill|spills|splash|splashes|tip|tips|slide|slides|move|moves|overflow"
                   r"|overflows|topple|topples)(?: over)?(?: *\?+| or (?:not|nah) *\?*) *$)")
 _ASKS = re.compile(r"\b(?:what|which|how|why|whether|if|suppose|imagine|will|would|does|do|did|could|can|might"
                    r"|may|should|shall|is|are|was|were)\b")

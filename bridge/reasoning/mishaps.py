@@ -42,6 +42,7 @@ _WANTED = {("liquid_remains_in_destination", "no_spill"): "nothing splashes out"
            STILL: "the bowl does not move"}
 #: The question after the mishap starts at a sentence's end, or at a comma before a word that asks.
 _ASKS = (r"why|how|what|which|would|will|could|should|can|is|does|do|did|was|were|any|so|but why|and how|where"
+         r"|am (?:i|we) doing (?:it|something|anything) wrong"
          r"|if|should|shall|tips|advice|help")
 _BREAK = re.compile(rf"(?:[.!?;]+|,|\.\.\.|\s-)\s+(?=(?:{_ASKS})\b)|\s(?=(?:why|what happened|what went wrong) *[?.!]* *$)"    # "... poured fast why"
                     r"|\s(?=(?:is|will|would|does) (?:that|this) (?:gonna |going to )?happen\b)")   # "... when i poured is that gonna happen"

@@ -94,7 +94,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     # somewhere else at the end: "does the bowl end up in a different spot than where it started"
     (r"(?:end|ends|ended|ending) up (?:in|at|on) (?:a )?(?:different|another|new) (?:spot|place|position|location)"
      r"(?: (?:than|from) where (?:it|they) (?:started|was|were|began|stood))?|(?:end|ends|ended) up somewhere else", STILL, True),
-    (r"(?:slid\w*|slip(?:s|ped|ping)?\b|shift\w*|budg\w*|wobbl\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
+    (r"(?:slid\w*|slip(?:s|ped|ping)?\b|shift\w*|budg\w*|wobbl\w*|shimm(?:y|ies|ied|ying)\b|jitter\w*|judder\w*|teeter\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
      r"|jostl\w*|rock(?:s|ed|ing)?|(?:shak(?:e|es|ing)|shook)(?! (?:it|them)\b)|translat\w*|drift\w*|creep\w*|scoot\w*"
      # the bowl pushed by the stream, said with where it goes ("will the stream push them across the table")
      r"|(?:push|shov)(?:es|e|ed|ing)? (?:it|them|the (?:bowl|bowls|destination|dish|container)) (?:across|along|around|about|sideways|aside|away)\b"
