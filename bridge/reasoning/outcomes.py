@@ -68,7 +68,7 @@ _REST = ("each other|one another|at all times|all the time|the whole time|at any
          # how much it happens ("does it shift a little"): the outcome's, not an amount of liquid
          "little|bit|lot|slightly|tiny|millimetre|millimeter|hair|smidge|inch|"
          # or more or less of it, against the ordinary pour ("does it spill more if tilted?")
-         "more(?! than)|less(?! than)|"
+         "more(?! than)|less(?! than)|better(?! than)|worse(?! than)|"
          # or as it did with the ordinary pour ("does it still go into the bowl the same")
          "same(?! (?:way|angle|tilt|height|as)\\b)")
 #: How much of the liquid an outcome is asked of ("does most of it spill"), or its odds ("is

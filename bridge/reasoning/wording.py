@@ -178,6 +178,9 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     # "y/n" ending a note: whether it happens or not ("bowl slide y/n")
     text = re.sub(r" *\b(?:y/n|y or n)\b(?=[?.!]* *$)", lambda m: said.setdefault(f"{m.group(0).strip()}: read as or not")
                   or " or not", text)
+    # an outcome said with "-wise" ("what's the difference ..., splash-wise"): whether it happens, asked
+    text = re.sub(r"(?:^|(?<=[,;:.?!] ))(spill|splash|drip|mess|wobble|slide|tip)[- ]?wise\b",
+                  lambda m: said.setdefault(f"{m.group(0).replace('-', ' ')}: read as does it {m.group(1)}") or f"does it {m.group(1)}", text)
     # none landed where it spills, said with no verb: "all of it into the bowl with no drops on the table"
     text = re.sub(r"\bwith (?:no|zero) (?:drops?|drips?|spills?|splashes|liquid|water|mess) (?=(?:on|onto) (?:the |my )?"
                   r"(?:table|counter|countertop|worktop|floor|bench|tablecloth|ground)\b)",
