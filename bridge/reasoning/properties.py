@@ -112,6 +112,10 @@ _GRIP = {"slippery": "slippery", "slick": "slippery", "slippy": "slippery", "gre
          "wet": "slippery", "icy": "slippery",
          "grippy": "grippy", "rough": "grippy"}
 _AS = {"is", "are", "was", "seems", "looks", "feels", "very", "really", "quite", "super", "so", "pretty"}
+#: What a bowl stands on, of its own: a grip said of it is the destination's ("heavy bowl. slippery
+#: bottom."), unless it is said of a container poured from ("a jug with a slippery bottom").
+_UNDERSIDES = {"bottom", "bottoms", "base", "underside", "feet"}
+_BOWLS = {"bowl", "bowls", "dish", "basin", "tub", "destination"}
 #: What is said back of it.
 SURFACE_SAID = "read as the destination's friction: the bowl slides, or not, on what it stands on"
 
@@ -122,15 +126,20 @@ _MADE_OF = frozenset(("glass", "marble", "granite", "steel", "metal", "stone", "
 
 
 class Surfaces:
-    """A slippery table, a counter that is slick: the destination's
-    friction, for the bowl slides on what it stands on (its friction is
-    the vocabulary's, not the table's). `spans(words)` gives each phrase
+    """A slippery table, a counter that is slick, a slippery bottom: the
+    destination's friction, for the bowl slides on what it stands on (its
+    friction is the vocabulary's, not the table's). `spans(words)` gives each phrase
     and the words it is read as ("slippery destination"); a table said
     high, or sticky, is not one (everyday.txt's context nouns)."""
 
     def spans(self, words: list[str]) -> list[tuple[int, int, tuple[str, ...]]]:
         out: list[tuple[int, int, tuple[str, ...]]] = []
         for i, w in enumerate(words):
+            if w in _UNDERSIDES and i > 0 and words[i - 1] in _GRIP and not (out and i - 1 < out[-1][1]):
+                owner = words[max(0, i - 5):i - 1]            # "a jug with a slippery bottom": the jug's, left as said
+                if "with" not in owner or owner[owner.index("with") - 1:owner.index("with")] in ([], *([b] for b in _BOWLS)):
+                    out.append((i - 1, i + 1, (_GRIP[words[i - 1]], "destination")))
+                continue
             if w not in _SURFACES | _GROUND or (out and i < out[-1][1]) or words[i + 1:i + 2] == ["of"]:   # "a bar of soap"
                 continue
             if w in _GROUND and "on" not in words[max(0, i - 3):i]:    # "pour wet concrete": the liquid
