@@ -69,6 +69,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|hit\w* (?:the )?(?:table|floor|counter|countertop|worktop|bench|bar mat|bar top|bar|mat|tray|stove|tablecloth|ground)\b|(?:go|goes|going|went|get|gets|got|land|lands|landed|landing|fall|falls|fell) (?:on|onto|all over"
      r"|outside)",
      ("no_spill",), True),
+    # down the outside of the bowl, not into it: "it all ran down the outside of the bowl instead of in"
+    (r"(?:run|runs|running|ran|drip\w*|dribbl\w*|trickl\w*|go|goes|going|went) (?:back )?down the (?:outside|sides?)"
+     r" of (?:the |a |my )?(?:bowl|dish|destination)\b", (*ALL_IN, "no_spill"), True),
     # in, and none of it outside: "will it glob on the rim or go in clean", "does it stay clean"
     (r"(?:go|goes|going|went|get|gets|land|lands) (?:in|into)(?: the \w+)? clean(?:ly)?\b", (*ALL_IN, "no_spill"), False),
     (r"(?:stay|stays|staying|stayed|keep|keeps|remain|remains) (?:nice and )?clean\b", ("no_spill",), False),
