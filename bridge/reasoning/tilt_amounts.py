@@ -43,6 +43,11 @@ TILT_AMOUNTS: tuple[tuple, ...] = (
 
 #: How far, said with "far" (read before the negations of tilting in words.py's PHRASES).
 FAR_TILTS: tuple[tuple, ...] = (
+    # not tilted all the way: partway, as halfway is ("if i dont tilt the cup all the way", "without tilting it
+    # all the way")
+    ("tilted halfway", (r"re( all the way):\b(?:not|without|never) (?:tilt|tip|turn|lean)\w*(?: (?:it|them|the \w+))?"
+                        r" all the way(?: over)?\b(?! (?:upside|in|into|to|towards?|from|across|back|up|down|above|onto)\b)",),
+     "read as tilted partway, as halfway"),
     # not tipped (very, too) far: slightly tilted, unless a value follows that says how far ("not
     # tipping it very far, only slightly past horizontal")
     ("slightly tilted", (r"re( far| much):\b(?:not|without|never) (?:be |being )?(?:going |gonna )?(?:to )?(?:tilt|tip|lean)\w*\b(?: (?:it|the \w+))?"

@@ -248,6 +248,7 @@ def _normalised(text: str) -> str:
     # a dash between words ends a clause as a comma does ("held upside down - will any come out")
     text = re.sub(r"(?<=[a-z?!.)]) +(?:-{1,2}|[\u2013\u2014]) +(?=[a-z(])|(?<=[a-z])[\u2013\u2014](?=[a-z])", ", ", text)
     text = re.sub(r"(?<=[a-z]) / (?=[a-z])", " vs ", text)                   # "heavy bowl / light bowl": two compared
+    text = re.sub(r"(?<=[a-z]) ?& ?(?=[a-z])", " and ", text)                 # "moved in qkly & tilted": and
     text = re.sub(r"\bcan't\b|\bcannot\b", "can not", text)
     text = re.sub(r"\bwon't\b", "will not", text)
     text = re.sub(r"n't\b", " not", text)

@@ -278,8 +278,8 @@ PHRASES: tuple[tuple, ...] = (
     # tilted all the way, or tipped right over: upside down; "all the way" said of nothing
     # tilted is refused (all the way where?); "tip it over the bowl" is where it pours
     ("upside down", (r"re:\b(?:tilt|tip|turn|lean|angl|inclin)\w*(?: (?:it|them|the \w+))?(?: (?:like|just))?"
-                     r" (?:all the way|right over|fully|completely)\b(?! (?:the|a|an|my|your|its|over|upside|in"
-                     r"|into|to|towards?|from|across|back|up|down|above|onto)\b)",)),
+                     r" (?:all the way|right over|fully|completely)\b(?! (?:(?:the|a|an|my|your|its)(?! (?:bowl|dish) outcome\b)"
+                     r"|over|upside|in|into|to|towards?|from|across|back|up|down|above|onto)\b)",)),   # ("... does the bowl flip")
     (UNCLEAR, (r"re:\ball the way\b(?! (?:over|upside|up|down|in|into|to|from|across|back|around"
                r"|round|through)\b)",)),
     # tipped all the way over: upside down (the bowl it is said of is nouns.py's to place)
