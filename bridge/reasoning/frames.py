@@ -42,6 +42,9 @@ FRAMES = tuple((re.compile(p), r) for p, r in (
     # an outcome expected, as a noun: "would you expect spilling", "do you predict any splashing"
     (r"\b(?:expect|predict|anticipate|see|observe|get|cause|causes|notice)(?: any| some| a| much)? "
      r"(?=(?:spill|splash|drip|leak|slosh|splatter|dribbl)\w*\b(?! of\b))", " will it "),
+    # more or less of an outcome made: "does pouring from higher up make more splashing (or less)": how much of it, asked
+    (r"\b(?:make|makes|cause|causes|create|creates|give|gives) (?=(?:more|less)(?: or (?:more|less))? (?:spill|splash|mess|drip"
+     r"|slosh|splatter)\w*\b)", ", "),
     # an outcome caused: "does pouring from high make it tip" (the bowl tipping), "cause the cup to slide"
     # (not wanted: "so as not to make the bowl move" is so that it does not)
     (r"\bso(?: as)? (?:not|never) to (?:make|cause) (it|them|the [a-z]+)(?: to)? ", r"so that \1 does not "),

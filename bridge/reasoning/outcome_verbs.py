@@ -158,7 +158,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     # stuck inside, no bowl named: kept in the source ("will the last bit stay stuck inside?")
     (r"(?:(?:stay|stays|remain|remains|get|gets|be|is) )?stuck in(?:side)?(?: (?:the |a |my )?(?!bowl\b|destination\b)[a-z]+)?"
      r"(?! (?:the |a |my )?(?:bowl|destination)\b)", ("liquid_leaves_source",), True),
-    (r"(?:end|ends|ended|ending) up in(?:side)?", (*ALL_IN, "liquid_remains_in_destination"), False),
+    (r"(?:end|ends|ended|ending) up (?:more |less |mostly )?in(?:side)?", (*ALL_IN, "liquid_remains_in_destination"), False),
     # what stays in the bowl entered it: "remains" alone holds also when none enters
     (r"(?:stay|stays|remain|remains) (?:in )?there\b"
      rf"|(?:stay|stays|staying|remain|remains|remaining|stop|stops|stick|sticks|stuck|cling|clings|clung|sit|sits|sitting) in(?:side)?(?: the (?:bottom|base) of)?(?: the \w+| (?:my |a |its )?{CONTAINER}\b)?",
