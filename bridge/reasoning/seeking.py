@@ -289,9 +289,11 @@ _REACHES = Cued(r"\b(?:is|would|will)(?: (?:that|this|it|[a-z]+ing\b[a-z0-9 ]{0,
                 r"|(?<=[,:;] )(?:doable|possible|feasible|achievable|ok|okay)(?= *[?.!]* *$| (?:at|with|from|if|when|using|by) )"   # "... - doable?"
                 # the outcome not wanted, asked of a scene: "I don't want the jug to touch the bowl - will it if I hold it low?"
                 r"|\b(?:will|would|does|could) it(?= if\b)"
+                # which is better for a goal: "is it better to pour from the left side or the center to avoid spilling?"
+                r"|\b(?:is|would) it (?:be )?(?:better|safer|best|wiser) (?:to|if)\b"
                 rf"|\bis there (?:really )?(?:any|an?|some|one|no) {_VALUE}\b",   # "is there any height where it never splashes"
                 ("is there", "ok", "fine", "alright", "all right", "problem", "issue", "enough", "possible", "doable", "feasible",
-                 "achievable", " do ", "work", "achieve", "it if"))
+                 "achievable", " do ", "work", "achieve", "it if", "better", "safer", "best", "wiser"))
 
 
 def reaches(text: str) -> bool:

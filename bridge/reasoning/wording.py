@@ -178,6 +178,9 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     # "y/n" ending a note: whether it happens or not ("bowl slide y/n")
     text = re.sub(r" *\b(?:y/n|y or n)\b(?=[?.!]* *$)", lambda m: said.setdefault(f"{m.group(0).strip()}: read as or not")
                   or " or not", text)
+    # less mess wanted: "is it better to pour close or from high up, for less mess?"
+    text = re.sub(r"\b(?:for|with) (?:less|no|minimal|the least|minimum) (?:mess|spill(?:s|age|ing)?|splash(?:es|ing)?)(?= *[?.!]* *$)",
+                  lambda m: said.setdefault(f"{m.group(0)}: read as so that nothing spills") or "so that nothing spills", text)
     # an outcome said with "-wise" ("what's the difference ..., splash-wise"): whether it happens, asked
     text = re.sub(r"(?:^|(?<=[,;:.?!] ))(spill|splash|drip|mess|wobble|slide|tip)[- ]?wise\b",
                   lambda m: said.setdefault(f"{m.group(0).replace('-', ' ')}: read as does it {m.group(1)}") or f"does it {m.group(1)}", text)

@@ -1,13 +1,14 @@
 """Whether a pour is safe, asked with the worry behind it: "is it ok to pour
-from high up or will the bowl tip over?" asks the worry it names (whether
-the bowl tips), not the three expectations "is it ok" asks alone."""
+from high up or will the bowl tip over?" (or "... from the side? It will
+spill?", the worry asked next) asks the worry it names (whether the bowl
+tips), not the three expectations "is it ok" asks alone."""
 from __future__ import annotations
 
 import re
 
-#: Safety asked, then a worry joined by "or": "is it ok to ... or will the bowl skid".
+#: Safety asked, then a worry joined by "or", or asked next: "is it ok to ... or will the bowl skid".
 _WORRY = re.compile(r"\b(?:is|would|will|can|could)\b[^?.!;]*?\b(?:ok|okay|safe|safely|fine|alright|all right)\b"
-                    r"[^?.!;]*?\bor (?:will|would|does|do|is|could|might|can)\b")
+                    r"[^?.!;]*?(?:\bor |[?.!;]+ +(?:it |the \w+ )?)(?:will|would|does|do|is|could|might|can)\b")
 
 
 def worried(said: str, asked: list[str], clauses: list[tuple[str, ...]], safe: tuple[str, ...]) -> list[str]:
