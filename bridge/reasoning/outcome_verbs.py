@@ -66,7 +66,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:is |are )?drop(?:s|ped|ping)? (?:on|onto) (?:the )?(?:table|floor|counter|countertop|worktop|bench|tablecloth)\b"
      # the liquid touching what is under it: "without any of it touching the table"
      r"|(?:touch\w*|reach\w*) (?:the )?(?:table|floor|counter|countertop|worktop|bench|tablecloth|tray)\b"
-     r"|hit\w* (?:the )?(?:table|floor|counter|countertop|worktop|bench|bar mat|bar top|bar|mat|tray|stove|tablecloth|ground)\b|(?:go|goes|going|went|get|gets|got|land|lands|landed|landing|fall|falls|fell) (?:on|onto|all over"
+     r"|hit\w* (?:the )?(?:table|floor|counter|countertop|worktop|bench|bar mat|bar top|bar|mat|tray|stove|tablecloth|ground)\b|(?:go|goes|going|went|get|gets|got|land|lands|landed|landing|fall|falls|fell) (?:on(?!(?:to)? (?:its|their) sides?\b)|onto(?! (?:its|their) sides?\b)|all over"
      r"|outside)",
      ("no_spill",), True),
     # down the outside of the bowl, not into it: "it all ran down the outside of the bowl instead of in"
@@ -83,7 +83,10 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|turn\w* over|flip\w*|capsiz\w*|overturn\w*|keel\w* over|tumbl(?:e|es|ed|ing)\b"
      # gone over, nothing after it: "the bowl went over" (not "went over the rim": out of the bowl)
      r"|(?:go|goes|went|gone) over(?= *[,.;!?]| *$| (?:and|when|if|as|while|because)\b)"
-     r"|(?:fall|falls|fell)\b(?! (?:in|into|inside|out|off|on|onto)\b)", ("destination_upright",), True),
+     r"|(?:fall|falls|fell)\b(?! (?:in|into|inside|out|off|on|onto)\b)"
+     # on its side: "does the bowl end up going over on its side"
+     r"|(?:(?:go|goes|going|went|gone|fall|falls|falling|fell|tip\w*|roll\w*) (?:over )?)?on(?:to)? (?:its|their) sides?\b",
+     ("destination_upright",), True),
     (r"(?:stay|stays|remain|remains|keep|keeps|be|is) (?:(?:completely|totally|perfectly|absolutely|entirely|fully|really|dead"
      r"|quite|nice and|nicely) )?(?:still|put|in place|steady|stable|stationary"
      r"|(?:exactly |right )?where (?:it|they) (?:is|was|are|were|stands|stood|started)"
@@ -97,7 +100,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     # somewhere else at the end: "does the bowl end up in a different spot than where it started"
     (r"(?:end|ends|ended|ending) up (?:in|at|on) (?:a )?(?:different|another|new) (?:spot|place|position|location)"
      r"(?: (?:than|from) where (?:it|they) (?:started|was|were|began|stood))?|(?:end|ends|ended) up somewhere else", STILL, True),
-    (r"(?:slid\w*|slip(?:s|ped|ping)?\b|shift\w*|budg\w*|wobbl\w*|shimm(?:y|ies|ied|ying)\b|jitter\w*|judder\w*|teeter\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
+    (r"(?:slid\w*|slip(?:s|ped|ping)?\b|shift\w*|budg\w*|wobbl\w*|shimm(?:y|ies|ied|ying)\b|jitter\w*|judder\w*|teeter\w*|trembl\w*|quiver\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
      r"|jostl\w*|rock(?:s|ed|ing)?|(?:shak(?:e|es|ing)|shook)(?! (?:it|them)\b)|translat\w*|drift\w*|creep\w*|scoot\w*"
      # the bowl pushed by the stream, said with where it goes ("will the stream push them across the table")
      r"|(?:push|shov)(?:es|e|ed|ing)? (?:it|them|the (?:bowl|bowls|destination|dish|container)) (?:across|along|around|about|sideways|aside|away)\b"

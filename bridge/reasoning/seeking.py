@@ -89,7 +89,8 @@ def _asking() -> re.Pattern:
 _KEEPS = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? {_VALUE}) (keeps|will keep|would keep)"
                     r" (it|them|the \w+) (in(?: the \w+)?|still|upright|steady|in place)\b")
 #: A value said not to cause an outcome: "which height does not make the bowl slide" (so that it does not).
-_NOT_CAUSING = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? (?:{_VALUE}|pours?|pouring)) ((?:does|do|will|would) not (?:make|let|cause))"
+_NOT_CAUSING = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? (?:{_VALUE}|pours?|pouring)|(?:any|a|some) (?:way|pour) (?:to pour )?that)"
+                          r" ((?:does|do|will|would) not (?:make|let|cause))"
                           r" (it|them|the \w+)(?: to)? (?=[a-z])")
 #: Wanting an outcome: "I want the bowl not to move", "we'd like it to stay in".
 _WANT = re.compile(r"(?:\b(?:i|we) |^|(?<=[.!?] ))(?:want|need|would like|wish)(?: for)? (it(?: all)?|all of it|everything|them|nothing"

@@ -55,6 +55,10 @@ FAR_TILTS: tuple[tuple, ...] = (
                          r"(?![^.?!;]*\b(?:only|just|but|rather|tilted|tilt|steeply|slightly|halfway|upside|upright"
                          r"|degrees?|horizontal)\b)",),
      "read as slightly tilted: tilted, not far"),
+    # very inclined, as learners of English say it: steeply tilted ("pour the water from the bottle very inclined")
+    ("steeply tilted", (r"re(very|really|highly|strongly|heavily):\b(?:very|really|highly|strongly|heavily) (?:inclined|tilted|tipped"
+                        r"|angled|slanted)\b(?! (?:back|away|towards?|like|almost|nearly|about|around|at|to|by|past)\b)",),
+     "read as steeply tilted"),
     # not much inclined, as learners of English say it: slightly tilted; tilted very much: steeply
     ("slightly tilted", (r"re( much):\bnot (?:so |that |too |very )?much (?:inclined|tilted|tipped|angled)\b",),
      "read as slightly tilted: tilted, not much"),
