@@ -29,7 +29,7 @@ from pantarhei.bridge.reasoning.vessels import destinations, liquids
 _HOW = (r"(?:(?:far|close|near) (?:from|to) the (?:centre|center|middle|side|edge|rim)(?: of (?:the )?[a-z]+)?|high|low|far|fast|quick|quickly|slow|slowly|steep|steeply|much|close|near|heavy|light"
         r"|tilted|full)")
 #: A value that is asked for ("the best height"), not said ("medium height").
-_BEST = (r"(?:best|right|ideal|optimal|safest|correct|perfect|proper|max|maximum|min|minimum"
+_BEST = (r"(?:best|better|right|ideal|optimal|safest|safer|correct|perfect|proper|max|maximum|min|minimum"
          r"|highest|lowest|steepest)")
 _WHO = r"(?:i|we|you|it|they|he|she|the robot|one)"
 _ACT = (r"(?:hold|pour|tilt|keep|put|have|place|go|position|use|do|set|angle|raise|lift|move"

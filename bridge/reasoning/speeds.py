@@ -57,6 +57,9 @@ SPEEDS: tuple[tuple, ...] = (
      "read as moderate: neither fast nor slow"),
     ("moderate", (r"re(speed|velocity|pace):\b(?:at |with )?(?:a )?(?:moderate|medium|normal|average|steady) (?:speed|velocity"
                   r"|pace)\b",)),
+    # one speed in, another out: "slow in fast out" (each move at its own speed, the pour between)
+    ("approach slowly ; retreat fast ; pour", (r"re( out):\b(?:slow|slowly) in(?: ?,)? (?:and |then )?(?:fast|quick|quickly) out\b",)),
+    ("approach fast ; retreat slowly ; pour", (r"re( out):\b(?:fast|quick|quickly) in(?: ?,)? (?:and |then )?(?:slow|slowly) out\b",)),
     # a quick in-and-out: the move in and the move out both quick, the pour between
     ("approach fast ; retreat fast ; pour", (
         r"re( out):\b(?:fast|quick|quickly|fastly) in,? (?:and |then )?(?:fast|quick|quickly|fastly) out\b",
