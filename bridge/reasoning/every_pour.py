@@ -17,7 +17,9 @@ _EVERY_POUR = (
                 r"(?: at all)? (?:while|when|as) (?:pouring|i pour|i am pouring|it pours|it is pouring)\b"),
      "the source is held still while it pours, in every pour (how it moves in and away is read)"),
     (re.compile(r"(?<!\bfrom )(?<!\bfrom an )(?<!\bfrom the )(?<!\bfrom a )\bempty(?= (?:bowl|dish|basin)s?\b)"
-                r"|(?<!\bbecause the )(?<!\bbecause my )\b(?P<keep>(?:bowl|dish|basin) )(?:is |was |being |still )?(?:completely |totally )?empty\b(?: and\b)?"),
+                # (a cause asked is left to be refused: "was it because the bowl was empty?")
+                r"|(?<!\bbecause the )(?<!\bbecause my )\b(?P<keep>(?:bowl|dish|basin) )(?:is |was |being |still )?"
+                r"(?:completely |totally )?empty\b(?: and\b)?"),
      "every pour's destination is empty before it"),
 )
 
@@ -25,7 +27,11 @@ _EVERY_POUR = (
 def as_every_pour(text: str, said: dict[str, None]) -> str:
     """`text` (normalised) without the phrases that say what every pour does (the module's
     docstring), each said back in `said` (the bowl they are said of kept)."""
+    def read_as_nothing(m: re.Match, why: str) -> str:
+        kept = m.groupdict().get("keep") or ""
+        said.setdefault(f"{m.group(0).removeprefix(kept)}: ignored: {why}")
+        return f" {kept}"
+
     for pattern, why in _EVERY_POUR:
-        text = pattern.sub(lambda m: said.setdefault(f"{m.group(0).removeprefix(m.groupdict().get('keep') or '')}: "
-                                                     f"ignored: {why}") or f" {m.groupdict().get('keep') or ''}", text)
+        text = pattern.sub(lambda m: read_as_nothing(m, why), text)
     return re.sub(r" {2,}", " ", text)

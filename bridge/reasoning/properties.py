@@ -136,8 +136,9 @@ class Surfaces:
         out: list[tuple[int, int, tuple[str, ...]]] = []
         for i, w in enumerate(words):
             if w in _UNDERSIDES and i > 0 and words[i - 1] in _GRIP and not (out and i - 1 < out[-1][1]):
-                owner = words[max(0, i - 5):i - 1]            # "a jug with a slippery bottom": the jug's, left as said
-                if "with" not in owner or owner[owner.index("with") - 1:owner.index("with")] in ([], *([b] for b in _BOWLS)):
+                before = words[max(0, i - 5):i - 1]           # "a jug with a slippery bottom": the jug's, left as said
+                k = before.index("with") if "with" in before else 0
+                if k == 0 or before[k - 1] in _BOWLS:
                     out.append((i - 1, i + 1, (_GRIP[words[i - 1]], "destination")))
                 continue
             if w not in _SURFACES | _GROUND or (out and i < out[-1][1]) or words[i + 1:i + 2] == ["of"]:   # "a bar of soap"
