@@ -39,8 +39,8 @@ def chatter(text: str, words_of, known: frozenset[str], nothing: frozenset[str],
     asked = max((i for i, s in enumerate(sentences) if s.endswith("?")), default=len(sentences) - 1)
     kept, said = [], []
     for i, sentence in enumerate(sentences):
-        after = known - placeable if i > asked else frozenset()      # after the question: known words placed nowhere too
-        if i != asked and _chatter(sentence, words_of, known, nothing | after, negations) and not (
+        after = i > asked               # after the question: known words placed nowhere are nothing too
+        if i != asked and _chatter(sentence, words_of, known, nothing, negations, placeable if after else None) and not (
                 after and (_SUPPOSED.search(sentence) or any(outcome_verb(t.raw) for t in words_of(sentence)))):
             said.append(f"{sentence.rstrip(' .!?')}: {SAID}")
         else:
@@ -50,10 +50,13 @@ def chatter(text: str, words_of, known: frozenset[str], nothing: frozenset[str],
     return " ".join(kept), tuple(said)
 
 
-def _chatter(sentence: str, words_of, known, nothing, negations) -> bool:
+def _chatter(sentence: str, words_of, known, nothing, negations, placeable=None) -> bool:
+    """Whether `sentence` is chatter: every word read as nothing or an English word the reader does not
+    know, one at least, and (with `placeable`) any word it knows but never places in a scene."""
     if re.search(r"\d", sentence):
         return False
     tokens = words_of(sentence)
     return any(t.word not in known for t in tokens) and all(
-        t.word in nothing or (t.word not in known and english(t.raw) and not outcome_verb(t.raw))
+        t.word in nothing or (placeable is not None and t.word in known and t.word not in placeable)
+        or (t.word not in known and english(t.raw) and not outcome_verb(t.raw))
         for t in tokens) and not any(t.word in negations for t in tokens)

@@ -7,7 +7,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from pantarhei.bridge.reasoning.everyday import alternation, names, sections
+from pantarhei.bridge.reasoning.everyday import alternation, names
 
 #: Containers that are the destination when a lip is named: the lip of one is its rim.
 _DESTINATIONS = frozenset(("bowl", "dish", "basin", "tub", "bucket", "pail", "vat", "container", "destination", "receptacle"))
@@ -22,21 +22,17 @@ def lip_of_source(text: str, said: dict[str, None]) -> str:
     (_AT_A_PLACE), nor one said to rest on the bowl (a touch in the scene, which no proposition holds)."""
     if not re.search(r"\b(?:lip|rim|edge)\b", text):
         return text
-    held = tuple(w for w in dict.fromkeys(re.findall(r"\bfrom (?:the |a |an |my |your |this |that )?([a-z]+)\b", text))
-                 if w in names("bowl") and w not in _DESTINATIONS)
-    for pattern in _lips(held):
-        for m in list(pattern.finditer(text)):
-            said.setdefault(f"{m.group('part')}: read as spout, a part of the source")
-        text = pattern.sub(r"\1spout", text)
+    for pattern in _lips():
+        text = pattern.sub(lambda m: said.setdefault(f"{m.group('part')}: read as spout, a part of the source")
+                           or f"{m.group(1)}spout", text)
     return text
 
 
-@lru_cache(maxsize=64)
-def _lips(held: tuple[str, ...]) -> tuple[re.Pattern, ...]:
-    """The lip of a source (everyday.txt's containers poured from, those `held` as poured from, and
-    any other container but the destination's words) striking the bowl: "the jug lip hit", "the lip of the flask touched"."""
-    sources = alternation([*(p for s in sections() if s.words == "bowl poured from" for p in s.phrases), *held,
-                           *(w for w in names("bowl") if w not in _DESTINATIONS)])   # (what strikes the bowl is not it)
+@lru_cache(maxsize=None)
+def _lips() -> tuple[re.Pattern, ...]:
+    """The lip of a source (every container of everyday.txt but the destination's words: what strikes
+    the bowl is not it) striking the bowl: "the jug lip hit", "the lip of the flask touched"."""
+    sources = alternation(w for w in names("bowl") if w not in _DESTINATIONS)
     strikes = r"(?: \w+){0,2}? (?:touch|hit|bump|knock|bang|clip|strike|struck|collid|scrap|graz|clink|nudg|tap|make contact)"
     return (re.compile(rf"{_AT_A_PLACE}\b((?:the|its|a) (?:{sources}) )(?P<part>lip|rim|edge)\b(?={strikes})"),
             re.compile(rf"{_AT_A_PLACE}\b((?:the|its|a) )(?P<part>lip|rim|edge)(?= of (?:the |a |an |my |this |that )?(?:{sources}){strikes})"))
