@@ -115,7 +115,7 @@ def _liquid_before() -> re.Pattern:
     return re.compile(rf"\b(?:stream|jet|flow|pour|liquid|drops?|{alternation(names('liquid'))})(?: just| then)? $")
 
 
-def _told(clause: str) -> list[tuple[tuple[str, ...], bool]]:
+def _told(clause: str, present: bool = True) -> list[tuple[tuple[str, ...], bool]]:
     """The outcomes a clause tells as having happened, each group with
     whether it failed ("it slid": the bowl moved; "nothing came out": it did
     not leave the source; "it went in fine": it held)."""
@@ -126,7 +126,7 @@ def _told(clause: str) -> list[tuple[tuple[str, ...], bool]]:
         out.append((("no_spill",), True))                        # "hot broth everywhere": spilt, no verb said
         clause = _EVERYWHERE.sub(" ", clause)
     for pattern, names, bad in _outcomes()[:-1]:     # (the last is "safe", "fine": no outcome told)
-        m = next((m for m in pattern.finditer(clause) if _happened(m, names)), None)    # ("drips landed": not "drips")
+        m = next((m for m in pattern.finditer(clause) if _happened(m, names, present)), None)    # ("drips landed": not "drips")
         if m is None:
             continue
         before = clause[:m.start()]
@@ -143,8 +143,9 @@ def _told(clause: str) -> list[tuple[tuple[str, ...], bool]]:
     return out
 
 
-def _happened(m: re.Match, names: tuple[str, ...]) -> bool:
-    """Whether the outcome `m` (of the expectations `names`) is told as having happened to the bowls or the liquid."""
+def _happened(m: re.Match, names: tuple[str, ...], present: bool = True) -> bool:
+    """Whether the outcome `m` (of the expectations `names`) is told as having happened to the bowls or the liquid
+    (in the present after its subject too, where `present`)."""
     before = m.string[:m.start()]
     if re.search(r"\b(?:i|we|you|he|she|they)(?: just)? $", before) and "source_clear" not in names:
         return False        # what the one pouring did ("i tipped the jug"), not an outcome
@@ -161,7 +162,9 @@ def _happened(m: re.Match, names: tuple[str, ...]) -> bool:
     # going on: "the bowl is jumping", or its subject alone before it ("bowl wobbling. why.")
     going_on = _GOING_ON.search(before) or re.fullmatch(
         r"(?:the |my )?(?:bowl|dish|cup|jug|bottle|pitcher|glass|mug|water|liquid|milk|juice|oil|soup) ", before)
-    return bool(_TOLD_TENSE.match(m.group(0)) or _HABIT.search(before) or (going_on and m.group(0).endswith("ing")))
+    # what keeps happening, said in the present after its subject ("it dribbles down the side")
+    present = present and re.match(r"[a-z]+[^s]s\b", m.group(0)) and re.search(r"(?:^|\b(?:it|the \w+|my \w+|our \w+) )$", before)
+    return bool(_TOLD_TENSE.match(m.group(0)) or _HABIT.search(before) or (going_on and m.group(0).endswith("ing")) or present)
 
 
 def _said(words: dict, groups: list[tuple[str, ...]], when: str = "") -> str:
@@ -206,16 +209,17 @@ def mishap(text: str) -> tuple[str, tuple[str, ...]]:
             r"\b(?:whether|wonder|know|tell|if|would|should|could|can|will|how|what|why|which|please)\b", text):
         # a mishap told with nothing asked after it ("I pulled the pitcher away too fast and a trail of
         # drips went across the table."): what went wrong, asked of the pour told, as "why?" asks it
-        read = _read(text.strip(" .!"), "why?")
+        read = _read(text.strip(" .!"), "why?", present=bool(re.search(r"\b(?:every|each) time\b|\bwhenever\b", text)))
         if read is not None:
             return read[0], (read[1][0], "nothing asked after it: read as what went wrong, asked of the pour told")
     return text, ()         # anything else asked: the question as written
 
 
-def _read(told: str, asked: str) -> tuple[str, tuple[str, ...]] | None:
-    """The question `asked` after the mishap `told`, read (mishap's), or None."""
+def _read(told: str, asked: str, present: bool = True) -> tuple[str, tuple[str, ...]] | None:
+    """The question `asked` after the mishap `told`, read (mishap's), or None; an outcome told in the present
+    after its subject is told as having happened where `present` (something asked of it, or "every time" said)."""
     clauses = [c for c in _CLAUSES.split(re.sub(r"[.!?;]+ +", ", ", told)) if c]
-    tells = {c: _told(c) for c in clauses}          # each clause's outcomes, found once
+    tells = {c: _told(c, present) for c in clauses}          # each clause's outcomes, found once
     failed = list(dict.fromkeys(g for c in clauses for g, bad in tells[c] if bad))
     if not failed:
         return None

@@ -55,7 +55,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|los(?:e|es|ing|t) (?:any|some|much|a lot|a bit|a drop)(?: of it)?(?= (?:on|onto|over|all over)\b)"
      r"|los(?:e|es|ing|t)(?= [a-z]+ (?:on|onto|over|all over) (?:the |my )?(?:rim|edge|side|table|counter|floor|worktop|bench)\b)"
      r"|slop\w*|splat\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)|(?:get|gets|got|getting) (?:any|some|much|a drop)(?: of it)?(?= on\b| onto\b)"
-     r"|(?:run|runs|running|ran|roll\w*|stream\w*|go|goes|going|went) (?:back )?down the (?:outside|side)(?! of (?:the |a )?(?:bowl|dish|destination))"
+     r"|(?:run|runs|running|ran|roll\w*|stream\w*|drip\w*|dribbl\w*|trickl\w*|go|goes|going|went) (?:back )?down the (?:outside|side)(?! of (?:the |a )?(?:bowl|dish|destination))"
      # what is left behind outside: "does it leave a trail of drips", "leaving a sticky ring on the counter"
      r"|leav(?:e|es|ing) (?:a |any )?(?:sticky |little |wet |big )?(?:trail|line|ring|puddle)s?\b"
      # where drips went: "a trail of drips went right across the table"
