@@ -5,7 +5,8 @@ happens to and goes on with a verb of an outcome, then a question mark,
 is read with "does" before it ("does it fall down?"), as outcomes.py hears
 questions; so is an outcome's verb asked alone after a scene ("pour high,
 wobble?": does it wobble?, "full jug, tipped over?"), and a place said wet ("table wet?": does the
-table get wet?); so are outcomes asked in a word or two ("all in?": does
+table get wet?), and an outcome going on said first as a note's topic, nothing
+asked ("bowl tipping - heavy pitcher - off center"); so are outcomes asked in a word or two ("all in?": does
 it all go in?, "leftover?": is any left in the source?). A clause with an
 auxiliary of its own, or none of these subjects, is left as it is."""
 from __future__ import annotations
@@ -42,6 +43,12 @@ _WET = re.compile(r"(?:^|(?<=[,.;:!?] )|(?<= - ))(?:the |my )?(?P<place>table|co
                   r"|stove|cloth|tablecloth|shirt|hands?) (?:get |gets |stay |stays )?wet\?")
 
 
+#: An outcome going on, said first as a note's topic with nothing asked ("bowl tipping - heavy pitcher - off
+#: center"): asked, as "bowl tipping?" is.
+_TOPIC = re.compile(r"^(?:the |my )?(?:bowl|dish|basin) (?P<verb>[a-z]+ing)(?: over| around| about| off| away)?(?= - |, |: )")
+_ASKING = re.compile(rf"{_AUX.pattern}|\b(?:why|how|what|which|when|where|if)\b")
+
+
 def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with "does" before each yes-or-no clause asked
     without its auxiliary (the module's docstring), and what is said back."""
@@ -74,6 +81,9 @@ def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
         said.append(f"{m.group('said')}: read as {_FRAGMENTS[m.group('said')]}")
         return f"{_FRAGMENTS[m.group('said')]}?"
 
+    topic = _TOPIC.match(text) if "?" not in text and not _ASKING.search(text) else None
+    if topic and outcome_verb(topic.group("verb")):      # "bowl tipping - heavy pitcher - off center"
+        text = f"{topic.group(0)}?{text[topic.end():]}"
     text = _FRAGMENT.sub(fragment, text) if "?" in text or "in or out" in text else text
     text = _CLAUSE.sub(restore, text)
     text = _ALONE.sub(alone, text) if "?" in text else text

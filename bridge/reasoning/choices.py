@@ -6,8 +6,9 @@ would otherwise be read alone and the second, the ordinary liquid, said
 nothing of. With a goal ("I want none on the table: honey or water?")
 the goal is what is asked, and it is left to the reader. Two liquids set
 against each other ("pouring water vs pouring olive oil, which drips
-more?") that the vocabulary reads as one value are refused: it cannot
-tell the two pours apart; two poured at once ("pour bleach and vinegar
+more?") that the vocabulary reads as one value are read as one pour, the
+first, said back: it cannot tell them apart, and its answer is the same
+for both (as "water or olive oil" is); two poured at once ("pour bleach and vinegar
 into the same bowl") are refused too: it pours one liquid, never a mix.
 So are two containers poured from set against each other with nothing
 said of either that the vocabulary reads ("a wine bottle vs a wide mug",
@@ -24,9 +25,10 @@ from pantarhei.bridge.reasoning.everyday import alternation, names, sections
 from pantarhei.bridge.reasoning.two_liquids import chosen_liquids, liquid_values, poured_together, read_alike, set_against_liquids
 
 
-def refuse_choice(text: str) -> None:
+def read_choice(text: str) -> tuple[str, tuple[str, ...]]:
     """UserError where `text` (normalised) chooses between two liquids read as different values, with no goal,
-    sets against each other two read as one, or pours two at once."""
+    or pours two at once; `text` with two liquids read as one value set against each other read as the first,
+    and what is said back of it."""
     value = liquid_values()
     both = poured_together(text)
     if both and both.group(1) != both.group(2):
@@ -35,11 +37,12 @@ def refuse_choice(text: str) -> None:
     against = set_against_liquids(text)
     told_how = re.search(r"\b(?:thick|thin|runny|sticky|watery|viscous|syrupy|heavy|light)\b",
                          text[max(0, against.start() - 12):against.end()]) if against else None     # "thick paint vs water"
+    alike: tuple[str, ...] = ()
     if against and not told_how and read_alike(against):
         said = sections()[value[against.group(1)]].said_back.removeprefix("read as ").split(":")[0] or "an ordinary liquid"
-        raise UserError(f"\"{against.group(0)}\": both are read as {said}, so the vocabulary cannot tell the two "
-                        f"pours apart: ask about one of them, or set against it a liquid it reads otherwise "
-                        f"(\"honey vs water\")")
+        alike = (f"{against.group(0)}: both read as {said}: the vocabulary does not tell them apart, so the answer "
+                 f"is the same for both",)
+        text = text[:against.start()] + text[against.start():against.end(1)] + text[against.end():]
     vessels = _vessels_set_against().search(text)
     if vessels and not _READ.search(vessels.group(0)):
         raise UserError(f"\"{vessels.group(0)}\": the vocabulary's containers differ only in how heavy, slippery or "
@@ -47,10 +50,10 @@ def refuse_choice(text: str) -> None:
                         f"ask about one of them, or set against it one it reads otherwise (\"a heavy jug vs a light one\")")
     m = chosen_liquids(text)
     if m is None or read_alike(m):
-        return                                  # "water or milk": both read as an ordinary liquid
+        return text, alike                      # "water or milk": both read as an ordinary liquid
     from pantarhei.bridge.reasoning.outcomes import hear       # here: outcomes reads words with wording.py
     if hear(text).goals:
-        return
+        return text, alike
     said = {k: s.said_back.removeprefix("read as ").split(":")[0] or "an ordinary liquid"
             for k, s in enumerate(sections())}
     raise UserError(f"\"{m.group(0)}\" chooses between two liquids, {m.group(1)} ({said[value[m.group(1)]]}) "

@@ -141,6 +141,11 @@ class Surfaces:
                 if k == 0 or before[k - 1] in _BOWLS:
                     out.append((i - 1, i + 1, (_GRIP[words[i - 1]], "destination")))
                 continue
+            if w == "wet" and not (out and i < out[-1][1]) and (_wet_bowl(words, i)):     # "the bowl is wet", "a wet bowl"
+                end = i + 4 if words[i + 1:i + 3] in (["in", "the"], ["on", "the"]) and words[i + 3:i + 4] and \
+                    words[i + 3] in _UNDERSIDES else i + 1                   # "wet in the bottom"
+                out.append((i, end, ("slippery", "destination")))
+                continue
             if w not in _SURFACES | _GROUND or (out and i < out[-1][1]) or words[i + 1:i + 2] == ["of"]:   # "a bar of soap"
                 continue
             if w in _GROUND and "on" not in words[max(0, i - 3):i]:    # "pour wet concrete": the liquid
@@ -157,3 +162,12 @@ class Surfaces:
             if j > i + 1 and words[i + 1] in _AS and j < len(words) and words[j] in _GRIP:   # "the table is slick"
                 out.append((i, j + 1, (_GRIP[words[j]], "destination")))
         return out
+
+
+def _wet_bowl(words: list[str], at: int) -> bool:
+    """Whether "wet" at `at` is said of the bowl, which stands wet and slides: "the bowl is wet",
+    "bowl wet and slick", "a wet bowl" (not wet hands, nor the table wet with a spill)."""
+    k = at - 1
+    while k >= 0 and words[k] in _AS:
+        k -= 1
+    return (k >= 0 and words[k] in _BOWLS) or words[at + 1:at + 2] in (["bowl"], ["dish"], ["basin"])

@@ -44,7 +44,7 @@ from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.chatter import chatter
-from pantarhei.bridge.reasoning.choices import refuse_choice
+from pantarhei.bridge.reasoning.choices import read_choice
 from pantarhei.bridge.reasoning.drips_after import refuse_drips_after
 from pantarhei.bridge.reasoning.mishaps import mishap
 from pantarhei.bridge.reasoning.aux_dropped import aux_restored
@@ -177,8 +177,8 @@ def read_question(question: str) -> Reading:
     text, restored = aux_restored(text)     # "it fall down?": does it (aux_dropped.py)
     refuse_drips_after(text)                # "drip down the bottle after pouring" (drips_after.py)
     text, told = mishap(text)               # "it slid off the tray. how do i stop that?" (mishaps.py)
-    respelt += chat + asker + restored + told
-    refuse_choice(text)                     # "honey or water?": two questions (choices.py)
+    text, alike = read_choice(text)         # "honey or water?": two questions; "water vs oil": one (choices.py)
+    respelt += chat + asker + restored + told + alike
     refuse_unsayable(text, lex.known, lex.placeable)  # "60 degrees vs 90 with 200 ml" (set_against.py)
     try:
         return _read_text(question, text, respelt)

@@ -96,6 +96,14 @@ SPEEDS: tuple[tuple, ...] = (
     ("approach fast", (_TOWARD.replace("SPEED", "(?:fast|quickly|quick)"),)),
     ("approach slowly", (_TOWARD.replace("SPEED", "(?:slowly|slow)"),)),
     ("approach slowly", (r"re(com|came):\b(?:come|comes|coming|came) (?:very |really |too )?(?:slowly|slow)\b",)),
+    # a note's item of one move: "full jug, fast in", "slow out."
+    ("approach fast", (r"re(fast|quick):(?:^|(?<=[,;:.!?] )|(?<= - ))(?:fast|quick|quickly) in(?= *(?:[,;:.!?]| - |$))",)),
+    ("approach slowly", (r"re(slow):(?:^|(?<=[,;:.!?] )|(?<= - ))(?:slow|slowly) in(?= *(?:[,;:.!?]| - |$))",)),
+    ("retreat fast", (r"re(fast|quick):(?:^|(?<=[,;:.!?] )|(?<= - ))(?:fast|quick|quickly) out(?= *(?:[,;:.!?]| - |$))",)),
+    ("retreat slowly", (r"re(slow):(?:^|(?<=[,;:.!?] )|(?<= - ))(?:slow|slowly) out(?= *(?:[,;:.!?]| - |$))",)),
+    # brought in hard: fast ("bring the shaker in hard")
+    ("approach fast", (r"re(hard):\b(?:bring|brings|brought|bringing|come|comes|came|coming|mov(?:e|es|ed|ing)|swing|swings|swung"
+                       r"|swinging)(?: it| the \w+| my \w+)? in (?:really |very |too |quite )?hard\b",)),
     ("fast", ("fastly",)),
     # tipped all the way over fast or slowly: upside down, in a clause of its own, and the move into it
     ("; approach fast", (r"re(fast|quick|rapid):(?:(?<=all the way over )|(?<=right over ))(?:(?:very|really|too|quite|super) )?"

@@ -286,7 +286,7 @@ def _normalised(text: str) -> str:
     # "mug tilt 90 bowl slide" (a note: the next noun starts another clause)
     text = re.sub(r"\b((?:(?:tilt|tip|angl|inclin|lean)\w*|pitch(?:ed|ing)?)(?: (?:it|the \w+))?(?: (?:to|by|at|of|about|around"
                   r"|roughly|approximately|some))*) (-?\d+(?:\.\d+)?(?: (?:to|or) -?\d+(?:\.\d+)?)?)"
-                  rf"(?![\w.%\u00b0-]| ?(?:{_UNIT_WORDS})\b| (?:to|or|and) -?\d)"
+                  rf"(?![\w%\u00b0-]|\.\d| ?(?:{_UNIT_WORDS})\b| (?:to|or|and) -?\d)"
                   r"(?= *(?:$|[,;.!?):\u2013\u2014]|- |(?:and|then|but|so|while|before|after|from|above|over|with|into|at"
                   r"|during|when|if|in|on|towards|away|or|to|degrees?"
                   r"|bowl|bowls|cup|mug|glass|jug|liquid|water|source|destination|does|do|will|would|is)\b))",
