@@ -103,6 +103,11 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:if )?(?:i|we|you) (?:do not|never) (?:want|need) (?:(?:any|a|a single|one|even one) )?(splash|spill|drip|leak|overflow)"
      r"(?:es|s|ing|age)?\b", r"so that it does not \1"),
     (r"\b(?:if )?(?:i|we|you) (?:do not|never) (?:want|need) (?:any|a) mess\b", "so that nothing spills"),
+    # wanting less of an outcome, said as a noun: "if I want less splashing", "if we want fewer spills"
+    (r"\b(?:if|since|as) (?:i|we|you) (?:want|need|would like|wanna)(?: to (?:have|get|make))? (?:less|fewer|minimal|minimum|no)"
+     r" (splash|spill|drip)(?:es|s|ing|age)?\b", r", so that it does not \1"),
+    (r"\b(?:if|since|as) (?:i|we|you) (?:want|need|would like|wanna)(?: to (?:have|get|make))? (?:less|minimal|minimum|no) mess\b",
+     ", so that nothing spills"),
     # a goal said as a state with no outcome in it: "with zero mess", "with no spills"
     (r"\bwith (?:zero|no|absolutely no|not a single|not one) (?:mess|spill(?:s|age|ing)?|splash(?:es|ing)?|drips?|dripping"
      r"|spillover)\b", "so that nothing spills"),

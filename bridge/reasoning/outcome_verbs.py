@@ -123,7 +123,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:stay|stays|keep|keeps|be|is)? ?clear(?: of)?", ("source_clear",), False),
     # emptied into the bowl: it leaves the source and goes in ("does the carton empty into the bowl")
     (r"(?:empt(?:y|ies|ied)|drain(?:s|ed|ing)?)(?: out)?(?= into\b)", ("liquid_leaves_source", *ALL_IN), False),
-    (r"(?:come|comes|coming|came|get|gets|pour|pours|flow|flows|run|runs|drain\w*) out"
+    (r"(?:come|comes|coming|came|get|gets|pour|pours|flow|flows|run|runs|drain\w*|make it|makes it|made it) out"
      # the liquid pouring, said of it ("does anything pour at that angle"), not of who pours
      r"|(?:(?<=anything )|(?<=something )|(?<=nothing )|(?<=any liquid )|(?<=any water ))pour(?:s|ed)?\b(?! (?:it|them|the|from|into|in)\b)"
      r"|(?:go|goes|going|went) out\b(?! of (?:the |a |an |my )?(?!source\b)(?:[a-z]+ )?(?:bowl|destination)\b)"
