@@ -6,7 +6,8 @@ is read with "does" before it ("does it fall down?"), as outcomes.py hears
 questions; so is an outcome's verb asked alone after a scene ("pour high,
 wobble?": does it wobble?, "full jug, tipped over?"), and a place said wet ("table wet?": does the
 table get wet?), and an outcome going on said first as a note's topic, nothing
-asked ("bowl tipping - heavy pitcher - off center"); so are outcomes asked in a word or two ("all in?": does
+asked ("bowl tipping - heavy pitcher - off center"), and a cause asked so ("why the liquid not go in
+the bowl"); so are outcomes asked in a word or two ("all in?": does
 it all go in?, "leftover?": is any left in the source?). A clause with an
 auxiliary of its own, or none of these subjects, is left as it is."""
 from __future__ import annotations
@@ -49,6 +50,10 @@ _TOPIC = re.compile(r"^(?:the |my )?(?:bowl|dish|basin) (?P<verb>[a-z]+ing)(?: o
 _ASKING = re.compile(rf"{_AUX.pattern}|\b(?:why|how|what|which|when|where|if)\b")
 
 
+#: A cause asked without its auxiliary: "why the liquid not go in the bowl", "why the bowl move?".
+_WHY = re.compile(rf"^(?P<why>why|how come) (?P<subject>{_SUBJECT}) (?:not |never )?(?P<verb>[a-z]+)\b")
+
+
 def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with "does" before each yes-or-no clause asked
     without its auxiliary (the module's docstring), and what is said back."""
@@ -84,6 +89,10 @@ def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
     topic = _TOPIC.match(text) if "?" not in text and not _ASKING.search(text) else None
     if topic and outcome_verb(topic.group("verb")):      # "bowl tipping - heavy pitcher - off center"
         text = f"{topic.group(0)}?{text[topic.end():]}"
+    why = _WHY.match(text)
+    if why and (outcome_verb(why.group("verb")) or why.group("verb") in _PHRASAL) and not _AUX.match(text, why.end("why") + 1):    # "why the liquid not go in"
+        said.append(f"{why.group(0)}: read as {why.group('why')} does {text[why.end('why') + 1:why.end()]}")
+        text = f"{why.group('why')} does {text[why.end('why') + 1:]}"
     text = _FRAGMENT.sub(fragment, text) if "?" in text or "in or out" in text else text
     text = _CLAUSE.sub(restore, text)
     text = _ALONE.sub(alone, text) if "?" in text else text

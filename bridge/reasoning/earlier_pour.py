@@ -76,13 +76,13 @@ _WHY = r"(?: (?:because|since|as|cause) [^,;.?!]*)?"
 _NEXT = (r"(?: *[,;.] *| (?:lol|lmao|haha|ugh|smh|oops)[,;.]? )(?=(?:now|this time|if|so|what|which|how|why|will|would|does|do|is|can"
          r"|could|should)\b)")
 _POUR = re.compile(
-    rf"^{WHEN},? (?:when )?(?:i|we|you|they|he|she|the robot|my robot) (?:poured|pour|held|tilted|tipped|did it)"
+    rf"^{WHEN},? (?:when )?(?:i|we|you|they|he|she|the robot|my robot) (?P<verb>poured|pour|held|tilted|tipped|did it)"
     rf"(?P<how>[^,;.?!]*?)(?: and {_WHO} (?:[a-z]+ and )?{_OUT}(?P<part> over| out| everywhere)?{_WHY})?{_NEXT}")
 #: The pour told in the past with no time said, its outcome after it: "i poured from high up and it
 #: went everywhere, how high should I pour?" (without the outcome, "i poured from high up, did it
 #: spill?" asks about the pour told, and is read).
 _PAST = re.compile(
-    rf"^(?:(?:ok|okay|so|well|um|hey|hi)[ ,]+)*(?:i|we) (?:poured|tipped|tilted|held|emptied|tried pouring)"
+    rf"^(?:(?:ok|okay|so|well|um|hey|hi)[ ,]+)*(?:i|we) (?P<verb>poured|tipped|tilted|held|emptied|tried pouring)"
     rf"(?P<how>[^,;.?!]*?) and {_WHO} (?:[a-z]+ and )?{_OUT}(?P<part> over| out| everywhere)?{_WHY}{_NEXT}")
 #: Its outcome told first, the pour after it: "yesterday the bowl slid off the tray when I emptied the kettle into it".
 _OUTCOME_FIRST = re.compile(
@@ -103,6 +103,10 @@ HELPS = re.compile(r"\b(?:will|would|does|do|could|can|might) (?P<scene>(?:a|an|
                    r"|(?:stay put|stay|keep (?:it|them) in|work|be better))\b")
 
 
+#: The pour told, as the scene asked of it says it: tipped, tilted or held as it was; poured otherwise.
+_AS_DONE = {"tipped": "tip", "tilted": "tilt", "held": "hold"}
+
+
 def told(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) without an earlier pour told at its start, and
     what is said back of it; `text` as it is where it tells none."""
@@ -116,7 +120,8 @@ def told(text: str) -> tuple[str, tuple[str, ...]]:
         return text, ()             # what it did told past this module's forms: mishaps.py's to read
     verb = "spill" if out == "spilt" else out
     if out and CAUSE.match(rest.strip()) and m.groupdict().get("how") is not None:
-        asked = f"if i pour{m.group('how')}, {_TOLD[verb]}?"     # "... and the bowl fell over, how come?"
+        did = _AS_DONE.get(m.group("verb"), "pour")        # "i tipped it in slowly": if i tip it in slowly
+        asked = f"if i {did}{m.group('how')}, {_TOLD[verb]}?"     # "... and the bowl fell over, how come?"
         said.append(f"{rest.strip(' ?.!')}: read as {asked.strip(' ?')}, asked of the earlier pour")
         rest = asked
     elif out and _BETTER.search(rest):

@@ -94,6 +94,9 @@ _CAUSE_FIRST = re.compile(r"^(?P<cause>what went wrong|what happened|what did (?
 _EVERYWHERE = re.compile(r"^(?:and |so )?(?:(?:hot|cold|warm|sticky|the|my|some) )*(?:[a-z]+ )?(?:water|liquid|milk|juice|oil|soup"
                          r"|broth|tea|coffee|syrup|honey|stuff|mess)(?: (?:just|all|went|was|got))? (?:everywhere|all over"
                          r"(?: (?:the|my) (?:table|counter|floor|place|worktop|bench))?)[ .!]*$")
+#: Where the liquid went, said after the verb of the clause before ("... down the jug and onto the table"): spilt.
+_ONTO = re.compile(r"^(?:then |and )?(?:onto|on to|all over|over) (?:the |my |his |her |their |our )?(?:table|counter|countertop"
+                   r"|floor|worktop|bench|stove|hands?|cloth|tablecloth|tray|shirt|lap)\b")
 #: A negation before an outcome told: it did not happen ("nothing came out").
 _NOT = re.compile(r"\b(?:nothing|none|not|never|no|zero)\b")
 
@@ -125,6 +128,9 @@ def _told(clause: str, present: bool = True) -> list[tuple[tuple[str, ...], bool
     if _EVERYWHERE.search(clause):
         out.append((("no_spill",), True))                        # "hot broth everywhere": spilt, no verb said
         clause = _EVERYWHERE.sub(" ", clause)
+    elif _ONTO.match(clause):
+        out.append((("no_spill",), True))      # "(it went down the jug) and onto the table": the verb before's
+        clause = _ONTO.sub(" ", clause, count=1)
     for pattern, names, bad in _outcomes()[:-1]:     # (the last is "safe", "fine": no outcome told)
         m = next((m for m in pattern.finditer(clause) if _happened(m, names, present)), None)    # ("drips landed": not "drips")
         if m is None:

@@ -122,10 +122,10 @@ SPEEDS: tuple[tuple, ...] = (
                            r"(?:slow(?:ly)?|gradually|steadily)\b(?! (?:than|as)\b)",)),
     # tipped fast or slowly: the move into the pouring pose, which tilts the source as it goes
     # (where it is tipped is where it pours: "tilt the jug slowly right over the bowl")
-    ("approach fast ; pour", (rf"re(fast|quick|rapid):\b(?:tilt|tip)\w*{_TIPPED}(?: (?:very|really|too|quite))?"
+    ("approach fast ; pour", (rf"re(fast|quick|rapid):\b(?:tilt|tip)\w*{_TIPPED}(?: in| it in)?(?: (?:very|really|too|quite))?"
                               r" (?:fast|quick(?:ly)?|rapidly)\b(?! (?:than|as)\b)",
                               r"re(fast|quick|rapid):\b(?:quickly|fast|rapidly) (?:tilt|tip)\w*\b")),
-    ("approach slowly ; pour", (rf"re(slow|gradual|steadi):\b(?:tilt|tip)\w*{_TIPPED}(?: (?:very|really|too|quite))?"
+    ("approach slowly ; pour", (rf"re(slow|gradual|steadi):\b(?:tilt|tip)\w*{_TIPPED}(?: in| it in)?(?: (?:very|really|too|quite))?"
                                 r" (?:slow(?:ly)?|gradually|steadily)\b(?! (?:than|as)\b)",
                                 r"re(slow|gradual|steadi):\b(?:slowly|gradually|steadily) (?:tilt|tip)\w*\b")),
     # a move that is quick by its verb: darted, zipped, flung in or out ("flings it over the bowl",
