@@ -32,6 +32,11 @@ NEARNESS: tuple[tuple, ...] = (
                       r"|(?<!off )\b(?:on|onto) (?:just |only )?one side\b(?! of\b)"
                       r"|\bonto (?:its|the (?:destination|bowl)s?) (?:edge|rim|lip)\b"
                       r"|\b(?:right|directly) (?:above|over) (?:the |its )?(?:destination |bowl )?(?:edge|rim|lip)\b(?! of\b)",)),
+    # its very edge, and the bowl's edge named in a note ("jug bowl edge splash?"), not touched
+    ("near the rim", (r"re(very edge|very rim|very lip):\b(?:at|on|onto|to|over|near) (?:the |its )?very (?:edge|rim|lip)"
+                      r"(?: of (?:it|the (?:destination|bowl)))?\b",
+                      r"re(destination edge|bowl edge):(?<!touch )(?<!touches )(?<!touching )(?<!hit )(?<!hits )(?<!hitting )(?<!bump )"
+                      r"(?<!bumps )(?<!bumping )(?<!the )\b(?:destination|bowl) edge\b(?! of\b)",)),
     (UNCLEAR, (r"re(far side|far edge|far rim|far lip|opposite):\b(?:the |its )?(?:far|opposite) (?:side|edge|rim|lip)"
                r"(?: of (?:the |its )?(?:destination|bowl))?\b",)),
     # poured from close, with no bowl said: just above it ("pour from close up")

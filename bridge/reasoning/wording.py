@@ -175,6 +175,12 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text = re.sub(rf"\b({_PROPERTIES}) like (?:a |an |some )?(?!(?:{_PRONOUNS}|the|that|this|it)\b)[a-z]+(?: [a-z]+)?"
                   r"(?= *(?:[,.;:!?\u2013\u2014-]|$|and\b|but\b|or\b|does\b|will\b|would\b|is\b))",
                   lambda m: said.setdefault(f"{m.group(0)}: read as {m.group(1)}") or m.group(1), text)
+    # the simile before its property: "really light, like paper light"
+    text = re.sub(rf"\b(?:({_PROPERTIES}),? (?=like (?:a |an )?[a-z]+ \1\b))?like (?:a |an )?[a-z]+ ({_PROPERTIES})\b",
+                  lambda m: said.setdefault(f"{m.group(0)}: read as {m.group(2)}") or m.group(2), text)
+    # a second property said after a comma of the body the first is said of: "the bowl is paper, very light"
+    text = re.sub(rf"\b((?:bowl|dish|basin|jug|cup|bottle|pitcher|mug|jar)s? (?:is|are|was|were) [a-z]+),"
+                  rf"(?= (?:very |really |quite |super |so )?(?:{_PROPERTIES})\b)", r"\1 and", text)
     # "y/n" ending a note: whether it happens or not ("bowl slide y/n")
     text = re.sub(r" *\b(?:y/n|y or n)\b(?=[?.!]* *$)", lambda m: said.setdefault(f"{m.group(0).strip()}: read as or not")
                   or " or not", text)
