@@ -77,7 +77,7 @@ _CLAUSES = re.compile(r",? (?:and then|but then|and|but|then|so|until|because) |
 #: A goal said, not a mishap told: "I want to ...", "I'm trying to ...".
 _WANTS = re.compile(r"\b(?:i|we) (?:want|need|would like|d like|am trying|are trying|m trying|re trying|wish) to\b|\bgoal\b")
 #: The source's moves told: (the phase they are said as, the words).
-_WHO_MOVED = r"\b(?:when|as|while|once) (?:i|we|you|he|she|they|it|the \w+) (?:was |were )?"
+_WHO_MOVED = r"(?:\b(?:when|as|while|once) |^)(?:i|we|you|he|she|they|it|the \w+) (?:was |were )?"
 _MOVES_TOLD = (
     (" as the jug moves away", re.compile(rf"{_WHO_MOVED}(?:pull|mov|tak|took|drew|draw|lift|yank)\w*(?: it| (?:the|my|a) \w+)? (?:away|back|out|off)\b")),
     (" as the jug comes in", re.compile(rf"{_WHO_MOVED}(?:(?:brought|bringing|lowered|lowering)\b|(?:mov|cam|com|swung|swing|carri)\w*"
@@ -116,6 +116,13 @@ def _liquid_named() -> re.Pattern:
 def _liquid_before() -> re.Pattern:
     """The liquid, or its stream, said last before a verb: "the stream hit the rim"."""
     return re.compile(rf"\b(?:stream|jet|flow|pour|liquid|drops?|{alternation(names('liquid'))})(?: just| then)? $")
+
+
+@lru_cache(maxsize=None)
+def _landing() -> re.Pattern:
+    """The liquid landing in the bowl, told with nothing else: "the syrup hit the bowl", "it landed in the bowl"."""
+    return re.compile(rf"(?:the |my )?(?:it|stream|jet|pour|liquid|{alternation(names('liquid'))}) (?:hit|hits|landed|lands)"
+                      r"(?: in| into| on)? (?:the |my )?(?:bowl|dish|destination|basin)")
 
 
 def _told(clause: str, present: bool = True) -> list[tuple[tuple[str, ...], bool]]:
@@ -261,7 +268,8 @@ def _read(told: str, asked: str, present: bool = True) -> tuple[str, tuple[str, 
         # the clauses that tell nothing gone wrong: those with no outcome, and those saying when it went wrong
         # ("when i emptied the heavy saucepan into it")
         scene = [re.sub(rf"^(?:{WHEN},? |as soon as (?=\w+ start))", "", c) for c in clauses if not any(bad for _, bad in tells[c]) and (
-            re.match(r"(?:when|while|as|after|once|even though|although|though) ", c) or not tells[c])]
+            re.match(r"(?:when|while|as|after|once|even though|although|though) ", c) or not tells[c])
+            and not _landing().fullmatch(c)]       # "the syrup hit the bowl": the pour landing, told with no scene in it
         if poured and not any(poured.strip() in c for c in scene):     # the liquid told is the pour's
             scene.insert(0, f"pouring{poured}")
         if (again := _AGAIN.match(asked)) and again.group("when"):
