@@ -76,8 +76,10 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     # "for all the oil coming out", as learners of English say it: so that it all comes out
     (r"\bfor (all (?:of )?the [a-z]+|it all|all of it|everything) (?:coming|to come) out\b", r"so that \1 comes out"),
     # "I want to pour all the broth into the bowl": so that it all goes in
+    # (where it comes from kept, as the pour: "all the water from a full jug into the bowl")
     (r"\b(?:i|we) (?:want|need|would like) to (?:pour|get|put|transfer) (all (?:of )?the [a-z]+|it all|all of it|everything|every drop)"
-     r"(?: from (?:the |a |my )?[a-z]+)?(?= (?:in|into)\b)", r"so that \1 goes"),
+     r"(?: (from (?:the |a |my )?(?:[a-z]+ )?[a-z]+))?(?= (?:in|into)\b)", lambda m: f"pouring {m.group(2)} so that {m.group(1)} goes"
+     if m.group(2) else f"so that {m.group(1)} goes"),
     # "so that none is wasted": so that nothing spills
     (r"\bso(?: that)? (?:none|nothing|no liquid|not a drop)(?: of it)? (?:is|gets|will be|goes to) wasted?\b", "so that nothing spills"),
     # "without leaving any batter stuck inside the pitcher": so that none is left behind

@@ -228,6 +228,21 @@ def mishap(text: str) -> tuple[str, tuple[str, ...]]:
     return text, ()         # anything else asked: the question as written
 
 
+#: A property of the bowl or of the source told, which the one asking has and keeps: "my bowl is very light".
+_PROPERTY = r"(light|heavy|slippery|slick|bouncy|grippy)"
+_BOWL_TOLD = re.compile(rf"\b(?:bowl|dish|basin)s? (?:is|was|are|were) (?:(?:very|really|quite|so|super|too) )?{_PROPERTY}\b"
+                        rf"|\b{_PROPERTY} (?:[a-z]+ )?(?:bowl|dish|basin)\b")
+_SOURCE_TOLD = re.compile(rf"\b(?:jug|pitcher|bottle|cup|mug|pot|kettle|carton)s? (?:is|was) (?:(?:very|really|quite|so|super|too) )?"
+                          rf"{_PROPERTY}\b|\b{_PROPERTY} (?:[a-z]+ )?(?:jug|pitcher|bottle|cup|mug|pot|kettle|carton)\b")
+
+
+def _bodies_told(told: str) -> str:
+    """The bowl's and the source's properties told, said as the pour asked of them: " into a light bowl"."""
+    bowl, source = _BOWL_TOLD.search(told), _SOURCE_TOLD.search(told)
+    return (f" from a {source.group(1) or source.group(2)} jug" if source else "") + (
+        f" into a {bowl.group(1) or bowl.group(2)} bowl" if bowl else "")
+
+
 def _read(told: str, asked: str, present: bool = True) -> tuple[str, tuple[str, ...]] | None:
     """The question `asked` after the mishap `told`, read (mishap's), or None; an outcome told in the present
     after its subject is told as having happened where `present` (something asked of it, or "every time" said)."""
@@ -241,11 +256,13 @@ def _read(told: str, asked: str, present: bool = True) -> tuple[str, tuple[str, 
     wanted, question = _said(_WANTED, failed, when), _said(_ASKED, failed, when)
     poured = _liquid_named().search(told)    # the liquid told stays
     poured = f" {poured.group(0)}" if poured else ""
+    bodies = _bodies_told(told)      # "my bowl is very light ...": the bowls stay as told, the pour is asked
     if REMEDY.match(asked):
-        rest = f"how should i pour{poured} so that {wanted}?"
+        rest = f"how should i pour{poured}{bodies} so that {wanted}?"
         return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did not")
     if _VALUE.match(asked):
-        rest = f"{asked.strip(' ?.!')} pouring{poured} so that {wanted}?" if poured else f"{asked.strip(' ?.!')} so that {wanted}?"
+        rest = f"{asked.strip(' ?.!')} pouring{poured}{bodies} so that {wanted}?" if poured or bodies else \
+            f"{asked.strip(' ?.!')} so that {wanted}?"
         return rest, (said, f"{asked.strip(' ?.!')}: read as asked so that {wanted}, as the pour told did not")
     for helps, how in ((HELPS, "with"), (_IF_HELPS, "if")):
         m = helps.match(re.sub(r"^so ", "", asked))
