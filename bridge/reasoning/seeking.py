@@ -292,9 +292,11 @@ _REACHES = Cued(r"\b(?:is|would|will)(?: (?:that|this|it|[a-z]+ing\b[a-z0-9 ]{0,
                 r"|\b(?:will|would|does|could) it(?= if\b)"
                 # which is better for a goal: "is it better to pour from the left side or the center to avoid spilling?"
                 r"|\b(?:is|would) it (?:be )?(?:better|safer|best|wiser) (?:to|if)\b"
+                # whether a scene helps reach it: "would it help if I held the pitcher lower, so I don't spill?"
+                r"|\b(?:would|will|does|could|might) it help (?:if|to)\b"
                 rf"|\bis there (?:really )?(?:any|an?|some|one|no) {_VALUE}\b",   # "is there any height where it never splashes"
                 ("is there", "ok", "fine", "alright", "all right", "problem", "issue", "enough", "possible", "doable", "feasible",
-                 "achievable", " do ", "work", "achieve", "it if", "better", "safer", "best", "wiser"))
+                 "achievable", " do ", "work", "achieve", "it if", "better", "safer", "best", "wiser", "help"))
 
 
 def reaches(text: str) -> bool:
