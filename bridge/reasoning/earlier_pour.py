@@ -15,6 +15,8 @@ import re
 CAUSE = re.compile(r"^(?:so |and |but )?(?:why|how come|what went wrong|what did (?:i|we) do wrong|what happened(?: there| here)?"
                     r"|what caused (?:that|this|it)|why did (?:that|this|it) happen|why is that|why (?:does|did) (?:that|this|it)"
                     r"|how (?:is|was) (?:that|this|it) (?:even )?possible|how (?:does|did|could|can) (?:that|this|it) (?:even )?happen"
+                    # as learners of English ask it, and what was being done: "what I do wrong?", "what was I doing"
+                    r"|what (?:i|we) (?:do|did|am doing|was doing) wrong|what (?:was|am) (?:i|we) doing(?: there| here)?"
                     # whether it should happen, or what is done wrong: "is that normal or am i doing it wrong"
                     r"|(?:is|was) (?:that|this|it) normal(?: or (?:am|was) (?:i|we) doing (?:it|something|anything) wrong)?"
                     r"|(?:am|was) (?:i|we) doing (?:it|something|anything) wrong|what (?:am|was) (?:i|we) doing wrong"

@@ -105,6 +105,9 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:if )?(?:i|we|you) (?:do not|never) (?:want|need) (?:(?:any|a|a single|one|even one) )?(splash|spill|drip|leak|overflow)"
      r"(?:es|s|ing|age)?\b", r"so that it does not \1"),
     (r"\b(?:if )?(?:i|we|you) (?:do not|never) (?:want|need) (?:any|a) mess\b", "so that nothing spills"),
+    # what must not happen, said first, a value asked after it: "nothing should splash out, what height do i need"
+    (r"^(nothing|none of it|no liquid|not a drop|the (?:bowl|dish|cup|jug|pitcher|bottle)|it) (?:should|must|may|can)(?: (not|never))?"
+     r" (?=[a-z]+\b[^.?!]*?[,.;:!?-] *(?:what|which|how)\b)", lambda m: f"so that {m.group(1)} {'does not ' if m.group(2) else ''}"),
     # wanting less of an outcome, said as a noun: "if I want less splashing", "if we want fewer spills"
     (r"\b(?:if|since|as) (?:i|we|you) (?:want|need|would like|wanna)(?: to (?:have|get|make))? (?:less|fewer|minimal|minimum|no)"
      r" (splash|spill|drip)(?:es|s|ing|age)?\b", r", so that it does not \1"),

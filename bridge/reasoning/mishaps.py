@@ -85,8 +85,9 @@ _MOVES_TOLD = (
 )
 #: The bowl said as where a spill told should have gone: it did not all go in ("ran down the
 #: outside instead of going in the bowl", "went on the floor and not in the tub").
-_NOT_IN = re.compile(r"\b(?:instead of|rather than|and not|not) (?:going |landing |getting |ending up )?(?:(?:in|into|inside|in to) )?"
-                     r"(?:the |a |an |my |our )?(?:bowl|dish|destination|basin|tub|pot|pan|glass|mug|cup|bucket)s?\b")
+_NOT_IN = re.compile(r"\b(?:instead of|rather than|and not|not) (?:going |landing |getting |ending up )?(?:(?:(?:in|into|inside|in to) )?"
+                     r"(?:the |a |an |my |our )?(?:bowl|dish|destination|basin|tub|pot|pan|glass|mug|cup|bucket)s?\b"
+                     r"|(?:in|inside|in there)(?= *(?:[,.;:!?]|$)))")      # ("ran down the pot instead of going in")
 #: A cause asked before the mishap it is asked of: "what went wrong here, I turned the cup upside down ...".
 _CAUSE_FIRST = re.compile(r"^(?P<cause>what went wrong|what happened|what did (?:i|we) do wrong)(?: here| there)?(?: ?[,:;.?!])+ *"
                           r"(?P<told>(?:i|we|he|she|they|it|the|my)\b[^?]+?)[ .!]*$")
@@ -97,6 +98,12 @@ _EVERYWHERE = re.compile(r"^(?:and |so )?(?:(?:hot|cold|warm|sticky|the|my|some)
 #: Where the liquid went, said after the verb of the clause before ("... down the jug and onto the table"): spilt.
 _ONTO = re.compile(r"^(?:then |and )?(?:onto|on to|all over|over) (?:the |my |his |her |their |our )?(?:table|counter|countertop"
                    r"|floor|worktop|bench|stove|hands?|cloth|tablecloth|tray|shirt|lap)\b")
+#: What was left outside, told as a thing: "there was a line of drips all over the table", "a puddle on the counter".
+_TRAIL = re.compile(r"\b(?:there (?:was|were) )?(?:a |an |some )?(?:big |little |long |sticky )?(?:trail|line|puddle|pool|ring|string|stream)"
+                    r" of (?:drips|drops|liquid|water|milk|juice|oil|syrup|soup|it)(?: (?:all over|on|across|everywhere|onto)"
+                    r"(?: (?:the |my )?(?:table|counter|countertop|worktop|floor|bench|stove|cloth|tablecloth|tray))?)?"
+                    r"|\b(?:there (?:was|were) )?(?:a |an )?(?:big |little )?puddle (?:on|all over|across) (?:the |my )?"
+                    r"(?:table|counter|countertop|worktop|floor|bench|stove|cloth|tablecloth|tray)\b")
 #: A negation before an outcome told: it did not happen ("nothing came out").
 _NOT = re.compile(r"\b(?:nothing|none|not|never|no|zero)\b")
 
@@ -135,6 +142,9 @@ def _told(clause: str, present: bool = True) -> list[tuple[tuple[str, ...], bool
     if _EVERYWHERE.search(clause):
         out.append((("no_spill",), True))                        # "hot broth everywhere": spilt, no verb said
         clause = _EVERYWHERE.sub(" ", clause)
+    elif _TRAIL.search(clause):
+        out.append((("no_spill",), True))      # "there was a line of drips all over the table"
+        clause = _TRAIL.sub(" ", clause)
     elif _ONTO.match(clause):
         out.append((("no_spill",), True))      # "(it went down the jug) and onto the table": the verb before's
         clause = _ONTO.sub(" ", clause, count=1)
@@ -177,7 +187,7 @@ def _happened(m: re.Match, names: tuple[str, ...], present: bool = True) -> bool
         r"(?:the |my )?(?:bowl|dish|cup|jug|bottle|pitcher|glass|mug|water|liquid|milk|juice|oil|soup) ", before)
     # what keeps happening, said in the present after its subject ("it dribbles down the side")
     present = present and re.match(r"[a-z]+[^s]s\b", m.group(0)) and re.search(r"(?:^|\b(?:it|the \w+|my \w+|our \w+) )$", before)
-    return bool(_TOLD_TENSE.match(m.group(0)) or _HABIT.search(before) or (going_on and m.group(0).endswith("ing")) or present)
+    return bool(_TOLD_TENSE.match(m.group(0)) or _HABIT.search(before) or (going_on and re.match(r"[a-z]+ing\b", m.group(0))) or present)
 
 
 def _said(words: dict, groups: list[tuple[str, ...]], when: str = "") -> str:

@@ -111,6 +111,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|mov(?:e|es|ed|ing)\b(?! (?:(?:it|them|the \w+) )?(?:in|away|closer|nearer|further|farther|to|out|back|up"
      r"|down|over|into|off|towards?)\b)|bounc\w* (?:around|about))(?: sideways| (?:off |over )?to (?:the|one) side| back and forth| to and fro)?\b",
      STILL, True),       # "move the cup closer": the source's move
+    # the bowl moving away, said of it ("will the bowl move away?"; the source moving away is its retreat)
+    (r"(?:(?<=bowl )|(?<=bowls )|(?<=dish )|(?<=basin )|(?<=destination ))(?:mov(?:e|es|ed|ing)|go|goes|going|went|slid\w*|slip\w*)"
+     r" away\b", STILL, True),
     # struck and moved: "the bowl gets knocked sideways", "it banged into the bowl and knocked it aside"
     (r"(?:knock|bump|nudg|bash|bang)\w*(?: it| them| the \w+)? (?:sideways|aside|across|along|out of place)\b", ("source_clear", *STILL), True),
     (r"(?:giv(?:e|es|ing)|gave) (?:a |any |some )?(?:hit|knock|bump|bang|touch)s?(?: to)?(?= (?:the|a|an|my|its|it)\b)"   # "giving a hit to the bowl"

@@ -93,7 +93,7 @@ _NOT_CAUSING = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? (?:{_VALUE}|pou
                           r" ((?:does|do|will|would) not (?:make|let|cause))"
                           r" (it|them|the \w+)(?: to)? (?=[a-z])")
 #: Wanting an outcome: "I want the bowl not to move", "we'd like it to stay in".
-_WANT = re.compile(r"(?:\b(?:i|we) |^|(?<=[.!?] ))(?:want|need|would like|wish)(?: for)? (it(?: all)?|all of it|everything|them|nothing"
+_WANT = re.compile(r"(?:\b(?:i|we) (?:just |really |only )?|^(?:just |really |only )?|(?<=[.!?] ))(?:want|need|would like|wish)(?: for)? (it(?: all)?|all of it|everything|them|nothing"
                    r"|every drop|each drop|every bit|all (?:of )?the (?:[a-z]+ )?[a-z]+"
                    # (where it comes from said after it: "all of the juice from the carton to land in the bowl")
                    r"|the (?:[a-z]+ )?(?!source\b)[a-z]+)(?: from (?:the|my|a) [a-z]+)?(?= (?:not |never )?to\b)")

@@ -181,6 +181,9 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     # a second property said after a comma of the body the first is said of: "the bowl is paper, very light"
     text = re.sub(rf"\b((?:bowl|dish|basin|jug|cup|bottle|pitcher|mug|jar)s? (?:is|are|was|were) [a-z]+),"
                   rf"(?= (?:very |really |quite |super |so )?(?:{_PROPERTIES})\b)", r"\1 and", text)
+    # a limit asked ("how close is too close", "how high is too high"): the value asked, not one said
+    text = re.sub(r"\bhow (close|near|high|low|far|steep|fast|slow) is too \1\b",
+                  lambda m: said.setdefault(f"{m.group(0)}: read as how {m.group(1)} can i go") or f"how {m.group(1)} can i go", text)
     # "y/n" ending a note: whether it happens or not ("bowl slide y/n")
     text = re.sub(r" *\b(?:y/n|y or n)\b(?=[?.!]* *$)", lambda m: said.setdefault(f"{m.group(0).strip()}: read as or not")
                   or " or not", text)
