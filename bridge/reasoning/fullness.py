@@ -1,6 +1,7 @@
 """How full the source is, said as a share of full: "half full", "a quarter
 full", "three quarters full", "filled to 90 percent" ("nearly full" says
-no share: everyday.txt refuses it). A full source is what the
+no share: everyday.txt refuses it), or filled to a share ("fills the cup
+halfway"). A full source is what the
 vocabulary's fullest amount holds (very_much_liquid, 150 to 200
 particles); the share of it said spans a range of particles, read as the
 amount of liquid whose range holds the most of it (half: 75 to 100
@@ -21,6 +22,8 @@ SHARES = {("half",): 0.5, ("a", "quarter"): 0.25, ("quarter",): 0.25, ("one", "q
           ("three", "quarters"): 0.75, ("halfway",): 0.5, ("half", "way"): 0.5}
 #: Words that say full after a share ("half full", "a quarter filled").
 _FULL = {"full", "filled"}
+#: The bowl filled is a goal's (seeking.py), not an amount the source holds.
+_FILLED_BOWLS = {"bowl", "bowls", "destination", "target"}
 _NUMBER = re.compile(r"\d+(?:\.\d+)?")
 #: What is said back of a share read.
 SAID = "read as the amount of liquid whose range holds the most of that share of a full source"
@@ -56,11 +59,34 @@ class Fullness:
         out: list[tuple[int, int, tuple[str, ...]]] = []
         i = 0
         while i < len(words):
-            share, end = _share(words, i)
+            share, end = _filled_to(words, i) if words[i] in _FILLING else (None, i)
+            share, end = (share, end) if share is not None else _share(words, i)
             if share is not None:
                 out.append((i, end, tuple(amount(share).split())))
             i = end if share is not None else i + 1
         return out
+
+
+#: Verbs of filling the source, said with the share it is filled to: "fills the cup halfway".
+_FILLING = frozenset(("fill", "fills", "filled", "filling"))
+
+
+def _filled_to(words: list[str], i: int) -> tuple[float | None, int]:
+    """The share a source is filled to, said after the verb at `i` and the source ("fill the cup
+    halfway", "fills the jug to half", "fill it a third of the way", "fill the jug half full"), and
+    where it ends; (None, i + 1) where none is (nor the bowl's: seeking.py's goal)."""
+    k = i + 1 + (words[i + 1:i + 2] == ["up"])
+    k += words[k:k + 1] in (["the"], ["a"], ["my"], ["your"], ["her"], ["his"], ["this"])
+    if k >= len(words) or words[k] in _FILLED_BOWLS or words[k] in _FULL:
+        return None, i + 1
+    k += 1
+    k += words[k:k + 1] == ["to"]
+    for said, share in SHARES.items():
+        end = k + len(said)
+        if tuple(words[k:end]) == said:
+            end += 3 if words[end:end + 3] == ["of", "the", "way"] else (end < len(words) and words[end] in _FULL)
+            return share, end
+    return None, i + 1
 
 
 def _share(words: list[str], i: int) -> tuple[float | None, int]:
@@ -82,8 +108,7 @@ def _share(words: list[str], i: int) -> tuple[float | None, int]:
 #: What a source is filled to when it is full ("to the top", "right to the brim").
 _TOP = {"top", "brim"}
 _UP_TO = {"right", "all", "the", "way", "up", "completely"}
-#: The bowl filled is a goal's (seeking.py), not an amount the source holds.
-_FILLED_BOWLS = {"bowl", "bowls", "destination", "target"}
+
 
 
 class Filled:

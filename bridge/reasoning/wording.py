@@ -191,7 +191,7 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text = re.sub(r"\b(?:for|with) (?:less|no|minimal|the least|minimum) (?:mess|spill(?:s|age|ing)?|splash(?:es|ing)?)(?= *[?.!]* *$)",
                   lambda m: said.setdefault(f"{m.group(0)}: read as so that nothing spills") or "so that nothing spills", text)
     # an outcome said as a thing done: "does the bowl do that little rocking thing": does it rock
-    text = re.sub(r"\b(do|does|did) (?:that|the|this|a|its) (?:little |weird |funny |small )?([a-z]+ing) thing\b",
+    text = re.sub(r"\b(do|does|did) (?:that|the|this|a|its) (?:little |weird |funny |small )?([a-z]+ing) (?:dance |motion |move )?thing\b",
                   lambda m: said.setdefault(f"{m.group(0)}: read as {m.group(1)} {m.group(2)}") or f"{m.group(1)} {m.group(2)}", text)
     # an outcome said with "-wise" ("what's the difference ..., splash-wise"): whether it happens, asked
     text = re.sub(r"(?:^|(?<=[,;:.?!] ))(spill|splash|drip|mess|wobble|slide|tip)[- ]?wise\b",
