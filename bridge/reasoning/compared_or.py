@@ -8,7 +8,7 @@ it says what the vocabulary cannot (set_against.py); "or" is said back as
 read as "vs".
 
 A question compares where it says "better", "safer", "worse", "preferable",
-"which" or how likely, more or less ("would a full glass or a half-full glass be more
+"which", whether it makes a difference, or how likely, more or less ("would a full glass or a half-full glass be more
 likely to overflow"). Without such a word ("pour high or low, does it spill?", "pour
 from the side or the middle") two values of one dimension are still
 refused, asking for one; asked with "should" ("should I hold it over the
@@ -24,7 +24,7 @@ import re
 from pantarhei.bridge.reasoning.two_liquids import chosen_liquids, read_alike
 
 _COMPARING = re.compile(r"\b(?:better|best|safer|safest|worse|worst|preferable|which|likelier"
-                        r"|(?:more|less|most|least) (?:likely|prone))\b")
+                        r"|(?:more|less|most|least) (?:likely|prone)|(?:make|makes) (?:a|any|much of a) difference)\b")
 _ASKED_WHAT_TO_DO = re.compile(r"\b(?:should|shall)\b")
 #: An outcome compared between two liquids chosen between ("which one drips more", "more likely to
 #: overflow"): they are compared, not chosen (choices.py refuses a choice with no outcome compared).
@@ -39,7 +39,7 @@ _GOAL = re.compile(r"\b(?:so|without|in order to|to (?:avoid|keep|prevent|stop|g
                    r"|wants?|wanted|needs?|(?:i|we)(?: would|'d| d)? like|goal|aim)\b")
 #: The words a second scene may begin with: where ("from near the edge"), how ("slowly", "tipping it
 #: fast"), a body ("a light bowl"), a value ("low").
-_SCENE = (r"(?:from|at|near|over|above|below|under|with|by|in|on|close|closer|directly|right|just|straight|far"
+_SCENE = (r"(?:from|at|near|over|above|below|under|with|by|in|on|off|close|closer|directly|right|just|straight|far"
           r"|further|high|higher|low|lower|slow|slowly|fast|quick|quickly|gently|a|an|the|one|[a-z]+ing"
           # a way said by its verb: "or come in fast and pour from higher up"
           r"|come|bring|hold|keep|pour|move|use"

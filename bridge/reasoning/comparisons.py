@@ -79,7 +79,8 @@ COMPARISONS: tuple[tuple, ...] = (
     # the other not read, up to where its clause ends
     # (nor past an outcome asked, or the clause that says when: "... be less likely to slide when I
     # pour the water in quickly" is the scene's, said of both)
-    ("hedge", (rf"re(vs|versus):\b(?:{VERSUS})\b" r"\.? [^,;:.!?]+?(?= *(?:[,;:.!?]| - )|$| outcome\b| (?:when|while|once|if) (?:i|we|you|the|it)\b)",),
+    ("hedge", (rf"re(vs|versus):\b(?:{VERSUS})\b" r"\.? [^,;:.!?]+?(?= *(?:[,;:.!?]| - )|$| outcome\b| (?:when|while|once|if) (?:i|we|you|the|it)\b"
+               r"| (?:it|they) (?:does|do|did)\b)",),     # (nor into a goal's words: "... so it does not go out")
      "read as nothing: the scene compared with is not read, the answer is for the one said first"),
     # not too high (or low): the height next to it toward the middle of the scale, as "neither too
     # high nor too low" is (words.py); not too fast or heavy is already the ordinary pour's

@@ -250,6 +250,9 @@ def hear(text: str) -> Heard:
         negated = (m.group(0).startswith(("without", "before")) or bool(m.group("gnot"))
                    or any(w in ("nothing", "none", "no", "never") for w in subject))
         holds = (not bad) != negated
+        if names == ("liquid_leaves_source",) and not holds and re.match(r"(?:go|goes|going|get|gets) out\b(?! of)", m.group(
+                next(g for g, v in m.groupdict().items() if g[0] == "v" and v))):
+            names, holds = ("liquid_remains_in_destination", "no_spill"), True     # wanted not to go out: of the bowl
         negations.append(negated)
         goals.extend(n if holds else f"neg({n})" for n in names if n not in
                      {g.removeprefix("neg(").rstrip(")") for g in goals})

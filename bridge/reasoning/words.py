@@ -250,7 +250,8 @@ PHRASES: tuple[tuple, ...] = (
     ("high", ("high up", "up high")),
     ("low", ("low down", "down low", "just above", "close above")),
     ("below", ("beneath", "underneath", "under")),
-    ("centred", ("centered", "center", "centre", "central", "in the middle", "middle",
+    ("centred", ("centered", "center", "centre", "central", "in the middle", "near the middle", "near the centre", "near the center",
+                 "middle",
                  r"re:\b(?:directly|straight|right) (?:above|over)(?= (?:the )?(?:destination|bowl"
                  r"|centre|center|middle)\b)",
                  # with nothing after it ("pour from directly above, does it spill?"): over the bowl's middle

@@ -91,6 +91,10 @@ def test_no_word_is_dropped_silently(question):
      "i am a line cook: read as nothing: who asks says nothing of the pour"),
     ("If I decant the merlot from the carafe into the bowl, does any of it spill?",
      'merlot: a red wine (WordNet): read as the liquid poured, an ordinary one (say "sticky" or "heavy" if it is)'),
+    ("is it better to pour near the middle of the bowl or near the edge so it does not go out",
+     "vs near the edge: read as nothing: the scene compared with is not read, the answer is for the one said first"),
+    ("water vs olive oil, which one spills more",
+     "water vs olive oil: both read as an ordinary liquid: the vocabulary does not tell them apart, so the answer is the same for both"),
 ])
 def test_a_word_read_as_another_is_said_back(question, said):
     """Whatever the reader writes otherwise than typed (a contraction typed
