@@ -95,15 +95,16 @@ _CAUSE_FIRST = re.compile(r"^(?P<cause>what went wrong|what happened|what did (?
 _EVERYWHERE = re.compile(r"^(?:and |so )?(?:(?:hot|cold|warm|sticky|the|my|some) )*(?:[a-z]+ )?(?:water|liquid|milk|juice|oil|soup"
                          r"|broth|tea|coffee|syrup|honey|stuff|mess)(?: (?:just|all|went|was|got))? (?:everywhere|all over"
                          r"(?: (?:the|my) (?:table|counter|floor|place|worktop|bench))?)[ .!]*$")
+#: What a spill lands on.
+_UNDER_WORDS = "table|counter|countertop|worktop|floor|bench|stove|cloth|tablecloth|tray"
+_UNDER = rf"(?:{_UNDER_WORDS})"
 #: Where the liquid went, said after the verb of the clause before ("... down the jug and onto the table"): spilt.
-_ONTO = re.compile(r"^(?:then |and )?(?:onto|on to|all over|over) (?:the |my |his |her |their |our )?(?:table|counter|countertop"
-                   r"|floor|worktop|bench|stove|hands?|cloth|tablecloth|tray|shirt|lap)\b")
+_ONTO = re.compile(rf"^(?:then |and )?(?:onto|on to|all over|over) (?:the |my |his |her |their |our )?(?:{_UNDER_WORDS}|hands?|shirt|lap)\b")
 #: What was left outside, told as a thing: "there was a line of drips all over the table", "a puddle on the counter".
-_TRAIL = re.compile(r"\b(?:there (?:was|were) )?(?:a |an |some )?(?:big |little |long |sticky )?(?:trail|line|puddle|pool|ring|string|stream)"
-                    r" of (?:drips|drops|liquid|water|milk|juice|oil|syrup|soup|it)(?: (?:all over|on|across|everywhere|onto)"
-                    r"(?: (?:the |my )?(?:table|counter|countertop|worktop|floor|bench|stove|cloth|tablecloth|tray))?)?"
-                    r"|\b(?:there (?:was|were) )?(?:a |an )?(?:big |little )?puddle (?:on|all over|across) (?:the |my )?"
-                    r"(?:table|counter|countertop|worktop|floor|bench|stove|cloth|tablecloth|tray)\b")
+_TRAIL = re.compile(rf"\b(?:there (?:was|were) )?(?:a |an |some )?(?:big |little |long |sticky )?(?:trail|line|puddle|pool|ring|string|stream)"
+                    rf" of (?:drips|drops|liquid|water|milk|juice|oil|syrup|soup|it)(?: (?:all over|on|across|everywhere|onto)"
+                    rf"(?: (?:the |my )?{_UNDER})?)?"
+                    rf"|\b(?:there (?:was|were) )?(?:a |an )?(?:big |little )?puddle (?:on|all over|across) (?:the |my )?{_UNDER}\b")
 #: A negation before an outcome told: it did not happen ("nothing came out").
 _NOT = re.compile(r"\b(?:nothing|none|not|never|no|zero)\b")
 
@@ -186,8 +187,8 @@ def _happened(m: re.Match, names: tuple[str, ...], present: bool = True) -> bool
     going_on = _GOING_ON.search(before) or re.fullmatch(
         r"(?:the |my )?(?:bowl|dish|cup|jug|bottle|pitcher|glass|mug|water|liquid|milk|juice|oil|soup) ", before)
     # what keeps happening, said in the present after its subject ("it dribbles down the side")
-    present = present and re.match(r"[a-z]+[^s]s\b", m.group(0)) and re.search(r"(?:^|\b(?:it|the \w+|my \w+|our \w+) )$", before)
-    return bool(_TOLD_TENSE.match(m.group(0)) or _HABIT.search(before) or (going_on and re.match(r"[a-z]+ing\b", m.group(0))) or present)
+    now = present and re.match(r"[a-z]+[^s]s\b", m.group(0)) and re.search(r"(?:^|\b(?:it|the \w+|my \w+|our \w+) )$", before)
+    return bool(_TOLD_TENSE.match(m.group(0)) or _HABIT.search(before) or (going_on and re.match(r"[a-z]+ing\b", m.group(0))) or now)
 
 
 def _said(words: dict, groups: list[tuple[str, ...]], when: str = "") -> str:

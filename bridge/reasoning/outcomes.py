@@ -243,15 +243,15 @@ def hear(text: str) -> Heard:
     def as_goal(m: re.Match) -> str:
         subject = (m.group("gsub") or m.group("gwho") or m.group("gbef") or m.group("gwith") or "").split()
         names, bad = _which(m)
-        names = staying(names, next(v for g, v in m.groupdict().items() if g[0] == "v" and v), subject)
+        verb = next(v for g, v in m.groupdict().items() if g[0] == "v" and v)
+        names = staying(names, verb, subject)
         last[:] = subject
         if acts(subject, names, m):
             return m.group(0)
         negated = (m.group(0).startswith(("without", "before")) or bool(m.group("gnot"))
                    or any(w in ("nothing", "none", "no", "never") for w in subject))
         holds = (not bad) != negated
-        if names == ("liquid_leaves_source",) and not holds and re.match(r"(?:go|goes|going|get|gets) out\b(?! of)", m.group(
-                next(g for g, v in m.groupdict().items() if g[0] == "v" and v))):
+        if names == ("liquid_leaves_source",) and not holds and re.match(r"(?:go|goes|going|get|gets) out\b(?! of)", verb):
             names, holds = ("liquid_remains_in_destination", "no_spill"), True     # wanted not to go out: of the bowl
         negations.append(negated)
         goals.extend(n if holds else f"neg({n})" for n in names if n not in

@@ -141,7 +141,7 @@ class Surfaces:
                 if k == 0 or before[k - 1] in _BOWLS:
                     out.append((i - 1, i + 1, (_GRIP[words[i - 1]], "destination")))
                 continue
-            if w == "wet" and not (out and i < out[-1][1]) and (_wet_bowl(words, i)):     # "the bowl is wet", "a wet bowl"
+            if w == "wet" and not (out and i < out[-1][1]) and _wet_bowl(words, i):     # "the bowl is wet", "a wet bowl"
                 end = i + 4 if words[i + 1:i + 3] in (["in", "the"], ["on", "the"]) and words[i + 3:i + 4] and \
                     words[i + 3] in _UNDERSIDES else i + 1                   # "wet in the bottom"
                 out.append((i, end, ("slippery", "destination")))
