@@ -140,15 +140,12 @@ def _told(clause: str, present: bool = True) -> list[tuple[tuple[str, ...], bool
     if _NOT_IN.fullmatch(clause.strip(" ,")):
         return [(("liquid_enters_destination",), True)]         # "it went all over the floor and not in the bowl"
     out: list[tuple[tuple[str, ...], bool]] = []
-    if _EVERYWHERE.search(clause):
-        out.append((("no_spill",), True))                        # "hot broth everywhere": spilt, no verb said
-        clause = _EVERYWHERE.sub(" ", clause)
-    elif _TRAIL.search(clause):
-        out.append((("no_spill",), True))      # "there was a line of drips all over the table"
-        clause = _TRAIL.sub(" ", clause)
-    elif _ONTO.match(clause):
-        out.append((("no_spill",), True))      # "(it went down the jug) and onto the table": the verb before's
-        clause = _ONTO.sub(" ", clause, count=1)
+    # a spill told with no verb of its own: "hot broth everywhere", "there was a line of drips all over the table",
+    # "(it went down the jug) and onto the table" (the verb before's)
+    spilt = next((p for p in (_EVERYWHERE, _TRAIL, _ONTO) if p.search(clause)), None)
+    if spilt is not None:
+        out.append((("no_spill",), True))
+        clause = spilt.sub(" ", clause)
     for pattern, names, bad in _outcomes()[:-1]:     # (the last is "safe", "fine": no outcome told)
         m = next((m for m in pattern.finditer(clause) if _happened(m, names, present)), None)    # ("drips landed": not "drips")
         if m is None:

@@ -97,10 +97,9 @@ SPEEDS: tuple[tuple, ...] = (
     ("approach slowly", (_TOWARD.replace("SPEED", "(?:slowly|slow)"),)),
     ("approach slowly", (r"re(com|came):\b(?:come|comes|coming|came) (?:very |really |too )?(?:slowly|slow)\b",)),
     # a note's item of one move: "full jug, fast in", "slow out."
-    ("approach fast", (r"re(fast|quick):(?:^|(?<=[,;:.!?] )|(?<= - ))(?:fast|quick|quickly) in(?= *(?:[,;:.!?]| - |$))",)),
-    ("approach slowly", (r"re(slow):(?:^|(?<=[,;:.!?] )|(?<= - ))(?:slow|slowly) in(?= *(?:[,;:.!?]| - |$))",)),
-    ("retreat fast", (r"re(fast|quick):(?:^|(?<=[,;:.!?] )|(?<= - ))(?:fast|quick|quickly) out(?= *(?:[,;:.!?]| - |$))",)),
-    ("retreat slowly", (r"re(slow):(?:^|(?<=[,;:.!?] )|(?<= - ))(?:slow|slowly) out(?= *(?:[,;:.!?]| - |$))",)),
+    *((f"{move} {speed}", (rf"re({cue}):(?:^|(?<=[,;:.!?] )|(?<= - ))(?:{said}) {way}(?= *(?:[,;:.!?]| - |$))",))
+      for way, move in (("in", "approach"), ("out", "retreat"))
+      for said, speed, cue in (("fast|quick|quickly", "fast", "fast|quick"), ("slow|slowly", "slowly", "slow"))),
     # brought in hard: fast ("bring the shaker in hard")
     ("approach fast", (r"re(hard):\b(?:bring|brings|brought|bringing|come|comes|came|coming|mov(?:e|es|ed|ing)|swing|swings|swung"
                        r"|swinging)(?: it| the \w+| my \w+)? in (?:really |very |too |quite )?hard\b",)),
