@@ -53,13 +53,16 @@ MOVES: tuple[tuple, ...] = (
     ("end", (f"put {_IT} down", f"set {_IT} down", f"put {_IT} back down", f"set {_IT} back down",
              "at the end", "in the end", "finish")),
     # "after pouring from the side": the manner after it is the pour's
-    # emptying a bowl into another, decanting, dumping, chucking it in, straining or ladling it: pouring
+    # emptying a bowl into another, decanting, chucking it in, straining or ladling it: pouring
     ("pour", (r"re:\bempt(?:y|ies|ied|ying)(?= (?:it|(?:the|a|an|my) (?:\w+ )?\w+) (?:into|in|onto)\b)",
               r"re:\bchuck(?:s|ed|ing)?(?= (?:(?:it|them|the \w+|\w+) )?(?:in|into)\b)",
               # straining a drink into a glass, ladling soup into a bowl
               r"re:\bstrain(?:s|ed|ing)?(?= (?:(?:it|them|the \w+|\w+) )?(?:in|into|over)\b)",
               r"re:\bladl(?:e|es|ed|ing)(?= (?:(?:it|them|the \w+|\w+) )?(?:in|into|out)\b)",
-              "decant", "dump", "free pour", "transfer", "serve", "dispense", "top up")),
+              r"re:\bdump(?:s|ed|ing)?(?= out\b)",      # the liquid dumping out: coming out
+              "decant", "free pour", "transfer", "serve", "dispense", "top up")),
+    # dumping it: pouring it tipped far, the least of which is steeply
+    ("pour steeply tilted", (r"re:\bdump(?:s|ed|ing)?\b",), "read as pour steeply tilted: tipped far"),
     ("retreat ; pour", (rf"re:\bafter pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",
                         # "after tilting it halfway": the tilt is the pour's
                         r"re:\bafter\b(?= (?:tilt|tip|lean|angl|inclin)\w*\b)")),

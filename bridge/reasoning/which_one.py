@@ -24,7 +24,10 @@ _WHICH = re.compile(r"\bwhich (?:"
                     r"|(?:one|of them|of the two|bowl|cup)(?: of them)? (?:will |would |is going to )?"
                     r"(?P<verb>[a-z]+?)(?P<ending>es|s)?\b(?P<how> (?:more|less|the most|the least|most|least|worse|better)\b)?"
                     # "which" alone: its verb inflected and said with how much ("which splashes less")
-                    r"|(?P<verb2>[a-z]+?)(?P<ending2>es|s)\b(?:(?P<how2> (?:more|less|the most|the least|most|least)\b)"
+                    r"|(?P<verb2>[a-z]+?)(?P<ending2>es|s)\b"
+                    # where to, said before how much: "which sloshes out of the basin more"
+                    r"(?:(?P<where> (?:out|over|off)(?: (?:of|over|onto) (?:the|a|my|its) [a-z]+| the [a-z]+)?)?"
+                    r"(?P<how2> (?:more|less|the most|the least|most|least)\b)"
                     r"|(?= *[?.!]* *$)))")      # ("honey vs water. which splashes")
 
 #: A second "which" asked after the first: "... and which spills more".
@@ -63,6 +66,7 @@ def which_one(text: str) -> tuple[str, tuple[str, ...]]:
                                  if m.group(f"verb{k}"))
         verb = said_verb + ("e" if ending == "es" and not re.search(r"(?:sh|ch|ss|x)$", said_verb) else "")
         verb += " anything" if verb == "leave" and re.match(r" in\b", text[m.end():]) else ""    # "leaves more in the jug"
+        verb += m.groupdict().get("where") or ""
         text, said = (text[:m.start()] + f"does it {verb}" + text[m.end():],
                       (*said, f"{m.group(0)}: read as does it {verb}, of the one said first"))
         m = _AND_WHICH.search(text, m.start() + len(f"does it {verb}"))
