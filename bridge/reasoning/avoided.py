@@ -43,12 +43,19 @@ _KEPT = {"hitt": "hit", "bump": "bump", "knock": "knock", "slid": "slide", "mov"
          "spill": "spill", "splash": "splash", "dripp": "drip"}
 
 
+#: Outcomes said as a thing after "before" ("how high before splash") -> the form a negation takes.
+_NOUNS = {"splash": "splash", "splashing": "splash", "splashes": "splash", "spill": "spill", "spilling": "spill",
+          "spillage": "spill", "overflow": "overflow", "overflowing": "overflow", "dripping": "drip",
+          "tipping": "tip", "sliding": "slide"}
+
+
 #: The most a value may be before an outcome, asked: "how far from the centre can I pour before
 #: the liquid misses", read as "... before the liquid starts to miss" (outcomes.py's goal).
 #: (Said after the scene too: "pour water from a mug how high before it splashes out".)
 _MOST = re.compile(rf"(?:^|(?<=[,;:.?!-] )|(?<=[a-z0-9] ))(?P<how>how (?:far|high|low|steep|steeply|much|close"
                    rf"|fast|quickly|slowly|slow)\b[^?.!,;]{{0,100}}?)"
-                   rf" before (?P<who>it|they|the [a-z]+|anything|any of it) (?P<verb>{'|'.join(_VERBS)})\b")
+                   rf" before (?:(?P<who>it|they|the [a-z]+|anything|any of it) (?P<verb>{'|'.join(_VERBS)})"
+                   rf"|(?P<noun>{'|'.join(_NOUNS)}))\b")
 
 
 def avoided(text: str) -> tuple[str, tuple[str, ...]]:
@@ -57,9 +64,9 @@ def avoided(text: str) -> tuple[str, tuple[str, ...]]:
     is said back; `text` as it is otherwise."""
     m = _MOST.search(text)
     if m is not None:
-        return (f"{text[:m.start()]}{m.group('how')} before {m.group('who')} starts to {_VERBS[m.group('verb')]}{text[m.end():]}",
-                (f"before {m.group('who')} {m.group('verb')}: read as so that {m.group('who')} does not "
-                 f"{_VERBS[m.group('verb')]}, the most that can be done asked",))
+        who, base = (m.group("who"), _VERBS[m.group("verb")]) if m.group("verb") else ("it", _NOUNS[m.group("noun")])
+        return (f"{text[:m.start()]}{m.group('how')} before {who} starts to {base}{text[m.end():]}",
+                (f"{text[m.end('how'):m.end()].strip()}: read as so that {who} does not {base}, the most that can be done asked",))
     drops = _GOT_DROPS.search(text)
     m = _CHANGE.match(_GOT_DROPS.sub("it drips", text))
     if m is not None:

@@ -41,7 +41,7 @@ BODIES: tuple[tuple, ...] = (
     ("heavy", (r"re:\bdense\b(?! (?:plastic|glass|wood|metal|ceramic|material))",)),
     ("light", ("lightweight", "light weight", "featherweight", "feather light", "featherlight", "paper light", "light as paper", "light as a feather", "flimsy")),
     ("heavy", ("heavyweight", "heavy weight", "hefty", "weighty", r"re:\bheavy(?: |-)?bottomed\b")),
-    ("slippery", ("slick", "smooth", "greasy")),
+    ("slippery", ("slick", r"re:\bslippy\b(?! slidey)", "smooth", "greasy")),
     ("halfway", ("partway", "part way", "part of the way")),
     ("grippy", ("rough",)),
     ("runny", ("thin", "watery")),

@@ -13,7 +13,7 @@ from pantarhei.bridge.reasoning.words import FILLERS
 def dropped_words(question: str, reading) -> list[str]:
     """The words of `question` (as typed) that `reading` (a reading.Reading) drops silently."""
     accounted = {w for phrase in (*reading.heard, *reading.ignored) for w in re.findall(r"[a-z]+", phrase.lower())}
-    accounted |= {w for n in reading.notes for w in re.findall(r"[a-z]+|\S+", n.split(":")[0].lower())}
+    accounted |= {w for n in reading.notes for w in re.findall(r"[a-z]+", n.split(":")[0].lower())}
     accounted |= set(FILLERS) | {"s", "minus"}
     # as typed: a contraction with its apostrophe spelt out ("won't": will not), one typed
     # without it ("wont", "im") or a word mistyped ("teh") said back in the notes

@@ -14,6 +14,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
+from pantarhei.bridge.errors import UserError
 from pantarhei.theory.lexicon import load_vocabulary
 
 #: Shares of full said in words, by their words as tokens.
@@ -137,3 +138,16 @@ def _to_the_top(words: list[str], k: int) -> int | None:
     while k < len(words) and words[k] in _UP_TO and words[k:k + 2] != ["the", "top"]:
         k += 1
     return k + 3 if words[k:k + 2] == ["to", "the"] and k + 2 < len(words) and words[k + 2] in _TOP else None
+
+
+#: How full the bowl gets, asked: "how full can my bowl get before it spills".
+_BOWL_FILL = re.compile(r"\bhow full (?:can|could|does|do|will|would|should|may) (?:the|my|a|this|that|our|your) "
+                        r"(?:[a-z]+ )?(?:bowl|dish|basin|destination|tub)s? (?:get|gets|be|become|go)\b")
+
+
+def refuse_bowl_fill(text: str) -> None:
+    """UserError where `text` (normalised) asks how full the bowl gets, which the vocabulary cannot
+    say: every pour's bowl is empty before it, and what is asked of it is whether the liquid stays in."""
+    if m := _BOWL_FILL.search(text):
+        raise UserError(f"could not place \"{m.group(0)}\": the destination is empty before the pour: the vocabulary "
+                        "says nothing of how full it gets; ask whether it overflows (\"does it overflow?\")")

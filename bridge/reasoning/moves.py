@@ -97,7 +97,9 @@ MOVES: tuple[tuple, ...] = (
     ("approach", (r"re:\b(?:mov(?:e|es|ed|ing)|bring(?:s|ing)?|brought) (?:it|the \w+) (?:in|over)\b",
                   rf"re:\b{_GLIDE}(?: it| the \w+)? (?:in|over)\b",
                   "before pour", "before the pour", "move to the pour pose", "move into the pour pose",
-                  "move in", "come in", r"re:\bcame in\b(?! (?:and|to|at|from)\b)", r"re:\b(?:get|gets|getting|got|go|goes|going|went|move|moves|moving"
+                  "move in", "come in", r"re:\bcame in\b(?! (?:and|to|at|from)\b)",
+                  # going in, said with how fast by who pours: "if i go in slow" (not the liquid going in)
+                  r"re:(?:(?<=\bi )|(?<=\bwe )|(?<=\byou ))(?:go|going|went) in\b(?= (?:very |really |real |too |way )?(?:slow|fast|quick|gentl|rapid)\w*\b)", r"re:\b(?:get|gets|getting|got|go|goes|going|went|move|moves|moving"
                   r"|moved) (?:in|into) (?:position|place|hedge)\b")),
     # leaving slowly: the move away
     ("retreat", (r"re:\bleav(?:e|es|ing)\b(?= (?:very |really )?(?:slow|fast|quick|rapid|gentl)\w*\b)",)),

@@ -20,7 +20,7 @@ _SET_AGAINST = re.compile(r"\b(?:vs|versus|compared (?:to|with))\b")
 _WHICH = re.compile(r"\bwhich (?:"
                     # "which one is less likely to slide": how likely is how much, said back with it
                     r"(?:(?:one|of them|of the two|bowl|cup)(?: of them)? )?(?:(?:is|are|will|would)(?: be)? |be )(?:the )?"
-                    r"(?:(?:less|more|least|most) likely|likelier|(?:less|more) prone) to (?P<verb3>[a-z]+)\b"
+                    r"(?:(?:less|more|least|most) (?:likely|easy)|likelier|easier|(?:less|more) prone) to (?P<verb3>[a-z]+)\b"
                     r"|(?:one|of them|of the two|bowl|cup)(?: of them)? (?:will |would |is going to )?"
                     r"(?P<verb>[a-z]+?)(?P<ending>es|s)?\b(?P<how> (?:more|less|the most|the least|most|least|worse|better)\b)?"
                     # "which" alone: its verb inflected and said with how much ("which splashes less")
@@ -28,7 +28,9 @@ _WHICH = re.compile(r"\bwhich (?:"
                     # where to, said before how much: "which sloshes out of the basin more"
                     r"(?:(?P<where> (?:out|over|off)(?: (?:of|over|onto) (?:the|a|my|its) [a-z]+| the [a-z]+)?)?"
                     r"(?P<how2> (?:more|less|the most|the least|most|least)\b)"
-                    r"|(?= *[?.!]* *$)))")      # ("honey vs water. which splashes")
+                    r"|(?= *[?.!]* *$))"      # ("honey vs water. which splashes")
+                    # an outcome's verb not inflected, as learners say it: "which spill more"
+                    r"|(?P<verb4>spill|splash|slosh|slide|tip|drip|overflow|wobble|leak|miss) (?:more|less|the most|the least)\b)")
 
 #: A second "which" asked after the first: "... and which spills more".
 _AND_WHICH = re.compile(rf"(?<=\band ){_WHICH.pattern}")
@@ -62,7 +64,7 @@ def which_one(text: str) -> tuple[str, tuple[str, ...]]:
     if m is None:
         return text, said
     while m is not None:        # and a second asked after it: "which splashes more and which spills more"
-        said_verb, ending = next((m.group(f"verb{k}"), m.groupdict().get(f"ending{k}")) for k in ("", "2", "3")
+        said_verb, ending = next((m.group(f"verb{k}"), m.groupdict().get(f"ending{k}")) for k in ("", "2", "3", "4")
                                  if m.group(f"verb{k}"))
         verb = said_verb + ("e" if ending == "es" and not re.search(r"(?:sh|ch|ss|x)$", said_verb) else "")
         verb += " anything" if verb == "leave" and re.match(r" in\b", text[m.end():]) else ""    # "leaves more in the jug"

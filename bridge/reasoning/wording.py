@@ -33,6 +33,7 @@ from pantarhei.bridge.reasoning.asides import restated
 from pantarhei.bridge.reasoning.earlier_pour import told
 from pantarhei.bridge.reasoning.every_pour import as_every_pour
 from pantarhei.bridge.reasoning.rim_strikers import lip_of_source, stream_striking
+from pantarhei.bridge.reasoning.fullness import refuse_bowl_fill
 from pantarhei.bridge.reasoning.little_vessels import refuse_little
 from pantarhei.bridge.reasoning.which_one import which_one
 from pantarhei.bridge.reasoning.words import rewrites
@@ -200,6 +201,9 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text = re.sub(r"\bwith (?:no|zero) (?:drops?|drips?|spills?|splashes|liquid|water|mess) (?=(?:on|onto) (?:the |my )?"
                   r"(?:table|counter|countertop|worktop|floor|bench|tablecloth|ground)\b)",
                   lambda m: said.setdefault(f"{m.group(0).strip()}: read as without any landing") or "without any landing ", text)
+    # a bigger mess is more of it: "which makes a bigger mess", "a smaller splash"
+    text = re.sub(r"\b(?:a )?(bigger|larger|worse|smaller) (mess|splash|spill)(es)?\b", lambda m: said.setdefault(
+        f"{m.group(0)}: read as {(w := 'less' if m.group(1) == 'smaller' else 'more')} {m.group(2)}") or f"{w} {m.group(2)}", text)
     # "splash or no splash": whether it happens or not
     text = re.sub(r"\b([a-z]+) or no \1\b", lambda m: said.setdefault(f"{m.group(0)}: read as {m.group(1)} or not")
                   or f"{m.group(1)} or not", text)
@@ -252,6 +256,7 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text, compared = compared_or(text)                 # "is it better high or low": "high vs low"
     text, which = which_one(text)                      # "a vs b - which one slides more": does it slide
     refuse_little(text)                                # "a little jug": a size
+    refuse_bowl_fill(text)                             # "how full can my bowl get": the bowl's fill
     return text, (*said, *again, *earlier, *avoiding, *cause, *compared, *which)
 
 
