@@ -8,7 +8,7 @@ wobble?": does it wobble?, "full jug, tipped over?"), and a place said wet ("tab
 table get wet?), and an outcome going on said first as a note's topic, nothing
 asked ("bowl tipping - heavy pitcher - off center"), and a cause asked so ("why the liquid not go in
 the bowl"); so are outcomes asked in a word or two ("all in?": does
-it all go in?, "leftover?": is any left in the source?). A clause with an
+it all go in?, "leftover?": is any left in the source?, "still in bowl after?": does it stay in the bowl?). A clause with an
 auxiliary of its own, or none of these subjects, is left as it is."""
 from __future__ import annotations
 
@@ -34,7 +34,11 @@ _FRAGMENTS = {"all in": "does it all go in", "all out": "does it all come out", 
               "leftovers": "is any left in the source", "any left": "is any left in the source",
               "anything left": "is anything left in the source", "everything out": "does everything come out",
               "all of it in": "does it all go in", "everything in": "does everything go in",
-              "in or out": "does it all go in or spill"}
+              "in or out": "does it all go in or spill",
+              # still in the bowl, after: it went in and stayed ("honey, high pour, still in bowl after?")
+              **{f"{said} in{bowl}{after}": f"does it {'all go in' if said == 'all' else 'stay in the bowl'}{after}"
+                 for said in ("all", "still", "stays") for bowl in (" bowl", " the bowl")
+                 for after in ("", " after", " afterwards")}}
 _FRAGMENT = re.compile(rf"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<said>{'|'.join(sorted(_FRAGMENTS, key=len, reverse=True))})"
                        r"(?:\?|(?<=in or out)[.!]*$)")       # ("side pour. in or out": its question mark left off)
 #: Words of an outcome that are said of it, not done: "ok?" is "is it ok?".

@@ -12,7 +12,8 @@ import re
 
 #: The outcomes told, by the forms they are told in -> the form a negation takes.
 _VERBS = {"hits": "hit", "hit": "hit", "bumps": "bump", "bumped": "bump", "knocks": "knock", "knocked": "knock",
-          "touches": "touch", "touched": "touch", "strikes": "strike", "struck": "strike",
+          "touches": "touch", "touched": "touch", "strikes": "strike", "struck": "strike", "scrapes": "scrape",
+          "scraped": "scrape", "clinks": "clink", "clinked": "clink", "bangs": "bang", "banged": "bang",
           "slides": "slide", "slid": "slide", "moves": "move", "moved": "move", "shifts": "shift", "shifted": "shift",
           "tips": "tip", "tipped": "tip", "flips": "flip", "flipped": "flip", "falls": "fall", "fell": "fall",
           "spills": "spill", "spilled": "spill", "spilt": "spill", "splashes": "splash", "splashed": "splash",

@@ -25,7 +25,8 @@ CAUSE = re.compile(r"^(?:so |and |but )?(?:why|how come|what went wrong|what did
                     # one of two causes asked: "was it the weight or the angle?"
                     r"|(?:was|is) it (?:the |my )?[a-z]+ or (?:the |my )?[a-z]+"
                     # one cause named, no value said: "was it the height?" (of the pour told)
-                    r"|(?:was|is) it (?:the |my |because of the )?(?:height|tilt|angle|speed|weight|position|distance))[?.! ]*$")
+                    r"|(?:was|is) it (?:the |my |because of the )?(?:height|tilt|angle|speed|weight|position|distance))"
+                    r"(?: (?:lol|lmao|haha|ugh|smh|pls|please))?[?.! ]*$")      # ("what am i doing wrong lol")
 #: What asks for a remedy: "what should I change", "how do I stop that", "any tips".
 REMEDY = re.compile(
     r"^(?:so |and |but )?(?:what (?:should|do|can|could|would|must|shall) (?:i|we|you|he|she|they) (?:do|change|try|adjust)"
@@ -103,7 +104,9 @@ _BETTER = re.compile(r"\b(?:is|will|would) (?:it|that|this) (?:be )?(?:any )?bet
 HELPS = re.compile(r"\b(?:will|would|does|do|could|can|might) (?P<scene>(?:a|an|the|my|some) [a-z ]+?|[a-z]+ing\b[a-z ]*?)"
                    r" (?:(?:have )?(?:fix|stop|prevent|solve)(?:ed)?(?: (?:it|that|this))?|(?:have )?help(?:ed)?"
                    r"|have (?:stayed put|stayed|kept (?:it|them) (?:in|still|upright|put)|worked|been better)"
-                   r"|(?:stay put|stay|keep (?:it|them) in|work|be better))\b")
+                   r"|(?:stay put|stay|keep (?:it|them) in|work|be better)"
+                   # the scene as the cause of what was told: "does pulling back fast do that?"
+                   r"|(?:do|cause) (?:that|this))\b")
 
 
 #: The pour told, as the scene asked of it says it: tipped, tilted or held as it was; poured otherwise.

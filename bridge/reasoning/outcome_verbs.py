@@ -115,7 +115,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      STILL, True),       # "move the cup closer": the source's move
     # the bowl moving away, said of it ("will the bowl move away?"; the source moving away is its retreat)
     (r"(?:(?<=bowl )|(?<=bowls )|(?<=dish )|(?<=basin )|(?<=destination ))(?:mov(?:e|es|ed|ing)|go|goes|going|went|slid\w*|slip\w*)"
-     r" away\b", STILL, True),
+     r" away\b"
+     # or away from who pours ("it can move away from me?")
+     r"|(?:mov(?:e|es|ed|ing)|slid\w*|slip\w*|go|goes|going|went) away from (?:me|us|you|him|her|them)\b", STILL, True),
     # struck and moved: "the bowl gets knocked sideways", "it banged into the bowl and knocked it aside"
     (r"(?:knock|bump|nudg|bash|bang)\w*(?: it| them| the \w+)? (?:sideways|aside|across|along|out of place)\b", ("source_clear", *STILL), True),
     (r"(?:giv(?:e|es|ing)|gave) (?:a |any |some )?(?:hit|knock|bump|bang|touch)s?(?: to)?(?= (?:the|a|an|my|its|it)\b)"   # "giving a hit to the bowl"
@@ -133,9 +135,13 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:(?<=anything )|(?<=something )|(?<=nothing )|(?<=any liquid )|(?<=any water ))pour(?:s|ed)?\b(?! (?:it|them|the|from|into|in)\b)"
      r"|(?:go|goes|going|went) out\b(?! of (?:the |a |an |my )?(?!source\b)(?:[a-z]+ )?(?:bowl|destination)\b)"
      r"|glug(?:s|ged|ging)? out\b"          # "it glugged out" (not "so it doesn't glug": how it flows)
+     r"|glugged(?= *(?:[,.;!?]|$))"          # told: "the milk glugged, and ..." (it came out)
      # (not how full the source is: "a nearly empty jug", "an empty cup")
      r"|(?<!nearly )(?<!almost )(?<!mostly )(?<!practically )(?<!all but )(?<!half )(?<!\ban )(?<!\ba )(?<!\bthe )"
      r"empt(?:y|ies|ied)(?: out)?|(?:(?:end|ends) up|becomes?|gets?) (?:totally |completely |fully )?empty(?: (?:completely|fully|totally))?|leav(?:e|es|ing) (?:the|it)\b|exit\w*", ("liquid_leaves_source",), False),
+    # sitting at the source's lip: kept in it ("or does it just sit at the lip")
+    (r"(?:sit|sits|sitting|sat|hang|hangs|hanging|hung) (?:at|on|in) (?:the|its) (?:lip|spout|mouth|neck)\b",
+     ("liquid_leaves_source",), True),
     # stayed inside, no bowl said: kept in the source ("a bit of the oil stayed inside")
     (r"(?:stayed|remained|stuck) (?:inside|behind|in (?:the|my|a|its) (?!(?:[a-z]+ )?(?:bowl|destination)s?\b)(?:[a-z]+ )?[a-z]+)\b"
      r"(?! (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|destination)s?\b)",

@@ -172,9 +172,9 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text = re.sub(rf"(?<!\bas )\b({_LIKENED}) as (?:a |an )?(?!before\b|usual\b|normal\b|last\b|ever\b|possible\b"
                   r"|you\b|it\b|i\b|we\b|the\b|that\b|this\b)[a-z]+\b",
                   lambda m: said.setdefault(f"{m.group(0)}: read as {m.group(1)}") or m.group(1), text)
-    # a property likened with "like", its example ending the clause: "heavy like molten lead"
-    text = re.sub(rf"\b({_PROPERTIES}) like (?:a |an |some )?(?!(?:{_PRONOUNS}|the|that|this|it)\b)[a-z]+(?: [a-z]+)?"
-                  r"(?= *(?:[,.;:!?\u2013\u2014-]|$|and\b|but\b|or\b|does\b|will\b|would\b|is\b))",
+    # a property likened with "like", its example ending the clause: "heavy like molten lead", "high like a waterfall"
+    text = re.sub(rf"\b({_PROPERTIES}|high|low) like (?:a |an |some )?(?!(?:{_PRONOUNS}|the|that|this|it)\b)[a-z]+(?: [a-z]+)?"
+                  r"(?= *(?:[,.;:!?\u2013\u2014-]|$|and\b|but\b|or\b|does\b|will\b|would\b|is\b|without\b|so\b|if\b|when\b))",
                   lambda m: said.setdefault(f"{m.group(0)}: read as {m.group(1)}") or m.group(1), text)
     # the simile before its property: "really light, like paper light"
     text = re.sub(rf"\b(?:({_PROPERTIES}),? (?=like (?:a |an )?[a-z]+ \1\b))?like (?:a |an )?[a-z]+ ({_PROPERTIES})\b",

@@ -69,7 +69,7 @@ PHRASES: tuple[tuple, ...] = (
     ("hedge", (r"re(but):\bnot (?:liquid|the liquid) but\b",)),
     # when the liquid lands: while pouring ("does it slide when the water hits it")
     ("hedge", (r"re(when|after|once):\b(?:when|after|once) (?:the )?(?:liquid|it) (?:hits|lands in|reaches|goes into|enters|is in) (?:it|the bowl)\b"
-               r"|\b(?:when|after|once) (?:the )?(?:liquid|it) (?:is )?(?:in|lands|has landed)(?= *(?:[?.!,]|$))",)),
+               r"|\b(?:when|after|once) (?:the )?(?:liquid|it) (?:is )?(?:in|lands|has landed|goes in)(?= *(?:[?.!,]|$))",)),
     # a slippery liquid: its particles slide, a runny one ("a slippery oil")
     ("runny", (r"re(slippery|slick):\b(?:slippery|slick)(?= liquid\b)",)),
     # the liquid poured "inside": into the bowl ("I pour much water inside")
