@@ -64,6 +64,9 @@ _VALUE = re.compile(r"^(?:so )?(?:how (?:far|high|low|much|close|steep|steeply|f
 _IF_HELPS = re.compile(r"^(?:so )?(?:if|what if) (?P<scene>[^,?]+?),? (?:would|will|could|does|do|might) (?:that|this|it) "
                        r"(?:help|work|stop (?:it|that|this)|fix (?:it|that|this)|prevent (?:it|that|this)|solve (?:it|that|this)"
                        r"|be better)[?.! ]*$")
+#: What should have been done, asked after a mishap: "should I have pulled away slower?".
+_SHOULD_HAVE = re.compile(r"^(?:so )?(?:should|could|would) (?P<who>i|we|he|she|they) (?:have|of) (?P<scene>(?:[a-z]+ed|held|brought"
+                          r"|kept|put|gone|come|used|swung|set|stood)\b[^?,]*?)[?.! ]*$")
 #: A cause put as a yes or no of a scene: "is the bowl just too light?", "was it too high?".
 _TOO = re.compile(r"^(?:so )?(?:is|was|am|were) (?:it|that|i|we|you|he|she|they|the (?P<noun>[a-z]+)) (?:just |simply |maybe )?"
                   r"(?:(?:holding|pouring) (?:it |the \w+ )?(?:from )?|(?:going|moving|coming in|moving (?:it|the \w+)(?: in| away)?"
@@ -255,6 +258,10 @@ def _bodies_told(told: str) -> str:
 def _read(told: str, asked: str, present: bool = True) -> tuple[str, tuple[str, ...]] | None:
     """The question `asked` after the mishap `told`, read (mishap's), or None; an outcome told in the present
     after its subject is told as having happened where `present` (something asked of it, or "every time" said)."""
+    if should := _SHOULD_HAVE.match(asked):       # "should I have pulled away slower?": would that have helped
+        put = f"if {should.group('who')} {should.group('scene')}, would that help"
+        read = _read(told, f"{put}?", present)
+        return None if read is None else (read[0], tuple(n.replace(f"{put}:", f"{asked.strip(' ?.!')}:", 1) for n in read[1]))
     clauses = [c for c in _CLAUSES.split(re.sub(r"[.!?;]+ +", ", ", told)) if c]
     tells = {c: _told(c, present) for c in clauses}          # each clause's outcomes, found once
     failed = list(dict.fromkeys(g for c in clauses for g, bad in tells[c] if bad))
