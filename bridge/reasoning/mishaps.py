@@ -82,9 +82,10 @@ _WANTS = re.compile(r"\b(?:i|we) (?:want|need|would like|d like|am trying|are tr
 #: The source's moves told: (the phase they are said as, the words).
 _WHO_MOVED = r"(?:\b(?:when|as|while|once) |^)(?:i|we|you|he|she|they|it|the \w+) (?:was |were )?"
 _MOVES_TOLD = (
-    (" as the jug moves away", re.compile(rf"{_WHO_MOVED}(?:pull|mov|tak|took|drew|draw|lift|yank)\w*(?: it| (?:the|my|a) \w+)? (?:away|back|out|off)\b")),
+    (" as the jug moves away", re.compile(rf"{_WHO_MOVED}(?:pull|mov|tak|took|drew|draw|lift|yank)\w*(?: it| (?:the|my|a) \w+)? (?:away|back|out|off)\b"
+                                          r"|\bon (?:the|its|my) way (?:out|back|away)\b")),      # ("hit the bowl on the way out")
     (" as the jug comes in", re.compile(rf"{_WHO_MOVED}(?:(?:brought|bringing|lowered|lowering)\b|(?:mov|cam|com|swung|swing|carri)\w*"
-                                         r"(?: it| (?:the|my|a) \w+)? (?:in|over|closer|down|toward|towards)\b)")),
+                                         r"(?: it| (?:the|my|a) \w+)? (?:in|over|closer|down|toward|towards)\b)|\bon (?:the|its|my) way (?:in|down)\b")),
 )
 #: The bowl said as where a spill told should have gone: it did not all go in ("ran down the
 #: outside instead of going in the bowl", "went on the floor and not in the tub").
