@@ -126,8 +126,11 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:with|(?<=ing )and) (it|them|the [a-z]+) (?:staying|remaining) (?=(?:exactly |right )?(?:where|put|still|in place|upright|steady)\b)",
      r"so that \1 stays "),
     # goals listed as states after the pour wanted: "..., none left behind and none on the bench"
-    (r"(?:, |\band )(?:with )?(?:none|nothing) (?:is )?left behind\b", " so that none is left behind"),
-    (r"(?:, |\band )(?:with )?(?:none|nothing) (?=(?:on|onto) (?:the |my )?(?:table|bench|counter|countertop|floor|tablecloth|worktop)\b)",
+    # (or left inside: "none left inside the bottle", "none left stuck inside")
+    (r"(?:, |\band )(?:with )?(?:none|nothing) (?:is )?(?:left|stuck)(?: stuck)? (?:behind|inside(?: (?:the |a |my )(?!bowl\b)[a-z]+)?"
+     r"|in (?:the |a |my )(?!bowl\b)[a-z]+)\b", " so that none is left behind"),
+    (r"(?:, |\band )(?:with )?(?:none|nothing|not (?:a single|one)(?: one| 1| drop)?|not a drop) (?=(?:on|onto) (?:the |my )?"
+     r"(?:table|bench|counter|countertop|floor|tablecloth|worktop)\b)",
      " so that none goes "),
     # "keep the table totally clean": so that nothing spills
     (r"\bkeep(?:s|ing)? (?:the |my )?(?:table|counter|countertop|worktop|bench|floor|tablecloth|cloth)(?: (?:totally|completely"

@@ -96,7 +96,7 @@ _NOT_IN = re.compile(r"\b(?:instead of|rather than|and not|not) (?:going |landin
 _CAUSE_FIRST = re.compile(r"^(?P<cause>what went wrong|what happened|what did (?:i|we) do wrong)(?: here| there)?(?: ?[,:;.?!])+ *"
                           r"(?P<told>(?:i|we|he|she|they|it|the|my)\b[^?]+?)[ .!]*$")
 #: The liquid said where it ended up, with no verb ("water everywhere", "milk all over the counter"): spilt.
-_EVERYWHERE = re.compile(r"^(?:and |so )?(?:(?:hot|cold|warm|sticky|the|my|some) )*(?:[a-z]+ )?(?:water|liquid|milk|juice|oil|soup"
+_EVERYWHERE = re.compile(r"^(?:and |so )?(?:now )?(?:there is |there's |theres |there was )?(?:(?:hot|cold|warm|sticky|the|my|some) )*(?:[a-z]+ )?(?:water|liquid|milk|juice|oil|soup"
                          r"|broth|tea|coffee|syrup|honey|stuff|mess)(?: (?:just|all|went|was|got))? (?:everywhere|all over"
                          r"(?: (?:the|my) (?:table|counter|floor|place|worktop|bench))?)[ .!]*$")
 #: What a spill lands on.

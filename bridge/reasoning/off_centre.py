@@ -8,7 +8,7 @@ of 1.5 inches toward the robot"): that way lies the distance from the
 axis, not the sideways offset. A side of the middle is offset sideways,
 its side unread ("a bit to the left of centre"); a length to a side of it
 is refused, as "5 cm to the left" is: its side is the number's sign.
-"Off-centre" with no length says no distance ("how far?", words.py)."""
+"Off-centre" with no length says no distance ("how far?", words.py); "far off-centre" is from the side."""
 from __future__ import annotations
 
 from pantarhei.bridge.reasoning.everyday import UNCLEAR
@@ -30,6 +30,9 @@ OFF_CENTRE: tuple[tuple, ...] = (
     ("offset sideways", (r"re:\b(?:(?:just|slightly|a (?:little |tiny )?bit|a little|a tad|off) )?(?:to )?(?:the )?"
                          rf"(?:left|right) (?:of|from) {_CENTRE}",),
      "read as offset sideways: the vocabulary's offset names no side"),
+    # far off the middle, no length said: from the side, said back ("pitcher far off center")
+    ("to the side", (r"re(far|way):\b(?:far|way|well) off[ -]?(?:cent(?:er|re)d?|the (?:center|centre|middle))\b",),
+     "read as from the side: far from the middle"),
     # an offset toward the rim or the robot: the distance from the axis, its number kept
     ("hedge", (r"re(offset):\boffset(?= (?:of |by )?(?:about |around |roughly )?-?\d+(?:\.\d+)? (?:"
                + "|".join(LENGTHS) + rf") (?:(?:from|off) {_CENTRE} )?{_TOWARD})",), _SAID),

@@ -209,7 +209,7 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
                   or f"{m.group(1)} or not", text)
     # "one" standing for the noun a contrast is of: "a heavy bowl instead of a light one" (not
     # one poured from or into, which the noun repeated would lose)
-    text = re.sub(r"(?<!\bfrom )(?<!\binto )\b((?:a|an|the) [a-z]+ )([a-z]+) (instead of|rather than|and not|not) (a|an|the) ([a-z]+) one\b",
+    text = re.sub(r"(?<!\bfrom )(?<!\binto )\b((?:a|an|the) [a-z]+ )(?!(?:and|or|but)\b)([a-z]+) (instead of|rather than|and not|not) (a|an|the) ([a-z]+) one\b",
                   lambda m: said.setdefault(f"one: read as {m.group(2)}")
                   or f"{m.group(1)}{m.group(2)} {m.group(3)} {m.group(4)} {m.group(5)} {m.group(2)}", text)
     # a probability written as one: "P(no_spill)", "p(spill)"
