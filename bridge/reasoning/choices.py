@@ -71,5 +71,6 @@ def _vessels_set_against() -> re.Pattern:
     """Two containers poured from (no bowl) set against each other, a few words of their own before each
     ("a wine bottle vs a wide mug")."""
     poured_from = (n for n in names("bowl") if not re.search(r"bowl|dish|basin", n))
-    before, vessel = r"(?:from )?(?:(?:a|an|the|my|her|his|our) )?(?:[a-z]+ ){0,2}", rf"(?:{alternation(poured_from)})\b"
+    before, vessel = (r"(?:(?:pouring |pour |poured )?from )?(?:(?:a|an|the|my|her|his|our) )?(?:[a-z]+ ){0,2}",
+                      rf"(?:{alternation(poured_from)})\b")      # ("pouring from the bottle vs pouring from the cup")
     return re.compile(rf"\b{before}?{vessel} (?:vs|versus|compared (?:to|with)) {before}{vessel}")

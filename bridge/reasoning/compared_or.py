@@ -24,7 +24,8 @@ import re
 from pantarhei.bridge.reasoning.two_liquids import chosen_liquids, read_alike
 
 _COMPARING = re.compile(r"\b(?:better|best|safer|safest|worse|worst|preferable|which|likelier"
-                        r"|(?:more|less|most|least) (?:likely|prone)|(?:make|makes) (?:a|any|much of a) difference)\b")
+                        r"|(?:more|less|most|least) (?:likely|prone)|(?:make|makes) (?:a|any|much of a) difference"
+                        r"|(?:does|do|would|will) it (?:really )?matter|^(?:so )?is (?:there )?(?:a |any )?difference)\b")
 _ASKED_WHAT_TO_DO = re.compile(r"\b(?:should|shall)\b")
 #: An outcome compared between two liquids chosen between ("which one drips more", "more likely to
 #: overflow"): they are compared, not chosen (choices.py refuses a choice with no outcome compared).

@@ -62,10 +62,20 @@ class Fullness:
         while i < len(words):
             share, end = _filled_to(words, i) if words[i] in _FILLING else (None, i)
             share, end = (share, end) if share is not None else _share(words, i)
+            if share is not None and _of_the_bowl(words, i):
+                raise UserError(f"could not place \"{' '.join(words[max(0, i - 4):end])}\": the destination is empty before "
+                                "the pour: the vocabulary says nothing of pouring into a bowl that holds liquid")
             if share is not None:
                 out.append((i, end, tuple(amount(share).split())))
             i = end if share is not None else i + 1
         return out
+
+
+def _of_the_bowl(words: list[str], i: int) -> bool:
+    """Whether the share said at `i` is said of the bowl: "the bowl was only half full"."""
+    before = words[max(0, i - 4):i]
+    return any(w in _FILLED_BOWLS | {"dish", "basin", "tub"} and (after := before[k + 1:]) and after[0] in ("is", "was", "are", "were", "s")
+               for k, w in enumerate(before))
 
 
 #: Verbs of filling the source, said with the share it is filled to: "fills the cup halfway".

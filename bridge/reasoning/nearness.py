@@ -26,8 +26,8 @@ NEARNESS: tuple[tuple, ...] = (
     # where the vocabulary's places do not reach
     ("near the rim", (r"re(near side|near edge|near rim|near lip):\b(?:the |its )?near (?:side|edge|rim|lip)(?: of (?:the |its )?"
                       r"(?:destination|bowl))?\b",)),
-    # poured into (or on) one side of the bowl, or from right above its edge: over its edge
-    ("near the rim", (r"re(one side|one edge|right above|directly above|right over|onto):\b(?:in|into|onto) (?:just |only )?one (?:side|edge) of (?:it|the (?:destination|bowl))\b"
+    # poured into (or on) one side of the bowl ("into the side of it"), or from right above its edge: over its edge
+    ("near the rim", (r"re(one side|the side|one edge|right above|directly above|right over|onto):\b(?:in|into|onto) (?:just |only )?(?:one|the) (?:side|edge) of (?:it|the (?:destination|bowl))\b"
                       # (landing on one side, the bowl's: "pour heavy stuff on one side", not "off to one side")
                       r"|(?<!off )\b(?:on|onto) (?:just |only )?one side\b(?! of\b)"
                       r"|\bonto (?:its|the (?:destination|bowl)s?) (?:edge|rim|lip)\b"
