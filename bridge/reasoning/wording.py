@@ -35,6 +35,7 @@ from pantarhei.bridge.reasoning.every_pour import as_every_pour
 from pantarhei.bridge.reasoning.rim_strikers import lip_of_source, stream_striking
 from pantarhei.bridge.reasoning.fullness import refuse_bowl_fill
 from pantarhei.bridge.reasoning.little_vessels import refuse_little
+from pantarhei.bridge.reasoning.more_in import more_in
 from pantarhei.bridge.reasoning.which_one import which_one
 from pantarhei.bridge.reasoning.words import rewrites
 from pantarhei.theory.lexicon import load_vocabulary
@@ -256,10 +257,11 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text, avoiding = avoided(text)                     # "the bowl slides, what height stops that"
     text, cause = cause_asked(text)                    # "it runs down the side. is it because I hold it low?"
     text, compared = compared_or(text)                 # "is it better high or low": "high vs low"
+    text, more = more_in(text)                         # "gets more water into the bowl": does it go in
     text, which = which_one(text)                      # "a vs b - which one slides more": does it slide
     refuse_little(text)                                # "a little jug": a size
     refuse_bowl_fill(text)                             # "how full can my bowl get": the bowl's fill
-    return text, (*said, *again, *earlier, *avoiding, *cause, *compared, *which)
+    return text, (*said, *again, *earlier, *avoiding, *cause, *compared, *more, *which)
 
 
 def _normalised(text: str) -> str:
