@@ -88,7 +88,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:go|goes|went|gone) over(?= *[,.;!?]| *$| (?:and|when|if|as|while|because)\b)"
      r"|(?:fall|falls|fell)\b(?! (?:in|into|inside|out|off|on|onto)\b)"
      # on its side: "does the bowl end up going over on its side"
-     r"|(?:(?:go|goes|going|went|gone|fall|falls|falling|fell|tip\w*|roll\w*) (?:over )?)?on(?:to)? (?:its|their) sides?\b",
+     r"|(?:(?:go|goes|going|went|gone|fall|falls|falling|fell|tip\w*|roll\w*) (?:over )?)?on(?:to)? (?:its|their) sides?\b"
+     # upside down at the end, said of the bowl: "will the bowl end up upside down" (the source's end pose otherwise)
+     r"|(?:(?<=bowl )|(?<=bowls )|(?<=dish )|(?<=basin ))(?:end|ends|ended|ending) up (?:upside down|flipped|overturned)\b",
      ("destination_upright",), True),
     (r"(?:stay|stays|remain|remains|keep|keeps|be|is) (?:(?:completely|totally|perfectly|absolutely|entirely|fully|really|dead"
      r"|quite|nice and|nicely) )?(?:still|put|in place|steady|stable|stationary"

@@ -26,7 +26,8 @@ _WHICH = re.compile(r"\bwhich (?:"
                     # "which" alone: its verb inflected and said with how much ("which splashes less")
                     r"|(?P<verb2>[a-z]+?)(?P<ending2>es|s)\b"
                     # where to, said before how much: "which sloshes out of the basin more"
-                    r"(?:(?P<where> (?:out|over|off)(?: (?:of|over|onto) (?:the|a|my|its) [a-z]+| the [a-z]+)?)?"
+                    r"(?:(?P<where> (?:out|over|off)(?: (?:of|over|onto) (?:the|a|my|its) [a-z]+| the [a-z]+)?"
+                    r"| the (?:bowl|dish|basin)(?: over)?)?"      # ("which tips the bowl more")
                     r"(?P<how2> (?:more|less|the most|the least|most|least)\b)"
                     r"|(?= *[?.!]* *$))"      # ("honey vs water. which splashes")
                     # an outcome's verb not inflected, as learners say it: "which spill more"
