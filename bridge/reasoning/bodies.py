@@ -45,6 +45,6 @@ BODIES: tuple[tuple, ...] = (
     ("halfway", ("partway", "part way", "part of the way")),
     ("grippy", ("rough",)),
     ("runny", ("thin", "watery")),
-    ("sticky", ("viscous", "thick", "syrupy", "gooey")),
+    ("sticky", ("viscous", "thick", "thickened", "syrupy", "gooey")),
     ("bouncy", ("springy", "elastic")),
 )

@@ -148,10 +148,11 @@ class Surfaces:
                 continue
             if w not in _SURFACES | _GROUND or (out and i < out[-1][1]) or words[i + 1:i + 2] == ["of"]:   # "a bar of soap"
                 continue
-            if w in _GROUND and "on" not in words[max(0, i - 3):i]:    # "pour wet concrete": the liquid
+            if w in _GROUND and "on" not in words[max(0, i - 4):i]:    # "pour wet concrete": the liquid
                 continue
-            grip = i - 1 if i > 0 and words[i - 1] in _GRIP else (    # "a slick table", "a slick glass table"
-                i - 2 if i > 1 and words[i - 2] in _GRIP and words[i - 1] in _MADE_OF else None)
+            grip = i - 1 if i > 0 and words[i - 1] in _GRIP else (    # "a slick table", "a slick glass table",
+                i - 2 if i > 1 and words[i - 2] in _GRIP and (words[i - 1] in _MADE_OF or words[i - 1].endswith("ing"))
+                else None)                                                # ("the wet grooming table")
             if grip is not None and not (out and grip < out[-1][1]):    # "a wet bar top"
                 end = i + 2 if i + 1 < len(words) and words[i + 1] in _ENDS else i + 1
                 out.append((grip, end, (_GRIP[words[grip]], "destination")))

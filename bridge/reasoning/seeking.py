@@ -30,7 +30,7 @@ _HOW = (r"(?:(?:far|close|near) (?:from|to) the (?:centre|center|middle|side|edg
         r"|tilted|full)")
 #: A value that is asked for ("the best height"), not said ("medium height").
 _BEST = (r"(?:best|better|right|ideal|optimal|safest|safer|correct|perfect|proper|max|maximum|min|minimum"
-         r"|highest|lowest|steepest)")
+         r"|highest|lowest|steepest|easiest|gentlest|cleanest|simplest|neatest)")
 _WHO = r"(?:i|we|you|it|they|he|she|the robot|one)"
 _ACT = (r"(?:hold|pour|tilt|keep|put|have|place|go|position|use|do|set|angle|raise|lift|move"
         r"|start|end|tip)")
