@@ -144,7 +144,7 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
     filling = _filling()
     if filling.search(text):
         said += tuple(m.group(0).strip() for m in filling.pattern.finditer(text))
-        text = filling.pattern.sub(lambda m: f"so that it all ends up in {m.group(1) or m.group(2) or m.group(3)}", text)
+        text = filling.pattern.sub(lambda m: f"so that it all ends up in {next(g for g in m.groups() if g)}", text)
     for cued, wanted in _WANTING_CUED:
         if cued.search(text):
             said += tuple(m.group(0).strip() for m in cued.pattern.finditer(text))
@@ -154,7 +154,9 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
 
 #: Who wants a bowl filled: "I want to", "goal:" (_filling's and _to_the_brim's).
 _WANTS_FILLED = (r"(?:\b(?:i|we) (?:would like|like|want|wanna|need|wish|am trying|are trying|hope|aim|plan|have|had)"
-                 r"|\b(?:goal|aim|objective|task|target)s?(?: is)?:?)(?: to)? ")
+                 r"|\b(?:goal|aim|objective|task|target)s?(?: is)?:?"
+                 # said with no one ("want to fill the bowl ...", "got to fill a patient's basin")
+                 r"|(?:^|(?<=[.,;:!?] ))(?:want|wanna|need|trying|got|gotta|have))(?: to)? ")
 
 
 @lru_cache(maxsize=None)
@@ -173,10 +175,12 @@ def _filling() -> Cued:
     (so that it all ends up in it: it goes in and stays); not how full ("fill the bowl
     halfway"; "fill the bowl to the brim", a level, is refused before: _to_the_brim), nor the source
     filled ("filling the cup to the top": a full source)."""
-    bowl = rf"((?:the|a|an|my|this|that|our|your) (?:[a-z]+ )?(?:{destinations()}))"
+    bowl = rf"((?:the|a|an|my|this|that|our|your) (?:[a-z']+ )?(?:{destinations()}))"
     return Cued(rf"{_WANTS_FILLED}fill (?:up )?{bowl}(?: up)?(?! (?:half|halfway|about|around|a quarter|a third|to (?:half|a |\d)|\d))\b"
                 rf"|\b(?:i|we) (?:would |want to |need to )?have {bowl} (?:end up |be )?(?:full|filled(?: up)?)\b"
-                rf"|\b(?:i|we) (?:want|need|would like) {bowl} (?:to be |to end up )?(?:full|filled(?: up)?)\b",
+                rf"|\b(?:i|we) (?:want|need|would like) {bowl} (?:to be |to end up )?(?:full|filled(?: up)?)\b"
+                # the bowl wanted still while it is filled: "I need the bowl to stay put while I fill it"
+                rf"|\b(?:while|as) (?:i|we) fill (it)\b(?! (?:to|all|up|right|completely|full|half)\b)",
                 ("fill", "full"))
 
 
