@@ -7,7 +7,9 @@ particles); the share of it said spans a range of particles, read as the
 amount of liquid whose range holds the most of it (half: 75 to 100
 particles, much liquid), said back (SAID). A rewrite of words.py's kind
 (see wording.py): `spans(words)` gives each phrase and the words it is
-read as.
+read as. A share said of the bowl ("the bowl was only half full"), and how
+full the bowl gets asked ("how full can my bowl get"), are refused: every
+pour's bowl is empty before it.
 """
 from __future__ import annotations
 
@@ -26,6 +28,8 @@ _FULL = {"full", "filled"}
 #: The bowl filled is a goal's (seeking.py), not an amount the source holds.
 _FILLED_BOWLS = {"bowl", "bowls", "destination", "target"}
 _NUMBER = re.compile(r"\d+(?:\.\d+)?")
+#: Why a bowl said to hold liquid before the pour is refused (suggestions.py's too).
+HOLDS_LIQUID = "the destination is empty before the pour: the vocabulary says nothing of pouring into a bowl that holds liquid"
 #: What is said back of a share read.
 SAID = "read as the amount of liquid whose range holds the most of that share of a full source"
 
@@ -63,8 +67,7 @@ class Fullness:
             share, end = _filled_to(words, i) if words[i] in _FILLING else (None, i)
             share, end = (share, end) if share is not None else _share(words, i)
             if share is not None and _of_the_bowl(words, i):
-                raise UserError(f"could not place \"{' '.join(words[max(0, i - 4):end])}\": the destination is empty before "
-                                "the pour: the vocabulary says nothing of pouring into a bowl that holds liquid")
+                raise UserError(f"could not place \"{' '.join(words[max(0, i - 4):end])}\": {HOLDS_LIQUID}")
             if share is not None:
                 out.append((i, end, tuple(amount(share).split())))
             i = end if share is not None else i + 1
@@ -74,7 +77,7 @@ class Fullness:
 def _of_the_bowl(words: list[str], i: int) -> bool:
     """Whether the share said at `i` is said of the bowl: "the bowl was only half full"."""
     before = words[max(0, i - 4):i]
-    return any(w in _FILLED_BOWLS | {"dish", "basin", "tub"} and (after := before[k + 1:]) and after[0] in ("is", "was", "are", "were", "s")
+    return any(w in _FILLED_BOWLS | {"dish", "basin", "tub"} and before[k + 1:k + 2] in (["is"], ["was"], ["are"], ["were"], ["s"])
                for k, w in enumerate(before))
 
 

@@ -10,6 +10,7 @@ from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.everyday import UNCLEAR, alternation, names, sections
+from pantarhei.bridge.reasoning.fullness import HOLDS_LIQUID
 from pantarhei.bridge.reasoning.name_words import names_part
 from pantarhei.bridge.reasoning.outcome_verbs import outcome_verb
 from pantarhei.bridge.reasoning.spelling import english
@@ -88,8 +89,7 @@ HINTS: tuple[tuple[str, str], ...] = (
                        '"upside down"'),
     (r"\bempty$", 'empty: the source holds liquid (say "a little liquid" or "almost empty"), and '
                    'the destination is empty before every pour ("into an empty bowl")'),
-    (r"^already ", 'the destination is empty before the pour: the vocabulary says nothing of '
-                   'pouring into a bowl that holds liquid'),
+    (r"^already ", HOLDS_LIQUID),
     (r"^while ", 'the vocabulary pours from one pose: say where the source moves before pouring '
                  '("move in from the side") or after it ("move away fast")'),
     (r"^(?:(?:away )?from|off) (?:the )?(?:\w+ )?(?:rim|edge|lip|brim)$", 'measured from the rim: inside it or outside? say how far from '
