@@ -60,6 +60,11 @@ SPEEDS: tuple[tuple, ...] = (
     # one speed in, another out: "slow in fast out" (each move at its own speed, the pour between)
     ("approach slowly ; retreat fast ; pour", (r"re( out):\b(?:slow|slowly) in(?: ?,)? (?:and |then )?(?:fast|quick|quickly) out\b",)),
     ("approach fast ; retreat slowly ; pour", (r"re( out):\b(?:fast|quick|quickly) in(?: ?,)? (?:and |then )?(?:slow|slowly) out\b",)),
+    # not moving fast, with no way said: neither move fast ("if i don't move the pitcher fast")
+    ("approach not fast ; retreat not fast ; pour", (
+        r"re(mov):\b(?:do not|does not|did not|never) mov(?:e|es|ed|ing)(?: it| the \w+| them)? (?:really |very |too |quite )?"
+        r"(?:fast|quickly|quick|rapidly|swiftly|briskly)\b(?! (?:in|into|to|towards?|away|out|off|back|up|down|over|from|before"
+        r"|after|then)\b)",)),
     # a quick in-and-out: the move in and the move out both quick, the pour between
     ("approach fast ; retreat fast ; pour", (
         r"re( out):\b(?:fast|quick|quickly|fastly) in,? (?:and |then )?(?:fast|quick|quickly|fastly) out\b",
