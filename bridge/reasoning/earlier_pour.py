@@ -122,12 +122,13 @@ def told(text: str) -> tuple[str, tuple[str, ...]]:
     rest = text[m.end():]
     said = [f"{m.group(0).strip(' ,;.')}: read as nothing: an earlier pour, told; the answer is for the one asked"]
     out = "spilt" if m.group("onto") else m.group("out")
-    if out is None and (CAUSE.match(rest.strip()) or REMEDY.match(rest.strip())):
+    cause = CAUSE.match(rest.strip()) is not None
+    if out is None and (cause or REMEDY.match(rest.strip())):
         return text, ()             # what it did told past this module's forms: mishaps.py's to read
     verb = "spill" if out == "spilt" else out
-    if out and CAUSE.match(rest.strip()) and re.search(r"\band (?:the|it|my|a|an|then)\b", m.groupdict().get("how") or ""):
+    if out and cause and re.search(r"\band (?:the|it|my|a|an|then)\b", m.groupdict().get("how") or ""):
         return text, ()             # more told between ("... and the whole bowl scooted across ..."): mishaps.py's
-    if out and CAUSE.match(rest.strip()) and m.groupdict().get("how") is not None:
+    if out and cause and m.groupdict().get("how") is not None:
         did = _AS_DONE.get(m.group("verb"), "pour")        # "i tipped it in slowly": if i tip it in slowly
         asked = f"if i {did}{m.group('how')}, {_TOLD[verb]}?"     # "... and the bowl fell over, how come?"
         said.append(f"{rest.strip(' ?.!')}: read as {asked.strip(' ?')}, asked of the earlier pour")

@@ -27,6 +27,8 @@ SHARES = {("half",): 0.5, ("a", "quarter"): 0.25, ("quarter",): 0.25, ("one", "q
 _FULL = {"full", "filled"}
 #: The bowl filled is a goal's (seeking.py), not an amount the source holds.
 _FILLED_BOWLS = {"bowl", "bowls", "destination", "target"}
+#: The bowl said to hold liquid already: "the bowl was only half full", "the dish is half full".
+_HELD_BOWLS = _FILLED_BOWLS | {"dish", "basin", "tub"}
 _NUMBER = re.compile(r"\d+(?:\.\d+)?")
 #: Why a bowl said to hold liquid before the pour is refused (suggestions.py's too).
 HOLDS_LIQUID = "the destination is empty before the pour: the vocabulary says nothing of pouring into a bowl that holds liquid"
@@ -77,7 +79,7 @@ class Fullness:
 def _of_the_bowl(words: list[str], i: int) -> bool:
     """Whether the share said at `i` is said of the bowl: "the bowl was only half full"."""
     before = words[max(0, i - 4):i]
-    return any(w in _FILLED_BOWLS | {"dish", "basin", "tub"} and before[k + 1:k + 2] in (["is"], ["was"], ["are"], ["were"], ["s"])
+    return any(w in _HELD_BOWLS and before[k + 1:k + 2] in (["is"], ["was"], ["are"], ["were"], ["s"])
                for k, w in enumerate(before))
 
 
@@ -124,7 +126,6 @@ _TOP = {"top", "brim"}
 _UP_TO = {"right", "all", "the", "way", "up", "completely"}
 
 
-
 class Filled:
     """A source filled to the top, named between ("filling the cup right to
     the top", "if I fill the jug all the way to the brim"): read as full.
@@ -133,7 +134,7 @@ class Filled:
     def spans(self, words: list[str]) -> list[tuple[int, int, tuple[str, ...]]]:
         out: list[tuple[int, int, tuple[str, ...]]] = []
         for i, w in enumerate(words):
-            if w not in ("fill", "fills", "filled", "filling") or (i > 0 and words[i - 1] == "to"):
+            if w not in _FILLING or (i > 0 and words[i - 1] == "to"):
                 continue
             k = i + 1 + (i + 1 < len(words) and words[i + 1] == "up")
             if k >= len(words) or words[k] not in ("the", "a", "an", "my", "your", "this", "that"):
