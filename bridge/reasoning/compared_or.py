@@ -16,12 +16,13 @@ middle or near the rim", with a goal), the choice is the plan's to make
 (seeking.py), and with no goal ("should I hold the jug close to the bowl
 or higher up?") it asks which is better, as "is it better to" does; a choice of two liquids is choices.py's; an "or" before a
 number ("1 or 2 cm": a range), "or not", "or so" or a question of its own
-("or will the bowl skid?") is no second scene."""
+("or will the bowl skid?") is no second scene. Two liquids poured "and" one another, with "which" asked
+after them ("if i pour honey and water from the same height which one splashes more"), are compared too."""
 from __future__ import annotations
 
 import re
 
-from pantarhei.bridge.reasoning.two_liquids import chosen_liquids, read_alike
+from pantarhei.bridge.reasoning.two_liquids import chosen_liquids, poured_together, read_alike
 
 _COMPARING = re.compile(r"\b(?:better|best|safer|safest|worse|worst|preferable|which|likelier"
                         r"|(?:more|less|most|least) (?:likely|prone)|(?:make|makes) (?:a|any|much of a) difference"
@@ -84,7 +85,10 @@ _WHICH_BETTER = tuple((re.compile(p), r) for p, r in (
 _LIKENED = {"messy": ("spills", False), "stable": ("slides", True), "steady": ("slides", True),
             "safe": ("spills", True), "likely to spill": ("spills", False), "likely to splash": ("splashes", False),
             "likely to tip": ("tips over", False), "likely to tip over": ("tips over", False),
-            "likely to slide": ("slides", False), "likely to drip": ("drips", False)}
+            "likely to slide": ("slides", False), "likely to drip": ("drips", False),
+            "likely to knock the bowl over": ("tips over", False), "likely to knock over the bowl": ("tips over", False),
+            "likely to tip the bowl over": ("tips over", False), "likely to tip over the bowl": ("tips over", False),
+            "likely to make the bowl slide": ("slides", False), "likely to make the bowl move": ("slides", False)}
 _ADJECTIVE = "|".join(sorted(_LIKENED, key=len, reverse=True))
 _SET_AGAINST = tuple((re.compile(p), r) for p, r in (
     (r"^(?:so )?(?:what is|what|whats) the difference between (?P<a>.+?) and (?P<b>.+?)(?P<end> *[?.!]* *)$",
@@ -150,8 +154,13 @@ def compared_or(text: str) -> tuple[str, tuple[str, ...]]:
     or from just above?") is read first as "more" and the outcome, where
     two scenes are set against each other ("or", "than", "vs")."""
     said: tuple[str, ...] = ()
+    both = poured_together(text)
+    if both and re.search(r"\bwhich\b", text[both.end():]):    # "pour honey and water ... which one splashes more"
+        text = text[:both.start()] + both.group(0).replace(" and ", " vs ", 1) + text[both.end():]
+        said = (f"{both.group(1)} and {both.group(2)}: read as {both.group(1)} vs {both.group(2)}: two liquids compared, "
+                "the one said first answered",)
     if re.search(r"\b(?:or|than|vs|versus)\b", text):
-        said = tuple(dict.fromkeys(f"{m.group(0)}: read as {_more(m)}" for m in _IER.finditer(text)))
+        said += tuple(dict.fromkeys(f"{m.group(0)}: read as {_more(m)}" for m in _IER.finditer(text)))
         text = _IER.sub(_more, text)
     text, compared = _compared_or(text)
     return text, said + compared

@@ -32,6 +32,8 @@ _HELD_BOWLS = _FILLED_BOWLS | {"dish", "basin", "tub"}
 _NUMBER = re.compile(r"\d+(?:\.\d+)?")
 #: Why a bowl said to hold liquid before the pour is refused (suggestions.py's too).
 HOLDS_LIQUID = "the destination is empty before the pour: the vocabulary says nothing of pouring into a bowl that holds liquid"
+FILLS_BOWL = ("the destination is empty before the pour: the vocabulary says nothing of how full it gets; ask "
+              "whether the liquid goes in and stays in (\"does it all go in?\")")
 #: What is said back of a share read.
 SAID = "read as the amount of liquid whose range holds the most of that share of a full source"
 
@@ -70,6 +72,8 @@ class Fullness:
             share, end = (share, end) if share is not None else _share(words, i)
             if share is not None and _of_the_bowl(words, i):
                 raise UserError(f"could not place \"{' '.join(words[max(0, i - 4):end])}\": {HOLDS_LIQUID}")
+            if share is not None and (filled := _bowl_filled(words, i)) is not None:
+                raise UserError(f"could not place \"{' '.join(words[filled:end])}\": {FILLS_BOWL}")
             if share is not None:
                 out.append((i, end, tuple(amount(share).split())))
             i = end if share is not None else i + 1
@@ -81,6 +85,22 @@ def _of_the_bowl(words: list[str], i: int) -> bool:
     before = words[max(0, i - 4):i]
     return any(w in _HELD_BOWLS and before[k + 1:k + 2] in (["is"], ["was"], ["are"], ["were"], ["s"])
                for k, w in enumerate(before))
+
+
+#: Words between a bowl filled and the share it is filled to: "fill the bowl up to about half full".
+_BOWL_TO = frozenset(("about", "around", "roughly", "approximately", "only", "just", "up", "to", "exactly", "maybe"))
+
+
+def _bowl_filled(words: list[str], i: int) -> int | None:
+    """Where the filling starts, if the share said at `i` is one the bowl is filled to: "fill a glass
+    bowl about half full"; else None."""
+    for k in range(i - 1, max(-1, i - 7), -1):
+        if words[k] in _FILLING:
+            bowl = next((b for b in range(i - 1, k, -1) if words[b] in _HELD_BOWLS), None)
+            return k if bowl is not None and all(w in _BOWL_TO for w in words[bowl + 1:i]) else None
+        if words[k] in (",", ";", ".", "and", "then"):
+            return None
+    return None
 
 
 #: Verbs of filling the source, said with the share it is filled to: "fills the cup halfway".

@@ -43,7 +43,9 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     (r"((?:^|(?<=[.?!,;:] ))(?:does|do|did|will|would|can|could|might|may|should)\b[^.?!,;:]*?)\b(?:stop|stops|keep|keeps|prevent|prevents)"
      r" (it|them|the [a-z]+) from (?=[a-z]+ing\b)", r"\1 will \2 "),
     (r"\bkeep(?:s|ing)? (the (?!source\b)[a-z]+) (still|steady|in place|put)\b", r"so that \1 stays \2"),
-    (r"\b(?:do not|never) lets? (it|them|the [a-z]+|any(?: of it)?|a drop|a single drop) ", r"so that \1 does not "),
+    (r"\b(?:do not|does not|never) lets? (it|them|the [a-z]+|any(?: of it)?|a drop|a single drop) ", r"so that \1 does not "),
+    # "without it making a mess": as "without making a mess"
+    (r"\bwithout (?:it|them|that) (?=making (?:a |any |much of a )?mess\b)", "without "),
     # "keep the bowl from sliding", "stop it from splashing"
     (r"\b(?:keep|keeps|keeping|stop|stops|stopping|prevent|prevents|preventing) (it|them|the [a-z]+)"
      r" from (?=[a-z]+ing\b)", r"so that \1 does not "),
@@ -147,7 +149,7 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:(?:in order |so as )?to |(?<=how do i )|(?<=how can i )|(?<=how should i )|(?<=goal: )|(?<=goal ))get (it all|all of it"
      r"|everything|every drop|every last (?:drop|bit)(?: of (?:the |my )?[a-z]+(?: [a-z]+)?)?|all (?:of )?the [a-z]+(?: [a-z]+)?)"
      r" (?:out(?: of (?:the |a |my )?[a-z]+(?: [a-z]+)?)?|from (?:the |a |my )?[a-z]+(?: [a-z]+)?)"
-     r" (?:and )?(?=(?:in|into) (?:the |a |my )?(?:[a-z]+ )?[a-z]+\b)", _out_and_in),
+     r" (?:and )?(?=(?:in|into) (?!(?:one|a single) (?:go|shot|time|pour)\b)(?:the |a |my )?(?:[a-z]+ )?[a-z]+\b)", _out_and_in),
     # "what angle should I tilt to get everything out", "how do I get every drop out": so that it all comes out
     (r"\b(?:(?:in order |so as )?to |(?<=how do i )|(?<=how can i )|(?<=how should i ))get (it all|all of it|everything|every drop|every last drop|all (?:of )?the [a-z]+) out\b"
      r"(?: of (?:the |a |my )?[a-z]+)?(?![^.?!,;]*\band (?:in|into)\b)", r"so that \1 comes out"),

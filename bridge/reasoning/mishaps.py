@@ -202,7 +202,8 @@ def _said(words: dict, groups: list[tuple[str, ...]], when: str = "") -> str:
         still = group not in words and set(STILL) <= set(group)       # "knocked it sideways": hit, and moved
         said += [words[group]] if group in words else \
             [words[n] for n in group if not (still and n in STILL)] + ([words[STILL]] if still else [])
-    return " and ".join(dict.fromkeys(said))
+    # the phase said last, so that what follows it is not read as of the phase ("... as the jug comes in and ...")
+    return " and ".join(sorted(dict.fromkeys(said), key=lambda w: bool(when) and w == words[STILL]))
 
 
 def _phase_told(told: str) -> str:

@@ -61,6 +61,10 @@ MOVES: tuple[tuple, ...] = (
               r"re:\bladl(?:e|es|ed|ing)(?= (?:(?:it|them|the \w+|\w+) )?(?:in|into|out)\b)",
               r"re:\bdump(?:s|ed|ing)?(?= out\b)",      # the liquid dumping out: coming out
               "decant", "free pour", "transfer", "serve", "dispense", "top up")),
+    # filling the bowl from the source, said as what one is doing ("filling the mop bucket from a jug, how do
+    # i stop ..."): pouring into it (a bowl wanted filled is seeking.py's goal)
+    ("pour", (r"re(filling):(?:^|(?<=[,;:.!?] ))filling (?:up )?(?:the|a|my|our)"
+              r"(?= (?:[a-z]+ )?(?:bowl|bucket|basin|dish|tub)s? (?:from|with)\b)",), "read as pouring into it"),
     # dumping it: pouring it tipped far, the least of which is steeply
     ("pour steeply tilted", (r"re:\bdump(?:s|ed|ing)?\b",), "read as pour steeply tilted: tipped far"),
     ("retreat ; pour", (rf"re:\bafter pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",

@@ -30,6 +30,7 @@ NEARNESS: tuple[tuple, ...] = (
     ("near the rim", (r"re(one side|the side|one edge|right above|directly above|right over|onto):\b(?:in|into|onto) (?:just |only )?(?:one|the) (?:side|edge) of (?:it|the (?:destination|bowl))\b"
                       # (landing on one side, the bowl's: "pour heavy stuff on one side", not "off to one side")
                       r"|(?<!off )\b(?:on|onto) (?:just |only )?one side\b(?! of\b)"
+                      r"|(?<!off )\bon (?:just |only )?one (?:side|edge) of (?:it|the (?:destination|bowl))\b"
                       r"|\bonto (?:its|the (?:destination|bowl)s?) (?:edge|rim|lip)\b"
                       r"|\b(?:right|directly) (?:above|over) (?:the |its )?(?:destination |bowl )?(?:edge|rim|lip)\b(?! of\b)",)),
     # its very edge, and the bowl's edge named in a note ("jug bowl edge splash?"), not touched

@@ -227,7 +227,7 @@ class Nouns:
         coordinated with it ("the source and the destination"), or both
         bowls for bowls in the plural ("both cups"), unless the source is
         named apart ("from a jug ... the bowls are light": the bowls poured
-        into)."""
+        into), or they are said poured into ("slippery bowls ... when you pour in them")."""
         t = self.tokens
         last = t[i].raw.split()[-1]
         plural = re.search(r"[^s]s$", last) and last not in _singular()      # not "a thermos"
@@ -235,7 +235,8 @@ class Nouns:
         owned = any(w.raw in _OWNERS for w in t[max(0, i - 3):i]) and not any(
             w.word in ("both", "two") for w in t[max(0, i - 3):i])
         # "bowls light and kinda slick" after "out of a jug": the bowls poured into, the jug named apart
-        apart = plural and bool(self.source_names - {last.rstrip("s")})
+        apart = plural and (bool(self.source_names - {last.rstrip("s")}) or any(     # "... when you pour in them"
+            t[j].word == "pour" and t[j + 1].word in ("in", "into") and t[j + 2].raw == "them" for j in range(i + 1, len(t) - 2)))
         if t[i].word == BOWL and ((plural and not owned and not apart) or (i > 0 and t[i - 1].word == "both")):
             return {"source", "destination"}
         out = set()

@@ -79,6 +79,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:go|goes|going|went|get|gets|land|lands) (?:in|into)(?: the \w+)? clean(?:ly)?\b", (*ALL_IN, "no_spill"), False),
     (r"(?:stay|stays|staying|stayed|keep|keeps|remain|remains) (?:nice and )?clean\b", ("no_spill",), False),
     (r"(?:stay|stays|remain|remains|keep|keeps) (?:upright|standing)", ("destination_upright",), False),
+    # tipped or fallen off what it stands on: moved, and fallen ("the bowl just flipped off the counter")
+    (r"(?:flip(?:s|ped|ping)?|tip(?:s|ped|ping)?(?: over)?|toppl\w*|tumbl\w*|fall|falls|falling|fell) off"
+     r"(?= (?:the |my |our )?(?:table|counter|countertop|worktop|bench|tray|shelf|stool)\b)", (*STILL, "destination_upright"), True),
     (r"tip(?:s|ped|ping)?(?: over)?(?! (?:(?:it|them|the \w+) )?(?:(?:past|beyond)\b|(?:to|by|at|up to|no more than|more than"
      r"|less than|at most|at least|under|about) -?\d))"
      # (not the source tipped by whoever pours: "without tipping the pitcher much")

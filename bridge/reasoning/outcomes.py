@@ -42,6 +42,7 @@ from pantarhei.bridge.reasoning.phases import STILL, during, moving
 from pantarhei.bridge.reasoning.seeking import reaches, sought, wanting
 from pantarhei.bridge.reasoning.strikers import containers, striker
 from pantarhei.bridge.reasoning.worries import worried
+from pantarhei.bridge.reasoning.supposed_never import never_as_not
 from pantarhei.bridge.reasoning.what_follows import FOLLOWS
 from pantarhei.bridge.reasoning.vessels import destinations, filled, in_the_source, liquids, out_of_the_source
 from pantarhei.theory.lexicon import load_vocabulary
@@ -158,7 +159,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
                 rf"(?:{verbs})\b{end}", ("outcome",))
     # an outcome said first, with no word that asks: "spills when poured from high?", "sloshing
     # over the rim if tilted steeply?", "pour high, spill or not", "spill or no?"
-    bare = re.compile(rf"(?:^|(?<=[,:;.?!\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014]))(?:(?P<v0>{filled(OUTCOMES[0][0])})|(?P<v1>spill\w*|spilt|splash\w*|drip\w*"
+    bare = re.compile(rf"(?:^|(?<=[,:;.?!\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014])|(?<=\bpour ))(?:(?P<v0>{filled(OUTCOMES[0][0])})|(?P<v1>spill\w*|spilt|splash\w*|drip\w*"
                       rf"|leak\w*|slosh\w*|dribbl\w*)){end}(?: or not| or no)?(?: expected| likely)?(?= (?:if|when|while)\b| *[?.!,]* *$)")
     return asked, nominal, goal, more, bare
 
@@ -327,8 +328,9 @@ def hear(text: str) -> Heard:
 
     was_goal = True
     said = text
+    text, never = never_as_not(text)
     text, wants = wanting(text)
-    phrases.extend(wants)
+    phrases.extend((*never, *wants))
     text, framed = asked_plainly(text)
     text, rate, rate_notes = rates(text)     # "will it come out slower": no expectation's (flow_rates.py)
     text, without = without_asked(text)      # "will it go in without any spilling": both asked
@@ -338,11 +340,14 @@ def hear(text: str) -> Heard:
         # "so it pours out but the bowl does not tip", "so nothing spills and the bowl stays
         # put", "so it stays in and doesn't slosh out": a clause of its own after "but" or "and"
         # is wanted too, with its own negation
-        for m in reversed(list(re.finditer(r"\boutcome (?:but (?:also )?|(?:, ?)?and (?:also )?(?=(?:"
-                                           r"the|it|nothing|none|no|everything|all|does not|do not|will not|never)\b))", text))):
-            trial = f"{text[:m.start()]}outcome so that {text[m.end():]}"
-            wanted_too = _spaced(goal.pattern.sub(as_goal, trial))
-            text = wanted_too if wanted_too != trial else text
+        before = ""
+        while before != text:       # (each clause wanted makes the next one's "outcome and")
+            before = text
+            for m in reversed(list(re.finditer(r"\boutcome (?:but (?:also )?|(?:, ?)?and (?:also )?(?=(?:"
+                                               r"the|it|nothing|none|no|everything|all|does not|do not|will not|never)\b))", text))):
+                trial = f"{text[:m.start()]}outcome so that {text[m.end():]}"
+                wanted_too = _spaced(goal.pattern.sub(as_goal, trial))
+                text = wanted_too if wanted_too != trial else text
         text = _repeat(more, as_more, text)
         goals[:] = moving(text, goals)     # "move away without the bowl sliding": as it moves away
         text, seeking = sought(text)        # "how high should I hold it": a plan's to find

@@ -313,10 +313,11 @@ _ROUGHLY = {stem(w) for w in ("about", "around", "roughly", "approximately", "so
 
 def _poured_from(tokens: list[Token], i: int, stage: list[str]) -> bool:
     """Whether the length at `i` is said as where the pour comes from: "from" (and a word of
-    roughly) before it, in a clause that pours, in the pour's stage ("pour from 40 cm", "pouring
-    syrup into a tin from about 6 inches"; not "move in from 30 cm", refused: above or to the side?)."""
+    roughly) before it, or "at", in a clause that pours, in the pour's stage ("pour from 40 cm",
+    "pouring syrup into a tin from about 6 inches", "pour at 5 cm"; not "move in from 30 cm", refused:
+    above or to the side?)."""
     k = _past(tokens, i - 1, -1, _ROUGHLY)
-    return (k > 0 and tokens[k].word == "from" and stage[i] == "pour"
+    return (k > 0 and tokens[k].word in ("from", "at") and stage[i] == "pour"
             and any(tokens[m].word == "pour" and tokens[m].clause == tokens[i].clause for m in range(k)))
 
 

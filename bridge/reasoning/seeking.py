@@ -176,7 +176,7 @@ def _filling() -> Cued:
     halfway"; "fill the bowl to the brim", a level, is refused before: _to_the_brim), nor the source
     filled ("filling the cup to the top": a full source)."""
     bowl = rf"((?:the|a|an|my|this|that|our|your) (?:[a-z']+ )?(?:{destinations()}))"
-    return Cued(rf"{_WANTS_FILLED}fill (?:up )?{bowl}(?: up)?(?! (?:half|halfway|about|around|a quarter|a third|to (?:half|a |\d)|\d))\b"
+    return Cued(rf"{_WANTS_FILLED}fill (?:up )?{bowl}(?: up)?(?!(?: (?:{destinations()}))? (?:half|halfway|about|around|a quarter|a third|to (?:half|a |\d)|\d))\b"
                 rf"|\b(?:i|we) (?:would |want to |need to )?have {bowl} (?:end up |be )?(?:full|filled(?: up)?)\b"
                 rf"|\b(?:i|we) (?:want|need|would like) {bowl} (?:to be |to end up )?(?:full|filled(?: up)?)\b"
                 # the bowl wanted still while it is filled: "I need the bowl to stay put while I fill it"
@@ -202,10 +202,12 @@ _CAN_EMPTY = (r"\b(?:can|could) (?:i|we|you) (?:still )?(?:empty|drain) (it|(?:t
 #: "how do I get all the soup into the bowl" (so that it goes in).
 _WANTING_CUED = (
     # "I don't want the cup to touch the bowl": so that it does not
-    (Cued(r"\b(?:i|we) (?:do not|never) (?:want|wish)(?: for)? (it|them|the (?!source\b)[a-z]+) (?:to |(?=[a-z]+ing\b))",
+    (Cued(r"\b(?:i|we) (?:do not|never) (?:want|wish)(?: for)? (it|them|the (?!source\b)[a-z]+|any(?: of it)?(?: in the [a-z]+)?)"
+          r" (?:to |(?=[a-z]+ing\b))",
           ("not want", "never want", "not wish", "never wish")), r"so that \1 does not "),
     # "I want every drop in the bowl": so that it goes in
-    (Cued(r"(?:^|\b(?:i|we) )(?:want|need|would like) (every drop|all of it|it all|everything|all (?:of )?the \w+) (?=(?:in|into|inside)\b)",
+    (Cued(r"(?:^|(?<=[.,;:!?] )|\b(?:i|we) )(?:want|need|would like) (every drop|all of it|it all|everything|all (?:of )?the \w+)"
+          r" (?=(?:in|into|inside)\b)",
           ("want", "need", "like")), r"so that \1 stays "),
     # "I want to get all of the syrup out of the cup and into the bowl": so that the cup empties and it goes in
     (Cued(r"\b(?:i|we) (?:want|need|would like) to get (it all|all of it|everything|all (?:of )?the [a-z]+) out of"

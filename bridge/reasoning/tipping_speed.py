@@ -5,7 +5,9 @@ goes, as "tip it slowly" is (speeds.py). A rewrite of words.py's, applied
 before the everyday word list: the clause must hold a speed ("gentle"
 alone says how far as much as how fast, and is left to be read as it is),
 and the clause before it a verb of tipping; or said last in the clause that tips it, after
-how far ("tip it halfway fast": tilted halfway, moving in fast)."""
+how far ("tip it halfway fast": tilted halfway, moving in fast); or right after what is
+tipped, named ("tip the pot of jam really slow": moving in slowly, and pouring the pot of
+jam, whose words are read as any are)."""
 from __future__ import annotations
 
 #: Verbs of tipping the source.
@@ -25,6 +27,10 @@ class TippingSpeed:
         for i, w in enumerate(words):
             if w in _SPEEDS and _tipped_how_far(words, i):      # "tip it halfway fast": halfway, moving in fast
                 out.append((i, i + 1, (";", "approach", _SPEEDS[w], ";", "pour")))
+                continue
+            if (named := _tipped_named(words, i)) is not None:      # the words tipped kept as they are
+                verb, speed = named
+                out += [(verb, verb + 1, ("approach", _NAMED_SPEEDS[w], ";", "pour")), (speed, i + 1, ("hedge",))]
                 continue
             if w not in (",", ";") or not _tipped_before(words, i):
                 continue
@@ -65,6 +71,39 @@ def _tipped_how_far(words: list[str], at: int) -> bool:
             return far
         k -= 1
     return False
+
+
+#: Speeds said right after what is tipped; and words that cannot be part of what is tipped (a clause's
+#: joints, other moves, speeds, places, how far or how big).
+_NAMED_SPEEDS = {**_SPEEDS, "gradually": "slowly", "steadily": "slowly", "rapidly": "fast"}
+_NOT_TIPPED = frozenset("""and then but or so if when into in onto over to from at with big small little large tiny too far
+    halfway half all way upside sideways right straight degrees degree deg slow slowly fast quick quickly it them""".split())
+_NOT_TIPPED_STEMS = ("move", "pull", "bring", "brought", "slow", "quick", "steep", "slight", "horizontal", "vertical")
+_INTENSE = frozenset(("very", "really", "too", "quite", "super"))
+
+
+def _tipped_named(words: list[str], at: int) -> tuple[int, int] | None:
+    """(where the verb of tipping is, where the speed's words start) where the speed at `at` follows a
+    verb of tipping and the words it tips, named (not "it": speeds.py reads "tip it slowly"); else None."""
+    if words[at] not in _NAMED_SPEEDS or (at + 1 < len(words) and words[at + 1] in ("than", "as")):
+        return None
+    k = at - 1
+    while k >= 0 and words[k] in _INTENSE:
+        k -= 1
+    if k >= 0 and words[k] == "in":                  # "tip the honey in slowly"
+        k -= 1
+    end = k + 1
+    while k >= 0 and end - k <= 6 and _tippable(words[k]):
+        k -= 1
+    if k < 0 or k + 1 == end or words[k] not in _TIPPING:
+        return None
+    return k, end
+
+
+def _tippable(word: str) -> bool:
+    """Whether `word` can be part of what is tipped."""
+    return (word.isalpha() and word not in _NOT_TIPPED and word not in _TIPPING
+            and not word.startswith(_NOT_TIPPED_STEMS))
 
 
 SAID = "read as the move into the pouring pose, which tilts the source as it goes"

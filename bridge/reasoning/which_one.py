@@ -22,7 +22,7 @@ _WHICH = re.compile(r"\bwhich (?:"
                     r"(?:(?:one|of them|of the two|bowl|cup)(?: of them)? )?(?:(?:is|are|will|would)(?: be)? |be )(?:the )?"
                     r"(?:(?:less|more|least|most) (?:likely|easy)|likelier|easier|(?:less|more) prone) to (?P<verb3>[a-z]+)\b"
                     r"|(?:one|of them|of the two|bowl|cup)(?: of them)? (?:will |would |is going to )?"
-                    r"(?P<verb>[a-z]+?)(?P<ending>es|s)?\b(?P<how> (?:more|less|the most|the least|most|least|worse|better)\b)?"
+                    r"(?!(?:is|are|would be|will be) (?:better|best|safer|safest|worse|worst)\b)(?P<verb>[a-z]+?)(?P<ending>es|s)?\b(?P<how> (?:more|less|the most|the least|most|least|worse|better)\b)?"
                     # "which" alone: its verb inflected and said with how much ("which splashes less")
                     r"|(?P<verb2>[a-z]+?)(?P<ending2>es|s)\b"
                     # where to, said before how much: "which sloshes out of the basin more"

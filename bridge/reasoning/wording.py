@@ -113,7 +113,7 @@ _CHATTED = (rf"\b(?:{'|'.join(_CHAT)})\b|\by(?= (?:does|do|did|is|are|was|would|
             # "from mug 2 bowl" (to), "best tilt 4 pouring soup" (for): a digit standing for a word,
             # between words and before what it would govern, never a number of a unit ("tilt 4 degrees")
             # "tilt it all the way n yank it away": and, between two words
-            r"|(?<=[a-z] )n(?= [a-z])"
+            r"|(?<=[a-z] )n(?= [a-z])|\bcause(?= (?:my|i|i'm|we|she|he|they|mom|mum|dad)\b)"   # "cause my mom said no"
             r"|(?<=[a-z] )(?<!\ba )(?<!\ban )(?<!\bthe )(?:2(?= (?:the|a|an|my|your|bowl|cup|mug|glass|dish|pot|jug|jar)\b)"
             r"|4(?= (?:[a-z]+ing|the|a|an|my|your|it|me|not|no)\b))")
 
@@ -151,7 +151,7 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     said: dict[str, None] = {}
 
     def respelt(written: str) -> str:
-        meant = _BARE.get(written) or {**_CHAT, "y": "why", "its": "it's", "2": "to", "4": "for", "n": "and"}.get(written, "can't")
+        meant = _BARE.get(written) or {**_CHAT, "y": "why", "its": "it's", "2": "to", "4": "for", "n": "and", "cause": "because"}.get(written, "can't")
         shown = "I" + meant[1:] if meant.startswith("i'") else meant
         said.setdefault(f"{written}: read as {shown}")
         return meant
@@ -307,8 +307,10 @@ def _normalised(text: str) -> str:
                   rf"(?![\w%\u00b0-]|\.\d| ?(?:{_UNIT_WORDS})\b| (?:to|or|and) -?\d)"
                   r"(?= *(?:$|[,;.!?):\u2013\u2014]|- |(?:and|then|but|so|while|before|after|from|above|over|with|into|at"
                   r"|during|when|if|in|on|towards|away|or|to|degrees?"
-                  r"|bowl|bowls|cup|mug|glass|jug|liquid|water|source|destination|does|do|will|would|is)\b))",
+                  r"|bowl|bowls|cup|mug|glass|jug|liquid|water|source|destination|does|do|will|would|is"
+                  r"|spill\w*|splash\w*|slid\w*|drip\w*|overflow\w*|wobbl\w*|slosh\w*)\b))",   # ("jug tilt 45 spill?")
                   r"\1 \2 degrees", text)
+    text = re.sub(r"\bat (?:an? )?(-?\d+(?:\.\d+)?)(?:-| )angle\b", r"at a \1 degree angle", text)      # "at a 45 angle"
     text = re.sub(r"(\d)\s*(?:(?:deg|degs|degrees?)\s*(?:/\s*(?:s|sec)\b|per (?:second|sec)\b)"
                   r"|rpm\b)", r"\1 unit_turn_speed", text)        # 30 deg/s: a speed of tilting
     text = re.sub(r"(\d)\s*(?:(?:k?m|cm|mm)\s*/\s*(?:s|sec|h|hr)|(?:k?m|cm|mm|metres?|meters?|"

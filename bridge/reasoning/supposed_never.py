@@ -1,0 +1,19 @@
+"""An outcome supposed never to happen, in a condition ("if the jug never
+touches the bowl, can the bowl still tip over?"): said as "does not", the
+way the outcomes are read when supposed not to happen ("if the jug doesn't
+touch the bowl, ..."): both are asked."""
+from __future__ import annotations
+
+import re
+
+#: The outcome verbs said with "never" in a condition, each in its plain form.
+_VERBS = ("touch", "hit", "bump", "knock", "spill", "splash", "drip", "tip", "slide", "move", "wobble", "collide",
+          "overflow", "rock", "shift", "slip", "budge")
+_NEVER = re.compile(rf"\b(if|when|as long as|so long as) ((?:the|a|my|your|it)\b(?: [a-z]+){{0,2}}?) never "
+                    rf"({'|'.join(_VERBS)})(?:es|s)?\b")
+
+
+def never_as_not(text: str) -> tuple[str, tuple[str, ...]]:
+    """Normalised `text` with an outcome supposed never to happen said as "does not", and what is said back."""
+    said = tuple(f"never {m.group(0).split(' never ', 1)[1]}: read as does not {m.group(3)}" for m in _NEVER.finditer(text))
+    return _NEVER.sub(r"\1 \2 does not \3", text), said
