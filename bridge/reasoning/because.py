@@ -7,13 +7,24 @@ tilted enough?") are causes.py's."""
 from __future__ import annotations
 
 import re
+from functools import lru_cache
+
+from pantarhei.bridge.reasoning.everyday import alternation, names
 
 #: The cause asked, in a clause of its own at the end: "... is it because I hold it too low?".
 _ASKED = re.compile(r"[.?!;,]+ *(?:is|was|could|might) (?:it|that|this)(?: be)? because (?:of )?"
                     r"(?P<scene>(?:i|we|you|he|she|they|the|my|it) [a-z0-9 ]+?) *[?.!]* *$")
-#: The outcome told right before it ("it always seems to run down the side"), ending its clause.
-_TOLD = re.compile(r"\b(?P<who>it|(?:the|my|our|your) [a-z]+) (?:always |often |sometimes |usually |still |just )*"
-                   r"(?:seems? to |tends? to )?(?P<what>[a-z][^.?!;,]{0,120}?) *$")
+
+
+@lru_cache(maxsize=None)
+def _told() -> re.Pattern:
+    """The outcome told right before the cause ("it always seems to run down the side"), ending its
+    clause, said of it, a bowl named, or a container named bare first in a note ("pitcher lip hit the
+    bowl and knocked it sideways, was it because ...")."""
+    bare = alternation(names("bowl"))
+    return re.compile(rf"\b(?P<who>it|(?:the|my|our|your) [a-z]+|(?:^|(?<=[.;:!?] ))(?:{bare})(?: (?:spout|rim|edge|handle|base))?)"
+                      r" (?:always |often |sometimes |usually |still |just )*"
+                      r"(?:seems? to |tends? to )?(?P<what>[a-z][^.?!;,]{0,120}?) *$")
 
 
 def cause_asked(text: str) -> tuple[str, tuple[str, ...]]:
@@ -22,11 +33,12 @@ def cause_asked(text: str) -> tuple[str, tuple[str, ...]]:
     cause = _ASKED.search(text)
     if cause is None or " or " in cause.group("scene"):
         return text, ()
-    m = _TOLD.search(text, max(0, cause.start() - 200), cause.start())
+    m = _told().search(text, max(0, cause.start() - 200), cause.start())
     if m is None:
         return text, ()
     # a place it went instead of the bowl, said with no verb: "instead of into the dish"
     what = re.sub(r"\b(instead of|rather than) (?=in|into|inside)\b", r"\1 going ", m.group("what"))
-    asked = f"if {cause.group('scene')}, does {m.group('who')} {what}?"
+    who = m.group("who") if re.match(r"(?:it|the|my|our|your)\b", m.group("who")) else f"the {m.group('who')}"
+    asked = f"if {cause.group('scene')}, does {who} {what}?"
     return (f"{text[:m.start()]}{asked}",
             (f"{text[m.start():].strip(' ?.!')}: read as {asked}",))

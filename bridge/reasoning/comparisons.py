@@ -64,7 +64,9 @@ COMPARISONS: tuple[tuple, ...] = (
     # whether it matters ("less liquid = less spill?? or doesnt matter", "does less water make any difference"):
     # whether the outcome happens
     ("hedge", (r"re(matter):\b(?:or )?(?:(?:does|do|would|will) (?:it |that |this )?)?(?:not )?(?:really )?matters?\b(?: but\b)?",
-               r"re(difference):\b(?:make|makes|made|making) (?:any|a|much of a|no) difference\b"),
+               r"re(difference):\b(?:make|makes|made|making) (?:any|a|much of a|no) difference\b",
+               # "A vs B - what's the difference in how much goes in?": whether it goes in
+               r"re(difference):\b(?:what is|whats|what) the difference in\b"),
      "ignored: whether it matters is whether the outcome happens with what is said"),
     # poured the same way, tipped to the same angle (as the scene compared with): the one said
     ("hedge", ("[in] the same way", "same way", "the same angle", "same angle", "the same tilt", "same tilt",

@@ -19,6 +19,7 @@ CAUSE = re.compile(r"^(?:so |and |but )?(?:why|how come|what went wrong|what did
                     r"|what (?:i|we) (?:do|did|am doing|was doing) wrong"
                     # whether it should happen, or what is done wrong: "is that normal or am i doing it wrong"
                     r"|(?:is|was) (?:that|this|it) normal(?: or (?:am|was) (?:i|we) doing (?:it|something|anything) wrong)?"
+                    r"|(?:is|was) (?:that|this) (?:why|the reason)(?: why)?"
                     r"|(?:am|was) (?:i|we) doing (?:it|something|anything) wrong|what (?:am|was) (?:i|we) doing(?: wrong| there| here)?"
                     r"|what made (?:that|this|it|the \w+) (?:happen|move|slide|tip|tip over|fall|fall over|spill|splash)"
                     r"(?: happen)?"

@@ -44,6 +44,11 @@ WANTING = tuple((re.compile(p), r) for p, r in (
      r" (it|them|the [a-z]+) from (?=[a-z]+ing\b)", r"\1 will \2 "),
     (r"\bkeep(?:s|ing)? (the (?!source\b)[a-z]+) (still|steady|in place|put)\b", r"so that \1 stays \2"),
     (r"\b(?:do not|does not|never) lets? (it|them|the [a-z]+|any(?: of it)?|a drop|a single drop) ", r"so that \1 does not "),
+    # a note of what is wanted before asking how ("no splashing, how do I pour"): so that nothing spills
+    (r"(?:^|(?<=[,;:.!?] )|(?<= - ))no (?:spill|spills|spilling|splash|splashes|splashing|mess|drips|dripping)"
+     r"(?= *(?:[,;:.!?]| - ).*\bhow (?:do|should|can|would)\b)", "so that nothing spills"),
+    (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:the )?[a-z]+ (?:not|never) touching (?:the )?[a-z]+"
+     r"(?= *(?:[,;:.!?]| - ).*\bhow (?:do|should|can|would)\b)", "so that the jug does not touch the bowl"),
     # "without it making a mess": as "without making a mess"
     (r"\bwithout (?:it|them|that) (?=making (?:a |any |much of a )?mess\b)", "without "),
     # "keep the bowl from sliding", "stop it from splashing"

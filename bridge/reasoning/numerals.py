@@ -49,8 +49,8 @@ class NumberWords:
         return out
 
 
-#: Vague counts before a unit, as the ranges they say: "a couple of inches", "a few seconds".
-_VAGUE = {("a", "couple", "of"): (2.0, "to", 3.0), ("a", "few"): (2.0, "to", 5.0)}
+#: Vague counts before a unit, as the ranges they say: "a couple of inches", "a couple cm", "a few seconds".
+_VAGUE = {("a", "couple", "of"): (2.0, "to", 3.0), ("a", "couple"): (2.0, "to", 3.0), ("a", "few"): (2.0, "to", 5.0)}
 
 
 def _number_at(words: list[str], i: int) -> tuple[int, tuple] | None:

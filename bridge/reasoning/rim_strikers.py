@@ -34,7 +34,9 @@ def _lips() -> tuple[re.Pattern, ...]:
     the bowl is not it) striking the bowl: "the jug lip hit", "the lip of the flask touched"."""
     sources = alternation(w for w in names("bowl") if w not in _DESTINATIONS)
     strikes = r"(?: \w+){0,2}? (?:touch|hit|bump|knock|bang|clip|strike|struck|collid|scrap|graz|clink|nudg|tap|make contact)"
-    return (re.compile(rf"{_AT_A_PLACE}\b((?:the|its|a) (?:{sources}) )(?P<part>lip|rim|edge)\b(?={strikes})"),
+    # (a note's, with no article: "pitcher lip hit the bowl")
+    return (re.compile(rf"{_AT_A_PLACE}\b((?:(?:the|its|a|my|your) |(?:^|(?<=[.,;:!?] )))(?:{sources}) )(?P<part>lip|rim|edge)\b"
+                       rf"(?={strikes})"),
             re.compile(rf"{_AT_A_PLACE}\b((?:the|its|a) )(?P<part>lip|rim|edge)(?= of (?:the |a |an |my |this |that )?(?:{sources}){strikes})"))
 
 
