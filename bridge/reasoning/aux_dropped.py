@@ -28,7 +28,9 @@ _AUX = re.compile(r"\b(?:will|would|does|do|did|is|are|was|were|can|could|might|
 
 
 #: An outcome's verb alone as a clause asked ("pour high, wobble?"): of "it".
-_ALONE = re.compile(r"(?:(?<=[,.;:!?] )|(?<= - ))(?P<verb>[a-z]+)(?P<part> over| out| off| down| away)?\?")
+#: (or after the bowl it is asked of, ending a note: "off center pour light bowl wobble?")
+_ALONE = re.compile(r"(?:(?<=[,.;:!?] )|(?<= - )|(?<=\bbowl )|(?<=\bdish )|(?<=\bbasin ))(?P<verb>[a-z]+)"
+                    r"(?P<part> over| out| off| down| away)?\?")
 #: Outcomes asked in a word or two, as notes ask them ("jug, bowl, very fast tilt, all in?"): what each asks.
 _FRAGMENTS = {"all in": "does it all go in", "all out": "does it all come out", "leftover": "is any left in the source",
               "leftovers": "is any left in the source", "any left": "is any left in the source",
@@ -75,6 +77,11 @@ def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
         verb = m.group("verb")
         if not outcome_verb(verb):
             return m.group(0)
+        before = re.split(r"[,.;:!?]| - ", m.string[:m.start()])[-1]
+        if re.search(r"\b(?:bowl|dish|basin) $", before) and (re.search(r"(?:ing|s|ed)$", verb) or re.search(
+                rf"{_AUX.pattern}|\b(?:if|when|while|without|so|that|what|why|how)\b", before)):
+            return m.group(0)           # "... without the bowl sliding?", "what if the bowl moves?": said, not a note's
+
         aux = "is" if verb in _SAID_OF else "does"        # "45 deg, ok?": is it ok?
         if m.group("part"):                                # "full jug, tipped over?": whether it happens
             said.append(f"{verb}{m.group('part')}: read as asked whether it happens")

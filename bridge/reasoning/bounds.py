@@ -32,7 +32,7 @@ _NEGATED = {"past", "beyond", "more than", "over"}
 #: Said before an angle or a count (never a length: "under the rim" is a height): "just under 90 degrees".
 _UNDER = {"under", "below"}
 #: Words that may stand between a bound and its number: "no more than about 60 degrees".
-_ABOUT = {stem(w) for w in ("about", "around", "roughly", "approximately", "some")}
+_ABOUT = {stem(w) for w in ("about", "around", "roughly", "approximately", "some", "like")}
 #: Words that may stand between a negation and the bound it negates: "don't tilt the mug past".
 _BETWEEN = {stem(w) for w in FILLERS} | set(OBJECT_STEMS) | {BOWL} | {
     stem(w) for w in ("tilt", "tilts", "tilted", "tip", "tips", "tipped", "lean", "angle", "turn", "rotate",

@@ -97,7 +97,7 @@ _SET_AGAINST = tuple((re.compile(p), r) for p, r in (
     (r"^(?:so )?how does (?P<a>.+?) compare (?:with|to) (?P<b>.+?)(?P<end> *[?.!]* *)$", "{a} vs {b}{end}"),
     # (not a value's "to": "compare tilting the bottle to 90 degrees versus 120 degrees")
     (r"^compare (?P<a>.+?) (?:and|with|to(?! -?\d)|versus|vs) (?P<b>.+?)[:,;.] *(?P<q>(?:which|what) .+)$", "{a} vs {b}, {q}"),
-    (rf"^(?:so )?which(?: one)? (?:is|would be|will be) (?P<more>less|more) (?P<adj>{_ADJECTIVE})[,:;]? (?P<a>.+?) or "
+    (rf"^(?:so )?(?:which(?: one)? (?:is|would be|will be)|what(?:s| is)?) (?P<more>less|more) (?P<adj>{_ADJECTIVE})[,:;]? (?P<a>.+?) or "
      r"(?P<b>.+?)(?P<end> *[?.!]* *)$", "{a} vs {b}, which one {verb} {how}{end}"),
     (rf"^(?:so )?(?:is|would) (?P<a>.+?) (?:be )?(?P<more>less|more) (?P<adj>{_ADJECTIVE}) than (?P<b>.+?)(?P<end> *[?.!]* *)$",
      "{a} vs {b}, which one {verb} {how}{end}"),

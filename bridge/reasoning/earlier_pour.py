@@ -10,6 +10,9 @@ outcome told not to happen again (here, that it comes out)."""
 from __future__ import annotations
 
 import re
+from functools import lru_cache
+
+from pantarhei.bridge.reasoning.everyday import alternation, names
 
 #: What asks its cause: "why?", "what went wrong", "what did I do wrong".
 CAUSE = re.compile(r"^(?:so |and |but )?(?:why|how come|what went wrong|what did (?:i|we) do wrong|what happened(?: there| here)?"
@@ -149,4 +152,14 @@ def told(text: str) -> tuple[str, tuple[str, ...]]:
         stops = HELPS.search(rest)
         rest = f"{rest[:stops.start()]}with {stops.group('scene')}, {_TOLD[verb]}{rest[stops.end():]}"
         said.append(f"{stops.group(0)}: read as {_TOLD[verb]}, as the earlier pour did, with {stops.group('scene')}")
+    poured = _liquid_named().search(m.group(0))       # the liquid told stays: "i poured honey and it spilled ..."
+    if poured and re.search(r"\bso (?:that )?(?:it|nothing|none|the)\b|\bwithout\b", rest) and not _liquid_named().search(
+            rest) and not re.search(r"\b(?:thin|thick|runny|sticky|liquid)\b", rest):    # (only where a goal is asked of it)
+        rest = f"pouring {poured.group(0)}, {rest}"
     return rest, tuple(said)
+
+
+@lru_cache(maxsize=None)
+def _liquid_named() -> re.Pattern:
+    """A liquid by one of its names (everyday.txt's)."""
+    return re.compile(rf"\b(?:{alternation(names('liquid'))})\b")

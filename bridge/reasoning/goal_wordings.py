@@ -22,9 +22,11 @@ _EMPTYING = (r"\b(?:goal|aim|objective|task|target)s?(?: is)?:? (?:to )?(?:empty
 
 def _out_and_in(m: re.Match) -> str:
     """"get every last bit of the melted chocolate out of the jug into the bowl": so that it all
-    comes out and goes in, the liquid named kept for the scene."""
+    comes out and goes in, the liquid named kept for the scene ("from the jug": so that it goes in,
+    the jug not said emptied)."""
     liquid = re.search(r"\b(?:of|all) (?:the |my )?([a-z]+(?: [a-z]+)?)$", m.group(1))
-    return f"{'pouring ' + liquid.group(1) + ' ' if liquid else ''}so that it all comes out and it all goes "
+    out = "" if re.search(rf"{re.escape(m.group(1))} from\b", m.group(0)) else "it all comes out and "   # "from the bottle": not emptied
+    return f"{'pouring ' + liquid.group(1) + ' ' if liquid else ''}so that {out}it all goes "
 
 
 def _emptied_in(m: re.Match) -> str:
@@ -49,6 +51,8 @@ WANTING = tuple((re.compile(p), r) for p, r in (
      r"(?= *(?:[,;:.!?]| - ).*\bhow (?:do|should|can|would)\b)", "so that nothing spills"),
     (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:the )?[a-z]+ (?:not|never) touching (?:the )?[a-z]+"
      r"(?= *(?:[,;:.!?]| - ).*\bhow (?:do|should|can|would)\b)", "so that the jug does not touch the bowl"),
+    # "is there any way to pour where the container never touches the bowl": so that it does not
+    (r"\b((?:any|a|some) way to pour(?: it)?) where (?=(?:it|the [a-z]+|nothing|none)\b)", r"\1 so that "),
     # "without it making a mess": as "without making a mess"
     (r"\bwithout (?:it|them|that) (?=making (?:a |any |much of a )?mess\b)", "without "),
     # "keep the bowl from sliding", "stop it from splashing"

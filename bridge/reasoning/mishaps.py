@@ -60,6 +60,10 @@ _GOING_ON = re.compile(r"\b(?:is|was|were|are) $")
 #: A value asked with no goal: "how far should I tilt it", "what height should I use".
 _VALUE = re.compile(r"^(?:so )?(?:how (?:far|high|low|much|close|steep|steeply|fast|slow|slowly|quickly)|what (?:height|tilt|angle"
                     r"|speed|position|distance|setting)|which (?:height|tilt|angle|speed|position|way))\b(?!.*\b(?:so|without)\b)")
+#: ... or with the outcome it is wanted for said in it ("how heavy does the bowl need to be so it doesn't tip?").
+_VALUE_WANTED = re.compile(r"^(?:so )?(?:how (?:far|high|low|much|close|steep|steeply|fast|slow|slowly|quickly|heavy|light)|what "
+                           r"(?:height|tilt|angle|speed|position|distance|setting)|which (?:height|tilt|angle|speed|position|way))"
+                           r"\b.*\b(?:so|without)\b")
 #: A scene supposed, then whether it helps: "if I come in from higher up next time, would that stop it?".
 _IF_HELPS = re.compile(r"^(?:so )?(?:if|what if) (?P<scene>[^,?]+?),? (?:would|will|could|does|do|might) (?:that|this|it) "
                        r"(?:help|work|stop (?:it|that|this)|fix (?:it|that|this)|prevent (?:it|that|this)|solve (?:it|that|this)"
@@ -278,6 +282,8 @@ def _read(told: str, asked: str, present: bool = True) -> tuple[str, tuple[str, 
     if REMEDY.match(asked):
         rest = f"how should i pour{poured}{bodies} so that {wanted}?"
         return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did not")
+    if _VALUE_WANTED.match(asked):          # "how heavy does the bowl need to be so it doesn't tip?": its own goal
+        return f"{f'pouring{poured}{bodies}, ' if poured or bodies else ''}{asked}", (said,)
     if _VALUE.match(asked):
         rest = f"{asked.strip(' ?.!')} pouring{poured}{bodies} so that {wanted}?" if poured or bodies else \
             f"{asked.strip(' ?.!')} so that {wanted}?"

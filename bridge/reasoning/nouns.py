@@ -152,6 +152,19 @@ def _beside_the_bowl(tokens: list[Token], roles: dict[int, str], bowl: bool = Fa
             for i, r in roles.items()}
 
 
+#: Words that cannot name what kind of bowl the next one is ("into bowl", "is bowl", "pour bowl").
+_NOT_NAMING = frozenset(stem(w) for w in """into in onto on from to of over under with by for at than then and or but if when while
+    is are was were be been am do does did will would can could should not no nor pour pours poured pouring tip tilt it
+    its my your our their his her this that these those what which who one each every both either neither""".split())
+
+
+def _naming(tokens: list[Token], j: int, roles: dict[int, str]) -> bool:
+    """Whether the word at `j` names the kind of the bowl right after it, a word no other reading takes
+    ("a light ramen bowl", "a lightweight plastic feeding bowl"): the bowl's, between a value word and it."""
+    return (j + 1 in roles and tokens[j + 1].word == BOWL and tokens[j].word.isalpha()
+            and tokens[j].word not in _NOT_NAMING and tokens[j].clause == tokens[j + 1].clause)
+
+
 #: Who has the bowls said in the plural: "our bowls" are the kind someone pours with, not both bowls.
 _OWNERS = frozenset(("our", "my", "your", "their"))
 
@@ -171,7 +184,8 @@ class Nouns:
         self.stop = [n] * (n + 1)
         for j in range(n - 1, -1, -1):
             passes = j not in roles and (tokens[j].word in BETWEEN or tokens[j].word in placeable
-                                         or _measured(tokens[j]))        # "a heavy 2 kg bowl"
+                                         or _measured(tokens[j])        # "a heavy 2 kg bowl"
+                                         or _naming(tokens, j, roles))   # "a light ramen bowl"
             if tokens[j].word in ("and", "or") and j + 1 < n and (tokens[j + 1].word in ARTICLES
                                                                   or j + 1 in roles):
                 passes = False          # "heavy and the destination ...", "heavy and jug ...": a new noun's
