@@ -7,7 +7,7 @@ questions; so is an outcome's verb asked alone after a scene ("pour high,
 wobble?": does it wobble?, "full jug, tipped over?"), and a place said wet ("table wet?": does the
 table get wet?), and an outcome going on said first as a note's topic, nothing
 asked ("bowl tipping - heavy pitcher - off center"), and a cause asked so ("why the liquid not go in
-the bowl"); so are outcomes asked in a word or two ("all in?": does
+the bowl", "why comes the water over the edge"); so are outcomes asked in a word or two ("all in?": does
 it all go in?, "leftover?": is any left in the source?, "still in bowl after?": does it stay in the bowl?). A clause with an
 auxiliary of its own, or none of these subjects, is left as it is."""
 from __future__ import annotations
@@ -56,6 +56,8 @@ _TOPIC = re.compile(r"^(?:the |my )?(?:bowl|dish|basin) (?P<verb>[a-z]+ing)(?: o
 _ASKING = re.compile(rf"{_AUX.pattern}|\b(?:why|how|what|which|when|where|if)\b")
 
 
+#: ... or with its verb before what it happens to, as learners of English ask it: "why comes the water over the edge".
+_WHY_INVERTED = re.compile(rf"^why (?P<verb>[a-z]+s) (?P<subject>{_SUBJECT})\b")
 #: A cause asked without its auxiliary: "why the liquid not go in the bowl", "why the bowl move?".
 _WHY = re.compile(rf"^(?P<why>why|how come) (?P<subject>{_SUBJECT}) (?:not |never )?(?P<verb>[a-z]+)\b")
 
@@ -100,6 +102,13 @@ def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
     topic = _TOPIC.match(text) if "?" not in text and not _ASKING.search(text) else None
     if topic and outcome_verb(topic.group("verb")):      # "bowl tipping - heavy pitcher - off center"
         text = f"{topic.group(0)}?{text[topic.end():]}"
+    inverted = _WHY_INVERTED.match(text)
+    if inverted:                                        # "why comes the water over the edge": why does it come
+        verb = inverted.group("verb")
+        base = next((b for b in (verb[:-2], verb[:-1]) if outcome_verb(b) or b in _PHRASAL), None)
+        if base:
+            said.append(f"{inverted.group(0)}: read as why does {inverted.group('subject')} {base}")
+            text = f"why does {inverted.group('subject')} {base}{text[inverted.end():]}"
     why = _WHY.match(text)
     if why and (outcome_verb(why.group("verb")) or why.group("verb") in _PHRASAL) and not _AUX.match(text, why.end("why") + 1):    # "why the liquid not go in"
         said.append(f"{why.group(0)}: read as {why.group('why')} does {text[why.end('why') + 1:why.end()]}")
