@@ -40,6 +40,8 @@ REMEDY = re.compile(
     r"|how (?:(?:do|can|could|should|would|to) (?:i|we|you)?|(?:i|we) (?:can|could|should|do))(?: ?(?:stop|avoid|prevent|fix|solve|handle))(?: (?:that|this|it))?"
     r"(?: (?:happening|from happening))?(?: (?:again|next time|in future|in the future))*"
     r"|how (?:do|can|could|should|would) (?:i|we|you) (?:pour|do)(?: it| this| that)?(?: (?:then|instead|next time|differently|right|properly|better|again))*"
+    # "how do i not do that", "how can we not have that happen"
+    r"|how (?:do|can|could|should|would) (?:i|we|you) not (?:do|have) (?:that|this|it)(?: happen)?(?: (?:again|next time))?"
     r"|any (?:tips|advice|ideas|suggestions|help)(?: (?:on|for) (?:that|this|it|next time))?"
     r"|(?:tips|advice|help)(?: please)?"
     # what would have been right: "what should I have done?", "how should I have done it?"
