@@ -107,6 +107,8 @@ HINTS: tuple[tuple[str, str], ...] = (
                            'sideways", "from the side" or "in line with the bowl"'),
     (r"^(?:tilt|tip|angl|inclin|lean)\w*(?: \w+)*? (?:too |so |that |very )?far$",
      'tilted too far: how far? say "steeply tilted" or "upside down"'),
+    (r"^(?:tilt|tip|angl|inclin|lean)\w*(?: \w+)*? too much$",
+     'tilted too much: how far? say "steeply tilted" or "upside down"'),
     (r"horizontal$", 'measured from the horizontal: say the tilt from upright ("tilted 60 degrees", '
                       '"tilted 110 degrees"), or "steeply tilted" for about level'),
     (r"^(?:sideways|laterally|lateral|sidewise)$",

@@ -71,6 +71,10 @@ FAR_TILTS: tuple[tuple, ...] = (
     ("steeply tilted", (r"re(too far):\b(?:tilted|tipped)(?: (?:it|them|the \w+))? (?:way |much |far )?too far\b"
                         r"(?! (?:from|away|off|to)\b)",),
      'read as steeply tilted: tipped far, as a pour told says it (say "upside down" for further)'),
+    # ... and tipped too much, told ("did i tilt it too much?" after a spill told is a question of its own, below)
+    ("steeply tilted", (r"re(too much):\b(?:tilted|tipped)(?: (?:it|them|the \w+))? (?:way |far )?too much\b",),
+     'read as steeply tilted: tipped far, as a pour told says it (say "upside down" for further)'),
+    (UNCLEAR, (r"re(too much):\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:way )?too much\b",)),
     # tipped too far: past what? (not far from the bowl)
     (UNCLEAR, (r"re:\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:too |so |that |very )?far\b"
                r"(?! (?:from|away|off|to)\b)",)),
