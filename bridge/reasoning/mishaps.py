@@ -57,13 +57,12 @@ _TOLD_TENSE = re.compile(r"^(?:[a-z]{2,}[^e]ed|[a-z]+ied|went|ran|fell|slid|came
                          r"|stayed|left|overflowed|tipped|dripped|slipped|flipped|skidded|hit)\b")
 _HABIT = re.compile(r"\b(?:keeps|kept|keep|always|every time|each time|just)(?: [a-z]+)? $")
 _GOING_ON = re.compile(r"\b(?:is|was|were|are) $")
-#: A value asked with no goal: "how far should I tilt it", "what height should I use".
-_VALUE = re.compile(r"^(?:so )?(?:how (?:far|high|low|much|close|steep|steeply|fast|slow|slowly|quickly)|what (?:height|tilt|angle"
-                    r"|speed|position|distance|setting)|which (?:height|tilt|angle|speed|position|way))\b(?!.*\b(?:so|without)\b)")
-#: ... or with the outcome it is wanted for said in it ("how heavy does the bowl need to be so it doesn't tip?").
-_VALUE_WANTED = re.compile(r"^(?:so )?(?:how (?:far|high|low|much|close|steep|steeply|fast|slow|slowly|quickly|heavy|light)|what "
-                           r"(?:height|tilt|angle|speed|position|distance|setting)|which (?:height|tilt|angle|speed|position|way))"
-                           r"\b.*\b(?:so|without)\b")
+#: A value asked: "how far should I tilt it", "what height should I use", "how heavy does the bowl need to be".
+_VALUE_ASKED = (r"^(?:so )?(?:how (?:far|high|low|much|close|steep|steeply|fast|slow|slowly|quickly|heavy|light)|what "
+                r"(?:height|tilt|angle|speed|position|distance|setting)|which (?:height|tilt|angle|speed|position|way))\b")
+#: ... with no goal, or with the outcome it is wanted for said in it ("... so it doesn't tip?").
+_VALUE = re.compile(rf"{_VALUE_ASKED}(?!.*\b(?:so|without)\b)")
+_VALUE_WANTED = re.compile(rf"{_VALUE_ASKED}.*\b(?:so|without)\b")
 #: A scene supposed, then whether it helps: "if I come in from higher up next time, would that stop it?".
 _IF_HELPS = re.compile(r"^(?:so )?(?:if|what if) (?P<scene>[^,?]+?),? (?:would|will|could|does|do|might) (?:that|this|it) "
                        r"(?:help|work|stop (?:it|that|this)|fix (?:it|that|this)|prevent (?:it|that|this)|solve (?:it|that|this)"
