@@ -154,14 +154,23 @@ def told(text: str) -> tuple[str, tuple[str, ...]]:
         stops = HELPS.search(rest)
         rest = f"{rest[:stops.start()]}with {stops.group('scene')}, {_TOLD[verb]}{rest[stops.end():]}"
         said.append(f"{stops.group(0)}: read as {_TOLD[verb]}, as the earlier pour did, with {stops.group('scene')}")
-    poured = _liquid_named().search(m.group(0))       # the liquid told stays: "i poured honey and it spilled ..."
-    if poured and re.search(r"\bso (?:that )?(?:it|nothing|none|the)\b|\bwithout\b", rest) and not _liquid_named().search(
-            rest) and not re.search(r"\b(?:thin|thick|runny|sticky|liquid)\b", rest):    # (only where a goal is asked of it)
-        rest = f"pouring {poured.group(0)}, {rest}"
+    poured = liquid_named().search(m.group(0))       # the liquid told stays: "i poured honey and it spilled ..."
+    if poured and re.search(r"\bso (?:that )?(?:it|nothing|none|the)\b|\bwithout\b", rest) and not says_a_liquid(rest):
+        rest = f"pouring {poured.group(0)}, {rest}"      # (only where a goal is asked of it)
     return rest, tuple(said)
 
 
 @lru_cache(maxsize=None)
-def _liquid_named() -> re.Pattern:
+def liquid_named() -> re.Pattern:
     """A liquid by one of its names (everyday.txt's)."""
     return re.compile(rf"\b(?:{alternation(names('liquid'))})\b")
+
+
+#: How a liquid runs, said in place of its name: "thin", "sticky".
+_RUNS = re.compile(r"\b(?:thin|thick|runny|sticky|liquid)\b")
+
+
+def says_a_liquid(text: str) -> bool:
+    """Whether `text` names a liquid, or says how one runs: where it does, a liquid told of an
+    earlier pour does not stay for the one asked."""
+    return bool(liquid_named().search(text) or _RUNS.search(text))

@@ -25,7 +25,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from pantarhei.bridge.reasoning.earlier_pour import CAUSE, HELPS, REMEDY, WHEN
+from pantarhei.bridge.reasoning.earlier_pour import CAUSE, HELPS, REMEDY, WHEN, liquid_named, says_a_liquid
 from pantarhei.bridge.reasoning.everyday import alternation, names
 from pantarhei.bridge.reasoning.outcome_verbs import OUTCOMES
 from pantarhei.bridge.reasoning.phases import STILL
@@ -119,12 +119,6 @@ _NOT = re.compile(r"\b(?:nothing|none|not|never|no|zero)\b")
 @lru_cache(maxsize=None)
 def _outcomes() -> tuple[tuple[re.Pattern, tuple[str, ...], bool], ...]:
     return tuple((re.compile(rf"\b(?:{filled(v)})\b"), names, bad) for v, names, bad in OUTCOMES)
-
-
-@lru_cache(maxsize=None)
-def _liquid_named() -> re.Pattern:
-    """A liquid by one of its names (everyday.txt's)."""
-    return re.compile(rf"\b(?:{alternation(names('liquid'))})\b")
 
 
 @lru_cache(maxsize=None)
@@ -275,7 +269,7 @@ def _read(told: str, asked: str, present: bool = True) -> tuple[str, tuple[str, 
     said = f"{told}: read as nothing: a pour told, with what went wrong; the answer is for the one asked"
     when = _phase_told(told)
     wanted, question = _said(_WANTED, failed, when), _said(_ASKED, failed, when)
-    poured = _liquid_named().search(told)    # the liquid told stays
+    poured = liquid_named().search(told)    # the liquid told stays
     poured = f" {poured.group(0)}" if poured else ""
     bodies = _bodies_told(told)      # "my bowl is very light ...": the bowls stay as told, the pour is asked
     if REMEDY.match(asked):
@@ -290,8 +284,7 @@ def _read(told: str, asked: str, present: bool = True) -> tuple[str, tuple[str, 
     for helps, how in ((HELPS, "with"), (_IF_HELPS, "if")):
         m = helps.match(re.sub(r"^so ", "", asked))
         if m is not None and re.fullmatch(r"(?: (?:it|that|this))?[?.! ]*", m.string[m.end():]):
-            kept = f"pouring{poured}, " if poured and not (        # the liquid told stays, unless another is said
-                _liquid_named().search(m.group("scene")) or re.search(r"\b(?:thin|thick|runny|sticky|liquid)\b", m.group("scene"))) else ""
+            kept = f"pouring{poured}, " if poured and not says_a_liquid(m.group("scene")) else ""   # unless another is said
             rest = f"{kept}{how} {m.group('scene')}, {question}?"
             return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did")
     m = _TOO.match(asked)
