@@ -66,16 +66,12 @@ FAR_TILTS: tuple[tuple, ...] = (
     # tipped really far: steeply (too far stays refused: past what?)
     ("steeply tilted", (r"re( far):\b(?:tilt|tip)\w*(?: (?:it|them|the \w+))? (?:really|very|way|pretty|quite) far\b"
                         r"(?! (?:from|away|off|to)\b)",), "read as steeply tilted"),
-    # tipped too far, told of a pour that went wrong ("I tipped the jug too far and ..."): tipped far, the
-    # least of which is steeply
-    ("steeply tilted", (r"re(too far):\b(?:tilted|tipped)(?: (?:it|them|the \w+))? (?:way |much |far )?too far\b"
-                        r"(?! (?:from|away|off|to)\b)",),
+    # tipped too far (or too much), told of a pour that went wrong ("I tipped the jug too far and ...",
+    # "was it because i tilted it too much?"): tipped far, the least of which is steeply
+    ("steeply tilted", (r"re(too far|too much):\b(?:tilted|tipped)(?: (?:it|them|the \w+))? (?:(?:way |much |far )?too far\b"
+                        r"(?! (?:from|away|off|to)\b)|(?:way |far )?too much\b)",),
      'read as steeply tilted: tipped far, as a pour told says it (say "upside down" for further)'),
-    # ... and tipped too much, told ("did i tilt it too much?" after a spill told is a question of its own, below)
-    ("steeply tilted", (r"re(too much):\b(?:tilted|tipped)(?: (?:it|them|the \w+))? (?:way |far )?too much\b",),
-     'read as steeply tilted: tipped far, as a pour told says it (say "upside down" for further)'),
-    (UNCLEAR, (r"re(too much):\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:way )?too much\b",)),
-    # tipped too far: past what? (not far from the bowl)
-    (UNCLEAR, (r"re:\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:too |so |that |very )?far\b"
-               r"(?! (?:from|away|off|to)\b)",)),
+    # tipped too far, or too much: past what? (not far from the bowl)
+    (UNCLEAR, (r"re:\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:(?:too |so |that |very )?far\b"
+               r"(?! (?:from|away|off|to)\b)|(?:way )?too much\b)",)),
 )
