@@ -53,8 +53,10 @@ _NOUNS = {"splash": "splash", "splashing": "splash", "splashes": "splash", "spil
 #: The most a value may be before an outcome, asked: "how far from the centre can I pour before
 #: the liquid misses", read as "... before the liquid starts to miss" (outcomes.py's goal).
 #: (Said after the scene too: "pour water from a mug how high before it splashes out".)
-_MOST = re.compile(rf"(?:^|(?<=[,;:.?!-] )|(?<=[a-z0-9] ))(?P<how>how (?:far|high|low|steep|steeply|much|close"
-                   rf"|fast|quickly|slowly|slow)\b[^?.!,;]{{0,100}}?)"
+#: (Or as the most said: "what's the highest you can pour from before it splashes out".)
+_MOST = re.compile(rf"(?:^|(?<=[,;:.?!-] )|(?<=[a-z0-9] ))(?P<how>(?:how (?:far|high|low|steep|steeply|much|close"
+                   rf"|fast|quickly|slowly|slow)|(?:what(?: is)? )?the (?:highest|lowest|furthest|farthest|steepest|fastest|quickest"
+                   rf"|slowest|closest) (?:that )?(?:i|we|you|one|the robot) (?:can|could))\b[^?.!,;]{{0,100}}?)"
                    rf" before (?:(?P<who>it|they|the [a-z]+|anything|any of it) (?P<verb>{'|'.join(_VERBS)})"
                    rf"|(?P<noun>{'|'.join(_NOUNS)}))\b")
 

@@ -38,21 +38,31 @@ def _emptied_in(m: re.Match) -> str:
 #: Other ways of saying a goal, said as "so that ...": "keep the cup still" (not "keep the
 #: source upright": how it is held), "don't let it overflow", "make sure it does not spill"
 #: (the words they drop are fillers).
+#: The bowl's moving, as a note of what is not wanted names it ("no wobble", "no sliding"): its verb.
+_MOVING = {"wobbl": "wobble", "slid": "slide", "slip": "slip", "tip": "tip over", "mov": "move"}
 WANTING = tuple((re.compile(p), r) for p, r in (
     # asked negatively, as people doubting it ask: "is there no way to pour molasses without ...": is there a way
     (r"\bis there (?:really )?no (way|method|technique) to\b", r"is there a \1 to"),
     # asked whether a scene stops an outcome ("does pouring low stop it from splashing?"): whether it happens
-    (r"((?:^|(?<=[.?!,;:] ))(?:does|do|did|will|would|can|could|might|may|should)\b[^.?!,;:]*?)\b(?:stop|stops|keep|keeps|prevent|prevents)"
-     r" (it|them|the [a-z]+) from (?=[a-z]+ing\b)", r"\1 will \2 "),
+    (r"((?:^|(?<=[.?!,;:] ))(?:does|do|did|will|would|can|could|might|may|should)\b[^.?!,;:]*?)\b(?:(?:stop|stops|prevent|prevents)"
+     r" (it|them|the [a-z]+)(?: from)?|(?:keep|keeps) (it|them|the [a-z]+) from) (?=[a-z]+ing\b)", lambda m: f"{m.group(1)} will {m.group(2) or m.group(3)} "),
     (r"\bkeep(?:s|ing)? (the (?!source\b)[a-z]+) (still|steady|in place|put)\b", r"so that \1 stays \2"),
     (r"\b(?:do not|does not|never) lets? (it|them|the [a-z]+|any(?: of it)?|a drop|a single drop) ", r"so that \1 does not "),
     # a note of what is wanted before asking how ("no splashing, how do I pour"): so that nothing spills
     (r"(?:^|(?<=[,;:.!?] )|(?<= - ))no (?:spill|spills|spilling|splash|splashes|splashing|mess|drips|dripping)"
      r"(?= *(?:[,;:.!?]| - ).*\bhow (?:do|should|can|would)\b)", "so that nothing spills"),
+    # ... or the bowl's moving ("no wobble, what settings would do that"): so that it does not move so
+    (r"(?:^|(?<=[,;:.!?] )|(?<= - ))no (wobbl|slid|slip|tip|mov)(?:e|es|ing|ping|ement|s)?(?: over)?"
+     r"(?= *(?:[,;:.!?]| - ).*\b(?:how (?:do|should|can|would)|what (?:settings?|height|tilt|angle|speed|pour)\b))",
+     lambda m: f"so that the bowl does not {_MOVING[m.group(1)]}"),
     (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:the )?[a-z]+ (?:not|never) touching (?:the )?[a-z]+"
      r"(?= *(?:[,;:.!?]| - ).*\bhow (?:do|should|can|would)\b)", "so that the jug does not touch the bowl"),
     # "is there any way to pour where the container never touches the bowl": so that it does not
     (r"\b((?:any|a|some) way to pour(?: it)?) where (?=(?:it|the [a-z]+|nothing|none)\b)", r"\1 so that "),
+    # a drop got on a place, or any of it getting there: landing there ("without getting a single drop on the
+    # tablecloth", "without any of it getting on the floor")
+    (r"\bwithout getting (?:a single|one single|even a|a|one) (?:drop|drip|speck|bit)s? (?=(?:on|onto) )", "without getting any "),
+    (r"\bwithout any(?: of it)? getting (?=(?:on|onto) )", "without any of it landing "),
     # "without it making a mess": as "without making a mess"
     (r"\bwithout (?:it|them|that) (?=making (?:a |any |much of a )?mess\b)", "without "),
     # "keep the bowl from sliding", "stop it from splashing"
@@ -86,9 +96,10 @@ WANTING = tuple((re.compile(p), r) for p, r in (
      r" (?=(?:it|they|the [a-z]+|nothing|none|no [a-z]+) )", r"\1 so that "),
     # "for all the oil coming out", as learners of English say it: so that it all comes out
     (r"\bfor (all (?:of )?the [a-z]+|it all|all of it|everything) (?:coming|to come) out\b", r"so that \1 comes out"),
-    # "I want to pour all the broth into the bowl": so that it all goes in
+    # "I want to pour all the broth into the bowl", "my goal is to transfer all the sauce ...": so that it all goes in
     # (where it comes from kept, as the pour: "all the water from a full jug into the bowl")
-    (r"\b(?:i|we) (?:want|need|would like) to (?:pour|get|put|transfer) (all (?:of )?the [a-z]+|it all|all of it|everything|every drop)"
+    (r"\b(?:(?:i|we) (?:want|need|would like)|(?:my|our|the) (?:goal|aim) is) to (?:pour|get|put|transfer) (all (?:of )?the [a-z]+|it all"
+     r"|all of it|everything|every drop)"
      r"(?: (from (?:the |a |my )?(?:[a-z]+ )?[a-z]+))?(?= (?:in|into)\b)", lambda m: f"pouring {m.group(2)} so that {m.group(1)} goes"
      if m.group(2) else f"so that {m.group(1)} goes"),
     # "so that none is wasted": so that nothing spills

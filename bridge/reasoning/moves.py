@@ -27,11 +27,16 @@ DONE = (r"(?: (?!(?:and|then|but|or|pour\w*)\b)\w+){0,2} (?:(?:done|finished|thr
 MOVES: tuple[tuple, ...] = (
     # done pouring: after the pour ("when I'm done pouring, pull it away fast"); a move away said
     # before it is done is the move away, as the vocabulary's pour ends when the source moves away
-    ("after pour", (rf"re(done|finish|through|stop):\b(?:when|once|after|as soon as){DONE}",)),
+    ("after pour", (rf"re(done|finish|through|stop):\b(?:when|once|after|as soon as){DONE}",
+                    # or the pour itself done: "after the pouring stops"
+                    r"re(stops|stopped|ends|ended|over|done|finished):\b(?:when|once|after|as soon as) the pour(?:ing)? (?:has |is )?"
+                    r"(?:stops|stopped|ends|ended|over|done|finished)\b(?! (?:from|at|over|above|near|off)\b)")),
     ("hedge", (rf"re(done|finish|through|stop):\b(?:before|until){DONE}",),
      "read as nothing: the vocabulary's pour ends when the source moves away; how much is poured by then is not said"),
     # where the pour itself starts is where it pours, not the start pose before the move in
-    ("pour", (r"re(starts|begins|happens|takes place):\bthe pour(?:ing)? (?:starts|begins|happens|takes place)(?= (?:at|from)\b)",)),
+    # (and the pour done from a place is poured from it: "when the pour is done from higher up", not its end)
+    ("pour", (r"re(starts|begins|happens|takes place):\bthe pour(?:ing)? (?:starts|begins|happens|takes place)(?= (?:at|from)\b)",
+              r"re(done):\bthe pour(?:ing)? (?:is|was|gets|got|is being) done(?= (?:from|at|over|above|near|off)\b)")),
     # on the way in or out: the move in or away ("much faster on the way out")
     ("approach", (r"re(way):\bon (?:the|its|their|his|her|my) way (?:in|over|there)\b",)),
     ("retreat", (r"re(way):\bon (?:the|its|their|his|her|my) way (?:out|back|away)\b",)),

@@ -28,8 +28,9 @@ NEARNESS: tuple[tuple, ...] = (
                       r"(?:destination|bowl))?\b",)),
     # poured into (or on) one side of the bowl ("into the side of it"), or from right above its edge: over its edge
     ("near the rim", (r"re(one side|the side|one edge|right above|directly above|right over|onto):\b(?:in|into|onto) (?:just |only )?(?:one|the) (?:side|edge) of (?:it|the (?:destination|bowl))\b"
-                      # (landing on one side, the bowl's: "pour heavy stuff on one side", not "off to one side")
-                      r"|(?<!off )\b(?:on|onto) (?:just |only )?one side\b(?! of\b)"
+                      # (landing on one side, the bowl's: "pour heavy stuff on one side", "into one side only",
+                      # not "off to one side")
+                      r"|(?<!off )\b(?:on|onto|into) (?:just |only )?one side\b(?! of\b)"
                       r"|(?<!off )\bon (?:just |only )?one (?:side|edge) of (?:it|the (?:destination|bowl))\b"
                       r"|\bonto (?:its|the (?:destination|bowl)s?) (?:edge|rim|lip)\b"
                       r"|\b(?:right|directly) (?:above|over) (?:the |its )?(?:destination |bowl )?(?:edge|rim|lip)\b(?! of\b)",)),

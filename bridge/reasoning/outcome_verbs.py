@@ -111,6 +111,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"(?: (?:than|from) where (?:it|they) (?:started|was|were|began|stood))?|(?:end|ends|ended) up somewhere else", STILL, True),
     (r"(?:slid\w*|slip(?:s|ped|ping)?\b|shift\w*|budg\w*|wobbl\w*|shimm(?:y|ies|ied|ying)\b|jitter\w*|judder\w*|teeter\w*|trembl\w*|quiver\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
      r"|jostl\w*|rock(?:s|ed|ing)?|(?:shak(?:e|es|ing)|shook)(?! (?:it|them)\b)|translat\w*|drift\w*|creep\w*|scoot\w*"
+     # turning where it stands ("can a bowl spin around"), not a source turned ("spin the bottle")
+     r"|(?:spin|spins|spinning|spun|swivel\w*)(?! (?:it|them|the \w+)\b)(?: (?:a)?round| about)?"
      # the bowl pushed by the stream, said with where it goes ("will the stream push them across the table")
      r"|(?:push|shov)(?:es|e|ed|ing)? (?:it|them|the (?:bowl|bowls|destination|dish|container)) (?:across|along|around|about|sideways|aside|away)\b"
      # sent flying, itself: "does the bowl go flying" (not "go flying out of the bowl": thrown out)

@@ -82,7 +82,8 @@ _PART_OF = re.compile(r"\b(?:most|all|any|some|much|half|none|part|a lot|a bit|a
 #: spill"): the outcome's words, not an amount of liquid in the scene.
 _QUANTIFIERS = {*"much most some any all little none nothing no half lots plenty less more every each last drop drops".split()}
 #: Once the pour is done, said between two outcomes asked: "... once it's poured or ...".
-_ONCE = r"(?: (?:once|after|when) (?:it is |it has been |it )?(?:poured|done|finished|in))?"
+_ONCE = (r"(?: (?:once|after|when) (?:(?:it is |it has been |it )?(?:poured|done|finished|in)|(?:i|we|you) (?:stop|finish|am done|are done)"
+         r"(?: pouring| tipping| tilting|(?! (?:pouring|tipping|tilting)\b))|the pour(?:ing)?(?: (?:stops|ends|is done|is over|is finished))?))?")
 #: What joins a second outcome to the one before: "spill or overflow", "go in but then bounce back out".
 _JOINED = r"(?:, or|, and|,|or|and|nor|but then|and then|but|then|instead of|rather than)"
 #: A second outcome said as what happens in place of the first: "dribble down the outside instead of going in".
@@ -155,11 +156,12 @@ def _patterns() -> tuple[re.Pattern, ...]:
     # what is asked, or wanted, next to it: "will it spill or overflow?", "without spilling or
     # tipping the bowl over"
     # ("does it stay in there once it's poured or slosh back out": after the pour, when it is judged)
-    more = Cued(rf"\boutcome{_ONCE} ?{_JOINED}? ?(?:(?:will|does|do|would|even|just|only|mostly|mainly|largely|partly|never|not|all) ){{0,2}}(?:it |the \w+ |some |any |much )?"
+    more = Cued(rf"\boutcome{_ONCE} ?{_JOINED}? ?(?:(?:will|does|do|would|even|just|only|mostly|mainly|largely|partly|never|not|all|eventually|finally|later|then) ){{0,2}}(?:it |the \w+ |some |any |much )?"
                 rf"(?:{verbs})\b{end}", ("outcome",))
     # an outcome said first, with no word that asks: "spills when poured from high?", "sloshing
-    # over the rim if tilted steeply?", "pour high, spill or not", "spill or no?"
-    bare = re.compile(rf"(?:^|(?<=[,:;.?!\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014])|(?<=\bpour )|(?=[a-z]+ or (?:not|no) *[?.!]* *$))(?:(?P<v0>{filled(OUTCOMES[0][0])})|(?P<v1>spill\w*|spilt|splash\w*|drip\w*"
+    # over the rim if tilted steeply?", "pour high, spill or not", "spill or no?"; or ending a note
+    # after the pour or the rim it is near ("oil into bowl high pour splash", "jug near the rim spill")
+    bare = re.compile(rf"(?:^|(?<=[,:;.?!\u2013\u2014] )|(?<= - )|(?<=[,:;\u2013\u2014])|(?<=\bpour )|(?<=\brim )|(?=[a-z]+ or (?:not|no) *[?.!]* *$))(?:(?P<v0>{filled(OUTCOMES[0][0])})|(?P<v1>spill\w*|spilt|splash\w*|drip\w*"
                       rf"|leak\w*|slosh\w*|dribbl\w*)){end}(?: or not| or no)?(?: expected| likely)?(?= (?:if|when|while)\b| *[?.!,]* *$)")
     return asked, nominal, goal, more, bare
 

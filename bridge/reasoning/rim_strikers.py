@@ -1,7 +1,8 @@
 """What strikes the bowl's rim, said before a question is read (wording.normalising): the lip
 (rim, edge) of the source, which is its spout ("does the jug's lip hit the bowl": the source's contact,
-asked), and the liquid, whose striking is no outcome ("the stream hit the edge of the bowl and
-jumped out": what it did next is read)."""
+asked), the source said to touch the rim as the scene of another question ("if the jug touches the
+rim, will the bowl tip?": poured low, near the rim), and the liquid, whose striking is no outcome
+("the stream hit the edge of the bowl and jumped out": what it did next is read)."""
 from __future__ import annotations
 
 import re
@@ -19,7 +20,7 @@ def lip_of_source(text: str, said: dict[str, None]) -> str:
     """`text` with the lip of the source said as its spout ("the jug lip", "the lip of the flask"
     it is poured from): a part of the source, not the bowl's rim. Only a lip named as what
     strikes the bowl is ("does the jug's lip hit the bowl"): never one said as a place
-    (_AT_A_PLACE), nor one said to rest on the bowl (a touch in the scene, which no proposition holds)."""
+    (_AT_A_PLACE), nor one said to rest on the bowl (a touch in the scene: source_on_rim's)."""
     if not re.search(r"\b(?:lip|rim|edge)\b", text):
         return text
     for pattern in _lips():
@@ -38,6 +39,39 @@ def _lips() -> tuple[re.Pattern, ...]:
     return (re.compile(rf"{_AT_A_PLACE}\b((?:(?:the|its|a|my|your) |(?:^|(?<=[.,;:!?] )))(?:{sources}) )(?P<part>lip|rim|edge)\b"
                        rf"(?={strikes})"),
             re.compile(rf"{_AT_A_PLACE}\b((?:the|its|a) )(?P<part>lip|rim|edge)(?= of (?:the |a |an |my |this |that )?(?:{sources}){strikes})"))
+
+
+def source_on_rim(text: str, said: dict[str, None]) -> str:
+    """`text` with the source said to touch (rest on, lean on) the bowl's rim, as the scene of another
+    question ("if the beaker touches the rim of the dish, will the dish tip?", "pitcher touching bowl
+    edge when pouring, the bowl will fall?"), said as poured low near the rim: the scenes in which a
+    source meets the rim. No proposition says a touch; whether it touches is asked as itself ("does
+    the cup touch the rim?", "bottle touching bowl rim?"), and a touch not wanted ("without the jar
+    touching the rim") is a goal: neither is rewritten."""
+    if not re.search(r"\b(?:rim|edge)\b", text):
+        return text
+
+    def low_near_rim(m: re.Match) -> str:
+        if re.search(r"\b(?:not|never|no|without|want|wants|wanted|avoid|avoiding|stop|prevent)\b(?: \w+){0,3} ?$",
+                     text[max(0, m.start() - 40):m.start()]):
+            return m.group(0)           # "without the jar touching the rim": a goal
+        touch = f"{m.group('part') or ''} {m.group('touch')}".strip()
+        said.setdefault(f"{touch}: read as low near the rim, where the source meets it (no proposition says a touch)")
+        return f"{m.group('source')} low near the rim"
+    return _on_rim().sub(low_near_rim, text)
+
+
+@lru_cache(maxsize=None)
+def _on_rim() -> re.Pattern:
+    """A source touching the rim, with something else said after it (not the touch alone, asked)."""
+    sources = alternation(["container", "source", *(w for w in names("bowl") if w not in _DESTINATIONS)])
+    destinations = alternation(w for w in _DESTINATIONS if w not in ("container",))
+    return re.compile(
+        rf"(?P<source>\b(?:(?:the|my|a|its|your) )?(?:{sources}))(?P<part> (?:spout|lip|rim|edge|mouth))? "
+        rf"(?P<touch>(?:is touch|(?:(?:is|keeps|keep) )?(?:touches|touching|contacts|contacting|makes contact with|is in contact with"
+        rf"|rests on|resting on|leans on|leaning on|sits on|sitting on)) (?:the |its |a )?(?:(?:{destinations}) )?(?:rim|edge)"
+        rf"(?: of (?:the |a |my |its )?(?:{destinations}))?)\b(?=[,.;:!?]? *(?:(?:when|while|during)\b|[,.;:!?] *)?"
+        rf"(?!(?:ok|okay|fine|alright|all right)\b)[a-z])")
 
 
 def stream_striking(text: str, said: dict[str, None]) -> str:

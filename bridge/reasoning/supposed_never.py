@@ -3,7 +3,9 @@ touches the bowl, can the bowl still tip over?"): said as "does not", the
 way the outcomes are read when supposed not to happen ("if the jug doesn't
 touch the bowl, ..."): both are asked. Said as a statement with a tag that
 asks it ("the jug never touches the bowl if i pour from the side, right?"),
-it is asked: "does the jug not touch the bowl"."""
+it is asked: "does the jug not touch the bowl". A condition so said and not ended
+with a comma before the question is ended with one ("if the pitcher never touches the bowl can the bowl
+still tip over")."""
 from __future__ import annotations
 
 import re
@@ -19,10 +21,16 @@ _NEVER = re.compile(rf"\b(if|when|as long as|so long as) ((?:the|a|my|your|it)\b
 _TAGGED = re.compile(rf"^((?:the|a|my|your) [a-z]+) never ({'|'.join(_VERBS)})(?:es|s)?\b(?=.*,? (?:right|yes|correct|yeah|no|eh)\?+$)")
 
 
+#: A condition that an outcome does not happen, ended with no comma before what is asked ("if the pitcher
+#: doesn't touch the bowl can the bowl still tip over"): the comma put back.
+_UNENDED = re.compile(r"\b((?:if|when) (?:the|a|my|your|it)\b(?: [a-z]+){0,2}? (?:does|do|did) not [a-z]+ (?:(?:the|a|my|your|its) )?"
+                      r"[a-z]+)(?= (?:can|could|will|would|does|do|is|are|might|should) )")
+
+
 def never_as_not(text: str) -> tuple[str, tuple[str, ...]]:
     """Normalised `text` with an outcome supposed never to happen said as "does not", and what is said back."""
     said = tuple(f"never {m.group(0).split(' never ', 1)[1]}: read as does not {m.group(3)}" for m in _NEVER.finditer(text))
     if tagged := _TAGGED.match(text):          # "the jug never touches the bowl ..., right?"
         said += (f"{tagged.group(0)}: read as does {tagged.group(1)} not {tagged.group(2)}",)
         text = f"does {tagged.group(1)} not {tagged.group(2)}{text[tagged.end():]}"
-    return _NEVER.sub(r"\1 \2 does not \3", text), said
+    return _UNENDED.sub(r"\1,", _NEVER.sub(r"\1 \2 does not \3", text)), said

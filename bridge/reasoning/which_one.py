@@ -6,7 +6,8 @@ asked of the scene said first, the other being said back as not read
 (comparisons.py), as "does it slide"; "which" alone too, its verb inflected
 and said with how much ("which splashes less") or ending the question ("which splashes"). "Compare" before them is the frame
 ("compare: 30 cm vs 5 cm"), and the first named again by its number
-after them ("how much more spill at 30"), or by how its number ranks
+after them ("how much more spill at 30"), two named side by side with nothing between them
+("heavy bowl light bowl which one moves") set against each other as with "vs", or by how its number ranks
 against the other's ("20 degrees vs 160 degrees ... at the smaller
 angle"), is the one read, said back; the other named so is refused."""
 from __future__ import annotations
@@ -37,6 +38,10 @@ _WHICH = re.compile(r"\bwhich (?:"
 _AND_WHICH = re.compile(rf"(?<=\band ){_WHICH.pattern}")
 
 
+#: Two scenes named side by side with nothing between them, then which one asked, as a note lists them
+#: ("heavy bowl light bowl which one moves"): set against each other.
+_SIDE_BY_SIDE = re.compile(r"^((?:a |the )?[a-z]+ (bowl|jug|cup|bottle|pitcher|glass|mug|dish|pour)) ((?:a |the )?[a-z]+ \2)"
+                           r"(?=,? which\b)")
 _ONE_OF = re.compile(r"\b(?:does|do|will|would|can) one of them (?P<verb>[a-z]+)\b(?: (?:and|but) not the other\b)?")
 
 
@@ -47,8 +52,11 @@ _NUMBER = r"-?\d+(?:\.\d+)?"
 def which_one(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with "which one <outcome> more", after two scenes
     set against each other, read as "does it <outcome>", and what is said back."""
-    set_against = _SET_AGAINST.search(text)
     said: tuple[str, ...] = ()
+    if pair := _SIDE_BY_SIDE.match(text):        # "heavy bowl light bowl which one moves"
+        said = (f"{pair.group(0)}: read as {pair.group(1)} vs {pair.group(3)}",)
+        text = f"{pair.group(1)} vs {pair.group(3)}{text[pair.end():]}"
+    set_against = _SET_AGAINST.search(text)
     if set_against and (frame := _COMPARE.search(text)):
         said += (f"{frame.group(0).strip(' :')}: read as nothing: two scenes set against each other, "
                  "the one said first answered",)

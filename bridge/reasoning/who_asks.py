@@ -11,12 +11,19 @@ words ("I am a/an ...", "as a/an ..."), or one to three words and "here"
 ("pharmacy tech here"), the last of them a person by WordNet's first two
 senses of it (wordnet.py: "potter", "cook", "vendor"). "I'm a bit
 worried ..." names no one, and is read as any other words; so are words
-holding a number, a negation or a verb of pouring or of an outcome."""
+holding a number, a negation or a verb of pouring or of an outcome.
+
+So is whom the question is said to, named first ("Honey, if I'm pouring
+coffee ..."): a term of address before a comma and a word that starts a
+question. A liquid's name so said ("honey", "sugar") is a term of address
+only where another liquid is named after it ("Honey, will it drip?" asks
+of honey)."""
 from __future__ import annotations
 
 import re
 from functools import lru_cache
 
+from pantarhei.bridge.reasoning.earlier_pour import says_a_liquid
 from pantarhei.bridge.reasoning.outcome_verbs import outcome_verb
 from pantarhei.bridge.reasoning.wordnet import is_a
 
@@ -27,6 +34,13 @@ _SAID = "read as nothing: who asks says nothing of the pour"
 #: Words no self-introduction holds: a negation, a verb of pouring, a word of the question itself.
 _NOT_WHO = re.compile(r"\b(?:not|no|never|pour\w*|tilt\w*|tip\w*|decant\w*|fill\w*|empty\w*|spill\w*|if|when|will|would"
                       r"|does|do|is|are|can|what|how|why|should|it|that|this|the|my|and|or|with|from|into)\b")
+
+
+#: A term of address said first, then the question: "honey, if i am pouring ...", "love, will it ...".
+_ADDRESS = re.compile(r"^(?P<who>honey|hun|hon|sweetie|sweetheart|darling|dear|love|babe|sugar|buddy|pal|mate|guys)"
+                      r"(?:,| -) +(?=(?:if|i|can|could|will|would|what|how|should|when|is|are|do|does|did|why|which|where)\b)")
+#: The terms of address that also name a liquid.
+_LIQUIDS = frozenset(("honey", "sugar"))
 
 
 @lru_cache(maxsize=None)
@@ -41,6 +55,8 @@ def _introduction() -> re.Pattern:
 def asker_said(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) without a self-introduction at its start (the
     module's docstring), and what is said back of it."""
+    if (to := _ADDRESS.match(text)) and (to.group("who") not in _LIQUIDS or says_a_liquid(text[to.end():])):
+        return text[to.end():], (f"{to.group('who')}: read as nothing: said to whom the question is asked",)
     if " here" not in text and not re.match(r"(?:\S+ +)?(?:i am|as) an? ", text):     # cued: no compiling otherwise
         return text, ()
     m = _introduction().match(text)

@@ -32,7 +32,7 @@ from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.asides import restated
 from pantarhei.bridge.reasoning.earlier_pour import told
 from pantarhei.bridge.reasoning.every_pour import as_every_pour
-from pantarhei.bridge.reasoning.rim_strikers import lip_of_source, stream_striking
+from pantarhei.bridge.reasoning.rim_strikers import lip_of_source, source_on_rim, stream_striking
 from pantarhei.bridge.reasoning.fullness import refuse_bowl_fill
 from pantarhei.bridge.reasoning.little_vessels import refuse_little
 from pantarhei.bridge.reasoning.more_in import more_in
@@ -184,7 +184,7 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
                   lambda m: said.setdefault(f"{m.group(0)}: read as {m.group(2)}") or m.group(2), text)
     # a second property said after a comma of the body the first is said of: "the bowl is paper, very light"
     text = re.sub(rf"\b((?:bowl|dish|basin|jug|cup|bottle|pitcher|mug|jar)s? (?:is|are|was|were) [a-z]+),"
-                  rf"(?= (?:very |really |quite |super |so )?(?:{_PROPERTIES})\b)", r"\1 and", text)
+                  rf"(?= (?:very |really |quite |super |so |pretty |fairly |rather |kinda )?(?:{_PROPERTIES})\b)", r"\1 and", text)
     # a limit asked ("how close is too close", "how high is too high"): the value asked, not one said
     text = re.sub(r"\bhow (close|near|high|low|far|steep|fast|slow) is too \1\b",
                   lambda m: said.setdefault(f"{m.group(0)}: read as how {m.group(1)} can i go") or f"how {m.group(1)} can i go", text)
@@ -249,6 +249,7 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text, again = restated(_normalised(text))         # "-2 cm (i.e. below the rim)"
     text = lip_of_source(text, said)                   # "does the jug lip touch the bowl": its spout
     text = stream_striking(text, said)                 # "the stream hit the edge and bounced out": bounced out
+    text = source_on_rim(text, said)                   # "if the jug touches the rim, will it tip": low, near the rim
     text = as_every_pour(text, said)                   # "if I don't hold the bowl": every pour's, nothing
     # what is going to happen, said subject first: "stock gonna land in it?" asks "will stock land in it?"
     text = re.sub(r"(?:^|(?<=[,;:.?!] ))((?:the |my |a |this |that )?(?!i\b|we\b|you\b)[a-z]+|it|they) (?:is |are )?gonna (?=[a-z]+\b)",
