@@ -42,19 +42,28 @@ def _lips() -> tuple[re.Pattern, ...]:
 
 
 def source_on_rim(text: str, said: dict[str, None]) -> str:
-    """`text` with the source said to touch (rest on, lean on) the bowl's rim, as the scene of another
-    question ("if the beaker touches the rim of the dish, will the dish tip?", "pitcher touching bowl
-    edge when pouring, the bowl will fall?"), said as poured low near the rim: the scenes in which a
-    source meets the rim. No proposition says a touch; whether it touches is asked as itself ("does
-    the cup touch the rim?", "bottle touching bowl rim?"), and a touch not wanted ("without the jar
-    touching the rim") is a goal: neither is rewritten."""
+    """`text` with the source said to touch (rest on, lean on, strike) the bowl's rim, as the scene of
+    another question ("if the beaker touches the rim of the dish, will the dish tip?", "pitcher touching
+    bowl edge when pouring, the bowl will fall?", "bowl wobble when jug hits edge?"), said as poured low
+    near the rim: the scenes in which a source meets the rim. Only a touch in a condition ("if", "when",
+    "while") or one said as a note's first clause ("bottle touching bowl rim spill") is so read, with
+    something else asked before or after it. No proposition says a touch; whether it touches is asked as itself
+    ("does the cup touch the rim?", "bottle touching bowl rim?", "the cup touches the rim when I pour
+    low?"), and a touch not wanted ("without the jar touching the rim") is a goal: neither is rewritten."""
     if not re.search(r"\b(?:rim|edge)\b", text):
         return text
 
     def low_near_rim(m: re.Match) -> str:
-        if re.search(r"\b(?:not|never|no|without|want|wants|wanted|avoid|avoiding|stop|prevent)\b(?: \w+){0,3} ?$",
-                     text[max(0, m.start() - 40):m.start()]):
+        before = re.split(r"[,.;:!?]| - ", text[:m.start()])[-1]
+        if re.search(r"\b(?:not|never|no|without|want|wants|wanted|avoid|avoiding|stop|prevent)\b(?: \w+){0,3} ?$", before):
             return m.group(0)           # "without the jar touching the rim": a goal
+        condition = re.search(r"\b(?:if|when|whenever|while|once)\b(?: \w+){0,4} ?$", before)
+        if not condition and (before.strip() or not m.group("touch").startswith(("touching", "contacting", "resting", "leaning",
+                                                                                  "sitting", "is "))):
+            return m.group(0)           # "the cup touches the rim when I pour low?": the touch asked
+        if re.fullmatch(r"[?.!]*", text[m.end():].strip()) and not (
+                condition and re.sub(r"\b(?:what|happens|happen|would|will|so|and|then)\b", "", before[:condition.start()]).strip()):
+            return m.group(0)           # "what if the jug hits the rim?": whether it does, asked
         touch = f"{m.group('part') or ''} {m.group('touch')}".strip()
         said.setdefault(f"{touch}: read as low near the rim, where the source meets it (no proposition says a touch)")
         return f"{m.group('source')} low near the rim"
@@ -63,15 +72,16 @@ def source_on_rim(text: str, said: dict[str, None]) -> str:
 
 @lru_cache(maxsize=None)
 def _on_rim() -> re.Pattern:
-    """A source touching the rim, with something else said after it (not the touch alone, asked)."""
+    """A source touching (or striking) the rim, then what else is said (or the question's end)."""
     sources = alternation(["container", "source", *(w for w in names("bowl") if w not in _DESTINATIONS)])
     destinations = alternation(w for w in _DESTINATIONS if w not in ("container",))
     return re.compile(
         rf"(?P<source>\b(?:(?:the|my|a|its|your) )?(?:{sources}))(?P<part> (?:spout|lip|rim|edge|mouth))? "
         rf"(?P<touch>(?:is touch|(?:(?:is|keeps|keep) )?(?:touches|touching|contacts|contacting|makes contact with|is in contact with"
-        rf"|rests on|resting on|leans on|leaning on|sits on|sitting on)) (?:the |its |a )?(?:(?:{destinations}) )?(?:rim|edge)"
+        rf"|rests on|resting on|leans on|leaning on|sits on|sitting on|hits|bumps|knocks|clips|strikes)) (?:the |its |a )?"
+        rf"(?:(?:{destinations}) )?(?:rim|edge)"
         rf"(?: of (?:the |a |my |its )?(?:{destinations}))?)\b(?=[,.;:!?]? *(?:(?:when|while|during)\b|[,.;:!?] *)?"
-        rf"(?!(?:ok|okay|fine|alright|all right)\b)[a-z])")
+        rf"(?!(?:ok|okay|fine|alright|all right)\b)[a-z]| *[?.!]* *$)")
 
 
 def stream_striking(text: str, said: dict[str, None]) -> str:
