@@ -150,8 +150,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     # sitting at the source's lip: kept in it ("or does it just sit at the lip")
     (r"(?:sit|sits|sitting|sat|hang|hangs|hanging|hung) (?:at|on|in) (?:the|its) (?:lip|spout|mouth|neck)\b",
      ("liquid_leaves_source",), True),
-    # stayed inside, no bowl said: kept in the source ("a bit of the oil stayed inside")
-    (r"(?:stayed|remained|stuck) (?:inside|behind|in (?:the|my|a|its) (?!(?:[a-z]+ )?(?:bowl|destination)s?\b)(?:[a-z]+ )?[a-z]+)\b"
+    # stayed inside, no bowl said: kept in the source ("a bit of the oil stayed inside", "it just sat in the jar")
+    (r"(?:stayed|remained|stuck|(?:just )?sat) (?:inside|behind|in (?:the|my|a|its) (?!(?:[a-z]+ )?(?:bowl|destination)s?\b)(?:[a-z]+ )?[a-z]+)\b"
      r"(?! (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|destination)s?\b)",
      ("liquid_leaves_source",), True),
     # left inside, no bowl said: kept in the source ("there was still a bit left inside at the end")
