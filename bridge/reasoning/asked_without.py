@@ -3,7 +3,9 @@ way into the bowl without any of it going onto the tablecloth?" asks both
 (whether it goes in, whether any spills), as "will it go in and will any of
 it go onto the tablecloth" would; it is no goal, since the question asks
 whether it happens so. Whether someone can pour so ("can I pour it in
-without spilling?") is seeking.if_it_can's, and "without tilting" a manner."""
+without spilling?") is seeking.if_it_can's, "without tilting" a manner, and an
+outcome wanted with "so" ("do I need to tip it so the milk goes in without
+splashing") a goal."""
 from __future__ import annotations
 
 import re
@@ -17,7 +19,7 @@ from pantarhei.bridge.reasoning.vessels import filled
 def _pattern() -> re.Pattern:
     verbs = "|".join(f"(?:{filled(v)})" for v, _, _ in OUTCOMES)
     return re.compile(
-        rf"(\b(?:will|would|does|do|did|might)\b(?: [a-z]+){{0,12}}? (?:{verbs})\b(?: [a-z]+){{0,6}}?) without"
+        rf"(\b(?:will|would|does|do|did|might)\b(?: (?!so\b)[a-z]+){{0,12}}? (?:{verbs})\b(?: [a-z]+){{0,6}}?) without"
         rf"(?= (?:(?:any|a single|a|one) )?(?:(?:drop|bit)s? )?(?:of (?:it|them|the [a-z]+) )?(?:it |them |the [a-z]+ )?"
         rf"(?:ever |even )?(?:getting |being )?(?:{verbs})\b)")
 

@@ -15,13 +15,15 @@ from __future__ import annotations
 import re
 
 from pantarhei.bridge.reasoning.outcome_verbs import outcome_verb
+from pantarhei.bridge.reasoning.starting import started_as_done
 
 #: What an outcome happens to, said first: "it", "the bowl", "all the water", "some of it".
 _SUBJECT = (r"(?:it|they|(?:all |some |any |most |half )?(?:of )?(?:the |my |this )?(?:light |heavy |slippery |plastic |glass "
             r"|metal |full |empty )?(?:bowl|water|liquid|milk|juice|oil|soup"
             r"|tea|coffee|stuff|jug|cup|bottle|pitcher)|(?:some|any|all|none) of it)")     # (not "any tips?")
 #: Verbs of an outcome said with a word after them, which outcome_verb does not take alone.
-_PHRASAL = frozenset(("go", "come", "stay", "get", "land", "end", "fall"))
+_PHRASAL = frozenset(("go", "come", "stay", "get", "land", "end", "fall", "goes", "comes", "stays", "gets", "lands", "ends",
+                      "falls"))
 _CLAUSE = re.compile(rf"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<subject>{_SUBJECT}) (?P<verb>[a-z]+)\b(?P<rest>[^,.;:!?]*)"
                      r"(?:,? (?:yes|no|right|or not|or no))?\?")     # (a tag after it: "..., yes?")
 _AUX = re.compile(r"\b(?:will|would|does|do|did|is|are|was|were|can|could|might|may|should|shall|gonna)\b")
@@ -64,8 +66,10 @@ _WHY = re.compile(rf"^(?P<why>why|how come) (?P<subject>{_SUBJECT}) (?:not |neve
 
 def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with "does" before each yes-or-no clause asked
-    without its auxiliary (the module's docstring), and what is said back."""
-    said: list[str] = []
+    without its auxiliary (the module's docstring), and what is said back; an
+    outcome said as starting is read as the outcome first (starting.py)."""
+    text, begun = started_as_done(text)
+    said: list[str] = list(begun)
 
     def restore(m: re.Match) -> str:
         verb = m.group("verb")

@@ -7,9 +7,9 @@ particles); the share of it said spans a range of particles, read as the
 amount of liquid whose range holds the most of it (half: 75 to 100
 particles, much liquid), said back (SAID). A rewrite of words.py's kind
 (see wording.py): `spans(words)` gives each phrase and the words it is
-read as. A share said of the bowl ("the bowl was only half full"), and how
-full the bowl gets asked ("how full can my bowl get"), are refused: every
-pour's bowl is empty before it.
+read as. A share said of the bowl ("the bowl was only half full", "a nearly
+full bowl"), and how full the bowl gets asked ("how full can my bowl get"),
+are refused: every pour's bowl is empty before it.
 """
 from __future__ import annotations
 
@@ -68,6 +68,8 @@ class Fullness:
         out: list[tuple[int, int, tuple[str, ...]]] = []
         i = 0
         while i < len(words):
+            if words[i] == "full" and words[i + 1:i + 2] and words[i + 1] in _HELD_BOWLS and words[i + 2:i + 3] != ["of"]:
+                raise UserError(f"could not place \"{' '.join(words[max(0, i - 1):i + 2])}\": {HOLDS_LIQUID}")   # "a nearly full bowl"
             share, end = _filled_to(words, i) if words[i] in _FILLING else (None, i)
             share, end = (share, end) if share is not None else _share(words, i)
             if share is not None and _of_the_bowl(words, i):

@@ -46,7 +46,8 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     # asked whether a scene stops an outcome ("does pouring low stop it from splashing?"): whether it happens
     (r"((?:^|(?<=[.?!,;:] ))(?:does|do|did|will|would|can|could|might|may|should)\b[^.?!,;:]*?)\b(?:(?:stop|stops|prevent|prevents)"
      r" (it|them|the [a-z]+)(?: from)?|(?:keep|keeps) (it|them|the [a-z]+) from) (?=[a-z]+ing\b)", lambda m: f"{m.group(1)} will {m.group(2) or m.group(3)} "),
-    (r"\bkeep(?:s|ing)? (the (?!source\b)[a-z]+) (still|steady|in place|put)\b", r"so that \1 stays \2"),
+    (r"\bkeep(?:s|ing)? (the (?!source\b)[a-z]+) (?:(?:completely|totally|perfectly|absolutely|dead|really|nice and) )?"
+     r"(still|steady|in place|put)\b", r"so that \1 stays \2"),
     (r"\b(?:do not|does not|never) lets? (it|them|the [a-z]+|any(?: of it)?|a drop|a single drop) ", r"so that \1 does not "),
     # a note of what is wanted before asking how ("no splashing, how do I pour"): so that nothing spills
     (r"(?:^|(?<=[,;:.!?] )|(?<= - ))no (?:spill|spills|spilling|splash|splashes|splashing|mess|drips|dripping)"
@@ -63,6 +64,10 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     # tablecloth", "without any of it getting on the floor")
     (r"\bwithout getting (?:a single|one single|even a|a|one) (?:drop|drip|speck|bit)s? (?=(?:on|onto) )", "without getting any "),
     (r"\bwithout any(?: of it)? getting (?=(?:on|onto) )", "without any of it landing "),
+    # whether one can pour so and it still goes in ("can i pour the juice from way up high and it still goes in the
+    # bowl"): so that it goes in
+    (r"(\bcan (?:i|we|you|one)\b[^.?!,;]*?) and (it|the [a-z]+) (?:still |all )?(?:goes|go|lands|land|ends up|end up)"
+     r" (?=(?:in|into|inside)\b)", r"\1 so that \2 goes "),
     # "without it making a mess": as "without making a mess"
     (r"\bwithout (?:it|them|that) (?=making (?:a |any |much of a )?mess\b)", "without "),
     # "keep the bowl from sliding", "stop it from splashing"
@@ -178,5 +183,5 @@ WANTING = tuple((re.compile(p), r) for p, r in (
      r" (?:any )?(drip|spill|splash|leak|overflow)(?:s|es)?\b(?! of\b)", r"so that it does not \1"),
     # "to avoid spilling", "prevent splashing", "minimise dripping"
     (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|minimi[sz]e|minimi[sz]ing|reduce|reducing)"
-     r" (?=(?:any )?[a-z]+ing\b)", "so that it does not "),
+     r" (?=(?:any )?(?!doing\b)[a-z]+ing\b)", "so that it does not "),      # (not "what should I avoid doing")
 ))

@@ -30,7 +30,9 @@ MOVES: tuple[tuple, ...] = (
     ("after pour", (rf"re(done|finish|through|stop):\b(?:when|once|after|as soon as){DONE}",
                     # or the pour itself done: "after the pouring stops"
                     r"re(stops|stopped|ends|ended|over|done|finished):\b(?:when|once|after|as soon as) the pour(?:ing)? (?:has |is )?"
-                    r"(?:stops|stopped|ends|ended|over|done|finished)\b(?! (?:from|at|over|above|near|off)\b)")),
+                    r"(?:stops|stopped|ends|ended|over|done|finished)\b(?! (?:from|at|over|above|near|off)\b)",
+                    # or the liquid in: "after it's already gone in"
+                    r"re(gone):\b(?:when|once|after) it (?:(?:is|has|was) )?(?:already )?gone in\b")),
     ("hedge", (rf"re(done|finish|through|stop):\b(?:before|until){DONE}",),
      "read as nothing: the vocabulary's pour ends when the source moves away; how much is poured by then is not said"),
     # where the pour itself starts is where it pours, not the start pose before the move in

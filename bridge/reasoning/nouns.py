@@ -165,6 +165,11 @@ def _naming(tokens: list[Token], j: int, roles: dict[int, str]) -> bool:
             and tokens[j].word not in _NOT_NAMING and tokens[j].clause == tokens[j + 1].clause)
 
 
+#: How old a body is, or whose, said between a value word and its noun ("a heavy old enamel bowl"):
+#: words read as nothing (everyday.txt's hedges).
+_AGED = frozenset(("old", "own"))
+
+
 #: Who has the bowls said in the plural: "our bowls" are the kind someone pours with, not both bowls.
 _OWNERS = frozenset(("our", "my", "your", "their"))
 
@@ -185,7 +190,8 @@ class Nouns:
         for j in range(n - 1, -1, -1):
             passes = j not in roles and (tokens[j].word in BETWEEN or tokens[j].word in placeable
                                          or _measured(tokens[j])        # "a heavy 2 kg bowl"
-                                         or _naming(tokens, j, roles))   # "a light ramen bowl"
+                                         or _naming(tokens, j, roles)    # "a light ramen bowl"
+                                         or tokens[j].raw.split()[-1] in _AGED and tokens[j].word == "hedg")   # "a heavy old ... bowl"
             if tokens[j].word in ("and", "or") and j + 1 < n and (tokens[j + 1].word in ARTICLES
                                                                   or j + 1 in roles):
                 passes = False          # "heavy and the destination ...", "heavy and jug ...": a new noun's

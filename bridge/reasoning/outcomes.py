@@ -82,7 +82,7 @@ _PART_OF = re.compile(r"\b(?:most|all|any|some|much|half|none|part|a lot|a bit|a
 #: spill"): the outcome's words, not an amount of liquid in the scene.
 _QUANTIFIERS = {*"much most some any all little none nothing no half lots plenty less more every each last drop drops".split()}
 #: Once the pour is done, said between two outcomes asked: "... once it's poured or ...".
-_ONCE = (r"(?: (?:once|after|when) (?:(?:it is |it has been |it )?(?:poured|done|finished|in)|(?:i|we|you) (?:stop|finish|am done|are done)"
+_ONCE = (r"(?: (?:once|after|when) (?:(?:it is |it has been |it has |it )?(?:already )?(?:gone )?(?:poured|done|finished|in)|(?:i|we|you) (?:stop|finish|am done|are done)"
          r"(?: pouring| tipping| tilting|(?! (?:pouring|tipping|tilting)\b))|the pour(?:ing)?(?: (?:stops|ends|is done|is over|is finished))?))?")
 #: What joins a second outcome to the one before: "spill or overflow", "go in but then bounce back out".
 _JOINED = r"(?:, or|, and|,|or|and|nor|but then|and then|but|then|instead of|rather than)"
@@ -150,7 +150,8 @@ def _patterns() -> tuple[re.Pattern, ...]:
         rf"|with (?P<gwith>nothing|none(?: of it)?|no (?:liquid|water|drops?|droplets?)) (?:ever |even )?"
         # the most that can be done before an outcome: "the fastest I can tip it before it starts splashing"
         rf"|before (?P<gbef>(?:it|they|the [a-z]+|anything|any of it) )(?:ever |even )?(?:starts?|begins?) (?:to )?"
-        rf"|so(?: that| as)?(?P<gsub>(?: (?!not\b)"
+        # (not "so does it slide": "so" starting a question, as "then")
+        rf"|so(?! (?:does|do|did|will|would|is|are|was|were|can|could|should)\b)(?: that| as)?(?P<gsub>(?: (?!not\b|without\b)"
         rf"[a-z]+){{0,5}}?)(?P<gnot> not| never)? (?:(?:to|will|does|do|would|can|could|all|"
         rf"any) )?)(?:{verbs})\b{end}", None)
     # what is asked, or wanted, next to it: "will it spill or overflow?", "without spilling or

@@ -141,6 +141,10 @@ class Surfaces:
                 if k == 0 or before[k - 1] in _BOWLS:
                     out.append((i - 1, i + 1, (_GRIP[words[i - 1]], "destination")))
                 continue
+            if w == "ice" and (words[i - 1:i] == ["on"] or words[max(0, i - 2):i] in (["on", "the"], ["on", "some"])) \
+                    and "like" not in words[max(0, i - 3):i]:           # ("slide away like on ice": a simile)
+                out.append((i, i + 1, ("slippery", "destination")))     # "a bowl that's on ice": it slides as on a wet one
+                continue
             if w == "wet" and not (out and i < out[-1][1]) and _wet_bowl(words, i):     # "the bowl is wet", "a wet bowl"
                 end = i + 4 if words[i + 1:i + 3] in (["in", "the"], ["on", "the"]) and words[i + 3:i + 4] and \
                     words[i + 3] in _UNDERSIDES else i + 1                   # "wet in the bottom"
@@ -151,8 +155,8 @@ class Surfaces:
             if w in _GROUND and "on" not in words[max(0, i - 4):i]:    # "pour wet concrete": the liquid
                 continue
             grip = i - 1 if i > 0 and words[i - 1] in _GRIP else (    # "a slick table", "a slick glass table",
-                i - 2 if i > 1 and words[i - 2] in _GRIP and (words[i - 1] in _MADE_OF or words[i - 1].endswith("ing"))
-                else None)                                                # ("the wet grooming table")
+                i - 2 if i > 1 and words[i - 2] in _GRIP and words[i - 1].isalpha() and words[i - 1] not in _BOWLS
+                else None)                                                # ("the wet grooming table", "a slippy overbed table")
             if grip is not None and not (out and grip < out[-1][1]):    # "a wet bar top"
                 end = i + 2 if i + 1 < len(words) and words[i + 1] in _ENDS else i + 1
                 out.append((grip, end, (_GRIP[words[grip]], "destination")))

@@ -81,7 +81,7 @@ def _on_rim() -> re.Pattern:
         rf"|rests on|resting on|leans on|leaning on|sits on|sitting on|hits|bumps|knocks|clips|strikes)) (?:the |its |a )?"
         rf"(?:(?:{destinations}) )?(?:rim|edge)"
         rf"(?: of (?:the |a |my |its )?(?:{destinations}))?)\b(?=[,.;:!?]? *(?:(?:when|while|during)\b|[,.;:!?] *)?"
-        rf"(?!(?:ok|okay|fine|alright|all right)\b)[a-z]| *[?.!]* *$)")
+        rf"(?!(?:ok|okay|fine|alright|all right|or not|or no|yes|no)\b)[a-z]| *[?.!]* *$)")
 
 
 def stream_striking(text: str, said: dict[str, None]) -> str:

@@ -320,8 +320,9 @@ _CAN_IT = Cued(r"\b(?:can|could|may) (?:it|(?:the|a|an|my|our|your|this|that) (?
                ("can ", "could ", "may "))
 
 
-#: A goal said with "so (that)" after "can I pour ...": "so it never drips", "so that nothing spills".
-_SO_THAT = re.compile(r"\bso(?: that)? (?:it|they|nothing|none|no [a-z]+|the [a-z]+) (?:never|does not|do not|will not|spills|goes)\b")
+#: A goal said with "so (that)" after "can I pour ...": "so it never drips", "so that nothing spills", "and it still goes in".
+_SO_THAT = re.compile(r"\bso(?: that)? (?:it|they|nothing|none|no [a-z]+|the [a-z]+) (?:still )?(?:never|does not|do not|will not|spills|goes)\b"
+                      r"|\band (?:it|the [a-z]+) (?:still |all )?(?:goes|go|lands|land|ends up|end up) (?:in|into|inside)\b")
 
 
 def if_it_can(text: str, goals: tuple[str, ...], manners: bool) -> tuple[tuple[str, ...], tuple[str, ...]]:

@@ -13,7 +13,7 @@ import re
 #: The outcome verbs said with "never" in a condition, each in its plain form.
 _VERBS = ("touch", "hit", "bump", "knock", "spill", "splash", "drip", "tip", "slide", "move", "wobble", "collide",
           "overflow", "rock", "shift", "slip", "budge")
-_NEVER = re.compile(rf"\b(if|when|as long as|so long as) ((?:the|a|my|your|it)\b(?: [a-z]+){{0,2}}?) never "
+_NEVER = re.compile(rf"\b(if|when|as long as|so long as) ((?:the|a|my|your|it)\b(?: [a-z]+){{0,2}}?(?: (?:is|are) [a-z]+(?: still)? and)?) never "
                     rf"({'|'.join(_VERBS)})(?:es|s)?\b")
 
 

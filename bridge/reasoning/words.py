@@ -62,6 +62,8 @@ PHRASES: tuple[tuple, ...] = (
     # "rather" as a degree ("the bowl is rather slippery"), not a contrast ("rather than")
     ("hedge", (r"re(rather):\brather(?= (?:very )?(?:slippery|heavy|light|sticky|runny|thick|thin|bouncy|grippy|high|low|fast"
                r"|slow|slowly|quick|quickly|far|steep|steeply|full|smooth)\b)",)),
+    # not tilted enough: slightly ("the cup is not turning enough", "if i do not tilt it enough")
+    ("slightly tilted", (r"re(enough):\b(?:not|never) (?:tilt|tip|turn)\w*(?: (?:it|the \w+))? (?:far |much )?enough\b",)),
     # "is a 100 degree tilt enough?": whether it happens, asked
     ("hedge", (r"re(enough):\benough(?= *[?.!]* *$)",)),
     # "anything but upside down": not it; "not water but something thick": the one said
@@ -129,8 +131,6 @@ PHRASES: tuple[tuple, ...] = (
                r"|half way|half))?",
                r"re:\b(?:at (?:least|most)|past|beyond|up to|no (?:more|less) than)(?= -?\d)")),
     *SPEEDS,                  # how fast the source moves in and away, said in other words (speeds.py)
-    # not tilted enough: slightly ("the cup is not turning enough")
-    ("slightly tilted", (r"re(enough):\b(?:not|never) (?:tilt|tip|turn)\w*(?: (?:it|the \w+))? (?:far |much )?enough\b",)),
     # just past the rim: to the side of the bowl (not a length past it: "5 cm past the rim")
     ("to the side", (r"re(past|beyond):(?<!cm )(?<!mm )\b(?:just |slightly |a bit |a little )?(?:past|beyond) the (?:bowl'?s? )?"
                      r"(?:edge|rim|lip)\b(?: of (?:it|the bowl|the destination)\b)?(?! (?:of|by|at) )",)),
