@@ -72,10 +72,11 @@ class Fullness:
                 raise UserError(f"could not place \"{' '.join(words[max(0, i - 1):i + 2])}\": {HOLDS_LIQUID}")   # "a nearly full bowl"
             share, end = _filled_to(words, i) if words[i] in _FILLING else (None, i)
             share, end = (share, end) if share is not None else _share(words, i)
-            if share is not None and _of_the_bowl(words, i):
-                raise UserError(f"could not place \"{' '.join(words[max(0, i - 4):end])}\": {HOLDS_LIQUID}")
             if share is not None and (filled := _bowl_filled(words, i)) is not None:
                 raise UserError(f"could not place \"{' '.join(words[filled:end])}\": {FILLS_BOWL}")
+            if share is not None and _of_the_bowl(words, i):
+                said = i - 1 if words[i - 1] in _HELD_BOWLS else max(0, i - 4)     # ("bowl half full": the note's words)
+                raise UserError(f"could not place \"{' '.join(words[said:end])}\": {HOLDS_LIQUID}")
             if share is not None:
                 out.append((i, end, tuple(amount(share).split())))
             i = end if share is not None else i + 1
@@ -83,10 +84,10 @@ class Fullness:
 
 
 def _of_the_bowl(words: list[str], i: int) -> bool:
-    """Whether the share said at `i` is said of the bowl: "the bowl was only half full"."""
+    """Whether the share said at `i` is said of the bowl: "the bowl was only half full", "bowl half full"."""
     before = words[max(0, i - 4):i]
-    return any(w in _HELD_BOWLS and before[k + 1:k + 2] in (["is"], ["was"], ["are"], ["were"], ["s"])
-               for k, w in enumerate(before))
+    return before[-1:] and before[-1] in _HELD_BOWLS or any(      # (or right after it, as notes say it: "bowl half full")
+        w in _HELD_BOWLS and before[k + 1:k + 2] in (["is"], ["was"], ["are"], ["were"], ["s"]) for k, w in enumerate(before))
 
 
 #: Words between a bowl filled and the share it is filled to: "fill the bowl up to about half full".

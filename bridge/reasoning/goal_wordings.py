@@ -101,9 +101,11 @@ WANTING = tuple((re.compile(p), r) for p, r in (
      r" (?=(?:it|they|the [a-z]+|nothing|none|no [a-z]+) )", r"\1 so that "),
     # "for all the oil coming out", as learners of English say it: so that it all comes out
     (r"\bfor (all (?:of )?the [a-z]+|it all|all of it|everything) (?:coming|to come) out\b", r"so that \1 comes out"),
-    # "I want to pour all the broth into the bowl", "my goal is to transfer all the sauce ...": so that it all goes in
+    # "I want to pour all the broth into the bowl", "my goal is to transfer all the sauce ...", "need to pour all
+    # the soup ...": so that it all goes in
     # (where it comes from kept, as the pour: "all the water from a full jug into the bowl")
-    (r"\b(?:(?:i|we) (?:want|need|would like)|(?:my|our|the) (?:goal|aim) is) to (?:pour|get|put|transfer) (all (?:of )?the [a-z]+|it all"
+    (r"(?:\b(?:(?:i|we) (?:want|need|would like)|(?:my|our|the) (?:goal|aim) is)|(?:^|(?<=[.,;:!?] ))(?:need|want))"
+     r" to (?:pour|get|put|transfer) (all (?:of )?the [a-z]+|it all"
      r"|all of it|everything|every drop)"
      r"(?: (from (?:the |a |my )?(?:[a-z]+ )?[a-z]+))?(?= (?:in|into)\b)", lambda m: f"pouring {m.group(2)} so that {m.group(1)} goes"
      if m.group(2) else f"so that {m.group(1)} goes"),

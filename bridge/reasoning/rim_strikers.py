@@ -1,8 +1,9 @@
 """What strikes the bowl's rim, said before a question is read (wording.normalising): the lip
 (rim, edge) of the source, which is its spout ("does the jug's lip hit the bowl": the source's contact,
-asked), the source said to touch the rim as the scene of another question ("if the jug touches the
-rim, will the bowl tip?": poured low, near the rim), and the liquid, whose striking is no outcome
-("the stream hit the edge of the bowl and jumped out": what it did next is read)."""
+asked; a spout said alone, "spout hit the edge": the source's), the source said to touch the rim as
+the scene of another question ("if the jug touches the rim, will the bowl tip?": poured low, near the
+rim), and the liquid, whose striking is no outcome ("the stream hit the edge of the bowl and jumped
+out": what it did next is read)."""
 from __future__ import annotations
 
 import re
@@ -39,6 +40,17 @@ def _lips() -> tuple[re.Pattern, ...]:
     return (re.compile(rf"{_AT_A_PLACE}\b((?:(?:the|its|a|my|your) |(?:^|(?<=[.,;:!?] )))(?:{sources}) )(?P<part>lip|rim|edge)\b"
                        rf"(?={strikes})"),
             re.compile(rf"{_AT_A_PLACE}\b((?:the|its|a) )(?P<part>lip|rim|edge)(?= of (?:the |a |an |my |this |that )?(?:{sources}){strikes})"))
+
+
+def spout_striking(text: str, said: dict[str, None]) -> str:
+    """`text` with a spout said first to strike the bowl, no source named with it ("spout hit the edge of the
+    bowl and the bowl tipped right over"): the source's, as "the jug's lip" is."""
+    m = re.search(r"(?:^|(?<=[.,;:!?] ))(?:the |its |my )?spout (?=(?:hit|hits|bumped|bumps|clipped|clips|knocked|knocks|touched"
+                  r"|touches|banged|bangs|scraped|scrapes)\b)", text)
+    if m is None:
+        return text
+    said.setdefault(f"{m.group(0).strip()}: read as the source, whose spout it is")
+    return f"{text[:m.start()]}the source {text[m.end():]}"
 
 
 def source_on_rim(text: str, said: dict[str, None]) -> str:
