@@ -19,7 +19,7 @@ _EVERY_POUR = (
     (re.compile(r"(?<!\bfrom )(?<!\bfrom an )(?<!\bfrom the )(?<!\bfrom a )\bempty(?= (?:bowl|dish|basin)s?\b)"
                 # (a cause asked is left to be refused: "was it because the bowl was empty?")
                 r"|(?<!\bbecause the )(?<!\bbecause my )\b(?P<keep>(?:bowl|dish|basin) )(?:is |was |being |still )?"
-                r"(?:completely |totally )?empty\b(?: and\b)?"),
+                r"(?:completely |totally |basically |pretty much )?empty\b(?: and\b)?"),
      "every pour's destination is empty before it"),
 )
 

@@ -16,7 +16,8 @@ _ITEMS = tuple((re.compile(p), r) for p, r in (
     (r"^(?:transfer|move|get|pour|empty) (?:all|everything|every drop)(?: of)?(?: (?:the|my) [a-z]+)?(?: (?:in|into) (?:the )?[a-z]+)?$",
      "it all goes in"),
     (r"^(?:full|complete|total) transfer$", "it all goes in"),
-    (r"^(?:nothing|none|no liquid|no water|not a drop) (?:on|onto) (?:the |my )?[a-z]+$", "nothing spills"),
+    (r"^(?:nothing|none|no liquid|no water|not a drop|(?:zero|no|not one|not a single) drops?) (?:on|onto) (?:the |my )?[a-z]+$",
+     "nothing spills"),
     (r"^(?:zero|no) (?:spill|spills|spillage|spilling|mess|splash|splashes|splashing|drips|dripping)"
      r"(?: (?:on|onto) (?:the |my )?[a-z]+)?$", "nothing spills"),
     (r"^(?:a )?(?:clean|neat|tidy) pour$", "nothing spills"),
@@ -26,7 +27,8 @@ _ITEMS = tuple((re.compile(p), r) for p, r in (
     (r"^(?:the )?(?:source|cup|jug|bottle) (?:emptied|empty)$", "it all comes out"),
 ))
 #: An item that names what is poured: "get the full cup of broth into the bowl" (poured so that it all goes in).
-_POURED = re.compile(r"^(?:transfer|move|get|pour|empty) (?P<what>(?!all\b|everything\b|every\b)[a-z ]+?) (?:in|into) (?:the |my |a )?[a-z]+$")
+_POURED = re.compile(r"^(?:transfer|move|get|pour|empty) (?P<what>(?!all\b|everything\b|every\b)[a-z ]+?) (?:in|into) (?:the |my |a )?"
+                     r"(?:[a-z]+ )?[a-z]+$")       # ("into a punch bowl")
 
 
 def goal_list(text: str) -> tuple[str, tuple[str, ...]]:

@@ -148,6 +148,8 @@ PHRASES: tuple[tuple, ...] = (
     # (the everyday word list, everyday.txt, is read here: see rewrites())
     # a bowl full of what is around the pour ("a bowl full of cereal") is not a full bowl
     ("hedge", (r"re:\b(?:full|filled) (?:up )?(?:with|of)(?= (?:the )?context\b)",)),
+    ("pour", (r"re(empt):\bempt(?:y|ies|ied|ying)\b(?= (?:it|them|(?:the|a|an|my|our|this|that|his|her) [a-z ]{1,40}?) (?:into|in to)\b)",),
+     "read as pour: the source poured into the bowl"),      # emptied into the bowl: "while I empty a full pitcher into it"
     # (an empty destination is every pour's: every_pour.py) an empty source pours nothing, nor is a
     # bowl that already holds liquid the vocabulary's: refused (suggestions.py says why)
     (UNCLEAR, (r"re:\balready (?:hedge|holds?|contains?|with|full|filled|half)\b",
@@ -250,8 +252,7 @@ PHRASES: tuple[tuple, ...] = (
     ("high", ("high up", "up high")),
     ("low", ("low down", "down low", "just above", "close above")),
     ("below", ("beneath", "underneath", "under")),
-    ("centred", ("centered", "center", "centre", "central", "in the middle", "near the middle", "near the centre", "near the center",
-                 "middle",
+    ("centred", ("centered", "center", "centre", "central", "in the middle", "near the middle", "near the centre", "near the center", "middle",
                  r"re:\b(?:directly|straight|right) (?:above|over)(?= (?:the )?(?:destination|bowl"
                  r"|centre|center|middle)\b)",
                  # with nothing after it ("pour from directly above, does it spill?"): over the bowl's middle
