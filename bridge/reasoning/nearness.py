@@ -33,7 +33,8 @@ NEARNESS: tuple[tuple, ...] = (
                       r"|(?<!off )\b(?:on|onto|into) (?:just |only )?one side\b(?! of\b)"
                       r"|(?<!off )\bon (?:just |only )?one (?:side|edge) of (?:it|the (?:destination|bowl))\b"
                       r"|\bonto (?:its|the (?:destination|bowl)s?) (?:edge|rim|lip)\b"
-                      r"|\b(?:right|directly) (?:above|over) (?:the |its )?(?:destination |bowl )?(?:edge|rim|lip)\b(?! of\b)",)),
+                      r"|\b(?:right|directly) (?:above|over) (?:the |its )?(?:destination |bowl )?(?:edge|rim|lip)"
+                      r"(?: of (?:it|the (?:destination|bowl)))?\b(?! of\b)",)),
     # its very edge, and the bowl's edge named in a note ("jug bowl edge splash?"), not touched
     ("near the rim", (r"re(very edge|very rim|very lip):\b(?:at|on|onto|to|over|near) (?:the |its )?very (?:edge|rim|lip)"
                       r"(?: of (?:it|the (?:destination|bowl)))?\b",

@@ -31,6 +31,10 @@ _TILTING = {stem(w) for w in ("tilt", "tip", "incline", "lean", "angle", "turn",
                               "pitched")}
 
 
+#: Verbs of keeping a pose, said after "and" once moved in: the pour's ("bring it in fast and keep it low").
+_KEEPING = {stem(w) for w in ("keep", "keeps", "hold", "holds")}
+
+
 def stages(tokens: list[Token]) -> list[str]:
     """The stage each word speaks of (see the module's docstring)."""
     out: list[str] = []
@@ -51,8 +55,8 @@ def stages(tokens: list[Token]) -> list[str]:
             if i in marked:
                 current = _next(tokens[i].word, current)
             elif (current in ("start", "approach") and i > at[0] and _after_and(tokens, i, at[0])
-                  and stem(tokens[i].raw.split()[0]) in _TILTING and not set(marks) & set(range(i, at[-1] + 1))):
-                current = "pour"        # "brought in slowly and turned upside down": the pour's tilt
+                  and stem(tokens[i].raw.split()[0]) in _TILTING | _KEEPING and not set(marks) & set(range(i, at[-1] + 1))):
+                current = "pour"        # "brought in slowly and turned upside down": the pour's tilt ("and keep it low": its height)
             out.append(current)
         stage = current
     return out

@@ -43,7 +43,8 @@ def in_the_source(said: str, text: str = "") -> bool:
     """Whether liquid said to stay in a bowl (`said`: "stays in the jug")
     stays in the source: one named so, one people pour from, or one said in
     `text` to be held as a source is ("stay in the cup even when it's upside
-    down", "does it stay in the mug if the mug is tipped")."""
+    down", "does it stay in the mug if the mug is tipped", "stay in the cup when
+    I only tilt it a little")."""
     bowl = said.split()[-1]
     if bowl == "source" or bowl in poured_from():
         return True
@@ -51,7 +52,8 @@ def in_the_source(said: str, text: str = "") -> bool:
         return False
     turned = r"(?:upside down|inverted|turned (?:over|upside down))"
     return bool(_held_as_source(bowl, text) or re.search(
-        rf"\b{re.escape(said)}\b(?: \w+)? (?:when|while|if|once) it (?:is |gets |goes |being )?(?:held |turned )?{turned}", text))
+        rf"\b{re.escape(said)}\b(?: \w+)? (?:when|while|if|once) (?:it (?:is |gets |goes |being )?(?:held |turned )?{turned}"
+        rf"|(?:i|you|we) (?:only |just |do not |did not )?(?:tilt|tip|turn|angle)\w* it\b)", text))     # ("... when I only tilt it a little")
 
 
 def _held_as_source(noun: str, text: str) -> bool:
