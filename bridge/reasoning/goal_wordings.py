@@ -9,8 +9,8 @@ from __future__ import annotations
 import re
 
 #: What a value is asked of: a height, a tilt, a way ...
-VALUE = (r"(?:height|tilt|tilting|angle|way|speed|distance|position|spot|place|amount|pose|path|route"
-         r"|setting|manner)s?")
+VALUE = (r"(?:(?:pour|pouring) (?=height|angle|speed|position))?"        # ("is there a pour height where ...")
+         r"(?:height|tilt|tilting|angle|way|speed|distance|position|spot|place|amount|pose|path|route|setting|manner)s?")
 
 #: Emptying the source, wanted: "I'd like to empty the whole mug".
 _EMPTYING_WANTED = (r"\b(?:i|we) (?:want|need|would like|wish|am trying|are trying) to (?:empty|drain) (?:out )?(?:the whole"
@@ -38,6 +38,12 @@ def _emptied_in(m: re.Match) -> str:
 #: Other ways of saying a goal, said as "so that ...": "keep the cup still" (not "keep the
 #: source upright": how it is held), "don't let it overflow", "make sure it does not spill"
 #: (the words they drop are fillers).
+def _safe_unless_wanted(m: re.Match) -> str:
+    """" so that it is safe", or nothing where a goal is said beside the match."""
+    beside = f"{m.string[:m.start()]} {m.string[m.end():]}"
+    return "" if re.search(r"\b(?:want|wants|wanted|so that|so|without|need|needs)\b", beside) else " so that it is safe"
+
+
 #: The bowl's moving, as a note of what is not wanted names it ("no wobble", "no sliding"): its verb.
 _MOVING = {"wobbl": "wobble", "slid": "slide", "slip": "slip", "tip": "tip over", "mov": "move"}
 WANTING = tuple((re.compile(p), r) for p, r in (
@@ -68,6 +74,11 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     # bowl"): so that it goes in
     (r"(\bcan (?:i|we|you|one)\b[^.?!,;]*?) and (it|the [a-z]+) (?:still |all )?(?:goes|go|lands|land|ends up|end up)"
      r" (?=(?:in|into|inside)\b)", r"\1 so that \2 goes "),
+    # the safest value or pour, asked: the best so that it is safe ("what's the safest way to pour", "what pour is safest")
+    # (with a goal said beside it, safest for that goal: "I never want the bowl to move, what pour is safest")
+    (rf"\b(what|which)(?: is)? (?:the )?safest ({VALUE})\b", lambda m: f"{m.group(1)} is the best {m.group(2)}" + _safe_unless_wanted(m)),
+    (r"\b(what|which) pour (is|would be) (?:the )?(safest|safer|best|better)\b",
+     lambda m: f"{m.group(1)} way {m.group(2)} best" + (_safe_unless_wanted(m) if m.group(3).startswith("saf") else "")),
     # "without it making a mess": as "without making a mess"
     (r"\bwithout (?:it|them|that) (?=making (?:a |any |much of a )?mess\b)", "without "),
     # "keep the bowl from sliding", "stop it from splashing"
