@@ -22,12 +22,14 @@ vocabulary ("pour slowly"), keeps its reading.
 
 What the bowl stands on: words the reader does not know, said after the
 bowl (or a word of standing, or an outcome) and "on" ("a tin bowl on the
-flagstones", "will it stay put on the exam table", "sitting on a dusty plank"), the last of
-them a noun WordNet says is a thing made or a stone (no vessel or vehicle:
-a bowl on a ship moves with it; nor, where the bowl stands, a bed, a seat or a wheel, which
-it does not stand steady on). They are ignored, and `ask` says so, as it
-does of the table and the counter: the place says nothing of the pour (how
-slippery it is, said, is read: "a wet bench")."""
+flagstones", "will it stay put on the exam table", "sitting on a dusty
+plank"), the last of them a noun WordNet says is a thing made or a stone.
+They are ignored, and `ask` says so, as it does of the table and the
+counter: the place says nothing of the pour (how slippery it is, said, is
+read: "a wet bench"). Not so a vessel or a vehicle (a bowl on a ship moves
+with it), nor, where the bowl stands, a bed, a seat or a wheel, which it
+does not stand steady on, nor anything said to slope ("a sloped roof deck"):
+those stay refused."""
 from __future__ import annotations
 
 import re
@@ -121,6 +123,9 @@ _SUPPORTS = frozenset(("artifact", "rock", "stone", "covering", "fabric", "surfa
 _MOVING = frozenset(("vessel", "craft", "vehicle", "conveyance", "animal", "person", "body_part"))
 #: ... and what a bowl cannot stand steady on (a bed, a seat, a cushion, a wheel): not read where it stands.
 _UNSTEADY = frozenset(("bed", "seat", "cushion", "padding", "wheel", "machine", "body_part", "lap"))
+#: ... or one said to slope or not to be level ("a sloped roof deck"): not read either.
+_NOT_LEVEL = frozenset(("sloped", "sloping", "slanted", "slanting", "uneven", "wonky", "bumpy", "rocking", "swaying", "rolling",
+                        "moving", "floating", "shaky", "unstable", "lopsided", "crooked"))
 #: The words before "on" that say the bowl stands there (or an outcome happens there: "slide on the exam table").
 _STANDS = frozenset(("bowl", "bowls", "sit", "sits", "sitting", "sat", "stand", "stands", "standing", "stood", "placed", "set",
                      "rests", "resting", "put", "stay", "stays", "is", "are", "was", "were", "it"))
@@ -158,7 +163,8 @@ def _supports(tokens, taken: set[int], known: frozenset[str]) -> tuple[set[int],
         head = tokens[end].raw
         kinds = set().union(*(senses(head) or senses(head[:-1]))[:3])
         moving = set().union(*((senses(tokens[k].raw) or senses(tokens[k].raw[:-1]) or ((),))[0] for k in unknown))
-        if kinds & _SUPPORTS and not moving & _MOVING and (after_outcome or not kinds & _UNSTEADY):
+        level = not {tokens[k].raw for k in unknown} & _NOT_LEVEL
+        if kinds & _SUPPORTS and not moving & _MOVING and level and (after_outcome or not kinds & _UNSTEADY):
             found.update(unknown)
             said += [f"{tokens[k].raw}: {SUPPORT_SAID}" for k in unknown]
     return found, tuple(said)

@@ -32,6 +32,7 @@ from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.asides import restated
 from pantarhei.bridge.reasoning.earlier_pour import told
 from pantarhei.bridge.reasoning.every_pour import as_every_pour
+from pantarhei.bridge.reasoning.last_of_it import the_last_of
 from pantarhei.bridge.reasoning.rim_strikers import lip_of_source, source_on_rim, spout_striking, stream_striking
 from pantarhei.bridge.reasoning.fullness import refuse_bowl_fill
 from pantarhei.bridge.reasoning.little_vessels import refuse_little
@@ -224,11 +225,7 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     # every drop of a liquid is all of it: "get every drop of the syrup into the bowl"
     text = re.sub(r"\bevery (?:last |single )?drop of (?:the |my |that |this )?",
                   lambda m: said.setdefault(f"{m.group(0).strip()}: read as all of the") or "all of the ", text)
-    # the last of the liquid is some of it: "does the last bit stay in the jug", "does the rest drip on the bench"
-    text = re.sub(r"\bthe (?:very )?(?:last (?:little )?(?:bits?|drops?|dribbles?|few drops|of it)\b|rest(?= of\b| (?:stay|stays|stayed"
-                  r"|remain|remains|drip|drips|dripped|come|comes|came|go|goes|went|end|ends|is|was|slop|slops|slopped|spill|spills"
-                  r"|spilled|spilt|splash|splashes|splashed|land|lands|landed|fall|falls|fell|run|runs|ran)\b))",
-                  lambda m: said.setdefault(f"{m.group(0)}: read as some") or "some", text)
+    text = the_last_of(text, said)                     # "does the last bit stay in the jug": some; "poured the last bit of"
     # the source yeeted is flung ("yeet the cup over the bowl": a fast move in); the liquid yeeted, a force of
     # pouring, is left to be refused
     text = re.sub(r"\byeet(s|ed|ing)?(?= (?:it|(?:the|my|a|an) (?:cup|mug|jug|glass|bottle|pitcher|can|pot|pan|carton|source"
