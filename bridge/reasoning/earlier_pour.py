@@ -24,6 +24,9 @@ CAUSE = re.compile(r"^(?:so |and |but )?(?:why|how come|how|what went wrong|what
                     r"|(?:is|was) (?:that|this|it) normal(?: or (?:am|was) (?:i|we) doing (?:it|something|anything) wrong)?"
                     r"|(?:is|was) (?:that|this) (?:why|the reason)(?: why)?"
                     r"|(?:am|was) (?:i|we) doing (?:it|something|anything) wrong|what (?:am|was) (?:i|we) doing(?: wrong| there| here)?"
+                    # ("was I holding it wrong", "am i tilting wrong", "what was wrong", "whats wrong")
+                    r"|(?:am|was|are|were) (?:i|we|they|you) (?:just )?(?:holding|tilting|tipping|pouring|using)(?: it| them)? wrong"
+                    r"|what(?: was| is)? wrong"
                     r"|what made (?:that|this|it|the \w+) (?:happen|move|slide|tip|tip over|fall|fall over|spill|splash)"
                     r"(?: happen)?"
                     # one of two causes asked: "was it the weight or the angle?"

@@ -273,7 +273,7 @@ PHRASES: tuple[tuple, ...] = (
      "read as near the rim: a little off the middle, as \"a bit off the centre\""),
     ("side", ("off to one side", "off to the side", "to one side")),
     # how the source is tilted and moved
-    ("upside down", ("inverted", "upturned", "turned over",
+    ("upside down", ("inverted", "upturned", "turned over", "full upside down", "fully upside down",
                      r"re:\b(?:turn|flip)(?:s|ed|ing|ped|ping)? (?:it|the \w+|them) over\b")),
     # tipped out: poured ("tip the milk out into a bowl")
     ("pour", (r"re:\btip(?:s|ped|ping)?\b(?= (?:(?:it|them|the \w+|a \w+) )?out\b)",)),
