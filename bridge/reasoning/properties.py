@@ -120,11 +120,6 @@ _BOWLS = {"bowl", "bowls", "dish", "basin", "tub", "destination"}
 SURFACE_SAID = "read as the destination's friction: the bowl slides, or not, on what it stands on"
 
 
-#: What a table may be said made of between its grip and its name: "a slick glass table".
-_MADE_OF = frozenset(("glass", "marble", "granite", "steel", "metal", "stone", "wooden", "wood", "plastic", "laminate",
-                      "tile", "tiled", "formica", "stainless", "quartz", "concrete", "slate", "zinc", "copper", "enamel"))
-
-
 class Surfaces:
     """A slippery table, a counter that is slick, a slippery bottom: the
     destination's friction, for the bowl slides on what it stands on (its
@@ -140,10 +135,6 @@ class Surfaces:
                 k = before.index("with") if "with" in before else 0
                 if k == 0 or before[k - 1] in _BOWLS:
                     out.append((i - 1, i + 1, (_GRIP[words[i - 1]], "destination")))
-                continue
-            if w == "ice" and (words[i - 1:i] == ["on"] or words[max(0, i - 2):i] in (["on", "the"], ["on", "some"])) \
-                    and "like" not in words[max(0, i - 3):i]:           # ("slide away like on ice": a simile)
-                out.append((i, i + 1, ("slippery", "destination")))     # "a bowl that's on ice": it slides as on a wet one
                 continue
             if w == "wet" and not (out and i < out[-1][1]) and _wet_bowl(words, i):     # "the bowl is wet", "a wet bowl"
                 end = i + 4 if words[i + 1:i + 3] in (["in", "the"], ["on", "the"]) and words[i + 3:i + 4] and \

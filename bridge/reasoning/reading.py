@@ -67,7 +67,7 @@ from pantarhei.bridge.reasoning.stages import (MARKER_STEMS, MOVE, POSE, SAME, o
                                                same_at_the_end, stages)
 from pantarhei.bridge.reasoning.wording import Token, names_written, normalising, stem, tokens as words_of
 from pantarhei.bridge.reasoning.suggestions import DESCRIBE, hinted, misspelt, names_part, refuse_unplaced
-from pantarhei.bridge.reasoning.unnamed import containers_named, words_unnamed
+from pantarhei.bridge.reasoning.unnamed import containers_named, liquids_unnamed
 from pantarhei.bridge.reasoning.who_asks import asker_said
 from pantarhei.bridge.reasoning.words import FILLERS, UNCLEAR, rewrites
 from pantarhei.theory.lexicon import load_vocabulary
@@ -276,7 +276,7 @@ def _read_text(question: str, text: str, typed: tuple[str, ...]) -> Reading:
                         else f"\"{question}\" excludes every value of {dim}")
     read_at = set().union(*(p for _, p in accepted))
     plain = plain_tilts(tokens, read_at, negated_at)
-    liquid_at, liquid = words_unnamed(tokens, read_at | plain, lex.known)   # "pour the merlot", "on the porch" (unnamed.py)
+    liquid_at, liquid = liquids_unnamed(tokens, read_at | plain, lex.known)   # "pour the merlot" (unnamed.py)
     taken = read_at | plain | liquid_at | comparing
     refuse_unplaced(question, tokens, taken, lex)
     out += same_at_the_end(tokens, out, vocab)

@@ -18,18 +18,7 @@ ordinary one, and `ask` says so, with the kind WordNet gives ("merlot: a
 red wine"). A word WordNet does not know as a liquid ("pour the sand",
 "pour nutella") is refused as before: the reader does not guess what a
 name it does not know is; a liquid the reader knows, or a word of the
-vocabulary ("pour slowly"), keeps its reading.
-
-What the bowl stands on: words the reader does not know, said after the
-bowl (or a word of standing, or an outcome) and "on" ("a tin bowl on the
-flagstones", "will it stay put on the exam table", "sitting on a dusty
-plank"), the last of them a noun WordNet says is a thing made or a stone.
-They are ignored, and `ask` says so, as it does of the table and the
-counter: the place says nothing of the pour (how slippery it is, said, is
-read: "a wet bench"). Not so a vessel or a vehicle (a bowl on a ship moves
-with it), nor, where the bowl stands, a bed, a seat or a wheel, which it
-does not stand steady on, nor anything said to slope ("a sloped roof deck"):
-those stay refused."""
+vocabulary ("pour slowly"), keeps its reading."""
 from __future__ import annotations
 
 import re
@@ -38,7 +27,7 @@ from functools import lru_cache
 from pantarhei.bridge.reasoning.everyday import names
 from pantarhei.bridge.reasoning.spelling import corrected, english, unknown_to_reader
 from pantarhei.bridge.reasoning.suggestions import misspelt
-from pantarhei.bridge.reasoning.wordnet import kind_named, senses
+from pantarhei.bridge.reasoning.wordnet import kind_named
 
 #: Where only a container stands after an article: poured from it, into it, out of it (the
 #: last word of its noun: "from a hevy jug" names the jug).
@@ -115,58 +104,6 @@ def liquids_unnamed(tokens, taken: set[int], known: frozenset[str]) -> tuple[set
             article = "an" if kind[0] in "aeiou" else "a"
             said.append(f"{' '.join(t.raw for t in tokens[i:end + 1])}: {article} {kind} (WordNet): {LIQUID_SAID}")
         i = end + 1
-    return found, tuple(said)
-
-
-#: What a bowl stands on: WordNet's kinds of the thing, and the kinds that move with it (not read).
-_SUPPORTS = frozenset(("artifact", "rock", "stone", "covering", "fabric", "surface", "furniture", "flooring", "ground"))
-_MOVING = frozenset(("vessel", "craft", "vehicle", "conveyance", "animal", "person", "body_part"))
-#: ... and what a bowl cannot stand steady on (a bed, a seat, a cushion, a wheel): not read where it stands.
-_UNSTEADY = frozenset(("bed", "seat", "cushion", "padding", "wheel", "machine", "body_part", "lap"))
-#: ... or one said to slope or not to be level ("a sloped roof deck"): not read either.
-_NOT_LEVEL = frozenset(("sloped", "sloping", "slanted", "slanting", "uneven", "wonky", "bumpy", "rocking", "swaying", "rolling",
-                        "moving", "floating", "shaky", "unstable", "lopsided", "crooked"))
-#: The words before "on" that say the bowl stands there (or an outcome happens there: "slide on the exam table").
-_STANDS = frozenset(("bowl", "bowls", "sit", "sits", "sitting", "sat", "stand", "stands", "standing", "stood", "placed", "set",
-                     "rests", "resting", "put", "stay", "stays", "is", "are", "was", "were", "it"))
-#: What is said back of what the bowl stands on.
-SUPPORT_SAID = "ignored: the place and what is around it say nothing of the pour"
-
-
-def words_unnamed(tokens, taken: set[int], known: frozenset[str]) -> tuple[set[int], tuple[str, ...]]:
-    """liquids_unnamed's, with what the bowl stands on (the module's docstring)."""
-    liquid_at, liquid = liquids_unnamed(tokens, taken, known)
-    support_at, support = _supports(tokens, taken | liquid_at, known)
-    return liquid_at | support_at, liquid + support
-
-
-def _supports(tokens, taken: set[int], known: frozenset[str]) -> tuple[set[int], tuple[str, ...]]:
-    found: set[int] = set()
-    said: list[str] = []
-    for i, t in enumerate(tokens[:-1]):
-        after_outcome = t.word == "outcom"          # (its words took "on the": "stay put on the exam table")
-        if not after_outcome and (t.raw != "on" or i == 0 or not {tokens[i - 1].word, tokens[i - 1].raw} & _STANDS):
-            continue
-        start = i + 1 + (tokens[i + 1].raw in _DETERMINERS)
-
-        def named(k: int) -> bool:      # a word of the place's name: one unknown, or a place's or a material's
-            return k < len(tokens) and tokens[k].clause == t.clause and k not in taken and (
-                tokens[k].word in ("context", "material") or tokens[k].word not in known and re.fullmatch(r"[a-z]{3,}", tokens[k].raw))
-        if not named(start):
-            continue
-        end = start
-        while end + 1 - start < 3 and named(end + 1):
-            end += 1
-        unknown = [k for k in range(start, end + 1) if tokens[k].word not in known]
-        if not unknown:
-            continue
-        head = tokens[end].raw
-        kinds = set().union(*(senses(head) or senses(head[:-1]))[:3])
-        moving = set().union(*((senses(tokens[k].raw) or senses(tokens[k].raw[:-1]) or ((),))[0] for k in unknown))
-        level = not {tokens[k].raw for k in unknown} & _NOT_LEVEL
-        if kinds & _SUPPORTS and not moving & _MOVING and level and (after_outcome or not kinds & _UNSTEADY):
-            found.update(unknown)
-            said += [f"{tokens[k].raw}: {SUPPORT_SAID}" for k in unknown]
     return found, tuple(said)
 
 
