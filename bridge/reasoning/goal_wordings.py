@@ -35,9 +35,6 @@ def _emptied_in(m: re.Match) -> str:
     return f"{'pouring ' + m.group(2) + ' ' if m.group(2) else ''}so that the {m.group(1)} empties and it all goes"
 
 
-#: Other ways of saying a goal, said as "so that ...": "keep the cup still" (not "keep the
-#: source upright": how it is held), "don't let it overflow", "make sure it does not spill"
-#: (the words they drop are fillers).
 def _safe_unless_wanted(m: re.Match) -> str:
     """" so that it is safe", or nothing where a goal is said beside the match."""
     beside = f"{m.string[:m.start()]} {m.string[m.end():]}"
@@ -46,6 +43,9 @@ def _safe_unless_wanted(m: re.Match) -> str:
 
 #: The bowl's moving, as a note of what is not wanted names it ("no wobble", "no sliding"): its verb.
 _MOVING = {"wobbl": "wobble", "slid": "slide", "slip": "slip", "tip": "tip over", "mov": "move"}
+#: Other ways of saying a goal, said as "so that ...": "keep the cup still" (not "keep the
+#: source upright": how it is held), "don't let it overflow", "make sure it does not spill"
+#: (the words they drop are fillers).
 WANTING = tuple((re.compile(p), r) for p, r in (
     # asked negatively, as people doubting it ask: "is there no way to pour molasses without ...": is there a way
     (r"\bis there (?:really )?no (way|method|technique) to\b", r"is there a \1 to"),

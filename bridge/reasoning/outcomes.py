@@ -81,9 +81,11 @@ _PART_OF = re.compile(r"\b(?:most|all|any|some|much|half|none|part|a lot|a bit|a
 #: Quantifiers that begin the subject of an outcome asked ("does much stay in", "will some
 #: spill"): the outcome's words, not an amount of liquid in the scene.
 _QUANTIFIERS = {*"much most some any all little none nothing no half lots plenty less more every each last drop drops".split()}
-#: Once the pour is done, said between two outcomes asked: "... once it's poured or ...".
-_ONCE = (r"(?: (?:once|after|when) (?:(?:it is |it has been |it has |it )?(?:already )?(?:gone )?(?:poured|done|finished|in)|(?:i|we|you) (?:stop|finish|am done|are done)"
-         r"(?: pouring| tipping| tilting|(?! (?:pouring|tipping|tilting)\b))|the pour(?:ing)?(?: (?:stops|ends|is done|is over|is finished))?))?")
+#: Once the pour is done, said between two outcomes asked: "... once it's poured or ...", "once I stop pouring",
+#: "after the pouring stops".
+_ONCE = (r"(?: (?:once|after|when) (?:(?:it is |it has been |it has |it )?(?:already )?(?:gone )?(?:poured|done|finished|in)"
+         r"|(?:i|we|you) (?:stop|finish|am done|are done)(?: pouring| tipping| tilting|(?! (?:pouring|tipping|tilting)\b))"
+         r"|the pour(?:ing)?(?: (?:stops|ends|is done|is over|is finished))?))?")
 #: What joins a second outcome to the one before: "spill or overflow", "go in but then bounce back out".
 _JOINED = r"(?:, or|, and|,|or|and|nor|but then|and then|but|then|instead of|rather than)"
 #: A second outcome said as what happens in place of the first: "dribble down the outside instead of going in".

@@ -59,9 +59,10 @@ def source_on_rim(text: str, said: dict[str, None]) -> str:
     bowl edge when pouring, the bowl will fall?", "bowl wobble when jug hits edge?"), said as poured low
     near the rim: the scenes in which a source meets the rim. Only a touch in a condition ("if", "when",
     "while") or one said as a note's first clause ("bottle touching bowl rim spill") is so read, with
-    something else asked before or after it. No proposition says a touch; whether it touches is asked as itself
-    ("does the cup touch the rim?", "bottle touching bowl rim?", "the cup touches the rim when I pour
-    low?"), and a touch not wanted ("without the jar touching the rim") is a goal: neither is rewritten."""
+    something else asked before or after it. No proposition says a touch; whether it touches is asked
+    as itself ("does the cup touch the rim?", "bottle touching bowl rim?", "the cup touches the rim when
+    I pour low?"), and a touch not wanted ("without the jar touching the rim") is a goal: neither is
+    rewritten."""
     if not re.search(r"\b(?:rim|edge)\b", text):
         return text
 
