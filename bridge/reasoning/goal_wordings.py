@@ -38,7 +38,7 @@ def _emptied_in(m: re.Match) -> str:
 def _safe_unless_wanted(m: re.Match) -> str:
     """" so that it is safe", or nothing where a goal is said beside the match."""
     beside = f"{m.string[:m.start()]} {m.string[m.end():]}"
-    return "" if re.search(r"\b(?:want|wants|wanted|so that|so|without|need|needs)\b", beside) else " so that it is safe"
+    return "" if re.search(r"\b(?:want|wants|wanted|so|without|need|needs)\b", beside) else " so that it is safe"
 
 
 #: The bowl's moving, as a note of what is not wanted names it ("no wobble", "no sliding"): its verb.

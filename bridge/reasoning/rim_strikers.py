@@ -45,6 +45,8 @@ def _lips() -> tuple[re.Pattern, ...]:
 def spout_striking(text: str, said: dict[str, None]) -> str:
     """`text` with a spout said first to strike the bowl, no source named with it ("spout hit the edge of the
     bowl and the bowl tipped right over"): the source's, as "the jug's lip" is."""
+    if "spout" not in text:
+        return text
     m = re.search(r"(?:^|(?<=[.,;:!?] ))(?:the |its |my )?spout (?=(?:hit|hits|bumped|bumps|clipped|clips|knocked|knocks|touched"
                   r"|touches|banged|bangs|scraped|scrapes)\b)", text)
     if m is None:
