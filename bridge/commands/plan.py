@@ -72,9 +72,12 @@ def plan(args: argparse.Namespace) -> int:
     if args.context is not None and args.given.strip():
         raise UserError("give the context in words or with --given, not both")
     if args.context is not None:
-        from pantarhei.bridge.reasoning.reading import understand
+        from pantarhei.bridge.reasoning.pattern_store import kept_patterns
 
-        given = known(understand(utf8(args.context, "the context")))
+        with kept_patterns():
+            from pantarhei.bridge.reasoning.reading import understand
+
+            given = known(understand(utf8(args.context, "the context")))
     else:
         given = known(_split(args.given))
     if not 0 < args.min_success <= 1:

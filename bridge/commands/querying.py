@@ -68,6 +68,13 @@ def _split(text: str | None) -> list[str]:
 # -- ask ----------------------------------------------------------------------
 
 def ask(args: argparse.Namespace) -> int:
+    from pantarhei.bridge.reasoning.pattern_store import kept_patterns
+
+    with kept_patterns():          # the reader's patterns, compiled by an earlier question
+        return _ask(args)
+
+
+def _ask(args: argparse.Namespace) -> int:
     from pantarhei.bridge.reasoning.asking import Door, replaced_shipped
 
     for flag in ("question", "props", "why"):

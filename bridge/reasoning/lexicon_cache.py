@@ -9,20 +9,17 @@ keeps nothing, and the lexicon is built each time."""
 from __future__ import annotations
 
 import json
-import os
 from pathlib import Path
 from typing import Callable, TypeVar
 
-from pantarhei.bridge.reasoning.cache_files import cache_file, theory_sources
+from pantarhei.bridge.reasoning.cache_files import cache_file, reader_sources, write_whole
 
 T = TypeVar("T")
-
-_READER = Path(__file__).parent
 
 
 def _path() -> Path | None:
     """Where the lexicon of the present sources is kept, or None."""
-    return cache_file("lexicon", sorted([*_READER.glob("*.py"), *_READER.glob("*.txt"), *theory_sources()]), ".json")
+    return cache_file("lexicon", reader_sources(), ".json")
 
 
 def _encode(lexicon) -> dict:
@@ -50,14 +47,5 @@ def cached_lexicon(build: Callable[[], T], kind: Callable[..., T]) -> T:
             pass
     lexicon = build()
     if path is not None:
-        tmp = path.with_name(f".{path.name}.{os.getpid()}")
-        try:
-            path.parent.mkdir(parents=True, exist_ok=True)
-            tmp.write_text(json.dumps(_encode(lexicon)), encoding="utf-8")
-            os.replace(tmp, path)
-        except OSError:
-            try:
-                tmp.unlink(missing_ok=True)
-            except OSError:
-                pass                    # (no folder to have written in)
+        write_whole(path, json.dumps(_encode(lexicon)).encode("utf-8"))
     return lexicon

@@ -116,7 +116,7 @@ class Heard:
 @lru_cache(maxsize=None)
 def _patterns() -> tuple[re.Pattern, ...]:
     # "go into the mug", "pour out of the jug"
-    end = rf"(?P<rest>(?: (?:{_REST}|{destinations()}|{'|'.join(sorted(poured_from(), key=len, reverse=True))})\b)*)"
+    end = rf"(?P<rest>(?: (?:{_REST}|{destinations()}|{'|'.join(sorted(poured_from(), key=lambda w: (-len(w), w)))})\b)*)"
     verbs = "|".join(f"(?P<v{k}>{filled(v)})" for k, (v, _, _) in enumerate(OUTCOMES))
     # (not holding another auxiliary: "do you think it will spill" asks "will it spill")
     subject = rf"(?P<subject>(?: (?!(?:if|when|while|not|{_MODALS})\b)(?:[a-z]+|[0-9][0-9.]*)){{0,16}}?)"

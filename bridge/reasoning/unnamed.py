@@ -53,7 +53,7 @@ _AMOUNTS = frozenset(("bunch", "lot", "lots", "load", "loads", "ton", "tons", "h
 
 @lru_cache(maxsize=None)
 def _of() -> re.Pattern:
-    said = sorted({"liquid", "water", *names("liquid")}, key=len, reverse=True)
+    said = sorted({"liquid", "water", *names("liquid")}, key=lambda w: (-len(w), w))
     return re.compile(_OF.replace("{liquid}", "|".join(map(re.escape, said))))
 
 
