@@ -9,10 +9,11 @@ import re
 
 _SAID = "read as nothing: which cause it was is the answer's to tell; the pour told is read"
 
-#: "is the canister too full or not tilted enough?", "was it too high or too fast?": a clause of
+#: "is the canister too full or not tilted enough?", "was it too high or too fast?", "was it the
+#: speed or was I too far off to one side?": a clause of
 #: its own, at the end, its two causes said with "too", "not", "because" or "the".
 _EITHER = re.compile(r"(?:(?<=[-,;:.!?\u2013\u2014] )|(?<= - ))(?:is|was|are|were) (?:it|that|this|the [a-z]+)"
-                     r"(?: (?:because(?: of)?|due to))? (?:too|not|the|a|an) [a-z ]+? or (?:(?:is|was) it )?"
+                     r"(?: (?:because(?: of)?|due to))? (?:too|not|the|a|an) [a-z ]+? or (?:(?:is|was) (?:it|i|we) |(?:am|were) (?:i|we) )?"
                      r"(?:because(?: of)? )?(?:too|not|the|a|an) [a-z ]+?\s*[?.!]*$")
 #: ", or was it the speed?": a second cause asked after a question of the first.
 _OR_WAS = re.compile(r"(?:,| ,)? or (?:was|is) it (?:because of |due to )?(?:the|my|a|an|too) [a-z ]+?\s*[?.!]*$")

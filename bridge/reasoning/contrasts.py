@@ -32,6 +32,7 @@ _USE = r"(?:(?:,|;) )?(?:(?:use|pour|try|take|pick|with|using|have) )?"
 _VAGUE = r"(?:from )?(?:above|overhead|the top|on top)"
 #: After a length: "-2 cm relative to the rim".
 _AFTER_LENGTH = "|".join(rf"(?<=\d {u} )" for u, (measures, _) in UNITS.items() if measures == "length")
+_NOT_AFTER_LENGTH = "".join(rf"(?<!\d {u} )" for u, (measures, _) in UNITS.items() if measures == "length")
 
 CONTRASTS: tuple[tuple, ...] = (
     ("sticky liquid", (rf"re({_THICK_CUES}):\b{_CONTRAST} (?:the |using |pouring )?liquid {_USE}{_THING}{_MORE}{_THICKER}\b",
@@ -61,9 +62,10 @@ CONTRASTS: tuple[tuple, ...] = (
      "read as near the rim: a little off the middle, where the rim is nearer"),
     # off the middle, how far not said (said of the pour, the source or alone; not "way off", "3 cm off", "how far
     # off"): near the rim, the nearest place off it
-    ("near the rim", (r"re(off the |off cent|off midd|off dest|off bowl):(?:(?<=[,;:.!?] )|(?<=\bpour )|(?<=\bbowl )"
-                      r"|(?<=\bhold )|(?<=\bheld )|(?<=\bis )|(?<=\bwas )|(?<=\bit )|^(?=off \w+ (?:pour|,)))off (?:the )?"
-                      r"(?:destination |bowl )?(?:centre|center|middle)\b",),
+    ("near the rim", (r"re(off the |off cent|off midd|off dest|off bowl):(?:(?<=[a-z,;:.!?] )(?<!\bway )(?<!\bfar )(?<!\bmuch )(?<!\bvery )(?<!\bhow )"
+                      rf"(?<!\bmore )(?<!\bless )(?<!\bbit )(?<!\blittle )(?<!\btad )(?<!\bslightly ){_NOT_AFTER_LENGTH}|^(?=off \w+ (?:pour|,)))off (?:the )?"
+                      r"(?:destination |bowl )?(?:centre|center|middle)\b(?! by\b)(?:(?: ,)? (?:near|close to|toward|towards|at|by)"
+                      r" (?:the |its )?(?:destination |bowl )?(?:edge|rim|lip)\b(?! of))?",),
      "read as near the rim: off the middle, how far not said, the nearest place off it (say \"from the side\" or \"offset sideways\" for others)"),
     # a height measured from the rim: above it (a minus sign below it)
     ("above the rim", (rf"re(relative|respect|vs|versus):(?:{_AFTER_LENGTH})(?:height )?(?:relative to|with respect to|vs|versus)"

@@ -18,5 +18,5 @@ def dropped_words(question: str, reading) -> list[str]:
     # as typed: a contraction with its apostrophe spelt out ("won't": will not), one typed
     # without it ("wont", "im") or a word mistyped ("teh") said back in the notes
     said = re.sub(r"\bcan't\b|\bcannot\b", "can not", unaccented(question.lower().replace("\u2019", "'")))
-    said = re.sub(r"n't\b", " not", re.sub(r"\bwon't\b", "will not", said))
+    said = re.sub(r"n't\b", " not", re.sub(r"\bwon't\b", "will not", re.sub(r"\bma'am\b", "maam", said)))
     return [w for w in re.findall(r"[a-z]+", said) if w not in accounted]

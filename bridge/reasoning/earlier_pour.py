@@ -15,7 +15,7 @@ from functools import lru_cache
 from pantarhei.bridge.reasoning.everyday import alternation, names
 
 #: What asks its cause: "why?", "what went wrong", "what did I do wrong".
-CAUSE = re.compile(r"^(?:so |and |but )?(?:why|how come|how|what went wrong|what did (?:i|we) do wrong|what happened(?: there| here)?"
+CAUSE = re.compile(r"^(?:so |and |but )?(?:why|how come|how|what went wrong|what did (?:i|we|he|she|they|you) do wrong|what happened(?: there| here)?"
                     r"|what caused (?:that|this|it)|why did (?:that|this|it) happen|why is that|why (?:does|did) (?:that|this|it)"
                     r"|how (?:is|was) (?:that|this|it) (?:even )?possible|how (?:does|did|could|can) (?:that|this|it) (?:even )?happen"
                     # as learners of English ask it, and what was being done: "what I do wrong?", "what was I doing"
@@ -29,8 +29,8 @@ CAUSE = re.compile(r"^(?:so |and |but )?(?:why|how come|how|what went wrong|what
                     r"|what(?: was| is)? wrong"
                     r"|what made (?:that|this|it|the \w+) (?:happen|move|slide|tip|tip over|fall|fall over|spill|splash)"
                     r"(?: happen)?"
-                    # one of two causes asked: "was it the weight or the angle?"
-                    r"|(?:was|is) it (?:the |my )?[a-z]+ or (?:the |my )?[a-z]+"
+                    # one of two causes asked: "was it the weight or the angle?", "was it the speed or was I too far off"
+                    r"|(?:was|is) it (?:the |my )?[a-z]+ or (?:(?:(?:was|is) (?:it|i|we)|(?:am|were) (?:i|we)) (?:too |the |my )?[a-z]+(?: [a-z]+){0,5}|(?:the |my )?[a-z]+)"
                     # one cause named, no value said: "was it the height?" (of the pour told)
                     r"|(?:was|is) it (?:the |my |because of the )?(?:height|tilt|angle|speed|weight|position|distance))"
                     r"(?: (?:lol|lmao|haha|ugh|smh|pls|please))?[?.! ]*$")      # ("what am i doing wrong lol")

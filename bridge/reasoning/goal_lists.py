@@ -23,7 +23,8 @@ _ITEMS = tuple((re.compile(p), r) for p, r in (
     (r"^(?:a )?(?:clean|neat|tidy) pour$", "nothing spills"),
     (r"^(?:the )?(?:bowl|destination) (?:stays|remains|staying|is) (?:put|still|in place|where it is)$", "the bowl stays put"),
     (r"^(?:the )?(?:bowl|destination) (?:stays|remains|staying|is) upright$", "the bowl stays upright"),
-    (r"^(?:no|zero) (?:contact|bumps?|knocks?|collisions?)$", "the cup does not hit the bowl"),
+    (r"^(?:no|zero) (?:contact|bumps?|knocks?|collisions?)(?: between (?:the |my )?[a-z]+ & (?:the |my )?[a-z]+)?$",
+     "the cup does not hit the bowl"),
     (r"^(?:the )?(?:source|cup|jug|bottle) (?:emptied|empty)$", "it all comes out"),
 ))
 #: An item that names what is poured: "get the full cup of broth into the bowl" (poured so that it all goes in).
@@ -37,7 +38,9 @@ def goal_list(text: str) -> tuple[str, tuple[str, ...]]:
     m = _LIST.search(text)
     if m is None:
         return text, ()
-    items = [i.strip() for i in re.split(r",|\band\b", m.group("items")) if i.strip()]
+    # ("no contact between the kettle and the bowl": one item)
+    listed = re.sub(r"\bbetween ((?:the |my )?[a-z]+) and ((?:the |my )?[a-z]+)\b", r"between \1 & \2", m.group("items"))
+    items = [i.strip() for i in re.split(r",|\band\b", listed) if i.strip()]
     said, poured = [], ""
     for item in items:
         clause = next((r for p, r in _ITEMS if p.match(item)), None)

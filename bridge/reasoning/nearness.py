@@ -35,11 +35,16 @@ NEARNESS: tuple[tuple, ...] = (
                       r"|\bonto (?:its|the (?:destination|bowl)s?) (?:edge|rim|lip)\b"
                       r"|\b(?:right|directly) (?:above|over) (?:the |its )?(?:destination |bowl )?(?:edge|rim|lip)"
                       r"(?: of (?:it|the (?:destination|bowl)))?\b(?! of\b)",)),
-    # its very edge, and the bowl's edge named in a note ("jug bowl edge splash?"), not touched
+    # close to the bowl's edge, the bowl named before it with no article ("too close to bowl edge"): near the rim
+    ("near the rim", (r"re(close to):\b(?:close|near) to (?:the |its )?(?:destination|bowl)'?s? (?:edge|rim|lip|brim)\b",)),
+    # its very edge, and the bowl's edge named in a note ("jug bowl edge splash?", "jug, edge of bowl,
+    # spill?"), not touched
     ("near the rim", (r"re(very edge|very rim|very lip):\b(?:at|on|onto|to|over|near) (?:the |its )?very (?:edge|rim|lip)"
                       r"(?: of (?:it|the (?:destination|bowl)))?\b",
                       r"re(destination edge|bowl edge):(?<!touch )(?<!touches )(?<!touching )(?<!hit )(?<!hits )(?<!hitting )(?<!bump )"
-                      r"(?<!bumps )(?<!bumping )(?<!the )\b(?:destination|bowl) edge\b(?! of\b)",)),
+                      r"(?<!bumps )(?<!bumping )(?<!the )\b(?:destination|bowl) edge\b(?! of\b)",
+                      # or as a note's item of its own: "jug, edge of bowl, milk, spill?"
+                      r"re(edge of|rim of):(?:^|(?<=[,;:.] ))(?:the )?(?:edge|rim) of (?:the )?(?:destination|bowl)(?= *[,;:.?!]| *$)",)),
     (UNCLEAR, (r"re(far side|far edge|far rim|far lip|opposite):\b(?:the |its )?(?:far|opposite) (?:side|edge|rim|lip)"
                r"(?: of (?:the |its )?(?:destination|bowl))?\b",)),
     # poured from close, with no bowl said: just above it ("pour from close up")
@@ -51,5 +56,9 @@ NEARNESS: tuple[tuple, ...] = (
      "read as low: close to the bowl, just above its rim"),
     # too close, with no bowl said: to the bowl, just above it
     ("low", (r"re(too close|too near|so close|so near):\b(?:too|so) (?:close|near)\b(?! (?:to|by|from|the|its|a|together)\b)",),
+     "read as low: close to the bowl, just above its rim"),
+    # brought in close, or held low and close: just above it ("if I come in close", "hold it low and close")
+    ("low", (r"re(in close|and close|approach close):\b(?:(?:come|comes|coming|came|go|goes|going|went|get|gets|getting|got) in|approach"
+             r"|(?<=\blow )and) (?:really |very |quite |so |too )?close\b(?! (?:to|by|from|together|up)\b)",),
      "read as low: close to the bowl, just above its rim"),
 )

@@ -40,7 +40,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*|slop\w*|splash\w*|splatter\w*|fizz\w*"
      r"|foam\w*|froth\w*|bubbl\w*|boil\w*) over"
      r"(?: the (?:rim|edge|top|side)s?)?"
-     r"|(?:(?:come|comes|came|coming|go|goes|went|going) )?(?:bounc|jump|leap|hop|fly|flies|flew|flying)\w* (?:right |straight )?(?:back )?(?:up )?(?:and )?(?:over|out(?: of)?)|flood\w*"
+     r"|(?:(?:come|comes|came|coming|go|goes|went|going) )?(?:bounc|jump|leap|hop|climb|fly|flies|flew|flying)\w* (?:right |straight )?(?:back )?(?:up )?(?:and )?(?:over|out(?: of)?)|flood\w*"
      r"|(?:go|goes|going|went|get|gets|come|comes|came) over(?= the (?:far |near |other |opposite |back |front )?(?:rim|edge|top|side|brim|lip)s?\b)", ("liquid_remains_in_destination", "no_spill"), True),
     # (sloshing around in the bowl is no spill: everyday.txt says it back)
     # along the source itself, said first for the plain verbs to leave it whole: "drip back down along the spout", "run down the jug"
@@ -89,7 +89,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"(?! (?:the|my|a|this|that) (?:jug|pitcher|bottle|cup|carton|kettle|jar|mug|can|teapot|flask|beaker|source)\b)|toppl\w*|(?:fall|falls|falling|fell) (?:over|down)|(?:knock|push|shov)\w*(?: it| the \w+)? over"
      r"|turn\w* over|flip\w*|capsiz\w*|overturn\w*|keel\w* over|tumbl(?:e|es|ed|ing)\b"
      # gone over, nothing after it: "the bowl went over" (not "went over the rim": out of the bowl)
-     r"|(?:go|goes|went|gone) over(?= *[,.;!?]| *$| (?:and|when|if|as|while|because)\b)"
+     r"|(?:go|goes|went|gone) over(?= *[,.;!?]| *$| (?:and|when|if|as|while|because)\b"
+     r"| on (?:the |my |our )?(?:table|counter|countertop|worktop|bench|floor|tray)\b)"   # ("went over on the counter")
      r"|(?:fall|falls|fell)\b(?! (?:in|into|inside|out|off|on|onto)\b)"
      # on its side: "does the bowl end up going over on its side"
      r"|(?:(?:go|goes|going|went|gone|fall|falls|falling|fell|tip\w*|roll\w*) (?:over )?)?on(?:to)? (?:its|their) sides?\b"
@@ -109,7 +110,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     # somewhere else at the end: "does the bowl end up in a different spot than where it started"
     (r"(?:end|ends|ended|ending) up (?:in|at|on) (?:a )?(?:different|another|new) (?:spot|place|position|location)"
      r"(?: (?:than|from) where (?:it|they) (?:started|was|were|began|stood))?|(?:end|ends|ended) up somewhere else", STILL, True),
-    (r"(?:slid\w*|slip(?:s|ped|ping)?\b|shift\w*|budg\w*|wobbl\w*|shimm(?:y|ies|ied|ying)\b|jitter\w*|judder\w*|teeter\w*|trembl\w*|quiver\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
+    # (not the source slipping from a hand: "will it slip out of my hand", a drop the vocabulary does not say)
+    (r"(?:slid\w*|slip(?:s|ped|ping)?\b(?! (?:out of|outta|from) (?:my|his|her|their|your|our|the|its|a) (?:\w+ )?(?:hand|hands|grip|grasp|fingers|gripper|gloves?)\b)|shift\w*|budg\w*|wobbl\w*|shimm(?:y|ies|ied|ying)\b|jitter\w*|judder\w*|teeter\w*|trembl\w*|quiver\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
      r"|jostl\w*|rock(?:s|ed|ing)?|(?:shak(?:e|es|ing)|shook)(?! (?:it|them)\b)|translat\w*|drift\w*|creep\w*|scoot\w*"
      # turning where it stands ("can a bowl spin around"), not a source turned ("spin the bottle")
      r"|(?:spin|spins|spinning|spun|swivel\w*)(?! (?:it|them|the \w+)\b)(?: (?:a)?round| about)?"
@@ -121,9 +123,10 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|mov(?:e|es|ed|ing)\b(?! (?:(?:it|them|the \w+) )?(?:in|away|closer|nearer|further|farther|to|out|back|up"
      r"|down|over|into|off|towards?)\b)|bounc\w* (?:around|about))(?: sideways| (?:off |over )?to (?:the|one) side| back and forth| to and fro)?\b",
      STILL, True),       # "move the cup closer": the source's move
-    # the bowl moving away, said of it ("will the bowl move away?"; the source moving away is its retreat)
-    (r"(?:(?<=bowl )|(?<=bowls )|(?<=dish )|(?<=basin )|(?<=destination ))(?:mov(?:e|es|ed|ing)|go|goes|going|went|slid\w*|slip\w*)"
-     r" away\b"
+    # the bowl moving away or sideways, said of it ("will the bowl move away?", "the bowl just went
+    # sideways"; the source moving away is its retreat)
+    (r"(?:(?<=bowl )|(?<=bowls )|(?<=dish )|(?<=basin )|(?<=destination )|(?<=bowl just )|(?<=bowl kind of ))(?:mov(?:e|es|ed|ing)|go|goes|going|went|slid\w*|slip\w*)"
+     r" away\b|(?:(?<=bowl )|(?<=bowl just ))(?:go|goes|going|went) sideways\b"
      # or away from who pours ("it can move away from me?")
      r"|(?:mov(?:e|es|ed|ing)|slid\w*|slip\w*|go|goes|going|went) away from (?:me|us|you|him|her|them)\b", STILL, True),
     # struck and moved: "the bowl gets knocked sideways", "it banged into the bowl and knocked it aside"
@@ -189,7 +192,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:go|goes|going|went|get|gets|land|lands|plop|plops|plopped|make it|makes it|fall|falls|transfer\w*|arrive\w*|finds? (?:its|their) way) (?:more |mostly |all )?(?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*|get (?:the |all (?:the )?)?(?:water|liquid|milk|it|everything) (?:in|into)\b",
      ALL_IN, False),
     # what misses the bowl lands outside it: not all of it goes in, and it spills
-    (r"miss(?:es|ed|ing)?|overshoot\w*|undershoot\w*|fall\w* short", (*ALL_IN, "no_spill"), True),
+    (r"miss(?:es|ed|ing)?|overshoot\w*|undershoot\w*|fall\w* short"
+     r"|land(?:s|ed|ing)? (?:right |just )?(?:past|beyond) (?:it|them|the (?:bowl|destination|rim|edge))\b", (*ALL_IN, "no_spill"), True),
     (r"safe(?:ly)?|(?:be |is )?(?:fine|ok|okay|alright|all right)\b|(?:a )?(?:good|bad) idea|risky"
      r"|(?:be )?(?:a )?(?:disaster|catastrophe|nightmare|fiasco)\b"
      r"|(?:go|goes|going|went) wrong"

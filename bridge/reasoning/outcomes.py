@@ -128,7 +128,8 @@ def _patterns() -> tuple[re.Pattern, ...]:
         rf"|(?:all|any|some|none|most|much|half|a lot) of (?:it|them|the [a-z]+)|(?:any|some|much)(?= (?:left|leftover)\b))"
         rf"|{chance}{subject.replace('<subject>', '<csubject>')})"
         rf" (?:(?:all|any|ever|even|still|not) ){{0,2}}(?:(?:end|ends|ended) up )?(?:{verbs})\b{end}"
-        rf"(?P<odds> (?:very |really |quite |too )?(?:high|low|big|small|great|likely|unlikely)\b)?(?: or not\b)?")
+        rf"(?P<odds> (?:very |really |quite |too )?(?:high|low|big|small|great|likely|unlikely)\b)?"
+        rf"(?: or not\b| or (?:it |they )?(?:stay|stays)(?= *[?.!]* *$))?")      # ("is the bowl moving on the table or it stay?")
     # (or said alone: "splashes?", "drip everywhere?")
     nominal = re.compile(r"\b(?:(?:is|will) there (?:be )?)?(?:any|a|no|some) (?:little |small |big |trail of |line of )?(?P<v1>spill(?:s|age)?"
                          r"|splash(?:es)?|mess|drips?|puddles?)\b(?! of\b)|\b(?:any|some) (?:spilled|spilt)(?= *[?.!]* *$)"

@@ -162,8 +162,12 @@ class Surfaces:
 
 def _wet_bowl(words: list[str], at: int) -> bool:
     """Whether "wet" at `at` is said of the bowl, which stands wet and slides: "the bowl is wet",
-    "bowl wet and slick", "a wet bowl" (not wet hands, nor the table wet with a spill)."""
+    "bowl wet and slick", "a wet bowl", "a wet slippery bowl" (not wet hands, nor the table wet
+    with a spill)."""
     k = at - 1
     while k >= 0 and words[k] in _AS:
         k -= 1
-    return (k >= 0 and words[k] in _BOWLS) or words[at + 1:at + 2] in (["bowl"], ["dish"], ["basin"])
+    j = at + 1
+    while j < len(words) and (words[j] in _GRIP or words[j] == "and"):
+        j += 1
+    return (k >= 0 and words[k] in _BOWLS) or words[j:j + 1] in (["bowl"], ["dish"], ["basin"])

@@ -77,10 +77,13 @@ SPEEDS: tuple[tuple, ...] = (
         r"|gently|carefully|gradually)\b(?! (?:in|into|to|towards?|away|out|off|back|up|down|over|from"
         r"|before|after|then)\b)")),
     # brought in, or gone away, fast or slowly: the move in, the move away
-    ("approach fast", (r"re(bring|brought|swing|swung):\b(?:bring|brings|brought|bringing|swing|swings|swung|swinging)(?: it| the \w+)? in"
-                       r" (?:very |really |too |quite |rather )?(?:fast|quickly|quick|rapidly|swiftly|briskly|hastily)\b",)),
-    ("approach slowly", (r"re(bring|brought):\b(?:bring|brings|brought|bringing)(?: it| the \w+)? in (?:very |really |too |quite |rather )?"
-                         r"(?:slowly|slow|gently|gradually|steadily)\b",)),
+    # (brought with no way said is brought in: "if I bring the bottle very fast")
+    ("approach fast", (r"re(bring|brought|swing|swung):\b(?:bring|brings|brought|bringing|swing|swings|swung|swinging)(?: it| the \w+)?"
+                       r"(?: in (?:very |really |too |quite |rather )?(?:fast|quickly|quick|rapidly|swiftly|briskly|hastily)\b"
+                       r"| (?:very |really |too |quite |rather )?(?:fast|quickly|quick|rapidly|swiftly|briskly|hastily)\b(?! (?:to|toward|towards|than|as)\b))",)),
+    ("approach slowly", (r"re(bring|brought):\b(?:bring|brings|brought|bringing)(?: it| the \w+)?(?: in (?:very |really |too |quite |rather )?"
+                         r"(?:slowly|slow|gently|gradually|steadily)\b| (?:very |really |too |quite |rather )?(?:slowly|slow|gently|gradually|steadily)\b"
+                         r"(?! (?:to|toward|towards|than|as)\b))",)),
     ("retreat fast", (r"re( away):\b(?:go|goes|going|went|gone) away (?:very |really |too |quite )?(?:fast|quickly|quick)\b",
                       r"re(yank|jerk|snatch|whip):\b(?:yank|yanks|yanked|yanking|jerk|jerks|jerked|snatch|snatches|snatched|whip|whips|whipped)"
                       r"(?: it| the \w+)? (?:away|back|out)\b")),
