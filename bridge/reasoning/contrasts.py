@@ -67,6 +67,9 @@ CONTRASTS: tuple[tuple, ...] = (
                       r"(?:destination |bowl )?(?:centre|center|middle)\b(?! by\b)(?:(?: ,)? (?:near|close to|toward|towards|at|by)"
                       r" (?:the |its )?(?:destination |bowl )?(?:edge|rim|lip)\b(?! of))?",),
      "read as near the rim: off the middle, how far not said, the nearest place off it (say \"from the side\" or \"offset sideways\" for others)"),
+    # not poured from the middle: "I pour not from center" (its negation read, as "not centred")
+    ("centred", (r"re(not from):(?<=\bnot )from (?:the )?(?:very )?(?:destination |bowl |cup )?(?:centre|center|middle)\b"
+                 r"(?! (?:by|of the \w+ by) )",)),
     # a height measured from the rim: above it (a minus sign below it)
     ("above the rim", (rf"re(relative|respect|vs|versus):(?:{_AFTER_LENGTH})(?:height )?(?:relative to|with respect to|vs|versus)"
                        r" (?:the )?(?:destination |bowl )?(?:rim|edge|lip|brim)\b(?! (?:of the )?(?:source|cup))",)),

@@ -19,8 +19,8 @@ NEARNESS: tuple[tuple, ...] = (
     # right next to the bowl: beside it, or near its rim?
     (UNCLEAR, (r"re:\b(?:right )?(?:next to|beside|alongside) (?:the )?(?:destination|bowl)\b(?! rim)",)),
     # held close to the bowl: just above it (its edge is "near the rim")
-    ("low", (r"re(close to|near the bowl|near bowl):\b(?:very |right )?(?:close to (?:the )?(?:destination|bowl)"
-             r"|near (?:the )?bowl)\b(?! (?:rim|edge|lip|brim))",),
+    ("low", (r"re(close to|near the bowl|near bowl|near to):\b(?:very |right )?(?:close to (?:the )?(?:destination|bowl)"
+             r"|near (?:to )?(?:the )?bowl)\b(?! (?:rim|edge|lip|brim))",),
      "read as low: just above the bowl's rim (\"near the rim\" would say over its edge)"),
     # the near side of the bowl: the rim on the side the source comes from; the far side lies
     # where the vocabulary's places do not reach
@@ -37,6 +37,8 @@ NEARNESS: tuple[tuple, ...] = (
                       r"(?: of (?:it|the (?:destination|bowl)))?\b(?! of\b)",)),
     # close to the bowl's edge, the bowl named before it with no article ("too close to bowl edge"): near the rim
     ("near the rim", (r"re(close to):\b(?:close|near) to (?:the |its )?(?:destination|bowl)'?s? (?:edge|rim|lip|brim)\b",)),
+    # off, or more, to its edge: "hold it off to the edge", "more to the edge" (near the rim)
+    ("near the rim", (r"re(to the edge|to the rim):\b(?:off|more|further|over|out) to (?:the |its )?(?:destination |bowl )?(?:edge|rim|lip)\b(?! of\b)",)),
     # its very edge, and the bowl's edge named in a note ("jug bowl edge splash?", "jug, edge of bowl,
     # spill?"), not touched
     ("near the rim", (r"re(very edge|very rim|very lip):\b(?:at|on|onto|to|over|near) (?:the |its )?very (?:edge|rim|lip)"

@@ -84,7 +84,14 @@ def ordinary_left(negated: list[str], others: list[str], vocab) -> tuple[str, st
     one of medium weight, and the ordinary pour's bowl is of medium weight);
     or, where no value says it but the ordinary pour lies wholly outside the
     values negated ("not from high": it pours at 50 to 120 mm), the ordinary
-    pour itself (""); None otherwise."""
+    pour itself (""); None otherwise. Not over the middle, how far off it not
+    said ("not from center", "if I don't hold it right over the bowl"), is
+    the nearest place off it, near the rim, as "off centre" is."""
+    for n in negated if len(negated) == 1 else ():
+        near = n.replace("_centred", "_near_rim")
+        if n.endswith("_centred") and near in others:
+            return near, (f"not {n}: {near}, the nearest place off the middle (say \"from the side\" or "
+                          f"\"offset sideways\" for others)")
     props = vocab.propositions
     priors = {p.name: (p.prior_low, p.prior_high) for p in vocab.parameters}
     models = [props[n].model for n in (*negated, *others)]

@@ -112,7 +112,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"(?: (?:than|from) where (?:it|they) (?:started|was|were|began|stood))?|(?:end|ends|ended) up somewhere else", STILL, True),
     # (not the source slipping from a hand: "will it slip out of my hand", a drop the vocabulary does not say)
     (r"(?:slid\w*|slip(?:s|ped|ping)?\b(?! (?:out of|outta|from) (?:my|his|her|their|your|our|the|its|a) (?:\w+ )?(?:hand|hands|grip|grasp|fingers|gripper|gloves?)\b)|shift\w*|budg\w*|wobbl\w*|shimm(?:y|ies|ied|ying)\b|jitter\w*|judder\w*|teeter\w*|trembl\w*|quiver\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
-     r"|jostl\w*|rock(?:s|ed|ing)?|(?:shak(?:e|es|ing)|shook)(?! (?:it|them)\b)|translat\w*|drift\w*|creep\w*|scoot\w*"
+     r"|jostl\w*|walk(?:s|ed|ing)? (?:across|along|around|about)\b|rock(?:s|ed|ing)?|(?:shak(?:e|es|ing)|shook)(?! (?:it|them)\b)|translat\w*|drift\w*|creep\w*|scoot\w*"
      # turning where it stands ("can a bowl spin around"), not a source turned ("spin the bottle")
      r"|(?:spin|spins|spinning|spun|swivel\w*)(?! (?:it|them|the \w+)\b)(?: (?:a)?round| about)?"
      # the bowl pushed by the stream, said with where it goes ("will the stream push them across the table")
@@ -127,6 +127,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     # sideways"; the source moving away is its retreat)
     (r"(?:(?<=bowl )|(?<=bowls )|(?<=dish )|(?<=basin )|(?<=destination )|(?<=bowl just )|(?<=bowl kind of ))(?:mov(?:e|es|ed|ing)|go|goes|going|went|slid\w*|slip\w*)"
      r" away\b|(?:(?<=bowl )|(?<=bowl just ))(?:go|goes|going|went) sideways\b"
+     # jumping where it stands: "the pitcher clinked the rim and the bowl jumped" (not liquid jumping out)
+     r"|(?:(?<=bowl )|(?<=bowl just ))(?:jump|jumps|jumped|jumping|hop|hops|hopped|hopping)\b(?! (?:out|over|up|back|off)\b)"
      # or away from who pours ("it can move away from me?")
      r"|(?:mov(?:e|es|ed|ing)|slid\w*|slip\w*|go|goes|going|went) away from (?:me|us|you|him|her|them)\b", STILL, True),
     # struck and moved: "the bowl gets knocked sideways", "it banged into the bowl and knocked it aside"

@@ -102,10 +102,10 @@ def _number(word: str) -> bool:
 
 #: What a bowl stands on, and the words that say it grips or does not.
 _SURFACES = {"table", "tables", "counter", "counters", "countertop", "worktop", "benchtop", "bench",
-             "tabletop", "bar", "bartop", "conveyor", "conveyors", "tray", "workbench"}
+             "tabletop", "bar", "bartop", "conveyor", "conveyors", "tray", "workbench", "hearth"}
 #: What a bowl may stand on that is a liquid's name or no table: a surface only after "on"
 #: ("sitting on wet concrete", "on a wet floor").
-_GROUND = {"concrete", "cement", "floor", "ground", "marble", "granite", "stone", "tile", "tiles", "slab", "lino"}
+_GROUND = {"concrete", "cement", "floor", "ground", "marble", "granite", "stone", "tile", "tiles", "slab", "lino", "plate"}
 #: The word that may end its name: "a wet bar top", "a slick conveyor belt".
 _ENDS = {"top", "tops", "belt", "belts"}
 _GRIP = {"slippery": "slippery", "slick": "slippery", "slippy": "slippery", "greasy": "slippery", "smooth": "slippery",
@@ -148,6 +148,8 @@ class Surfaces:
             grip = i - 1 if i > 0 and words[i - 1] in _GRIP else (    # "a slick table", "a slick glass table",
                 i - 2 if i > 1 and words[i - 2] in _GRIP and words[i - 1].isalpha() and words[i - 1] not in _BOWLS
                 else None)                                                # ("the wet grooming table", "a slippy overbed table")
+            while grip is not None and grip > 0 and words[grip - 1] in _GRIP:     # "a wet slippery plate"
+                grip -= 1
             if grip is not None and not (out and grip < out[-1][1]):    # "a wet bar top"
                 end = i + 2 if i + 1 < len(words) and words[i + 1] in _ENDS else i + 1
                 out.append((grip, end, (_GRIP[words[grip]], "destination")))

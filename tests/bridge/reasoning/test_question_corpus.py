@@ -163,12 +163,13 @@ READ = {
     "will the bowl tip over if it's light and I pour a heavy liquid?": ['heavy_liquid', 'light_destination'],
     'with 150 particles': ['very_much_liquid'],
     'not a heavy liquid but a light one': ['light_liquid'],
+    "don't pour from the middle": ['pour_near_rim'],        # the nearest place off it, said back
 }
 
 #: questions to refuse in one line
 REFUSED = [
     'If I pour slowly from a low height, does the destination stay upright?',
-    "don't pour from the middle",
+    "don't pour at medium height",
     'never pour upside down',
     'pour more liquid than the bowl holds',
     'fill the bowl',

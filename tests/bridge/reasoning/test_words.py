@@ -45,7 +45,7 @@ def test_everyday_words_are_read_as_the_vocabulary(question, props):
 
 @pytest.mark.parametrize("question,words", [
     ("do not pour near the rim of the cup", "not pour_near_rim leaves"),
-    ("don't pour centred over the cup", "not pour_centred leaves"),
+    ("don't pour at medium height over the cup", "not pour_mid_height leaves"),
     ("a light and heavy cup", "says both heavy_destination (a heavy destination bowl) and "
                               "light_destination"),
     ("move in fast and slowly", "two values of approach_speed"),
