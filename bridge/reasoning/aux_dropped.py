@@ -24,11 +24,12 @@ _SUBJECT = (r"(?:it|they|(?:all |some |any |most |half )?(?:of )?(?:the |my |thi
 #: Verbs of an outcome said with a word after them, which outcome_verb does not take alone.
 _PHRASAL = frozenset(("go", "come", "stay", "get", "land", "end", "fall", "goes", "comes", "stays", "gets", "lands", "ends",
                       "falls"))
-_CLAUSE = re.compile(rf"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<subject>{_SUBJECT}) (?P<verb>[a-z]+)\b(?P<rest>[^,.;:!?]*"
+_AUX_WORDS = r"(?:will|would|does|do|did|is|are|was|were|can|could|might|may|should|shall|gonna)"
+_AUX = re.compile(rf"\b{_AUX_WORDS}\b")
+_CLAUSE = re.compile(rf"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<subject>{_SUBJECT}) (?!{_AUX_WORDS}\b)(?P<verb>[a-z]+)\b(?P<rest>[^,.;:!?]*"
                      # (its condition after it: "it go in the bowl if I pour ..., not ...?"; no question of its own)
                      r"(?: (?:if|when|while) (?:(?!\b(?:am|is|are|was|were|do|does|did|will|would|can|could|should|why|how|what)\b)[^.;:!?])*)?)"
                      r"(?:,? (?:yes|no|right|or not|or no))?\?")     # (a tag after it: "..., yes?")
-_AUX = re.compile(r"\b(?:will|would|does|do|did|is|are|was|were|can|could|might|may|should|shall|gonna)\b")
 
 
 #: An outcome's verb alone as a clause asked ("pour high, wobble?"): of "it".

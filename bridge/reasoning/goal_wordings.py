@@ -177,6 +177,8 @@ WANTING = tuple((re.compile(p), r) for p, r in (
      r"|perfectly|nice and|spotlessly))? (?:clean|dry|spotless)\b", "so that nothing spills"),
     # "a way to never touch the bowl with the jug": so that the jug does not touch it
     (r"\bto (?:never|not) (touch|hit|bump|knock) the (bowl|destination) with (the [a-z]+)\b", r"so that \3 does not \1 the \2"),
+    # "what is the best way to not spill": so that it does not spill
+    (r"\b(?<=way )to (?:never|not) (?=(?:spill|splash|drip|overflow|slop|tip|slide|move|make a mess)\b)", "so that it does not "),
     # "is there a way to pour that doesn't spill": a pour, so that it does not
     (r"\b(a (?:way|method|technique|manner) (?:to pour|of pouring)|a pour) that (?=(?:does not|will not|would not|never)\b)",
      r"\1 so that it "),
