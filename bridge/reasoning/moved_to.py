@@ -21,6 +21,11 @@ MOVED_TO: tuple[tuple, ...] = (
                rf"|coming|came|move[sd]?|moving)(?: (?:it|them|the \w+))? (?:down|up)) to(?= {_RIM_SAID})"
                r"(?![^;.?!]*\b(?:before|after|then)\b)",),
      "read as held there while pouring"),
+    # told as lifted up high and poured: held high while pouring ("I lifted the jug up high and poured"; "raise
+    # it up high and then pour", asked, is still refused: raised before pouring, or held high?)
+    ("hedge", (r"re(lifted|raised):\b(?:lifted|raised)(?: (?:it|them|the(?: \w+){1,2}))?"
+               r"(?= (?:up )?(?:really |very |way )?(?:up )?high(?: ,| and)(?: then)? pour)",),
+     "read as held there while pouring"),
     # held down inside the bowl: below its rim ("lower the jug right down inside it to pour")
     ("below the rim", (r"re(inside):\b(?:(?:lower(?:ed|ing|s)?|dip(?:s|ped|ping)?|put(?:s|ting)?|hold(?:s|ing)?|held"
                        r"|keep(?:s|ing)?|kept)(?: (?:it|them|the \w+))?(?: right)?(?: down)?|(?:right )?down)"
