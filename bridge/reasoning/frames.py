@@ -62,7 +62,7 @@ CONTACT = Cued(r"(?<!\bin )\b(?:(?:is|will) there (?:be )?)?(?:any |some |no |a 
                r"(?:contact|collisions?) (?:between|with)\b"
                r"|\b(?:is|will|would|could) there (?:be )?(?:any |some |no |a )?collisions?\b"
                r"|(?:^|(?<=[,:;.!?] ))(?:(?:any |a |the )?(?:risk|chance|danger|odds|possibility|likelihood)"
-               r" of )?(?:any |a )?(?:collisions?|contact)(?: or not)?(?= *[?.!]* *$)",
+               r" of )?(?:any |a )?(?:(?:rim|edge|bowl) )?(?:collisions?|contact)(?: or not)?(?= *[?.!]* *$)",   # ("rim contact?")
                ("contact", "collision"))
 
 

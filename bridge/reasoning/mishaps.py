@@ -74,7 +74,8 @@ _SHOULD_HAVE = re.compile(r"^(?:so )?(?:should|could|would) (?P<who>i|we|he|she|
 _TOO = re.compile(r"^(?:so )?(?:is|was|am|were) (?:it|that|i|we|you|he|she|they|the (?P<noun>[a-z]+)) (?:just |simply |maybe )?"
                   r"(?:(?:holding|pouring) (?:it |the \w+ )?(?:from )?|(?:going|moving|coming in|moving (?:it|the \w+)(?: in| away)?"
                   r"|bringing (?:it|the \w+) in|pulling (?:it|the \w+) away) )?(?:too |because (?:it is|it was) (?:too )?)"
-                  r"(?P<value>light|heavy|slippery|bouncy|high|low|sticky|runny|full|fast|quick|slow)(?: or (?:something|what))?[?.! ]*$")
+                  r"(?P<value>light|heavy|slippery|bouncy|high|low|sticky|runny|full|fast|quick|slow|far (?:off )?to (?:one|the) side"
+                  r"|far away|close)(?: or (?:something|what))?[?.! ]*$")
 #: The move a speed asked as a cause is of, by the phase the mishap is told in: "when I moved it in ... was I going too fast?".
 _SPEED_OF = {" as the jug comes in": "move in", " as the jug moves away": "move away"}
 #: What splits the narrative's clauses, for the scene a cause is asked of.

@@ -135,7 +135,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:knock|bump|nudg|bash|bang)\w*(?: it| them| the \w+)? (?:sideways|aside|across|along|out of place)\b", ("source_clear", *STILL), True),
     (r"(?:giv(?:e|es|ing)|gave) (?:a |any |some )?(?:hit|knock|bump|bang|touch)s?(?: to)?(?= (?:the|a|an|my|its|it)\b)"   # "giving a hit to the bowl"
      r"|bump\w*|hit(?:s|ting)?|touch\w*|collid\w*|crash\w*|knock\w*|clip(?:s|ped)?|strike\w*"
-     r"|bonk\w*|bang\w*|intersect\w*|clash\w*|graz(?:e|es|ed|ing)|scrap(?:e|es|ed|ing)|nudg\w*|clink\w*|clang\w*|slam\w*(?! *(?:[,.;!?]|$|tonight\b))"
+     r"|bonk\w*|bang\w*|intersect\w*|clash\w*|graz(?:e|es|ed|ing)|scrap(?:e|es|ed|ing)|nudg\w*|clink\w*|clang\w*|clonk\w*|clunk\w*|slam\w*(?! *(?:[,.;!?]|$|tonight\b))"
      r"|smash\w*|whack\w*|smack\w*|(?:run|runs|ran|running) into|(?:come|comes|came) into contact|(?:make|makes|made|making) contact with|bounc\w* (?:off|against)"
      r"|make contact|makes contact|(?:any|some) contact|contact (?:occur|occurs|happen|happens)"
      r"|(?<=there )(?:any |some )?contact|(?<=there be )(?:any |some )?contact",   # "is there contact"
@@ -195,7 +195,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      ALL_IN, False),
     # what misses the bowl lands outside it: not all of it goes in, and it spills
     (r"miss(?:es|ed|ing)?|overshoot\w*|undershoot\w*|fall\w* short"
-     r"|land(?:s|ed|ing)? (?:right |just )?(?:past|beyond) (?:it|them|the (?:bowl|destination|rim|edge))\b", (*ALL_IN, "no_spill"), True),
+     r"|(?:land|go|fly|shoot)(?:s|es|ed|ing)? (?:right |just |straight )?(?:past|beyond) (?:it|them|the (?:bowl|destination|rim|edge))\b"
+     r"|(?:went|flew|shot) (?:right |just |straight )?(?:past|beyond) (?:it|them|the (?:bowl|destination|rim|edge))\b", (*ALL_IN, "no_spill"), True),
     (r"safe(?:ly)?|(?:be |is )?(?:fine|ok|okay|alright|all right)\b|(?:a )?(?:good|bad) idea|risky"
      r"|(?:be )?(?:a )?(?:disaster|catastrophe|nightmare|fiasco)\b"
      r"|(?:go|goes|going|went) wrong"

@@ -105,7 +105,7 @@ _SURFACES = {"table", "tables", "counter", "counters", "countertop", "worktop", 
              "tabletop", "bar", "bartop", "conveyor", "conveyors", "tray", "workbench", "hearth"}
 #: What a bowl may stand on that is a liquid's name or no table: a surface only after "on"
 #: ("sitting on wet concrete", "on a wet floor").
-_GROUND = {"concrete", "cement", "floor", "ground", "marble", "granite", "stone", "tile", "tiles", "slab", "lino", "plate"}
+_GROUND = {"concrete", "cement", "floor", "ground", "marble", "granite", "stone", "tile", "tiles", "slab", "lino", "plate", "decking"}
 #: The word that may end its name: "a wet bar top", "a slick conveyor belt".
 _ENDS = {"top", "tops", "belt", "belts"}
 _GRIP = {"slippery": "slippery", "slick": "slippery", "slippy": "slippery", "greasy": "slippery", "smooth": "slippery",
