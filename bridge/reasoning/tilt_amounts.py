@@ -63,8 +63,8 @@ FAR_TILTS: tuple[tuple, ...] = (
     ("slightly tilted", (r"re( much):\bnot (?:so |that |too |very )?much (?:inclined|tilted|tipped|angled)\b",),
      "read as slightly tilted: tilted, not much"),
     ("steeply tilted", (r"re( much):\b(?:tilted|tipped|inclined|angled) (?:very|so|really) much\b",), "read as steeply tilted"),
-    # tipped really far: steeply (too far stays refused: past what?)
-    ("steeply tilted", (r"re( far):\b(?:tilt|tip)\w*(?: (?:it|them|the \w+))? (?:really|very|way|pretty|quite) far\b"
+    # tipped (really) far: steeply ("tilted far, right at the edge"; too far stays refused: past what?)
+    ("steeply tilted", (r"re( far):\b(?:tilt|tip)\w*(?: (?:it|them|the \w+))? (?:(?:really|very|way|pretty|quite) )?far\b"
                         r"(?! (?:from|away|off|to)\b)",), "read as steeply tilted"),
     # tipped too far (or too much), told of a pour that went wrong ("I tipped the jug too far and ...",
     # "was it because i tilted it too much?"): tipped far, the least of which is steeply
