@@ -59,7 +59,7 @@ FRAMES = tuple((re.compile(p), r) for p, r in (
 #: Contact asked of by its noun alone: "contact between source and bowl?", "any collision
 #: with the bowl?" (not "in contact with", which states it).
 CONTACT = Cued(r"(?<!\bin )\b(?:(?:is|will) there (?:be )?)?(?:any |some |no |a |the )?"
-               r"(?:contact|collisions?) (?:between|with)\b"
+               r"(?:contact|collisions?) (?:between|with)\b(?: (?:the |its )?(?:bowl'?s? |destination )?(?:rim|edge|lip)\b(?! of\b))?"
                r"|\b(?:is|will|would|could) there (?:be )?(?:any |some |no |a )?collisions?\b"
                r"|(?:^|(?<=[,:;.!?] ))(?:(?:any |a |the )?(?:risk|chance|danger|odds|possibility|likelihood)"
                r" of )?(?:any |a )?(?:(?:rim|edge|bowl) )?(?:collisions?|contact)(?: or not)?(?= *[?.!]* *$)",   # ("rim contact?")

@@ -74,7 +74,7 @@ def source_on_rim(text: str, said: dict[str, None]) -> str:
             return m.group(0)           # "without the jar touching the rim": a goal
         condition = re.search(r"\b(?:if|when|whenever|while|once)\b(?: \w+){0,4} ?$", before)
         if not condition and (before.strip() or not m.group("touch").startswith(("touching", "contacting", "resting", "leaning",
-                                                                                  "sitting", "is "))):
+                                                                                  "sitting", "is ", "keep", "banging", "hitting"))):
             return m.group(0)           # "the cup touches the rim when I pour low?": the touch asked
         if re.fullmatch(r"[?.!]*", text[m.end():].strip()) and not (
                 condition and re.sub(r"\b(?:what|happens|happen|would|will|so|and|then)\b", "", before[:condition.start()]).strip()):
@@ -93,7 +93,8 @@ def _on_rim() -> re.Pattern:
     return re.compile(
         rf"(?P<source>\b(?:(?:the|my|a|its|your) )?(?:{sources}))(?P<part> (?:spout|lip|rim|edge|mouth))? "
         rf"(?P<touch>(?:is touch|(?:(?:is|keeps|keep) )?(?:touches|touching|contacts|contacting|makes contact with|is in contact with"
-        rf"|rests on|resting on|leans on|leaning on|sits on|sitting on|hits|bumps|knocks|clips|strikes)) (?:the |its |a )?"
+        rf"|rests on|resting on|leans on|leaning on|sits on|sitting on|hits|bumps|knocks|clips|strikes|hitting|banging|bumping|knocking"
+        rf"|brushes against|brushing against|bangs against|bangs into|bumps into)) (?:the |its |a )?"
         rf"(?:(?:{destinations}) )?(?:rim|edge)"
         rf"(?: of (?:the |a |my |its )?(?:{destinations}))?)\b(?=[,.;:!?]? *(?:(?:when|while|during)\b|[,.;:!?] *)?"
         rf"(?!(?:ok|okay|fine|alright|all right|or not|or no|yes|no)\b)[a-z]| *[?.!]* *$)")
