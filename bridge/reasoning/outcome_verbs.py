@@ -195,8 +195,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      ALL_IN, False),
     # what misses the bowl lands outside it: not all of it goes in, and it spills
     (r"miss(?:es|ed|ing)?|overshoot\w*|undershoot\w*|fall\w* short"
-     r"|(?:land|go|fly|shoot)(?:s|es|ed|ing)? (?:right |just |straight )?(?:past|beyond) (?:it|them|the (?:bowl|destination|rim|edge))\b"
-     r"|(?:went|flew|shot) (?:right |just |straight )?(?:past|beyond) (?:it|them|the (?:bowl|destination|rim|edge))\b", (*ALL_IN, "no_spill"), True),
+     # gone past it: "it went straight past the bowl", "the stream landed past the rim"
+     r"|(?:land|lands|landed|landing|go|goes|going|went|gone|fly|flies|flying|flew|shoot|shoots|shooting|shot)"
+     r" (?:right |just |straight )?(?:past|beyond) (?:it|them|the (?:bowl|destination|rim|edge))\b", (*ALL_IN, "no_spill"), True),
     (r"safe(?:ly)?|(?:be |is )?(?:fine|ok|okay|alright|all right)\b|(?:a )?(?:good|bad) idea|risky"
      r"|(?:be )?(?:a )?(?:disaster|catastrophe|nightmare|fiasco)\b"
      r"|(?:go|goes|going|went) wrong"
