@@ -70,6 +70,8 @@ CONTRASTS: tuple[tuple, ...] = (
     # not poured from the middle: "I pour not from center" (its negation read, as "not centred")
     ("centred", (r"re(not from):(?<=\bnot )from (?:the )?(?:very )?(?:destination |bowl |cup )?(?:centre|center|middle)\b"
                  r"(?! (?:by|of the \w+ by) )",)),
+    # the bowl centred under the source: centred ("the bowl is centered under it")
+    ("centred", (r"re(under):\b(?:centred|centered) under (?:it|them|the \w+)\b",)),
     # a height measured from the rim: above it (a minus sign below it)
     ("above the rim", (rf"re(relative|respect|vs|versus):(?:{_AFTER_LENGTH})(?:height )?(?:relative to|with respect to|vs|versus)"
                        r" (?:the )?(?:destination |bowl )?(?:rim|edge|lip|brim)\b(?! (?:of the )?(?:source|cup))",)),

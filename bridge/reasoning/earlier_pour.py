@@ -139,6 +139,8 @@ def told(text: str) -> tuple[str, tuple[str, ...]]:
         return text, ()             # more told between ("... and the whole bowl scooted across ..."): mishaps.py's
     if out and cause and m.groupdict().get("how") is not None:
         did = _AS_DONE.get(m.group("verb"), "pour")        # "i tipped it in slowly": if i tip it in slowly
+        if did in ("tip", "tilt") and re.search(r"\btoo (?:far|much)\b", m.group("how")):
+            did = m.group("verb")       # (tipped too far, as told: steeply; "if i tip it too far" asks how far)
         asked = f"if i {did}{m.group('how')}, {_TOLD[verb]}?"     # "... and the bowl fell over, how come?"
         said.append(f"{rest.strip(' ?.!')}: read as {asked.strip(' ?')}, asked of the earlier pour")
         rest = asked
