@@ -28,7 +28,7 @@ _AUX_WORDS = r"(?:will|would|does|do|did|is|are|was|were|can|could|might|may|sho
 _AUX = re.compile(rf"\b{_AUX_WORDS}\b")
 _CLAUSE = re.compile(rf"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<subject>{_SUBJECT}) (?!{_AUX_WORDS}\b)(?P<verb>[a-z]+)\b(?P<rest>[^,.;:!?]*"
                      # (its condition after it: "it go in the bowl if I pour ..., not ...?"; no question of its own)
-                     r"(?: (?:if|when|while) (?:(?!\b(?:am|is|are|was|were|do|does|did|will|would|can|could|should|why|how|what)\b)[^.;:!?])*)?)"
+                     rf"(?: (?:if|when|while) (?:(?!\b(?:{_AUX_WORDS}|am|why|how|what)\b)[^.;:!?])*)?)"
                      r"(?:,? (?:yes|no|right|or not|or no))?\?")     # (a tag after it: "..., yes?")
 
 

@@ -35,10 +35,10 @@ NEARNESS: tuple[tuple, ...] = (
                       r"|\bonto (?:its|the (?:destination|bowl)s?) (?:edge|rim|lip)\b"
                       r"|\b(?:right|directly) (?:above|over) (?:the |its )?(?:destination |bowl )?(?:edge|rim|lip)"
                       r"(?: of (?:it|the (?:destination|bowl)))?\b(?! of\b)",)),
-    # close to the bowl's edge, the bowl named before it with no article ("too close to bowl edge"): near the rim
-    ("near the rim", (r"re(close to):\b(?:close|near) to (?:the |its )?(?:destination|bowl)'?s? (?:edge|rim|lip|brim)\b",)),
-    # off, or more, to its edge: "hold it off to the edge", "more to the edge" (near the rim)
-    ("near the rim", (r"re(to the edge|to the rim):\b(?:off|more|further|over|out) to (?:the |its )?(?:destination |bowl )?(?:edge|rim|lip)\b(?! of\b)",)),
+    # close to the bowl's edge, the bowl named before it with no article ("too close to bowl edge"), or off,
+    # or more, to its edge ("hold it off to the edge", "more to the edge"): near the rim
+    ("near the rim", (r"re(close to):\b(?:close|near) to (?:the |its )?(?:destination|bowl)'?s? (?:edge|rim|lip|brim)\b",
+                      r"re(to the edge|to the rim):\b(?:off|more|further|over|out) to (?:the |its )?(?:destination |bowl )?(?:edge|rim|lip)\b(?! of\b)")),
     # its very edge, and the bowl's edge named in a note ("jug bowl edge splash?", "jug, edge of bowl,
     # spill?"), not touched
     ("near the rim", (r"re(very edge|very rim|very lip):\b(?:at|on|onto|to|over|near) (?:the |its )?very (?:edge|rim|lip)"

@@ -62,7 +62,8 @@ FAR_TILTS: tuple[tuple, ...] = (
     # not much inclined, as learners of English say it: slightly tilted; tilted very much: steeply
     ("slightly tilted", (r"re( much):\bnot (?:so |that |too |very )?much (?:inclined|tilted|tipped|angled)\b",),
      "read as slightly tilted: tilted, not much"),
-    ("steeply tilted", (r"re( much):\b(?:tilted|tipped|inclined|angled) (?:very|so|really) much\b",), "read as steeply tilted"),
+    ("steeply tilted", (r"re( much):\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:very|so|really) much\b",),
+     "read as steeply tilted"),
     # tipped (really) far: steeply ("tilted far, right at the edge"; too far stays refused: past what?)
     ("steeply tilted", (r"re( far):\b(?:tilt|tip)\w*(?: (?:it|them|the \w+))? (?:(?:really|very|way|pretty|quite) )?far\b"
                         r"(?! (?:from|away|off|to)\b)",), "read as steeply tilted"),

@@ -137,7 +137,7 @@ PHRASES: tuple[tuple, ...] = (
     *FAR_TILTS,               # "not tilted very far", "tip it really far", "tilted too far" (tilt_amounts.py)
     # tilted a lot: steeply (the most before upside down, which "all the way" says)
     ("steeply tilted", (r"re:\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:(?:quite |really |very )?a lot"
-                        r"|lots|loads|heaps|(?:very|really|so) much)\b",)),
+                        r"|lots|loads|heaps)\b",)),
     # tilting has no speed of its own in the vocabulary beside that move's: not a rate, nor a change
     (UNCLEAR, (r"re:\b(?:tilt|tip|rotat|turn)\w*(?: (?:it|the \w+))?(?: (?:very|really|too|quite))?"
                r" (?:slow(?:ly|er)?|fast(?:er)?|quick(?:ly|er)?|rapidly|gradually|steadily)\b",
