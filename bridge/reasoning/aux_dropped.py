@@ -48,6 +48,8 @@ _FRAGMENTS = {"all in": "does it all go in", "all out": "does it all come out", 
                  for after in ("", " after", " afterwards")}}
 _FRAGMENT = re.compile(rf"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<said>{'|'.join(sorted(_FRAGMENTS, key=len, reverse=True))})"
                        r"(?:\?|(?<=in or out)[.!]*$)")       # ("side pour. in or out": its question mark left off)
+#: "ok or not" ending a note, however set off ("pour high - ok or not"): "is it ok?".
+_OK_OR_NOT = re.compile(r"(?:,| -)? (?:ok|okay) or not\b[ ?]*$")
 #: Words of an outcome that are said of it, not done: "ok?" is "is it ok?".
 _SAID_OF = frozenset(("ok", "okay", "fine", "safe", "alright", "good", "bad", "messy", "clean"))
 #: Where the liquid lands, said wet ("table wet?", "floor gets wet?"): whether it gets wet.
@@ -121,6 +123,9 @@ def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
         said.append(f"{why.group(0)}: read as {why.group('why')} does {text[why.end('why') + 1:why.end()]}")
         text = f"{why.group('why')} does {text[why.end('why') + 1:]}"
     text = _FRAGMENT.sub(fragment, text) if "?" in text or "in or out" in text else text
+    if _OK_OR_NOT.search(text):                         # "jug touching bowl rim - ok or not": ok?
+        said.append("ok or not: read as is it ok")
+        text = _OK_OR_NOT.sub(", is it ok?", text)
     text = _CLAUSE.sub(restore, text)
     text = _ALONE.sub(alone, text) if "?" in text else text
     return (_WET.sub(wet, text) if " wet?" in text else text), tuple(said)

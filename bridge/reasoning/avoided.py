@@ -19,8 +19,9 @@ _VERBS = {"hits": "hit", "hit": "hit", "bumps": "bump", "bumped": "bump", "knock
           "spills": "spill", "spilled": "spill", "spilt": "spill", "splashes": "splash", "splashed": "splash",
           "drips": "drip", "dripped": "drip", "overflows": "overflow", "overflowed": "overflow",
           "misses": "miss", "missed": "miss"}
+#: (Not an outcome not wanted, said first: "no spills, what tilt should i use" is goal_wordings.py's.)
 _TOLD = re.compile(
-    rf"^(?P<who>(?:[a-z']+ ){{1,3}}?)(?:keeps? |always )?(?P<verb>{'|'.join(_VERBS)}|keeps? (?:{'|'.join(v + 'ing' for v in ('hitt', 'bump', 'knock', 'slid', 'mov', 'tipp', 'spill', 'splash', 'dripp'))}))"
+    rf"^(?!(?:no|not|never|without) )(?P<who>(?:[a-z']+ ){{1,3}}?)(?:keeps? |always )?(?P<verb>{'|'.join(_VERBS)}|keeps? (?:{'|'.join(v + 'ing' for v in ('hitt', 'bump', 'knock', 'slid', 'mov', 'tipp', 'spill', 'splash', 'dripp'))}))"
     r"(?P<rest>(?: [a-z']+)*?) *[,;.:-]+ *(?P<ask>(?:what|which)(?: [a-z]+){0,3}?)"
     r"(?: (?:avoids|would avoid|will avoid|prevents|would prevent|stops|would stop|fixes|would fix|solves|would solve)"
     r" (?:that|this|it)| should (?:i|we|you) (?:set|use|choose|pick|try|go with))(?P<end> *[?.!]* *)$")

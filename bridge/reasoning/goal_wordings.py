@@ -57,7 +57,8 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:do not|does not|never) lets? (it|them|the [a-z]+|any(?: of it)?|a drop|a single drop) ", r"so that \1 does not "),
     # a note of what is wanted before asking how ("no splashing, how do I pour"): so that nothing spills
     (r"(?:^|(?<=[,;:.!?] )|(?<= - ))no (?:spill|spills|spilling|splash|splashes|splashing|mess|drips|dripping)"
-     r"(?= *(?:[,;:.!?]| - ).*\bhow (?:do|should|can|would)\b)", "so that nothing spills"),
+     r"(?= *(?:[,;:.!?]| - ).*\b(?:how (?:do|should|can|would)|what (?:settings?|height|tilt|angle|speed|pour)\b))",
+     "so that nothing spills"),
     # ... or the bowl's moving ("no wobble, what settings would do that"): so that it does not move so
     (r"(?:^|(?<=[,;:.!?] )|(?<= - ))no (wobbl|slid|slip|tip|mov)(?:e|es|ing|ping|ement|s)?(?: over)?"
      r"(?= *(?:[,;:.!?]| - ).*\b(?:how (?:do|should|can|would)|what (?:settings?|height|tilt|angle|speed|pour)\b))",

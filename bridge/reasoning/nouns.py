@@ -116,13 +116,14 @@ def _handled(tokens: list[Token], i: int, j: int) -> bool:
 def _ones(tokens: list[Token], roles: dict[int, str], placeable: frozenset[str]) -> dict[int, str]:
     """`roles`, with "one" after a value word (what it is made of may stand between) the body the
     question names, where it names one: "rather than a heavy bowl, use a really light one" (a light
-    bowl), "it's a lightweight melamine one"."""
+    bowl), "it's a lightweight melamine one"; with what it is made of said, only a container is meant
+    ("the bowl flipped as I poured the oil, it was a light plastic one")."""
     named = {r for r in roles.values() if r != CONTEXT}
-    if len(named) != 1:
-        return roles
-    return {**roles, **{i: next(iter(named)) for i, t in enumerate(tokens) if t.word == "one" and i > 0
-                        and (v := _value_before(tokens, i)) is not None and tokens[v].word in placeable
-                        and tokens[v].word not in BETWEEN}}
+    made = {r for r in named if r != "liquid"}
+    ones = {i: v for i, t in enumerate(tokens) if t.word == "one" and i > 0
+            and (v := _value_before(tokens, i)) is not None and tokens[v].word in placeable and tokens[v].word not in BETWEEN}
+    return {**roles, **{i: next(iter(named)) if len(named) == 1 else next(iter(made)) for i, v in ones.items()
+                        if len(named) == 1 or (len(made) == 1 and v < i - 1)}}
 
 
 def _value_before(tokens: list[Token], i: int) -> int | None:

@@ -29,7 +29,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      # gone out of the bowl it went into: "for the oil not going out of the bowl"
      r"|(?:go|goes|going|went|get|gets|getting|got) out of(?= (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|destination)\b)"
      # thrown out, no bowl said: out of the destination, as people who pour read it ("splash out")
-     r"|(?:splash\w*|splatter\w*|slosh\w*|slop\w*)(?: back)? out\b(?! of\b| over\b)"
+     r"|(?:splash\w*|splatter\w*|slosh\w*|slop\w*)(?: back)?(?: up(?: and)?)? out\b(?! of\b| over\b)"
      # (spilled out onto the table: where it lands, a spill; splashed out onto it was thrown out of the bowl)
      r"|(?:spill\w*|spilt)(?: back)? out\b(?! of\b| over\b| (?:on|onto|all over) (?:the |a |my )?"
      r"(?:table|counter|countertop|worktop|floor|bench|tablecloth|ground)\b)"
@@ -110,6 +110,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     # somewhere else at the end: "does the bowl end up in a different spot than where it started"
     (r"(?:end|ends|ended|ending) up (?:in|at|on) (?:a )?(?:different|another|new) (?:spot|place|position|location)"
      r"(?: (?:than|from) where (?:it|they) (?:started|was|were|began|stood))?|(?:end|ends|ended) up somewhere else", STILL, True),
+    # dancing where it stands, as children say a bowl wobbling: "does the bowl do a little dance"
+    (r"(?:do|does|did|doing|done) (?:a )?(?:little |bit of a |small )?(?:wobble |jiggle |wiggle )?dance\b"
+     r"|danc(?:e|es|ed|ing)\b(?: (?:a)?round| about)?", STILL, True),
     # (not the source slipping from a hand: "will it slip out of my hand", a drop the vocabulary does not say)
     (r"(?:slid\w*|slip(?:s|ped|ping)?\b(?! (?:out of|outta|from) (?:my|his|her|their|your|our|the|its|a) (?:\w+ )?(?:hand|hands|grip|grasp|fingers|gripper|gloves?)\b)|shift\w*|budg\w*|wobbl\w*|shimm(?:y|ies|ied|ying)\b|jitter\w*|judder\w*|teeter\w*|trembl\w*|quiver\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
      r"|jostl\w*|walk(?:s|ed|ing)? (?:across|along|around|about)\b|rock(?:s|ed|ing)?|(?:shak(?:e|es|ing)|shook)(?! (?:it|them)\b)|translat\w*|drift\w*|creep\w*|scoot\w*"

@@ -95,9 +95,9 @@ _SHARE = r"(?:what|which) (?:fraction|proportion|share|percentage|part|amount)(?
 
 
 #: What happens, asked of the pour and of nothing in it ("what happens if I pour from high?", not "what
-#: happens to the bowl"): every expectation is asked.
+#: happens to the bowl"), or the worst of it ("what's the worst that can happen"): every expectation is asked.
 _WHAT_HAPPENS = re.compile(r"\bwhat (?:happens|would happen|will happen|is going to happen|is gonna happen|could happen)"
-                           r"(?! to\b| with\b)")
+                           r"(?! to\b| with\b)|\bworst (?:that (?:can|could|might|would|will) happen|case)\b")
 #: Words that say nothing of a pour beside it ("so what happens then?": no pour asked of).
 _NOTHING_ELSE = frozenset(("so", "then", "now", "next", "here", "there", "and", "well", "ok", "okay", "if", "i", "we",
                            "you", "it", "this", "that", "what", "hey", "hi"))

@@ -64,7 +64,13 @@ def source_on_rim(text: str, said: dict[str, None]) -> str:
     something else asked before or after it. No proposition says a touch; whether it touches is asked
     as itself ("does the cup touch the rim?", "bottle touching bowl rim?", "the cup touches the rim when
     I pour low?"), and a touch not wanted ("without the jar touching the rim") is a goal: neither is
-    rewritten."""
+    rewritten. The source set on the bowl by someone in a condition ("when I leaned the pitcher on
+    it", "if I rest the jug on the rim") is read so too."""
+    def set_on_rim(m: re.Match) -> str:
+        said.setdefault(f"{m.group(0)[len(m.group('when')) + 1:]}: read as low near the rim, where the source meets it"
+                        " (no proposition says a touch)")
+        return f"{m.group('when')} the {m.group('source')} low near the rim"
+    text = _set_on_rim().sub(set_on_rim, text)
     if not re.search(r"\b(?:rim|edge)\b", text):
         return text
 
@@ -86,6 +92,18 @@ def source_on_rim(text: str, said: dict[str, None]) -> str:
 
 
 @lru_cache(maxsize=None)
+def _set_on_rim() -> re.Pattern:
+    """Someone setting the source on the bowl (its rim, its edge, it) in a condition."""
+    sources = alternation(w for w in names("bowl") if w not in _DESTINATIONS)
+    destinations = alternation(w for w in _DESTINATIONS if w not in ("container",))
+    return re.compile(
+        rf"\b(?P<when>if|when|while|once) (?:i|we|you|he|she|they) (?:lean|leans|leaned|leant|leaning|rest|rests|rested|resting"
+        rf"|prop|props|propped|propping|balance|balances|balanced|balancing) (?:the|my|a|her|his|our) (?P<source>{sources})"
+        rf" (?:on|against) (?:it|(?:its|the) (?:rim|edge|lip)(?: of (?:the |my |a )?(?:{destinations}))?"
+        rf"|(?:the|my) (?:{destinations})(?:'s (?:rim|edge|lip))?)\b")
+
+
+@lru_cache(maxsize=None)
 def _on_rim() -> re.Pattern:
     """A source touching (or striking) the rim, then what else is said (or the question's end)."""
     sources = alternation(["container", "source", *(w for w in names("bowl") if w not in _DESTINATIONS)])
@@ -97,7 +115,7 @@ def _on_rim() -> re.Pattern:
         rf"|brushes against|brushing against|bangs against|bangs into|bumps into)) (?:the |its |a )?"
         rf"(?:(?:{destinations}) )?(?:rim|edge)"
         rf"(?: of (?:the |a |my |its )?(?:{destinations}))?)\b(?=[,.;:!?]? *(?:(?:when|while|during)\b|[,.;:!?] *)?"
-        rf"(?!(?:ok|okay|fine|alright|all right|or not|or no|yes|no)\b)[a-z]| *[?.!]* *$)")
+        rf"(?!(?:ok|okay|fine|alright|all right|or not|or no|yes|no)\b)[a-z]| *[?.!]* *$|(?:,| -) (?:ok|okay|fine|alright)\b)")
 
 
 def stream_striking(text: str, said: dict[str, None]) -> str:

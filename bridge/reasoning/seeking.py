@@ -202,7 +202,7 @@ _CAN_EMPTY = (r"\b(?:can|could) (?:i|we|you) (?:still )?(?:empty|drain) (it|(?:t
 #: "how do I get all the soup into the bowl" (so that it goes in).
 _WANTING_CUED = (
     # "I don't want the cup to touch the bowl": so that it does not
-    (Cued(r"\b(?:i|we) (?:do not|never) (?:want|wish)(?: for)? (it|them|the (?!source\b)[a-z]+|any(?: of it)?(?: in the [a-z]+)?)"
+    (Cued(r"\b(?:i|we) (?:do not|never) (?:want|wish)(?: for)? (it|them|the (?!source\b)[a-z]+|any(?: of it| of the (?:[a-z]+ )?[a-z]+)?(?: in the [a-z]+)?)"
           r" (?:to |(?=[a-z]+ing\b))",
           ("not want", "never want", "not wish", "never wish")), r"so that \1 does not "),
     # "I want every drop in the bowl": so that it goes in

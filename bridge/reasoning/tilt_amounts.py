@@ -1,9 +1,9 @@
 """How far the source is tilted, said by how much tilt or how strong it
 is, as learners of English say it, part of words.py's PHRASES: "with much
 angle", "with a lot of angle", "a strong tilt", "make the tilting of the
-bottle very strong" are steeply tilted, as "tilt it hard" is
-(everyday.txt); "a little angle" or "a weak tilt" slightly tilted ("a big tilt"
-is refused as a size is: everyday.txt reads it first). An angle
+bottle very strong", "a high tilt" (no number after it: "jug high tilt 90" is high,
+tilted 90 degrees) are steeply tilted, as "tilt it hard" and "a big tilt" are
+(everyday.txt); "a little angle" or "a weak tilt" slightly tilted. An angle
 asked for ("how much angle") is a value asked, not said: left to be read
 as one. A little either side of horizontal ("slightly past horizontal", "a
 little less than horizontal") is steeply tilted still, as horizontal is; a
@@ -34,7 +34,8 @@ NEAR_HORIZONTAL = ("steeply tilted", (rf"re(horizontal):\b{_NEAR} (?:the )?horiz
 TILT_AMOUNTS: tuple[tuple, ...] = (
     ("steeply tilted", (rf"re(angle|tilt|tip|inclin):(?<!how )\b(?:with |at )?{_MUCH} {_TILTING}\b",
                         r"re(strong):\b(?:make|makes|making|made) the (?:tilt|tilting|tipping|angle)(?: of (?:it|the \w+))?"
-                        r" (?:very |really |so |more |too )?strong(?:er)?\b")),
+                        r" (?:very |really |so |more |too )?strong(?:er)?\b",
+                        r"re(tilt):\b(?:a )?high tilt\b(?! ?(?:of |at |to |-)?[0-9])")),
     ("slightly tilted", (rf"re(angle|tilt|tip|inclin):(?<!how )\b(?:with |at )?{_LITTLE} {_TILTING}\b",)),
     ("hedge", (r"re(horizontally):(?:(?<=away )|(?<=back )|(?<=out )|(?<=retreat )|(?<=retract )|(?<=withdraw )"
                r"|(?<=retreat it )|(?<=move )|(?<=moves )|(?<=moving )|(?<=move it ))horizontally\b",),

@@ -337,3 +337,10 @@ def test_a_verb_of_an_outcome_is_never_offered_as_a_scene_word_misspelt(question
     with pytest.raises(UserError) as refused:
         read_question(question)
     assert '"slide"' in str(refused.value) and "'side'" not in str(refused.value)
+
+
+@pytest.mark.parametrize("question", ["no spills, what tilt should i use", "no drips - what speed should i use"])
+def test_an_outcome_not_wanted_said_first_is_not_told_of_a_word(question):
+    # "no spills, what tilt": nothing spills, wanted; "no" is not what spills
+    r = read_question(question)
+    assert list(r.goals) == ["no_spill"] and not any("so that no " in n for n in r.notes)
