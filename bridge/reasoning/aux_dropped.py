@@ -8,8 +8,10 @@ wobble?": does it wobble?, "full jug, tipped over?"), and a place said wet ("tab
 table get wet?), and an outcome going on said first as a note's topic, nothing
 asked ("bowl tipping - heavy pitcher - off center"), and a cause asked so ("why the liquid not go in
 the bowl", "why comes the water over the edge"); so are outcomes asked in a word or two ("all in?": does
-it all go in?, "leftover?": is any left in the source?, "still in bowl after?": does it stay in the bowl?). A clause with an
-auxiliary of its own, or none of these subjects, is left as it is."""
+it all go in?, "leftover?": is any left in the source?, "still in bowl after?": does it stay in the bowl?), and an
+outcome's verb said first, before the note's scene ("wobble? light bowl, pouring from kettle", "splash, low pour, full
+cup"). A bowl told with no article is "the bowl" ("bowl tipped over"), and "ok or not" ending a note asks whether it
+is ok. A clause with an auxiliary of its own, or none of these subjects, is left as it is."""
 from __future__ import annotations
 
 import re
@@ -50,6 +52,12 @@ _FRAGMENT = re.compile(rf"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<said>{'|'.join(sorted
                        r"(?:\?|(?<=in or out)[.!]*$)")       # ("side pour. in or out": its question mark left off)
 #: "ok or not" ending a note, however set off ("pour high - ok or not"): "is it ok?".
 _OK_OR_NOT = re.compile(r"(?:,| -)? (?:ok|okay) or not\b[ ?]*$")
+#: A bowl told without its article, with what it did ("bowl tipped over", "bottle empty, bowl slid. why"):
+#: "the bowl", as mishaps and outcomes read it.
+_BARE_TOLD = re.compile(r"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<bowl>bowl|dish|basin) (?P<verb>[a-z]+(?:ed|d)|slid|fell|spun|shook)\b")
+#: An outcome's verb asked first, before the scene as a note ("wobble? light bowl, pouring from kettle",
+#: "splash, low pour, full cup"): of "it".
+_FIRST = re.compile(r"^(?P<verb>[a-z]+)(?P<part> over| out| off)?(?P<end>\?|,)(?= )")
 #: Words of an outcome that are said of it, not done: "ok?" is "is it ok?".
 _SAID_OF = frozenset(("ok", "okay", "fine", "safe", "alright", "good", "bad", "messy", "clean"))
 #: Where the liquid lands, said wet ("table wet?", "floor gets wet?"): whether it gets wet.
@@ -75,6 +83,12 @@ def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
     outcome said as starting is read as the outcome first (starting.py)."""
     text, begun = started_as_done(text)
     said: list[str] = list(begun)
+    text = _BARE_TOLD.sub(lambda m: f"the {m.group(0)}" if outcome_verb(m.group("verb")) else m.group(0), text)
+    first = _FIRST.match(text)
+    if first and outcome_verb(first.group("verb")) and (first.group("end") == "?" or not (
+            "?" in text or _ASKING.search(text))):      # ("spill, what should i do": asked after it)
+        said.append(f"{first.group(0).rstrip('?,')}: read as does it {first.group(0).rstrip('?,')}")
+        text = f"does it {first.group(0).rstrip('?,')}?{text[first.end():]}"
 
     def restore(m: re.Match) -> str:
         verb = m.group("verb")

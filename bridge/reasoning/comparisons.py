@@ -119,7 +119,10 @@ COMPARISONS: tuple[tuple, ...] = (
                r" (?:a|an|the|that|this) (?:[a-z-]+ ){0,3}?ones?\b",
                # a liquid compared with ("does syrup spill less than water")
                r"re(than):\b(?:much |a (?:little |lot )?(?:bit )?)?(?:more|less|worse) than (?:a |an |the |plain |regular"
-               r" |normal |ordinary )?(?:(?:sticky|runny|heavy|light|bouncy) )?liquid\b"),
+               r" |normal |ordinary )?(?:(?:sticky|runny|heavy|light|bouncy) )?liquid\b",
+               # ... or as much as it ("does honey splash as much as water": no amount of liquid)
+               r"re(as much as):\bas much as (?:a |an |the |plain |regular |normal |ordinary )?"
+               r"(?:(?:sticky|runny|heavy|light|bouncy) )?liquid\b"),
      "read as nothing: the scene compared with is not read, the answer is for the one said first"),
     # a comparative said of a liquid with an example of it ("a thicker liquid such as custard"):
     # the value the example has, as it is said

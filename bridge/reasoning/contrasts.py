@@ -71,7 +71,11 @@ CONTRASTS: tuple[tuple, ...] = (
     ("centred", (r"re(not from):(?<=\bnot )from (?:the )?(?:very )?(?:destination |bowl |cup )?(?:centre|center|middle)\b"
                  r"(?! (?:by|of the \w+ by) )",)),
     # the bowl centred under the source: centred ("the bowl is centered under it")
-    ("centred", (r"re(under):\b(?:centred|centered) under (?:it|them|the \w+)\b",)),
+    ("centred", (r"re(under):\b(?:centred|centered) under (?:it|them|the \w+)\b",
+                 # ... or said to stand right under it ("if the bowl isn't right under the spout": its negation read)
+                 r"re(under):(?:(?<=bowl )|(?<=bowl is )|(?<=bowl is not )|(?<=bowl was )|(?<=bowl was not )|(?<=bowl sits )"
+                 r"|(?<=bowl sitting ))(?:right |directly |straight |dead |exactly )?(?:under|underneath|beneath)"
+                 r" (?:it|them|the (?:bowl|spout|stream|source|pour|part))\b")),
     # a height measured from the rim: above it (a minus sign below it)
     ("above the rim", (rf"re(relative|respect|vs|versus):(?:{_AFTER_LENGTH})(?:height )?(?:relative to|with respect to|vs|versus)"
                        r" (?:the )?(?:destination |bowl )?(?:rim|edge|lip|brim)\b(?! (?:of the )?(?:source|cup))",)),

@@ -41,7 +41,7 @@ _WANTED = {("liquid_remains_in_destination", "no_spill"): "nothing splashes out"
            "destination_upright": "the bowl does not tip over", "source_clear": "the jug does not hit the bowl",
            STILL: "the bowl does not move"}
 #: The question after the mishap starts at a sentence's end, or at a comma before a word that asks.
-_ASKS = (r"why|how|what|which|would|will|could|should|can|is|does|do|did|was|were|any|so|but why|and how|where"
+_ASKS = (r"why|how|what|whats|which|would|will|could|should|can|is|does|do|did|was|were|any|so|but why|and how|where"
          r"|am (?:i|we) doing (?:it|something|anything) wrong"
          r"|if|should|shall|tips|advice|help")
 _BREAK = re.compile(rf"(?:[.!?;]+|,|\.\.\.|\s-)\s+(?=(?:{_ASKS})\b)|\s(?=(?:why|what happened|what went wrong) *[?.!]* *$)"    # "... poured fast why"

@@ -64,7 +64,8 @@ def source_on_rim(text: str, said: dict[str, None]) -> str:
     something else asked before or after it. No proposition says a touch; whether it touches is asked
     as itself ("does the cup touch the rim?", "bottle touching bowl rim?", "the cup touches the rim when
     I pour low?"), and a touch not wanted ("without the jar touching the rim") is a goal: neither is
-    rewritten. The source set on the bowl by someone in a condition ("when I leaned the pitcher on
+    rewritten, nor is a condition that asks whether ("tell me if the jug touches the rim when I pour low").
+    The source set on the bowl by someone in a condition ("when I leaned the pitcher on
     it", "if I rest the jug on the rim") is read so too."""
     def set_on_rim(m: re.Match) -> str:
         said.setdefault(f"{m.group(0)[len(m.group('when')) + 1:]}: read as low near the rim, where the source meets it"
@@ -79,6 +80,8 @@ def source_on_rim(text: str, said: dict[str, None]) -> str:
         if re.search(r"\b(?:not|never|no|without|want|wants|wanted|avoid|avoiding|stop|prevent)\b(?: \w+){0,3} ?$", before):
             return m.group(0)           # "without the jar touching the rim": a goal
         condition = re.search(r"\b(?:if|when|whenever|while|once)\b(?: \w+){0,4} ?$", before)
+        if condition and re.search(r"\b(?:tell me|know|wonder|wondering|see|check|ask|asking) $", before[:condition.start()]):
+            condition = None            # "tell me if the jug touches the rim": whether it does
         if not condition and (before.strip() or not m.group("touch").startswith(("touching", "contacting", "resting", "leaning",
                                                                                   "sitting", "is ", "keep", "banging", "hitting"))):
             return m.group(0)           # "the cup touches the rim when I pour low?": the touch asked

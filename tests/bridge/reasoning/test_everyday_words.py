@@ -15,7 +15,7 @@ from pantarhei.bridge.reasoning.reading import read_question
 KINDS = {"hedge", "material", "bowl", "bowl poured from", "sticky liquid", "heavy liquid", "liquid", "context", "part",
          "unclear", "a bit", "little", "much", "full", "slightly tilted", "steeply tilted", "low", "high",
          "to the side", "very", "start slightly tilted", "into the middle", "right over", "into", "from", "upright",
-         "tilted", "slowly", "fast"}
+         "tilted", "slowly", "fast", "slippery destination"}
 
 
 def _phrases(*kinds: str) -> list[tuple[str, str]]:
@@ -41,6 +41,13 @@ def test_a_liquid_by_its_name_is_read_as_the_liquid_it_is(phrase, said):
     question = f"pour {phrase} from the side"
     assert list(read_question(question).scene) == sorted(["pour_to_side", *scene])
     assert not said or _noted(question, phrase, said)
+
+
+@pytest.mark.parametrize("phrase,said", _phrases("slippery destination"))
+def test_a_bowl_standing_on_ice_is_slippery(phrase, said):
+    question = f"pour from the side, {phrase}"
+    assert list(read_question(question).scene) == ["pour_to_side", "slippery_destination"]
+    assert _noted(question, phrase, said)
 
 
 @pytest.mark.parametrize("phrase,said", _phrases("bowl", "bowl poured from"))
