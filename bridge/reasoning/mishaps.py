@@ -79,7 +79,9 @@ _TOO = re.compile(r"^(?:so )?(?:is|was|am|were) (?:it|that|i|we|you|he|she|they|
 #: The move a speed asked as a cause is of, by the phase the mishap is told in: "when I moved it in ... was I going too fast?".
 _SPEED_OF = {" as the jug comes in": "move in", " as the jug moves away": "move away"}
 #: What splits the narrative's clauses, for the scene a cause is asked of.
-_CLAUSES = re.compile(r",? (?:and then|but then|and|but|then|so|until|because) |, | (?=(?:when|while|after|as soon as|even though"
+#: (Not a pair said as one: "rocked back and forth", "round and round", "to and fro".)
+_CLAUSES = re.compile(r",? (?:and then|but then|(?<!\bback )(?<!\bround )(?<!\bto )and(?! forth\b| round\b| fro\b)|but|then|so|until"
+                      r"|because) |, | (?=(?:when|while|after|as soon as|even though"
                       r"|although|though) )")
 #: A goal said, not a mishap told: "I want to ...", "I'm trying to ...".
 _WANTS = re.compile(r"\b(?:i|we) (?:want|need|would like|d like|am trying|are trying|m trying|re trying|wish) to\b|\bgoal\b")
@@ -230,7 +232,7 @@ def mishap(text: str) -> tuple[str, tuple[str, ...]]:
         if read is not None:
             return read
     if not re.search(r"[?]", text) and not re.match(rf"(?:{_ASKS})\b", text) and re.search(
-            r"^(?:tried|poured|the|my|our|his|her|their|it)\b|\b(?:i|we|he|she|they)\b", text) and not re.search(
+            r"^(?:tried|poured|the|my|our|his|her|their|it|after)\b|\b(?:i|we|he|she|they)\b", text) and not re.search(
             r"\b(?:whether|wonder|know|tell|if|would|should|could|can|will|how|what|why|which|please)\b", text):
         # a mishap told with nothing asked after it ("I pulled the pitcher away too fast and a trail of
         # drips went across the table."): what went wrong, asked of the pour told, as "why?" asks it
