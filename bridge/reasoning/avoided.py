@@ -19,6 +19,8 @@ _VERBS = {"hits": "hit", "hit": "hit", "bumps": "bump", "bumped": "bump", "knock
           "spills": "spill", "spilled": "spill", "spilt": "spill", "splashes": "splash", "splashed": "splash",
           "drips": "drip", "dripped": "drip", "overflows": "overflow", "overflowed": "overflow",
           "misses": "miss", "missed": "miss"}
+#: ... and those the most asked before may name too ("how high can I go before it slops out").
+_BEFORE = {**_VERBS, "slops": "slop", "sloshes": "slosh"}
 #: (Not an outcome not wanted, said first: "no spills, what tilt should i use" is goal_wordings.py's.)
 _TOLD = re.compile(
     rf"^(?!(?:no|not|never|without) )(?P<who>(?:[a-z']+ ){{1,3}}?)(?:keeps? |always )?(?P<verb>{'|'.join(_VERBS)}|keeps? (?:{'|'.join(v + 'ing' for v in ('hitt', 'bump', 'knock', 'slid', 'mov', 'tipp', 'spill', 'splash', 'dripp'))}))"
@@ -58,7 +60,7 @@ _NOUNS = {"splash": "splash", "splashing": "splash", "splashes": "splash", "spil
 _MOST = re.compile(rf"(?:^|(?<=[,;:.?!-] )|(?<=[a-z0-9] ))(?P<how>(?:how (?:far|high|low|steep|steeply|much|close"
                    rf"|fast|quickly|slowly|slow)|(?:what(?: is)? )?the (?:highest|lowest|furthest|farthest|steepest|fastest|quickest"
                    rf"|slowest|closest) (?:that )?(?:i|we|you|one|the robot) (?:can|could))\b[^?.!,;]{{0,100}}?)"
-                   rf" before (?:(?P<who>it|they|the [a-z]+|anything|any of it) (?P<verb>{'|'.join(_VERBS)})"
+                   rf" before (?:(?P<who>it|they|the [a-z]+|anything|any of it) (?P<verb>{'|'.join(_BEFORE)})"
                    rf"|(?P<noun>{'|'.join(_NOUNS)}))\b")
 
 
@@ -68,7 +70,7 @@ def avoided(text: str) -> tuple[str, tuple[str, ...]]:
     is said back; `text` as it is otherwise."""
     m = _MOST.search(text)
     if m is not None:
-        who, base = (m.group("who"), _VERBS[m.group("verb")]) if m.group("verb") else ("it", _NOUNS[m.group("noun")])
+        who, base = (m.group("who"), _BEFORE[m.group("verb")]) if m.group("verb") else ("it", _NOUNS[m.group("noun")])
         return (f"{text[:m.start()]}{m.group('how')} before {who} starts to {base}{text[m.end():]}",
                 (f"{text[m.end('how'):m.end()].strip()}: read as so that {who} does not {base}, the most that can be done asked",))
     drops = _GOT_DROPS.search(text)

@@ -119,11 +119,12 @@ def _ones(tokens: list[Token], roles: dict[int, str], placeable: frozenset[str])
     bowl), "it's a lightweight melamine one"; with what it is made of said, only a container is meant
     ("the bowl flipped as I poured the oil, it was a light plastic one")."""
     named = {r for r in roles.values() if r != CONTEXT}
-    made = {r for r in named if r != "liquid"}
+    made = {r for r in named if r != "liquid"}          # what a material may be said of
     ones = {i: v for i, t in enumerate(tokens) if t.word == "one" and i > 0
             and (v := _value_before(tokens, i)) is not None and tokens[v].word in placeable and tokens[v].word not in BETWEEN}
-    return {**roles, **{i: next(iter(named)) if len(named) == 1 else next(iter(made)) for i, v in ones.items()
-                        if len(named) == 1 or (len(made) == 1 and v < i - 1)}}
+    if len(named) == 1:
+        return {**roles, **{i: next(iter(named)) for i in ones}}
+    return {**roles, **{i: next(iter(made)) for i, v in ones.items() if len(made) == 1 and v < i - 1}}
 
 
 def _value_before(tokens: list[Token], i: int) -> int | None:

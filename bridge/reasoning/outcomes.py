@@ -33,6 +33,7 @@ from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.acting import acts, around, staying
 from pantarhei.bridge.reasoning.asked_without import without_asked
 from pantarhei.bridge.reasoning.cued import Cued
+from pantarhei.bridge.reasoning.earlier_pour import liquid_named
 from pantarhei.bridge.reasoning.nouns import poured_from
 from pantarhei.bridge.reasoning.outcome_verbs import ALL_IN as _ALL_IN, OUTCOMES
 from pantarhei.bridge.reasoning.flow_rates import rates, refuse_alone
@@ -98,6 +99,8 @@ _SHARE = r"(?:what|which) (?:fraction|proportion|share|percentage|part|amount)(?
 #: happens to the bowl"), or the worst of it ("what's the worst that can happen"): every expectation is asked.
 _WHAT_HAPPENS = re.compile(r"\bwhat (?:happens|would happen|will happen|is going to happen|is gonna happen|could happen)"
                            r"(?! to\b| with\b)|\bworst (?:that (?:can|could|might|would|will) happen|case)\b")
+#: ... or what happens to the liquid ("what happens to the water if I tip the cup upside down"): the liquid's.
+_TO_THE_LIQUID = r"\bwhat (?:happens|would happen|will happen|is going to happen) to (?:the |my |all the |all of the )?"
 #: Words that say nothing of a pour beside it ("so what happens then?": no pour asked of).
 _NOTHING_ELSE = frozenset(("so", "then", "now", "next", "here", "there", "and", "well", "ok", "okay", "if", "i", "we",
                            "you", "it", "this", "that", "what", "hey", "hi"))
@@ -373,6 +376,8 @@ def hear(text: str) -> Heard:
     if not asked and not goals and _WHAT_HAPPENS.search(said) and set(re.findall(r"[a-z]+", _WHAT_HAPPENS.sub(
             " ", said))) - _NOTHING_ELSE:                        # "upside down bottle over bowl. what happens"
         asked = [e.name for e in load_vocabulary().expectations]
+    elif not asked and not goals and re.search(_TO_THE_LIQUID + rf"(?:{liquid_named().pattern})", said):
+        asked = [e.name for e in load_vocabulary().expectations if e.name.startswith("liquid_") or e.name == "no_spill"]
     refuse_alone(rate, tuple(asked), tuple(goals))
     return Heard(tuple(asked), tuple(goals), tuple(phrases), text,
                  "named" in bowl and "of a container" not in bowl, rate_notes)

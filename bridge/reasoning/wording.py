@@ -100,7 +100,7 @@ _CHAT = {"u": "you", "ur": "your", "wat": "what", "wut": "what", "wot": "what", 
          "qkly": "quickly", "thx": "thanks", "alot": "a lot",
          "tiped": "tipped", "tipd": "tipped", "evrywhere": "everywhere", "evry": "every",
          "pls": "please", "plz": "please", "abt": "about", "shud": "should", "wud": "would",
-         "outta": "out of", "kinda": "kind of", "tho": "though", "cuz": "because", "coz": "because",
+         "outta": "out of", "kinda": "kind of", "tho": "though", "cuz": "because", "coz": "because", "cos": "because",
          "cn": "can", "hw": "how", "cud": "could", "shld": "should",
          # letters typed in the wrong order or left out, as people type in a hurry
          "teh": "the", "hte": "the", "th": "the", "wil": "will", "wll": "will", "wen": "when", "whn": "when",
