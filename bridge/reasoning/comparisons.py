@@ -121,7 +121,7 @@ COMPARISONS: tuple[tuple, ...] = (
                r"re(than):\b(?:much |a (?:little |lot )?(?:bit )?)?(?:more|less|worse) than (?:a |an |the |plain |regular"
                r" |normal |ordinary )?(?:(?:sticky|runny|heavy|light|bouncy) )?liquid\b",
                # ... or as much as it ("does honey splash as much as water": no amount of liquid)
-               r"re(as much as):\bas much as (?:a |an |the |plain |regular |normal |ordinary )?"
+               r"re(as much as):\bas much as (?:pouring |when pouring |with )?(?:a |an |the |plain |regular |normal |ordinary )?"
                r"(?:(?:sticky|runny|heavy|light|bouncy) )?liquid\b"),
      "read as nothing: the scene compared with is not read, the answer is for the one said first"),
     # a comparative said of a liquid with an example of it ("a thicker liquid such as custard"):

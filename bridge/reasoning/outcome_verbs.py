@@ -112,7 +112,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:end|ends|ended|ending) up (?:in|at|on) (?:a )?(?:different|another|new) (?:spot|place|position|location)"
      r"(?: (?:than|from) where (?:it|they) (?:started|was|were|began|stood))?|(?:end|ends|ended) up somewhere else", STILL, True),
     # dancing where it stands, as children say a bowl wobbling: "does the bowl do a little dance"
-    (r"(?:do|does|did|doing|done) (?:a )?(?:little |bit of a |small )?(?:wobble |jiggle |wiggle )?dance\b"
+    (r"(?:do|does|did|doing|done) (?:a |that |this |the )?(?:little |bit of a |small )?(?:wobble |wobbly |jiggle |wiggle |rocking )?dance\b"
      r"|danc(?:e|es|ed|ing)\b(?: (?:a)?round| about)?", STILL, True),
     # (not the source slipping from a hand: "will it slip out of my hand", a drop the vocabulary does not say)
     (r"(?:slid\w*|slip(?:s|ped|ping)?\b(?! (?:out of|outta|from) (?:my|his|her|their|your|our|the|its|a) (?:\w+ )?(?:hand|hands|grip|grasp|fingers|gripper|gloves?)\b)|shift\w*|budg\w*|wobbl\w*|shimm(?:y|ies|ied|ying)\b|jitter\w*|judder\w*|teeter\w*|trembl\w*|quiver\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
@@ -123,7 +123,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:push|shov)(?:es|e|ed|ing)? (?:it|them|the (?:bowl|bowls|destination|dish|container)) (?:across|along|around|about|sideways|aside|away)\b"
      # sent flying, itself: "does the bowl go flying" (not "go flying out of the bowl": thrown out)
      r"|(?:go|goes|going|went|gone) flying\b(?! (?:out|off|over)\b)|(?:go|goes|going|went|gone) (?:sliding|skidding|skating|scooting)\b"
-     r"|(?:(?:get|gets|got|getting) )?sent (?:across|flying|sliding|skidding)|displac\w*|(?:(?:get|gets|got|getting|be|being) )?(?:pushed|shoved)\b(?! (?:in|back|away|out|over)\b)|(?:go|goes|going|get|gets|getting) (?:wiggly|wobbly|shaky|jiggly|(?:slippy |slip |slippery )?slidey)"
+     r"|(?:(?:get|gets|got|getting) )?sent (?:across|flying|sliding|skidding)|displac\w*|(?:(?:get|gets|got|getting|be|being) )?(?:pushed|shoved)\b(?! (?:in|back|away|out|over)\b)|(?:go|goes|going|went|get|gets|getting) (?:wiggly|wobbly|shaky|jiggly|wonky|(?:slippy |slip |slippery )?slidey)"
      r"|mov(?:e|es|ed|ing)\b(?! (?:(?:it|them|the \w+) )?(?:in|away|closer|nearer|further|farther|to|out|back|up"
      r"|down|over|into|off|towards?)\b)|bounc\w* (?:around|about))(?: sideways| (?:off |over )?to (?:the|one) side| back and forth| to and fro)?\b",
      STILL, True),       # "move the cup closer": the source's move
@@ -139,7 +139,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:knock|bump|nudg|bash|bang)\w*(?: it| them| the \w+)? (?:sideways|aside|across|along|out of place)\b", ("source_clear", *STILL), True),
     (r"(?:giv(?:e|es|ing)|gave) (?:a |any |some )?(?:hit|knock|bump|bang|touch)s?(?: to)?(?= (?:the|a|an|my|its|it)\b)"   # "giving a hit to the bowl"
      r"|bump\w*|hit(?:s|ting)?|touch\w*|collid\w*|crash\w*|knock\w*|clip(?:s|ped)?|strike\w*"
-     r"|bonk\w*|bang\w*|intersect\w*|clash\w*|graz(?:e|es|ed|ing)|scrap(?:e|es|ed|ing)|nudg\w*|clink\w*|clang\w*|clonk\w*|clunk\w*|slam\w*(?! *(?:[,.;!?]|$|tonight\b))"
+     r"|bonk\w*|bang\w*|intersect\w*|clash\w*|graz(?:e|es|ed|ing)|scrap(?:e|es|ed|ing)|nudg\w*|clink\w*|clang\w*|clonk\w*|clunk\w*|clank\w*|slam\w*(?! *(?:[,.;!?]|$|tonight\b))"
      r"|smash\w*|whack\w*|smack\w*|(?:run|runs|ran|running) into|(?:come|comes|came) into contact|(?:make|makes|made|making) contact with|bounc\w* (?:off|against)"
      r"|make contact|makes contact|(?:any|some) contact|contact (?:occur|occurs|happen|happens)"
      r"|(?<=there )(?:any |some )?contact|(?<=there be )(?:any |some )?contact",   # "is there contact"

@@ -35,7 +35,9 @@ TILT_AMOUNTS: tuple[tuple, ...] = (
     ("steeply tilted", (rf"re(angle|tilt|tip|inclin):(?<!how )\b(?:with |at )?{_MUCH} {_TILTING}\b",
                         r"re(strong):\b(?:make|makes|making|made) the (?:tilt|tilting|tipping|angle)(?: of (?:it|the \w+))?"
                         r" (?:very |really |so |more |too )?strong(?:er)?\b",
-                        r"re(tilt):\b(?:a )?high tilt\b(?! ?(?:of |at |to |-)?[0-9])")),
+                        r"re(tilt):\b(?:a )?high tilt\b(?! ?(?:of |at |to |-)?[0-9])",
+                        # "tilt the jug way over" (as "tilted way over" is, everyday.txt)
+                        r"re(way over|far over):\b(?:tilt|tip)\w* (?:it|them|the \w+) (?:way|far) over\b")),
     ("slightly tilted", (rf"re(angle|tilt|tip|inclin):(?<!how )\b(?:with |at )?{_LITTLE} {_TILTING}\b",)),
     ("hedge", (r"re(horizontally):(?:(?<=away )|(?<=back )|(?<=out )|(?<=retreat )|(?<=retract )|(?<=withdraw )"
                r"|(?<=retreat it )|(?<=move )|(?<=moves )|(?<=moving )|(?<=move it ))horizontally\b",),
