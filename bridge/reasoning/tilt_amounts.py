@@ -9,7 +9,7 @@ as one. A little either side of horizontal ("slightly past horizontal", "a
 little less than horizontal") is steeply tilted still, as horizontal is; a
 move made horizontally ("retreat horizontally", "pull it back
 horizontally") is the way the source moves, which no proposition says, and
-no tilt. How far, said with "far": "not tilted very far" is slightly
+no tilt; so is how far something moved ("bowl is move away little bit"). How far, said with "far": "not tilted very far" is slightly
 tilted ("not going to tip it much" too), unless a value follows that says how far; "tip it really far"
 steeply; "tilted too far" is refused (past what?), but for a pour told ("I tipped the jug too
 far and it went on the counter"), where it is tipped far: steeply tilted, said back."""
@@ -38,7 +38,12 @@ TILT_AMOUNTS: tuple[tuple, ...] = (
                         r"re(tilt):\b(?:a )?high tilt\b(?! ?(?:of |at |to |-)?[0-9])",
                         # "tilt the jug way over" (as "tilted way over" is, everyday.txt)
                         r"re(way over|far over):\b(?:tilt|tip)\w* (?:it|them|the \w+) (?:way|far) over\b")),
-    ("slightly tilted", (rf"re(angle|tilt|tip|inclin):(?<!how )\b(?:with |at )?{_LITTLE} {_TILTING}\b",)),
+    ("slightly tilted", (rf"re(angle|tilt|tip|inclin):(?<!how )\b(?:with |at )?{_LITTLE} {_TILTING}\b",
+                         r"re(little bit):\blittle bit (?:tilted|tipped)\b")),     # "pouring little bit tilted only"
+    # how far something moved, said as learners of English say it: "bowl is move away little bit" (no amount of
+    # liquid, as "pour little bit water" is)
+    ("hedge", (r"re(little bit):(?:(?<=away )|(?<=retreat )|(?<=moved )|(?<=moves )|(?<=move )|(?<=slid )|(?<=slides ))little bit\b",),
+     "ignored: how far it moves is no value the vocabulary says (whether it moves is)"),
     ("hedge", (r"re(horizontally):(?:(?<=away )|(?<=back )|(?<=out )|(?<=retreat )|(?<=retract )|(?<=withdraw )"
                r"|(?<=retreat it )|(?<=move )|(?<=moves )|(?<=moving )|(?<=move it ))horizontally\b",),
      "the way the source moves: no proposition says it, and it is no tilt"),
