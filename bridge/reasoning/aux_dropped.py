@@ -87,8 +87,9 @@ def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
     first = _FIRST.match(text)
     if first and outcome_verb(first.group("verb")) and (first.group("end") == "?" or not (
             "?" in text or _ASKING.search(text))):      # ("spill, what should i do": asked after it)
-        said.append(f"{first.group(0).rstrip('?,')}: read as does it {first.group(0).rstrip('?,')}")
-        text = f"does it {first.group(0).rstrip('?,')}?{text[first.end():]}"
+        verb = first.group(0).rstrip("?,")
+        said.append(f"{verb}: read as does it {verb}")
+        text = f"does it {verb}?{text[first.end():]}"
 
     def restore(m: re.Match) -> str:
         verb = m.group("verb")

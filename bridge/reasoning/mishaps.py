@@ -309,9 +309,9 @@ def _read(told: str, asked: str, present: bool = True) -> tuple[str, tuple[str, 
         rest = f"if the {m.group('noun')} is {m.group('value')}, {question}?" if m.group("noun") else (
             f"if i pour {m.group('value')}, {question}?")
         return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did")
-    if (CAUSE.match(asked) or _AGAIN.match(asked)) and _sized().search(told):
-        return None             # the cause of a pour told with a size, which the answer would leave out
     if CAUSE.match(asked) or _AGAIN.match(asked):
+        if _sized().search(told):
+            return None         # the cause of a pour told with a size, which the answer would leave out
         # the clauses that tell nothing gone wrong: those with no outcome, and those saying when it went wrong
         # ("when i emptied the heavy saucepan into it")
         scene = [re.sub(rf"^(?:{WHEN},? |as soon as (?=\w+ start))", "", c) for c in clauses if not any(bad for _, bad in tells[c]) and (
