@@ -166,9 +166,9 @@ def told(text: str) -> tuple[str, tuple[str, ...]]:
 
 
 @lru_cache(maxsize=None)
-def liquid_named() -> re.Pattern:
-    """A liquid by one of its names (everyday.txt's)."""
-    return re.compile(rf"\b(?:{alternation(names('liquid'))})\b")
+def liquid_named(before: str = "") -> re.Pattern:
+    """A liquid by one of its names (everyday.txt's), after the pattern `before` where one is given."""
+    return re.compile(rf"{before}\b(?:{alternation(names('liquid'))})\b")
 
 
 #: How a liquid runs, said in place of its name: "thin", "sticky".

@@ -26,7 +26,7 @@ import re
 from functools import lru_cache
 
 from pantarhei.bridge.reasoning.earlier_pour import CAUSE, HELPS, REMEDY, WHEN, liquid_named, says_a_liquid
-from pantarhei.bridge.reasoning.everyday import alternation, names
+from pantarhei.bridge.reasoning.everyday import UNCLEAR, alternation, names, sections
 from pantarhei.bridge.reasoning.outcome_verbs import OUTCOMES
 from pantarhei.bridge.reasoning.phases import STILL
 from pantarhei.bridge.reasoning.vessels import filled
@@ -135,8 +135,8 @@ def _sized() -> re.Pattern:
     """A container told by its size ("my big pitcher kept hitting the rim"), which the vocabulary cannot say:
     the cause of such a mishap asked is left as written, for the reader to refuse (what to do next time is
     asked of another pour, and read)."""
-    return re.compile(rf"\b(?:big|bigger|small|smaller|large|larger|huge|giant|tiny|little|wee|tall|taller|wide|narrow|deep"
-                      rf"|shallow) (?:[a-z]+ )?(?:{alternation(names('bowl'))})\b")
+    sizes = next(s.phrases for s in sections() if s.words == UNCLEAR and "all of one size" in s.said_back)
+    return re.compile(rf"\b(?:{alternation(sizes)}) (?:[a-z]+ )?(?:{alternation(names('bowl'))})\b")
 
 
 @lru_cache(maxsize=None)

@@ -376,7 +376,7 @@ def hear(text: str) -> Heard:
     if not asked and not goals and _WHAT_HAPPENS.search(said) and set(re.findall(r"[a-z]+", _WHAT_HAPPENS.sub(
             " ", said))) - _NOTHING_ELSE:                        # "upside down bottle over bowl. what happens"
         asked = [e.name for e in load_vocabulary().expectations]
-    elif not asked and not goals and re.search(_TO_THE_LIQUID + rf"(?:{liquid_named().pattern})", said):
+    elif not asked and not goals and liquid_named(_TO_THE_LIQUID).search(said):
         asked = [e.name for e in load_vocabulary().expectations if e.name.startswith("liquid_") or e.name == "no_spill"]
     refuse_alone(rate, tuple(asked), tuple(goals))
     return Heard(tuple(asked), tuple(goals), tuple(phrases), text,

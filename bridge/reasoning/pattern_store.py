@@ -34,6 +34,8 @@ KEPT_AT_MOST = 4000
 BYTES_AT_MOST = 64 << 20
 
 _MAGIC = b"pantarhei-patterns-1\n"
+#: Flags whose patterns are compiled as re compiles them (re.TEMPLATE is gone from later Pythons).
+_LEFT_TO_RE = re.DEBUG | getattr(re, "TEMPLATE", 0)
 
 try:                       # CPython's compiler, as re uses it (absent elsewhere: nothing is kept)
     import _sre
@@ -105,7 +107,7 @@ def kept_patterns() -> Iterator[None]:
     compile_anew = _compiler.compile
 
     def compile_kept(p, flags=0):
-        if type(p) is not str or flags & (re.DEBUG | re.TEMPLATE):
+        if type(p) is not str or flags & _LEFT_TO_RE:
             return compile_anew(p, flags)
         key = (p, int(flags))
         entry = kept.get(key)

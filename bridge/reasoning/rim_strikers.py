@@ -31,10 +31,16 @@ def lip_of_source(text: str, said: dict[str, None]) -> str:
 
 
 @lru_cache(maxsize=None)
+def _sources() -> tuple[str, ...]:
+    """Every container of everyday.txt but the destination's words: those a source may be."""
+    return tuple(w for w in names("bowl") if w not in _DESTINATIONS)
+
+
+@lru_cache(maxsize=None)
 def _lips() -> tuple[re.Pattern, ...]:
     """The lip of a source (every container of everyday.txt but the destination's words: what strikes
     the bowl is not it) striking the bowl: "the jug lip hit", "the lip of the flask touched"."""
-    sources = alternation(w for w in names("bowl") if w not in _DESTINATIONS)
+    sources = alternation(_sources())
     strikes = r"(?: \w+){0,2}? (?:touch|hit|bump|knock|bang|clip|strike|struck|collid|scrap|graz|clink|nudg|tap|make contact)"
     # (a note's, with no article: "pitcher lip hit the bowl")
     return (re.compile(rf"{_AT_A_PLACE}\b((?:(?:the|its|a|my|your) |(?:^|(?<=[.,;:!?] )))(?:{sources}) )(?P<part>lip|rim|edge)\b"
@@ -97,8 +103,7 @@ def source_on_rim(text: str, said: dict[str, None]) -> str:
 @lru_cache(maxsize=None)
 def _set_on_rim() -> re.Pattern:
     """Someone setting the source on the bowl (its rim, its edge, it) in a condition."""
-    sources = alternation(w for w in names("bowl") if w not in _DESTINATIONS)
-    destinations = alternation(w for w in _DESTINATIONS if w not in ("container",))
+    sources, destinations = alternation(_sources()), alternation(_DESTINATIONS - {"container"})
     return re.compile(
         rf"\b(?P<when>if|when|while|once) (?:i|we|you|he|she|they) (?:lean|leans|leaned|leant|leaning|rest|rests|rested|resting"
         rf"|prop|props|propped|propping|balance|balances|balanced|balancing) (?:the|my|a|her|his|our) (?P<source>{sources})"
@@ -109,8 +114,7 @@ def _set_on_rim() -> re.Pattern:
 @lru_cache(maxsize=None)
 def _on_rim() -> re.Pattern:
     """A source touching (or striking) the rim, then what else is said (or the question's end)."""
-    sources = alternation(["container", "source", *(w for w in names("bowl") if w not in _DESTINATIONS)])
-    destinations = alternation(w for w in _DESTINATIONS if w not in ("container",))
+    sources, destinations = alternation(["container", "source", *_sources()]), alternation(_DESTINATIONS - {"container"})
     return re.compile(
         rf"(?P<source>\b(?:(?:the|my|a|its|your) )?(?:{sources}))(?P<part> (?:spout|lip|rim|edge|mouth))? "
         rf"(?P<touch>(?:is touch|(?:(?:is|keeps|keep) )?(?:touches|touching|contacts|contacting|makes contact with|is in contact with"
