@@ -43,10 +43,10 @@ _FRAGMENTS = {"all in": "does it all go in", "all out": "does it all come out", 
               "leftovers": "is any left in the source", "any left": "is any left in the source",
               "anything left": "is anything left in the source", "everything out": "does everything come out",
               "all of it in": "does it all go in", "everything in": "does everything go in",
-              "in or out": "does it all go in or spill",
+              "in or out": "does it all go in or spill", "goes in": "does it go in", "go in": "does it go in",
               # still in the bowl, after: it went in and stayed ("honey, high pour, still in bowl after?")
               **{f"{said} in{bowl}{after}": f"does it {'all go in' if said == 'all' else 'stay in the bowl'}{after}"
-                 for said in ("all", "still", "stays") for bowl in (" bowl", " the bowl")
+                 for said in ("all", "still", "stays", "stay") for bowl in ("", " bowl", " the bowl")
                  for after in ("", " after", " afterwards")}}
 _FRAGMENT = re.compile(rf"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<said>{'|'.join(sorted(_FRAGMENTS, key=len, reverse=True))})"
                        r"(?:\?|(?<=in or out)[.!]*$)")       # ("side pour. in or out": its question mark left off)
@@ -55,6 +55,12 @@ _OK_OR_NOT = re.compile(r"(?:,| -)? (?:ok|okay) or not\b[ ?]*$")
 #: A bowl told without its article, with what it did ("bowl tipped over", "bottle empty, bowl slid. why"):
 #: "the bowl", as mishaps and outcomes read it.
 _BARE_TOLD = re.compile(r"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<bowl>bowl|dish|basin) (?P<verb>[a-z]+(?:ed|d)|slid|fell|spun|shook)\b")
+#: A bowl's outcome told in the present, as learners of English tell it, its cause asked after it ("the bowl
+#: fall down, why?", "when i pour, the bowl move, why?"): told in the past, as mishaps reads it.
+_PRESENT_TOLD = re.compile(r"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<bowl>the (?:bowl|dish|basin)) (?P<verb>fall|move|tip|slide|flip|wobble"
+                           r"|shake|spin)(?P<part> over| down| off)?(?=[,.;]? *(?:why|how come|what (?:i|we) (?:do|did) wrong)\b)")
+_PAST = {"fall": "fell", "move": "moved", "tip": "tipped", "slide": "slid", "flip": "flipped", "wobble": "wobbled",
+         "shake": "shook", "spin": "spun"}
 #: An outcome's verb asked first, before the scene as a note ("wobble? light bowl, pouring from kettle",
 #: "splash, low pour, full cup"): of "it".
 _FIRST = re.compile(r"^(?P<verb>[a-z]+)(?P<part> over| out| off)?(?P<end>\?|,)(?= )")
@@ -84,6 +90,12 @@ def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
     text, begun = started_as_done(text)
     said: list[str] = list(begun)
     text = _BARE_TOLD.sub(lambda m: f"the {m.group(0)}" if outcome_verb(m.group("verb")) else m.group(0), text)
+
+    def past(m: re.Match) -> str:
+        told = f"{m.group('bowl')} {_PAST[m.group('verb')]}{m.group('part') or ''}"
+        said.append(f"{m.group(0)}: read as {told}")
+        return told
+    text = _PRESENT_TOLD.sub(past, text)
     first = _FIRST.match(text)
     if first and outcome_verb(first.group("verb")) and (first.group("end") == "?" or not (
             "?" in text or _ASKING.search(text))):      # ("spill, what should i do": asked after it)

@@ -13,8 +13,9 @@ into the same bowl") are refused too: it pours one liquid, never a mix.
 So are two containers poured from set against each other with nothing
 said of either that the vocabulary reads ("a wine bottle vs a wide mug",
 "kids plastic cup vs glass mug"): its containers differ only in how heavy,
-slippery or bouncy they are, and the source in how much it holds (two
-bowls so set, "glass bowl vs steel bowl", are the ordinary pour's, read)."""
+slippery or bouncy they are, and the source in how much it holds (a scene
+set against another that differs from it in such names alone, "glass bowl vs
+steel bowl", "into the fryer basin vs into a mixing bowl", is set_against.py's)."""
 from __future__ import annotations
 
 import re

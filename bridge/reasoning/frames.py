@@ -43,7 +43,7 @@ FRAMES = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:expect|predict|anticipate|see|observe|get|cause|causes|notice)(?: any| some| a| much)? "
      r"(?=(?:spill|splash|drip|leak|slosh|splatter|dribbl)\w*\b(?! of\b))", " will it "),
     # more or less of an outcome made: "does pouring from higher up make more splashing (or less)": how much of it, asked
-    (r"\b(?:make|makes|cause|causes|create|creates|give|gives) (?=(?:more|less)(?: or (?:more|less))? (?:spill|splash|mess|drip"
+    (r"\b(?:make|makes|cause|causes|create|creates|give|gives|produce|produces) (?=(?:more|less)(?: or (?:more|less))? (?:spill|splash|mess|drip"
      r"|slosh|splatter)\w*\b)", ", "),
     # an outcome caused: "does pouring from high make it tip" (the bowl tipping), "cause the cup to slide"
     # (not wanted: "so as not to make the bowl move" is so that it does not)

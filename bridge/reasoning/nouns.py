@@ -54,8 +54,8 @@ def roles(tokens: list[Token], placeable: frozenset[str], bowl: bool = False) ->
         elif t.word == CONTEXT:
             roles[i] = CONTEXT
         elif t.word == BOWL:
-            if roles.get(i - 1) in ("source", "destination"):
-                roles[i] = roles[i - 1]
+            if roles.get(i - 1) in ("source", "destination") and tokens[i - 1].clause == t.clause:
+                roles[i] = roles[i - 1]         # "a glass mixing bowl" (not "from the bottle, bowl is ...")
                 continue
             j = i - 1
             while j > 0 and (tokens[j].word in BETWEEN or tokens[j].word in placeable):

@@ -209,6 +209,10 @@ _WANTING_CUED = (
     (Cued(r"(?:^|(?<=[.,;:!?] )|\b(?:i|we) )(?:want|need|would like) (every drop|all of it|it all|everything|all (?:of )?the \w+)"
           r" (?=(?:in|into|inside)\b)",
           ("want", "need", "like")), r"so that \1 stays "),
+    # "I need the whole jug of batter in the bowl": so that the jug empties and it all goes in
+    (Cued(r"(?:^|(?<=[.,;:!?] )|\b(?:i|we) )(?:want|need|would like) the (?:whole|entire) ([a-z]+)(?: of (?:the |my )?([a-z]+))?"
+          r" (?=(?:in|into|inside)\b)", ("whole", "entire")),
+     lambda m: f"{f'pouring {m.group(2)} ' if m.group(2) else ''}so that the {m.group(1)} empties and so that it all goes "),
     # "I want to get all of the syrup out of the cup and into the bowl": so that the cup empties and it goes in
     (Cued(r"\b(?:i|we) (?:want|need|would like) to get (it all|all of it|everything|all (?:of )?the [a-z]+) out of"
           r" ((?:the|my|a) [a-z]+) and (?=(?:in|into|inside)\b)", (" get ",)), r"so that \2 empties and so that \1 goes "),

@@ -3,7 +3,10 @@
 must be something the vocabulary can say: a volume of liquid ("vs 90
 degrees with 200 ml of oil") or a word the reader cannot place ("vs aim at
 the side wall") refuses the question, naming it, as it would were it said
-alone; otherwise the answer would stand for a question that was not asked."""
+alone; so does a scene that differs from the first only in what the
+vocabulary does not say ("glass bowl vs plastic bowl", "cup vs jug": which
+container, what it is made of), the answer being the same for both; otherwise
+the answer would stand for a question that was not asked."""
 from __future__ import annotations
 
 import re
@@ -17,7 +20,7 @@ from pantarhei.bridge.reasoning.numerals import NUMBER_WORDS
 from pantarhei.bridge.reasoning.outcomes import hear
 from pantarhei.bridge.reasoning.spelling import corrected
 from pantarhei.bridge.reasoning.suggestions import names_part
-from pantarhei.bridge.reasoning.wording import tokens
+from pantarhei.bridge.reasoning.wording import stem, tokens
 
 _OTHER = re.compile(rf"\b(?:{VERSUS}|{COMPARED})\b\.?"
                     r" (?P<other>[^,;:.!?]+?)(?= *(?:[,;:.!?]| - )|$)")
@@ -60,3 +63,26 @@ def refuse_unsayable(text: str, known: Collection[str], placeable: Collection[st
         raise UserError("could not place " + ", ".join(f'"{w}"' for w in dict.fromkeys(unknown))
                         + f" in the scene set against the first (\"{m.group(0)}\"): ask of one scene the "
                         "vocabulary can say, with the words of `pantarhei vocab`")
+    _refuse_names_alone(tokens(heard.string[:heard.start()]) if heard else [], said, m.group(0), placeable)
+
+
+#: Words that say no scene of their own: articles, what joins a pour to its bodies, and what is read as nothing.
+_JOINING = frozenset(("a", "an", "the", "my", "your", "our", "this", "that", "one", "pour", "from", "into", "in", "of", "with",
+                      "and", "same", stem("hedge")))
+#: What the vocabulary does not say of a body, by the word a name is read as.
+_UNSAID = {"material": "what a bowl is made of", "bowl": "which container is used"}
+
+
+def _refuse_names_alone(first: list, other: list, said: str, placeable: Collection[str]) -> None:
+    """UserError where the scene set against the first differs from it only in a name the vocabulary
+    does not say ("glass bowl vs plastic bowl", "from a pitcher from 10 cm vs from a mug from 10 cm"),
+    neither saying a value the other does not ("heavy ceramic bowl vs the paper ones" is the heavy bowl's):
+    the answer would be the same for both, and would stand for a difference it cannot tell."""
+    named, words = {(t.word, t.raw) for t in first}, {t.word for t in first}
+    new = [t for t in other if t.word not in _JOINING and (t.word, t.raw) not in named]
+    values = {t.word for t in other if t.word in placeable or re.match(r"-?\d", t.word)}
+    alone = [t for t in first if (t.word in placeable or re.match(r"-?\d", t.word)) and t.word not in values]
+    if new and not alone and all(t.word in _UNSAID and t.word in words for t in new):
+        raise UserError(f"the scene set against the first (\"{said}\") differs from it only in "
+                        f"{' and '.join(dict.fromkeys(_UNSAID[t.word] for t in new))}, which the vocabulary does not say: the answer would be the same for both; "
+                        "set against each other what it says (\"a light bowl vs a heavy bowl\") or ask of one scene")

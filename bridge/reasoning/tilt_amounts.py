@@ -56,9 +56,9 @@ FAR_TILTS: tuple[tuple, ...] = (
     ("tilted halfway", (r"re( all the way):\b(?:not|without|never) (?:tilt|tip|turn|lean)\w*(?: (?:it|them|the \w+))?"
                         r" all the way(?: over)?\b(?! (?:upside|in|into|to|towards?|from|across|back|up|down|above|onto)\b)",),
      "read as tilted partway, as halfway"),
-    # not tipped (very, too) far: slightly tilted, unless a value follows that says how far ("not
-    # tipping it very far, only slightly past horizontal")
-    ("slightly tilted", (r"re( far| much):\b(?:not|without|never) (?:be |being )?(?:going |gonna )?(?:to )?(?:tilt|tip|lean)\w*\b(?: (?:it|the \w+))?"
+    # not tipped (very, too) far: slightly tilted ("I wasn't even tilting it much"), unless a value
+    # follows that says how far ("not tipping it very far, only slightly past horizontal")
+    ("slightly tilted", (r"re( far| much):\b(?:not|without|never) (?:even |really )?(?:be |being )?(?:going |gonna )?(?:to )?(?:tilt|tip|lean)\w*\b(?: (?:it|the \w+))?"
                          r" (?:too |very |so |that )?(?:far|much)\b(?! (?:from|away|off|to)\b)"
                          r"(?![^.?!;]*\b(?:only|just|but|rather|tilted|tilt|steeply|slightly|halfway|upside|upright"
                          r"|degrees?|horizontal)\b)",),
