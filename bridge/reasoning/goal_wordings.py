@@ -129,7 +129,8 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     # "without losing any": so that nothing spills
     (r"\bwithout (?:losing|wasting) (?:any|a drop|a single drop|anything)(?: of it)?\b", "so that nothing spills"),
     # "without any on the counter": so that none goes on it (a place the liquid lands, a spill)
-    (r"\bwithout (?:any|a drop|a single drop)(?: of it| liquid| water)? (?=(?:on|onto|all over) (?:the |a |my )?"
+    (r"\bwithout (?:any|a drop|a single drop|one drop|one single drop|even one drop|even a drop)(?: of it| liquid| water)?"
+     r" (?=(?:on|onto|all over) (?:the |a |my )?"
      r"(?:table|tablecloth|counter|countertop|worktop|floor|bench|stove|ground)\b)", "so that none goes "),
     # "avoids the cup hitting the bowl", "prevent the bowl sliding", "stop the mug clinking"
     (r"\b(?:avoid|avoids|avoiding|prevent|prevents|preventing|stop|stops|stopping) (it|them|the [a-z]+)"

@@ -47,7 +47,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:run|runs|running|ran|drip\w*|dribbl\w*|trickl\w*|creep\w*) (?:back )?(?:down |under )?(?:along )?(?:the |its )?"
      r"(?:underside of (?:the |its )?)?(?:(?:jug|jar|bottle|pitcher|carton|kettle) )?"
      r"(?:spout|neck|lip|jug|jar|bottle|pitcher|carton|kettle)\b(?! (?:in|into)\b)"
-     r"|spill\w*|spilt|splash\w*|splatter\w*|spray(?:s|ed|ing)?|spurt\w*|slosh\w*(?! (?:around|about)\b)|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
+     r"|spill\w*|spilt|splash\w*|splatter\w*|spatter\w*|spray(?:s|ed|ing)?|spurt\w*|slosh\w*(?! (?:around|about)\b)|drip\w*|dribbl\w*|leak\w*|mess(?:y|es)?"
      r"|(?:makes?|(?<=up )making) (?:(?:a|any) )?(?:big |huge |bit of a |real |total )?mess"
      r"|(?:makes?|making|made) (?:a |any )?(?:big |huge |massive |giant |real |bit of a )splash\b"
      r"|(?:makes?|making|made) (?:the |any |big |many |lots of |a lot of )?(?:splashes|spills|drips)\b|(?:go|goes|going|went|get|gets|getting|got|glug|glugs|glugged|glugging)(?: out)? everywhere"
