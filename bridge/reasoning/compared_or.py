@@ -44,7 +44,7 @@ _GOAL = re.compile(r"\b(?:so|without|in order to|to (?:avoid|keep|prevent|stop|g
 _SCENE = (r"(?:from|at|near|over|above|below|under|with|by|in|on|off|close|closer|directly|right|just|straight|far"
           r"|further|high|higher|low|lower|slow|slowly|fast|quick|quickly|gently|a|an|the|one|[a-z]+ing"
           # a way said by its verb: "or come in fast and pour from higher up"
-          r"|come|bring|hold|keep|pour|move|use"
+          r"|come|bring|hold|held|keep|pour|move|use"
           # a liquid said by how it runs: "pouring thick cream at 90 degrees or thin milk at 45 degrees"
           r"|thin|thick|runny|sticky|watery)\b")
 #: A second scene's first words that are no scene: an outcome ("or spilling"), or what asks.

@@ -104,7 +104,7 @@ COMPARISONS: tuple[tuple, ...] = (
           ("higher", "high", "", None), ("lower", "low", r"(?! (?:the|it|them|(?:the|a|an|my) \w+)\b)", None),
           ("slower", "slowly", "", None), ("faster|quicker", "fast", "", None), ("heavier", "heavy", "", None),
           ("lighter", "light", "", None), ("steeper", "steeply tilted", "", None),
-          ("stickier|thicker", "sticky", "", None), ("runnier|thinner", "runny", "", None),
+          ("stickier|thicker", "sticky", "", None), ("runnier|thinner", "runny", r"(?! (?:into|onto|from|out of)\b)", None),     # (not "pouring thinner into a bucket")
           ("bouncier", "bouncy", "", None), ("grippier", "grippy", "", None), ("slipperier", "slippery", "", None),
           # tilted more than the ordinary pour's 100 to 140 degrees: upside down; less: slightly
           (r"tilt(?:s|ed|ing)? (?:(?:it|the \w+) )?more|tip(?:s|ped|ping)? (?:(?:it|the \w+) )?more|more tilt(?:ed)?",

@@ -32,6 +32,9 @@ NEARNESS: tuple[tuple, ...] = (
                       # not "off to one side")
                       r"|(?<!off )\b(?:on|onto|into) (?:just |only )?one side\b(?! of\b)"
                       r"|(?<!off )\bon (?:just |only )?one (?:side|edge) of (?:it|the (?:destination|bowl))\b"
+                      # (poured on the side of it, as "on one side": "if I pour on the side of the bowl and not the middle")
+                      r"|(?:(?<=\bpour )|(?<=\bpours )|(?<=\bpoured )|(?<=\bpouring )|(?<=\bpour it )|(?<=\bpouring it ))"
+                      r"on (?:just |only )?the side of (?:it|the (?:destination|bowl))\b"
                       r"|\bonto (?:its|the (?:destination|bowl)s?) (?:edge|rim|lip)\b"
                       r"|\b(?:right|directly) (?:above|over) (?:the |its )?(?:destination |bowl )?(?:edge|rim|lip)"
                       r"(?: of (?:it|the (?:destination|bowl)))?\b(?! of\b)",)),

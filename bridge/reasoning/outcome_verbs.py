@@ -56,7 +56,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      # lost over the rim or on the counter: "do I lose any on the counter", "do i lose broth over the rim"
      r"|los(?:e|es|ing|t) (?:any|some|much|a lot|a bit|a drop)(?: of it)?(?= (?:on|onto|over|all over)\b)"
      r"|los(?:e|es|ing|t)(?= [a-z]+ (?:on|onto|over|all over) (?:the |my )?(?:rim|edge|side|table|counter|floor|worktop|bench)\b)"
-     r"|slop\w*|splat\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)|(?:get|gets|got|getting) (?:any|some|much|a drop)(?: of it)?(?= on\b| onto\b)"
+     r"|slop\w*|splat\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)|(?:end|ends|ended|ending) up (?:somewhere )?where (?:it|they) (?:should not|must not|is not supposed to|are not supposed to|was not supposed to)\b|(?:get|gets|got|getting) (?:any|some|much|a drop)(?: of it)?(?= on\b| onto\b)"
      r"|(?:run|runs|running|ran|roll\w*|stream\w*|drip\w*|dribbl\w*|trickl\w*|go|goes|going|went) (?:back )?down the (?:outside|side)(?! of (?:the |a )?(?:bowl|dish|destination))"
      # what is left behind outside: "does it leave a trail of drips", "leaving a sticky ring on the counter"
      r"|leav(?:e|es|ing) (?:a |any )?(?:sticky |little |wet |big )?(?:trail|line|ring|puddle)s?\b"
@@ -146,7 +146,10 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      ("source_clear",), True),
     (r"(?:stay|stays|keep|keeps|be|is)? ?clear(?: of)?", ("source_clear",), False),
     # emptied into the bowl: it leaves the source and goes in ("does the carton empty into the bowl")
-    (r"(?:empt(?:y|ies|ied)|drain(?:s|ed|ing)?)(?: out)?(?= into\b)", ("liquid_leaves_source", *ALL_IN), False),
+    (r"(?:empt(?:y|ies|ied)|drain(?:s|ed|ing)?)(?: out)?(?= into\b)"
+     # so is coming out into it: "will anything even come out into the bowl"
+     r"|(?:come|comes|coming|came) out(?= (?:in|into) (?:the |a |my )?(?:[a-z]+ )?(?:bowl|destination)\b)",
+     ("liquid_leaves_source", *ALL_IN), False),
     (r"(?:come|comes|coming|came|get|gets|pour|pours|flow|flows|run|runs|drain\w*|make it|makes it|made it) out"
      # the liquid pouring, said of it ("does anything pour at that angle"), not of who pours
      r"|(?:(?<=anything )|(?<=something )|(?<=nothing )|(?<=any liquid )|(?<=any water ))pour(?:s|ed)?\b(?! (?:it|them|the|from|into|in)\b)"

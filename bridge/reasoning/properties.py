@@ -115,7 +115,7 @@ _AS = {"is", "are", "was", "seems", "looks", "feels", "very", "really", "quite",
 #: What a bowl stands on, of its own: a grip said of it is the destination's ("heavy bowl. slippery
 #: bottom."), unless it is said of a container poured from ("a jug with a slippery bottom").
 _UNDERSIDES = {"bottom", "bottoms", "base", "underside", "feet"}
-_BOWLS = {"bowl", "bowls", "dish", "basin", "tub", "destination"}
+_BOWLS = {"bowl", "bowls", "dish", "basin", "tub", "trough", "troughs", "destination"}
 #: What is said back of it.
 SURFACE_SAID = "read as the destination's friction: the bowl slides, or not, on what it stands on"
 

@@ -51,7 +51,14 @@ def stages(tokens: list[Token]) -> list[str]:
         if not marks and stage in ("start", "approach") and first in _TILTING:
             current = "pour"
         marked = set(marks[1:])
+        # a move named with its speed before it, as a note says it ("bottle near rim fast retract"): what
+        # comes before the speed is said of the stage before, not of the move
+        noted = (marks[0] - 1 if marks and tokens[marks[0]].raw in _MOVE_NOUNS
+                 and marks[0] - 1 > at[0] and tokens[marks[0] - 1].word in _SPEEDS else None)
         for i in at:
+            if noted is not None and i < noted:
+                out.append(stage)
+                continue
             if i in marked:
                 current = _next(tokens[i].word, current)
             elif (current in ("start", "approach") and i > at[0] and _after_and(tokens, i, at[0])
@@ -62,6 +69,9 @@ def stages(tokens: list[Token]) -> list[str]:
     return out
 
 
+#: Speeds said of a move named by its noun ("fast retreat", "slow approach").
+_SPEEDS = {stem(w) for w in ("fast", "slowly", "moderate")}
+_MOVE_NOUNS = frozenset(("approach", "retreat", "retract", "retraction", "withdrawal"))
 #: A word said in passing before a verb of tilting: "and just tip it".
 _PASSING = {"just"}
 

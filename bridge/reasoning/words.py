@@ -177,7 +177,7 @@ PHRASES: tuple[tuple, ...] = (
     ("end", (r"re:\bend(?:s|ed|ing)? up\b(?= (?:right|directly|straight|just) (?:over|above)\b)",)),
     # where the liquid ends up is an outcome (outcomes.py), never the end pose raised
     (UNCLEAR, (r"re:\bend(?:s|ed|ing)? up\b(?= (?:on|onto|in|into|inside|all|everywhere|outside|over"
-               r"|above|below|under|underneath|beside|near|next|against|touching|\w+ing|outcome)\b)",)),
+               r"|above|below|under|underneath|beside|near|next|against|touching|where|somewhere|\w+ing|outcome)\b)",)),
     # "not tilted at all" is upright; "not tilted much" is slightly tilted or upright
     ("upright", (r"re:\b(?:not|without) (?:be |being |any )?(?:tilt|tip|lean)\w*\b(?!(?: (?:it|the \w+))?"
                  r" (?:much|a lot|far|too|very|so|that|sideways|back|steeply|slightly|halfway|half|a bit"
