@@ -78,7 +78,7 @@ def which_one(text: str) -> tuple[str, tuple[str, ...]]:
         verb = said_verb + ("e" if ending == "es" and not re.search(r"(?:sh|ch|ss|x)$", said_verb) else "")
         verb += " anything" if verb == "leave" and re.match(r" in\b", text[m.end():]) else ""    # "leaves more in the jug"
         verb = "get" if verb == "put" else verb             # "which one puts more liquid in the bowl": gets it in
-        verb = "make" if verb in ("give", "produce", "create") else verb    # "which produces more splash": makes it
+        verb = "make" if verb in ("give", "produce", "create", "ha") else verb    # "which produces, has more splash": makes it
         verb += m.groupdict().get("where") or ""
         text, said = (text[:m.start()] + f"does it {verb}" + text[m.end():],
                       (*said, f"{m.group(0)}: read as does it {verb}, of the one said first"))
