@@ -80,6 +80,8 @@ MOVES: tuple[tuple, ...] = (
     # "bring it back up", "lift it back down": up and down, in the stage they are said in
     ("raise", (r"re:\b(?:bring|brings|bringing|brought|lift|lifts|lifted|lifting|mov(?:e|es|ed|ing)"
                r"|tak(?:e|es|ing)|took|pull(?:s|ed|ing)?)(?: it| the \w+| them)? back up\b",)),
+    # "lift it away slowly": the move away, raised as it goes (not "lift it away from the bowl": a direction)
+    ("retreat raise", (r"re:\b(?:lift|lifts|lifted|lifting)(?: it| the \w+| them)? (?:away|off)\b(?! (?:from|of)\b)",)),
     ("lower", (r"re:\b(?:bring|brings|bringing|brought|lift|lifts|lifted|lifting|mov(?:e|es|ed|ing)"
                r"|tak(?:e|es|ing)|took)(?: it| the \w+| them)? back down\b",)),
     # "once it's poured", "when done": after pouring
@@ -123,7 +125,7 @@ MOVES: tuple[tuple, ...] = (
                  r"re:\bmov(?:e|es|ed|ing) (?:it|the \w+|them) (?:away|back|out)\b(?! from)",
                  rf"re:\b{_GLIDE}(?: it| the \w+)? (?:away|back|out)\b(?! from| of)",
                  "after pour", "after the pour", "afterwards", "move away", "pull away", "pull back",
-                 "back off", "back away", "withdraw", "withdrawn", "withdrew", "retract")),
+                 "back off", "back away", "withdraw", "withdrawn", "withdrew", "retract", "withdrawal", "retraction")),
     ("start", ("begin", "at first", "at the start", "initially")),
     # a pose named by its stage, as a lab note lists them: "initial pose: 20 cm to the side"
     ("start", (r"re:\b(?:initial|starting|start) (?:pose|position|configuration|state)\b",

@@ -102,8 +102,10 @@ def source_on_rim(text: str, said: dict[str, None]) -> str:
 
 @lru_cache(maxsize=None)
 def _set_on_rim() -> re.Pattern:
-    """Someone setting the source on the bowl (its rim, its edge, it) in a condition."""
-    sources, destinations = alternation(_sources()), alternation(_DESTINATIONS - {"container"})
+    """Someone setting the source on the bowl (its rim, its edge, it) in a condition (what is set on it is the
+    source, a bucket too: "if I lean the bucket on its lip")."""
+    sources = alternation([*_sources(), "bucket", "buckets", "pail", "pails", "container", "containers"])
+    destinations = alternation(_DESTINATIONS - {"container"})
     return re.compile(
         rf"\b(?P<when>if|when|while|once) (?:i|we|you|he|she|they) (?:lean|leans|leaned|leant|leaning|rest|rests|rested|resting"
         rf"|prop|props|propped|propping|balance|balances|balanced|balancing) (?:the|my|a|her|his|our) (?P<source>{sources})"

@@ -15,7 +15,7 @@ from pantarhei.bridge.reasoning.reading import read_question
 KINDS = {"hedge", "material", "bowl", "bowl poured from", "sticky liquid", "heavy liquid", "liquid", "context", "part",
          "unclear", "a bit", "little", "much", "full", "slightly tilted", "steeply tilted", "low", "high",
          "to the side", "very", "start slightly tilted", "into the middle", "right over", "into", "from", "upright",
-         "tilted", "slowly", "fast", "slippery destination"}
+         "tilted", "slowly", "fast", "slippery destination", "pour", "poured"}
 
 
 def _phrases(*kinds: str) -> list[tuple[str, str]]:
@@ -47,6 +47,20 @@ def test_a_liquid_by_its_name_is_read_as_the_liquid_it_is(phrase, said):
 def test_a_bowl_standing_on_ice_is_slippery(phrase, said):
     question = f"pour from the side, {phrase}"
     assert list(read_question(question).scene) == ["pour_to_side", "slippery_destination"]
+    assert _noted(question, phrase, said)
+
+
+@pytest.mark.parametrize("phrase,said", _phrases("pour"))
+def test_a_pour_typed_as_it_sounds_is_a_pour(phrase, said):
+    question = f"if {phrase.removeprefix('i ').removeprefix('we ')} the milk from high up, does it splash"
+    assert list(read_question(question).scene) == ["pour_high"] and read_question(question).asked == ("no_spill",)
+    assert _noted(f"does it splash if {phrase} from high up", phrase, said)
+
+
+@pytest.mark.parametrize("phrase,said", _phrases("poured"))
+def test_a_pour_told_typed_as_it_sounds_is_a_pour_told(phrase, said):
+    question = f"{phrase} the milk from high up and it splashed, why"
+    assert list(read_question(question).scene) == ["pour_high"] and read_question(question).asked == ("no_spill",)
     assert _noted(question, phrase, said)
 
 
