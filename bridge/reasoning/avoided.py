@@ -19,8 +19,8 @@ _VERBS = {"hits": "hit", "hit": "hit", "bumps": "bump", "bumped": "bump", "knock
           "spills": "spill", "spilled": "spill", "spilt": "spill", "splashes": "splash", "splashed": "splash",
           "drips": "drip", "dripped": "drip", "overflows": "overflow", "overflowed": "overflow",
           "misses": "miss", "missed": "miss"}
-#: ... and those the most asked before may name too ("how high can I go before it slops out").
-_BEFORE = {**_VERBS, "slops": "slop", "sloshes": "slosh"}
+#: ... and those the most asked before may name too ("how high can I go before it slops out", "... goes over").
+_BEFORE = {**_VERBS, "slops": "slop", "sloshes": "slosh", "goes over": "go over", "goes out": "go out"}     # ("before it goes over the sides")
 #: (Not an outcome not wanted, said first: "no spills, what tilt should i use" is goal_wordings.py's.)
 _TOLD = re.compile(
     rf"^(?!(?:no|not|never|without) )(?P<who>(?:[a-z']+ ){{1,3}}?)(?:keeps? |always )?(?P<verb>{'|'.join(_VERBS)}|keeps? (?:{'|'.join(v + 'ing' for v in ('hitt', 'bump', 'knock', 'slid', 'mov', 'tipp', 'spill', 'splash', 'dripp'))}))"
