@@ -16,7 +16,7 @@ _EVERY_POUR = (
     (re.compile(r"\b(?:not|never|without) (?:mov\w*|shak\w*|jiggl\w*|wav\w*)(?: (?:the|my|a) (?!bowl\b|dish\b)[a-z]+| it| them)"
                 r"(?: at all)? (?:while|when|as) (?:pouring|i pour|i am pouring|it pours|it is pouring)\b"),
      "the source is held still while it pours, in every pour (how it moves in and away is read)"),
-    (re.compile(r"(?<!\bfrom )(?<!\bfrom an )(?<!\bfrom the )(?<!\bfrom a )\bempty(?= (?:bowl|dish|basin)s?\b)"
+    (re.compile(r"(?<!\bfrom )(?<!\bfrom an )(?<!\bfrom the )(?<!\bfrom a )\b(?:(?:near|nearly|almost)[ -])?empty(?= (?:bowl|dish|basin)s?\b)"
                 # (a cause asked is left to be refused: "was it because the bowl was empty?")
                 r"|(?<!\bbecause the )(?<!\bbecause my )\b(?P<keep>(?:bowl|dish|basin) )(?:is |was |being |still )?"
                 r"(?:completely |totally |basically |pretty much )?empty\b(?: and\b)?"),

@@ -150,6 +150,10 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     # what must not happen, said first, a value asked after it: "nothing should splash out, what height do i need"
     (r"^(nothing|none of it|no liquid|not a drop|the (?:bowl|dish|cup|jug|pitcher|bottle)|it) (?:should|must|may|can)(?: (not|never))?"
      r" (?=[a-z]+\b[^.?!]*?[,.;:!?-] *(?:what|which|how)\b)", lambda m: f"so that {m.group(1)} {'does not ' if m.group(2) else ''}"),
+    # less of an outcome wanted, as less of the liquid doing it: "so less goes over the side", "so that less
+    # spills" (so that none does, not so that it does)
+    (r"\bso(?: that)? (?:less|fewer)(?: of it| liquid| water)? (?=(?:goes|go|spills|spill|splashes|splash|drips|drip|slops"
+     r"|slop|ends|end|lands|land)\b)", "so that nothing "),
     # wanting less of an outcome, said as a noun: "if I want less splashing", "if we want fewer spills"
     (r"\b(?:if|since|as) (?:i|we|you) (?:want|need|would like|wanna)(?: to (?:have|get|make))? (?:less|fewer|minimal|minimum|no)"
      r" (splash|spill|drip)(?:es|s|ing|age)?\b", r", so that it does not \1"),

@@ -76,7 +76,7 @@ def source_on_rim(text: str, said: dict[str, None]) -> str:
     def set_on_rim(m: re.Match) -> str:
         said.setdefault(f"{m.group(0)[len(m.group('when')) + 1:]}: read as low near the rim, where the source meets it"
                         " (no proposition says a touch)")
-        return f"{m.group('when')} the {m.group('source')} low near the rim"
+        return f"{m.group('when')} the {m.group('how') or ''}{m.group('source')} low near the rim"     # ("the heavy jug")
     text = _set_on_rim().sub(set_on_rim, text)
     if not re.search(r"\b(?:rim|edge)\b", text):
         return text
@@ -108,7 +108,7 @@ def _set_on_rim() -> re.Pattern:
     destinations = alternation(_DESTINATIONS - {"container"})
     return re.compile(
         rf"\b(?P<when>if|when|while|once) (?:i|we|you|he|she|they) (?:lean|leans|leaned|leant|leaning|rest|rests|rested|resting"
-        rf"|prop|props|propped|propping|balance|balances|balanced|balancing) (?:the|my|a|her|his|our) (?P<source>{sources})"
+        rf"|prop|props|propped|propping|balance|balances|balanced|balancing) (?:the|my|a|her|his|our) (?P<how>[a-z]+ )?(?P<source>{sources})"
         rf" (?:on|against) (?:it|(?:its|the) (?:rim|edge|lip)(?: of (?:the |my |a )?(?:{destinations}))?"
         rf"|(?:the|my) (?:{destinations})(?:'s (?:rim|edge|lip))?)\b")
 
