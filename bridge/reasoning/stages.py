@@ -2,7 +2,9 @@
 "approach" (the move into the pouring pose) or "retreat" (the move out of
 it), said by a stage word ("then", "after pouring", "move away" ...:
 words.py brings everyday phrases to them). A stage word speaks for its
-clause from there on, and for the words of its clause before it; a clause
+clause from there on, and for the words of its clause before it (but for
+a move named by its noun with its speed before it, as a note says it:
+"bottle near rim fast retract" pours near the rim); a clause
 without one goes on in the stage before (pouring, at first), but one
 that begins by tilting after the start or the move in is the pour's
 ("move in slowly, tilt it halfway", "come in low and just tilt it"). A pose said
