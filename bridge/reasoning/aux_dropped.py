@@ -49,7 +49,7 @@ _FRAGMENTS = {"all in": "does it all go in", "all out": "does it all come out", 
                  for said in ("all", "still", "stays", "stay") for bowl in ("", " bowl", " the bowl")
                  for after in ("", " after", " afterwards")}}
 _FRAGMENT = re.compile(rf"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<said>{'|'.join(sorted(_FRAGMENTS, key=len, reverse=True))})"
-                       r"(?:\?|(?<=in or out)[.!]*$|(?<=in or not)[.!]*$)")       # ("side pour. in or out": its question mark left off)
+                       r"(?:\?|(?<=in or out|in or not)[.!]*$)")       # ("side pour. in or out": its question mark left off)
 #: "ok or not" ending a note, however set off ("pour high - ok or not"): "is it ok?".
 _OK_OR_NOT = re.compile(r"(?:,| -)? (?:ok|okay) or not\b[ ?]*$")
 #: A bowl told without its article, with what it did ("bowl tipped over", "bottle empty, bowl slid. why"):
@@ -149,7 +149,7 @@ def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
     if why and (outcome_verb(why.group("verb")) or why.group("verb") in _PHRASAL) and not _AUX.match(text, why.end("why") + 1):    # "why the liquid not go in"
         said.append(f"{why.group(0)}: read as {why.group('why')} does {text[why.end('why') + 1:why.end()]}")
         text = f"{why.group('why')} does {text[why.end('why') + 1:]}"
-    text = _FRAGMENT.sub(fragment, text) if "?" in text or "in or out" in text or "in or not" in text else text
+    text = _FRAGMENT.sub(fragment, text) if "?" in text or "in or " in text else text
     if _OK_OR_NOT.search(text):                         # "jug touching bowl rim - ok or not": ok?
         said.append("ok or not: read as is it ok")
         text = _OK_OR_NOT.sub(", is it ok?", text)

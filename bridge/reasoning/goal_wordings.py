@@ -29,9 +29,9 @@ def _out_and_in(m: re.Match) -> str:
     return f"{'pouring ' + liquid.group(1) + ' ' if liquid else ''}so that {out}it all goes "
 
 
-def _emptied_in(m: re.Match) -> str:
+def emptied_in(m: re.Match) -> str:
     """"I want to empty the whole pot of soup into the bowl": so that it empties and it all goes in,
-    the liquid named kept for the scene."""
+    the liquid named kept for the scene (group 1 the source, group 2 the liquid, if named)."""
     return f"{'pouring ' + m.group(2) + ' ' if m.group(2) else ''}so that the {m.group(1)} empties and it all goes"
 
 
@@ -99,12 +99,12 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:i|we) (?:would )?(?:prefer|rather|hope)(?: that)? (it|them|the [a-z]+) (?:not|never|does not|do not|will not)"
      r" (?=[a-z]+)", r"so that \1 does not "),
     # "I want to empty the whole pot of soup into the bowl": so that it empties and it all goes in
-    (rf"{_EMPTYING_WANTED}(?: of ([a-z]+))?(?= into (?:the |a |my )?(?:[a-z]+ )?[a-z]+\b)", _emptied_in),
+    (rf"{_EMPTYING_WANTED}(?: of ([a-z]+))?(?= into (?:the |a |my )?(?:[a-z]+ )?[a-z]+\b)", emptied_in),
     # "need to empty a heavy jug of syrup": so that it empties
     (r"(?:^|\b(?:i|we) )(?:need|want|have) to (?:empty|drain) (?:out )?(?:a|the|my) ((?:[a-z]+ )?[a-z]+)(?= of\b|$|[ ,.;!?])",
      r"so that the \1 empties"),
     # "goal: empty the bottle completely": so that it empties ("... into the bowl": it goes in too)
-    (rf"{_EMPTYING}(?: of ([a-z]+))?(?= into (?:the |a |my )?(?:[a-z]+ )?[a-z]+\b)", _emptied_in),
+    (rf"{_EMPTYING}(?: of ([a-z]+))?(?= into (?:the |a |my )?(?:[a-z]+ )?[a-z]+\b)", emptied_in),
     (rf"{_EMPTYING}\b", r"so that the \1 empties"),
     # "I'd like to empty the whole mug": so that it empties (into the bowl: and it all goes in, above)
     (rf"{_EMPTYING_WANTED}\b", r"so that the \1 empties"),

@@ -104,7 +104,7 @@ def source_on_rim(text: str, said: dict[str, None]) -> str:
 def _set_on_rim() -> re.Pattern:
     """Someone setting the source on the bowl (its rim, its edge, it) in a condition (what is set on it is the
     source, a bucket too: "if I lean the bucket on its lip")."""
-    sources = alternation([*_sources(), "bucket", "buckets", "pail", "pails", "container", "containers"])
+    sources = alternation([*_sources(), "bucket", "pail", "container"])
     destinations = alternation(_DESTINATIONS - {"container"})
     return re.compile(
         rf"\b(?P<when>if|when|while|once) (?:i|we|you|he|she|they) (?:lean|leans|leaned|leant|leaning|rest|rests|rested|resting"

@@ -21,7 +21,7 @@ from functools import lru_cache
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.goal_lists import goal_list
-from pantarhei.bridge.reasoning.goal_wordings import VALUE as _VALUE, WANTING as _WANTING
+from pantarhei.bridge.reasoning.goal_wordings import VALUE as _VALUE, WANTING as _WANTING, emptied_in
 from pantarhei.bridge.reasoning.speeds import POURING_SPEED, SPEED_LAST
 from pantarhei.bridge.reasoning.vessels import destinations, liquids
 
@@ -211,8 +211,7 @@ _WANTING_CUED = (
           ("want", "need", "like")), r"so that \1 stays "),
     # "I need the whole jug of batter in the bowl": so that the jug empties and it all goes in
     (Cued(r"(?:^|(?<=[.,;:!?] )|\b(?:i|we) )(?:want|need|would like) the (?:whole|entire) ([a-z]+)(?: of (?:the |my )?([a-z]+))?"
-          r" (?=(?:in|into|inside)\b)", ("whole", "entire")),
-     lambda m: f"{f'pouring {m.group(2)} ' if m.group(2) else ''}so that the {m.group(1)} empties and so that it all goes "),
+          r"(?= (?:in|into|inside)\b)", ("whole", "entire")), emptied_in),
     # "I want to get all of the syrup out of the cup and into the bowl": so that the cup empties and it goes in
     (Cued(r"\b(?:i|we) (?:want|need|would like) to get (it all|all of it|everything|all (?:of )?the [a-z]+) out of"
           r" ((?:the|my|a) [a-z]+) and (?=(?:in|into|inside)\b)", (" get ",)), r"so that \2 empties and so that \1 goes "),

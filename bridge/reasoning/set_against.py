@@ -16,6 +16,7 @@ from typing import Collection
 from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.comparisons import COMPARED, VERSUS
 from pantarhei.bridge.reasoning.everyday import sections
+from pantarhei.bridge.reasoning.nouns import BOWL
 from pantarhei.bridge.reasoning.numerals import NUMBER_WORDS
 from pantarhei.bridge.reasoning.outcomes import hear
 from pantarhei.bridge.reasoning.spelling import corrected
@@ -26,6 +27,8 @@ _OTHER = re.compile(rf"\b(?:{VERSUS}|{COMPARED})\b\.?"
                     r" (?P<other>[^,;:.!?]+?)(?= *(?:[,;:.!?]| - )|$)")
 #: A unit a number is said in, which the reader reads with the number before it.
 _UNIT = re.compile(r"mm|cm|m|ft|inch\w*|feet|foot|deg\w*|s|secs?|second\w*|ms|g|kg|gram\w*|percent")
+#: A number, as the reader tokenises it (its value is read with its unit).
+_NUMBER = re.compile(r"-?\d")
 _VOLUME = re.compile(r"(?<![\w.])\d+(?:\.\d+)? ?(?:ml|millilit\w*|cl|dl|l|lit(?:re|er)s?|oz|ounces?)\b")
 
 
@@ -57,7 +60,7 @@ def refuse_unsayable(text: str, known: Collection[str], placeable: Collection[st
     heard = _OTHER.search(hear(corrected(text)[0]).scene)     # what it asks is the first scene's too
     said = tokens(heard.group("other")) if heard else []
     known = set(known) | set(NUMBER_WORDS) | {"hundred", "thousand", "same", "outcome"}
-    unknown = [t.raw for i, t in enumerate(said) if t.word not in known and t.raw not in known and not re.match(r"-?\d", t.word)
+    unknown = [t.raw for i, t in enumerate(said) if t.word not in known and t.raw not in known and not _NUMBER.match(t.word)
                and not _UNIT.fullmatch(t.raw) and not names_part(said, i, placeable)]
     if unknown:
         raise UserError("could not place " + ", ".join(f'"{w}"' for w in dict.fromkeys(unknown))
@@ -70,7 +73,7 @@ def refuse_unsayable(text: str, known: Collection[str], placeable: Collection[st
 _JOINING = frozenset(("a", "an", "the", "my", "your", "our", "this", "that", "one", "pour", "from", "into", "in", "of", "with",
                       "and", "same", stem("hedge")))
 #: What the vocabulary does not say of a body, by the word a name is read as.
-_UNSAID = {"material": "what a bowl is made of", "bowl": "which container is used"}
+_UNSAID = {"material": "what a bowl is made of", BOWL: "which container is used"}
 
 
 def _refuse_names_alone(first: list, other: list, said: str, placeable: Collection[str]) -> None:
@@ -80,8 +83,8 @@ def _refuse_names_alone(first: list, other: list, said: str, placeable: Collecti
     the answer would be the same for both, and would stand for a difference it cannot tell."""
     named, words = {(t.word, t.raw) for t in first}, {t.word for t in first}
     new = [t for t in other if t.word not in _JOINING and (t.word, t.raw) not in named]
-    values = {t.word for t in other if t.word in placeable or re.match(r"-?\d", t.word)}
-    alone = [t for t in first if (t.word in placeable or re.match(r"-?\d", t.word)) and t.word not in values]
+    values = {t.word for t in other if t.word in placeable or _NUMBER.match(t.word)}
+    alone = [t for t in first if (t.word in placeable or _NUMBER.match(t.word)) and t.word not in values]
     if new and not alone and all(t.word in _UNSAID and t.word in words for t in new):
         raise UserError(f"the scene set against the first (\"{said}\") differs from it only in "
                         f"{' and '.join(dict.fromkeys(_UNSAID[t.word] for t in new))}, which the vocabulary does not say: the answer would be the same for both; "
