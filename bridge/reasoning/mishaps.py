@@ -95,7 +95,7 @@ _MOVES_TOLD = (
 )
 #: The bowl said as where a spill told should have gone: it did not all go in ("ran down the
 #: outside instead of going in the bowl", "went on the floor and not in the tub").
-_NOT_IN = re.compile(r"\b(?:instead of|rather than|and not|not) (?:going |landing |getting |ending up )?(?:(?:(?:in|into|inside|in to) )?"
+_NOT_IN = re.compile(r"\b(?:instead of|rather than|and not|not|except(?: for)?|but(?= in\b| into\b)) (?:going |landing |getting |ending up )?(?:(?:(?:in|into|inside|in to) )?"
                      r"(?:the |a |an |my |our )?(?:bowl|dish|destination|basin|tub|pot|pan|glass|mug|cup|bucket)s?\b"
                      r"|(?:in|inside|in there)(?= *(?:[,.;:!?]|$)))")      # ("ran down the pot instead of going in")
 #: A cause asked before the mishap it is asked of: "what went wrong here, I turned the cup upside down ...".

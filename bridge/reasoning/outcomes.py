@@ -34,6 +34,7 @@ from pantarhei.bridge.reasoning.acting import acts, around, staying
 from pantarhei.bridge.reasoning.asked_without import without_asked
 from pantarhei.bridge.reasoning.cued import Cued
 from pantarhei.bridge.reasoning.earlier_pour import liquid_named
+from pantarhei.bridge.reasoning.elsewhere import instead_of_the_bowl
 from pantarhei.bridge.reasoning.nouns import poured_from
 from pantarhei.bridge.reasoning.outcome_verbs import ALL_IN as _ALL_IN, OUTCOMES
 from pantarhei.bridge.reasoning.flow_rates import rates, refuse_alone
@@ -362,13 +363,14 @@ def hear(text: str) -> Heard:
         text, seeking = sought(text)        # "how high should I hold it": a plan's to find
         phrases.extend(seeking)
     was_goal = False
-    text = _repeat(more, as_more, _spaced(pattern.sub(as_asked, text)))
+    text, elsewhere = instead_of_the_bowl(_spaced(pattern.sub(as_asked, text)))   # "on the floor, not in the bowl"
+    text = _repeat(more, as_more, text)
     text = nominal.sub(as_nominal, text)
     text = CONTACT.pattern.sub(as_contact, text) if CONTACT.cued(text) else text
     text = _spaced(bare.sub(as_more, text))
     text, asked, when = during(text, asked)         # "does the bowl slide when the cup comes in"
     text, goals, wanted_when = during(text, goals)
-    phrases.extend((*when, *wanted_when))
+    phrases.extend((*elsewhere, *when, *wanted_when))
     if goals and reaches(said):         # "I want nothing on the counter. Is pouring from 20 cm ok?"
         wanted = [g.removeprefix("neg(").removesuffix(")") for g in goals]
         asked = [n for n in asked if n not in OUTCOMES[-1][1] or n in wanted] + [n for n in wanted if n not in asked]

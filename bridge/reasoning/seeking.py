@@ -144,7 +144,9 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
     filling = _filling()
     if filling.search(text):
         said += tuple(m.group(0).strip() for m in filling.pattern.finditer(text))
-        text = filling.pattern.sub(lambda m: f"so that it all ends up in {next(g for g in m.groups() if g)}", text)
+        # with a spill unwanted where it would land ("without a drop on the table"): that says it stays in
+        verb = "goes into" if _ON_THE_TABLE.search(text) else "ends up in"
+        text = filling.pattern.sub(lambda m: f"so that it all {verb} {next(g for g in m.groups() if g)}", text)
     for cued, wanted in _WANTING_CUED:
         if cued.search(text):
             said += tuple(m.group(0).strip() for m in cued.pattern.finditer(text))
@@ -157,6 +159,11 @@ _WANTS_FILLED = (r"(?:\b(?:i|we) (?:would like|like|want|wanna|need|wish|am tryi
                  r"|\b(?:goal|aim|objective|task|target)s?(?: is)?:?"
                  # said with no one ("want to fill the bowl ...", "got to fill a patient's basin")
                  r"|(?:^|(?<=[.,;:!?] ))(?:want|wanna|need|trying|got|gotta|have))(?: to)? ")
+
+
+#: A spill unwanted on what the bowl stands on: "without a single drop on the table", "without any getting on the floor".
+_ON_THE_TABLE = re.compile(r"\b(?:without|none|nothing)\b[^.?!,]*?\b(?:on|onto|hitting|touching) (?:the |my |our )?"
+                           r"(?:table|tablecloth|counter|countertop|worktop|floor|bench|stove)\b")
 
 
 @lru_cache(maxsize=None)
@@ -172,7 +179,8 @@ def _to_the_brim() -> re.Pattern:
 @lru_cache(maxsize=None)
 def _filling() -> Cued:
     """Filling the bowl, wanted: "I'd like to fill the bowl", "goal: fill the bowl", "have the bowl end up full"
-    (so that it all ends up in it: it goes in and stays); not how full ("fill the bowl
+    (so that it all ends up in it: it goes in and stays; that it goes in, where a spill on the table is
+    unwanted beside it, which says it stays); not how full ("fill the bowl
     halfway"; "fill the bowl to the brim", a level, is refused before: _to_the_brim), nor the source
     filled ("filling the cup to the top": a full source)."""
     bowl = rf"((?:the|a|an|my|this|that|our|your) (?:[a-z']+ )?(?:{destinations()}))"
