@@ -5,10 +5,12 @@ pouring, as "lowered to 5 mm above the lip" is: "lower the carafe to just
 over the rim" pours low (just over the rim), and a bare "lower it" is still
 refused (lower than what?). Poured "straight down" into the bowl says the
 way the stream falls, as it falls from every pour: no move down, and no
-place over the bowl, said back as read as nothing; "pour straight down",
-with no bowl it falls into, is still refused (the source held straight
-down, upside down, or moved down?). Held or lowered down inside the bowl
-("lower the jug right down inside it to pour") is below its rim."""
+place over the bowl, said back as read as nothing, and so is "pour it
+straight down" with no bowl said (people who pour read it as any pour:
+over the middle, upside down or neither); the source moved straight down
+("move it straight down before pouring") is still refused. Held or lowered
+down inside the bowl ("lower the jug right down inside it to pour") is
+below its rim."""
 from __future__ import annotations
 
 #: Where a move up or down may be said to go, in words: just over the rim ("just over the rim": low).
@@ -31,7 +33,14 @@ MOVED_TO: tuple[tuple, ...] = (
                        r"|keep(?:s|ing)?|kept)(?: (?:it|them|the \w+))?(?: right)?(?: down)?|(?:right )?down)"
                        r" inside (?:of )?(?:it|the (?:bowl|destination|dish))\b(?![^;.?!]*\b(?:before|after|then)\b)",),
      "read as below the destination's rim: the source held down inside it while pouring"),
-    ("hedge", (r"re(straight down):\bstraight down\b(?= (?:into|in|onto) )",),
+    # (poured straight down with no bowl said, too: "pour it straight down from high up"; not a move, "move it straight
+    # down", nor a tilt, "pointing straight down", nor what runs down, "went straight down the side")
+    ("hedge", (r"re(straight down):\bstraight down\b(?= (?:into|in|onto) )"
+               r"|(?<!come )(?<!comes )(?<!came )(?<!coming )(?<!bring )(?<!brought )(?<!lower )(?<!move )(?<!it )"
+               r"(?<!point )(?<!pointing )(?<!tilt )(?<!tilted )(?<!slam )(?<!go )(?<!goes )(?<!went )(?<!going )"
+               r"(?<!run )(?<!runs )(?<!ran )(?<!running )\bstraight down\b(?! (?:the|its|along|onto|on|to)\b)"
+               r"|(?:(?<=\bpour it )|(?<=\bpours it )|(?<=\bpoured it )|(?<=\bpouring it ))straight down\b"
+               r"(?! (?:the|its|along|onto|on|to)\b)",),
      "read as nothing: the stream falls straight down from every pour; where the source is held is "
      "said by \"centred\" or \"near the rim\", a move down by \"lower it before pouring\""),
 )

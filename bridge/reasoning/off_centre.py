@@ -9,7 +9,7 @@ axis, not the sideways offset. A side of the middle is offset sideways,
 its side unread ("a bit to the left of centre"); a length to a side of it
 is refused, as "5 cm to the left" is: its side is the number's sign.
 "Off-centre" with no length says no distance ("how far?", words.py); "far off-centre" is from the side.
-The middle is also said by where the stream is aimed ("aim for the centre") and by a pour straight down."""
+The middle is also said by where the stream is aimed ("aim for the centre")."""
 from __future__ import annotations
 
 from pantarhei.bridge.reasoning.everyday import UNCLEAR
@@ -41,14 +41,8 @@ OFF_CENTRE: tuple[tuple, ...] = (
               rf"re(cent):{_AFTER_LENGTH}off {_CENTRE}d?"), _SAID),
 )
 
-#: The middle said by how the stream falls or is aimed.
+#: The middle said by where the stream is aimed.
 IN_THE_MIDDLE: tuple[tuple, ...] = (
-    # a pour straight down falls in the middle ("pour it straight down from high up"); not a move
-    # ("come straight down"), a tilt ("pointing straight down") nor what runs down ("went straight down the side")
-    ("over the middle", (r"re(straight down):(?<!come )(?<!comes )(?<!came )(?<!coming )(?<!bring )(?<!brought )(?<!lower )"
-                         r"(?<!point )(?<!pointing )(?<!tilt )(?<!tilted )(?<!slam )(?<!go )(?<!goes )(?<!went )(?<!going )"
-                         r"(?<!run )(?<!runs )(?<!ran )(?<!running )\bstraight down\b(?! (?:the|its|along|onto|on|to)\b)",),
-     "read as over the middle: a pour straight down falls in the middle"),
     # where the stream is aimed: "aim for the centre of the bowl" pours centred over it
     ("centred", (r"re:\baim(?:s|ed|ing)?(?: it| the \w+)? (?:for|at|into|towards?) (?:the )?(?:very )?"
                  r"(?:cent(?:re|er)|middle)\b",)),

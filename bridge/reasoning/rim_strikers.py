@@ -65,7 +65,8 @@ def source_on_rim(text: str, said: dict[str, None]) -> str:
     """`text` with the source said to touch (rest on, lean on, strike) the bowl's rim, as the scene of
     another question ("if the beaker touches the rim of the dish, will the dish tip?", "pitcher touching
     bowl edge when pouring, the bowl will fall?", "bowl wobble when jug hits edge?"), said as poured low
-    near the rim: the scenes in which a source meets the rim. Only a touch in a condition ("if", "when",
+    near the rim: the scenes in which a source meets the rim; so is the bowl itself struck in a condition ("if
+    the jug bumps it"), but not as the source moves ("on the way in"). Only a touch in a condition ("if", "when",
     "while") or one said as a note's first clause ("bottle touching bowl rim spill") is so read, with
     something else asked before or after it. No proposition says a touch; whether it touches is asked
     as itself ("does the cup touch the rim?", "bottle touching bowl rim?", "the cup touches the rim when
@@ -78,12 +79,13 @@ def source_on_rim(text: str, said: dict[str, None]) -> str:
                         " (no proposition says a touch)")
         return f"{m.group('when')} the {m.group('how') or ''}{m.group('source')} low near the rim"     # ("the heavy jug")
     text = _set_on_rim().sub(set_on_rim, text)
-    if not re.search(r"\b(?:rim|edge)\b", text):
+    if not re.search(r"\b(?:rim|edge|it|bowl|dish|basin|tub|bucket|pail|vat|pot|destination|receptacle)\b", text):
         return text
 
     def low_near_rim(m: re.Match) -> str:
         before = re.split(r"[,.;:!?]| - ", text[:m.start()])[-1]
-        if re.search(r"\b(?:not|never|no|without|want|wants|wanted|avoid|avoiding|stop|prevent)\b(?: \w+){0,3} ?$", before):
+        if re.search(r"\b(?:not|never|no|without|want|wants|wanted|avoid|avoiding|stop|prevent)\b"
+                     r"(?: (?!(?:if|when|whenever|while|once)\b)\w+){0,3} ?$", before):
             return m.group(0)           # "without the jar touching the rim": a goal
         condition = re.search(r"\b(?:if|when|whenever|while|once)\b(?: \w+){0,4} ?$", before)
         if condition and re.search(r"\b(?:tell me|know|wonder|wondering|see|check|ask|asking) $", before[:condition.start()]):
@@ -94,6 +96,9 @@ def source_on_rim(text: str, said: dict[str, None]) -> str:
         if re.fullmatch(r"[?.!]*", text[m.end():].strip()) and not (
                 condition and re.sub(r"\b(?:what|happens|happen|would|will|so|and|then)\b", "", before[:condition.start()]).strip()):
             return m.group(0)           # "what if the jug hits the rim?": whether it does, asked
+        if not m.group("rim") and (not condition or re.match(r",? *(?:on the way|on its way|as it|while (?:coming|moving|going"
+                                                             r"|pulling|bringing|lifting))\b", text[m.end():])):
+            return m.group(0)           # the bowl itself struck, not in a condition (the touch, asked or told), or as it moves
         touch = f"{m.group('part') or ''} {m.group('touch')}".strip()
         said.setdefault(f"{touch}: read as low near the rim, where the source meets it (no proposition says a touch)")
         return f"{m.group('source')} low near the rim"
@@ -121,9 +126,9 @@ def _on_rim() -> re.Pattern:
         rf"(?P<source>\b(?:(?:the|my|a|its|your) )?(?:{sources}))(?P<part> (?:spout|lip|rim|edge|mouth))? "
         rf"(?P<touch>(?:is touch|(?:(?:is|keeps|keep) )?(?:touches|touching|contacts|contacting|makes contact with|is in contact with"
         rf"|rests on|resting on|leans on|leaning on|sits on|sitting on|hits|bumps|knocks|clips|strikes|hitting|banging|bumping|knocking"
-        rf"|brushes against|brushing against|bangs against|bangs into|bumps into)) (?:the |its |a )?"
-        rf"(?:(?:{destinations}) )?(?:rim|edge)"
-        rf"(?: of (?:the |a |my |its )?(?:{destinations}))?)\b(?=[,.;:!?]? *(?:(?:when|while|during)\b|[,.;:!?] *)?"
+        rf"|brushes against|brushing against|bangs against|bangs into|bumps into|bangs|taps)) (?:(?:the |its |a )?"
+        rf"(?:(?:{destinations}) )?(?P<rim>rim|edge)"
+        rf"(?: of (?:the |a |my |its )?(?:{destinations}))?|(?:the |a |my )(?:{destinations})|it))\b(?=[,.;:!?]? *(?:(?:when|while|during)\b|[,.;:!?] *)?"
         rf"(?!(?:ok|okay|fine|alright|all right|or not|or no|yes|no)\b)[a-z]| *[?.!]* *$|(?:,| -) (?:ok|okay|fine|alright)\b)")
 
 

@@ -162,7 +162,7 @@ _WANTS_FILLED = (r"(?:\b(?:i|we) (?:would like|like|want|wanna|need|wish|am tryi
 
 
 #: A spill unwanted on what the bowl stands on: "without a single drop on the table", "without any getting on the floor".
-_ON_THE_TABLE = re.compile(r"\b(?:without|none|nothing)\b[^.?!,]*?\b(?:on|onto|hitting|touching) (?:the |my |our )?"
+_ON_THE_TABLE = re.compile(r"\b(?:without|so that none|so that nothing)\b[^.?!,]*?\b(?:on|onto|hitting|touching) (?:the |my |our )?"
                            r"(?:table|tablecloth|counter|countertop|worktop|floor|bench|stove)\b")
 
 

@@ -164,6 +164,7 @@ READ = {
     'with 150 particles': ['very_much_liquid'],
     'not a heavy liquid but a light one': ['light_liquid'],
     "don't pour from the middle": ['pour_near_rim'],        # the nearest place off it, said back
+    'pour straight down': [],        # the way the stream falls from every pour, said back
 }
 
 #: questions to refuse in one line
@@ -175,7 +176,7 @@ REFUSED = [
     'fill the bowl',
     'end with the bowl upside down',
     'pour with the cup level',
-    'pour straight down',
+    'move it straight down',
     'a liquid that is neither runny nor sticky nor medium',
     'pour the liquid slowly into a slippery bowl',
     'lift the cup high',
