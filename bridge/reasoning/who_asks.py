@@ -15,9 +15,10 @@ holding a number, a negation or a verb of pouring or of an outcome.
 
 So is whom the question is said to, named first ("Honey, if I'm pouring
 coffee ..."): a term of address before a comma and a word that starts a
-question. A liquid's name so said ("honey", "sugar") is a term of address
-only where another liquid is named after it ("Honey, will it drip?" asks
-of honey)."""
+question (a parent, as a child says it, with no comma: "mummy if I tip my
+cup ..."). A liquid's name so said ("honey", "sugar") is a term of
+address only where another liquid is named after it ("Honey, will it
+drip?" asks of honey)."""
 from __future__ import annotations
 
 import re
@@ -37,8 +38,10 @@ _NOT_WHO = re.compile(r"\b(?:not|no|never|pour\w*|tilt\w*|tip\w*|decant\w*|fill\
 
 
 #: A term of address said first, then the question: "honey, if i am pouring ...", "love, will it ...".
-_ADDRESS = re.compile(r"^(?P<who>honey|hun|hon|sweetie|sweetheart|darling|dear|love|babe|sugar|buddy|pal|mate|guys)"
-                      r"(?:,| -) +(?=(?:if|i|can|could|will|would|what|how|should|when|is|are|do|does|did|why|which|where)\b)")
+_ADDRESS = re.compile(r"^(?:(?P<who>honey|hun|hon|sweetie|sweetheart|darling|dear|love|babe|sugar|buddy|pal|mate|guys)(?:,| -)"
+                      # (a child's parent needs no comma: "mummy if i tip my cup ...")
+                      r"|(?P<kin>mummy|mommy|mum|mom|mama|daddy|dad|papa|grandma|granny|nana|grandpa)(?:,| -)?)"
+                      r" +(?=(?:if|i|can|could|will|would|what|how|should|when|is|are|do|does|did|why|which|where)\b)")
 #: The terms of address that also name a liquid.
 _LIQUIDS = frozenset(("honey", "sugar"))
 
@@ -56,7 +59,7 @@ def asker_said(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) without a self-introduction at its start (the
     module's docstring), and what is said back of it."""
     if (to := _ADDRESS.match(text)) and (to.group("who") not in _LIQUIDS or says_a_liquid(text[to.end():])):
-        return text[to.end():], (f"{to.group('who')}: read as nothing: said to whom the question is asked",)
+        return text[to.end():], (f"{to.group('who') or to.group('kin')}: read as nothing: said to whom the question is asked",)
     if " here" not in text and not re.match(r"(?:\S+ +)?(?:i am|as) an? ", text):     # cued: no compiling otherwise
         return text, ()
     m = _introduction().match(text)
