@@ -13,7 +13,7 @@ import re
 _LIST = re.compile(r"\b(?:my |our |the )?(?:goal|aim|objective|target|need|requirement)s?(?: is| are)?: *(?P<items>[^.?!;]+)")
 #: Each item, said as the outcome it wants (the item's words as written -> the clause).
 _ITEMS = tuple((re.compile(p), r) for p, r in (
-    (r"^(?:transfer|move|get|pour|empty) (?:all|everything|every drop)(?: of)?(?: (?:the|my) [a-z]+)?(?: (?:in|into) (?:the )?[a-z]+)?$",
+    (r"^(?:transfer|move|get|pour|empty) (?:all|everything|every drop)(?: of)?(?: (?:the|my) [a-z]+)?(?: in| (?:in|into) (?:the )?[a-z]+)?$",
      "it all goes in"),
     (r"^(?:full|complete|total) transfer$", "it all goes in"),
     (r"^(?:nothing|none|no liquid|no water|not a drop|(?:zero|no|not one|not a single) drops?) (?:on|onto) (?:the |my )?[a-z]+$",
@@ -22,6 +22,8 @@ _ITEMS = tuple((re.compile(p), r) for p, r in (
      r"(?: (?:on|onto) (?:the |my )?[a-z]+)?$", "nothing spills"),
     (r"^(?:a )?(?:clean|neat|tidy) pour$", "nothing spills"),
     (r"^(?:the )?(?:bowl|destination) (?:stays|remains|staying|is) (?:put|still|in place|where it is)$", "the bowl stays put"),
+    (r"^(?:the )?(?:bowl|destination) (?:does not|do not|will not|never|not) (?:move|moving|budge|budging|shift|shifting|slide|sliding)$",
+     "the bowl stays put"),
     (r"^(?:the )?(?:bowl|destination) (?:stays|remains|staying|is) upright$", "the bowl stays upright"),
     (r"^(?:no|zero) (?:contact|bumps?|knocks?|collisions?)(?: between (?:the |my )?[a-z]+ & (?:the |my )?[a-z]+)?$",
      "the cup does not hit the bowl"),

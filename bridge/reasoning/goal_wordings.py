@@ -44,7 +44,8 @@ def _safe_unless_wanted(m: re.Match) -> str:
 #: The bowl's moving, as a note of what is not wanted names it ("no wobble", "no sliding"): its verb.
 _MOVING = {"wobbl": "wobble", "slid": "slide", "slip": "slip", "tip": "tip over", "mov": "move"}
 #: ... said before a way or a value asked, in a clause of its own ("no splashing, what height is best").
-_ASKED_AFTER = r"(?= *(?:[,;:.!?]| - ).*\b(?:how (?:do|should|can|would)|what (?:settings?|height|tilt|angle|speed|pour)\b))"
+_ASKED_AFTER = (r"(?= *(?:[,;:.!?]| - ).*\b(?:how (?:do|should|can|would|high|far|low|close|steep|much)|what (?:settings?|height"
+                r"|tilt|angle|speed|pour)\b|(?:high|low) or (?:high|low)\b|(?:that is|thats|that's) all (?:i|we) want\b))")
 #: Other ways of saying a goal, said as "so that ...": "keep the cup still" (not "keep the
 #: source upright": how it is held), "don't let it overflow", "make sure it does not spill"
 #: (the words they drop are fillers).
@@ -58,10 +59,12 @@ WANTING = tuple((re.compile(p), r) for p, r in (
      r"(still|steady|in place|put)\b", r"so that \1 stays \2"),
     (r"\b(?:do not|does not|never) lets? (it|them|the [a-z]+|any(?: of it)?|a drop|a single drop) ", r"so that \1 does not "),
     # a note of what is wanted before asking how ("no splashing, how do I pour"): so that nothing spills
-    (r"(?:^|(?<=[,;:.!?] )|(?<= - ))no (?:spill|spills|spilling|splash|splashes|splashing|mess|drips|dripping)" + _ASKED_AFTER,
+    (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:no|not) (?:spill|spills|spilling|splash|splashes|splashing|mess|drips|dripping)"
+     + _ASKED_AFTER,
      "so that nothing spills"),
     # ... or the bowl's moving ("no wobble, what settings would do that"): so that it does not move so
-    (r"(?:^|(?<=[,;:.!?] )|(?<= - ))no (wobbl|slid|slip|tip|mov)(?:e|es|ing|ping|ement|s)?(?: over)?" + _ASKED_AFTER,
+    (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:no|not) (?:the )?(?:bowl )?(wobbl|slid|slip|tip|mov)(?:e|es|ing|ping|ement|s)?(?: over)?"
+     r"(?: (?:the )?bowl)?" + _ASKED_AFTER,
      lambda m: f"so that the bowl does not {_MOVING[m.group(1)]}"),
     (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:the )?[a-z]+ (?:not|never) touching (?:the )?[a-z]+"
      r"(?= *(?:[,;:.!?]| - ).*\bhow (?:do|should|can|would)\b)", "so that the jug does not touch the bowl"),

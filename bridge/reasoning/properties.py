@@ -102,16 +102,19 @@ def _number(word: str) -> bool:
 
 #: What a bowl stands on, and the words that say it grips or does not.
 _SURFACES = {"table", "tables", "counter", "counters", "countertop", "worktop", "benchtop", "bench",
-             "tabletop", "bar", "bartop", "conveyor", "conveyors", "tray", "workbench", "hearth"}
+             "tabletop", "bar", "bartop", "conveyor", "conveyors", "tray", "workbench", "hearth", "deck", "pass",
+             "ledge", "boards"}
 #: What a bowl may stand on that is a liquid's name or no table: a surface only after "on"
 #: ("sitting on wet concrete", "on a wet floor").
-_GROUND = {"concrete", "cement", "floor", "ground", "marble", "granite", "stone", "tile", "tiles", "slab", "lino", "plate", "decking"}
+_GROUND = {"concrete", "cement", "floor", "ground", "marble", "granite", "stone", "tile", "tiles", "slab", "lino", "plate", "decking",
+           "surface", "surfaces"}
 #: The word that may end its name: "a wet bar top", "a slick conveyor belt".
 _ENDS = {"top", "tops", "belt", "belts"}
 _GRIP = {"slippery": "slippery", "slick": "slippery", "slippy": "slippery", "greasy": "slippery", "smooth": "slippery",
          "wet": "slippery", "icy": "slippery",
          "grippy": "grippy", "rough": "grippy"}
-_AS = {"is", "are", "was", "seems", "looks", "feels", "very", "really", "quite", "super", "so", "pretty"}
+_AS = {"is", "are", "was", "seems", "looks", "feels", "very", "really", "quite", "super", "so", "pretty", "kinda", "sorta",
+       "a", "bit", "little", "all"}
 #: What a bowl stands on, of its own: a grip said of it is the destination's ("heavy bowl. slippery
 #: bottom."), unless it is said of a container poured from ("a jug with a slippery bottom").
 _UNDERSIDES = {"bottom", "bottoms", "base", "underside", "feet"}
