@@ -224,7 +224,7 @@ PHRASES: tuple[tuple, ...] = (
     (UNCLEAR, ("re:(?:" + "|".join(rf"(?<=\d {u} )" for u in _LENGTHS) + r")(?:(?:away )?from|off) (?:the )?"
                r"(?:destination |bowl )?(?:rim|edge|lip|brim)\b",)),
     *NEARNESS,                # close to the bowl, next to it, too close (nearness.py)
-    *IN_THE_MIDDLE,           # aimed at the centre, poured straight down (off_centre.py)
+    *IN_THE_MIDDLE,           # aimed at the centre (off_centre.py)
     # the rim's height is the rim's ("just below the rim height"); at it, above or below it?
     (UNCLEAR, (r"re(level|height):\b(?:at|level with|even with) (?:the )?(?:bowl |destination )?(?:rim|edge|lip) (?:height|level)\b",)),
     ("rim", ("edge", "lip", "brim", "border", "rim height", "rim level")),
