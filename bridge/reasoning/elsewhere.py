@@ -8,12 +8,13 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from pantarhei.bridge.reasoning.everyday import alternation, sections
+from pantarhei.bridge.reasoning.everyday import alternation
+from pantarhei.bridge.reasoning.vessels import bowl_names
 
 
 @lru_cache(maxsize=None)
 def _pattern() -> re.Pattern:
-    bowls = alternation([*(p for s in sections() if s.words == "bowl" for p in s.phrases), "destination"])
+    bowls = alternation([*bowl_names(), "destination"])
     # (an outcome heard, then at most two words of where it went that is no outcome's: "going on the desk")
     return re.compile(
         rf"\boutcome(?: (?!(?:and|but|or|so|if|when|while|instead|rather|not|except)\b)[a-z]+){{0,2}},? (?:and )?"
@@ -28,5 +29,9 @@ def instead_of_the_bowl(text: str) -> tuple[str, tuple[str, ...]]:
     the words so read)."""
     if "outcome" not in text:
         return text, ()
-    said = tuple(m.group(0).removeprefix("outcome").strip(" ,") for m in _pattern().finditer(text))
-    return _pattern().sub("outcome instead of going into the bowl", text), said
+    said: list[str] = []
+
+    def instead(m: re.Match) -> str:
+        said.append(m.group(0).removeprefix("outcome").strip(" ,"))
+        return "outcome instead of going into the bowl"
+    return _pattern().sub(instead, text), tuple(said)

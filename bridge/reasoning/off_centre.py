@@ -8,8 +8,7 @@ of 1.5 inches toward the robot"): that way lies the distance from the
 axis, not the sideways offset. A side of the middle is offset sideways,
 its side unread ("a bit to the left of centre"); a length to a side of it
 is refused, as "5 cm to the left" is: its side is the number's sign.
-"Off-centre" with no length says no distance ("how far?", words.py); "far off-centre" is from the side.
-The middle is also said by where the stream is aimed ("aim for the centre")."""
+"Off-centre" with no length says no distance ("how far?", words.py); "far off-centre" is from the side."""
 from __future__ import annotations
 
 from pantarhei.bridge.reasoning.everyday import UNCLEAR
@@ -39,11 +38,4 @@ OFF_CENTRE: tuple[tuple, ...] = (
                + "|".join(LENGTHS) + rf") (?:(?:from|off) {_CENTRE} )?{_TOWARD})",), _SAID),
     ("axis", (rf"re(cent|toward):{_AFTER_LENGTH}(?:(?:off|from|away from) {_CENTRE} ?)?(?:{_TOWARD})",
               rf"re(cent):{_AFTER_LENGTH}off {_CENTRE}d?"), _SAID),
-)
-
-#: The middle said by where the stream is aimed.
-IN_THE_MIDDLE: tuple[tuple, ...] = (
-    # where the stream is aimed: "aim for the centre of the bowl" pours centred over it
-    ("centred", (r"re:\baim(?:s|ed|ing)?(?: it| the \w+)? (?:for|at|into|towards?) (?:the )?(?:very )?"
-                 r"(?:cent(?:re|er)|middle)\b",)),
 )

@@ -11,11 +11,16 @@ from pantarhei.bridge.reasoning.nouns import poured_from
 
 
 @lru_cache(maxsize=None)
+def bowl_names() -> tuple[str, ...]:
+    """The names of everyday.txt's bowls (those poured from, a jug, are the source's)."""
+    return tuple(p for s in sections() if s.words == "bowl" for p in s.phrases)
+
+
+@lru_cache(maxsize=None)
 def destinations() -> str:
     """What liquid leaves the destination by: its rim, or the destination by
     a name of everyday.txt's bowls (those poured from are the source)."""
-    bowls = [p for s in sections() if s.words == "bowl" for p in s.phrases]
-    return alternation([*bowls, "destination", "bowl", "target", "container", "rim", "edge",
+    return alternation([*bowl_names(), "destination", "bowl", "target", "container", "rim", "edge",
                         "top", "side", "brim", "lip"])
 
 

@@ -38,7 +38,7 @@ from pantarhei.bridge.reasoning.moved_to import MOVED_TO
 from pantarhei.bridge.reasoning.moves import MOVES
 from pantarhei.bridge.reasoning.nearness import A_BIT_SIDE as _A_BIT_SIDE, NEARNESS
 from pantarhei.bridge.reasoning.numerals import NumberWords
-from pantarhei.bridge.reasoning.off_centre import IN_THE_MIDDLE, LENGTHS as _LENGTHS, OFF_CENTRE
+from pantarhei.bridge.reasoning.off_centre import LENGTHS as _LENGTHS, OFF_CENTRE
 from pantarhei.bridge.reasoning.properties import SURFACE_SAID, Levels, Surfaces, Values
 from pantarhei.bridge.reasoning.ramps import Ramps
 from pantarhei.bridge.reasoning.speeds import SPEEDS
@@ -224,7 +224,9 @@ PHRASES: tuple[tuple, ...] = (
     (UNCLEAR, ("re:(?:" + "|".join(rf"(?<=\d {u} )" for u in _LENGTHS) + r")(?:(?:away )?from|off) (?:the )?"
                r"(?:destination |bowl )?(?:rim|edge|lip|brim)\b",)),
     *NEARNESS,                # close to the bowl, next to it, too close (nearness.py)
-    *IN_THE_MIDDLE,           # aimed at the centre (off_centre.py)
+    # where the stream is aimed: "aim for the centre of the bowl" pours centred over it
+    ("centred", (r"re:\baim(?:s|ed|ing)?(?: it| the \w+)? (?:for|at|into|towards?) (?:the )?(?:very )?"
+                 r"(?:cent(?:re|er)|middle)\b",)),
     # the rim's height is the rim's ("just below the rim height"); at it, above or below it?
     (UNCLEAR, (r"re(level|height):\b(?:at|level with|even with) (?:the )?(?:bowl |destination )?(?:rim|edge|lip) (?:height|level)\b",)),
     ("rim", ("edge", "lip", "brim", "border", "rim height", "rim level")),
