@@ -70,8 +70,9 @@ MOVES: tuple[tuple, ...] = (
               "decant", "free pour", "transfer", "serve", "dispense", "top up")),
     # filling the bowl from the source, said as what one is doing ("filling the mop bucket from a jug, how do
     # i stop ..."): pouring into it (a bowl wanted filled is seeking.py's goal)
-    ("pour", (r"re(filling):(?:^|(?<=[,;:.!?] ))filling (?:up )?(?:the|a|my|our)"
-              r"(?= (?:[a-z]+ )?(?:bowl|bucket|basin|dish|tub)s? (?:from|with)\b)",), "read as pouring into it"),
+    ("pour", (r"re(fill):(?:^|(?<=[,;:.!?] )|(?<=\bi )|(?<=\bwe )|(?<=\bthey )|(?<=\bto ))fill(?:s|ed|ing)? (?:up )?"
+              r"(?:the|a|my|our|your|his|her|their)(?= (?:[a-z]+ ){0,3}(?:bowl|bucket|basin|dish|tub)s? (?:up )?(?:from|with)\b)",),
+     "read as pouring into it"),
     # dumping it: pouring it tipped far, the least of which is steeply
     ("pour steeply tilted", (r"re:\bdump(?:s|ed|ing)?\b",), "read as pour steeply tilted: tipped far"),
     ("retreat ; pour", (rf"re:\bafter pour(?:s|ed|ing)?\b(?= (?:{_MANNER})\b)",

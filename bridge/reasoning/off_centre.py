@@ -30,6 +30,24 @@ OFF_CENTRE: tuple[tuple, ...] = (
     ("offset sideways", (r"re:\b(?:(?:just|slightly|a (?:little |tiny )?bit|a little|a tad|off) )?(?:to )?(?:the )?"
                          rf"(?:left|right) (?:of|from) {_CENTRE}",),
      "read as offset sideways: the vocabulary's offset names no side"),
+    # a length to a side, or the source tilted to one: refused, as words.py refuses a side (its sign unsaid)
+    (UNCLEAR, (rf"re(left|right):(?<![\w.-])-?\d+(?:\.\d+)? (?:{'|'.join(LENGTHS)}) (?:(?:off|over|out) )?"
+               r"(?:to|towards?) (?:the|your|my|its) (?:left|right)\b",
+               r"re(left|right):\b(?:tilt|tip|lean|roll|turn|twist|rotat|angl|cock|swivel|swing|bank)\w*"
+               r"(?: (?:it|them|(?:the|a|my|your) \w+))?(?: (?:over|slightly|a bit|a little|way))?"
+               r" (?:to(?:wards?)?|on) (?:the|its|your|my|one) (?:left|right)\b")),
+    ("offset sideways", (r"re(left|right):\boff[ -]?cent(?:er|re)d?(?: ,)? (?:to|towards?) (?:the|your|my|its) (?:left|right)\b",),
+     "read as offset sideways: the vocabulary's offset names no side"),
+    # a rim named by its side: near the rim ("pouring from the left edge of the bowl")
+    ("near the rim", (r"re(left|right):\b(?:the |its )?(?:left|right)(?:[- ]hand)? (?:edge|rim|lip)\b",),
+     "read as near the rim: the vocabulary's offset names no side"),
+    # the source held to a side of the bowl, no length said: from the side ("held off to the left of
+    # the bowl", "way over to the right", "too far left", "bring it in from the left")
+    ("side", (r"re(left|right):\b(?:(?:way|far|well|too far|so far|really far|very far|a bit|a little|slightly|just) )?"
+              r"(?:(?:off|over|out|across) )?(?:to|towards?|on|from) (?:the|your|my|its) (?:left|right)\b"
+              r"(?:[- ]hand(?: side)?\b)?(?: (?:of|from) (?:the |my |your )?(?:bowl|destination|it|them)\b)?",
+              r"re(left|right):\b(?:way|far|too far|so far|really far|very far) (?:left|right)\b"),
+     "read as from the side: the vocabulary's offset names no side"),
     # far off the middle, no length said: from the side, said back ("pitcher far off center")
     ("to the side", (r"re(far|way):\b(?:far|way|well) off[ -]?(?:cent(?:er|re)d?|the (?:center|centre|middle))\b",),
      "read as from the side: far from the middle"),

@@ -1,7 +1,6 @@
 """From a question in words to the scene it describes and what it asks.
 
-`read_question("will it spill if I pour milk from the side?")` hears the
-question in five steps:
+`read_question("will it spill if I pour milk from the side?")` hears the question in five steps:
 
 1. A clause that asks about the outcome ("will it spill?") or says a goal ("without
    spilling") is heard apart (outcomes.py): what it asks or wants; the rest is the scene.
@@ -48,6 +47,7 @@ from pantarhei.bridge.reasoning.choices import read_choice
 from pantarhei.bridge.reasoning.drips_after import refuse_drips_after
 from pantarhei.bridge.reasoning.mishaps import mishap
 from pantarhei.bridge.reasoning.aux_dropped import aux_restored
+from pantarhei.bridge.reasoning.claims import claim_asked
 from pantarhei.bridge.reasoning.carried import liquid_carried
 from pantarhei.bridge.reasoning.set_against import refuse_unsayable
 from pantarhei.bridge.reasoning.ages import ages_said
@@ -174,11 +174,12 @@ def read_question(question: str) -> Reading:
     lex = lexicon()                         # "It is for science.": chatter (chatter.py)
     text, chat = chatter(text, words_of, lex.known, frozenset(_IGNORED), NEGATION_STEMS, lex.placeable)
     text, asker = asker_said(text)          # "I'm a potter and ...": who asks (who_asks.py)
+    text, claimed = claim_asked(text)       # "my mum says ..., is that true": the claim asked (claims.py)
     text, restored = aux_restored(text)     # "it fall down?": does it (aux_dropped.py)
     refuse_drips_after(text)                # "drip down the bottle after pouring" (drips_after.py)
     text, told = mishap(text)               # "it slid off the tray. how do i stop that?" (mishaps.py)
     text, alike = read_choice(text)         # "honey or water?": two questions; "water vs oil": one (choices.py)
-    respelt += chat + asker + restored + told + alike
+    respelt += chat + asker + claimed + restored + told + alike
     refuse_unsayable(text, lex.known, lex.placeable)  # "60 degrees vs 90 with 200 ml" (set_against.py)
     try:
         return _read_text(question, text, respelt)

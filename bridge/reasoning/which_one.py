@@ -25,11 +25,12 @@ _WHICH = re.compile(r"\bwhich (?:"
                     r"|(?:one|of them|of the two|bowl|cup)(?: of them)? (?:will |would |is going to )?"
                     r"(?!(?:is|are|would be|will be) (?:better|best|safer|safest|worse|worst)\b)(?P<verb>[a-z]+?)(?P<ending>es|s)?\b(?P<how> (?:more|less|the most|the least|most|least|worse|better)\b)?"
                     # "which" alone: its verb inflected and said with how much ("which splashes less")
-                    r"|(?P<verb2>[a-z]+?)(?P<ending2>es|s)\b"
+                    r"|(?:(?:actually|really|just|usually) )?(?!(?:is|was|does|has)\b)(?P<verb2>[a-z]+?)(?P<ending2>es|s)\b"
                     # where to, said before how much: "which sloshes out of the basin more"
-                    r"(?:(?P<where> (?:out|over|off)(?: (?:of|over|onto) (?:the|a|my|its) [a-z]+| the [a-z]+)?"
-                    r"| the (?:bowl|dish|basin)(?: over)?)?"      # ("which tips the bowl more")
-                    r"(?P<how2> (?:more|less|the most|the least|most|least)\b)"
+                    r"(?P<where> (?:out|over|off)(?: (?:of|over|onto) (?:the|a|my|its) [a-z]+| the [a-z]+)?"
+                    r"| the (?:bowl|dish|basin)(?: over)?"      # ("which tips the bowl more")
+                    r"| in(?:to)? (?:the|a|my) (?:bowl|dish|basin)| in| everywhere)?"    # ("which stays in the bowl better")
+                    r"(?:(?P<how2> (?:more|less|the most|the least|most|least|better|worse|cleaner)\b)"
                     r"|(?= *[?.!]* *$))"      # ("honey vs water. which splashes")
                     # an outcome's verb not inflected, as learners say it: "which spill more"
                     r"|(?P<verb4>spill|splash|slosh|slide|tip|drip|overflow|wobble|leak|miss) (?:more|less|the most|the least)\b)")
@@ -75,7 +76,7 @@ def which_one(text: str) -> tuple[str, tuple[str, ...]]:
     while m is not None:        # and a second asked after it: "which splashes more and which spills more"
         said_verb, ending = next((m.group(f"verb{k}"), m.groupdict().get(f"ending{k}")) for k in ("", "2", "3", "4")
                                  if m.group(f"verb{k}"))
-        verb = said_verb + ("e" if ending == "es" and not re.search(r"(?:sh|ch|ss|x)$", said_verb) else "")
+        verb = said_verb + ("e" if ending == "es" and not re.search(r"(?:sh|ch|ss|x|o)$", said_verb) else "")
         verb += " anything" if verb == "leave" and re.match(r" in\b", text[m.end():]) else ""    # "leaves more in the jug"
         verb = "get" if verb == "put" else verb             # "which one puts more liquid in the bowl": gets it in
         verb = "make" if verb in ("give", "produce", "create", "ha") else verb    # "which produces, has more splash": makes it

@@ -164,6 +164,8 @@ READ = {
     'with 150 particles': ['very_much_liquid'],
     'not a heavy liquid but a light one': ['light_liquid'],
     "don't pour from the middle": ['pour_near_rim'],        # the nearest place off it, said back
+    'pour from the left': ['pour_to_side'],
+    'pour from the side but not too far left': ['pour_to_side'],     # a side named, no length: from the side, said back
     'pour straight down': [],        # the way the stream falls from every pour, said back
 }
 
@@ -193,9 +195,7 @@ REFUSED = [
     'pour carefully',
     'pour for 3 seconds',
     'pour from the front',
-    'pour from the left',
     'pour from the side and from above',
-    'pour from the side but not too far left',
     'pour gently',
     'pour half the liquid',
     'pour high or low',

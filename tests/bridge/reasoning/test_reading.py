@@ -304,7 +304,7 @@ def test_ask_says_back_everyday_words_and_shows_what_it_ignored():
 @pytest.mark.parametrize("question,words", [
     ("pour from the sde", "did you mean 'side' for 'sde'?"),           # too short to read as side
     ("pour a havy liquid from the sde", "did you mean 'heavy' for 'havy', 'side' for 'sde'?"),
-    ("pour from the left", '"from the left"'),        # an English word: never read as "lift"
+    ("tilt the jug to the left", '"tilt the jug to the left"'),        # an English word: never read as "lift"
 ])
 def test_a_misspelt_word_is_refused_with_the_word_it_is_close_to(question, words):
     assert words in refusal(question)

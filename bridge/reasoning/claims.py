@@ -1,0 +1,65 @@
+"""A claim someone made, asked to be checked ("my teacher says if you pour
+from high it goes everywhere, is that true", "is it true that a heavy bowl
+will not slide", "my sister says if you pour milk from really high the
+bowl flips. is that true??"): read as the claim asked ("if you pour from
+high, it goes everywhere?"), which aux_dropped.py and outcomes.py hear as
+"does it go everywhere?", and said back. The condition the claim is made
+under is set off from its outcome by a comma where none was typed ("if you
+pour from high, it goes everywhere"). A check followed by another question
+("is she right or is it the bowl?") is left as written."""
+from __future__ import annotations
+
+import re
+
+from pantarhei.bridge.reasoning.outcome_verbs import outcome_verb
+
+#: Who made the claim: "my teacher", "my little brother", "the keeper before me", "people".
+_WHO = r"(?:(?:my|our|a|the|his|her|their|your) (?:[a-z]+ ){0,3}?[a-z]+|[a-z]+)"
+_SAYS = (r"(?:always |once |keeps |keep |also )?(?:says?|said|saying|told me|tells me|tell me|thinks?|reckons?|claims?"
+         r"|swears?)(?: to me)?(?: that)?")
+#: The check asked after the claim ("is that true", "it is true?", "is he right", "who is right").
+_CHECK = (r"(?:is (?:that|it|this|she|he|they) (?:true|right|correct|a myth)|(?:it )?is (?:it )?true|true|right|correct"
+          r"|(?:who|which one|which of us) is right|is (?:he|she|they) (?:right|wrong))")
+#: What may follow the check: nothing asked besides ("or not", "or is she making it up").
+_AFTER = r"(?: or (?:not|no|what|(?:is|are) (?:she|he|they) (?:making it up|wrong|lying)|(?:does|do) it not matter))?[?.! ]*$"
+_SAID = re.compile(rf"^(?:so |hey |hi )?{_WHO} {_SAYS} (?P<claim>.+?)(?: ?[,.;:!?-]+)? (?:{_CHECK}){_AFTER}")
+_IS_IT_TRUE = re.compile(r"^(?:so |hey |hi )?is it (?:really )?(?:true|right|correct)(?: that| say)? (?P<claim>.+?)[?.! ]*$")
+#: What an outcome happens to, said first in the claim's own clause ("it", "the bowl", "di water").
+_SUBJECT = (r"(?:it|they|(?:all|some|none|most|half) of (?:it|the \w+)|(?:the|a|an|my|di|your|this) (?:(?!it\b)[a-z]+ )?[a-z]+"
+            r"|water|milk|liquid|juice|soup|oil)")
+_BEFORE_VERB = (r"(?:(?:will|would|wont|won't|doesnt|doesn't|does not|dont|don't|do not|will not|can't|cant|cannot|never|not"
+                r"|always|just|still|all|really) )*")
+
+#: Verbs of an outcome said with a word after them ("goes everywhere", "jump out"), which outcome_verb does not take alone.
+_PHRASAL = frozenset(f"{v}{s}" for v in ("go", "come", "stay", "get", "land", "end", "fall", "jump", "bounce", "fly")
+                     for s in ("", "s", "es"))
+
+
+def claim_asked(text: str) -> tuple[str, tuple[str, ...]]:
+    """`text` (normalised) with a claim asked to be checked read as the
+    claim asked, and what is said back; `text` as it is otherwise."""
+    m = _SAID.match(text) or _IS_IT_TRUE.match(text)
+    if m is None:
+        return text, ()
+    claim = _set_off(m.group("claim").strip(" ,.;:"))
+    if m.re is _IS_IT_TRUE and claim == m.group("claim").strip(" ,.;:"):
+        return text, ()         # "is it true that a heavier bowl wobbles less": heard as it is asked
+    asked = f"{claim}?"
+    return asked, (f"{text.strip(' ?.!')}: read as the claim asked: {asked}",)
+
+
+def _set_off(claim: str) -> str:
+    """`claim` with its condition ("if you pour from high") set off from its
+    outcome ("it goes everywhere") by a comma, where no comma is typed."""
+    cond = re.match(r"(?:if|when|whenever|as long as) [^,]+", claim)
+    if cond is None or "," in claim[:cond.end() + 1]:
+        return claim
+    found = [m for m in re.finditer(rf"(?<= )(?<!\bthe )(?<!\ba )(?<!\ban )(?<!\bmy )(?<!\bdi )(?<!\byour )(?<!\bthis )"
+                                    rf"(?={_SUBJECT} {_BEFORE_VERB}(?P<verb>[a-z]+))", cond.group(0))
+             if m.start() > 3 and _outcome(m.group("verb"))]
+    return f"{claim[:found[-1].start()].rstrip()}, {claim[found[-1].start():]}" if found else claim
+
+
+def _outcome(verb: str) -> bool:
+    """Whether `verb`, as said in a claim ("goes", "spill", "flips"), is of an outcome."""
+    return verb in _PHRASAL or outcome_verb(verb) or outcome_verb(re.sub(r"(?<=[^s])e?s$", "", verb))
