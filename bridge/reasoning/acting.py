@@ -47,8 +47,8 @@ def acts(subject: list[str], names: tuple[str, ...], m: re.Match | None = None) 
               and _STRIKES.search(m.group(0))) else _ACTORS)           # what holds the source knocks the bowl over with it
     actors = set() if "no_spill" in names else actors     # "will I spill?": whoever spills, it spills
     head = subject[:subject.index("of")] if "of" in subject else subject     # "the jug of water"
-    if names == ("source_clear",) and liquids().spans(head):   # "does the water hit the rim": no
-        return True                                             # source hitting it
+    if names == ("source_clear",) and liquids().spans(head) and not (head and in_the_source(head[-1])):
+        return True     # "does the water hit the rim": no source hitting it (but "the gravy boat": a source named)
     if names in (STILL, ("destination_upright",)):      # "will they slide": the bowls
         actors = actors - {"they"}      # ("does the jug tip over": the source, held, neither tips over nor slides)
     held = names in (STILL, ("destination_upright",)) and m is not None and not _STRIKES.search(m.group(0)) and any(

@@ -45,7 +45,8 @@ def _safe_unless_wanted(m: re.Match) -> str:
 _MOVING = {"wobbl": "wobble", "slid": "slide", "slip": "slip", "tip": "tip over", "mov": "move"}
 #: ... said before a way or a value asked, in a clause of its own ("no splashing, what height is best").
 _ASKED_AFTER = (r"(?= *(?:[,;:.!?]| - ).*\b(?:how (?:do|should|can|would|high|far|low|close|steep|much)|what (?:settings?|height"
-                r"|tilt|angle|speed|pour)\b|(?:high|low) or (?:high|low)\b|(?:that is|thats|that's) all (?:i|we) want\b))")
+                r"|tilt|angle|speed|pour)\b|(?:high|low) or (?:high|low)\b|(?:that is|thats|that's) all (?:i|we) want\b"
+                r"|\b(?:is (?:it|that|this) )?possible\b))")
 #: Other ways of saying a goal, said as "so that ...": "keep the cup still" (not "keep the
 #: source upright": how it is held), "don't let it overflow", "make sure it does not spill"
 #: (the words they drop are fillers).
@@ -60,7 +61,7 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\b(?:do not|does not|never) lets? (it|them|the [a-z]+|any(?: of it)?|a drop|a single drop) ", r"so that \1 does not "),
     # a note of what is wanted before asking how ("no splashing, how do I pour"): so that nothing spills
     (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:no|not) (?:spill|spills|spilling|splash|splashes|splashing|mess|drips|dripping)"
-     + _ASKED_AFTER,
+     r"(?: at all)?(?: ?,? not even (?:a|one) (?:single )?(?:drop|drip))?" + _ASKED_AFTER,
      "so that nothing spills"),
     # ... or the bowl's moving ("no wobble, what settings would do that"): so that it does not move so
     (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:no|not) (?:the )?(?:bowl )?(wobbl|slid|slip|tip|mov)(?:e|es|ing|ping|ement|s)?(?: over)?"
@@ -76,7 +77,7 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\bwithout any(?: of it)? getting (?=(?:on|onto) )", "without any of it landing "),
     # whether one can pour so and it still goes in ("can i pour the juice from way up high and it still goes in the
     # bowl"): so that it goes in
-    (r"(\bcan (?:i|we|you|one)\b[^.?!,;]*?) and (it|the [a-z]+) (?:still |all )?(?:goes|go|lands|land|ends up|end up)"
+    (r"(\bcan (?:i|we|you|one)\b[^.?!,;]*?) and (it|the [a-z]+) (?:still |all ){0,2}(?:goes|go|lands|land|ends up|end up)"
      r" (?=(?:in|into|inside)\b)", r"\1 so that \2 goes "),
     # the safest value or pour, asked: the best so that it is safe ("what's the safest way to pour", "what pour is safest")
     # (with a goal said beside it, safest for that goal: "I never want the bowl to move, what pour is safest")

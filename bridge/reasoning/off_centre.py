@@ -6,8 +6,12 @@ height; so is an offset said toward the rim, the edge or the robot the
 source comes from ("offset 3 cm from bowl center toward the rim", "offset
 of 1.5 inches toward the robot"): that way lies the distance from the
 axis, not the sideways offset. A side of the middle is offset sideways,
-its side unread ("a bit to the left of centre"); a length to a side of it
-is refused, as "5 cm to the left" is: its side is the number's sign.
+its side unread ("a bit to the left of centre", "off center to the left");
+the source held to a side of the bowl with no length ("off to the left of
+the bowl", "too far left", "in from the left") is from the side, and a
+rim named by its side ("the left edge", "over the right side of the bowl")
+near the rim, each said back; a length to a side is refused, as "5 cm to
+the left" is (its side is the number's sign), and so is a tilt to a side.
 "Off-centre" with no length says no distance ("how far?", words.py); "far off-centre" is from the side."""
 from __future__ import annotations
 
@@ -39,7 +43,10 @@ OFF_CENTRE: tuple[tuple, ...] = (
     ("offset sideways", (r"re(left|right):\boff[ -]?cent(?:er|re)d?(?: ,)? (?:to|towards?) (?:the|your|my|its) (?:left|right)\b",),
      "read as offset sideways: the vocabulary's offset names no side"),
     # a rim named by its side: near the rim ("pouring from the left edge of the bowl")
-    ("near the rim", (r"re(left|right):\b(?:the |its )?(?:left|right)(?:[- ]hand)? (?:edge|rim|lip)\b",),
+    ("near the rim", (r"re(left|right):\b(?:the |its )?(?:left|right)(?:[- ]hand)? (?:edge|rim|lip)\b",
+                      # over a side of the bowl, not beside it: "jug over the left side of the bowl"
+                      r"re(left|right):\bover (?:the |its )?(?:left|right)(?:[- ]hand)? (?:side|half|part)"
+                      r"(?: of (?:the |my |a )?(?:bowl|destination|it))?\b"),
      "read as near the rim: the vocabulary's offset names no side"),
     # the source held to a side of the bowl, no length said: from the side ("held off to the left of
     # the bowl", "way over to the right", "too far left", "bring it in from the left")

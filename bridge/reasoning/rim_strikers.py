@@ -123,11 +123,11 @@ def _on_rim() -> re.Pattern:
     """A source touching (or striking) the rim, then what else is said (or the question's end)."""
     sources, destinations = alternation(["container", "source", *_sources()]), alternation(_DESTINATIONS - {"container"})
     return re.compile(
-        rf"(?P<source>\b(?:(?:the|my|a|its|your) )?(?:{sources}))(?P<part> (?:spout|lip|rim|edge|mouth))? "
+        rf"(?P<source>\b(?:(?:the|my|a|its|your) )?(?:{sources}))(?P<part> (?:spout|lip|rim|edge|mouth|neck))? "
         rf"(?P<touch>(?:is touch|(?:(?:is|keeps|keep) )?(?:touches|touching|contacts|contacting|makes contact with|is in contact with"
         rf"|rests on|resting on|leans on|leaning on|sits on|sitting on|hits|bumps|knocks|clips|strikes|hitting|banging|bumping|knocking"
         rf"|brushes against|brushing against|bangs against|bangs into|bumps into|bangs|taps)) (?:(?:the |its |a )?"
-        rf"(?:(?:{destinations}) )?(?P<rim>rim|edge)"
+        rf"(?:(?:{destinations}) )?(?P<rim>rim|edge|lip)"
         rf"(?: of (?:the |a |my |its )?(?:{destinations}))?|(?:the |a |my )(?:{destinations})|it))\b(?=[,.;:!?]? *(?:(?:when|while|during)\b|[,.;:!?] *)?"
         rf"(?!(?:ok|okay|fine|alright|all right|or not|or no|yes|no)\b)[a-z]| *[?.!]* *$|(?:,| -) (?:ok|okay|fine|alright)\b)")
 
@@ -135,9 +135,13 @@ def _on_rim() -> re.Pattern:
 def stream_striking(text: str, said: dict[str, None]) -> str:
     """`text` without the liquid's striking the bowl's rim when what it did next is told ("the stream
     hit the edge of the bowl and jumped out": it jumped out): the liquid striking the bowl is no outcome
-    (the source's striking it is, and is read), what it does next is."""
-    if not re.search(r"\b(?:hit|hits|hitting|struck|strikes|striking)\b", text):
+    (the source's striking it is, and is read), what it does next is. The liquid said to strike the rim in a
+    condition ("does the bowl wobble when the stream hits the edge of it") says where it is poured: near the rim."""
+    if not re.search(r"\b(?:hit|hits|hitting|struck|strikes|striking|lands)\b", text):
         return text
+    if (when := _landing_on_rim().search(text)) is not None:       # "if the water hits the edge, does it flip"
+        said.setdefault(f"{when.group(0).strip()}: read as poured near the rim, where the stream lands")
+        return f"{text[:when.start()]}{when.group('when')} i pour near the rim{text[when.end():]}"
     m = _striking().search(text)
     if m is None:
         return text
@@ -151,3 +155,12 @@ def _striking() -> re.Pattern:
     liquids = alternation(["stream", "jet", "flow", "pour", "liquid", "drop", *names("liquid")])
     return re.compile(rf"\b(?:{liquids}) (?P<hit>(?:hit|hits|hitting|struck|strikes|striking) (?:the |its )?(?:bowl |destination )?"
                       rf"(?:rim|edge|side|lip)(?: of (?:the |a |my )?(?:bowl|destination))?(?: and then| then| and| ,)+ )(?=[a-z])")
+
+
+@lru_cache(maxsize=None)
+def _landing_on_rim() -> re.Pattern:
+    """The liquid striking the bowl's rim, said as the condition of what is asked ("if the water hits the edge")."""
+    liquids = alternation(["stream", "jet", "flow", "pour", "liquid", "water", *names("liquid")])
+    return re.compile(rf"\b(?P<when>if|when|whenever|once|as soon as|the moment) (?:the |its |my |a )?(?:{liquids})"
+                      rf" (?:hits|hit|strikes|lands on) (?:right )?(?:on )?(?:the |its )?(?:bowl |destination )?"
+                      rf"(?:rim|edge|lip|side(?: wall)?)(?: of (?:it|the bowl|the destination))?\b(?! and\b)")

@@ -38,7 +38,7 @@ SPEEDS: tuple[tuple, ...] = (
     # a speed said with "speed": "at high speed" is fast, "at a slow speed" slowly (a pour
     # said so is refused below: pouring has no speed)
     ("fast", (r"re(speed|velocity|pace):\b(?:at |with )?(?:a |full |top )?(?:high|great|full|top|fast|quick|rapid|max(?:imum)?)"
-              r" (?:speed|velocity|pace)\b", r"re(at full|at top):\bat (?:full|top) (?:tilt|speed)\b",
+              r" (?:speed|velocity|pace)\b", r"re(at full|at top):\bat (?:full|top) speed\b|\bat top tilt\b",
               r"re(at speed):\bat speed\b")),
     ("slowly", (r"re(speed|velocity|pace):\b(?:at |with )?(?:a )?(?:low|slow|reduced|gentle|leisurely|relaxed|easy|min(?:imum)?)"
                 r" (?:speed|velocity"

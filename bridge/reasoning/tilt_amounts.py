@@ -2,7 +2,7 @@
 is, as learners of English say it, part of words.py's PHRASES: "with much
 angle", "with a lot of angle", "a strong tilt", "make the tilting of the
 bottle very strong", "a high tilt" (no number after it: "jug high tilt 90" is high,
-tilted 90 degrees) are steeply tilted, as "tilt it hard" and "a big tilt" are
+tilted 90 degrees), "full tilt" are steeply tilted, as "tilt it hard" and "a big tilt" are
 (everyday.txt); "a little angle" or "a weak tilt" slightly tilted. An angle
 asked for ("how much angle") is a value asked, not said: left to be read
 as one. A little either side of horizontal ("slightly past horizontal", "a
@@ -37,7 +37,8 @@ TILT_AMOUNTS: tuple[tuple, ...] = (
                         r" (?:very |really |so |more |too )?strong(?:er)?\b",
                         r"re(tilt):\b(?:a )?high tilt\b(?! ?(?:of |at |to |-)?[0-9])",
                         # "tilt the jug way over" (as "tilted way over" is, everyday.txt)
-                        r"re(way over|far over):\b(?:tilt|tip)\w* (?:it|them|the \w+) (?:way|far) over\b")),
+                        r"re(way over|far over):\b(?:tilt|tip)\w* (?:it|them|the \w+) (?:way|far) over\b",
+                        r"re(full tilt):\b(?:at |on )?full tilt\b")),        # "teapot. 30cm. full tilt. spill?"
     ("slightly tilted", (rf"re(angle|tilt|tip|inclin):(?<!how )\b(?:with |at )?{_LITTLE} {_TILTING}\b",
                          r"re(little bit):\blittle bit (?:tilted|tipped)\b")),     # "pouring little bit tilted only"
     # how far something moved, said as learners of English say it: "bowl is move away little bit" (no amount of

@@ -25,7 +25,7 @@ _WHICH = re.compile(r"\bwhich (?:"
                     r"|(?:one|of them|of the two|bowl|cup)(?: of them)? (?:will |would |is going to )?"
                     r"(?!(?:is|are|would be|will be) (?:better|best|safer|safest|worse|worst)\b)(?P<verb>[a-z]+?)(?P<ending>es|s)?\b(?P<how> (?:more|less|the most|the least|most|least|worse|better)\b)?"
                     # "which" alone: its verb inflected and said with how much ("which splashes less")
-                    r"|(?:(?:actually|really|just|usually) )?(?!(?:is|was|does|has)\b)(?P<verb2>[a-z]+?)(?P<ending2>es|s)\b"
+                    r"|(?:(?:actually|really|just|usually) )?(?!(?:is|was|does)\b)(?P<verb2>[a-z]+?)(?P<ending2>es|s)\b"
                     # where to, said before how much: "which sloshes out of the basin more"
                     r"(?P<where> (?:out|over|off)(?: (?:of|over|onto) (?:the|a|my|its) [a-z]+| the [a-z]+)?"
                     r"| the (?:bowl|dish|basin)(?: over)?"      # ("which tips the bowl more")

@@ -262,7 +262,7 @@ PHRASES: tuple[tuple, ...] = (
     # lying on its side: tilted to about level, not poured from the side
     ("steeply tilted", (r"re:\b(?:(?:turn|tip|tilt|lay|lie|put|place|hold|rest|turned|tipped|tilted|laid"
                         r"|lying|held|placed|resting)\w*(?: it| the \w+| them)? )?on (?:its|their) side\b",)),
-    # to the left or right: the vocabulary's offset names no side (a side said is refused)
+    # to the left or right, left after off_centre.py's: the vocabulary's offset names no side (refused)
     # (but "from the right side" is from the side)
     (UNCLEAR, (r"re:\b(?:to|on|from|at|towards?) (?:(?:the|your|my|its) (?:left|right)|left)\b"
                r"(?!(?:[- ]hand)? side\b)|\b(?:left|right)wards?\b",)),
