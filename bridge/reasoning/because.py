@@ -36,6 +36,14 @@ def cause_asked(text: str) -> tuple[str, tuple[str, ...]]:
     m = _told().search(text, max(0, cause.start() - 200), cause.start())
     if m is None:
         return text, ()
+    # the outcome told after a pour's liquid, of what its own clause names ("i poured the syrup from the bottle
+    # and the bowl tipped over"): what the bowl did
+    while re.match(r"(?:from|into|in|out of|onto|of|to|with|on|at|over|and|then|but)\b", m.group("what")) and (
+            later := re.search(r"\b(?:and|then|but|so) (?=(?:it|the|my|our|your) )", m.group("what"))) is not None:
+        last = _told().search(text, m.start("what") + later.end(), cause.start())
+        if last is None:
+            break
+        m = last
     # a place it went instead of the bowl, said with no verb: "instead of into the dish"
     what = re.sub(r"\b(instead of|rather than) (?=in|into|inside)\b", r"\1 going ", m.group("what"))
     who = m.group("who") if re.match(r"(?:it|the|my|our|your)\b", m.group("who")) else f"the {m.group('who')}"

@@ -67,7 +67,9 @@ MOVES: tuple[tuple, ...] = (
               r"re:\bstrain(?:s|ed|ing)?(?= (?:(?:it|them|the \w+|\w+) )?(?:in|into|over)\b)",
               r"re:\bladl(?:e|es|ed|ing)(?= (?:(?:it|them|the \w+|\w+) )?(?:in|into|out)\b)",
               r"re:\bdump(?:s|ed|ing)?(?= out\b)",      # the liquid dumping out: coming out
-              "decant", "free pour", "transfer", "serve", "dispense", "top up")),
+              "decant", "free pour", "transfer", "serve", "dispense", "top up",
+              # stopping to pour, once brought in: pouring where it stops ("bring it in quick then stop and pour")
+              r"re(stop):\bstop(?:s|ped|ping)?(?: ,)? (?:and|then|to) pour\b")),
     # filling the bowl from the source, said as what one is doing ("filling the mop bucket from a jug, how do
     # i stop ..."): pouring into it (a bowl wanted filled is seeking.py's goal)
     ("pour", (r"re(fill):(?:^|(?<=[,;:.!?] )|(?<=\bi )|(?<=\bwe )|(?<=\bthey )|(?<=\bto ))fill(?:s|ed|ing)? (?:up )?"

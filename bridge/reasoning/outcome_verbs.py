@@ -192,7 +192,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      ("liquid_leaves_source",), True),
     # stuck inside, no bowl named: kept in the source ("will the last bit stay stuck inside?")
     (r"(?:(?:stay|stays|remain|remains|get|gets|be|is) )?stuck in(?:side)?(?: (?:the |a |my )?(?!bowl\b|destination\b)[a-z]+)?"
-     r"(?! (?:the |a |my )?(?:bowl|destination)\b)", ("liquid_leaves_source",), True),
+     r"(?! (?:the |a |my )?(?:bowl|destination)\b)"
+     r"|(?:stay|stays|remain|remains|get|gets) stuck\b(?! (?:in|to|on|at)\b)",      # "come out or just stay stuck"
+     ("liquid_leaves_source",), True),
     (r"(?:end|ends|ended|ending) up (?:more |less |mostly )?in(?:side)?", (*ALL_IN, "liquid_remains_in_destination"), False),
     # what stays in the bowl entered it: "remains" alone holds also when none enters
     (r"(?:stay|stays|remain|remains) (?:in )?there\b"
