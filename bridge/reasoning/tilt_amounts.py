@@ -60,7 +60,7 @@ FAR_TILTS: tuple[tuple, ...] = (
     # not tipped (very, too) far: slightly tilted ("I wasn't even tilting it much"), unless a value
     # follows that says how far ("not tipping it very far, only slightly past horizontal")
     ("slightly tilted", (r"re( far| much):\b(?:not|without|never) (?:even |really )?(?:be |being )?(?:going |gonna )?(?:to )?(?:tilt|tip|lean)\w*\b(?: (?:it|the \w+))?"
-                         r" (?:too |very |so |that )?(?:far|much)\b(?! (?:from|away|off|to)\b)"
+                         r" (?:too |very |so |that |as )?(?:far|much)\b(?! (?:from|away|off|to)\b)"
                          r"(?![^.?!;]*\b(?:only|just|but|rather|tilted|tilt|steeply|slightly|halfway|upside|upright"
                          r"|degrees?|horizontal)\b)",),
      "read as slightly tilted: tilted, not far"),
@@ -80,6 +80,9 @@ FAR_TILTS: tuple[tuple, ...] = (
     # "was it because i tilted it too much?"): tipped far, the least of which is steeply
     ("steeply tilted", (r"re(too far|too much):\b(?:tilted|tipped)(?: (?:it|them|the \w+))? (?:(?:way |much |far )?too far\b"
                         r"(?! (?:from|away|off|to)\b)|(?:way |far )?too much\b)",),
+     'read as steeply tilted: tipped far, as a pour told says it (say "upside down" for further)'),
+    # too tilted, as a note tells it ("jug too tilted bowl tips?"): tipped too far
+    ("steeply tilted", (r"re(too tilted|too tipped):\b(?:way |much |far )?too (?:tilted|tipped)\b",),
      'read as steeply tilted: tipped far, as a pour told says it (say "upside down" for further)'),
     # tipped too far, or too much: past what? (not far from the bowl)
     (UNCLEAR, (r"re:\b(?:tilt|tip|angl|inclin|lean)\w*(?: (?:it|them|the \w+))? (?:(?:too |so |that |very )?far\b"

@@ -232,7 +232,7 @@ PHRASES: tuple[tuple, ...] = (
     ("rim", ("edge", "lip", "brim", "border", "rim height", "rim level")),
     ("low", (r"re:\b(?:just|right|slightly|barely|a bit|a little) (?:above|over) (?:the )?"
              r"(?:destination |bowl )?rim\b",
-             r"re:(?<!tilted )(?<!tipped )(?<!tilt )(?<!tip )(?<!tilted just )(?<!tipped just )"   # the tilt's
+             r"re:(?<!tilted )(?<!tipped )(?<!tilt )(?<!tip )(?<!tilted just )(?<!tipped just )(?<!tilt it )(?<!tip it )"
              r"\b(?:slightly|barely|a bit|a little|a tad)(?= (?:above|over) (?:the )?(?:destination"
              r"|bowl|it)\b)")),
     # where the source is (a length before it says how far over: "5 cm over the rim" is above it)
