@@ -113,7 +113,11 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"(?: (?:than|from) where (?:it|they) (?:started|was|were|began|stood))?|(?:end|ends|ended) up somewhere else", STILL, True),
     # dancing where it stands, as children say a bowl wobbling: "does the bowl do a little dance"
     (r"(?:do|does|did|doing|done) (?:a |that |this |the )?(?:little |bit of a |small )?(?:wobble |wobbly |jiggle |wiggle |rocking )?dance\b"
-     r"|danc(?:e|es|ed|ing)\b(?: (?:a)?round| about)?", STILL, True),
+     r"|danc(?:e|es|ed|ing)\b(?: (?:a)?round| about)?"
+     # "does the bowl do that little wobble thing", "that wobbly spinny thing"; "go for a walk", "zoom away"
+     r"|(?:do|does|did|doing|done) (?:a |that |this |the )?(?:little |bit of a |small |weird )?"
+     r"(?:(?:wobble|wobbly|jiggle|wiggle|rocking|spinny|shaky|spinning) ){1,2}thing\b"
+     r"|(?:go|goes|going|went|gone) (?:for a walk|walkabout)\b|zoom(?:s|ed|ing)? (?:away|off|across|around|about)\b", STILL, True),
     # (not the source slipping from a hand: "will it slip out of my hand", a drop the vocabulary does not say)
     (r"(?:slid\w*|slip(?:s|ped|ping)?\b(?! (?:out of|outta|from) (?:my|his|her|their|your|our|the|its|a) (?:\w+ )?(?:hand|hands|grip|grasp|fingers|gripper|gloves?)\b)|shift\w*|budg\w*|wobbl\w*|shimm(?:y|ies|ied|ying)\b|jitter\w*|judder\w*|teeter\w*|trembl\w*|quiver\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
      r"|jostl\w*|walk(?:s|ed|ing)? (?:across|along|around|about)\b|rock(?:s|ed|ing)?|(?:shak(?:e|es|ing)|shook)(?! (?:it|them)\b)|translat\w*|drift\w*|creep\w*|scoot\w*"
