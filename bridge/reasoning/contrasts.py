@@ -65,7 +65,8 @@ CONTRASTS: tuple[tuple, ...] = (
     ("near the rim", (r"re(off the |off cent|off midd|off dest|off bowl):(?:(?<=[a-z,;:.!?] )(?<!\bway )(?<!\bfar )(?<!\bmuch )(?<!\bvery )(?<!\bhow )"
                       rf"(?<!\bmore )(?<!\bless )(?<!\bbit )(?<!\blittle )(?<!\btad )(?<!\bslightly ){_NOT_AFTER_LENGTH}|^(?=off \w+ (?:pour|,)))off (?:the )?"
                       r"(?:destination |bowl )?(?:centre|center|middle)\b(?! by\b)(?!(?: ,)? (?:to|towards?) (?:the|its) (?:left|right)\b)(?:(?: ,)? (?:near|close to|toward|towards|at|by)"
-                      r" (?:the |its )?(?:destination |bowl )?(?:edge|rim|lip)\b(?! of))?",),
+                      r" (?:the |its )?(?:destination |bowl )?(?:edge|rim|lip)\b"
+                      r"(?! of(?! (?:the |a |an |my |its )?(?:[a-z]+ ){0,3}?(?:bowl|destination|dish)\b)))?",),
      "read as near the rim: off the middle, how far not said, the nearest place off it (say \"from the side\" or \"offset sideways\" for others)"),
     # not poured from the middle: "I pour not from center" (its negation read, as "not centred")
     ("centred", (r"re(not from):(?<=\bnot )from (?:the )?(?:very )?(?:destination |bowl |cup )?(?:centre|center|middle)\b"

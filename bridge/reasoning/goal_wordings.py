@@ -46,7 +46,7 @@ _MOVING = {"wobbl": "wobble", "slid": "slide", "slip": "slip", "tip": "tip over"
 #: ... said before a way or a value asked, in a clause of its own ("no splashing, what height is best").
 _ASKED_AFTER = (r"(?= *(?:[,;:.!?]| - ).*\b(?:how (?:do|should|can|would|high|far|low|close|steep|much)|what (?:settings?|height"
                 r"|tilt|angle|speed|pour)\b|(?:high|low) or (?:high|low)\b|(?:that is|thats|that's) all (?:i|we) want\b"
-                r"|\b(?:is (?:it|that|this) )?possible\b))")
+                r"|\b(?:is (?:it|that|this) )?possible\b|what(?: is|s)? the (?:highest|lowest|best|steepest|fastest|most|least)\b))")
 #: Other ways of saying a goal, said as "so that ...": "keep the cup still" (not "keep the
 #: source upright": how it is held), "don't let it overflow", "make sure it does not spill"
 #: (the words they drop are fillers).
@@ -59,6 +59,8 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\bkeep(?:s|ing)? (the (?!source\b)[a-z]+) (?:(?:completely|totally|perfectly|absolutely|dead|really|nice and) )?"
      r"(still|steady|in place|put)\b", r"so that \1 stays \2"),
     (r"\b(?:do not|does not|never) lets? (it|them|the [a-z]+|any(?: of it)?|a drop|a single drop) ", r"so that \1 does not "),
+    # notes run together ("no spill no touching bowl, ..."): each its own
+    (r"\b(no (?:spill|spills|spilling|splash|splashes|splashing|mess)) (?=(?:no|not) [a-z])", r"\1 , "),
     # a note of what is wanted before asking how ("no splashing, how do I pour"): so that nothing spills
     (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:no|not) (?:spill|spills|spilling|splash|splashes|splashing|mess|drips|dripping)"
      r"(?: at all)?(?: ?,? not even (?:a|one) (?:single )?(?:drop|drip))?" + _ASKED_AFTER,
@@ -67,6 +69,9 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:no|not) (?:the )?(?:bowl )?(wobbl|slid|slip|tip|mov)(?:e|es|ing|ping|ement|s)?(?: over)?"
      r"(?: (?:the )?bowl)?" + _ASKED_AFTER,
      lambda m: f"so that the bowl does not {_MOVING[m.group(1)]}"),
+    (r"(?:^|(?<=[,;:.!?] )|(?<= - )|(?<=\bspill )|(?<=\bspills )|(?<=\bspilling ))no (?:touching|hitting|bumping|knocking)"
+     r"(?: the)? bowl" + _ASKED_AFTER,
+     "so that the jug does not touch the bowl"),
     (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:the )?[a-z]+ (?:not|never) touching (?:the )?[a-z]+"
      r"(?= *(?:[,;:.!?]| - ).*\bhow (?:do|should|can|would)\b)", "so that the jug does not touch the bowl"),
     # "is there any way to pour where the container never touches the bowl": so that it does not
@@ -74,7 +79,7 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     # a drop got on a place, or any of it getting there: landing there ("without getting a single drop on the
     # tablecloth", "without any of it getting on the floor")
     (r"\bwithout getting (?:a single|one single|even a|a|one) (?:drop|drip|speck|bit)s? (?=(?:on|onto) )", "without getting any "),
-    (r"\bwithout any(?: of it)? getting (?=(?:on|onto) )", "without any of it landing "),
+    (r"\bwithout (?:any(?: of it)?|it|them) getting (?=(?:on|onto) )", "without any of it landing "),
     # whether one can pour so and it still goes in ("can i pour the juice from way up high and it still goes in the
     # bowl"): so that it goes in
     (r"(\bcan (?:i|we|you|one)\b[^.?!,;]*?) and (it|the [a-z]+) (?:still |all ){0,2}(?:goes|go|lands|land|ends up|end up)"

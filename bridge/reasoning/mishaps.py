@@ -47,7 +47,7 @@ _WANTED = {("liquid_remains_in_destination", "no_spill"): "nothing splashes out"
 _ASKS = (r"why|how|what|whats|which|would|will|could|should|can|is|does|do|did|was|were|any|so|but why|and how|where"
          r"|am (?:i|we) doing (?:it|something|anything) wrong"
          r"|if|should|shall|tips|advice|help")
-_BREAK = re.compile(rf"(?:[.!?;]+|,|\.\.\.|\s-)\s+(?=(?:{_ASKS})\b)|\s(?=(?:why|what happened|what went wrong|what did (?:i|we) do wrong|why (?:did|does|would) (?:that|this|it) happen) *[?.!]* *$)"    # "... poured fast why"
+_BREAK = re.compile(rf"(?:[.!?;]+|,|\.\.\.|\s-)\s+(?=(?:{_ASKS})\b)|\s(?=(?:why|what happened|what went wrong|what did (?:i|we) do wrong|what (?:am i|are we) doing wrong|why (?:did|does|would) (?:that|this|it) happen) *[?.!]* *$)"    # "... poured fast why"
                     r"|\s(?=(?:is|will|would|does) (?:that|this) (?:gonna |going to )?happen\b)")   # "... when i poured is that gonna happen"
 #: Whether what was told happens again: asked as a cause is, of the pour told ("is that gonna happen every time?").
 _AGAIN = re.compile(r"^(?:so )?(?:is|will|would|does|do) (?:that|this|it) (?:gonna |going to |always |usually )?(?:happen|keep happening)"

@@ -43,7 +43,7 @@ OFF_CENTRE: tuple[tuple, ...] = (
     ("offset sideways", (r"re(left|right):\boff[ -]?cent(?:er|re)d?(?: ,)? (?:to|towards?) (?:the|your|my|its) (?:left|right)\b",),
      "read as offset sideways: the vocabulary's offset names no side"),
     # a rim named by its side: near the rim ("pouring from the left edge of the bowl")
-    ("near the rim", (r"re(left|right):\b(?:the |its )?(?:left|right)(?:[- ]hand)? (?:edge|rim|lip)\b",
+    ("near the rim", (r"re(left|right):\b(?:(?:off|over|out) )?(?:(?:to|at|on) )?(?:the |its )?(?:left|right)(?:[- ]hand)? (?:edge|rim|lip)\b",
                       # over a side of the bowl, not beside it: "jug over the left side of the bowl"
                       r"re(left|right):\bover (?:the |its )?(?:left|right)(?:[- ]hand)? (?:side|half|part)"
                       r"(?: of (?:the |my |a )?(?:bowl|destination|it))?\b"),

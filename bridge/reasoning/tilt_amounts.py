@@ -61,6 +61,7 @@ FAR_TILTS: tuple[tuple, ...] = (
     # follows that says how far ("not tipping it very far, only slightly past horizontal")
     ("slightly tilted", (r"re( far| much):\b(?:not|without|never) (?:even |really )?(?:be |being )?(?:going |gonna )?(?:to )?(?:tilt|tip|lean)\w*\b(?: (?:it|the \w+))?"
                          r" (?:too |very |so |that |as )?(?:far|much)\b(?! (?:from|away|off|to)\b)"
+                         r"(?: ,? (?:just|only) a (?:little|tiny bit|bit|tad)(?: bit)?\b)?"     # ("..., just a little")
                          r"(?![^.?!;]*\b(?:only|just|but|rather|tilted|tilt|steeply|slightly|halfway|upside|upright"
                          r"|degrees?|horizontal)\b)",),
      "read as slightly tilted: tilted, not far"),

@@ -47,6 +47,8 @@ _ONE_OF = re.compile(r"\b(?:does|do|will|would|can) one of them (?P<verb>[a-z]+)
 
 
 _COMPARE = re.compile(r"^(?:let's |lets |please )?compar(?:e|ing)\b *:? *")
+#: Two scenes compared, joined by "and" before which is asked ("comparing a 30° tilt and a 90° tilt ..., which one").
+_TWO_COMPARED = re.compile(r"(?:(?<=^compare )|(?<=^comparing )|(?<=^compare : ))(?P<a>[^,;:?]+?) and (?P<b>[^,;:?]+?)(?= ?,? which\b)")
 _NUMBER = r"-?\d+(?:\.\d+)?"
 
 
@@ -58,6 +60,11 @@ def which_one(text: str) -> tuple[str, tuple[str, ...]]:
         said = (f"{pair.group(0)}: read as {pair.group(1)} vs {pair.group(3)}",)
         text = f"{pair.group(1)} vs {pair.group(3)}{text[pair.end():]}"
     set_against = _SET_AGAINST.search(text)
+    if set_against is None and _COMPARE.search(text) and (two := _TWO_COMPARED.search(text)):
+        # "comparing a 30 tilt and a 90 tilt ..., which one ...": the two set against each other, as with "vs"
+        said += (f"{two.group(0).strip()}: read as {two.group('a')} vs {two.group('b')}",)
+        text = f"{text[:two.start()]}{two.group('a')} vs {two.group('b')}{text[two.end():]}"
+        set_against = _SET_AGAINST.search(text)
     if set_against and (frame := _COMPARE.search(text)):
         said += (f"{frame.group(0).strip(' :')}: read as nothing: two scenes set against each other, "
                  "the one said first answered",)

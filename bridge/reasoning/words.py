@@ -93,8 +93,8 @@ PHRASES: tuple[tuple, ...] = (
     # where the source is)
     (UNCLEAR, (r"re:\b(?:high|low|tall|short)(?: |-)?(?:sided|walled|rimmed|edged)\b",
                r"re:(?:(?<=\ba )|(?<=\bthe ))(?:very )?(?:low|high)(?= bowl\b)")),
-    # way above the bowl: high, or very high?
-    (UNCLEAR, (r"re:(?<!\ball the )\b(?:way|far|well) (?:up )?(?:above|over)(?= (?:the |a |it\b|hedge ))",)),
+    # way above the bowl (or with nothing after it: "held way above, does any bounce out"): high, or very high?
+    (UNCLEAR, (r"re:(?<!\ball the )\b(?:way|far|well) (?:up )?(?:above|over)(?= (?:the |a |it\b|hedge ))|\b(?:way|far|well) above(?= *(?:[,;:.?!]|$))",)),
     # said by the hand or the fingers alone, before where: "a hand above the bowl", "two
     # fingers above the rim"
     ("7 to 10 cm", (r"re:\b(?:a|one) (?:hand|palm)(?= (?:above|over|below|under|away|from|to the side"
