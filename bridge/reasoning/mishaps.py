@@ -47,7 +47,7 @@ _WANTED = {("liquid_remains_in_destination", "no_spill"): "nothing splashes out"
 _ASKS = (r"why|how|what|whats|which|would|will|could|should|can|is|does|do|did|was|were|any|so|but why|and how|where"
          r"|am (?:i|we) doing (?:it|something|anything) wrong"
          r"|if|should|shall|tips|advice|help")
-_BREAK = re.compile(rf"(?:[.!?;]+|,|\.\.\.|\s-)\s+(?=(?:{_ASKS})\b)|\s(?=(?:why|what happened|what went wrong|what did (?:i|we) do wrong|what (?:am i|are we) doing wrong|why (?:did|does|would) (?:that|this|it) happen) *[?.!]* *$)"    # "... poured fast why"
+_BREAK = re.compile(rf"(?:[.!?;]+|,|\.\.\.|\s-)\s+(?=(?:{_ASKS})\b)|\s(?=(?:why|what happened|what went wrong|what did (?:i|we) do wrong|what (?:am i|are we) doing wrong|why (?:did|does|would) (?:that|this|it) happen|why did (?:it|the bowl) do that) *[?.!]* *$)"    # "... poured fast why"
                     r"|\s(?=(?:is|will|would|does) (?:that|this) (?:gonna |going to )?happen\b)")   # "... when i poured is that gonna happen"
 #: Whether what was told happens again: asked as a cause is, of the pour told ("is that gonna happen every time?").
 _AGAIN = re.compile(r"^(?:so )?(?:is|will|would|does|do) (?:that|this|it) (?:gonna |going to |always |usually )?(?:happen|keep happening)"
@@ -238,7 +238,7 @@ def mishap(text: str) -> tuple[str, tuple[str, ...]]:
         text = f"{first.group('told')}. {first.group('cause')}?"
     for cut in reversed(list(_BREAK.finditer(text))):
         told, asked = text[:cut.start()].strip(), text[cut.end():].strip()
-        if re.match(rf"(?:{_ASKS})\b", told) or _WANTS.search(told):
+        if re.match(rf"(?:{_ASKS})\b", re.sub(r"^(?:ok |okay |well )?so (?=i|we|my|the)\b", "", told)) or _WANTS.search(told):
             return text, ()          # a question first, or a goal ("i want to get it all out without any left inside")
         read = _read(told, asked)
         if read is not None:

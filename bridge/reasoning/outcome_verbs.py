@@ -41,7 +41,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|foam\w*|froth\w*|bubbl\w*|boil\w*) over"
      r"(?: the (?:rim|edge|top|side)s?)?"
      r"|(?:(?:come|comes|came|coming|go|goes|went|going) )?(?:bounc|jump|leap|hop|climb|fly|flies|flew|flying)\w* (?:right |straight )?(?:back )?(?:up )?(?:and )?(?:over|out(?: of)?)|flood\w*"
-     r"|(?:go|goes|going|went|get|gets|come|comes|came) over(?= the (?:far |near |other |opposite |back |front )?(?:rim|edge|top|side|brim|lip)s?\b)", ("liquid_remains_in_destination", "no_spill"), True),
+     r"|(?:go|goes|going|went|get|gets|come|comes|came) (?:right |straight )?over(?= the (?:far |near |other |opposite |back |front )?"
+     r"(?:rim|edge|top|side|brim|lip)s?\b)", ("liquid_remains_in_destination", "no_spill"), True),
     # (sloshing around in the bowl is no spill: everyday.txt says it back)
     # along the source itself, said first for the plain verbs to leave it whole: "drip back down along the spout", "run down the jug"
     (r"(?:run|runs|running|ran|drip\w*|dribbl\w*|trickl\w*|creep\w*) (?:back )?(?:down |under )?(?:along )?(?:the |its )?"
@@ -127,6 +128,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:push|shov)(?:es|e|ed|ing)? (?:it|them|the (?:bowl|bowls|destination|dish|container)) (?:across|along|around|about|sideways|aside|away)\b"
      # sent flying, itself: "does the bowl go flying" (not "go flying out of the bowl": thrown out)
      r"|(?:go|goes|going|went|gone) flying\b(?! (?:out|off|over)\b)|(?:go|goes|going|went|gone) (?:sliding|skidding|skating|scooting)\b"
+     r"|(?:shot|shoot|shoots|shooting) (?:sideways|across|off)\b"
      r"|(?:(?:get|gets|got|getting) )?sent (?:across|flying|sliding|skidding)|displac\w*|(?:(?:get|gets|got|getting|be|being) )?(?:pushed|shoved)\b(?! (?:in|back|away|out|over)\b)|(?:go|goes|going|went|get|gets|getting) (?:wiggly|wobbly|shaky|jiggly|wonky|(?:slippy |slip |slippery )?slidey)"
      r"|mov(?:e|es|ed|ing)\b(?! (?:(?:it|them|the \w+) )?(?:in|away|closer|nearer|further|farther|to|out|back|up"
      r"|down|over|into|off|towards?)\b)|bounc\w* (?:around|about))(?: sideways| (?:off |over )?to (?:the|one) side| back and forth| to and fro)?\b",

@@ -164,7 +164,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
     # what is asked, or wanted, next to it: "will it spill or overflow?", "without spilling or
     # tipping the bowl over"
     # ("does it stay in there once it's poured or slosh back out": after the pour, when it is judged)
-    more = Cued(rf"\boutcome{_ONCE} ?{_JOINED}? ?(?:(?:will|does|do|would|even|just|only|mostly|mainly|largely|partly|never|not|all|eventually|finally|later|then) ){{0,2}}(?:it |the \w+ |some |any |much )?"
+    more = Cued(rf"\boutcome{_ONCE} ?{_JOINED}? ?(?:(?:will|does|do|would|even|just|only|mostly|mainly|largely|partly|never|not|all|eventually|finally|later|then|kinda|sorta) ){{0,2}}(?:kind of |sort of )?(?:it |the (?:whole |entire )?\w+ |some |any |much )?"
                 rf"(?:{verbs})\b{end}", ("outcome",))
     # an outcome said first, with no word that asks: "spills when poured from high?", "sloshing
     # over the rim if tilted steeply?", "pour high, spill or not", "spill or no?"; or ending a note
