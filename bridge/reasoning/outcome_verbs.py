@@ -213,7 +213,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      # gone past it: "it went straight past the bowl", "the stream landed past the rim"
      r"|(?:land|lands|landed|landing|go|goes|going|went|gone|fly|flies|flying|flew|shoot|shoots|shooting|shot)"
      r" (?:right |just |straight )?(?:past|beyond) (?:it|them|the (?:bowl|destination|rim|edge))\b", (*ALL_IN, "no_spill"), True),
-    (r"safe(?:ly)?|(?:be |is )?(?:fine|ok|okay|alright|all right)\b|(?:a )?(?:good|bad) idea|risky"
+    (r"safe(?:ly)?|(?:be |is )?(?:fine|ok|okay|alright|all right)\b|(?:a )?(?:good|bad) idea|risky|bad(?= *[?.!]* *$)"
      r"|(?:be )?(?:a )?(?:disaster|catastrophe|nightmare|fiasco)\b"
      r"|(?:go|goes|going|went) wrong"
      r"|dangerous|(?:a )?problem|(?:bad|good|wise|unwise|smart|sensible|better|safer|wiser)(?= to\b)",
