@@ -127,7 +127,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
     # the odds of an outcome: "what is the chance the bowl tips", "the risk of spilling"
     chance = r"(?P<chance>(?:chance|chances|probability|likelihood|odds|risk)(?: of| that)?)"
     asked = re.compile(
-        rf"(?<!that )(?<!which )(?!(?:(?<=\bi )|(?<=\bwe )|(?<=\bhe )|(?<=\bshe )|(?<=\bthey ))(?:do|did|does)\b)\b(?:(?:(?!can\b)|(?<!\bwatering )(?<!\bjerry )(?<!\btin )(?<!\bpaint )(?<!\bthe )(?<!\ba )(?<!\bmy ))(?P<aux>{_AUX})(?P<neg> not)?{subject}|(?P<quant>how much(?: of (?:it|the [a-z]\w*))?(?: [a-z]\w*)?"
+        rf"(?<!that )(?<!which )(?!(?:(?<=\bi )|(?<=\bwe )|(?<=\bhe )|(?<=\bshe )|(?<=\bthey ))did not (?:tip|tilt|turn)\b)\b(?:(?:(?!can\b)|(?<!\bwatering )(?<!\bjerry )(?<!\btin )(?<!\bpaint )(?<!\bthe )(?<!\ba )(?<!\bmy ))(?P<aux>{_AUX})(?P<neg> not)?{subject}|(?P<quant>how much(?: of (?:it|the [a-z]\w*))?(?: [a-z]\w*)?"
         rf"|{_SHARE}|anything|something|everything|nothing|any (?:liquid|water)|it all"
         rf"|(?:all|any|some|none|most|much|half|a lot) of (?:it|them|the [a-z]+)|(?:any|some|much)(?= (?:left|leftover)\b))"
         rf"|{chance}{subject.replace('<subject>', '<csubject>')})"

@@ -103,7 +103,7 @@ def _number(word: str) -> bool:
 #: What a bowl stands on, and the words that say it grips or does not.
 _SURFACES = {"table", "tables", "counter", "counters", "countertop", "worktop", "benchtop", "bench",
              "tabletop", "bar", "bartop", "conveyor", "conveyors", "tray", "workbench", "hearth", "deck", "pass",
-             "ledge", "boards"}
+             "ledge", "boards", "shelf", "windowsill", "sill"}
 #: What a bowl may stand on that is a liquid's name or no table: a surface only after "on"
 #: ("sitting on wet concrete", "on a wet floor").
 _GROUND = {"concrete", "cement", "floor", "ground", "marble", "granite", "stone", "tile", "tiles", "slab", "lino", "plate", "decking",

@@ -15,7 +15,7 @@ from pantarhei.bridge.reasoning.reading import read_question
 KINDS = {"hedge", "material", "bowl", "bowl poured from", "sticky liquid", "heavy liquid", "liquid", "context", "part",
          "unclear", "a bit", "little", "much", "full", "slightly tilted", "steeply tilted", "low", "high",
          "to the side", "very", "start slightly tilted", "into the middle", "right over", "into", "from", "upright",
-         "tilted", "slowly", "fast", "slippery destination", "pour", "poured"}
+         "tilted", "tilted halfway", "slowly", "fast", "slippery destination", "pour", "poured"}
 
 
 def _phrases(*kinds: str) -> list[tuple[str, str]]:
