@@ -59,9 +59,6 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     (r"\bkeep(?:s|ing)? (the (?!source\b)[a-z]+) (?:(?:completely|totally|perfectly|absolutely|dead|really|nice and) )?"
      r"(still|steady|in place|put)\b", r"so that \1 stays \2"),
     (r"\b(?:do not|does not|never) lets? (it|them|the [a-z]+|any(?: of it)?|a drop|a single drop) ", r"so that \1 does not "),
-    # nothing wanted on a surface: "i dont want anything on the counter, can i pour ...": so that nothing spills
-    (r"\b(?:i|we) (?:do not|dont) want (?:anything|any of it|any|a drop|a single drop|a mess) (?:on|onto|all over) (?:the |my |our )?"
-     r"(?:counter|table|floor|worktop|bench|stove|tablecloth|carpet|rug)\b,?", "so that nothing spills,"),
     # notes run together ("no spill no touching bowl, ..."): each its own
     (r"\b(no (?:spill|spills|spilling|splash|splashes|splashing|mess)) (?=(?:no|not) [a-z])", r"\1 , "),
     # a note of what is wanted before asking how ("no splashing, how do I pour"): so that nothing spills

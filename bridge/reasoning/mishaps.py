@@ -47,7 +47,7 @@ _WANTED = {("liquid_remains_in_destination", "no_spill"): "nothing splashes out"
 _ASKS = (r"why|how|what|whats|which|would|will|could|should|can|is|does|do|did|was|were|any|so|but why|and how|where"
          r"|am (?:i|we) doing (?:it|something|anything) wrong"
          r"|if|should|shall|tips|advice|help")
-_BREAK = re.compile(rf"(?:[.!?;]+|,|\.\.\.|\s-)\s+(?=(?:{_ASKS})\b)|\s(?=(?:why|what happened|what went wrong|what did (?:i|we) do wrong|what (?:am i|are we) doing wrong|why (?:did|does|would) (?:that|this|it) happen|why did (?:it|the bowl) do that) *[?.!]* *$)"    # "... poured fast why"
+_BREAK = re.compile(rf"(?:[.!?;]+|,|\.\.\.|\s-)\s+(?=(?:{_ASKS})\b)|\s(?=(?:why|how come|what happened|what went wrong|what did (?:i|we) do wrong|what (?:am i|are we) doing wrong|why (?:did|does|would) (?:that|this|it) happen|why did (?:it|the bowl) do that) *[?.!]* *$)"    # "... poured fast why"
                     r"|\s(?=(?:is|will|would|does) (?:that|this) (?:gonna |going to )?happen\b)")   # "... when i poured is that gonna happen"
 #: Whether what was told happens again: asked as a cause is, of the pour told ("is that gonna happen every time?").
 _AGAIN = re.compile(r"^(?:so )?(?:is|will|would|does|do) (?:that|this|it) (?:gonna |going to |always |usually )?(?:happen|keep happening)"
@@ -193,7 +193,7 @@ def _happened(m: re.Match, names: tuple[str, ...], present: bool = True) -> bool
         return False        # the liquid striking the bowl ("the stream hit the rim and sprayed"): no contact of the source
     if names == ("destination_upright",) and not re.match(r"(?:knock|push|shov)", m.group(0)) and (re.match(r" (?:the|a|an|my|his|her|their|it)\b(?! (?:bowl|dish|basin|whole thing)\b)(?!(?: \w+)? over\b)",
                                    m.string[m.end():]) or re.search(
-            r"\b(?:already )$|\b(?:the|my|a) (?!bowl\b|dish\b|destination\b)[a-z]+ (?:already |was |is |got )*$", before)):
+            r"\b(?:already )$|\b(?:the|my|a) (?!(?:bowl|dish|basin|tub|trough|destination)\b)[a-z]+ (?:already |was |is |got )*$", before)):
         return False        # tipping something, or something held tipped: the source ("she keeps tipping the jug",
         #                     "i started with the bottle already tipped"); not the bowl ("... and tipped the whole thing")
     # (not told as having happened: "need to empty it without knocking it over")
