@@ -28,7 +28,7 @@ _PHRASAL = frozenset(("go", "come", "stay", "get", "land", "end", "fall", "goes"
                       "falls"))
 _AUX_WORDS = r"(?:will|would|does|do|did|is|are|was|were|can|could|might|may|should|shall|gonna)"
 _AUX = re.compile(rf"\b{_AUX_WORDS}\b")
-_CLAUSE = re.compile(rf"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<subject>{_SUBJECT}) (?!{_AUX_WORDS}\b)(?P<verb>[a-z]+)\b(?P<rest>[^,.;:!?]*"
+_CLAUSE = re.compile(rf"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<subject>{_SUBJECT}) (?:not (?![a-z]+ing\b))?(?!{_AUX_WORDS}\b)(?P<verb>[a-z]+)\b(?P<rest>[^,.;:!?]*"
                      # (its condition after it: "it go in the bowl if I pour ..., not ...?"; no question of its own)
                      rf"(?: (?:if|when|while) (?:(?!\b(?:{_AUX_WORDS}|am|why|how|what)\b)[^.;:!?])*)?)"
                      r"(?:,? (?:yes|no|right|or not|or no))?\?")     # (a tag after it: "..., yes?")

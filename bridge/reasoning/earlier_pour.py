@@ -112,7 +112,8 @@ _BETTER = re.compile(r"\b(?:is|will|would) (?:it|that|this) (?:be )?(?:any )?bet
                      r"|\bwhat (?:did|have) (?:i|we) (?:do|done) wrong\b")
 #: A scene said to end what happened: "would a heavier bowl stop that", "would pouring centred
 #: have helped", "would a heavier bowl have stayed put" (with it, does it happen); mishaps.py's too.
-HELPS = re.compile(r"\b(?:will|would|does|do|could|can|might) (?P<scene>(?:a|an|the|my|some) [a-z ]+?|[a-z]+ing\b[a-z ]*?)"
+HELPS = re.compile(r"\b(?:will|would|does|do|could|can|might) (?P<scene>(?:a|an|the|my|some) [a-z ]+?|[a-z]+ing\b[a-z ]*?"
+                   r"|cent(?:er|re)d?)"      # "would center have fixed it": poured over the middle
                    r" (?:(?:have )?(?:fix|stop|prevent|solve)(?:ed)?(?: (?:it|that|this))?|(?:have )?help(?:ed)?"
                    r"|have (?:stayed put|stayed|kept (?:it|them) (?:in|still|upright|put)|worked|been better)"
                    r"|(?:stay put|stay|keep (?:it|them) in|work|be better)"
