@@ -24,7 +24,7 @@ _SUBJECT = (r"(?:it|they|(?:all |some |any |most |half )?(?:of )?(?:the |my |thi
             r"|metal |full |empty )?(?:bowl|water|liquid|milk|juice|oil|soup"
             r"|tea|coffee|stuff|jug|cup|bottle|pitcher)|(?:some|any|all|none) of it)")     # (not "any tips?")
 #: Verbs of an outcome said with a word after them, which outcome_verb does not take alone.
-_PHRASAL = frozenset(("go", "come", "stay", "get", "land", "end", "fall", "goes", "comes", "stays", "gets", "lands", "ends",
+PHRASAL = frozenset(("go", "come", "stay", "get", "land", "end", "fall", "goes", "comes", "stays", "gets", "lands", "ends",
                       "falls"))
 _AUX_WORDS = r"(?:will|would|does|do|did|is|are|was|were|can|could|might|may|should|shall|gonna)"
 _AUX = re.compile(rf"\b{_AUX_WORDS}\b")
@@ -105,7 +105,7 @@ def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
 
     def restore(m: re.Match) -> str:
         verb = m.group("verb")
-        if _AUX.search(m.group(0)) or not (outcome_verb(verb) or verb in _PHRASAL):
+        if _AUX.search(m.group(0)) or not (outcome_verb(verb) or verb in PHRASAL):
             return m.group(0)
         asked = re.sub(r" or (?:stay|stays|stay still|stay put)(?=\?$)", "", m.group(0))     # "move or stay?": one question
         said.append(f"{m.group(0).rstrip('?')}: read as does {asked.rstrip('?')}")
@@ -141,12 +141,12 @@ def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
     inverted = _WHY_INVERTED.match(text)
     if inverted:                                        # "why comes the water over the edge": why does it come
         verb = inverted.group("verb")
-        base = next((b for b in (verb[:-2], verb[:-1]) if outcome_verb(b) or b in _PHRASAL), None)
+        base = next((b for b in (verb[:-2], verb[:-1]) if outcome_verb(b) or b in PHRASAL), None)
         if base:
             said.append(f"{inverted.group(0)}: read as why does {inverted.group('subject')} {base}")
             text = f"why does {inverted.group('subject')} {base}{text[inverted.end():]}"
     why = _WHY.match(text)
-    if why and (outcome_verb(why.group("verb")) or why.group("verb") in _PHRASAL) and not _AUX.match(text, why.end("why") + 1):    # "why the liquid not go in"
+    if why and (outcome_verb(why.group("verb")) or why.group("verb") in PHRASAL) and not _AUX.match(text, why.end("why") + 1):    # "why the liquid not go in"
         said.append(f"{why.group(0)}: read as {why.group('why')} does {text[why.end('why') + 1:why.end()]}")
         text = f"{why.group('why')} does {text[why.end('why') + 1:]}"
     text = _FRAGMENT.sub(fragment, text) if "?" in text or "in or " in text else text

@@ -5,12 +5,15 @@ bowl flips. is that true??"): read as the claim asked ("if you pour from
 high, it goes everywhere?"), which aux_dropped.py and outcomes.py hear as
 "does it go everywhere?", and said back. The condition the claim is made
 under is set off from its outcome by a comma where none was typed ("if you
-pour from high, it goes everywhere"). A check followed by another question
-("is she right or is it the bowl?") is left as written."""
+pour from high, it goes everywhere"); "is it true that ..." is read so only
+where it has that condition to set off, and is otherwise heard as asked ("is
+it true that a heavier bowl wobbles less"). A check followed by another
+question ("is she right or is it the bowl?") is left as written."""
 from __future__ import annotations
 
 import re
 
+from pantarhei.bridge.reasoning.aux_dropped import PHRASAL
 from pantarhei.bridge.reasoning.outcome_verbs import outcome_verb
 
 #: Who made the claim: "my teacher", "my little brother", "the keeper before me", "people".
@@ -30,9 +33,9 @@ _SUBJECT = (r"(?:it|they|(?:all|some|none|most|half) of (?:it|the \w+)|(?:the|a|
 _BEFORE_VERB = (r"(?:(?:will|would|wont|won't|doesnt|doesn't|does not|dont|don't|do not|will not|can't|cant|cannot|never|not"
                 r"|always|just|still|all|really) )*")
 
-#: Verbs of an outcome said with a word after them ("goes everywhere", "jump out"), which outcome_verb does not take alone.
-_PHRASAL = frozenset(f"{v}{s}" for v in ("go", "come", "stay", "get", "land", "end", "fall", "jump", "bounce", "fly")
-                     for s in ("", "s", "es"))
+#: Verbs of an outcome said with a word after them (aux_dropped.py's, and "jump out", "bounce out", "fly off"),
+#: which outcome_verb does not take alone.
+_PHRASAL = PHRASAL | frozenset(("jump", "jumps", "bounce", "bounces", "fly", "flies"))
 
 
 def claim_asked(text: str) -> tuple[str, tuple[str, ...]]:

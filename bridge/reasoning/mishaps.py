@@ -29,11 +29,9 @@ from pantarhei.bridge.reasoning.earlier_pour import CAUSE, HELPS, REMEDY, WHEN, 
 from pantarhei.bridge.reasoning.everyday import UNCLEAR, alternation, names, sections
 from pantarhei.bridge.reasoning.outcome_verbs import OUTCOMES
 from pantarhei.bridge.reasoning.phases import STILL
+from pantarhei.bridge.reasoning.rim_strikers import source_names
 from pantarhei.bridge.reasoning.vessels import filled
 
-#: A source told first in a note, with what was done with it, then what went wrong ("jug tilted too far, milk
-#: went over the rim").
-_SOURCES = "jug|pitcher|bottle|cup|mug|pot|kettle|carton|ladle|teapot|bucket|glass|flask|jar|saucepan|pan|beaker"
 #: What each expectation (or group told together) failing is asked as, and wanted not to as.
 _ASKED = {("liquid_remains_in_destination", "no_spill"): "does it splash out", "no_spill": "does it spill", "liquid_remains_in_destination": "does it stay in the bowl",
           "liquid_enters_destination": "does it go in", "liquid_leaves_source": "does it come out",
@@ -245,7 +243,9 @@ def mishap(text: str) -> tuple[str, tuple[str, ...]]:
             return read
     if not re.search(r"[?]", text) and not re.match(rf"(?:{_ASKS})\b", text) and re.search(
             r"^(?:tried|poured|the|my|our|his|her|their|it|after)\b|\b(?:i|we|he|she|they)\b"
-            rf"|^(?:[a-z]+ )?(?:{_SOURCES})s? (?:[a-z]+ed|held)\b.*(?:,| and) (?:the |my |some |all |half )?(?:of (?:it|the \w+) )?"
+            # (or a source told first in a note, with what was done with it, then what went wrong: "jug tilted too
+            # far, milk went over the rim")
+            rf"|^(?:[a-z]+ )?(?:{alternation(source_names())}) (?:[a-z]+ed|held)\b.*(?:,| and) (?:the |my |some |all |half )?(?:of (?:it|the \w+) )?"
             r"[a-z]+ (?:went|ran|spilled|spilt|splashed|slid|fell|flipped|overflowed|dripped|missed)\b", text) and not re.search(
             r"\b(?:whether|wonder|know|tell|if|would|should|could|can|will|how|what|why|which|please)\b", text):
         # a mishap told with nothing asked after it ("I pulled the pitcher away too fast and a trail of

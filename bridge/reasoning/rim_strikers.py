@@ -31,7 +31,7 @@ def lip_of_source(text: str, said: dict[str, None]) -> str:
 
 
 @lru_cache(maxsize=None)
-def _sources() -> tuple[str, ...]:
+def source_names() -> tuple[str, ...]:
     """Every container of everyday.txt but the destination's words: those a source may be."""
     return tuple(w for w in names("bowl") if w not in _DESTINATIONS)
 
@@ -40,7 +40,7 @@ def _sources() -> tuple[str, ...]:
 def _lips() -> tuple[re.Pattern, ...]:
     """The lip of a source (every container of everyday.txt but the destination's words: what strikes
     the bowl is not it) striking the bowl: "the jug lip hit", "the lip of the flask touched"."""
-    sources = alternation(_sources())
+    sources = alternation(source_names())
     strikes = r"(?: \w+){0,2}? (?:touch|hit|bump|knock|bang|clip|strike|struck|collid|scrap|graz|clink|nudg|tap|make contact)"
     # (a note's, with no article: "pitcher lip hit the bowl")
     return (re.compile(rf"{_AT_A_PLACE}\b((?:(?:the|its|a|my|your) |(?:^|(?<=[.,;:!?] )))(?:{sources}) )(?P<part>lip|rim|edge)\b"
@@ -109,7 +109,7 @@ def source_on_rim(text: str, said: dict[str, None]) -> str:
 def _set_on_rim() -> re.Pattern:
     """Someone setting the source on the bowl (its rim, its edge, it) in a condition (what is set on it is the
     source, a bucket too: "if I lean the bucket on its lip")."""
-    sources = alternation([*_sources(), "bucket", "pail", "container"])
+    sources = alternation([*source_names(), "bucket", "pail", "container"])
     destinations = alternation(_DESTINATIONS - {"container"})
     return re.compile(
         rf"\b(?P<when>if|when|while|once) (?:i|we|you|he|she|they) (?:lean|leans|leaned|leant|leaning|rest|rests|rested|resting"
@@ -121,7 +121,7 @@ def _set_on_rim() -> re.Pattern:
 @lru_cache(maxsize=None)
 def _on_rim() -> re.Pattern:
     """A source touching (or striking) the rim, then what else is said (or the question's end)."""
-    sources, destinations = alternation(["container", "source", *_sources()]), alternation(_DESTINATIONS - {"container"})
+    sources, destinations = alternation(["container", "source", *source_names()]), alternation(_DESTINATIONS - {"container"})
     return re.compile(
         rf"(?P<source>\b(?:(?:the|my|a|its|your) )?(?:{sources}))(?P<part> (?:spout|lip|rim|edge|mouth|neck))? "
         rf"(?P<touch>(?:is touch|(?:(?:is|keeps|keep) )?(?:touches|touching|contacts|contacting|makes contact with|is in contact with"
