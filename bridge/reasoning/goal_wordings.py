@@ -69,8 +69,7 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:no|not) (?:the )?(?:bowl )?(wobbl|slid|slip|tip|mov)(?:e|es|ing|ping|ement|s)?(?: over)?"
      r"(?: (?:the )?bowl)?" + _ASKED_AFTER,
      lambda m: f"so that the bowl does not {_MOVING[m.group(1)]}"),
-    (r"(?:^|(?<=[,;:.!?] )|(?<= - )|(?<=\bspill )|(?<=\bspills )|(?<=\bspilling ))no (?:touching|hitting|bumping|knocking)"
-     r"(?: the)? bowl" + _ASKED_AFTER,
+    (r"(?:^|(?<=[,;:.!?] )|(?<= - ))no (?:touching|hitting|bumping|knocking)(?: the)? bowl" + _ASKED_AFTER,
      "so that the jug does not touch the bowl"),
     (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:the )?[a-z]+ (?:not|never) touching (?:the )?[a-z]+"
      r"(?= *(?:[,;:.!?]| - ).*\bhow (?:do|should|can|would)\b)", "so that the jug does not touch the bowl"),

@@ -31,8 +31,10 @@ _SAID = "read as the source's distance from the bowl's axis (the way to the rim)
 OFF_CENTRE: tuple[tuple, ...] = (
     (UNCLEAR, (rf"re(left|right):(?<![\w.-])-?\d+(?:\.\d+)? (?:{'|'.join(LENGTHS)}) (?:to )?(?:the )?(?:left|right)"
                rf" (?:of|from) {_CENTRE}",)),
+    # a side of the middle, or off it to a side: offset sideways ("a bit to the left of centre", "off center to the left")
     ("offset sideways", (r"re:\b(?:(?:just|slightly|a (?:little |tiny )?bit|a little|a tad|off) )?(?:to )?(?:the )?"
-                         rf"(?:left|right) (?:of|from) {_CENTRE}",),
+                         rf"(?:left|right) (?:of|from) {_CENTRE}",
+                         r"re(left|right):\boff[ -]?cent(?:er|re)d?(?: ,)? (?:to|towards?) (?:the|your|my|its) (?:left|right)\b"),
      "read as offset sideways: the vocabulary's offset names no side"),
     # a length to a side, or the source tilted to one: refused, as words.py refuses a side (its sign unsaid)
     (UNCLEAR, (rf"re(left|right):(?<![\w.-])-?\d+(?:\.\d+)? (?:{'|'.join(LENGTHS)}) (?:(?:off|over|out) )?"
@@ -40,8 +42,6 @@ OFF_CENTRE: tuple[tuple, ...] = (
                r"re(left|right):\b(?:tilt|tip|lean|roll|turn|twist|rotat|angl|cock|swivel|swing|bank)\w*"
                r"(?: (?:it|them|(?:the|a|my|your) \w+))?(?: (?:over|slightly|a bit|a little|way))?"
                r" (?:to(?:wards?)?|on) (?:the|its|your|my|one) (?:left|right)\b")),
-    ("offset sideways", (r"re(left|right):\boff[ -]?cent(?:er|re)d?(?: ,)? (?:to|towards?) (?:the|your|my|its) (?:left|right)\b",),
-     "read as offset sideways: the vocabulary's offset names no side"),
     # a rim named by its side: near the rim ("pouring from the left edge of the bowl")
     ("near the rim", (r"re(left|right):\b(?:(?:off|over|out) )?(?:(?:to|at|on) )?(?:the |its )?(?:left|right)(?:[- ]hand)? (?:edge|rim|lip)\b",
                       # over a side of the bowl, not beside it: "jug over the left side of the bowl"
