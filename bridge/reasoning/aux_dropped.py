@@ -2,7 +2,8 @@
 and people in a hurry type it ("it fall down?", "The bowl move or stay?",
 "water go on the table?"): a clause that begins with what the outcome
 happens to and goes on with a verb of an outcome, then a question mark,
-is read with "does" before it ("does it fall down?"), as outcomes.py hears
+is read with "does" before it ("does it fall down?"; "is" before one going on: "jug not touching
+bowl at all?"), as outcomes.py hears
 questions; so is an outcome's verb asked alone after a scene ("pour high,
 wobble?": does it wobble?, "full jug, tipped over?"), and a place said wet ("table wet?": does the
 table get wet?), and an outcome going on said first as a note's topic, nothing
@@ -28,7 +29,7 @@ PHRASAL = frozenset(("go", "come", "stay", "get", "land", "end", "fall", "goes",
                       "falls"))
 _AUX_WORDS = r"(?:will|would|does|do|did|is|are|was|were|can|could|might|may|should|shall|gonna)"
 _AUX = re.compile(rf"\b{_AUX_WORDS}\b")
-_CLAUSE = re.compile(rf"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<subject>{_SUBJECT}) (?:not (?![a-z]+ing\b))?(?!{_AUX_WORDS}\b)(?P<verb>[a-z]+)\b(?P<rest>[^,.;:!?]*"
+_CLAUSE = re.compile(rf"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<subject>{_SUBJECT}) (?:not )?(?!{_AUX_WORDS}\b)(?P<verb>[a-z]+)\b(?P<rest>[^,.;:!?]*"
                      # (its condition after it: "it go in the bowl if I pour ..., not ...?"; no question of its own)
                      rf"(?: (?:if|when|while) (?:(?!\b(?:{_AUX_WORDS}|am|why|how|what)\b)[^.;:!?])*)?)"
                      r"(?:,? (?:yes|no|right|or not|or no))?\?")     # (a tag after it: "..., yes?")
@@ -108,8 +109,9 @@ def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
         if _AUX.search(m.group(0)) or not (outcome_verb(verb) or verb in PHRASAL):
             return m.group(0)
         asked = re.sub(r" or (?:stay|stays|stay still|stay put)(?=\?$)", "", m.group(0))     # "move or stay?": one question
-        said.append(f"{m.group(0).rstrip('?')}: read as does {asked.rstrip('?')}")
-        return f"does {asked}"
+        aux = "is" if verb.endswith("ing") else "does"      # "jug not touching bowl at all?": is it not touching
+        said.append(f"{m.group(0).rstrip('?')}: read as {aux} {asked.rstrip('?')}")
+        return f"{aux} {asked}"
 
     def alone(m: re.Match) -> str:
         verb = m.group("verb")

@@ -7,8 +7,8 @@ and said back, so that its words neither refuse the question nor go
 unheard. So is a sentence after the question ("... splash less than water?
 Asking for a science lesson."), where its words may also be words the
 reader knows but never places in a scene ("I want to show them with a
-simple demo."), but for one that supposes ("if its to close") or tells an
-outcome ("It spilled everywhere yesterday."). The question itself, the
+simple demo."), but for one that supposes ("if its to close"), asks
+("does it go inside", its question mark left out) or tells an outcome ("It spilled everywhere yesterday."). The question itself, the
 last sentence ending in a question mark (the last sentence, with none), is
 never chatter; a sentence with a word the reader knows ("The bowl is
 plastic.") is read as any other, and one with a word it cannot spell
@@ -20,8 +20,10 @@ import re
 from pantarhei.bridge.reasoning.outcome_verbs import outcome_verb
 from pantarhei.bridge.reasoning.spelling import english
 
-#: A sentence after the question that says when or how it is asked ("cup hits bowl??? if its to close"): no chatter.
-_SUPPOSED = re.compile(r"\b(?:if|when|while|without|unless|because|once|before|after)\b")
+#: A sentence after the question that says when or how it is asked ("cup hits bowl??? if its to close"), or asks: no chatter.
+_SUPPOSED = re.compile(r"\b(?:if|when|while|without|unless|because|once|before|after)\b"
+                       # (or asks, its question mark left out: "does the jug hit the bowl? does the milk go inside")
+                       r"|^(?:does|do|did|will|would|can|could|is|are|was|were|should)\b")
 #: What is said back of a sentence read as chatter.
 SAID = "read as nothing: it says nothing of a pour"
 

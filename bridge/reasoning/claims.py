@@ -8,7 +8,11 @@ under is set off from its outcome by a comma where none was typed ("if you
 pour from high, it goes everywhere"); "is it true that ..." is read so only
 where it has that condition to set off, and is otherwise heard as asked ("is
 it true that a heavier bowl wobbles less"). A check followed by another
-question ("is she right or is it the bowl?") is left as written."""
+question ("is she right or is it the bowl?") is left as written. An outcome
+asked whether it is normal, or bad ("is it bad if the bowl tips when i pour
+on the side"), is asked whether it happens. A claim
+of an outcome checked with a tag ("it won't spill, right?", "jug not
+touching bowl right?") is asked, the tag said back."""
 from __future__ import annotations
 
 import re
@@ -26,6 +30,8 @@ _CHECK = (r"(?:is (?:that|it|this|she|he|they) (?:true|right|correct|a myth)|(?:
 #: What may follow the check: nothing asked besides ("or not", "or is she making it up").
 _AFTER = r"(?: or (?:not|no|what|(?:is|are) (?:she|he|they) (?:making it up|wrong|lying)|(?:does|do) it not matter))?[?.! ]*$"
 _SAID = re.compile(rf"^(?:so |hey |hi )?{_WHO} {_SAYS} (?P<claim>.+?)(?: ?[,.;:!?-]+)? (?:{_CHECK}){_AFTER}")
+#: An outcome asked whether it is usual, or bad: "is it bad if the bowl tips when i pour ...", "is it normal that it splashes".
+_IS_IT_USUAL = re.compile(r"^(?:so )?is it (?:really |just )?(?:normal|bad|usual|expected|weird|strange)(?: that| if| when) (?P<claim>.+?)[?.! ]*$")
 _IS_IT_TRUE = re.compile(r"^(?:so |hey |hi )?is it (?:really )?(?:true|right|correct)(?: that| say)? (?P<claim>.+?)[?.! ]*$")
 #: What an outcome happens to, said first in the claim's own clause ("it", "the bowl", "di water").
 _SUBJECT = (r"(?:it|they|(?:all|some|none|most|half) of (?:it|the \w+)|(?:the|a|an|my|di|your|this) (?:(?!it\b)[a-z]+ )?[a-z]+"
@@ -38,12 +44,33 @@ _BEFORE_VERB = (r"(?:(?:will|would|wont|won't|doesnt|doesn't|does not|dont|don't
 _PHRASAL = PHRASAL | frozenset(("jump", "jumps", "bounce", "bounces", "fly", "flies"))
 
 
+#: A tag asking whether what was said holds: "it won't spill, right?", "jug not touching bowl right?" (not a
+#: side: "from the right?", nor "or no?").
+_TAG = re.compile(r"(?<!\bthe)(?<!\bto)(?<!\bfrom)(?<!\bon)(?<!\bat)(?<!\bmy)(?<!\bits)(?<!\bher)(?<!\bhis)(?<!\byour)(?<!\bor)"
+                  r"(?:,| -)? (?P<tag>right|correct|yes|yeah|yea|no|eh)\?+ *$"
+                  # ("or not" after a condition, the question asked first: "does the bottle touch the bowl when i pour, or not?")
+                  r"|(?<=[a-z])(?:,| -)? (?P<whether>or (?:not|no))\?+ *$")
+
+
 def claim_asked(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with a claim asked to be checked read as the
-    claim asked, and what is said back; `text` as it is otherwise."""
+    claim asked, and what is said back; `text` as it is otherwise. A claim
+    of an outcome checked with a tag ("it won't spill, right?") is asked."""
+    usual = _IS_IT_USUAL.match(text)
+    if usual and any(_outcome(w) for w in re.findall(r"[a-z]+", usual.group("claim"))):
+        asked = f"{_set_off(usual.group('claim'))}?"          # "is it bad if the bowl tips ...": does it
+        return asked, (f"{text.strip(' ?.!')}: read as whether it happens: {asked}",)
     m = _SAID.match(text) or _IS_IT_TRUE.match(text)
     if m is None:
-        return text, ()
+        tag = _TAG.search(text)
+        # (an outcome said never to happen, tagged, is supposed_never.py's; "or not" is a tag only after a
+        # question: "teapot must touch bowl or not?" is left as it is)
+        if tag is None or not any(_outcome(w) for w in re.findall(r"[a-z]+", text[:tag.start()])) \
+                or re.search(r"\bnever\b", text[:tag.start()]) \
+                or tag.group("whether") and not re.match(r"(?:does|do|did|will|would|is|are|can|could)\b"
+                                                         r"|(?:the|my|a|your) [a-z]+ (?:is|are) [a-z]+\b", text):
+            return text, ()
+        return f"{text[:tag.start()]}?", (f"{tag.group('tag') or tag.group('whether')}?: read as asking whether it holds",)
     claim = _set_off(m.group("claim").strip(" ,.;:"))
     if m.re is _IS_IT_TRUE and claim == m.group("claim").strip(" ,.;:"):
         return text, ()         # "is it true that a heavier bowl wobbles less": heard as it is asked

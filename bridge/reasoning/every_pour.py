@@ -13,13 +13,18 @@ _EVERY_POUR = (
     (re.compile(r"\b(?:not|never|without|nobody|no one) (?:hold\w*|held|steady\w*|grip\w*)(?: on(?: to)?)?"
                 r" (?:the|my|a|our) (?:bowl|dish)\b"),
      "no one holds the bowl in any pour: it stands free"),
-    (re.compile(r"\b(?:not|never|without) (?:mov\w*|shak\w*|jiggl\w*|wav\w*)(?: (?:the|my|a) (?!bowl\b|dish\b)[a-z]+| it| them)"
-                r"(?: at all)? (?:while|when|as) (?:pouring|i pour|i am pouring|it pours|it is pouring)\b"),
+    (re.compile(r"\b(?:not|never|without) (?:going to |gonna )?(?:mov\w*|shak\w*|jiggl\w*|wav\w*)(?: (?:the|my|a) (?!bowl\b|dish\b)[a-z]+| it| them)"
+                r"(?: at all)?(?: (?:while|when|as) (?:pouring|i pour|i am pouring|it pours|it is pouring)\b"
+                # (or said before tipping it where it is: "not going to move the jug at all, just tip it in place")
+                r"|,? just (?=(?:tip|tilt) it in place\b))"),
      "the source is held still while it pours, in every pour (how it moves in and away is read)"),
     (re.compile(r"(?<!\bfrom )(?<!\bfrom an )(?<!\bfrom the )(?<!\bfrom a )\b(?:(?:near|nearly|almost)[ -])?empty(?= (?:bowl|dish|basin)s?\b)"
                 # (a cause asked is left to be refused: "was it because the bowl was empty?")
                 r"|(?<!\bbecause the )(?<!\bbecause my )\b(?P<keep>(?:bowl|dish|basin) )(?:is |was |being |still )?"
                 r"(?:completely |totally |basically |pretty much )?empty\b(?: and\b)?"),
+     "every pour's destination is empty before it"),
+    # (said after what else the bowl is: "the bowl is plastic and empty")
+    (re.compile(r"\b(?P<keep>(?:bowl|dish|basin) (?:is|was) (?:[a-z]+ ){0,2}?[a-z]+) and (?:completely |totally )?empty\b"),
      "every pour's destination is empty before it"),
 )
 

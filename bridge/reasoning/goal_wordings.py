@@ -22,11 +22,13 @@ _EMPTYING = (r"\b(?:goal|aim|objective|task|target)s?(?: is)?:? (?:to )?(?:empty
 
 def _out_and_in(m: re.Match) -> str:
     """"get every last bit of the melted chocolate out of the jug into the bowl": so that it all
-    comes out and goes in, the liquid named kept for the scene ("from the jug": so that it goes in,
-    the jug not said emptied)."""
+    comes out and goes in, the liquid and the source named kept for the scene ("from the jug": so that
+    it goes in, the jug not said emptied; "out of the small jug": the small jug, whose size is refused)."""
     liquid = re.search(r"\b(?:of|all) (?:the |my )?([a-z]+(?: [a-z]+)?)$", m.group(1))
-    out = "" if re.search(rf"{re.escape(m.group(1))} from\b", m.group(0)) else "it all comes out and "   # "from the bottle": not emptied
-    return f"{'pouring ' + liquid.group(1) + ' ' if liquid else ''}so that {out}it all goes "
+    out = "" if m.group("origin") else "it all comes out and "     # "from the bottle": not emptied
+    source = m.group("origin") or m.group("out_of")
+    return (f"{'pouring ' + liquid.group(1) + ' ' if liquid else ''}{'from the ' + source + ' ' if source else ''}"
+            f"so that {out}it all goes ")
 
 
 def emptied_in(m: re.Match) -> str:
@@ -39,6 +41,14 @@ def _safe_unless_wanted(m: re.Match) -> str:
     """" so that it is safe", or nothing where a goal is said beside the match."""
     beside = f"{m.string[:m.start()]} {m.string[m.end():]}"
     return "" if re.search(r"\b(?:want|wants|wanted|so|without|need|needs)\b", beside) else " so that it is safe"
+
+
+def _note_wanted(m: re.Match) -> str:
+    """"so that nothing spills" (group 1) or "so that the bowl does not tip over" (group 2) for a
+    note of what is not wanted, where a want is said before it; else the note as it was."""
+    if not re.search(r"\b(?:want|wants|wanted|need|needs|goal|aim|trying|try)\b", m.string[:m.start()]):
+        return m.group(0)
+    return "so that nothing spills" if m.group(1) else f"so that the bowl does not {_MOVING[m.group(2)]}"
 
 
 #: The bowl's moving, as a note of what is not wanted names it ("no wobble", "no sliding"): its verb.
@@ -69,10 +79,13 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:no|not) (?:the )?(?:bowl )?(wobbl|slid|slip|tip|mov)(?:e|es|ing|ping|ement|s)?(?: over)?"
      r"(?: (?:the )?bowl)?" + _ASKED_AFTER,
      lambda m: f"so that the bowl does not {_MOVING[m.group(1)]}"),
-    (r"(?:^|(?<=[,;:.!?] )|(?<= - ))no (?:touching|hitting|bumping|knocking)(?: the)? bowl" + _ASKED_AFTER,
+    # ... or after a want said before it ("want to fill the bowl with juice, no spill, no tipping")
+    (r"(?<=[a-z,;:] )(?:no|zero) (?:(spill|splash|mess|drip)|(wobbl|slid|slip|tip|mov))(?:e|es|ing|ping|ement|s)?(?: over)?"
+     r"(?: at all| (?:on|onto) (?:the |my )?(?:table|counter|floor|stove|bench))?(?= *(?:[,;:.!?]| - |$))", _note_wanted),
+    (r"(?:^|(?<=[,;:.!?] )|(?<= - ))no (?:touching|hitting|bumping|knocking|contact)(?:(?: the)? bowl)?" + _ASKED_AFTER,
      "so that the jug does not touch the bowl"),
-    (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:the )?[a-z]+ (?:not|never) touching (?:the )?[a-z]+"
-     r"(?= *(?:[,;:.!?]| - ).*\bhow (?:do|should|can|would)\b)", "so that the jug does not touch the bowl"),
+    (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:the )?[a-z]+ (?:not|never) touching (?:the )?[a-z]+(?: at all)?(?: the (?:whole|entire) time)?"
+     + _ASKED_AFTER, "so that the jug does not touch the bowl"),
     # "is there any way to pour where the container never touches the bowl": so that it does not
     (r"\b((?:any|a|some) way to pour(?: it)?) where (?=(?:it|the [a-z]+|nothing|none)\b)", r"\1 so that "),
     # a drop got on a place, or any of it getting there: landing there ("without getting a single drop on the
@@ -83,6 +96,12 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     # bowl"): so that it goes in
     (r"(\bcan (?:i|we|you|one)\b[^.?!,;]*?) and (it|the [a-z]+) (?:still |all ){0,2}(?:goes|go|lands|land|ends up|end up)"
      r" (?=(?:in|into|inside)\b)", r"\1 so that \2 goes "),
+    # ... or that nothing spills ("can i pour the thinner into the bowl and nothing drips down the outside"): so that it does not
+    (r"(\bcan (?:i|we|you|one)\b[^.?!,;]*?) and (nothing|none of it|not a drop) (?:ever )?(?=(?:drips|spills|splashes|goes|gets|lands"
+     r"|runs|comes)\b)", r"\1 so that \2 "),
+    # none left behind, said with "leave" ("and not leave any stuck in the cup"): so that nothing is left in it
+    (r"\b(?:and )?(?:not|never|without) leav(?:e|ing) (?:any|anything)(?: of it)?(?: stuck| behind)?(?= in (?:the|my|a) [a-z]+\b)",
+     "so that nothing is left"),
     # the safest value or pour, asked: the best so that it is safe ("what's the safest way to pour", "what pour is safest")
     # (with a goal said beside it, safest for that goal: "I never want the bowl to move, what pour is safest")
     (rf"\b(what|which)(?: is)? (?:the )?safest ({VALUE})\b", lambda m: f"{m.group(1)} is the best {m.group(2)}" + _safe_unless_wanted(m)),
@@ -202,7 +221,7 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     # "to get all the oil out of the bottle into the bowl": so that it all comes out and goes in
     (r"\b(?:(?:in order |so as )?to |(?<=how do i )|(?<=how can i )|(?<=how should i )|(?<=goal: )|(?<=goal ))get (it all|all of it"
      r"|everything|every drop|every last (?:drop|bit)(?: of (?:the |my )?[a-z]+(?: [a-z]+)?)?|all (?:of )?the [a-z]+(?: [a-z]+)?)"
-     r" (?:out(?: of (?:the |a |my )?[a-z]+(?: [a-z]+)?)?|from (?:the |a |my )?[a-z]+(?: [a-z]+)?)"
+     r" (?:out(?: of (?:the |a |my )?(?P<out_of>[a-z]+(?: [a-z]+)?))?|from (?:the |a |my )?(?P<origin>[a-z]+(?: [a-z]+)?))"
      r" (?:and )?(?=(?:in|into) (?!(?:one|a single) (?:go|shot|time|pour)\b)(?:the |a |my )?(?:[a-z]+ )?[a-z]+\b)", _out_and_in),
     # "what angle should I tilt to get everything out", "how do I get every drop out": so that it all comes out
     (r"\b(?:(?:in order |so as )?to |(?<=how do i )|(?<=how can i )|(?<=how should i ))get (it all|all of it|everything|every drop|every last drop|all (?:of )?the [a-z]+) out\b"

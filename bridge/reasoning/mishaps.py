@@ -77,6 +77,11 @@ _TOO = re.compile(r"^(?:so )?(?:is|was|am|were) (?:it|that|i|we|you|he|she|they|
                   r"|bringing (?:it|the \w+) in|pulling (?:it|the \w+) away) )?(?:too |because (?:it is|it was) (?:too )?)"
                   r"(?P<value>light|heavy|slippery|bouncy|high|low|sticky|runny|full|fast|quick|slow|far (?:off )?to (?:one|the) side"
                   r"|far away|close)(?: or (?:something|what))?[?.! ]*$")
+#: A speed other than the one told, asked to help: "would slower have helped?", "would going slower fix it".
+_SPEED_HELPS = re.compile(r"^(?:so )?(?:would|will|could|does|do|might) (?:(?P<how>going|moving|coming in|pulling (?:it )?away|bringing it in"
+                          r"|doing it|pouring|a) )?(?P<speed>slower|more slowly|faster|quicker)(?P<move> approach| retreat)? (?:have )?"
+                          r"(?:help(?:ed)?|fix(?:ed)?|stop(?:ped)?|prevent(?:ed)?|work(?:ed)?|save(?:d)?|been better|be better)"
+                          r"(?: (?:it|that|this))?[?.! ]*$")
 #: The move a speed asked as a cause is of, by the phase the mishap is told in: "when I moved it in ... was I going too fast?".
 _SPEED_OF = {" as the jug comes in": "move in", " as the jug moves away": "move away"}
 #: What splits the narrative's clauses, for the scene a cause is asked of.
@@ -87,7 +92,7 @@ _CLAUSES = re.compile(r",? (?:and then|but then|(?<!\bback )(?<!\bround )(?<!\bt
 #: A goal said, not a mishap told: "I want to ...", "I'm trying to ...".
 _WANTS = re.compile(r"\b(?:i|we) (?:want|need|would like|d like|am trying|are trying|m trying|re trying|wish) to\b|\bgoal\b")
 #: The source's moves told: (the phase they are said as, the words).
-_WHO_MOVED = r"(?:\b(?:when|as|while|once) |^)(?:i|we|you|he|she|they|it|the \w+) (?:was |were )?"
+_WHO_MOVED = r"(?:\b(?:when|as|while|once) |^)(?:(?:i|we|you|he|she|they|it|the \w+) (?:was |were )?)?"     # (no one, in a note)
 _MOVES_TOLD = (
     (" as the jug moves away", re.compile(rf"{_WHO_MOVED}(?:pull|mov|tak|took|drew|draw|lift|yank)\w*(?: it| (?:the|my|a) \w+)? (?:away|back|out|off)\b"
                                           r"|\bon (?:the|its|my) way (?:out|back|away)\b")),      # ("hit the bowl on the way out")
@@ -298,6 +303,12 @@ def _read(told: str, asked: str, present: bool = True) -> tuple[str, tuple[str, 
         rest = f"{asked.strip(' ?.!')} pouring{poured}{bodies} so that {wanted}?" if poured or bodies else \
             f"{asked.strip(' ?.!')} so that {wanted}?"
         return rest, (said, f"{asked.strip(' ?.!')}: read as asked so that {wanted}, as the pour told did not")
+    if m := _SPEED_HELPS.match(asked):      # "would slower have helped?": the move told, at the other speed
+        move = {" approach": "move in", " retreat": "move away", "coming in": "move in", "bringing it in": "move in"}.get(
+            m.group("move") or m.group("how") or "", "move away" if (m.group("how") or "").startswith("pulling") else _SPEED_OF.get(when))
+        if move is not None:        # (none told: a speed of pouring itself, which has none)
+            rest = f"if i {move} {'slowly' if m.group('speed') in ('slower', 'more slowly') else 'fast'}, {question}?"
+            return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did")
     for helps, how in ((HELPS, "with"), (_IF_HELPS, "if")):
         m = helps.match(re.sub(r"^so ", "", asked))
         if m is not None and re.fullmatch(r"(?: (?:it|that|this))?[?.! ]*", m.string[m.end():]):

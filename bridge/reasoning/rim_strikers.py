@@ -132,6 +132,36 @@ def _on_rim() -> re.Pattern:
         rf"(?!(?:ok|okay|fine|alright|all right|or not|or no|yes|no)\b)[a-z]| *[?.!]* *$|(?:,| -) (?:ok|okay|fine|alright)\b)")
 
 
+def touch_told(text: str, said: dict[str, None]) -> str:
+    """`text` with the source told to strike the bowl as the first clause of a question about
+    something else ("cup bumps the bowl when i move it in fast does that knock the bowl over",
+    "pitcher comes in too fast and hits the bowl, does the bowl flip"), asked as whether it does:
+    no proposition says a touch, and the answer says whether the theory expects it. A touch in a
+    condition ("if the jug bumps it") is source_on_rim's."""
+    if not re.search(r"\b(?:hits|bumps|knocks|touches|clips|bangs|nudges|scrapes)\b", text):
+        return text
+
+    def asked(m: re.Match) -> str:
+        said.setdefault(f"{m.group('source')} {m.group('move') or ''}{m.group('verb')}: asked whether it does (no proposition says a touch)")
+        move = f"{m.group('source')} {m.group('move')[:-len(' and ')]}, does it" if m.group("move") else f"does {m.group('source')}"
+        return f"{move} hit {m.group('struck')}{m.group('rest')}? "
+    return _touch_told().sub(asked, text)
+
+
+@lru_cache(maxsize=None)
+def _touch_told() -> re.Pattern:
+    """A source striking the bowl (its rim, it), told first, and what else is said before a question (a
+    bucket striking it is the source: "the bucket bumps into the basin")."""
+    sources, destinations = alternation(["container", "bucket", "pail", *source_names()]), alternation(_DESTINATIONS - {"container"})
+    return re.compile(
+        rf"^(?P<source>(?:(?:the|my|a|his|her|our|your) )?(?:[a-z]+ )?(?:{sources})(?: (?:spout|lip|neck|mouth))?) "
+        rf"(?P<move>(?:comes|moves|goes|swings|drops) (?:[a-z]+ ){{0,4}}?and )?"
+        rf"(?P<verb>(?:hits|bumps|knocks|touches|clips|bangs|nudges|scrapes)(?: into| against)?) "
+        rf"(?P<struck>(?:(?:the|my|a|its) )?(?:(?:{destinations})(?:'s)? ?)?(?:rim|edge|lip|side)?(?<! )(?: of (?:the |my )?(?:{destinations}))?)"
+        rf"(?P<rest>(?: (?!(?:does|do|will|would|can|could|is|did)\b)[a-z]+){{0,8}}?)(?:,? (?:and |so )?|[.;:!?]+ )"
+        rf"(?=(?:does|do|will|would|can|could|is|did)\b)")
+
+
 def stream_striking(text: str, said: dict[str, None]) -> str:
     """`text` without the liquid's striking the bowl's rim when what it did next is told ("the stream
     hit the edge of the bowl and jumped out": it jumped out): the liquid striking the bowl is no outcome

@@ -96,7 +96,7 @@ _NOT_CAUSING = re.compile(rf"\b((?:what|which)(?: the)?(?: \w+)? (?:{_VALUE}|pou
 _WANT = re.compile(r"(?:\b(?:i|we) (?:just |really |only )?|^(?:just |really |only )?|(?<=[.!?] ))(?:want|need|would like|wish)(?: for)? (it(?: all)?|all of it|everything|them|nothing"
                    r"|every drop|each drop|every bit|all (?:of )?the (?:[a-z]+ )?[a-z]+"
                    # (where it comes from said after it: "all of the juice from the carton to land in the bowl")
-                   r"|the (?:[a-z]+ )?(?!source\b)[a-z]+)(?: from (?:the|my|a) [a-z]+)?(?= (?:not |never )?to\b)")
+                   r"|the (?:[a-z]+ )?(?!source\b)[a-z]+)(?: from (?P<origin>(?:the|my|a) (?:[a-z]+ )?[a-z]+))?(?= (?:not |never )?to\b)")
 
 
 
@@ -131,13 +131,14 @@ def wanting(text: str) -> tuple[str, tuple[str, ...]]:
     text = _EMPTIES.sub(r"\1 so that it empties", text)
     said += tuple(m.group(0)[m.end(1) - m.start():m.start(2) - m.start()].strip() for m in _GETS.finditer(text))
     text = _GETS.sub(r"\1 so that \2 goes ", text)
-    said += tuple(f"{m.group(0)[:m.start(1) - m.start()]}{m.group(0)[m.end(1) - m.start():]}".strip()
-                  for m in _WANT.finditer(text))      # "i want", and where it comes from ("from the carton")
-    text = _WANT.sub(r"so that \1", text)
+    said += tuple(m.group(0)[:m.start(1) - m.start()].strip() for m in _WANT.finditer(text))     # "i want"
+    # (where it comes from kept for the scene: "all the juice from the heavy jug to land in it")
+    text = _WANT.sub(lambda m: f"pouring from {m.group('origin')}, so that {m.group(1)}" if m.group("origin")
+                     else f"so that {m.group(1)}", text)
     for pattern, wanted in _WANTING:
         said += tuple(m.group(0).strip() for m in pattern.finditer(text))
         text = pattern.sub(wanted, text)
-    brim = _to_the_brim().search(text) if " to the " in text else None
+    brim = _to_the_brim().search(text) if re.search(r" to the | all the way| completely| right up", text) else None
     if brim:
         raise UserError(f"\"{brim.group(0)}\": how full the bowl gets is no outcome the vocabulary says: say "
                         "\"fill the bowl\" (it all goes in and stays there) or \"without spilling\"")
@@ -168,9 +169,10 @@ _ON_THE_TABLE = re.compile(r"\b(?:without|so that none|so that nothing)\b[^.?!,]
 
 @lru_cache(maxsize=None)
 def _to_the_brim() -> re.Pattern:
-    """A bowl filled to a level: "fill the bowl to the brim", "I want to fill a mug right to the top" (a
+    """A bowl filled to a level: "fill the bowl to the brim", "... all the way", "I want to fill a mug right to the top" (a
     source so filled, not wanted, is full: fullness.py)."""
-    level = r"(?: up)? (?:right |all the way |up )?to the (?:top|brim|rim)\b"
+    level = (r"(?: up)? (?:(?:right |all the way |up )?to the (?:top|brim|rim)\b"
+             r"|(?:all the way|completely|right up)(?! (?:in|into|to|down|over)\b))")     # ("fill the bowl all the way")
     some = r"(?:the|a|an|my|this|that|our|your) (?:[a-z]+ )?"
     return re.compile(rf"\bfill(?:s|ed|ing)? (?:up )?{some}(?:bowl|bowls|basin|dish|destination){level}"
                       rf"|{_WANTS_FILLED}fill (?:up )?{some}(?:{destinations()}){level}")
@@ -209,8 +211,8 @@ _CAN_EMPTY = (r"\b(?:can|could) (?:i|we|you) (?:still )?(?:empty|drain) (it|(?:t
 #: Wanting, compiled when cued: "I need none of it on the table" (so that none goes on it),
 #: "how do I get all the soup into the bowl" (so that it goes in).
 _WANTING_CUED = (
-    # "I don't want the cup to touch the bowl": so that it does not
-    (Cued(r"\b(?:i|we) (?:do not|never) (?:want|wish)(?: for)? (it|them|the (?!source\b)[a-z]+|any(?: of it| of the (?:[a-z]+ )?[a-z]+)?(?: in the [a-z]+)?)"
+    # "I don't want the cup to touch the bowl" ("don't want ...", as notes say it): so that it does not
+    (Cued(r"(?:\b(?:i|we) |^)(?:do not|never) (?:want|wish)(?: for)? (it|them|the (?!source\b)[a-z]+|any(?: of it| of the (?:[a-z]+ )?[a-z]+)?(?: in the [a-z]+)?)"
           r" (?:to |(?=[a-z]+ing\b))",
           ("not want", "never want", "not wish", "never wish")), r"so that \1 does not "),
     # "I want every drop in the bowl": so that it goes in
@@ -256,8 +258,8 @@ _WANTING_CUED = (
     (Cued(r"\b(?:i|we) (?:want|need|would like) (none|nothing|no liquid|no water)(?: of it)?(?: ending up| landing| getting"
           r"| going)? (?=(?:on|onto|all over) )",
           ("want", "need", "like")), r"so that \1 goes "),
-    # "I don't want any of it on the counter": so that none goes on it
-    (Cued(r"\b(?:i|we) (?:do not|never) (?:want|need) any(?: of it| liquid| water)?(?: ending up| landing| getting| going)?"
+    # "I don't want any of it (anything) on the counter": so that none goes on it
+    (Cued(r"(?:\b(?:i|we) |^)(?:do not|never) (?:want|need) any(?:thing| of it| liquid| water)?(?: ending up| landing| getting| going)?"
           r" (?=(?:on|onto|all over) )", ("want", "need")), "so that none goes "),
     (Cued(r"\bhow (?:do|can|could|should|would) (?:i|we|you) get (it all|all of it|everything|all the [a-z]+|it|the [a-z]+)"
           r" (?=(?:in|into|inside)\b)", (" get ",)), r"how so that \1 goes "),
@@ -299,10 +301,10 @@ def _value_asked(m: re.Match) -> tuple[int, int]:
 
 #: Whether a scene said reaches a goal said: "is pouring from 20 cm ok?", "is that a problem?",
 #: "is a 100 degree tilt enough?", "does a 90 degree tilt do that?", "is that possible?", "is that
-#: possible with a light bowl?", "is there any height where it never splashes?".
-_REACHES = Cued(r"\b(?:is|would|will)(?: (?:that|this|it|[a-z]+ing\b[a-z0-9 ]{0,30}?|(?:a|an|the) [a-z0-9 ]{1,30}?|\d[a-z0-9. ]{0,30}?))?"
+#: possible with a light bowl?", "is that all possible at 40 cm?", "is there any height where it never splashes?".
+_REACHES = Cued(r"\b(?:is|would|will)(?: (?:(?:that|this|it)(?: all)?|[a-z]+ing\b[a-z0-9 ]{0,30}?|(?:a|an|the) [a-z0-9 ]{1,30}?|\d[a-z0-9. ]{0,30}?))?"
                 r" (?:be )?(?:ok|okay|fine|alright|all right|a problem|an issue|enough|possible|doable|feasible"
-                r"|achievable)(?= *[?.!]* *$| (?:with|if|when|using|by) )|\b(?:does|would|will|can|could)(?: (?:a|an|the|that|this) [a-z0-9 ]{1,30}?)?"
+                r"|achievable)(?= *[?.!]* *$| (?:with|if|when|using|by|at|from) )|\b(?:does|would|will|can|could)(?: (?:a|an|the|that|this) [a-z0-9 ]{1,30}?)?"
                 r" (?:do (?:that|it|this|the trick)|work|achieve (?:that|it|this))(?= *[?.!]* *$)"
                 r"|(?<=[,:;] )(?:doable|possible|feasible|achievable|ok|okay)(?= *[?.!]* *$| (?:at|with|from|if|when|using|by) )"   # "... - doable?"
                 # the outcome not wanted, asked of a scene: "I don't want the jug to touch the bowl - will it if I hold it low?"
@@ -331,9 +333,11 @@ _CAN_IT = Cued(r"\b(?:can|could|may) (?:it|(?:the|a|an|my|our|your|this|that) (?
                ("can ", "could ", "may "))
 
 
-#: A goal said with "so (that)" after "can I pour ...": "so it never drips", "so that nothing spills", "and it still goes in".
+#: A goal said with "so (that)" after "can I pour ...": "so it never drips", "so that nothing spills", "and it still goes in",
+#: "and nothing drips".
 _SO_THAT = re.compile(r"\bso(?: that)? (?:it|they|nothing|none|no [a-z]+|the [a-z]+) (?:still )?(?:never|does not|do not|will not|spills|goes)\b"
-                      r"|\band (?:it|the [a-z]+) (?:still |all )?(?:goes|go|lands|land|ends up|end up) (?:in|into|inside)\b")
+                      r"|\band (?:it|the [a-z]+) (?:still |all )?(?:goes|go|lands|land|ends up|end up) (?:in|into|inside)\b"
+                      r"|\band (?:nothing|none of it|not a drop) (?:ever )?(?:drips|spills|splashes)\b")
 
 
 def if_it_can(text: str, goals: tuple[str, ...], manners: bool) -> tuple[tuple[str, ...], tuple[str, ...]]:
@@ -345,8 +349,14 @@ def if_it_can(text: str, goals: tuple[str, ...], manners: bool) -> tuple[tuple[s
     down at the edge without hitting the bowl?") asks whether the outcome
     happens there; said of no manner ("can I pour without spilling?") it
     wants the outcome, which a plan finds. A goal said with "so" after it
-    ("can I pour the cream so it never drips?") is asked too, and wanted."""
+    ("can I pour the cream so it never drips?") is asked too, and wanted, as is one said
+    in a clause before "can I" and a manner ("I don't want any on the counter, can I pour from 20 cm"; "without
+    the jug touching the bowl, can I come in low?" asks it alone)."""
     so_that = _CAN.search(text) and _SO_THAT.search(text)       # "can I pour the cream so it never drips?"
+    if goals and manners and re.search(rf"[,;:.!?] +(?:so |then |but |and )?{_CAN.pattern}[^,;:.?!]*[?.!]* *$", text) \
+            and not re.search(r"\b(?:how|what|which|where|without) ", text) \
+            and re.search(r"\b(?:want|wants|wanted|need|needs|would like|goal|aim)\b", text[:_CAN.search(text).start()]):
+        return tuple(g.removeprefix("neg(").removesuffix(")") for g in goals), goals   # the goal said first ("no spill, can I ...")
     if not (goals and (" without " in f" {text} " or so_that or re.search(f"{_CAN_GET}|{_CAN_EMPTY}|{_CAN_OUT}|{_STILL_GET}", text))
             and not re.search(r"\b(?:how|what|which|where) ", text) and (so_that or not re.search(r"\bso(?: that| as)? ", text))):
         return (), goals

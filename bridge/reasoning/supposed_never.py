@@ -3,7 +3,8 @@ touches the bowl, can the bowl still tip over?"): said as "does not", the
 way the outcomes are read when supposed not to happen ("if the jug doesn't
 touch the bowl, ..."): both are asked. Said as a statement with a tag that
 asks it ("the jug never touches the bowl if i pour from the side, right?"),
-it is asked: "does the jug not touch the bowl". A condition so said and not ended
+it is asked: "does the jug not touch the bowl". So is a touch supposed not to happen said of the person
+("if i never touch the bowl with the bottle") or of the bowl ("if the bowl isn't touched by the bottle"). A condition so said and not ended
 with a comma before the question is ended with one ("if the pitcher never touches the bowl can the bowl
 still tip over")."""
 from __future__ import annotations
@@ -27,9 +28,20 @@ _UNENDED = re.compile(r"\b((?:if|when) (?:the|a|my|your|it)\b(?: [a-z]+){0,2}? (
                       r"[a-z]+)(?= (?:can|could|will|would|does|do|is|are|might|should) )")
 
 
+#: The touch supposed not to happen said of the person ("if i never touch the bowl with the bottle") or of the
+#: bowl ("if the bowl is not touched by the bottle at all"): of the source, as the condition above says it.
+_BY_ME = re.compile(r"\b(if|when) (?:i|we|you) (never|do not) (touch|hit|bump|knock)(?: into)? ((?:the|my|a) [a-z]+) with ((?:the|my|a) [a-z]+)")
+_BY_IT = re.compile(r"\b(if|when) ((?:the|my|a) [a-z]+) (?:is|gets) (not|never) (touch|hitt|bump|knock)(?:ed) by ((?:the|my|a) [a-z]+)")
+
+
 def never_as_not(text: str) -> tuple[str, tuple[str, ...]]:
     """Normalised `text` with an outcome supposed never to happen said as "does not", and what is said back."""
-    said = tuple(f"never {m.group(0).split(' never ', 1)[1]}: read as does not {m.group(3)}" for m in _NEVER.finditer(text))
+    said = tuple(f"{m.group(0)}: read as {m.group(1)} {m.group(5)} does not {m.group(3)} {m.group(4)}" for m in _BY_ME.finditer(text))
+    said += tuple(f"{m.group(0)}: read as {m.group(1)} {m.group(5)} does not {m.group(4).removesuffix('t')} {m.group(2)}"
+                  for m in _BY_IT.finditer(text))
+    text = _BY_ME.sub(r"\1 \5 does not \3 \4", text)
+    text = _BY_IT.sub(lambda m: f"{m.group(1)} {m.group(5)} does not {m.group(4).removesuffix('t')} {m.group(2)}", text)
+    said += tuple(f"never {m.group(0).split(' never ', 1)[1]}: read as does not {m.group(3)}" for m in _NEVER.finditer(text))
     if tagged := _TAGGED.match(text):          # "the jug never touches the bowl ..., right?"
         said += (f"{tagged.group(0)}: read as does {tagged.group(1)} not {tagged.group(2)}",)
         text = f"does {tagged.group(1)} not {tagged.group(2)}{text[tagged.end():]}"

@@ -33,7 +33,7 @@ from pantarhei.bridge.reasoning.asides import restated
 from pantarhei.bridge.reasoning.earlier_pour import told
 from pantarhei.bridge.reasoning.every_pour import as_every_pour
 from pantarhei.bridge.reasoning.last_of_it import the_last_of
-from pantarhei.bridge.reasoning.rim_strikers import lip_of_source, source_on_rim, spout_striking, stream_striking
+from pantarhei.bridge.reasoning.rim_strikers import lip_of_source, source_on_rim, spout_striking, stream_striking, touch_told
 from pantarhei.bridge.reasoning.fullness import refuse_bowl_fill
 from pantarhei.bridge.reasoning.little_vessels import refuse_little
 from pantarhei.bridge.reasoning.more_in import more_in
@@ -248,7 +248,7 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text, again = restated(_normalised(text))         # "-2 cm (i.e. below the rim)"
     text = spout_striking(lip_of_source(text, said), said)   # "does the jug lip touch the bowl": its spout
     text = stream_striking(text, said)                 # "the stream hit the edge and bounced out": bounced out
-    text = source_on_rim(text, said)                   # "if the jug touches the rim, will it tip": low, near the rim
+    text = touch_told(source_on_rim(text, said), said)   # "if the jug touches the rim, will it tip": low, near the rim
     text = as_every_pour(text, said)                   # "if I don't hold the bowl": every pour's, nothing
     # what is going to happen, said subject first: "stock gonna land in it?" asks "will stock land in it?"
     text = re.sub(r"(?:^|(?<=[,;:.?!] ))((?:the |my |a |this |that )?(?!i\b|we\b|you\b)[a-z]+|it|they) (?:is |are )?gonna (?=[a-z]+\b)",
