@@ -11,7 +11,7 @@ asked ("bowl tipping - heavy pitcher - off center"), and a cause asked so ("why 
 the bowl", "why comes the water over the edge"); so are outcomes asked in a word or two ("all in?": does
 it all go in?, "leftover?": is any left in the source?, "still in bowl after?": does it stay in the bowl?), and an
 outcome's verb said first, before the note's scene ("wobble? light bowl, pouring from kettle", "splash, low pour, full
-cup"). A bowl told with no article is "the bowl" ("bowl tipped over"), and "ok or not" ending a note asks whether it
+cup"); going out said after staying in the bowl is out of it ("stay in bowl or go out?"). A bowl told with no article is "the bowl" ("bowl tipped over"), and "ok or not" ending a note asks whether it
 is ok. A clause with an auxiliary of its own, or none of these subjects, is left as it is."""
 from __future__ import annotations
 
@@ -58,6 +58,8 @@ _OK_OR_NOT = re.compile(r"(?:,| -)? (?:ok|okay) or not\b[ ?]*$")
 _BARE_TOLD = re.compile(r"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<bowl>bowl|dish|basin) (?P<verb>[a-z]+(?:ed|d)|slid|fell|spun|shook)\b")
 #: A bowl's outcome told in the present, as learners of English tell it, its cause asked after it ("the bowl
 #: fall down, why?", "when i pour, the bowl move, why?"): told in the past, as mishaps reads it.
+#: Going out said after staying in the bowl, out of it (spilling out): "the ayran stay in bowl or go out?".
+_OUT_AFTER_IN = re.compile(r"\b(stays? in (?:the |my )?)(bowl|dish|basin) or (?:go|goes|come|comes) out\b(?! of\b)")
 _PRESENT_TOLD = re.compile(r"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<bowl>the (?:bowl|dish|basin)) (?P<verb>fall|move|tip|slide|flip|wobble"
                            r"|shake|spin)(?P<part> over| down| off)?(?=[,.;]? *(?:why|how come|what (?:i|we) (?:do|did) wrong)\b)")
 _PAST = {"fall": "fell", "move": "moved", "tip": "tipped", "slide": "slid", "flip": "flipped", "wobble": "wobbled",
@@ -97,6 +99,9 @@ def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
         said.append(f"{m.group(0)}: read as {told}")
         return told
     text = _PRESENT_TOLD.sub(past, text)
+    for m in _OUT_AFTER_IN.finditer(text):
+        said.append(f"{m.group(0)[m.end(2) - m.start() + 4:]}: read as out of the {m.group(2)}")
+    text = _OUT_AFTER_IN.sub(r"\1\2 or spill out", text)
     first = _FIRST.match(text)
     if first and outcome_verb(first.group("verb")) and (first.group("end") == "?" or not (
             "?" in text or _ASKING.search(text))):      # ("spill, what should i do": asked after it)

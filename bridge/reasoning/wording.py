@@ -35,7 +35,7 @@ from pantarhei.bridge.reasoning.every_pour import as_every_pour
 from pantarhei.bridge.reasoning.last_of_it import the_last_of
 from pantarhei.bridge.reasoning.rim_strikers import lip_of_source, source_on_rim, spout_striking, stream_striking, touch_told
 from pantarhei.bridge.reasoning.fullness import refuse_bowl_fill
-from pantarhei.bridge.reasoning.little_vessels import refuse_little
+from pantarhei.bridge.reasoning.little_vessels import refuse_little, refuse_wobbly
 from pantarhei.bridge.reasoning.more_in import more_in
 from pantarhei.bridge.reasoning.which_one import which_one
 from pantarhei.bridge.reasoning.words import rewrites
@@ -260,6 +260,7 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     text, more = more_in(text)                         # "gets more water into the bowl": does it go in
     text, which = which_one(text)                      # "a vs b - which one slides more": does it slide
     refuse_little(text)                                # "a little jug": a size
+    refuse_wobbly(text)                                # "my bowl is light and wobbly": a shape
     refuse_bowl_fill(text)                             # "how full can my bowl get": the bowl's fill
     return text, (*said, *again, *earlier, *avoiding, *cause, *compared, *more, *which)
 
