@@ -45,7 +45,7 @@ _PHRASAL = PHRASAL | frozenset(("jump", "jumps", "bounce", "bounces", "fly", "fl
 
 
 #: A tag asking whether what was said holds: "it won't spill, right?", "jug not touching bowl right?" (not a
-#: side: "from the right?", nor "or no?").
+#: side: "from the right?"), and "or not" after a question.
 _TAG = re.compile(r"(?<!\bthe)(?<!\bto)(?<!\bfrom)(?<!\bon)(?<!\bat)(?<!\bmy)(?<!\bits)(?<!\bher)(?<!\bhis)(?<!\byour)(?<!\bor)"
                   r"(?:,| -)? (?P<tag>right|correct|yes|yeah|yea|no|eh)\?+ *$"
                   # ("or not" after a condition, the question asked first: "does the bottle touch the bowl when i pour, or not?")

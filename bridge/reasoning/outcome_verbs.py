@@ -16,9 +16,12 @@ ALL_IN = ("liquid_enters_destination",)
 _KEPT = (r"(?:more|less|much|some|any|anything|something|a lot|a bit|nothing|stuff|(?:any |some |a )?residue"
          r"|(?:a|any) (?:film|layer|coat|coating|skin|trace))")
 
+#: Slopping, said in any form ("slops", "slopped", "sloppy"), never a slope ("on a slope", "sloping").
+_SLOP = r"slop(?!e|ing\b)\w*"
+
 #: Verbs of liquid thrown about: thrown over the rim or out of the destination, it entered
 #: and did not stay ("splash out of the bowl": liquid_remains_in_destination and no_spill).
-_THROWN = (r"spill\w*|spilt|splash\w*|splatter\w*|splat\w*|slop(?!e|ing\b)\w*|slosh\w*|spray\w*|spurt\w*"
+_THROWN = (rf"spill\w*|spilt|splash\w*|splatter\w*|splat\w*|{_SLOP}|slosh\w*|spray\w*|spurt\w*"
            r"|squirt\w*|escap\w*|spew\w*|gush\w*|leak\w*|drip\w*|dribbl\w*|trickl\w*")
 
 #: (verb phrase, the expectations it speaks of, whether it happening makes them fail)
@@ -29,15 +32,15 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      # gone out of the bowl it went into: "for the oil not going out of the bowl"
      r"|(?:go|goes|going|went|get|gets|getting|got) out of(?= (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|destination)\b)"
      # thrown out, no bowl said: out of the destination, as people who pour read it ("splash out")
-     r"|(?:splash\w*|splatter\w*|slosh\w*|slop(?!e|ing\b)\w*)(?: back)?(?: up(?: and)?)? out\b(?! of\b| over\b)"
+     rf"|(?:splash\w*|splatter\w*|slosh\w*|{_SLOP})(?: back)?(?: up(?: and)?)? out\b(?! of\b| over\b)"
      # (spilled out onto the table: where it lands, a spill; splashed out onto it was thrown out of the bowl)
      r"|(?:spill\w*|spilt)(?: back)? out\b(?! of\b| over\b| (?:on|onto|all over) (?:the |a |my )?"
      r"(?:table|counter|countertop|worktop|floor|bench|tablecloth|ground)\b)"
      # thrown outside it: "splash outside the bowl", "make splash outside" (landing or dripping outside is a spill)
-     r"|(?:makes? (?:a |any |big |much )*)?(?:splash\w*|splatter\w*|slosh\w*|slop(?!e|ing\b)\w*) outside\b"
+     rf"|(?:makes? (?:a |any |big |much )*)?(?:splash\w*|splatter\w*|slosh\w*|{_SLOP}) outside\b"
      # thrown back up out of the bowl: "splash back", "splash-back expected?"
      r"|(?:splash|splatter)(?:es|ed|ing)? ?back\b(?! (?:in|into|out)\b| up\b(?! (?:at|toward|towards|onto|on)\b))|splashbacks?\b"
-     r"|overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*|slop(?!e|ing\b)\w*|splash\w*|splatter\w*|fizz\w*"
+     rf"|overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*|{_SLOP}|splash\w*|splatter\w*|fizz\w*"
      r"|foam\w*|froth\w*|bubbl\w*|boil\w*) over"
      r"(?: the (?:rim|edge|top|side)s?)?"
      r"|(?:(?:come|comes|came|coming|go|goes|went|going) )?(?:bounc|jump|leap|hop|climb|fly|flies|flew|flying)\w* (?:right |straight )?(?:back )?(?:up )?(?:and )?(?:over|out(?: of)?)|flood\w*"
@@ -57,7 +60,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      # lost over the rim or on the counter: "do I lose any on the counter", "do i lose broth over the rim"
      r"|los(?:e|es|ing|t) (?:any|some|much|a lot|a bit|a drop)(?: of it)?(?= (?:on|onto|over|all over)\b)"
      r"|los(?:e|es|ing|t)(?= [a-z]+ (?:on|onto|over|all over) (?:the |my )?(?:rim|edge|side|table|counter|floor|worktop|bench)\b)"
-     r"|slop(?!e|ing\b)\w*|splat\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)|(?:end|ends|ended|ending) up (?:somewhere )?where (?:it|they) (?:should not|must not|is not supposed to|are not supposed to|was not supposed to)\b|(?:get|gets|got|getting) (?:any|some|much|a drop)(?: of it)?(?= on\b| onto\b)"
+     rf"|{_SLOP}|splat\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)|(?:end|ends|ended|ending) up (?:somewhere )?where (?:it|they) (?:should not|must not|is not supposed to|are not supposed to|was not supposed to)\b|(?:get|gets|got|getting) (?:any|some|much|a drop)(?: of it)?(?= on\b| onto\b)"
      r"|(?:run|runs|running|ran|roll\w*|stream\w*|drip\w*|dribbl\w*|trickl\w*|go|goes|going|went) (?:back )?down the (?:outside|side)(?! of (?:the |a )?(?:bowl|dish|destination))"
      # what is left behind outside: "does it leave a trail of drips", "leaving a sticky ring on the counter"
      r"|leav(?:e|es|ing) (?:a |any )?(?:sticky |little |wet |big )?(?:trail|line|ring|puddle)s?\b"

@@ -15,7 +15,7 @@ from pantarhei.bridge.reasoning.reading import read_question
 KINDS = {"hedge", "material", "bowl", "bowl poured from", "sticky liquid", "heavy liquid", "liquid", "context", "part",
          "unclear", "a bit", "little", "much", "full", "slightly tilted", "steeply tilted", "low", "high",
          "to the side", "very", "start slightly tilted", "into the middle", "right over", "into", "from", "upright",
-         "tilted", "tilted halfway", "slowly", "fast", "slippery destination", "pour", "poured"}
+         "tilted", "tilted halfway", "slowly", "fast", "slippery destination", "pour", "poured", "near the rim"}
 
 
 def _phrases(*kinds: str) -> list[tuple[str, str]]:
@@ -124,6 +124,7 @@ def test_a_word_the_vocabulary_cannot_say_is_refused_naming_why(phrase, said):
     *((p, "pour from {}", ["pour_low"]) for p, _ in _phrases("low")),
     *((p, "pour from {}", ["pour_high"]) for p, _ in _phrases("high")),
     *((p, "pour it {} of the bowl", ["pour_centred"]) for p, _ in _phrases("into the middle")),
+    *((p, "pour with the jug {}", ["pour_near_rim"]) for p, _ in _phrases("near the rim")),
     *((p, "pour with the source held {}", ["pour_upright"]) for p, _ in _phrases("upright")),
     *((p, "pour {} the middle of the bowl", ["pour_centred"]) for p, _ in _phrases("right over")),
     *((p, "tip the jug {} the bowl from high", ["pour_high"]) for p, _ in _phrases("into")),
