@@ -11,7 +11,7 @@ asked ("bowl tipping - heavy pitcher - off center"), and a cause asked so ("why 
 the bowl", "why comes the water over the edge"); so are outcomes asked in a word or two ("all in?": does
 it all go in?, "leftover?": is any left in the source?, "still in bowl after?": does it stay in the bowl?), and an
 outcome's verb said first, before the note's scene ("wobble? light bowl, pouring from kettle", "splash, low pour, full
-cup"); going out said after staying in the bowl is out of it ("stay in bowl or go out?"). A bowl told with no article is "the bowl" ("bowl tipped over"), and "ok or not" ending a note asks whether it
+cup"); an outcome said again as what it is like ("..., like running down the side?") is asked too; going out said after staying in the bowl is out of it ("stay in bowl or go out?"). A bowl told with no article is "the bowl" ("bowl tipped over"), and "ok or not" ending a note asks whether it
 is ok. A clause with an auxiliary of its own, or none of these subjects, is left as it is."""
 from __future__ import annotations
 
@@ -58,6 +58,11 @@ _OK_OR_NOT = re.compile(r"(?:,| -)? (?:ok|okay) or not\b[ ?]*$")
 _BARE_TOLD = re.compile(r"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<bowl>bowl|dish|basin) (?P<verb>[a-z]+(?:ed|d)|slid|fell|spun|shook)\b")
 #: A bowl's outcome told in the present, as learners of English tell it, its cause asked after it ("the bowl
 #: fall down, why?", "when i pour, the bowl move, why?"): told in the past, as mishaps reads it.
+#: An outcome said again as what it is like, after one asked: "does any end up outside the bowl, like running down
+#: the side?" (asked: "or does it run down the side?").
+_LIKE = re.compile(r",? (?:like|as in|e\.g\.|say) (runn|dribbl|dripp|trickl|spill|splash|slosh|slopp)ing (?=(?:down|over|out|onto|on)\b)")
+_LIKE_BASE = {"runn": "run", "dribbl": "dribble", "dripp": "drip", "trickl": "trickle", "spill": "spill", "splash": "splash",
+              "slosh": "slosh", "slopp": "slop"}
 #: Going out said after staying in the bowl, out of it (spilling out): "the ayran stay in bowl or go out?".
 _OUT_AFTER_IN = re.compile(r"\b(stays? in (?:the |my )?)(bowl|dish|basin) or (?:go|goes|come|comes) out\b(?! of\b)")
 _PRESENT_TOLD = re.compile(r"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<bowl>the (?:bowl|dish|basin)) (?P<verb>fall|move|tip|slide|flip|wobble"
@@ -99,6 +104,10 @@ def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
         said.append(f"{m.group(0)}: read as {told}")
         return told
     text = _PRESENT_TOLD.sub(past, text)
+    if "?" in text or _ASKING.search(text):
+        for m in _LIKE.finditer(text):
+            said.append(f"{m.group(0).strip(' ,')}: read as or does it {_LIKE_BASE[m.group(1)]}")
+        text = _LIKE.sub(lambda m: f", or does it {_LIKE_BASE[m.group(1)]} ", text)
     for m in _OUT_AFTER_IN.finditer(text):
         said.append(f"{m.group(0)[m.end(2) - m.start() + 4:]}: read as out of the {m.group(2)}")
     text = _OUT_AFTER_IN.sub(r"\1\2 or spill out", text)

@@ -137,6 +137,8 @@ def told(text: str) -> tuple[str, tuple[str, ...]]:
     cause = CAUSE.match(rest.strip()) is not None
     if out is None and (cause or REMEDY.match(rest.strip())):
         return text, ()             # what it did told past this module's forms: mishaps.py's to read
+    if out and re.match(r"(?:so )?(?:is|was) (?:it|that|this)(?: just| maybe)? (?:too|because)\b", rest.strip()):
+        return text, ()             # a cause named ("is that because it was too high"): mishaps.py's to read
     verb = "spill" if out == "spilt" else out
     if out and cause and re.search(r"\band (?:the|it|my|a|an|then)\b", m.groupdict().get("how") or ""):
         return text, ()             # more told between ("... and the whole bowl scooted across ..."): mishaps.py's

@@ -74,7 +74,7 @@ _SHOULD_HAVE = re.compile(r"^(?:so )?(?:should|could|would) (?P<who>i|we|he|she|
 #: A cause put as a yes or no of a scene: "is the bowl just too light?", "was it too high?".
 _TOO = re.compile(r"^(?:so )?(?:is|was|am|were) (?:it|that|i|we|you|he|she|they|the (?P<noun>[a-z]+)) (?:just |simply |maybe )?"
                   r"(?:(?:holding|pouring) (?:it |the \w+ )?(?:from )?|(?:going|moving|coming in|moving (?:it|the \w+)(?: in| away)?"
-                  r"|bringing (?:it|the \w+) in|pulling (?:it|the \w+) away) )?(?:too |because (?:it is|it was) (?:too )?)"
+                  r"|bringing (?:it|the \w+) in|pulling (?:it|the \w+) away) )?(?:too |because (?:(?:it|he|she|they|i|we|you) (?:is|was|are|were|am) |hes |shes |theyre )(?:too )?)"
                   r"(?P<value>light|heavy|slippery|bouncy|high|low|sticky|runny|full|fast|quick|slow|far (?:off )?to (?:one|the) side"
                   r"|far away|close)(?: or (?:something|what))?[?.! ]*$")
 #: A speed other than the one told, asked to help: "would slower have helped?", "would going slower fix it".
