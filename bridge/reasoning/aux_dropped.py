@@ -3,16 +3,16 @@ and people in a hurry type it ("it fall down?", "The bowl move or stay?",
 "water go on the table?"): a clause that begins with what the outcome
 happens to and goes on with a verb of an outcome, then a question mark,
 is read with "does" before it ("does it fall down?"; "is" before one going on: "jug not touching
-bowl at all?"), as outcomes.py hears
-questions; so is an outcome's verb asked alone after a scene ("pour high,
+bowl at all?"), as outcomes.py hears questions; so is an outcome's verb asked alone after a scene ("pour high,
 wobble?": does it wobble?, "full jug, tipped over?"), and a place said wet ("table wet?": does the
 table get wet?), and an outcome going on said first as a note's topic, nothing
 asked ("bowl tipping - heavy pitcher - off center"), and a cause asked so ("why the liquid not go in
 the bowl", "why comes the water over the edge"); so are outcomes asked in a word or two ("all in?": does
 it all go in?, "leftover?": is any left in the source?, "still in bowl after?": does it stay in the bowl?), and an
 outcome's verb said first, before the note's scene ("wobble? light bowl, pouring from kettle", "splash, low pour, full
-cup"); an outcome said again as what it is like ("..., like running down the side?") is asked too; going out said after staying in the bowl is out of it ("stay in bowl or go out?"). A bowl told with no article is "the bowl" ("bowl tipped over"), and "ok or not" ending a note asks whether it
-is ok. A clause with an auxiliary of its own, or none of these subjects, is left as it is."""
+cup"); an outcome said again as what it is like ("..., like running down the side?") is asked too;
+going out said after staying in the bowl is out of it ("stay in bowl or go out?"). A bowl told with no
+article is "the bowl" ("bowl tipped over"), and "ok or not" ending a note asks whether it is ok. A clause with an auxiliary of its own, or none of these subjects, is left as it is."""
 from __future__ import annotations
 
 import re
@@ -56,8 +56,6 @@ _OK_OR_NOT = re.compile(r"(?:,| -)? (?:ok|okay) or not\b[ ?]*$")
 #: A bowl told without its article, with what it did ("bowl tipped over", "bottle empty, bowl slid. why"):
 #: "the bowl", as mishaps and outcomes read it.
 _BARE_TOLD = re.compile(r"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<bowl>bowl|dish|basin) (?P<verb>[a-z]+(?:ed|d)|slid|fell|spun|shook)\b")
-#: A bowl's outcome told in the present, as learners of English tell it, its cause asked after it ("the bowl
-#: fall down, why?", "when i pour, the bowl move, why?"): told in the past, as mishaps reads it.
 #: An outcome said again as what it is like, after one asked: "does any end up outside the bowl, like running down
 #: the side?" (asked: "or does it run down the side?").
 _LIKE = re.compile(r",? (?:like|as in|e\.g\.|say) (runn|dribbl|dripp|trickl|spill|splash|slosh|slopp)ing (?=(?:down|over|out|onto|on)\b)")
@@ -65,6 +63,8 @@ _LIKE_BASE = {"runn": "run", "dribbl": "dribble", "dripp": "drip", "trickl": "tr
               "slosh": "slosh", "slopp": "slop"}
 #: Going out said after staying in the bowl, out of it (spilling out): "the ayran stay in bowl or go out?".
 _OUT_AFTER_IN = re.compile(r"\b(stays? in (?:the |my )?)(bowl|dish|basin) or (?:go|goes|come|comes) out\b(?! of\b)")
+#: A bowl's outcome told in the present, as learners of English tell it, its cause asked after it ("the bowl
+#: fall down, why?", "when i pour, the bowl move, why?"): told in the past, as mishaps reads it.
 _PRESENT_TOLD = re.compile(r"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<bowl>the (?:bowl|dish|basin)) (?P<verb>fall|move|tip|slide|flip|wobble"
                            r"|shake|spin)(?P<part> over| down| off)?(?=[,.;]? *(?:why|how come|what (?:i|we) (?:do|did) wrong)\b)")
 _PAST = {"fall": "fell", "move": "moved", "tip": "tipped", "slide": "slid", "flip": "flipped", "wobble": "wobbled",

@@ -8,8 +8,8 @@ unheard. So is a sentence after the question ("... splash less than water?
 Asking for a science lesson."), where its words may also be words the
 reader knows but never places in a scene ("I want to show them with a
 simple demo."), but for one that supposes ("if its to close"), asks
-("does it go inside", its question mark left out) or tells an outcome ("It spilled everywhere yesterday."). The question itself, the
-last sentence ending in a question mark (the last sentence, with none), is
+("does it go inside", its question mark left out) or tells an outcome
+("It spilled everywhere yesterday."). The question itself, the last sentence ending in a question mark (the last sentence, with none), is
 never chatter; a sentence with a word the reader knows ("The bowl is
 plastic.") is read as any other, and one with a word it cannot spell
 ("Bowl slidez.") is refused as mistyped."""

@@ -22,10 +22,9 @@ def _little() -> re.Pattern:
 
 
 def refuse_little(text: str) -> None:
-    """UserError where `text` (normalised) says a container is little."""
+    """UserError where `text` (normalised) says a container is little (everyday.txt's words on its size)."""
     if re.search(r"\b(?:little|lil)\b", text) and (m := _little().search(text)):    # (compiled only when cued)
-        raise UserError(f"could not place \"{m.group(0)}\": the vocabulary's bowls are all of one size: it "
-                        "says how heavy, slippery or bouncy a bowl is, not how big")
+        raise UserError(f"could not place \"{m.group(0)}\": {_unclear('all of one size')}")
 
 
 #: A bowl said to be wobbly, as what it is: "my bowl is really light and wobbly", "the bowl is wobbly".
@@ -35,5 +34,9 @@ _WOBBLY = re.compile(r"\b(?:bowl|dish|basin|tub) is (?:(?:really|very|a bit|kind
 def refuse_wobbly(text: str) -> None:
     """UserError where `text` (normalised) says the bowl is wobbly (everyday.txt's words on its shape)."""
     if "wobbly" in text and (m := _WOBBLY.search(text)):
-        shape = next(s.said_back for s in sections() if s.words == UNCLEAR and "all of one shape" in s.said_back)
-        raise UserError(f"could not place \"{m.group(0)}\": {shape}")
+        raise UserError(f"could not place \"{m.group(0)}\": {_unclear('all of one shape')}")
+
+
+def _unclear(saying: str) -> str:
+    """What everyday.txt says back of the words it refuses whose reason holds `saying`."""
+    return next(s.said_back for s in sections() if s.words == UNCLEAR and saying in s.said_back)

@@ -36,6 +36,12 @@ def source_names() -> tuple[str, ...]:
     return tuple(w for w in names("bowl") if w not in _DESTINATIONS)
 
 
+def _strikers() -> tuple[str, ...]:
+    """What may strike the bowl as the source: the sources' names, and a bucket, a pail or a container
+    (destinations' words that are the source when it is what strikes)."""
+    return (*source_names(), "bucket", "pail", "container")
+
+
 @lru_cache(maxsize=None)
 def _lips() -> tuple[re.Pattern, ...]:
     """The lip of a source (every container of everyday.txt but the destination's words: what strikes
@@ -109,8 +115,7 @@ def source_on_rim(text: str, said: dict[str, None]) -> str:
 def _set_on_rim() -> re.Pattern:
     """Someone setting the source on the bowl (its rim, its edge, it) in a condition (what is set on it is the
     source, a bucket too: "if I lean the bucket on its lip")."""
-    sources = alternation([*source_names(), "bucket", "pail", "container"])
-    destinations = alternation(_DESTINATIONS - {"container"})
+    sources, destinations = alternation(_strikers()), alternation(_DESTINATIONS - {"container"})
     return re.compile(
         rf"\b(?P<when>if|when|while|once) (?:i|we|you|he|she|they) (?:lean|leans|leaned|leant|leaning|rest|rests|rested|resting"
         rf"|prop|props|propped|propping|balance|balances|balanced|balancing) (?:the|my|a|her|his|our) (?P<how>[a-z]+ )?(?P<source>{sources})"
@@ -152,7 +157,7 @@ def touch_told(text: str, said: dict[str, None]) -> str:
 def _touch_told() -> re.Pattern:
     """A source striking the bowl (its rim, it), told first, and what else is said before a question (a
     bucket striking it is the source: "the bucket bumps into the basin")."""
-    sources, destinations = alternation(["container", "bucket", "pail", *source_names()]), alternation(_DESTINATIONS - {"container"})
+    sources, destinations = alternation(_strikers()), alternation(_DESTINATIONS - {"container"})
     return re.compile(
         rf"^(?P<source>(?:(?:the|my|a|his|her|our|your) )?(?:[a-z]+ )?(?:{sources})(?: (?:spout|lip|neck|mouth))?) "
         rf"(?P<move>(?:comes|moves|goes|swings|drops) (?:[a-z]+ ){{0,4}}?and )?"

@@ -353,14 +353,14 @@ def if_it_can(text: str, goals: tuple[str, ...], manners: bool) -> tuple[tuple[s
     in a clause before "can I" and a manner ("I don't want any on the counter, can I pour from 20 cm"; "without
     the jug touching the bowl, can I come in low?" asks it alone)."""
     so_that = _CAN.search(text) and _SO_THAT.search(text)       # "can I pour the cream so it never drips?"
+    asked = tuple(g.removeprefix("neg(").removesuffix(")") for g in goals)
     if goals and manners and re.search(rf"[,;:.!?] +(?:so |then |but |and )?{_CAN.pattern}[^,;:.?!]*[?.!]* *$", text) \
             and not re.search(r"\b(?:how|what|which|where|without) ", text) \
             and re.search(r"\b(?:want|wants|wanted|need|needs|would like|goal|aim)\b", text[:_CAN.search(text).start()]):
-        return tuple(g.removeprefix("neg(").removesuffix(")") for g in goals), goals   # the goal said first ("no spill, can I ...")
+        return asked, goals     # the goal said first ("no spill, can I ...")
     if not (goals and (" without " in f" {text} " or so_that or re.search(f"{_CAN_GET}|{_CAN_EMPTY}|{_CAN_OUT}|{_STILL_GET}", text))
             and not re.search(r"\b(?:how|what|which|where) ", text) and (so_that or not re.search(r"\bso(?: that| as)? ", text))):
         return (), goals
-    asked = tuple(g.removeprefix("neg(").removesuffix(")") for g in goals)
     if _CAN_IT.search(text) or so_that:
         return asked, goals
     if manners and _CAN.search(text):         # the manner said before the goal ("can I pour from 40 cm without
