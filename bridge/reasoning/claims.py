@@ -12,7 +12,7 @@ question ("is she right or is it the bowl?") is left as written. An outcome
 asked whether it is normal, or bad ("is it bad if the bowl tips when i pour
 on the side"), is asked whether it happens. A claim
 of an outcome checked with a tag ("it won't spill, right?", "jug not
-touching bowl right?") is asked, the tag said back."""
+touching bowl right?", "..., slides or not") is asked, the tag said back."""
 from __future__ import annotations
 
 import re
@@ -34,7 +34,7 @@ _SAID = re.compile(rf"^(?:so |hey |hi )?{_WHO} {_SAYS} (?P<claim>.+?)(?: ?[,.;:!
 _IS_IT_USUAL = re.compile(r"^(?:so )?is it (?:really |just )?(?:normal|bad|usual|expected|weird|strange)(?: that| if| when) (?P<claim>.+?)[?.! ]*$")
 _IS_IT_TRUE = re.compile(r"^(?:so |hey |hi )?is it (?:really )?(?:true|right|correct)(?: that| say)? (?P<claim>.+?)[?.! ]*$")
 #: What an outcome happens to, said first in the claim's own clause ("it", "the bowl", "di water").
-_SUBJECT = (r"(?:it|they|(?:all|some|none|most|half) of (?:it|the \w+)|(?:the|a|an|my|di|your|this) (?:(?!it\b)[a-z]+ )?[a-z]+"
+_SUBJECT = (r"(?:it|they|nothing|anything|something|(?:all|some|none|most|half) of (?:it|the \w+)|(?:the|a|an|my|di|your|this) (?:(?!it\b)[a-z]+ )?[a-z]+"
             r"|water|milk|liquid|juice|soup|oil)")
 _BEFORE_VERB = (r"(?:(?:will|would|wont|won't|doesnt|doesn't|does not|dont|don't|do not|will not|can't|cant|cannot|never|not"
                 r"|always|just|still|all|really) )*")
@@ -51,6 +51,9 @@ _TAG = re.compile(r"(?<!\bthe)(?<!\bto)(?<!\bfrom)(?<!\bon)(?<!\bat)(?<!\bmy)(?<
                   # ("or not" after a condition, the question asked first: "does the bottle touch the bowl when i pour, or not?")
                   r"|(?<=[a-z])(?:,| -)? (?P<whether>or (?:not|no))\?+ *$")
 
+#: An outcome said as a fragment, last, with "or not" ("..., bowl on wet glass, slides or not").
+_FRAGMENT_OR_NOT = re.compile(r"(?<=,) (?P<clause>(?:(?:the|my|a) )?(?:[a-z]+ )?(?P<verb>[a-z]+)) (?P<whether>or not)\?* *$")
+
 
 def claim_asked(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with a claim asked to be checked read as the
@@ -63,6 +66,8 @@ def claim_asked(text: str) -> tuple[str, tuple[str, ...]]:
     m = _SAID.match(text) or _IS_IT_TRUE.match(text)
     if m is None:
         tag = _TAG.search(text)
+        if tag is None and (last := _FRAGMENT_OR_NOT.search(text)) and _outcome(last.group("verb")):
+            return f"{text[:last.end('clause')]}?", ("or not: read as asking whether it holds",)
         # (an outcome said never to happen, tagged, is supposed_never.py's; "or not" is a tag only after a
         # question: "teapot must touch bowl or not?" is left as it is)
         if tag is None or not any(_outcome(w) for w in re.findall(r"[a-z]+", text[:tag.start()])) \
@@ -70,7 +75,7 @@ def claim_asked(text: str) -> tuple[str, tuple[str, ...]]:
                 or tag.group("whether") and not re.match(r"(?:does|do|did|will|would|is|are|can|could)\b"
                                                          r"|(?:the|my|a|your) [a-z]+ (?:is|are) [a-z]+\b", text):
             return text, ()
-        return f"{text[:tag.start()]}?", (f"{tag.group('tag') or tag.group('whether')}?: read as asking whether it holds",)
+        return f"{_set_off(text[:tag.start()])}?", (f"{tag.group('tag') or tag.group('whether')}?: read as asking whether it holds",)
     claim = _set_off(m.group("claim").strip(" ,.;:"))
     if m.re is _IS_IT_TRUE and claim == m.group("claim").strip(" ,.;:"):
         return text, ()         # "is it true that a heavier bowl wobbles less": heard as it is asked

@@ -70,6 +70,8 @@ class Fullness:
         while i < len(words):
             if words[i] == "full" and words[i + 1:i + 2] and words[i + 1] in _HELD_BOWLS and words[i + 2:i + 3] != ["of"]:
                 raise UserError(f"could not place \"{' '.join(words[max(0, i - 1):i + 2])}\": {HOLDS_LIQUID}")   # "a nearly full bowl"
+            if words[i] == "full" and (bowl := _bowl_full(words, i)) is not None:      # "the bowl is already full", "bowl full."
+                raise UserError(f"could not place \"{' '.join(words[bowl:i + 1])}\": {HOLDS_LIQUID}")
             share, end = _filled_to(words, i) if words[i] in _FILLING else (None, i)
             share, end = (share, end) if share is not None else _share(words, i)
             if share is not None and (filled := _bowl_filled(words, i)) is not None:
@@ -88,6 +90,19 @@ def _of_the_bowl(words: list[str], i: int) -> bool:
     before = words[max(0, i - 4):i]
     return before[-1:] and before[-1] in _HELD_BOWLS or any(      # (or right after it, as notes say it: "bowl half full")
         w in _HELD_BOWLS and before[k + 1:k + 2] in (["is"], ["was"], ["are"], ["were"], ["s"]) for k, w in enumerate(before))
+
+
+def _bowl_full(words: list[str], i: int) -> int | None:
+    """Where the bowl is said, if "full" at `i` is said of it as it stands ("the bowl is already full", "bowl
+    full"), not wanted of it ("i want the bowl full", "get the bowl full": seeking.py's); else None."""
+    k = i - 1 - (words[i - 1:i] == ["already"])
+    k -= words[k:k + 1] in (["is"], ["was"], ["s"])
+    return k if (k >= 0 and words[k] in _HELD_BOWLS - {"destination"} and words[i + 1:i + 2] != ["of"]  # ("a bowl full of cereal")
+                 and not _WANTING.intersection(words[max(0, k - 3):k])) else None
+
+
+#: Words that want the bowl full, before it: "i'd like the bowl full".
+_WANTING = frozenset(("want", "wants", "wanted", "like", "need", "needs", "get", "keep", "make", "have", "fill", "filled", "filling"))
 
 
 #: Words between a bowl filled and the share it is filled to: "fill the bowl up to about half full".

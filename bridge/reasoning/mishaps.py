@@ -205,7 +205,9 @@ def _happened(m: re.Match, names: tuple[str, ...], present: bool = True) -> bool
         r"(?:the |my )?(?:bowl|dish|cup|jug|bottle|pitcher|glass|mug|water|liquid|milk|juice|oil|soup) ", before)
     # what keeps happening, said in the present after its subject ("it dribbles down the side")
     now = present and re.match(r"[a-z]+[^s]s\b", m.group(0)) and re.search(r"(?:^|\b(?:it|the \w+|my \w+|our \w+) )$", before)
-    return bool(_TOLD_TENSE.match(m.group(0)) or _HABIT.search(before) or (going_on and re.match(r"[a-z]+ing\b", m.group(0))) or now)
+    asked_why = re.search(r"^why did (?:it|they|the \w+|my \w+) $", before)        # "why did it miss the bowl"
+    return bool(_TOLD_TENSE.match(m.group(0)) or _HABIT.search(before) or (going_on and re.match(r"[a-z]+ing\b", m.group(0)))
+                or now or asked_why)
 
 
 def _said(words: dict, groups: list[tuple[str, ...]], when: str = "") -> str:
@@ -288,6 +290,12 @@ def _read(told: str, asked: str, present: bool = True) -> tuple[str, tuple[str, 
     failed = list(dict.fromkeys(g for c in clauses for g, bad in tells[c] if bad))
     if not failed:
         return None
+    told_why = asked
+    if re.match(r"(?:so |and |but )?why did (?:it|they|the \w+|my \w+) [a-z]", asked):     # an outcome named in the cause asked:
+        named = [g for g, bad in _told(re.split(r" (?:if|when|while|like|because|after|before)\b", re.sub(
+            r"^(?:so |and |but )", "", asked.strip(" ?.!")))[0]) if bad]     # asked too ("why" asks the cause)
+        if named:
+            failed, told_why, asked = list(dict.fromkeys([*failed, *named])), asked, "why?"
     said = f"{told}: read as nothing: a pour told, with what went wrong; the answer is for the one asked"
     when = _phase_told(told)
     wanted, question = _said(_WANTED, failed, when), _said(_ASKED, failed, when)
@@ -338,5 +346,5 @@ def _read(told: str, asked: str, present: bool = True) -> tuple[str, tuple[str, 
         if (again := _AGAIN.match(asked)) and again.group("when"):
             scene.append(again.group("when").strip())
         rest = f"{', '.join(scene)}, {question}?" if scene else f"{question}?"
-        return rest, (f"{told}: read as {rest.strip(' ?')}", f"{asked.strip(' ?.!')}: read as asked of the pour told")
+        return rest, (f"{told}: read as {rest.strip(' ?')}", f"{told_why.strip(' ?.!')}: read as asked of the pour told")
     return None

@@ -127,8 +127,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|jostl\w*|walk(?:s|ed|ing)? (?:across|along|around|about)\b|rock(?:s|ed|ing)?|(?:shak(?:e|es|ing)|shook)(?! (?:it|them)\b)|translat\w*|drift\w*|creep\w*|scoot\w*"
      # turning where it stands ("can a bowl spin around"), not a source turned ("spin the bottle")
      r"|(?:spin|spins|spinning|spun|swivel\w*)(?! (?:it|them|the \w+)\b)(?: (?:a)?round| about)?"
-     # the bowl pushed by the stream, said with where it goes ("will the stream push them across the table")
-     r"|(?:push|shov)(?:es|e|ed|ing)? (?:it|them|the (?:bowl|bowls|destination|dish|container)) (?:across|along|around|about|sideways|aside|away)\b"
+     # the bowl pushed by the stream, said with where it goes ("will the stream push them across the table"), or last ("push it?")
+     r"|(?:push|shov)(?:es|e|ed|ing)? (?:it|them|the (?:bowl|bowls|destination|dish|container))(?: (?:across|along|around|about|sideways|aside|away)\b| *(?=[?.!,;]|$))"
      # sent flying, itself: "does the bowl go flying" (not "go flying out of the bowl": thrown out)
      r"|(?:go|goes|going|went|gone) flying\b(?! (?:out|off|over)\b)|(?:go|goes|going|went|gone) (?:sliding|skidding|skating|scooting)\b"
      r"|(?:shot|shoot|shoots|shooting) (?:sideways|across|off)\b"
@@ -204,12 +204,13 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"(?! (?:the |a |my )?(?:bowl|destination)\b)"
      r"|(?:stay|stays|remain|remains|get|gets) stuck\b(?! (?:in|to|on|at)\b)",      # "come out or just stay stuck"
      ("liquid_leaves_source",), True),
-    (r"(?:end|ends|ended|ending) up (?:more |less |mostly )?in(?:side)?", (*ALL_IN, "liquid_remains_in_destination"), False),
+    # (where in the bowl it lands is no outcome: "go in the middle of the bowl" is refused, everyday.txt)
+    (r"(?:end|ends|ended|ending) up (?:more |less |mostly )?in(?:side)?(?! the (?:middle|centre|center)\b)", (*ALL_IN, "liquid_remains_in_destination"), False),
     # what stays in the bowl entered it: "remains" alone holds also when none enters
     (r"(?:stay|stays|remain|remains) (?:in )?there\b"
      rf"|(?:stay|stays|staying|remain|remains|remaining|stop|stops|stick|sticks|stuck|cling|clings|clung|sit|sits|sitting) in(?:side)?(?: the (?:bottom|base) of)?(?: the \w+| (?:my |a |its )?{CONTAINER}\b)?",
      (*ALL_IN, "liquid_remains_in_destination"), False),
-    (r"(?:go|goes|going|went|get|gets|land|lands|plop|plops|plopped|make it|makes it|fall|falls|transfer\w*|arrive\w*|finds? (?:its|their) way) (?:more |mostly |all )?(?:in|into|inside)\b(?! the way\b)|reach\w*|make it (?:to|into)|enter\w*|get (?:the |all (?:the )?)?(?:water|liquid|milk|it|everything) (?:in|into)\b",
+    (r"(?:go|goes|going|went|get|gets|land|lands|plop|plops|plopped|make it|makes it|fall|falls|transfer\w*|arrive\w*|finds? (?:its|their) way) (?:more |mostly |all )?(?:in|into|inside)\b(?! the way\b)(?! the (?:middle|centre|center)\b)|reach\w*|make it (?:to|into)|enter\w*|get (?:the |all (?:the )?)?(?:water|liquid|milk|it|everything) (?:in|into)\b",
      ALL_IN, False),
     # what misses the bowl lands outside it: not all of it goes in, and it spills
     (r"miss(?:es|ed|ing)?|overshoot\w*|undershoot\w*|fall\w* short"

@@ -105,9 +105,9 @@ _SURFACES = {"table", "tables", "counter", "counters", "countertop", "worktop", 
              "tabletop", "bar", "bartop", "conveyor", "conveyors", "tray", "workbench", "hearth", "deck", "pass",
              "ledge", "boards", "shelf", "windowsill", "sill"}
 #: What a bowl may stand on that is a liquid's name or no table: a surface only after "on"
-#: ("sitting on wet concrete", "on a wet floor").
+#: ("sitting on wet concrete", "on a wet floor", "bowl on wet glass").
 _GROUND = {"concrete", "cement", "floor", "ground", "marble", "granite", "stone", "tile", "tiles", "slab", "lino", "plate", "decking",
-           "surface", "surfaces"}
+           "surface", "surfaces", "glass"}
 #: The word that may end its name: "a wet bar top", "a slick conveyor belt".
 _ENDS = {"top", "tops", "belt", "belts"}
 _GRIP = {"slippery": "slippery", "slick": "slippery", "slippy": "slippery", "greasy": "slippery", "smooth": "slippery",

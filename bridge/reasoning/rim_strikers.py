@@ -171,12 +171,14 @@ def stream_striking(text: str, said: dict[str, None]) -> str:
     """`text` without the liquid's striking the bowl's rim when what it did next is told ("the stream
     hit the edge of the bowl and jumped out": it jumped out): the liquid striking the bowl is no outcome
     (the source's striking it is, and is read), what it does next is. The liquid said to strike the rim in a
-    condition ("does the bowl wobble when the stream hits the edge of it") says where it is poured: near the rim."""
+    condition ("does the bowl wobble when the stream hits the edge of it") says where it is poured: near the rim
+    (a liquid named there is kept: "when the honey lands on the edge of it")."""
     if not re.search(r"\b(?:hit|hits|hitting|struck|strikes|striking|lands)\b", text):
         return text
     if (when := _landing_on_rim().search(text)) is not None:       # "if the water hits the edge, does it flip"
         said.setdefault(f"{when.group(0).strip()}: read as poured near the rim, where the stream lands")
-        return f"{text[:when.start()]}{when.group('when')} i pour near the rim{text[when.end():]}"
+        liquid = "" if when.group("liquid") in ("stream", "jet", "flow", "pour", "liquid") else f" the {when.group('liquid')}"
+        return f"{text[:when.start()]}{when.group('when')} i pour{liquid} near the rim{text[when.end():]}"
     m = _striking().search(text)
     if m is None:
         return text
@@ -196,6 +198,6 @@ def _striking() -> re.Pattern:
 def _landing_on_rim() -> re.Pattern:
     """The liquid striking the bowl's rim, said as the condition of what is asked ("if the water hits the edge")."""
     liquids = alternation(["stream", "jet", "flow", "pour", "liquid", "water", *names("liquid")])
-    return re.compile(rf"\b(?P<when>if|when|whenever|once|as soon as|the moment) (?:the |its |my |a )?(?:{liquids})"
+    return re.compile(rf"\b(?P<when>if|when|whenever|once|as soon as|the moment) (?:the |its |my |a )?(?P<liquid>{liquids})"
                       rf" (?:hits|hit|strikes|lands on) (?:right )?(?:on )?(?:the |its )?(?:bowl |destination )?"
                       rf"(?:rim|edge|lip|side(?: wall)?)(?: of (?:it|the bowl|the destination))?\b(?! and\b)")

@@ -211,10 +211,10 @@ _CAN_EMPTY = (r"\b(?:can|could) (?:i|we|you) (?:still )?(?:empty|drain) (it|(?:t
 #: Wanting, compiled when cued: "I need none of it on the table" (so that none goes on it),
 #: "how do I get all the soup into the bowl" (so that it goes in).
 _WANTING_CUED = (
-    # "I don't want the cup to touch the bowl" ("don't want ...", as notes say it): so that it does not
-    (Cued(r"(?:\b(?:i|we) |^)(?:do not|never) (?:want|wish)(?: for)? (it|them|the (?!source\b)[a-z]+|any(?: of it| of the (?:[a-z]+ )?[a-z]+)?(?: in the [a-z]+)?)"
+    # "I don't want the cup to touch the bowl" ("don't want ...", "not wanting ...", as notes say it): so that it does not
+    (Cued(r"(?:(?:\b(?:i|we) |^)(?:do not|never) (?:want|wish)|^not wanting)(?: for)? (it|them|the (?!source\b)[a-z]+|any(?: of it| of the (?:[a-z]+ )?[a-z]+)?(?: in the [a-z]+)?)"
           r" (?:to |(?=[a-z]+ing\b))",
-          ("not want", "never want", "not wish", "never wish")), r"so that \1 does not "),
+          ("not want", "never want", "not wish", "never wish", "not wanting")), r"so that \1 does not "),
     # "I want every drop in the bowl": so that it goes in
     (Cued(r"(?:^|(?<=[.,;:!?] )|\b(?:i|we) )(?:want|need|would like) (every drop|all of it|it all|everything|all (?:of )?the \w+)"
           r" (?=(?:in|into|inside)\b)",

@@ -165,7 +165,7 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     # "pour high and not get any splashing": wanted as "without getting any"
     text = re.sub(r"\band (?:not|never) (?:get|have|cause|make)(?= (?:any|a)\b)",
                   lambda m: said.setdefault(f"{m.group(0)}: read as without getting") or "without getting", text)
-    text = re.sub(r"\band (?:not|never) (spill|splash|drip)(?= *(?:[?.!,;]|$))",        # "... from high and not spill?"
+    text = re.sub(r"\band (?:not|never) (spill|splash|drip)(?: (?:a single|one|a) drop)?(?= *(?:[?.!,;]|$))",  # "... and not spill?"
                   lambda m: said.setdefault(f"{m.group(0)}: read as without {m.group(1)}ing") or f"without {m.group(1)}ing", text)
     # an outcome forbidden is one wanted not to happen: "no splashing allowed" is "without splashing"
     text = re.sub(r"\bno ([a-z]+ing) (?:allowed|permitted|please)\b",
