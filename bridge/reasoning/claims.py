@@ -12,7 +12,8 @@ question ("is she right or is it the bowl?") is left as written. An outcome
 asked whether it is normal, or bad ("is it bad if the bowl tips when i pour
 on the side"), is asked whether it happens. A claim
 of an outcome checked with a tag ("it won't spill, right?", "jug not
-touching bowl right?", "..., slides or not") is asked, the tag said back."""
+touching bowl right?", "..., slides or not") is asked, the tag said back. Advice against a pour, its
+reason asked ("mommy says dont pour from up high but why"), asks of that pour."""
 from __future__ import annotations
 
 import re
@@ -30,6 +31,9 @@ _CHECK = (r"(?:is (?:that|it|this|she|he|they) (?:true|right|correct|a myth)|(?:
 #: What may follow the check: nothing asked besides ("or not", "or is she making it up").
 _AFTER = r"(?: or (?:not|no|what|(?:is|are) (?:she|he|they) (?:making it up|wrong|lying)|(?:does|do) it not matter))?[?.! ]*$"
 _SAID = re.compile(rf"^(?:so |hey |hi )?{_WHO} {_SAYS} (?P<claim>.+?)(?: ?[,.;:!?-]+)? (?:{_CHECK}){_AFTER}")
+#: Advice against a pour told, its reason asked: "mommy says dont pour from up high but why, does it make a big splash".
+_ADVICE = re.compile(rf"^(?:so )?{_WHO} {_SAYS} (?:(?:i|we|you) )?(?:should not|do not|never|not to) (?P<scene>[^,.;:?!]+?),?"
+                     r" (?:but )?why\b[?.! ]*(?:,? (?P<rest>.+?))?[?.! ]*$")
 #: An outcome asked whether it is usual, or bad: "is it bad if the bowl tips when i pour ...", "is it normal that it splashes".
 _IS_IT_USUAL = re.compile(r"^(?:so )?is it (?:really |just )?(?:normal|bad|usual|expected|weird|strange)(?: that| if| when) (?P<claim>.+?)[?.! ]*$")
 _IS_IT_TRUE = re.compile(r"^(?:so |hey |hi )?is it (?:really )?(?:true|right|correct)(?: that| say)? (?P<claim>.+?)[?.! ]*$")
@@ -59,6 +63,9 @@ def claim_asked(text: str) -> tuple[str, tuple[str, ...]]:
     """`text` (normalised) with a claim asked to be checked read as the
     claim asked, and what is said back; `text` as it is otherwise. A claim
     of an outcome checked with a tag ("it won't spill, right?") is asked."""
+    if advice := _ADVICE.match(text):          # what the advice warns of, asked of the pour it warns against
+        asked = f"if i {advice.group('scene').removeprefix('to ')}, {advice.group('rest') or 'what happens'}?"
+        return asked, (f"{text.strip(' ?.!')}: read as the pour advised against, asked: {asked}",)
     usual = _IS_IT_USUAL.match(text)
     if usual and any(_outcome(w) for w in re.findall(r"[a-z]+", usual.group("claim"))):
         asked = f"{_set_off(usual.group('claim'))}?"          # "is it bad if the bowl tips ...": does it

@@ -46,7 +46,9 @@ _SCENE = (r"(?:from|at|near|over|above|below|under|with|by|in|on|off|close|close
           # a way said by its verb: "or come in fast and pour from higher up"
           r"|come|bring|hold|held|keep|pour|move|use"
           # a liquid said by how it runs: "pouring thick cream at 90 degrees or thin milk at 45 degrees"
-          r"|thin|thick|runny|sticky|watery)\b")
+          r"|thin|thick|runny|sticky|watery"
+          # how heavy or slippery the body said before it is: "does it matter if the bowl is heavy or light"
+          r"|heavy|heavier|light|lighter|slippery|grippy|bouncy)\b")
 #: A second scene's first words that are no scene: an outcome ("or spilling"), or what asks.
 _NOT_A_SCENE = (r"(?:spill|splash|overflow|drip|leak|slid|slip|toppl|wobbl|tip(?:ping|s)? over|anything|something"
                 r"|nothing|everything|either|neither)")

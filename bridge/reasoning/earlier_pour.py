@@ -115,8 +115,8 @@ _BETTER = re.compile(r"\b(?:is|will|would) (?:it|that|this) (?:be )?(?:any )?bet
 HELPS = re.compile(r"\b(?:will|would|does|do|could|can|might) (?P<scene>(?:a|an|the|my|some) [a-z ]+?|[a-z]+ing\b[a-z ]*?"
                    r"|cent(?:er|re)d?)"      # "would center have fixed it": poured over the middle
                    r" (?:(?:have )?(?:fix|stop|prevent|solve)(?:ed)?(?: (?:it|that|this))?|(?:have )?help(?:ed)?"
-                   r"|have (?:stayed put|stayed|kept (?:it|them) (?:in|still|upright|put)|worked|been better)"
-                   r"|(?:stay put|stay|keep (?:it|them) in|work|be better)"
+                   r"|have (?:stayed put|stayed(?: upright| up| standing)?|kept (?:it|them) (?:in|still|upright|put)|worked|been better)"
+                   r"|(?:stay put|stay(?: upright| up| standing)?|keep (?:it|them) in|work|be better)"
                    # the scene as the cause of what was told: "does pulling back fast do that?"
                    r"|(?:do|cause) (?:that|this))\b")
 

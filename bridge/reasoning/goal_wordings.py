@@ -15,8 +15,8 @@ VALUE = (r"(?:(?:pour|pouring) (?=height|angle|speed|position))?"        # ("is 
 #: Emptying the source, wanted: "I'd like to empty the whole mug".
 _EMPTYING_WANTED = (r"\b(?:i|we) (?:want|need|would like|wish|am trying|are trying) to (?:empty|drain) (?:out )?(?:the whole"
                     r"|all of the|all the|the entire|the) ([a-z]+)")
-#: A goal of emptying the source: "goal: empty the bottle completely".
-_EMPTYING = (r"\b(?:goal|aim|objective|task|target)s?(?: is)?:? (?:to )?(?:empty|drain) (?:out )?(?:the whole|all of the"
+#: A goal of emptying the source: "goal: empty the bottle completely", "goal is to pour out the whole bottle".
+_EMPTYING = (r"\b(?:goal|aim|objective|task|target)s?(?: is)?:? (?:to )?(?:empty|drain|pour out) (?:out )?(?:the whole|all of the"
              r"|all the|the entire|the) ([a-z]+)(?: (?:completely|fully|entirely|totally))?")
 
 
@@ -86,6 +86,10 @@ WANTING = tuple((re.compile(p), r) for p, r in (
      "so that the jug does not touch the bowl"),
     (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:the )?[a-z]+ (?:not|never) touching (?:the )?[a-z]+(?: at all)?(?: the (?:whole|entire) time)?"
      + _ASKED_AFTER, "so that the jug does not touch the bowl"),
+    # ... or with no source said first and no comma before the asking ("not touching the bowl at all with the spout is
+    # that possible if i pour from 5cm")
+    (r"^(?:not|never) touching (?:the )?[a-z]+(?: at all)?(?: with (?:the |my |its )?[a-z]+)?(?: the (?:whole|entire) time)?"
+     r"(?= (?:is (?:it|that|this)|it is|that is|thats) possible\b)", "so that the jug does not touch the bowl,"),
     # "is there any way to pour where the container never touches the bowl": so that it does not
     (r"\b((?:any|a|some) way to pour(?: it)?) where (?=(?:it|the [a-z]+|nothing|none)\b)", r"\1 so that "),
     # a drop got on a place, or any of it getting there: landing there ("without getting a single drop on the

@@ -84,7 +84,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     # in, and none of it outside: "will it glob on the rim or go in clean", "does it stay clean"
     (r"(?:go|goes|going|went|get|gets|land|lands) (?:in|into)(?: the \w+)? clean(?:ly)?\b", (*ALL_IN, "no_spill"), False),
     (r"(?:stay|stays|staying|stayed|keep|keeps|remain|remains) (?:nice and )?clean\b", ("no_spill",), False),
-    (r"(?:stay|stays|remain|remains|keep|keeps) (?:upright|standing)", ("destination_upright",), False),
+    (r"(?:stay|stays|remain|remains|keep|keeps) (?:upright|standing|up(?= *(?:[?.!,;]|$| (?:if|when|while|or|and)\b)))",
+     ("destination_upright",), False),
     # tipped or fallen off what it stands on: moved, and fallen ("the bowl just flipped off the counter")
     (r"(?:flip(?:s|ped|ping)?|tip(?:s|ped|ping)?(?: over)?|toppl\w*|tumbl\w*|fall|falls|falling|fell) off"
      r"(?= (?:the |my |our )?(?:table|counter|countertop|worktop|bench|tray|shelf|stool)\b)", (*STILL, "destination_upright"), True),
@@ -144,8 +145,10 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:(?<=bowl )|(?<=bowl just ))(?:jump|jumps|jumped|jumping|hop|hops|hopped|hopping)\b(?! (?:out|over|up|back|off)\b)"
      # or away from who pours ("it can move away from me?")
      r"|(?:mov(?:e|es|ed|ing)|slid\w*|slip\w*|go|goes|going|went) away from (?:me|us|you|him|her|them)\b", STILL, True),
-    # struck and moved: "the bowl gets knocked sideways", "it banged into the bowl and knocked it aside"
+    # struck and moved: "the bowl gets knocked sideways", "it banged into the bowl and knocked it aside", "knocked around"
     (r"(?:knock|bump|nudg|bash|bang)\w*(?: it| them| the \w+)? (?:sideways|aside|across|along|out of place)\b", ("source_clear", *STILL), True),
+    # knocked about, by whatever knocks it (the stream too): moved
+    (r"knock\w*(?: it| them| the \w+)? (?:around|about)\b", STILL, True),
     (r"(?:giv(?:e|es|ing)|gave) (?:a |any |some )?(?:hit|knock|bump|bang|touch)s?(?: to)?(?= (?:the|a|an|my|its|it)\b)"   # "giving a hit to the bowl"
      r"|bump\w*|hit(?:s|ting)?|touch\w*|collid\w*|crash\w*|knock\w*|clip(?:s|ped)?|strike\w*"
      r"|bonk\w*|bang\w*|intersect\w*|clash\w*|graz(?:e|es|ed|ing)|scrap(?:e|es|ed|ing)|nudg\w*|clink\w*|clang\w*|clonk\w*|clunk\w*|clank\w*|slam\w*(?! *(?:[,.;!?]|$|tonight\b))"
