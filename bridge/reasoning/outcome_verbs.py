@@ -40,8 +40,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      rf"|(?:makes? (?:a |any |big |much )*)?(?:splash\w*|splatter\w*|slosh\w*|{_SLOP}) outside\b"
      # thrown back up out of the bowl: "splash back", "splash-back expected?"
      r"|(?:splash|splatter)(?:es|ed|ing)? ?back\b(?! (?:in|into|out)\b| up\b(?! (?:at|toward|towards|onto|on)\b))|splashbacks?\b"
-     rf"|overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*|{_SLOP}|splash\w*|splatter\w*|fizz\w*"
-     r"|foam\w*|froth\w*|bubbl\w*|boil\w*) over"
+     # (not foaming or boiling over: the vocabulary's liquid does neither, everyday.txt refuses it)
+     rf"|overflow\w*|(?:run|runs|running|ran|spill\w*|slosh\w*|{_SLOP}|splash\w*|splatter\w*) over"
      r"(?: the (?:rim|edge|top|side)s?)?"
      r"|(?:(?:come|comes|came|coming|go|goes|went|going) )?(?:bounc|jump|leap|hop|climb|fly|flies|flew|flying)\w* (?:right |straight )?(?:back )?(?:up )?(?:and )?(?:over|out(?: of)?)|flood\w*"
      r"|(?:go|goes|going|went|get|gets|come|comes|came) (?:right |straight )?over(?= the (?:far |near |other |opposite |back |front )?"

@@ -9,8 +9,12 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
+from pantarhei.bridge.errors import UserError
 from pantarhei.bridge.reasoning.everyday import alternation, names
 
+#: Why the source set on the bowl (rested, put) is refused: leaning it there is pouring low near the rim.
+_SET_ON = ("no proposition sets the source on the bowl, a touch (whether it hits the bowl is asked): say where it is"
+           " held (\"pour low near the rim\")")
 #: Containers that are the destination when a lip is named: the lip of one is its rim.
 _DESTINATIONS = frozenset(("bowl", "dish", "basin", "tub", "bucket", "pail", "vat", "container", "destination", "receptacle"))
 #: A lip said after these is a place ("over the lip of the cup", "drip off the lip"): not the source's part.
@@ -78,9 +82,13 @@ def source_on_rim(text: str, said: dict[str, None]) -> str:
     as itself ("does the cup touch the rim?", "bottle touching bowl rim?", "the cup touches the rim when
     I pour low?"), and a touch not wanted ("without the jar touching the rim") is a goal: neither is
     rewritten, nor is a condition that asks whether ("tell me if the jug touches the rim when I pour low").
-    The source set on the bowl by someone in a condition ("when I leaned the pitcher on
-    it", "if I rest the jug on the rim") is read so too."""
+    The source leaned on the bowl by someone in a condition ("when I leaned the pitcher on
+    it") is read so too; one set there ("if I rest the jug on the rim", "when i put the jug on it") is refused."""
     def set_on_rim(m: re.Match) -> str:
+        if not m.group("verb").startswith("lean"):      # "if I rest the jug on the rim": set there, a touch said
+            raise UserError(f"could not place \"{m.group(0)[len(m.group('when')) + 1:]}\": {_SET_ON}")
+        if m.group("when") not in ("if", "when", "while", "once"):
+            return m.group(0)           # ("and i leaned it on the rim": told, not a condition)
         said.setdefault(f"{m.group(0)[len(m.group('when')) + 1:]}: read as low near the rim, where the source meets it"
                         " (no proposition says a touch)")
         return f"{m.group('when')} the {m.group('how') or ''}{m.group('source')} low near the rim"     # ("the heavy jug")
@@ -117,9 +125,10 @@ def _set_on_rim() -> re.Pattern:
     source, a bucket too: "if I lean the bucket on its lip")."""
     sources, destinations = alternation(_strikers()), alternation(_DESTINATIONS - {"container"})
     return re.compile(
-        rf"\b(?P<when>if|when|while|once) (?:i|we|you|he|she|they) (?:lean|leans|leaned|leant|leaning|rest|rests|rested|resting"
-        rf"|prop|props|propped|propping|balance|balances|balanced|balancing) (?:the|my|a|her|his|our) (?P<how>[a-z]+ )?(?P<source>{sources})"
-        rf" (?:on|against) (?:it|(?:its|the) (?:rim|edge|lip)(?: of (?:the |my |a )?(?:{destinations}))?"
+        rf"\b(?P<when>if|when|while|once|whenever|every time|each time|and) (?:i|we|you|he|she|they) (?P<verb>lean|leans|leaned|leant|leaning|rest|rests|rested|resting"
+        rf"|prop|props|propped|propping|balance|balances|balanced|balancing|put|puts|putting|set|sets|setting|place|places"
+        rf"|placed|placing|sit|sits|sat) (?:(?:the|my|a|her|his|our) (?P<how>[a-z]+ )?)?(?P<source>{sources})"
+        rf" (?:down )?(?:on|against) (?:it|(?:its|the) (?:rim|edge|lip)(?: of (?:the |my |a )?(?:{destinations}))?"
         rf"|(?:the|my) (?:{destinations})(?:'s (?:rim|edge|lip))?)\b")
 
 
