@@ -70,6 +70,8 @@ class Fullness:
         while i < len(words):
             if words[i] == "full" and words[i + 1:i + 2] and words[i + 1] in _HELD_BOWLS and words[i + 2:i + 3] != ["of"]:
                 raise UserError(f"could not place \"{' '.join(words[max(0, i - 1):i + 2])}\": {HOLDS_LIQUID}")   # "a nearly full bowl"
+            if words[i] == "keep" and _kept_pouring(words, i):     # "will it overflow if i keep pouring"
+                raise UserError(f"could not place \"{' '.join(words[i - 1:i + 2 + (words[i + 1] == 'on')])}\": {FILLS_BOWL}")
             if words[i] == "full" and (bowl := _bowl_full(words, i)) is not None:      # "the bowl is already full", "bowl full."
                 raise UserError(f"could not place \"{' '.join(words[bowl:i + 1])}\": {HOLDS_LIQUID}")
             share, end = _filled_to(words, i) if words[i] in _FILLING else (None, i)
@@ -92,6 +94,15 @@ def _of_the_bowl(words: list[str], i: int) -> bool:
         w in _HELD_BOWLS and before[k + 1:k + 2] in (["is"], ["was"], ["are"], ["were"], ["s"]) for k, w in enumerate(before))
 
 
+def _kept_pouring(words: list[str], i: int) -> bool:
+    """Whether "keep" at `i` goes on pouring into the bowl until it is full, in a condition ("if i keep
+    pouring", "and you keep going"), not where ("keep pouring on one side"), nor what others keep doing."""
+    k = i + 1 + (words[i + 1:i + 2] == ["on"])
+    return (words[i - 2:i - 1] in (["if"], ["when"], ["and"], ["once"]) and words[i - 1] in ("i", "you", "we")
+            and words[k:k + 1] in (["pouring"], ["going"])
+            and words[k + 1:k + 2] not in (["on"], ["from"], ["at"], ["over"], ["off"], ["into"], ["in"], ["to"]))
+
+
 def _bowl_full(words: list[str], i: int) -> int | None:
     """Where the bowl is said, if "full" at `i` is said of it as it stands ("the bowl is already full", "bowl
     full"), not wanted of it ("i want the bowl full", "get the bowl full": seeking.py's); else None."""
@@ -111,14 +122,24 @@ _BOWL_TO = frozenset(("about", "around", "roughly", "approximately", "only", "ju
 
 def _bowl_filled(words: list[str], i: int) -> int | None:
     """Where the filling starts, if the share said at `i` is one the bowl is filled to: "fill a glass
-    bowl about half full"; else None."""
+    bowl about half full", "want the bowl to end up half full"; else None."""
     for k in range(i - 1, max(-1, i - 7), -1):
         if words[k] in _FILLING:
             bowl = next((b for b in range(i - 1, k, -1) if words[b] in _HELD_BOWLS), None)
             return k if bowl is not None and all(w in _BOWL_TO for w in words[bowl + 1:i]) else None
         if words[k] in (",", ";", ".", "and", "then"):
-            return None
-    return None
+            break
+    # ... or wanted to end up so: "i want the bowl to end up exactly half full", "get the bowl about half full"
+    bowl = next((b for b in range(i - 1, max(-1, i - 7), -1) if words[b] in _HELD_BOWLS), None)
+    if bowl is None or not all(w in _BOWL_TO | _ENDING for w in words[bowl + 1:i]):
+        return None
+    wanted = any(words[k] in _WANTING or words[k - 1:k + 1] == ["so", "that"]      # (a want is read as "so that" by now)
+                 for k in range(bowl - 1, max(-1, bowl - 4), -1))
+    return bowl - (words[bowl - 1:bowl] in (["the"], ["my"], ["a"])) if wanted else None
+
+
+#: Words of the bowl ending up filled to a share: "the bowl to end up half full".
+_ENDING = frozenset(("end", "ends", "ended", "ending", "be", "is"))
 
 
 #: Verbs of filling the source, said with the share it is filled to: "fills the cup halfway".
