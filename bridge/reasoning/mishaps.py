@@ -263,6 +263,22 @@ def mishap(text: str) -> tuple[str, tuple[str, ...]]:
     return text, ()         # anything else asked: the question as written
 
 
+#: Another bowl or source said to help, the pour told kept: "would a heavier bowl stay up".
+_OTHER_BODY = re.compile(r"(?:a|an|the|my) (?:[a-z]+ )?(?:heavier|lighter|heavy|light|slippier|grippier|bouncier)"
+                         r" (?:[a-z]+ )?(?:bowl|dish|basin|jug|pitcher|bottle|cup|mug|one)$")
+
+
+def _scene_told(clauses: list[str], tells: dict, poured: str) -> list[str]:
+    """The clauses of a mishap told that tell nothing gone wrong: those with no outcome, and those saying when
+    it went wrong ("when i emptied the heavy saucepan into it"), the liquid told first."""
+    scene = [re.sub(rf"^(?:{WHEN},? |as soon as (?=\w+ start))", "", c) for c in clauses if not any(bad for _, bad in tells[c]) and (
+        re.match(r"(?:when|while|as|after|once|even though|although|though) ", c) or not tells[c])
+        and not _landing().fullmatch(c)]       # "the syrup hit the bowl": the pour landing, told with no scene in it
+    if poured and not any(poured.strip() in c for c in scene):     # the liquid told is the pour's
+        scene.insert(0, f"pouring{poured}")
+    return scene
+
+
 #: A property of the bowl or of the source told, which the one asking has and keeps: "my bowl is very light".
 _PROPERTY = r"(light|heavy|slippery|slick|bouncy|grippy)"
 _BOWL_TOLD = re.compile(rf"\b(?:bowl|dish|basin)s? (?:is|was|are|were) (?:(?:very|really|quite|so|super|too) )?{_PROPERTY}\b"
@@ -321,6 +337,9 @@ def _read(told: str, asked: str, present: bool = True) -> tuple[str, tuple[str, 
         m = helps.match(re.sub(r"^so ", "", asked))
         if m is not None and re.fullmatch(r"(?: (?:it|that|this))?[?.! ]*", m.string[m.end():]):
             kept = f"pouring{poured}, " if poured and not says_a_liquid(m.group("scene")) else ""   # unless another is said
+            if _OTHER_BODY.match(m.group("scene")):     # another bowl or source: the pour told kept ("would a heavier bowl ..."),
+                body = m.group("scene").split()[-1]     # not what it told of that body ("my bowl is really light")
+                kept = "".join(f"{c}, " for c in _scene_told(clauses, tells, poured) if not re.search(rf"\b{body}\b", c))
             rest = f"{kept}{how} {m.group('scene')}, {question}?"
             return rest, (said, f"{asked.strip(' ?.!')}: read as {rest.strip(' ?')}, as the pour told did")
     m = _TOO.match(asked)
@@ -338,11 +357,7 @@ def _read(told: str, asked: str, present: bool = True) -> tuple[str, tuple[str, 
             return None         # the cause of a pour told with a size, which the answer would leave out
         # the clauses that tell nothing gone wrong: those with no outcome, and those saying when it went wrong
         # ("when i emptied the heavy saucepan into it")
-        scene = [re.sub(rf"^(?:{WHEN},? |as soon as (?=\w+ start))", "", c) for c in clauses if not any(bad for _, bad in tells[c]) and (
-            re.match(r"(?:when|while|as|after|once|even though|although|though) ", c) or not tells[c])
-            and not _landing().fullmatch(c)]       # "the syrup hit the bowl": the pour landing, told with no scene in it
-        if poured and not any(poured.strip() in c for c in scene):     # the liquid told is the pour's
-            scene.insert(0, f"pouring{poured}")
+        scene = _scene_told(clauses, tells, poured)
         if (again := _AGAIN.match(asked)) and again.group("when"):
             scene.append(again.group("when").strip())
         rest = f"{', '.join(scene)}, {question}?" if scene else f"{question}?"

@@ -87,7 +87,7 @@ def source_on_rim(text: str, said: dict[str, None]) -> str:
     def set_on_rim(m: re.Match) -> str:
         if not m.group("verb").startswith("lean"):      # "if I rest the jug on the rim": set there, a touch said
             raise UserError(f"could not place \"{m.group(0)[len(m.group('when')) + 1:]}\": {_SET_ON}")
-        if m.group("when") not in ("if", "when", "while", "once"):
+        if m.group("when") not in ("if", "when", "while", "once") or m.group("source") == "it":
             return m.group(0)           # ("and i leaned it on the rim": told, not a condition)
         said.setdefault(f"{m.group(0)[len(m.group('when')) + 1:]}: read as low near the rim, where the source meets it"
                         " (no proposition says a touch)")
@@ -127,8 +127,8 @@ def _set_on_rim() -> re.Pattern:
     return re.compile(
         rf"\b(?P<when>if|when|while|once|whenever|every time|each time|and) (?:i|we|you|he|she|they) (?P<verb>lean|leans|leaned|leant|leaning|rest|rests|rested|resting"
         rf"|prop|props|propped|propping|balance|balances|balanced|balancing|put|puts|putting|set|sets|setting|place|places"
-        rf"|placed|placing|sit|sits|sat) (?:(?:the|my|a|her|his|our) (?P<how>[a-z]+ )?)?(?P<source>{sources})"
-        rf" (?:down )?(?:on|against) (?:it|(?:its|the) (?:rim|edge|lip)(?: of (?:the |my |a )?(?:{destinations}))?"
+        rf"|placed|placing|sit|sits|sat) (?:(?:the|my|a|her|his|our) (?P<how>[a-z]+ )?)?(?P<source>{sources}|it)"
+        rf" (?:down )?(?:right |just |directly )?(?:on|against) (?:it|(?:its|the) (?:rim|edge|lip)(?: of (?:the |my |a )?(?:{destinations}))?"
         rf"|(?:the|my) (?:{destinations})(?:'s (?:rim|edge|lip))?)\b")
 
 
