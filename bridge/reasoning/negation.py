@@ -6,7 +6,7 @@ negate nothing. Not one of two moves the other way is not the other
 ("don't lift it" may leave it where it is): still_between says so."""
 from __future__ import annotations
 
-from pantarhei.bridge.reasoning.wording import CLAUSE_ENDS, Token, stem
+from pantarhei.bridge.reasoning.wording import CLAUSE_ENDS, SO_BEFORE, Token, stem
 
 #: Words that end the scope of a negation within a clause.
 _SCOPE_ENDS = CLAUSE_ENDS | {"and", "or", "yet", "if", "when", "unless", "because"}
@@ -34,7 +34,8 @@ def scope_ends(tokens: list[Token]) -> list[int]:
     ends = [len(tokens)] * len(tokens)
     for j in range(len(tokens) - 2, -1, -1):
         nxt = tokens[j + 1]
-        ends[j] = j + 1 if nxt.clause != tokens[j].clause or nxt.word in _SCOPE_ENDS else ends[j + 1]
+        so_much = nxt.raw == "so" and j + 2 < len(tokens) and tokens[j + 2].raw in SO_BEFORE    # "not so high"
+        ends[j] = j + 1 if nxt.clause != tokens[j].clause or (nxt.word in _SCOPE_ENDS and not so_much) else ends[j + 1]
     for j in range(1, len(tokens) - 1):      # a question asked negatively ("can't I pour from high?") negates nothing
         if tokens[j].word == "not" and tokens[j - 1].raw in _AUX and tokens[j + 1].raw in _SUBJECTS:
             ends[j] = j + 1

@@ -84,7 +84,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     # in, and none of it outside: "will it glob on the rim or go in clean", "does it stay clean"
     (r"(?:go|goes|going|went|get|gets|land|lands) (?:in|into)(?: the \w+)? clean(?:ly)?\b", (*ALL_IN, "no_spill"), False),
     (r"(?:stay|stays|staying|stayed|keep|keeps|remain|remains) (?:nice and )?clean\b", ("no_spill",), False),
-    (r"(?:stay|stays|remain|remains|keep|keeps) (?:upright|standing|up(?= *(?:[?.!,;]|$| (?:if|when|while|or|and)\b)))",
+    (r"(?:stay|stays|remain|remains|keep|keeps) (?:upright|standing|up(?= *(?:[?.!,;]|$| (?:if|when|while|or|and)\b)))"
+     r"|be (?:still )?(?:upright|standing)\b",       # "will the bowl still be upright" (of the source, held so: acting.py)
      ("destination_upright",), False),
     # tipped or fallen off what it stands on: moved, and fallen ("the bowl just flipped off the counter")
     (r"(?:flip(?:s|ped|ping)?|tip(?:s|ped|ping)?(?: over)?|toppl\w*|tumbl\w*|fall|falls|falling|fell) off"

@@ -69,7 +69,7 @@ _REST = ("each other|one another|at all times|all the time|the whole time|at any
          # said to happen ("how much spillage occurs")
          "occurs?|happens?|takes place|results|"
          # how much it happens ("does it shift a little"): the outcome's, not an amount of liquid
-         "little|bit|lot|slightly|tiny|millimetre|millimeter|hair|smidge|inch|"
+         "little|bit|lot|slightly|tiny|millimetre|millimeter|hair|smidge|inch|as much(?! as)|as bad(?:ly)?(?! as)|"
          # or more or less of it, against the ordinary pour ("does it spill more if tilted?")
          "more(?! than)|less(?! than)|better(?! than)|worse(?! than)|"
          # or as it did with the ordinary pour ("does it still go into the bowl the same")

@@ -43,8 +43,8 @@ from pantarhei.theory.lexicon import load_vocabulary
 
 #: Words that end a clause (besides punctuation): negation stops there.
 CLAUSE_ENDS = {"but", "then", "while", "whereas", "instead", "rather", "except", "so"}
-#: "so" said of how much after these ("my bowl is so light"): no clause ends there.
-_SO_AFTER = frozenset(("is", "are", "was", "were", "be", "looks", "seems", "feels"))
+#: "so" said of how much after these ("my bowl is so light") or before these ("hold the jug so high"): no clause ends there.
+_SO_AFTER, SO_BEFORE = frozenset(("is", "are", "was", "were", "be", "looks", "seems", "feels")), frozenset("high low far close near much fast quick slow slowly steep steeply tilted hard".split())
 #: A number as a question writes it ("45", "1.5", "-10"): one token.
 NUMBER = r"-?\d+(?:\.\d+)?"
 #: The minus signs a number may be written with: ASCII, U+2212 and the en dash.
@@ -351,7 +351,7 @@ def tokens(text: str) -> list[Token]:
             joined = " ".join(w for w, _, _ in pairs)
     out, clause = [], 0
     for k, (word, raw, said) in enumerate(pairs):
-        if (not re.match(r"[-a-z0-9_]", word) or (word in CLAUSE_ENDS and not (word == "so" and k and pairs[k - 1][0] in _SO_AFTER))
+        if (not re.match(r"[-a-z0-9_]", word) or (word in CLAUSE_ENDS and not (word == "so" and (k and pairs[k - 1][0] in _SO_AFTER or pairs[k + 1:k + 2] and pairs[k + 1][0] in SO_BEFORE)))
                 or (word == "and" and _new_clause([w for w, _, _ in pairs[k + 1:k + 4]]))):
             clause += 1
             if not re.match(r"[-a-z0-9_]", word):
