@@ -78,6 +78,8 @@ class Fullness:
             share, end = (share, end) if share is not None else _share(words, i)
             if share is not None and (filled := _bowl_filled(words, i)) is not None:
                 raise UserError(f"could not place \"{' '.join(words[filled:end])}\": {FILLS_BOWL}")
+            if share is not None and words[end:end + 1] and words[end] in _HELD_BOWLS:       # "a half full bowl"
+                raise UserError(f"could not place \"{' '.join(words[i:end + 1])}\": {HOLDS_LIQUID}")
             if share is not None and _of_the_bowl(words, i):
                 said = i - 1 if words[i - 1] in _HELD_BOWLS else max(0, i - 4)     # ("bowl half full": the note's words)
                 raise UserError(f"could not place \"{' '.join(words[said:end])}\": {HOLDS_LIQUID}")

@@ -187,6 +187,8 @@ def _happened(m: re.Match, names: tuple[str, ...], present: bool = True) -> bool
     """Whether the outcome `m` (of the expectations `names`) is told as having happened to the bowls or the liquid
     (in the present after its subject too, where `present`)."""
     before = m.string[:m.start()]
+    if re.search(r"\b(?:before|until|till|unless|in case) (?:it|they|the \w+) $", before):
+        return False        # what is to be stopped before it happens ("stop before it overflows"), not told
     if re.search(r"\b(?:i|we|you|he|she|they)(?: just)? $", before) and "source_clear" not in names:
         return False        # what the one pouring did ("i tipped the jug"), not an outcome
     if names == STILL and m.group(0).startswith("mov") and re.match(
