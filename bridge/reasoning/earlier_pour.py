@@ -15,7 +15,7 @@ from functools import lru_cache
 from pantarhei.bridge.reasoning.everyday import alternation, names
 
 #: What asks its cause: "why?", "what went wrong", "what did I do wrong".
-CAUSE = re.compile(r"^(?:so |and |but )?(?:why|how come|how|what went wrong(?: there| here)?|what did (?:i|we|he|she|they|you) do wrong|what happened(?: there| here)?"
+CAUSE = re.compile(r"^(?:so |and |but )?(?:why|how come|how|what gives|what went wrong(?: there| here)?|what did (?:i|we|he|she|they|you) do wrong|what happened(?: there| here)?"
                     r"|what(?:s| is)? (?:caused|causes|causing) (?:that|this|it)|what(?:s| is)? the reason(?: for (?:that|this|it))?|why did (?:that|this|it) happen|why is that|why (?:does|did) (?:that|this|it)"
                     r"|why (?:that|this|it) (?:happen|happens|happened|is happening)"      # as learners ask it: "why this happen?"
                     r"|why (?:did|does) (?:it|the bowl) do that|why (?:did not|does not) (?:it|they|the \w+)(?: [a-z]+){0,5}"
