@@ -313,7 +313,7 @@ def _read(told: str, asked: str, present: bool = True) -> tuple[str, tuple[str, 
         named = [g for g, bad in _told(re.split(r" (?:if|when|while|like|because|after|before)\b", re.sub(
             r"^(?:so |and |but )", "", asked.strip(" ?.!")))[0]) if bad]     # asked too ("why" asks the cause)
         if named:
-            failed, told_why, asked = list(dict.fromkeys([*failed, *named])), asked, "why?"
+            failed, asked = list(dict.fromkeys([*failed, *named])), "why?"
     said = f"{told}: read as nothing: a pour told, with what went wrong; the answer is for the one asked"
     when = _phase_told(told)
     wanted, question = _said(_WANTED, failed, when), _said(_ASKED, failed, when)
