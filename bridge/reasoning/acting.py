@@ -55,10 +55,15 @@ def acts(subject: list[str], names: tuple[str, ...], m: re.Match | None = None) 
         w == "source" or (in_the_source(w) and not re.search(rf"\binto (?:\w+ )?(?:\w+ )?{w}\b", m.string))
         for w in head if w not in ("of", "the", "a", "an"))     # ("the jug knocks the bowl over": the bowl)
     liquid = liquids().spans(subject)       # ("pancake batter": a liquid's name, not a pancake)
-    named = re.compile(rf"(?:{destinations()})\b")     # ("my cereal bowl": a bowl's name, not cereal)
-    return bool(actors.intersection(subject)) or held or any(
-        not any(a <= s and e <= b for a, b in liquid) and not (e < len(subject) and named.match(subject[e]))
+    return bool(actors.intersection(subject)) or held or any(     # ("my cereal bowl": a bowl's name, not cereal)
+        not any(a <= s and e <= b for a, b in liquid) and not (e < len(subject) and _bowl_word().match(subject[e]))
         for s, e in around().spans(subject))
+
+
+@lru_cache(maxsize=None)
+def _bowl_word() -> re.Pattern:
+    """A word that names the destination ("bowl", "dish")."""
+    return re.compile(rf"(?:{destinations()})\b")
 
 
 @lru_cache(maxsize=None)

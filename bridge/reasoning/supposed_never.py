@@ -34,13 +34,21 @@ _BY_ME = re.compile(r"\b(if|when) (?:i|we|you) (never|do not) (touch|hit|bump|kn
 _BY_IT = re.compile(r"\b(if|when) ((?:the|my|a) [a-z]+) (?:is|gets) (not|never) (touch|hitt|bump|knock)(?:ed) by ((?:the|my|a) [a-z]+)")
 
 
+def _by_me(m: re.Match) -> str:
+    """_BY_ME's touch said of the source: "if the bottle does not touch the bowl"."""
+    return f"{m.group(1)} {m.group(5)} does not {m.group(3)} {m.group(4)}"
+
+
+def _by_it(m: re.Match) -> str:
+    """_BY_IT's touch said of the source: "if the bottle does not touch the bowl"."""
+    return f"{m.group(1)} {m.group(5)} does not {m.group(4).removesuffix('t')} {m.group(2)}"
+
+
 def never_as_not(text: str) -> tuple[str, tuple[str, ...]]:
     """Normalised `text` with an outcome supposed never to happen said as "does not", and what is said back."""
-    said = tuple(f"{m.group(0)}: read as {m.group(1)} {m.group(5)} does not {m.group(3)} {m.group(4)}" for m in _BY_ME.finditer(text))
-    said += tuple(f"{m.group(0)}: read as {m.group(1)} {m.group(5)} does not {m.group(4).removesuffix('t')} {m.group(2)}"
-                  for m in _BY_IT.finditer(text))
-    text = _BY_ME.sub(r"\1 \5 does not \3 \4", text)
-    text = _BY_IT.sub(lambda m: f"{m.group(1)} {m.group(5)} does not {m.group(4).removesuffix('t')} {m.group(2)}", text)
+    said = tuple(f"{m.group(0)}: read as {_by_me(m)}" for m in _BY_ME.finditer(text))
+    said += tuple(f"{m.group(0)}: read as {_by_it(m)}" for m in _BY_IT.finditer(text))
+    text = _BY_IT.sub(_by_it, _BY_ME.sub(_by_me, text))
     said += tuple(f"never {m.group(0).split(' never ', 1)[1]}: read as does not {m.group(3)}" for m in _NEVER.finditer(text))
     if tagged := _TAGGED.match(text):          # "the jug never touches the bowl ..., right?"
         said += (f"{tagged.group(0)}: read as does {tagged.group(1)} not {tagged.group(2)}",)
