@@ -43,7 +43,7 @@ from pantarhei.bridge.reasoning.properties import SURFACE_SAID, Levels, Surfaces
 from pantarhei.bridge.reasoning.ramps import Ramps
 from pantarhei.bridge.reasoning.speeds import SPEEDS
 from pantarhei.bridge.reasoning.tilt_amounts import FAR_TILTS, NEAR_HORIZONTAL, TILT_AMOUNTS
-from pantarhei.bridge.reasoning.tipping_speed import SAID as TIPPED, TippingSpeed
+from pantarhei.bridge.reasoning.tipping_speed import AT_ONCE_SAID, SAID as TIPPED, AtOnce, TippingSpeed
 
 #: Value words an intensifier may raise to "very" ("incredibly high" is very high; a value
 #: with no "very" of its own is the value: "incredibly heavy" is heavy). "really" is a
@@ -384,7 +384,7 @@ def _everyday() -> list[tuple[Matcher, str, str]]:
 
 
 @lru_cache(maxsize=None)
-def rewrites() -> tuple[tuple[Cued | Matcher | Levels | Values | Surfaces | Ramps | Fullness | Filled | TippingSpeed | NumberWords, tuple[str, ...],
+def rewrites() -> tuple[tuple[Cued | Matcher | Levels | Values | Surfaces | Ramps | Fullness | Filled | TippingSpeed | AtOnce | NumberWords, tuple[str, ...],
                                  str], ...]:
     """Each rewrite in the order applied, with the words it is read as and what is said back: a
     property by its level or its number ("low friction", "a friction of 0.1": properties.py, which
@@ -393,7 +393,7 @@ def rewrites() -> tuple[tuple[Cued | Matcher | Levels | Values | Surfaces | Ramp
     numerals.py), then PHRASES; an entry's phrases as one pattern (cued.py), a section
     of the list as a Matcher."""
     return ((Levels(), (), ""), (Values(), (), ""), (Surfaces(), (), SURFACE_SAID), (Ramps(), (), ""),
-            (Fullness(), (), FULLNESS_SAID), (Filled(), (), "read as a full source"), (TippingSpeed(), (), TIPPED),
+            (Fullness(), (), FULLNESS_SAID), (Filled(), (), "read as a full source"), (TippingSpeed(), (), TIPPED), (AtOnce(), (), AT_ONCE_SAID),
             *((m, tuple(w.split()), said) for m, w, said in _everyday()),
             (NumberWords(), (), ""),
             *((Cued.of(phrases), tuple(words.split()), said[0] if said else "")
