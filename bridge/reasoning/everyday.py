@@ -79,19 +79,16 @@ class Matcher:
     `held`: phrases of `before` that are read with the name, as what the
     container holds, each with the words it is read as ("the honey jar": a
     sticky liquid), before `read_as` (the section's words), unless a phrase
-    of `apart` is said apart from the name ("water from the honey jar": water);
-    `then`: words one of which must come right after a phrase for it to
-    match, and are left as they are ("hot" only before a liquid's name)."""
+    of `apart` is said apart from the name ("water from the honey jar": water)."""
 
-    def __init__(self, phrases, before=(), glass_before=(), held=None, read_as=(), apart=(), then=()):
+    def __init__(self, phrases, before=(), glass_before=(), held=None, read_as=(), apart=()):
         self.table = frozenset(f for p in phrases for f in forms(p))
         self.before = frozenset(f for p in before for f in forms(p))
         self.held = {f: words for p, words in (held or {}).items() for f in forms(p)}
         self.read_as = tuple(read_as)
         self.apart = frozenset(f for p in apart for f in forms(p))
         self.glass_before = frozenset(f for p in glass_before for f in forms(p))
-        self.then = frozenset(tuple(p.split()) for p in then)
-        self.longest = max(map(len, self.table | self.before | self.glass_before | self.then), default=0)
+        self.longest = max(map(len, self.table | self.before | self.glass_before), default=0)
         # the words a phrase may begin with: a word that begins none is passed at once
         self.firsts = frozenset(f[0] for f in self.table | self.before) | _MADE_OF
 
@@ -116,8 +113,6 @@ class Matcher:
                 n, m = 0, self._at(self.table, words, i)
             if not m and words[i] in _MADE_OF and self._at(self.glass_before, words, i + 1):
                 m = 1
-            if m and self.then and not self._at(self.then, words, i + n + m):
-                m = 0
             if m:
                 held = self.held.get(tuple(words[i:i + n])) if n else None
                 if held and not self._said_apart(words, i, i + n + m):

@@ -376,9 +376,9 @@ def _everyday() -> list[tuple[Matcher, str, str]]:
         elif s.words.startswith("bowl"):        # a bowl, or one poured from (nouns.py)
             matcher = Matcher(s.phrases, before=names("liquid", "context"), held=held,
                               read_as=("bowl",), apart=names("liquid"))
-        else:                                   # "hot" only before the liquid's name, read as "liquid"
-            matcher = Matcher(s.phrases, then=("liquid", "sticky liquid", "heavy liquid") if s.words == "temperature" else ())
-        words = {"unclear": UNCLEAR, "bowl poured from": "bowl", "temperature": "hedge"}.get(s.words, s.words)
+        else:
+            matcher = Matcher(s.phrases)
+        words = {"unclear": UNCLEAR, "bowl poured from": "bowl"}.get(s.words, s.words)
         out.append((matcher, words, "" if s.words == "unclear" else s.said_back))
     return out
 

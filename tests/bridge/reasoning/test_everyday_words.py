@@ -15,8 +15,7 @@ from pantarhei.bridge.reasoning.reading import read_question
 KINDS = {"hedge", "material", "bowl", "bowl poured from", "sticky liquid", "heavy liquid", "liquid", "context", "part",
          "unclear", "a bit", "little", "much", "full", "slightly tilted", "steeply tilted", "low", "high",
          "to the side", "very", "start slightly tilted", "into the middle", "right over", "into", "from", "upright",
-         "tilted", "tilted halfway", "slowly", "fast", "slippery destination", "pour", "poured", "near the rim",
-         "temperature"}
+         "tilted", "tilted halfway", "slowly", "fast", "slippery destination", "pour", "poured", "near the rim"}
 
 
 def _phrases(*kinds: str) -> list[tuple[str, str]]:
@@ -105,16 +104,6 @@ def test_a_part_of_a_bowl_is_said_back_as_ignored_and_the_bowl_read(phrase, said
 @pytest.mark.parametrize("phrase,said", _phrases("hedge"))
 def test_a_hedge_is_read_as_nothing(phrase, said):
     assert list(read_question(f"{phrase}, pour from the side").scene) == ["pour_to_side"]
-
-
-@pytest.mark.parametrize("phrase,said", _phrases("temperature"))
-def test_how_hot_a_liquid_is_is_said_back_as_ignored_before_its_name_and_refused_of_a_bowl(phrase, said):
-    question = f"pour {phrase} milk from the side"
-    assert list(read_question(question).scene) == ["pour_to_side"] and _noted(question, phrase, said)
-    assert list(read_question(f"pour {phrase} honey from the side").scene) == ["pour_to_side", "sticky_liquid"]
-    with pytest.raises(UserError) as e:
-        read_question(f"pour from the side into the {phrase} bowl")
-    assert "how hot or cold" in str(e.value) and "\n" not in str(e.value)
 
 
 @pytest.mark.parametrize("phrase,said", _phrases("unclear"))

@@ -457,7 +457,7 @@ REFUSED_SAYING = {
     'start tilted and pour low': 'tilted how far?',
     'pour it all the way': 'all the way: tilted how far?',
     # what the vocabulary cannot say stays refused, naming why
-    'pour milk into the hot bowl': 'how hot or cold the liquid is',
+    'pour hot milk': 'how hot or cold the liquid is',
     'pour milk at 80 degrees celsius': 'how hot or cold the liquid is',
     'pour 80\u00b0C milk': 'how hot or cold the liquid is',
     'pour honey with a viscosity of 2000': 'a viscosity is not a number',
