@@ -24,6 +24,9 @@ _SLOP = r"slop(?!e|ing\b)\w*"
 _THROWN = (rf"spill\w*|spilt|splash\w*|splatter\w*|splat\w*|{_SLOP}|slosh\w*|spray\w*|spurt\w*"
            r"|squirt\w*|escap\w*|spew\w*|gush\w*|leak\w*|drip\w*|dribbl\w*|trickl\w*")
 
+#: What a bowl stands on, which it slides, flies or falls off.
+_STANDS_ON = r"(?:table|counter|countertop|worktop|bench|tray|shelf|stool|desk|board|cart|placemat|mat)"
+
 #: (verb phrase, the expectations it speaks of, whether it happening makes them fail)
 OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (rf"(?:{_THROWN}) (?:(?:back|right|straight|all|up|and) )*(?:over|past|out of|out over|from)(?= (?:the |a |an |my "
@@ -89,7 +92,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      ("destination_upright",), False),
     # tipped or fallen off what it stands on: moved, and fallen ("the bowl just flipped off the counter")
     (r"(?:flip(?:s|ped|ping)?|tip(?:s|ped|ping)?(?: over)?|toppl\w*|tumbl\w*|fall|falls|falling|fell) off"
-     r"(?= (?:the |my |our )?(?:table|counter|countertop|worktop|bench|tray|shelf|stool)\b)", (*STILL, "destination_upright"), True),
+     rf"(?= (?:the |my |our )?{_STANDS_ON}\b)", (*STILL, "destination_upright"), True),
     (r"tip(?:s|ped|ping)?(?: over)?(?! (?:(?:it|them|the \w+) )?(?:(?:past|beyond)\b|(?:to|by|at|up to|no more than|more than"
      r"|less than|at most|at least|under|about) -?\d))"
      # (not the source tipped by whoever pours: "without tipping the pitcher much")
@@ -111,8 +114,11 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:sit|sits|sitting|stand|stands|standing|stay|stays|staying|remain|remains|rest|rests|resting|be)"
      r" (?:still )?(?:in|at) the same (?:spot|place|position|location)", STILL, False),
     # sent off what it stands on: moved, and fallen ("the bowl went flying off the counter")
-    (r"(?:go|goes|going|went|gone|sent) flying off(?= (?:the |my |our )?(?:table|counter|countertop|worktop|bench|tray|shelf|stool)\b)",
+    (rf"(?:go|goes|going|went|gone|sent) flying off(?= (?:the |my |our )?{_STANDS_ON}\b)",
      (*STILL, "destination_upright"), True),
+    # flown or walked off what it stands on, said of the bowl: moved ("will the bowl fly off the table", "or does it walk off")
+    (rf"(?:fly|flies|flew|flying) off(?= (?:the |my |our )?{_STANDS_ON}\b)"
+     r"|(?:(?<=bowl )|(?<=it ))(?:walk|walks|walked|walking) off(?= *(?:[?.!,;]|$))", STILL, True),
     # the way it moves said after it is the moving's ("the bowl scoots sideways", "slides to one side")
     # somewhere else at the end: "does the bowl end up in a different spot than where it started"
     (r"(?:end|ends|ended|ending) up (?:in|at|on) (?:a )?(?:different|another|new) (?:spot|place|position|location)"
