@@ -129,6 +129,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      # "does the bowl do that little wobble thing", "that wobbly spinny thing"; "go for a walk", "zoom away"
      r"|(?:do|does|did|doing|done) (?:a |that |this |the )?(?:little |bit of a |small |weird )?"
      r"(?:(?:wobble|wobbly|jiggle|wiggle|rocking|spinny|shaky|spinning) ){1,2}thing\b"
+     # "will the bowl do a little wobble" (no little liquid), "did a wiggle"
+     r"|(?:do|does|did|doing|done) (?:a |that |this |the )?(?:little |bit of a |small |weird |tiny )?(?:wobble|jiggle|wiggle|shimmy|spin|skid|hop)\b"
      r"|(?:go|goes|going|went|gone) (?:for a walk|walkabout)\b|zoom(?:s|ed|ing)? (?:away|off|across|around|about)\b", STILL, True),
     # (not the source slipping from a hand: "will it slip out of my hand", a drop the vocabulary does not say)
     (r"(?:slid\w*|slip(?:s|ped|ping)?\b(?! (?:out of|outta|from) (?:my|his|her|their|your|our|the|its|a) (?:\w+ )?(?:hand|hands|grip|grasp|fingers|gripper|gloves?)\b)|shift\w*|budg\w*|wobbl\w*|shimm(?:y|ies|ied|ying)\b|jitter\w*|judder\w*|teeter\w*|trembl\w*|quiver\w*|skid\w*|skat(?:e|es|ed|ing)\b|wiggl\w*|jiggl\w*"
@@ -142,7 +144,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:shot|shoot|shoots|shooting) (?:sideways|across|off)\b"
      r"|(?:(?:get|gets|got|getting) )?sent (?:across|flying|sliding|skidding)|displac\w*|(?:(?:get|gets|got|getting|be|being) )?(?:pushed|shoved)\b(?! (?:in|back|away|out|over)\b)|(?:go|goes|going|went|get|gets|getting) (?:wiggly|wobbly|shaky|jiggly|wonky|(?:slippy |slip |slippery )?slidey)"
      r"|mov(?:e|es|ed|ing)\b(?! (?:(?:it|them|the \w+) )?(?:in|away|closer|nearer|further|farther|to|out|back|up"
-     r"|down|over|into|off|towards?)\b)|bounc\w* (?:around|about))(?: sideways| (?:off |over )?to (?:the|one) side| back and forth| to and fro)?\b",
+     r"|down|over|into|off|towards?)\b)|bounc\w* (?:around|about))(?: sideways| (?:off |over )?to (?:the|one) side| back and forth| to and fro)?"
+     # and how, likened: "go all wobbly like jelly" (no sticky liquid), "rock like a boat", "wobbled like crazy"
+     r"(?: like (?:a |an )?(?:jelly|jello|boat|leaf|crazy|mad))?\b",
      STILL, True),       # "move the cup closer": the source's move
     # the bowl moving away or sideways, said of it ("will the bowl move away?", "the bowl just went
     # sideways"; the source moving away is its retreat)

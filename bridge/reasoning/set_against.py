@@ -5,7 +5,7 @@ degrees with 200 ml of oil") or a word the reader cannot place ("vs aim at
 the side wall") refuses the question, naming it, as it would were it said
 alone; so does a scene that differs from the first only in what the
 vocabulary does not say ("glass bowl vs plastic bowl", "cup vs jug": which
-container, what it is made of), the answer being the same for both; otherwise
+container, what it is made of; "from the left or right": which side), the answer being the same for both; otherwise
 the answer would stand for a question that was not asked."""
 from __future__ import annotations
 
@@ -30,6 +30,8 @@ _UNIT = re.compile(r"mm|cm|m|ft|inch\w*|feet|foot|deg\w*|s|secs?|second\w*|ms|g|
 #: A number, as the reader tokenises it (its value is read with its unit).
 _NUMBER = re.compile(r"-?\d")
 _VOLUME = re.compile(r"(?<![\w.])\d+(?:\.\d+)? ?(?:ml|millilit\w*|cl|dl|l|lit(?:re|er)s?|oz|ounces?)\b")
+#: One side set against the other ("from the left or right", read as "the left vs the right").
+_SIDES = re.compile(rf"\b(?:left|right)(?:[- ]hand)?(?: side)? (?:{VERSUS}) (?:the |your |my )?(?:left|right)\b")
 
 
 @lru_cache(maxsize=None)
@@ -49,6 +51,9 @@ def refuse_unsayable(text: str, known: Collection[str], placeable: Collection[st
     if m is None:
         return
     other = m.group("other")
+    if _SIDES.search(text):
+        raise UserError("left or right: the vocabulary's offset names no side, and its two sides are alike: "
+                        "ask of one (\"from the side\", \"offset sideways\")")
     if volume := _VOLUME.search(other):
         raise UserError(f"\"{volume.group(0)}\" of liquid, in the scene set against the first (\"{m.group(0)}\"): "
                         "the vocabulary counts the liquid in particles; say \"a little liquid\", \"some liquid\", "

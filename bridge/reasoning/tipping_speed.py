@@ -7,13 +7,7 @@ alone says how far as much as how fast, and is left to be read as it is),
 and the clause before it a verb of tipping; or said last in the clause that tips it, after
 how far ("tip it halfway fast": tilted halfway, moving in fast); or right after what is
 tipped, named ("tip the pot of jam really slow": moving in slowly, and pouring the pot of
-jam, whose words are read as any are).
-
-Dumped all at once ("if I dump everything in at once", "dump it all in one
-go"): dumping pours what the source holds at once, and is read as tipped
-far (moves.py); the "at once" says nothing more and is shown as ignored
-(AtOnce). Tipped at once ("tip the jug all at once") says fast or far, and
-stays refused (everyday.txt)."""
+jam, whose words are read as any are)."""
 from __future__ import annotations
 
 #: Verbs of tipping the source.
@@ -113,27 +107,3 @@ def _tippable(word: str) -> bool:
 
 
 SAID = "read as the move into the pouring pose, which tilts the source as it goes"
-
-
-#: Verbs of dumping, and the words after one that say it is done at once.
-_DUMPING = frozenset(("dump", "dumps", "dumped", "dumping"))
-_AT_ONCE = (("all", "in", "one", "go"), ("all", "at", "once"), ("in", "a", "single", "go"), ("in", "one", "go"),
-            ("at", "once"))
-#: Words that end what a verb of dumping says: a clause's joints.
-_JOINTS = _ENDS | {"and", "then", "but", "or", "so", "when", "if", "because", "while"}
-
-
-class AtOnce:
-    """The rewrite of "at once" said of dumping (see the module's docstring)."""
-
-    def spans(self, words: list[str]) -> list[tuple[int, int, tuple[str, ...]]]:
-        out, dumping = [], False
-        for i, w in enumerate(words):
-            dumping = w in _DUMPING or (dumping and w not in _JOINTS)
-            said = next((p for p in _AT_ONCE if tuple(words[i:i + len(p)]) == p), None)
-            if dumping and said and not (out and out[-1][1] > i):
-                out.append((i, i + len(said), ("hedge",)))
-        return out
-
-
-AT_ONCE_SAID = "ignored: dumping pours it all at once (dumping is read as tipped far)"

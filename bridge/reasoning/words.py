@@ -21,8 +21,7 @@ The phrases of the stages and the moves between them ("put it back
 upright", "pull it out fast") are moves.py's, a comparison with an
 earlier pour comparisons.py's, a speed said in other words speeds.py's,
 how near the bowl the source is nearness.py's, where it is from the middle
-off_centre.py's, each applied at its place
-in PHRASES.
+off_centre.py's, each applied at its place in PHRASES.
 """
 from __future__ import annotations
 
@@ -43,7 +42,8 @@ from pantarhei.bridge.reasoning.properties import SURFACE_SAID, Levels, Surfaces
 from pantarhei.bridge.reasoning.ramps import Ramps
 from pantarhei.bridge.reasoning.speeds import SPEEDS
 from pantarhei.bridge.reasoning.tilt_amounts import FAR_TILTS, NEAR_HORIZONTAL, TILT_AMOUNTS
-from pantarhei.bridge.reasoning.tipping_speed import AT_ONCE_SAID, SAID as TIPPED, AtOnce, TippingSpeed
+from pantarhei.bridge.reasoning.tipping_speed import SAID as TIPPED, TippingSpeed
+from pantarhei.bridge.reasoning.poured_off import POURED_OFF_SAID, PouredOff
 
 #: Value words an intensifier may raise to "very" ("incredibly high" is very high; a value
 #: with no "very" of its own is the value: "incredibly heavy" is heavy). "really" is a
@@ -384,16 +384,16 @@ def _everyday() -> list[tuple[Matcher, str, str]]:
 
 
 @lru_cache(maxsize=None)
-def rewrites() -> tuple[tuple[Cued | Matcher | Levels | Values | Surfaces | Ramps | Fullness | Filled | TippingSpeed | AtOnce | NumberWords, tuple[str, ...],
-                                 str], ...]:
+def rewrites() -> tuple[tuple[Cued | Matcher | Levels | Values | Surfaces | Ramps | Fullness | Filled | TippingSpeed | PouredOff | NumberWords, tuple[str, ...], str], ...]:
     """Each rewrite in the order applied, with the words it is read as and what is said back: a
     property by its level or its number ("low friction", "a friction of 0.1": properties.py, which
     gives the words of each phrase itself), a speed of tipping said after it ("tip it, nice and
-    slow": tipping_speed.py), the everyday word list, a number said in words ("two inches":
-    numerals.py), then PHRASES; an entry's phrases as one pattern (cued.py), a section
-    of the list as a Matcher."""
+    slow": tipping_speed.py), words said after a verb of pouring ("pour it off":
+    poured_off.py), the everyday word list, a number said in words ("two inches":
+    numerals.py), then PHRASES; an entry's phrases as one pattern (cued.py), a section of the list as a Matcher."""
     return ((Levels(), (), ""), (Values(), (), ""), (Surfaces(), (), SURFACE_SAID), (Ramps(), (), ""),
-            (Fullness(), (), FULLNESS_SAID), (Filled(), (), "read as a full source"), (TippingSpeed(), (), TIPPED), (AtOnce(), (), AT_ONCE_SAID),
+            (Fullness(), (), FULLNESS_SAID), (Filled(), (), "read as a full source"), (TippingSpeed(), (), TIPPED),
+            (PouredOff(), (), POURED_OFF_SAID),
             *((m, tuple(w.split()), said) for m, w, said in _everyday()),
             (NumberWords(), (), ""),
             *((Cued.of(phrases), tuple(words.split()), said[0] if said else "")
