@@ -198,8 +198,8 @@ def _happened(m: re.Match, names: tuple[str, ...], present: bool = True) -> bool
         return False        # the liquid striking the bowl ("the stream hit the rim and sprayed"): no contact of the source
     if names == ("destination_upright",) and not re.match(r"(?:knock|push|shov)", m.group(0)) and (re.match(r" (?:the|a|an|my|his|her|their|it)\b(?! (?:bowl|dish|basin|whole thing)\b)(?!(?: \w+)? over\b)",
                                    m.string[m.end():]) or re.search(
-            r"\b(?:already )$|(?:^|\b(?:the|my|a) )(?!(?:bowl|dish|basin|tub|trough|destination|it|they|that|this|everything)\b)"
-            r"[a-z]+ (?:already |was |is |got )*$", before)):
+            r"\b(?:already )$|\b(?:the|my|a) (?!(?:bowl|dish|basin|tub|trough|destination)\b)[a-z]+ (?:already |was |is |got )*$"
+            rf"|^(?:{alternation(source_names())}) $", before)):
         return False        # tipping something, or something held tipped: the source ("she keeps tipping the jug",
         #                     "i started with the bottle already tipped", a note's "jug tipped too far"); not the
         #                     bowl ("... and tipped the whole thing")

@@ -16,12 +16,10 @@ supposed of a bowl ("if the bowl is moving") is refused. A goal said with the sc
 ("without spilling", "so that the cup does not touch the bowl") is what the person wants:
 an expectation that should hold (or, rarely, fail), for the answer to say whether the
 theory expects it and to point to `plan` for how; a clause joined to a goal by "but" or "and" is
-wanted too, with its own negation ("so nothing spills and the bowl stays
-put": the bowl still).
+wanted too, with its own negation ("so nothing spills and the bowl stays put": the bowl still).
 
 `hear(text)` takes normalised text (wording.normalised) and gives the
-expectations asked, the goals as literals ("no_spill", "neg(no_spill)"),
-the phrases heard and the text left for the scene.
+expectations asked, the goals as literals ("no_spill", "neg(no_spill)"), the phrases heard and the text left for the scene.
 """
 from __future__ import annotations
 
@@ -136,7 +134,9 @@ def _patterns() -> tuple[re.Pattern, ...]:
         rf"(?: or not\b| or (?:it |they )?(?:stay|stays)(?= *[?.!]* *$))?")      # ("is the bowl moving on the table or it stay?")
     # (or said alone: "splashes?", "drip everywhere?")
     nominal = re.compile(r"\b(?:(?:is|will) there (?:be )?)?(?:any|a|no|some) (?:little |small |big |trail of |line of )?(?P<v1>spill(?:s|age)?"
-                         r"|splash(?:es)?|mess|drips?|puddles?)\b(?! of\b)|\b(?:any|some) (?:spilled|spilt)(?= *[?.!]* *$)"
+                         r"|splash(?:es)?|mess|drips?|puddles?|(?<=any )(?:spilling|splashing|dripping))\b(?! of\b)|\b(?:any|some) (?:spilled|spilt)(?= *[?.!]* *$)"
+                         # the bowl moving, named last: "bowl on a slippery tray, any sliding"
+                         r"|\b(?:any|no) (?P<moved>sliding|slipping|wobbling|wobble|movement|moving|shifting|rocking)(?= *[?.!]* *$)"
                          # "all go in the bowl or some outside?": landing outside, a spill
                          r"|(?<=\bor )(?:(?:some|any)(?: of it)? )?(?:outside|on the (?:table|counter|floor))(?= *[?.!]* *$)"
                          r"|\b(?:more|less)(?: or (?:more|less))? (?:spill(?:s|age|ing)?|splash(?:es|ing)?|mess)(?: or (?:more|less))?"
@@ -312,7 +312,7 @@ def hear(text: str) -> Heard:
         return take(m, _PART_OF.sub("", kept)) + ("" if said_odds else odds)
 
     def as_nominal(m: re.Match) -> str:
-        asked.extend(n for n in ("no_spill",) if n not in asked)
+        asked.extend(n for n in (STILL if m.group("moved") else ("no_spill",)) if n not in asked)
         return take(m)
 
     def as_contact(m: re.Match) -> str:

@@ -5,7 +5,7 @@ Poured off ("tipping brine off into a steel bowl", "pour off a cocktail
 shaker into a coupe", "pouring honey off the bucket into a bowl"): pouring
 (PouredOff); "off" before what it is poured off is "from" it, and before
 where it goes, or last, is shown as ignored. Lifted or eased off, or off
-the side of the bowl, are no pour, and stay as they are read.
+the side of the jar or the bowl, are no pour off, and stay as they are read.
 """
 from __future__ import annotations
 
@@ -21,6 +21,8 @@ _NOT_POURED = _JOINTS | {"in", "into", "from", "over", "onto", "on", "at", "to",
 #: After "off": what it is poured from ("off the bucket"), or where it goes, or nothing more.
 _FROM = frozenset(("the", "a", "an", "my", "our", "his", "her", "their", "this", "that", "its"))
 _ON = frozenset(("into", "in", "onto")) | _ENDS
+#: A part of a container, which "off the" names as where the liquid runs, not what it is poured from ("off the side").
+_PART = frozenset(("side", "sides", "edge", "edges", "lip", "rim", "top", "spout", "end", "bottom", "outside"))
 
 
 class PouredOff:
@@ -32,7 +34,7 @@ class PouredOff:
             if w != "off" or not _poured(words, i):
                 continue
             after = words[i + 1] if i + 1 < len(words) else "."
-            if after in _FROM:
+            if after in _FROM and (words[i + 2] if i + 2 < len(words) else "") not in _PART:
                 out.append((i, i + 1, ("from",)))
             elif after in _ON:
                 out.append((i, i + 1, ("hedge",)))

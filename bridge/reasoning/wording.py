@@ -191,9 +191,9 @@ def normalising(text: str) -> tuple[str, tuple[str, ...]]:
     # a limit asked ("how close is too close", "how high is too high"): the value asked, not one said
     text = re.sub(r"\bhow (close|near|high|low|far|steep|fast|slow) is too \1\b",
                   lambda m: said.setdefault(f"{m.group(0)}: read as how {m.group(1)} can i go") or f"how {m.group(1)} can i go", text)
-    # "y/n" ending a note: whether it happens or not ("bowl slide y/n", "bowl wobble yes no")
-    text = re.sub(r" *\b(?:y/n|y or n|(?<![?] )(?:yes/no|yes or no|yes no))\b(?=[?.!]* *$)", lambda m: said.setdefault(f"{m.group(0).strip()}: read as or not")
-                  or " or not", text)
+    # "y/n" ending a note: whether it happens or not ("bowl slide y/n"); after a comma, what it asks ("..., yes or no")
+    text = re.sub(r" *(,)? *\b(?:y/n|y or n|(?<![?] )(?:yes/no|yes or no|yes no))\b(?=[?.!]* *$)", lambda m: said.setdefault(
+        f"{m.group(0).strip(' ,')}: read as " + ("what it asks" if m.group(1) else "or not")) or ("" if m.group(1) else " or not"), text)
     # less mess wanted: "is it better to pour close or from high up, for less mess?"
     text = re.sub(r"\b(?:for|with) (?:less|no|minimal|the least|minimum) (?:mess|spill(?:s|age|ing)?|splash(?:es|ing)?)(?= *[?.!]* *$)",
                   lambda m: said.setdefault(f"{m.group(0)}: read as so that nothing spills") or "so that nothing spills", text)
