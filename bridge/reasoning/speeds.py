@@ -121,12 +121,13 @@ SPEEDS: tuple[tuple, ...] = (
     ("; approach slowly", (r"re(slow|gradual|steadi):(?:(?<=all the way over )|(?<=right over ))(?:(?:very|really|too|quite|super) )?"
                            r"(?:slow(?:ly)?|gradually|steadily)\b(?! (?:than|as)\b)",)),
     # tipped fast or slowly: the move into the pouring pose, which tilts the source as it goes
-    # (where it is tipped is where it pours: "tilt the jug slowly right over the bowl"; what is tipped,
-    # named, is tipping_speed.py's to keep)
-    ("approach fast ; pour", (rf"re(fast|quick|rapid):\b(?:tilt|tip)\w*(?: it| them)?(?: in| it in)?(?: (?:very|really|too|quite))?"
+    # (where it is tipped is where it pours: "tilt the jug slowly right over the bowl", "held right above
+    # the rim tilted slowly", the place before it in a clause of its own; what is tipped, named, is
+    # tipping_speed.py's to keep)
+    ("; approach fast ; pour", (rf"re(fast|quick|rapid):\b(?:tilt|tip)\w*(?: it| them)?(?: in| it in)?(?: (?:very|really|too|quite))?"
                               r" (?:fast|quick(?:ly)?|rapidly)\b(?! (?:than|as)\b)",
                               r"re(fast|quick|rapid):\b(?:quickly|fast|rapidly) (?:tilt|tip)\w*\b")),
-    ("approach slowly ; pour", (rf"re(slow|gradual|steadi):\b(?:tilt|tip)\w*(?: it| them)?(?: in| it in)?(?: (?:very|really|too|quite))?"
+    ("; approach slowly ; pour", (rf"re(slow|gradual|steadi):\b(?:tilt|tip)\w*(?: it| them)?(?: in| it in)?(?: (?:very|really|too|quite))?"
                                 r" (?:slow(?:ly)?|gradually|steadily)\b(?! (?:than|as)\b)",
                                 r"re(slow|gradual|steadi):\b(?:slowly|gradually|steadily) (?:tilt|tip)\w*\b")),
     # a move that is quick by its verb: darted, zipped, flung in or out ("flings it over the bowl",
