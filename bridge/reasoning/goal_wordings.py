@@ -82,7 +82,7 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     # ... or after a want said before it ("want to fill the bowl with juice, no spill, no tipping")
     (r"(?<=[a-z,;:] )(?:no|zero) (?:(spill|splash|mess|drip)|(wobbl|slid|slip|tip|mov))(?:e|es|ing|ping|ement|s)?(?: over)?"
      r"(?: at all| (?:on|onto) (?:the |my )?(?:table|counter|floor|stove|bench))?(?= *(?:[,;:.!?]| - |$))", _note_wanted),
-    (r"(?:^|(?<=[,;:.!?] )|(?<= - ))no (?:touching|hitting|bumping|knocking|contact)(?:(?: the)? bowl)?" + _ASKED_AFTER,
+    (r"(?:^|(?<=[,;:.!?] )|(?<= - ))no (?:touching|hitting|bumping|knocking|contact|touch|hit|bump|knock)(?:(?: the)? bowl)?" + _ASKED_AFTER,
      "so that the jug does not touch the bowl"),
     (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:the )?[a-z]+ (?:not|never) touching (?:the )?[a-z]+(?: at all)?(?: the (?:whole|entire) time)?"
      + _ASKED_AFTER, "so that the jug does not touch the bowl"),
