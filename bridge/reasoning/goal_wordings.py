@@ -90,6 +90,11 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     # that possible if i pour from 5cm")
     (r"^(?:not|never) touching (?:the )?[a-z]+(?: at all)?(?: with (?:the |my |its )?[a-z]+)?(?: the (?:whole|entire) time)?"
      r"(?= (?:is (?:it|that|this)|it is|that is|thats) possible\b)", "so that the jug does not touch the bowl,"),
+    # ... and not spilling so ("not spilling a single drop, is that possible if i pour from shoulder height"), or
+    # named the goal ("not spilling is the goal, ...")
+    (r"^(?:not|never) (?:spilling|splashing)(?: (?:a single|one single|a|one|any) (?:drop|drip))?(?: at all)?"
+     r"(?= ?,? ?(?:is (?:it|that|this)|it is|that is|thats) possible\b)", "so that nothing spills,"),
+    (r"^(?:not|no) (?:spilling|spills?|splashing|mess) is the (?:goal|aim|point|idea)\b", "so that nothing spills"),
     # "is there any way to pour where the container never touches the bowl": so that it does not
     (r"\b((?:any|a|some) way to pour(?: it)?) where (?=(?:it|the [a-z]+|nothing|none)\b)", r"\1 so that "),
     # a drop got on a place, or any of it getting there: landing there ("without getting a single drop on the
