@@ -32,6 +32,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (rf"(?:{_THROWN}) (?:(?:back|right|straight|all|up|and) )*(?:over|past|out of|out over|from)(?= (?:the |a |an |my "
      rf"|your |its |their |this |that )?(?!source\b)(?:[a-z]+ )?{OUT_OF}\b)"
      rf"|escap\w*(?= (?:the |a |an |my |your |its )?(?!source\b)(?:[a-z]+ )?{OUT_OF}\b)"
+     # leaving the bowl poured into: not staying in it ("will any liquid leave the bowl")
+     r"|leav(?:e|es|ing)(?= the (?:bowl|dish|basin|destination)\b)"
      # gone out of the bowl it went into: "for the oil not going out of the bowl"
      r"|(?:go|goes|going|went|get|gets|getting|got) out of(?= (?:the |a |an |my )?(?:[a-z]+ )?(?:bowl|destination)\b)"
      # thrown out, no bowl said: out of the destination, as people who pour read it ("splash out")
@@ -107,7 +109,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      # upside down at the end, said of the bowl: "will the bowl end up upside down" (the source's end pose otherwise)
      r"|(?:(?<=bowl )|(?<=bowls )|(?<=dish )|(?<=basin ))(?:end|ends|ended|ending) up (?:upside down|flipped|overturned)\b",
      ("destination_upright",), True),
-    (r"(?:stay|stays|remain|remains|keep|keeps|be|is) (?:(?:completely|totally|perfectly|absolutely|entirely|fully|really|dead"
+    (r"(?:stay|stays|remain|remains|keep|keeps|be|is|hold|holds) (?:(?:completely|totally|perfectly|absolutely|entirely|fully|really|dead"
      r"|quite|nice and|nicely) )?(?:still|put|in place|steady|stable|stationary"
      r"|(?:exactly |right )?where (?:it|they) (?:is|was|are|were|stands|stood|started)"
      r"|(?:exactly |right )?where (?:i|you|we|they) (?:put|placed|set|left) (?:it|them))"
@@ -181,7 +183,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|glugged(?= *(?:[,.;!?]|$))"          # told: "the milk glugged, and ..." (it came out)
      # (not how full the source is: "a nearly empty jug", "an empty cup")
      r"|(?<!nearly )(?<!almost )(?<!mostly )(?<!practically )(?<!all but )(?<!half )(?<!\ban )(?<!\ba )(?<!\bthe )"
-     r"empt(?:y|ies|ied)(?: out)?|(?:(?:end|ends) up|becomes?|gets?) (?:totally |completely |fully )?empty(?: (?:completely|fully|totally))?|leav(?:e|es|ing) (?:the|it)\b|exit\w*", ("liquid_leaves_source",), False),
+     r"empt(?:y|ies|ied)(?: out)?|(?:(?:end|ends) up|becomes?|gets?) (?:totally |completely |fully )?empty(?: (?:completely|fully|totally))?|leav(?:e|es|ing) (?:the|it)\b(?! (?:bowl|dish|basin|destination)\b)|exit\w*", ("liquid_leaves_source",), False),
     # sitting at the source's lip: kept in it ("or does it just sit at the lip")
     (r"(?:sit|sits|sitting|sat|hang|hangs|hanging|hung) (?:at|on|in) (?:the|its) (?:lip|spout|mouth|neck)\b",
      ("liquid_leaves_source",), True),
