@@ -136,7 +136,7 @@ def _patterns() -> tuple[re.Pattern, ...]:
     nominal = re.compile(r"\b(?:(?:is|will) there (?:be )?)?(?:any|a|no|some) (?:little |small |big |trail of |line of )?(?P<v1>spill(?:s|age)?"
                          r"|splash(?:es)?|mess|drips?|puddles?|(?<=any )(?:spilling|splashing|dripping))\b(?! of\b)|\b(?:any|some) (?:spilled|spilt)(?= *[?.!]* *$)"
                          # the bowl moving, named last: "bowl on a slippery tray, any sliding"
-                         r"|\b(?:any|no) (?P<moved>sliding|slipping|wobbling|wobble|movement|moving|shifting|rocking)(?= *[?.!]* *$)"
+                         r"|\bany (?P<moved>sliding|slipping|wobbling|wobble|movement|moving|shifting|rocking)(?= *[?.!]* *$)"
                          # "all go in the bowl or some outside?": landing outside, a spill
                          r"|(?<=\bor )(?:(?:some|any)(?: of it)? )?(?:outside|on the (?:table|counter|floor))(?= *[?.!]* *$)"
                          r"|\b(?:more|less)(?: or (?:more|less))? (?:spill(?:s|age|ing)?|splash(?:es|ing)?|mess)(?: or (?:more|less))?"

@@ -142,12 +142,16 @@ _AMOUNT = ("\"{}\" of liquid: the vocabulary counts the liquid in particles; say
            "particles\", \"a little liquid\", \"some liquid\", \"much liquid\" or \"a full cup\"")
 
 
+class Unheld(UserError):
+    """A number whose parameter is known that no proposition's range holds."""
+
+
 def proposition(q: Quantity, param: str, cues: set[str], low: float | None = None, typed: bool = False) -> str:
     """The proposition whose range of `param` holds `q` (a height said
     "below" the rim is under it: negative), or all of the range from `low`
     to `q` where one is said ("8 to 10 cm"), or else, for a range `typed`
     with both its ends, MOST of it ("5 to 10 cm": medium height); "" for a number between two ranges that
-    the ordinary pour's holds; UserError naming the ranges there are if
+    the ordinary pour's holds; Unheld naming the ranges there are if
     none does."""
     vocab = load_vocabulary()
     unit = next(p.unit for p in vocab.parameters if p.name == param)
@@ -175,7 +179,7 @@ def proposition(q: Quantity, param: str, cues: set[str], low: float | None = Non
     value = " to ".join(f"{v:g}" for v in ends)
     away = sorted((min(abs(lo - ends[0]), abs(hi - ends[0])), n) for lo, hi, n in ranges)
     nearest = away[0][1] if len(away) == 1 or away and away[0][0] < away[1][0] else ""
-    raise UserError(f"\"{q.text}\" is {value} {unit} of {param}, which no "
+    raise Unheld(f"\"{q.text}\" is {value} {unit} of {param}, which no "
                     f"{'one ' if len(ends) > 1 else ''}proposition holds"
                     + (f" ({said}): say {'a value within ' if len(ends) > 1 else ''}one of these"
                        + (f" (the nearest: {nearest})" if len(ends) == 1 and nearest else "")

@@ -19,7 +19,7 @@ from pantarhei.bridge.reasoning.everyday import sections
 from pantarhei.bridge.reasoning.nouns import BOWL
 from pantarhei.bridge.reasoning.numerals import NUMBER_WORDS
 from pantarhei.bridge.reasoning.outcomes import hear
-from pantarhei.bridge.reasoning.quantities import read_numbers
+from pantarhei.bridge.reasoning.quantities import Unheld, read_numbers
 from pantarhei.bridge.reasoning.spelling import corrected
 from pantarhei.bridge.reasoning.suggestions import names_part
 from pantarhei.bridge.reasoning.wording import stem, tokens
@@ -74,8 +74,10 @@ def refuse_unsayable(text: str, known: Collection[str], placeable: Collection[st
                         "vocabulary can say, with the words of `pantarhei vocab`")
     try:                # a number no proposition holds ("5 cm above vs 50 cm above"), as alone
         read_numbers(said, frozenset(placeable))
-    except UserError as e:
+    except Unheld as e:
         raise UserError(f"in the scene set against the first (\"{m.group(0)}\"): {e}") from None
+    except UserError:   # which parameter a number is of may need the first scene's words: left to the answer
+        pass
     _refuse_names_alone(tokens(heard.string[:heard.start()]) if heard else [], said, m.group(0), placeable)
 
 
