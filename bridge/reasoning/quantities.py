@@ -143,7 +143,11 @@ _AMOUNT = ("\"{}\" of liquid: the vocabulary counts the liquid in particles; say
 
 
 class Unheld(UserError):
-    """A number whose parameter is known that no proposition's range holds."""
+    """A number of the parameter `param` that no proposition's range holds."""
+
+    def __init__(self, message: str, param: str):
+        super().__init__(message)
+        self.param = param
 
 
 def proposition(q: Quantity, param: str, cues: set[str], low: float | None = None, typed: bool = False) -> str:
@@ -183,7 +187,7 @@ def proposition(q: Quantity, param: str, cues: set[str], low: float | None = Non
                     f"{'one ' if len(ends) > 1 else ''}proposition holds"
                     + (f" ({said}): say {'a value within ' if len(ends) > 1 else ''}one of these"
                        + (f" (the nearest: {nearest})" if len(ends) == 1 and nearest else "")
-                       if said else ": the vocabulary has no proposition of it"))
+                       if said else ": the vocabulary has no proposition of it"), param)
 
 
 #: The share of a range typed with both ends ("5 to 10 cm") one value must hold to be read.

@@ -23,6 +23,7 @@ from pantarhei.bridge.reasoning.quantities import Unheld, read_numbers
 from pantarhei.bridge.reasoning.spelling import corrected
 from pantarhei.bridge.reasoning.suggestions import names_part
 from pantarhei.bridge.reasoning.wording import stem, tokens
+from pantarhei.theory.lexicon import load_vocabulary
 
 _OTHER = re.compile(rf"\b(?:{VERSUS}|{COMPARED})\b\.?"
                     r" (?P<other>[^,;:.!?]+?)(?= *(?:[,;:.!?]| - )|$)")
@@ -72,13 +73,25 @@ def refuse_unsayable(text: str, known: Collection[str], placeable: Collection[st
         raise UserError("could not place " + ", ".join(f'"{w}"' for w in dict.fromkeys(unknown))
                         + f" in the scene set against the first (\"{m.group(0)}\"): ask of one scene the "
                         "vocabulary can say, with the words of `pantarhei vocab`")
-    try:                # a number no proposition holds ("5 cm above vs 50 cm above"), as alone
+    first = tokens(heard.string[:heard.start()]) if heard else []
+    try:        # a number no proposition holds, of a parameter the first scene says ("5 cm above vs 50 cm above")
         read_numbers(said, frozenset(placeable))
     except Unheld as e:
-        raise UserError(f"in the scene set against the first (\"{m.group(0)}\"): {e}") from None
+        if e.param in _params(first, placeable):
+            raise UserError(f"in the scene set against the first (\"{m.group(0)}\"): {e}") from None
     except UserError:   # which parameter a number is of may need the first scene's words: left to the answer
         pass
-    _refuse_names_alone(tokens(heard.string[:heard.start()]) if heard else [], said, m.group(0), placeable)
+    _refuse_names_alone(first, said, m.group(0), placeable)
+
+
+def _params(said: list, placeable: Collection[str]) -> set[str]:
+    """The parameters of the numbers in `said` (a scene's tokens), read alone ("5 cm above": pour_z)."""
+    try:
+        read = read_numbers(said, frozenset(placeable))
+    except UserError:
+        return set()
+    props = load_vocabulary().propositions
+    return {getattr(props[t.word].model, "param", None) for t in read if t.word in props}
 
 
 #: Words that say no scene of their own: articles, what joins a pour to its bodies, and what is read as nothing.
