@@ -226,7 +226,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
     (r"(?:stay|stays|remain|remains) (?:in )?there\b"
      rf"|(?:stay|stays|staying|remain|remains|remaining|stop|stops|stick|sticks|stuck|cling|clings|clung|sit|sits|sitting) (?:in(?:side)?|within)(?: the (?:bottom|base) of)?(?: the \w+| (?:my |a |its )?{CONTAINER}\b)?",
      (*ALL_IN, "liquid_remains_in_destination"), False),
-    (r"(?:go|goes|going|went|get|gets|land|lands|plop|plops|plopped|make it|makes it|fall|falls|transfer\w*|arrive\w*|finds? (?:its|their) way) (?:more |mostly |all )?(?:in|into|inside)\b(?! the way\b)(?! the (?:middle|centre|center)\b)|reach\w*|make it (?:to|into)|enter\w*|get (?:the |all (?:the )?)?(?:water|liquid|milk|it|everything) (?:in|into)\b",
+    (r"(?:go|goes|going|went|get|gets|land|lands|plop|plops|plopped|make it|makes it|fall|falls|transfer\w*|arrive\w*|finds? (?:its|their) way) (?:more |mostly |all )?(?:in|into|inside)\b(?! the way\b)(?! the (?:middle|centre|center)\b)|reach\w*|make it (?:to|into)|enter\w*|get (?:the |all (?:the )?)?(?:water|liquid|milk|it|everything) (?:in|into)\b"
+     r"|(?<=\bit all )in(?= (?:the |my )?(?:bowl|dish|basin|destination)\b)",         # "or is it all in the bowl"
      ALL_IN, False),
     # what misses the bowl lands outside it: not all of it goes in, and it spills
     (r"miss(?:es|ed|ing)?|overshoot\w*|undershoot\w*|fall\w* short"

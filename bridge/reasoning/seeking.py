@@ -216,7 +216,7 @@ _WANTING_CUED = (
           r" (?:to |(?=[a-z]+ing\b))",
           ("not want", "never want", "not wish", "never wish", "not wanting")), r"so that \1 does not "),
     # "I want every drop in the bowl": so that it goes in
-    (Cued(r"(?:^|(?<=[.,;:!?] )|\b(?:i|we) )(?:want|need|would like) (every drop|all of it|it all|everything|all (?:of )?the \w+)"
+    (Cued(r"(?:^|(?<=[.,;:!?] )|\b(?:i|we) )(?:want|need|would like) (every drop|all of it|it all|everything|all (?:of )?the (?:\w+ )?\w+)"
           r" (?=(?:in|into|inside)\b)",
           ("want", "need", "like")), r"so that \1 stays "),
     # "I need the whole jug of batter in the bowl": so that the jug empties and it all goes in
