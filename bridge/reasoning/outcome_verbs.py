@@ -66,7 +66,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|los(?:e|es|ing|t) (?:any|some|much|a lot|a bit|a drop)(?: of it)?(?= (?:on|onto|over|all over)\b)"
      r"|los(?:e|es|ing|t)(?= [a-z]+ (?:on|onto|over|all over) (?:the |my )?(?:rim|edge|side|table|counter|floor|worktop|bench)\b)"
      rf"|{_SLOP}|splat\w*|(?:end|ends|ended|ending) up (?:on|onto|all over|everywhere|outside)|(?:end|ends|ended|ending) up (?:somewhere )?where (?:it|they) (?:should not|must not|is not supposed to|are not supposed to|was not supposed to)\b|(?:get|gets|got|getting) (?:any|some|much|a drop)(?: of it)?(?= on\b| onto\b)"
-     r"|(?:run|runs|running|ran|roll\w*|stream\w*|drip\w*|dribbl\w*|trickl\w*|go|goes|going|went) (?:back )?down the (?:outside|side)(?! of (?:the |a )?(?:bowl|dish|destination))"
+     r"|(?:run|runs|running|ran|roll\w*|stream\w*|drip\w*|dribbl\w*|trickl\w*|go|goes|going|went) (?:(?:back|straight|right|just) )?down the (?:outside|side)(?! of (?:the |a )?(?:bowl|dish|destination))"
      # what is left behind outside: "does it leave a trail of drips", "leaving a sticky ring on the counter"
      r"|leav(?:e|es|ing) (?:a |any )?(?:sticky |little |wet |big )?(?:trail|line|ring|puddle)s?\b"
      # where drips went: "a trail of drips went right across the table"
@@ -84,7 +84,7 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|outside)",
      ("no_spill",), True),
     # down the outside of the bowl, not into it: "it all ran down the outside of the bowl instead of in"
-    (r"(?:run|runs|running|ran|drip\w*|dribbl\w*|trickl\w*|go|goes|going|went) (?:back )?down the (?:outside|sides?)"
+    (r"(?:run|runs|running|ran|drip\w*|dribbl\w*|trickl\w*|go|goes|going|went) (?:(?:back|straight|right|just) )?down the (?:outside|sides?)"
      r" of (?:the |a |my )?(?:bowl|dish|destination)\b", (*ALL_IN, "no_spill"), True),
     # in, and none of it outside: "will it glob on the rim or go in clean", "does it stay clean"
     (r"(?:go|goes|going|went|get|gets|land|lands) (?:in|into)(?: the \w+)? clean(?:ly)?\b", (*ALL_IN, "no_spill"), False),
