@@ -14,6 +14,8 @@ less than water"), is the scene said first, the other said back as not
 read, as is one said "compared to" ("compared to a full jug, would a
 nearly empty one spill less?"). A comparative said of a liquid given with
 an example ("a thicker liquid such as custard") is the value it names.
+More toward a place ("more at the rim", "more to the side") is no
+comparison: the place.
 """
 from __future__ import annotations
 
@@ -41,6 +43,9 @@ _AS_BEFORE = (r"(?:(?:the|my|our|that) )?(?:(?:previous|last|earlier|first|usual
               r"|last time|before|usual|normal)\b")
 
 COMPARISONS: tuple[tuple, ...] = (
+    # more toward a place, said after the middle is refused: the place ("not over the middle, more at the rim")
+    ("hedge", (r"re(more):\bmore(?= (?:to|at|towards?|near|over) (?:the|its|one) (?:side|edge|rim|lip)\b)",),
+     "ignored: more toward a place is the place"),
     # a comparison with an earlier or the usual pour: each question is read alone, so against
     # the ordinary pour ("slower than the previous pour" is slowly; "not as high as last time" low)
     *((value, (rf"re({comparative}):\b(?:{DEGREE} |much |even |far |a lot )?(?:{comparative}) {_BEFORE}",
