@@ -43,8 +43,9 @@ _AS_BEFORE = (r"(?:(?:the|my|our|that) )?(?:(?:previous|last|earlier|first|usual
               r"|last time|before|usual|normal)\b")
 
 COMPARISONS: tuple[tuple, ...] = (
-    # more toward a place, said after the middle is refused: the place ("not over the middle, more at the rim")
-    ("hedge", (r"re(more):\bmore(?= (?:to|at|towards?|near|over) (?:the|its|one) (?:side|edge|rim|lip)\b)",),
+    # more toward a place, said after the middle is refused: the place ("not over the middle, more at the rim";
+    # "more to the edge" is nearness.py's)
+    ("hedge", (r"re(more):\bmore(?= (?:at|near|over) (?:the|its) (?:side|edge|rim|lip)\b| (?:to|towards?) (?:the|one) side\b)",),
      "ignored: more toward a place is the place"),
     # a comparison with an earlier or the usual pour: each question is read alone, so against
     # the ordinary pour ("slower than the previous pour" is slowly; "not as high as last time" low)

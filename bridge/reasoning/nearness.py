@@ -53,11 +53,11 @@ NEARNESS: tuple[tuple, ...] = (
     (UNCLEAR, (r"re(far side|far edge|far rim|far lip|opposite):\b(?:the |its )?(?:far|opposite) (?:side|edge|rim|lip)"
                r"(?: of (?:the |its )?(?:destination|bowl))?\b",)),
     # poured from close, with no bowl said: just above it ("pour from close up")
-    ("low", (r"re(close):\bfrom (?:really |very |quite |real |super )?(?:close(?: up| by)?|up close)\b(?! (?:to|by|from)\b)",),
+    ("low", (r"re(close):\bfrom (?:really |very |quite |super )?(?:close(?: up| by)?|up close)\b(?! (?:to|by|from)\b)",),
      "read as low: close to the bowl, just above its rim"),
     # poured (held, kept) close, with no bowl said: just above it ("if I pour close", "if i hold it really close")
     ("low", (r"re(close|near):\b(?:pour(?:s|ed|ing)?|bring(?:s|ing)?|brought|hold(?:s|ing)?|held|keep(?:s|ing)?|kept)"
-             r"(?: it| them| the \w+)?(?: (?:really|very|quite|so|too|real|super))?"
+             r"(?: it| them| the \w+)?(?: (?:really|very|quite|so|too|super))?"
              r" (?:close|near)\b(?! (?:to|by|from|together|up|the|a|an|its|my|your|this|that)\b)",),
      "read as low: close to the bowl, just above its rim"),
     # too close, with no bowl said: to the bowl, just above it
