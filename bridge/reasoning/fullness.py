@@ -1,5 +1,5 @@
 """How full the source is, said as a share of full: "half full", "a quarter
-full", "three quarters full", "half a cup", "filled to 90 percent" ("nearly full" says
+full", "three quarters full", "half cup", "filled to 90 percent" ("nearly full" says
 no share: everyday.txt refuses it), or filled to a share ("fills the cup
 halfway"). A full source is what the
 vocabulary's fullest amount holds (very_much_liquid, 150 to 200
@@ -25,7 +25,7 @@ SHARES = {("half",): 0.5, ("a", "quarter"): 0.25, ("quarter",): 0.25, ("one", "q
           ("three", "quarters"): 0.75, ("halfway",): 0.5, ("half", "way"): 0.5}
 #: Words that say full after a share ("half full", "a quarter filled").
 _FULL = {"full", "filled"}
-#: Sources a share may be said of, by name: "half a cup", "a quarter jug".
+#: Sources a share may be said of, by name: "half cup", "half jug".
 _SOURCES = frozenset(("cup", "jug", "pitcher", "bottle", "glass", "mug", "carton", "kettle", "jar", "teapot", "beaker",
                       "flask", "bucket", "pot", "can", "tin", "thermos", "carafe"))
 #: The bowl filled is a goal's (seeking.py), not an amount the source holds.
@@ -175,10 +175,11 @@ def _share(words: list[str], i: int) -> tuple[float | None, int]:
         k = i + len(said)
         if tuple(words[i:k]) == said and k < len(words) and words[k] in _FULL:
             return share, k + 1
-        # a share of a source named ("half a cup", "half jug vs full jug"): of it full, its name kept
-        if tuple(words[i:k]) == said and words[k + (words[k:k + 1] == ["a"]):][:1] and \
-                words[k + (words[k:k + 1] == ["a"])] in _SOURCES:
-            return share, k + (words[k:k + 1] == ["a"])
+        # a share of a source named ("half cup", "half jug vs full jug"): of it full, its name kept ("half a cup",
+        # "a half glass", "half cup of juice" are volumes: refused)
+        if tuple(words[i:k]) == said and words[k:k + 1] and words[k] in _SOURCES and words[k + 1:k + 2] != ["of"] \
+                and words[i - 1:i] != ["a"]:
+            return share, k
     # "90 percent full", "filled to 90 percent"
     if i + 2 < len(words) and _NUMBER.fullmatch(words[i]) and words[i + 1] in ("percent", "%") \
             and words[i + 2] in _FULL and 0 < float(words[i]) <= 100:
