@@ -1,9 +1,10 @@
 """The scene a question sets its own against ("60 degrees vs 90 degrees",
 "compared to a light bowl") is not read (comparisons.py), so what it says
 must be something the vocabulary can say: a volume of liquid ("vs 90
-degrees with 200 ml of oil") or a word the reader cannot place ("vs aim at
-the side wall") refuses the question, naming it, as it would were it said
-alone; so does a scene that differs from the first only in what the
+degrees with 200 ml of oil"), a word the reader cannot place ("vs aim at
+the side wall") or a number no proposition holds, of a parameter the first
+scene says ("5 cm above vs 50 cm above"), refuses the question, naming it,
+as it would were it said alone; so does a scene that differs from the first only in what the
 vocabulary does not say ("glass bowl vs plastic bowl", "cup vs jug": which
 container, what it is made of; "from the left or right": which side), the answer being the same for both; otherwise
 the answer would stand for a question that was not asked."""
