@@ -26,7 +26,7 @@ import re
 from functools import lru_cache
 
 from pantarhei.bridge.reasoning.earlier_pour import CAUSE, HELPS, REMEDY, WHEN, liquid_named, says_a_liquid
-from pantarhei.bridge.reasoning.everyday import UNCLEAR, alternation, names, sections
+from pantarhei.bridge.reasoning.everyday import alternation, names, refused
 from pantarhei.bridge.reasoning.outcome_verbs import OUTCOMES
 from pantarhei.bridge.reasoning.phases import STILL
 from pantarhei.bridge.reasoning.rim_strikers import source_names
@@ -137,12 +137,19 @@ def _liquid_before() -> re.Pattern:
 
 
 @lru_cache(maxsize=None)
+def _held_tipped() -> re.Pattern:
+    """Something held tipped, said last before a verb of tipping: "the bottle already", "the jug was", or a note's
+    source alone ("jug tipped too far")."""
+    return re.compile(r"\b(?:already )$|\b(?:the|my|a) (?!(?:bowl|dish|basin|tub|trough|destination)\b)[a-z]+ (?:already |was |is |got )*$"
+                      rf"|^(?:{alternation(source_names())}) $")
+
+
+@lru_cache(maxsize=None)
 def _sized() -> re.Pattern:
     """A container told by its size ("my big pitcher kept hitting the rim"), which the vocabulary cannot say:
     the cause of such a mishap asked is left as written, for the reader to refuse (what to do next time is
     asked of another pour, and read)."""
-    sizes = next(s.phrases for s in sections() if s.words == UNCLEAR and "all of one size" in s.said_back)
-    return re.compile(rf"\b(?:{alternation(sizes)}) (?:[a-z]+ )?(?:{alternation(names('bowl'))})\b")
+    return re.compile(rf"\b(?:{alternation(refused('all of one size').phrases)}) (?:[a-z]+ )?(?:{alternation(names('bowl'))})\b")
 
 
 @lru_cache(maxsize=None)
@@ -197,9 +204,7 @@ def _happened(m: re.Match, names: tuple[str, ...], present: bool = True) -> bool
     if names == ("source_clear",) and _liquid_before().search(before):
         return False        # the liquid striking the bowl ("the stream hit the rim and sprayed"): no contact of the source
     if names == ("destination_upright",) and not re.match(r"(?:knock|push|shov)", m.group(0)) and (re.match(r" (?:the|a|an|my|his|her|their|it)\b(?! (?:bowl|dish|basin|whole thing)\b)(?!(?: \w+)? over\b)",
-                                   m.string[m.end():]) or re.search(
-            r"\b(?:already )$|\b(?:the|my|a) (?!(?:bowl|dish|basin|tub|trough|destination)\b)[a-z]+ (?:already |was |is |got )*$"
-            rf"|^(?:{alternation(source_names())}) $", before)):
+                                   m.string[m.end():]) or _held_tipped().search(before)):
         return False        # tipping something, or something held tipped: the source ("she keeps tipping the jug",
         #                     "i started with the bottle already tipped", a note's "jug tipped too far"); not the
         #                     bowl ("... and tipped the whole thing")
