@@ -54,6 +54,11 @@ def sections() -> tuple[Section, ...]:
     return tuple(out)
 
 
+def refused(saying: str) -> Section:
+    """The section of words the vocabulary cannot say whose reason holds `saying` ("all of one size")."""
+    return next(s for s in sections() if s.words == UNCLEAR and saying in s.said_back)
+
+
 def _section(words: str, said: str, phrases: list[str]) -> Section:
     return Section(words, said, tuple(sorted(dict.fromkeys(phrases), key=lambda p: (-len(p), p))))
 

@@ -10,7 +10,7 @@ import re
 from functools import lru_cache
 
 from pantarhei.bridge.errors import UserError
-from pantarhei.bridge.reasoning.everyday import UNCLEAR, alternation, names, sections
+from pantarhei.bridge.reasoning.everyday import alternation, names, refused
 
 
 @lru_cache(maxsize=None)
@@ -24,7 +24,7 @@ def _little() -> re.Pattern:
 def refuse_little(text: str) -> None:
     """UserError where `text` (normalised) says a container is little (everyday.txt's words on its size)."""
     if re.search(r"\b(?:little|lil)\b", text) and (m := _little().search(text)):    # (compiled only when cued)
-        raise UserError(f"could not place \"{m.group(0)}\": {_unclear('all of one size')}")
+        raise UserError(f"could not place \"{m.group(0)}\": {refused('all of one size').said_back}")
 
 
 #: A bowl said to be wobbly, as what it is: "my bowl is really light and wobbly", "the bowl is wobbly".
@@ -34,9 +34,5 @@ _WOBBLY = re.compile(r"\b(?:bowl|dish|basin|tub) is (?:(?:really|very|a bit|kind
 def refuse_wobbly(text: str) -> None:
     """UserError where `text` (normalised) says the bowl is wobbly (everyday.txt's words on its shape)."""
     if "wobbly" in text and (m := _WOBBLY.search(text)):
-        raise UserError(f"could not place \"{m.group(0)}\": {_unclear('all of one shape')}")
+        raise UserError(f"could not place \"{m.group(0)}\": {refused('all of one shape').said_back}")
 
-
-def _unclear(saying: str) -> str:
-    """What everyday.txt says back of the words it refuses whose reason holds `saying`."""
-    return next(s.said_back for s in sections() if s.words == UNCLEAR and saying in s.said_back)
