@@ -173,12 +173,13 @@ def _share(words: list[str], i: int) -> tuple[float | None, int]:
     """The share of full said from `i` on, and where its phrase ends."""
     for said, share in SHARES.items():
         k = i + len(said)
-        if tuple(words[i:k]) == said and k < len(words) and words[k] in _FULL:
+        if tuple(words[i:k]) != said or k >= len(words):
+            continue
+        if words[k] in _FULL:
             return share, k + 1
         # a share of a source named ("half cup", "half jug vs full jug"): of it full, its name kept ("half a cup",
         # "a half glass", "half cup of juice" are volumes: refused)
-        if tuple(words[i:k]) == said and words[k:k + 1] and words[k] in _SOURCES and words[k + 1:k + 2] != ["of"] \
-                and words[i - 1:i] != ["a"]:
+        if words[k] in _SOURCES and words[k + 1:k + 2] != ["of"] and words[i - 1:i] != ["a"]:
             return share, k
     # "90 percent full", "filled to 90 percent"
     if i + 2 < len(words) and _NUMBER.fullmatch(words[i]) and words[i + 1] in ("percent", "%") \

@@ -17,7 +17,7 @@ _JOINTS = _ENDS | {"and", "then", "but", "or", "so", "when", "if", "because", "w
 _POURING = frozenset(f"{v}{e}" for v in ("pour", "rack", "decant", "drain", "strain") for e in ("", "s", "ed", "ing")) | {
     "tip", "tips", "tipped", "tipping"}
 _NOT_POURED = _JOINTS | {"in", "into", "from", "over", "onto", "on", "at", "to", "with", "out", "it", "them", "away", "back",
-                         "up", "down", "far", "way", "well", "just", "right", "straight", "too", "so", "very", "really"}
+                         "up", "down", "far", "way", "well", "just", "right", "straight", "too", "very", "really"}
 #: After "off": what it is poured from ("off the bucket"), or where it goes, or nothing more.
 _FROM = frozenset(("the", "a", "an", "my", "our", "his", "her", "their", "this", "that", "its"))
 _ON = frozenset(("into", "in", "onto")) | _ENDS
