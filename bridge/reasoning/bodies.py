@@ -44,6 +44,9 @@ BODIES: tuple[tuple, ...] = (
     ("slippery", ("slick", r"re:\bslippy\b(?! slidey)", "smooth", "greasy")),
     ("halfway", ("partway", "part way", "part of the way")),
     ("grippy", ("rough",)),
+    # a thin bowl is a light one, of whatever it is made (thin is said of the liquid otherwise: runny)
+    ("light", (r"re:\bthin(?= (?:(?:material|glass) )?(?:(?!(?:into|in|to|onto|the|a|an|of|from|and|or|over|at|on)\b)[a-z]+ )?"
+               r"(?:bowls?|dish|dishes|basins?)\b)",)),
     ("runny", ("thin", "watery")),
     ("sticky", ("viscous", "thick", "thickened", "syrupy", "gooey")),
     ("bouncy", ("springy", "elastic")),

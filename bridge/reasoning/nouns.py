@@ -60,7 +60,8 @@ def roles(tokens: list[Token], placeable: frozenset[str], bowl: bool = False) ->
             j = i - 1
             while j > 0 and (tokens[j].word in BETWEEN or tokens[j].word in placeable):
                 j -= 1
-            before = (tokens[j - 1].word, tokens[j].word) if j > 0 else None
+            # (within its clause: "pour from the side, light bowl" pours into the bowl)
+            before = (tokens[j - 1].word, tokens[j].word) if j > 0 and tokens[j].clause == t.clause else None
             k = past_articles(tokens, i + 2, 1)              # "a glass as the source"
             as_source = (i + 1 < len(tokens) and tokens[i + 1].word == "as" and k < len(tokens)
                          and OBJECT_STEMS.get(tokens[k].word) == "source")
@@ -257,7 +258,8 @@ class Nouns:
         owned = any(w.raw in _OWNERS for w in t[max(0, i - 3):i]) and not any(
             w.word in ("both", "two") for w in t[max(0, i - 3):i])
         # "bowls light and kinda slick" after "out of a jug": the bowls poured into, the jug named apart
-        apart = plural and (bool(self.source_names - {last.rstrip("s")}) or any(     # "... when you pour in them"
+        # ("into light bowls": poured into, the destination)
+        apart = plural and (bool(self.source_names - {last.rstrip("s")}) or self.poured_into(i) or any(     # "... when you pour in them"
             t[j].word == "pour" and t[j + 1].word in ("in", "into") and t[j + 2].raw == "them" for j in range(i + 1, len(t) - 2)))
         if t[i].word == BOWL and ((plural and not owned and not apart) or (i > 0 and t[i - 1].word == "both")):
             return {"source", "destination"}

@@ -114,8 +114,9 @@ SPEEDS: tuple[tuple, ...] = (
                                            r"|flipped|flipping|invert|inverts|inverted|inverting)(?: (?:it|them|the \w+|my \w+))?"
                                            r"(?: all the way| clean| right| totally| completely| fully)? upside down(?: over (?:the \w+|it|my \w+(?: bowl)?))?"
                                            r" (?:(?:very|really|too|quite|super) )?(?:fast|quick(?:ly)?|rapidly)\b(?! (?:than|as)\b)"
-                                           # a note naming the source held so, then the speed: "jug upside down over bowl, fast"
-                                           r"|(?:^|(?<=[,;:.!?] ))(?:the |a |my )?(?!pour)[a-z]+ upside down(?: over (?:the |a |my )?[a-z]+)?(?: ?,)?"
+                                           # a note naming the source held so (or not), then the speed: "jug upside down over bowl, fast", "bowl, upside down fast"
+                                           r"|(?:^|(?<=[,;:.!?] ))(?:(?:the |a |my )?(?!pour)[a-z]+(?: of [a-z]+)?(?: over (?:the |a |my )?[a-z]+)? )?upside down"
+                                           r"(?: over (?:the |a |my )?[a-z]+)?(?: ?,)?"
                                            r" (?:(?:very|really|too|quite|super) )?(?:fast|quick(?:ly)?|rapidly)\b(?! (?:than|as|in|out|away)\b)",),
      _SAID),
     ("; approach slowly", (r"re(slow|gradual|steadi):(?:(?<=all the way over )|(?<=right over ))(?:(?:very|really|too|quite|super) )?"

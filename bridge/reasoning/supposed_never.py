@@ -10,6 +10,10 @@ still tip over")."""
 from __future__ import annotations
 
 import re
+from functools import lru_cache
+
+from pantarhei.bridge.reasoning.everyday import alternation
+from pantarhei.bridge.reasoning.rim_strikers import source_names
 
 #: The outcome verbs said with "never" in a condition, each in its plain form.
 _VERBS = ("touch", "hit", "bump", "knock", "spill", "splash", "drip", "tip", "slide", "move", "wobble", "collide",
@@ -34,6 +38,20 @@ _BY_ME = re.compile(r"\b(if|when) (?:i|we|you) (never|do not) (touch|hit|bump|kn
 _BY_IT = re.compile(r"\b(if|when) ((?:the|my|a) [a-z]+) (?:is|gets) (not|never) (touch|hitt|bump|knock)(?:ed) by ((?:the|my|a) [a-z]+)")
 
 
+@lru_cache(maxsize=None)
+def _not_touching() -> re.Pattern:
+    """A touch said not to happen with no verb that says it ("with the cup not touching the bowl",
+    "jug not touching bowl"), or with no one said at a clause's start ("not touching the bowl, ...");
+    not before "is that possible" (a goal so said: goal_wordings.py's)."""
+    return re.compile(rf"(?:\b(?:(with) )?((?:(?:the|a|my|your) )?(?:{alternation(source_names())}|source)) not touching\b"
+                      r"|(?:^|(?<=[,;.] ))not touching(?= (?:the |a |my )?bowl\b))(?!.*\bpossible\b)")
+
+
+def _is_not_touching(m: re.Match) -> str:
+    """_not_touching()'s touch said with its verb: "and the cup is not touching", "the source is not touching"."""
+    return f"{'and ' if m.group(1) else ''}{m.group(2) or 'the source'} is not touching"
+
+
 def _by_me(m: re.Match) -> str:
     """_BY_ME's touch said of the source: "if the bottle does not touch the bowl"."""
     return f"{m.group(1)} {m.group(5)} does not {m.group(3)} {m.group(4)}"
@@ -46,6 +64,7 @@ def _by_it(m: re.Match) -> str:
 
 def never_as_not(text: str) -> tuple[str, tuple[str, ...]]:
     """Normalised `text` with an outcome supposed never to happen said as "does not", and what is said back."""
+    text = _not_touching().sub(_is_not_touching, text) if "not touching" in text else text
     said = tuple(f"{m.group(0)}: read as {_by_me(m)}" for m in _BY_ME.finditer(text))
     said += tuple(f"{m.group(0)}: read as {_by_it(m)}" for m in _BY_IT.finditer(text))
     text = _BY_IT.sub(_by_it, _BY_ME.sub(_by_me, text))
