@@ -50,7 +50,7 @@ REMEDY = re.compile(
     r"|any (?:tips|advice|ideas|suggestions|help)(?: (?:on|for) (?:that|this|it|next time))?"
     r"|(?:tips|advice|help)(?: please)?"
     # what would have been right: "what should I have done?", "how should I have done it?"
-    r"|(?:what|how) (?:should|could|would) (?:i|we) have (?:done|poured)(?: it| that)?(?: (?:differently|instead|better|then))?)"
+    r"|(?:what|how) (?:should|could|would) (?:i|we) have (?:done|poured)(?: it| that)?(?: (?:differently|different|instead|better|then))?)"
     r"(?: please)?[?.! ]*$")
 #: When the pour told was: "last time", "yesterday", "previously", "the other day".
 WHEN = (r"(?:(?:the )?(?:last time|previous time|first time|other day|yesterday|previously|earlier|before"

@@ -77,6 +77,8 @@ _TOO = re.compile(r"^(?:so )?(?:is|was|am|were) (?:it|that|i|we|you|he|she|they|
                   r"|bringing (?:it|the \w+) in|pulling (?:it|the \w+) away) )?(?:too |because (?:(?:it|he|she|they|i|we|you) (?:is|was|are|were|am) |hes |shes |theyre )(?:too )?)"
                   r"(?P<value>light|heavy|slippery|bouncy|high|low|sticky|runny|full|fast|quick|slow|far (?:off )?to (?:one|the) side"
                   r"|far away|close)(?: or (?:something|what))?[?.! ]*$")
+#: A cause noted after the mishap ("it went everywhere. too high?"): asked as "was it too high?".
+_TOO_NOTED = re.compile(r"(?<=[.,;!?] )too (?=[a-z ]+\?+\s*$)")
 #: A speed other than the one told, asked to help: "would slower have helped?", "would going slower fix it".
 _SPEED_HELPS = re.compile(r"^(?:so )?(?:would|will|could|does|do|might) (?:(?P<how>going|moving|coming in|pulling (?:it )?away|bringing it in"
                           r"|doing it|pouring|a) )?(?P<speed>slower|more slowly|faster|quicker)(?P<move> approach| retreat)? (?:have )?"
@@ -247,6 +249,8 @@ def mishap(text: str) -> tuple[str, tuple[str, ...]]:
     question is taken from the last break in the text back, the first that
     asks in one of the ways the module reads; a cause asked first ("what went wrong here, I turned
     the cup upside down ...") is asked after the mishap."""
+    if (noted := _TOO_NOTED.sub("was it too ", text)) != text and (read := mishap(noted))[1]:
+        return read
     first = _CAUSE_FIRST.match(text)
     if first is not None:
         text = f"{first.group('told')}. {first.group('cause')}?"
