@@ -18,6 +18,7 @@ from pantarhei.bridge.reasoning.everyday import alternation, names
 CAUSE = re.compile(r"^(?:so |and |but )?(?:why|how come|how|what gives|what went wrong(?: there| here)?|what did (?:i|we|he|she|they|you) do wrong|what happened(?: there| here)?"
                     r"|what(?:s| is)? (?:caused|causes|causing) (?:that|this|it)|what(?:s| is)? the reason(?: for (?:that|this|it))?|why did (?:that|this|it) happen|why is that|why (?:does|did) (?:that|this|it)"
                     r"|why (?:that|this|it) (?:happen|happens|happened|is happening)"      # as learners ask it: "why this happen?"
+                    r"|why (?:it|the bowl) (?:move|moves|slide|slides|tip|tips|fall|falls)(?: like (?:that|this))?"     # "why it move like that"
                     r"|why (?:did|does) (?:it|the bowl) do that|why (?:did not|does not) (?:it|they|the \w+)(?: [a-z]+){0,5}"
                     r"|how (?:is|was) (?:that|this|it) (?:even )?possible|how (?:does|did|could|can) (?:that|this|it) (?:even )?happen"
                     # as learners of English ask it, and what was being done: "what I do wrong?", "what was I doing"
@@ -36,7 +37,7 @@ CAUSE = re.compile(r"^(?:so |and |but )?(?:why|how come|how|what gives|what went
                     # one cause named, no value said: "was it the height?" (of the pour told)
                     r"|(?:was|is) it (?:the |my |because of the )?(?:height|tilt|angle|speed|weight|position|distance))"
                     r"(?: (?:lol|lmao|haha|ugh|smh|pls|please))?[?.! ]*$")      # ("what am i doing wrong lol")
-#: What asks for a remedy: "what should I change", "how do I stop that", "any tips".
+#: What asks for a remedy: "what should I change", "how do I stop that", "any tips", "what's the trick".
 REMEDY = re.compile(
     r"^(?:so |and |but )?(?:what (?:should|do|can|could|would|must|shall) (?:i|we|you|he|she|they) (?:do|change|try|adjust)"
     r"(?: (?:differently|different|instead|next time|then|now|to fix (?:it|that|this)|about (?:it|that|this)))*"
@@ -49,6 +50,9 @@ REMEDY = re.compile(
     r"|how (?:do|can|could|should|would) (?:i|we|you) not (?:do|have) (?:that|this|it)(?: happen)?(?: (?:again|next time))?"
     r"|any (?:tips|advice|ideas|suggestions|help)(?: (?:on|for) (?:that|this|it|next time))?"
     r"|(?:tips|advice|help)(?: please)?"
+    # "what's the trick", "is there a trick to it"
+    r"|(?:what is|whats|what s|what) (?:the |your )?(?:trick|secret|knack)(?: (?:to it|here|to that|to this))?"
+    r"|is there (?:a|any) (?:trick|secret|knack)(?: (?:to it|to that|to this))?"
     # what would have been right: "what should I have done?", "how should I have done it?"
     r"|(?:what|how) (?:should|could|would) (?:i|we) have (?:done|poured)(?: it| that)?(?: (?:differently|different|instead|better|then))?)"
     r"(?: please)?[?.! ]*$")

@@ -79,9 +79,9 @@ STRUCK = Cued(r"\b(?:what if|what happens if|suppose|imagine if)(?= (?:the |a |a
 
 #: An outcome typed as a note: a clause of a noun (with its article) and an outcome's verb,
 #: ending with a question mark, and no word that asks: "cup hits bowl??", "jug bumps the pot?".
-NOTE = re.compile(r"(?:^|(?<=[,:;.!=>\u2013\u2014] )|(?<= - ))(?=(?:tips|topples|slides|spills|moves|shifts|wobbles"
+NOTE = re.compile(r"(?:^|(?<=[,:;.!=>\u2013\u2014\u2192] )|(?<= - ))(?=(?:tips|topples|slides|spills|moves|shifts|wobbles"
                   r"|splashes|overflows|drips|budges|slips|skids|flips|stays (?:put|still|in place|upright)"
-                  r"|(?<== )(?:splash|spill|tip|slide|move|drip|overflow))(?: over)?"
+                  r"|(?<=[=>\u2192] )(?:splash|spill|tip|slide|move|drip|overflow))(?: over)?"     # "= spill?", "-> spill?"
                   r"(?: or (?:not|nah))? *\?|"
                   r"(?:the |a |an |my |your |this |that )?[a-z]+ (?:still |even |really |also )?"
                   r"(?:hits|bumps|touches|knocks|collides|strikes|scrapes|clips|tips|topples|slides|shifts"

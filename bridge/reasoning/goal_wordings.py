@@ -56,11 +56,15 @@ _MOVING = {"wobbl": "wobble", "slid": "slide", "slip": "slip", "tip": "tip over"
 #: ... said before a way or a value asked, in a clause of its own ("no splashing, what height is best").
 _ASKED_AFTER = (r"(?= *(?:[,;:.!?]| - ).*\b(?:how (?:do|should|can|would|high|far|low|close|steep|much)|what (?:settings?|height"
                 r"|tilt|angle|speed|pour)\b|(?:high|low) or (?:high|low)\b|(?:that is|thats|that's) all (?:i|we) want\b"
-                r"|\b(?:is (?:it|that|this) )?possible\b|what(?: is|s)? the (?:highest|lowest|best|steepest|fastest|most|least)\b))")
+                r"|\b(?:is (?:it|that|this) )?possible\b|what(?: is|s)? the (?:highest|lowest|best|steepest|fastest|most|least)\b"
+                r"|\bhow *[?.!]* *$))")      # (or "how" alone at the end: "no spill, no bowl moving, ..., how")
 #: Other ways of saying a goal, said as "so that ...": "keep the cup still" (not "keep the
 #: source upright": how it is held), "don't let it overflow", "make sure it does not spill"
 #: (the words they drop are fillers).
 WANTING = tuple((re.compile(p), r) for p, r in (
+    # a way asked after a goal ("... without spilling, any tips?", "whats the trick"): the goal asks it
+    (r"^(?=.*\b(?:so that|without)\b)(.*?)[,.;:?!\u2014-]* (?:any (?:tips|advice|ideas|suggestions)|tips|(?:what is|whats|what s|what)"
+     r" (?:the |your )?(?:trick|secret|knack)|is there (?:a|any) (?:trick|secret|knack))(?: (?:to it|here))?[?.! ]*$", r"\1"),
     # asked negatively, as people doubting it ask: "is there no way to pour molasses without ...": is there a way
     (r"\bis there (?:really )?no (way|method|technique) to\b", r"is there a \1 to"),
     # asked whether a scene stops an outcome ("does pouring low stop it from splashing?"): whether it happens
@@ -76,7 +80,7 @@ WANTING = tuple((re.compile(p), r) for p, r in (
      r"(?: at all)?(?: ?,? not even (?:a|one) (?:single )?(?:drop|drip))?" + _ASKED_AFTER,
      "so that nothing spills"),
     # ... or the bowl's moving ("no wobble, what settings would do that"): so that it does not move so
-    (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:no|not) (?:the )?(?:bowl )?(wobbl|slid|slip|tip|mov)(?:e|es|ing|ping|ement|s)?(?: over)?"
+    (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:(?:the )?bowl (?=not))?(?:no|not) (?:the )?(?:bowl )?(wobbl|slid|slip|tip|mov)(?:e|es|ing|ping|ement|s)?(?: over)?"
      r"(?: (?:the )?bowl)?" + _ASKED_AFTER,
      lambda m: f"so that the bowl does not {_MOVING[m.group(1)]}"),
     # ... or after a want said before it ("want to fill the bowl with juice, no spill, no tipping")

@@ -216,9 +216,10 @@ _WANTING_CUED = (
           r" (?:to |(?=[a-z]+ing\b))",
           ("not want", "never want", "not wish", "never wish", "not wanting")), r"so that \1 does not "),
     # "I want every drop in the bowl": so that it goes in
+    # (where it comes from kept for the scene: "all the soup from the pot in the bowl")
     (Cued(r"(?:^|(?<=[.,;:!?] )|\b(?:i|we) )(?:want|need|would like) (every drop|all of it|it all|everything|all (?:of )?the (?:\w+ )?\w+)"
-          r" (?=(?:in|into|inside)\b)",
-          ("want", "need", "like")), r"so that \1 stays "),
+          r"(?: from (?P<origin>(?:the|my|a) (?:[a-z]+ )?[a-z]+))? (?=(?:in|into|inside)\b)",
+          ("want", "need", "like")), lambda m: f"{f'pouring from {m.group(2)}, ' if m.group(2) else ''}so that {m.group(1)} stays "),
     # "I need the whole jug of batter in the bowl": so that the jug empties and it all goes in
     (Cued(r"(?:^|(?<=[.,;:!?] )|\b(?:i|we) )(?:want|need|would like) the (?:whole|entire) ([a-z]+)(?: of (?:the |my )?([a-z]+))?"
           r"(?= (?:in|into|inside)\b)", ("whole", "entire")), emptied_in),
