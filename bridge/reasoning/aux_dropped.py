@@ -45,6 +45,7 @@ _FRAGMENTS = {"all in": "does it all go in", "all out": "does it all come out", 
               "anything left": "is anything left in the source", "everything out": "does everything come out",
               "all of it in": "does it all go in", "everything in": "does everything go in",
               "in or out": "does it all go in or spill", "goes in": "does it go in", "go in": "does it go in", "goes in or not": "does it go in",
+              "still goes in": "does it still go in", "still go in": "does it still go in",
               # still in the bowl, after: it went in and stayed ("honey, high pour, still in bowl after?")
               **{f"{said} in{bowl}{after}": f"does it {'all go in' if said == 'all' else 'stay in the bowl'}{after}"
                  for said in ("all", "still", "stays", "stay") for bowl in ("", " bowl", " the bowl")
@@ -65,8 +66,10 @@ _LIKE_BASE = {"runn": "run", "dribbl": "dribble", "dripp": "drip", "trickl": "tr
 _OUT_AFTER_IN = re.compile(r"\b(stays? in (?:the |my )?)(bowl|dish|basin) or (?:go|goes|come|comes) out\b(?! of\b)")
 #: A bowl's outcome told in the present, as learners of English tell it, its cause asked after it ("the bowl
 #: fall down, why?", "when i pour, the bowl move, why?"): told in the past, as mishaps reads it.
-_PRESENT_TOLD = re.compile(r"(?:^|(?<=[,.;:!?] )|(?<= - ))(?P<bowl>the (?:bowl|dish|basin)) (?P<verb>fall|move|tip|slide|flip|wobble"
-                           r"|shake|spin)(?P<part> over| down| off)?(?=[,.;]? *(?:why|how come|what (?:i|we) (?:do|did) wrong)\b)")
+#: (said "the bowl it fall down", "the bowl go slide", and where: "the bowl slide on the table, why")
+_PRESENT_TOLD = re.compile(r"(?:^|(?<=[,.;:!?] )|(?<= - )|(?<= but )|(?<= and ))(?P<bowl>the (?:bowl|dish|basin))(?: it| go)? (?P<verb>fall|move|tip"
+                           r"|slide|flip|wobble|shake|spin)(?P<part> over| down| off)?(?P<where>(?: (?!why\b)[a-z]+){0,4}?)"
+                           r"(?=[,.;]? *(?:why|how come|what (?:i|we) (?:do|did) wrong)\b)")
 _PAST = {"fall": "fell", "move": "moved", "tip": "tipped", "slide": "slid", "flip": "flipped", "wobble": "wobbled",
          "shake": "shook", "spin": "spun"}
 #: An outcome's verb asked first, before the scene as a note ("wobble? light bowl, pouring from kettle",
@@ -100,7 +103,7 @@ def aux_restored(text: str) -> tuple[str, tuple[str, ...]]:
     text = _BARE_TOLD.sub(lambda m: f"the {m.group(0)}" if outcome_verb(m.group("verb")) else m.group(0), text)
 
     def past(m: re.Match) -> str:
-        told = f"{m.group('bowl')} {_PAST[m.group('verb')]}{m.group('part') or ''}"
+        told = f"{m.group('bowl')} {_PAST[m.group('verb')]}{m.group('part') or ''}{m.group('where')}"
         said.append(f"{m.group(0)}: read as {told}")
         return told
     text = _PRESENT_TOLD.sub(past, text)

@@ -88,7 +88,7 @@ WANTING = tuple((re.compile(p), r) for p, r in (
      r"(?: at all| (?:on|onto) (?:the |my )?(?:table|counter|floor|stove|bench))?(?= *(?:[,;:.!?]| - |$))", _note_wanted),
     (r"(?:^|(?<=[,;:.!?] )|(?<= - ))no (?:touching|hitting|bumping|knocking|contact|touch|hit|bump|knock)(?:(?: the)? bowl)?" + _ASKED_AFTER,
      "so that the jug does not touch the bowl"),
-    (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:the )?[a-z]+ (?:not|never) touching (?:the )?[a-z]+(?: at all)?(?: the (?:whole|entire) time)?"
+    (r"(?:^|(?<=[,;:.!?] )|(?<= - ))(?:the )?[a-z]+ (?:is |are )?(?:not|never) touching(?: (?:the )?[a-z]+)?(?: at all)?(?: the (?:whole|entire) time)?"
      + _ASKED_AFTER, "so that the jug does not touch the bowl"),
     # ... or with no source said first and no comma before the asking ("not touching the bowl at all with the spout is
     # that possible if i pour from 5cm")

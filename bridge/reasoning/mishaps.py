@@ -217,11 +217,8 @@ def _happened(m: re.Match, names: tuple[str, ...], present: bool = True) -> bool
     # what keeps happening, said in the present after its subject ("it dribbles down the side")
     now = present and re.match(r"[a-z]+[^s]s\b", m.group(0)) and re.search(r"(?:^|\b(?:it|the \w+|my \w+|our \w+) )$", before)
     asked_why = re.search(r"^why did (?:it|they|the \w+|my \w+) $", before)        # "why did it miss the bowl"
-    # the bowl's verb bare after it, as learners of English tell it ("the bowl slide on the table, why", "the bowl it fall down")
-    bare = present and re.match(r"(?:slide|tip|fall|move|wobble|flip|shake|jump)\b", m.group(0)) and re.fullmatch(
-        r"(?:the |my |our )?(?:bowl|dish|basin)(?: it| go)? ", before)
     return bool(_TOLD_TENSE.match(m.group(0)) or _HABIT.search(before) or (going_on and re.match(r"[a-z]+ing\b", m.group(0)))
-                or now or asked_why or bare)
+                or now or asked_why)
 
 
 def _said(words: dict, groups: list[tuple[str, ...]], when: str = "") -> str:

@@ -92,7 +92,8 @@ SPEEDS: tuple[tuple, ...] = (
                                     r"(?: (?:really |very )?(?:fast|quickly|quick))?",)),
     ("retreat slowly", (r"re( away):\b(?:go|goes|going|went|gone) away (?:very |really |too |quite )?(?:slowly|slow)\b",)),
     # "fastly", as learners of English say it; "the robot come fastly": it comes in
-    ("approach fast", (r"re(com|came):\b(?:come|comes|coming|came) (?:very |really |too )?(?:fastly|fast|quickly)\b",)),
+    # (or came at the bowl so: "i came at the bowl too fast with the jug")
+    ("approach fast", (r"re(com|came):\b(?:come|comes|coming|came)(?: at (?:the |my )?bowl)? (?:very |really |too )?(?:fastly|fast|quickly)\b",)),
     # moved fast or slowly toward the bowl: in ("moved the jug really fast toward the bowl")
     ("approach fast", (_TOWARD.replace("SPEED", "(?:fast|quickly|quick)"),)),
     ("approach slowly", (_TOWARD.replace("SPEED", "(?:slowly|slow)"),)),

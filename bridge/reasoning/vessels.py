@@ -62,9 +62,11 @@ def in_the_source(said: str, text: str = "") -> bool:
 
 
 def _held_as_source(noun: str, text: str) -> bool:
-    """Whether `text` pours from the bowl `noun` or holds it tilted."""
+    """Whether `text` pours from the bowl `noun`, holds it tilted, or notes it first with what it holds ("mug of
+    cocoa, tilted 90 degrees, ...")."""
     return bool(re.search(rf"\bfrom (?:the |a |an |my |your |this |that )?(?:[a-z]+ )?{noun}\b"
-                          rf"|\b{noun} (?:is |being |that is |held )?(?:tilted|tipped|angled|inclined"
+                          + (rf"|^(?:a |an |the |my )?{noun} of [a-z]+(?: [a-z]+)?(?=,| -)" if noun not in ("bowl", "dish", "basin") else "")
+                          + rf"|\b{noun} (?:is |being |that is |held )?(?:tilted|tipped|angled|inclined"
                           rf"|upside|turned|held)\b", text))
 
 
