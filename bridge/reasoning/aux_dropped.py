@@ -68,10 +68,10 @@ _OUT_AFTER_IN = re.compile(r"\b(stays? in (?:the |my )?)(bowl|dish|basin) or (?:
 #: fall down, why?", "when i pour, the bowl move, why?"): told in the past, as mishaps reads it.
 #: (said "the bowl it fall down", "the bowl go slide", and where: "the bowl slide on the table, why")
 _PRESENT_TOLD = re.compile(r"(?:^|(?<=[,.;:!?] )|(?<= - )|(?<= but )|(?<= and ))(?P<bowl>the (?:bowl|dish|basin))(?: it| go)? (?P<verb>fall|move|tip"
-                           r"|slide|flip|wobble|shake|spin)(?P<part> over| down| off)?(?P<where>(?: (?!why\b)[a-z]+){0,4}?)"
+                           r"|slide|flip|wobble|shake|spin|go(?= sideways))(?P<part> over| down| off| sideways)?(?P<where>(?: (?!why\b)[a-z]+){0,4}?)"
                            r"(?=[,.;]? *(?:why|how come|what (?:i|we) (?:do|did) wrong)\b)")
 _PAST = {"fall": "fell", "move": "moved", "tip": "tipped", "slide": "slid", "flip": "flipped", "wobble": "wobbled",
-         "shake": "shook", "spin": "spun"}
+         "shake": "shook", "spin": "spun", "go": "went"}
 #: An outcome's verb asked first, before the scene as a note ("wobble? light bowl, pouring from kettle",
 #: "splash, low pour, full cup"): of "it".
 _FIRST = re.compile(r"^(?P<verb>[a-z]+)(?P<part> over| out| off)?(?P<end>\?|,)(?= )")

@@ -55,6 +55,9 @@ _NOT_A_SCENE = (r"(?:spill|splash|overflow|drip|leak|slid|slip|toppl|wobbl|tip(?
 _OR = re.compile(rf"(?: ,)? \bor (?={_SCENE})(?!{_NOT_A_SCENE})")
 
 
+#: Better by an outcome named after the two: "..., less spill?", "which one spills less".
+_BETTER_BY = re.compile(r"[,;:] (?:which one |which )?(?:(?:less|more) (?:spill|spills|spilling|mess|splash|splashes|splashing|drips|dripping)"
+                        r"|(?:spills|splashes|drips) (?:less|more))\b")
 #: Which of two is better, asked in other words: read as "is it better to A or B" (which: the
 #: words as asked, and what they say).
 _WHICH_BETTER = tuple((re.compile(p), r) for p, r in (
@@ -176,6 +179,10 @@ def _compared_or(text: str) -> tuple[str, tuple[str, ...]]:
     for pattern, asked in _WHICH_BETTER:
         m = pattern.search(text)
         if m is not None:
+            if _BETTER_BY.search(text, m.end()):       # better by an outcome named after: that outcome is what is asked
+                said = (f"{m.group(0).strip(' ,;:')}: read as nothing: which is better is asked as what is named after it",)
+                text = pattern.sub("", text, count=1)
+                break
             said = (f"{m.group(0).strip(' ,;:')}: read as {m.expand(asked).strip()}",)
             text = pattern.sub(asked, text, count=1)
             break
@@ -185,7 +192,7 @@ def _compared_or(text: str) -> tuple[str, tuple[str, ...]]:
         said += (f"{should.group(0)}: read as is it better to, of two scenes",)
         text = text[:should.start()] + "is it better to" + text[should.end():]
     elif not _COMPARING.search(text) or _ASKED_WHAT_TO_DO.search(text):
-        return text, ()
+        return text, said
     liquids = chosen_liquids(text)
     if liquids and not read_alike(liquids) and _OUTCOME_COMPARED.search(text):      # "is syrup or water more likely to leave some in the bottle?"
         at = text.index(" or ", liquids.start())

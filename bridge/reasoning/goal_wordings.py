@@ -65,6 +65,11 @@ WANTING = tuple((re.compile(p), r) for p, r in (
     # a way asked after a goal ("... without spilling, any tips?", "whats the trick"): the goal asks it
     (r"^(?=.*\b(?:so that|without)\b)(.*?)[,.;:?!\u2014-]* (?:any (?:tips|advice|ideas|suggestions)|tips|(?:what is|whats|what s|what)"
      r" (?:the |your )?(?:trick|secret|knack)|is there (?:a|any) (?:trick|secret|knack))(?: (?:to it|here))?[?.! ]*$", r"\1"),
+    # liquid not wanted outside the bowl, or where it stands ("i dont want any drops outside the bowl", "i don't want
+    # drops on the tray after"): so that nothing spills
+    (r"\b(?:i|we) (?:do not|never) want (?:any |a single |one |even one |a )?(?:[a-z]+ )?(?:(?:outside|out of)(?: of)? (?:the |my )?"
+     r"(?:bowl|dish|basin)|(?:on|onto) (?:the |my )?(?:table|tray|counter|floor|tablecloth|table cloth|bench|carpet|rug))"
+     r"(?: after(?:wards)?)?(?:,? not even (?:one|a) (?:single )?drop)?\b", "so that nothing spills"),
     # asked negatively, as people doubting it ask: "is there no way to pour molasses without ...": is there a way
     (r"\bis there (?:really )?no (way|method|technique) to\b", r"is there a \1 to"),
     # asked whether a scene stops an outcome ("does pouring low stop it from splashing?"): whether it happens

@@ -55,7 +55,7 @@ _AGAIN = re.compile(r"^(?:so )?(?:is|will|would|does|do) (?:that|this|it) (?:gon
 #: An outcome told as it happened, or as what keeps happening: its verb in the past ("slid",
 #: "went over"), or after "keeps", "always", "is" ("the bowl is jumping").
 _TOLD_TENSE = re.compile(r"^(?:[a-z]{2,}[^e]ed|[a-z]+ied|went|ran|fell|slid|came|got|kept|spilt|stuck|flew|threw|shook|sprang"
-                         r"|stayed|left|overflowed|tipped|dripped|slipped|flipped|skidded|hit|spun|swung)\b")
+                         r"|stayed|left|overflowed|tipped|dripped|slipped|flipped|skidded|hit|spun|swung|shot)\b")
 _HABIT = re.compile(r"\b(?:keeps|kept|keep|always|every time|each time|just)(?: [a-z]+)? $")
 _GOING_ON = re.compile(r"\b(?:is|was|were|are) $")
 #: A value asked: "how far should I tilt it", "what height should I use", "how heavy does the bowl need to be".

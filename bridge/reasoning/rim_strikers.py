@@ -93,6 +93,8 @@ def source_on_rim(text: str, said: dict[str, None]) -> str:
                         " (no proposition says a touch)")
         return f"{m.group('when')} the {m.group('how') or ''}{m.group('source')} low near the rim"     # ("the heavy jug")
     text = _set_on_rim().sub(set_on_rim, text)
+    if resting := _resting_on_rim().search(text):       # "pan edge sitting right on the bowl lip": set there too
+        raise UserError(f"could not place \"{resting.group(0).strip(' ,;.')}\": {_SET_ON}")
     if not re.search(r"\b(?:touch|contact|rest|lean|sit|hit|bump|knock|clip|strike|bang|brush|tap)", text):
         return text             # (no touch said: no compiling)
 
@@ -130,6 +132,17 @@ def _set_on_rim() -> re.Pattern:
         rf"|placed|placing|sit|sits|sat) (?:(?:the|my|a|her|his|our) (?P<how>[a-z]+ )?)?(?P<source>{sources}|it)"
         rf" (?:down )?(?:right |just |directly )?(?:on|against) (?:it|(?:its|the) (?:rim|edge|lip)(?: of (?:the |my |a )?(?:{destinations}))?"
         rf"|(?:the|my) (?:{destinations})(?:'s (?:rim|edge|lip))?)\b")
+
+
+@lru_cache(maxsize=None)
+def _resting_on_rim() -> re.Pattern:
+    """The source (or its edge, lip or spout) noted resting on the bowl, with no one said: "pan edge sitting right on
+    the bowl lip", "the jug resting on the rim"."""
+    sources, destinations = alternation(_strikers()), alternation(_DESTINATIONS - {"container"})
+    return re.compile(
+        rf"(?:^|(?<=[,;.:] ))(?:the |my |a )?(?:{sources})(?: (?:edge|lip|spout|rim|neck))? (?:is )?(?:sitting|resting|sat|rested|propped"
+        rf"|balanced|balancing) (?:right |just |directly )?(?:on|against) (?:the |my |its )?(?:(?:{destinations})(?:'s)? )?(?:rim|edge|lip)\b"
+        rf"(?! of (?!(?:the |a |my )?(?:{destinations})\b))")      # (not "the edge of the table")
 
 
 @lru_cache(maxsize=None)
