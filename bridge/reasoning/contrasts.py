@@ -51,6 +51,11 @@ CONTRASTS: tuple[tuple, ...] = (
     # ceramic mug"; the word list has read both as bowls by then): nothing more
     ("hedge", (rf"re(instead|rather|in place):(?<=bowl ){_CONTRAST} (?:a |an |the |my |your )?(?:material )*(?:bowl|one)\b",),
      "read as nothing: a container with nothing said of it, set against the one said beside it"),
+    # a value set against its opposite ("heavy ceramic instead of light plastic"; the word list has read the
+    # materials by then): nothing more
+    ("hedge", tuple(rf"re(instead|rather|in place):(?:(?<={said} )|(?<={said} material )|(?<={said} bowl )|(?<={said} material bowl )){_CONTRAST} (?:a |an )?{other}\b(?: material)?"
+                    for said, other in (("heavy", "light"), ("light", "heavy"), ("slippery", "grippy"), ("grippy", "slippery"))),
+     "read as nothing: the value said, set against its opposite"),
     # the rim set against the middle is where it is poured, not a height ("right above the rim rather
     # than over the center", "off the edge of the bowl, not the middle")
     ("near the rim", (r"re(rather than|instead of|not):\b(?:right |just |directly )?(?:above|off|over) (?:the |its )?(?:bowl )?"

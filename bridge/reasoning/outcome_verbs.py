@@ -158,7 +158,9 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      r"|(?:(?<=bowl )|(?<=bowl just ))(?:jump|jumps|jumped|jumping|hop|hops|hopped|hopping)\b(?! (?:out|over|up|back|off)\b)"
      # or away from who pours ("it can move away from me?")
      r"|(?:mov(?:e|es|ed|ing)|slid\w*|slip\w*|go|goes|going|went) away from (?:me|us|you|him|her|them)\b", STILL, True),
-    # struck and moved: "the bowl gets knocked sideways", "it banged into the bowl and knocked it aside", "knocked around"
+    # struck and moved: "the bowl gets knocked sideways", "it banged into the bowl and knocked it aside", "knocked around",
+    # or knocked after the bump told ("the spout bumped the bowl and knocked it")
+    (r"(?:(?<=\band )|^)knock(?:s|ed)? (?:it|them)(?= *(?:[,.;!?]|$))", ("source_clear", *STILL), True),
     (r"(?:knock|bump|nudg|bash|bang)\w*(?: it| them| the \w+)? (?:sideways|aside|across|along|out of place)\b", ("source_clear", *STILL), True),
     # knocked about, by whatever knocks it (the stream too): moved
     (r"knock\w*(?: it| them| the \w+)? (?:around|about)\b", STILL, True),
