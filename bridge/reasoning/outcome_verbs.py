@@ -8,7 +8,7 @@ import re
 from functools import lru_cache
 
 from pantarhei.bridge.reasoning.phases import STILL
-from pantarhei.bridge.reasoning.vessels import CONTAINER, OUT_OF
+from pantarhei.bridge.reasoning.vessels import CONTAINER, OUT_OF, SAFE, filled
 
 ALL_IN = ("liquid_enters_destination",)
 
@@ -236,7 +236,8 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
      # gone past it: "it went straight past the bowl", "the stream landed past the rim"
      r"|(?:land|lands|landed|landing|go|goes|going|went|gone|fly|flies|flying|flew|shoot|shoots|shooting|shot)"
      r" (?:right |just |straight )?(?:past|beyond) (?:it|them|the (?:bowl|destination|rim|edge))\b", (*ALL_IN, "no_spill"), True),
-    (r"safe(?:ly)?|(?:be |is )?(?:fine|ok|okay|alright|all right)\b|(?:a )?(?:good|bad) idea|risky|bad(?= *[?.!]* *$)"
+    # (safe: not what a liquid does, "is this bleach safe to pour", vessels.filled's)
+    (rf"{SAFE}|(?:be |is )?(?:fine|ok|okay|alright|all right)\b|(?:a )?(?:good|bad) idea|risky|bad(?= *[?.!]* *$)"
      r"|(?:be )?(?:a )?(?:disaster|catastrophe|nightmare|fiasco)\b"
      r"|(?:go|goes|going|went) wrong"
      r"|dangerous|(?:a )?problem|(?:bad|good|wise|unwise|smart|sensible|better|safer|wiser)(?= to\b)",
@@ -247,4 +248,4 @@ OUTCOMES: tuple[tuple[str, tuple[str, ...], bool], ...] = (
 @lru_cache(maxsize=None)
 def outcome_verb(word: str) -> bool:
     """Whether `word` is a verb of an outcome ("slide", "spills", "leaking")."""
-    return any(re.fullmatch(verb, word) for verb, _, _ in OUTCOMES)
+    return any(re.fullmatch(filled(verb), word) for verb, _, _ in OUTCOMES)

@@ -6,7 +6,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from pantarhei.bridge.reasoning.everyday import Matcher, alternation, names, sections
+from pantarhei.bridge.reasoning.everyday import Matcher, alternation, names, refused, sections
 from pantarhei.bridge.reasoning.nouns import poured_from
 
 
@@ -33,6 +33,19 @@ OUT_OF = "(?:DESTINATION)"
 CONTAINER = "(?:CONTAINER)"
 
 
+#: Safe, said of a pour, in OUTCOMES: filled() writes in that it is not said of what a liquid does (everyday.txt:
+#: "is this bleach safe to pour", "safe to pour acid", whose words are refused there).
+SAFE = "(?:SAFE)"
+
+
+@lru_cache(maxsize=None)
+def _safe() -> str:
+    """"safe", not where everyday.txt's phrases of what a liquid does say it."""
+    said = [p.split("safe", 1) for p in refused("what a liquid does").phrases if "safe" in p.split()]
+    return ("".join(f"(?<!{re.escape(before)})" for before, _ in said if before)
+            + "safe(?:ly)?" + "".join(f"(?!{re.escape(after)})" for before, after in said if not before and after))
+
+
 @lru_cache(maxsize=None)
 def _containers() -> str:
     return alternation([*names("bowl"), "source", "container"])
@@ -41,6 +54,7 @@ def _containers() -> str:
 def filled(verb: str) -> str:
     """An OUTCOMES verb phrase with the destination's names, and the containers', written in."""
     verb = verb.replace(OUT_OF, f"(?:{destinations()})") if OUT_OF in verb else verb
+    verb = verb.replace(SAFE, f"(?:{_safe()})") if SAFE in verb else verb
     return verb.replace(CONTAINER, f"(?:{_containers()})") if CONTAINER in verb else verb
 
 
