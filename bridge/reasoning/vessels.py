@@ -40,7 +40,7 @@ SAFE = "(?:SAFE)"
 
 @lru_cache(maxsize=None)
 def _safe() -> str:
-    """"safe", not where everyday.txt's phrases of what a liquid does say it."""
+    """The word safe, not where everyday.txt's phrases of what a liquid does say it."""
     said = [p.split("safe", 1) for p in refused("what a liquid does").phrases if "safe" in p.split()]
     return ("".join(f"(?<!{re.escape(before)})" for before, _ in said if before)
             + "safe(?:ly)?" + "".join(f"(?!{re.escape(after)})" for before, after in said if not before and after))
