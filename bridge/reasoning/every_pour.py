@@ -18,7 +18,7 @@ _EVERY_POUR = (
                 # (or said before tipping it where it is: "not going to move the jug at all, just tip it in place")
                 r"|,? just (?=(?:tip|tilt) it in place\b))"),
      "the source is held still while it pours, in every pour (how it moves in and away is read)"),
-    (re.compile(r"(?<!\bfrom )(?<!\bfrom an )(?<!\bfrom the )(?<!\bfrom a )\b(?:(?:near|nearly|almost)[ -])?empty(?= (?:bowl|dish|basin)s?\b)"
+    (re.compile(r"(?<!\bfrom )(?<!\bfrom an )(?<!\bfrom the )(?<!\bfrom a )\b(?:(?:near|nearly|almost)[ -])?empty(?= (?:(?!(?:the|a|an|my|your|our|his|her|it|into|out|in)\b)[a-z]+ )?(?:bowl|dish|basin)s?\b)"
                 # (a cause asked is left to be refused: "was it because the bowl was empty?")
                 r"|(?<!\bbecause the )(?<!\bbecause my )\b(?P<keep>(?:bowl|dish|basin) )(?:is |was |being |still )?"
                 r"(?:completely |totally |basically |pretty much )?empty\b(?: and\b)?"),
