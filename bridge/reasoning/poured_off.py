@@ -9,9 +9,10 @@ the side of the jar or the bowl, are no pour off, and stay as they are read.
 """
 from __future__ import annotations
 
+from pantarhei.bridge.reasoning.tipping_speed import ENDS
+
 #: The ends of a clause, and the words that join another to it.
-_ENDS = frozenset((",", ";", ".", "!", "?", ":"))
-_JOINTS = _ENDS | {"and", "then", "but", "or", "so", "when", "if", "because", "while"}
+_JOINTS = ENDS | {"and", "then", "but", "or", "so", "when", "if", "because", "while"}
 
 #: Verbs that pour a thing off, and the words between: what is poured ("tipping brine off"), no place.
 _POURING = frozenset(f"{v}{e}" for v in ("pour", "rack", "decant", "drain", "strain") for e in ("", "s", "ed", "ing")) | {
@@ -20,7 +21,7 @@ _NOT_POURED = _JOINTS | {"in", "into", "from", "over", "onto", "on", "at", "to",
                          "up", "down", "far", "way", "well", "just", "right", "straight", "too", "very", "really"}
 #: After "off": what it is poured from ("off the bucket"), or where it goes, or nothing more.
 _FROM = frozenset(("the", "a", "an", "my", "our", "his", "her", "their", "this", "that", "its"))
-_ON = frozenset(("into", "in", "onto")) | _ENDS
+_ON = frozenset(("into", "in", "onto")) | ENDS
 #: A part of a container, which "off the" names as where the liquid runs, not what it is poured from ("off the side").
 _PART = frozenset(("side", "sides", "edge", "edges", "lip", "rim", "top", "spout", "end", "bottom", "outside"))
 

@@ -16,7 +16,8 @@ _SPEEDS = {"slow": "slowly", "slowly": "slowly", "fast": "fast", "quick": "fast"
 #: Words said with the speed, of how the tipping is done: "slow and gentle", "nice and slow".
 _WITH = frozenset(("and", "nice", "real", "really", "very", "gentle", "gently", "steady", "steadily", "careful",
                    "carefully", "smooth", "smoothly", "easy", "but"))
-_ENDS = frozenset((",", ";", ".", "!", "?", ":"))
+#: The marks that end a clause, as the rewrites see the words (poured_off.py's too).
+ENDS = frozenset((",", ";", ".", "!", "?", ":"))
 
 
 class TippingSpeed:
@@ -34,7 +35,7 @@ class TippingSpeed:
                 continue
             if w not in (",", ";") or not _tipped_before(words, i):
                 continue
-            end = next((k for k in range(i + 1, len(words)) if words[k] in _ENDS), len(words))
+            end = next((k for k in range(i + 1, len(words)) if words[k] in ENDS), len(words))
             said = words[i + 1:end]
             speeds = {_SPEEDS[s] for s in said if s in _SPEEDS}
             if len(speeds) == 1 and all(s in _SPEEDS or s in _WITH for s in said):
@@ -45,7 +46,7 @@ class TippingSpeed:
 def _tipped_before(words: list[str], at: int) -> bool:
     """Whether the clause ending at `at` holds a verb of tipping."""
     k = at - 1
-    while k >= 0 and words[k] not in _ENDS:
+    while k >= 0 and words[k] not in ENDS:
         if words[k] in _TIPPING:
             return True
         k -= 1
@@ -60,10 +61,10 @@ _ANOTHER = frozenset(("in", "away", "out", "back", "pour", "pours", "poured", "p
 
 def _tipped_how_far(words: list[str], at: int) -> bool:
     """Whether the speed at `at` ends a clause that tips the source and says how far, with no other move in it."""
-    if at + 1 < len(words) and words[at + 1] not in _ENDS and words[at + 1] not in ("and", "then", "but"):
+    if at + 1 < len(words) and words[at + 1] not in ENDS and words[at + 1] not in ("and", "then", "but"):
         return False
     k, far = at - 1, False
-    while k >= 0 and words[k] not in _ENDS:
+    while k >= 0 and words[k] not in ENDS:
         if words[k] in _ANOTHER:
             return False
         far = far or words[k] in _HOW_FAR
