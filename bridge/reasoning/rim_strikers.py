@@ -93,7 +93,8 @@ def source_on_rim(text: str, said: dict[str, None]) -> str:
                         " (no proposition says a touch)")
         return f"{m.group('when')} the {m.group('how') or ''}{m.group('source')} low near the rim"     # ("the heavy jug")
     text = _set_on_rim().sub(set_on_rim, text)
-    if resting := _resting_on_rim().search(text):       # "pan edge sitting right on the bowl lip": set there too
+    if re.search(r"\b(?:sitting|resting|sat|rested|propped|balanc)", text) and (resting := _resting_on_rim().search(text)):
+        # "pan edge sitting right on the bowl lip": set there too (searched only when cued)
         raise UserError(f"could not place \"{resting.group(0).strip(' ,;.')}\": {_SET_ON}")
     if not re.search(r"\b(?:touch|contact|rest|lean|sit|hit|bump|knock|clip|strike|bang|brush|tap)", text):
         return text             # (no touch said: no compiling)
