@@ -52,7 +52,7 @@ def _containers() -> str:
 
 
 def filled(verb: str) -> str:
-    """An OUTCOMES verb phrase with the destination's names, and the containers', written in."""
+    """An OUTCOMES verb phrase with the destination's names, "safe" as said of a pour, and the containers', written in."""
     verb = verb.replace(OUT_OF, f"(?:{destinations()})") if OUT_OF in verb else verb
     verb = verb.replace(SAFE, f"(?:{_safe()})") if SAFE in verb else verb
     return verb.replace(CONTAINER, f"(?:{_containers()})") if CONTAINER in verb else verb
